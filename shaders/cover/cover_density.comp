@@ -1,0 +1,16 @@
+#version 450
+// Pass 4a: cloud density, inverted Worley fBm sampled through the warp.
+layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
+layout(rgba32f, binding = 0) uniform readonly imageCube warp_field;
+layout(r32f, binding = 1) uniform writeonly imageCube density_field;
+#include "../lib/cover_density.glsl"
+
+uniform FbmParams u_cover;
+
+void main() {
+  ivec3 texel = ivec3(gl_GlobalInvocationID);
+  int size = imageSize(density_field).x;
+  if (texel.x >= size || texel.y >= size) return;
+  vec3 warped = imageLoad(warp_field, texel).xyz;
+  imageStore(density_field, texel, vec4(cover_density(warped, u_cover), 0.0f, 0.0f, 0.0f));
+}

@@ -1,0 +1,19 @@
+// Cloud density sampled through the warp, and its remapping to coverage.
+#ifndef NEPHELE_COVER_DENSITY_GLSL
+#define NEPHELE_COVER_DENSITY_GLSL
+#include "prelude.glsl"
+#include "worley_fbm.glsl"
+
+// Inverted Worley fBm at the warped point W_K(v) (renormalised: it lies on the sphere).
+float cover_density(vec3 warped, IN(FbmParams) params) {
+  return inverted_worley_fbm(normalize(warped), params).w;
+}
+
+// Linear ramp from the calibrated threshold (cover 0) to the largest density (cover 1):
+// texels with density above the threshold, and only those, are cloudy (cover > 0).
+float cover_from_density(float density, float threshold, float density_max) {
+  float span = density_max - threshold;
+  return span > 0.0f ? clamp((density - threshold) / span, 0.0f, 1.0f) : 0.0f;
+}
+
+#endif

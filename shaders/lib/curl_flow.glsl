@@ -1,0 +1,32 @@
+// The flow that warps the cloud cover: the curl of a latitude-mixed Worley potential.
+#ifndef NEPHELE_CURL_FLOW_GLSL
+#define NEPHELE_CURL_FLOW_GLSL
+#include "prelude.glsl"
+#include "worley_fbm.glsl"
+#include "portable_math.glsl"
+
+
+// Stream function (times s) on the unit sphere (n: unit vector, z north):
+//   phi = (w1 + P)(1 + m)/2 - (w2 + P)(1 - m)/2,  m = sin(a lat)
+// Vortices of w1 and w2 turn in opposite senses; the P m(lat) part gives zonal winds
+// u = -P m'(lat) (easterlies where m' > 0 for P > 0). Returns the velocity
+//   v = s n x grad phi,
+// tangent to the sphere and divergence-free on it. At the poles the direction north is
+// undefined; there the latitude term is dropped (for a = 2.5 the mix has a conical tip).
+vec3 curl_velocity(vec3 n, IN(CurlParams) params) {
+  vec4 w1 = inverted_worley_fbm(n, params.potential_north);
+  vec4 w2 = inverted_worley_fbm(n, params.potential_south);
+  float z = clamp(n.z, -1.0f, 1.0f);
+  float latitude = portable_asin(z);
+  float a = params.mix_frequency;
+  float m = sin(a * latitude);
+  float dm_dlatitude = a * cos(a * latitude);
+  vec3 north = vec3(0.0f, 0.0f, 1.0f) - z * n;
+  float north_length = length(north);
+  north = north_length > 1.0e-6f ? north / north_length : vec3(0.0f);
+  vec3 gradient = (0.5f * (1.0f + m)) * vec3(w1) - (0.5f * (1.0f - m)) * vec3(w2) +
+                  ((0.5f * (w1.w + w2.w) + params.prevailing) * dm_dlatitude) * north;
+  return params.strength * cross(n, gradient);
+}
+
+#endif

@@ -1,0 +1,23 @@
+// Parameter blocks of the shared functions (uniform structs in GLSL, aggregates in C++).
+// Kept apart from the functions so that C++ can give them external linkage.
+#ifndef NEPHELE_PARAMETERS_GLSL
+#define NEPHELE_PARAMETERS_GLSL
+
+struct FbmParams {
+  float frequency;   // cells per unit length at octave 0
+  int octaves;       // number of octaves; 0 gives a constant 0
+  float lacunarity;  // frequency ratio between octaves
+  float gain;        // amplitude ratio between octaves
+  uint seed;         // each octave hashes with its own key derived from the seed
+  ivec3 period;      // cells per period at octave 0 (0 = not periodic); scaled by lacunarity
+};
+
+struct CurlParams {
+  FbmParams potential_north;  // w1, dominant in the northern hemisphere
+  FbmParams potential_south;  // w2, dominant in the southern hemisphere, sign reversed
+  float prevailing;           // P: strength of the zonal (prevailing wind) bands
+  float mix_frequency;        // a in m(lat) = sin(a lat)
+  float strength;             // s: the potential is s phi, so velocities scale with s
+};
+
+#endif

@@ -1,0 +1,54 @@
+// nephele generate: the global cloud cover, written as cube map faces, equirect and sidecar.
+#include <filesystem>
+#include <iostream>
+
+#include "cli/commands.hpp"
+#include "cli/cover_options.hpp"
+#include "cli/device_limits.hpp"
+#include "export/cover_files.hpp"
+
+namespace nephele::cli {
+
+int run_generate(const std::vector<std::string>& arguments) {
+  cover::CoverParameters parameters;
+  std::string out = "cubemaps";
+  bool verbose = false;
+  Options options("generate",
+                  "Generates a global cloud cover: curl-warped Worley noise on a cube map, written to\n"
+                  "cover_{px,nx,py,ny,pz,nz}.exr, cover_equirect.exr, cover_equirect.png and cover.json.");
+  add_cover_options(options, parameters);
+  options.add_string("--out", &out, "output directory (created if missing)");
+  options.add_flag("--verbose", &verbose, "print the renderer and the time of each pass");
+  if (!options.parse(arguments)) {
+    std::cout << options.help();
+    return exit_ok;
+  }
+  validate_cover_parameters(parameters);
+  const std::filesystem::path directory(out);
+  if (std::filesystem::exists(directory) && !std::filesystem::is_directory(directory))
+    throw UsageError("--out: '" + out + "' exists and is not a directory");
+
+  gl::EglContext context;
+  if (verbose)
+    std::cerr << "renderer: " << context.info().renderer << " (" << context.info().version << ", EGL "
+              << context.info().platform << ")\n";
+  check_cover_fits(context, parameters.size);
+
+  std::error_code error;
+  std::filesystem::create_directories(directory, error);
+  if (error) throw UsageError("--out: cannot create directory '" + out + "': " + error.message());
+
+  cover::GlobalCover cover(parameters);
+  cover.run();
+  const auto export_timings = output::write_cover_files(directory, cover, context.info());
+  if (verbose) {
+    for (const auto& t : cover.timings()) std::cerr << "pass " << t.pass << ": " << t.milliseconds << " ms\n";
+    for (const auto& t : export_timings) std::cerr << "export " << t.pass << ": " << t.milliseconds << " ms\n";
+  }
+  std::cout << "wrote " << (directory / "cover.json").string() << " and "
+            << output::cover_file_names().size() - 1 << " images; cloud fraction "
+            << cover.calibration().achieved_fraction << " (target " << parameters.coverage << ")\n";
+  return exit_ok;
+}
+
+}  // namespace nephele::cli

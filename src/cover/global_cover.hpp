@@ -1,0 +1,67 @@
+#pragma once
+// The global cloud cover: identity, curl, warp, density and coverage passes over cube maps.
+// Needs a current OpenGL 4.5 context.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "cover/cover_parameters.hpp"
+#include "cover/coverage_threshold.hpp"
+#include "gl/compute_program.hpp"
+#include "gl/textures.hpp"
+
+namespace nephele::cover {
+
+struct PassTiming {
+  std::string pass;
+  double milliseconds;
+};
+
+class GlobalCover {
+ public:
+  explicit GlobalCover(const CoverParameters& parameters);
+
+  // Runs every pass in order; the result stays on the GPU in cover_field().
+  void run();
+
+  // The passes one by one (tests run them separately).
+  void run_identity();
+  void run_curl();
+  void run_warp();
+  void run_density();
+  CoverageCalibration run_coverage();  // calibrates on the host, remaps on the GPU
+
+  const CoverParameters& parameters() const { return parameters_; }
+  const gl::Texture& identity_field() const { return identity_field_; }
+  const gl::Texture& curl_field() const { return curl_field_; }
+  const gl::Texture& warp_field() const { return warp_field_; }
+  const gl::Texture& density_field() const { return density_field_; }
+  const gl::Texture& cover_field() const { return cover_field_; }
+  const CoverageCalibration& calibration() const { return calibration_; }
+  const std::vector<PassTiming>& timings() const { return timings_; }
+
+ private:
+  template <class Work>
+  void timed(const std::string& pass, Work&& work);
+
+  CoverParameters parameters_;
+  gl::ComputeProgram identity_program_{"cover/identity.comp"};
+  gl::ComputeProgram curl_program_{"cover/curl.comp"};
+  gl::ComputeProgram warp_program_{"cover/warp.comp"};
+  gl::ComputeProgram density_program_{"cover/cover_density.comp"};
+  gl::ComputeProgram remap_program_{"cover/cover_remap.comp"};
+  gl::Texture identity_field_, curl_field_, warp_field_, density_field_, cover_field_;
+  CoverageCalibration calibration_;
+  std::vector<PassTiming> timings_;
+};
+
+// Uploads FbmParams / CurlParams to a uniform struct of the same layout named `name`.
+void set_uniform(const gl::ComputeProgram& program, const std::string& name,
+                 const glsl::FbmParams& params);
+void set_uniform(const gl::ComputeProgram& program, const std::string& name,
+                 const glsl::CurlParams& params);
+
+// Bytes of GPU memory the passes allocate for a cube face size (plus the equirect export).
+double cover_gpu_bytes(int size);
+
+}  // namespace nephele::cover

@@ -1,0 +1,19 @@
+#pragma once
+// C++ side of the shared GLSL/C++ subset (the GLSL side is shaders/lib/prelude.glsl),
+// in the manner of Bruneton's precomputed atmospheric scattering: GLM supplies the GLSL
+// types and built-ins, macros supply the parameter qualifiers. Rules for shared files:
+// float literals carry an f suffix, no swizzles beyond .x/.y/.z/.w, constructors of built-in
+// types only, vec3(v4) for the first three components.
+#include <cstdint>
+#include <glm/glm.hpp>
+
+// Pre-empts shaders/lib/prelude.glsl, which holds the GLSL definitions of these macros.
+#define NEPHELE_PRELUDE_GLSL
+#define IN(T) const T&
+#define OUT(T) T&
+#define INOUT(T) T&
+
+namespace nephele::glsl {
+using namespace glm;
+using uint = std::uint32_t;
+}  // namespace nephele::glsl

@@ -1,0 +1,140 @@
+// The nephele executable end to end.
+#include <catch2/catch.hpp>
+
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <sstream>
+
+#include "export/image_files.hpp"
+#include "util/json.hpp"
+
+namespace fs = std::filesystem;
+using namespace nephele;
+
+namespace {
+
+struct Run {
+  int exit_code;
+  std::string output;  // stdout and stderr
+};
+
+Run run(const std::string& arguments) {
+  const fs::path log = fs::temp_directory_path() / ("nephele_cli_" + std::to_string(std::random_device{}()) + ".log");
+  const std::string command = std::string(NEPHELE_EXECUTABLE) + " " + arguments + " > " + log.string() + " 2>&1";
+  const int status = std::system(command.c_str());
+  std::ifstream in(log);
+  std::stringstream text;
+  text << in.rdbuf();
+  fs::remove(log);
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, text.str()};
+}
+
+struct TemporaryDirectory {
+  fs::path path = fs::temp_directory_path() / ("nephele_test_" + std::to_string(std::random_device{}()));
+  ~TemporaryDirectory() { fs::remove_all(path); }
+};
+
+std::string read_file(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+}  // namespace
+
+TEST_CASE("generate writes every output readable with the right sizes and a valid sidecar", "[cli]") {
+  TemporaryDirectory out;
+  const Run r = run("generate --size 8 --iterations 5 --seed 42 --coverage 0.5 --out " + out.path.string());
+  INFO(r.output);
+  REQUIRE(r.exit_code == 0);
+  for (const char* face : {"px", "nx", "py", "ny", "pz", "nz"}) {
+    const auto image = output::read_image(out.path / (std::string("cover_") + face + ".exr"));
+    CHECK(image.width == 8);
+    CHECK(image.height == 8);
+    CHECK(image.channels == 1);
+    for (float v : image.pixels) {
+      REQUIRE(v >= 0.0f);
+      REQUIRE(v <= 1.0f);
+    }
+  }
+  const auto equirect = output::read_image(out.path / "cover_equirect.exr");
+  CHECK(equirect.width == 32);
+  CHECK(equirect.height == 16);
+  const auto preview = output::read_image(out.path / "cover_equirect.png");
+  CHECK(preview.width == 32);
+  CHECK(preview.height == 16);
+  // The preview is the equirect quantised linearly: round(255 v) / 255.
+  for (size_t k = 0; k < preview.pixels.size(); ++k)
+    REQUIRE(preview.pixels[k] == Approx(equirect.pixels[k]).margin(0.5 / 255 + 1e-6));
+
+  const json::Value sidecar = json::parse(read_file(out.path / "cover.json"));
+  CHECK(sidecar.at("parameters").at("seed").as_number() == 42);
+  CHECK(sidecar.at("parameters").at("size").as_number() == 8);
+  CHECK(sidecar.at("parameters").at("step").as_number() == 0.006);
+  CHECK_FALSE(sidecar.at("version").as_string().empty());
+  const auto& result = sidecar.at("result");
+  CHECK(std::abs(result.at("cloud_fraction").as_number() - 0.5) <= result.at("cloud_fraction_tolerance").as_number());
+  for (const char* pass : {"identity", "curl", "warp", "density", "coverage", "equirect"})
+    CHECK(sidecar.at("timings_ms").at(pass).is_number());
+  CHECK(sidecar.at("conventions").at("world_axes").is_string());
+  // No temporary files are left behind.
+  for (const auto& entry : fs::directory_iterator(out.path))
+    CHECK(entry.path().filename().string().find(".tmp-") == std::string::npos);
+}
+
+TEST_CASE("bad input exits with code 2 naming the option and writes nothing", "[cli]") {
+  TemporaryDirectory out;
+  const std::string dir = " --out " + out.path.string();
+  const std::pair<std::string, std::string> cases[] = {
+      {"generate --size 0" + dir, "--size"},
+      {"generate --size 100000" + dir, "--size"},
+      {"generate --size 16384" + dir, "--size"},  // within range, beyond memory or driver limit
+      {"generate --step nan" + dir, "--step"},
+      {"generate --coverage 1.5" + dir, "--coverage"},
+      {"generate --seed -1" + dir, "--seed"},
+      {"generate --iterations 2.5" + dir, "--iterations"},
+      {"generate --density-frequency 1000 --density-octaves 6" + dir, "--density-frequency"},
+      {"generate --colour red" + dir, "--colour"},
+      {"frobnicate", "frobnicate"},
+  };
+  for (const auto& [arguments, option] : cases) {
+    const Run r = run(arguments);
+    INFO(arguments << "\n" << r.output);
+    CHECK(r.exit_code == 2);
+    CHECK_THAT(r.output, Catch::Contains(option));
+    CHECK_FALSE(fs::exists(out.path));
+  }
+}
+
+TEST_CASE("an output path that is a file is refused and left intact", "[cli]") {
+  TemporaryDirectory out;
+  fs::create_directories(out.path);
+  const fs::path file = out.path / "not_a_directory";
+  std::ofstream(file) << "precious";
+  const Run r = run("generate --size 4 --out " + file.string());
+  CHECK(r.exit_code == 2);
+  CHECK_THAT(r.output, Catch::Contains("--out"));
+  CHECK(read_file(file) == "precious");
+}
+
+TEST_CASE("a failed run leaves earlier outputs untouched", "[cli]") {
+  TemporaryDirectory out;
+  REQUIRE(run("generate --size 4 --iterations 2 --out " + out.path.string()).exit_code == 0);
+  const std::string before = read_file(out.path / "cover_px.exr");
+  CHECK(run("generate --size 4 --coverage 7 --out " + out.path.string()).exit_code == 2);
+  CHECK(read_file(out.path / "cover_px.exr") == before);
+}
+
+TEST_CASE("help and version exit with code 0", "[cli]") {
+  const Run help = run("generate --help");
+  CHECK(help.exit_code == 0);
+  CHECK_THAT(help.output, Catch::Contains("--size") && Catch::Contains("[1..16384]"));
+  CHECK(run("--help").exit_code == 0);
+  CHECK(run("--version").exit_code == 0);
+  CHECK(run("").exit_code == 2);
+}

@@ -1,0 +1,219 @@
+// The global cover's GPU passes against their C++ twins, and the properties of the result.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+#include "cover/global_cover.hpp"
+#include "curl_bounds.hpp"
+#include "gl_support.hpp"
+#include "shader_math/shader_math.hpp"
+
+using namespace nephele;
+using namespace nephele::glsl;
+
+namespace {
+
+cover::CoverParameters small(int size, int iterations = 50) {
+  cover::CoverParameters p;
+  p.size = size;
+  p.iterations = iterations;
+  return p;
+}
+
+std::vector<vec4> as_vec4(const std::vector<float>& rgba) {
+  std::vector<vec4> texels(rgba.size() / 4);
+  std::memcpy(texels.data(), rgba.data(), rgba.size() * sizeof(float));
+  return texels;
+}
+
+size_t index(int size, int face, int i, int j) { return (static_cast<size_t>(face) * size + j) * size + i; }
+
+// Largest rate of change of the curl field between neighbouring texels (per radian): a
+// Lipschitz constant of the sampled velocity, which bounds how rounding errors grow per step.
+double velocity_lipschitz(const std::vector<vec4>& curl, int size) {
+  double worst = 0;
+  for (int face = 0; face < 6; ++face)
+    for (int j = 0; j < size; ++j)
+      for (int i = 0; i + 1 < size; ++i) {
+        for (const ivec2 step : {ivec2(1, 0), ivec2(0, 1)}) {
+          const int i2 = i + step.x, j2 = j + step.y;
+          if (j2 >= size) continue;
+          const double angle = std::acos(std::clamp(
+              static_cast<double>(dot(texel_direction(face, i, j, size), texel_direction(face, i2, j2, size))), -1.0, 1.0));
+          const double change = length(vec3(curl[index(size, face, i, j)]) - vec3(curl[index(size, face, i2, j2)]));
+          worst = std::max(worst, change / angle);
+        }
+      }
+  return worst;
+}
+
+}  // namespace
+
+TEST_CASE("identity pass writes the unit direction of every texel centre", "[pass]") {
+  test::test_context();
+  cover::GlobalCover cover(small(16));
+  cover.run_identity();
+  const auto identity = as_vec4(cover.identity_field().read());
+  for (int face = 0; face < 6; ++face)
+    for (int j = 0; j < 16; ++j)
+      for (int i = 0; i < 16; ++i) {
+        const vec3 w = vec3(identity[index(16, face, i, j)]);
+        REQUIRE(length(w - texel_direction(face, i, j, 16)) < 1e-6f);
+        REQUIRE(std::abs(length(w) - 1.0f) < 1e-6f);
+      }
+}
+
+TEST_CASE("curl pass agrees with the CPU twin and its vectors are tangent", "[pass]") {
+  test::test_context();
+  const auto p = small(16);
+  cover::GlobalCover cover(p);
+  cover.run_identity();
+  cover.run_curl();
+  const auto identity = as_vec4(cover.identity_field().read());
+  const auto curl = as_vec4(cover.curl_field().read());
+  const CurlParams c = cover::curl_params(p);
+  for (size_t k = 0; k < curl.size(); ++k) {
+    const vec3 n = vec3(identity[k]);
+    const vec3 cpu = curl_velocity(n, c);
+    const vec3 gpu = vec3(curl[k]);
+    REQUIRE(length(gpu - cpu) < test::curl_rounding_bound(n, c));
+    REQUIRE(std::abs(dot(gpu, n)) < 1e-6f * (1.0f + length(gpu)));
+  }
+}
+
+TEST_CASE("warp pass agrees with the CPU twin within the growth of rounding errors", "[pass]") {
+  test::test_context();
+  for (int iterations : {1, 10, 50}) {
+    const auto p = small(16, iterations);
+    cover::GlobalCover cover(p);
+    cover.run_identity();
+    cover.run_curl();
+    cover.run_warp();
+    const auto identity = as_vec4(cover.identity_field().read());
+    const auto curl = as_vec4(cover.curl_field().read());
+    const auto warp = as_vec4(cover.warp_field().read());
+    const CubeSource source{p.size, curl.data()};
+    // Each step adds a few ulp (eps ~ 2.4e-7 per operation, a handful of operations); an
+    // earlier error grows at most by (1 + h L) per step, L the sampled field's Lipschitz bound
+    // (bilinear within a texel: rate of change between texel centres, doubled for the seams).
+    const double L = 2.0 * velocity_lipschitz(curl, p.size);
+    const double tolerance = 8 * 2.4e-7 * iterations * std::pow(1 + p.step * L, iterations);
+    INFO("K = " << iterations << ", L = " << L << ", tolerance " << tolerance);
+    double worst = 0;
+    for (size_t k = 0; k < warp.size(); ++k) {
+      const vec3 cpu = integrate_warp(vec3(identity[k]), p.iterations, p.step, source);
+      const vec3 gpu = vec3(warp[k]);
+      worst = std::max(worst, static_cast<double>(length(gpu - cpu)));
+      REQUIRE(std::abs(length(gpu) - 1.0f) < 1e-6f);  // warped points stay on the unit sphere
+    }
+    INFO("largest difference " << worst);
+    CHECK(worst <= tolerance);
+  }
+}
+
+TEST_CASE("density and coverage passes agree with the CPU twin", "[pass]") {
+  test::test_context();
+  const auto p = small(16);
+  cover::GlobalCover cover(p);
+  cover.run();
+  const auto warp = as_vec4(cover.warp_field().read());
+  const auto density = cover.density_field().read();
+  const auto covered = cover.cover_field().read();
+  const FbmParams params = cover::density_params(p);
+  const auto& c = cover.calibration();
+  for (size_t k = 0; k < density.size(); ++k) {
+    REQUIRE(density[k] == Approx(cover_density(vec3(warp[k]), params)).margin(1e-5));
+    REQUIRE(covered[k] == Approx(cover_from_density(density[k], c.threshold, c.density_max)).margin(1e-6));
+  }
+}
+
+TEST_CASE("cover lies between 0 and 1 with the calibrated cloudy fraction", "[pass]") {
+  test::test_context();
+  for (float coverage : {0.0f, 0.3f, 0.67f, 1.0f}) {
+    auto p = small(32);
+    p.coverage = coverage;
+    cover::GlobalCover cover(p);
+    cover.run();
+    const auto covered = cover.cover_field().read();
+    for (float v : covered) {
+      REQUIRE(v >= 0.0f);
+      REQUIRE(v <= 1.0f);
+    }
+    const double fraction = cover::cloudy_fraction(covered, p.size);
+    INFO("coverage " << coverage << " achieved " << fraction);
+    CHECK(std::abs(fraction - coverage) <= cover.calibration().max_texel_fraction + 1e-9);
+    CHECK(fraction == Approx(cover.calibration().achieved_fraction).margin(1e-12));
+  }
+}
+
+TEST_CASE("the cover has no seams: differences across face edges are like those inside faces", "[pass]") {
+  test::test_context();
+  const int n = 64;
+  cover::GlobalCover cover(small(n));
+  cover.run();
+  const auto covered = cover.cover_field().read();
+  double interior_sum = 0, seam_sum = 0, interior_max = 0, seam_max = 0;
+  long interior_count = 0, seam_count = 0;
+  for (int face = 0; face < 6; ++face)
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i + 1 < n; ++i) {
+        const double d = std::abs(covered[index(n, face, i, j)] - covered[index(n, face, i + 1, j)]);
+        interior_sum += d;
+        interior_max = std::max(interior_max, d);
+        ++interior_count;
+      }
+  // Across the edge: the texel one texel-width beyond the edge, found geometrically.
+  for (int face = 0; face < 6; ++face)
+    for (int j = 0; j < n; ++j)
+      for (int side : {0, 1}) {
+        const int i = side ? n - 1 : 0;
+        const float sc = side ? 1.0f + 1.0f / n : -1.0f - 1.0f / n;
+        const float tc = 2.0f * (j + 0.5f) / n - 1.0f;
+        const vec3 r = cube_face_point(face, sc, tc);
+        const int other = cube_face_of(r);
+        const vec2 st = 0.5f * cube_face_coords(other, r) + 0.5f;
+        const int oi = std::clamp(int(st.x * n), 0, n - 1), oj = std::clamp(int(st.y * n), 0, n - 1);
+        const double d = std::abs(covered[index(n, face, i, j)] - covered[index(n, other, oi, oj)]);
+        seam_sum += d;
+        seam_max = std::max(seam_max, d);
+        ++seam_count;
+      }
+  const double interior_mean = interior_sum / interior_count, seam_mean = seam_sum / seam_count;
+  INFO("mean difference inside " << interior_mean << ", across edges " << seam_mean);
+  // Both are means of |difference| of texels one texel apart; a seam would add a jump.
+  CHECK(seam_mean <= 1.5 * interior_mean);
+  CHECK(seam_max <= interior_max);
+}
+
+TEST_CASE("the same seed gives identical output and another seed a different one", "[pass]") {
+  test::test_context();
+  auto p = small(16);
+  cover::GlobalCover first(p), second(p);
+  first.run();
+  second.run();
+  const auto a = first.cover_field().read(), b = second.cover_field().read();
+  CHECK(std::memcmp(a.data(), b.data(), a.size() * sizeof(float)) == 0);
+  p.seed = 2;
+  cover::GlobalCover other(p);
+  other.run();
+  const auto c = other.cover_field().read();
+  size_t differing = 0;
+  for (size_t k = 0; k < a.size(); ++k) differing += a[k] != c[k];
+  CHECK(differing > a.size() / 2);
+}
+
+TEST_CASE("tiny cube maps of sizes 1 to 3 run and stay finite", "[pass][extreme]") {
+  test::test_context();
+  for (int size : {1, 2, 3}) {
+    cover::GlobalCover cover(small(size));
+    cover.run();
+    for (float v : cover.cover_field().read()) {
+      REQUIRE(std::isfinite(v));
+      REQUIRE(v >= 0.0f);
+      REQUIRE(v <= 1.0f);
+    }
+    for (float v : cover.warp_field().read()) REQUIRE(std::isfinite(v));
+  }
+}

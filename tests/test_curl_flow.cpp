@@ -1,0 +1,152 @@
+// The curl flow: tangent, divergence-free, the formula of the stream function, the zonal winds.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <random>
+
+#include "cover/cover_parameters.hpp"
+#include "curl_bounds.hpp"
+#include "shader_math/shader_math.hpp"
+
+using namespace nephele::glsl;
+
+namespace {
+
+vec3 random_unit(std::mt19937& rng) {
+  std::normal_distribution<float> g;
+  return normalize(vec3(g(rng), g(rng), g(rng)));
+}
+
+CurlParams default_curl(uint32_t seed = 1) {
+  nephele::cover::CoverParameters p;
+  p.seed = seed;
+  return nephele::cover::curl_params(p);
+}
+
+// Two unit vectors spanning the tangent plane at n.
+void tangent_basis(vec3 n, vec3& e1, vec3& e2) {
+  const vec3 helper = std::abs(n.z) < 0.9f ? vec3(0, 0, 1) : vec3(1, 0, 0);
+  e1 = normalize(cross(helper, n));
+  e2 = cross(n, e1);
+}
+
+// The stream function written out independently of curl_velocity, from fBm values only.
+double stream_function(vec3 p, const CurlParams& c) {
+  const double w1 = inverted_worley_fbm(p, c.potential_north).w;
+  const double w2 = inverted_worley_fbm(p, c.potential_south).w;
+  const double m = std::sin(c.mix_frequency * std::asin(std::clamp(static_cast<double>(p.z), -1.0, 1.0)));
+  return c.strength * ((w1 + c.prevailing) * (1 + m) / 2 - (w2 + c.prevailing) * (1 - m) / 2);
+}
+
+}  // namespace
+
+TEST_CASE("curl vectors are tangent to the sphere", "[curl]") {
+  const CurlParams c = default_curl();
+  std::mt19937 rng(1);
+  for (int k = 0; k < 5000; ++k) {
+    const vec3 n = random_unit(rng);
+    const vec3 v = curl_velocity(n, c);
+    // cross(n, g) . n vanishes up to float rounding of |g|.
+    REQUIRE(std::abs(dot(v, n)) <= 1e-6f * (1.0f + length(v)));
+  }
+}
+
+TEST_CASE("the curl field is divergence-free: its flux through closed loops vanishes", "[curl]") {
+  // Flux of n x grad phi through a loop = the change of phi around it = 0 (phi is continuous,
+  // though its gradient jumps at Voronoi borders). The midpoint rule errs by O(ds) per border
+  // crossed, so the relative flux falls like 1/M with M samples.
+  const CurlParams c = default_curl();
+  std::mt19937 rng(2);
+  for (int loop = 0; loop < 20; ++loop) {
+    const vec3 centre = random_unit(rng);
+    vec3 e1, e2;
+    tangent_basis(centre, e1, e2);
+    const double radius = 0.05 + 0.1 * loop / 20.0;
+    double previous_relative = 1.0;
+    for (int samples : {500, 5000}) {
+      double flux = 0, magnitude = 0;
+      const double ds = 2 * M_PI * std::sin(radius) / samples;
+      for (int k = 0; k < samples; ++k) {
+        const double theta = 2 * M_PI * (k + 0.5) / samples;
+        const vec3 radial = static_cast<float>(std::cos(theta)) * e1 + static_cast<float>(std::sin(theta)) * e2;
+        const vec3 q = static_cast<float>(std::cos(radius)) * centre + static_cast<float>(std::sin(radius)) * radial;
+        const vec3 outward = -static_cast<float>(std::sin(radius)) * centre + static_cast<float>(std::cos(radius)) * radial;
+        const vec3 v = curl_velocity(q, c);
+        flux += dot(v, outward) * ds;
+        magnitude += length(v) * ds;
+      }
+      const double relative = std::abs(flux) / magnitude;
+      INFO("loop " << loop << " samples " << samples << " relative flux " << relative);
+      CHECK(relative < 20.0 / samples);
+      previous_relative = relative;
+    }
+    (void)previous_relative;
+  }
+}
+
+TEST_CASE("curl_velocity equals s n x grad phi of the documented stream function", "[curl]") {
+  // grad phi by central differences of the stream function written out in the test; points
+  // whose stencil straddles a Voronoi border (one-sided differences disagree) are skipped.
+  const CurlParams c = default_curl(5);
+  std::mt19937 rng(3);
+  const float h = 1e-3f;
+  int compared = 0;
+  for (int k = 0; k < 2000; ++k) {
+    const vec3 n = random_unit(rng);
+    if (std::abs(n.z) > 0.999f) continue;
+    dvec3 gradient;
+    double gap = 0;
+    const double f0 = stream_function(n, c);
+    for (int a = 0; a < 3; ++a) {
+      vec3 e(0.0f);
+      e[a] = h;
+      const double plus = stream_function(n + e, c), minus = stream_function(n - e, c);
+      gradient[a] = (plus - minus) / (2 * h);
+      gap = std::max(gap, std::abs((plus - f0) - (f0 - minus)) / h);
+    }
+    if (gap > 0.05) continue;
+    ++compared;
+    const vec3 expected = vec3(glm::cross(dvec3(n), gradient));
+    const vec3 actual = curl_velocity(n, c);
+    // Truncation: central differences of |p - feature| err by (h f_k / F1_k)^2 per octave;
+    // rounding: phi is evaluated to ~1e-7, divided by 2h.
+    const float tolerance = 1e-7f / h + static_cast<float>(gap) + nephele::test::curl_octave_bound(n, c, [&](float f, float f1) {
+      return 2.0f * (h * f / f1) * (h * f / f1);
+    });
+    REQUIRE(length(actual - expected) < tolerance);
+  }
+  CHECK(compared > 1000);
+}
+
+TEST_CASE("without noise the flow is the zonal wind u = -s P m'(lat)", "[curl]") {
+  CurlParams c = default_curl();
+  c.potential_north.octaves = 0;
+  c.potential_south.octaves = 0;
+  for (double latitude_deg : {-80.0, -45.0, -20.0, 0.0, 10.0, 36.0, 60.0, 85.0}) {
+    for (double longitude_deg : {-170.0, 0.0, 33.0}) {
+      const double lat = latitude_deg * M_PI / 180, lon = longitude_deg * M_PI / 180;
+      const vec3 n(std::cos(lat) * std::cos(lon), std::cos(lat) * std::sin(lon), std::sin(lat));
+      const vec3 east(-std::sin(lon), std::cos(lon), 0.0);
+      const double u = -c.strength * c.prevailing * c.mix_frequency * std::cos(c.mix_frequency * lat);
+      const vec3 v = curl_velocity(n, c);
+      INFO("lat " << latitude_deg << " lon " << longitude_deg);
+      CHECK(dot(v, east) == Approx(u).margin(1e-5));
+      CHECK(length(v - static_cast<float>(u) * east) < 1e-5f);
+    }
+  }
+  // With P > 0 the trade winds blow from the east in both tropics (u < 0 at the equator) and
+  // turn westerly beyond lat = 90 / a degrees (36 deg for a = 2.5).
+  const vec3 equator(1, 0, 0);
+  CHECK(curl_velocity(equator, c).y < 0.0f);
+}
+
+TEST_CASE("the curl field is finite at the poles", "[curl][extreme]") {
+  const CurlParams c = default_curl();
+  for (const vec3 pole : {vec3(0, 0, 1), vec3(0, 0, -1)}) {
+    const vec3 v = curl_velocity(pole, c);
+    CHECK(std::isfinite(v.x));
+    CHECK(std::isfinite(v.y));
+    CHECK(std::isfinite(v.z));
+    CHECK(std::abs(v.z) < 1e-6f);
+  }
+}

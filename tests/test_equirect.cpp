@@ -1,0 +1,53 @@
+// Equirectangular export: orientation, geodetic rows, agreement with the cube map.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+#include "export/equirect.hpp"
+#include "gl_support.hpp"
+#include "shader_math/shader_math.hpp"
+
+using namespace nephele;
+using namespace nephele::glsl;
+
+TEST_CASE("equirect rows are geodetic latitudes turned into geocentric directions", "[equirect]") {
+  const int height = 180;
+  const auto rows = output::geodetic_row_directions(height);
+  // WGS84: tan(geocentric) = (1 - f)^2 tan(geodetic) on the surface, f = 1/298.257223563.
+  const double f = 1 / 298.257223563;
+  for (int j = 0; j < height; ++j) {
+    const double geodetic = (90.0 - 180.0 * (j + 0.5) / height) * M_PI / 180;
+    const double geocentric = std::atan((1 - f) * (1 - f) * std::tan(geodetic));
+    CHECK(rows[j].x == Approx(std::cos(geocentric)).margin(1e-6));
+    CHECK(rows[j].y == Approx(std::sin(geocentric)).margin(1e-6));
+  }
+  CHECK(rows.front().y > 0.0f);  // north up
+}
+
+TEST_CASE("equirect export puts longitude -180 at the left edge and north at the top", "[equirect]") {
+  test::test_context();
+  const int size = 32, width = 128, height = 64;
+  // Three cube maps holding the x, y and z components of the texel direction.
+  for (int axis = 0; axis < 3; ++axis) {
+    std::vector<float> texels(6 * size * size);
+    for (int face = 0; face < 6; ++face)
+      for (int j = 0; j < size; ++j)
+        for (int i = 0; i < size; ++i)
+          texels[(face * size + j) * size + i] = texel_direction(face, i, j, size)[axis];
+    gl::Texture cube = gl::Texture::cube(size, GL_R32F);
+    cube.write(texels);
+    const auto map = output::equirect_from_cube(cube, width, height);
+    const auto rows = output::geodetic_row_directions(height);
+    double worst = 0;
+    for (int j = 0; j < height; ++j)
+      for (int i = 0; i < width; ++i) {
+        const double lon = 2 * M_PI * (i + 0.5) / width - M_PI;
+        const double expected[3] = {rows[j].x * std::cos(lon), rows[j].x * std::sin(lon), rows[j].y};
+        worst = std::max(worst, std::abs(map[j * width + i] - expected[axis]));
+      }
+    // Bilinear interpolation of a smooth unit-sphere function: error below (texel / 2)^2 times
+    // its curvature (<= 3 on the face plane), texel = 2 / size on faces of half-width 1.
+    INFO("axis " << axis << " largest error " << worst);
+    CHECK(worst < 3.0 * (1.0 / size) * (1.0 / size) * 2.0);
+  }
+}

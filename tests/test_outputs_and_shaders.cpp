@@ -1,0 +1,81 @@
+// Atomic output sets, and shader compile errors that name the file and line.
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <random>
+
+#include "export/atomic_output.hpp"
+#include "gl/compute_program.hpp"
+#include "gl/shader_sources.hpp"
+#include "gl_support.hpp"
+
+namespace fs = std::filesystem;
+using namespace nephele;
+
+TEST_CASE("an uncommitted output set removes its temporaries and keeps old files", "[output]") {
+  const fs::path dir = fs::temp_directory_path() / ("nephele_outputs_" + std::to_string(std::random_device{}()));
+  fs::create_directories(dir);
+  output::write_text_file(dir / "a.txt", "old");
+  {
+    output::OutputSet set(dir);
+    const fs::path temporary = set.temporary_for("a.txt");
+    CHECK(temporary.extension() == ".txt");
+    output::write_text_file(temporary, "new");
+    CHECK(fs::exists(temporary));
+  }  // destroyed without commit, as when writing fails half-way
+  std::ifstream in(dir / "a.txt");
+  std::string text;
+  in >> text;
+  CHECK(text == "old");
+  CHECK(std::distance(fs::directory_iterator(dir), fs::directory_iterator()) == 1);
+  {
+    output::OutputSet set(dir);
+    output::write_text_file(set.temporary_for("a.txt"), "new");
+    set.commit();
+  }
+  std::ifstream again(dir / "a.txt");
+  again >> text;
+  CHECK(text == "new");
+  fs::remove_all(dir);
+}
+
+TEST_CASE("every embedded shader compiles", "[shaders]") {
+  test::test_context();
+  for (const auto& [path, text] : gl::embedded_shader_sources()) {
+    if (path.size() < 5 || path.substr(path.size() - 5) != ".comp") continue;
+    INFO(path);
+    CHECK_NOTHROW(gl::ComputeProgram(path));
+  }
+}
+
+TEST_CASE("shader compile errors name the file and line", "[shaders]") {
+  test::test_context();
+  const std::string source =
+      "#version 450\n"
+      "layout(local_size_x = 1) in;\n"
+      "#include \"../lib/hash.glsl\"\n"
+      "void main() {\n"
+      "  undeclared_thing = 1;\n"
+      "}\n";
+  try {
+    gl::ComputeProgram::from_text("tests/broken.comp", source);
+    FAIL("no error");
+  } catch (const gl::ShaderError& e) {
+    CHECK_THAT(e.what(), Catch::Contains("tests/broken.comp:5"));
+  }
+  try {
+    gl::ComputeProgram::from_text("tests/missing.comp", "#version 450\n#include \"../lib/nothing.glsl\"\n");
+    FAIL("no error");
+  } catch (const std::runtime_error& e) {
+    CHECK_THAT(e.what(), Catch::Contains("lib/nothing.glsl") && Catch::Contains("tests/missing.comp:2"));
+  }
+}
+
+TEST_CASE("includes are expanded once and marked with line directives", "[shaders]") {
+  const auto expanded = gl::expand_shader("cover/curl.comp");
+  CHECK(expanded.files.front() == "cover/curl.comp");
+  CHECK(std::count(expanded.files.begin(), expanded.files.end(), "lib/hash.glsl") == 1);
+  CHECK(expanded.text.find("#include") == std::string::npos);
+  CHECK(expanded.text.rfind("#version 450", 0) == 0);
+}

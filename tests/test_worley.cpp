@@ -1,0 +1,202 @@
+// Worley F1 and its fBm: exactness against brute force, gradients against finite differences,
+// tiling, value ranges.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <random>
+
+#include "shader_math/shader_math.hpp"
+
+using namespace nephele::glsl;
+
+namespace {
+
+// Brute force: the nearest feature point over a 7^3 block of cells, in double precision.
+double brute_force_f1(vec3 p, ivec3 period, uvec3 key) {
+  const ivec3 cell = ivec3(floor(p));
+  const dvec3 f = dvec3(p) - dvec3(floor(p));
+  double best = 1e30;
+  for (int k = -3; k <= 3; ++k)
+    for (int j = -3; j <= 3; ++j)
+      for (int i = -3; i <= 3; ++i) {
+        const ivec3 o(i, j, k);
+        const dvec3 d = f - (dvec3(o) + dvec3(feature_offset(cell + o, period, key)));
+        best = std::min(best, glm::dot(d, d));
+      }
+  return std::sqrt(best);
+}
+
+vec3 random_point(std::mt19937& rng, float extent) {
+  std::uniform_real_distribution<float> u(-extent, extent);
+  return vec3(u(rng), u(rng), u(rng));
+}
+
+// Central difference of a scalar function along each axis, plus both one-sided differences
+// (their disagreement reveals a kink inside the stencil).
+template <class F>
+void differences(F f, vec3 p, float h, vec3& central, float& one_sided_gap) {
+  one_sided_gap = 0;
+  const double f0 = f(p);
+  for (int a = 0; a < 3; ++a) {
+    vec3 e(0.0f);
+    e[a] = h;
+    const double plus = f(p + e), minus = f(p - e);
+    central[a] = static_cast<float>((plus - minus) / (2.0 * h));
+    one_sided_gap = std::max(one_sided_gap, static_cast<float>(std::abs((plus - f0) - (f0 - minus)) / h));
+  }
+}
+
+}  // namespace
+
+TEST_CASE("worley_f1 finds the nearest feature point exactly also when F1 exceeds 1", "[worley]") {
+  std::mt19937 rng(7);
+  const uvec3 key = noise_key(3u, 0u);
+  int beyond_one = 0;
+  for (int n = 0; n < 20000; ++n) {
+    const vec3 p = random_point(rng, 50.0f);
+    const float f1 = worley_f1(p, ivec3(0), key).w;
+    const double exact = brute_force_f1(p, ivec3(0), key);
+    if (exact > 1.0) ++beyond_one;
+    INFO("p = " << p.x << "," << p.y << "," << p.z);
+    // Float rounding of positions near 50 is 4e-6; distances below 2 add 2e-7.
+    REQUIRE(f1 == Approx(exact).margin(1e-5));
+    REQUIRE(f1 <= std::sqrt(3.0f) + 1e-5f);
+  }
+  // Points where F1 > 1 need the 5^3 fallback; make sure the test met some.
+  WARN("points with F1 > 1: " << beyond_one << " of 20000");
+}
+
+TEST_CASE("the fallback search is exact where the 27-cell search is not", "[worley]") {
+  // Search for points whose nearest feature point lies outside the 27 neighbours (only possible
+  // when F1 > 1) and check worley_f1 against brute force there.
+  std::mt19937 rng(11);
+  const uvec3 key = noise_key(5u, 0u);
+  int found = 0;
+  for (int n = 0; n < 400000 && found < 20; ++n) {
+    const vec3 p = random_point(rng, 200.0f);
+    const ivec3 cell = ivec3(floor(p));
+    const vec3 f = p - floor(p);
+    float best27 = 1e30f;
+    for (int k = -1; k <= 1; ++k)
+      for (int j = -1; j <= 1; ++j)
+        for (int i = -1; i <= 1; ++i) {
+          const ivec3 o(i, j, k);
+          const vec3 d = f - (vec3(o) + feature_offset(cell + o, ivec3(0), key));
+          best27 = std::min(best27, dot(d, d));
+        }
+    const double exact = brute_force_f1(p, ivec3(0), key);
+    if (std::sqrt(best27) > exact + 1e-4) {
+      ++found;
+      CHECK(worley_f1(p, ivec3(0), key).w == Approx(exact).margin(1e-4));
+    }
+  }
+  WARN("points where 27 cells are not enough: " << found);
+}
+
+TEST_CASE("feature points are jittered uniformly and independently inside their cells", "[worley]") {
+  // Chi-square over 4^3 = 64 joint bins tests the three offsets together: a diagonal layout
+  // (all offsets equal) would leave 60 of the 64 bins empty.
+  const int n = 128000;
+  std::vector<int> counts(64, 0);
+  const uvec3 key = noise_key(9u, 0u);
+  for (int k = 0; k < n; ++k) {
+    const vec3 o = feature_offset(ivec3(k % 50 - 25, k / 50 % 50 - 25, k / 2500 - 25), ivec3(0), key);
+    REQUIRE(o.x >= 0.0f);
+    REQUIRE(o.x < 1.0f);
+    counts[int(o.x * 4) + 4 * int(o.y * 4) + 16 * int(o.z * 4)]++;
+  }
+  double chi2 = 0;
+  const double expected = n / 64.0;
+  for (int c : counts) chi2 += (c - expected) * (c - expected) / expected;
+  CHECK(chi2 < 63 + 6 * std::sqrt(2.0 * 63));
+}
+
+TEST_CASE("periodic Worley noise tiles exactly for negative coordinates too", "[worley]") {
+  const ivec3 period(4, 6, 5);
+  const uvec3 key = noise_key(2u, 0u);
+  std::mt19937 rng(3);
+  for (int n = 0; n < 2000; ++n) {
+    const vec3 p = random_point(rng, 10.0f);
+    const vec4 a = worley_f1(p, period, key);
+    for (int axis = 0; axis < 3; ++axis) {
+      for (int shift : {-2, -1, 1, 3}) {
+        vec3 q = p;
+        q[axis] += float(shift * period[axis]);
+        const vec4 b = worley_f1(q, period, key);
+        // Only the rounding of the shifted position (|q| < 30, ulp 2e-6) differs.
+        REQUIRE(b.w == Approx(a.w).margin(1e-5));
+      }
+    }
+  }
+  CHECK(wrap_cell(ivec3(-1, -7, 12), period) == ivec3(3, 5, 2));
+}
+
+TEST_CASE("the Worley gradient matches finite differences away from cell borders", "[worley]") {
+  const uvec3 key = noise_key(4u, 0u);
+  std::mt19937 rng(5);
+  const float h = 1e-3f;
+  int compared = 0;
+  for (int n = 0; n < 5000; ++n) {
+    const vec3 p = random_point(rng, 8.0f);
+    const vec4 g = worley_f1(p, ivec3(0), key);
+    vec3 central;
+    float gap;
+    differences([&](vec3 q) { return static_cast<double>(worley_f1(q, ivec3(0), key).w); }, p, h, central, gap);
+    // A smooth F1 = |p - f| has one-sided differences that differ by h |f''| <= h / F1; a
+    // larger gap means a Voronoi border lies inside the stencil, where F1 has a kink.
+    if (gap > 4.0f * h / g.w + 1e-3f) continue;
+    ++compared;
+    // Central differences err by h^2 |f'''| / 6 ~ h^2 / F1^2, plus rounding 2 ulp(8) / (2h), plus
+    // at most the gradient jump of a weak kink that the gap did not exclude (it measures it).
+    const float tolerance = h * h / (g.w * g.w) + 2e-3f + gap;
+    REQUIRE(glm::length(vec3(g) - central) < tolerance);
+  }
+  CHECK(compared > 4000);
+}
+
+TEST_CASE("the gradient is the unit vector away from the nearest feature point", "[worley]") {
+  const uvec3 key = noise_key(4u, 0u);
+  // In cell (0, 0, 0) the feature point is exactly representable (24-bit offsets below 1).
+  const vec3 feature = feature_offset(ivec3(0), ivec3(0), key);
+  const vec4 at_feature = worley_f1(feature, ivec3(0), key);
+  CHECK(at_feature.w == Approx(0.0f).margin(1e-6));
+  CHECK(vec3(at_feature) == vec3(0.0f));  // defined as zero on the singular point
+  const vec4 near = worley_f1(feature + vec3(0.01f, 0.0f, 0.0f), ivec3(0), key);
+  CHECK(near.x == Approx(1.0f).margin(1e-3));
+  CHECK(length(vec3(near)) == Approx(1.0f).margin(1e-5));
+}
+
+TEST_CASE("inverted Worley fBm is normalised and its gradient matches finite differences", "[worley]") {
+  const FbmParams params{3.0f, 4, 2.0f, 0.5f, 17u, ivec3(0)};
+  std::mt19937 rng(8);
+  const float h = 2e-4f;
+  int compared = 0;
+  for (int n = 0; n < 3000; ++n) {
+    const vec3 p = random_point(rng, 1.0f);
+    const vec4 g = inverted_worley_fbm(p, params);
+    REQUIRE(g.w <= 1.0f);
+    REQUIRE(g.w >= 1.0f - std::sqrt(3.0f));
+    vec3 central;
+    float gap;
+    differences([&](vec3 q) { return static_cast<double>(inverted_worley_fbm(q, params).w); }, p, h, central, gap);
+    // Highest octave: frequency 24, so curvature up to 24^2 / (24 F1) per octave; skip kinks.
+    if (gap > 0.5f) continue;
+    ++compared;
+    // Per octave k (frequency f_k = 3 2^k, weight a_k / sum a): truncation (h f_k / F1_k)^2 f_k,
+    // rounding 1e-7 / h, and the measured jump of weak kinks.
+    float tolerance = 1e-7f / h + gap;
+    float amplitude = 1.0f, frequency = params.frequency, norm = 0.0f, truncation = 0.0f;
+    for (int k = 0; k < params.octaves; ++k) {
+      const float f1 = std::max(worley_f1(p * frequency, ivec3(0), noise_key(params.seed, uint(k))).w, 1e-6f);
+      truncation += amplitude * frequency * std::min(2.0f, 2.0f * (h * frequency / f1) * (h * frequency / f1));
+      norm += amplitude;
+      amplitude *= params.gain;
+      frequency *= params.lacunarity;
+    }
+    tolerance += truncation / norm;
+    REQUIRE(glm::length(vec3(g) - central) < tolerance);
+  }
+  CHECK(compared > 2000);
+  const FbmParams none{3.0f, 0, 2.0f, 0.5f, 17u, ivec3(0)};
+  CHECK(inverted_worley_fbm(vec3(0.1f), none) == vec4(0.0f));
+}
