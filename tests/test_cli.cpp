@@ -22,9 +22,10 @@ struct Run {
   std::string output;  // stdout and stderr
 };
 
-Run run(const std::string& arguments) {
+Run run_with_environment(const std::string& environment, const std::string& arguments) {
   const fs::path log = fs::temp_directory_path() / ("nephele_cli_" + std::to_string(std::random_device{}()) + ".log");
-  const std::string command = std::string(NEPHELE_EXECUTABLE) + " " + arguments + " > " + log.string() + " 2>&1";
+  const std::string command = environment + " " + std::string(NEPHELE_EXECUTABLE) + " " + arguments + " > " +
+                              log.string() + " 2>&1";
   const int status = std::system(command.c_str());
   std::ifstream in(log);
   std::stringstream text;
@@ -32,6 +33,8 @@ Run run(const std::string& arguments) {
   fs::remove(log);
   return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, text.str()};
 }
+
+Run run(const std::string& arguments) { return run_with_environment("", arguments); }
 
 struct TemporaryDirectory {
   fs::path path = fs::temp_directory_path() / ("nephele_test_" + std::to_string(std::random_device{}()));
@@ -137,4 +140,23 @@ TEST_CASE("help and version exit with code 0", "[cli]") {
   CHECK(run("--help").exit_code == 0);
   CHECK(run("--version").exit_code == 0);
   CHECK(run("").exit_code == 2);
+}
+
+TEST_CASE("without an OpenGL 4.5 context generate exits with code 3 naming what was tried", "[cli]") {
+  TemporaryDirectory out;
+  // Restricting EGL to a platform that cannot give a context here: on machines without a GPU
+  // the device platform has no hardware device. Where a GPU is present the run succeeds.
+  const Run r = run_with_environment("NEPHELE_EGL_PLATFORM=device",
+                                     "generate --size 4 --iterations 1 --out " + out.path.string());
+  INFO(r.output);
+  if (r.exit_code == 0) {
+    WARN("a hardware EGL device is present; the no-context path is not exercised here");
+    return;
+  }
+  CHECK(r.exit_code == 3);
+  CHECK_THAT(r.output, Catch::Contains("no headless OpenGL 4.5 core context") && Catch::Contains("device"));
+  CHECK_FALSE(fs::exists(out.path));
+  const Run bad = run_with_environment("NEPHELE_EGL_PLATFORM=vulkan", "generate --size 4 --out " + out.path.string());
+  CHECK(bad.exit_code == 3);
+  CHECK_THAT(bad.output, Catch::Contains("NEPHELE_EGL_PLATFORM") && Catch::Contains("surfaceless"));
 }

@@ -109,7 +109,11 @@ EglContext::EglContext() {
       for (EGLint i = 0; i < count; ++i) {
         const char* device_extensions = eglQueryDeviceStringEXT(devices[i], EGL_EXTENSIONS);
         // Software devices are better reached through the surfaceless platform below.
-        if (has_extension(device_extensions, "EGL_MESA_device_software")) continue;
+        if (has_extension(device_extensions, "EGL_MESA_device_software")) {
+          attempts.push_back("device " + std::to_string(i) +
+                             ": a software renderer, left to the surfaceless platform");
+          continue;
+        }
         EGLDisplay display = eglGetPlatformDisplayEXT(EGL_PLATFORM_DEVICE_EXT, devices[i], nullptr);
         if (try_display(display, "device " + std::to_string(i), attempts)) {
           info_.platform = "device";
