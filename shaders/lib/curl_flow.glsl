@@ -8,8 +8,9 @@
 
 // Stream function (times s) on the unit sphere (n: unit vector, z north):
 //   phi = (w1 + P)(1 + m)/2 - (w2 + P)(1 - m)/2,  m = sin(a lat)
-// Vortices of w1 and w2 turn in opposite senses; the P m(lat) part gives zonal winds
-// u = -P m'(lat) (easterlies where m' > 0 for P > 0). Returns the velocity
+// Vortices of w1 and w2 turn in opposite senses. The latitude term gives zonal winds
+// u = -s ((w1 + w2)/2 + P) m'(lat): easterlies where m' > 0 when P > -(w1 + w2)/2 (the noise
+// mean, about 0.47, keeps bands even at P = 0). Returns the velocity
 //   v = s n x grad phi,
 // tangent to the sphere and divergence-free on it. At the poles the direction north is
 // undefined; there the latitude term is dropped (for a = 2.5 the mix has a conical tip).
