@@ -160,3 +160,50 @@ TEST_CASE("without an OpenGL 4.5 context generate exits with code 3 naming what 
   CHECK(bad.exit_code == 3);
   CHECK_THAT(bad.output, Catch::Contains("NEPHELE_EGL_PLATFORM") && Catch::Contains("surfaceless"));
 }
+
+TEST_CASE("render writes a tone-mapped PNG and a sidecar listing the passes", "[cli][render]") {
+  TemporaryDirectory out;
+  const std::string png = (out.path / "view.png").string();
+  const Run r = run("render --view bantiger --size 24x12 --view-steps 6 --light-steps 2 --time 2026-06-21T15:00Z "
+                    "--weather " + std::string(NEPHELE_SOURCE_DIR) + "/scenes/weather/bern-summer.json --out " + png);
+  INFO(r.output);
+  REQUIRE(r.exit_code == 0);
+  const auto image = output::read_image(png);
+  CHECK(image.width == 24);
+  CHECK(image.height == 12);
+  CHECK(image.channels == 3);
+  const json::Value sidecar = json::parse(read_file(out.path / "view.json"));
+  CHECK(sidecar.at("weather_source").as_string() == "stations");
+  CHECK(sidecar.at("passes").as_array().size() >= 2);
+}
+
+TEST_CASE("render rejects bad input with code 2 naming the key or option", "[cli][render]") {
+  TemporaryDirectory out;
+  fs::create_directories(out.path);
+  const fs::path scene = out.path / "scene.json";
+  std::ofstream(scene) << R"({"view": "gurten", "colour": "red", "outputs": ["a.png"]})";
+  const fs::path typed = out.path / "typed.json";
+  std::ofstream(typed) << R"({"view": "gurten", "fov": "wide", "outputs": ["a.png"]})";
+  const fs::path broken_weather = out.path / "weather.json";
+  std::ofstream(broken_weather) << R"({"latitude": 47, "longitude": 7, "hourly": {"time": ["2026-06-21T00:00"], "cloud_cover": [50]}})";
+  const std::string weather = std::string(NEPHELE_SOURCE_DIR) + "/scenes/weather/bern-summer.json";
+  const std::string png = " --out " + (out.path / "x.png").string();
+  const std::pair<std::string, std::string> cases[] = {
+      {"render --scene " + scene.string() + " --out " + out.path.string(), "'colour'"},
+      {"render --scene " + typed.string() + " --out " + out.path.string(), "'fov'"},
+      {"render --view matterhorn" + png, "matterhorn"},
+      {"render --view gurten --size 12by7" + png, "--size"},
+      {"render --view gurten --time yesterday" + png, "time"},
+      {"render --view gurten --weather " + weather + " --time 2027-01-01T00:00Z" + png, "outside the file's range"},
+      {"render --view gurten --weather " + broken_weather.string() + png, "hourly.cloud_cover_low"},
+      {"render --view gurten --out " + (out.path / "x.jpg").string(), ".png or .exr"},
+      {"render --view gurten --fov 200" + png, "--fov"},
+  };
+  for (const auto& [arguments, expected] : cases) {
+    const Run r = run(arguments);
+    INFO(arguments << "\n" << r.output);
+    CHECK(r.exit_code == 2);
+    CHECK_THAT(r.output, Catch::Contains(expected));
+    CHECK_FALSE(fs::exists(out.path / "x.png"));
+  }
+}

@@ -15,6 +15,7 @@ const char* const usage =
     "usage: nephele COMMAND [options]\n\n"
     "commands:\n"
     "  generate   make a global cloud cover (cube map faces, equirect map, cover.json)\n"
+    "  render     cloud layers seen from the ground (Gurten, Bantiger, anywhere)\n"
     "  bench      benchmarks that print timings (nephele bench cover)\n\n"
     "nephele COMMAND --help describes each command's options and their ranges.\n"
     "exit codes: 0 success, 1 failure, 2 bad input, 3 no OpenGL 4.5 context\n";
@@ -41,6 +42,7 @@ int main(int argc, char** argv) {
     }
     if (command == "generate") return run_generate(rest);
     if (command == "bench") return run_bench(rest);
+    if (command == "render") return run_render(rest);
     throw UsageError("unknown command '" + command + "' (allowed: generate, bench)");
   } catch (const UsageError& e) {
     std::cerr << "nephele: " << e.what() << "\n";

@@ -68,6 +68,16 @@ void Options::add_string(const std::string& name, std::string* target, const std
                       }});
 }
 
+void Options::add_string_list(const std::string& name, std::vector<std::string>* target,
+                              const std::string& help) {
+  Option o{name, help + " (repeatable)", "", "", true, [=](const std::string& text) {
+             if (text.empty()) throw UsageError(name + ": an empty value is not allowed");
+             target->push_back(text);
+           }};
+  o.repeatable = true;
+  options_.push_back(o);
+}
+
 void Options::add_flag(const std::string& name, bool* target, const std::string& help) {
   options_.push_back({name, help, "", "", false, [=](const std::string&) { *target = true; }});
 }
@@ -90,8 +100,9 @@ bool Options::parse(const std::vector<std::string>& arguments) {
     if (!option)
       throw UsageError("nephele " + command_ + ": unknown argument '" + word + "' (see nephele " +
                        command_ + " --help)");
-    for (const auto& s : seen)
-      if (s == word) throw UsageError(word + ": given more than once");
+    if (!option->repeatable)
+      for (const auto& s : seen)
+        if (s == word) throw UsageError(word + ": given more than once");
     seen.push_back(word);
     if (option->takes_value && !has_inline_value) {
       if (k + 1 >= arguments.size()) throw UsageError(word + ": a value is required");

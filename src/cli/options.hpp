@@ -23,6 +23,8 @@ class Options {
   void add_float(const std::string& name, float* target, double min, double max, const std::string& help);
   void add_string(const std::string& name, std::string* target, const std::string& help);
   void add_flag(const std::string& name, bool* target, const std::string& help);
+  // An option that may be given several times; each value is appended.
+  void add_string_list(const std::string& name, std::vector<std::string>* target, const std::string& help);
 
   // Parses arguments (without the command words). Returns false when --help was given
   // (help() then has the text). Throws UsageError.
@@ -34,6 +36,7 @@ class Options {
     std::string name, help, range, default_text;
     bool takes_value;
     std::function<void(const std::string&)> apply;
+    bool repeatable = false;
   };
   std::string command_, summary_;
   std::vector<Option> options_;

@@ -28,6 +28,7 @@ struct CubeSource {
 namespace nephele::glsl {
 // Types first, with external linkage, so that APIs across translation units can use them.
 #include "lib/parameters.glsl"
+#include "lib/render_types.glsl"
 namespace {
 #include "lib/portable_math.glsl"
 #include "lib/hash.glsl"
@@ -39,6 +40,9 @@ namespace {
 #include "lib/warp_step.glsl"
 #include "lib/cover_density.glsl"
 #include "lib/equirect_mapping.glsl"
+#include "lib/ray_sphere.glsl"
+#include "lib/atmosphere.glsl"
+#include "lib/cloud_density.glsl"
 }  // namespace
 }  // namespace nephele::glsl
 #pragma GCC diagnostic pop

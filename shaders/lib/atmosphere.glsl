@@ -1,0 +1,108 @@
+// Clear-sky atmosphere: Rayleigh and Mie single scattering on a spherical Earth.
+// Coefficients from Bruneton's 2017 reference implementation ("Precomputed Atmospheric
+// Scattering: a New Implementation") and Hillaire, "A Scalable and Production Ready Sky and
+// Atmosphere Rendering Technique" (EGSR 2020); ozone is left out.
+#ifndef NEPHELE_ATMOSPHERE_GLSL
+#define NEPHELE_ATMOSPHERE_GLSL
+#include "prelude.glsl"
+#include "ray_sphere.glsl"
+
+const float PI_F = 3.14159265358979f;
+const float ATMOSPHERE_THICKNESS = 100000.0f;
+const float RAYLEIGH_SCALE_HEIGHT = 8000.0f;
+const float MIE_SCALE_HEIGHT = 1200.0f;
+const float MIE_SCATTERING = 3.996e-6f;
+const float MIE_EXTINCTION = 4.440e-6f;
+const float MIE_ASYMMETRY = 0.8f;
+
+// Rayleigh scattering at 680, 550, 440 nm (1/m) and the solar irradiance there (W m^-2 nm^-1).
+vec3 rayleigh_scattering() { return vec3(5.802e-6f, 13.558e-6f, 33.1e-6f); }
+vec3 solar_irradiance() { return vec3(1.474f, 1.8504f, 1.91198f); }
+
+float rayleigh_phase(float nu) { return 3.0f / (16.0f * PI_F) * (1.0f + nu * nu); }
+
+// Henyey-Greenstein phase function, normalised over the sphere.
+float henyey_greenstein(float nu, float g) {
+  float denominator = 1.0f + g * g - 2.0f * g * nu;
+  return (1.0f - g * g) / (4.0f * PI_F * denominator * sqrt(max(denominator, 1.0e-8f)));
+}
+
+// Extinction (1/m) at altitude h.
+vec3 air_extinction(float h) {
+  return rayleigh_scattering() * exp(-max(h, 0.0f) / RAYLEIGH_SCALE_HEIGHT) +
+         vec3(MIE_EXTINCTION * exp(-max(h, 0.0f) / MIE_SCALE_HEIGHT));
+}
+
+// Transmittance from point p (relative to the Earth's centre, radius R) to the top of the
+// atmosphere along unit direction d; zero when the ray meets the ground (a ray from the
+// surface or above meets it when it points down and the line crosses the sphere). Midpoint rule
+// in t with s = L t^2: short steps low down, where the air is dense (the Mie scale height is only
+// 1.2 km of the 100 km path).
+vec3 transmittance_to_space(vec3 p, vec3 d, float earth_radius) {
+  vec2 ground = ray_sphere(p, d, vec3(0.0f), earth_radius);
+  if (ground.x < ground.y && ground.y > 0.0f && dot(p, d) < 0.0f) return vec3(0.0f);
+  vec2 top = ray_sphere(p, d, vec3(0.0f), earth_radius + ATMOSPHERE_THICKNESS);
+  float length_to_top = max(top.y, 0.0f);
+  const int steps = 16;
+  vec3 depth = vec3(0.0f);
+  for (int i = 0; i < steps; ++i) {
+    float t0 = float(i) / float(steps);
+    float t1 = float(i + 1) / float(steps);
+    float t = 0.5f * (t0 + t1);
+    vec3 q = p + (length_to_top * t * t) * d;
+    depth += air_extinction(length(q) - earth_radius) * (length_to_top * (t1 * t1 - t0 * t0));
+  }
+  return exp(-depth);
+}
+
+// Single-scattered sky radiance along a view ray from o (relative to the Earth's centre) in
+// direction d over [0, distance], and the transmittance over it. `split` is a distance at which
+// the partial in-scattering is also returned (for compositing clouds). Returns the in-scattered
+// radiance in inscatter_total, the part before `split` in inscatter_split.
+void sky_single_scattering(vec3 o, vec3 d, float distance, float split, vec3 sun, float earth_radius,
+                           int steps, OUT(vec3) inscatter_total, OUT(vec3) inscatter_split,
+                           OUT(vec3) transmittance_total, OUT(vec3) transmittance_split) {
+  float nu = dot(d, sun);
+  vec3 rayleigh = rayleigh_scattering() * rayleigh_phase(nu);
+  float mie = MIE_SCATTERING * henyey_greenstein(nu, MIE_ASYMMETRY);
+  float ds = distance / float(steps);
+  vec3 transmittance = vec3(1.0f);
+  vec3 radiance = vec3(0.0f);
+  inscatter_split = vec3(0.0f);
+  transmittance_split = vec3(1.0f);
+  bool split_done = split <= 0.0f;
+  for (int i = 0; i < steps; ++i) {
+    float s0 = float(i) * ds;
+    if (!split_done && s0 + ds > split) {
+      // The split falls in this step: take the step's first part into the split values.
+      float part = split - s0;
+      vec3 q = o + (s0 + 0.5f * part) * d;
+      float h = length(q) - earth_radius;
+      vec3 extinction = air_extinction(h);
+      vec3 source = (rayleigh * exp(-h / RAYLEIGH_SCALE_HEIGHT) + vec3(mie * exp(-h / MIE_SCALE_HEIGHT))) *
+                    transmittance_to_space(q, sun, earth_radius) * solar_irradiance();
+      vec3 step_transmittance = exp(-extinction * part);
+      inscatter_split = radiance + transmittance * source * part;
+      transmittance_split = transmittance * step_transmittance;
+      split_done = true;
+    }
+    vec3 q = o + (s0 + 0.5f * ds) * d;
+    float h = length(q) - earth_radius;
+    vec3 extinction = air_extinction(h);
+    vec3 source = (rayleigh * exp(-h / RAYLEIGH_SCALE_HEIGHT) + vec3(mie * exp(-h / MIE_SCALE_HEIGHT))) *
+                  transmittance_to_space(q, sun, earth_radius) * solar_irradiance();
+    // Energy-conserving integration over the step (Hillaire 2016, "Physically Based Sky,
+    // Atmosphere and Cloud Rendering in Frostbite"): source (1 - e^{-sigma ds}) / sigma.
+    vec3 step_transmittance = exp(-extinction * ds);
+    radiance += transmittance * source * (vec3(1.0f) - step_transmittance) / max(extinction, vec3(1.0e-12f));
+    transmittance *= step_transmittance;
+  }
+  if (!split_done) {
+    inscatter_split = radiance;
+    transmittance_split = transmittance;
+  }
+  inscatter_total = radiance;
+  transmittance_total = transmittance;
+}
+
+#endif

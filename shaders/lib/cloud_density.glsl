@@ -1,0 +1,112 @@
+// Cloud densities of each layer type, as functions of the height fraction in the layer, the
+// local coverage and two noise values (a shape noise and a detail noise, both inverted Worley
+// fBm in [0, 1]). In the style of Webanck et al., "Procedural Cloudscapes" (Computer Graphics
+// Forum 37(2), 2018): coverage thresholds, Hermite steps H and a vertical profile per type;
+// see docs/layers.md for each formula and where it departs from the paper.
+#ifndef NEPHELE_CLOUD_DENSITY_GLSL
+#define NEPHELE_CLOUD_DENSITY_GLSL
+#include "prelude.glsl"
+
+const int CLOUD_CIRRUS = 0;
+const int CLOUD_CIRROSTRATUS = 1;
+const int CLOUD_CIRROCUMULUS = 2;
+const int CLOUD_ALTO = 3;
+const int CLOUD_CUMULUS = 4;
+const int CLOUD_STRATOCUMULUS = 5;
+const int CLOUD_STRATUS = 6;
+const int CLOUD_FOG = 7;
+const int CLOUD_CUMULONIMBUS = 8;
+
+// The cubic Hermite step H(a, b, x): 0 below a, 1 above b, 3t^2 - 2t^3 between.
+float hermite_step(float a, float b, float x) {
+  float t = clamp((x - a) / (b - a), 0.0f, 1.0f);
+  return t * t * (3.0f - 2.0f * t);
+}
+
+// Vertical profile of a sheet: soft bottom and top.
+float sheet_profile(float h, float soft) {
+  return hermite_step(0.0f, soft, h) * (1.0f - hermite_step(1.0f - soft, 1.0f, h));
+}
+
+// Heaped clouds (cumulus, cirrocumulus, the cells of altocumulus): the shape noise must exceed
+// the clear-sky fraction 1 - c, more so higher up (rounded tops, flat bases); the detail noise
+// erodes the edges.
+float heaped_density(float h, float c, float shape, float detail, float top_rounding) {
+  float field = shape - (1.0f - c) - top_rounding * h * (1.0f - 0.5f * c);
+  float eroded = field - 0.25f * (1.0f - detail) * (1.0f - hermite_step(0.0f, 0.25f, field));
+  return hermite_step(0.0f, 0.12f, eroded) * hermite_step(0.0f, 0.06f, h) * (1.0f - hermite_step(0.95f, 1.0f, h));
+}
+
+// Stratiform sheets: coverage modulated by the shape noise, a soft profile, faint texture.
+float sheet_density(float h, float c, float shape, float detail) {
+  float amount = hermite_step(0.15f, 0.55f, c + 0.5f * (shape - 0.5f));
+  return amount * sheet_profile(h, 0.25f) * (0.7f + 0.3f * detail);
+}
+
+float cloud_density(int type, float h, float c, float shape, float detail, float morph) {
+  if (c <= 0.0f || h < 0.0f || h > 1.0f) return 0.0f;
+  if (type == CLOUD_CUMULUS) return heaped_density(h, c, shape, detail, 0.6f);
+  if (type == CLOUD_STRATOCUMULUS) {
+    // Flattened heaps that merge into a sheet as coverage grows.
+    return max(heaped_density(h, c, shape, detail, 0.3f), sheet_density(h, c - 0.3f, shape, detail));
+  }
+  if (type == CLOUD_STRATUS) return sheet_density(h, c, shape, detail);
+  if (type == CLOUD_ALTO) {
+    // Webanck et al.'s morph between altostratus (k = 0) and altocumulus (k = 1).
+    return mix(sheet_density(h, c, shape, detail), heaped_density(h, c, shape, detail, 0.2f), morph);
+  }
+  if (type == CLOUD_CIRRUS) {
+    // Fibres: the noise is stretched along the wind by the caller; thin, patchy.
+    return c * hermite_step(0.45f, 0.8f, shape * (0.6f + 0.4f * detail)) * sheet_profile(h, 0.4f);
+  }
+  if (type == CLOUD_CIRROSTRATUS) return c * sheet_profile(h, 0.4f) * (0.5f + 0.5f * detail);
+  if (type == CLOUD_CIRROCUMULUS) return heaped_density(h, c, shape, detail, 0.1f);
+  if (type == CLOUD_FOG) return c * exp(-3.0f * h) * (0.75f + 0.25f * detail);
+  if (type == CLOUD_CUMULONIMBUS) {
+    // Towers, widening into an anvil in the top fifth.
+    float field = shape - (1.0f - c) + 0.35f * hermite_step(0.8f, 0.95f, h) - 0.1f * h;
+    return hermite_step(0.0f, 0.1f, field) * hermite_step(0.0f, 0.03f, h) * (1.0f - hermite_step(0.97f, 1.0f, h));
+  }
+  return 0.0f;
+}
+
+// Horizontal size (m) of one noise period along and across the wind, per type.
+vec2 noise_period(int type) {
+  if (type == CLOUD_CUMULUS) return vec2(6000.0f, 6000.0f);
+  if (type == CLOUD_STRATOCUMULUS) return vec2(5000.0f, 5000.0f);
+  if (type == CLOUD_STRATUS) return vec2(12000.0f, 12000.0f);
+  if (type == CLOUD_ALTO) return vec2(4000.0f, 4000.0f);
+  if (type == CLOUD_CIRRUS) return vec2(40000.0f, 5000.0f);
+  if (type == CLOUD_CIRROSTRATUS) return vec2(20000.0f, 20000.0f);
+  if (type == CLOUD_CIRROCUMULUS) return vec2(1500.0f, 1500.0f);
+  if (type == CLOUD_FOG) return vec2(3000.0f, 3000.0f);
+  return vec2(30000.0f, 30000.0f);  // cumulonimbus
+}
+
+// Henyey-Greenstein lobes forward (g = 0.8) and back (g = -0.3), 70:30.
+float cloud_phase(float nu, float scale) {
+  float forward = 0.8f * scale;
+  float back = -0.3f * scale;
+  float f = (1.0f - forward * forward) / pow(max(1.0f + forward * forward - 2.0f * forward * nu, 1.0e-6f), 1.5f);
+  float b = (1.0f - back * back) / pow(max(1.0f + back * back - 2.0f * back * nu, 1.0e-6f), 1.5f);
+  return (0.7f * f + 0.3f * b) / (4.0f * 3.14159265358979f);
+}
+
+// Sun light reaching a cloud point through optical depth tau towards the sun, with multiple
+// scattering approximated by octaves (Wrenninge, Kulla and Lundqvist, "Oz: The Great and
+// Volumetric", SIGGRAPH 2013 talk): sum_i a^i e^{-b^i tau} p(nu; c^i g), a = b = c = 1/2.
+float sun_scattering(float tau, float nu) {
+  float sum = 0.0f;
+  float a = 1.0f;
+  float b = 1.0f;
+  float c = 1.0f;
+  for (int i = 0; i < 3; ++i) {
+    sum += a * exp(-b * tau) * cloud_phase(nu, c);
+    a *= 0.5f;
+    b *= 0.5f;
+    c *= 0.5f;
+  }
+  return sum;
+}
+
+#endif

@@ -1,0 +1,42 @@
+#pragma once
+// A scene: everything `nephele render` needs, from flags or from a JSON scene file.
+#include <cstdint>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace nephele::regional {
+
+// Bad scene input (exit code 2): names the file or flag, the key and the allowed values.
+class SceneError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+struct Scene {
+  std::string view = "gurten";              // named viewpoint, or "" when `at` is given
+  std::optional<double> latitude_deg, longitude_deg, height_m;  // --at, overrides the viewpoint
+  std::optional<double> heading_deg;        // default: the viewpoint's heading
+  double pitch_deg = 5;
+  double fov_deg = 70;
+  std::string time = "2026-06-21T16:00Z";
+  int width = 1280, height = 720;
+  bool panorama = false;
+  std::vector<std::string> weather;          // weather files (paths resolved against the scene file)
+  std::uint32_t seed = 1;
+  int view_steps = 48, light_steps = 6, sky_steps = 16;
+  double exposure = 4.0;
+  int cover_size = 128;                      // global cover size when no weather is given
+  std::vector<std::string> outputs;          // file names (png, exr); --scene renders into --out DIR
+};
+
+// Reads a scene file; unknown keys and wrong types are errors naming the key.
+Scene read_scene_file(const std::string& path);
+Scene parse_scene(const std::string& json_text, const std::string& source_name, const std::string& base_directory);
+// Checks ranges; throws SceneError naming the key.
+void validate_scene(const Scene& scene, const std::string& source_name);
+// Parses "1280x720".
+void parse_size(const std::string& text, int& width, int& height, const std::string& name);
+
+}  // namespace nephele::regional

@@ -1,0 +1,223 @@
+#include "regional/weather.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+#include "render/sun_position.hpp"
+#include "util/json.hpp"
+
+namespace nephele::regional {
+namespace {
+
+std::string format_time(double t) {
+  const long days = static_cast<long>(std::floor(t / 86400.0));
+  const long seconds = static_cast<long>(t - days * 86400.0);
+  // Civil date from days (inverse of days_from_civil, Hinnant).
+  long z = days + 719468;
+  const long era = (z >= 0 ? z : z - 146096) / 146097;
+  const unsigned doe = static_cast<unsigned>(z - era * 146097);
+  const unsigned yoe = (doe - doe / 1460 + doe / 36524 - doe / 146096) / 365;
+  long y = static_cast<long>(yoe) + era * 400;
+  const unsigned doy = doe - (365 * yoe + yoe / 4 - yoe / 100);
+  const unsigned mp = (5 * doy + 2) / 153;
+  const unsigned d = doy - (153 * mp + 2) / 5 + 1;
+  const unsigned m = mp < 10 ? mp + 3 : mp - 9;
+  y += m <= 2;
+  char buffer[40];
+  std::snprintf(buffer, sizeof buffer, "%04ld-%02u-%02uT%02ld:%02ldZ", y, m, d, seconds / 3600, seconds / 60 % 60);
+  return buffer;
+}
+
+struct Reader {
+  const std::string& source;
+  const json::Value& root;
+
+  [[noreturn]] void fail(const std::string& field, const std::string& message) const {
+    throw WeatherError(source + ": " + field + ": " + message);
+  }
+  const json::Value& member(const json::Value& object, const std::string& path, const std::string& key) const {
+    const json::Value* v = object.find(key);
+    if (!v) fail(path + key, "missing");
+    return *v;
+  }
+  double number(const json::Value& object, const std::string& path, const std::string& key) const {
+    const json::Value& v = member(object, path, key);
+    if (!v.is_number()) fail(path + key, "must be a number");
+    return v.as_number();
+  }
+  // An hourly array of numbers; nulls (missing values, NaN in the source) are errors.
+  std::vector<double> series(const json::Value& block, const std::string& path, const std::string& key,
+                             size_t count, double lo, double hi, bool required = true) const {
+    const json::Value* v = block.find(key);
+    if (!v) {
+      if (required) fail(path + key, "missing");
+      return {};
+    }
+    if (!v->is_array()) fail(path + key, "must be an array");
+    const auto& items = v->as_array();
+    if (items.size() != count)
+      fail(path + key, "has " + std::to_string(items.size()) + " values but 'time' has " + std::to_string(count));
+    std::vector<double> out;
+    for (size_t i = 0; i < items.size(); ++i) {
+      if (!items[i].is_number()) fail(path + key + "[" + std::to_string(i) + "]", "missing value (null or NaN)");
+      const double x = items[i].as_number();
+      if (x < lo || x > hi) {
+        std::ostringstream m;
+        m << x << " is outside the allowed range " << lo << " to " << hi;
+        fail(path + key + "[" + std::to_string(i) + "]", m.str());
+      }
+      out.push_back(x);
+    }
+    return out;
+  }
+  std::vector<double> times(const json::Value& block, const std::string& path, double offset_seconds) const {
+    const json::Value& v = member(block, path, "time");
+    if (!v.is_array() || v.as_array().empty()) fail(path + "time", "must be a non-empty array of times");
+    std::vector<double> out;
+    for (size_t i = 0; i < v.as_array().size(); ++i) {
+      const json::Value& t = v.as_array()[i];
+      if (!t.is_string()) fail(path + "time[" + std::to_string(i) + "]", "must be a string");
+      std::string text = t.as_string();
+      if (text.size() >= 11 && text[10] == ' ') text[10] = 'T';  // meteoblue "YYYY-MM-DD HH:MM"
+      if (text.back() != 'Z') text += "Z";
+      try {
+        out.push_back(render::parse_utc_time(text) - offset_seconds);
+      } catch (const std::invalid_argument& e) {
+        fail(path + "time[" + std::to_string(i) + "]", e.what());
+      }
+      if (i > 0 && out[i] <= out[i - 1]) fail(path + "time[" + std::to_string(i) + "]", "times must increase");
+    }
+    return out;
+  }
+};
+
+}  // namespace
+
+WeatherSample WeatherSeries::at(double time) const {
+  if (hours.empty()) throw WeatherError(source + ": no hours");
+  if (time < hours.front().time || time > hours.back().time)
+    throw WeatherError(source + ": --time " + format_time(time) + " is outside the file's range " +
+                       format_time(hours.front().time) + " to " + format_time(hours.back().time));
+  size_t i = 0;
+  while (i + 1 < hours.size() && hours[i + 1].time < time) ++i;
+  if (i + 1 >= hours.size() || hours[i].time == time) return hours[i];
+  const WeatherSample& a = hours[i];
+  const WeatherSample& b = hours[i + 1];
+  const double t = (time - a.time) / (b.time - a.time);
+  auto mix = [t](double x, double y) { return x + (y - x) * t; };
+  WeatherSample s = a;
+  s.time = time;
+  s.cloud_cover = mix(a.cloud_cover, b.cloud_cover);
+  s.cloud_low = mix(a.cloud_low, b.cloud_low);
+  s.cloud_mid = mix(a.cloud_mid, b.cloud_mid);
+  s.cloud_high = mix(a.cloud_high, b.cloud_high);
+  s.precipitation = mix(a.precipitation, b.precipitation);
+  s.wind_speed = mix(a.wind_speed, b.wind_speed);
+  // Wind direction: interpolate the vector, not the angle (350 and 10 degrees average to 0).
+  const double ra = a.wind_direction_deg * M_PI / 180, rb = b.wind_direction_deg * M_PI / 180;
+  s.wind_direction_deg = std::atan2(mix(std::sin(ra), std::sin(rb)), mix(std::cos(ra), std::cos(rb))) * 180 / M_PI;
+  if (s.wind_direction_deg < 0) s.wind_direction_deg += 360;
+  return s;
+}
+
+std::vector<WeatherSample> WeatherSeries::ahead(double time, double horizon_hours) const {
+  std::vector<WeatherSample> out;
+  for (const auto& h : hours)
+    if (h.time > time && h.time <= time + horizon_hours * 3600.0) out.push_back(h);
+  return out;
+}
+
+WeatherSeries parse_weather(const std::string& text, const std::string& source) {
+  json::Value root;
+  try {
+    root = json::parse(text);
+  } catch (const json::ParseError& e) {
+    throw WeatherError(source + ": not valid JSON: " + e.what());
+  }
+  if (!root.is_object()) throw WeatherError(source + ": the top level must be a JSON object");
+  Reader r{source, root};
+  WeatherSeries w;
+  w.source = source;
+  std::vector<double> times, total, low, mid, high, rain, speed, direction;
+  if (root.find("hourly")) {
+    // Open-Meteo forecast API: hourly arrays beside 'time'; times are local to utc_offset_seconds.
+    w.format = "open-meteo";
+    w.latitude_deg = r.number(root, "", "latitude");
+    w.longitude_deg = r.number(root, "", "longitude");
+    const double offset = root.find("utc_offset_seconds") ? r.number(root, "", "utc_offset_seconds") : 0.0;
+    const json::Value& hourly = root.at("hourly");
+    if (!hourly.is_object()) r.fail("hourly", "must be an object");
+    times = r.times(hourly, "hourly.", offset);
+    const size_t n = times.size();
+    total = r.series(hourly, "hourly.", "cloud_cover", n, 0, 100);
+    low = r.series(hourly, "hourly.", "cloud_cover_low", n, 0, 100);
+    mid = r.series(hourly, "hourly.", "cloud_cover_mid", n, 0, 100);
+    high = r.series(hourly, "hourly.", "cloud_cover_high", n, 0, 100);
+    rain = r.series(hourly, "hourly.", "precipitation", n, 0, 500, false);
+    // Wind aloft when present, else at 10 m (km/h in Open-Meteo's default units).
+    const char* speed_keys[] = {"wind_speed_850hPa", "wind_speed_10m"};
+    const char* direction_keys[] = {"wind_direction_850hPa", "wind_direction_10m"};
+    for (int k = 0; k < 2 && speed.empty(); ++k) {
+      speed = r.series(hourly, "hourly.", speed_keys[k], n, 0, 500, false);
+      if (!speed.empty()) {
+        direction = r.series(hourly, "hourly.", direction_keys[k], n, 0, 360);
+        std::string unit = "km/h";
+        if (const json::Value* units = root.find("hourly_units"))
+          if (const json::Value* u = units->find(speed_keys[k]); u && u->is_string()) unit = u->as_string();
+        const double scale = unit == "m/s" ? 1.0 : unit == "km/h" ? 1.0 / 3.6 : unit == "mp/h" ? 0.44704
+                           : unit == "kn" ? 0.514444 : -1.0;
+        if (scale < 0) r.fail(std::string("hourly_units.") + speed_keys[k], "unit '" + unit + "' not one of km/h, m/s, mp/h, kn");
+        for (double& s : speed) s *= scale;
+      }
+    }
+  } else if (root.find("data_1h")) {
+    // meteoblue packages: metadata with the position, data_1h with hourly arrays (m/s wind).
+    w.format = "meteoblue";
+    const json::Value& metadata = r.member(root, "", "metadata");
+    w.latitude_deg = r.number(metadata, "metadata.", "latitude");
+    w.longitude_deg = r.number(metadata, "metadata.", "longitude");
+    const double offset = metadata.find("utc_timeoffset") ? r.number(metadata, "metadata.", "utc_timeoffset") * 3600.0 : 0.0;
+    const json::Value& hourly = root.at("data_1h");
+    times = r.times(hourly, "data_1h.", offset);
+    const size_t n = times.size();
+    total = r.series(hourly, "data_1h.", "totalcloudcover", n, 0, 100);
+    low = r.series(hourly, "data_1h.", "lowclouds", n, 0, 100);
+    mid = r.series(hourly, "data_1h.", "midclouds", n, 0, 100);
+    high = r.series(hourly, "data_1h.", "highclouds", n, 0, 100);
+    rain = r.series(hourly, "data_1h.", "precipitation", n, 0, 500, false);
+    speed = r.series(hourly, "data_1h.", "windspeed", n, 0, 150, false);
+    if (!speed.empty()) direction = r.series(hourly, "data_1h.", "winddirection", n, 0, 360);
+  } else {
+    throw WeatherError(source + ": neither an Open-Meteo file (key 'hourly') nor a meteoblue file (key 'data_1h')");
+  }
+  if (w.latitude_deg < -90 || w.latitude_deg > 90) r.fail("latitude", "outside the allowed range -90 to 90");
+  if (w.longitude_deg < -180 || w.longitude_deg > 360) r.fail("longitude", "outside the allowed range -180 to 360");
+  for (size_t i = 0; i < times.size(); ++i) {
+    WeatherSample s;
+    s.time = times[i];
+    s.cloud_cover = total[i] / 100;
+    s.cloud_low = low[i] / 100;
+    s.cloud_mid = mid[i] / 100;
+    s.cloud_high = high[i] / 100;
+    s.precipitation = rain.empty() ? 0.0 : rain[i];
+    if (!speed.empty()) {
+      s.has_wind = true;
+      s.wind_speed = speed[i];
+      s.wind_direction_deg = direction[i];
+    }
+    w.hours.push_back(s);
+  }
+  return w;
+}
+
+WeatherSeries read_weather_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw WeatherError(path + ": cannot be read");
+  std::stringstream text;
+  text << in.rdbuf();
+  return parse_weather(text.str(), path);
+}
+
+}  // namespace nephele::regional

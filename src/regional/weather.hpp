@@ -1,0 +1,41 @@
+#pragma once
+// Hourly weather of one station, read from Open-Meteo or meteoblue JSON.
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace nephele::regional {
+
+// Bad weather input: names the file, the field and the allowed range (exit code 2).
+class WeatherError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// One hour of weather; cloud fractions in [0, 1], precipitation in mm/h, wind in m/s and
+// degrees (meteorological: the direction the wind comes from, clockwise from north).
+struct WeatherSample {
+  double time = 0;  // UTC, seconds since 1970
+  double cloud_cover = 0, cloud_low = 0, cloud_mid = 0, cloud_high = 0;
+  double precipitation = 0;
+  double wind_speed = 0, wind_direction_deg = 0;
+  bool has_wind = false;
+};
+
+struct WeatherSeries {
+  std::string source;    // file name
+  std::string format;    // "open-meteo" or "meteoblue"
+  double latitude_deg = 0, longitude_deg = 0;
+  std::vector<WeatherSample> hours;  // increasing time
+
+  // Linear interpolation between the hours around `time`; throws WeatherError outside the range.
+  WeatherSample at(double time) const;
+  // Hours from `time` (exclusive) up to `time + horizon_hours` (inclusive).
+  std::vector<WeatherSample> ahead(double time, double horizon_hours) const;
+};
+
+// Reads either format (recognised by its keys); throws WeatherError naming file and field.
+WeatherSeries read_weather_file(const std::string& path);
+WeatherSeries parse_weather(const std::string& json_text, const std::string& source_name);
+
+}  // namespace nephele::regional

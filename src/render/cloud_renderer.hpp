@@ -1,0 +1,59 @@
+#pragma once
+// Renders the cloud layers, sky and ground seen from a point near the ground (GPU ray marching).
+#include <glm/glm.hpp>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "export/image_files.hpp"
+#include "regional/cloud_layers.hpp"
+#include "regional/weather_field.hpp"
+
+namespace nephele::render {
+
+struct Camera {
+  double latitude_deg = 0, longitude_deg = 0, height_m = 0;  // WGS84, height above the ellipsoid
+  double heading_deg = 0;   // clockwise from north
+  double pitch_deg = 0;     // up from the horizon
+  double fov_deg = 60;      // horizontal field of view
+  bool panorama = false;    // full 360 x 180 view sphere instead of a perspective view
+  int width = 1280, height = 720;
+};
+
+struct RenderSettings {
+  int view_steps = 48;      // samples per layer interval along the view ray
+  int light_steps = 6;      // samples towards the sun per cloud sample
+  int sky_steps = 16;       // samples of the clear-sky integral
+  double max_distance_m = 150000;
+  std::uint32_t seed = 1;
+  int noise_size = 64;      // texels per side of the noise volume
+};
+
+struct RenderResult {
+  output::ImageData radiance;        // RGBA float, linear; A = cloud opacity
+  std::vector<std::string> passes;   // what ran, in order (for --verbose and tests)
+  std::vector<std::pair<std::string, double>> timings_ms;
+  glm::dvec3 sun_direction;          // east, north, up
+  double sun_elevation_deg = 0;
+};
+
+// The Gaussian radius of curvature sqrt(M N) of WGS84 at a latitude: the sphere that osculates
+// the ellipsoid best at the viewpoint.
+double osculating_earth_radius(double latitude_deg);
+// Sun direction in the local east-north-up frame.
+glm::dvec3 sun_direction_enu(double unix_seconds, double latitude_deg, double longitude_deg, double* elevation_deg = nullptr);
+// Sky irradiance on a horizontal surface at an altitude (CPU twin of the shader's sky), used as
+// the clouds' ambient light.
+glm::vec3 sky_irradiance(glm::vec3 sun, double earth_radius, double altitude_m);
+
+// Needs a current OpenGL 4.5 context. Layers whose coverage channel is zero everywhere in the
+// field are not marched (their absence is listed in passes).
+RenderResult render_clouds(const Camera& camera, const std::vector<regional::CloudLayer>& layers,
+                           const regional::WeatherField& field, double unix_seconds,
+                           const RenderSettings& settings, glm::dvec2 wind_towards = {0, 1}, double wind_speed = 0);
+
+// Display encoding for PNG: exposure, the ACES filmic curve fit of Narkowicz (2015), sRGB.
+output::ImageData tone_map(const output::ImageData& radiance, double exposure);
+
+}  // namespace nephele::render

@@ -1,0 +1,179 @@
+#include "render/scene_renderer.hpp"
+
+#include <GeographicLib/LocalCartesian.hpp>
+
+#include <filesystem>
+#include <limits>
+
+#include "cover/global_cover.hpp"
+#include "export/atomic_output.hpp"
+#include "export/image_files.hpp"
+#include "nephele/version.hpp"
+#include "regional/sites.hpp"
+#include "regional/weather_field.hpp"
+#include "render/sun_position.hpp"
+
+namespace nephele::render {
+namespace {
+
+constexpr int field_size = 64;
+constexpr double field_extent_m = 160000.0;
+constexpr double look_ahead_hours = 168.0;  // the original system looked up to 7 days ahead
+
+Camera camera_of(const regional::Scene& scene) {
+  Camera c;
+  if (scene.latitude_deg) {
+    c.latitude_deg = *scene.latitude_deg;
+    c.longitude_deg = *scene.longitude_deg;
+    c.height_m = *scene.height_m;
+    c.heading_deg = scene.heading_deg.value_or(0.0);
+  } else {
+    const auto viewpoint = regional::find_viewpoint(scene.view);
+    c.latitude_deg = viewpoint->site.latitude_deg;
+    c.longitude_deg = viewpoint->site.longitude_deg;
+    // Eye height 2 m above the summit.
+    c.height_m = viewpoint->site.elevation_m + 2.0;
+    c.heading_deg = scene.heading_deg.value_or(viewpoint->heading_deg);
+  }
+  c.pitch_deg = scene.pitch_deg;
+  c.fov_deg = scene.fov_deg;
+  c.panorama = scene.panorama;
+  c.width = scene.width;
+  c.height = scene.height;
+  return c;
+}
+
+}  // namespace
+
+SceneRender render_scene(const regional::Scene& scene) {
+  SceneRender out;
+  out.camera = camera_of(scene);
+  const double time = parse_utc_time(scene.time);
+  const GeographicLib::LocalCartesian frame(out.camera.latitude_deg, out.camera.longitude_deg, 0.0);
+  regional::WeatherField field;
+  glm::dvec2 wind(0.0, 1.0);
+  double wind_speed = 0.0;
+
+  if (!scene.weather.empty()) {
+    std::vector<regional::Station> stations;
+    std::vector<regional::WeatherSample> now;
+    std::vector<std::vector<regional::WeatherSample>> ahead;
+    size_t nearest = 0;
+    double nearest_distance = std::numeric_limits<double>::max();
+    for (const auto& path : scene.weather) {
+      const regional::WeatherSeries series = regional::read_weather_file(path);
+      now.push_back(series.at(time));
+      ahead.push_back(series.ahead(time, look_ahead_hours));
+      stations.push_back({series.latitude_deg, series.longitude_deg,
+                          regional::station_coverage(now.back(), ahead.back())});
+      const double d = regional::geodesic_distance_m(out.camera.latitude_deg, out.camera.longitude_deg,
+                                                     series.latitude_deg, series.longitude_deg);
+      if (d < nearest_distance) {
+        nearest_distance = d;
+        nearest = stations.size() - 1;
+      }
+    }
+    field = regional::field_from_stations(stations, frame, field_size, field_extent_m);
+    out.passes.push_back("weather_field (" + std::to_string(stations.size()) + " stations)");
+    out.weather_source = "stations";
+    // Layer types follow the weather at the viewpoint: its nearest station.
+    out.layers = regional::choose_layers(now[nearest], ahead[nearest]);
+    if (now[nearest].has_wind) {
+      const double from = now[nearest].wind_direction_deg * M_PI / 180;
+      wind = -glm::dvec2(std::sin(from), std::cos(from));
+      wind_speed = now[nearest].wind_speed;
+    }
+  } else {
+    cover::CoverParameters parameters;
+    parameters.size = scene.cover_size;
+    parameters.seed = scene.seed;
+    cover::GlobalCover cover(parameters);
+    cover.run();
+    out.passes.push_back("global_cover");
+    field = regional::field_from_cover(cover.cover_field().read(), parameters.size, scene.seed, frame, field_size,
+                                       field_extent_m);
+    out.passes.push_back("weather_field (global cover)");
+    out.weather_source = "global cover";
+    out.layers = regional::choose_layers(regional::sample_from_field(field, time), {});
+  }
+
+  RenderSettings settings;
+  settings.view_steps = scene.view_steps;
+  settings.light_steps = scene.light_steps;
+  settings.sky_steps = scene.sky_steps;
+  settings.seed = scene.seed;
+  out.render = render_clouds(out.camera, out.layers, field, time, settings, wind, wind_speed);
+  out.passes.insert(out.passes.end(), out.render.passes.begin(), out.render.passes.end());
+  return out;
+}
+
+json::Value scene_sidecar(const SceneRender& r, const regional::Scene& scene) {
+  json::Value root;
+  root.set("program", "nephele");
+  root.set("version", version);
+  json::Value camera;
+  camera.set("latitude", r.camera.latitude_deg);
+  camera.set("longitude", r.camera.longitude_deg);
+  camera.set("height_m", r.camera.height_m);
+  camera.set("heading_deg", r.camera.heading_deg);
+  camera.set("pitch_deg", r.camera.pitch_deg);
+  camera.set("fov_deg", r.camera.fov_deg);
+  camera.set("panorama", r.camera.panorama);
+  root.set("camera", camera);
+  root.set("time", scene.time);
+  root.set("sun_elevation_deg", r.render.sun_elevation_deg);
+  root.set("weather_source", r.weather_source);
+  json::Value::Array layers;
+  for (const auto& l : r.layers) {
+    json::Value v;
+    v.set("type", regional::cloud_type_name(l.type));
+    v.set("base_m", l.base_m);
+    v.set("top_m", l.top_m);
+    v.set("morph", l.morph);
+    v.set("reason", l.reason);
+    layers.push_back(v);
+  }
+  root.set("layers", layers);
+  json::Value::Array passes;
+  for (const auto& p : r.passes) passes.emplace_back(p);
+  root.set("passes", passes);
+  json::Value timings;
+  for (const auto& [name, ms] : r.render.timings_ms) timings.set(name, ms);
+  root.set("timings_ms", timings);
+  json::Value steps;
+  steps.set("view", scene.view_steps);
+  steps.set("light", scene.light_steps);
+  steps.set("sky", scene.sky_steps);
+  root.set("steps", steps);
+  root.set("exposure", scene.exposure);
+  return root;
+}
+
+void write_scene_outputs(const SceneRender& result, const regional::Scene& scene,
+                         const std::vector<std::string>& output_paths) {
+  if (output_paths.empty()) return;
+  // All outputs go through one set per directory; the sidecar sits beside the first output.
+  const std::filesystem::path first(output_paths.front());
+  output::OutputSet outputs(first.parent_path().empty() ? std::filesystem::path(".") : first.parent_path());
+  std::vector<std::unique_ptr<output::OutputSet>> others;
+  for (const auto& path_text : output_paths) {
+    const std::filesystem::path path(path_text);
+    const std::filesystem::path directory = path.parent_path().empty() ? std::filesystem::path(".") : path.parent_path();
+    output::OutputSet* set = &outputs;
+    if (directory != (first.parent_path().empty() ? std::filesystem::path(".") : first.parent_path())) {
+      others.push_back(std::make_unique<output::OutputSet>(directory));
+      set = others.back().get();
+    }
+    const std::string name = path.filename().string();
+    if (path.extension() == ".png")
+      output::write_png8(set->temporary_for(name), tone_map(result.render.radiance, scene.exposure), name);
+    else
+      output::write_float_image(set->temporary_for(name), result.render.radiance, {"R", "G", "B", "A"}, name);
+  }
+  output::write_text_file(outputs.temporary_for(first.stem().string() + ".json"),
+                          json::write(scene_sidecar(result, scene)));
+  for (auto& o : others) o->commit();
+  outputs.commit();
+}
+
+}  // namespace nephele::render

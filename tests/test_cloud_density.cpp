@@ -1,0 +1,114 @@
+// Cloud densities per type and the clear-sky atmosphere (CPU twins of the render shaders).
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <random>
+
+#include "shader_math/shader_math.hpp"
+
+using namespace nephele::glsl;
+
+TEST_CASE("cloud densities vanish without coverage or outside their layer and stay within 0 and 1", "[density]") {
+  std::mt19937 rng(1);
+  std::uniform_real_distribution<float> u(0.0f, 1.0f);
+  for (int type = CLOUD_CIRRUS; type <= CLOUD_CUMULONIMBUS; ++type) {
+    INFO("type " << type);
+    for (int k = 0; k < 2000; ++k) {
+      const float h = u(rng), c = u(rng), shape = u(rng), detail = u(rng), morph = u(rng);
+      const float d = cloud_density(type, h, c, shape, detail, morph);
+      REQUIRE(d >= 0.0f);
+      REQUIRE(d <= 1.0f);
+      REQUIRE(cloud_density(type, h, 0.0f, shape, detail, morph) == 0.0f);
+      REQUIRE(cloud_density(type, -0.01f, c, shape, detail, morph) == 0.0f);
+      REQUIRE(cloud_density(type, 1.01f, c, shape, detail, morph) == 0.0f);
+    }
+  }
+}
+
+TEST_CASE("more coverage never thins a heaped cloud", "[density]") {
+  std::mt19937 rng(2);
+  std::uniform_real_distribution<float> u(0.0f, 1.0f);
+  for (int k = 0; k < 5000; ++k) {
+    const float h = u(rng), shape = u(rng), detail = u(rng), c = u(rng);
+    const float more = std::min(1.0f, c + 0.1f);
+    REQUIRE(cloud_density(CLOUD_CUMULUS, h, more, shape, detail, 0.0f) >=
+            cloud_density(CLOUD_CUMULUS, h, c, shape, detail, 0.0f) - 1e-6f);
+  }
+}
+
+TEST_CASE("the alto morph runs from the altostratus sheet to the altocumulus cells", "[density]") {
+  for (float h : {0.3f, 0.5f}) {
+    for (float shape : {0.2f, 0.6f, 0.9f}) {
+      CHECK(cloud_density(CLOUD_ALTO, h, 0.6f, shape, 0.5f, 0.0f) == Approx(sheet_density(h, 0.6f, shape, 0.5f)));
+      CHECK(cloud_density(CLOUD_ALTO, h, 0.6f, shape, 0.5f, 1.0f) ==
+            Approx(heaped_density(h, 0.6f, shape, 0.5f, 0.2f)));
+    }
+  }
+}
+
+TEST_CASE("fog thins with height and the Hermite step is the cubic smoothstep", "[density]") {
+  CHECK(cloud_density(CLOUD_FOG, 0.1f, 1.0f, 0.5f, 1.0f, 0.0f) > cloud_density(CLOUD_FOG, 0.9f, 1.0f, 0.5f, 1.0f, 0.0f));
+  CHECK(hermite_step(0.0f, 1.0f, 0.5f) == 0.5f);
+  CHECK(hermite_step(0.0f, 1.0f, 0.25f) == Approx(0.15625f));
+  CHECK(hermite_step(2.0f, 3.0f, 1.0f) == 0.0f);
+}
+
+TEST_CASE("phase functions integrate to one over the sphere", "[atmosphere]") {
+  // Midpoint rule in nu = cos(angle): integral of p over the sphere = 2 pi int p dnu.
+  const int n = 200000;
+  double hg = 0, rayleigh = 0, cloud = 0;
+  for (int i = 0; i < n; ++i) {
+    const float nu = -1.0f + 2.0f * (i + 0.5f) / n;
+    const double dnu = 2.0 / n;
+    hg += 2 * M_PI * henyey_greenstein(nu, 0.8f) * dnu;
+    rayleigh += 2 * M_PI * rayleigh_phase(nu) * dnu;
+    cloud += 2 * M_PI * cloud_phase(nu, 1.0f) * dnu;
+  }
+  CHECK(hg == Approx(1.0).epsilon(2e-3));
+  CHECK(rayleigh == Approx(1.0).epsilon(1e-6));
+  CHECK(cloud == Approx(1.0).epsilon(2e-3));
+}
+
+TEST_CASE("vertical transmittance matches the scale-height integral and vanishes below the horizon", "[atmosphere]") {
+  const float radius = 6371000.0f;
+  const vec3 sea_level(0.0f, 0.0f, radius);
+  // Straight up, the optical depth is beta_R H_R + beta_M H_M (to within e^{-100 km/H}). The
+  // midpoint rule errs by (h/H)^2/24 of the depth it integrates; with s = L t^2 and 16 steps the
+  // step at three Rayleigh scale heights (24 km) is 6.1 km: 2.4% of tau (0.27 in blue), so the
+  // transmittance is within 0.65%.
+  const vec3 t = transmittance_to_space(sea_level, vec3(0, 0, 1), radius);
+  const vec3 beta = rayleigh_scattering() * RAYLEIGH_SCALE_HEIGHT + vec3(MIE_EXTINCTION * MIE_SCALE_HEIGHT);
+  CHECK(t.x == Approx(std::exp(-beta.x)).epsilon(6.5e-3));
+  CHECK(t.z == Approx(std::exp(-beta.z)).epsilon(6.5e-3));
+  CHECK(transmittance_to_space(sea_level, normalize(vec3(1, 0, -0.1f)), radius) == vec3(0.0f));
+  // Sun just above the horizon: redder light (blue attenuated more).
+  const vec3 low_sun = transmittance_to_space(sea_level, normalize(vec3(1, 0, 0.05f)), radius);
+  CHECK(low_sun.z < low_sun.x);
+}
+
+TEST_CASE("ray-shell intervals cover exactly the part of the ray inside the layer", "[atmosphere]") {
+  const vec3 centre(0.0f, 0.0f, -1000.0f);
+  // The non-empty intervals of a result, in order.
+  auto pieces = [](vec4 r) {
+    std::vector<vec2> out;
+    if (r.x < r.y) out.emplace_back(r.x, r.y);
+    if (r.z < r.w) out.emplace_back(r.z, r.w);
+    return out;
+  };
+  // Straight up from inside the inner sphere: one interval from r_in to r_out.
+  const auto up = pieces(ray_shell(vec3(0.0f), vec3(0, 0, 1), centre, 1500.0f, 2000.0f, 1e9f));
+  REQUIRE(up.size() == 1);
+  CHECK(up[0].x == Approx(500.0f));
+  CHECK(up[0].y == Approx(1000.0f));
+  // Inside the shell looking down: from 0 to the inner sphere.
+  const auto down = pieces(ray_shell(vec3(0.0f), vec3(0, 0, -1), vec3(0.0f, 0.0f, -1800.0f), 1500.0f, 2000.0f, 1e9f));
+  REQUIRE(down.size() == 2);  // down to the inner sphere, and again beyond it on the far side
+  CHECK(down[0].x == 0.0f);
+  CHECK(down[0].y == Approx(300.0f));
+  CHECK(down[1].x == Approx(3300.0f));
+  CHECK(down[1].y == Approx(3800.0f));
+  // A limit cuts the interval.
+  const auto cut = pieces(ray_shell(vec3(0.0f), vec3(0, 0, 1), centre, 1500.0f, 2000.0f, 700.0f));
+  REQUIRE(cut.size() == 1);
+  CHECK(cut[0].y == Approx(700.0f));
+}

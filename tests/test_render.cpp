@@ -1,0 +1,185 @@
+// Rendering of the layers: only the needed passes run, and extreme views stay finite.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+#include "gl_support.hpp"
+#include "regional/scene.hpp"
+#include "render/cloud_renderer.hpp"
+#include "render/scene_renderer.hpp"
+#include "render/sun_position.hpp"
+
+using namespace nephele;
+using namespace nephele::regional;
+
+namespace {
+
+const double noon = render::parse_utc_time("2026-06-21T11:30Z");
+const double midnight = render::parse_utc_time("2026-06-21T23:00Z");
+
+render::Camera small_camera(double pitch = 10) {
+  render::Camera c;
+  c.latitude_deg = 46.91722;
+  c.longitude_deg = 7.44361;
+  c.height_m = 860;
+  c.heading_deg = 20;
+  c.pitch_deg = pitch;
+  c.width = 24;
+  c.height = 16;
+  return c;
+}
+
+render::RenderSettings quick() {
+  render::RenderSettings s;
+  s.view_steps = 12;
+  s.light_steps = 3;
+  s.sky_steps = 6;
+  s.noise_size = 16;
+  return s;
+}
+
+WeatherField uniform_field(float low, float mid, float high, float fog = 0, float convective = 0) {
+  WeatherField f{4, 160000.0, {}};
+  for (float v : {high, mid, low, fog, convective}) f.values.insert(f.values.end(), 16, v);
+  return f;
+}
+
+struct Stats {
+  double mean = 0;
+  double alpha_min = 1, alpha_max = 0;
+  bool finite = true;
+};
+
+Stats stats(const render::RenderResult& r) {
+  Stats s;
+  const auto& p = r.radiance.pixels;
+  for (size_t k = 0; k < p.size(); k += 4) {
+    for (int c = 0; c < 4; ++c) s.finite = s.finite && std::isfinite(p[k + c]) && p[k + c] >= 0.0f;
+    s.mean += (p[k] + p[k + 1] + p[k + 2]) / 3.0;
+    s.alpha_min = std::min<double>(s.alpha_min, p[k + 3]);
+    s.alpha_max = std::max<double>(s.alpha_max, p[k + 3]);
+  }
+  s.mean /= p.size() / 4.0;
+  return s;
+}
+
+bool contains(const std::vector<std::string>& passes, const std::string& text) {
+  for (const auto& p : passes)
+    if (p.find(text) != std::string::npos) return true;
+  return false;
+}
+
+}  // namespace
+
+TEST_CASE("a clear sky marches no layer and builds no noise volume", "[render]") {
+  test::test_context();
+  const auto layers = choose_layers(WeatherSample{}, {});
+  const auto r = render::render_clouds(small_camera(), layers, uniform_field(0, 0, 0), noon, quick());
+  CHECK_FALSE(contains(r.passes, "march layer"));
+  CHECK_FALSE(contains(r.passes, "noise_volume"));
+  const Stats s = stats(r);
+  CHECK(s.finite);
+  CHECK(s.alpha_max == 0.0);
+  CHECK(s.mean > 0.0);  // the sky is still there
+}
+
+TEST_CASE("a layer whose coverage is zero everywhere is skipped", "[render]") {
+  test::test_context();
+  std::vector<CloudLayer> layers = {{CloudType::cumulus, CoverageChannel::low, 1500, 3000, 1e-2f, 0, 0, 0, "test"},
+                                    {CloudType::cirrus, CoverageChannel::high, 8500, 10000, 3e-4f, 0, 0, 0, "test"}};
+  const auto r = render::render_clouds(small_camera(), layers, uniform_field(0.5f, 0, 0), noon, quick());
+  CHECK(contains(r.passes, "march layer cumulus"));
+  CHECK(contains(r.passes, "skip layer cirrus (no cloud)"));
+  CHECK_FALSE(contains(r.passes, "march layer cirrus"));
+}
+
+TEST_CASE("a fully overcast stratus hides the sky overhead", "[render]") {
+  test::test_context();
+  const auto layers = choose_layers([] {
+    WeatherSample s;
+    s.cloud_low = 1.0;
+    s.precipitation = 0.5;  // drizzle: stratus, not fog
+    return s;
+  }(), {});
+  const auto r = render::render_clouds(small_camera(80), layers, uniform_field(1.0f, 0, 0), noon, quick());
+  const Stats s = stats(r);
+  CHECK(s.finite);
+  CHECK(s.alpha_min > 0.9);
+}
+
+TEST_CASE("extreme views and lights render without NaN or Inf", "[render][extreme]") {
+  test::test_context();
+  std::vector<CloudLayer> layers = {
+      {CloudType::fog, CoverageChannel::fog, 500, 1200, 2e-3f, 0, 0, 0, "camera inside"},
+      {CloudType::cumulus, CoverageChannel::low, 1500, 3000, 1e-2f, 0, 0, 0, "test"},
+      {CloudType::alto, CoverageChannel::mid, 3500, 5000, 2e-3f, 0.5f, 0, 0, "test"},
+      {CloudType::cumulonimbus, CoverageChannel::convective, 1300, 11000, 1.5e-2f, 0, 0.3f, 15000, "test"}};
+  const WeatherField field = uniform_field(0.6f, 0.5f, 0.3f, 1.0f, 0.8f);
+  for (double pitch : {-90.0, -30.0, 0.0, 45.0, 90.0}) {
+    for (double time : {noon, midnight}) {
+      INFO("pitch " << pitch << " time " << time);
+      const auto r = render::render_clouds(small_camera(pitch), layers, field, time, quick());
+      CHECK(stats(r).finite);
+    }
+  }
+  // Optical depths of zero and huge.
+  for (float extinction : {0.0f, 1.0e3f}) {
+    auto thick = layers;
+    for (auto& l : thick) l.extinction = extinction;
+    const auto r = render::render_clouds(small_camera(30), thick, field, noon, quick());
+    const Stats s = stats(r);
+    CHECK(s.finite);
+    if (extinction == 0.0f) CHECK(s.alpha_max == 0.0);
+    else CHECK(s.alpha_min > 0.99);
+  }
+  auto panorama = small_camera();
+  panorama.panorama = true;
+  CHECK(stats(render::render_clouds(panorama, layers, field, noon, quick())).finite);
+}
+
+TEST_CASE("with the sun below the horizon the scene is far darker than at noon", "[render]") {
+  test::test_context();
+  const auto layers = choose_layers([] {
+    WeatherSample s;
+    s.cloud_low = 0.4;
+    return s;
+  }(), {});
+  const WeatherField field = uniform_field(0.4f, 0, 0);
+  const double day = stats(render::render_clouds(small_camera(), layers, field, noon, quick())).mean;
+  const double night = stats(render::render_clouds(small_camera(), layers, field, midnight, quick())).mean;
+  CHECK(night < 0.1 * day);
+}
+
+TEST_CASE("a scene with weather files does not generate the global cover and one without does", "[render]") {
+  test::test_context();
+  Scene scene;
+  scene.width = 16;
+  scene.height = 8;
+  scene.view_steps = 8;
+  scene.light_steps = 2;
+  scene.sky_steps = 4;
+  scene.cover_size = 8;
+  scene.time = "2026-06-21T15:00Z";
+  scene.weather = {std::string(NEPHELE_SOURCE_DIR) + "/scenes/weather/bern-summer.json",
+                   std::string(NEPHELE_SOURCE_DIR) + "/scenes/weather/solothurn-summer.json"};
+  const auto with_weather = render::render_scene(scene);
+  CHECK_FALSE(contains(with_weather.passes, "global_cover"));
+  CHECK(contains(with_weather.passes, "weather_field (2 stations)"));
+  CHECK(contains(with_weather.passes, "march layer cumulus"));
+  scene.weather.clear();
+  const auto from_cover = render::render_scene(scene);
+  CHECK(with_weather.passes.front() != from_cover.passes.front());
+  CHECK(from_cover.passes.front() == "global_cover");
+  CHECK(contains(from_cover.passes, "weather_field (global cover)"));
+}
+
+TEST_CASE("tone mapping encodes black as 0 and saturates to 1 without exceeding it", "[render]") {
+  output::ImageData hdr{3, 1, 4, {0, 0, 0, 0, 0.1f, 0.1f, 0.1f, 0, 1e6f, 1e6f, 1e6f, 1}};
+  const auto ldr = render::tone_map(hdr, 4.0);
+  CHECK(ldr.channels == 3);
+  CHECK(ldr.pixels[0] == 0.0f);
+  CHECK(ldr.pixels[3] > 0.0f);
+  CHECK(ldr.pixels[3] < 1.0f);
+  CHECK(ldr.pixels[6] == Approx(1.0f).margin(1e-3));
+  CHECK(ldr.pixels[6] <= 1.0f);
+}

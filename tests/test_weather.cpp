@@ -1,0 +1,154 @@
+// Weather files, their validation, blending between stations and the layer rules.
+#include <catch2/catch.hpp>
+
+#include <GeographicLib/Geodesic.hpp>
+#include <GeographicLib/GeodesicLine.hpp>
+
+#include "regional/cloud_layers.hpp"
+#include "regional/weather.hpp"
+#include "regional/weather_field.hpp"
+#include "render/sun_position.hpp"
+
+using namespace nephele;
+using namespace nephele::regional;
+
+namespace {
+
+std::string open_meteo(const std::string& low = "[10, 20, 30]", const std::string& extra = "") {
+  return R"({"latitude": 46.95, "longitude": 7.45, "utc_offset_seconds": 0,
+    "hourly_units": {"wind_speed_10m": "km/h"},
+    "hourly": {"time": ["2026-06-21T00:00", "2026-06-21T01:00", "2026-06-21T02:00"],
+      "cloud_cover": [50, 60, 70], "cloud_cover_low": )" + low + R"(,
+      "cloud_cover_mid": [0, 0, 0], "cloud_cover_high": [5, 5, 5], "precipitation": [0, 0.5, 1],
+      "wind_speed_10m": [36, 36, 36], "wind_direction_10m": [350, 10, 30])" + extra + "}}";
+}
+
+std::string error_of(const std::string& text) {
+  try {
+    parse_weather(text, "test.json");
+  } catch (const WeatherError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+WeatherSample sample(double low, double mid, double high, double rain = 0, double wind = 5) {
+  WeatherSample s;
+  s.cloud_low = low;
+  s.cloud_mid = mid;
+  s.cloud_high = high;
+  s.precipitation = rain;
+  s.has_wind = true;
+  s.wind_speed = wind;
+  return s;
+}
+
+bool has(const std::vector<CloudLayer>& layers, CloudType type) {
+  for (const auto& l : layers)
+    if (l.type == type) return true;
+  return false;
+}
+
+}  // namespace
+
+TEST_CASE("Open-Meteo hourly data are read with units converted and interpolated in time", "[weather]") {
+  const WeatherSeries w = parse_weather(open_meteo(), "bern.json");
+  CHECK(w.format == "open-meteo");
+  REQUIRE(w.hours.size() == 3);
+  CHECK(w.hours[1].cloud_low == Approx(0.2));
+  CHECK(w.hours[0].wind_speed == Approx(10.0));  // 36 km/h
+  const WeatherSample half = w.at(render::parse_utc_time("2026-06-21T00:30Z"));
+  CHECK(half.cloud_low == Approx(0.15));
+  CHECK(half.precipitation == Approx(0.25));
+  // Directions 350 and 10 average to north through the wind vector, not to 180.
+  CHECK(std::min(half.wind_direction_deg, 360 - half.wind_direction_deg) < 1e-6);
+}
+
+TEST_CASE("meteoblue data are read from data_1h with the metadata position", "[weather]") {
+  const WeatherSeries w = read_weather_file(std::string(NEPHELE_SOURCE_DIR) + "/scenes/weather/fribourg-meteoblue.json");
+  CHECK(w.format == "meteoblue");
+  CHECK(w.latitude_deg == Approx(46.8));
+  CHECK(w.hours.front().cloud_mid == Approx(0.7));
+  CHECK(w.hours.front().wind_speed == Approx(4.0));
+}
+
+TEST_CASE("bad weather input names the file and the field", "[weather]") {
+  CHECK_THAT(error_of(open_meteo("[10, null, 30]")), Catch::Contains("test.json") && Catch::Contains("cloud_cover_low[1]"));
+  CHECK_THAT(error_of(open_meteo("[10, 120, 30]")), Catch::Contains("cloud_cover_low[1]") && Catch::Contains("0 to 100"));
+  CHECK_THAT(error_of(open_meteo("[10, 20]")), Catch::Contains("cloud_cover_low") && Catch::Contains("'time' has 3"));
+  CHECK_THAT(error_of(R"({"latitude": 1, "longitude": 2, "hourly": {"time": ["2026-06-21T00:00"]}})"),
+             Catch::Contains("hourly.cloud_cover") && Catch::Contains("missing"));
+  CHECK_THAT(error_of("{\"hourly\": 3"), Catch::Contains("not valid JSON"));
+  CHECK_THAT(error_of(R"({"a": 1})"), Catch::Contains("neither an Open-Meteo file"));
+  const WeatherSeries w = parse_weather(open_meteo(), "bern.json");
+  try {
+    w.at(render::parse_utc_time("2026-06-22T00:00Z"));
+    FAIL("no error");
+  } catch (const WeatherError& e) {
+    CHECK_THAT(e.what(), Catch::Contains("outside the file's range") && Catch::Contains("2026-06-21T02:00Z"));
+  }
+}
+
+TEST_CASE("station weights give a station's own data there and the linear blend between two", "[weather]") {
+  const std::vector<Station> stations = {{46.94806, 7.44750, {}}, {47.20833, 7.53722, {}}};
+  const auto at_first = station_weights(stations, 46.94806, 7.44750);
+  CHECK(at_first[0] == 1.0);
+  CHECK(at_first[1] == 0.0);
+  // Points a quarter and a half of the way along the geodesic from Bern to Solothurn.
+  const GeographicLib::GeodesicLine line = GeographicLib::Geodesic::WGS84().InverseLine(46.94806, 7.44750, 47.20833, 7.53722);
+  for (double fraction : {0.25, 0.5, 0.8}) {
+    double lat = 0, lon = 0;
+    line.Position(fraction * line.Distance(), lat, lon);
+    const auto w = station_weights(stations, lat, lon);
+    CHECK(w[0] == Approx(1 - fraction).margin(1e-6));
+    CHECK(w[1] == Approx(fraction).margin(1e-6));
+  }
+}
+
+TEST_CASE("the layer rules pick types from the current and coming weather", "[layers]") {
+  CHECK(choose_layers(sample(0, 0, 0), {}).empty());  // clear sky: nothing to march
+  CHECK(has(choose_layers(sample(0.3, 0, 0), {}), CloudType::cumulus));
+  CHECK(has(choose_layers(sample(0.7, 0, 0), {}), CloudType::stratocumulus));
+  CHECK(has(choose_layers(sample(0.95, 0, 0), {}), CloudType::stratus));
+  CHECK(has(choose_layers(sample(0, 0, 0.3), {}), CloudType::cirrocumulus));
+  CHECK(has(choose_layers(sample(0, 0, 0.8), {}), CloudType::cirrostratus));
+  CHECK(has(choose_layers(sample(0.5, 0.5, 0.6), {}), CloudType::cirrus));
+  // Calm, dry and fully overcast low: ground fog instead of a low cloud layer.
+  const auto foggy = choose_layers(sample(1.0, 0, 0, 0, 1.0), {});
+  CHECK(has(foggy, CloudType::fog));
+  CHECK_FALSE(has(foggy, CloudType::stratus));
+  // Mid cover rising within 12 h turns cirrus into a warm-front veil.
+  WeatherSample later = sample(0, 0.9, 0.4);
+  later.time = 6 * 3600;
+  const auto veil = choose_layers(sample(0, 0.1, 0.4), {later});
+  CHECK(has(veil, CloudType::cirrostratus));
+  // Altocumulus for broken mid cover, altostratus for overcast; rain ahead halves k.
+  const auto broken = choose_layers(sample(0, 0.3, 0), {});
+  const auto overcast = choose_layers(sample(0, 0.95, 0), {});
+  REQUIRE(broken.size() == 1);
+  REQUIRE(overcast.size() == 1);
+  CHECK(broken[0].morph == Approx(1.0));
+  CHECK(overcast[0].morph == Approx(0.0));
+  WeatherSample rain_soon = sample(0, 0.3, 0, 1.0);
+  rain_soon.time = 3 * 3600;
+  CHECK(choose_layers(sample(0, 0.3, 0), {rain_soon})[0].morph == Approx(0.5));
+}
+
+TEST_CASE("rain under thick mid cloud gives the nimbostratus substitute and showers a cumulonimbus", "[layers]") {
+  const auto ns = choose_layers(sample(0.3, 0.9, 0, 2.0), {});
+  const CloudLayer* alto = nullptr;
+  for (const auto& l : ns)
+    if (l.type == CloudType::alto) alto = &l;
+  REQUIRE(alto);
+  CHECK(alto->darkness > 0.0f);
+  CHECK(alto->top_m - alto->base_m > 2000.0f);
+  CHECK(has(ns, CloudType::stratus));
+  CHECK(has(ns, CloudType::fog));
+  CHECK(has(ns, CloudType::cumulonimbus));  // 2 mm/h
+  WeatherSample storm = sample(0.2, 0, 0, 6.0);
+  storm.time = 4 * 3600;
+  const auto coming = choose_layers(sample(0.2, 0, 0), {storm});
+  CHECK(has(coming, CloudType::cumulonimbus));
+  const StationCoverage c = station_coverage(sample(0.2, 0, 0), {storm});
+  CHECK(c.channel[int(CoverageChannel::convective)] == Approx(0.6));
+}
