@@ -6,11 +6,12 @@ layout(r32f, binding = 1) uniform writeonly imageCube density_field;
 #include "../lib/cover_density.glsl"
 
 uniform FbmParams u_cover;
+uniform vec3 u_noise_offset;  // reduced modulo the lattice period by the host
 
 void main() {
   ivec3 texel = ivec3(gl_GlobalInvocationID);
   int size = imageSize(density_field).x;
   if (texel.x >= size || texel.y >= size) return;
   vec3 warped = imageLoad(warp_field, texel).xyz;
-  imageStore(density_field, texel, vec4(cover_density(warped, u_cover), 0.0f, 0.0f, 0.0f));
+  imageStore(density_field, texel, vec4(cover_density_shifted(warped, u_cover, u_noise_offset), 0.0f, 0.0f, 0.0f));
 }

@@ -6,11 +6,12 @@ layout(rgba32f, binding = 1) uniform writeonly imageCube curl_field;
 #include "../lib/curl_flow.glsl"
 
 uniform CurlParams u_curl;
+uniform vec3 u_noise_offset;  // reduced modulo the lattice period by the host
 
 void main() {
   ivec3 texel = ivec3(gl_GlobalInvocationID);
   int size = imageSize(curl_field).x;
   if (texel.x >= size || texel.y >= size) return;
   vec3 n = imageLoad(identity_field, texel).xyz;
-  imageStore(curl_field, texel, vec4(curl_velocity(n, u_curl), 0.0f));
+  imageStore(curl_field, texel, vec4(curl_velocity_shifted(n, u_curl, u_noise_offset), 0.0f));
 }

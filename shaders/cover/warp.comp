@@ -1,23 +1,77 @@
 #version 450
-// Pass 3: K steps along the curl flow, each texel following its own trajectory.
+// Pass 3: the flow map over the flow time T, each texel following its own trajectory.
+// Variants (defines from src/numerics/integrators.cpp): WARP_INTEGRATOR, an INTEGRATOR_*
+// number of warp_step.glsl; WARP_PROCEDURAL 1 evaluates the curl at the exact point instead
+// of sampling the curl cube map. The start points come from identity_field, whose size (that
+// of warp_field) may differ from the curl field's: the report warps sample points that way.
 layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
 layout(rgba32f, binding = 0) uniform readonly imageCube identity_field;
 layout(rgba32f, binding = 1) uniform readonly imageCube curl_field;
 layout(rgba32f, binding = 2) uniform writeonly imageCube warp_field;
 
+#ifndef WARP_INTEGRATOR
+#define WARP_INTEGRATOR 0
+#endif
+#ifndef WARP_PROCEDURAL
+#define WARP_PROCEDURAL 0
+#endif
+
 #define CUBE_SOURCE_PARAM
 #define CUBE_SOURCE_ARG
 #define CUBE_FETCH(face, i, j) imageLoad(curl_field, ivec3(i, j, face))
 #define CUBE_SIZE imageSize(curl_field).x
+#include "../lib/curl_flow.glsl"
+#include "../lib/cube_sampling.glsl"
+
+#define WARP_TEMPLATE
+#define WARP_FIELD_PARAM
+#define WARP_FIELD_ARG
+#if WARP_PROCEDURAL
+uniform CurlParams u_curl;
+uniform vec3 u_noise_offset;
+#define WARP_VELOCITY(w) curl_velocity_shifted(w, u_curl, u_noise_offset)
+#else
+#define WARP_VELOCITY(w) flow_velocity(w)
+#endif
 #include "../lib/warp_step.glsl"
 
-uniform int u_steps;
-uniform float u_step_size;
+uniform int u_steps;        // fixed-step schemes: K, or the steps of this dispatch
+uniform float u_step_size;  // h (adaptive: the first step)
+#if WARP_INTEGRATOR == 4
+// A long adaptive integration runs over several dispatches (see GlobalCover::dispatch_warp):
+// each texel keeps (t, h, attempts, done) here and continues where it stopped; identity_field
+// then holds the previous dispatch's points.
+layout(rgba32f, binding = 3) uniform imageCube adaptive_state;
+layout(std430, binding = 0) buffer Unfinished { uint unfinished; };
+uniform float u_flow_time;  // T
+uniform float u_max_step;
+uniform float u_tolerance;  // error per step, radians
+uniform int u_max_substeps;
+uniform int u_chunk;        // attempts per texel in this dispatch
+uniform int u_resume;       // 0: the first dispatch
+#endif
 
 void main() {
   ivec3 texel = ivec3(gl_GlobalInvocationID);
   int size = imageSize(warp_field).x;
   if (texel.x >= size || texel.y >= size) return;
   vec3 start = imageLoad(identity_field, texel).xyz;
-  imageStore(warp_field, texel, vec4(integrate_warp(start, u_steps, u_step_size), 0.0f));
+#if WARP_INTEGRATOR == 4
+  vec4 state = u_resume != 0 ? imageLoad(adaptive_state, texel) : vec4(0.0f, min(u_step_size, u_max_step), 0.0f, 0.0f);
+  vec3 w = start;
+  float t = state.x;
+  float h = state.y;
+  int attempts = int(state.z);
+  bool done = state.w > 0.5f;
+  if (!done) {
+    done = advance_adaptive(w, t, h, attempts, u_flow_time, u_max_step, u_tolerance,
+                            min(u_max_substeps, attempts + u_chunk));
+  }
+  imageStore(adaptive_state, texel, vec4(t, h, float(attempts), done ? 1.0f : 0.0f));
+  // w: attempted steps, negative while T is not reached (in the end: u_max_substeps ran out).
+  imageStore(warp_field, texel, vec4(w, done ? float(attempts) : -float(attempts)));
+  if (!done && attempts < u_max_substeps) atomicAdd(unfinished, 1u);
+#else
+  imageStore(warp_field, texel, vec4(integrate_fixed(WARP_INTEGRATOR, start, u_steps, u_step_size), 0.0f));
+#endif
 }

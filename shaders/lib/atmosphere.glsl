@@ -73,28 +73,23 @@ void sky_single_scattering(vec3 o, vec3 d, float distance, float split, vec3 sun
   bool split_done = split <= 0.0f;
   for (int i = 0; i < steps; ++i) {
     float s0 = float(i) * ds;
-    if (!split_done && s0 + ds > split) {
-      // The split falls in this step: take the step's first part into the split values.
-      float part = split - s0;
-      vec3 q = o + (s0 + 0.5f * part) * d;
-      float h = length(q) - earth_radius;
-      vec3 extinction = air_extinction(h);
-      vec3 source = (rayleigh * exp(-h / RAYLEIGH_SCALE_HEIGHT) + vec3(mie * exp(-h / MIE_SCALE_HEIGHT))) *
-                    transmittance_to_space(q, sun, earth_radius) * solar_irradiance();
-      vec3 step_transmittance = exp(-extinction * part);
-      inscatter_split = radiance + transmittance * source * part;
-      transmittance_split = transmittance * step_transmittance;
-      split_done = true;
-    }
     vec3 q = o + (s0 + 0.5f * ds) * d;
     float h = length(q) - earth_radius;
-    vec3 extinction = air_extinction(h);
+    vec3 extinction = max(air_extinction(h), vec3(1.0e-12f));
     vec3 source = (rayleigh * exp(-h / RAYLEIGH_SCALE_HEIGHT) + vec3(mie * exp(-h / MIE_SCALE_HEIGHT))) *
                   transmittance_to_space(q, sun, earth_radius) * solar_irradiance();
+    if (!split_done && s0 + ds > split) {
+      // The split falls in this step: its first part, with the step's source, goes into the
+      // split values.
+      vec3 part_transmittance = exp(-extinction * (split - s0));
+      inscatter_split = radiance + transmittance * source * (vec3(1.0f) - part_transmittance) / extinction;
+      transmittance_split = transmittance * part_transmittance;
+      split_done = true;
+    }
     // Energy-conserving integration over the step (Hillaire 2016, "Physically Based Sky,
     // Atmosphere and Cloud Rendering in Frostbite"): source (1 - e^{-sigma ds}) / sigma.
     vec3 step_transmittance = exp(-extinction * ds);
-    radiance += transmittance * source * (vec3(1.0f) - step_transmittance) / max(extinction, vec3(1.0e-12f));
+    radiance += transmittance * source * (vec3(1.0f) - step_transmittance) / extinction;
     transmittance *= step_transmittance;
   }
   if (!split_done) {

@@ -70,6 +70,22 @@ float cloud_density(int type, float h, float c, float shape, float detail, float
   return 0.0f;
 }
 
+// The noise volume holds uniformly distributed values (rank-equalised after it is made), so that
+// "shape > 1 - c" covers the fraction c of the sky. Mixing two independent uniforms,
+// x = (1 - w) u1 + w u2 with w <= 1/2, gives a trapezoidal distribution; its CDF turns x back
+// into a uniform value:
+//   F(x) = x^2 / (2 a b)            for 0 <= x <= b
+//        = (x - b/2) / a            for b <= x <= a
+//        = 1 - (1 - x)^2 / (2 a b)  for a <= x <= 1,   a = 1 - w, b = w.
+float uniform_from_mix(float x, float w) {
+  float a = 1.0f - w;
+  float b = w;
+  float t = clamp(x, 0.0f, 1.0f);
+  if (t <= b) return t * t / (2.0f * a * b);
+  if (t <= a) return (t - 0.5f * b) / a;
+  return 1.0f - (1.0f - t) * (1.0f - t) / (2.0f * a * b);
+}
+
 // Horizontal size (m) of one noise period along and across the wind, per type.
 vec2 noise_period(int type) {
   if (type == CLOUD_CUMULUS) return vec2(6000.0f, 6000.0f);
@@ -94,7 +110,9 @@ float cloud_phase(float nu, float scale) {
 
 // Sun light reaching a cloud point through optical depth tau towards the sun, with multiple
 // scattering approximated by octaves (Wrenninge, Kulla and Lundqvist, "Oz: The Great and
-// Volumetric", SIGGRAPH 2013 talk): sum_i a^i e^{-b^i tau} p(nu; c^i g), a = b = c = 1/2.
+// Volumetric", SIGGRAPH 2013 talk): sum_i a^i e^{-b^i tau} p(nu; c^i g), a = c = 1/2, b = 1/4:
+// the deeper octaves see a quarter and a sixteenth of the optical depth, which keeps the bases
+// of thick clouds (tau of 30 and more towards the sun) from turning black.
 float sun_scattering(float tau, float nu) {
   float sum = 0.0f;
   float a = 1.0f;
@@ -103,7 +121,7 @@ float sun_scattering(float tau, float nu) {
   for (int i = 0; i < 3; ++i) {
     sum += a * exp(-b * tau) * cloud_phase(nu, c);
     a *= 0.5f;
-    b *= 0.5f;
+    b *= 0.25f;
     c *= 0.5f;
   }
   return sum;

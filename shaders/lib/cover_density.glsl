@@ -9,6 +9,11 @@ float cover_density(vec3 warped, IN(FbmParams) params) {
   return inverted_worley_fbm(normalize(warped), params).w;
 }
 
+// The same with the noise shifted by `offset` (see curl_velocity_shifted).
+float cover_density_shifted(vec3 warped, IN(FbmParams) params, vec3 offset) {
+  return inverted_worley_fbm(normalize(warped) + offset, params).w;
+}
+
 // Linear ramp from the calibrated threshold (cover 0) to the largest density (cover 1):
 // texels with density above the threshold, and only those, are cloudy (cover > 0).
 float cover_from_density(float density, float threshold, float density_max) {

@@ -14,9 +14,12 @@
 //   v = s n x grad phi,
 // tangent to the sphere and divergence-free on it. At the poles the direction north is
 // undefined; there the latitude term is dropped (for a = 2.5 the mix has a conical tip).
-vec3 curl_velocity(vec3 n, IN(CurlParams) params) {
-  vec4 w1 = inverted_worley_fbm(n, params.potential_north);
-  vec4 w2 = inverted_worley_fbm(n, params.potential_south);
+// `offset` shifts the noise of both potentials (sphere radii): they are sampled at n + offset.
+// The host keeps it below one lattice period (docs/numerics.md, "Far offsets"), so that float
+// keeps its precision however far the user's offset is.
+vec3 curl_velocity_shifted(vec3 n, IN(CurlParams) params, vec3 offset) {
+  vec4 w1 = inverted_worley_fbm(n + offset, params.potential_north);
+  vec4 w2 = inverted_worley_fbm(n + offset, params.potential_south);
   float z = clamp(n.z, -1.0f, 1.0f);
   float latitude = portable_asin(z);
   float a = params.mix_frequency;
@@ -28,6 +31,10 @@ vec3 curl_velocity(vec3 n, IN(CurlParams) params) {
   vec3 gradient = (0.5f * (1.0f + m)) * vec3(w1) - (0.5f * (1.0f - m)) * vec3(w2) +
                   ((0.5f * (w1.w + w2.w) + params.prevailing) * dm_dlatitude) * north;
   return params.strength * cross(n, gradient);
+}
+
+vec3 curl_velocity(vec3 n, IN(CurlParams) params) {
+  return curl_velocity_shifted(n, params, vec3(0.0f));
 }
 
 #endif

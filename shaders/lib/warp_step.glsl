@@ -1,16 +1,27 @@
-// Integration of the warp field: each texel's point follows the flow on the unit sphere.
-// Requires cube_sampling.glsl's CUBE_* macros naming the curl cube map.
+// Integration of the warp field: each texel's point follows the flow dW/dt = v(W) on the unit
+// sphere for the flow time T. Requires cube_sampling.glsl's CUBE_* macros naming the curl cube
+// map (the sampled velocity). docs/numerics.md derives the schemes and their limits.
+//
+// The stepping rules are written once for every velocity source. The including file defines:
+//   WARP_VELOCITY(w)   the velocity at the unit vector w
+//   WARP_FIELD_PARAM   extra trailing parameter(s) naming the source (empty in GLSL)
+//   WARP_FIELD_ARG     the matching argument(s) (empty in GLSL)
+//   WARP_TEMPLATE      `template <class Field>` in C++, so that one definition serves the
+//                      sampled cube map, the procedural curl and the analytic test flows;
+//                      empty in GLSL, where each compiled variant has one source
+// Without them, the sampled curl cube map is the source.
 #ifndef NEPHELE_WARP_STEP_GLSL
 #define NEPHELE_WARP_STEP_GLSL
 #include "prelude.glsl"
 #include "cube_sampling.glsl"
 
+// The velocity sampled bilinearly from the curl cube map.
 vec3 flow_velocity(vec3 w CUBE_SOURCE_PARAM) {
   return vec3(sample_cube_bilinear(w CUBE_SOURCE_ARG));
 }
 
-// The stepping rule (one replaceable function): forward Euler projected back onto the
-// sphere, W <- normalize(W + h v(W)).
+// sfsim's stepping rule, kept as the reference of the sampled Euler warp: forward Euler
+// projected back onto the sphere, W <- normalize(W + h v(W)).
 vec3 warp_step(vec3 w, float h CUBE_SOURCE_PARAM) {
   return normalize(w + h * flow_velocity(w CUBE_SOURCE_ARG));
 }
@@ -21,6 +32,149 @@ vec3 integrate_warp(vec3 start, int steps, float h CUBE_SOURCE_PARAM) {
     w = warp_step(w, h CUBE_SOURCE_ARG);
   }
   return w;
+}
+
+#ifndef WARP_VELOCITY
+#define WARP_TEMPLATE
+#define WARP_FIELD_PARAM CUBE_SOURCE_PARAM
+#define WARP_FIELD_ARG CUBE_SOURCE_ARG
+#define WARP_VELOCITY(w) flow_velocity(w CUBE_SOURCE_ARG)
+#endif
+
+// Integrator numbers, shared by the host (src/numerics/integrators.hpp) and the shaders.
+const int INTEGRATOR_EULER = 0;
+const int INTEGRATOR_HEUN = 1;
+const int INTEGRATOR_RK4 = 2;
+const int INTEGRATOR_GEODESIC = 3;
+const int INTEGRATOR_ADAPTIVE = 4;
+
+// Stage points of the Runge-Kutta schemes leave the sphere. The field is continued constant
+// along rays, v(x) = v(x/|x|): it stays tangent (v(x) . x = 0), so the exact flow in R^3 keeps
+// |x| and, started on the sphere, is the flow on the sphere. Each scheme therefore keeps its
+// order in R^3, and the projection at the end of a step changes W by O(h^(p+1)) only.
+WARP_TEMPLATE
+vec3 velocity_at(vec3 x WARP_FIELD_PARAM) {
+  return WARP_VELOCITY(normalize(x));
+}
+
+// Forward Euler, order 1: W <- normalize(W + h v(W)). W is a unit vector, so the velocity is
+// taken at W itself, which makes the sampled variant identical to warp_step.
+WARP_TEMPLATE
+vec3 euler_step(vec3 w, float h WARP_FIELD_PARAM) {
+  return normalize(w + h * WARP_VELOCITY(w));
+}
+
+// Heun (explicit trapezoidal rule), order 2.
+WARP_TEMPLATE
+vec3 heun_step(vec3 w, float h WARP_FIELD_PARAM) {
+  vec3 k1 = WARP_VELOCITY(w);
+  vec3 k2 = velocity_at(w + h * k1 WARP_FIELD_ARG);
+  return normalize(w + (0.5f * h) * (k1 + k2));
+}
+
+// Classical Runge-Kutta, order 4.
+WARP_TEMPLATE
+vec3 rk4_step(vec3 w, float h WARP_FIELD_PARAM) {
+  vec3 k1 = WARP_VELOCITY(w);
+  vec3 k2 = velocity_at(w + (0.5f * h) * k1 WARP_FIELD_ARG);
+  vec3 k3 = velocity_at(w + (0.5f * h) * k2 WARP_FIELD_ARG);
+  vec3 k4 = velocity_at(w + h * k3 WARP_FIELD_ARG);
+  return normalize(w + (h / 6.0f) * (k1 + 2.0f * k2 + 2.0f * k3 + k4));
+}
+
+// Geodesic Euler (Lie-Euler), order 1: along the great circle that starts in the direction of
+// v, i.e. a rotation about W x v by the angle h |v|; W stays on the sphere by construction.
+// The tangential part of v is used (the sampled field is tangent only up to interpolation).
+WARP_TEMPLATE
+vec3 geodesic_step(vec3 w, float h WARP_FIELD_PARAM) {
+  vec3 v = WARP_VELOCITY(w);
+  vec3 tangent = v - dot(v, w) * w;
+  float speed = length(tangent);
+  if (!(speed > 0.0f)) return w;
+  float angle = h * speed;
+  return normalize(cos(angle) * w + sin(angle) * (tangent / speed));
+}
+
+// One step of the fixed-step scheme `integrator` (an INTEGRATOR_* number, not ADAPTIVE).
+WARP_TEMPLATE
+vec3 fixed_step(int integrator, vec3 w, float h WARP_FIELD_PARAM) {
+  if (integrator == INTEGRATOR_HEUN) return heun_step(w, h WARP_FIELD_ARG);
+  if (integrator == INTEGRATOR_RK4) return rk4_step(w, h WARP_FIELD_ARG);
+  if (integrator == INTEGRATOR_GEODESIC) return geodesic_step(w, h WARP_FIELD_ARG);
+  return euler_step(w, h WARP_FIELD_ARG);
+}
+
+// K steps of size h: the flow map at T = K h.
+WARP_TEMPLATE
+vec3 integrate_fixed(int integrator, vec3 start, int steps, float h WARP_FIELD_PARAM) {
+  vec3 w = start;
+  for (int k = 0; k < steps; ++k) {
+    w = fixed_step(integrator, w, h WARP_FIELD_ARG);
+  }
+  return w;
+}
+
+// One step of the Bogacki-Shampine 3(2) pair (P. Bogacki, L. F. Shampine, "A 3(2) pair of
+// Runge-Kutta formulas", Appl. Math. Lett. 2(4), 1989, 321-325). k1 = v(w) is given; the
+// third-order result is returned (local extrapolation), k4 = v(result) is the next step's k1
+// (first same as last), and `error` is |third-order - second-order result|, computed from the
+// stage velocities without cancellation.
+WARP_TEMPLATE
+vec3 bogacki_shampine_step(vec3 w, vec3 k1, float h, OUT(vec3) k4, OUT(float) error WARP_FIELD_PARAM) {
+  vec3 k2 = velocity_at(w + (0.5f * h) * k1 WARP_FIELD_ARG);
+  vec3 k3 = velocity_at(w + (0.75f * h) * k2 WARP_FIELD_ARG);
+  vec3 next = normalize(w + h * ((2.0f / 9.0f) * k1 + (1.0f / 3.0f) * k2 + (4.0f / 9.0f) * k3));
+  k4 = WARP_VELOCITY(next);
+  error = h * length((-5.0f / 72.0f) * k1 + (1.0f / 12.0f) * k2 + (1.0f / 9.0f) * k3 - 0.125f * k4);
+  return next;
+}
+
+// Adaptive integration over the flow time T with error control per step: a step is accepted
+// when its error estimate is at most `tolerance` (radians), and the next step size is
+// h (tolerance / error)^(1/3) times a safety factor 0.9, limited to [0.2, 5] times the last
+// (Hairer, Norsett, Wanner, "Solving Ordinary Differential Equations I", 2nd ed., II.4).
+// Beyond the stability limit of the pair the error estimate grows, so the controller shrinks
+// the step by itself; at a jump of the velocity (Worley cell borders) the error estimate is
+// proportional to h, so the step shrinks until the jump costs at most `tolerance`.
+// This continues an integration: W reached flow time t, h is the next step, `attempts` the
+// attempted steps so far, which may grow to `attempt_limit` in this call (the GPU pass splits
+// long integrations over several dispatches). Returns whether T was reached.
+WARP_TEMPLATE
+bool advance_adaptive(INOUT(vec3) w, INOUT(float) t, INOUT(float) h, INOUT(int) attempts, float flow_time,
+                      float max_step, float tolerance, int attempt_limit WARP_FIELD_PARAM) {
+  vec3 k1 = WARP_VELOCITY(w);
+  bool done = !(t < flow_time);
+  while (!done && attempts < attempt_limit) {
+    float remaining = flow_time - t;
+    bool last = h >= remaining;
+    float step = last ? remaining : h;
+    vec3 k4;
+    float error;
+    vec3 next = bogacki_shampine_step(w, k1, step, k4, error WARP_FIELD_ARG);
+    attempts += 1;
+    if (error <= tolerance) {
+      w = next;
+      k1 = k4;
+      t += step;
+      done = last;
+    }
+    float factor = 0.9f * pow(tolerance / max(error, 1.0e-30f), 1.0f / 3.0f);
+    h = min(step * clamp(factor, 0.2f, 5.0f), max_step);
+  }
+  return done;
+}
+
+// The whole integration from `start`. Returns vec4(W, n): n is the number of attempted steps,
+// negated when `max_steps` ran out before T was reached (W is then the point reached so far).
+WARP_TEMPLATE
+vec4 integrate_adaptive(vec3 start, float flow_time, float first_step, float max_step, float tolerance,
+                        int max_steps WARP_FIELD_PARAM) {
+  vec3 w = start;
+  float t = 0.0f;
+  float h = min(first_step, max_step);
+  int attempts = 0;
+  bool done = advance_adaptive(w, t, h, attempts, flow_time, max_step, tolerance, max_steps WARP_FIELD_ARG);
+  return vec4(w, done ? float(attempts) : -float(attempts));
 }
 
 #endif

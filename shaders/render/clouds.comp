@@ -24,7 +24,8 @@ uniform float u_tan_half_fov;
 uniform int u_panorama;
 uniform float u_heading;
 uniform vec3 u_sun;
-uniform vec3 u_ambient;        // sky irradiance on a horizontal surface, for clouds
+uniform vec3 u_ambient;        // sky irradiance on a horizontal surface
+uniform vec3 u_ground_radiance;  // radiance of the sunlit and skylit ground below the clouds
 uniform int u_view_steps;
 uniform int u_light_steps;
 uniform int u_sky_steps;
@@ -53,7 +54,8 @@ float coverage_at(vec3 p, int channel) {
 
 // footprint: the length one sample stands for (the pixel's width at that distance, or the step),
 // which picks the noise volume's mip level so that distant clouds do not alias into speckle.
-float density_at(vec3 p, vec3 centre, int layer, float footprint) {
+// fine: also read the detail noise (the light march does without it).
+float density_at(vec3 p, vec3 centre, int layer, float footprint, bool fine) {
   LayerParams l = u_layers[layer];
   float altitude = length(p - centre) - u_earth_radius;
   float h = (altitude - l.base) / (l.top - l.base);
@@ -71,19 +73,29 @@ float density_at(vec3 p, vec3 centre, int layer, float footprint) {
   vec3 macro_coordinates = vec3(0.0822f * coordinates.x + 0.0548f * coordinates.y,
                                 -0.0548f * coordinates.x + 0.0822f * coordinates.y, 0.1371f * coordinates.z + 0.37f);
   float macro = textureLod(noise_volume, macro_coordinates, max(lod - 3.0f, 0.0f)).x;
-  noise.x = mix(noise.x, macro, 0.4f);
-  float detail = textureLod(noise_volume, coordinates * 4.0f, lod + 2.0f).y;
+  noise.x = uniform_from_mix(mix(noise.x, macro, 0.4f), 0.4f);
+  // Every density grows with the detail noise, so its value at detail 1 bounds it: where even
+  // that is zero (most of the sky) the detail lookup is skipped.
+  if (cloud_density(l.type, h, c, noise.x, 1.0f, l.morph) <= 0.0f) return 0.0f;
+  float detail = fine ? textureLod(noise_volume, coordinates * 4.0f, lod + 2.0f).y : noise.y;
   return l.extinction * cloud_density(l.type, h, c, noise.x, mix(noise.y, detail, 0.5f), l.morph);
 }
 
 // Optical depth from p towards the sun within the same layer (other layers' shadows are left out).
 float optical_depth_to_sun(vec3 p, vec3 centre, int layer) {
   LayerParams l = u_layers[layer];
-  float length_to_exit = (l.top - l.base) / max(u_sun.z, 0.15f);
-  float ds = min(length_to_exit, 4000.0f) / float(u_light_steps);
+  float length_to_exit = min((l.top - l.base) / max(u_sun.z, 0.15f), 4000.0f);
+  // Samples spaced quadratically (s = L t^2): the light that reaches a point is decided by the
+  // first hundred metres towards the sun (an optical depth of 1 every 50 m in a cumulus), so
+  // the steps are short there and long further out.
+  float n = float(u_light_steps);
   float tau = 0.0f;
   for (int i = 0; i < u_light_steps; ++i) {
-    tau += density_at(p + ((float(i) + 0.5f) * ds) * u_sun, centre, layer, ds) * ds;
+    float t0 = float(i) / n;
+    float t1 = float(i + 1) / n;
+    float t = 0.5f * (t0 + t1);
+    float ds = length_to_exit * (t1 * t1 - t0 * t0);
+    tau += density_at(p + (length_to_exit * t * t) * u_sun, centre, layer, ds, false) * ds;
   }
   return tau;
 }
@@ -154,12 +166,14 @@ void main() {
       float s = a + (b - a) * t * t;
       float ds = (b - a) * (t1 * t1 - t0 * t0);
       vec3 p = s * d;
-      float sigma = density_at(p, centre, layer, max(ds, s * u_pixel_angle));
+      float sigma = density_at(p, centre, layer, max(ds, s * u_pixel_angle), true);
       if (sigma <= 0.0f) continue;
       float h = clamp((length(p - centre) - u_earth_radius - l.base) / (l.top - l.base), 0.0f, 1.0f);
       float tau = u_light_steps > 0 ? optical_depth_to_sun(p, centre, layer) : 0.0f;
-      vec3 source = albedo * sigma *
-                    (sunlight * sun_scattering(tau, nu) + u_ambient * ((0.4f + 0.6f * h) / (4.0f * PI_F)));
+      // Ambient: half the sphere sees the sky (radiance E/pi, dimmer towards the cloud's base),
+      // half the ground; isotropic scattering of a radiance field L adds sigma_s L.
+      vec3 ambient = 0.5f * (u_ambient * ((0.4f + 0.6f * h) / PI_F) + u_ground_radiance);
+      vec3 source = albedo * sigma * (sunlight * sun_scattering(tau, nu) + ambient);
       float step_transmittance = exp(-sigma * ds);
       float absorbed = 1.0f - step_transmittance;
       cloud_radiance += cloud_transmittance * source * absorbed / sigma;

@@ -50,4 +50,28 @@ void validate_cover_parameters(const cover::CoverParameters& p) {
   check("density", p.density);
 }
 
+void WarpOptions::add(Options& o, cover::CoverParameters& p, bool include_integrator) {
+  if (include_integrator) {
+    o.add_string("--integrator", &integrator_, "warp stepping rule: euler, heun, rk4, geodesic or adaptive");
+    o.add_string("--curl-mode", &curl_mode_,
+                 "velocity of the warp: sampled (bilinear from the curl cube map) or procedural (exact point)");
+    o.add_float("--tolerance", &p.tolerance, 1e-7, 1.0,
+                "adaptive: largest error estimate per step, radians (the flow time is iterations * step)");
+    o.add_int("--max-substeps", &p.max_substeps, 1, 1000000, "adaptive: attempted steps per texel at most");
+  }
+  o.add_string("--noise-offset", &noise_offset_,
+               "shift of every noise layer by (d, d, d) sphere radii, -1e9 to 1e9; precision is kept by a periodic lattice");
+}
+
+void WarpOptions::apply(cover::CoverParameters& p) const {
+  const auto integrator = numerics::parse_integrator(integrator_);
+  if (!integrator)
+    throw UsageError("--integrator: '" + integrator_ + "' is not allowed (allowed: euler, heun, rk4, geodesic, adaptive)");
+  const auto mode = numerics::parse_curl_mode(curl_mode_);
+  if (!mode) throw UsageError("--curl-mode: '" + curl_mode_ + "' is not allowed (allowed: sampled, procedural)");
+  p.integrator = *integrator;
+  p.curl_mode = *mode;
+  p.noise_offset = parse_number("--noise-offset", noise_offset_, -1e9, 1e9);
+}
+
 }  // namespace nephele::cli

@@ -17,12 +17,15 @@ int run_generate(const std::vector<std::string>& arguments) {
                   "Generates a global cloud cover: curl-warped Worley noise on a cube map, written to\n"
                   "cover_{px,nx,py,ny,pz,nz}.exr, cover_equirect.exr, cover_equirect.png and cover.json.");
   add_cover_options(options, parameters);
+  WarpOptions warp_options;
+  warp_options.add(options, parameters);
   options.add_string("--out", &out, "output directory (created if missing)");
   options.add_flag("--verbose", &verbose, "print the renderer and the time of each pass");
   if (!options.parse(arguments)) {
     std::cout << options.help();
     return exit_ok;
   }
+  warp_options.apply(parameters);
   validate_cover_parameters(parameters);
   const std::filesystem::path directory(out);
   if (std::filesystem::exists(directory) && !std::filesystem::is_directory(directory))
@@ -40,10 +43,23 @@ int run_generate(const std::vector<std::string>& arguments) {
 
   cover::GlobalCover cover(parameters);
   cover.run();
+  // Stiff or capped warps are reported, never silently written (docs/numerics.md).
+  const numerics::WarpDiagnostics& diagnostics = cover.diagnose();
+  for (const auto& warning : diagnostics.warnings) std::cerr << "nephele: warning: " << warning << "\n";
   const auto export_timings = output::write_cover_files(directory, cover, context.info());
   if (verbose) {
     for (const auto& t : cover.timings()) std::cerr << "pass " << t.pass << ": " << t.milliseconds << " ms\n";
     for (const auto& t : export_timings) std::cerr << "export " << t.pass << ": " << t.milliseconds << " ms\n";
+    std::cerr << "warp: " << numerics::integrator_name(parameters.integrator) << ", "
+              << numerics::curl_mode_name(parameters.curl_mode) << " curl; stiffness h rho "
+              << diagnostics.stiffness.stiffness << " (stable limit " << diagnostics.stiffness.limit << ", beyond on "
+              << diagnostics.stiffness.beyond_fraction << " of the sphere); folded fraction "
+              << diagnostics.folding.folded_fraction;
+    if (diagnostics.adaptive)
+      std::cerr << "; sub-steps per texel " << diagnostics.substeps.mean_attempts << " on average, "
+                << diagnostics.substeps.max_attempts << " at most, " << diagnostics.substeps.capped_texels
+                << " texels capped";
+    std::cerr << "\n";
   }
   std::cout << "wrote " << (directory / "cover.json").string() << " and "
             << output::cover_file_names().size() - 1 << " images; cloud fraction "

@@ -16,7 +16,9 @@ const char* const usage =
     "commands:\n"
     "  generate   make a global cloud cover (cube map faces, equirect map, cover.json)\n"
     "  render     cloud layers seen from the ground (Gurten, Bantiger, anywhere)\n"
-    "  bench      benchmarks that print timings (nephele bench cover)\n\n"
+    "  noise      tileable 3D noise textures (Worley, Perlin, Perlin-Worley, fBm)\n"
+    "  bench      benchmarks that print timings (nephele bench cover)\n"
+    "  report     error of the warp's integrators against their run time (work-precision)\n\n"
     "nephele COMMAND --help describes each command's options and their ranges.\n"
     "exit codes: 0 success, 1 failure, 2 bad input, 3 no OpenGL 4.5 context\n";
 
@@ -42,8 +44,10 @@ int main(int argc, char** argv) {
     }
     if (command == "generate") return run_generate(rest);
     if (command == "bench") return run_bench(rest);
+    if (command == "noise") return run_noise(rest);
+    if (command == "report") return run_report(rest);
     if (command == "render") return run_render(rest);
-    throw UsageError("unknown command '" + command + "' (allowed: generate, bench)");
+    throw UsageError("unknown command '" + command + "' (allowed: generate, render, noise, bench, report)");
   } catch (const UsageError& e) {
     std::cerr << "nephele: " << e.what() << "\n";
     return exit_usage;

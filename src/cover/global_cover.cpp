@@ -1,5 +1,6 @@
 #include "cover/global_cover.hpp"
 
+#include <algorithm>
 #include <chrono>
 
 namespace nephele::cover {
@@ -26,13 +27,16 @@ void set_uniform(const gl::ComputeProgram& program, const std::string& name,
 
 double cover_gpu_bytes(int size) {
   const double texels = 6.0 * size * size;
-  const double cubes = texels * (16.0 * 3 + 4.0 * 2);  // identity, curl, warp; density, cover
+  // identity, curl, warp; density, cover; and two RGBA32F cubes the warp pass adds for long or
+  // adaptive integrations (a scratch map and the adaptive state).
+  const double cubes = texels * (16.0 * 5 + 4.0 * 2);
   const double equirect = 8.0 * size * size * 4.0;
   return cubes + equirect;
 }
 
 GlobalCover::GlobalCover(const CoverParameters& parameters)
     : parameters_(parameters),
+      warp_program_("cover/warp.comp", numerics::warp_defines(parameters.integrator, parameters.curl_mode)),
       identity_field_(gl::Texture::cube(parameters.size, GL_RGBA32F)),
       curl_field_(gl::Texture::cube(parameters.size, GL_RGBA32F)),
       warp_field_(gl::Texture::cube(parameters.size, GL_RGBA32F)),
@@ -68,6 +72,7 @@ void GlobalCover::run_identity() {
 void GlobalCover::run_curl() {
   timed("curl", [&] {
     set_uniform(curl_program_, "u_curl", curl_params(parameters_));
+    curl_program_.set("u_noise_offset", potential_offset(parameters_));
     identity_field_.bind_image(0, GL_READ_ONLY);
     curl_field_.bind_image(1, GL_WRITE_ONLY);
     curl_program_.dispatch_covering(parameters_.size, parameters_.size, 6);
@@ -76,20 +81,101 @@ void GlobalCover::run_curl() {
 }
 
 void GlobalCover::run_warp() {
-  timed("warp", [&] {
-    warp_program_.set("u_steps", parameters_.iterations);
-    warp_program_.set("u_step_size", parameters_.step);
-    identity_field_.bind_image(0, GL_READ_ONLY);
-    curl_field_.bind_image(1, GL_READ_ONLY);
-    warp_field_.bind_image(2, GL_WRITE_ONLY);
-    warp_program_.dispatch_covering(parameters_.size, parameters_.size, 6);
+  timed("warp", [&] { dispatch_warp(identity_field_, warp_field_); });
+}
+
+void GlobalCover::warp_points(const gl::Texture& starts, const gl::Texture& warped) {
+  dispatch_warp(starts, warped);
+}
+
+void GlobalCover::dispatch_warp(const gl::Texture& starts, const gl::Texture& warped) {
+  const CoverParameters& p = parameters_;
+  const bool adaptive = p.integrator == numerics::Integrator::adaptive;
+  warp_program_.set("u_step_size", p.step);
+  if (adaptive) {
+    // The flow time in double first: K h is the physical quantity, rounded once.
+    const float flow_time = static_cast<float>(static_cast<double>(p.iterations) * p.step);
+    warp_program_.set("u_flow_time", flow_time);
+    warp_program_.set("u_max_step", flow_time);
+    warp_program_.set("u_tolerance", p.tolerance);
+    warp_program_.set("u_max_substeps", p.max_substeps);
+  }
+  if (p.curl_mode == numerics::CurlMode::procedural) {
+    set_uniform(warp_program_, "u_curl", curl_params(p));
+    warp_program_.set("u_noise_offset", potential_offset(p));
+  }
+  curl_field_.bind_image(1, GL_READ_ONLY);
+  // Long integrations run over several dispatches (numerics::shader_loop_budget): each one
+  // continues from the points of the last, alternating between `warped` and a scratch map.
+  const int size = warped.width();
+  const int per_dispatch = numerics::steps_per_dispatch(p.integrator, p.curl_mode, p.potential.octaves);
+  gl::Texture scratch;
+  auto target = [&](bool into_warped) -> const gl::Texture& {
+    if (into_warped) return warped;
+    if (!scratch.id()) scratch = gl::Texture::cube(size, GL_RGBA32F);
+    return scratch;
+  };
+  auto dispatch = [&](const gl::Texture& from, const gl::Texture& to) {
+    from.bind_image(0, GL_READ_ONLY);
+    to.bind_image(2, GL_WRITE_ONLY);
+    warp_program_.dispatch_covering(size, size, 6);
     gl::image_barrier();
+  };
+  if (!adaptive) {
+    const int rounds = std::max(1, (p.iterations + per_dispatch - 1) / per_dispatch);
+    const gl::Texture* from = &starts;
+    for (int round = 0; round < rounds; ++round) {
+      warp_program_.set("u_steps", std::min(per_dispatch, p.iterations - round * per_dispatch));
+      const gl::Texture& to = target((rounds - 1 - round) % 2 == 0);  // the last round writes `warped`
+      dispatch(*from, to);
+      from = &to;
+    }
+    return;
+  }
+  // Adaptive: each texel keeps its state between dispatches; the rounds end when no texel is
+  // unfinished below its sub-step limit (a counter the shader increments).
+  const gl::Texture state = gl::Texture::cube(size, GL_RGBA32F);
+  state.bind_image(3, GL_READ_WRITE);
+  GLuint counter = 0;
+  glCreateBuffers(1, &counter);
+  glNamedBufferStorage(counter, sizeof(GLuint), nullptr, GL_DYNAMIC_STORAGE_BIT | GL_MAP_READ_BIT);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, counter);
+  warp_program_.set("u_chunk", per_dispatch);
+  const gl::Texture* from = &starts;
+  bool in_warped = true;
+  for (int round = 0; round * static_cast<long>(per_dispatch) < std::max(1, p.max_substeps); ++round) {
+    const GLuint zero = 0;
+    glNamedBufferSubData(counter, 0, sizeof zero, &zero);
+    warp_program_.set("u_resume", round > 0 ? 1 : 0);
+    in_warped = round % 2 == 0;
+    const gl::Texture& to = target(in_warped);
+    dispatch(*from, to);
+    from = &to;
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    GLuint unfinished = 0;
+    glGetNamedBufferSubData(counter, 0, sizeof unfinished, &unfinished);
+    if (unfinished == 0) break;
+  }
+  glDeleteBuffers(1, &counter);
+  if (!in_warped) {
+    glCopyImageSubData(scratch.id(), GL_TEXTURE_CUBE_MAP, 0, 0, 0, 0, warped.id(), GL_TEXTURE_CUBE_MAP, 0, 0, 0, 0,
+                       size, size, 6);
+    gl::image_barrier();
+  }
+}
+
+const numerics::WarpDiagnostics& GlobalCover::diagnose() {
+  timed("diagnose", [&] {
+    diagnostics_ = numerics::diagnose_warp(curl_field_.read(), warp_field_.read(), parameters_.size,
+                                           parameters_.integrator, parameters_.step);
   });
+  return *diagnostics_;
 }
 
 void GlobalCover::run_density() {
   timed("density", [&] {
     set_uniform(density_program_, "u_cover", density_params(parameters_));
+    density_program_.set("u_noise_offset", density_offset(parameters_));
     warp_field_.bind_image(0, GL_READ_ONLY);
     density_field_.bind_image(1, GL_WRITE_ONLY);
     density_program_.dispatch_covering(parameters_.size, parameters_.size, 6);

@@ -2,6 +2,7 @@
 // The global cloud cover: identity, curl, warp, density and coverage passes over cube maps.
 // Needs a current OpenGL 4.5 context.
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -9,6 +10,7 @@
 #include "cover/coverage_threshold.hpp"
 #include "gl/compute_program.hpp"
 #include "gl/textures.hpp"
+#include "numerics/stability.hpp"
 
 namespace nephele::cover {
 
@@ -30,6 +32,13 @@ class GlobalCover {
   void run_warp();
   void run_density();
   CoverageCalibration run_coverage();  // calibrates on the host, remaps on the GPU
+  // The warp pass's computation for other start points: `starts` and `warped` are RGBA32F cube
+  // maps of one size (any, independent of the cover's), the curl field is this cover's.
+  void warp_points(const gl::Texture& starts, const gl::Texture& warped);
+  // Stiffness, folding and sub-steps of the warp (reads the curl and warp fields back; after
+  // run_warp). Kept for the sidecar.
+  const numerics::WarpDiagnostics& diagnose();
+  const std::optional<numerics::WarpDiagnostics>& diagnostics() const { return diagnostics_; }
 
   const CoverParameters& parameters() const { return parameters_; }
   const gl::Texture& identity_field() const { return identity_field_; }
@@ -43,16 +52,18 @@ class GlobalCover {
  private:
   template <class Work>
   void timed(const std::string& pass, Work&& work);
+  void dispatch_warp(const gl::Texture& starts, const gl::Texture& warped);
 
   CoverParameters parameters_;
   gl::ComputeProgram identity_program_{"cover/identity.comp"};
   gl::ComputeProgram curl_program_{"cover/curl.comp"};
-  gl::ComputeProgram warp_program_{"cover/warp.comp"};
+  gl::ComputeProgram warp_program_;  // the integrator's and curl mode's variant
   gl::ComputeProgram density_program_{"cover/cover_density.comp"};
   gl::ComputeProgram remap_program_{"cover/cover_remap.comp"};
   gl::Texture identity_field_, curl_field_, warp_field_, density_field_, cover_field_;
   CoverageCalibration calibration_;
   std::vector<PassTiming> timings_;
+  std::optional<numerics::WarpDiagnostics> diagnostics_;
 };
 
 // Uploads FbmParams / CurlParams to a uniform struct of the same layout named `name`.

@@ -54,9 +54,14 @@ json::Value cover_sidecar(const cover::GlobalCover& cover, const gl::ContextInfo
   parameters.set("iterations", p.iterations);
   parameters.set("step", p.step);
   parameters.set("flow_time", static_cast<double>(p.iterations) * p.step);
-  parameters.set("integrator", "euler");
-  parameters.set("curl_mode", "sampled");
+  parameters.set("integrator", numerics::integrator_name(p.integrator));
+  parameters.set("curl_mode", numerics::curl_mode_name(p.curl_mode));
+  if (p.integrator == numerics::Integrator::adaptive) {
+    parameters.set("tolerance", p.tolerance);
+    parameters.set("max_substeps", p.max_substeps);
+  }
   parameters.set("coverage", p.coverage);
+  parameters.set("noise_offset", p.noise_offset);
   parameters.set("potential", octaves_json(p.potential));
   parameters.set("prevailing", p.prevailing);
   parameters.set("mix_frequency", p.mix_frequency);
@@ -70,6 +75,34 @@ json::Value cover_sidecar(const cover::GlobalCover& cover, const gl::ContextInfo
   result.set("threshold", c.threshold);
   result.set("density_min", c.density_min);
   result.set("density_max", c.density_max);
+
+  // Stability of the warp (docs/numerics.md): present when the cover was diagnosed.
+  if (const auto& d = cover.diagnostics()) {
+    json::Value stiffness;
+    stiffness.set("max_rate", d->stiffness.max_rate);
+    stiffness.set("stiffness_number", d->stiffness.stiffness);
+    stiffness.set("stable_limit", d->stiffness.limit);
+    stiffness.set("beyond_limit_fraction", d->stiffness.beyond_fraction);
+    json::Value folding;
+    folding.set("folded_fraction", d->folding.folded_fraction);
+    folding.set("jacobian_min", d->folding.jacobian_min);
+    folding.set("jacobian_max", d->folding.jacobian_max);
+    folding.set("area_error_rms", d->folding.area_error_rms);
+    json::Value numerics;
+    numerics.set("stiffness", stiffness);
+    numerics.set("folding", folding);
+    if (d->adaptive) {
+      json::Value substeps;
+      substeps.set("mean", d->substeps.mean_attempts);
+      substeps.set("max", d->substeps.max_attempts);
+      substeps.set("capped_texels", static_cast<double>(d->substeps.capped_texels));
+      numerics.set("substeps", substeps);
+    }
+    json::Value::Array warnings;
+    for (const auto& w : d->warnings) warnings.emplace_back(w);
+    numerics.set("warnings", warnings);
+    result.set("numerics", numerics);
+  }
 
   json::Value timings;
   for (const auto& t : cover.timings()) timings.set(t.pass, t.milliseconds);

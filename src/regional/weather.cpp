@@ -141,6 +141,16 @@ WeatherSeries parse_weather(const std::string& text, const std::string& source) 
   WeatherSeries w;
   w.source = source;
   std::vector<double> times, total, low, mid, high, rain, speed, direction;
+  // The cloud fields and precipitation, named differently by each provider.
+  auto read_clouds = [&](const json::Value& block, const std::string& path, const char* total_key,
+                         const char* low_key, const char* mid_key, const char* high_key) {
+    const size_t n = times.size();
+    total = r.series(block, path, total_key, n, 0, 100);
+    low = r.series(block, path, low_key, n, 0, 100);
+    mid = r.series(block, path, mid_key, n, 0, 100);
+    high = r.series(block, path, high_key, n, 0, 100);
+    rain = r.series(block, path, "precipitation", n, 0, 500, false);
+  };
   if (root.find("hourly")) {
     // Open-Meteo forecast API: hourly arrays beside 'time'; times are local to utc_offset_seconds.
     w.format = "open-meteo";
@@ -151,11 +161,7 @@ WeatherSeries parse_weather(const std::string& text, const std::string& source) 
     if (!hourly.is_object()) r.fail("hourly", "must be an object");
     times = r.times(hourly, "hourly.", offset);
     const size_t n = times.size();
-    total = r.series(hourly, "hourly.", "cloud_cover", n, 0, 100);
-    low = r.series(hourly, "hourly.", "cloud_cover_low", n, 0, 100);
-    mid = r.series(hourly, "hourly.", "cloud_cover_mid", n, 0, 100);
-    high = r.series(hourly, "hourly.", "cloud_cover_high", n, 0, 100);
-    rain = r.series(hourly, "hourly.", "precipitation", n, 0, 500, false);
+    read_clouds(hourly, "hourly.", "cloud_cover", "cloud_cover_low", "cloud_cover_mid", "cloud_cover_high");
     // Wind aloft when present, else at 10 m (km/h in Open-Meteo's default units).
     const char* speed_keys[] = {"wind_speed_850hPa", "wind_speed_10m"};
     const char* direction_keys[] = {"wind_direction_850hPa", "wind_direction_10m"};
@@ -182,11 +188,7 @@ WeatherSeries parse_weather(const std::string& text, const std::string& source) 
     const json::Value& hourly = root.at("data_1h");
     times = r.times(hourly, "data_1h.", offset);
     const size_t n = times.size();
-    total = r.series(hourly, "data_1h.", "totalcloudcover", n, 0, 100);
-    low = r.series(hourly, "data_1h.", "lowclouds", n, 0, 100);
-    mid = r.series(hourly, "data_1h.", "midclouds", n, 0, 100);
-    high = r.series(hourly, "data_1h.", "highclouds", n, 0, 100);
-    rain = r.series(hourly, "data_1h.", "precipitation", n, 0, 500, false);
+    read_clouds(hourly, "data_1h.", "totalcloudcover", "lowclouds", "midclouds", "highclouds");
     speed = r.series(hourly, "data_1h.", "windspeed", n, 0, 150, false);
     if (!speed.empty()) direction = r.series(hourly, "data_1h.", "winddirection", n, 0, 360);
   } else {

@@ -65,6 +65,9 @@ WeatherField field_from_cover(const std::vector<float>& cover, int cover_size, s
   const double angle[coverage_channels] = {0.0, 2.0 * M_PI * turns.x, 2.0 * M_PI * turns.y, 0.0, 0.0};
   const int channels_from_cover[3] = {int(CoverageChannel::low), int(CoverageChannel::mid), int(CoverageChannel::high)};
   const double channel_angle[3] = {angle[0], angle[1], angle[2]};
+  // Mid and high cloud cover less of the sky than low cloud in satellite climatologies; half the
+  // cover's value keeps them thinner and more often broken.
+  const float channel_scale[3] = {1.0f, 0.5f, 0.5f};
   WeatherField f{size, extent_m, std::vector<float>(static_cast<size_t>(coverage_channels) * size * size, 0.0f)};
   const GeographicLib::Geocentric& earth = GeographicLib::Geocentric::WGS84();
   for (int row = 0; row < size; ++row)
@@ -75,7 +78,7 @@ WeatherField field_from_cover(const std::vector<float>& cover, int cover_size, s
         double x = 0, y = 0, z = 0;
         earth.Forward(lat, lon + channel_angle[k] * 180.0 / M_PI, 0.0, x, y, z);
         const glsl::vec3 direction = glsl::normalize(glsl::vec3(float(x), float(y), float(z)));
-        const float c = glsl::sample_cube_bilinear(direction, source).x;
+        const float c = channel_scale[k] * glsl::sample_cube_bilinear(direction, source).x;
         f.values[(static_cast<size_t>(channels_from_cover[k]) * size + row) * size + column] = c;
       }
     }

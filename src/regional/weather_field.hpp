@@ -39,9 +39,8 @@ WeatherField field_from_stations(const std::vector<Station>& stations, const Geo
                                  int size, double extent_m);
 
 // From the global cover (6 faces of cover_size^2 in GL order): the low channel is the cover
-// under each point; mid and high sample the cover at directions turned about the polar axis by
-// seed-derived angles, so that layers differ but keep the cover's statistics. No fog or
-// convective cells come from the cover.
+// under each point; mid and high are half the cover at directions turned about the polar axis
+// by seed-derived angles, so that layers differ. No fog or convective cells come from the cover.
 WeatherField field_from_cover(const std::vector<float>& cover, int cover_size, std::uint32_t seed,
                               const GeographicLib::LocalCartesian& frame, int size, double extent_m);
 

@@ -4,6 +4,7 @@
 #include <GeographicLib/Ellipsoid.hpp>
 #include <epoxy/gl.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 
@@ -19,6 +20,24 @@ constexpr int max_layers = 8;
 // The wind's offset is wrapped at a length that every noise period divides, so the noise stays
 // continuous in time while the offset stays small enough for float precision.
 constexpr double offset_wrap_m = 120000.0;
+
+// Replaces each channel's values by their ranks, (rank + 1/2) / n: uniformly distributed noise,
+// so that a coverage threshold covers the intended fraction of the sky.
+void equalise_histogram(GLuint volume, int size) {
+  const size_t n = static_cast<size_t>(size) * size * size;
+  std::vector<float> texels(2 * n);
+  glGetTextureImage(volume, 0, GL_RG, GL_FLOAT, static_cast<GLsizei>(texels.size() * sizeof(float)), texels.data());
+  std::vector<unsigned> order(n);
+  for (int channel = 0; channel < 2; ++channel) {
+    for (size_t k = 0; k < n; ++k) order[k] = static_cast<unsigned>(k);
+    std::sort(order.begin(), order.end(), [&](unsigned a, unsigned b) {
+      return texels[2 * a + channel] < texels[2 * b + channel];
+    });
+    for (size_t rank = 0; rank < n; ++rank)
+      texels[2 * order[rank] + channel] = static_cast<float>((rank + 0.5) / n);
+  }
+  glTextureSubImage3D(volume, 0, 0, 0, 0, size, size, size, GL_RG, GL_FLOAT, texels.data());
+}
 
 GLuint make_texture(GLenum target) {
   GLuint id = 0;
@@ -100,6 +119,7 @@ RenderResult render_clouds(const Camera& camera, const std::vector<regional::Clo
       glBindImageTexture(0, noise, 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RG32F);
       program.dispatch_covering(settings.noise_size, settings.noise_size, settings.noise_size);
       gl::image_barrier();
+      equalise_histogram(noise, settings.noise_size);
       glGenerateTextureMipmap(noise);
     });
     result.passes.push_back("noise_volume");
@@ -156,6 +176,14 @@ RenderResult render_clouds(const Camera& camera, const std::vector<regional::Clo
     program.set("u_heading", static_cast<float>(heading));
     program.set("u_sun", glm::vec3(sun));
     program.set("u_ambient", ambient);
+    {
+      // Lambertian ground of albedo 0.15 under the camera, lit by the sun and the sky.
+      using namespace glsl;
+      const vec3 ground(0.0f, 0.0f, static_cast<float>(earth_radius + camera.height_m));
+      const vec3 sunlight = solar_irradiance() * transmittance_to_space(ground, vec3(sun), static_cast<float>(earth_radius)) *
+                            std::max(static_cast<float>(sun.z), 0.0f);
+      program.set("u_ground_radiance", (0.15f / PI_F) * (sunlight + ambient));
+    }
     program.set("u_view_steps", settings.view_steps);
     program.set("u_light_steps", settings.light_steps);
     program.set("u_sky_steps", settings.sky_steps);

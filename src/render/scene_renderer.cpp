@@ -4,6 +4,8 @@
 
 #include <filesystem>
 #include <limits>
+#include <map>
+#include <memory>
 
 #include "cover/global_cover.hpp"
 #include "export/atomic_output.hpp"
@@ -78,6 +80,7 @@ SceneRender render_scene(const regional::Scene& scene) {
     out.weather_source = "stations";
     // Layer types follow the weather at the viewpoint: its nearest station.
     out.layers = regional::choose_layers(now[nearest], ahead[nearest]);
+    out.weather_at_camera = now[nearest];
     if (now[nearest].has_wind) {
       const double from = now[nearest].wind_direction_deg * M_PI / 180;
       wind = -glm::dvec2(std::sin(from), std::cos(from));
@@ -94,7 +97,8 @@ SceneRender render_scene(const regional::Scene& scene) {
                                        field_extent_m);
     out.passes.push_back("weather_field (global cover)");
     out.weather_source = "global cover";
-    out.layers = regional::choose_layers(regional::sample_from_field(field, time), {});
+    out.weather_at_camera = regional::sample_from_field(field, time);
+    out.layers = regional::choose_layers(out.weather_at_camera, {});
   }
 
   RenderSettings settings;
@@ -123,6 +127,13 @@ json::Value scene_sidecar(const SceneRender& r, const regional::Scene& scene) {
   root.set("time", scene.time);
   root.set("sun_elevation_deg", r.render.sun_elevation_deg);
   root.set("weather_source", r.weather_source);
+  json::Value weather;
+  weather.set("cloud_cover", r.weather_at_camera.cloud_cover);
+  weather.set("cloud_low", r.weather_at_camera.cloud_low);
+  weather.set("cloud_mid", r.weather_at_camera.cloud_mid);
+  weather.set("cloud_high", r.weather_at_camera.cloud_high);
+  weather.set("precipitation", r.weather_at_camera.precipitation);
+  root.set("weather_at_camera", weather);
   json::Value::Array layers;
   for (const auto& l : r.layers) {
     json::Value v;
@@ -152,28 +163,27 @@ json::Value scene_sidecar(const SceneRender& r, const regional::Scene& scene) {
 void write_scene_outputs(const SceneRender& result, const regional::Scene& scene,
                          const std::vector<std::string>& output_paths) {
   if (output_paths.empty()) return;
-  // All outputs go through one set per directory; the sidecar sits beside the first output.
-  const std::filesystem::path first(output_paths.front());
-  output::OutputSet outputs(first.parent_path().empty() ? std::filesystem::path(".") : first.parent_path());
-  std::vector<std::unique_ptr<output::OutputSet>> others;
+  // One output set per directory; all are committed only after every file is written.
+  std::map<std::filesystem::path, std::unique_ptr<output::OutputSet>> sets;
+  auto set_for = [&](const std::filesystem::path& path) -> output::OutputSet& {
+    const std::filesystem::path directory = path.parent_path().empty() ? "." : path.parent_path();
+    auto& set = sets[directory];
+    if (!set) set = std::make_unique<output::OutputSet>(directory);
+    return *set;
+  };
   for (const auto& path_text : output_paths) {
     const std::filesystem::path path(path_text);
-    const std::filesystem::path directory = path.parent_path().empty() ? std::filesystem::path(".") : path.parent_path();
-    output::OutputSet* set = &outputs;
-    if (directory != (first.parent_path().empty() ? std::filesystem::path(".") : first.parent_path())) {
-      others.push_back(std::make_unique<output::OutputSet>(directory));
-      set = others.back().get();
-    }
     const std::string name = path.filename().string();
     if (path.extension() == ".png")
-      output::write_png8(set->temporary_for(name), tone_map(result.render.radiance, scene.exposure), name);
+      output::write_png8(set_for(path).temporary_for(name), tone_map(result.render.radiance, scene.exposure), name);
     else
-      output::write_float_image(set->temporary_for(name), result.render.radiance, {"R", "G", "B", "A"}, name);
+      output::write_float_image(set_for(path).temporary_for(name), result.render.radiance, {"R", "G", "B", "A"}, name);
   }
-  output::write_text_file(outputs.temporary_for(first.stem().string() + ".json"),
+  // The sidecar sits beside the first output.
+  const std::filesystem::path first(output_paths.front());
+  output::write_text_file(set_for(first).temporary_for(first.stem().string() + ".json"),
                           json::write(scene_sidecar(result, scene)));
-  for (auto& o : others) o->commit();
-  outputs.commit();
+  for (auto& [directory, set] : sets) set->commit();
 }
 
 }  // namespace nephele::render

@@ -16,6 +16,7 @@ struct SceneRender {
   RenderResult render;
   std::vector<std::string> passes;  // every pass that ran, in order
   std::string weather_source;       // "stations" or "global cover"
+  regional::WeatherSample weather_at_camera;  // what the layer rules read
 };
 
 // Needs a current OpenGL 4.5 context. Throws regional::WeatherError / SceneError for bad input.

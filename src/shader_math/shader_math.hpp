@@ -22,6 +22,12 @@ struct CubeSource {
 #define CUBE_SOURCE_ARG , source
 #define CUBE_FETCH(face, i, j) source.fetch(face, i, j)
 #define CUBE_SIZE source.size
+// The warp's stepping rules are templates over the velocity source (shaders/lib/warp_step.glsl):
+// warp_velocity below for the cube map and the procedural curl, or any callable vec3(vec3).
+#define WARP_TEMPLATE template <class Field>
+#define WARP_FIELD_PARAM , IN(Field) field
+#define WARP_FIELD_ARG , field
+#define WARP_VELOCITY(w) warp_velocity(w, field)
 
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wunused-function"
@@ -29,14 +35,22 @@ namespace nephele::glsl {
 // Types first, with external linkage, so that APIs across translation units can use them.
 #include "lib/parameters.glsl"
 #include "lib/render_types.glsl"
+#include "lib/noise_types.glsl"
 namespace {
 #include "lib/portable_math.glsl"
 #include "lib/hash.glsl"
 #include "lib/cube_faces.glsl"
 #include "lib/worley.glsl"
 #include "lib/worley_fbm.glsl"
+#include "lib/perlin.glsl"
+#include "lib/tileable_noise.glsl"
+#include "lib/noise_rows.glsl"
 #include "lib/curl_flow.glsl"
 #include "lib/cube_sampling.glsl"
+vec3 warp_velocity(vec3 w, IN(CubeSource) source) { return vec3(sample_cube_bilinear(w, source)); }
+vec3 warp_velocity(vec3 w, IN(CurlParams) curl) { return curl_velocity(w, curl); }
+template <class F>
+vec3 warp_velocity(vec3 w, const F& velocity) { return velocity(w); }
 #include "lib/warp_step.glsl"
 #include "lib/cover_density.glsl"
 #include "lib/equirect_mapping.glsl"
@@ -51,3 +65,7 @@ namespace {
 #undef CUBE_SOURCE_ARG
 #undef CUBE_FETCH
 #undef CUBE_SIZE
+#undef WARP_TEMPLATE
+#undef WARP_FIELD_PARAM
+#undef WARP_FIELD_ARG
+#undef WARP_VELOCITY

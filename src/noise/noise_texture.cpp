@@ -1,0 +1,211 @@
+#include "noise/noise_texture.hpp"
+
+#include <epoxy/gl.h>
+
+#include <algorithm>
+#include <chrono>
+#include <stdexcept>
+
+namespace nephele::noise {
+namespace {
+
+// The linker drops uniforms a kind does not read (the Worley part outside perlin-worley).
+void set_active(const gl::ComputeProgram& program, const std::string& name, float v) {
+  if (program.has_uniform(name)) program.set(name, v);
+}
+void set_active(const gl::ComputeProgram& program, const std::string& name, int v) {
+  if (program.has_uniform(name)) program.set(name, v);
+}
+void set_active(const gl::ComputeProgram& program, const std::string& name, unsigned v) {
+  if (program.has_uniform(name)) program.set(name, v);
+}
+void set_active(const gl::ComputeProgram& program, const std::string& name, glsl::ivec3 v) {
+  if (program.has_uniform(name)) program.set(name, v);
+}
+
+void set_fbm(const gl::ComputeProgram& program, const std::string& name, const glsl::FbmParams& f) {
+  set_active(program, name + ".frequency", f.frequency);
+  set_active(program, name + ".octaves", f.octaves);
+  set_active(program, name + ".lacunarity", f.lacunarity);
+  set_active(program, name + ".gain", f.gain);
+  set_active(program, name + ".seed", static_cast<unsigned>(f.seed));
+  set_active(program, name + ".period", f.period);
+}
+
+void set_channel(const gl::ComputeProgram& program, const glsl::NoiseChannel& channel,
+                 const TextureSpec& spec, int stride) {
+  set_active(program, "u_channel.type", channel.type);
+  set_fbm(program, "u_channel.fbm", channel.fbm);
+  set_fbm(program, "u_channel.worley", channel.worley);
+  set_active(program, "u_size", glsl::ivec3(spec.width, spec.height, spec.depth));
+  set_active(program, "u_stride", stride);
+}
+
+using Clock = std::chrono::steady_clock;
+double ms_since(Clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+}  // namespace
+
+TextureGenerator::TextureGenerator(size_t slab_bytes) : slab_bytes_(slab_bytes) {}
+
+TextureGenerator::~TextureGenerator() {
+  for (Buffer* b : {&values_, &patches_})
+    if (b->id) glDeleteBuffers(1, &b->id);
+}
+
+unsigned TextureGenerator::buffer(Buffer& b, size_t bytes) {
+  if (b.id && b.bytes >= bytes) return b.id;
+  if (b.id) glDeleteBuffers(1, &b.id);
+  b = Buffer{};
+  glCreateBuffers(1, &b.id);
+  glNamedBufferStorage(b.id, static_cast<GLsizeiptr>(bytes), nullptr, GL_DYNAMIC_STORAGE_BIT | GL_MAP_READ_BIT);
+  if (glGetError() != GL_NO_ERROR) {
+    glDeleteBuffers(1, &b.id);
+    b = Buffer{};
+    throw std::runtime_error("could not allocate a " + std::to_string(bytes >> 20) + " MiB buffer");
+  }
+  b.bytes = bytes;
+  return b.id;
+}
+
+gl::ComputeProgram& TextureGenerator::program(const std::string& path, const Defines& defines) {
+  std::string key = path;
+  for (const auto& [name, value] : defines) key += " " + name + "=" + value;
+  auto& slot = programs_[key];
+  if (!slot) slot = std::make_unique<gl::ComputeProgram>(path, defines);
+  return *slot;
+}
+
+Volume TextureGenerator::generate(const TextureSpec& spec) {
+  validate(spec);
+  timings_ = {};
+  const int width = spec.width, height = spec.height, depth = spec.depth;
+  const int channels = static_cast<int>(spec.channels.size());
+  const int stride = (width + 7) / 8 * 8;  // rows are stored in chunks of 8 floats
+  const size_t slice_bytes = static_cast<size_t>(stride) * height * sizeof(float);
+  GLint64 max_block = 0;
+  glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &max_block);
+  const size_t budget = std::min(slab_bytes_, static_cast<size_t>(std::max<GLint64>(max_block, 1)));
+  if (slice_bytes > budget)
+    throw std::runtime_error("one slice of " + std::to_string(width) + " x " + std::to_string(height) +
+                             " texels exceeds the storage buffer limit");
+  const int slices = static_cast<int>(std::min<size_t>(budget / slice_bytes, static_cast<size_t>(depth)));
+  const int segments = (width + glsl::NOISE_SEGMENT - 1) / glsl::NOISE_SEGMENT;
+  const GLuint capacity = static_cast<GLuint>(static_cast<size_t>(height) * slices * segments);
+
+  const GLuint values = buffer(values_, slice_bytes * slices);
+  const GLuint patches = buffer(patches_, 16 + 16 * static_cast<size_t>(capacity));
+  Volume out{width, height, depth, channels, {}};
+  out.values.resize(static_cast<size_t>(width) * height * depth * channels);
+
+  for (int c = 0; c < channels; ++c) {
+    const glsl::NoiseChannel params = channel_params(spec, c);
+    // Variants per type and octave count (noise_rows.comp): a SIMD driver runs both sides of
+    // every branch, so the shader must know what it need not do.
+    const bool has_worley = params.type != glsl::NOISE_PERLIN;
+    const Defines defines{{"NOISE_TYPE", std::to_string(params.type)},
+                          {"NOISE_OCTAVES", std::to_string(params.fbm.octaves)},
+                          {"NOISE_WORLEY_OCTAVES", std::to_string(params.worley.octaves)}};
+    gl::ComputeProgram& rows = program("noise/noise_rows.comp", defines);
+    set_channel(rows, params, spec, stride);
+    gl::ComputeProgram* patch =
+        has_worley ? &program("noise/noise_patch.comp", {{"NOISE_TYPE", std::to_string(params.type)}}) : nullptr;
+    if (patch) set_channel(*patch, params, spec, stride);
+    for (int z0 = 0; z0 < depth; z0 += slices) {
+      const int n = std::min(slices, depth - z0);
+      const auto start = Clock::now();
+      const GLuint header[4] = {0u, capacity, 0u, 0u};
+      glNamedBufferSubData(patches, 0, sizeof header, header);
+      glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, values);
+      glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, patches);
+      rows.set("u_z0", z0);
+      rows.set("u_slices", n);
+      rows.dispatch_covering(height, n, segments);
+      ++timings_.dispatches;
+      if (patch) {
+        glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+        GLuint count = 0;
+        glGetNamedBufferSubData(patches, 0, sizeof count, &count);
+        count = std::min(count, capacity);
+        if (count > 0) {
+          patch->set("u_z0", z0);
+          patch->dispatch_covering(static_cast<int>(count), 1, 1);
+          timings_.patched_segments += count;
+        }
+      }
+      glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+      glFinish();
+      timings_.compute_ms += ms_since(start);
+
+      const auto copy_start = Clock::now();
+      // Mapped, a software driver's buffer is read in place (no staging copy).
+      const auto* mapped = static_cast<const float*>(
+          glMapNamedBufferRange(values, 0, static_cast<GLsizeiptr>(slice_bytes * n), GL_MAP_READ_BIT));
+      if (!mapped) throw std::runtime_error("could not map the noise buffer");
+      for (int z = 0; z < n; ++z)
+        for (int y = 0; y < height; ++y) {
+          const float* src = mapped + (static_cast<size_t>(z) * height + y) * stride;
+          float* dst = out.values.data() + ((static_cast<size_t>(z0 + z) * height + y) * width) * channels + c;
+          if (channels == 1) {
+            std::copy(src, src + width, dst);
+          } else {
+            for (int x = 0; x < width; ++x) dst[static_cast<size_t>(x) * channels] = src[x];
+          }
+        }
+      glUnmapNamedBuffer(values);
+      timings_.readback_ms += ms_since(copy_start);
+    }
+  }
+  if (glGetError() != GL_NO_ERROR) throw std::runtime_error("OpenGL error while generating noise");
+  return out;
+}
+
+Volume generate_cpu(const TextureSpec& spec) {
+  validate(spec);
+  using namespace glsl;
+  Volume out{spec.width, spec.height, spec.depth, static_cast<int>(spec.channels.size()), {}};
+  out.values.resize(static_cast<size_t>(out.width) * out.height * out.depth * out.channels);
+  for (int c = 0; c < out.channels; ++c) {
+    const NoiseChannel params = channel_params(spec, c);
+    std::vector<float> row(static_cast<size_t>(out.width));
+    for (int z = 0; z < out.depth; ++z)
+      for (int y = 0; y < out.height; ++y) {
+        for (int t0 = 0; t0 < out.width; t0 += NOISE_SEGMENT) {
+          // As noise_rows.comp.
+          const int count = std::min(NOISE_SEGMENT, out.width - t0);
+          float sums[NOISE_SUMS] = {};
+          const NoiseRowTarget target{sums, row.data()};
+          const NoiseFinish finish{params.type, fbm_norm(params.fbm), fbm_norm(params.worley)};
+          uvec2 beyond(0u);
+          if (params.type == NOISE_PERLIN) {
+            perlin_fbm_row(t0, count, y, z, params.fbm, 0, true, finish, target);
+          } else if (params.type == NOISE_PERLIN_WORLEY) {
+            perlin_fbm_row(t0, count, y, z, params.fbm, 0, false, finish, target);
+            worley_fbm_row(t0, count, y, z, params.worley, NOISE_SEGMENT, true, finish, beyond, target);
+          } else {
+            worley_fbm_row(t0, count, y, z, params.fbm, 0, true, finish, beyond, target);
+          }
+          // As noise_patch.comp.
+          for (int i = 0; i < count; ++i)
+            if ((beyond[i >> 5] >> (i & 31)) & 1u) row[t0 + i] = reference_value(params, t0 + i, y, z);
+        }
+        for (int x = 0; x < out.width; ++x)
+          out.values[((static_cast<size_t>(z) * out.height + y) * out.width + x) * out.channels + c] = row[x];
+      }
+  }
+  return out;
+}
+
+float reference_value(const glsl::NoiseChannel& channel, int x, int y, int z) {
+  return glsl::noise_channel_value(glsl::vec3(glsl::ivec3(x, y, z)) + 0.5f, channel);
+}
+
+double host_bytes(const TextureSpec& spec) {
+  const double volume = 4.0 * spec.width * spec.height * spec.depth * static_cast<double>(spec.channels.size());
+  // The volume, the atlas image handed to the writer and its encoded copy, plus one slab.
+  return 3.0 * volume + static_cast<double>(TextureGenerator::slab_budget_bytes);
+}
+
+}  // namespace nephele::noise

@@ -1,0 +1,69 @@
+#pragma once
+// Tileable 3D noise textures on the GPU (shaders/noise/*.comp) and their CPU twin, which runs
+// the same GLSL functions compiled as C++.
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "gl/compute_program.hpp"
+#include "noise/noise_spec.hpp"
+
+namespace nephele::noise {
+
+// Texel (x, y, z), channel c is values[((z * height + y) * width + x) * channels + c].
+struct Volume {
+  int width = 0, height = 0, depth = 0, channels = 0;
+  std::vector<float> values;
+  float at(int x, int y, int z, int c) const {
+    return values[((static_cast<size_t>(z) * height + y) * width + x) * channels + c];
+  }
+};
+
+struct GeneratorTimings {
+  double compute_ms = 0;   // row walks and patches, until the GPU finished
+  double readback_ms = 0;  // copies to host memory and channel interleaving
+  long patched_segments = 0;  // row segments with texels recomputed by noise_patch.comp
+  int dispatches = 0;         // slabs times channels
+};
+
+// Needs a current OpenGL 4.5 context. Programs are compiled on first use and kept.
+class TextureGenerator {
+ public:
+  // Largest storage buffer a dispatch uses; slices are grouped to stay within it.
+  static constexpr size_t slab_budget_bytes = size_t(64) << 20;
+  explicit TextureGenerator(size_t slab_bytes = slab_budget_bytes);
+  ~TextureGenerator();
+  TextureGenerator(const TextureGenerator&) = delete;
+  TextureGenerator& operator=(const TextureGenerator&) = delete;
+
+  // Validates the spec (SpecError) and computes every channel.
+  Volume generate(const TextureSpec& spec);
+  const GeneratorTimings& timings() const { return timings_; }
+
+ private:
+  using Defines = std::vector<std::pair<std::string, std::string>>;
+  gl::ComputeProgram& program(const std::string& path, const Defines& defines);
+  // Storage buffers kept between textures (allocating them costs a software driver a page
+  // fault per 4 KiB): the values of one slab, and the patch list.
+  struct Buffer {
+    unsigned id = 0;
+    size_t bytes = 0;
+  };
+  unsigned buffer(Buffer& b, size_t bytes);
+  std::map<std::string, std::unique_ptr<gl::ComputeProgram>> programs_;
+  size_t slab_bytes_;
+  Buffer values_, patches_;
+  GeneratorTimings timings_;
+};
+
+// The CPU twin: the same row walk and patching, one thread. For tests and small textures.
+Volume generate_cpu(const TextureSpec& spec);
+
+// One texel of one channel by the point functions (tileable_noise.glsl): the reference.
+float reference_value(const glsl::NoiseChannel& channel, int x, int y, int z);
+
+// Bytes of host memory generate() needs for a spec (the volume and its staging copies).
+double host_bytes(const TextureSpec& spec);
+
+}  // namespace nephele::noise

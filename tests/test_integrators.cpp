@@ -1,0 +1,216 @@
+// The warp's stepping rules on the CPU twin: orders of convergence on a smooth flow with a
+// known solution, the geodesic step, tolerance proportionality, and the stable step limits.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <complex>
+#include <vector>
+
+#include "cover/cover_parameters.hpp"
+#include "numerics/integrators.hpp"
+#include "shader_math/shader_math.hpp"
+
+using namespace nephele;
+using namespace nephele::glsl;
+using glm::dvec3;
+
+namespace {
+
+// The zonal flow: the stream function without noise (potential octaves 0), phi = P sin(a lat),
+// so v = -s P a cos(a lat) e_east. Points keep their latitude and turn about the axis at the
+// angular speed u / cos(lat): the exact flow map is known.
+struct ZonalFlow {
+  CurlParams curl;
+  double flow_time;
+
+  explicit ZonalFlow(double time) : flow_time(time) {
+    cover::CoverParameters p;
+    p.potential.octaves = 0;
+    p.prevailing = 1.0f;
+    curl = cover::curl_params(p);
+  }
+  dvec3 exact(vec3 start) const {
+    const double lat = std::asin(static_cast<double>(start.z));
+    const double lon = std::atan2(static_cast<double>(start.y), static_cast<double>(start.x));
+    const double a = curl.mix_frequency;
+    const double u = -static_cast<double>(curl.strength) * curl.prevailing * a * std::cos(a * lat);
+    const double turned = lon + flow_time * u / std::cos(lat);
+    return dvec3(std::cos(lat) * std::cos(turned), std::cos(lat) * std::sin(turned), std::sin(lat));
+  }
+};
+
+double distance(dvec3 a, dvec3 b) { return std::atan2(glm::length(glm::cross(a, b)), glm::dot(a, b)); }
+
+// Start points away from the poles (where the zonal flow's rate of change grows without bound).
+std::vector<vec3> starts() {
+  std::vector<vec3> points;
+  for (double lat_deg : {-55.0, -32.0, -8.0, 4.0, 21.0, 47.0, 58.0})
+    for (double lon_deg : {-150.0, 20.0, 95.0}) {
+      const double lat = lat_deg * M_PI / 180, lon = lon_deg * M_PI / 180;
+      points.push_back(normalize(vec3(dvec3(std::cos(lat) * std::cos(lon), std::cos(lat) * std::sin(lon), std::sin(lat)))));
+    }
+  return points;
+}
+
+double worst_error(int integrator, const ZonalFlow& flow, int steps) {
+  double worst = 0;
+  for (const vec3 s : starts()) {
+    const vec3 w = integrate_fixed(integrator, s, steps, static_cast<float>(flow.flow_time / steps), flow.curl);
+    worst = std::max(worst, distance(dvec3(w), flow.exact(s)));
+  }
+  return worst;
+}
+
+// Least-squares slope of log(error) against log(x).
+double slope(const std::vector<double>& x, const std::vector<double>& error) {
+  double mx = 0, my = 0;
+  for (size_t k = 0; k < x.size(); ++k) {
+    mx += std::log(x[k]) / x.size();
+    my += std::log(error[k]) / x.size();
+  }
+  double sxy = 0, sxx = 0;
+  for (size_t k = 0; k < x.size(); ++k) {
+    sxy += (std::log(x[k]) - mx) * (std::log(error[k]) - my);
+    sxx += (std::log(x[k]) - mx) * (std::log(x[k]) - mx);
+  }
+  return sxy / sxx;
+}
+
+// Observed order: slope of log error against log h = log(T / K). The step counts keep the
+// errors between the pre-asymptotic range and float rounding (about 1e-6 here).
+double observed_order(int integrator, double flow_time, const std::vector<int>& steps) {
+  const ZonalFlow flow(flow_time);
+  std::vector<double> h, error;
+  for (int k : steps) {
+    h.push_back(flow_time / k);
+    error.push_back(worst_error(integrator, flow, k));
+    INFO("K = " << k << " error " << error.back());
+    REQUIRE(error.back() > 1e-5);  // well above rounding, so the slope is the truncation's
+  }
+  return slope(h, error);
+}
+
+}  // namespace
+
+TEST_CASE("forward Euler converges at first order on the smooth zonal flow", "[integrators]") {
+  const double order = observed_order(INTEGRATOR_EULER, 3.0, {100, 200, 400, 800});
+  INFO("observed order " << order);
+  CHECK(std::abs(order - 1.0) < 0.1);
+}
+
+TEST_CASE("Heun converges at second order on the smooth zonal flow", "[integrators]") {
+  const double order = observed_order(INTEGRATOR_HEUN, 3.0, {30, 60, 120});
+  INFO("observed order " << order);
+  CHECK(std::abs(order - 2.0) < 0.2);
+}
+
+TEST_CASE("classical RK4 converges at fourth order on the smooth zonal flow", "[integrators]") {
+  const double order = observed_order(INTEGRATOR_RK4, 3.0, {12, 24, 48});
+  INFO("observed order " << order);
+  CHECK(std::abs(order - 4.0) < 0.3);
+}
+
+TEST_CASE("geodesic Euler converges at first order on the smooth zonal flow", "[integrators]") {
+  const double order = observed_order(INTEGRATOR_GEODESIC, 3.0, {100, 200, 400, 800});
+  INFO("observed order " << order);
+  CHECK(std::abs(order - 1.0) < 0.1);
+}
+
+TEST_CASE("the geodesic step is exact along a great circle and stays on the sphere", "[integrators]") {
+  // A rotation about the axis k moves a point of the great circle orthogonal to k along that
+  // circle at the constant speed omega: the geodesic step follows it exactly for any h.
+  const vec3 axis = normalize(vec3(0.3f, -0.5f, 0.8f));
+  const float omega = 1.7f;
+  const auto rotation = [&](vec3 w) { return omega * cross(axis, w); };
+  const vec3 start = normalize(cross(axis, vec3(1.0f, 0.0f, 0.0f)));
+  for (float h : {0.01f, 0.3f, 1.0f, 2.5f}) {
+    const int steps = 4;
+    const vec3 w = integrate_fixed(INTEGRATOR_GEODESIC, start, steps, h, rotation);
+    // Exact: Rodrigues' rotation of start by omega T about the axis (start is orthogonal to it).
+    const double angle = static_cast<double>(omega) * h * steps;
+    const dvec3 a(axis), s(start);
+    const dvec3 exact = s * std::cos(angle) + glm::cross(a, s) * std::sin(angle);
+    INFO("h = " << h);
+    CHECK(distance(dvec3(w), exact) < 1e-5);
+    CHECK(std::abs(length(w) - 1.0f) < 1e-6f);
+  }
+}
+
+TEST_CASE("the adaptive error is proportional to the tolerance on the smooth zonal flow", "[integrators]") {
+  // Bogacki-Shampine with local extrapolation and error per step: h ~ tol^(1/3), so the
+  // third-order global error ~ (T / h) h^4 ~ tol, and the work grows like tol^(-1/3).
+  const ZonalFlow flow(1.0);
+  std::vector<double> tolerances, errors, work;
+  for (float tolerance : {1e-3f, 1e-4f, 1e-5f}) {
+    double worst = 0, attempts = 0;
+    for (const vec3 s : starts()) {
+      const vec4 r = integrate_adaptive(s, 1.0f, 0.1f, 1.0f, tolerance, 100000, flow.curl);
+      REQUIRE(r.w > 0.0f);  // reached T
+      worst = std::max(worst, distance(dvec3(vec3(r)), flow.exact(s)));
+      attempts += r.w;
+    }
+    tolerances.push_back(tolerance);
+    errors.push_back(worst);
+    work.push_back(attempts);
+    INFO("tolerance " << tolerance << " error " << worst);
+    CHECK(worst < 5.0 * tolerance);
+  }
+  CHECK(std::abs(slope(tolerances, errors) - 1.0) < 0.2);
+  CHECK(std::abs(slope(tolerances, work) + 1.0 / 3.0) < 0.15);
+}
+
+TEST_CASE("beyond the stable step Euler goes wrong while the adaptive scheme sub-steps", "[integrators][stiff]") {
+  // A fast solid-body rotation: the velocity gradient has eigenvalues +-i omega, the
+  // stiffness number is h omega. At h omega = 5 the fixed-step schemes are far beyond their
+  // limits; the adaptive scheme's error estimate sees it and takes smaller steps itself.
+  const float omega = 50.0f, h = 0.1f;
+  const int steps = 10;
+  const vec3 axis(0.0f, 0.0f, 1.0f);
+  const auto rotation = [&](vec3 w) { return omega * cross(axis, w); };
+  const vec3 start = normalize(vec3(1.0f, 0.0f, 1.0f));
+  const double angle = static_cast<double>(omega) * h * steps;
+  const dvec3 exact(std::cos(angle) / std::sqrt(2.0), std::sin(angle) / std::sqrt(2.0), 1 / std::sqrt(2.0));
+  for (auto integrator : {numerics::Integrator::euler, numerics::Integrator::heun, numerics::Integrator::rk4}) {
+    INFO(numerics::integrator_name(integrator));
+    CHECK(h * omega > numerics::stability_limit(integrator));
+    const vec3 w = integrate_fixed(static_cast<int>(integrator), start, steps, h, rotation);
+    CHECK(std::abs(length(w) - 1.0f) < 1e-6f);  // projected: garbage, but on the sphere
+    CHECK(distance(dvec3(w), exact) > 0.1);
+  }
+  const vec4 adaptive = integrate_adaptive(start, h * steps, h, h * steps, 1e-5f, 100000, rotation);
+  INFO("attempted steps " << adaptive.w);
+  CHECK(adaptive.w > 10.0f * steps);
+  CHECK(distance(dvec3(vec3(adaptive)), exact) < 1e-3);
+}
+
+TEST_CASE("the adaptive scheme reports the texels that ran out of sub-steps", "[integrators]") {
+  const ZonalFlow flow(1.0);
+  const vec3 start = starts()[3];
+  const vec4 capped = integrate_adaptive(start, 1000.0f, 0.1f, 1000.0f, 1e-6f, 50, flow.curl);
+  CHECK(capped.w == -50.0f);
+  CHECK(std::abs(length(vec3(capped)) - 1.0f) < 1e-6f);
+  const vec4 done = integrate_adaptive(start, 1.0f, 0.1f, 1.0f, 1e-6f, 100000, flow.curl);
+  CHECK(done.w > 0.0f);
+}
+
+TEST_CASE("the stable limits are the stability intervals of each scheme", "[integrators]") {
+  // |R(z)| <= 1 at the limit on the real or imaginary axis, > 1 just beyond it.
+  auto euler = [](std::complex<double> z) { return 1.0 + z; };
+  auto heun = [](std::complex<double> z) { return 1.0 + z + z * z / 2.0; };
+  auto rk3 = [](std::complex<double> z) { return 1.0 + z + z * z / 2.0 + z * z * z / 6.0; };
+  auto rk4 = [](std::complex<double> z) { return 1.0 + z + z * z / 2.0 + z * z * z / 6.0 + z * z * z * z / 24.0; };
+  const double e = numerics::stability_limit(numerics::Integrator::euler);
+  CHECK(std::abs(euler({-e, 0})) <= 1.0 + 1e-12);
+  CHECK(std::abs(euler({-e - 0.01, 0})) > 1.0);
+  const double h = numerics::stability_limit(numerics::Integrator::heun);
+  CHECK(std::abs(heun({-h, 0})) <= 1.0 + 1e-12);
+  CHECK(std::abs(heun({-h - 0.01, 0})) > 1.0);
+  const double r = numerics::stability_limit(numerics::Integrator::rk4);  // the real axis binds
+  CHECK(std::abs(rk4({-r, 0})) <= 1.0 + 1e-3);
+  CHECK(std::abs(rk4({-r - 0.01, 0})) > 1.0);
+  CHECK(std::abs(rk4({0, r})) <= 1.0);
+  const double a = numerics::stability_limit(numerics::Integrator::adaptive);  // the imaginary axis binds
+  CHECK(std::abs(rk3({0, a})) <= 1.0 + 1e-3);
+  CHECK(std::abs(rk3({0, a + 0.01})) > 1.0);
+  CHECK(std::abs(rk3({-a, 0})) <= 1.0);
+}

@@ -1,0 +1,245 @@
+// nephele report: the CSV, the comparison with the default, the diagram, the notebook, and
+// the numerics options of generate and report on the command line.
+#include <catch2/catch.hpp>
+
+#include <sys/wait.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <set>
+#include <sstream>
+
+#include "numerics/work_precision.hpp"
+#include "util/json.hpp"
+
+namespace fs = std::filesystem;
+using namespace nephele;
+using numerics::CurlMode;
+using numerics::Integrator;
+
+namespace {
+
+struct Run {
+  int exit_code;
+  std::string output;  // stdout and stderr
+};
+
+Run run_command(const std::string& command) {
+  const fs::path log = fs::temp_directory_path() / ("nephele_report_" + std::to_string(std::random_device{}()) + ".log");
+  const int status = std::system((command + " > " + log.string() + " 2>&1").c_str());
+  std::ifstream in(log);
+  std::stringstream text;
+  text << in.rdbuf();
+  fs::remove(log);
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, text.str()};
+}
+
+Run run(const std::string& arguments) { return run_command(std::string(NEPHELE_EXECUTABLE) + " " + arguments); }
+
+struct TemporaryDirectory {
+  fs::path path = fs::temp_directory_path() / ("nephele_report_test_" + std::to_string(std::random_device{}()));
+  ~TemporaryDirectory() { fs::remove_all(path); }
+};
+
+std::string read_file(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+std::vector<std::string> split(const std::string& line, char separator) {
+  std::vector<std::string> fields;
+  std::stringstream stream(line);
+  std::string field;
+  while (std::getline(stream, field, separator)) fields.push_back(field);
+  return fields;
+}
+
+numerics::SweepRow row(Integrator integrator, CurlMode mode, int steps, double time_ms, double error) {
+  numerics::SweepRow r;
+  r.integrator = integrator;
+  r.curl_mode = mode;
+  r.size = 64;
+  r.steps = steps;
+  r.time_ms = time_ms;
+  r.warp_err_rms = error;
+  r.warp_err_max = 10 * error;
+  r.cover_err_rms = error / 2;
+  r.cover_err_max = error * 5;
+  return r;
+}
+
+const char* const header = "integrator,curl_mode,size,steps,time_ms,warp_err_rms,warp_err_max,cover_err_rms,cover_err_max";
+
+}  // namespace
+
+TEST_CASE("the error CSV has the documented columns and one line per run", "[report]") {
+  const std::string csv = numerics::error_csv({row(Integrator::euler, CurlMode::sampled, 50, 12.5, 0.01),
+                                               row(Integrator::adaptive, CurlMode::procedural, 17, 80.0, 1e-4)});
+  std::stringstream lines(csv);
+  std::string line;
+  std::getline(lines, line);
+  CHECK(line == header);
+  std::getline(lines, line);
+  const auto first = split(line, ',');
+  REQUIRE(first.size() == 9);
+  CHECK(first[0] == "euler");
+  CHECK(first[1] == "sampled");
+  CHECK(first[2] == "64");
+  CHECK(first[3] == "50");
+  CHECK(std::stod(first[4]) == Approx(12.5));
+  CHECK(std::stod(first[5]) == Approx(0.01));
+  std::getline(lines, line);
+  CHECK(split(line, ',')[0] == "adaptive");
+  CHECK(split(line, ',')[1] == "procedural");
+  CHECK(!std::getline(lines, line));
+}
+
+TEST_CASE("the comparison finds the fastest run at the default's error and the most accurate within its time",
+          "[report]") {
+  const std::vector<numerics::SweepRow> rows{
+      row(Integrator::euler, CurlMode::sampled, 50, 100.0, 0.010),     // the default
+      row(Integrator::euler, CurlMode::sampled, 100, 190.0, 0.006),
+      row(Integrator::heun, CurlMode::sampled, 10, 40.0, 0.012),       // cheaper, less accurate
+      row(Integrator::heun, CurlMode::sampled, 20, 60.0, 0.009),       // equal error, fastest
+      row(Integrator::rk4, CurlMode::sampled, 20, 95.0, 0.004),        // equal time, most accurate
+      row(Integrator::rk4, CurlMode::procedural, 20, 900.0, 0.001)};
+  const auto comparisons = numerics::compare_with_default(rows);
+  REQUIRE(comparisons.size() == 1);
+  const auto& c = comparisons[0];
+  REQUIRE(c.has_baseline);
+  REQUIRE(c.has_equal_error);
+  CHECK(c.equal_error.integrator == Integrator::heun);
+  CHECK(c.speedup == Approx(100.0 / 60.0));
+  REQUIRE(c.has_equal_time);
+  CHECK(c.equal_time.integrator == Integrator::rk4);
+  CHECK(c.equal_time.curl_mode == CurlMode::sampled);
+  CHECK(c.error_ratio == Approx(0.010 / 0.004));
+}
+
+TEST_CASE("the work-precision diagram draws one line per integrator curl mode and size", "[report]") {
+  const std::string svg = numerics::work_precision_svg({row(Integrator::euler, CurlMode::sampled, 10, 20.0, 0.05),
+                                                        row(Integrator::euler, CurlMode::sampled, 50, 100.0, 0.01),
+                                                        row(Integrator::rk4, CurlMode::procedural, 10, 500.0, 1e-3)},
+                                                       "test");
+  size_t lines = 0;
+  for (size_t at = svg.find("<polyline"); at != std::string::npos; at = svg.find("<polyline", at + 1)) ++lines;
+  CHECK(lines == 4);  // two series in each of the two panels
+  CHECK(svg.find("stroke-dasharray") != std::string::npos);  // the procedural series
+  CHECK(svg.rfind("</svg>") != std::string::npos);
+}
+
+TEST_CASE("report --quick writes the CSV the diagram and the summary and the notebook draws the CSV", "[report][cli]") {
+  TemporaryDirectory out;
+  const Run r = run("report --quick --out " + out.path.string());
+  INFO(r.output);
+  REQUIRE(r.exit_code == 0);
+  const std::string csv = read_file(out.path / "error_vs_runtime.csv");
+  std::stringstream lines(csv);
+  std::string line;
+  std::getline(lines, line);
+  CHECK(line == header);
+  std::set<std::string> integrators, modes;
+  int rows = 0;
+  while (std::getline(lines, line)) {
+    const auto fields = split(line, ',');
+    REQUIRE(fields.size() == 9);
+    integrators.insert(fields[0]);
+    modes.insert(fields[1]);
+    for (size_t k = 2; k < fields.size(); ++k) {
+      const double v = std::stod(fields[k]);
+      REQUIRE(std::isfinite(v));
+      REQUIRE(v >= 0.0);
+    }
+    ++rows;
+  }
+  CHECK(integrators == std::set<std::string>{"euler", "heun", "rk4", "geodesic", "adaptive"});
+  CHECK(modes == std::set<std::string>{"sampled", "procedural"});
+  CHECK(rows >= 10);
+  CHECK(read_file(out.path / "error_vs_runtime.svg").find("<polyline") != std::string::npos);
+  const std::string summary = read_file(out.path / "summary.md");
+  CHECK(summary.find("speed-up") != std::string::npos);
+  CHECK(summary.find("Best speed-up at equal error") != std::string::npos);
+  CHECK(read_file(out.path / "stability.csv").find("stiffness") != std::string::npos);
+
+  // The notebook reads that CSV and draws the same diagram, headless (Debian's
+  // jupyter-nbconvert, python3-ipykernel, python3-matplotlib; scripts/debian-packages.txt).
+  const fs::path notebook = fs::path(__FILE__).parent_path().parent_path() / "notebooks" / "error_vs_runtime.ipynb";
+  REQUIRE(fs::exists(notebook));
+  const fs::path figure = out.path / "notebook_figure.png";
+  const Run nb = run_command("NEPHELE_REPORT_DIR=" + out.path.string() + " NEPHELE_FIGURE=" + figure.string() +
+                             " jupyter nbconvert --to notebook --execute --ExecutePreprocessor.timeout=300 " +
+                             notebook.string() + " --output-dir " + out.path.string() + " --output executed.ipynb");
+  INFO(nb.output);
+  REQUIRE(nb.exit_code == 0);
+  CHECK(fs::file_size(figure) > 10000);
+  const std::string executed = read_file(out.path / "executed.ipynb");
+  CHECK(executed.find("runs from") != std::string::npos);
+}
+
+TEST_CASE("report and generate reject bad numerics options with exit code 2 and write nothing", "[report][cli]") {
+  struct Case {
+    std::string arguments, option;
+  };
+  const std::vector<Case> cases{
+      {"report --sizes 0", "--sizes"},
+      {"report --sizes 32,abc", "--sizes"},
+      {"report --steps 2.5", "--steps"},
+      {"report --tolerances 0", "--tolerances"},
+      {"report --samples 65", "--samples"},
+      {"generate --integrator rk5", "--integrator"},
+      {"generate --curl-mode exact", "--curl-mode"},
+      {"generate --tolerance 0", "--tolerance"},
+      {"generate --max-substeps 0", "--max-substeps"},
+      {"generate --noise-offset 1e10", "--noise-offset"},
+      {"generate --noise-offset far", "--noise-offset"},
+  };
+  for (const Case& c : cases) {
+    TemporaryDirectory out;
+    const Run r = run(c.arguments + " --out " + out.path.string());
+    INFO(c.arguments << ": " << r.output);
+    CHECK(r.exit_code == 2);
+    CHECK(r.output.find(c.option) != std::string::npos);
+    CHECK(!fs::exists(out.path));
+  }
+  const Run help = run("generate --help");
+  CHECK(help.output.find("--integrator") != std::string::npos);
+  CHECK(help.output.find("euler, heun, rk4, geodesic or adaptive") != std::string::npos);
+}
+
+TEST_CASE("generate warns about a stiff warp and records it in cover.json while adaptive sub-steps", "[report][cli]") {
+  const std::string stiff = "--size 32 --curl-frequency 64 --curl-octaves 1 --curl-strength 0.1 --iterations 6 --step 0.05";
+  {
+    TemporaryDirectory out;
+    const Run r = run("generate " + stiff + " --out " + out.path.string());
+    INFO(r.output);
+    REQUIRE(r.exit_code == 0);
+    CHECK(r.output.find("warning") != std::string::npos);
+    CHECK(r.output.find("stiffness") != std::string::npos);
+    const json::Value sidecar = json::parse(read_file(out.path / "cover.json"));
+    CHECK(sidecar.at("parameters").at("integrator").as_string() == "euler");
+    const json::Value& numerics = sidecar.at("result").at("numerics");
+    CHECK(numerics.at("stiffness").at("stiffness_number").as_number() >
+          numerics.at("stiffness").at("stable_limit").as_number());
+    CHECK(numerics.at("warnings").as_array().size() == 1);
+    CHECK(numerics.at("folding").at("folded_fraction").as_number() >= 0.0);
+  }
+  {
+    TemporaryDirectory out;
+    const Run r = run("generate " + stiff + " --integrator adaptive --tolerance 1e-4 --out " + out.path.string());
+    INFO(r.output);
+    REQUIRE(r.exit_code == 0);
+    CHECK(r.output.find("warning") == std::string::npos);
+    const json::Value sidecar = json::parse(read_file(out.path / "cover.json"));
+    CHECK(sidecar.at("parameters").at("integrator").as_string() == "adaptive");
+    CHECK(sidecar.at("parameters").at("tolerance").as_number() == Approx(1e-4));
+    const json::Value& numerics = sidecar.at("result").at("numerics");
+    CHECK(numerics.at("substeps").at("mean").as_number() > 6.0);
+    CHECK(numerics.at("substeps").at("capped_texels").as_number() == 0.0);
+    CHECK(numerics.at("warnings").as_array().empty());
+  }
+}
