@@ -206,6 +206,8 @@ TEST_CASE("the row walk computes the point functions' values", "[noise]") {
       spec_of(72, 8, 8, NoiseType::inverted_worley, 9, 3),
       spec_of(16, 16, 16, NoiseType::perlin, 2, 4),
       spec_of(20, 10, 5, NoiseType::perlin, 4, 1),
+      spec_of(100, 20, 20, NoiseType::perlin, 5, 1),  // cells of 20 texels: perlin_row_wide, a partial segment
+      spec_of(128, 16, 16, NoiseType::perlin, 8, 2),  // the finishing octave walked wide
       spec_of(16, 8, 8, NoiseType::perlin_worley, 2, 3),
       spec_of(12, 12, 12, NoiseType::worley, 12, 1),  // one texel per cell
   };
@@ -316,4 +318,19 @@ TEST_CASE("texture specifications that cannot tile are refused with the option n
   CHECK_THAT(message(none), Catch::Contains("--channels"));
   CHECK_THROWS_AS(noise::parse_type("simplex"), noise::SpecError);
   CHECK_THROWS_AS(noise::preset("cumulus", 1), noise::SpecError);
+}
+
+TEST_CASE("texels_below finds the first texel of every cell with the texels' own rounding", "[noise]") {
+  for (int size : {7, 12, 30, 64, 100, 128, 333, 2048})
+    for (int cells : {1, 3, 7, 10, 16, 29, 64}) {
+      if (cells > size) continue;
+      const float frequency = float(cells) / float(size);
+      int expected = 0;
+      for (int c = 0; c <= cells; ++c) {
+        // Brute force: the first texel whose centre lies in cell c or beyond.
+        while (expected < size && std::floor((float(expected) + 0.5f) * frequency) < float(c)) ++expected;
+        INFO("size " << size << " cells " << cells << " cell " << c);
+        REQUIRE(texels_below(c, frequency) == expected);
+      }
+    }
 }

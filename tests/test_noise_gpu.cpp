@@ -106,7 +106,9 @@ TEST_CASE("the GPU texture generator agrees with its CPU twin for every channel 
       spec_of(16, 16, 16, NoiseType::worley, 4, 1),
       spec_of(72, 8, 8, NoiseType::inverted_worley, 9, 3),  // two row segments
       spec_of(16, 16, 8, NoiseType::perlin, 2, 4),
-      spec_of(20, 10, 5, NoiseType::perlin, 4, 1),           // rows not a multiple of 8
+      spec_of(20, 10, 5, NoiseType::perlin, 4, 1),
+      spec_of(100, 20, 20, NoiseType::perlin, 5, 1),  // cells of 20 texels: perlin_row_wide, a partial segment
+      spec_of(128, 16, 16, NoiseType::perlin, 8, 2),  // the finishing octave walked wide           // rows not a multiple of 8
       spec_of(16, 8, 8, NoiseType::perlin_worley, 2, 3),
       spec_of(12, 12, 12, NoiseType::worley, 6, 2),          // cells of one texel at octave 2
   };
@@ -130,7 +132,8 @@ TEST_CASE("textures split into slabs equal textures made in one dispatch", "[gpu
   noise::TextureSpec spec = spec_of(16, 16, 12, noise::NoiseType::perlin_worley, 4, 2);
   spec.channels.push_back(spec_of(16, 16, 12, noise::NoiseType::worley, 8, 1).channels[0]);
   noise::TextureGenerator whole;
-  noise::TextureGenerator slices(16 * 16 * 4 * 5);  // five slices per dispatch
+  // Five slices per dispatch: rows are padded to a whole segment of floats.
+  noise::TextureGenerator slices(static_cast<size_t>(NOISE_SEGMENT) * 16 * sizeof(float) * 5);
   const noise::Volume a = whole.generate(spec);
   const noise::Volume b = slices.generate(spec);
   CHECK(whole.timings().dispatches == 2);

@@ -20,7 +20,8 @@
 // the last octave puts each texel's value. In GLSL the sums are a private array of the
 // invocation (passed as an inout parameter, a large array is copied at every call: Mesa 22 took
 // seconds to compile that) and the includer defines NOISE_OUT(x, value) to store texel x of the
-// row; in C++ both are arrays of the caller.
+// row, and NOISE_OUT8(x0, n, lo, hi) for texels x0 .. x0 + 7 (n of them in the row, the rest
+// in its padding); in C++ both are arrays of the caller.
 const int NOISE_SUMS = 2 * NOISE_SEGMENT;
 #ifdef __cplusplus
 struct NoiseRowTarget {
@@ -31,6 +32,10 @@ struct NoiseRowTarget {
 #define NOISE_ROW_ARG , target
 #define NOISE_SUM(i) target.sums[i]
 #define NOISE_OUT(x, value) target.out[x] = (value)
+void noise_out8(float* out, int x0, int n, vec4 lo, vec4 hi) {
+  for (int j = 0; j < n; ++j) out[x0 + j] = j < 4 ? lo[j] : hi[j - 4];
+}
+#define NOISE_OUT8(x0, n, lo, hi) noise_out8(target.out, x0, n, lo, hi)
 #else
 #define NOISE_ROW_PARAM
 #define NOISE_ROW_ARG
@@ -75,9 +80,12 @@ void noise_take(int t, int i, int sums, float term, bool accumulate, bool emit,
 
 // The number of texels t >= 0 whose centre (t + 1/2) frequency lies below the integer c, i.e.
 // the first texel of cell c, with the same float rounding as the texels' own coordinates.
+// The estimate errs by float rounding only (far below a texel for sizes up to 2^16), so one
+// step either way settles it; no loop, which a SIMD driver would run at least twice.
 int texels_below(int c, float frequency) {
-  int t = max(int(float(c) / frequency - 0.5f) - 1, 0);  // a little low; then step up
-  while ((float(t) + 0.5f) * frequency < float(c)) ++t;
+  int t = max(int(ceil(float(c) / frequency - 0.5f)), 0);
+  if ((float(t) + 0.5f) * frequency < float(c)) t += 1;
+  if (t > 0 && (float(t - 1) + 0.5f) * frequency >= float(c)) t -= 1;
   return t;
 }
 
@@ -182,6 +190,79 @@ void perlin_row(int t0, int count, int y, int z, float frequency, ivec3 period, 
   } while (cx <= last);
 }
 
+// Whether perlin_row_wide may walk an octave: 8 texels then span at most two cells. Exactly 8
+// texels per cell is exact in float; otherwise the 1% margin covers the rounding of texel
+// positions far beyond any texture size.
+bool perlin_row_is_wide(float frequency) {
+  return frequency == 0.125f || frequency <= 0.124f;
+}
+
+// perlin_row for an octave that finishes a Perlin channel and whose cells are at least 8
+// texels wide: eight texels per pass, unrolled, each taking the faces of its own cell (the
+// chunk's first cell or the next one), and handed to NOISE_OUT8 from registers. A SIMD driver
+// pays more for a loop pass and a private-array store per texel than for the noise itself.
+// The faces slide once per chunk (a SIMD driver computes the next face every chunk). t0 must
+// be a multiple of NOISE_SEGMENT and the row padded to one.
+void perlin_row_wide(int t0, int count, int y, int z, float frequency, ivec3 period, uvec3 key,
+                     float weight, int sums, bool accumulate, IN(NoiseFinish) finish NOISE_ROW_PARAM) {
+  float py = (float(y) + 0.5f) * frequency;
+  float pz = (float(z) + 0.5f) * frequency;
+  float by = floor(py);
+  float bz = floor(pz);
+  float fy = py - by;
+  float fz = pz - bz;
+  int cy = wrap_axis(int(by), period.y);
+  int cz = wrap_axis(int(bz), period.z);
+  ivec2 ys = ivec2(cy, wrap_axis(cy + 1, period.y));
+  ivec2 zs = ivec2(cz, wrap_axis(cz + 1, period.z));
+  vec4 w = perlin_yz_weights(fy, fz);
+  int cx = int(floor((float(t0) + 0.5f) * frequency));
+  vec2 face0 = perlin_face(wrap_axis(cx, period.x), ys, zs, fy, fz, w, key);
+  vec2 face1 = perlin_face(wrap_axis(cx + 1, period.x), ys, zs, fy, fz, w, key);
+  vec2 face2 = perlin_face(wrap_axis(cx + 2, period.x), ys, zs, fy, fz, w, key);
+  // The whole segment, unrolled (a constant trip count): no loop to run, constant indices.
+  // Texels past count fill the row's padding.
+  for (int chunk = 0; chunk < NOISE_SEGMENT; chunk += 8) {
+    int t = t0 + chunk;
+    float v[8];
+    for (int j = 0; j < 8; ++j) {
+      float px = (float(t + j) + 0.5f) * frequency;
+      float cell = floor(px);
+      bool next = cell > float(cx);
+      float term = weight * perlin_along_row(next ? face1 : face0, next ? face2 : face1, px - cell);
+      v[j] = finish_texel(finish, accumulate ? NOISE_SUM(sums + chunk + j) + term : term, 0.0f);
+    }
+    NOISE_OUT8(t, clamp(count - chunk, 0, 8), vec4(v[0], v[1], v[2], v[3]), vec4(v[4], v[5], v[6], v[7]));
+    bool slide = floor((float(t + 8) + 0.5f) * frequency) > float(cx);
+    vec2 face3 = perlin_face(wrap_axis(cx + 3, period.x), ys, zs, fy, fz, w, key);
+    if (slide) {
+      face0 = face1;
+      face1 = face2;
+      face2 = face3;
+      cx += 1;
+    }
+  }
+}
+
+// The finishing octave of a Perlin channel: perlin_row_wide where it applies. The choice is a
+// define in GLSL (NOISE_PERLIN_WIDE, set by the host by the same rule), as a SIMD driver would
+// run both.
+void perlin_row_finish(int t0, int count, int y, int z, float frequency, ivec3 period, uvec3 key,
+                       float weight, int sums, bool accumulate, IN(NoiseFinish) finish NOISE_ROW_PARAM) {
+#ifdef __cplusplus
+  bool wide = perlin_row_is_wide(frequency);
+#elif defined(NOISE_PERLIN_WIDE)
+  const bool wide = true;
+#else
+  const bool wide = false;
+#endif
+  if (wide) {
+    perlin_row_wide(t0, count, y, z, frequency, period, key, weight, sums, accumulate, finish NOISE_ROW_ARG);
+  } else {
+    perlin_row(t0, count, y, z, frequency, period, key, weight, sums, accumulate, true, finish NOISE_ROW_ARG);
+  }
+}
+
 // The octaves of worley_fbm_mean over a row segment: octave 0 stores its terms into the sums
 // (the point functions' 0 + 1 F1 is the same float), later octaves add theirs, and with emit
 // the last octave finishes each texel instead of storing it. Three calls with constant flags
@@ -220,8 +301,13 @@ void perlin_fbm_row(int t0, int count, int y, int z, IN(FbmParams) fbm, int sums
                     IN(NoiseFinish) finish NOISE_ROW_PARAM) {
   int last = fbm.octaves - 1;
   if (last == 0) {
-    perlin_row(t0, count, y, z, fbm.frequency, fbm.period, noise_key(fbm.seed, 0u), 1.0f, sums,
-               false, emit, finish NOISE_ROW_ARG);
+    if (emit) {
+      perlin_row_finish(t0, count, y, z, fbm.frequency, fbm.period, noise_key(fbm.seed, 0u), 1.0f, sums,
+                        false, finish NOISE_ROW_ARG);
+    } else {
+      perlin_row(t0, count, y, z, fbm.frequency, fbm.period, noise_key(fbm.seed, 0u), 1.0f, sums,
+                 false, false, finish NOISE_ROW_ARG);
+    }
   } else {
     perlin_row(t0, count, y, z, fbm.frequency, fbm.period, noise_key(fbm.seed, 0u), 1.0f, sums,
                false, false, finish NOISE_ROW_ARG);
@@ -238,9 +324,23 @@ void perlin_fbm_row(int t0, int count, int y, int z, IN(FbmParams) fbm, int sums
         ++octave;
       } while (octave < last);
     }
-    perlin_row(t0, count, y, z, frequency, period, noise_key(fbm.seed, uint(octave)), amplitude,
-               sums, true, emit, finish NOISE_ROW_ARG);
+    if (emit) {
+      perlin_row_finish(t0, count, y, z, frequency, period, noise_key(fbm.seed, uint(octave)), amplitude,
+                        sums, true, finish NOISE_ROW_ARG);
+    } else {
+      perlin_row(t0, count, y, z, frequency, period, noise_key(fbm.seed, uint(octave)), amplitude,
+                 sums, true, false, finish NOISE_ROW_ARG);
+    }
   }
 }
+
+#ifdef __cplusplus
+// The macros above were expanded where they were used; keep them out of other C++ code.
+#undef NOISE_ROW_PARAM
+#undef NOISE_ROW_ARG
+#undef NOISE_SUM
+#undef NOISE_OUT
+#undef NOISE_OUT8
+#endif
 
 #endif

@@ -41,6 +41,14 @@ void set_channel(const gl::ComputeProgram& program, const glsl::NoiseChannel& ch
   set_active(program, "u_stride", stride);
 }
 
+// The frequency of the last octave, stepped as the shaders step it.
+float last_frequency(const glsl::FbmParams& fbm) {
+  float amplitude = 1.0f, frequency = fbm.frequency;
+  glsl::ivec3 period = fbm.period;
+  for (int k = 1; k < fbm.octaves; ++k) glsl::next_octave(fbm, amplitude, frequency, period);
+  return frequency;
+}
+
 using Clock = std::chrono::steady_clock;
 double ms_since(Clock::time_point start) {
   return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
@@ -79,11 +87,18 @@ gl::ComputeProgram& TextureGenerator::program(const std::string& path, const Def
 }
 
 Volume TextureGenerator::generate(const TextureSpec& spec) {
+  Volume out;
+  generate(spec, out);
+  return out;
+}
+
+void TextureGenerator::generate(const TextureSpec& spec, Volume& out) {
   validate(spec);
   timings_ = {};
   const int width = spec.width, height = spec.height, depth = spec.depth;
   const int channels = static_cast<int>(spec.channels.size());
-  const int stride = (width + 7) / 8 * 8;  // rows are stored in chunks of 8 floats
+  // Rows are stored a whole segment at a time (noise_rows.comp).
+  const int stride = (width + glsl::NOISE_SEGMENT - 1) / glsl::NOISE_SEGMENT * glsl::NOISE_SEGMENT;
   const size_t slice_bytes = static_cast<size_t>(stride) * height * sizeof(float);
   GLint64 max_block = 0;
   glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &max_block);
@@ -97,7 +112,10 @@ Volume TextureGenerator::generate(const TextureSpec& spec) {
 
   const GLuint values = buffer(values_, slice_bytes * slices);
   const GLuint patches = buffer(patches_, 16 + 16 * static_cast<size_t>(capacity));
-  Volume out{width, height, depth, channels, {}};
+  out.width = width;
+  out.height = height;
+  out.depth = depth;
+  out.channels = channels;
   out.values.resize(static_cast<size_t>(width) * height * depth * channels);
 
   for (int c = 0; c < channels; ++c) {
@@ -105,9 +123,11 @@ Volume TextureGenerator::generate(const TextureSpec& spec) {
     // Variants per type and octave count (noise_rows.comp): a SIMD driver runs both sides of
     // every branch, so the shader must know what it need not do.
     const bool has_worley = params.type != glsl::NOISE_PERLIN;
-    const Defines defines{{"NOISE_TYPE", std::to_string(params.type)},
-                          {"NOISE_OCTAVES", std::to_string(params.fbm.octaves)},
-                          {"NOISE_WORLEY_OCTAVES", std::to_string(params.worley.octaves)}};
+    Defines defines{{"NOISE_TYPE", std::to_string(params.type)},
+                    {"NOISE_OCTAVES", std::to_string(params.fbm.octaves)},
+                    {"NOISE_WORLEY_OCTAVES", std::to_string(params.worley.octaves)}};
+    if (params.type == glsl::NOISE_PERLIN && glsl::perlin_row_is_wide(last_frequency(params.fbm)))
+      defines.emplace_back("NOISE_PERLIN_WIDE", "1");
     gl::ComputeProgram& rows = program("noise/noise_rows.comp", defines);
     set_channel(rows, params, spec, stride);
     gl::ComputeProgram* patch =
@@ -159,7 +179,6 @@ Volume TextureGenerator::generate(const TextureSpec& spec) {
     }
   }
   if (glGetError() != GL_NO_ERROR) throw std::runtime_error("OpenGL error while generating noise");
-  return out;
 }
 
 Volume generate_cpu(const TextureSpec& spec) {

@@ -39,6 +39,8 @@ class TextureGenerator {
 
   // Validates the spec (SpecError) and computes every channel.
   Volume generate(const TextureSpec& spec);
+  // The same into `out`, reusing its storage (as FastNoise fills a caller's array).
+  void generate(const TextureSpec& spec, Volume& out);
   const GeneratorTimings& timings() const { return timings_; }
 
  private:
