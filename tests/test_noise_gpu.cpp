@@ -171,8 +171,8 @@ TEST_CASE("noise options refuse bad values naming the option and its range", "[c
              Catch::Contains("--cells") && Catch::Contains("multiple of 8"));
   CHECK_THAT(message({"--type", "simplex", "--out", out}), Catch::Contains("--type") && Catch::Contains("perlin-worley"));
   CHECK_THAT(message({"--channels", "rgbx", "--out", out}), Catch::Contains("--channels"));
-  CHECK_THAT(message({"--size", "16", "--channels", "rgba", "--cells", "4", "--out", out}),
-             Catch::Contains("--cells") && Catch::Contains("channel a"));
+  CHECK_THAT(message({"--size", "16", "--channels", "rgba", "--a", "cells=32", "--out", out}),
+             Catch::Contains("cells") && Catch::Contains("channel a") && Catch::Contains("1 to 16"));
   CHECK_THAT(message({"--g", "octaves=3", "--out", out}), Catch::Contains("--g"));
   CHECK_THAT(message({"--channels", "rg", "--g", "type=perlin,cells=fast", "--out", out}),
              Catch::Contains("--g cells"));
@@ -190,6 +190,12 @@ TEST_CASE("noise options refuse bad values naming the option and its range", "[c
   CHECK(rgba.spec.channels[2].type == noise::NoiseType::worley);
   CHECK(rgba.spec.channels[2].octaves == 2);
   CHECK(rgba.spec.seed == 3);
+  // The default doubling per channel stops at one cell per texel: 4, 8, 16, 16 on 16 texels.
+  const cli::NoiseRequest small = cli::parse_noise_request({"--size", "16", "--channels", "rgba", "--out", out});
+  REQUIRE(small.spec.channels.size() == 4);
+  CHECK(small.spec.channels[1].cells == 8);
+  CHECK(small.spec.channels[2].cells == 16);
+  CHECK(small.spec.channels[3].cells == 16);
 }
 
 TEST_CASE("sizes beyond the driver's 3D texture limit give exit code 2 and write nothing", "[cli][noise]") {

@@ -90,7 +90,7 @@ NoiseRequest parse_noise_request(const std::vector<std::string>& arguments, bool
                   "Generates a tileable 3D noise texture: Worley (F1), Perlin and Perlin-Worley, each with fBm, in up\n"
                   "to four channels. --out NAME.png or NAME.exr writes the slice atlas (depth slices of width x height\n"
                   "side by side), NAME.raw the float32 volume; NAME.json describes it. Values lie in [0, 1].\n"
-                  "Channel k (r, g, b, a) has cells * 2^k cells unless --r, --g, --b or --a say otherwise.");
+                  "Channel k (r, g, b, a) has cells * 2^k cells (at most one per texel) unless --r, --g, --b or --a say otherwise.");
   options.add_string("--preset", &preset, "shape (128^3 RGBA Perlin-Worley + Worley fBm) or erosion (32^3 RGB Worley fBm)");
   options.add_string("--type", &type, "worley, inverted-worley, perlin or perlin-worley");
   options.add_int("--width", &width, 1, 1 << 16, "texels along x");
@@ -161,8 +161,9 @@ NoiseRequest parse_noise_request(const std::vector<std::string>& arguments, bool
           continue;
         }
         noise::ChannelSpec c = base;  // one detail level per channel
-        c.cells = base.cells << k;
-        c.worley_cells = base.worley_cells << k;
+        // Doubling stops at one cell per texel, so that every size works with the defaults.
+        for (int j = 0; j < k && 2 * c.cells <= width; ++j) c.cells *= 2;
+        for (int j = 0; j < k && 2 * c.worley_cells <= width; ++j) c.worley_cells *= 2;
         if (!channel_text[k].empty()) c = parse_channel(letters[k], channel_text[k], c);
         request.spec.channels.push_back(c);
       }
