@@ -181,6 +181,62 @@ TEST_CASE("report --quick writes the CSV the diagram and the summary and the not
   CHECK(executed.find("runs from") != std::string::npos);
 }
 
+TEST_CASE("report --quick writes the render error CSV and diagram and a render section in the summary",
+          "[report][render][cli]") {
+  // The warp part made as small as it goes; the render part is the quick one (view 8, 16, 48 x
+  // light 2, 6 against 96 x 12 steps), at a frame size of its own.
+  const std::string small_warp = "--quick --sizes 8 --steps 10 --tolerances 1e-2 --samples 1";
+  TemporaryDirectory out;
+  const Run r = run("report " + small_warp + " --render-size 24x12 --out " + out.path.string());
+  INFO(r.output);
+  REQUIRE(r.exit_code == 0);
+  CHECK(r.output.find("render sweep") != std::string::npos);
+  std::stringstream lines(read_file(out.path / "render_error.csv"));
+  std::string line;
+  std::getline(lines, line);
+  CHECK(line == "view_steps,light_steps,clouds_ms,rel_rms,rel_max,reference_view_steps,reference_light_steps,width,height");
+  std::set<std::pair<int, int>> steps;
+  int rows = 0;
+  while (std::getline(lines, line)) {
+    const auto fields = split(line, ',');
+    REQUIRE(fields.size() == 9);
+    steps.insert({std::stoi(fields[0]), std::stoi(fields[1])});
+    for (size_t k = 2; k < 5; ++k) {
+      const double v = std::stod(fields[k]);
+      CHECK(std::isfinite(v));
+      CHECK(v >= 0.0);
+    }
+    CHECK(std::stod(fields[3]) > 0.0);  // none of the quick runs is the reference's 96 x 12
+    CHECK(fields[5] == "96");
+    CHECK(fields[6] == "12");
+    CHECK(fields[7] == "24");
+    CHECK(fields[8] == "12");
+    ++rows;
+  }
+  CHECK(rows == 6);
+  CHECK(steps == std::set<std::pair<int, int>>{{8, 2}, {8, 6}, {16, 2}, {16, 6}, {48, 2}, {48, 6}});
+  const std::string svg = read_file(out.path / "render_error_vs_runtime.svg");
+  size_t polylines = 0;
+  for (size_t at = svg.find("<polyline"); at != std::string::npos; at = svg.find("<polyline", at + 1)) ++polylines;
+  CHECK(polylines == 2);
+  const std::string summary = read_file(out.path / "summary.md");
+  CHECK(summary.find("Best speed-up at equal error") != std::string::npos);  // the warp part is still there
+  CHECK(summary.find("## Render: image error against run time") != std::string::npos);
+  CHECK(summary.find("Defaults (of `nephele render` and scene files): 48 view x 6 light steps") != std::string::npos);
+  CHECK(summary.find("Cheapest within 1.5x the default's error") != std::string::npos);
+  CHECK(summary.find("Most accurate within the default's time") != std::string::npos);
+
+  // --no-render writes neither render file.
+  TemporaryDirectory skipped;
+  const Run no_render = run("report " + small_warp + " --no-render --out " + skipped.path.string());
+  INFO(no_render.output);
+  REQUIRE(no_render.exit_code == 0);
+  CHECK(fs::exists(skipped.path / "summary.md"));
+  CHECK_FALSE(fs::exists(skipped.path / "render_error.csv"));
+  CHECK_FALSE(fs::exists(skipped.path / "render_error_vs_runtime.svg"));
+  CHECK(read_file(skipped.path / "summary.md").find("Not run (--no-render)") != std::string::npos);
+}
+
 TEST_CASE("report and generate reject bad numerics options with exit code 2 and write nothing", "[report][cli]") {
   struct Case {
     std::string arguments, option;
@@ -191,6 +247,8 @@ TEST_CASE("report and generate reject bad numerics options with exit code 2 and 
       {"report --steps 2.5", "--steps"},
       {"report --tolerances 0", "--tolerances"},
       {"report --samples 65", "--samples"},
+      {"report --render-size 0x90", "--render-size"},
+      {"report --render-size wide", "--render-size"},
       {"generate --integrator rk5", "--integrator"},
       {"generate --curl-mode exact", "--curl-mode"},
       {"generate --tolerance 0", "--tolerance"},

@@ -8,6 +8,7 @@
 #include "cli/options.hpp"
 #include "gl/egl_context.hpp"
 #include "render/render_error.hpp"
+#include "render/render_report.hpp"
 #include "render/scene_renderer.hpp"
 
 namespace nephele::cli {
@@ -19,7 +20,8 @@ int bench_render(const std::vector<std::string>& arguments) {
   bool no_sweep = false;
   Options options("bench render",
                   "Prints seconds per frame of the default scene, then the image error against the\n"
-                  "numbers of view and light steps (relative RMS and max against 384 x 24 steps).");
+                  "numbers of view and light steps (relative RMS and max against 384 x 24 steps, the\n"
+                  "sweep that `nephele report` runs, there at 160x90).");
   options.add_string("--size", &size, "frame size WIDTHxHEIGHT");
   options.add_string("--sweep-size", &sweep_size, "frame size of the error sweep");
   options.add_int("--repeat", &repeat, 1, 20, "frames timed; the median is printed");
@@ -54,13 +56,16 @@ int bench_render(const std::vector<std::string>& arguments) {
   std::printf("seconds per frame (whole scene, median of %d): %.2f\n", repeat, frames[frames.size() / 2]);
   if (no_sweep) return exit_ok;
 
-  regional::parse_size(sweep_size, scene.width, scene.height, "--sweep-size");
-  std::printf("\nimage error against steps at %dx%d (reference 384 view x 24 light steps)\n", scene.width, scene.height);
-  std::printf("%6s %6s %10s %12s %12s\n", "view", "light", "clouds_ms", "rel_rms", "rel_max");
-  const auto rows = render::render_error_sweep(scene, {8, 16, 32, 48, 96}, {2, 4, 6, 12}, 384, 24);
-  for (const auto& row : rows)
-    std::printf("%6d %6d %10.1f %12.5f %12.5f\n", row.view_steps, row.light_steps, row.time_ms, row.rms_error,
-                row.max_error);
+  render::RenderSweepOptions sweep = render::RenderSweepOptions::full();
+  regional::parse_size(sweep_size, sweep.width, sweep.height, "--sweep-size");
+  std::printf("\nimage error against steps at %dx%d (reference %d view x %d light steps)\n", sweep.width, sweep.height,
+              sweep.reference_view, sweep.reference_light);
+  std::printf("%s", render::render_error_table_header().c_str());
+  std::fflush(stdout);
+  render::render_error_sweep(scene, sweep, [](const render::RenderErrorRow& row) {
+    std::printf("%s", render::render_error_table_line(row).c_str());
+    std::fflush(stdout);
+  });
   return exit_ok;
 }
 

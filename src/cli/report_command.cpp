@@ -1,4 +1,5 @@
-// nephele report: error of each warp approximation against its run time (docs/numerics.md).
+// nephele report: error of each warp approximation against its run time (docs/numerics.md), and
+// the image error of the ray marcher against the number of view and light steps (docs/rendering.md).
 #include <filesystem>
 #include <iostream>
 #include <sstream>
@@ -9,6 +10,9 @@
 #include "export/atomic_output.hpp"
 #include "gl/egl_context.hpp"
 #include "numerics/work_precision.hpp"
+#include "regional/scene.hpp"
+#include "render/render_error.hpp"
+#include "render/render_report.hpp"
 
 namespace nephele::cli {
 namespace {
@@ -34,22 +38,27 @@ std::vector<T> parse_list(const std::string& option, const std::string& text, do
 
 int run_report(const std::vector<std::string>& arguments) {
   cover::CoverParameters parameters;
-  std::string out = "report", sizes, steps, tolerances;
-  bool quick = false;
+  std::string out = "report", sizes, steps, tolerances, render_size;
+  bool quick = false, no_render = false;
   int samples = 0, repeat = 0;  // 0: the mode's default
   float budget_ms = 0.0f;
   Options options("report",
                   "Sweeps integrator x steps x curl mode x size, times the curl and warp passes and compares\n"
                   "the warped points with a reference solution at sample points. Writes error_vs_runtime.csv,\n"
                   "error_vs_runtime.svg (work-precision diagram), stability.csv and summary.md into --out.\n"
-                  "The flow time T = iterations * step stays fixed; fixed-step schemes use h = T / steps.");
+                  "The flow time T = iterations * step stays fixed; fixed-step schemes use h = T / steps.\n"
+                  "Then renders the default scene with view steps 8..96 x light steps 2..12 against 384 x 24\n"
+                  "(quick: 8,16,48 x 2,6 against 96 x 12) into render_error.csv, render_error_vs_runtime.svg\n"
+                  "and a section of summary.md.");
   options.add_string("--out", &out, "output directory (created if missing)");
-  options.add_flag("--quick", &quick, "a short sweep (size 32, 10 and 50 steps, 96 sample points) for CI");
+  options.add_flag("--quick", &quick, "a short sweep for CI (size 32, 10 and 50 steps, 96 points; render 32x18)");
   options.add_string("--sizes", &sizes, "comma-separated cube face sizes (default 128,256,512; quick 32)");
   options.add_string("--steps", &steps, "comma-separated step counts of the fixed-step schemes (default 5,10,25,50,100,200)");
   options.add_string("--tolerances", &tolerances, "comma-separated tolerances of the adaptive scheme (default 1e-2..1e-6)");
   options.add_int("--samples", &samples, 0, 64, "sample grid m: 6 m^2 sample points (0: 20, quick 4)");
   options.add_int("--repeat", &repeat, 0, 20, "timed runs per configuration, the fastest counts (0: 3, quick 1)");
+  options.add_string("--render-size", &render_size, "frame size WIDTHxHEIGHT of the render sweep (default 160x90; quick 32x18)");
+  options.add_flag("--no-render", &no_render, "skip the render sweep");
   options.add_float("--budget-ms", &budget_ms, 0.0, 1e7, "skip runs predicted to take longer (0: 20000, quick 2000)");
   add_cover_options(options, parameters, false);
   WarpOptions warp_options;
@@ -68,6 +77,18 @@ int run_report(const std::vector<std::string>& arguments) {
   if (samples > 0) sweep.sample_grid = samples;
   if (repeat > 0) sweep.repeat = repeat;
   if (budget_ms > 0) sweep.budget_ms = budget_ms;
+  render::RenderSweepOptions render_sweep =
+      quick ? render::RenderSweepOptions::quick() : render::RenderSweepOptions::full();
+  const regional::Scene render_scene;  // the built-in default: Gurten, global cover as the weather
+  try {
+    if (!render_size.empty()) regional::parse_size(render_size, render_sweep.width, render_sweep.height, "--render-size");
+    regional::Scene check = render_scene;
+    check.width = render_sweep.width;
+    check.height = render_sweep.height;
+    regional::validate_scene(check, "--render-size");
+  } catch (const regional::SceneError& e) {
+    throw UsageError(e.what());
+  }
   const std::filesystem::path directory(out);
   if (std::filesystem::exists(directory) && !std::filesystem::is_directory(directory))
     throw UsageError("--out: '" + out + "' exists and is not a directory");
@@ -83,6 +104,19 @@ int run_report(const std::vector<std::string>& arguments) {
       numerics::run_sweep(sweep, [](const std::string& line) { std::cout << line << "\n" << std::flush; });
   result.device = context.info().renderer + " (" + context.info().version + ")";
 
+  std::vector<render::RenderErrorRow> render_rows;
+  if (!no_render) {
+    std::cout << "render sweep: default scene at " << render_sweep.width << "x" << render_sweep.height
+              << ", reference " << render_sweep.reference_view << " view x " << render_sweep.reference_light
+              << " light steps\n"
+              << render::render_error_table_header() << std::flush;
+    render_rows = render::render_error_sweep(render_scene, render_sweep, [](const render::RenderErrorRow& row) {
+      std::cout << render::render_error_table_line(row) << std::flush;
+    });
+  }
+  const render::RenderStepChoice render_choice =
+      render::choose_render_steps(render_rows, render_scene.view_steps, render_scene.light_steps);
+
   output::OutputSet outputs(directory);
   output::write_text_file(outputs.temporary_for("error_vs_runtime.csv"), numerics::error_csv(result.rows));
   output::write_text_file(outputs.temporary_for("stability.csv"), numerics::stability_csv(result.rows));
@@ -91,7 +125,23 @@ int run_report(const std::vector<std::string>& arguments) {
                                                        result.cpu_device
                                                            ? "CPU time of the curl + warp passes, all threads (ms)"
                                                            : "time of the curl + warp passes (ms)"));
-  const std::string summary = numerics::summary_markdown(result, sweep);
+  std::string summary = numerics::summary_markdown(result, sweep);
+  if (no_render) {
+    summary += "\n## Render: image error against run time\n\nNot run (--no-render).\n";
+  } else {
+    output::write_text_file(outputs.temporary_for("render_error.csv"),
+                            render::render_error_csv(render_rows, render_sweep));
+    output::write_text_file(
+        outputs.temporary_for("render_error_vs_runtime.svg"),
+        render::render_error_svg(render_rows,
+                                 "Image error against run time, default scene, " + std::to_string(render_sweep.width) +
+                                     " x " + std::to_string(render_sweep.height) + " pixels",
+                                 "reference " + std::to_string(render_sweep.reference_view) + " view x " +
+                                     std::to_string(render_sweep.reference_light) + " light steps; " + result.device,
+                                 render_scene.view_steps, render_scene.light_steps));
+    summary += "\n" + render::render_summary_markdown(render_rows, render_sweep, render_choice,
+                                                      render_scene.view_steps, render_scene.light_steps);
+  }
   output::write_text_file(outputs.temporary_for("summary.md"), summary);
   outputs.commit();
   for (const auto& c : result.comparisons)
@@ -101,8 +151,16 @@ int run_report(const std::vector<std::string>& arguments) {
                 << "; at its time (" << c.baseline.time_ms << " ms) "
                 << (c.has_equal_time ? std::to_string(c.error_ratio) + "x less error" : std::string("no run"))
                 << "\n";
+  if (render_choice.has_default)
+    std::cout << "render: defaults " << render_choice.default_row.view_steps << " x "
+              << render_choice.default_row.light_steps << ": rel rms " << render_choice.default_row.rms_error << "; within "
+              << render_choice.factor << "x its error the cheapest is " << render_choice.cheapest.view_steps << " x "
+              << render_choice.cheapest.light_steps << " (" << render_choice.cheapest.time_ms
+              << " ms); within its time the most accurate is " << render_choice.most_accurate.view_steps << " x "
+              << render_choice.most_accurate.light_steps << " (rel rms " << render_choice.most_accurate.rms_error
+              << ")\n";
   std::cout << "wrote " << (directory / "error_vs_runtime.csv").string() << ", error_vs_runtime.svg, stability.csv, "
-            << "summary.md\n";
+            << (no_render ? "" : "render_error.csv, render_error_vs_runtime.svg, ") << "summary.md\n";
   return exit_ok;
 }
 

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "cover/global_cover.hpp"
+#include "util/svg_plot.hpp"
 
 namespace nephele::numerics {
 namespace {
@@ -340,38 +341,13 @@ const char* colour(Integrator integrator) {
 // One log-log panel of the diagram at (x0, y0).
 void svg_panel(std::ostringstream& s, const std::vector<SweepRow>& rows, double x0, double y0, const std::string& label,
                double SweepRow::*error, const std::vector<int>& sizes, const std::string& time_label) {
-  const double width = 520, height = 400, left = 70, bottom = 50, top = 30, right = 20;
-  double t_min = 1e300, t_max = 0, e_min = 1e300, e_max = 0;
+  std::vector<double> times, errors;
   for (const auto& r : rows) {
-    const double e = std::max(r.*error, 1e-9);
-    t_min = std::min(t_min, r.time_ms);
-    t_max = std::max(t_max, r.time_ms);
-    e_min = std::min(e_min, e);
-    e_max = std::max(e_max, e);
+    times.push_back(r.time_ms);
+    errors.push_back(r.*error);
   }
-  const double lt0 = std::floor(std::log10(std::max(t_min, 1e-3))), lt1 = std::ceil(std::log10(std::max(t_max, 1e-3)) + 1e-9);
-  const double le0 = std::floor(std::log10(e_min)), le1 = std::ceil(std::log10(e_max) + 1e-9);
-  const double pw = width - left - right, ph = height - top - bottom;
-  auto X = [&](double t) { return x0 + left + pw * (std::log10(std::max(t, 1e-3)) - lt0) / std::max(1.0, lt1 - lt0); };
-  auto Y = [&](double e) { return y0 + top + ph * (1.0 - (std::log10(std::max(e, 1e-9)) - le0) / std::max(1.0, le1 - le0)); };
-  s << "<rect x='" << x0 + left << "' y='" << y0 + top << "' width='" << pw << "' height='" << ph
-    << "' fill='none' stroke='#444'/>\n";
-  for (double d = lt0; d <= lt1 + 1e-9; d += 1) {
-    s << "<line x1='" << X(std::pow(10, d)) << "' y1='" << y0 + top << "' x2='" << X(std::pow(10, d)) << "' y2='"
-      << y0 + top + ph << "' stroke='#ddd'/>\n";
-    s << "<text x='" << X(std::pow(10, d)) << "' y='" << y0 + top + ph + 18 << "' text-anchor='middle'>1e"
-      << static_cast<int>(d) << "</text>\n";
-  }
-  for (double d = le0; d <= le1 + 1e-9; d += 1) {
-    s << "<line x1='" << x0 + left << "' y1='" << Y(std::pow(10, d)) << "' x2='" << x0 + left + pw << "' y2='"
-      << Y(std::pow(10, d)) << "' stroke='#ddd'/>\n";
-    s << "<text x='" << x0 + left - 6 << "' y='" << Y(std::pow(10, d)) + 4 << "' text-anchor='end'>1e"
-      << static_cast<int>(d) << "</text>\n";
-  }
-  s << "<text x='" << x0 + left + pw / 2 << "' y='" << y0 + height - 12
-    << "' text-anchor='middle'>" << time_label << "</text>\n";
-  s << "<text transform='translate(" << x0 + 16 << "," << y0 + top + ph / 2 << ") rotate(-90)' text-anchor='middle'>"
-    << label << "</text>\n";
+  const svg::LogLogPanel panel(x0, y0, times, errors);
+  panel.draw_axes(s, time_label, label);
   // One polyline per integrator, curl mode and size, in order of time.
   for (Integrator integrator : all_integrators())
     for (CurlMode mode : {CurlMode::sampled, CurlMode::procedural})
@@ -381,23 +357,14 @@ void svg_panel(std::ostringstream& s, const std::vector<SweepRow>& rows, double 
           if (r.integrator == integrator && r.curl_mode == mode && r.size == sizes[si]) series.push_back(&r);
         if (series.empty()) continue;
         std::sort(series.begin(), series.end(), [](auto a, auto b) { return a->time_ms < b->time_ms; });
-        s << "<polyline fill='none' stroke='" << colour(integrator) << "' stroke-width='1.5'"
-          << (mode == CurlMode::procedural ? " stroke-dasharray='6,3'" : "") << " points='";
-        for (const SweepRow* r : series) s << X(r->time_ms) << "," << Y(r->*error) << " ";
-        s << "'/>\n";
-        for (const SweepRow* r : series) {
-          const double x = X(r->time_ms), y = Y(r->*error);
-          const int shape = static_cast<int>(si % 3);
-          if (shape == 0)
-            s << "<circle cx='" << x << "' cy='" << y << "' r='3.5' fill='" << colour(integrator) << "'/>\n";
-          else if (shape == 1)
-            s << "<rect x='" << x - 3.5 << "' y='" << y - 3.5 << "' width='7' height='7' fill='" << colour(integrator)
-              << "'/>\n";
-          else
-            s << "<path d='M" << x << "," << y - 4.5 << " L" << x + 4 << "," << y + 3 << " L" << x - 4 << "," << y + 3
-              << " Z' fill='" << colour(integrator) << "'/>\n";
+        std::vector<std::pair<double, double>> points;
+        for (const SweepRow* r : series) points.emplace_back(panel.x(r->time_ms), panel.y(r->*error));
+        svg::polyline(s, points, colour(integrator), mode == CurlMode::procedural);
+        for (size_t k = 0; k < series.size(); ++k) {
+          svg::marker(s, static_cast<int>(si), points[k].first, points[k].second, colour(integrator));
+          const SweepRow* r = series[k];
           if (r->integrator == Integrator::euler && r->curl_mode == CurlMode::sampled && r->steps == 50)
-            s << "<circle cx='" << x << "' cy='" << y << "' r='8' fill='none' stroke='black' stroke-width='1.5'/>\n";
+            svg::ring(s, points[k].first, points[k].second);
         }
       }
 }
@@ -411,24 +378,18 @@ std::string work_precision_svg(const std::vector<SweepRow>& rows, const std::str
     if (std::find(sizes.begin(), sizes.end(), r.size) == sizes.end()) sizes.push_back(r.size);
   std::sort(sizes.begin(), sizes.end());
   std::ostringstream s;
-  s << "<?xml version='1.0' encoding='UTF-8'?>\n"
-    << "<svg xmlns='http://www.w3.org/2000/svg' width='1060' height='490' font-family='sans-serif' font-size='12'>\n"
-    << "<rect width='1060' height='490' fill='white'/>\n"
-    << "<text x='530' y='20' text-anchor='middle' font-size='15'>" << title << "</text>\n";
+  svg::begin_document(s, 1060, 490, title);
   svg_panel(s, rows, 0, 20, "warp error, rms great-circle distance (rad)", &SweepRow::warp_err_rms, sizes, time_label);
   svg_panel(s, rows, 530, 20, "cover error, rms", &SweepRow::cover_err_rms, sizes, time_label);
   // Legend: colours are integrators, dashes the curl mode, markers the size.
   double x = 80;
   for (Integrator integrator : all_integrators()) {
-    s << "<line x1='" << x << "' y1='455' x2='" << x + 20 << "' y2='455' stroke='" << colour(integrator)
-      << "' stroke-width='2'/><text x='" << x + 24 << "' y='459'>" << integrator_name(integrator) << "</text>\n";
+    svg::legend_line(s, x, 455, colour(integrator), integrator_name(integrator));
     x += 95;
   }
-  s << "<line x1='" << x << "' y1='455' x2='" << x + 20 << "' y2='455' stroke='#444' stroke-width='2'/><text x='"
-    << x + 24 << "' y='459'>sampled</text>\n";
+  svg::legend_line(s, x, 455, "#444", "sampled");
   x += 85;
-  s << "<line x1='" << x << "' y1='455' x2='" << x + 20 << "' y2='455' stroke='#444' stroke-width='2' "
-    << "stroke-dasharray='6,3'/><text x='" << x + 24 << "' y='459'>procedural</text>\n";
+  svg::legend_line(s, x, 455, "#444", "procedural", true);
   x = 80;  // second row: sizes and the default
   const char* markers[] = {"circle", "square", "triangle"};
   for (size_t si = 0; si < sizes.size(); ++si) {
@@ -436,7 +397,7 @@ std::string work_precision_svg(const std::vector<SweepRow>& rows, const std::str
     x += 130;
   }
   s << "<text x='" << x << "' y='479'>ring: euler, 50 steps, sampled curl (the default)</text>\n";
-  s << "</svg>\n";
+  svg::end_document(s);
   return s.str();
 }
 

@@ -7,21 +7,45 @@
 
 namespace nephele::render {
 
-std::vector<RenderErrorRow> render_error_sweep(const regional::Scene& scene, const std::vector<int>& view_steps,
-                                               const std::vector<int>& light_steps, int reference_view,
-                                               int reference_light) {
-  regional::Scene reference_scene = scene;
-  reference_scene.view_steps = reference_view;
-  reference_scene.light_steps = reference_light;
+RenderSweepOptions RenderSweepOptions::full() {
+  RenderSweepOptions o;
+  o.view_steps = {8, 16, 32, 48, 96};
+  o.light_steps = {2, 4, 6, 12};
+  o.reference_view = 384;
+  o.reference_light = 24;
+  o.width = 160;
+  o.height = 90;
+  return o;
+}
+
+RenderSweepOptions RenderSweepOptions::quick() {
+  RenderSweepOptions o;
+  o.view_steps = {8, 16, 48};
+  o.light_steps = {2, 6};
+  o.reference_view = 96;
+  o.reference_light = 12;
+  o.width = 32;
+  o.height = 18;
+  return o;
+}
+
+std::vector<RenderErrorRow> render_error_sweep(const regional::Scene& scene, const RenderSweepOptions& options,
+                                               const std::function<void(const RenderErrorRow&)>& progress) {
+  regional::Scene base = scene;
+  base.width = options.width;
+  base.height = options.height;
+  regional::Scene reference_scene = base;
+  reference_scene.view_steps = options.reference_view;
+  reference_scene.light_steps = options.reference_light;
   const SceneRender reference = render_scene(reference_scene);
   const auto& ref = reference.render.radiance.pixels;
   double mean = 0;
   for (size_t k = 0; k < ref.size(); k += 4) mean += (ref[k] + ref[k + 1] + ref[k + 2]) / 3.0;
   mean /= ref.size() / 4.0;
   std::vector<RenderErrorRow> rows;
-  for (int v : view_steps) {
-    for (int l : light_steps) {
-      regional::Scene s = scene;
+  for (int v : options.view_steps) {
+    for (int l : options.light_steps) {
+      regional::Scene s = base;
       s.view_steps = v;
       s.light_steps = l;
       const SceneRender r = render_scene(s);
@@ -37,6 +61,7 @@ std::vector<RenderErrorRow> render_error_sweep(const regional::Scene& scene, con
           worst = std::max(worst, d);
         }
       rows.push_back({v, l, time, std::sqrt(sum / (3.0 * p.size() / 4.0)) / mean, worst / mean});
+      if (progress) progress(rows.back());
     }
   }
   return rows;
