@@ -1,6 +1,7 @@
 // Cloud densities per type and the clear-sky atmosphere (CPU twins of the render shaders).
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -37,13 +38,29 @@ TEST_CASE("more coverage never thins a heaped cloud", "[density]") {
 }
 
 TEST_CASE("the alto morph runs from the altostratus sheet to the altocumulus cells", "[density]") {
+  // morph 0 (k = 1): phi = 1, delta = 0, the sheet amount times the profile, whatever the detail.
+  // morph 1 (k = 0): max(0, H(1 - c, 1, s) - (1 - e)) times the profile: nothing where the shape
+  // noise lies below the clear fraction 1 - c, and where it does the detail carves the cells.
+  const float c = 0.6f;
   for (float h : {0.3f, 0.5f}) {
+    const float profile = sheet_profile(h, 0.25f);
     for (float shape : {0.2f, 0.6f, 0.9f}) {
-      CHECK(cloud_density(CLOUD_ALTO, h, 0.6f, shape, 0.5f, 0.0f) == Approx(sheet_density(h, 0.6f, shape, 0.5f)));
-      CHECK(cloud_density(CLOUD_ALTO, h, 0.6f, shape, 0.5f, 1.0f) ==
-            Approx(heaped_density(h, 0.6f, shape, 0.5f, 0.2f)));
+      const float amount = hermite_step(0.15f, 0.55f, c + 0.5f * (shape - 0.5f));
+      CHECK(cloud_density(CLOUD_ALTO, h, c, shape, 0.1f, 0.0f) == Approx(amount * profile));
+      CHECK(cloud_density(CLOUD_ALTO, h, c, shape, 0.9f, 0.0f) == Approx(amount * profile));
+      const float phi = hermite_step(1.0f - c, 1.0f, shape);
+      for (float detail : {0.1f, 0.5f, 0.95f})
+        CHECK(cloud_density(CLOUD_ALTO, h, c, shape, detail, 1.0f) ==
+              Approx(std::max(phi - (1.0f - detail), 0.0f) * profile).margin(1e-7));
     }
+    CHECK(cloud_density(CLOUD_ALTO, h, c, 0.35f, 1.0f, 1.0f) == 0.0f);  // s below 1 - c: clear
   }
+  // Halfway, the cells stand out of a thinner sheet: the density lies between the two ends.
+  const float sheet = cloud_density(CLOUD_ALTO, 0.5f, c, 0.8f, 0.7f, 0.0f);
+  const float cells = cloud_density(CLOUD_ALTO, 0.5f, c, 0.8f, 0.7f, 1.0f);
+  const float half = cloud_density(CLOUD_ALTO, 0.5f, c, 0.8f, 0.7f, 0.5f);
+  CHECK(half >= std::min(sheet, cells) - 1e-6f);
+  CHECK(half <= std::max(sheet, cells) + 1e-6f);
 }
 
 TEST_CASE("fog thins with height and the Hermite step is the cubic smoothstep", "[density]") {

@@ -7,11 +7,16 @@
 
 #include "cover/global_cover.hpp"
 #include "curl_bounds.hpp"
+#include "cube_fields.hpp"
 #include "gl_support.hpp"
 #include "shader_math/shader_math.hpp"
 
 using namespace nephele;
 using namespace nephele::glsl;
+
+using test::as_vec4;
+using test::index;
+using test::velocity_lipschitz;
 
 namespace {
 
@@ -20,33 +25,6 @@ cover::CoverParameters small(int size, int iterations = 50) {
   p.size = size;
   p.iterations = iterations;
   return p;
-}
-
-std::vector<vec4> as_vec4(const std::vector<float>& rgba) {
-  std::vector<vec4> texels(rgba.size() / 4);
-  std::memcpy(texels.data(), rgba.data(), rgba.size() * sizeof(float));
-  return texels;
-}
-
-size_t index(int size, int face, int i, int j) { return (static_cast<size_t>(face) * size + j) * size + i; }
-
-// Largest rate of change of the curl field between neighbouring texels (per radian): a
-// Lipschitz constant of the sampled velocity, which bounds how rounding errors grow per step.
-double velocity_lipschitz(const std::vector<vec4>& curl, int size) {
-  double worst = 0;
-  for (int face = 0; face < 6; ++face)
-    for (int j = 0; j < size; ++j)
-      for (int i = 0; i + 1 < size; ++i) {
-        for (const ivec2 step : {ivec2(1, 0), ivec2(0, 1)}) {
-          const int i2 = i + step.x, j2 = j + step.y;
-          if (j2 >= size) continue;
-          const double angle = std::acos(std::clamp(
-              static_cast<double>(dot(texel_direction(face, i, j, size), texel_direction(face, i2, j2, size))), -1.0, 1.0));
-          const double change = length(vec3(curl[index(size, face, i, j)]) - vec3(curl[index(size, face, i2, j2)]));
-          worst = std::max(worst, change / angle);
-        }
-      }
-  return worst;
 }
 
 }  // namespace

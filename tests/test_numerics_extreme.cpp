@@ -9,6 +9,7 @@
 #include <limits>
 
 #include "cover/global_cover.hpp"
+#include "cube_fields.hpp"
 #include "gl_support.hpp"
 #include "numerics/integrators.hpp"
 #include "shader_math/shader_math.hpp"
@@ -18,13 +19,11 @@ using namespace nephele::glsl;
 using numerics::CurlMode;
 using numerics::Integrator;
 
-namespace {
+using test::as_vec4;
+using test::index;
+using test::velocity_lipschitz;
 
-std::vector<vec4> as_vec4(const std::vector<float>& rgba) {
-  std::vector<vec4> texels(rgba.size() / 4);
-  std::memcpy(texels.data(), rgba.data(), rgba.size() * sizeof(float));
-  return texels;
-}
+namespace {
 
 bool on_sphere(vec3 w) {
   return std::isfinite(w.x) && std::isfinite(w.y) && std::isfinite(w.z) && std::abs(length(w) - 1.0f) <= 1e-6f;

@@ -7,6 +7,7 @@
 #include <cstring>
 
 #include "cover/global_cover.hpp"
+#include "cube_fields.hpp"
 #include "gl_support.hpp"
 #include "numerics/integrators.hpp"
 #include "numerics/reference_flow.hpp"
@@ -17,33 +18,11 @@ using namespace nephele::glsl;
 using numerics::CurlMode;
 using numerics::Integrator;
 
+using test::as_vec4;
+using test::index;
+using test::velocity_lipschitz;
+
 namespace {
-
-std::vector<vec4> as_vec4(const std::vector<float>& rgba) {
-  std::vector<vec4> texels(rgba.size() / 4);
-  std::memcpy(texels.data(), rgba.data(), rgba.size() * sizeof(float));
-  return texels;
-}
-
-size_t index(int size, int face, int i, int j) { return (static_cast<size_t>(face) * size + j) * size + i; }
-
-// Largest rate of change of a velocity cube map between neighbouring texel centres (per
-// radian): a Lipschitz constant of the field, which bounds how perturbations grow per step.
-double velocity_lipschitz(const std::vector<vec4>& curl, int size) {
-  double worst = 0;
-  for (int face = 0; face < 6; ++face)
-    for (int j = 0; j < size; ++j)
-      for (int i = 0; i < size; ++i)
-        for (const ivec2 step : {ivec2(1, 0), ivec2(0, 1)}) {
-          const int i2 = i + step.x, j2 = j + step.y;
-          if (i2 >= size || j2 >= size) continue;
-          const double angle = std::acos(std::clamp(
-              static_cast<double>(dot(texel_direction(face, i, j, size), texel_direction(face, i2, j2, size))), -1.0, 1.0));
-          const double change = length(vec3(curl[index(size, face, i, j)]) - vec3(curl[index(size, face, i2, j2)]));
-          worst = std::max(worst, change / angle);
-        }
-  return worst;
-}
 
 cover::CoverParameters parameters(int size, Integrator integrator, CurlMode mode, int steps, float flow_time) {
   cover::CoverParameters p;

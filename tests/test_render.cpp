@@ -183,3 +183,26 @@ TEST_CASE("tone mapping encodes black as 0 and saturates to 1 without exceeding 
   CHECK(ldr.pixels[6] == Approx(1.0f).margin(1e-3));
   CHECK(ldr.pixels[6] <= 1.0f);
 }
+
+TEST_CASE("pixels whose loops reach llvmpipe's iteration limit are counted and ordinary settings stay below it", "[render][extreme]") {
+  test::test_context();
+  // A thin veil overhead everywhere keeps the transmittance near 1, so no ray ends early.
+  std::vector<CloudLayer> veil = {{CloudType::cirrostratus, CoverageChannel::high, 8500, 9500, 1e-7f, 0, 0, 0, "test"}};
+  const WeatherField field = uniform_field(0, 0, 1.0f);
+  auto camera = small_camera(45);
+  camera.width = 4;
+  camera.height = 4;
+  const auto ordinary = render::render_clouds(camera, veil, field, noon, quick());  // a few hundred
+  CHECK(ordinary.loop_limited_pixels == 0u);
+  // 4096 coarse steps, two sub-steps of 1 + 256 + 3 iterations each where the veil is: every
+  // pixel needs millions of iterations. llvmpipe counts iterations per SIMD vector of pixels and
+  // cuts the whole vector at 65535, so a pixel's own count is a lower bound of the vector's: at
+  // least one pixel of each cut vector reaches the limit by its own count, the others may not.
+  render::RenderSettings heavy = quick();
+  heavy.view_steps = 4096;
+  heavy.light_steps = 256;
+  const auto r = render::render_clouds(camera, veil, field, noon, heavy);
+  CHECK(r.loop_limited_pixels >= 1u);
+  CHECK(r.loop_limited_pixels <= 16u);
+  CHECK(stats(r).finite);
+}

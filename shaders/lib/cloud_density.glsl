@@ -43,6 +43,21 @@ float sheet_density(float h, float c, float shape, float detail) {
   return amount * sheet_profile(h, 0.25f) * (0.7f + 0.3f * detail);
 }
 
+// The altostratus-altocumulus family in the form of Webanck et al.'s supplementary material:
+// rho = max(0, phi - delta) with phi = mix(H(0.43, 1, n1), 1, k) and
+// delta = mix(mix(n2, 1 - n3, 1/4), 0, k), so k = 1 gives a uniform sheet (altostratus) and
+// k = 0 cells carved out of a thresholded noise (altocumulus). Here k = 1 - morph, the threshold
+// 0.43 becomes the clear fraction 1 - c (0.43 is c = 0.57), both erosion noises are the detail
+// noise taken as 1 - e (so that density grows with e, which the renderer's bound needs), and
+// the sheet keeps the weather's coverage through the sheet amount (docs/layers.md).
+float alto_density(float h, float c, float shape, float detail, float morph) {
+  float k = 1.0f - morph;
+  float phi = mix(hermite_step(1.0f - c, 1.0f, shape), 1.0f, k);
+  float delta = (1.0f - k) * (1.0f - detail);
+  float sheet_amount = hermite_step(0.15f, 0.55f, c + 0.5f * (shape - 0.5f));
+  return max(phi - delta, 0.0f) * mix(1.0f, sheet_amount, k) * sheet_profile(h, 0.25f);
+}
+
 float cloud_density(int type, float h, float c, float shape, float detail, float morph) {
   if (c <= 0.0f || h < 0.0f || h > 1.0f) return 0.0f;
   if (type == CLOUD_CUMULUS) return heaped_density(h, c, shape, detail, 0.6f);
@@ -51,10 +66,7 @@ float cloud_density(int type, float h, float c, float shape, float detail, float
     return max(heaped_density(h, c, shape, detail, 0.3f), sheet_density(h, c - 0.3f, shape, detail));
   }
   if (type == CLOUD_STRATUS) return sheet_density(h, c, shape, detail);
-  if (type == CLOUD_ALTO) {
-    // Webanck et al.'s morph between altostratus (k = 0) and altocumulus (k = 1).
-    return mix(sheet_density(h, c, shape, detail), heaped_density(h, c, shape, detail, 0.2f), morph);
-  }
+  if (type == CLOUD_ALTO) return alto_density(h, c, shape, detail, morph);
   if (type == CLOUD_CIRRUS) {
     // Fibres: the noise is stretched along the wind by the caller; thin, patchy.
     return c * hermite_step(0.45f, 0.8f, shape * (0.6f + 0.4f * detail)) * sheet_profile(h, 0.4f);

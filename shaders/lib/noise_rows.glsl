@@ -155,27 +155,34 @@ void worley_row(int t0, int count, int y, int z, float frequency, ivec3 period, 
   } while (cx <= last);
 }
 
-// Takes weight perlin_noise(p frequency) for the texels of a row segment, as worley_row.
-void perlin_row(int t0, int count, int y, int z, float frequency, ivec3 period, uvec3 key,
-                float weight, int sums, bool accumulate, bool emit, IN(NoiseFinish) finish
-                NOISE_ROW_PARAM) {
+// The part of a Perlin row walk that depends on the row (y, z) only (PerlinRowFrame).
+PerlinRowFrame perlin_row_frame(int y, int z, float frequency, ivec3 period) {
+  PerlinRowFrame r;
   float py = (float(y) + 0.5f) * frequency;
   float pz = (float(z) + 0.5f) * frequency;
   float by = floor(py);
   float bz = floor(pz);
-  float fy = py - by;
-  float fz = pz - bz;
+  r.fy = py - by;
+  r.fz = pz - bz;
   int cy = wrap_axis(int(by), period.y);
   int cz = wrap_axis(int(bz), period.z);
-  ivec2 ys = ivec2(cy, wrap_axis(cy + 1, period.y));
-  ivec2 zs = ivec2(cz, wrap_axis(cz + 1, period.z));
-  vec4 w = perlin_yz_weights(fy, fz);
+  r.ys = ivec2(cy, wrap_axis(cy + 1, period.y));
+  r.zs = ivec2(cz, wrap_axis(cz + 1, period.z));
+  r.w = perlin_yz_weights(r.fy, r.fz);
+  return r;
+}
+
+// Takes weight perlin_noise(p frequency) for the texels of a row segment, as worley_row.
+void perlin_row(int t0, int count, int y, int z, float frequency, ivec3 period, uvec3 key,
+                float weight, int sums, bool accumulate, bool emit, IN(NoiseFinish) finish
+                NOISE_ROW_PARAM) {
+  PerlinRowFrame r = perlin_row_frame(y, z, frequency, period);
   int cx = int(floor((float(t0) + 0.5f) * frequency));
   int last = int(floor((float(t0 + count - 1) + 0.5f) * frequency));
-  vec2 face0 = perlin_face(wrap_axis(cx, period.x), ys, zs, fy, fz, w, key);
+  vec2 face0 = perlin_face(wrap_axis(cx, period.x), r.ys, r.zs, r.fy, r.fz, r.w, key);
   int t = t0;
   do {
-    vec2 face1 = perlin_face(wrap_axis(cx + 1, period.x), ys, zs, fy, fz, w, key);
+    vec2 face1 = perlin_face(wrap_axis(cx + 1, period.x), r.ys, r.zs, r.fy, r.fz, r.w, key);
     int end = min(t0 + count, texels_below(cx + 1, frequency));
     if (t < end) {
       do {
@@ -205,21 +212,11 @@ bool perlin_row_is_wide(float frequency) {
 // be a multiple of NOISE_SEGMENT and the row padded to one.
 void perlin_row_wide(int t0, int count, int y, int z, float frequency, ivec3 period, uvec3 key,
                      float weight, int sums, bool accumulate, IN(NoiseFinish) finish NOISE_ROW_PARAM) {
-  float py = (float(y) + 0.5f) * frequency;
-  float pz = (float(z) + 0.5f) * frequency;
-  float by = floor(py);
-  float bz = floor(pz);
-  float fy = py - by;
-  float fz = pz - bz;
-  int cy = wrap_axis(int(by), period.y);
-  int cz = wrap_axis(int(bz), period.z);
-  ivec2 ys = ivec2(cy, wrap_axis(cy + 1, period.y));
-  ivec2 zs = ivec2(cz, wrap_axis(cz + 1, period.z));
-  vec4 w = perlin_yz_weights(fy, fz);
+  PerlinRowFrame r = perlin_row_frame(y, z, frequency, period);
   int cx = int(floor((float(t0) + 0.5f) * frequency));
-  vec2 face0 = perlin_face(wrap_axis(cx, period.x), ys, zs, fy, fz, w, key);
-  vec2 face1 = perlin_face(wrap_axis(cx + 1, period.x), ys, zs, fy, fz, w, key);
-  vec2 face2 = perlin_face(wrap_axis(cx + 2, period.x), ys, zs, fy, fz, w, key);
+  vec2 face0 = perlin_face(wrap_axis(cx, period.x), r.ys, r.zs, r.fy, r.fz, r.w, key);
+  vec2 face1 = perlin_face(wrap_axis(cx + 1, period.x), r.ys, r.zs, r.fy, r.fz, r.w, key);
+  vec2 face2 = perlin_face(wrap_axis(cx + 2, period.x), r.ys, r.zs, r.fy, r.fz, r.w, key);
   // The whole segment, unrolled (a constant trip count): no loop to run, constant indices.
   // Texels past count fill the row's padding.
   for (int chunk = 0; chunk < NOISE_SEGMENT; chunk += 8) {
@@ -234,7 +231,7 @@ void perlin_row_wide(int t0, int count, int y, int z, float frequency, ivec3 per
     }
     NOISE_OUT8(t, clamp(count - chunk, 0, 8), vec4(v[0], v[1], v[2], v[3]), vec4(v[4], v[5], v[6], v[7]));
     bool slide = floor((float(t + 8) + 0.5f) * frequency) > float(cx);
-    vec2 face3 = perlin_face(wrap_axis(cx + 3, period.x), ys, zs, fy, fz, w, key);
+    vec2 face3 = perlin_face(wrap_axis(cx + 3, period.x), r.ys, r.zs, r.fy, r.fz, r.w, key);
     if (slide) {
       face0 = face1;
       face1 = face2;

@@ -35,4 +35,14 @@ struct WorleySlab {
   float dyz[9];
 };
 
+// What a Perlin row walk shares along the row (y, z): the wrapped lattice rows and slices around
+// it, the fractions within the cell, and perlin_yz_weights of them.
+struct PerlinRowFrame {
+  ivec2 ys;
+  ivec2 zs;
+  float fy;
+  float fz;
+  vec4 w;
+};
+
 #endif

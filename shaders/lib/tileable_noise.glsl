@@ -21,9 +21,10 @@ void next_octave(IN(FbmParams) fbm, INOUT(float) amplitude, INOUT(float) frequen
   period = ivec3(vec3(period) * fbm.lacunarity + 0.5f);
 }
 
-// sum_k a_k F1(p f_k) / sum_k a_k with a_k = gain^k, f_k = frequency lacunarity^k and octave
-// k hashed with noise_key(seed, k). Needs octaves >= 1.
-float worley_fbm_mean(vec3 p, IN(FbmParams) fbm) {
+// sum_k a_k n_k / sum_k a_k over the octaves, a_k = gain^k, f_k = frequency lacunarity^k,
+// octave k hashed with noise_key(seed, k); n_k = F1(p f_k) (worley_f1) or, with perlin,
+// perlin_noise(p f_k). Callers pass a constant flag. Needs octaves >= 1.
+float noise_fbm_mean(vec3 p, IN(FbmParams) fbm, bool perlin) {
   float sum = 0.0f;
   float norm = 0.0f;
   float amplitude = 1.0f;
@@ -31,7 +32,9 @@ float worley_fbm_mean(vec3 p, IN(FbmParams) fbm) {
   ivec3 period = fbm.period;
   int octave = 0;
   do {
-    sum += amplitude * worley_f1(p * frequency, period, noise_key(fbm.seed, uint(octave))).w;
+    uvec3 key = noise_key(fbm.seed, uint(octave));
+    float value = perlin ? perlin_noise(p * frequency, period, key) : worley_f1(p * frequency, period, key).w;
+    sum += amplitude * value;
     norm += amplitude;
     next_octave(fbm, amplitude, frequency, period);
     ++octave;
@@ -39,22 +42,11 @@ float worley_fbm_mean(vec3 p, IN(FbmParams) fbm) {
   return sum / norm;
 }
 
-// The same weighted mean of perlin_noise, in [-PERLIN_BOUND, PERLIN_BOUND].
-float perlin_fbm_mean(vec3 p, IN(FbmParams) fbm) {
-  float sum = 0.0f;
-  float norm = 0.0f;
-  float amplitude = 1.0f;
-  float frequency = fbm.frequency;
-  ivec3 period = fbm.period;
-  int octave = 0;
-  do {
-    sum += amplitude * perlin_noise(p * frequency, period, noise_key(fbm.seed, uint(octave)));
-    norm += amplitude;
-    next_octave(fbm, amplitude, frequency, period);
-    ++octave;
-  } while (octave < fbm.octaves);
-  return sum / norm;
-}
+// The weighted mean of worley_f1's F1 (see noise_fbm_mean).
+float worley_fbm_mean(vec3 p, IN(FbmParams) fbm) { return noise_fbm_mean(p, fbm, false); }
+
+// The weighted mean of perlin_noise, in [-PERLIN_BOUND, PERLIN_BOUND].
+float perlin_fbm_mean(vec3 p, IN(FbmParams) fbm) { return noise_fbm_mean(p, fbm, true); }
 
 // [0, 1] values of the channel types from the means above.
 float worley_unit(float mean_f1, bool inverted) {

@@ -6,6 +6,11 @@ layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
 layout(rgba32f, binding = 0) uniform writeonly image2D radiance_image;
 layout(binding = 1) uniform sampler3D noise_volume;
 layout(binding = 2) uniform sampler2DArray weather_field;
+// Pixels whose loops ran (or would have run) past LOOP_LIMIT iterations in all: Mesa's llvmpipe
+// stops every loop of an invocation there, so such pixels are cut short on that driver
+// (docs/rendering.md). The host reads the count and warns.
+layout(std430, binding = 3) buffer LoopGuard { uint loop_limited_pixels; };
+const int LOOP_LIMIT = 65535;
 
 #include "../lib/render_types.glsl"
 #include "../lib/atmosphere.glsl"
@@ -13,6 +18,7 @@ layout(binding = 2) uniform sampler2DArray weather_field;
 #include "../lib/hash.glsl"
 
 const int MAX_LAYERS = 8;
+const int VIEW_REFINE = 2;  // sub-steps of a coarse view step that holds cloud (docs/rendering.md)
 uniform LayerParams u_layers[MAX_LAYERS];
 uniform int u_layer_count;
 uniform float u_earth_radius;
@@ -52,33 +58,62 @@ float coverage_at(vec3 p, int channel) {
   return texture(weather_field, vec3(uv, float(channel))).x;
 }
 
+// The shape-noise lookups of a layer at p: the shape value (0 outside the layer or where the
+// weather gives no cover), with the height fraction h, coverage c and the noise coordinates and
+// mip level that density_at goes on with.
+struct ShapeSample {
+  float shape, h, c, lod, detail;
+  vec3 coordinates;
+};
+
 // footprint: the length one sample stands for (the pixel's width at that distance, or the step),
 // which picks the noise volume's mip level so that distant clouds do not alias into speckle.
-// fine: also read the detail noise (the light march does without it).
-float density_at(vec3 p, vec3 centre, int layer, float footprint, bool fine) {
+ShapeSample shape_at(vec3 p, vec3 centre, int layer, float footprint) {
   LayerParams l = u_layers[layer];
+  ShapeSample sample_;
   float altitude = length(p - centre) - u_earth_radius;
-  float h = (altitude - l.base) / (l.top - l.base);
-  float c = coverage_at(p, l.channel);
-  if (c <= 0.0f || h < 0.0f || h > 1.0f) return 0.0f;
+  sample_.h = (altitude - l.base) / (l.top - l.base);
+  sample_.c = coverage_at(p, l.channel);
+  sample_.shape = 0.0f;
+  sample_.detail = 0.0f;
+  sample_.lod = 0.0f;
+  sample_.coordinates = vec3(0.0f);
+  if (sample_.c <= 0.0f || sample_.h < 0.0f || sample_.h > 1.0f) return sample_;
   // Noise coordinates in the wind's frame, moved by the wind's offset (tau).
   vec2 along_across = vec2(dot(p.xy, l.wind), dot(p.xy, vec2(-l.wind.y, l.wind.x))) - l.noise_offset;
   vec2 period = noise_period(l.type);
-  vec3 coordinates = vec3(along_across / period, altitude / period.y);
+  sample_.coordinates = vec3(along_across / period, altitude / period.y);
   float texel = period.x / u_noise_texels;
-  float lod = log2(max(footprint / texel, 1.0f));
-  vec2 noise = textureLod(noise_volume, coordinates, lod).xy;
+  sample_.lod = log2(max(footprint / texel, 1.0f));
+  vec2 noise = textureLod(noise_volume, sample_.coordinates, sample_.lod).xy;
   // A second lookup at an incommensurate, rotated scale (7.3 periods) breaks the volume's tiling,
   // which would otherwise line distant clouds up in a regular array.
-  vec3 macro_coordinates = vec3(0.0822f * coordinates.x + 0.0548f * coordinates.y,
-                                -0.0548f * coordinates.x + 0.0822f * coordinates.y, 0.1371f * coordinates.z + 0.37f);
-  float macro = textureLod(noise_volume, macro_coordinates, max(lod - 3.0f, 0.0f)).x;
-  noise.x = uniform_from_mix(mix(noise.x, macro, 0.4f), 0.4f);
-  // Every density grows with the detail noise, so its value at detail 1 bounds it: where even
-  // that is zero (most of the sky) the detail lookup is skipped.
-  if (cloud_density(l.type, h, c, noise.x, 1.0f, l.morph) <= 0.0f) return 0.0f;
-  float detail = fine ? textureLod(noise_volume, coordinates * 4.0f, lod + 2.0f).y : noise.y;
-  return l.extinction * cloud_density(l.type, h, c, noise.x, mix(noise.y, detail, 0.5f), l.morph);
+  vec3 c = sample_.coordinates;
+  vec3 macro_coordinates = vec3(0.0822f * c.x + 0.0548f * c.y, -0.0548f * c.x + 0.0822f * c.y, 0.1371f * c.z + 0.37f);
+  float macro = textureLod(noise_volume, macro_coordinates, max(sample_.lod - 3.0f, 0.0f)).x;
+  sample_.shape = uniform_from_mix(mix(noise.x, macro, 0.4f), 0.4f);
+  sample_.detail = noise.y;
+  return sample_;
+}
+
+// The largest density the layer can have at p whatever the detail noise (every density grows
+// with it, tested): zero over most of the sky, and cheap (no detail lookup).
+float density_bound_at(vec3 p, vec3 centre, int layer, float footprint) {
+  LayerParams l = u_layers[layer];
+  ShapeSample q = shape_at(p, centre, layer, footprint);
+  if (q.c <= 0.0f || q.h < 0.0f || q.h > 1.0f) return 0.0f;
+  return l.extinction * cloud_density(l.type, q.h, q.c, q.shape, 1.0f, l.morph);
+}
+
+// fine: also read the detail noise (the light march does without it).
+float density_at(vec3 p, vec3 centre, int layer, float footprint, bool fine) {
+  LayerParams l = u_layers[layer];
+  ShapeSample q = shape_at(p, centre, layer, footprint);
+  if (q.c <= 0.0f || q.h < 0.0f || q.h > 1.0f) return 0.0f;
+  // Where even the bound is zero (most of the sky) the detail lookup is skipped.
+  if (cloud_density(l.type, q.h, q.c, q.shape, 1.0f, l.morph) <= 0.0f) return 0.0f;
+  float detail = fine ? textureLod(noise_volume, q.coordinates * 4.0f, q.lod + 2.0f).y : q.detail;
+  return l.extinction * cloud_density(l.type, q.h, q.c, q.shape, mix(q.detail, detail, 0.5f), l.morph);
 }
 
 // Optical depth from p towards the sun within the same layer (other layers' shadows are left out).
@@ -119,6 +154,7 @@ void main() {
   vec4 intervals[2 * MAX_LAYERS];
   int interval_layer[2 * MAX_LAYERS];
   int count = 0;
+  int loop_count = 4 * MAX_LAYERS * MAX_LAYERS;  // at most, for building the sorted intervals
   for (int layer = 0; layer < u_layer_count; ++layer) {
     LayerParams l = u_layers[layer];
     vec4 s = ray_shell(vec3(0.0f), d, centre, u_earth_radius + l.base, u_earth_radius + l.top, cloud_limit);
@@ -159,30 +195,51 @@ void main() {
     vec3 mid = origin_from_centre + (0.5f * (a + b)) * d;
     vec3 sunlight = solar_irradiance() * transmittance_to_space(mid, u_sun, u_earth_radius);
     float albedo = 0.99f * (1.0f - l.darkness);
+    // Coarse steps probe the cheap bound; a coarse step that holds cloud (or follows one that
+    // did, to catch edges between probes) is marched in VIEW_REFINE sub-steps with the full density
+    // and a light march each, so the samples go where the cloud is.
+    bool was_cloudy = false;
+    loop_count += 17;  // transmittance_to_space of the interval
     for (int i = 0; i < steps && cloud_transmittance > 0.01f; ++i) {
+      loop_count += 1;
       float t0 = float(i) / n;
       float t1 = float(i + 1) / n;
       float t = (float(i) + jitter) / n;
       float s = a + (b - a) * t * t;
-      float ds = (b - a) * (t1 * t1 - t0 * t0);
-      vec3 p = s * d;
-      float sigma = density_at(p, centre, layer, max(ds, s * u_pixel_angle), true);
-      if (sigma <= 0.0f) continue;
-      float h = clamp((length(p - centre) - u_earth_radius - l.base) / (l.top - l.base), 0.0f, 1.0f);
-      float tau = u_light_steps > 0 ? optical_depth_to_sun(p, centre, layer) : 0.0f;
-      // Ambient: half the sphere sees the sky (radiance E/pi, dimmer towards the cloud's base),
-      // half the ground; isotropic scattering of a radiance field L adds sigma_s L.
-      vec3 ambient = 0.5f * (u_ambient * ((0.4f + 0.6f * h) / PI_F) + u_ground_radiance);
-      vec3 source = albedo * sigma * (sunlight * sun_scattering(tau, nu) + ambient);
-      float step_transmittance = exp(-sigma * ds);
-      float absorbed = 1.0f - step_transmittance;
-      cloud_radiance += cloud_transmittance * source * absorbed / sigma;
-      weighted_distance += cloud_transmittance * absorbed * s;
-      weight += cloud_transmittance * absorbed;
-      cloud_transmittance *= step_transmittance;
+      float coarse = (b - a) * (t1 * t1 - t0 * t0);
+      bool cloudy = density_bound_at(s * d, centre, layer, max(coarse, s * u_pixel_angle)) > 0.0f;
+      if (!cloudy && !was_cloudy) continue;
+      was_cloudy = cloudy;
+      for (int j = 0; j < VIEW_REFINE && cloud_transmittance > 0.01f; ++j) {
+        float u0 = t0 + (t1 - t0) * float(j) / float(VIEW_REFINE);
+        float u1 = t0 + (t1 - t0) * float(j + 1) / float(VIEW_REFINE);
+        float u = t0 + (t1 - t0) * (float(j) + jitter) / float(VIEW_REFINE);
+        float sj = a + (b - a) * u * u;
+        float ds = (b - a) * (u1 * u1 - u0 * u0);
+        loop_count += 1;
+        vec3 p = sj * d;
+        float sigma = density_at(p, centre, layer, max(ds, sj * u_pixel_angle), true);
+        if (sigma <= 0.0f) continue;
+        float h = clamp((length(p - centre) - u_earth_radius - l.base) / (l.top - l.base), 0.0f, 1.0f);
+        float tau = u_light_steps > 0 ? optical_depth_to_sun(p, centre, layer) : 0.0f;
+        loop_count += u_light_steps + 3;  // the light march and the scattering octaves
+        // Ambient: half the sphere sees the sky (radiance E/pi, dimmer towards the cloud's base),
+        // half the ground; isotropic scattering of a radiance field L adds sigma_s L.
+        vec3 ambient = 0.5f * (u_ambient * ((0.4f + 0.6f * h) / PI_F) + u_ground_radiance);
+        vec3 source = albedo * sigma * (sunlight * sun_scattering(tau, nu) + ambient);
+        float step_transmittance = exp(-sigma * ds);
+        float absorbed = 1.0f - step_transmittance;
+        cloud_radiance += cloud_transmittance * source * absorbed / sigma;
+        weighted_distance += cloud_transmittance * absorbed * sj;
+        weight += cloud_transmittance * absorbed;
+        cloud_transmittance *= step_transmittance;
+      }
     }
   }
   float cloud_distance = weight > 0.0f ? weighted_distance / weight : 0.0f;
+  // The sky's loops (a sun transmittance per step) and the ground's, then the verdict.
+  loop_count += 17 * u_sky_steps + 16;
+  if (loop_count >= LOOP_LIMIT) atomicAdd(loop_limited_pixels, 1u);
 
   // The clear sky, split at the clouds' mean distance for aerial perspective.
   vec3 inscatter_total, inscatter_split, transmittance_total, transmittance_split;

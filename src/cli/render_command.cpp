@@ -116,6 +116,11 @@ int run_render(const std::vector<std::string>& arguments) {
     if (!parent.empty()) std::filesystem::create_directories(parent);
   }
   render::write_scene_outputs(result, scene, outputs);
+  if (result.render.loop_limited_pixels > 0 && context.info().renderer.find("llvmpipe") != std::string::npos)
+    std::cerr << "warning: " << result.render.loop_limited_pixels
+              << " pixels need 65535 or more shader loop iterations, where llvmpipe stops every loop; they are "
+                 "cut short: lower --view-steps (now "
+              << scene.view_steps << ") or --light-steps (now " << scene.light_steps << ")\n";
   if (verbose) {
     for (const auto& p : result.passes) std::cerr << "pass: " << p << "\n";
     for (const auto& [name, ms] : result.render.timings_ms) std::cerr << "time " << name << ": " << ms << " ms\n";

@@ -25,7 +25,7 @@ struct Scene {
   bool panorama = false;
   std::vector<std::string> weather;          // weather files (paths resolved against the scene file)
   std::uint32_t seed = 1;
-  int view_steps = 48, light_steps = 6, sky_steps = 16;
+  int view_steps = 48, light_steps = 12, sky_steps = 16;  // from the image-error sweep (docs/rendering.md)
   double exposure = 4.0;
   int cover_size = 128;                      // global cover size when no weather is given
   std::vector<std::string> outputs;          // file names (png, exr); --scene renders into --out DIR

@@ -196,8 +196,16 @@ RenderResult render_clouds(const Camera& camera, const std::vector<regional::Clo
     image.bind_image(0, GL_WRITE_ONLY);
     glBindTextureUnit(1, noise);
     glBindTextureUnit(2, weather);
+    GLuint guard = 0;
+    const GLuint zero = 0;
+    glCreateBuffers(1, &guard);
+    glNamedBufferStorage(guard, sizeof zero, &zero, GL_MAP_READ_BIT);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, guard);
     program.dispatch_covering(camera.width, camera.height, 1);
     gl::image_barrier();
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    glGetNamedBufferSubData(guard, 0, sizeof result.loop_limited_pixels, &result.loop_limited_pixels);
+    glDeleteBuffers(1, &guard);
   });
   result.passes.push_back("sky");
   result.radiance = {camera.width, camera.height, 4, image.read()};

@@ -23,7 +23,7 @@ struct Camera {
 
 struct RenderSettings {
   int view_steps = 48;      // samples per layer interval along the view ray
-  int light_steps = 6;      // samples towards the sun per cloud sample
+  int light_steps = 12;     // samples towards the sun per cloud sample
   int sky_steps = 16;       // samples of the clear-sky integral
   double max_distance_m = 150000;
   std::uint32_t seed = 1;
@@ -36,6 +36,8 @@ struct RenderResult {
   std::vector<std::pair<std::string, double>> timings_ms;
   glm::dvec3 sun_direction;          // east, north, up
   double sun_elevation_deg = 0;
+  // Pixels whose shader loops needed 65535 iterations or more: llvmpipe cuts those short.
+  std::uint32_t loop_limited_pixels = 0;
 };
 
 // The Gaussian radius of curvature sqrt(M N) of WGS84 at a latitude: the sphere that osculates

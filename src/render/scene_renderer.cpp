@@ -151,6 +151,7 @@ json::Value scene_sidecar(const SceneRender& r, const regional::Scene& scene) {
   json::Value timings;
   for (const auto& [name, ms] : r.render.timings_ms) timings.set(name, ms);
   root.set("timings_ms", timings);
+  root.set("loop_limited_pixels", static_cast<double>(r.render.loop_limited_pixels));
   json::Value steps;
   steps.set("view", scene.view_steps);
   steps.set("light", scene.light_steps);
