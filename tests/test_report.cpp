@@ -214,7 +214,7 @@ TEST_CASE("report --quick writes the render error CSV and diagram and a render s
     ++rows;
   }
   CHECK(rows == 6);
-  CHECK(steps == std::set<std::pair<int, int>>{{8, 2}, {8, 6}, {16, 2}, {16, 6}, {48, 2}, {48, 6}});
+  CHECK(steps == std::set<std::pair<int, int>>{{8, 2}, {8, 12}, {16, 2}, {16, 12}, {48, 2}, {48, 12}});
   const std::string svg = read_file(out.path / "render_error_vs_runtime.svg");
   size_t polylines = 0;
   for (size_t at = svg.find("<polyline"); at != std::string::npos; at = svg.find("<polyline", at + 1)) ++polylines;
@@ -222,7 +222,7 @@ TEST_CASE("report --quick writes the render error CSV and diagram and a render s
   const std::string summary = read_file(out.path / "summary.md");
   CHECK(summary.find("Best speed-up at equal error") != std::string::npos);  // the warp part is still there
   CHECK(summary.find("## Render: image error against run time") != std::string::npos);
-  CHECK(summary.find("Defaults (of `nephele render` and scene files): 48 view x 6 light steps") != std::string::npos);
+  CHECK(summary.find("Defaults (of `nephele render` and scene files): 48 view x 12 light steps") != std::string::npos);
   CHECK(summary.find("Cheapest within 1.5x the default's error") != std::string::npos);
   CHECK(summary.find("Most accurate within the default's time") != std::string::npos);
 

@@ -21,7 +21,7 @@ RenderSweepOptions RenderSweepOptions::full() {
 RenderSweepOptions RenderSweepOptions::quick() {
   RenderSweepOptions o;
   o.view_steps = {8, 16, 48};
-  o.light_steps = {2, 6};
+  o.light_steps = {2, 12};  // the default light steps among them
   o.reference_view = 96;
   o.reference_light = 12;
   o.width = 32;
