@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iostream>
 
 #include "render/scene_renderer.hpp"
 
@@ -38,6 +39,11 @@ std::vector<RenderErrorRow> render_error_sweep(const regional::Scene& scene, con
   reference_scene.view_steps = options.reference_view;
   reference_scene.light_steps = options.reference_light;
   const SceneRender reference = render_scene(reference_scene);
+  if (reference.render.loop_limited_pixels > 0)
+    std::cerr << "warning: the " << options.reference_view << " x " << options.reference_light << " reference has "
+              << reference.render.loop_limited_pixels
+              << " pixels at 65535 or more shader loop iterations; llvmpipe cuts those short, so the errors "
+                 "there are not to be trusted (docs/rendering.md)\n";
   const auto& ref = reference.render.radiance.pixels;
   double mean = 0;
   for (size_t k = 0; k < ref.size(); k += 4) mean += (ref[k] + ref[k + 1] + ref[k + 2]) / 3.0;
