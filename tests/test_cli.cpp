@@ -9,46 +9,17 @@
 #include <random>
 #include <sstream>
 
+#include "cli_support.hpp"
 #include "export/image_files.hpp"
 #include "util/json.hpp"
 
 namespace fs = std::filesystem;
 using namespace nephele;
-
-namespace {
-
-struct Run {
-  int exit_code;
-  std::string output;  // stdout and stderr
-};
-
-Run run_with_environment(const std::string& environment, const std::string& arguments) {
-  const fs::path log = fs::temp_directory_path() / ("nephele_cli_" + std::to_string(std::random_device{}()) + ".log");
-  const std::string command = environment + " " + std::string(NEPHELE_EXECUTABLE) + " " + arguments + " > " +
-                              log.string() + " 2>&1";
-  const int status = std::system(command.c_str());
-  std::ifstream in(log);
-  std::stringstream text;
-  text << in.rdbuf();
-  fs::remove(log);
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, text.str()};
-}
-
-Run run(const std::string& arguments) { return run_with_environment("", arguments); }
-
-struct TemporaryDirectory {
-  fs::path path = fs::temp_directory_path() / ("nephele_test_" + std::to_string(std::random_device{}()));
-  ~TemporaryDirectory() { fs::remove_all(path); }
-};
-
-std::string read_file(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-}  // namespace
+using test::read_file;
+using test::Run;
+using test::run;
+using test::run_with_environment;
+using test::TemporaryDirectory;
 
 TEST_CASE("generate writes every output readable with the right sizes and a valid sidecar", "[cli]") {
   TemporaryDirectory out;

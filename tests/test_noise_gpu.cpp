@@ -15,6 +15,7 @@
 #include "cli/noise_options.hpp"
 #include "cli/options.hpp"
 #include "export/image_files.hpp"
+#include "cli_support.hpp"
 #include "gl_support.hpp"
 #include "noise/noise_files.hpp"
 #include "noise/noise_texture.hpp"
@@ -23,6 +24,10 @@
 
 namespace fs = std::filesystem;
 using namespace nephele;
+using test::read_file;
+using test::Run;
+using test::run;
+using test::TemporaryDirectory;
 using namespace nephele::glsl;
 using nephele::test::probe;
 
@@ -46,36 +51,6 @@ noise::TextureSpec spec_of(int w, int h, int d, noise::NoiseType type, int cells
 // rounding steps of 2^-24 on values below 4 through at most ~30 operations per octave, and the
 // final divisions by sums of amplitudes >= 1 do not amplify them.
 constexpr float gpu_tolerance = 1e-5f;
-
-struct Run {
-  int exit_code;
-  std::string output;
-};
-
-Run run_nephele(const std::string& arguments) {
-  const fs::path log = fs::temp_directory_path() / ("nephele_noise_" + std::to_string(std::random_device{}()) + ".log");
-  const std::string command = std::string(NEPHELE_EXECUTABLE) + " " + arguments + " > " + log.string() + " 2>&1";
-  const int status = std::system(command.c_str());
-  std::ifstream in(log);
-  std::stringstream text;
-  text << in.rdbuf();
-  fs::remove(log);
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, text.str()};
-}
-
-struct TemporaryDirectory {
-  fs::path path = fs::temp_directory_path() / ("nephele_noise_test_" + std::to_string(std::random_device{}()));
-  TemporaryDirectory() { fs::create_directories(path); }
-  ~TemporaryDirectory() { fs::remove_all(path); }
-  bool empty() const { return fs::is_empty(path); }
-};
-
-std::string read_file(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
 
 }  // namespace
 
@@ -202,31 +177,31 @@ TEST_CASE("sizes beyond the driver's 3D texture limit give exit code 2 and write
   test::test_context();
   GLint limit = 0;
   glGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &limit);
-  TemporaryDirectory out;
+  TemporaryDirectory out(true);
   // Twice the limit along x with whole cells on every axis (one along y and z).
-  const Run r = run_nephele("noise --width " + std::to_string(2 * limit) + " --height 8 --depth 8 --cells " +
+  const Run r = run("noise --width " + std::to_string(2 * limit) + " --height 8 --depth 8 --cells " +
                             std::to_string(2 * limit / 8) + " --out " + (out.path / "big.raw").string());
   INFO(r.output);
   CHECK(r.exit_code == 2);
   CHECK_THAT(r.output, Catch::Contains("--width") && Catch::Contains("3D texture limit"));
   CHECK(out.empty());
   // More than the memory available (and not more than the texture limit).
-  const Run memory = run_nephele("noise --size " + std::to_string(limit) + " --channels rgba --out " +
+  const Run memory = run("noise --size " + std::to_string(limit) + " --channels rgba --out " +
                                  (out.path / "huge.raw").string());
   INFO(memory.output);
   CHECK(memory.exit_code == 2);
   CHECK_THAT(memory.output, Catch::Contains("MiB") && Catch::Contains("available"));
   CHECK(out.empty());
-  const Run bad = run_nephele("noise --size 16 --cells 3 --octaves 4 --out " + (out.path / "x.png").string());
+  const Run bad = run("noise --size 16 --cells 3 --octaves 4 --out " + (out.path / "x.png").string());
   CHECK(bad.exit_code == 2);
   CHECK_THAT(bad.output, Catch::Contains("--octaves"));
   CHECK(out.empty());
 }
 
 TEST_CASE("nephele noise writes the slice atlas and a sidecar that describes it", "[cli][noise]") {
-  TemporaryDirectory out;
+  TemporaryDirectory out(true);
   const fs::path png = out.path / "worley.png";
-  const Run r = run_nephele("noise --width 16 --height 8 --depth 4 --cells 4 --seed 9 --out " + png.string());
+  const Run r = run("noise --width 16 --height 8 --depth 4 --cells 4 --seed 9 --out " + png.string());
   INFO(r.output);
   REQUIRE(r.exit_code == 0);
   const auto image = output::read_image(png);
@@ -253,15 +228,15 @@ TEST_CASE("nephele noise writes the slice atlas and a sidecar that describes it"
 }
 
 TEST_CASE("nephele noise writes float EXR atlases 16 bit PNGs and raw volumes", "[cli][noise]") {
-  TemporaryDirectory out;
+  TemporaryDirectory out(true);
   const std::string common = " --size 16 --cells 2 --worley-octaves 2 --type perlin-worley --channels rgb --seed 4";
-  const Run exr = run_nephele("noise" + common + " --out " + (out.path / "t.exr").string());
+  const Run exr = run("noise" + common + " --out " + (out.path / "t.exr").string());
   INFO(exr.output);
   REQUIRE(exr.exit_code == 0);
   const auto image = output::read_image(out.path / "t.exr");
   CHECK(image.width == 16 * 16);
   CHECK(image.channels == 3);
-  const Run raw = run_nephele("noise" + common + " --out " + (out.path / "t.raw").string());
+  const Run raw = run("noise" + common + " --out " + (out.path / "t.raw").string());
   REQUIRE(raw.exit_code == 0);
   const std::string bytes = read_file(out.path / "t.raw");
   REQUIRE(bytes.size() == 16 * 16 * 16 * 3 * sizeof(float));
@@ -277,15 +252,15 @@ TEST_CASE("nephele noise writes float EXR atlases 16 bit PNGs and raw volumes", 
   CHECK(sidecar.at("format").as_string() == "raw-float32-little-endian");
   CHECK(sidecar.at("channels").as_string() == "rgb");
   CHECK(sidecar.at("channel_parameters").as_array().size() == 3);
-  const Run png16 = run_nephele("noise" + common + " --bits 16 --out " + (out.path / "t16.png").string());
+  const Run png16 = run("noise" + common + " --bits 16 --out " + (out.path / "t16.png").string());
   REQUIRE(png16.exit_code == 0);
   const auto deep = output::read_image(out.path / "t16.png");
   for (size_t k = 0; k < deep.pixels.size(); ++k) REQUIRE(deep.pixels[k] == Approx(image.pixels[k]).margin(0.5 / 65535 + 1e-6));
 }
 
 TEST_CASE("stretch maps each channel's range onto 0 to 1 and records the range before", "[cli][noise]") {
-  TemporaryDirectory out;
-  const Run r = run_nephele("noise --size 16 --cells 2 --channels rg --type perlin --stretch --out " +
+  TemporaryDirectory out(true);
+  const Run r = run("noise --size 16 --cells 2 --channels rg --type perlin --stretch --out " +
                             (out.path / "s.exr").string());
   INFO(r.output);
   REQUIRE(r.exit_code == 0);

@@ -12,44 +12,21 @@
 #include <set>
 #include <sstream>
 
+#include "cli_support.hpp"
 #include "numerics/work_precision.hpp"
 #include "util/json.hpp"
 
 namespace fs = std::filesystem;
 using namespace nephele;
+using test::read_file;
+using test::Run;
+using test::run;
+using test::run_command;
+using test::TemporaryDirectory;
 using numerics::CurlMode;
 using numerics::Integrator;
 
 namespace {
-
-struct Run {
-  int exit_code;
-  std::string output;  // stdout and stderr
-};
-
-Run run_command(const std::string& command) {
-  const fs::path log = fs::temp_directory_path() / ("nephele_report_" + std::to_string(std::random_device{}()) + ".log");
-  const int status = std::system((command + " > " + log.string() + " 2>&1").c_str());
-  std::ifstream in(log);
-  std::stringstream text;
-  text << in.rdbuf();
-  fs::remove(log);
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, text.str()};
-}
-
-Run run(const std::string& arguments) { return run_command(std::string(NEPHELE_EXECUTABLE) + " " + arguments); }
-
-struct TemporaryDirectory {
-  fs::path path = fs::temp_directory_path() / ("nephele_report_test_" + std::to_string(std::random_device{}()));
-  ~TemporaryDirectory() { fs::remove_all(path); }
-};
-
-std::string read_file(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
 
 std::vector<std::string> split(const std::string& line, char separator) {
   std::vector<std::string> fields;

@@ -1,0 +1,58 @@
+#pragma once
+// Running the nephele executable from tests: its exit code and output, temporary directories,
+// whole files as text.
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <sstream>
+#include <string>
+
+namespace nephele::test {
+
+struct Run {
+  int exit_code;
+  std::string output;  // stdout and stderr
+};
+
+inline std::string read_file(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// Runs a shell command line with stdout and stderr captured in a temporary log.
+inline Run run_command(const std::string& command) {
+  const std::filesystem::path log =
+      std::filesystem::temp_directory_path() / ("nephele_run_" + std::to_string(std::random_device{}()) + ".log");
+  const int status = std::system((command + " > " + log.string() + " 2>&1").c_str());
+  const std::string output = read_file(log);
+  std::filesystem::remove(log);
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, output};
+}
+
+// nephele with the arguments, after `environment` (VAR=value ... or empty).
+inline Run run_with_environment(const std::string& environment, const std::string& arguments) {
+  return run_command(environment + " " + std::string(NEPHELE_EXECUTABLE) + " " + arguments);
+}
+
+inline Run run(const std::string& arguments) { return run_with_environment("", arguments); }
+
+// A fresh path under the temporary directory, removed with everything in it at the end of the
+// scope; created at once with create = true (else left to the command under test).
+struct TemporaryDirectory {
+  std::filesystem::path path =
+      std::filesystem::temp_directory_path() / ("nephele_test_" + std::to_string(std::random_device{}()));
+  explicit TemporaryDirectory(bool create = false) {
+    if (create) std::filesystem::create_directories(path);
+  }
+  ~TemporaryDirectory() { std::filesystem::remove_all(path); }
+  TemporaryDirectory(const TemporaryDirectory&) = delete;
+  TemporaryDirectory& operator=(const TemporaryDirectory&) = delete;
+  bool empty() const { return std::filesystem::is_empty(path); }
+};
+
+}  // namespace nephele::test
