@@ -20,8 +20,6 @@ using numerics::CurlMode;
 using numerics::Integrator;
 
 using test::as_vec4;
-using test::index;
-using test::velocity_lipschitz;
 
 namespace {
 
