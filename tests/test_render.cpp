@@ -2,6 +2,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <stdexcept>
 
 #include "gl_support.hpp"
 #include "regional/scene.hpp"
@@ -205,4 +206,22 @@ TEST_CASE("pixels whose loops reach llvmpipe's iteration limit are counted and o
   CHECK(r.loop_limited_pixels >= 1u);
   CHECK(r.loop_limited_pixels <= 16u);
   CHECK(stats(r).finite);
+}
+
+TEST_CASE("renders that share a noise volume give the image of their own volume and build no second one", "[render]") {
+  test::test_context();
+  std::vector<CloudLayer> layers = {{CloudType::cumulus, CoverageChannel::low, 1500, 3000, 1e-2f, 0, 0, 0, "test"}};
+  const WeatherField field = uniform_field(0.6f, 0, 0);
+  const render::RenderSettings settings = quick();
+  const render::NoiseVolume noise(settings.noise_size, settings.seed);
+  const auto own = render::render_clouds(small_camera(), layers, field, noon, settings);
+  const auto shared = render::render_clouds(small_camera(), layers, field, noon, settings, {0, 1}, 0, &noise);
+  // The same shader on the same deterministic volume: bit for bit.
+  CHECK(shared.radiance.pixels == own.radiance.pixels);
+  CHECK(contains(own.passes, "noise_volume"));
+  CHECK_FALSE(contains(shared.passes, "noise_volume"));
+  render::RenderSettings other_seed = settings;
+  other_seed.seed = settings.seed + 1;
+  CHECK_THROWS_AS(render::render_clouds(small_camera(), layers, field, noon, other_seed, {0, 1}, 0, &noise),
+                  std::logic_error);
 }

@@ -58,11 +58,11 @@ float coverage_at(vec3 p, int channel) {
   return texture(weather_field, vec3(uv, float(channel))).x;
 }
 
-// The shape-noise lookups of a layer at p: the shape value (0 outside the layer or where the
-// weather gives no cover), with the height fraction h, coverage c and the noise coordinates and
-// mip level that density_at goes on with.
+// A layer's shape-noise lookups at a point: the height fraction h in the layer, the coverage c,
+// the shape value (0 outside the layer or where the weather gives no cover) and the base detail
+// value, with the noise coordinates and mip level that a detail lookup goes on with.
 struct ShapeSample {
-  float shape, h, c, lod, detail;
+  float h, c, shape, detail, lod;
   vec3 coordinates;
 };
 
@@ -70,48 +70,51 @@ struct ShapeSample {
 // which picks the noise volume's mip level so that distant clouds do not alias into speckle.
 ShapeSample shape_at(vec3 p, vec3 centre, int layer, float footprint) {
   LayerParams l = u_layers[layer];
-  ShapeSample sample_;
+  ShapeSample q;
   float altitude = length(p - centre) - u_earth_radius;
-  sample_.h = (altitude - l.base) / (l.top - l.base);
-  sample_.c = coverage_at(p, l.channel);
-  sample_.shape = 0.0f;
-  sample_.detail = 0.0f;
-  sample_.lod = 0.0f;
-  sample_.coordinates = vec3(0.0f);
-  if (sample_.c <= 0.0f || sample_.h < 0.0f || sample_.h > 1.0f) return sample_;
+  q.h = (altitude - l.base) / (l.top - l.base);
+  q.c = coverage_at(p, l.channel);
+  q.shape = 0.0f;
+  q.detail = 0.0f;
+  q.lod = 0.0f;
+  q.coordinates = vec3(0.0f);
+  if (q.c <= 0.0f || q.h < 0.0f || q.h > 1.0f) return q;
   // Noise coordinates in the wind's frame, moved by the wind's offset (tau).
   vec2 along_across = vec2(dot(p.xy, l.wind), dot(p.xy, vec2(-l.wind.y, l.wind.x))) - l.noise_offset;
   vec2 period = noise_period(l.type);
-  sample_.coordinates = vec3(along_across / period, altitude / period.y);
+  q.coordinates = vec3(along_across / period, altitude / period.y);
   float texel = period.x / u_noise_texels;
-  sample_.lod = log2(max(footprint / texel, 1.0f));
-  vec2 noise = textureLod(noise_volume, sample_.coordinates, sample_.lod).xy;
+  q.lod = log2(max(footprint / texel, 1.0f));
+  vec2 noise = textureLod(noise_volume, q.coordinates, q.lod).xy;
   // A second lookup at an incommensurate, rotated scale (7.3 periods) breaks the volume's tiling,
   // which would otherwise line distant clouds up in a regular array.
-  vec3 c = sample_.coordinates;
-  vec3 macro_coordinates = vec3(0.0822f * c.x + 0.0548f * c.y, -0.0548f * c.x + 0.0822f * c.y, 0.1371f * c.z + 0.37f);
-  float macro = textureLod(noise_volume, macro_coordinates, max(sample_.lod - 3.0f, 0.0f)).x;
-  sample_.shape = uniform_from_mix(mix(noise.x, macro, 0.4f), 0.4f);
-  sample_.detail = noise.y;
-  return sample_;
+  vec3 x = q.coordinates;
+  vec3 macro_coordinates = vec3(0.0822f * x.x + 0.0548f * x.y, -0.0548f * x.x + 0.0822f * x.y, 0.1371f * x.z + 0.37f);
+  float macro = textureLod(noise_volume, macro_coordinates, max(q.lod - 3.0f, 0.0f)).x;
+  q.shape = uniform_from_mix(mix(noise.x, macro, 0.4f), 0.4f);
+  q.detail = noise.y;
+  return q;
 }
 
-// The largest density the layer can have at p whatever the detail noise (every density grows
-// with it, tested): zero over most of the sky, and cheap (no detail lookup).
-float density_bound_at(vec3 p, vec3 centre, int layer, float footprint) {
+// The largest extinction the layer can have at the sample whatever the detail noise (every
+// density grows with it, tested): zero over most of the sky, and it needs no detail lookup.
+// (cloud_density is zero outside the layer and without cover.)
+float extinction_bound(int layer, ShapeSample q) {
   LayerParams l = u_layers[layer];
-  ShapeSample q = shape_at(p, centre, layer, footprint);
-  if (q.c <= 0.0f || q.h < 0.0f || q.h > 1.0f) return 0.0f;
   return l.extinction * cloud_density(l.type, q.h, q.c, q.shape, 1.0f, l.morph);
 }
 
-// fine: also read the detail noise (the light march does without it).
+float extinction_bound_at(vec3 p, vec3 centre, int layer, float footprint) {
+  return extinction_bound(layer, shape_at(p, centre, layer, footprint));
+}
+
+// Extinction (1/m) of a layer at p. fine: also read the detail noise (the light march does
+// without it).
 float density_at(vec3 p, vec3 centre, int layer, float footprint, bool fine) {
   LayerParams l = u_layers[layer];
   ShapeSample q = shape_at(p, centre, layer, footprint);
-  if (q.c <= 0.0f || q.h < 0.0f || q.h > 1.0f) return 0.0f;
   // Where even the bound is zero (most of the sky) the detail lookup is skipped.
-  if (cloud_density(l.type, q.h, q.c, q.shape, 1.0f, l.morph) <= 0.0f) return 0.0f;
+  if (extinction_bound(layer, q) <= 0.0f) return 0.0f;
   float detail = fine ? textureLod(noise_volume, q.coordinates * 4.0f, q.lod + 2.0f).y : q.detail;
   return l.extinction * cloud_density(l.type, q.h, q.c, q.shape, mix(q.detail, detail, 0.5f), l.morph);
 }
@@ -207,7 +210,7 @@ void main() {
       float t = (float(i) + jitter) / n;
       float s = a + (b - a) * t * t;
       float coarse = (b - a) * (t1 * t1 - t0 * t0);
-      bool cloudy = density_bound_at(s * d, centre, layer, max(coarse, s * u_pixel_angle)) > 0.0f;
+      bool cloudy = extinction_bound_at(s * d, centre, layer, max(coarse, s * u_pixel_angle)) > 0.0f;
       if (!cloudy && !was_cloudy) continue;
       was_cloudy = cloudy;
       for (int j = 0; j < VIEW_REFINE && cloud_transmittance > 0.01f; ++j) {

@@ -7,6 +7,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <memory>
+#include <stdexcept>
 
 #include "gl/compute_program.hpp"
 #include "gl/textures.hpp"
@@ -81,9 +83,29 @@ glm::vec3 sky_irradiance(glm::vec3 sun, double earth_radius, double altitude_m) 
   return irradiance;
 }
 
+NoiseVolume::NoiseVolume(int size, std::uint32_t seed) : size_(size), seed_(seed) {
+  gl::ComputeProgram program("render/noise_volume.comp");
+  texture_ = make_texture(GL_TEXTURE_3D);
+  const int levels = 1 + static_cast<int>(std::log2(size));
+  glTextureStorage3D(texture_, levels, GL_RG32F, size, size, size);
+  glTextureParameteri(texture_, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+  glTextureParameteri(texture_, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  for (GLenum wrap : {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T, GL_TEXTURE_WRAP_R}) glTextureParameteri(texture_, wrap, GL_REPEAT);
+  program.set("u_seed", static_cast<unsigned>(seed));
+  glBindImageTexture(0, texture_, 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RG32F);
+  program.dispatch_covering(size, size, size);
+  gl::image_barrier();
+  equalise_histogram(texture_, size);
+  glGenerateTextureMipmap(texture_);
+}
+
+NoiseVolume::~NoiseVolume() {
+  if (texture_ != 0) glDeleteTextures(1, &texture_);
+}
+
 RenderResult render_clouds(const Camera& camera, const std::vector<regional::CloudLayer>& layers,
                            const regional::WeatherField& field, double unix_seconds, const RenderSettings& settings,
-                           glm::dvec2 wind_towards, double wind_speed) {
+                           glm::dvec2 wind_towards, double wind_speed, const NoiseVolume* noise) {
   RenderResult result;
   auto timed = [&](const std::string& name, auto&& work) {
     glFinish();
@@ -105,24 +127,15 @@ RenderResult render_clouds(const Camera& camera, const std::vector<regional::Clo
   }
 
   // Noise volume, only when a layer will read it.
-  GLuint noise = 0;
+  std::unique_ptr<NoiseVolume> own_noise;
   if (!active.empty()) {
-    timed("noise_volume", [&] {
-      gl::ComputeProgram program("render/noise_volume.comp");
-      noise = make_texture(GL_TEXTURE_3D);
-      const int levels = 1 + static_cast<int>(std::log2(settings.noise_size));
-      glTextureStorage3D(noise, levels, GL_RG32F, settings.noise_size, settings.noise_size, settings.noise_size);
-      glTextureParameteri(noise, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
-      glTextureParameteri(noise, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-      for (GLenum wrap : {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T, GL_TEXTURE_WRAP_R}) glTextureParameteri(noise, wrap, GL_REPEAT);
-      program.set("u_seed", static_cast<unsigned>(settings.seed));
-      glBindImageTexture(0, noise, 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RG32F);
-      program.dispatch_covering(settings.noise_size, settings.noise_size, settings.noise_size);
-      gl::image_barrier();
-      equalise_histogram(noise, settings.noise_size);
-      glGenerateTextureMipmap(noise);
-    });
-    result.passes.push_back("noise_volume");
+    if (noise == nullptr) {
+      timed("noise_volume", [&] { own_noise = std::make_unique<NoiseVolume>(settings.noise_size, settings.seed); });
+      noise = own_noise.get();
+      result.passes.push_back("noise_volume");
+    } else if (noise->size() != settings.noise_size || noise->seed() != settings.seed) {
+      throw std::logic_error("render_clouds: the shared noise volume was made for other settings");
+    }
   }
 
   GLuint weather = make_texture(GL_TEXTURE_2D_ARRAY);
@@ -194,7 +207,7 @@ RenderResult render_clouds(const Camera& camera, const std::vector<regional::Clo
     program.set("u_pixel_angle", static_cast<float>(pixel_angle));
     program.set("u_noise_texels", static_cast<float>(settings.noise_size));
     image.bind_image(0, GL_WRITE_ONLY);
-    glBindTextureUnit(1, noise);
+    glBindTextureUnit(1, noise != nullptr ? noise->texture() : 0);
     glBindTextureUnit(2, weather);
     GLuint guard = 0;
     const GLuint zero = 0;
@@ -209,7 +222,6 @@ RenderResult render_clouds(const Camera& camera, const std::vector<regional::Clo
   });
   result.passes.push_back("sky");
   result.radiance = {camera.width, camera.height, 4, image.read()};
-  if (noise) glDeleteTextures(1, &noise);
   glDeleteTextures(1, &weather);
   return result;
 }

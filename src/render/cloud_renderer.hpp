@@ -49,11 +49,32 @@ glm::dvec3 sun_direction_enu(double unix_seconds, double latitude_deg, double lo
 // the clouds' ambient light.
 glm::vec3 sky_irradiance(glm::vec3 sun, double earth_radius, double altitude_m);
 
+// The tileable shape and detail noise the marcher reads (render/noise_volume.comp,
+// rank-equalised, mipmapped): size^3 texels, RG. Needs a current OpenGL 4.5 context.
+class NoiseVolume {
+ public:
+  NoiseVolume(int size, std::uint32_t seed);
+  ~NoiseVolume();
+  NoiseVolume(const NoiseVolume&) = delete;
+  NoiseVolume& operator=(const NoiseVolume&) = delete;
+  unsigned texture() const { return texture_; }
+  int size() const { return size_; }
+  std::uint32_t seed() const { return seed_; }
+
+ private:
+  unsigned texture_ = 0;
+  int size_;
+  std::uint32_t seed_;
+};
+
 // Needs a current OpenGL 4.5 context. Layers whose coverage channel is zero everywhere in the
-// field are not marched (their absence is listed in passes).
+// field are not marched (their absence is listed in passes). The noise volume is made when a
+// layer is marched, unless `noise` (of settings.noise_size and settings.seed) is given: renders
+// of one scene with other step counts share it.
 RenderResult render_clouds(const Camera& camera, const std::vector<regional::CloudLayer>& layers,
                            const regional::WeatherField& field, double unix_seconds,
-                           const RenderSettings& settings, glm::dvec2 wind_towards = {0, 1}, double wind_speed = 0);
+                           const RenderSettings& settings, glm::dvec2 wind_towards = {0, 1}, double wind_speed = 0,
+                           const NoiseVolume* noise = nullptr);
 
 // Display encoding for PNG: exposure, the ACES filmic curve fit of Narkowicz (2015), sRGB.
 output::ImageData tone_map(const output::ImageData& radiance, double exposure);

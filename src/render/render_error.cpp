@@ -35,10 +35,15 @@ std::vector<RenderErrorRow> render_error_sweep(const regional::Scene& scene, con
   regional::Scene base = scene;
   base.width = options.width;
   base.height = options.height;
+  // The weather and the noise volume do not depend on the step counts: made once, shared by
+  // every render of the sweep.
+  const PreparedScene prepared = prepare_scene(base);
+  const RenderSettings settings = render_settings(base);
+  const NoiseVolume noise(settings.noise_size, settings.seed);
   regional::Scene reference_scene = base;
   reference_scene.view_steps = options.reference_view;
   reference_scene.light_steps = options.reference_light;
-  const SceneRender reference = render_scene(reference_scene);
+  const SceneRender reference = render_prepared(prepared, reference_scene, &noise);
   if (reference.render.loop_limited_pixels > 0)
     std::cerr << "warning: the " << options.reference_view << " x " << options.reference_light << " reference has "
               << reference.render.loop_limited_pixels
@@ -54,7 +59,7 @@ std::vector<RenderErrorRow> render_error_sweep(const regional::Scene& scene, con
       regional::Scene s = base;
       s.view_steps = v;
       s.light_steps = l;
-      const SceneRender r = render_scene(s);
+      const SceneRender r = render_prepared(prepared, s, &noise);
       double time = 0;
       for (const auto& [name, ms] : r.render.timings_ms)
         if (name == "clouds") time = ms;

@@ -47,14 +47,15 @@ Camera camera_of(const regional::Scene& scene) {
 
 }  // namespace
 
-SceneRender render_scene(const regional::Scene& scene) {
-  SceneRender out;
+PreparedScene prepare_scene(const regional::Scene& scene) {
+  PreparedScene prepared;
+  SceneRender& out = prepared.partial;
   out.camera = camera_of(scene);
-  const double time = parse_utc_time(scene.time);
+  const double time = prepared.time = parse_utc_time(scene.time);
   const GeographicLib::LocalCartesian frame(out.camera.latitude_deg, out.camera.longitude_deg, 0.0);
-  regional::WeatherField field;
-  glm::dvec2 wind(0.0, 1.0);
-  double wind_speed = 0.0;
+  regional::WeatherField& field = prepared.field;
+  glm::dvec2& wind = prepared.wind;
+  double& wind_speed = prepared.wind_speed;
 
   if (!scene.weather.empty()) {
     std::vector<regional::Station> stations;
@@ -101,15 +102,27 @@ SceneRender render_scene(const regional::Scene& scene) {
     out.layers = regional::choose_layers(out.weather_at_camera, {});
   }
 
+  return prepared;
+}
+
+RenderSettings render_settings(const regional::Scene& scene) {
   RenderSettings settings;
   settings.view_steps = scene.view_steps;
   settings.light_steps = scene.light_steps;
   settings.sky_steps = scene.sky_steps;
   settings.seed = scene.seed;
-  out.render = render_clouds(out.camera, out.layers, field, time, settings, wind, wind_speed);
+  return settings;
+}
+
+SceneRender render_prepared(const PreparedScene& prepared, const regional::Scene& scene, const NoiseVolume* noise) {
+  SceneRender out = prepared.partial;
+  out.render = render_clouds(out.camera, out.layers, prepared.field, prepared.time, render_settings(scene),
+                             prepared.wind, prepared.wind_speed, noise);
   out.passes.insert(out.passes.end(), out.render.passes.begin(), out.render.passes.end());
   return out;
 }
+
+SceneRender render_scene(const regional::Scene& scene) { return render_prepared(prepare_scene(scene), scene); }
 
 json::Value scene_sidecar(const SceneRender& r, const regional::Scene& scene) {
   json::Value root;

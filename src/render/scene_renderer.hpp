@@ -19,7 +19,23 @@ struct SceneRender {
   regional::WeatherSample weather_at_camera;  // what the layer rules read
 };
 
-// Needs a current OpenGL 4.5 context. Throws regional::WeatherError / SceneError for bad input.
+// What a scene needs before its march: the camera, the weather field (from the stations or the
+// global cover), the layers and the wind. Made once, it can be rendered with any step counts.
+struct PreparedScene {
+  SceneRender partial;  // camera, layers, weather source and sample, the passes so far
+  regional::WeatherField field;
+  double time = 0;      // Unix seconds
+  glm::dvec2 wind{0.0, 1.0};  // direction the wind blows towards (east, north)
+  double wind_speed = 0.0;    // m/s
+};
+
+// Need a current OpenGL 4.5 context. Throw regional::WeatherError / SceneError for bad input.
+PreparedScene prepare_scene(const regional::Scene& scene);
+// The march of a prepared scene with the scene's step counts and seed (its camera and weather
+// come from `prepared`); `noise` as in render_clouds.
+RenderSettings render_settings(const regional::Scene& scene);
+SceneRender render_prepared(const PreparedScene& prepared, const regional::Scene& scene,
+                            const NoiseVolume* noise = nullptr);
 SceneRender render_scene(const regional::Scene& scene);
 
 // Writes each output (.png tone-mapped sRGB, .exr linear radiance with cloud opacity in A) and
