@@ -2,8 +2,8 @@
 
 namespace nephele::test {
 
-gl::EglContext& test_context() {
-  static gl::EglContext context;
+gpu::EglContext& test_context() {
+  static gpu::EglContext context;
   return context;
 }
 
@@ -26,7 +26,7 @@ std::string probe_source(const std::string& in_type, const std::string& out_type
 
 void run_probe(const std::string& source, const void* inputs, size_t input_bytes, void* outputs,
                size_t output_bytes, size_t count) {
-  auto program = gl::ComputeProgram::from_text("tests/probe.comp", source);
+  auto program = gpu::ComputeProgram::from_text("tests/probe.comp", source);
   GLuint buffers[2];
   glCreateBuffers(2, buffers);
   glNamedBufferStorage(buffers[0], static_cast<GLsizeiptr>(input_bytes), inputs, 0);

@@ -7,12 +7,12 @@
 #include <string>
 #include <vector>
 
-#include "gl/compute_program.hpp"
-#include "gl/egl_context.hpp"
+#include "gpu/compute_program.hpp"
+#include "gpu/egl_context.hpp"
 
 namespace nephele::test {
 
-gl::EglContext& test_context();
+gpu::EglContext& test_context();
 
 template <class T> struct GlslTypeName;
 template <> struct GlslTypeName<glm::vec4> { static constexpr const char* name = "vec4"; };

@@ -10,8 +10,8 @@
 #include <sstream>
 
 #include "cli_support.hpp"
-#include "export/image_files.hpp"
-#include "util/json.hpp"
+#include "io/image_files.hpp"
+#include "core/json.hpp"
 
 namespace fs = std::filesystem;
 using namespace nephele;
@@ -27,7 +27,7 @@ TEST_CASE("generate writes every output readable with the right sizes and a vali
   INFO(r.output);
   REQUIRE(r.exit_code == 0);
   for (const char* face : {"px", "nx", "py", "ny", "pz", "nz"}) {
-    const auto image = output::read_image(out.path / (std::string("cover_") + face + ".exr"));
+    const auto image = io::read_image(out.path / (std::string("cover_") + face + ".exr"));
     CHECK(image.width == 8);
     CHECK(image.height == 8);
     CHECK(image.channels == 1);
@@ -36,10 +36,10 @@ TEST_CASE("generate writes every output readable with the right sizes and a vali
       REQUIRE(v <= 1.0f);
     }
   }
-  const auto equirect = output::read_image(out.path / "cover_equirect.exr");
+  const auto equirect = io::read_image(out.path / "cover_equirect.exr");
   CHECK(equirect.width == 32);
   CHECK(equirect.height == 16);
-  const auto preview = output::read_image(out.path / "cover_equirect.png");
+  const auto preview = io::read_image(out.path / "cover_equirect.png");
   CHECK(preview.width == 32);
   CHECK(preview.height == 16);
   // The preview is the equirect quantised linearly: round(255 v) / 255.
@@ -139,7 +139,7 @@ TEST_CASE("render writes a tone-mapped PNG and a sidecar listing the passes", "[
                     "--weather " + std::string(NEPHELE_SOURCE_DIR) + "/scenes/weather/bern-summer.json --out " + png);
   INFO(r.output);
   REQUIRE(r.exit_code == 0);
-  const auto image = output::read_image(png);
+  const auto image = io::read_image(png);
   CHECK(image.width == 24);
   CHECK(image.height == 12);
   CHECK(image.channels == 3);

@@ -3,7 +3,7 @@
 
 #include <cmath>
 
-#include "export/equirect.hpp"
+#include "cover/equirect.hpp"
 #include "gl_support.hpp"
 #include "shader_math/shader_math.hpp"
 
@@ -12,7 +12,7 @@ using namespace nephele::glsl;
 
 TEST_CASE("equirect rows are geodetic latitudes turned into geocentric directions", "[equirect]") {
   const int height = 180;
-  const auto rows = output::geodetic_row_directions(height);
+  const auto rows = cover::geodetic_row_directions(height);
   // WGS84: tan(geocentric) = (1 - f)^2 tan(geodetic) on the surface, f = 1/298.257223563.
   const double f = 1 / 298.257223563;
   for (int j = 0; j < height; ++j) {
@@ -34,10 +34,10 @@ TEST_CASE("equirect export puts longitude -180 at the left edge and north at the
       for (int j = 0; j < size; ++j)
         for (int i = 0; i < size; ++i)
           texels[(face * size + j) * size + i] = texel_direction(face, i, j, size)[axis];
-    gl::Texture cube = gl::Texture::cube(size, GL_R32F);
+    gpu::Texture cube = gpu::Texture::cube(size, GL_R32F);
     cube.write(texels);
-    const auto map = output::equirect_from_cube(cube, width, height);
-    const auto rows = output::geodetic_row_directions(height);
+    const auto map = cover::equirect_from_cube(cube, width, height);
+    const auto rows = cover::geodetic_row_directions(height);
     double worst = 0;
     for (int j = 0; j < height; ++j)
       for (int i = 0; i < width; ++i) {

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "cover/cover_parameters.hpp"
-#include "numerics/integrators.hpp"
+#include "cover/integrators.hpp"
 #include "shader_math/shader_math.hpp"
 
 using namespace nephele;
@@ -170,9 +170,9 @@ TEST_CASE("beyond the stable step Euler goes wrong while the adaptive scheme sub
   const vec3 start = normalize(vec3(1.0f, 0.0f, 1.0f));
   const double angle = static_cast<double>(omega) * h * steps;
   const dvec3 exact(std::cos(angle) / std::sqrt(2.0), std::sin(angle) / std::sqrt(2.0), 1 / std::sqrt(2.0));
-  for (auto integrator : {numerics::Integrator::euler, numerics::Integrator::heun, numerics::Integrator::rk4}) {
-    INFO(numerics::integrator_name(integrator));
-    CHECK(h * omega > numerics::stability_limit(integrator));
+  for (auto integrator : {cover::Integrator::euler, cover::Integrator::heun, cover::Integrator::rk4}) {
+    INFO(cover::integrator_name(integrator));
+    CHECK(h * omega > cover::stability_limit(integrator));
     const vec3 w = integrate_fixed(static_cast<int>(integrator), start, steps, h, rotation);
     CHECK(std::abs(length(w) - 1.0f) < 1e-6f);  // projected: garbage, but on the sphere
     CHECK(distance(dvec3(w), exact) > 0.1);
@@ -199,17 +199,17 @@ TEST_CASE("the stable limits are the stability intervals of each scheme", "[inte
   auto heun = [](std::complex<double> z) { return 1.0 + z + z * z / 2.0; };
   auto rk3 = [](std::complex<double> z) { return 1.0 + z + z * z / 2.0 + z * z * z / 6.0; };
   auto rk4 = [](std::complex<double> z) { return 1.0 + z + z * z / 2.0 + z * z * z / 6.0 + z * z * z * z / 24.0; };
-  const double e = numerics::stability_limit(numerics::Integrator::euler);
+  const double e = cover::stability_limit(cover::Integrator::euler);
   CHECK(std::abs(euler({-e, 0})) <= 1.0 + 1e-12);
   CHECK(std::abs(euler({-e - 0.01, 0})) > 1.0);
-  const double h = numerics::stability_limit(numerics::Integrator::heun);
+  const double h = cover::stability_limit(cover::Integrator::heun);
   CHECK(std::abs(heun({-h, 0})) <= 1.0 + 1e-12);
   CHECK(std::abs(heun({-h - 0.01, 0})) > 1.0);
-  const double r = numerics::stability_limit(numerics::Integrator::rk4);  // the real axis binds
+  const double r = cover::stability_limit(cover::Integrator::rk4);  // the real axis binds
   CHECK(std::abs(rk4({-r, 0})) <= 1.0 + 1e-3);
   CHECK(std::abs(rk4({-r - 0.01, 0})) > 1.0);
   CHECK(std::abs(rk4({0, r})) <= 1.0);
-  const double a = numerics::stability_limit(numerics::Integrator::adaptive);  // the imaginary axis binds
+  const double a = cover::stability_limit(cover::Integrator::adaptive);  // the imaginary axis binds
   CHECK(std::abs(rk3({0, a})) <= 1.0 + 1e-3);
   CHECK(std::abs(rk3({0, a + 0.01})) > 1.0);
   CHECK(std::abs(rk3({-a, 0})) <= 1.0);

@@ -1,6 +1,6 @@
 #include <catch2/catch.hpp>
 
-#include "util/json.hpp"
+#include "core/json.hpp"
 
 using namespace nephele;
 

@@ -12,15 +12,15 @@
 #include <random>
 #include <sstream>
 
-#include "cli/noise_options.hpp"
-#include "cli/options.hpp"
-#include "export/image_files.hpp"
+#include "apps/cli/noise_options.hpp"
+#include "apps/cli/options.hpp"
+#include "io/image_files.hpp"
 #include "cli_support.hpp"
 #include "gl_support.hpp"
-#include "noise/noise_files.hpp"
+#include "io/noise_files.hpp"
 #include "noise/noise_texture.hpp"
 #include "shader_math/shader_math.hpp"
-#include "util/json.hpp"
+#include "core/json.hpp"
 
 namespace fs = std::filesystem;
 using namespace nephele;
@@ -122,7 +122,7 @@ TEST_CASE("the slice atlas puts slice z at columns z times width", "[noise]") {
     for (int y = 0; y < 2; ++y)
       for (int x = 0; x < 3; ++x)
         for (int c = 0; c < 2; ++c) v.values.push_back(float(1000 * c + 100 * z + 10 * y + x));
-  const std::vector<float> atlas = noise::slice_atlas(v);
+  const std::vector<float> atlas = io::slice_atlas(v);
   const int atlas_width = 3 * 4;
   for (int z = 0; z < 4; ++z)
     for (int y = 0; y < 2; ++y)
@@ -204,7 +204,7 @@ TEST_CASE("nephele noise writes the slice atlas and a sidecar that describes it"
   const Run r = run("noise --width 16 --height 8 --depth 4 --cells 4 --seed 9 --out " + png.string());
   INFO(r.output);
   REQUIRE(r.exit_code == 0);
-  const auto image = output::read_image(png);
+  const auto image = io::read_image(png);
   CHECK(image.width == 16 * 4);
   CHECK(image.height == 8);
   CHECK(image.channels == 1);
@@ -233,7 +233,7 @@ TEST_CASE("nephele noise writes float EXR atlases 16 bit PNGs and raw volumes", 
   const Run exr = run("noise" + common + " --out " + (out.path / "t.exr").string());
   INFO(exr.output);
   REQUIRE(exr.exit_code == 0);
-  const auto image = output::read_image(out.path / "t.exr");
+  const auto image = io::read_image(out.path / "t.exr");
   CHECK(image.width == 16 * 16);
   CHECK(image.channels == 3);
   const Run raw = run("noise" + common + " --out " + (out.path / "t.raw").string());
@@ -254,7 +254,7 @@ TEST_CASE("nephele noise writes float EXR atlases 16 bit PNGs and raw volumes", 
   CHECK(sidecar.at("channel_parameters").as_array().size() == 3);
   const Run png16 = run("noise" + common + " --bits 16 --out " + (out.path / "t16.png").string());
   REQUIRE(png16.exit_code == 0);
-  const auto deep = output::read_image(out.path / "t16.png");
+  const auto deep = io::read_image(out.path / "t16.png");
   for (size_t k = 0; k < deep.pixels.size(); ++k) REQUIRE(deep.pixels[k] == Approx(image.pixels[k]).margin(0.5 / 65535 + 1e-6));
 }
 
@@ -264,7 +264,7 @@ TEST_CASE("stretch maps each channel's range onto 0 to 1 and records the range b
                             (out.path / "s.exr").string());
   INFO(r.output);
   REQUIRE(r.exit_code == 0);
-  const auto image = output::read_image(out.path / "s.exr");
+  const auto image = io::read_image(out.path / "s.exr");
   const json::Value sidecar = json::parse(read_file(out.path / "s.json"));
   for (int c = 0; c < 2; ++c) {
     float lo = 1.0f, hi = 0.0f;

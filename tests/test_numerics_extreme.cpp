@@ -11,13 +11,13 @@
 #include "cover/global_cover.hpp"
 #include "cube_fields.hpp"
 #include "gl_support.hpp"
-#include "numerics/integrators.hpp"
+#include "cover/integrators.hpp"
 #include "shader_math/shader_math.hpp"
 
 using namespace nephele;
 using namespace nephele::glsl;
-using numerics::CurlMode;
-using numerics::Integrator;
+using cover::CurlMode;
+using cover::Integrator;
 
 using test::as_vec4;
 
@@ -34,7 +34,7 @@ std::vector<vec3> gpu_warp(cover::GlobalCover& cover, const std::vector<vec3>& p
   std::vector<float> texels(static_cast<size_t>(4 * 6 * m * m), 0.0f);
   for (size_t k = 0; k < 6u * m * m; ++k)
     for (int c = 0; c < 3; ++c) texels[4 * k + c] = points[k % points.size()][c];
-  const gl::Texture starts = gl::Texture::cube(m, GL_RGBA32F), ends = gl::Texture::cube(m, GL_RGBA32F);
+  const gpu::Texture starts = gpu::Texture::cube(m, GL_RGBA32F), ends = gpu::Texture::cube(m, GL_RGBA32F);
   starts.write(texels);
   cover.warp_points(starts, ends);
   const auto warped = as_vec4(ends.read());
@@ -71,12 +71,12 @@ struct VariantResult {
 std::vector<VariantResult> check_every_variant(const cover::CoverParameters& base, const std::vector<vec3>& points = {}) {
   test::test_context();
   std::vector<VariantResult> results;
-  for (Integrator integrator : numerics::all_integrators())
+  for (Integrator integrator : cover::all_integrators())
     for (CurlMode mode : {CurlMode::sampled, CurlMode::procedural}) {
       cover::CoverParameters p = base;
       p.integrator = integrator;
       p.curl_mode = mode;
-      INFO(numerics::integrator_name(integrator) << " " << numerics::curl_mode_name(mode) << " size " << p.size);
+      INFO(cover::integrator_name(integrator) << " " << cover::curl_mode_name(mode) << " size " << p.size);
       cover::GlobalCover cover(p);
       cover.run();
       const auto& diagnostics = cover.diagnose();
@@ -237,7 +237,7 @@ TEST_CASE("extreme: zero steps are the identity and huge step counts converge", 
     cover.run();
     const auto warp = as_vec4(cover.warp_field().read());
     for (size_t k = 0; k < warp.size(); ++k) {
-      INFO(numerics::integrator_name(integrator) << " texel " << k);
+      INFO(cover::integrator_name(integrator) << " texel " << k);
       REQUIRE(on_sphere(vec3(warp[k])));
       CHECK(length(vec3(warp[k]) - vec3(expected[k])) < huge.iterations * 1e-7f);
     }

@@ -9,14 +9,14 @@
 #include "cover/global_cover.hpp"
 #include "cube_fields.hpp"
 #include "gl_support.hpp"
-#include "numerics/integrators.hpp"
-#include "numerics/reference_flow.hpp"
+#include "cover/integrators.hpp"
+#include "studies/reference_flow.hpp"
 #include "shader_math/shader_math.hpp"
 
 using namespace nephele;
 using namespace nephele::glsl;
-using numerics::CurlMode;
-using numerics::Integrator;
+using cover::CurlMode;
+using cover::Integrator;
 
 using test::as_vec4;
 using test::index;
@@ -59,7 +59,7 @@ const Integrator fixed_steps[] = {Integrator::euler, Integrator::heun, Integrato
 // e^(h L) per step, L a Lipschitz bound of the velocity (bilinear sampling: the rate between
 // texel centres, doubled for the seams), so over K steps by e^(T L).
 double rounding_bound(Integrator integrator, int steps, double flow_time, double lipschitz) {
-  return 8 * 2.4e-7 * numerics::evaluations_per_step(integrator) * steps * std::exp(flow_time * lipschitz);
+  return 8 * 2.4e-7 * cover::evaluations_per_step(integrator) * steps * std::exp(flow_time * lipschitz);
 }
 
 }  // namespace
@@ -79,7 +79,7 @@ TEST_CASE("each fixed-step warp pass agrees with its CPU twin on the sampled cur
       worst = std::max(worst, static_cast<double>(length(gpu - cpu)));
       REQUIRE(std::abs(length(gpu) - 1.0f) < 1e-6f);
     }
-    INFO(numerics::integrator_name(integrator) << ": largest difference " << worst << ", bound " << tolerance);
+    INFO(cover::integrator_name(integrator) << ": largest difference " << worst << ", bound " << tolerance);
     CHECK(worst <= tolerance);
   }
 }
@@ -99,7 +99,7 @@ TEST_CASE("each fixed-step warp pass agrees with its CPU twin on the procedural 
       const vec3 cpu = integrate_fixed(static_cast<int>(integrator), vec3(w.identity[k]), p.iterations, p.step, curl);
       worst = std::max(worst, static_cast<double>(length(vec3(w.warp[k]) - cpu)));
     }
-    INFO(numerics::integrator_name(integrator) << ": largest difference " << worst << ", bound " << tolerance);
+    INFO(cover::integrator_name(integrator) << ": largest difference " << worst << ", bound " << tolerance);
     CHECK(worst <= tolerance);
   }
 }
@@ -121,7 +121,7 @@ TEST_CASE("the procedural warp matches its CPU twin except where rounding crosse
       close += length(vec3(w.warp[k]) - cpu) < 1e-4f;
       REQUIRE(std::abs(length(vec3(w.warp[k])) - 1.0f) < 1e-6f);
     }
-    INFO(numerics::integrator_name(integrator) << ": " << close << " of " << w.warp.size() << " within 1e-4");
+    INFO(cover::integrator_name(integrator) << ": " << close << " of " << w.warp.size() << " within 1e-4");
     CHECK(close >= 0.99 * w.warp.size());
   }
 }
@@ -147,8 +147,8 @@ TEST_CASE("the adaptive warp pass and its CPU twin both meet the tolerance on th
     const glm::dvec3 exact(std::cos(lat) * std::cos(turned), std::cos(lat) * std::sin(turned), std::sin(lat));
     const vec4 cpu = integrate_adaptive(start, 1.0f, p.step, 1.0f, tolerance, p.max_substeps, curl);
     REQUIRE(w.warp[k].w > 0.0f);
-    CHECK(numerics::great_circle_distance(glm::dvec3(vec3(w.warp[k])), exact) < 5.0 * tolerance);
-    CHECK(numerics::great_circle_distance(glm::dvec3(vec3(cpu)), exact) < 5.0 * tolerance);
+    CHECK(studies::great_circle_distance(glm::dvec3(vec3(w.warp[k])), exact) < 5.0 * tolerance);
+    CHECK(studies::great_circle_distance(glm::dvec3(vec3(cpu)), exact) < 5.0 * tolerance);
     same_steps += cpu.w == w.warp[k].w;
     ++compared;
   }
@@ -195,10 +195,10 @@ TEST_CASE("two runs with the same flow time and different integrators give the s
     const double lon = std::atan2(static_cast<double>(start.y), static_cast<double>(start.x));
     const double turned = lon - flow_time * curl.strength * curl.prevailing * a * std::cos(a * lat) / std::cos(lat);
     const glm::dvec3 exact(std::cos(lat) * std::cos(turned), std::cos(lat) * std::sin(turned), std::sin(lat));
-    worst_euler = std::max(worst_euler, numerics::great_circle_distance(glm::dvec3(vec3(we[k])), exact));
-    worst_rk4 = std::max(worst_rk4, numerics::great_circle_distance(glm::dvec3(vec3(wr[k])), exact));
+    worst_euler = std::max(worst_euler, studies::great_circle_distance(glm::dvec3(vec3(we[k])), exact));
+    worst_rk4 = std::max(worst_rk4, studies::great_circle_distance(glm::dvec3(vec3(wr[k])), exact));
     worst_difference =
-        std::max(worst_difference, numerics::great_circle_distance(glm::dvec3(vec3(we[k])), glm::dvec3(vec3(wr[k]))));
+        std::max(worst_difference, studies::great_circle_distance(glm::dvec3(vec3(we[k])), glm::dvec3(vec3(wr[k]))));
   }
   INFO("euler error " << worst_euler << ", rk4 error " << worst_rk4 << ", difference " << worst_difference);
   CHECK(worst_euler < 1e-3);
@@ -240,13 +240,13 @@ TEST_CASE("a stiff flow with large steps is reported for fixed-step schemes and 
     p.tolerance = 1e-4f;
     return p;
   };
-  const std::vector<vec3> starts = numerics::sample_directions(6 * 8 * 8, 7u);
+  const std::vector<vec3> starts = studies::sample_directions(6 * 8 * 8, 7u);
   std::vector<float> texels(4 * starts.size(), 0.0f);
   for (size_t k = 0; k < starts.size(); ++k)
     for (int c = 0; c < 3; ++c) texels[4 * k + c] = starts[k][c];
-  const gl::Texture start_field = gl::Texture::cube(8, GL_RGBA32F);
+  const gpu::Texture start_field = gpu::Texture::cube(8, GL_RGBA32F);
   start_field.write(texels);
-  const gl::Texture end_field = gl::Texture::cube(8, GL_RGBA32F);
+  const gpu::Texture end_field = gpu::Texture::cube(8, GL_RGBA32F);
   auto sample_warp = [&](cover::GlobalCover& cover) {
     cover.warp_points(start_field, end_field);
     return as_vec4(end_field.read());
@@ -257,8 +257,8 @@ TEST_CASE("a stiff flow with large steps is reported for fixed-step schemes and 
   const auto reference = sample_warp(fine);
   auto rms_error = [&](const std::vector<vec4>& w) {
     double sum = 0;
-    for (size_t k = 0; k < w.size(); ++k) sum += numerics::great_circle_distance(glm::dvec3(vec3(w[k])), glm::dvec3(vec3(reference[k]))) *
-                                                numerics::great_circle_distance(glm::dvec3(vec3(w[k])), glm::dvec3(vec3(reference[k])));
+    for (size_t k = 0; k < w.size(); ++k) sum += studies::great_circle_distance(glm::dvec3(vec3(w[k])), glm::dvec3(vec3(reference[k]))) *
+                                                studies::great_circle_distance(glm::dvec3(vec3(w[k])), glm::dvec3(vec3(reference[k])));
     return std::sqrt(sum / w.size());
   };
   double euler_error = 0;
@@ -269,7 +269,7 @@ TEST_CASE("a stiff flow with large steps is reported for fixed-step schemes and 
     cover.run_warp();
     const auto& d = cover.diagnose();
     const double error = rms_error(sample_warp(cover));
-    INFO(numerics::integrator_name(integrator) << ": stiffness " << d.stiffness.stiffness << " limit "
+    INFO(cover::integrator_name(integrator) << ": stiffness " << d.stiffness.stiffness << " limit "
                                                << d.stiffness.limit << " beyond on " << d.stiffness.beyond_fraction
                                                << ", rms error " << error);
     CHECK(d.stiffness.stiffness > d.stiffness.limit);
@@ -280,7 +280,7 @@ TEST_CASE("a stiff flow with large steps is reported for fixed-step schemes and 
       CHECK(d.substeps.capped_texels == 0);
       CHECK(error < 0.2 * euler_error);
     } else {
-      CHECK(d.stiffness.beyond_fraction > numerics::warn_fraction);
+      CHECK(d.stiffness.beyond_fraction > cover::warn_fraction);
       REQUIRE(!d.warnings.empty());
       CHECK(d.warnings[0].find("stiffness") != std::string::npos);
       if (integrator == Integrator::euler) euler_error = error;
@@ -297,6 +297,6 @@ TEST_CASE("the default cover is within the stable step and not reported as stiff
   const auto& d = cover.diagnose();
   INFO("stiffness " << d.stiffness.stiffness << " beyond on " << d.stiffness.beyond_fraction);
   CHECK(d.warnings.empty());
-  CHECK(d.stiffness.beyond_fraction <= numerics::warn_fraction);
+  CHECK(d.stiffness.beyond_fraction <= cover::warn_fraction);
   CHECK(d.folding.folded_fraction < 0.2);
 }

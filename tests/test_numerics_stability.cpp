@@ -5,8 +5,8 @@
 #include <cmath>
 
 #include "cover/cover_parameters.hpp"
-#include "numerics/integrators.hpp"
-#include "numerics/stability.hpp"
+#include "cover/integrators.hpp"
+#include "cover/stability.hpp"
 #include "shader_math/shader_math.hpp"
 
 using namespace nephele;
@@ -35,7 +35,7 @@ TEST_CASE("the flow rate of a solid-body rotation is omega times the sine of the
   // omega n_z times a quarter turn, with eigenvalues +-i omega n_z.
   const float omega = 3.0f;
   const int size = 32;
-  const auto rates = numerics::flow_rates(cube_of(size, [&](vec3 n) { return omega * cross(vec3(0, 0, 1), n); }), size);
+  const auto rates = cover::flow_rates(cube_of(size, [&](vec3 n) { return omega * cross(vec3(0, 0, 1), n); }), size);
   double worst = 0;
   for (int face = 0; face < 6; ++face)
     for (int j = 0; j < size; ++j)
@@ -47,11 +47,11 @@ TEST_CASE("the flow rate of a solid-body rotation is omega times the sine of the
   INFO("largest deviation " << worst);
   CHECK(worst < 0.05 * omega);  // differences over one or two texels
   CHECK(rates.max_rate == Approx(omega).epsilon(0.05));
-  const auto report = numerics::stiffness_report(rates, 0.5, numerics::Integrator::euler);
+  const auto report = cover::stiffness_report(rates, 0.5, cover::Integrator::euler);
   CHECK(report.stiffness == Approx(0.5 * rates.max_rate));
   CHECK(!report.beyond());
   CHECK(report.beyond_fraction == 0.0);
-  const auto stiff = numerics::stiffness_report(rates, 1.0, numerics::Integrator::adaptive);  // h rho up to 3 > 1.73
+  const auto stiff = cover::stiffness_report(rates, 1.0, cover::Integrator::adaptive);  // h rho up to 3 > 1.73
   CHECK(stiff.beyond());
   // Where h omega |n_z| > 1.732: |lat| > asin(0.577) = 35.3 deg, 1 - 0.577 = 42% of the sphere.
   CHECK(stiff.beyond_fraction == Approx(1.0 - 1.732 / 3.0).margin(0.02));
@@ -62,7 +62,7 @@ TEST_CASE("shear does not count as a rate of change: a jet across the equator ha
   // gradient is nilpotent (eigenvalues 0), however large c k is.
   const float c = 1.0f, k = 40.0f;
   const int size = 64;
-  const auto rates = numerics::flow_rates(cube_of(size, [&](vec3 n) {
+  const auto rates = cover::flow_rates(cube_of(size, [&](vec3 n) {
                                             const float lat = std::asin(n.z);
                                             return c * std::tanh(k * lat) * normalize(cross(vec3(0, 0, 1), n));
                                           }), size);
@@ -80,30 +80,30 @@ TEST_CASE("shear does not count as a rate of change: a jet across the equator ha
 TEST_CASE("folding is zero for rotations and total for a mirror image", "[stability]") {
   const int size = 24;
   const auto identity = cube_of(size, [](vec3 n) { return n; });
-  const auto id = numerics::folding_report(identity, size);
+  const auto id = cover::folding_report(identity, size);
   CHECK(id.folded_fraction == 0.0);
   CHECK(id.jacobian_min == Approx(1.0).margin(1e-4));
   CHECK(id.jacobian_max == Approx(1.0).margin(1e-4));
   CHECK(id.area_error_rms < 1e-4);
   // A rotation preserves area and orientation: J = 1 (the exact flow map has J = 1 too).
-  const auto rotated = numerics::folding_report(cube_of(size, [](vec3 n) {
+  const auto rotated = cover::folding_report(cube_of(size, [](vec3 n) {
     const float a = 0.7f;
     return vec3(std::cos(a) * n.x - std::sin(a) * n.y, std::sin(a) * n.x + std::cos(a) * n.y, n.z);
   }), size);
   CHECK(rotated.folded_fraction == 0.0);
   CHECK(rotated.area_error_rms < 1e-3);
   // A mirror image reverses orientation everywhere: J = -1.
-  const auto mirror = numerics::folding_report(cube_of(size, [](vec3 n) { return vec3(n.x, n.y, -n.z); }), size);
+  const auto mirror = cover::folding_report(cube_of(size, [](vec3 n) { return vec3(n.x, n.y, -n.z); }), size);
   CHECK(mirror.folded_fraction == Approx(1.0).margin(1e-9));
   CHECK(mirror.jacobian_max == Approx(-1.0).margin(1e-4));
   // Folding the south onto the north reverses the southern half.
-  const auto folded = numerics::folding_report(cube_of(size, [](vec3 n) { return vec3(n.x, n.y, std::abs(n.z)); }), size);
+  const auto folded = cover::folding_report(cube_of(size, [](vec3 n) { return vec3(n.x, n.y, std::abs(n.z)); }), size);
   CHECK(folded.folded_fraction == Approx(0.5).margin(0.05));
 }
 
 TEST_CASE("the sub-step report counts attempts and the texels that ran out", "[stability]") {
   const std::vector<float> warp{1, 0, 0, 10, 0, 1, 0, 20, 0, 0, 1, -30, 1, 0, 0, 0};
-  const auto r = numerics::substep_report(warp);
+  const auto r = cover::substep_report(warp);
   CHECK(r.mean_attempts == Approx(15.0));
   CHECK(r.max_attempts == 30.0);
   CHECK(r.capped_texels == 1);
@@ -115,37 +115,37 @@ TEST_CASE("the diagnostics warn beyond the stable step and about capped texels b
   const float omega = 10.0f;
   const auto curl = cube_of(size, [&](vec3 n) { return omega * cross(vec3(0, 0, 1), n); });
   const auto identity = cube_of(size, [](vec3 n) { return n; });
-  const auto calm = numerics::diagnose_warp(curl, identity, size, numerics::Integrator::rk4, 0.1);  // h rho <= 1
+  const auto calm = cover::diagnose_warp(curl, identity, size, cover::Integrator::rk4, 0.1);  // h rho <= 1
   CHECK(calm.warnings.empty());
-  const auto stiff = numerics::diagnose_warp(curl, identity, size, numerics::Integrator::euler, 0.5);  // h rho <= 5
+  const auto stiff = cover::diagnose_warp(curl, identity, size, cover::Integrator::euler, 0.5);  // h rho <= 5
   REQUIRE(stiff.warnings.size() == 1);
   CHECK(stiff.warnings[0].find("--step") != std::string::npos);
-  const auto adaptive = numerics::diagnose_warp(curl, identity, size, numerics::Integrator::adaptive, 0.5);
+  const auto adaptive = cover::diagnose_warp(curl, identity, size, cover::Integrator::adaptive, 0.5);
   CHECK(adaptive.warnings.empty());  // it sub-steps by itself
   auto capped = identity;
   capped[3] = -4096.0f;
-  const auto ran_out = numerics::diagnose_warp(curl, capped, size, numerics::Integrator::adaptive, 0.5);
+  const auto ran_out = cover::diagnose_warp(curl, capped, size, cover::Integrator::adaptive, 0.5);
   REQUIRE(ran_out.warnings.size() == 1);
   CHECK(ran_out.warnings[0].find("--max-substeps") != std::string::npos);
   auto broken = identity;
   broken[0] = std::nanf("");
-  CHECK(numerics::diagnose_warp(curl, broken, size, numerics::Integrator::rk4, 0.1).warnings.size() == 1);
+  CHECK(cover::diagnose_warp(curl, broken, size, cover::Integrator::rk4, 0.1).warnings.size() == 1);
 }
 
 TEST_CASE("long warps are split so that no dispatch exceeds the shader loop budget", "[stability]") {
-  using numerics::CurlMode;
-  using numerics::Integrator;
-  for (Integrator integrator : numerics::all_integrators())
+  using cover::CurlMode;
+  using cover::Integrator;
+  for (Integrator integrator : cover::all_integrators())
     for (CurlMode mode : {CurlMode::sampled, CurlMode::procedural})
       for (int octaves : {0, 3, 16}) {
-        const int steps = numerics::steps_per_dispatch(integrator, mode, octaves);
+        const int steps = cover::steps_per_dispatch(integrator, mode, octaves);
         CHECK(steps >= 1);
-        CHECK(steps * numerics::loop_iterations_per_step(integrator, mode, octaves) <= numerics::shader_loop_budget);
-        CHECK(numerics::shader_loop_budget < 65535);
+        CHECK(steps * cover::loop_iterations_per_step(integrator, mode, octaves) <= cover::shader_loop_budget);
+        CHECK(cover::shader_loop_budget < 65535);
       }
   // Sampled Euler has one loop iteration per step; procedural RK4 with 3 octaves 4 * 78 + 1.
-  CHECK(numerics::loop_iterations_per_step(Integrator::euler, CurlMode::sampled, 3) == 1);
-  CHECK(numerics::loop_iterations_per_step(Integrator::rk4, CurlMode::procedural, 3) == 313);
+  CHECK(cover::loop_iterations_per_step(Integrator::euler, CurlMode::sampled, 3) == 1);
+  CHECK(cover::loop_iterations_per_step(Integrator::rk4, CurlMode::procedural, 3) == 313);
 }
 
 TEST_CASE("noise offsets are reduced modulo a lattice period larger than the sphere", "[stability]") {

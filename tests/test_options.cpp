@@ -1,6 +1,6 @@
 #include <catch2/catch.hpp>
 
-#include "cli/options.hpp"
+#include "apps/cli/options.hpp"
 
 using namespace nephele::cli;
 

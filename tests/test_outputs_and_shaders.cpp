@@ -5,9 +5,9 @@
 #include <fstream>
 #include <random>
 
-#include "export/atomic_output.hpp"
-#include "gl/compute_program.hpp"
-#include "gl/shader_sources.hpp"
+#include "io/atomic_output.hpp"
+#include "gpu/compute_program.hpp"
+#include "gpu/shader_sources.hpp"
 #include "gl_support.hpp"
 
 namespace fs = std::filesystem;
@@ -16,12 +16,12 @@ using namespace nephele;
 TEST_CASE("an uncommitted output set removes its temporaries and keeps old files", "[output]") {
   const fs::path dir = fs::temp_directory_path() / ("nephele_outputs_" + std::to_string(std::random_device{}()));
   fs::create_directories(dir);
-  output::write_text_file(dir / "a.txt", "old");
+  io::write_text_file(dir / "a.txt", "old");
   {
-    output::OutputSet set(dir);
+    io::OutputSet set(dir);
     const fs::path temporary = set.temporary_for("a.txt");
     CHECK(temporary.extension() == ".txt");
-    output::write_text_file(temporary, "new");
+    io::write_text_file(temporary, "new");
     CHECK(fs::exists(temporary));
   }  // destroyed without commit, as when writing fails half-way
   std::ifstream in(dir / "a.txt");
@@ -30,8 +30,8 @@ TEST_CASE("an uncommitted output set removes its temporaries and keeps old files
   CHECK(text == "old");
   CHECK(std::distance(fs::directory_iterator(dir), fs::directory_iterator()) == 1);
   {
-    output::OutputSet set(dir);
-    output::write_text_file(set.temporary_for("a.txt"), "new");
+    io::OutputSet set(dir);
+    io::write_text_file(set.temporary_for("a.txt"), "new");
     set.commit();
   }
   std::ifstream again(dir / "a.txt");
@@ -42,10 +42,10 @@ TEST_CASE("an uncommitted output set removes its temporaries and keeps old files
 
 TEST_CASE("every embedded shader compiles", "[shaders]") {
   test::test_context();
-  for (const auto& [path, text] : gl::embedded_shader_sources()) {
+  for (const auto& [path, text] : gpu::embedded_shader_sources()) {
     if (path.size() < 5 || path.substr(path.size() - 5) != ".comp") continue;
     INFO(path);
-    CHECK_NOTHROW(gl::ComputeProgram(path));
+    CHECK_NOTHROW(gpu::ComputeProgram(path));
   }
 }
 
@@ -59,13 +59,13 @@ TEST_CASE("shader compile errors name the file and line", "[shaders]") {
       "  undeclared_thing = 1;\n"
       "}\n";
   try {
-    gl::ComputeProgram::from_text("tests/broken.comp", source);
+    gpu::ComputeProgram::from_text("tests/broken.comp", source);
     FAIL("no error");
-  } catch (const gl::ShaderError& e) {
+  } catch (const gpu::ShaderError& e) {
     CHECK_THAT(e.what(), Catch::Contains("tests/broken.comp:5"));
   }
   try {
-    gl::ComputeProgram::from_text("tests/missing.comp", "#version 450\n#include \"../lib/nothing.glsl\"\n");
+    gpu::ComputeProgram::from_text("tests/missing.comp", "#version 450\n#include \"../lib/nothing.glsl\"\n");
     FAIL("no error");
   } catch (const std::runtime_error& e) {
     CHECK_THAT(e.what(), Catch::Contains("lib/nothing.glsl") && Catch::Contains("tests/missing.comp:2"));
@@ -73,7 +73,7 @@ TEST_CASE("shader compile errors name the file and line", "[shaders]") {
 }
 
 TEST_CASE("includes are expanded once and marked with line directives", "[shaders]") {
-  const auto expanded = gl::expand_shader("cover/curl.comp");
+  const auto expanded = gpu::expand_shader("cover/curl.comp");
   CHECK(expanded.files.front() == "cover/curl.comp");
   CHECK(std::count(expanded.files.begin(), expanded.files.end(), "lib/hash.glsl") == 1);
   CHECK(expanded.text.find("#include") == std::string::npos);

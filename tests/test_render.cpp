@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "core/time.hpp"
 #include "gl_support.hpp"
 #include "regional/scene.hpp"
 #include "render/cloud_renderer.hpp"
@@ -15,8 +16,8 @@ using namespace nephele::regional;
 
 namespace {
 
-const double noon = render::parse_utc_time("2026-06-21T11:30Z");
-const double midnight = render::parse_utc_time("2026-06-21T23:00Z");
+const double noon = core::parse_utc_time("2026-06-21T11:30Z");
+const double midnight = core::parse_utc_time("2026-06-21T23:00Z");
 
 render::Camera small_camera(double pitch = 10) {
   render::Camera c;
@@ -175,7 +176,7 @@ TEST_CASE("a scene with weather files does not generate the global cover and one
 }
 
 TEST_CASE("tone mapping encodes black as 0 and saturates to 1 without exceeding it", "[render]") {
-  output::ImageData hdr{3, 1, 4, {0, 0, 0, 0, 0.1f, 0.1f, 0.1f, 0, 1e6f, 1e6f, 1e6f, 1}};
+  core::ImageData hdr{3, 1, 4, {0, 0, 0, 0, 0.1f, 0.1f, 0.1f, 0, 1e6f, 1e6f, 1e6f, 1}};
   const auto ldr = render::tone_map(hdr, 4.0);
   CHECK(ldr.channels == 3);
   CHECK(ldr.pixels[0] == 0.0f);

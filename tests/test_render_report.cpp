@@ -10,11 +10,11 @@
 
 #include "gl_support.hpp"
 #include "regional/scene.hpp"
-#include "render/render_error.hpp"
-#include "render/render_report.hpp"
+#include "studies/render_error.hpp"
+#include "studies/render_report.hpp"
 
 using namespace nephele;
-using render::RenderErrorRow;
+using studies::RenderErrorRow;
 
 namespace {
 
@@ -50,7 +50,7 @@ TEST_CASE("both render sweeps contain the default step counts and a reference be
   // The report states the default's error, so the default must be among the rows; and a
   // reference is only one if it takes at least as many steps as any row it judges.
   const regional::Scene defaults;
-  for (const auto& o : {render::RenderSweepOptions::full(), render::RenderSweepOptions::quick()}) {
+  for (const auto& o : {studies::RenderSweepOptions::full(), studies::RenderSweepOptions::quick()}) {
     CHECK(std::count(o.view_steps.begin(), o.view_steps.end(), defaults.view_steps) == 1);
     CHECK(std::count(o.light_steps.begin(), o.light_steps.end(), defaults.light_steps) == 1);
     CHECK(*std::max_element(o.view_steps.begin(), o.view_steps.end()) <= o.reference_view);
@@ -61,8 +61,8 @@ TEST_CASE("both render sweeps contain the default step counts and a reference be
 }
 
 TEST_CASE("the render error CSV has the documented columns and one line per row", "[render][report]") {
-  auto options = render::RenderSweepOptions::quick();
-  const std::string csv = render::render_error_csv({{8, 2, 12.5, 0.25, 1.5}, {48, 6, 80.0, 0.0625, 0.75}}, options);
+  auto options = studies::RenderSweepOptions::quick();
+  const std::string csv = studies::render_error_csv({{8, 2, 12.5, 0.25, 1.5}, {48, 6, 80.0, 0.0625, 0.75}}, options);
   std::stringstream lines(csv);
   std::string line;
   REQUIRE(std::getline(lines, line));
@@ -83,12 +83,12 @@ TEST_CASE("the render error CSV has the documented columns and one line per row"
   CHECK(fields_of(line)[0] == "48");
   CHECK(std::stod(fields_of(line)[3]) == Approx(0.0625));
   CHECK_FALSE(std::getline(lines, line));
-  CHECK(render::render_error_csv({}, options).find('\n') == csv.find('\n'));  // only the header
+  CHECK(studies::render_error_csv({}, options).find('\n') == csv.find('\n'));  // only the header
 }
 
 TEST_CASE("the render diagram draws one polyline per light-step count labels view steps and rings the default",
           "[render][report]") {
-  const std::string svg = render::render_error_svg(table, "title & <device>", "subtitle", 48, 6);
+  const std::string svg = studies::render_error_svg(table, "title & <device>", "subtitle", 48, 6);
   CHECK(count_of(svg, "<polyline") == 4);  // light 2, 4, 6, 12
   CHECK(count_of(svg, "r='8'") == 1);      // the ring around the default
   CHECK(count_of(svg, "<circle") == table.size() + 1);
@@ -99,14 +99,14 @@ TEST_CASE("the render diagram draws one polyline per light-step count labels vie
   // A zero error (the reference's own steps) has no place on a log scale: left out, and said so.
   std::vector<RenderErrorRow> with_zero = table;
   with_zero.push_back({384, 24, 900.0, 0.0, 0.0});
-  const std::string svg_zero = render::render_error_svg(with_zero, "t", "s", 48, 6);
+  const std::string svg_zero = studies::render_error_svg(with_zero, "t", "s", 48, 6);
   CHECK(count_of(svg_zero, "<polyline") == 4);
   CHECK(svg_zero.find("zero-error rows not drawn") != std::string::npos);
 }
 
 TEST_CASE("the render step choice finds the cheapest within 1.5x the default's error and the most accurate within its time",
           "[render][report]") {
-  const auto c = render::choose_render_steps(table, 48, 6);
+  const auto c = studies::choose_render_steps(table, 48, 6);
   REQUIRE(c.has_default);
   CHECK(c.default_row.view_steps == 48);
   CHECK(c.default_row.light_steps == 6);
@@ -118,14 +118,14 @@ TEST_CASE("the render step choice finds the cheapest within 1.5x the default's e
   CHECK(c.most_accurate.light_steps == 12);
 
   // A tighter factor: only 96 x 2 is both cheaper and accurate enough.
-  const auto tight = render::choose_render_steps(table, 48, 6, 1.1);
+  const auto tight = studies::choose_render_steps(table, 48, 6, 1.1);
   REQUIRE(tight.has_cheapest);
   CHECK(tight.cheapest.view_steps == 96);
   CHECK(tight.cheapest.light_steps == 2);
 
   // When no run beats the default either way, the default itself is both choices.
   const std::vector<RenderErrorRow> sparse{table[0], table[4], table[7]};
-  const auto alone = render::choose_render_steps(sparse, 48, 6);
+  const auto alone = studies::choose_render_steps(sparse, 48, 6);
   REQUIRE(alone.has_cheapest);
   REQUIRE(alone.has_most_accurate);
   CHECK(alone.cheapest.view_steps == 48);
@@ -134,15 +134,15 @@ TEST_CASE("the render step choice finds the cheapest within 1.5x the default's e
   CHECK(alone.most_accurate.light_steps == 6);
 
   // Without the default in the sweep there is nothing to compare with.
-  const auto none = render::choose_render_steps(table, 64, 6);
+  const auto none = studies::choose_render_steps(table, 64, 6);
   CHECK_FALSE(none.has_default);
   CHECK_FALSE(none.has_cheapest);
   CHECK_FALSE(none.has_most_accurate);
 }
 
 TEST_CASE("the render summary section names the defaults their error and the two choices", "[render][report]") {
-  const auto options = render::RenderSweepOptions::full();
-  const std::string md = render::render_summary_markdown(table, options, render::choose_render_steps(table, 48, 6), 48, 6);
+  const auto options = studies::RenderSweepOptions::full();
+  const std::string md = studies::render_summary_markdown(table, options, studies::choose_render_steps(table, 48, 6), 48, 6);
   CHECK(md.find("## Render: image error against run time") == 0);
   CHECK(md.find("160 x 90") != std::string::npos);
   CHECK(md.find("384 view x 24 light steps") != std::string::npos);
@@ -154,7 +154,7 @@ TEST_CASE("the render summary section names the defaults their error and the two
                 "(0.75x the default's error)") != std::string::npos);
   CHECK(count_of(md, "\n| ") == table.size() + 1);  // the header and one table line per row
   const std::string without =
-      render::render_summary_markdown(table, options, render::choose_render_steps(table, 64, 6), 64, 6);
+      studies::render_summary_markdown(table, options, studies::choose_render_steps(table, 64, 6), 64, 6);
   CHECK(without.find("not in this sweep") != std::string::npos);
 }
 
@@ -162,7 +162,7 @@ TEST_CASE("the render error sweep is exactly zero at the reference's own step co
   test::test_context();
   regional::Scene scene;  // the default scene, made cheap
   scene.cover_size = 16;
-  render::RenderSweepOptions options;
+  studies::RenderSweepOptions options;
   options.view_steps = {6, 12};
   options.light_steps = {3};
   options.reference_view = 12;
@@ -170,7 +170,7 @@ TEST_CASE("the render error sweep is exactly zero at the reference's own step co
   options.width = 16;
   options.height = 8;
   int reported = 0;
-  const auto rows = render::render_error_sweep(scene, options, [&](const RenderErrorRow&) { ++reported; });
+  const auto rows = studies::render_error_sweep(scene, options, [&](const RenderErrorRow&) { ++reported; });
   REQUIRE(rows.size() == 2);
   CHECK(reported == 2);
   CHECK(rows[0].view_steps == 6);

@@ -13,8 +13,8 @@
 #include <sstream>
 
 #include "cli_support.hpp"
-#include "numerics/work_precision.hpp"
-#include "util/json.hpp"
+#include "studies/work_precision.hpp"
+#include "core/json.hpp"
 
 namespace fs = std::filesystem;
 using namespace nephele;
@@ -23,8 +23,8 @@ using test::Run;
 using test::run;
 using test::run_command;
 using test::TemporaryDirectory;
-using numerics::CurlMode;
-using numerics::Integrator;
+using cover::CurlMode;
+using cover::Integrator;
 
 namespace {
 
@@ -36,8 +36,8 @@ std::vector<std::string> split(const std::string& line, char separator) {
   return fields;
 }
 
-numerics::SweepRow row(Integrator integrator, CurlMode mode, int steps, double time_ms, double error) {
-  numerics::SweepRow r;
+studies::SweepRow row(Integrator integrator, CurlMode mode, int steps, double time_ms, double error) {
+  studies::SweepRow r;
   r.integrator = integrator;
   r.curl_mode = mode;
   r.size = 64;
@@ -55,7 +55,7 @@ const char* const header = "integrator,curl_mode,size,steps,time_ms,warp_err_rms
 }  // namespace
 
 TEST_CASE("the error CSV has the documented columns and one line per run", "[report]") {
-  const std::string csv = numerics::error_csv({row(Integrator::euler, CurlMode::sampled, 50, 12.5, 0.01),
+  const std::string csv = studies::error_csv({row(Integrator::euler, CurlMode::sampled, 50, 12.5, 0.01),
                                                row(Integrator::adaptive, CurlMode::procedural, 17, 80.0, 1e-4)});
   std::stringstream lines(csv);
   std::string line;
@@ -78,14 +78,14 @@ TEST_CASE("the error CSV has the documented columns and one line per run", "[rep
 
 TEST_CASE("the comparison finds the fastest run at the default's error and the most accurate within its time",
           "[report]") {
-  const std::vector<numerics::SweepRow> rows{
+  const std::vector<studies::SweepRow> rows{
       row(Integrator::euler, CurlMode::sampled, 50, 100.0, 0.010),     // the default
       row(Integrator::euler, CurlMode::sampled, 100, 190.0, 0.006),
       row(Integrator::heun, CurlMode::sampled, 10, 40.0, 0.012),       // cheaper, less accurate
       row(Integrator::heun, CurlMode::sampled, 20, 60.0, 0.009),       // equal error, fastest
       row(Integrator::rk4, CurlMode::sampled, 20, 95.0, 0.004),        // equal time, most accurate
       row(Integrator::rk4, CurlMode::procedural, 20, 900.0, 0.001)};
-  const auto comparisons = numerics::compare_with_default(rows);
+  const auto comparisons = studies::compare_with_default(rows);
   REQUIRE(comparisons.size() == 1);
   const auto& c = comparisons[0];
   REQUIRE(c.has_baseline);
@@ -99,7 +99,7 @@ TEST_CASE("the comparison finds the fastest run at the default's error and the m
 }
 
 TEST_CASE("the work-precision diagram draws one line per integrator curl mode and size", "[report]") {
-  const std::string svg = numerics::work_precision_svg({row(Integrator::euler, CurlMode::sampled, 10, 20.0, 0.05),
+  const std::string svg = studies::work_precision_svg({row(Integrator::euler, CurlMode::sampled, 10, 20.0, 0.05),
                                                         row(Integrator::euler, CurlMode::sampled, 50, 100.0, 0.01),
                                                         row(Integrator::rk4, CurlMode::procedural, 10, 500.0, 1e-3)},
                                                        "test");

@@ -5,34 +5,35 @@
 #include <fstream>
 #include <sstream>
 
+#include "core/time.hpp"
 #include "regional/sites.hpp"
 #include "render/sun_position.hpp"
 
 using namespace nephele;
 
 TEST_CASE("ISO 8601 UTC times parse to Unix seconds and bad ones are refused", "[sun]") {
-  CHECK(render::parse_utc_time("1970-01-01T00:00Z") == 0.0);
-  CHECK(render::parse_utc_time("2000-01-01T12:00:00Z") == 946728000.0);
-  CHECK(render::parse_utc_time("2026-06-21T16:00Z") == 1782057600.0);
-  CHECK_THROWS(render::parse_utc_time("2026-06-21 16:00"));
-  CHECK_THROWS(render::parse_utc_time("2026-06-21T16:00+02:00"));
-  CHECK_THROWS(render::parse_utc_time("2026-13-01T00:00Z"));
-  CHECK_THROWS(render::parse_utc_time("tomorrow"));
+  CHECK(core::parse_utc_time("1970-01-01T00:00Z") == 0.0);
+  CHECK(core::parse_utc_time("2000-01-01T12:00:00Z") == 946728000.0);
+  CHECK(core::parse_utc_time("2026-06-21T16:00Z") == 1782057600.0);
+  CHECK_THROWS(core::parse_utc_time("2026-06-21 16:00"));
+  CHECK_THROWS(core::parse_utc_time("2026-06-21T16:00+02:00"));
+  CHECK_THROWS(core::parse_utc_time("2026-13-01T00:00Z"));
+  CHECK_THROWS(core::parse_utc_time("tomorrow"));
 }
 
 TEST_CASE("the sun stands over the tropic at the June solstice and over the equator at the equinox", "[sun]") {
   // June solstice 2026: June 21 08:24 UTC; March equinox 2026: March 20 14:46 UTC (published
   // times). The Almanac formulas are good to about 0.01 deg; the obliquity is 23.436 deg.
-  const auto solstice = render::sun_position(render::parse_utc_time("2026-06-21T08:24Z"), 0, 0);
+  const auto solstice = render::sun_position(core::parse_utc_time("2026-06-21T08:24Z"), 0, 0);
   CHECK(solstice.declination_deg == Approx(23.436).margin(0.02));
-  const auto equinox = render::sun_position(render::parse_utc_time("2026-03-20T14:46Z"), 0, 0);
+  const auto equinox = render::sun_position(core::parse_utc_time("2026-03-20T14:46Z"), 0, 0);
   CHECK(equinox.declination_deg == Approx(0.0).margin(0.03));  // 0.017 deg per hour near the equinox
 }
 
 TEST_CASE("at Bern the midsummer sun culminates at 90 - latitude + 23.44 deg due south", "[sun]") {
   const double lat = 46.94806, lon = 7.44750;
   double best = -90, best_azimuth = 0;
-  const double day = render::parse_utc_time("2026-06-21T00:00Z");
+  const double day = core::parse_utc_time("2026-06-21T00:00Z");
   for (int minute = 0; minute < 24 * 60; ++minute) {
     const auto s = render::sun_position(day + minute * 60.0, lat, lon);
     if (s.elevation_deg > best) {
@@ -43,7 +44,7 @@ TEST_CASE("at Bern the midsummer sun culminates at 90 - latitude + 23.44 deg due
   // One minute of time moves the culminating sun by < 0.001 deg in elevation.
   CHECK(best == Approx(90 - lat + 23.436).margin(0.03));
   CHECK(best_azimuth == Approx(180).margin(1.0));  // within a minute of culmination: 0.3 deg/min
-  const auto night = render::sun_position(render::parse_utc_time("2026-06-21T23:00Z"), lat, lon);
+  const auto night = render::sun_position(core::parse_utc_time("2026-06-21T23:00Z"), lat, lon);
   CHECK(night.elevation_deg < 0);
 }
 

@@ -4,6 +4,7 @@
 #include <GeographicLib/Geodesic.hpp>
 #include <GeographicLib/GeodesicLine.hpp>
 
+#include "core/time.hpp"
 #include "regional/cloud_layers.hpp"
 #include "regional/weather.hpp"
 #include "regional/weather_field.hpp"
@@ -57,7 +58,7 @@ TEST_CASE("Open-Meteo hourly data are read with units converted and interpolated
   REQUIRE(w.hours.size() == 3);
   CHECK(w.hours[1].cloud_low == Approx(0.2));
   CHECK(w.hours[0].wind_speed == Approx(10.0));  // 36 km/h
-  const WeatherSample half = w.at(render::parse_utc_time("2026-06-21T00:30Z"));
+  const WeatherSample half = w.at(core::parse_utc_time("2026-06-21T00:30Z"));
   CHECK(half.cloud_low == Approx(0.15));
   CHECK(half.precipitation == Approx(0.25));
   // Directions 350 and 10 average to north through the wind vector, not to 180.
@@ -82,7 +83,7 @@ TEST_CASE("bad weather input names the file and the field", "[weather]") {
   CHECK_THAT(error_of(R"({"a": 1})"), Catch::Contains("neither an Open-Meteo file"));
   const WeatherSeries w = parse_weather(open_meteo(), "bern.json");
   try {
-    w.at(render::parse_utc_time("2026-06-22T00:00Z"));
+    w.at(core::parse_utc_time("2026-06-22T00:00Z"));
     FAIL("no error");
   } catch (const WeatherError& e) {
     CHECK_THAT(e.what(), Catch::Contains("outside the file's range") && Catch::Contains("2026-06-21T02:00Z"));

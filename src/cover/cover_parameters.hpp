@@ -2,7 +2,7 @@
 // Everything that determines a global cloud cover. Defaults give an Earth-like cover.
 #include <cstdint>
 
-#include "numerics/integrators.hpp"
+#include "cover/integrators.hpp"
 #include "shader_math/shader_math.hpp"
 
 namespace nephele::cover {
@@ -26,8 +26,8 @@ struct CoverParameters {
   float curl_strength = 0.5f;     // scale of the stream function, hence of the velocities
   NoiseOctaves density{3.0f, 6, 2.0f, 0.5f};    // Worley fBm of the cloud density
   // How the warp is solved (docs/numerics.md); the defaults are sfsim's scheme.
-  numerics::Integrator integrator = numerics::Integrator::euler;
-  numerics::CurlMode curl_mode = numerics::CurlMode::sampled;
+  cover::Integrator integrator = cover::Integrator::euler;
+  cover::CurlMode curl_mode = cover::CurlMode::sampled;
   float tolerance = 1e-4f;        // adaptive: largest error estimate of a step, radians
   int max_substeps = 4096;        // adaptive: attempted steps per texel before it gives up
   // Shifts every noise layer by (d, d, d) sphere radii. Non-zero offsets make the lattices

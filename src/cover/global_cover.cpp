@@ -5,7 +5,7 @@
 
 namespace nephele::cover {
 
-void set_uniform(const gl::ComputeProgram& program, const std::string& name,
+void set_uniform(const gpu::ComputeProgram& program, const std::string& name,
                  const glsl::FbmParams& params) {
   program.set(name + ".frequency", params.frequency);
   program.set(name + ".octaves", params.octaves);
@@ -16,7 +16,7 @@ void set_uniform(const gl::ComputeProgram& program, const std::string& name,
   if (program.has_uniform(name + ".period")) program.set(name + ".period", params.period);
 }
 
-void set_uniform(const gl::ComputeProgram& program, const std::string& name,
+void set_uniform(const gpu::ComputeProgram& program, const std::string& name,
                  const glsl::CurlParams& params) {
   set_uniform(program, name + ".potential_north", params.potential_north);
   set_uniform(program, name + ".potential_south", params.potential_south);
@@ -36,12 +36,12 @@ double cover_gpu_bytes(int size) {
 
 GlobalCover::GlobalCover(const CoverParameters& parameters)
     : parameters_(parameters),
-      warp_program_("cover/warp.comp", numerics::warp_defines(parameters.integrator, parameters.curl_mode)),
-      identity_field_(gl::Texture::cube(parameters.size, GL_RGBA32F)),
-      curl_field_(gl::Texture::cube(parameters.size, GL_RGBA32F)),
-      warp_field_(gl::Texture::cube(parameters.size, GL_RGBA32F)),
-      density_field_(gl::Texture::cube(parameters.size, GL_R32F)),
-      cover_field_(gl::Texture::cube(parameters.size, GL_R32F)) {}
+      warp_program_("cover/warp.comp", cover::warp_defines(parameters.integrator, parameters.curl_mode)),
+      identity_field_(gpu::Texture::cube(parameters.size, GL_RGBA32F)),
+      curl_field_(gpu::Texture::cube(parameters.size, GL_RGBA32F)),
+      warp_field_(gpu::Texture::cube(parameters.size, GL_RGBA32F)),
+      density_field_(gpu::Texture::cube(parameters.size, GL_R32F)),
+      cover_field_(gpu::Texture::cube(parameters.size, GL_R32F)) {}
 
 template <class Work>
 void GlobalCover::timed(const std::string& pass, Work&& work) {
@@ -65,7 +65,7 @@ void GlobalCover::run_identity() {
   timed("identity", [&] {
     identity_field_.bind_image(0, GL_WRITE_ONLY);
     identity_program_.dispatch_covering(parameters_.size, parameters_.size, 6);
-    gl::image_barrier();
+    gpu::image_barrier();
   });
 }
 
@@ -76,7 +76,7 @@ void GlobalCover::run_curl() {
     identity_field_.bind_image(0, GL_READ_ONLY);
     curl_field_.bind_image(1, GL_WRITE_ONLY);
     curl_program_.dispatch_covering(parameters_.size, parameters_.size, 6);
-    gl::image_barrier();
+    gpu::image_barrier();
   });
 }
 
@@ -84,13 +84,13 @@ void GlobalCover::run_warp() {
   timed("warp", [&] { dispatch_warp(identity_field_, warp_field_); });
 }
 
-void GlobalCover::warp_points(const gl::Texture& starts, const gl::Texture& warped) {
+void GlobalCover::warp_points(const gpu::Texture& starts, const gpu::Texture& warped) {
   dispatch_warp(starts, warped);
 }
 
-void GlobalCover::dispatch_warp(const gl::Texture& starts, const gl::Texture& warped) {
+void GlobalCover::dispatch_warp(const gpu::Texture& starts, const gpu::Texture& warped) {
   const CoverParameters& p = parameters_;
-  const bool adaptive = p.integrator == numerics::Integrator::adaptive;
+  const bool adaptive = p.integrator == cover::Integrator::adaptive;
   warp_program_.set("u_step_size", p.step);
   if (adaptive) {
     // The flow time in double first: K h is the physical quantity, rounded once.
@@ -100,33 +100,33 @@ void GlobalCover::dispatch_warp(const gl::Texture& starts, const gl::Texture& wa
     warp_program_.set("u_tolerance", p.tolerance);
     warp_program_.set("u_max_substeps", p.max_substeps);
   }
-  if (p.curl_mode == numerics::CurlMode::procedural) {
+  if (p.curl_mode == cover::CurlMode::procedural) {
     set_uniform(warp_program_, "u_curl", curl_params(p));
     warp_program_.set("u_noise_offset", potential_offset(p));
   }
   curl_field_.bind_image(1, GL_READ_ONLY);
-  // Long integrations run over several dispatches (numerics::shader_loop_budget): each one
+  // Long integrations run over several dispatches (cover::shader_loop_budget): each one
   // continues from the points of the last, alternating between `warped` and a scratch map.
   const int size = warped.width();
-  const int per_dispatch = numerics::steps_per_dispatch(p.integrator, p.curl_mode, p.potential.octaves);
-  gl::Texture scratch;
-  auto target = [&](bool into_warped) -> const gl::Texture& {
+  const int per_dispatch = cover::steps_per_dispatch(p.integrator, p.curl_mode, p.potential.octaves);
+  gpu::Texture scratch;
+  auto target = [&](bool into_warped) -> const gpu::Texture& {
     if (into_warped) return warped;
-    if (!scratch.id()) scratch = gl::Texture::cube(size, GL_RGBA32F);
+    if (!scratch.id()) scratch = gpu::Texture::cube(size, GL_RGBA32F);
     return scratch;
   };
-  auto dispatch = [&](const gl::Texture& from, const gl::Texture& to) {
+  auto dispatch = [&](const gpu::Texture& from, const gpu::Texture& to) {
     from.bind_image(0, GL_READ_ONLY);
     to.bind_image(2, GL_WRITE_ONLY);
     warp_program_.dispatch_covering(size, size, 6);
-    gl::image_barrier();
+    gpu::image_barrier();
   };
   if (!adaptive) {
     const int rounds = std::max(1, (p.iterations + per_dispatch - 1) / per_dispatch);
-    const gl::Texture* from = &starts;
+    const gpu::Texture* from = &starts;
     for (int round = 0; round < rounds; ++round) {
       warp_program_.set("u_steps", std::min(per_dispatch, p.iterations - round * per_dispatch));
-      const gl::Texture& to = target((rounds - 1 - round) % 2 == 0);  // the last round writes `warped`
+      const gpu::Texture& to = target((rounds - 1 - round) % 2 == 0);  // the last round writes `warped`
       dispatch(*from, to);
       from = &to;
     }
@@ -134,21 +134,21 @@ void GlobalCover::dispatch_warp(const gl::Texture& starts, const gl::Texture& wa
   }
   // Adaptive: each texel keeps its state between dispatches; the rounds end when no texel is
   // unfinished below its sub-step limit (a counter the shader increments).
-  const gl::Texture state = gl::Texture::cube(size, GL_RGBA32F);
+  const gpu::Texture state = gpu::Texture::cube(size, GL_RGBA32F);
   state.bind_image(3, GL_READ_WRITE);
   GLuint counter = 0;
   glCreateBuffers(1, &counter);
   glNamedBufferStorage(counter, sizeof(GLuint), nullptr, GL_DYNAMIC_STORAGE_BIT | GL_MAP_READ_BIT);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, counter);
   warp_program_.set("u_chunk", per_dispatch);
-  const gl::Texture* from = &starts;
+  const gpu::Texture* from = &starts;
   bool in_warped = true;
   for (int round = 0; round * static_cast<long>(per_dispatch) < std::max(1, p.max_substeps); ++round) {
     const GLuint zero = 0;
     glNamedBufferSubData(counter, 0, sizeof zero, &zero);
     warp_program_.set("u_resume", round > 0 ? 1 : 0);
     in_warped = round % 2 == 0;
-    const gl::Texture& to = target(in_warped);
+    const gpu::Texture& to = target(in_warped);
     dispatch(*from, to);
     from = &to;
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
@@ -160,13 +160,13 @@ void GlobalCover::dispatch_warp(const gl::Texture& starts, const gl::Texture& wa
   if (!in_warped) {
     glCopyImageSubData(scratch.id(), GL_TEXTURE_CUBE_MAP, 0, 0, 0, 0, warped.id(), GL_TEXTURE_CUBE_MAP, 0, 0, 0, 0,
                        size, size, 6);
-    gl::image_barrier();
+    gpu::image_barrier();
   }
 }
 
-const numerics::WarpDiagnostics& GlobalCover::diagnose() {
+const cover::WarpDiagnostics& GlobalCover::diagnose() {
   timed("diagnose", [&] {
-    diagnostics_ = numerics::diagnose_warp(curl_field_.read(), warp_field_.read(), parameters_.size,
+    diagnostics_ = cover::diagnose_warp(curl_field_.read(), warp_field_.read(), parameters_.size,
                                            parameters_.integrator, parameters_.step);
   });
   return *diagnostics_;
@@ -179,7 +179,7 @@ void GlobalCover::run_density() {
     warp_field_.bind_image(0, GL_READ_ONLY);
     density_field_.bind_image(1, GL_WRITE_ONLY);
     density_program_.dispatch_covering(parameters_.size, parameters_.size, 6);
-    gl::image_barrier();
+    gpu::image_barrier();
   });
 }
 
@@ -193,7 +193,7 @@ CoverageCalibration GlobalCover::run_coverage() {
     density_field_.bind_image(0, GL_READ_ONLY);
     cover_field_.bind_image(1, GL_WRITE_ONLY);
     remap_program_.dispatch_covering(parameters_.size, parameters_.size, 6);
-    gl::image_barrier();
+    gpu::image_barrier();
   });
   return calibration_;
 }

@@ -8,9 +8,9 @@
 
 #include "cover/cover_parameters.hpp"
 #include "cover/coverage_threshold.hpp"
-#include "gl/compute_program.hpp"
-#include "gl/textures.hpp"
-#include "numerics/stability.hpp"
+#include "gpu/compute_program.hpp"
+#include "gpu/textures.hpp"
+#include "cover/stability.hpp"
 
 namespace nephele::cover {
 
@@ -34,42 +34,42 @@ class GlobalCover {
   CoverageCalibration run_coverage();  // calibrates on the host, remaps on the GPU
   // The warp pass's computation for other start points: `starts` and `warped` are RGBA32F cube
   // maps of one size (any, independent of the cover's), the curl field is this cover's.
-  void warp_points(const gl::Texture& starts, const gl::Texture& warped);
+  void warp_points(const gpu::Texture& starts, const gpu::Texture& warped);
   // Stiffness, folding and sub-steps of the warp (reads the curl and warp fields back; after
   // run_warp). Kept for the sidecar.
-  const numerics::WarpDiagnostics& diagnose();
-  const std::optional<numerics::WarpDiagnostics>& diagnostics() const { return diagnostics_; }
+  const cover::WarpDiagnostics& diagnose();
+  const std::optional<cover::WarpDiagnostics>& diagnostics() const { return diagnostics_; }
 
   const CoverParameters& parameters() const { return parameters_; }
-  const gl::Texture& identity_field() const { return identity_field_; }
-  const gl::Texture& curl_field() const { return curl_field_; }
-  const gl::Texture& warp_field() const { return warp_field_; }
-  const gl::Texture& density_field() const { return density_field_; }
-  const gl::Texture& cover_field() const { return cover_field_; }
+  const gpu::Texture& identity_field() const { return identity_field_; }
+  const gpu::Texture& curl_field() const { return curl_field_; }
+  const gpu::Texture& warp_field() const { return warp_field_; }
+  const gpu::Texture& density_field() const { return density_field_; }
+  const gpu::Texture& cover_field() const { return cover_field_; }
   const CoverageCalibration& calibration() const { return calibration_; }
   const std::vector<PassTiming>& timings() const { return timings_; }
 
  private:
   template <class Work>
   void timed(const std::string& pass, Work&& work);
-  void dispatch_warp(const gl::Texture& starts, const gl::Texture& warped);
+  void dispatch_warp(const gpu::Texture& starts, const gpu::Texture& warped);
 
   CoverParameters parameters_;
-  gl::ComputeProgram identity_program_{"cover/identity.comp"};
-  gl::ComputeProgram curl_program_{"cover/curl.comp"};
-  gl::ComputeProgram warp_program_;  // the integrator's and curl mode's variant
-  gl::ComputeProgram density_program_{"cover/cover_density.comp"};
-  gl::ComputeProgram remap_program_{"cover/cover_remap.comp"};
-  gl::Texture identity_field_, curl_field_, warp_field_, density_field_, cover_field_;
+  gpu::ComputeProgram identity_program_{"cover/identity.comp"};
+  gpu::ComputeProgram curl_program_{"cover/curl.comp"};
+  gpu::ComputeProgram warp_program_;  // the integrator's and curl mode's variant
+  gpu::ComputeProgram density_program_{"cover/cover_density.comp"};
+  gpu::ComputeProgram remap_program_{"cover/cover_remap.comp"};
+  gpu::Texture identity_field_, curl_field_, warp_field_, density_field_, cover_field_;
   CoverageCalibration calibration_;
   std::vector<PassTiming> timings_;
-  std::optional<numerics::WarpDiagnostics> diagnostics_;
+  std::optional<cover::WarpDiagnostics> diagnostics_;
 };
 
 // Uploads FbmParams / CurlParams to a uniform struct of the same layout named `name`.
-void set_uniform(const gl::ComputeProgram& program, const std::string& name,
+void set_uniform(const gpu::ComputeProgram& program, const std::string& name,
                  const glsl::FbmParams& params);
-void set_uniform(const gl::ComputeProgram& program, const std::string& name,
+void set_uniform(const gpu::ComputeProgram& program, const std::string& name,
                  const glsl::CurlParams& params);
 
 // Bytes of GPU memory the passes allocate for a cube face size (plus the equirect export).

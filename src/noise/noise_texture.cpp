@@ -10,20 +10,20 @@ namespace nephele::noise {
 namespace {
 
 // The linker drops uniforms a kind does not read (the Worley part outside perlin-worley).
-void set_active(const gl::ComputeProgram& program, const std::string& name, float v) {
+void set_active(const gpu::ComputeProgram& program, const std::string& name, float v) {
   if (program.has_uniform(name)) program.set(name, v);
 }
-void set_active(const gl::ComputeProgram& program, const std::string& name, int v) {
+void set_active(const gpu::ComputeProgram& program, const std::string& name, int v) {
   if (program.has_uniform(name)) program.set(name, v);
 }
-void set_active(const gl::ComputeProgram& program, const std::string& name, unsigned v) {
+void set_active(const gpu::ComputeProgram& program, const std::string& name, unsigned v) {
   if (program.has_uniform(name)) program.set(name, v);
 }
-void set_active(const gl::ComputeProgram& program, const std::string& name, glsl::ivec3 v) {
+void set_active(const gpu::ComputeProgram& program, const std::string& name, glsl::ivec3 v) {
   if (program.has_uniform(name)) program.set(name, v);
 }
 
-void set_fbm(const gl::ComputeProgram& program, const std::string& name, const glsl::FbmParams& f) {
+void set_fbm(const gpu::ComputeProgram& program, const std::string& name, const glsl::FbmParams& f) {
   set_active(program, name + ".frequency", f.frequency);
   set_active(program, name + ".octaves", f.octaves);
   set_active(program, name + ".lacunarity", f.lacunarity);
@@ -32,7 +32,7 @@ void set_fbm(const gl::ComputeProgram& program, const std::string& name, const g
   set_active(program, name + ".period", f.period);
 }
 
-void set_channel(const gl::ComputeProgram& program, const glsl::NoiseChannel& channel,
+void set_channel(const gpu::ComputeProgram& program, const glsl::NoiseChannel& channel,
                  const TextureSpec& spec, int stride) {
   set_active(program, "u_channel.type", channel.type);
   set_fbm(program, "u_channel.fbm", channel.fbm);
@@ -78,11 +78,11 @@ unsigned TextureGenerator::buffer(Buffer& b, size_t bytes) {
   return b.id;
 }
 
-gl::ComputeProgram& TextureGenerator::program(const std::string& path, const Defines& defines) {
+gpu::ComputeProgram& TextureGenerator::program(const std::string& path, const Defines& defines) {
   std::string key = path;
   for (const auto& [name, value] : defines) key += " " + name + "=" + value;
   auto& slot = programs_[key];
-  if (!slot) slot = std::make_unique<gl::ComputeProgram>(path, defines);
+  if (!slot) slot = std::make_unique<gpu::ComputeProgram>(path, defines);
   return *slot;
 }
 
@@ -128,9 +128,9 @@ void TextureGenerator::generate(const TextureSpec& spec, Volume& out) {
                     {"NOISE_WORLEY_OCTAVES", std::to_string(params.worley.octaves)}};
     if (params.type == glsl::NOISE_PERLIN && glsl::perlin_row_is_wide(last_frequency(params.fbm)))
       defines.emplace_back("NOISE_PERLIN_WIDE", "1");
-    gl::ComputeProgram& rows = program("noise/noise_rows.comp", defines);
+    gpu::ComputeProgram& rows = program("noise/noise_rows.comp", defines);
     set_channel(rows, params, spec, stride);
-    gl::ComputeProgram* patch =
+    gpu::ComputeProgram* patch =
         has_worley ? &program("noise/noise_patch.comp", {{"NOISE_TYPE", std::to_string(params.type)}}) : nullptr;
     if (patch) set_channel(*patch, params, spec, stride);
     for (int z0 = 0; z0 < depth; z0 += slices) {

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "gl/compute_program.hpp"
+#include "gpu/compute_program.hpp"
 #include "noise/noise_spec.hpp"
 
 namespace nephele::noise {
@@ -45,7 +45,7 @@ class TextureGenerator {
 
  private:
   using Defines = std::vector<std::pair<std::string, std::string>>;
-  gl::ComputeProgram& program(const std::string& path, const Defines& defines);
+  gpu::ComputeProgram& program(const std::string& path, const Defines& defines);
   // Storage buffers kept between textures (allocating them costs a software driver a page
   // fault per 4 KiB): the values of one slab, and the patch list.
   struct Buffer {
@@ -53,7 +53,7 @@ class TextureGenerator {
     size_t bytes = 0;
   };
   unsigned buffer(Buffer& b, size_t bytes);
-  std::map<std::string, std::unique_ptr<gl::ComputeProgram>> programs_;
+  std::map<std::string, std::unique_ptr<gpu::ComputeProgram>> programs_;
   size_t slab_bytes_;
   Buffer values_, patches_;
   GeneratorTimings timings_;

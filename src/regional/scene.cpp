@@ -6,8 +6,8 @@
 #include <sstream>
 
 #include "regional/sites.hpp"
-#include "render/sun_position.hpp"
-#include "util/json.hpp"
+#include "core/time.hpp"
+#include "core/json.hpp"
 
 namespace nephele::regional {
 namespace {
@@ -144,7 +144,7 @@ void validate_scene(const Scene& s, const std::string& source) {
   check_range(source, "exposure", s.exposure, 1e-6, 1e6);
   check_range(source, "cover_size", s.cover_size, 4, 4096);
   try {
-    render::parse_utc_time(s.time);
+    core::parse_utc_time(s.time);
   } catch (const std::invalid_argument& e) {
     throw SceneError(source + ": 'time': " + e.what());
   }

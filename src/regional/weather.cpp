@@ -5,30 +5,11 @@
 #include <fstream>
 #include <sstream>
 
-#include "render/sun_position.hpp"
-#include "util/json.hpp"
+#include "core/time.hpp"
+#include "core/json.hpp"
 
 namespace nephele::regional {
 namespace {
-
-std::string format_time(double t) {
-  const long days = static_cast<long>(std::floor(t / 86400.0));
-  const long seconds = static_cast<long>(t - days * 86400.0);
-  // Civil date from days (inverse of days_from_civil, Hinnant).
-  long z = days + 719468;
-  const long era = (z >= 0 ? z : z - 146096) / 146097;
-  const unsigned doe = static_cast<unsigned>(z - era * 146097);
-  const unsigned yoe = (doe - doe / 1460 + doe / 36524 - doe / 146096) / 365;
-  long y = static_cast<long>(yoe) + era * 400;
-  const unsigned doy = doe - (365 * yoe + yoe / 4 - yoe / 100);
-  const unsigned mp = (5 * doy + 2) / 153;
-  const unsigned d = doy - (153 * mp + 2) / 5 + 1;
-  const unsigned m = mp < 10 ? mp + 3 : mp - 9;
-  y += m <= 2;
-  char buffer[40];
-  std::snprintf(buffer, sizeof buffer, "%04ld-%02u-%02uT%02ld:%02ldZ", y, m, d, seconds / 3600, seconds / 60 % 60);
-  return buffer;
-}
 
 struct Reader {
   const std::string& source;
@@ -81,9 +62,9 @@ struct Reader {
       if (!t.is_string()) fail(path + "time[" + std::to_string(i) + "]", "must be a string");
       std::string text = t.as_string();
       if (text.size() >= 11 && text[10] == ' ') text[10] = 'T';  // meteoblue "YYYY-MM-DD HH:MM"
-      if (text.back() != 'Z') text += "Z";
+      if (text.empty() || text.back() != 'Z') text += "Z";
       try {
-        out.push_back(render::parse_utc_time(text) - offset_seconds);
+        out.push_back(core::parse_utc_time(text) - offset_seconds);
       } catch (const std::invalid_argument& e) {
         fail(path + "time[" + std::to_string(i) + "]", e.what());
       }
@@ -98,8 +79,8 @@ struct Reader {
 WeatherSample WeatherSeries::at(double time) const {
   if (hours.empty()) throw WeatherError(source + ": no hours");
   if (time < hours.front().time || time > hours.back().time)
-    throw WeatherError(source + ": --time " + format_time(time) + " is outside the file's range " +
-                       format_time(hours.front().time) + " to " + format_time(hours.back().time));
+    throw WeatherError(source + ": --time " + core::format_utc_minutes(time) + " is outside the file's range " +
+                       core::format_utc_minutes(hours.front().time) + " to " + core::format_utc_minutes(hours.back().time));
   size_t i = 0;
   while (i + 1 < hours.size() && hours[i + 1].time < time) ++i;
   if (i + 1 >= hours.size() || hours[i].time == time) return hours[i];

@@ -10,8 +10,8 @@
 #include <memory>
 #include <stdexcept>
 
-#include "gl/compute_program.hpp"
-#include "gl/textures.hpp"
+#include "gpu/compute_program.hpp"
+#include "gpu/textures.hpp"
 #include "render/sun_position.hpp"
 #include "shader_math/shader_math.hpp"
 
@@ -84,7 +84,7 @@ glm::vec3 sky_irradiance(glm::vec3 sun, double earth_radius, double altitude_m) 
 }
 
 NoiseVolume::NoiseVolume(int size, std::uint32_t seed) : size_(size), seed_(seed) {
-  gl::ComputeProgram program("render/noise_volume.comp");
+  gpu::ComputeProgram program("render/noise_volume.comp");
   texture_ = make_texture(GL_TEXTURE_3D);
   const int levels = 1 + static_cast<int>(std::log2(size));
   glTextureStorage3D(texture_, levels, GL_RG32F, size, size, size);
@@ -94,7 +94,7 @@ NoiseVolume::NoiseVolume(int size, std::uint32_t seed) : size_(size), seed_(seed
   program.set("u_seed", static_cast<unsigned>(seed));
   glBindImageTexture(0, texture_, 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RG32F);
   program.dispatch_covering(size, size, size);
-  gl::image_barrier();
+  gpu::image_barrier();
   equalise_histogram(texture_, size);
   glGenerateTextureMipmap(texture_);
 }
@@ -152,9 +152,9 @@ RenderResult render_clouds(const Camera& camera, const std::vector<regional::Clo
   result.sun_direction = sun;
   const glm::vec3 ambient = sky_irradiance(glm::vec3(sun), earth_radius, 2000.0);
 
-  gl::Texture image = gl::Texture::plane(camera.width, camera.height, GL_RGBA32F);
+  gpu::Texture image = gpu::Texture::plane(camera.width, camera.height, GL_RGBA32F);
   timed("clouds", [&] {
-    gl::ComputeProgram program("render/clouds.comp");
+    gpu::ComputeProgram program("render/clouds.comp");
     const glm::dvec2 wind = glm::length(wind_towards) > 0 ? glm::normalize(wind_towards) : glm::dvec2(0, 1);
     const double travelled = std::fmod(wind_speed * unix_seconds, offset_wrap_m);
     for (size_t i = 0; i < active.size(); ++i) {
@@ -215,7 +215,7 @@ RenderResult render_clouds(const Camera& camera, const std::vector<regional::Clo
     glNamedBufferStorage(guard, sizeof zero, &zero, GL_MAP_READ_BIT);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, guard);
     program.dispatch_covering(camera.width, camera.height, 1);
-    gl::image_barrier();
+    gpu::image_barrier();
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
     glGetNamedBufferSubData(guard, 0, sizeof result.loop_limited_pixels, &result.loop_limited_pixels);
     glDeleteBuffers(1, &guard);
@@ -226,8 +226,8 @@ RenderResult render_clouds(const Camera& camera, const std::vector<regional::Clo
   return result;
 }
 
-output::ImageData tone_map(const output::ImageData& radiance, double exposure) {
-  output::ImageData out{radiance.width, radiance.height, 3, {}};
+core::ImageData tone_map(const core::ImageData& radiance, double exposure) {
+  core::ImageData out{radiance.width, radiance.height, 3, {}};
   out.pixels.reserve(static_cast<size_t>(radiance.width) * radiance.height * 3);
   for (size_t k = 0; k < radiance.pixels.size(); k += radiance.channels) {
     for (int c = 0; c < 3; ++c) {

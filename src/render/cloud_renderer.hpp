@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "export/image_files.hpp"
+#include "core/image.hpp"
 #include "regional/cloud_layers.hpp"
 #include "regional/weather_field.hpp"
 
@@ -31,7 +31,7 @@ struct RenderSettings {
 };
 
 struct RenderResult {
-  output::ImageData radiance;        // RGBA float, linear; A = cloud opacity
+  core::ImageData radiance;        // RGBA float, linear; A = cloud opacity
   std::vector<std::string> passes;   // what ran, in order (for --verbose and tests)
   std::vector<std::pair<std::string, double>> timings_ms;
   glm::dvec3 sun_direction;          // east, north, up
@@ -77,6 +77,6 @@ RenderResult render_clouds(const Camera& camera, const std::vector<regional::Clo
                            const NoiseVolume* noise = nullptr);
 
 // Display encoding for PNG: exposure, the ACES filmic curve fit of Narkowicz (2015), sRGB.
-output::ImageData tone_map(const output::ImageData& radiance, double exposure);
+core::ImageData tone_map(const core::ImageData& radiance, double exposure);
 
 }  // namespace nephele::render

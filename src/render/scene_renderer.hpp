@@ -6,7 +6,6 @@
 #include "regional/cloud_layers.hpp"
 #include "regional/scene.hpp"
 #include "render/cloud_renderer.hpp"
-#include "util/json.hpp"
 
 namespace nephele::render {
 
@@ -37,12 +36,5 @@ RenderSettings render_settings(const regional::Scene& scene);
 SceneRender render_prepared(const PreparedScene& prepared, const regional::Scene& scene,
                             const NoiseVolume* noise = nullptr);
 SceneRender render_scene(const regional::Scene& scene);
-
-// Writes each output (.png tone-mapped sRGB, .exr linear radiance with cloud opacity in A) and
-// a JSON sidecar next to the first one, all renamed into place together.
-void write_scene_outputs(const SceneRender& result, const regional::Scene& scene,
-                         const std::vector<std::string>& output_paths);
-
-json::Value scene_sidecar(const SceneRender& result, const regional::Scene& scene);
 
 }  // namespace nephele::render

@@ -2,8 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <stdexcept>
 
 namespace nephele::render {
 namespace {
@@ -13,35 +11,6 @@ constexpr double degree = M_PI / 180.0;
 double wrap_degrees(double a) { return a - 360.0 * std::floor(a / 360.0); }
 
 }  // namespace
-
-long days_from_civil(long y, unsigned m, unsigned d) {
-  y -= m <= 2;
-  const long era = (y >= 0 ? y : y - 399) / 400;
-  const unsigned yoe = static_cast<unsigned>(y - era * 400);
-  const unsigned doy = (153 * (m + (m > 2 ? -3 : 9)) + 2) / 5 + d - 1;
-  const unsigned doe = yoe * 365 + yoe / 4 - yoe / 100 + doy;
-  return era * 146097 + static_cast<long>(doe) - 719468;
-}
-
-double parse_utc_time(const std::string& text) {
-  int year = 0, month = 0, day = 0, hour = 0, minute = 0, consumed = 0;
-  double second = 0;
-  if (std::sscanf(text.c_str(), "%4d-%2d-%2dT%2d:%2d%n", &year, &month, &day, &hour, &minute, &consumed) != 5)
-    throw std::invalid_argument("'" + text + "' is not an ISO 8601 time (YYYY-MM-DDTHH:MM[:SS]Z)");
-  std::string rest = text.substr(static_cast<size_t>(consumed));
-  if (!rest.empty() && rest[0] == ':') {
-    int more = 0;
-    if (std::sscanf(rest.c_str(), ":%lf%n", &second, &more) != 1)
-      throw std::invalid_argument("'" + text + "': bad seconds");
-    rest = rest.substr(static_cast<size_t>(more));
-  }
-  if (rest != "Z" && rest != "+00:00" && rest != "z")
-    throw std::invalid_argument("'" + text + "' must be UTC, ending in Z");
-  if (month < 1 || month > 12 || day < 1 || day > 31 || hour > 23 || minute > 59 || second < 0 || second >= 61)
-    throw std::invalid_argument("'" + text + "' has a field out of range");
-  return days_from_civil(year, static_cast<unsigned>(month), static_cast<unsigned>(day)) * 86400.0 +
-         hour * 3600.0 + minute * 60.0 + second;
-}
 
 SunPosition sun_position(double unix_seconds, double latitude_deg, double longitude_deg) {
   // Days from J2000.0 (2000-01-01 12:00 TT ~ UT here; the 69 s difference moves the sun 0.0003 deg).

@@ -1,0 +1,25 @@
+# nephele_library(NAME [DEPENDS layer...] [PACKAGES target...] [EXTRA_SOURCES file...])
+# Makes the static library nephele_NAME from the .cpp files of the calling folder. DEPENDS names
+# the nephele layers it may use (linked publicly, so their headers are reachable); PACKAGES the
+# imported targets of other projects. Header-only folders become INTERFACE libraries.
+function(nephele_library name)
+  cmake_parse_arguments(ARG "" "" "DEPENDS;PACKAGES;EXTRA_SOURCES" ${ARGN})
+  file(GLOB sources CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/*.cpp)
+  list(APPEND sources ${ARG_EXTRA_SOURCES})
+  set(target nephele_${name})
+  set(layers "")
+  foreach(dependency ${ARG_DEPENDS})
+    list(APPEND layers nephele_${dependency})
+  endforeach()
+  if(sources)
+    add_library(${target} STATIC ${sources})
+    target_link_libraries(${target} PUBLIC ${layers} ${ARG_PACKAGES})
+    target_compile_options(${target} PRIVATE -Wall -Wextra)
+  else()
+    add_library(${target} INTERFACE)
+    target_link_libraries(${target} INTERFACE ${layers} ${ARG_PACKAGES})
+  endif()
+  # The layering test reads this property to know which layers a folder was given.
+  string(REPLACE ";" "," joined "${ARG_DEPENDS}")
+  set_property(GLOBAL APPEND PROPERTY NEPHELE_LAYER_LINKS "${name}:${joined}")
+endfunction()

@@ -1,0 +1,101 @@
+// nephele bench cover: time of each pass of the global cover for several sizes.
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+#include <sstream>
+
+#include "apps/cli/commands.hpp"
+#include "apps/cli/noise_options.hpp"
+#include "apps/cli/cover_options.hpp"
+#include "apps/cli/device_limits.hpp"
+#include "cover/global_cover.hpp"
+#include "cover/equirect.hpp"
+
+namespace nephele::cli {
+namespace {
+
+std::vector<int> parse_sizes(const std::string& text) {
+  std::vector<int> sizes;
+  std::stringstream stream(text);
+  std::string item;
+  while (std::getline(stream, item, ','))
+    sizes.push_back(static_cast<int>(parse_number("--sizes", item, 1, 16384)));
+  if (sizes.empty()) throw UsageError("--sizes: give a comma-separated list of sizes in 1..16384");
+  for (int s : sizes)
+    if (s != static_cast<double>(s)) throw UsageError("--sizes: sizes are integers in 1..16384");
+  return sizes;
+}
+
+int bench_cover(const std::vector<std::string>& arguments) {
+  cover::CoverParameters parameters;
+  std::string sizes_text = "256,512,1024";
+  int repeat = 3;
+  Options options("bench cover",
+                  "Prints the time of each pass of the global cover (median of the repeats) for\n"
+                  "each size, on the current OpenGL device.");
+  options.add_string("--sizes", &sizes_text, "comma-separated cube face sizes");
+  options.add_int("--repeat", &repeat, 1, 100, "runs per size; the median is printed");
+  add_cover_options(options, parameters, false);
+  if (!options.parse(arguments)) {
+    std::cout << options.help();
+    return exit_ok;
+  }
+  validate_cover_parameters(parameters);
+  const std::vector<int> sizes = parse_sizes(sizes_text);
+  gpu::EglContext context;
+  for (int s : sizes) check_cover_fits(context, s);
+  std::printf("device: %s (%s)\n", context.info().renderer.c_str(), context.info().version.c_str());
+  std::printf("K = %d steps, potential %d octaves, density %d octaves; milliseconds, median of %d\n",
+              parameters.iterations, parameters.potential.octaves, parameters.density.octaves, repeat);
+  const char* passes[] = {"identity", "curl", "warp", "density", "calibrate", "coverage", "equirect"};
+  std::printf("%6s", "size");
+  for (const char* p : passes) std::printf(" %10s", p);
+  std::printf(" %10s %12s\n", "total", "Mtexel/s");
+  for (int size : sizes) {
+    parameters.size = size;
+    std::vector<std::vector<double>> runs(std::size(passes));
+    for (int r = 0; r < repeat; ++r) {
+      cover::GlobalCover cover(parameters);
+      cover.run();
+      for (const auto& t : cover.timings())
+        for (size_t k = 0; k < std::size(passes); ++k)
+          if (t.pass == passes[k]) runs[k].push_back(t.milliseconds);
+      glFinish();
+      const auto start = std::chrono::steady_clock::now();
+      cover::equirect_from_cube(cover.cover_field(), 4 * size, 2 * size);
+      const std::chrono::duration<double, std::milli> elapsed = std::chrono::steady_clock::now() - start;
+      runs.back().push_back(elapsed.count());
+    }
+    double total = 0;
+    std::printf("%6d", size);
+    for (auto& r : runs) {
+      std::sort(r.begin(), r.end());
+      const double median = r[r.size() / 2];
+      total += median;
+      std::printf(" %10.1f", median);
+    }
+    std::printf(" %10.1f %12.2f\n", total, 6.0 * size * size / (total * 1e3));
+    std::fflush(stdout);
+  }
+  return exit_ok;
+}
+
+}  // namespace
+
+int run_bench(const std::vector<std::string>& arguments) {
+  if (arguments.empty() || arguments[0] == "--help" || arguments[0] == "-h") {
+    std::cout << "usage: nephele bench cover [options]\n\nbenchmarks:\n"
+                 "  cover   time of each global cover pass for sizes 256, 512, 1024\n"
+                 "  render  seconds per frame of the default scene, image error against steps\n"
+                 "  noise   million points per second of 3D Worley and Perlin, seconds of the noise presets\n";
+    return arguments.empty() ? exit_usage : exit_ok;
+  }
+  const std::vector<std::string> rest(arguments.begin() + 1, arguments.end());
+  if (arguments[0] == "cover") return bench_cover(rest);
+  if (arguments[0] == "render") return bench_render(rest);
+  if (arguments[0] == "noise") return bench_noise(rest);
+  throw UsageError("nephele bench: unknown benchmark '" + arguments[0] + "' (allowed: cover, render, noise)");
+}
+
+}  // namespace nephele::cli

@@ -1,0 +1,27 @@
+#pragma once
+// The options shared by every command that makes a global cover (generate, bench).
+#include "apps/cli/options.hpp"
+#include "cover/cover_parameters.hpp"
+
+namespace nephele::cli {
+
+// Registers the cover's parameters (the size too, unless include_size is false).
+void add_cover_options(Options& options, cover::CoverParameters& p, bool include_size = true);
+// Checks that span several options; throws UsageError.
+void validate_cover_parameters(const cover::CoverParameters& p);
+
+// How the warp is solved, --integrator, --curl-mode, --tolerance, --max-substeps (unless
+// include_integrator is false), and --noise-offset (docs/numerics.md). Values that Options
+// cannot hold (names, a double) are parsed after Options::parse, by apply().
+class WarpOptions {
+ public:
+  void add(Options& options, cover::CoverParameters& p, bool include_integrator = true);
+  void apply(cover::CoverParameters& p) const;  // throws UsageError naming the option
+
+ private:
+  std::string integrator_ = "euler";
+  std::string curl_mode_ = "sampled";
+  std::string noise_offset_ = "0";
+};
+
+}  // namespace nephele::cli

@@ -1,0 +1,70 @@
+// nephele generate: the global cloud cover, written as cube map faces, equirect and sidecar.
+#include <filesystem>
+#include <iostream>
+
+#include "apps/cli/commands.hpp"
+#include "apps/cli/cover_options.hpp"
+#include "apps/cli/device_limits.hpp"
+#include "io/cover_files.hpp"
+
+namespace nephele::cli {
+
+int run_generate(const std::vector<std::string>& arguments) {
+  cover::CoverParameters parameters;
+  std::string out = "cubemaps";
+  bool verbose = false;
+  Options options("generate",
+                  "Generates a global cloud cover: curl-warped Worley noise on a cube map, written to\n"
+                  "cover_{px,nx,py,ny,pz,nz}.exr, cover_equirect.exr, cover_equirect.png and cover.json.");
+  add_cover_options(options, parameters);
+  WarpOptions warp_options;
+  warp_options.add(options, parameters);
+  options.add_string("--out", &out, "output directory (created if missing)");
+  options.add_flag("--verbose", &verbose, "print the renderer and the time of each pass");
+  if (!options.parse(arguments)) {
+    std::cout << options.help();
+    return exit_ok;
+  }
+  warp_options.apply(parameters);
+  validate_cover_parameters(parameters);
+  const std::filesystem::path directory(out);
+  if (std::filesystem::exists(directory) && !std::filesystem::is_directory(directory))
+    throw UsageError("--out: '" + out + "' exists and is not a directory");
+
+  gpu::EglContext context;
+  if (verbose)
+    std::cerr << "renderer: " << context.info().renderer << " (" << context.info().version << ", EGL "
+              << context.info().platform << ")\n";
+  check_cover_fits(context, parameters.size);
+
+  std::error_code error;
+  std::filesystem::create_directories(directory, error);
+  if (error) throw UsageError("--out: cannot create directory '" + out + "': " + error.message());
+
+  cover::GlobalCover cover(parameters);
+  cover.run();
+  // Stiff or capped warps are reported, never silently written (docs/numerics.md).
+  const cover::WarpDiagnostics& diagnostics = cover.diagnose();
+  for (const auto& warning : diagnostics.warnings) std::cerr << "nephele: warning: " << warning << "\n";
+  const auto export_timings = io::write_cover_files(directory, cover, context.info());
+  if (verbose) {
+    for (const auto& t : cover.timings()) std::cerr << "pass " << t.pass << ": " << t.milliseconds << " ms\n";
+    for (const auto& t : export_timings) std::cerr << "export " << t.pass << ": " << t.milliseconds << " ms\n";
+    std::cerr << "warp: " << cover::integrator_name(parameters.integrator) << ", "
+              << cover::curl_mode_name(parameters.curl_mode) << " curl; stiffness h rho "
+              << diagnostics.stiffness.stiffness << " (stable limit " << diagnostics.stiffness.limit << ", beyond on "
+              << diagnostics.stiffness.beyond_fraction << " of the sphere); folded fraction "
+              << diagnostics.folding.folded_fraction;
+    if (diagnostics.adaptive)
+      std::cerr << "; sub-steps per texel " << diagnostics.substeps.mean_attempts << " on average, "
+                << diagnostics.substeps.max_attempts << " at most, " << diagnostics.substeps.capped_texels
+                << " texels capped";
+    std::cerr << "\n";
+  }
+  std::cout << "wrote " << (directory / "cover.json").string() << " and "
+            << io::cover_file_names().size() - 1 << " images; cloud fraction "
+            << cover.calibration().achieved_fraction << " (target " << parameters.coverage << ")\n";
+  return exit_ok;
+}
+
+}  // namespace nephele::cli

@@ -1,0 +1,61 @@
+// nephele: planetary cloud cover, generated on the GPU.
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "apps/cli/commands.hpp"
+#include "apps/cli/options.hpp"
+#include "gpu/compute_program.hpp"
+#include "gpu/egl_context.hpp"
+#include "nephele/version.hpp"
+
+namespace {
+
+const char* const usage =
+    "usage: nephele COMMAND [options]\n\n"
+    "commands:\n"
+    "  generate   make a global cloud cover (cube map faces, equirect map, cover.json)\n"
+    "  render     cloud layers seen from the ground (Gurten, Bantiger, anywhere)\n"
+    "  noise      tileable 3D noise textures (Worley, Perlin, Perlin-Worley, fBm)\n"
+    "  bench      benchmarks that print timings (nephele bench cover)\n"
+    "  report     error of the warp's integrators against their run time (work-precision)\n\n"
+    "nephele COMMAND --help describes each command's options and their ranges.\n"
+    "exit codes: 0 success, 1 failure, 2 bad input, 3 no OpenGL 4.5 context\n";
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  using namespace nephele::cli;
+  std::vector<std::string> arguments(argv + 1, argv + argc);
+  try {
+    if (arguments.empty()) {
+      std::cerr << usage;
+      return exit_usage;
+    }
+    const std::string command = arguments[0];
+    const std::vector<std::string> rest(arguments.begin() + 1, arguments.end());
+    if (command == "--help" || command == "-h" || command == "help") {
+      std::cout << usage;
+      return exit_ok;
+    }
+    if (command == "--version") {
+      std::cout << "nephele " << nephele::version << "\n";
+      return exit_ok;
+    }
+    if (command == "generate") return run_generate(rest);
+    if (command == "bench") return run_bench(rest);
+    if (command == "noise") return run_noise(rest);
+    if (command == "report") return run_report(rest);
+    if (command == "render") return run_render(rest);
+    throw UsageError("unknown command '" + command + "' (allowed: generate, render, noise, bench, report)");
+  } catch (const UsageError& e) {
+    std::cerr << "nephele: " << e.what() << "\n";
+    return exit_usage;
+  } catch (const nephele::gpu::ContextError& e) {
+    std::cerr << "nephele: " << e.what() << "\n";
+    return exit_no_context;
+  } catch (const std::exception& e) {
+    std::cerr << "nephele: error: " << e.what() << "\n";
+    return exit_failure;
+  }
+}

@@ -1,0 +1,241 @@
+// nephele noise: tileable 3D noise textures (Worley, Perlin, Perlin-Worley, fBm) as a slice
+// atlas (PNG, EXR) or a raw float32 volume, each with a JSON sidecar.
+#include <epoxy/gl.h>
+
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+#include "apps/cli/commands.hpp"
+#include "apps/cli/noise_options.hpp"
+#include "apps/cli/options.hpp"
+#include "gpu/egl_context.hpp"
+#include "io/noise_files.hpp"
+#include "noise/noise_texture.hpp"
+
+namespace nephele::cli {
+namespace {
+
+bool given(const std::vector<std::string>& arguments, const std::string& name) {
+  for (const auto& a : arguments)
+    if (a == name || a.rfind(name + "=", 0) == 0) return true;
+  return false;
+}
+
+// MemAvailable from /proc/meminfo in bytes; 0 when unknown.
+double memory_available() {
+  std::ifstream meminfo("/proc/meminfo");
+  std::string key, unit;
+  double kilobytes = 0;
+  while (meminfo >> key >> kilobytes >> unit)
+    if (key == "MemAvailable:") return kilobytes * 1024.0;
+  return 0.0;
+}
+
+// Parses "type=worley,cells=8,octaves=3" into a channel (keys as the global options).
+noise::ChannelSpec parse_channel(const std::string& option, const std::string& text, noise::ChannelSpec c) {
+  std::stringstream stream(text);
+  std::string item;
+  while (std::getline(stream, item, ',')) {
+    const auto eq = item.find('=');
+    if (eq == std::string::npos)
+      throw UsageError(option + ": '" + item + "' is not key=value (keys: type, cells, octaves, lacunarity, gain, "
+                       "worley-cells, worley-octaves)");
+    const std::string key = item.substr(0, eq), value = item.substr(eq + 1);
+    const std::string where = option + " " + key;
+    auto integer = [&](int min, int max) {
+      const double v = parse_number(where, value, min, max);
+      if (v != std::floor(v)) throw UsageError(where + ": '" + value + "' is not an integer");
+      return static_cast<int>(v);
+    };
+    if (key == "type") {
+      try {
+        c.type = noise::parse_type(value);
+      } catch (const noise::SpecError& e) {
+        throw UsageError(option + " " + e.what());
+      }
+    } else if (key == "cells") {
+      c.cells = integer(1, 1 << 20);
+    } else if (key == "octaves") {
+      c.octaves = integer(1, noise::max_octaves);
+    } else if (key == "lacunarity") {
+      c.lacunarity = static_cast<float>(parse_number(where, value, 1.0, 8.0));
+    } else if (key == "gain") {
+      c.gain = static_cast<float>(parse_number(where, value, 0.0, 2.0));
+    } else if (key == "worley-cells") {
+      c.worley_cells = integer(1, 1 << 20);
+    } else if (key == "worley-octaves") {
+      c.worley_octaves = integer(1, noise::max_octaves);
+    } else {
+      throw UsageError(option + ": unknown key '" + key +
+                       "' (keys: type, cells, octaves, lacunarity, gain, worley-cells, worley-octaves)");
+    }
+  }
+  return c;
+}
+
+}  // namespace
+
+NoiseRequest parse_noise_request(const std::vector<std::string>& arguments, bool* help_shown) {
+  NoiseRequest request;
+  noise::ChannelSpec base;
+  int size = 32, width = 32, height = 32, depth = 32;
+  std::string type = "worley", layout = "r", preset;
+  int worley_cells = 0;
+  std::string channel_text[4];
+  Options options("noise",
+                  "Generates a tileable 3D noise texture: Worley (F1), Perlin and Perlin-Worley, each with fBm, in up\n"
+                  "to four channels. --out NAME.png or NAME.exr writes the slice atlas (depth slices of width x height\n"
+                  "side by side), NAME.raw the float32 volume; NAME.json describes it. Values lie in [0, 1].\n"
+                  "Channel k (r, g, b, a) has cells * 2^k cells (at most one per texel) unless --r, --g, --b or --a say otherwise.");
+  options.add_string("--preset", &preset, "shape (128^3 RGBA Perlin-Worley + Worley fBm) or erosion (32^3 RGB Worley fBm)");
+  options.add_string("--type", &type, "worley, inverted-worley, perlin or perlin-worley");
+  options.add_int("--width", &width, 1, 1 << 16, "texels along x");
+  options.add_int("--height", &height, 1, 1 << 16, "texels along y");
+  options.add_int("--depth", &depth, 1, 1 << 16, "texels along z (slices)");
+  options.add_int("--size", &size, 1, 1 << 16, "texels along every axis (instead of --width, --height, --depth)");
+  options.add_int("--cells", &base.cells, 1, 1 << 20,
+                  "cells per period along the width at octave 0; the other axes follow the aspect");
+  options.add_int("--octaves", &base.octaves, 1, noise::max_octaves, "fBm octaves");
+  options.add_float("--lacunarity", &base.lacunarity, 1.0, 8.0, "frequency ratio between octaves (whole cells)");
+  options.add_float("--gain", &base.gain, 0.0, 2.0, "amplitude ratio between octaves (persistence)");
+  options.add_int("--worley-cells", &worley_cells, 0, 1 << 20,
+                  "perlin-worley: cells of the Worley fBm (0: as --cells)");
+  options.add_int("--worley-octaves", &base.worley_octaves, 1, noise::max_octaves, "perlin-worley: octaves of the Worley fBm");
+  options.add_string("--channels", &layout, "r, rg, rgb or rgba");
+  const char* letters[4] = {"--r", "--g", "--b", "--a"};
+  for (int k = 0; k < 4; ++k)
+    options.add_string(letters[k], &channel_text[k],
+                       std::string("settings of channel ") + (letters[k] + 2) +
+                           ": key=value,... with keys type, cells, octaves, lacunarity, gain, worley-cells, worley-octaves");
+  options.add_uint32("--seed", &request.spec.seed, "seed of every channel");
+  options.add_int("--bits", &request.png_bits, 8, 16, "bits per PNG sample: 8 or 16");
+  options.add_string("--out", &request.out, "output file: .png or .exr (slice atlas) or .raw (float32 volume)");
+  options.add_flag("--stretch", &request.stretch,
+                   "map each channel's range linearly onto [0, 1] (the range before goes to the sidecar)");
+  options.add_flag("--verbose", &request.verbose, "print the renderer and timings");
+  if (!options.parse(arguments)) {
+    request.help = options.help();
+    if (help_shown) *help_shown = true;
+    return request;
+  }
+  if (request.png_bits != 8 && request.png_bits != 16)
+    throw UsageError("--bits: " + std::to_string(request.png_bits) + " is not allowed (allowed: 8 or 16)");
+  if (request.out.empty()) throw UsageError("--out: an output file is required (NAME.png, NAME.exr or NAME.raw)");
+
+  try {
+    if (!preset.empty()) {
+      for (const char* o : {"--type", "--width", "--height", "--depth", "--size", "--cells", "--octaves",
+                            "--lacunarity", "--gain", "--worley-cells", "--worley-octaves", "--channels", "--r", "--g",
+                            "--b", "--a"})
+        if (given(arguments, o))
+          throw UsageError(std::string("--preset fixes the texture's layout; ") + o +
+                           " cannot be combined with it (allowed with --preset: --seed, --out, --bits, --stretch, --verbose)");
+      const std::uint32_t seed = request.spec.seed;
+      request.spec = noise::preset(preset, seed);
+      request.preset = preset;
+    } else {
+      if (given(arguments, "--size")) {
+        for (const char* o : {"--width", "--height", "--depth"})
+          if (given(arguments, o)) throw UsageError(std::string("--size and ") + o + " exclude each other");
+        width = height = depth = size;
+      }
+      request.spec.width = width;
+      request.spec.height = height;
+      request.spec.depth = depth;
+      base.type = noise::parse_type(type);
+      base.worley_cells = worley_cells > 0 ? worley_cells : base.cells;
+      static const char* const layouts[] = {"r", "rg", "rgb", "rgba"};
+      int channels = 0;
+      for (int k = 0; k < 4; ++k)
+        if (layout == layouts[k]) channels = k + 1;
+      if (channels == 0) throw UsageError("--channels: '" + layout + "' is not allowed (allowed: r, rg, rgb, rgba)");
+      request.spec.channels.clear();
+      for (int k = 0; k < 4; ++k) {
+        if (k >= channels) {
+          if (!channel_text[k].empty())
+            throw UsageError(std::string(letters[k]) + ": channel " + (letters[k] + 2) + " is not in --channels " + layout);
+          continue;
+        }
+        noise::ChannelSpec c = base;  // one detail level per channel
+        // Doubling stops at one cell per texel, so that every size works with the defaults.
+        for (int j = 0; j < k && 2 * c.cells <= width; ++j) c.cells *= 2;
+        for (int j = 0; j < k && 2 * c.worley_cells <= width; ++j) c.worley_cells *= 2;
+        if (!channel_text[k].empty()) c = parse_channel(letters[k], channel_text[k], c);
+        request.spec.channels.push_back(c);
+      }
+    }
+    noise::validate(request.spec);
+    io::format_for(request.out);
+  } catch (const noise::SpecError& e) {
+    throw UsageError(e.what());
+  }
+  const std::filesystem::path out(request.out);
+  const std::filesystem::path directory = out.has_parent_path() ? out.parent_path() : std::filesystem::path(".");
+  if (!std::filesystem::is_directory(directory))
+    throw UsageError("--out: directory '" + directory.string() + "' does not exist");
+  if (std::filesystem::is_directory(out)) throw UsageError("--out: '" + request.out + "' is a directory");
+  return request;
+}
+
+void check_noise_fits(const noise::TextureSpec& spec, const gpu::EglContext& context) {
+  GLint max_3d = 0;
+  glGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &max_3d);
+  const std::pair<const char*, int> sizes[] = {{"--width", spec.width}, {"--height", spec.height}, {"--depth", spec.depth}};
+  for (const auto& [option, value] : sizes)
+    if (value > max_3d)
+      throw UsageError(std::string(option) + ": " + std::to_string(value) + " exceeds this driver's 3D texture limit (" +
+                       context.info().renderer + "); allowed range 1 to " + std::to_string(max_3d));
+  const double available = memory_available();
+  const double needed = noise::host_bytes(spec);
+  if (available > 0 && needed > available) {
+    std::ostringstream m;
+    m << "--width, --height, --depth: " << spec.width << " x " << spec.height << " x " << spec.depth << " with "
+      << spec.channels.size() << " channels needs about " << std::ceil(needed / 1048576.0) << " MiB but "
+      << std::floor(available / 1048576.0) << " MiB of memory are available; allowed at most about "
+      << std::floor((available - static_cast<double>(noise::TextureGenerator::slab_budget_bytes)) / 12.0 /
+                    static_cast<double>(spec.channels.size()))
+      << " texels in all";
+    throw UsageError(m.str());
+  }
+}
+
+int run_noise(const std::vector<std::string>& arguments) {
+  bool help = false;
+  NoiseRequest request = parse_noise_request(arguments, &help);
+  if (help) {
+    std::cout << request.help;
+    return exit_ok;
+  }
+  gpu::EglContext context;
+  if (request.verbose)
+    std::cerr << "renderer: " << context.info().renderer << " (" << context.info().version << ")\n";
+  check_noise_fits(request.spec, context);
+  const auto start = std::chrono::steady_clock::now();
+  noise::TextureGenerator generator;
+  noise::Volume volume = generator.generate(request.spec);
+  const double generate_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  json::Value run;
+  run.set("renderer", context.info().renderer);
+  run.set("generate_ms", generate_ms);
+  run.set("compute_ms", generator.timings().compute_ms);
+  run.set("patched_segments", static_cast<double>(generator.timings().patched_segments));
+  const auto write_start = std::chrono::steady_clock::now();
+  std::vector<io::ValueRange> stretched_from;
+  if (request.stretch) stretched_from = io::stretch_channels(volume);
+  const auto sidecar =
+      io::write_noise_files(request.out, request.spec, volume, request.png_bits, request.preset, run, stretched_from);
+  const double write_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - write_start).count();
+  if (request.verbose)
+    std::cerr << "generate: " << generate_ms << " ms (compute " << generator.timings().compute_ms << " ms), write: "
+              << write_ms << " ms\n";
+  std::cout << "wrote " << request.out << " and " << sidecar.string() << " (" << request.spec.width << " x "
+            << request.spec.height << " x " << request.spec.depth << ", " << request.spec.channels.size()
+            << (request.spec.channels.size() == 1 ? " channel)\n" : " channels)\n");
+  return exit_ok;
+}
+
+}  // namespace nephele::cli

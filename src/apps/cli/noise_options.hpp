@@ -1,0 +1,31 @@
+#pragma once
+// The options of nephele noise, parsed and checked (exposed for the tests and the benchmark).
+#include <string>
+#include <vector>
+
+#include "gpu/egl_context.hpp"
+#include "noise/noise_spec.hpp"
+
+namespace nephele::cli {
+
+struct NoiseRequest {
+  noise::TextureSpec spec;
+  std::string preset;  // empty unless --preset
+  std::string out;
+  int png_bits = 8;
+  bool verbose = false;
+  bool stretch = false;  // map each channel's range onto [0, 1]
+  std::string help;  // the --help text when *help_shown
+};
+
+// Parses and validates everything that needs no OpenGL context; throws UsageError naming the
+// option and its allowed values.
+NoiseRequest parse_noise_request(const std::vector<std::string>& arguments, bool* help_shown = nullptr);
+
+// The driver's 3D texture limit and the host memory; throws UsageError.
+void check_noise_fits(const noise::TextureSpec& spec, const gpu::EglContext& context);
+
+// nephele bench noise.
+int bench_noise(const std::vector<std::string>& arguments);
+
+}  // namespace nephele::cli

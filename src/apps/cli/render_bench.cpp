@@ -1,0 +1,72 @@
+// nephele bench render: seconds per frame, and the image error against the number of steps.
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+
+#include "apps/cli/commands.hpp"
+#include "apps/cli/options.hpp"
+#include "gpu/egl_context.hpp"
+#include "studies/render_error.hpp"
+#include "studies/render_report.hpp"
+#include "render/scene_renderer.hpp"
+
+namespace nephele::cli {
+
+int bench_render(const std::vector<std::string>& arguments) {
+  regional::Scene scene;  // the built-in default: Gurten, global cover as the weather
+  std::string size = "1280x720", sweep_size = "320x180";
+  int repeat = 2;
+  bool no_sweep = false;
+  Options options("bench render",
+                  "Prints seconds per frame of the default scene, then the image error against the\n"
+                  "numbers of view and light steps (relative RMS and max against 384 x 24 steps, the\n"
+                  "sweep that `nephele report` runs, there at 160x90).");
+  options.add_string("--size", &size, "frame size WIDTHxHEIGHT");
+  options.add_string("--sweep-size", &sweep_size, "frame size of the error sweep");
+  options.add_int("--repeat", &repeat, 1, 20, "frames timed; the median is printed");
+  options.add_flag("--no-sweep", &no_sweep, "time frames only");
+  if (!options.parse(arguments)) {
+    std::cout << options.help();
+    return exit_ok;
+  }
+  try {
+    regional::parse_size(size, scene.width, scene.height, "--size");
+    regional::Scene check = scene;
+    regional::parse_size(sweep_size, check.width, check.height, "--sweep-size");
+    regional::validate_scene(scene, "--size");
+    regional::validate_scene(check, "--sweep-size");
+  } catch (const regional::SceneError& e) {
+    throw UsageError(e.what());
+  }
+  gpu::EglContext context;
+  std::printf("device: %s (%s)\n", context.info().renderer.c_str(), context.info().version.c_str());
+  std::printf("scene: %s, %s, %dx%d, %d view x %d light x %d sky steps\n", scene.view.c_str(), scene.time.c_str(),
+              scene.width, scene.height, scene.view_steps, scene.light_steps, scene.sky_steps);
+  std::vector<double> frames;
+  for (int r = 0; r < repeat; ++r) {
+    const auto start = std::chrono::steady_clock::now();
+    const render::SceneRender result = render::render_scene(scene);
+    const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;
+    frames.push_back(elapsed.count());
+    if (r == 0)
+      for (const auto& [name, ms] : result.render.timings_ms) std::printf("  pass %-14s %10.1f ms\n", name.c_str(), ms);
+  }
+  std::sort(frames.begin(), frames.end());
+  std::printf("seconds per frame (whole scene, median of %d): %.2f\n", repeat, frames[frames.size() / 2]);
+  if (no_sweep) return exit_ok;
+
+  studies::RenderSweepOptions sweep = studies::RenderSweepOptions::full();
+  regional::parse_size(sweep_size, sweep.width, sweep.height, "--sweep-size");
+  std::printf("\nimage error against steps at %dx%d (reference %d view x %d light steps)\n", sweep.width, sweep.height,
+              sweep.reference_view, sweep.reference_light);
+  std::printf("%s", studies::render_error_table_header().c_str());
+  std::fflush(stdout);
+  studies::render_error_sweep(scene, sweep, [](const studies::RenderErrorRow& row) {
+    std::printf("%s", studies::render_error_table_line(row).c_str());
+    std::fflush(stdout);
+  });
+  return exit_ok;
+}
+
+}  // namespace nephele::cli

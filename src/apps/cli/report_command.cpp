@@ -1,0 +1,167 @@
+// nephele report: error of each warp approximation against its run time (docs/numerics.md), and
+// the image error of the ray marcher against the number of view and light steps (docs/rendering.md).
+#include <filesystem>
+#include <iostream>
+#include <sstream>
+
+#include "apps/cli/commands.hpp"
+#include "apps/cli/cover_options.hpp"
+#include "apps/cli/device_limits.hpp"
+#include "io/atomic_output.hpp"
+#include "gpu/egl_context.hpp"
+#include "studies/work_precision.hpp"
+#include "regional/scene.hpp"
+#include "studies/render_error.hpp"
+#include "studies/render_report.hpp"
+
+namespace nephele::cli {
+namespace {
+
+template <class T>
+std::vector<T> parse_list(const std::string& option, const std::string& text, double min, double max, bool integers) {
+  std::vector<T> values;
+  std::stringstream stream(text);
+  std::string item;
+  const std::string allowed = "a comma-separated list of " + std::string(integers ? "integers" : "numbers") + " in " +
+                              std::to_string(min) + ".." + std::to_string(max);
+  while (std::getline(stream, item, ',')) {
+    const double v = parse_number(option, item, min, max);
+    if (integers && v != static_cast<double>(static_cast<long long>(v)))
+      throw UsageError(option + ": '" + item + "' is not an integer (" + allowed + ")");
+    values.push_back(static_cast<T>(v));
+  }
+  if (values.empty()) throw UsageError(option + ": give " + allowed);
+  return values;
+}
+
+}  // namespace
+
+int run_report(const std::vector<std::string>& arguments) {
+  cover::CoverParameters parameters;
+  std::string out = "report", sizes, steps, tolerances, render_size;
+  bool quick = false, no_render = false;
+  int samples = 0, repeat = 0;  // 0: the mode's default
+  float budget_ms = 0.0f;
+  Options options("report",
+                  "Sweeps integrator x steps x curl mode x size, times the curl and warp passes and compares\n"
+                  "the warped points with a reference solution at sample points. Writes error_vs_runtime.csv,\n"
+                  "error_vs_runtime.svg (work-precision diagram), stability.csv and summary.md into --out.\n"
+                  "The flow time T = iterations * step stays fixed; fixed-step schemes use h = T / steps.\n"
+                  "Then renders the default scene with view steps 8..96 x light steps 2..12 against 384 x 24\n"
+                  "(quick: 8,16,48 x 2,6 against 96 x 12) into render_error.csv, render_error_vs_runtime.svg\n"
+                  "and a section of summary.md.");
+  options.add_string("--out", &out, "output directory (created if missing)");
+  options.add_flag("--quick", &quick, "a short sweep for CI (size 32, 10 and 50 steps, 96 points; render 32x18)");
+  options.add_string("--sizes", &sizes, "comma-separated cube face sizes (default 128,256,512; quick 32)");
+  options.add_string("--steps", &steps, "comma-separated step counts of the fixed-step schemes (default 5,10,25,50,100,200)");
+  options.add_string("--tolerances", &tolerances, "comma-separated tolerances of the adaptive scheme (default 1e-2..1e-6)");
+  options.add_int("--samples", &samples, 0, 64, "sample grid m: 6 m^2 sample points (0: 20, quick 4)");
+  options.add_int("--repeat", &repeat, 0, 20, "timed runs per configuration, the fastest counts (0: 3, quick 1)");
+  options.add_string("--render-size", &render_size, "frame size WIDTHxHEIGHT of the render sweep (default 160x90; quick 32x18)");
+  options.add_flag("--no-render", &no_render, "skip the render sweep");
+  options.add_float("--budget-ms", &budget_ms, 0.0, 1e7, "skip runs predicted to take longer (0: 20000, quick 2000)");
+  add_cover_options(options, parameters, false);
+  WarpOptions warp_options;
+  warp_options.add(options, parameters, false);
+  if (!options.parse(arguments)) {
+    std::cout << options.help();
+    return exit_ok;
+  }
+  warp_options.apply(parameters);
+  validate_cover_parameters(parameters);
+  studies::SweepOptions sweep =
+      quick ? studies::SweepOptions::quick(parameters) : studies::SweepOptions::full(parameters);
+  if (!sizes.empty()) sweep.sizes = parse_list<int>("--sizes", sizes, 1, 16384, true);
+  if (!steps.empty()) sweep.steps = parse_list<int>("--steps", steps, 1, 100000, true);
+  if (!tolerances.empty()) sweep.tolerances = parse_list<float>("--tolerances", tolerances, 1e-7, 1.0, false);
+  if (samples > 0) sweep.sample_grid = samples;
+  if (repeat > 0) sweep.repeat = repeat;
+  if (budget_ms > 0) sweep.budget_ms = budget_ms;
+  studies::RenderSweepOptions render_sweep =
+      quick ? studies::RenderSweepOptions::quick() : studies::RenderSweepOptions::full();
+  const regional::Scene render_scene;  // the built-in default: Gurten, global cover as the weather
+  try {
+    if (!render_size.empty()) regional::parse_size(render_size, render_sweep.width, render_sweep.height, "--render-size");
+    regional::Scene check = render_scene;
+    check.width = render_sweep.width;
+    check.height = render_sweep.height;
+    regional::validate_scene(check, "--render-size");
+  } catch (const regional::SceneError& e) {
+    throw UsageError(e.what());
+  }
+  const std::filesystem::path directory(out);
+  if (std::filesystem::exists(directory) && !std::filesystem::is_directory(directory))
+    throw UsageError("--out: '" + out + "' exists and is not a directory");
+
+  gpu::EglContext context;
+  for (int size : sweep.sizes) check_cover_fits(context, size);
+  std::error_code error;
+  std::filesystem::create_directories(directory, error);
+  if (error) throw UsageError("--out: cannot create directory '" + out + "': " + error.message());
+
+  std::cout << "device: " << context.info().renderer << " (" << context.info().version << ")\n" << std::flush;
+  studies::SweepResult result =
+      studies::run_sweep(sweep, [](const std::string& line) { std::cout << line << "\n" << std::flush; });
+  result.device = context.info().renderer + " (" + context.info().version + ")";
+
+  std::vector<studies::RenderErrorRow> render_rows;
+  if (!no_render) {
+    std::cout << "render sweep: default scene at " << render_sweep.width << "x" << render_sweep.height
+              << ", reference " << render_sweep.reference_view << " view x " << render_sweep.reference_light
+              << " light steps\n"
+              << studies::render_error_table_header() << std::flush;
+    render_rows = studies::render_error_sweep(render_scene, render_sweep, [](const studies::RenderErrorRow& row) {
+      std::cout << studies::render_error_table_line(row) << std::flush;
+    });
+  }
+  const studies::RenderStepChoice render_choice =
+      studies::choose_render_steps(render_rows, render_scene.view_steps, render_scene.light_steps);
+
+  io::OutputSet outputs(directory);
+  io::write_text_file(outputs.temporary_for("error_vs_runtime.csv"), studies::error_csv(result.rows));
+  io::write_text_file(outputs.temporary_for("stability.csv"), studies::stability_csv(result.rows));
+  io::write_text_file(outputs.temporary_for("error_vs_runtime.svg"),
+                          studies::work_precision_svg(result.rows, "Warp error against run time, " + result.device,
+                                                       result.cpu_device
+                                                           ? "CPU time of the curl + warp passes, all threads (ms)"
+                                                           : "time of the curl + warp passes (ms)"));
+  std::string summary = studies::summary_markdown(result, sweep);
+  if (no_render) {
+    summary += "\n## Render: image error against run time\n\nNot run (--no-render).\n";
+  } else {
+    io::write_text_file(outputs.temporary_for("render_error.csv"),
+                            studies::render_error_csv(render_rows, render_sweep));
+    io::write_text_file(
+        outputs.temporary_for("render_error_vs_runtime.svg"),
+        studies::render_error_svg(render_rows,
+                                 "Image error against run time, default scene, " + std::to_string(render_sweep.width) +
+                                     " x " + std::to_string(render_sweep.height) + " pixels",
+                                 "reference " + std::to_string(render_sweep.reference_view) + " view x " +
+                                     std::to_string(render_sweep.reference_light) + " light steps; " + result.device,
+                                 render_scene.view_steps, render_scene.light_steps));
+    summary += "\n" + studies::render_summary_markdown(render_rows, render_sweep, render_choice,
+                                                      render_scene.view_steps, render_scene.light_steps);
+  }
+  io::write_text_file(outputs.temporary_for("summary.md"), summary);
+  outputs.commit();
+  for (const auto& c : result.comparisons)
+    if (c.has_baseline)
+      std::cout << "size " << c.size << ": at the default's error (" << c.baseline.warp_err_rms << " rad rms) "
+                << (c.has_equal_error ? std::to_string(c.speedup) + "x faster" : std::string("no faster run"))
+                << "; at its time (" << c.baseline.time_ms << " ms) "
+                << (c.has_equal_time ? std::to_string(c.error_ratio) + "x less error" : std::string("no run"))
+                << "\n";
+  if (render_choice.has_default)
+    std::cout << "render: defaults " << render_choice.default_row.view_steps << " x "
+              << render_choice.default_row.light_steps << ": rel rms " << render_choice.default_row.rms_error << "; within "
+              << render_choice.factor << "x its error the cheapest is " << render_choice.cheapest.view_steps << " x "
+              << render_choice.cheapest.light_steps << " (" << render_choice.cheapest.time_ms
+              << " ms); within its time the most accurate is " << render_choice.most_accurate.view_steps << " x "
+              << render_choice.most_accurate.light_steps << " (rel rms " << render_choice.most_accurate.rms_error
+              << ")\n";
+  std::cout << "wrote " << (directory / "error_vs_runtime.csv").string() << ", error_vs_runtime.svg, stability.csv, "
+            << (no_render ? "" : "render_error.csv, render_error_vs_runtime.svg, ") << "summary.md\n";
+  return exit_ok;
+}
+
+}  // namespace nephele::cli

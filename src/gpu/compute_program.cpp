@@ -1,0 +1,86 @@
+#include "gpu/compute_program.hpp"
+
+#include "gpu/shader_sources.hpp"
+
+namespace nephele::gpu {
+
+ComputeProgram::ComputeProgram(const std::string& path,
+                               const std::vector<std::pair<std::string, std::string>>& defines)
+    : ComputeProgram(FromExpanded{}, path, expand_shader(path, defines)) {}
+
+ComputeProgram ComputeProgram::from_text(const std::string& path, const std::string& text) {
+  return ComputeProgram(FromExpanded{}, path, expand_shader_text(path, text));
+}
+
+ComputeProgram::ComputeProgram(FromExpanded, const std::string& path, const ExpandedShader& source)
+    : path_(path) {
+  const GLuint shader = glCreateShader(GL_COMPUTE_SHADER);
+  const char* text = source.text.c_str();
+  glShaderSource(shader, 1, &text, nullptr);
+  glCompileShader(shader);
+  GLint ok = GL_FALSE;
+  glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+  if (!ok) {
+    GLint length = 0;
+    glGetShaderiv(shader, GL_INFO_LOG_LENGTH, &length);
+    std::string log(static_cast<size_t>(length > 0 ? length : 1), '\0');
+    glGetShaderInfoLog(shader, length, nullptr, log.data());
+    glDeleteShader(shader);
+    throw ShaderError("compiling " + path + " failed:\n" + name_files_in_log(log, source.files));
+  }
+  program_ = glCreateProgram();
+  glAttachShader(program_, shader);
+  glLinkProgram(program_);
+  glDeleteShader(shader);
+  glGetProgramiv(program_, GL_LINK_STATUS, &ok);
+  if (!ok) {
+    GLint length = 0;
+    glGetProgramiv(program_, GL_INFO_LOG_LENGTH, &length);
+    std::string log(static_cast<size_t>(length > 0 ? length : 1), '\0');
+    glGetProgramInfoLog(program_, length, nullptr, log.data());
+    glDeleteProgram(program_);
+    throw ShaderError("linking " + path + " failed:\n" + name_files_in_log(log, source.files));
+  }
+  glGetProgramiv(program_, GL_COMPUTE_WORK_GROUP_SIZE, local_size_);
+}
+
+ComputeProgram::~ComputeProgram() {
+  if (program_) glDeleteProgram(program_);
+}
+
+void ComputeProgram::use() const { glUseProgram(program_); }
+
+bool ComputeProgram::has_uniform(const std::string& name) const {
+  return glGetUniformLocation(program_, name.c_str()) >= 0;
+}
+
+GLint ComputeProgram::location(const std::string& name) const {
+  const GLint where = glGetUniformLocation(program_, name.c_str());
+  if (where < 0) throw ShaderError(path_ + ": no active uniform '" + name + "'");
+  return where;
+}
+
+void ComputeProgram::set(const std::string& name, float value) const {
+  glProgramUniform1f(program_, location(name), value);
+}
+void ComputeProgram::set(const std::string& name, int value) const {
+  glProgramUniform1i(program_, location(name), value);
+}
+void ComputeProgram::set(const std::string& name, unsigned value) const {
+  glProgramUniform1ui(program_, location(name), value);
+}
+void ComputeProgram::set(const std::string& name, glm::vec3 value) const {
+  glProgramUniform3f(program_, location(name), value.x, value.y, value.z);
+}
+void ComputeProgram::set(const std::string& name, glm::ivec3 value) const {
+  glProgramUniform3i(program_, location(name), value.x, value.y, value.z);
+}
+
+void ComputeProgram::dispatch_covering(int width, int height, int depth) const {
+  use();
+  auto groups = [](int n, int local) { return static_cast<GLuint>((n + local - 1) / local); };
+  glDispatchCompute(groups(width, local_size_[0]), groups(height, local_size_[1]),
+                    groups(depth, local_size_[2]));
+}
+
+}  // namespace nephele::gpu

@@ -1,0 +1,53 @@
+#pragma once
+// A compute shader program built from the embedded shader library.
+#include <epoxy/gl.h>
+#include <glm/glm.hpp>
+
+#include "gpu/shader_sources.hpp"
+
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace nephele::gpu {
+
+class ShaderError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+class ComputeProgram {
+ public:
+  // `path` is relative to shaders/, e.g. "cover/curl.comp". Compile errors name the file and line.
+  explicit ComputeProgram(const std::string& path,
+                          const std::vector<std::pair<std::string, std::string>>& defines = {});
+  // A program from source text under a virtual path (test probes); includes resolve against
+  // the embedded library.
+  static ComputeProgram from_text(const std::string& path, const std::string& text);
+  ~ComputeProgram();
+  ComputeProgram(const ComputeProgram&) = delete;
+  ComputeProgram& operator=(const ComputeProgram&) = delete;
+
+  void use() const;
+  // Setting a uniform the linker removed is an error: it means host and shader disagree.
+  void set(const std::string& name, float value) const;
+  void set(const std::string& name, int value) const;
+  void set(const std::string& name, unsigned value) const;
+  void set(const std::string& name, glm::vec3 value) const;
+  void set(const std::string& name, glm::ivec3 value) const;
+  bool has_uniform(const std::string& name) const;
+  // Dispatches enough groups of the shader's local size to cover width x height x depth.
+  void dispatch_covering(int width, int height, int depth) const;
+  GLuint id() const { return program_; }
+
+ private:
+  struct FromExpanded {};
+  ComputeProgram(FromExpanded, const std::string& path, const ExpandedShader& source);
+  GLint location(const std::string& name) const;
+  std::string path_;
+  GLuint program_ = 0;
+  GLint local_size_[3] = {1, 1, 1};
+};
+
+}  // namespace nephele::gpu

@@ -1,0 +1,43 @@
+#pragma once
+// Owned OpenGL textures and the transfers the passes need.
+#include <epoxy/gl.h>
+
+#include <vector>
+
+namespace nephele::gpu {
+
+class Texture {
+ public:
+  Texture() = default;
+  // A cube map of size x size texels per face (one mip level), e.g. GL_RGBA32F or GL_R32F.
+  static Texture cube(int size, GLenum internal_format);
+  static Texture plane(int width, int height, GLenum internal_format);
+  ~Texture();
+  Texture(Texture&& other) noexcept;
+  Texture& operator=(Texture&& other) noexcept;
+  Texture(const Texture&) = delete;
+  Texture& operator=(const Texture&) = delete;
+
+  GLuint id() const { return id_; }
+  int width() const { return width_; }
+  int height() const { return height_; }
+  int layers() const { return layers_; }  // 6 for cube maps
+  int channels() const;
+  // Binds level 0, all layers, to an image unit for imageLoad/imageStore.
+  void bind_image(GLuint unit, GLenum access) const;
+  // Reads all texels as floats (faces in order +X,-X,+Y,-Y,+Z,-Z; rows from t = 0).
+  std::vector<float> read() const;
+  // Replaces all texels; `texels` holds channels() floats per texel in read()'s order.
+  void write(const std::vector<float>& texels) const;
+
+ private:
+  GLuint id_ = 0;
+  GLenum target_ = 0;
+  GLenum format_ = 0;
+  int width_ = 0, height_ = 0, layers_ = 0;
+};
+
+// Makes image stores of earlier dispatches visible to later image loads and readbacks.
+void image_barrier();
+
+}  // namespace nephele::gpu

@@ -1,0 +1,170 @@
+#include "io/cover_files.hpp"
+
+#include <chrono>
+
+#include "io/atomic_output.hpp"
+#include "cover/equirect.hpp"
+#include "io/image_files.hpp"
+#include "nephele/version.hpp"
+
+namespace nephele::io {
+namespace {
+
+json::Value octaves_json(const cover::NoiseOctaves& o) {
+  json::Value v;
+  v.set("frequency", o.frequency);
+  v.set("octaves", o.octaves);
+  v.set("lacunarity", o.lacunarity);
+  v.set("gain", o.gain);
+  return v;
+}
+
+json::Value conventions_json() {
+  json::Value c;
+  c.set("world_axes",
+        "Earth-centred, Earth-fixed: +Z north pole, +X latitude 0 longitude 0, +Y latitude 0 "
+        "longitude 90 E");
+  c.set("cube_faces",
+        "OpenGL 4.6 core section 8.13 table 8.19 applied to world axes: cover_px.exr is face +X, "
+        "then -X, +Y, -Y, +Z (north), -Z (south); texel (i, j) has s = (i + 0.5)/N, "
+        "t = (j + 0.5)/N; image row 0 is t = 0");
+  c.set("equirect",
+        "2:1 plate carree, north up, longitude -180 deg at the left edge and 0 at the centre, "
+        "pixel centres at (i + 0.5)/W; rows are WGS84 geodetic latitudes");
+  c.set("values", "coverage in [0, 1], linear data (no sRGB); 0 is clear sky, > 0 cloudy");
+  c.set("png_preview", "8-bit, round(255 * coverage), no gamma curve");
+  return c;
+}
+
+}  // namespace
+
+std::vector<std::string> cover_file_names() {
+  std::vector<std::string> names;
+  for (const char* suffix : face_suffixes) names.push_back(std::string("cover_") + suffix + ".exr");
+  names.insert(names.end(), {"cover_equirect.exr", "cover_equirect.png", "cover.json"});
+  return names;
+}
+
+json::Value cover_sidecar(const cover::GlobalCover& cover, const gpu::ContextInfo& context,
+                          const std::vector<cover::PassTiming>& export_timings) {
+  const cover::CoverParameters& p = cover.parameters();
+  json::Value parameters;
+  parameters.set("size", p.size);
+  parameters.set("seed", static_cast<unsigned long>(p.seed));
+  parameters.set("iterations", p.iterations);
+  parameters.set("step", p.step);
+  parameters.set("flow_time", static_cast<double>(p.iterations) * p.step);
+  parameters.set("integrator", cover::integrator_name(p.integrator));
+  parameters.set("curl_mode", cover::curl_mode_name(p.curl_mode));
+  if (p.integrator == cover::Integrator::adaptive) {
+    parameters.set("tolerance", p.tolerance);
+    parameters.set("max_substeps", p.max_substeps);
+  }
+  parameters.set("coverage", p.coverage);
+  parameters.set("noise_offset", p.noise_offset);
+  parameters.set("potential", octaves_json(p.potential));
+  parameters.set("prevailing", p.prevailing);
+  parameters.set("mix_frequency", p.mix_frequency);
+  parameters.set("curl_strength", p.curl_strength);
+  parameters.set("density", octaves_json(p.density));
+
+  const cover::CoverageCalibration& c = cover.calibration();
+  json::Value result;
+  result.set("cloud_fraction", c.achieved_fraction);
+  result.set("cloud_fraction_tolerance", c.max_texel_fraction);
+  result.set("threshold", c.threshold);
+  result.set("density_min", c.density_min);
+  result.set("density_max", c.density_max);
+
+  // Stability of the warp (docs/numerics.md): present when the cover was diagnosed.
+  if (const auto& d = cover.diagnostics()) {
+    json::Value stiffness;
+    stiffness.set("max_rate", d->stiffness.max_rate);
+    stiffness.set("stiffness_number", d->stiffness.stiffness);
+    stiffness.set("stable_limit", d->stiffness.limit);
+    stiffness.set("beyond_limit_fraction", d->stiffness.beyond_fraction);
+    json::Value folding;
+    folding.set("folded_fraction", d->folding.folded_fraction);
+    folding.set("jacobian_min", d->folding.jacobian_min);
+    folding.set("jacobian_max", d->folding.jacobian_max);
+    folding.set("area_error_rms", d->folding.area_error_rms);
+    json::Value numerics;
+    numerics.set("stiffness", stiffness);
+    numerics.set("folding", folding);
+    if (d->adaptive) {
+      json::Value substeps;
+      substeps.set("mean", d->substeps.mean_attempts);
+      substeps.set("max", d->substeps.max_attempts);
+      substeps.set("capped_texels", static_cast<double>(d->substeps.capped_texels));
+      numerics.set("substeps", substeps);
+    }
+    json::Value::Array warnings;
+    for (const auto& w : d->warnings) warnings.emplace_back(w);
+    numerics.set("warnings", warnings);
+    result.set("numerics", numerics);
+  }
+
+  json::Value timings;
+  for (const auto& t : cover.timings()) timings.set(t.pass, t.milliseconds);
+  for (const auto& t : export_timings) timings.set(t.pass, t.milliseconds);
+
+  json::Value device;
+  device.set("platform", context.platform);
+  device.set("vendor", context.vendor);
+  device.set("renderer", context.renderer);
+  device.set("version", context.version);
+
+  json::Value files;
+  json::Value::Array faces;
+  for (const char* suffix : face_suffixes) faces.emplace_back(std::string("cover_") + suffix + ".exr");
+  files.set("faces", faces);
+  files.set("equirect", "cover_equirect.exr");
+  files.set("preview", "cover_equirect.png");
+
+  json::Value root;
+  root.set("program", "nephele");
+  root.set("version", version);
+  root.set("parameters", parameters);
+  root.set("result", result);
+  root.set("conventions", conventions_json());
+  root.set("files", files);
+  root.set("device", device);
+  root.set("timings_ms", timings);
+  return root;
+}
+
+std::vector<cover::PassTiming> write_cover_files(const std::filesystem::path& directory,
+                                                 const cover::GlobalCover& cover,
+                                                 const gpu::ContextInfo& context) {
+  std::vector<cover::PassTiming> timings;
+  auto timed = [&](const std::string& name, auto&& work) {
+    const auto start = std::chrono::steady_clock::now();
+    work();
+    const std::chrono::duration<double, std::milli> elapsed = std::chrono::steady_clock::now() - start;
+    timings.push_back({name, elapsed.count()});
+  };
+  const int size = cover.parameters().size;
+  OutputSet outputs(directory);
+  timed("write_faces", [&] {
+    const std::vector<float> texels = cover.cover_field().read();
+    const size_t per_face = static_cast<size_t>(size) * size;
+    for (int face = 0; face < 6; ++face) {
+      ImageData image{size, size, 1,
+                      std::vector<float>(texels.begin() + face * per_face,
+                                         texels.begin() + (face + 1) * per_face)};
+      const std::string name = std::string("cover_") + face_suffixes[face] + ".exr";
+      write_float_image(outputs.temporary_for(name), image, {"Y"}, name);
+    }
+  });
+  ImageData equirect{4 * size, 2 * size, 1, {}};
+  timed("equirect", [&] { equirect.pixels = cover::equirect_from_cube(cover.cover_field(), equirect.width, equirect.height); });
+  timed("write_equirect", [&] {
+    write_float_image(outputs.temporary_for("cover_equirect.exr"), equirect, {"Y"}, "cover_equirect.exr");
+    write_png8(outputs.temporary_for("cover_equirect.png"), equirect, "cover_equirect.png");
+  });
+  write_text_file(outputs.temporary_for("cover.json"), json::write(cover_sidecar(cover, context, timings)));
+  outputs.commit();
+  return timings;
+}
+
+}  // namespace nephele::io

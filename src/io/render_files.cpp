@@ -1,0 +1,90 @@
+#include "io/render_files.hpp"
+
+#include <filesystem>
+#include <map>
+#include <memory>
+
+#include "io/atomic_output.hpp"
+#include "io/image_files.hpp"
+#include "nephele/version.hpp"
+#include "regional/cloud_layers.hpp"
+
+namespace nephele::io {
+
+json::Value scene_sidecar(const SceneRender& r, const regional::Scene& scene) {
+  json::Value root;
+  root.set("program", "nephele");
+  root.set("version", version);
+  json::Value camera;
+  camera.set("latitude", r.camera.latitude_deg);
+  camera.set("longitude", r.camera.longitude_deg);
+  camera.set("height_m", r.camera.height_m);
+  camera.set("heading_deg", r.camera.heading_deg);
+  camera.set("pitch_deg", r.camera.pitch_deg);
+  camera.set("fov_deg", r.camera.fov_deg);
+  camera.set("panorama", r.camera.panorama);
+  root.set("camera", camera);
+  root.set("time", scene.time);
+  root.set("sun_elevation_deg", r.render.sun_elevation_deg);
+  root.set("weather_source", r.weather_source);
+  json::Value weather;
+  weather.set("cloud_cover", r.weather_at_camera.cloud_cover);
+  weather.set("cloud_low", r.weather_at_camera.cloud_low);
+  weather.set("cloud_mid", r.weather_at_camera.cloud_mid);
+  weather.set("cloud_high", r.weather_at_camera.cloud_high);
+  weather.set("precipitation", r.weather_at_camera.precipitation);
+  root.set("weather_at_camera", weather);
+  json::Value::Array layers;
+  for (const auto& l : r.layers) {
+    json::Value v;
+    v.set("type", regional::cloud_type_name(l.type));
+    v.set("base_m", l.base_m);
+    v.set("top_m", l.top_m);
+    v.set("morph", l.morph);
+    v.set("reason", l.reason);
+    layers.push_back(v);
+  }
+  root.set("layers", layers);
+  json::Value::Array passes;
+  for (const auto& p : r.passes) passes.emplace_back(p);
+  root.set("passes", passes);
+  json::Value timings;
+  for (const auto& [name, ms] : r.render.timings_ms) timings.set(name, ms);
+  root.set("timings_ms", timings);
+  root.set("loop_limited_pixels", static_cast<double>(r.render.loop_limited_pixels));
+  json::Value steps;
+  steps.set("view", scene.view_steps);
+  steps.set("light", scene.light_steps);
+  steps.set("sky", scene.sky_steps);
+  root.set("steps", steps);
+  root.set("exposure", scene.exposure);
+  return root;
+}
+
+void write_scene_outputs(const SceneRender& result, const regional::Scene& scene,
+                         const std::vector<std::string>& output_paths) {
+  if (output_paths.empty()) return;
+  // One output set per directory; all are committed only after every file is written.
+  std::map<std::filesystem::path, std::unique_ptr<io::OutputSet>> sets;
+  auto set_for = [&](const std::filesystem::path& path) -> io::OutputSet& {
+    const std::filesystem::path directory = path.parent_path().empty() ? "." : path.parent_path();
+    auto& set = sets[directory];
+    if (!set) set = std::make_unique<io::OutputSet>(directory);
+    return *set;
+  };
+  for (const auto& path_text : output_paths) {
+    const std::filesystem::path path(path_text);
+    const std::string name = path.filename().string();
+    if (path.extension() == ".png")
+      io::write_png8(set_for(path).temporary_for(name), render::tone_map(result.render.radiance, scene.exposure), name);
+    else
+      io::write_float_image(set_for(path).temporary_for(name), result.render.radiance, {"R", "G", "B", "A"}, name);
+  }
+  // The sidecar sits beside the first output.
+  const std::filesystem::path first(output_paths.front());
+  io::write_text_file(set_for(first).temporary_for(first.stem().string() + ".json"),
+                          json::write(scene_sidecar(result, scene)));
+  for (auto& [directory, set] : sets) set->commit();
+}
+
+}  // namespace nephele::io

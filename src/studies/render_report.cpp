@@ -1,0 +1,177 @@
+#include "studies/render_report.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <sstream>
+
+#include "studies/svg_plot.hpp"
+
+namespace nephele::studies {
+namespace {
+
+bool is_default(const RenderErrorRow& r, int view, int light) { return r.view_steps == view && r.light_steps == light; }
+
+std::string steps_name(const RenderErrorRow& r) {
+  return std::to_string(r.view_steps) + " view x " + std::to_string(r.light_steps) + " light steps";
+}
+
+const char* const palette[] = {"#1f77b4", "#ff7f0e", "#2ca02c", "#9467bd", "#d62728", "#8c564b", "#e377c2", "#17becf"};
+
+}  // namespace
+
+RenderStepChoice choose_render_steps(const std::vector<RenderErrorRow>& rows, int default_view, int default_light,
+                                     double factor) {
+  RenderStepChoice c;
+  c.factor = factor;
+  for (const auto& r : rows)
+    if (is_default(r, default_view, default_light)) {
+      c.default_row = r;
+      c.has_default = true;
+    }
+  if (!c.has_default) return c;
+  const RenderErrorRow& d = c.default_row;
+  for (const auto& r : rows) {
+    if (r.rms_error <= factor * d.rms_error &&
+        (!c.has_cheapest || r.time_ms < c.cheapest.time_ms ||
+         (r.time_ms == c.cheapest.time_ms && r.rms_error < c.cheapest.rms_error))) {
+      c.cheapest = r;
+      c.has_cheapest = true;
+    }
+    if (r.time_ms <= d.time_ms &&
+        (!c.has_most_accurate || r.rms_error < c.most_accurate.rms_error ||
+         (r.rms_error == c.most_accurate.rms_error && r.time_ms < c.most_accurate.time_ms))) {
+      c.most_accurate = r;
+      c.has_most_accurate = true;
+    }
+  }
+  return c;
+}
+
+std::string render_error_csv(const std::vector<RenderErrorRow>& rows, const RenderSweepOptions& options) {
+  std::ostringstream s;
+  s << "view_steps,light_steps,clouds_ms,rel_rms,rel_max,reference_view_steps,reference_light_steps,width,height\n";
+  char line[256];
+  for (const auto& r : rows) {
+    std::snprintf(line, sizeof line, "%d,%d,%.4f,%.6e,%.6e,%d,%d,%d,%d\n", r.view_steps, r.light_steps, r.time_ms,
+                  r.rms_error, r.max_error, options.reference_view, options.reference_light, options.width,
+                  options.height);
+    s << line;
+  }
+  return s.str();
+}
+
+std::string render_error_table_header() {
+  char line[128];
+  std::snprintf(line, sizeof line, "%6s %6s %10s %12s %12s\n", "view", "light", "clouds_ms", "rel_rms", "rel_max");
+  return line;
+}
+
+std::string render_error_table_line(const RenderErrorRow& r) {
+  char line[128];
+  std::snprintf(line, sizeof line, "%6d %6d %10.1f %12.5f %12.5f\n", r.view_steps, r.light_steps, r.time_ms,
+                r.rms_error, r.max_error);
+  return line;
+}
+
+std::string render_error_svg(const std::vector<RenderErrorRow>& rows, const std::string& title,
+                             const std::string& subtitle, int default_view, int default_light) {
+  std::vector<RenderErrorRow> drawn;
+  for (const auto& r : rows)
+    if (r.rms_error > 0) drawn.push_back(r);
+  std::vector<int> lights;
+  std::vector<double> times, errors;
+  for (const auto& r : drawn) {
+    if (std::find(lights.begin(), lights.end(), r.light_steps) == lights.end()) lights.push_back(r.light_steps);
+    times.push_back(r.time_ms);
+    errors.push_back(r.rms_error);
+  }
+  std::sort(lights.begin(), lights.end());
+
+  std::ostringstream s;
+  studies::begin_document(s, 600, 490, title);
+  s << "<text x='300' y='38' text-anchor='middle' font-size='11'>" << studies::escape(subtitle) << "</text>\n";
+  const studies::LogLogPanel panel(30, 20, times, errors);
+  panel.draw_axes(s, "time of the clouds pass, wall-clock (ms)", "image error, rms relative to the mean radiance");
+  // One polyline per light-step count, in order of view steps; each point labelled by them.
+  for (size_t li = 0; li < lights.size(); ++li) {
+    std::vector<RenderErrorRow> series;
+    for (const auto& r : drawn)
+      if (r.light_steps == lights[li]) series.push_back(r);
+    std::sort(series.begin(), series.end(), [](const auto& a, const auto& b) { return a.view_steps < b.view_steps; });
+    const std::string colour = palette[li % (sizeof palette / sizeof palette[0])];
+    std::vector<std::pair<double, double>> points;
+    for (const auto& r : series) points.emplace_back(panel.x(r.time_ms), panel.y(r.rms_error));
+    studies::polyline(s, points, colour);
+    for (size_t k = 0; k < series.size(); ++k) {
+      const auto [x, y] = points[k];
+      studies::marker(s, 0, x, y, colour);
+      s << "<text x='" << x + 6 << "' y='" << y - 6 << "' font-size='10' fill='" << colour << "'>"
+        << series[k].view_steps << "</text>\n";
+      if (is_default(series[k], default_view, default_light)) studies::ring(s, x, y);
+    }
+  }
+  // Legend: colours are light-step counts; labels the view steps; the ring the default.
+  double x = 100;
+  for (size_t li = 0; li < lights.size(); ++li) {
+    studies::legend_line(s, x, 455, palette[li % (sizeof palette / sizeof palette[0])],
+                     std::to_string(lights[li]) + " light steps");
+    x += 110;
+  }
+  s << "<text x='100' y='479'>labels: view steps; ring: the default, " << default_view << " view x " << default_light
+    << " light steps" << (drawn.size() < rows.size() ? "; zero-error rows not drawn" : "") << "</text>\n";
+  studies::end_document(s);
+  return s.str();
+}
+
+std::string render_summary_markdown(const std::vector<RenderErrorRow>& rows, const RenderSweepOptions& options,
+                                    const RenderStepChoice& choice, int default_view, int default_light) {
+  std::ostringstream s;
+  char line[512];
+  s << "## Render: image error against run time\n\n";
+  std::snprintf(line, sizeof line,
+                "The built-in default scene (Gurten, global cover as the weather) at %d x %d pixels, rendered with each "
+                "pair of view and light steps and compared with a reference of %d view x %d light steps. Errors are "
+                "the RMS and the largest absolute difference over pixels and RGB, relative to the reference's mean "
+                "radiance; times are the wall-clock time of the clouds pass of one frame (render_error.csv, "
+                "render_error_vs_runtime.svg).\n\n",
+                options.width, options.height, options.reference_view, options.reference_light);
+  s << line;
+  s << "| view steps | light steps | clouds ms | rel rms | rel max | |\n|---|---|---|---|---|---|\n";
+  for (const auto& r : rows) {
+    std::snprintf(line, sizeof line, "| %d | %d | %.1f | %.4f | %.4f | %s |\n", r.view_steps, r.light_steps, r.time_ms,
+                  r.rms_error, r.max_error, is_default(r, default_view, default_light) ? "default" : "");
+    s << line;
+  }
+  s << "\n";
+  if (!choice.has_default) {
+    s << "The defaults (" << default_view << " view x " << default_light
+      << " light steps) are not in this sweep: no comparison.\n";
+    return s.str();
+  }
+  const RenderErrorRow& d = choice.default_row;
+  std::snprintf(line, sizeof line, "- Defaults (of `nephele render` and scene files): %s, rel rms %.4f, rel max %.4f, clouds %.1f ms.\n",
+                steps_name(d).c_str(), d.rms_error, d.max_error, d.time_ms);
+  s << line;
+  if (choice.has_cheapest) {
+    const RenderErrorRow& c = choice.cheapest;
+    std::snprintf(line, sizeof line, "- Cheapest within %.3gx the default's error (rel rms <= %.4f): %s%s, rel rms %.4f, "
+                  "%.1f ms (%.2fx the default's time).\n",
+                  choice.factor, choice.factor * d.rms_error, steps_name(c).c_str(),
+                  is_default(c, default_view, default_light) ? " (the default)" : "", c.rms_error, c.time_ms,
+                  d.time_ms > 0 ? c.time_ms / d.time_ms : 1.0);
+    s << line;
+  }
+  if (choice.has_most_accurate) {
+    const RenderErrorRow& a = choice.most_accurate;
+    std::snprintf(line, sizeof line, "- Most accurate within the default's time (<= %.1f ms): %s%s, rel rms %.4f "
+                  "(%.2fx the default's error), %.1f ms.\n",
+                  d.time_ms, steps_name(a).c_str(), is_default(a, default_view, default_light) ? " (the default)" : "",
+                  a.rms_error, d.rms_error > 0 ? a.rms_error / d.rms_error : 1.0, a.time_ms);
+    s << line;
+  }
+  s << "\nTimes of one frame each; on a shared machine they vary by tens of percent, so read close calls "
+       "with care.\n";
+  return s.str();
+}
+
+}  // namespace nephele::studies

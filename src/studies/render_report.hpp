@@ -1,0 +1,51 @@
+#pragma once
+// The render part of `nephele report`: from the rows of the render error sweep
+// (render/render_error.hpp) to render_error.csv, the work-precision diagram
+// render_error_vs_runtime.svg, the printed table and the summary section, and the choice of
+// settings that the summary compares with the defaults. Pure functions; no OpenGL.
+#include <string>
+#include <vector>
+
+#include "studies/render_error.hpp"
+
+namespace nephele::studies {
+
+// Compared with the default step counts (regional::Scene{}.view_steps x light_steps).
+struct RenderStepChoice {
+  double factor = 1.5;
+  bool has_default = false;
+  RenderErrorRow default_row{};
+  // The fastest row whose rel RMS is at most factor x the default's (the default itself when none
+  // is faster); ties go to the smaller error.
+  bool has_cheapest = false;
+  RenderErrorRow cheapest{};
+  // The row with the least rel RMS whose time is at most the default's (the default itself when
+  // none is more accurate); ties go to the shorter time.
+  bool has_most_accurate = false;
+  RenderErrorRow most_accurate{};
+};
+
+RenderStepChoice choose_render_steps(const std::vector<RenderErrorRow>& rows, int default_view, int default_light,
+                                     double factor = 1.5);
+
+// render_error.csv: view_steps, light_steps, clouds_ms, rel_rms, rel_max, then the sweep's
+// reference_view_steps, reference_light_steps, width and height repeated on every row.
+std::string render_error_csv(const std::vector<RenderErrorRow>& rows, const RenderSweepOptions& options);
+
+// The fixed-width table that `bench render` and `report` print: a header line, then one line
+// per row.
+std::string render_error_table_header();
+std::string render_error_table_line(const RenderErrorRow& row);
+
+// The work-precision diagram: rel RMS error against clouds-pass time, log-log, one polyline per
+// light-step count, each point labelled with its view steps, the default ringed. Rows with zero
+// error (the reference's own step counts) cannot be drawn on a log scale and are left out.
+// `subtitle` (e.g. the device) is a smaller line under the title.
+std::string render_error_svg(const std::vector<RenderErrorRow>& rows, const std::string& title,
+                             const std::string& subtitle, int default_view, int default_light);
+
+// The "Render: image error against run time" section of summary.md.
+std::string render_summary_markdown(const std::vector<RenderErrorRow>& rows, const RenderSweepOptions& options,
+                                    const RenderStepChoice& choice, int default_view, int default_light);
+
+}  // namespace nephele::studies
