@@ -1,40 +1,150 @@
+// The parameter table and the command-line options made from it.
 #include <catch2/catch.hpp>
 
-#include "apps/cli/options.hpp"
+#include <map>
+#include <set>
+#include <string>
 
+#include "apps/cli/options.hpp"
+#include "cli_support.hpp"
+#include "params/table.hpp"
+#include "params/values.hpp"
+
+using namespace nephele;
 using namespace nephele::cli;
+
+namespace {
+
+std::string message_of(Options& o, const std::vector<std::string>& args) {
+  try {
+    o.parse(args);
+  } catch (const UsageError& e) {
+    return std::string(e.what());
+  }
+  return std::string();
+}
+
+}  // namespace
 
 TEST_CASE("options reject bad values with the option's name and allowed range", "[cli]") {
   int size = 512;
   float step = 0.006f;
-  Options o("generate", "test");
-  o.add_int("--size", &size, 1, 16384, "size");
-  o.add_float("--step", &step, 0.0, 10.0, "step");
-  auto message = [&](std::vector<std::string> args) {
-    try {
-      o.parse(args);
-    } catch (const UsageError& e) {
-      return std::string(e.what());
-    }
-    return std::string();
-  };
-  CHECK_THAT(message({"--size", "0"}), Catch::Contains("--size") && Catch::Contains("1 to 16384"));
-  CHECK_THAT(message({"--size", "12.5"}), Catch::Contains("not an integer"));
-  CHECK_THAT(message({"--step", "nan"}), Catch::Contains("--step") && Catch::Contains("0 to 10"));
-  CHECK_THAT(message({"--step", "inf"}), Catch::Contains("--step"));
-  CHECK_THAT(message({"--step", "1e999"}), Catch::Contains("--step"));
-  CHECK_THAT(message({"--step", "0.1x"}), Catch::Contains("not a number"));
-  CHECK_THAT(message({"--size"}), Catch::Contains("a value is required"));
-  CHECK_THAT(message({"--colour", "red"}), Catch::Contains("unknown argument '--colour'"));
-  CHECK(message({"--size=64", "--step", "0.5"}).empty());
-  CHECK(size == 64);
-  CHECK(step == 0.5f);
+  Options o("generate", "test", params::generate);
+  o.bind(params::cover::size, &size);
+  o.bind(params::cover::step, &step);
+  CHECK_THAT(message_of(o, {"--size", "0"}), Catch::Contains("--size") && Catch::Contains("1 to 16384"));
+  CHECK_THAT(message_of(o, {"--size", "12.5"}), Catch::Contains("not an integer"));
+  CHECK_THAT(message_of(o, {"--step", "nan"}), Catch::Contains("--step") && Catch::Contains("0 to 10"));
+  CHECK_THAT(message_of(o, {"--step", "inf"}), Catch::Contains("--step"));
+  CHECK_THAT(message_of(o, {"--step", "1e999"}), Catch::Contains("--step"));
+  CHECK_THAT(message_of(o, {"--step", "0.1x"}), Catch::Contains("not a number"));
+  CHECK_THAT(message_of(o, {"--size"}), Catch::Contains("--size"));
+  CHECK_THAT(message_of(o, {"--colour", "red"}), Catch::Contains("--colour"));
 }
 
-TEST_CASE("help lists every option with its range and default", "[cli]") {
+TEST_CASE("numbers are decimal text only: no hex, no spaces, no trailing characters", "[cli]") {
   int size = 512;
-  Options o("generate", "summary");
-  o.add_int("--size", &size, 1, 16384, "texels per face");
+  float step = 0.006f;
+  Options o("generate", "test", params::generate);
+  o.bind(params::cover::size, &size);
+  o.bind(params::cover::step, &step);
+  for (const char* bad : {"0x10", " 16", "16 ", "+ 16", "16.", "1e2", "", "16,0"})
+    CHECK_THAT(message_of(o, {"--size", bad}), Catch::Contains("--size"));
+  for (const char* bad : {"0x1p-3", " 0.5", "0.5 ", "0,5", "nan", "-inf"})
+    CHECK_THAT(message_of(o, {"--step", bad}), Catch::Contains("--step"));
+  CHECK(size == 512);
+  CHECK(step == 0.006f);
+}
+
+TEST_CASE("both --name VALUE and --name=VALUE set an option, and given() tells which were set", "[cli]") {
+  int size = 512;
+  float step = 0.006f;
+  std::uint32_t seed = 1;
+  Options o("generate", "test", params::generate);
+  o.bind(params::cover::size, &size);
+  o.bind(params::cover::step, &step);
+  o.bind(params::cover::seed, &seed);
+  CHECK(message_of(o, {"--size=64", "--step", "0.5"}).empty());
+  CHECK(size == 64);
+  CHECK(step == 0.5f);
+  CHECK(o.given(params::cover::size));
+  CHECK(o.given(params::cover::step));
+  CHECK_FALSE(o.given(params::cover::seed));
+}
+
+TEST_CASE("an option given twice is refused; a list option takes one value per occurrence", "[cli]") {
+  int size = 512;
+  Options o("generate", "test", params::generate);
+  o.bind(params::cover::size, &size);
+  CHECK_THAT(message_of(o, {"--size", "64", "--size=32"}), Catch::Contains("--size"));
+
+  std::vector<std::string> weather;
+  Options r("render", "test", params::render);
+  r.bind(params::scene::weather, &weather);
+  CHECK(message_of(r, {"--weather", "a.json", "--weather=b.json"}).empty());
+  CHECK(weather == std::vector<std::string>{"a.json", "b.json"});
+}
+
+TEST_CASE("text options with listed words refuse other words, naming the option and the words", "[cli]") {
+  std::string integrator;
+  Options o("generate", "test", params::generate);
+  o.bind(params::cover::integrator, &integrator);
+  CHECK_THAT(message_of(o, {"--integrator=midpoint"}),
+             Catch::Contains("--integrator") && Catch::Contains("euler, heun, rk4, geodesic, adaptive"));
+}
+
+TEST_CASE("a command cannot bind a parameter that the table does not give it", "[cli]") {
+  int view_steps = 0;
+  Options o("generate", "test", params::generate);
+  CHECK_THROWS_AS(o.bind(params::scene::view_steps, &view_steps), std::logic_error);
+}
+
+TEST_CASE("help lists every option with its range, unit and default from the table", "[cli]") {
+  int size = 512;
+  Options o("generate", "summary", params::generate);
+  o.bind(params::cover::size, &size);
   CHECK_FALSE(o.parse({"--help"}));
-  CHECK_THAT(o.help(), Catch::Contains("--size") && Catch::Contains("[1..16384]") && Catch::Contains("default 512"));
+  CHECK_THAT(o.help(), Catch::Contains("--size") && Catch::Contains("[1 to 16384, texels]") &&
+                           Catch::Contains("default 512"));
+}
+
+TEST_CASE("the parameter table: defaults inside their ranges, one key per command, options from keys", "[params]") {
+  const std::vector<unsigned> uses = {params::generate, params::bench_cover, params::report, params::render,
+                                      params::scene_file, params::bench_render, params::noise, params::bench_noise};
+  for (const params::Parameter* p : params::all()) {
+    INFO(p->key);
+    CHECK_FALSE(p->help.empty());
+    CHECK(p->uses != 0);
+    if ((p->type == params::Type::integer || p->type == params::Type::real) && p->default_text.empty())
+      CHECK_NOTHROW(params::check_number(*p, p->default_number, p->option()));
+    CHECK(p->option().find('_') == std::string::npos);
+  }
+  for (unsigned use : uses) {
+    std::set<std::string_view> keys;
+    for (const params::Parameter* p : params::all())
+      if (p->used_by(use)) {
+        INFO(p->key);
+        CHECK(keys.insert(p->key).second);
+      }
+  }
+}
+
+TEST_CASE("every command's --help lists each option the table gives that command", "[cli]") {
+  const std::map<std::vector<std::string>, unsigned> commands = {
+      {{"generate"}, params::generate},        {{"bench", "cover"}, params::bench_cover},
+      {{"report"}, params::report},            {{"render"}, params::render},
+      {{"bench", "render"}, params::bench_render}, {{"noise"}, params::noise},
+      {{"bench", "noise"}, params::bench_noise}};
+  for (const auto& [words, use] : commands) {
+    std::string arguments;
+    for (const auto& w : words) arguments += w + " ";
+    const auto result = test::run(arguments + "--help");
+    INFO(words.front() << (words.size() > 1 ? " " + words[1] : ""));
+    CHECK(result.exit_code == 0);
+    for (const params::Parameter* p : params::all())
+      if (p->used_by(use)) {
+        INFO(p->option());
+        CHECK_THAT(result.output, Catch::Contains(p->option() + (p->type == params::Type::flag ? "" : " VALUE")));
+      }
+  }
 }

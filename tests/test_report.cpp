@@ -243,7 +243,7 @@ TEST_CASE("report and generate reject bad numerics options with exit code 2 and 
   }
   const Run help = run("generate --help");
   CHECK(help.output.find("--integrator") != std::string::npos);
-  CHECK(help.output.find("euler, heun, rk4, geodesic or adaptive") != std::string::npos);
+  CHECK(help.output.find("euler, heun, rk4, geodesic, adaptive") != std::string::npos);
 }
 
 TEST_CASE("generate warns about a stiff warp and records it in cover.json while adaptive sub-steps", "[report][cli]") {

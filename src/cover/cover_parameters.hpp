@@ -3,6 +3,7 @@
 #include <cstdint>
 
 #include "cover/integrators.hpp"
+#include "params/table.hpp"
 #include "shader_math/shader_math.hpp"
 
 namespace nephele::cover {
@@ -14,26 +15,31 @@ struct NoiseOctaves {
   float gain;
 };
 
+// Defaults come from the parameter table (src/params/table.hpp).
 struct CoverParameters {
-  int size = 512;                 // texels per cube face edge
-  std::uint32_t seed = 1;
-  int iterations = 50;            // K, warp steps
-  float step = 0.006f;            // h, warp step size; flow time T = K h
-  float coverage = 0.67f;         // target solid-angle fraction of cloudy sky
-  NoiseOctaves potential{2.0f, 3, 2.0f, 0.3f};  // Worley fBm of the stream function
-  float prevailing = 0.5f;        // strength of the zonal wind bands
-  float mix_frequency = 2.5f;     // m(lat) = sin(a lat); sfsim uses 3
-  float curl_strength = 0.5f;     // scale of the stream function, hence of the velocities
-  NoiseOctaves density{3.0f, 6, 2.0f, 0.5f};    // Worley fBm of the cloud density
+  int size = params::cover::size.default_int();                  // texels per cube face edge
+  std::uint32_t seed = params::cover::seed.default_uint32();
+  int iterations = params::cover::iterations.default_int();      // K, warp steps
+  float step = params::cover::step.default_float();              // h, warp step size; flow time T = K h
+  float coverage = params::cover::coverage.default_float();      // target solid-angle fraction of cloudy sky
+  NoiseOctaves potential{params::cover::curl_frequency.default_float(), params::cover::curl_octaves.default_int(),
+                         params::cover::curl_lacunarity.default_float(),
+                         params::cover::curl_gain.default_float()};  // Worley fBm of the stream function
+  float prevailing = params::cover::prevailing.default_float();  // strength of the zonal wind bands
+  float mix_frequency = params::cover::mix_frequency.default_float();  // m(lat) = sin(a lat); sfsim uses 3
+  float curl_strength = params::cover::curl_strength.default_float();  // scale of the stream function
+  NoiseOctaves density{params::cover::density_frequency.default_float(), params::cover::density_octaves.default_int(),
+                       params::cover::density_lacunarity.default_float(),
+                       params::cover::density_gain.default_float()};  // Worley fBm of the cloud density
   // How the warp is solved (docs/numerics.md); the defaults are sfsim's scheme.
   cover::Integrator integrator = cover::Integrator::euler;
   cover::CurlMode curl_mode = cover::CurlMode::sampled;
-  float tolerance = 1e-4f;        // adaptive: largest error estimate of a step, radians
-  int max_substeps = 4096;        // adaptive: attempted steps per texel before it gives up
+  float tolerance = params::cover::tolerance.default_float();   // adaptive: largest error estimate of a step, radians
+  int max_substeps = params::cover::max_substeps.default_int();  // adaptive: attempted steps per texel at most
   // Shifts every noise layer by (d, d, d) sphere radii. Non-zero offsets make the lattices
   // periodic and are reduced modulo the period in double (noise_offset below), so that float
   // keeps its precision however far away the offset is.
-  double noise_offset = 0.0;
+  double noise_offset = params::cover::noise_offset.default_number;
 };
 
 // Independent seeds per noise layer, derived from the user's seed.

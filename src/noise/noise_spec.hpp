@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "core/error.hpp"
 #include "shader_math/shader_math.hpp"
 
 namespace nephele::noise {
@@ -35,9 +36,9 @@ constexpr int max_octaves = 8;
 
 // A texture specification that cannot tile or cannot be made; the message names the option
 // and the allowed values.
-class SpecError : public std::invalid_argument {
+class SpecError : public core::InputError {
  public:
-  using std::invalid_argument::invalid_argument;
+  using core::InputError::InputError;
 };
 
 const char* type_name(NoiseType type);

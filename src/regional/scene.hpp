@@ -6,12 +6,14 @@
 #include <string>
 #include <vector>
 
+#include "core/error.hpp"
+
 namespace nephele::regional {
 
 // Bad scene input (exit code 2): names the file or flag, the key and the allowed values.
-class SceneError : public std::runtime_error {
+class SceneError : public core::InputError {
  public:
-  using std::runtime_error::runtime_error;
+  using core::InputError::InputError;
 };
 
 struct Scene {

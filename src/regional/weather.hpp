@@ -4,12 +4,14 @@
 #include <string>
 #include <vector>
 
+#include "core/error.hpp"
+
 namespace nephele::regional {
 
 // Bad weather input: names the file, the field and the allowed range (exit code 2).
-class WeatherError : public std::runtime_error {
+class WeatherError : public core::InputError {
  public:
-  using std::runtime_error::runtime_error;
+  using core::InputError::InputError;
 };
 
 // One hour of weather; cloud fractions in [0, 1], precipitation in mm/h, wind in m/s and

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "apps/cli/commands.hpp"
+#include "params/table.hpp"
 #include "apps/cli/noise_options.hpp"
 #include "apps/cli/cover_options.hpp"
 #include "apps/cli/device_limits.hpp"
@@ -20,22 +21,20 @@ std::vector<int> parse_sizes(const std::string& text) {
   std::stringstream stream(text);
   std::string item;
   while (std::getline(stream, item, ','))
-    sizes.push_back(static_cast<int>(parse_number("--sizes", item, 1, 16384)));
-  if (sizes.empty()) throw UsageError("--sizes: give a comma-separated list of sizes in 1..16384");
-  for (int s : sizes)
-    if (s != static_cast<double>(s)) throw UsageError("--sizes: sizes are integers in 1..16384");
+    sizes.push_back(static_cast<int>(parse_number("--sizes", item, 1, 16384, true)));
+  if (sizes.empty()) throw UsageError("--sizes", text, "a comma-separated list of integers 1 to 16384", "is empty");
   return sizes;
 }
 
 int bench_cover(const std::vector<std::string>& arguments) {
   cover::CoverParameters parameters;
-  std::string sizes_text = "256,512,1024";
-  int repeat = 3;
+  std::string sizes_text(params::run::bench_cover_sizes.default_text);
+  int repeat = params::run::bench_cover_repeat.default_int();
   Options options("bench cover",
                   "Prints the time of each pass of the global cover (median of the repeats) for\n"
-                  "each size, on the current OpenGL device.");
-  options.add_string("--sizes", &sizes_text, "comma-separated cube face sizes");
-  options.add_int("--repeat", &repeat, 1, 100, "runs per size; the median is printed");
+                  "each size, on the current OpenGL device.", params::bench_cover);
+  options.bind(params::run::bench_cover_sizes, &sizes_text);
+  options.bind(params::run::bench_cover_repeat, &repeat);
   add_cover_options(options, parameters, false);
   if (!options.parse(arguments)) {
     std::cout << options.help();

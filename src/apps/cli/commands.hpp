@@ -2,10 +2,15 @@
 #include <string>
 #include <vector>
 
+#include "core/error.hpp"
+
 namespace nephele::cli {
 
-// Exit codes shared by all commands.
-enum ExitCode { exit_ok = 0, exit_failure = 1, exit_usage = 2, exit_no_context = 3 };
+// Exit codes shared by all commands (declared once, in src/core/error.hpp).
+constexpr int exit_ok = core::exit_ok;
+constexpr int exit_failure = core::exit_failure;
+constexpr int exit_usage = core::exit_bad_input;
+constexpr int exit_no_context = core::exit_environment;
 
 int run_generate(const std::vector<std::string>& arguments);
 int run_bench(const std::vector<std::string>& arguments);

@@ -1,5 +1,7 @@
 #include "apps/cli/cover_options.hpp"
 
+#include "params/table.hpp"
+
 #include <cmath>
 #include <sstream>
 
@@ -10,27 +12,23 @@ namespace nephele::cli {
 static constexpr double max_octave_frequency = 4096.0;
 
 void add_cover_options(Options& o, cover::CoverParameters& p, bool include_size) {
-  if (include_size) o.add_int("--size", &p.size, 1, 16384, "texels per cube face edge");
-  o.add_uint32("--seed", &p.seed, "seed of all noise layers");
-  o.add_int("--iterations", &p.iterations, 0, 100000, "warp steps K");
-  o.add_float("--step", &p.step, 0.0, 10.0, "warp step size h (flow time T = K h)");
-  o.add_float("--coverage", &p.coverage, 0.0, 1.0, "cloudy fraction of the sphere, by solid angle");
-  o.add_float("--curl-frequency", &p.potential.frequency, 0.01, 4096.0,
-              "Worley cells per unit radius of the flow's potential");
-  o.add_int("--curl-octaves", &p.potential.octaves, 0, 16, "octaves of the potential");
-  o.add_float("--curl-lacunarity", &p.potential.lacunarity, 1.0, 8.0, "frequency ratio between octaves");
-  o.add_float("--curl-gain", &p.potential.gain, 0.0, 1.0, "amplitude ratio between octaves");
-  o.add_float("--prevailing", &p.prevailing, -100.0, 100.0,
-              "strength of the zonal wind bands (> 0: easterly trade winds)");
-  o.add_float("--mix-frequency", &p.mix_frequency, 0.0, 10.0,
-              "a in the hemisphere mix m = sin(a lat); 2.5 original, 3 sfsim");
-  o.add_float("--curl-strength", &p.curl_strength, 0.0, 100.0,
-              "scale of the flow's potential (velocity = strength * n x grad phi)");
-  o.add_float("--density-frequency", &p.density.frequency, 0.01, 4096.0,
-              "Worley cells per unit radius of the cloud density");
-  o.add_int("--density-octaves", &p.density.octaves, 0, 16, "octaves of the cloud density");
-  o.add_float("--density-lacunarity", &p.density.lacunarity, 1.0, 8.0, "frequency ratio between octaves");
-  o.add_float("--density-gain", &p.density.gain, 0.0, 1.0, "amplitude ratio between octaves");
+  namespace c = params::cover;
+  if (include_size) o.bind(c::size, &p.size);
+  o.bind(c::seed, &p.seed);
+  o.bind(c::iterations, &p.iterations);
+  o.bind(c::step, &p.step);
+  o.bind(c::coverage, &p.coverage);
+  o.bind(c::curl_frequency, &p.potential.frequency);
+  o.bind(c::curl_octaves, &p.potential.octaves);
+  o.bind(c::curl_lacunarity, &p.potential.lacunarity);
+  o.bind(c::curl_gain, &p.potential.gain);
+  o.bind(c::prevailing, &p.prevailing);
+  o.bind(c::mix_frequency, &p.mix_frequency);
+  o.bind(c::curl_strength, &p.curl_strength);
+  o.bind(c::density_frequency, &p.density.frequency);
+  o.bind(c::density_octaves, &p.density.octaves);
+  o.bind(c::density_lacunarity, &p.density.lacunarity);
+  o.bind(c::density_gain, &p.density.gain);
 }
 
 void validate_cover_parameters(const cover::CoverParameters& p) {
@@ -51,27 +49,23 @@ void validate_cover_parameters(const cover::CoverParameters& p) {
 }
 
 void WarpOptions::add(Options& o, cover::CoverParameters& p, bool include_integrator) {
+  namespace c = params::cover;
   if (include_integrator) {
-    o.add_string("--integrator", &integrator_, "warp stepping rule: euler, heun, rk4, geodesic or adaptive");
-    o.add_string("--curl-mode", &curl_mode_,
-                 "velocity of the warp: sampled (bilinear from the curl cube map) or procedural (exact point)");
-    o.add_float("--tolerance", &p.tolerance, 1e-7, 1.0,
-                "adaptive: largest error estimate per step, radians (the flow time is iterations * step)");
-    o.add_int("--max-substeps", &p.max_substeps, 1, 1000000, "adaptive: attempted steps per texel at most");
+    o.bind(c::integrator, &integrator_);
+    o.bind(c::curl_mode, &curl_mode_);
+    o.bind(c::tolerance, &p.tolerance);
+    o.bind(c::max_substeps, &p.max_substeps);
   }
-  o.add_string("--noise-offset", &noise_offset_,
-               "shift of every noise layer by (d, d, d) sphere radii, -1e9 to 1e9; precision is kept by a periodic lattice");
+  o.bind(c::noise_offset, &p.noise_offset);
 }
 
 void WarpOptions::apply(cover::CoverParameters& p) const {
   const auto integrator = cover::parse_integrator(integrator_);
-  if (!integrator)
-    throw UsageError("--integrator: '" + integrator_ + "' is not allowed (allowed: euler, heun, rk4, geodesic, adaptive)");
+  if (!integrator) throw UsageError(params::cover::integrator.option(), integrator_, params::cover::integrator.range_text());
   const auto mode = cover::parse_curl_mode(curl_mode_);
-  if (!mode) throw UsageError("--curl-mode: '" + curl_mode_ + "' is not allowed (allowed: sampled, procedural)");
+  if (!mode) throw UsageError(params::cover::curl_mode.option(), curl_mode_, params::cover::curl_mode.range_text());
   p.integrator = *integrator;
   p.curl_mode = *mode;
-  p.noise_offset = parse_number("--noise-offset", noise_offset_, -1e9, 1e9);
 }
 
 }  // namespace nephele::cli

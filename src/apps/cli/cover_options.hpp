@@ -2,6 +2,7 @@
 // The options shared by every command that makes a global cover (generate, bench).
 #include "apps/cli/options.hpp"
 #include "cover/cover_parameters.hpp"
+#include "params/table.hpp"
 
 namespace nephele::cli {
 
@@ -19,9 +20,8 @@ class WarpOptions {
   void apply(cover::CoverParameters& p) const;  // throws UsageError naming the option
 
  private:
-  std::string integrator_ = "euler";
-  std::string curl_mode_ = "sampled";
-  std::string noise_offset_ = "0";
+  std::string integrator_{params::cover::integrator.default_text};
+  std::string curl_mode_{params::cover::curl_mode.default_text};
 };
 
 }  // namespace nephele::cli

@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "apps/cli/commands.hpp"
+#include "params/table.hpp"
 #include "apps/cli/cover_options.hpp"
 #include "apps/cli/device_limits.hpp"
 #include "io/cover_files.hpp"
@@ -11,16 +12,16 @@ namespace nephele::cli {
 
 int run_generate(const std::vector<std::string>& arguments) {
   cover::CoverParameters parameters;
-  std::string out = "cubemaps";
+  std::string out(params::run::cover_out.default_text);
   bool verbose = false;
   Options options("generate",
                   "Generates a global cloud cover: curl-warped Worley noise on a cube map, written to\n"
-                  "cover_{px,nx,py,ny,pz,nz}.exr, cover_equirect.exr, cover_equirect.png and cover.json.");
+                  "cover_{px,nx,py,ny,pz,nz}.exr, cover_equirect.exr, cover_equirect.png and cover.json.", params::generate);
   add_cover_options(options, parameters);
   WarpOptions warp_options;
   warp_options.add(options, parameters);
-  options.add_string("--out", &out, "output directory (created if missing)");
-  options.add_flag("--verbose", &verbose, "print the renderer and the time of each pass");
+  options.bind(params::run::cover_out, &out);
+  options.bind(params::run::verbose, &verbose);
   if (!options.parse(arguments)) {
     std::cout << options.help();
     return exit_ok;

@@ -20,7 +20,8 @@ const char* const usage =
     "  bench      benchmarks that print timings (nephele bench cover)\n"
     "  report     error of the warp's integrators against their run time (work-precision)\n\n"
     "nephele COMMAND --help describes each command's options and their ranges.\n"
-    "exit codes: 0 success, 1 failure, 2 bad input, 3 no OpenGL 4.5 context\n";
+    "exit codes: 0 success, 1 runtime failure, 2 bad input (the option, key or field is named),\n"
+    "            3 environment (no OpenGL 4.5 context; no display for a window)\n";
 
 }  // namespace
 
@@ -48,7 +49,7 @@ int main(int argc, char** argv) {
     if (command == "report") return run_report(rest);
     if (command == "render") return run_render(rest);
     throw UsageError("unknown command '" + command + "' (allowed: generate, render, noise, bench, report)");
-  } catch (const UsageError& e) {
+  } catch (const nephele::core::InputError& e) {
     std::cerr << "nephele: " << e.what() << "\n";
     return exit_usage;
   } catch (const nephele::gpu::ContextError& e) {

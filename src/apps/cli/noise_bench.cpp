@@ -9,6 +9,7 @@
 #include <iostream>
 
 #include "apps/cli/commands.hpp"
+#include "params/table.hpp"
 #include "apps/cli/noise_options.hpp"
 #include "apps/cli/options.hpp"
 #include "io/noise_files.hpp"
@@ -61,13 +62,14 @@ Run measure(noise::TextureGenerator& generator, const noise::TextureSpec& spec, 
 }  // namespace
 
 int bench_noise(const std::vector<std::string>& arguments) {
-  int size = 128, repeat = 7;
+  int size = params::run::bench_noise_size.default_int();
+  int repeat = params::run::bench_noise_repeat.default_int();
   Options options("bench noise",
                   "Prints million points per second of 3D Worley F1, Perlin and 4-octave Perlin fBm on a size^3\n"
                   "grid (medians of the repeats; 'device' until the values are in GPU memory, 'host' until\n"
-                  "they are in a host array), and the seconds of the shape and erosion presets.");
-  options.add_int("--size", &size, 8, 1024, "grid edge of the point-rate figures");
-  options.add_int("--repeat", &repeat, 1, 1000, "runs per figure after a first, warming run");
+                  "they are in a host array), and the seconds of the shape and erosion presets.", params::bench_noise);
+  options.bind(params::run::bench_noise_size, &size);
+  options.bind(params::run::bench_noise_repeat, &repeat);
   if (!options.parse(arguments)) {
     std::cout << options.help();
     return exit_ok;

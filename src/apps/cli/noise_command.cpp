@@ -12,18 +12,13 @@
 #include "apps/cli/commands.hpp"
 #include "apps/cli/noise_options.hpp"
 #include "apps/cli/options.hpp"
+#include "params/table.hpp"
 #include "gpu/egl_context.hpp"
 #include "io/noise_files.hpp"
 #include "noise/noise_texture.hpp"
 
 namespace nephele::cli {
 namespace {
-
-bool given(const std::vector<std::string>& arguments, const std::string& name) {
-  for (const auto& a : arguments)
-    if (a == name || a.rfind(name + "=", 0) == 0) return true;
-  return false;
-}
 
 // MemAvailable from /proc/meminfo in bytes; 0 when unknown.
 double memory_available() {
@@ -82,41 +77,39 @@ noise::ChannelSpec parse_channel(const std::string& option, const std::string& t
 NoiseRequest parse_noise_request(const std::vector<std::string>& arguments, bool* help_shown) {
   NoiseRequest request;
   noise::ChannelSpec base;
-  int size = 32, width = 32, height = 32, depth = 32;
-  std::string type = "worley", layout = "r", preset;
-  int worley_cells = 0;
+  namespace n = params::noise_texture;
+  int size = n::size.default_int(), width = n::width.default_int(), height = n::height.default_int(),
+      depth = n::depth.default_int();
+  std::string type(n::type.default_text), layout(n::channels.default_text), preset;
+  int worley_cells = n::worley_cells.default_int();
   std::string channel_text[4];
   Options options("noise",
                   "Generates a tileable 3D noise texture: Worley (F1), Perlin and Perlin-Worley, each with fBm, in up\n"
                   "to four channels. --out NAME.png or NAME.exr writes the slice atlas (depth slices of width x height\n"
                   "side by side), NAME.raw the float32 volume; NAME.json describes it. Values lie in [0, 1].\n"
-                  "Channel k (r, g, b, a) has cells * 2^k cells (at most one per texel) unless --r, --g, --b or --a say otherwise.");
-  options.add_string("--preset", &preset, "shape (128^3 RGBA Perlin-Worley + Worley fBm) or erosion (32^3 RGB Worley fBm)");
-  options.add_string("--type", &type, "worley, inverted-worley, perlin or perlin-worley");
-  options.add_int("--width", &width, 1, 1 << 16, "texels along x");
-  options.add_int("--height", &height, 1, 1 << 16, "texels along y");
-  options.add_int("--depth", &depth, 1, 1 << 16, "texels along z (slices)");
-  options.add_int("--size", &size, 1, 1 << 16, "texels along every axis (instead of --width, --height, --depth)");
-  options.add_int("--cells", &base.cells, 1, 1 << 20,
-                  "cells per period along the width at octave 0; the other axes follow the aspect");
-  options.add_int("--octaves", &base.octaves, 1, noise::max_octaves, "fBm octaves");
-  options.add_float("--lacunarity", &base.lacunarity, 1.0, 8.0, "frequency ratio between octaves (whole cells)");
-  options.add_float("--gain", &base.gain, 0.0, 2.0, "amplitude ratio between octaves (persistence)");
-  options.add_int("--worley-cells", &worley_cells, 0, 1 << 20,
-                  "perlin-worley: cells of the Worley fBm (0: as --cells)");
-  options.add_int("--worley-octaves", &base.worley_octaves, 1, noise::max_octaves, "perlin-worley: octaves of the Worley fBm");
-  options.add_string("--channels", &layout, "r, rg, rgb or rgba");
-  const char* letters[4] = {"--r", "--g", "--b", "--a"};
-  for (int k = 0; k < 4; ++k)
-    options.add_string(letters[k], &channel_text[k],
-                       std::string("settings of channel ") + (letters[k] + 2) +
-                           ": key=value,... with keys type, cells, octaves, lacunarity, gain, worley-cells, worley-octaves");
-  options.add_uint32("--seed", &request.spec.seed, "seed of every channel");
-  options.add_int("--bits", &request.png_bits, 8, 16, "bits per PNG sample: 8 or 16");
-  options.add_string("--out", &request.out, "output file: .png or .exr (slice atlas) or .raw (float32 volume)");
-  options.add_flag("--stretch", &request.stretch,
-                   "map each channel's range linearly onto [0, 1] (the range before goes to the sidecar)");
-  options.add_flag("--verbose", &request.verbose, "print the renderer and timings");
+                  "Channel k (r, g, b, a) has cells * 2^k cells (at most one per texel) unless --r, --g, --b or --a say otherwise.",
+                  params::noise);
+  options.bind(n::preset, &preset);
+  options.bind(n::type, &type);
+  options.bind(n::width, &width);
+  options.bind(n::height, &height);
+  options.bind(n::depth, &depth);
+  options.bind(n::size, &size);
+  options.bind(n::cells, &base.cells);
+  options.bind(n::octaves, &base.octaves);
+  options.bind(n::lacunarity, &base.lacunarity);
+  options.bind(n::gain, &base.gain);
+  options.bind(n::worley_cells, &worley_cells);
+  options.bind(n::worley_octaves, &base.worley_octaves);
+  options.bind(n::channels, &layout);
+  const params::Parameter* channel_parameters[4] = {&n::r, &n::g, &n::b, &n::a};
+  for (int k = 0; k < 4; ++k) options.bind(*channel_parameters[k], &channel_text[k]);
+  const char* const letters[4] = {"--r", "--g", "--b", "--a"};
+  options.bind(n::seed, &request.spec.seed);
+  options.bind(n::bits, &request.png_bits);
+  options.bind(n::out, &request.out);
+  options.bind(n::stretch, &request.stretch);
+  options.bind(params::run::verbose, &request.verbose);
   if (!options.parse(arguments)) {
     request.help = options.help();
     if (help_shown) *help_shown = true;
@@ -128,19 +121,19 @@ NoiseRequest parse_noise_request(const std::vector<std::string>& arguments, bool
 
   try {
     if (!preset.empty()) {
-      for (const char* o : {"--type", "--width", "--height", "--depth", "--size", "--cells", "--octaves",
-                            "--lacunarity", "--gain", "--worley-cells", "--worley-octaves", "--channels", "--r", "--g",
-                            "--b", "--a"})
-        if (given(arguments, o))
-          throw UsageError(std::string("--preset fixes the texture's layout; ") + o +
+      for (const params::Parameter* o : {&n::type, &n::width, &n::height, &n::depth, &n::size, &n::cells, &n::octaves,
+                                         &n::lacunarity, &n::gain, &n::worley_cells, &n::worley_octaves, &n::channels,
+                                         &n::r, &n::g, &n::b, &n::a})
+        if (options.given(*o))
+          throw UsageError(std::string("--preset fixes the texture's layout; ") + o->option() +
                            " cannot be combined with it (allowed with --preset: --seed, --out, --bits, --stretch, --verbose)");
       const std::uint32_t seed = request.spec.seed;
       request.spec = noise::preset(preset, seed);
       request.preset = preset;
     } else {
-      if (given(arguments, "--size")) {
-        for (const char* o : {"--width", "--height", "--depth"})
-          if (given(arguments, o)) throw UsageError(std::string("--size and ") + o + " exclude each other");
+      if (options.given(n::size)) {
+        for (const params::Parameter* o : {&n::width, &n::height, &n::depth})
+          if (options.given(*o)) throw UsageError(std::string("--size and ") + o->option() + " exclude each other");
         width = height = depth = size;
       }
       request.spec.width = width;

@@ -1,129 +1,134 @@
 #include "apps/cli/options.hpp"
 
-#include <cmath>
-#include <cstdlib>
+#include <CLI/CLI.hpp>
+
+#include <algorithm>
+#include <functional>
 #include <sstream>
+#include <stdexcept>
+
+#include "params/values.hpp"
 
 namespace nephele::cli {
 namespace {
 
-std::string format_number(double v) {
-  std::ostringstream s;
-  s << v;
-  return s.str();
+// Text parameters whose `allowed` lists lower-case words (not a form such as WIDTHxHEIGHT).
+bool lists_words(const params::Parameter& p) {
+  if (p.allowed.empty()) return false;
+  return std::all_of(p.allowed.begin(), p.allowed.end(),
+                     [](char c) { return (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '-' || c == '|'; });
 }
 
 }  // namespace
 
-double parse_number(const std::string& option, const std::string& text, double min, double max) {
-  const std::string range = "allowed range " + format_number(min) + " to " + format_number(max);
-  char* end = nullptr;
-  errno = 0;
-  const double value = std::strtod(text.c_str(), &end);
-  if (text.empty() || end != text.c_str() + text.size() || errno == ERANGE)
-    throw UsageError(option + ": '" + text + "' is not a number (" + range + ")");
-  if (!std::isfinite(value)) throw UsageError(option + ": '" + text + "' is not finite (" + range + ")");
-  if (value < min || value > max)
-    throw UsageError(option + ": " + text + " is out of range (" + range + ")");
-  return value;
+double parse_number(const std::string& option, const std::string& text, double min, double max, bool integer_only) {
+  return params::parse_number(option, text, min, max, integer_only);
 }
 
-Options::Options(std::string command, std::string summary)
-    : command_(std::move(command)), summary_(std::move(summary)) {}
-
-void Options::add_int(const std::string& name, int* target, int min, int max, const std::string& help) {
-  options_.push_back({name, help, std::to_string(min) + ".." + std::to_string(max),
-                      std::to_string(*target), true, [=](const std::string& text) {
-                        const double v = parse_number(name, text, min, max);
-                        if (v != std::floor(v))
-                          throw UsageError(name + ": '" + text + "' is not an integer (allowed range " +
-                                           std::to_string(min) + " to " + std::to_string(max) + ")");
-                        *target = static_cast<int>(v);
-                      }});
+Options::Options(std::string command, std::string summary, unsigned use)
+    : command_(std::move(command)), summary_(std::move(summary)), use_(use),
+      app_(std::make_unique<CLI::App>(summary_, "nephele " + command_)) {
+  app_->set_help_flag();  // --help is answered from the table (help()), before CLI11 parses
 }
 
-void Options::add_uint32(const std::string& name, std::uint32_t* target, const std::string& help) {
-  options_.push_back({name, help, "0..4294967295", std::to_string(*target), true,
-                      [=](const std::string& text) {
-                        const double v = parse_number(name, text, 0.0, 4294967295.0);
-                        if (v != std::floor(v))
-                          throw UsageError(name + ": '" + text +
-                                           "' is not an integer (allowed range 0 to 4294967295)");
-                        *target = static_cast<std::uint32_t>(v);
-                      }});
+Options::~Options() = default;
+
+void Options::add(const params::Parameter& p, bool takes_value, bool repeatable,
+                  std::function<void(const std::string&)> apply) {
+  if (!p.used_by(use_))
+    throw std::logic_error("parameter '" + std::string(p.key) + "' is not declared for nephele " + command_);
+  const std::string name = p.option();
+  if (!takes_value) {
+    app_->add_flag_function(name, [apply](std::int64_t) { apply(""); }, std::string(p.help));
+  } else if (repeatable) {
+    app_->add_option_function<std::vector<std::string>>(
+            name,
+            [apply](const std::vector<std::string>& values) {
+              for (const auto& v : values) apply(v);
+            },
+            std::string(p.help))
+        ->allow_extra_args(false)
+        ->expected(1)
+        ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  } else {
+    app_->add_option_function<std::string>(name, apply, std::string(p.help));
+  }
+  entries_.push_back({&p, takes_value});
 }
 
-void Options::add_float(const std::string& name, float* target, double min, double max,
-                        const std::string& help) {
-  options_.push_back({name, help, format_number(min) + ".." + format_number(max),
-                      format_number(*target), true, [=](const std::string& text) {
-                        *target = static_cast<float>(parse_number(name, text, min, max));
-                      }});
+void Options::bind(const params::Parameter& p, int* target) {
+  add(p, true, false, [&p, target](const std::string& text) {
+    *target = static_cast<int>(params::parse_number(p, text, p.option()));
+  });
 }
 
-void Options::add_string(const std::string& name, std::string* target, const std::string& help) {
-  options_.push_back({name, help, "", *target, true, [=](const std::string& text) {
-                        if (text.empty()) throw UsageError(name + ": an empty value is not allowed");
-                        *target = text;
-                      }});
+void Options::bind(const params::Parameter& p, std::uint32_t* target) {
+  add(p, true, false, [&p, target](const std::string& text) {
+    *target = static_cast<std::uint32_t>(params::parse_number(p, text, p.option()));
+  });
 }
 
-void Options::add_string_list(const std::string& name, std::vector<std::string>* target,
-                              const std::string& help) {
-  Option o{name, help + " (repeatable)", "", "", true, [=](const std::string& text) {
-             if (text.empty()) throw UsageError(name + ": an empty value is not allowed");
-             target->push_back(text);
-           }};
-  o.repeatable = true;
-  options_.push_back(o);
+void Options::bind(const params::Parameter& p, float* target) {
+  add(p, true, false, [&p, target](const std::string& text) {
+    *target = static_cast<float>(params::parse_number(p, text, p.option()));
+  });
 }
 
-void Options::add_flag(const std::string& name, bool* target, const std::string& help) {
-  options_.push_back({name, help, "", "", false, [=](const std::string&) { *target = true; }});
+void Options::bind(const params::Parameter& p, double* target) {
+  add(p, true, false, [&p, target](const std::string& text) {
+    *target = params::parse_number(p, text, p.option());
+  });
+}
+
+void Options::bind(const params::Parameter& p, std::string* target) {
+  add(p, true, false, [&p, target](const std::string& text) {
+    if (text.empty()) throw UsageError(p.option(), text, p.range_text(), "is empty");
+    if (lists_words(p)) params::check_word(p, text, p.option());
+    *target = text;
+  });
+}
+
+void Options::bind(const params::Parameter& p, bool* target) {
+  add(p, false, false, [target](const std::string&) { *target = true; });
+}
+
+void Options::bind(const params::Parameter& p, std::vector<std::string>* target) {
+  add(p, true, true, [&p, target](const std::string& text) {
+    if (text.empty()) throw UsageError(p.option(), text, p.range_text(), "is empty");
+    target->push_back(text);
+  });
 }
 
 bool Options::parse(const std::vector<std::string>& arguments) {
-  std::vector<std::string> seen;
-  for (size_t k = 0; k < arguments.size(); ++k) {
-    std::string word = arguments[k];
-    if (word == "--help" || word == "-h") return false;
-    std::string value;
-    bool has_inline_value = false;
-    if (const auto eq = word.find('='); word.rfind("--", 0) == 0 && eq != std::string::npos) {
-      value = word.substr(eq + 1);
-      word = word.substr(0, eq);
-      has_inline_value = true;
-    }
-    const Option* option = nullptr;
-    for (const auto& o : options_)
-      if (o.name == word) option = &o;
-    if (!option)
-      throw UsageError("nephele " + command_ + ": unknown argument '" + word + "' (see nephele " +
-                       command_ + " --help)");
-    if (!option->repeatable)
-      for (const auto& s : seen)
-        if (s == word) throw UsageError(word + ": given more than once");
-    seen.push_back(word);
-    if (option->takes_value && !has_inline_value) {
-      if (k + 1 >= arguments.size()) throw UsageError(word + ": a value is required");
-      value = arguments[++k];
-    } else if (!option->takes_value && has_inline_value) {
-      throw UsageError(word + ": takes no value");
-    }
-    option->apply(value);
+  if (std::find(arguments.begin(), arguments.end(), "--help") != arguments.end() ||
+      std::find(arguments.begin(), arguments.end(), "-h") != arguments.end())
+    return false;
+  std::vector<std::string> reversed(arguments.rbegin(), arguments.rend());  // CLI11 pops from the back
+  try {
+    app_->parse(reversed);
+  } catch (const CLI::ParseError& e) {
+    throw UsageError("nephele " + command_ + ": " + e.what() + " (see nephele " + command_ + " --help)");
   }
   return true;
+}
+
+bool Options::given(const params::Parameter& p) const {
+  return app_->count(p.option()) > 0;
 }
 
 std::string Options::help() const {
   std::ostringstream out;
   out << "usage: nephele " << command_ << " [options]\n\n" << summary_ << "\n\noptions:\n";
-  for (const auto& o : options_) {
-    std::string head = "  " + o.name + (o.takes_value ? " VALUE" : "");
+  for (const auto& e : entries_) {
+    const params::Parameter& p = *e.parameter;
+    std::string head = "  " + p.option() + (e.takes_value ? " VALUE" : "");
     out << head << (head.size() < 26 ? std::string(26 - head.size(), ' ') : "\n" + std::string(26, ' '))
-        << o.help;
-    if (!o.range.empty()) out << " [" << o.range << "]";
-    if (!o.default_text.empty()) out << " (default " << o.default_text << ")";
+        << p.help;
+    if (p.type == params::Type::list) out << " (repeatable)";
+    const std::string range = p.range_text();
+    if (!range.empty()) out << " [" << range << (p.unit.empty() ? "" : ", " + std::string(p.unit)) << "]";
+    const std::string default_text = p.default_display();
+    if (!default_text.empty()) out << " (default " << default_text << ")";
     out << "\n";
   }
   out << "  --help                  this text\n";

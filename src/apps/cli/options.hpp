@@ -1,48 +1,65 @@
 #pragma once
-// Command-line options with stated ranges: parsing, validation and --help text.
+// The options of one command, made from the parameter table (src/params/table.hpp) and parsed
+// by CLI11: `--name VALUE` and `--name=VALUE` alike, strict numbers, ranges from the table, and
+// "was this option given" from the parser.
 #include <cstdint>
 #include <functional>
-#include <stdexcept>
+#include <map>
+#include <memory>
 #include <string>
 #include <vector>
+
+#include "core/error.hpp"
+#include "params/parameter.hpp"
+
+namespace CLI {
+class App;
+}
 
 namespace nephele::cli {
 
 // Bad input: the message names the option and the allowed range; exit code 2.
-class UsageError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
+using UsageError = core::InputError;
 
 class Options {
  public:
-  Options(std::string command, std::string summary);
+  // `use`: the params::Use bit of this command; binding a parameter the table does not give to
+  // this command is a programming error (std::logic_error).
+  Options(std::string command, std::string summary, unsigned use);
+  ~Options();
+  Options(const Options&) = delete;
+  Options& operator=(const Options&) = delete;
 
-  void add_int(const std::string& name, int* target, int min, int max, const std::string& help);
-  void add_uint32(const std::string& name, std::uint32_t* target, const std::string& help);
-  void add_float(const std::string& name, float* target, double min, double max, const std::string& help);
-  void add_string(const std::string& name, std::string* target, const std::string& help);
-  void add_flag(const std::string& name, bool* target, const std::string& help);
-  // An option that may be given several times; each value is appended.
-  void add_string_list(const std::string& name, std::vector<std::string>* target, const std::string& help);
+  void bind(const params::Parameter& p, int* target);
+  void bind(const params::Parameter& p, std::uint32_t* target);
+  void bind(const params::Parameter& p, float* target);
+  void bind(const params::Parameter& p, double* target);
+  void bind(const params::Parameter& p, std::string* target);  // text: words are checked
+  void bind(const params::Parameter& p, bool* target);         // flag
+  void bind(const params::Parameter& p, std::vector<std::string>* target);  // list: repeatable
 
-  // Parses arguments (without the command words). Returns false when --help was given
-  // (help() then has the text). Throws UsageError.
+  // Parses arguments (without the command words). Returns false when --help was given (help()
+  // then has the text). Throws UsageError.
   bool parse(const std::vector<std::string>& arguments);
+  bool given(const params::Parameter& p) const;
   std::string help() const;
 
  private:
-  struct Option {
-    std::string name, help, range, default_text;
+  void add(const params::Parameter& p, bool takes_value, bool repeatable,
+           std::function<void(const std::string&)> apply);
+  struct Entry {
+    const params::Parameter* parameter;
     bool takes_value;
-    std::function<void(const std::string&)> apply;
-    bool repeatable = false;
   };
   std::string command_, summary_;
-  std::vector<Option> options_;
+  unsigned use_;
+  std::unique_ptr<CLI::App> app_;
+  std::vector<Entry> entries_;
 };
 
-// Strict number parsing: the whole text, finite, within [min, max]; errors name the option.
-double parse_number(const std::string& option, const std::string& text, double min, double max);
+// Strict number parsing for values outside the table (list items, channel settings): the whole
+// text, decimal, finite, within [min, max]; errors name the option.
+double parse_number(const std::string& option, const std::string& text, double min, double max,
+                    bool integer_only = false);
 
 }  // namespace nephele::cli

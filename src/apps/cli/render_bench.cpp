@@ -5,6 +5,7 @@
 #include <iostream>
 
 #include "apps/cli/commands.hpp"
+#include "params/table.hpp"
 #include "apps/cli/options.hpp"
 #include "gpu/egl_context.hpp"
 #include "studies/render_error.hpp"
@@ -15,17 +16,18 @@ namespace nephele::cli {
 
 int bench_render(const std::vector<std::string>& arguments) {
   regional::Scene scene;  // the built-in default: Gurten, global cover as the weather
-  std::string size = "1280x720", sweep_size = "320x180";
-  int repeat = 2;
+  std::string size(params::run::bench_render_size.default_text);
+  std::string sweep_size(params::run::bench_render_sweep_size.default_text);
+  int repeat = params::run::bench_render_repeat.default_int();
   bool no_sweep = false;
   Options options("bench render",
                   "Prints seconds per frame of the default scene, then the image error against the\n"
                   "numbers of view and light steps (relative RMS and max against 384 x 24 steps, the\n"
-                  "sweep that `nephele report` runs, there at 160x90).");
-  options.add_string("--size", &size, "frame size WIDTHxHEIGHT");
-  options.add_string("--sweep-size", &sweep_size, "frame size of the error sweep");
-  options.add_int("--repeat", &repeat, 1, 20, "frames timed; the median is printed");
-  options.add_flag("--no-sweep", &no_sweep, "time frames only");
+                  "sweep that `nephele report` runs, there at 160x90).", params::bench_render);
+  options.bind(params::run::bench_render_size, &size);
+  options.bind(params::run::bench_render_sweep_size, &sweep_size);
+  options.bind(params::run::bench_render_repeat, &repeat);
+  options.bind(params::run::bench_render_no_sweep, &no_sweep);
   if (!options.parse(arguments)) {
     std::cout << options.help();
     return exit_ok;

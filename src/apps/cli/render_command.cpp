@@ -7,6 +7,7 @@
 
 #include "apps/cli/commands.hpp"
 #include "apps/cli/options.hpp"
+#include "params/table.hpp"
 #include "gpu/egl_context.hpp"
 #include "regional/scene.hpp"
 #include "regional/weather.hpp"
@@ -33,30 +34,33 @@ void parse_position(const std::string& text, regional::Scene& scene) {
 int run_render(const std::vector<std::string>& arguments) {
   regional::Scene scene;
   std::string view, at, size, time, scene_file, out;
-  float heading = 1000, pitch = static_cast<float>(scene.pitch_deg), fov = static_cast<float>(scene.fov_deg);
-  float exposure = static_cast<float>(scene.exposure);
+  double heading = 0, pitch = scene.pitch_deg, fov = scene.fov_deg, exposure = scene.exposure;
   bool panorama = false, verbose = false;
   std::vector<std::string> weather;
   Options options("render",
                   "Renders the cloud layers, sky and ground from a viewpoint near the ground. Without\n"
                   "weather files the global cover is the weather. --out FILE.png is tone-mapped sRGB,\n"
-                  "FILE.exr linear radiance; with --scene, --out is a directory for the scene's outputs.");
-  options.add_string("--view", &view, "viewpoint: gurten (towards Solothurn) or bantiger (towards Fribourg)");
-  options.add_string("--at", &at, "camera position LAT,LON,HEIGHT (WGS84 degrees, metres) instead of --view");
-  options.add_float("--heading", &heading, -360, 360, "view heading, degrees clockwise from north (default: towards the view's city)");
-  options.add_float("--pitch", &pitch, -90, 90, "view pitch, degrees above the horizon");
-  options.add_float("--fov", &fov, 1, 179, "horizontal field of view, degrees");
-  options.add_string("--time", &time, "date and time, ISO 8601 UTC (default " + scene.time + ")");
-  options.add_string("--size", &size, "image size WIDTHxHEIGHT (default 1280x720; panorama 2048x1024)");
-  options.add_flag("--panorama", &panorama, "render the full 360 x 180 view sphere (equirectangular)");
-  options.add_string_list("--weather", &weather, "Open-Meteo or meteoblue JSON of a station");
-  options.add_int("--view-steps", &scene.view_steps, 1, 4096, "samples per layer along each view ray");
-  options.add_int("--light-steps", &scene.light_steps, 0, 256, "samples towards the sun per cloud sample");
-  options.add_float("--exposure", &exposure, 1e-6, 1e6, "exposure before tone mapping (PNG)");
-  options.add_uint32("--seed", &scene.seed, "seed of the global cover and the cloud noise");
-  options.add_string("--scene", &scene_file, "scene file (JSON, see scenes/); flags override it");
-  options.add_string("--out", &out, "output file (.png or .exr), or a directory with --scene");
-  options.add_flag("--verbose", &verbose, "list the passes that ran and their times");
+                  "FILE.exr linear radiance; with --scene, --out is a directory for the scene's outputs.",
+                  params::render);
+  namespace s = params::scene;
+  options.bind(s::view, &view);
+  options.bind(s::at, &at);
+  options.bind(s::heading, &heading);
+  options.bind(s::pitch, &pitch);
+  options.bind(s::fov, &fov);
+  options.bind(s::time, &time);
+  options.bind(s::size, &size);
+  options.bind(s::panorama, &panorama);
+  options.bind(s::weather, &weather);
+  int view_steps = scene.view_steps, light_steps = scene.light_steps;
+  std::uint32_t seed = scene.seed;
+  options.bind(s::view_steps, &view_steps);
+  options.bind(s::light_steps, &light_steps);
+  options.bind(s::exposure, &exposure);
+  options.bind(s::seed, &seed);
+  options.bind(s::scene_path, &scene_file);
+  options.bind(s::out, &out);
+  options.bind(params::run::verbose, &verbose);
   if (!options.parse(arguments)) {
     std::cout << options.help();
     return exit_ok;
@@ -68,10 +72,14 @@ int run_render(const std::vector<std::string>& arguments) {
       scene.latitude_deg.reset();
     }
     if (!at.empty()) parse_position(at, scene);
-    if (heading != 1000) scene.heading_deg = heading;
-    if (arguments.end() != std::find(arguments.begin(), arguments.end(), "--pitch")) scene.pitch_deg = pitch;
-    if (arguments.end() != std::find(arguments.begin(), arguments.end(), "--fov")) scene.fov_deg = fov;
-    if (arguments.end() != std::find(arguments.begin(), arguments.end(), "--exposure")) scene.exposure = exposure;
+    // Options override the scene file only where they were given.
+    if (options.given(s::heading)) scene.heading_deg = heading;
+    if (options.given(s::pitch)) scene.pitch_deg = pitch;
+    if (options.given(s::fov)) scene.fov_deg = fov;
+    if (options.given(s::exposure)) scene.exposure = exposure;
+    if (options.given(s::view_steps)) scene.view_steps = view_steps;
+    if (options.given(s::light_steps)) scene.light_steps = light_steps;
+    if (options.given(s::seed)) scene.seed = seed;
     if (!time.empty()) scene.time = time;
     if (panorama) {
       scene.panorama = true;

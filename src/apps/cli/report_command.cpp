@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "apps/cli/commands.hpp"
+#include "params/table.hpp"
 #include "apps/cli/cover_options.hpp"
 #include "apps/cli/device_limits.hpp"
 #include "io/atomic_output.hpp"
@@ -25,12 +26,10 @@ std::vector<T> parse_list(const std::string& option, const std::string& text, do
   const std::string allowed = "a comma-separated list of " + std::string(integers ? "integers" : "numbers") + " in " +
                               std::to_string(min) + ".." + std::to_string(max);
   while (std::getline(stream, item, ',')) {
-    const double v = parse_number(option, item, min, max);
-    if (integers && v != static_cast<double>(static_cast<long long>(v)))
-      throw UsageError(option + ": '" + item + "' is not an integer (" + allowed + ")");
+    const double v = parse_number(option, item, min, max, integers);
     values.push_back(static_cast<T>(v));
   }
-  if (values.empty()) throw UsageError(option + ": give " + allowed);
+  if (values.empty()) throw UsageError(option, text, allowed, "is empty");
   return values;
 }
 
@@ -38,7 +37,7 @@ std::vector<T> parse_list(const std::string& option, const std::string& text, do
 
 int run_report(const std::vector<std::string>& arguments) {
   cover::CoverParameters parameters;
-  std::string out = "report", sizes, steps, tolerances, render_size;
+  std::string out(params::run::report_out.default_text), sizes, steps, tolerances, render_size;
   bool quick = false, no_render = false;
   int samples = 0, repeat = 0;  // 0: the mode's default
   float budget_ms = 0.0f;
@@ -49,17 +48,17 @@ int run_report(const std::vector<std::string>& arguments) {
                   "The flow time T = iterations * step stays fixed; fixed-step schemes use h = T / steps.\n"
                   "Then renders the default scene with view steps 8..96 x light steps 2..12 against 384 x 24\n"
                   "(quick: 8,16,48 x 2,6 against 96 x 12) into render_error.csv, render_error_vs_runtime.svg\n"
-                  "and a section of summary.md.");
-  options.add_string("--out", &out, "output directory (created if missing)");
-  options.add_flag("--quick", &quick, "a short sweep for CI (size 32, 10 and 50 steps, 96 points; render 32x18)");
-  options.add_string("--sizes", &sizes, "comma-separated cube face sizes (default 128,256,512; quick 32)");
-  options.add_string("--steps", &steps, "comma-separated step counts of the fixed-step schemes (default 5,10,25,50,100,200)");
-  options.add_string("--tolerances", &tolerances, "comma-separated tolerances of the adaptive scheme (default 1e-2..1e-6)");
-  options.add_int("--samples", &samples, 0, 64, "sample grid m: 6 m^2 sample points (0: 20, quick 4)");
-  options.add_int("--repeat", &repeat, 0, 20, "timed runs per configuration, the fastest counts (0: 3, quick 1)");
-  options.add_string("--render-size", &render_size, "frame size WIDTHxHEIGHT of the render sweep (default 160x90; quick 32x18)");
-  options.add_flag("--no-render", &no_render, "skip the render sweep");
-  options.add_float("--budget-ms", &budget_ms, 0.0, 1e7, "skip runs predicted to take longer (0: 20000, quick 2000)");
+                  "and a section of summary.md.", params::report);
+  options.bind(params::run::report_out, &out);
+  options.bind(params::run::report_quick, &quick);
+  options.bind(params::run::report_sizes, &sizes);
+  options.bind(params::run::report_steps, &steps);
+  options.bind(params::run::report_tolerances, &tolerances);
+  options.bind(params::run::report_samples, &samples);
+  options.bind(params::run::report_repeat, &repeat);
+  options.bind(params::run::report_render_size, &render_size);
+  options.bind(params::run::report_no_render, &no_render);
+  options.bind(params::run::report_budget_ms, &budget_ms);
   add_cover_options(options, parameters, false);
   WarpOptions warp_options;
   warp_options.add(options, parameters, false);

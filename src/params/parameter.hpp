@@ -1,0 +1,68 @@
+#pragma once
+// A parameter as nephele declares it once: its key (scene files and sidecars), option name
+// (--key, with '-' for '_'), type, unit, default, allowed range or words, help text, and the
+// commands and files that take it. The command line, scene keys, sidecars and (later) the
+// viewer's panels are made from these declarations (src/params/table.hpp).
+#include <cstdint>
+#include <string>
+#include <string_view>
+
+namespace nephele::params {
+
+enum class Type { integer, real, text, flag, list };
+
+// Where a parameter is taken: one bit per command (and per file kind that reads it).
+enum Use : unsigned {
+  generate = 1u << 0,
+  bench_cover = 1u << 1,
+  report = 1u << 2,
+  render = 1u << 3,
+  scene_file = 1u << 4,   // a key of `nephele render --scene FILE`
+  bench_render = 1u << 5,
+  noise = 1u << 6,
+  bench_noise = 1u << 7,
+  cover_sidecar = 1u << 8,  // written to cover.json
+};
+
+struct Parameter {
+  std::string_view key;
+  Type type;
+  std::string_view unit;          // "" for plain numbers and words
+  double default_number;          // integer and real parameters (flags: 0)
+  std::string_view default_text;  // text and list parameters ("" = none)
+  double min, max;                // integer and real: inclusive range
+  std::string_view allowed;       // text: the allowed words "a|b|c", or the form, e.g. "WIDTHxHEIGHT"
+  std::string_view help;
+  unsigned uses;
+
+  std::string option() const;        // "--view-steps" for key "view_steps"
+  std::string range_text() const;    // "1 to 4096", "euler, heun, rk4", "WIDTHxHEIGHT"
+  std::string default_display() const;  // "48", "0.006", "gurten"; "" when there is none
+  bool used_by(unsigned use) const { return (uses & use) != 0; }
+  constexpr int default_int() const { return static_cast<int>(default_number); }
+  constexpr float default_float() const { return static_cast<float>(default_number); }
+  constexpr std::uint32_t default_uint32() const { return static_cast<std::uint32_t>(default_number); }
+};
+
+// Factories that keep the table readable (src/params/table.hpp).
+constexpr Parameter integer(std::string_view key, double default_value, double min, double max,
+                            std::string_view unit, std::string_view help, unsigned uses) {
+  return {key, Type::integer, unit, default_value, "", min, max, "", help, uses};
+}
+constexpr Parameter real(std::string_view key, double default_value, double min, double max,
+                         std::string_view unit, std::string_view help, unsigned uses) {
+  return {key, Type::real, unit, default_value, "", min, max, "", help, uses};
+}
+constexpr Parameter text(std::string_view key, std::string_view default_value, std::string_view allowed,
+                         std::string_view help, unsigned uses) {
+  return {key, Type::text, "", 0, default_value, 0, 0, allowed, help, uses};
+}
+constexpr Parameter flag(std::string_view key, std::string_view help, unsigned uses) {
+  return {key, Type::flag, "", 0, "", 0, 1, "", help, uses};
+}
+// A parameter that may be given several times (each value appended).
+constexpr Parameter list(std::string_view key, std::string_view allowed, std::string_view help, unsigned uses) {
+  return {key, Type::list, "", 0, "", 0, 0, allowed, help, uses};
+}
+
+}  // namespace nephele::params

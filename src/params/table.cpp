@@ -1,0 +1,31 @@
+#include "params/table.hpp"
+
+namespace nephele::params {
+
+const std::vector<const Parameter*>& all() {
+  static const std::vector<const Parameter*> parameters = {
+      &cover::size, &cover::seed, &cover::iterations, &cover::step, &cover::coverage,
+      &cover::curl_frequency, &cover::curl_octaves, &cover::curl_lacunarity, &cover::curl_gain,
+      &cover::prevailing, &cover::mix_frequency, &cover::curl_strength, &cover::density_frequency,
+      &cover::density_octaves, &cover::density_lacunarity, &cover::density_gain, &cover::integrator,
+      &cover::curl_mode, &cover::tolerance, &cover::max_substeps, &cover::noise_offset,
+      &scene::view, &scene::at, &scene::latitude, &scene::longitude, &scene::height, &scene::heading,
+      &scene::pitch, &scene::fov, &scene::time, &scene::size, &scene::panorama, &scene::weather,
+      &scene::view_steps, &scene::light_steps, &scene::sky_steps, &scene::exposure, &scene::seed,
+      &scene::cover_size, &scene::outputs, &scene::description, &scene::scene_path, &scene::out,
+      &noise_texture::preset, &noise_texture::type, &noise_texture::width, &noise_texture::height,
+      &noise_texture::depth, &noise_texture::size, &noise_texture::cells, &noise_texture::octaves,
+      &noise_texture::lacunarity, &noise_texture::gain, &noise_texture::worley_cells,
+      &noise_texture::worley_octaves, &noise_texture::channels, &noise_texture::r, &noise_texture::g,
+      &noise_texture::b, &noise_texture::a, &noise_texture::seed, &noise_texture::bits, &noise_texture::out,
+      &noise_texture::stretch,
+      &run::cover_out, &run::report_out, &run::verbose, &run::bench_cover_sizes, &run::bench_cover_repeat,
+      &run::bench_noise_size, &run::bench_noise_repeat, &run::bench_render_size, &run::bench_render_sweep_size,
+      &run::bench_render_repeat, &run::bench_render_no_sweep, &run::report_quick, &run::report_sizes,
+      &run::report_steps, &run::report_tolerances, &run::report_samples, &run::report_repeat,
+      &run::report_render_size, &run::report_no_render, &run::report_budget_ms,
+  };
+  return parameters;
+}
+
+}  // namespace nephele::params

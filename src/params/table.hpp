@@ -1,0 +1,115 @@
+#pragma once
+// Every parameter of nephele, declared once. Structs take their defaults from here, the
+// command line (src/apps/cli) and scene files (src/regional/scene.cpp) take names, ranges and
+// help from here, and the sidecars write their keys from here. docs/architecture.md explains.
+#include <vector>
+
+#include "params/parameter.hpp"
+
+namespace nephele::params {
+
+// Commands that make a global cover, and the sidecar that records it.
+constexpr unsigned cover_commands = generate | bench_cover | report | cover_sidecar;
+
+namespace cover {
+inline constexpr Parameter size = integer("size", 512, 1, 16384, "texels", "texels per cube face edge", generate | cover_sidecar);
+inline constexpr Parameter seed = integer("seed", 1, 0, 4294967295.0, "", "seed of all noise layers", cover_commands);
+inline constexpr Parameter iterations = integer("iterations", 50, 0, 100000, "steps", "warp steps K", cover_commands);
+inline constexpr Parameter step = real("step", 0.006, 0.0, 10.0, "radians", "warp step size h (flow time T = K h)", cover_commands);
+inline constexpr Parameter coverage = real("coverage", 0.67, 0.0, 1.0, "fraction", "cloudy fraction of the sphere, by solid angle", cover_commands);
+inline constexpr Parameter curl_frequency = real("curl_frequency", 2.0, 0.01, 4096.0, "cells per radius", "Worley cells per unit radius of the flow's potential", cover_commands);
+inline constexpr Parameter curl_octaves = integer("curl_octaves", 3, 0, 16, "", "octaves of the potential", cover_commands);
+inline constexpr Parameter curl_lacunarity = real("curl_lacunarity", 2.0, 1.0, 8.0, "", "frequency ratio between octaves", cover_commands);
+inline constexpr Parameter curl_gain = real("curl_gain", 0.3, 0.0, 1.0, "", "amplitude ratio between octaves", cover_commands);
+inline constexpr Parameter prevailing = real("prevailing", 0.5, -100.0, 100.0, "", "strength of the zonal wind bands (> 0: easterly trade winds)", cover_commands);
+inline constexpr Parameter mix_frequency = real("mix_frequency", 2.5, 0.0, 10.0, "", "a in the hemisphere mix m = sin(a lat); 2.5 original, 3 sfsim", cover_commands);
+inline constexpr Parameter curl_strength = real("curl_strength", 0.5, 0.0, 100.0, "", "scale of the flow's potential (velocity = strength * n x grad phi)", cover_commands);
+inline constexpr Parameter density_frequency = real("density_frequency", 3.0, 0.01, 4096.0, "cells per radius", "Worley cells per unit radius of the cloud density", cover_commands);
+inline constexpr Parameter density_octaves = integer("density_octaves", 6, 0, 16, "", "octaves of the cloud density", cover_commands);
+inline constexpr Parameter density_lacunarity = real("density_lacunarity", 2.0, 1.0, 8.0, "", "frequency ratio between octaves", cover_commands);
+inline constexpr Parameter density_gain = real("density_gain", 0.5, 0.0, 1.0, "", "amplitude ratio between octaves", cover_commands);
+inline constexpr Parameter integrator = text("integrator", "euler", "euler|heun|rk4|geodesic|adaptive", "warp stepping rule", generate | cover_sidecar);
+inline constexpr Parameter curl_mode = text("curl_mode", "sampled", "sampled|procedural", "velocity of the warp: sampled (bilinear from the curl cube map) or procedural (exact point)", generate | cover_sidecar);
+inline constexpr Parameter tolerance = real("tolerance", 1e-4, 1e-7, 1.0, "radians", "adaptive: largest error estimate per step (the flow time is iterations * step)", generate | cover_sidecar);
+inline constexpr Parameter max_substeps = integer("max_substeps", 4096, 1, 1000000, "steps", "adaptive: attempted steps per texel at most", generate | cover_sidecar);
+inline constexpr Parameter noise_offset = real("noise_offset", 0.0, -1e9, 1e9, "sphere radii", "shift of every noise layer by (d, d, d); precision is kept by a periodic lattice", generate | report | cover_sidecar);
+}  // namespace cover
+
+namespace scene {
+constexpr unsigned render_and_scene = render | scene_file;
+inline constexpr Parameter view = text("view", "gurten", "gurten|bantiger", "viewpoint: gurten (towards Solothurn) or bantiger (towards Fribourg)", render_and_scene);
+inline constexpr Parameter at = text("at", "", "LAT,LON,HEIGHT", "camera position (WGS84 degrees, degrees, metres above the ellipsoid) instead of a view", render);
+inline constexpr Parameter latitude = real("latitude", 0, -90, 90, "degrees", "camera latitude (scene key at.latitude)", scene_file);
+inline constexpr Parameter longitude = real("longitude", 0, -180, 180, "degrees", "camera longitude (scene key at.longitude)", scene_file);
+inline constexpr Parameter height = real("height", 0, -400, 20000, "metres", "camera height above the ellipsoid (scene key at.height)", scene_file);
+inline constexpr Parameter heading = Parameter{"heading", Type::real, "degrees", 0, "towards the view's city", -360, 360, "", "view heading, clockwise from north", render_and_scene};
+inline constexpr Parameter pitch = real("pitch", 5, -90, 90, "degrees", "view pitch above the horizon", render_and_scene);
+inline constexpr Parameter fov = real("fov", 70, 1, 179, "degrees", "horizontal field of view", render_and_scene);
+inline constexpr Parameter time = text("time", "2026-06-21T16:00Z", "YYYY-MM-DDTHH:MM[:SS]Z", "date and time, ISO 8601 UTC", render_and_scene);
+inline constexpr Parameter size = text("size", "1280x720", "WIDTHxHEIGHT", "image size (panorama: 2048x1024 unless given)", render_and_scene);
+inline constexpr Parameter panorama = flag("panorama", "render the full 360 x 180 view sphere (equirectangular)", render_and_scene);
+inline constexpr Parameter weather = list("weather", "FILE", "Open-Meteo or meteoblue JSON of a station", render_and_scene);
+inline constexpr Parameter view_steps = integer("view_steps", 48, 1, 4096, "samples", "samples per layer along each view ray", render_and_scene);
+inline constexpr Parameter light_steps = integer("light_steps", 12, 0, 256, "samples", "samples towards the sun per cloud sample", render_and_scene);
+inline constexpr Parameter sky_steps = integer("sky_steps", 16, 1, 1024, "samples", "samples of the clear-sky integral", scene_file);
+inline constexpr Parameter exposure = real("exposure", 4.0, 1e-6, 1e6, "", "exposure before tone mapping (PNG)", render_and_scene);
+inline constexpr Parameter seed = integer("seed", 1, 0, 4294967295.0, "", "seed of the global cover and the cloud noise", render_and_scene);
+inline constexpr Parameter cover_size = integer("cover_size", 128, 4, 4096, "texels", "global cover size per face when no weather is given", scene_file);
+inline constexpr Parameter outputs = list("outputs", "NAME.png|NAME.exr", "file names written into --out", scene_file);
+inline constexpr Parameter description = text("description", "", "", "free text for people", scene_file);
+inline constexpr Parameter scene_path = text("scene", "", "FILE", "scene file (JSON, see scenes/); options override it", render);
+inline constexpr Parameter out = text("out", "", "FILE.png|FILE.exr|DIR", "output file (.png or .exr), or a directory with --scene", render);
+}  // namespace scene
+
+namespace noise_texture {
+inline constexpr Parameter preset = text("preset", "", "shape|erosion", "shape (128^3 RGBA Perlin-Worley + Worley fBm) or erosion (32^3 RGB Worley fBm)", noise);
+inline constexpr Parameter type = text("type", "worley", "worley|inverted-worley|perlin|perlin-worley", "noise type of every channel", noise);
+inline constexpr Parameter width = integer("width", 32, 1, 65536, "texels", "texels along x", noise);
+inline constexpr Parameter height = integer("height", 32, 1, 65536, "texels", "texels along y", noise);
+inline constexpr Parameter depth = integer("depth", 32, 1, 65536, "texels", "texels along z (slices)", noise);
+inline constexpr Parameter size = integer("size", 32, 1, 65536, "texels", "texels along every axis (instead of --width, --height, --depth)", noise);
+inline constexpr Parameter cells = integer("cells", 4, 1, 1048576, "cells", "cells per period along the width at octave 0; the other axes follow the aspect", noise);
+inline constexpr Parameter octaves = integer("octaves", 1, 1, 8, "", "fBm octaves", noise);
+inline constexpr Parameter lacunarity = real("lacunarity", 2.0, 1.0, 8.0, "", "frequency ratio between octaves (whole cells)", noise);
+inline constexpr Parameter gain = real("gain", 0.5, 0.0, 2.0, "", "amplitude ratio between octaves (persistence)", noise);
+inline constexpr Parameter worley_cells = integer("worley_cells", 0, 0, 1048576, "cells", "perlin-worley: cells of the Worley fBm (0: as --cells)", noise);
+inline constexpr Parameter worley_octaves = integer("worley_octaves", 3, 1, 8, "", "perlin-worley: octaves of the Worley fBm", noise);
+inline constexpr Parameter channels = text("channels", "r", "r|rg|rgb|rgba", "channel layout", noise);
+inline constexpr Parameter r = text("r", "", "key=value,...", "settings of channel r: keys type, cells, octaves, lacunarity, gain, worley-cells, worley-octaves", noise);
+inline constexpr Parameter g = text("g", "", "key=value,...", "settings of channel g (keys as for --r)", noise);
+inline constexpr Parameter b = text("b", "", "key=value,...", "settings of channel b (keys as for --r)", noise);
+inline constexpr Parameter a = text("a", "", "key=value,...", "settings of channel a (keys as for --r)", noise);
+inline constexpr Parameter seed = integer("seed", 1, 0, 4294967295.0, "", "seed of every channel", noise);
+inline constexpr Parameter bits = integer("bits", 8, 8, 16, "bits", "bits per PNG sample: 8 or 16", noise);
+inline constexpr Parameter out = text("out", "", "FILE.png|FILE.exr|FILE.raw", "output file: .png or .exr (slice atlas) or .raw (float32 volume)", noise);
+inline constexpr Parameter stretch = flag("stretch", "map each channel's range linearly onto [0, 1] (the range before goes to the sidecar)", noise);
+}  // namespace noise_texture
+
+// Options of the runs themselves: where files go, how much is printed, how long to measure.
+namespace run {
+inline constexpr Parameter cover_out = text("out", "cubemaps", "DIR", "output directory (created if missing)", generate);
+inline constexpr Parameter report_out = text("out", "report", "DIR", "output directory (created if missing)", report);
+inline constexpr Parameter verbose = flag("verbose", "print the renderer, the passes that ran and their times", generate | render | noise);
+inline constexpr Parameter bench_cover_sizes = text("sizes", "256,512,1024", "N,N,... (1 to 16384)", "comma-separated cube face sizes", bench_cover);
+inline constexpr Parameter bench_cover_repeat = integer("repeat", 3, 1, 100, "runs", "runs per size; the median is printed", bench_cover);
+inline constexpr Parameter bench_noise_size = integer("size", 128, 8, 1024, "texels", "grid edge of the point-rate figures", bench_noise);
+inline constexpr Parameter bench_noise_repeat = integer("repeat", 7, 1, 1000, "runs", "runs per figure after a first, warming run", bench_noise);
+inline constexpr Parameter bench_render_size = text("size", "1280x720", "WIDTHxHEIGHT", "frame size", bench_render);
+inline constexpr Parameter bench_render_sweep_size = text("sweep_size", "320x180", "WIDTHxHEIGHT", "frame size of the error sweep", bench_render);
+inline constexpr Parameter bench_render_repeat = integer("repeat", 2, 1, 20, "frames", "frames timed; the median is printed", bench_render);
+inline constexpr Parameter bench_render_no_sweep = flag("no_sweep", "time frames only", bench_render);
+inline constexpr Parameter report_quick = flag("quick", "a short sweep for CI (size 32, 10 and 50 steps, 96 points; render 32x18)", report);
+inline constexpr Parameter report_sizes = text("sizes", "", "N,N,... (1 to 16384)", "comma-separated cube face sizes (default 128,256,512; quick 32)", report);
+inline constexpr Parameter report_steps = text("steps", "", "N,N,... (1 to 100000)", "comma-separated step counts of the fixed-step schemes (default 5,10,25,50,100,200)", report);
+inline constexpr Parameter report_tolerances = text("tolerances", "", "X,X,... (1e-9 to 1)", "comma-separated tolerances of the adaptive scheme (default 1e-2..1e-6)", report);
+inline constexpr Parameter report_samples = integer("samples", 0, 0, 64, "", "sample grid m: 6 m^2 sample points (0: 20, quick 4)", report);
+inline constexpr Parameter report_repeat = integer("repeat", 0, 0, 20, "runs", "timed runs per configuration, the fastest counts (0: 3, quick 1)", report);
+inline constexpr Parameter report_render_size = text("render_size", "", "WIDTHxHEIGHT", "frame size of the render sweep (default 160x90; quick 32x18)", report);
+inline constexpr Parameter report_no_render = flag("no_render", "skip the render sweep", report);
+inline constexpr Parameter report_budget_ms = real("budget_ms", 0.0, 0.0, 1e7, "ms", "skip runs predicted to take longer (0: 20000, quick 2000)", report);
+}  // namespace run
+
+// Every parameter above, in declaration order (for documentation, panels and the tests).
+const std::vector<const Parameter*>& all();
+
+}  // namespace nephele::params
