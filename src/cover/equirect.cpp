@@ -22,7 +22,7 @@ std::vector<glm::vec2> geodetic_row_directions(int height) {
 }
 
 std::vector<float> equirect_from_cube(const gpu::Texture& cube, int width, int height) {
-  gpu::ComputeProgram program("export/equirect.comp");
+  gpu::ComputeProgram program("cover/equirect.comp");
   gpu::Texture target = gpu::Texture::plane(width, height, GL_R32F);
   const std::vector<glm::vec2> rows = geodetic_row_directions(height);
   GLuint buffer = 0;
