@@ -45,6 +45,7 @@ GlobalCover::GlobalCover(const CoverParameters& parameters)
 
 template <class Work>
 void GlobalCover::timed(const std::string& pass, Work&& work) {
+  if (on_pass_) on_pass_(pass);
   glFinish();
   const auto start = std::chrono::steady_clock::now();
   work();

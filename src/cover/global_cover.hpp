@@ -1,6 +1,7 @@
 #pragma once
 // The global cloud cover: identity, curl, warp, density and coverage passes over cube maps.
 // Needs a current OpenGL 4.5 context.
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -48,6 +49,8 @@ class GlobalCover {
   const gpu::Texture& cover_field() const { return cover_field_; }
   const CoverageCalibration& calibration() const { return calibration_; }
   const std::vector<PassTiming>& timings() const { return timings_; }
+  // Called with a pass's name as it starts (for progress reports).
+  void on_pass(std::function<void(const std::string&)> callback) { on_pass_ = std::move(callback); }
 
  private:
   template <class Work>
@@ -55,6 +58,7 @@ class GlobalCover {
   void dispatch_warp(const gpu::Texture& starts, const gpu::Texture& warped);
 
   CoverParameters parameters_;
+  std::function<void(const std::string&)> on_pass_;
   gpu::ComputeProgram identity_program_{"cover/identity.comp"};
   gpu::ComputeProgram curl_program_{"cover/curl.comp"};
   gpu::ComputeProgram warp_program_;  // the integrator's and curl mode's variant

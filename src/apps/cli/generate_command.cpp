@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "apps/cli/commands.hpp"
+#include "core/progress.hpp"
 #include "params/table.hpp"
 #include "apps/cli/cover_options.hpp"
 #include "apps/cli/device_limits.hpp"
@@ -13,7 +14,7 @@ namespace nephele::cli {
 int run_generate(const std::vector<std::string>& arguments) {
   cover::CoverParameters parameters;
   std::string out(params::run::cover_out.default_text);
-  bool verbose = false;
+  bool verbose = false, quiet = false;
   Options options("generate",
                   "Generates a global cloud cover: curl-warped Worley noise on a cube map, written to\n"
                   "cover_{px,nx,py,ny,pz,nz}.exr, cover_equirect.exr, cover_equirect.png and cover.json.", params::generate);
@@ -21,6 +22,7 @@ int run_generate(const std::vector<std::string>& arguments) {
   WarpOptions warp_options;
   warp_options.add(options, parameters);
   options.bind(params::run::cover_out, &out);
+  options.bind(params::run::quiet, &quiet);
   options.bind(params::run::verbose, &verbose);
   if (!options.parse(arguments)) {
     std::cout << options.help();
@@ -43,11 +45,18 @@ int run_generate(const std::vector<std::string>& arguments) {
   if (error) throw UsageError("--out: cannot create directory '" + out + "': " + error.message());
 
   cover::GlobalCover cover(parameters);
+  // identity, curl, warp, density, calibrate, coverage, diagnose, then the files.
+  constexpr int stages = 8;
+  core::Progress progress("generate", stages, core::Progress::for_stderr(quiet));
+  int stages_started = 0;
+  cover.on_pass([&](const std::string& pass) { progress.update(stages_started++, pass); });
   cover.run();
   // Stiff or capped warps are reported, never silently written (docs/numerics.md).
   const cover::WarpDiagnostics& diagnostics = cover.diagnose();
   for (const auto& warning : diagnostics.warnings) std::cerr << "nephele: warning: " << warning << "\n";
+  progress.update(stages_started++, "writing files");
   const auto export_timings = io::write_cover_files(directory, cover, context.info());
+  progress.finish();
   if (verbose) {
     for (const auto& t : cover.timings()) std::cerr << "pass " << t.pass << ": " << t.milliseconds << " ms\n";
     for (const auto& t : export_timings) std::cerr << "export " << t.pass << ": " << t.milliseconds << " ms\n";

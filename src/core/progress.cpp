@@ -1,0 +1,73 @@
+#include "core/progress.hpp"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace nephele::core {
+
+Progress::Settings Progress::for_stderr(bool quiet) {
+  Settings s;
+  s.enabled = !quiet;
+  s.terminal = ::isatty(STDERR_FILENO) == 1;
+  return s;
+}
+
+Progress::Progress(std::string label, double total, Settings settings)
+    : label_(std::move(label)), total_(total > 0 ? total : 1.0), settings_(settings), start_(Clock::now()) {}
+
+Progress::~Progress() { finish(); }
+
+double Progress::elapsed() const { return std::chrono::duration<double>(Clock::now() - start_).count(); }
+
+std::string Progress::format(const std::string& label, const std::string& stage, double fraction, double elapsed_s,
+                             bool with_bar) {
+  fraction = std::clamp(fraction, 0.0, 1.0);
+  char numbers[96];
+  // The estimate assumes the rest goes at the average rate so far; shown once 1% is done.
+  if (fraction >= 0.01 && fraction < 1.0)
+    std::snprintf(numbers, sizeof numbers, "%3.0f%% (%.1f s, about %.0f s left)", 100.0 * fraction, elapsed_s,
+                  elapsed_s * (1.0 - fraction) / fraction);
+  else
+    std::snprintf(numbers, sizeof numbers, "%3.0f%% (%.1f s)", 100.0 * fraction, elapsed_s);
+  std::string text = label + ": ";
+  if (with_bar) {
+    constexpr int width = 24;
+    const int filled = static_cast<int>(std::floor(fraction * width));
+    text += "[" + std::string(filled, '#') + std::string(width - filled, ' ') + "] ";
+  }
+  text += numbers;
+  if (!stage.empty()) text += " " + stage;
+  return text;
+}
+
+void Progress::update(double done, const std::string& stage) {
+  if (!settings_.enabled || finished_) return;
+  const double t = elapsed();
+  if (t < settings_.quiet_below_s) return;
+  const double interval = settings_.terminal ? settings_.redraw_interval_s : settings_.line_interval_s;
+  if (drawn_ && t - last_shown_ < interval) return;
+  const std::string text = format(label_, stage, done / total_, t, settings_.terminal);
+  if (settings_.terminal)
+    std::fprintf(settings_.stream, "\r%-79s", text.c_str());  // pads over a longer previous line
+  else
+    std::fprintf(settings_.stream, "%s\n", text.c_str());
+  std::fflush(settings_.stream);
+  last_shown_ = t;
+  drawn_ = true;
+}
+
+void Progress::finish() {
+  if (finished_) return;
+  finished_ = true;
+  if (!settings_.enabled || !drawn_) return;
+  const std::string text = format(label_, "done", 1.0, elapsed(), settings_.terminal);
+  if (settings_.terminal)
+    std::fprintf(settings_.stream, "\r%-79s\n", text.c_str());
+  else
+    std::fprintf(settings_.stream, "%s\n", text.c_str());
+  std::fflush(settings_.stream);
+}
+
+}  // namespace nephele::core
