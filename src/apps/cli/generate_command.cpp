@@ -41,12 +41,14 @@ int run_generate(const std::vector<std::string>& arguments) {
   std::filesystem::create_directories(directory, error);
   if (error) throw UsageError("--out: cannot create directory '" + out + "': " + error.message());
 
+  // Opened before the passes run, so that an interrupt at any time removes its temporary directory.
+  io::OutputSet outputs(directory, io::OutputSet::Scope::directory);
   cover::GlobalCover cover(parameters);
   cover.run();
   // Stiff or capped warps are reported, never silently written (docs/numerics.md).
   const cover::WarpDiagnostics& diagnostics = cover.diagnose();
   for (const auto& warning : diagnostics.warnings) std::cerr << "nephele: warning: " << warning << "\n";
-  const auto export_timings = io::write_cover_files(directory, cover, context.info());
+  const auto export_timings = io::write_cover_files(outputs, cover, context.info());
   if (verbose) {
     for (const auto& t : cover.timings()) std::cerr << "pass " << t.pass << ": " << t.milliseconds << " ms\n";
     for (const auto& t : export_timings) std::cerr << "export " << t.pass << ": " << t.milliseconds << " ms\n";
