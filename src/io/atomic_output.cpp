@@ -34,12 +34,10 @@ std::runtime_error os_error(const std::string& what, int error) {
 // Removes `name` under the directory `parent` and everything below it, never following a
 // symbolic link (openat O_NOFOLLOW; unlinkat removes the link itself). Only system calls, so
 // that the signal handler can use it too.
-void remove_tree_at(int parent, const char* name) noexcept {
-  const int fd = ::openat(parent, name, O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC);
-  if (fd < 0) {
-    ::unlinkat(parent, name, 0);
-    return;
-  }
+void remove_tree_at(int parent, const char* name) noexcept;
+
+// Removes every entry of the open directory `fd`.
+void remove_entries(int fd) noexcept {
   // Entries removed while the directory is read may shift the listing: read it again until a
   // pass removes nothing (bounded, in case something cannot be removed).
   for (int pass = 0; pass < 16; ++pass) {
@@ -53,18 +51,34 @@ void remove_tree_at(int parent, const char* name) noexcept {
         offset += entry->d_reclen;
         const char* child = entry->d_name;
         if (child[0] == '.' && (child[1] == '\0' || (child[1] == '.' && child[2] == '\0'))) continue;
-        if (entry->d_type == DT_DIR || (::unlinkat(fd, child, 0) != 0 && errno == EISDIR)) {
+        if (entry->d_type == DT_DIR) {
           remove_tree_at(fd, child);
           removed = true;
-        } else {
+        } else if (::unlinkat(fd, child, 0) == 0) {
+          removed = true;
+        } else if (errno == EISDIR) {  // a directory of unknown d_type
+          remove_tree_at(fd, child);
           removed = true;
         }
       }
     }
     if (!removed) break;
   }
-  ::close(fd);
-  ::unlinkat(parent, name, AT_REMOVEDIR);
+}
+
+void remove_tree_at(int parent, const char* name) noexcept {
+  // A handler on another thread may race the main thread creating a file in the directory:
+  // a few rounds until the directory itself is gone.
+  for (int round = 0; round < 4; ++round) {
+    const int fd = ::openat(parent, name, O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC);
+    if (fd < 0) {
+      ::unlinkat(parent, name, 0);
+      return;
+    }
+    remove_entries(fd);
+    ::close(fd);
+    if (::unlinkat(parent, name, AT_REMOVEDIR) == 0 || errno != ENOTEMPTY) return;
+  }
 }
 
 // ---- SIGINT / SIGTERM: remove the open sets' temporary directories, then end as the signal
