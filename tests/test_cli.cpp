@@ -56,9 +56,10 @@ TEST_CASE("generate writes every output readable with the right sizes and a vali
   for (const char* pass : {"identity", "curl", "warp", "density", "coverage", "equirect"})
     CHECK(sidecar.at("timings_ms").at(pass).is_number());
   CHECK(sidecar.at("conventions").at("world_axes").is_string());
-  // No temporary files are left behind.
-  for (const auto& entry : fs::directory_iterator(out.path))
-    CHECK(entry.path().filename().string().find(".tmp-") == std::string::npos);
+  // No temporary directories are left behind, in --out or next to it.
+  for (const fs::path& place : {out.path, out.path.parent_path()})
+    for (const auto& entry : fs::directory_iterator(place))
+      CHECK(entry.path().filename().string().rfind(".nephele-" + out.path.filename().string() + "-", 0) != 0);
 }
 
 TEST_CASE("bad input exits with code 2 naming the option and writes nothing", "[cli]") {

@@ -1,44 +1,16 @@
-// Atomic output sets, and shader compile errors that name the file and line.
+// Shader compile errors that name the file and line (output sets: test_output_set.cpp).
 #include <catch2/catch.hpp>
 
 #include <filesystem>
 #include <fstream>
 #include <random>
 
-#include "io/atomic_output.hpp"
 #include "gpu/compute_program.hpp"
 #include "gpu/shader_sources.hpp"
 #include "gl_support.hpp"
 
 namespace fs = std::filesystem;
 using namespace nephele;
-
-TEST_CASE("an uncommitted output set removes its temporaries and keeps old files", "[output]") {
-  const fs::path dir = fs::temp_directory_path() / ("nephele_outputs_" + std::to_string(std::random_device{}()));
-  fs::create_directories(dir);
-  io::write_text_file(dir / "a.txt", "old");
-  {
-    io::OutputSet set(dir);
-    const fs::path temporary = set.temporary_for("a.txt");
-    CHECK(temporary.extension() == ".txt");
-    io::write_text_file(temporary, "new");
-    CHECK(fs::exists(temporary));
-  }  // destroyed without commit, as when writing fails half-way
-  std::ifstream in(dir / "a.txt");
-  std::string text;
-  in >> text;
-  CHECK(text == "old");
-  CHECK(std::distance(fs::directory_iterator(dir), fs::directory_iterator()) == 1);
-  {
-    io::OutputSet set(dir);
-    io::write_text_file(set.temporary_for("a.txt"), "new");
-    set.commit();
-  }
-  std::ifstream again(dir / "a.txt");
-  again >> text;
-  CHECK(text == "new");
-  fs::remove_all(dir);
-}
 
 TEST_CASE("every embedded shader compiles", "[shaders]") {
   test::test_context();

@@ -133,8 +133,7 @@ json::Value cover_sidecar(const cover::GlobalCover& cover, const gpu::ContextInf
   return root;
 }
 
-std::vector<cover::PassTiming> write_cover_files(const std::filesystem::path& directory,
-                                                 const cover::GlobalCover& cover,
+std::vector<cover::PassTiming> write_cover_files(OutputSet& outputs, const cover::GlobalCover& cover,
                                                  const gpu::ContextInfo& context) {
   std::vector<cover::PassTiming> timings;
   auto timed = [&](const std::string& name, auto&& work) {
@@ -144,7 +143,6 @@ std::vector<cover::PassTiming> write_cover_files(const std::filesystem::path& di
     timings.push_back({name, elapsed.count()});
   };
   const int size = cover.parameters().size;
-  OutputSet outputs(directory);
   timed("write_faces", [&] {
     const std::vector<float> texels = cover.cover_field().read();
     const size_t per_face = static_cast<size_t>(size) * size;
@@ -153,16 +151,16 @@ std::vector<cover::PassTiming> write_cover_files(const std::filesystem::path& di
                       std::vector<float>(texels.begin() + face * per_face,
                                          texels.begin() + (face + 1) * per_face)};
       const std::string name = std::string("cover_") + face_suffixes[face] + ".exr";
-      write_float_image(outputs.temporary_for(name), image, {"Y"}, name);
+      outputs.write(name, encode_image(image, exr_encoding({"Y"}), name));
     }
   });
   ImageData equirect{4 * size, 2 * size, 1, {}};
   timed("equirect", [&] { equirect.pixels = cover::equirect_from_cube(cover.cover_field(), equirect.width, equirect.height); });
   timed("write_equirect", [&] {
-    write_float_image(outputs.temporary_for("cover_equirect.exr"), equirect, {"Y"}, "cover_equirect.exr");
-    write_png8(outputs.temporary_for("cover_equirect.png"), equirect, "cover_equirect.png");
+    outputs.write("cover_equirect.exr", encode_image(equirect, exr_encoding({"Y"}), "cover_equirect.exr"));
+    outputs.write("cover_equirect.png", encode_image(equirect, png_encoding(8), "cover_equirect.png"));
   });
-  write_text_file(outputs.temporary_for("cover.json"), json::write(cover_sidecar(cover, context, timings)));
+  outputs.write("cover.json", json::write(cover_sidecar(cover, context, timings)));
   outputs.commit();
   return timings;
 }

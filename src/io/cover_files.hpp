@@ -8,6 +8,7 @@
 #include "cover/global_cover.hpp"
 #include "gpu/egl_context.hpp"
 #include "core/json.hpp"
+#include "io/atomic_output.hpp"
 
 namespace nephele::io {
 
@@ -21,10 +22,8 @@ std::vector<std::string> cover_file_names();
 json::Value cover_sidecar(const cover::GlobalCover& cover, const gpu::ContextInfo& context,
                           const std::vector<cover::PassTiming>& export_timings);
 
-// Writes every file into `directory` under temporary names, then renames them into place.
-// Returns the time of each export step.
-std::vector<cover::PassTiming> write_cover_files(const std::filesystem::path& directory,
-                                                 const cover::GlobalCover& cover,
+// Writes every file into `outputs` and commits it. Returns the time of each export step.
+std::vector<cover::PassTiming> write_cover_files(OutputSet& outputs, const cover::GlobalCover& cover,
                                                  const gpu::ContextInfo& context);
 
 }  // namespace nephele::io

@@ -1,39 +1,47 @@
 #include "io/image_files.hpp"
 
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
 #include <stdexcept>
 
+#include "io/atomic_output.hpp"
+
 namespace nephele::io {
-namespace {
 
-void write_image(const std::filesystem::path& path, const ImageData& image, OIIO::ImageSpec spec,
-                 const std::string& format_path) {
-  const std::string chooser = format_path.empty() ? path.string() : format_path;
-  auto out = OIIO::ImageOutput::create(chooser);
-  if (!out) throw std::runtime_error("no image writer for " + chooser + ": " + OIIO::geterror());
-  if (!out->open(path.string(), spec))
-    throw std::runtime_error("could not open " + path.string() + ": " + out->geterror());
-  if (!out->write_image(OIIO::TypeDesc::FLOAT, image.pixels.data()))
-    throw std::runtime_error("could not write " + path.string() + ": " + out->geterror());
-  if (!out->close()) throw std::runtime_error("could not close " + path.string() + ": " + out->geterror());
+std::vector<unsigned char> encode_image(const ImageData& image, const ImageEncoding& encoding,
+                                        const std::string& what) {
+  const bool png = encoding.format == ImageFormat::png;
+  if (png ? (encoding.bits != 8 && encoding.bits != 16) : encoding.bits != 32)
+    throw std::invalid_argument(what + ": " + std::to_string(encoding.bits) +
+                                "-bit images are not written (PNG: 8 or 16, EXR: 32)");
+  const char* format = png ? "png" : "openexr";
+  auto out = OIIO::ImageOutput::create(format);
+  if (!out) throw std::runtime_error("no image writer for " + what + ": " + OIIO::geterror());
+  if (!out->supports("ioproxy")) throw std::runtime_error("the " + std::string(format) + " writer cannot write to memory");
+  const OIIO::TypeDesc type = !png ? OIIO::TypeDesc::FLOAT
+                              : encoding.bits == 16 ? OIIO::TypeDesc::UINT16
+                                                    : OIIO::TypeDesc::UINT8;
+  OIIO::ImageSpec spec(image.width, image.height, image.channels, type);
+  if (!encoding.channel_names.empty()) spec.channelnames = encoding.channel_names;
+  if (!png) spec.attribute("compression", "zip");
+  spec.attribute("Software", "nephele");
+  std::vector<unsigned char> bytes;
+  OIIO::Filesystem::IOVecOutput memory(bytes);
+  const auto fail = [&](const char* step) {
+    return std::runtime_error("could not " + std::string(step) + " " + what + ": " + out->geterror());
+  };
+  if (!out->set_ioproxy(&memory)) throw fail("encode");
+  if (!out->open(what, spec)) throw fail("open");
+  if (!out->write_image(OIIO::TypeDesc::FLOAT, image.pixels.data())) throw fail("encode");
+  if (!out->close()) throw fail("close");
+  if (out->has_error()) throw fail("encode");
+  return bytes;
 }
 
-}  // namespace
-
-void write_float_image(const std::filesystem::path& path, const ImageData& image,
-                       const std::vector<std::string>& channel_names, const std::string& format_path) {
-  OIIO::ImageSpec spec(image.width, image.height, image.channels, OIIO::TypeDesc::FLOAT);
-  spec.channelnames = channel_names;
-  spec.attribute("compression", "zip");
-  spec.attribute("Software", "nephele");
-  write_image(path, image, spec, format_path);
-}
-
-void write_png8(const std::filesystem::path& path, const ImageData& image, const std::string& format_path) {
-  OIIO::ImageSpec spec(image.width, image.height, image.channels, OIIO::TypeDesc::UINT8);
-  spec.attribute("Software", "nephele");
-  write_image(path, image, spec, format_path);
+void write_image(const std::filesystem::path& path, const ImageData& image, const ImageEncoding& encoding) {
+  const std::vector<unsigned char> bytes = encode_image(image, encoding, path.string());
+  write_file(path, bytes.data(), bytes.size());
 }
 
 ImageData read_image(const std::filesystem::path& path) {

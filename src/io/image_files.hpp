@@ -10,14 +10,31 @@ namespace nephele::io {
 
 using core::ImageData;
 
-// Float EXR (zip-compressed) with the given channel names; `format_path` picks the writer by
-// extension when `path` is a temporary name.
-void write_float_image(const std::filesystem::path& path, const ImageData& image,
-                       const std::vector<std::string>& channel_names,
-                       const std::string& format_path = "");
-// 8-bit PNG of values in [0, 1], quantised linearly (round(255 v)), no gamma or sRGB chunk.
-void write_png8(const std::filesystem::path& path, const ImageData& image,
-                const std::string& format_path = "");
+enum class ImageFormat { png, exr };
+
+// How an image is stored. PNG: 8 or 16 bits of values in [0, 1], quantised linearly
+// (round((2^bits - 1) v)), no gamma or sRGB chunk. EXR: 32-bit float, zip-compressed.
+struct ImageEncoding {
+  ImageFormat format = ImageFormat::png;
+  int bits = 8;                            // png: 8 or 16; exr: 32
+  std::vector<std::string> channel_names;  // empty: OpenImageIO's defaults (Y, RGB, RGBA ...)
+};
+
+inline ImageEncoding png_encoding(int bits = 8) { return {ImageFormat::png, bits, {}}; }
+inline ImageEncoding exr_encoding(std::vector<std::string> channel_names) {
+  return {ImageFormat::exr, 32, std::move(channel_names)};
+}
+
+// The file's bytes, encoded in memory, so that the caller writes them with every write, fsync
+// and close checked (OpenImageIO's PNG writer does not report a failed fwrite). Throws
+// std::runtime_error naming `what` (the file's name) when encoding fails.
+std::vector<unsigned char> encode_image(const ImageData& image, const ImageEncoding& encoding,
+                                        const std::string& what);
+
+// The one image writer: encodes and writes `path` (replacing it in place; output sets write
+// through OutputSet::write instead).
+void write_image(const std::filesystem::path& path, const ImageData& image, const ImageEncoding& encoding);
+
 ImageData read_image(const std::filesystem::path& path);
 
 }  // namespace nephele::io

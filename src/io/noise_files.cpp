@@ -1,10 +1,7 @@
 #include "io/noise_files.hpp"
 
-#include <OpenImageIO/imageio.h>
-
 #include <algorithm>
 #include <cstring>
-#include <fstream>
 #include <stdexcept>
 
 #include "io/atomic_output.hpp"
@@ -37,18 +34,6 @@ json::Value fbm_json(const glsl::FbmParams& f, int width) {
   v.set("gain", f.gain);
   v.set("seed", static_cast<unsigned long>(f.seed));
   return v;
-}
-
-// 16-bit PNG: round(65535 v), no gamma (OpenImageIO quantises floats to the integer range).
-void write_png16(const std::filesystem::path& path, const io::ImageData& image, const std::string& format_path) {
-  auto out = OIIO::ImageOutput::create(format_path);
-  if (!out) throw std::runtime_error("no image writer for " + format_path + ": " + OIIO::geterror());
-  OIIO::ImageSpec spec(image.width, image.height, image.channels, OIIO::TypeDesc::UINT16);
-  spec.attribute("Software", "nephele");
-  if (!out->open(path.string(), spec)) throw std::runtime_error("could not open " + path.string() + ": " + out->geterror());
-  if (!out->write_image(OIIO::TypeDesc::FLOAT, image.pixels.data()))
-    throw std::runtime_error("could not write " + path.string() + ": " + out->geterror());
-  if (!out->close()) throw std::runtime_error("could not close " + path.string() + ": " + out->geterror());
 }
 
 }  // namespace
@@ -160,29 +145,20 @@ std::filesystem::path write_noise_files(const std::filesystem::path& out, const 
   const std::filesystem::path directory = out.has_parent_path() ? out.parent_path() : std::filesystem::path(".");
   const std::string name = out.filename().string();
   const std::string sidecar_name = out.stem().string() + ".json";
-  io::OutputSet outputs(directory);
-  const std::filesystem::path temporary = outputs.temporary_for(name);
+  io::OutputSet outputs(directory, io::OutputSet::Scope::files);
   if (format == FileFormat::raw) {
-    std::ofstream file(temporary, std::ios::binary);
     // float32 little-endian: the host's own layout on every platform nephele builds for.
-    file.write(reinterpret_cast<const char*>(volume.values.data()),
-               static_cast<std::streamsize>(volume.values.size() * sizeof(float)));
-    file.close();
-    if (!file) throw std::runtime_error("could not write " + temporary.string());
+    outputs.write(name, volume.values.data(), volume.values.size() * sizeof(float));
   } else {
     io::ImageData image{volume.width * volume.depth, volume.height, volume.channels, slice_atlas(volume)};
+    io::ImageEncoding encoding = io::png_encoding(png_bits == 16 ? 16 : 8);
     if (format == FileFormat::exr) {
       static const char* const names[4][4] = {{"Y"}, {"R", "G"}, {"R", "G", "B"}, {"R", "G", "B", "A"}};
-      std::vector<std::string> channel_names(names[volume.channels - 1], names[volume.channels - 1] + volume.channels);
-      io::write_float_image(temporary, image, channel_names, name);
-    } else if (png_bits == 16) {
-      write_png16(temporary, image, name);
-    } else {
-      io::write_png8(temporary, image, name);
+      encoding = io::exr_encoding({names[volume.channels - 1], names[volume.channels - 1] + volume.channels});
     }
+    outputs.write(name, io::encode_image(image, encoding, name));
   }
-  io::write_text_file(outputs.temporary_for(sidecar_name),
-                          json::write(sidecar(spec, volume, format, png_bits, name, preset, extra, stretched_from)));
+  outputs.write(sidecar_name, json::write(sidecar(spec, volume, format, png_bits, name, preset, extra, stretched_from)));
   outputs.commit();
   return directory / sidecar_name;
 }

@@ -35,8 +35,8 @@ json::Value sidecar(const noise::TextureSpec& spec, const noise::Volume& volume,
                     const std::string& data_file, const std::string& preset, const json::Value& extra,
                     const std::vector<ValueRange>& stretched_from = {});
 
-// Writes `out` and its sidecar (same name, extension .json) atomically (temporary names, then
-// renames). Returns the sidecar's path.
+// Writes `out` and its sidecar (same name, extension .json) as one output set of those two files
+// in out's directory (OutputSet::Scope::files). Returns the sidecar's path.
 std::filesystem::path write_noise_files(const std::filesystem::path& out, const noise::TextureSpec& spec,
                                         const noise::Volume& volume, int png_bits, const std::string& preset,
                                         const json::Value& extra,

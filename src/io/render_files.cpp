@@ -1,8 +1,6 @@
 #include "io/render_files.hpp"
 
 #include <filesystem>
-#include <map>
-#include <memory>
 
 #include "io/atomic_output.hpp"
 #include "io/image_files.hpp"
@@ -61,30 +59,20 @@ json::Value scene_sidecar(const SceneRender& r, const regional::Scene& scene) {
   return root;
 }
 
-void write_scene_outputs(const SceneRender& result, const regional::Scene& scene,
-                         const std::vector<std::string>& output_paths) {
-  if (output_paths.empty()) return;
-  // One output set per directory; all are committed only after every file is written.
-  std::map<std::filesystem::path, std::unique_ptr<io::OutputSet>> sets;
-  auto set_for = [&](const std::filesystem::path& path) -> io::OutputSet& {
-    const std::filesystem::path directory = path.parent_path().empty() ? "." : path.parent_path();
-    auto& set = sets[directory];
-    if (!set) set = std::make_unique<io::OutputSet>(directory);
-    return *set;
-  };
-  for (const auto& path_text : output_paths) {
-    const std::filesystem::path path(path_text);
-    const std::string name = path.filename().string();
-    if (path.extension() == ".png")
-      io::write_png8(set_for(path).temporary_for(name), render::tone_map(result.render.radiance, scene.exposure), name);
+void write_scene_outputs(const SceneRender& result, const regional::Scene& scene, const std::filesystem::path& directory,
+                         const std::vector<std::string>& names, io::OutputSet::Scope scope) {
+  if (names.empty()) return;
+  io::OutputSet outputs(directory, scope);
+  for (const auto& name : names) {
+    if (std::filesystem::path(name).extension() == ".png")
+      outputs.write(name, io::encode_image(render::tone_map(result.render.radiance, scene.exposure), io::png_encoding(8), name));
     else
-      io::write_float_image(set_for(path).temporary_for(name), result.render.radiance, {"R", "G", "B", "A"}, name);
+      outputs.write(name, io::encode_image(result.render.radiance, io::exr_encoding({"R", "G", "B", "A"}), name));
   }
   // The sidecar sits beside the first output.
-  const std::filesystem::path first(output_paths.front());
-  io::write_text_file(set_for(first).temporary_for(first.stem().string() + ".json"),
-                          json::write(scene_sidecar(result, scene)));
-  for (auto& [directory, set] : sets) set->commit();
+  const std::filesystem::path first(names.front());
+  outputs.write((first.parent_path() / (first.stem().string() + ".json")).string(), json::write(scene_sidecar(result, scene)));
+  outputs.commit();
 }
 
 }  // namespace nephele::io

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "core/json.hpp"
+#include "io/atomic_output.hpp"
 #include "regional/scene.hpp"
 #include "render/scene_renderer.hpp"
 
@@ -12,10 +13,10 @@ namespace nephele::io {
 
 using render::SceneRender;
 
-// Writes each output (.png tone-mapped sRGB, .exr linear radiance with cloud opacity in A) and
-// a JSON sidecar next to the first one, all renamed into place together.
-void write_scene_outputs(const SceneRender& result, const regional::Scene& scene,
-                         const std::vector<std::string>& output_paths);
+// Writes each output `names` (relative to `directory`: .png tone-mapped sRGB, .exr linear
+// radiance with cloud opacity in A) and a JSON sidecar next to the first one, as one output set.
+void write_scene_outputs(const SceneRender& result, const regional::Scene& scene, const std::filesystem::path& directory,
+                         const std::vector<std::string>& names, OutputSet::Scope scope);
 
 json::Value scene_sidecar(const SceneRender& result, const regional::Scene& scene);
 

@@ -1,5 +1,6 @@
 #include "regional/scene.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -148,10 +149,22 @@ void validate_scene(const Scene& s, const std::string& source) {
   } catch (const std::invalid_argument& e) {
     throw SceneError(source + ": 'time': " + e.what());
   }
+  std::vector<std::string> seen;
   for (const auto& o : s.outputs) {
     const std::string ext = std::filesystem::path(o).extension().string();
     if (ext != ".png" && ext != ".exr")
       throw SceneError(source + ": 'outputs': '" + o + "' must end in .png or .exr");
+    // Outputs are one set inside --out (docs/formats.md): nothing may land outside it.
+    const std::filesystem::path path(o);
+    if (path.is_absolute() || path.has_root_name() || path.has_root_directory())
+      throw SceneError(source + ": 'outputs': '" + o + "' is an absolute path (allowed: a relative path inside --out)");
+    for (const auto& part : path)
+      if (part == "..")
+        throw SceneError(source + ": 'outputs': '" + o + "' contains '..' (allowed: a relative path inside --out)");
+    const std::string normal = path.lexically_normal().string();
+    if (std::find(seen.begin(), seen.end(), normal) != seen.end())
+      throw SceneError(source + ": 'outputs': '" + o + "' is named twice (each output needs its own name)");
+    seen.push_back(normal);
   }
 }
 

@@ -44,6 +44,8 @@ int run_generate(const std::vector<std::string>& arguments) {
   std::filesystem::create_directories(directory, error);
   if (error) throw UsageError("--out: cannot create directory '" + out + "': " + error.message());
 
+  // Opened before the passes run, so that an interrupt at any time removes its temporary directory.
+  io::OutputSet outputs(directory, io::OutputSet::Scope::directory);
   cover::GlobalCover cover(parameters);
   // identity, curl, warp, density, calibrate, coverage, diagnose, then the files.
   constexpr int stages = 8;
@@ -55,7 +57,7 @@ int run_generate(const std::vector<std::string>& arguments) {
   const cover::WarpDiagnostics& diagnostics = cover.diagnose();
   for (const auto& warning : diagnostics.warnings) std::cerr << "nephele: warning: " << warning << "\n";
   progress.update(stages_started++, "writing files");
-  const auto export_timings = io::write_cover_files(directory, cover, context.info());
+  const auto export_timings = io::write_cover_files(outputs, cover, context.info());
   progress.finish();
   if (verbose) {
     for (const auto& t : cover.timings()) std::cerr << "pass " << t.pass << ": " << t.milliseconds << " ms\n";

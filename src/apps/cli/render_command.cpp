@@ -92,20 +92,29 @@ int run_render(const std::vector<std::string>& arguments) {
     throw UsageError(e.what());
   }
 
-  std::vector<std::string> outputs;
+  // The outputs are names inside `directory`; with --scene and --out DIR the set owns DIR, else
+  // it is only its own files in a directory shared with others.
+  std::vector<std::string> outputs, shown;
+  std::filesystem::path directory;
+  io::OutputSet::Scope scope = io::OutputSet::Scope::files;
   if (!scene_file.empty() && (out.empty() || std::filesystem::is_directory(out) || std::filesystem::path(out).extension().empty())) {
     if (scene.outputs.empty()) throw UsageError(scene_file + ": 'outputs': give at least one file name, or --out FILE");
-    const std::filesystem::path directory = out.empty() ? std::filesystem::path(".") : std::filesystem::path(out);
-    for (const auto& name : scene.outputs) outputs.push_back((directory / name).string());
+    directory = out.empty() ? std::filesystem::path(".") : std::filesystem::path(out);
+    if (!out.empty()) scope = io::OutputSet::Scope::directory;
+    outputs = scene.outputs;
+    for (const auto& name : outputs) shown.push_back((directory / name).string());
   } else {
     if (out.empty()) throw UsageError("--out: give an output file (.png or .exr)");
     const std::string extension = std::filesystem::path(out).extension().string();
     if (extension != ".png" && extension != ".exr")
       throw UsageError("--out: '" + out + "' must end in .png or .exr");
-    outputs.push_back(out);
+    directory = std::filesystem::path(out).parent_path();
+    if (directory.empty()) directory = ".";
+    outputs.push_back(std::filesystem::path(out).filename().string());
+    shown.push_back(out);
   }
   for (const auto& o : outputs) {
-    const std::filesystem::path parent = std::filesystem::path(o).parent_path();
+    const std::filesystem::path parent = (directory / o).parent_path();
     if (!parent.empty() && std::filesystem::exists(parent) && !std::filesystem::is_directory(parent))
       throw UsageError("--out: '" + parent.string() + "' is not a directory");
   }
@@ -120,11 +129,7 @@ int run_render(const std::vector<std::string>& arguments) {
   } catch (const regional::SceneError& e) {
     throw UsageError(e.what());
   }
-  for (const auto& o : outputs) {
-    const std::filesystem::path parent = std::filesystem::path(o).parent_path();
-    if (!parent.empty()) std::filesystem::create_directories(parent);
-  }
-  io::write_scene_outputs(result, scene, outputs);
+  io::write_scene_outputs(result, scene, directory, outputs, scope);
   if (result.render.loop_limited_pixels > 0 && context.info().renderer.find("llvmpipe") != std::string::npos)
     std::cerr << "warning: " << result.render.loop_limited_pixels
               << " pixels need 65535 or more shader loop iterations, where llvmpipe stops every loop; they are "
@@ -137,7 +142,7 @@ int run_render(const std::vector<std::string>& arguments) {
       std::cerr << "layer " << regional::cloud_type_name(l.type) << " " << l.base_m << "-" << l.top_m << " m: " << l.reason << "\n";
   }
   std::cout << "wrote";
-  for (const auto& o : outputs) std::cout << " " << o;
+  for (const auto& o : shown) std::cout << " " << o;
   std::cout << " (sun elevation " << result.render.sun_elevation_deg << " deg)\n";
   return exit_ok;
 }

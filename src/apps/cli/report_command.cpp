@@ -98,6 +98,8 @@ int run_report(const std::vector<std::string>& arguments) {
   std::filesystem::create_directories(directory, error);
   if (error) throw UsageError("--out: cannot create directory '" + out + "': " + error.message());
 
+  // Opened before the sweep, so that an interrupt at any time removes its temporary directory.
+  io::OutputSet outputs(directory, io::OutputSet::Scope::directory);
   std::cout << "device: " << context.info().renderer << " (" << context.info().version << ")\n" << std::flush;
   studies::SweepResult result =
       studies::run_sweep(sweep, [](const std::string& line) { std::cout << line << "\n" << std::flush; });
@@ -116,22 +118,19 @@ int run_report(const std::vector<std::string>& arguments) {
   const studies::RenderStepChoice render_choice =
       studies::choose_render_steps(render_rows, render_scene.view_steps, render_scene.light_steps);
 
-  io::OutputSet outputs(directory);
-  io::write_text_file(outputs.temporary_for("error_vs_runtime.csv"), studies::error_csv(result.rows));
-  io::write_text_file(outputs.temporary_for("stability.csv"), studies::stability_csv(result.rows));
-  io::write_text_file(outputs.temporary_for("error_vs_runtime.svg"),
-                          studies::work_precision_svg(result.rows, "Warp error against run time, " + result.device,
-                                                       result.cpu_device
-                                                           ? "CPU time of the curl + warp passes, all threads (ms)"
-                                                           : "time of the curl + warp passes (ms)"));
+  outputs.write("error_vs_runtime.csv", studies::error_csv(result.rows));
+  outputs.write("stability.csv", studies::stability_csv(result.rows));
+  outputs.write("error_vs_runtime.svg",
+                studies::work_precision_svg(result.rows, "Warp error against run time, " + result.device,
+                                            result.cpu_device ? "CPU time of the curl + warp passes, all threads (ms)"
+                                                              : "time of the curl + warp passes (ms)"));
   std::string summary = studies::summary_markdown(result, sweep);
   if (no_render) {
     summary += "\n## Render: image error against run time\n\nNot run (--no-render).\n";
   } else {
-    io::write_text_file(outputs.temporary_for("render_error.csv"),
-                            studies::render_error_csv(render_rows, render_sweep));
-    io::write_text_file(
-        outputs.temporary_for("render_error_vs_runtime.svg"),
+    outputs.write("render_error.csv", studies::render_error_csv(render_rows, render_sweep));
+    outputs.write(
+        "render_error_vs_runtime.svg",
         studies::render_error_svg(render_rows,
                                  "Image error against run time, default scene, " + std::to_string(render_sweep.width) +
                                      " x " + std::to_string(render_sweep.height) + " pixels",
@@ -141,7 +140,7 @@ int run_report(const std::vector<std::string>& arguments) {
     summary += "\n" + studies::render_summary_markdown(render_rows, render_sweep, render_choice,
                                                       render_scene.view_steps, render_scene.light_steps);
   }
-  io::write_text_file(outputs.temporary_for("summary.md"), summary);
+  outputs.write("summary.md", summary);
   outputs.commit();
   for (const auto& c : result.comparisons)
     if (c.has_baseline)
