@@ -17,6 +17,8 @@ gpu::EglContext& test_context();
 template <class T> struct GlslTypeName;
 template <> struct GlslTypeName<glm::vec4> { static constexpr const char* name = "vec4"; };
 template <> struct GlslTypeName<glm::uvec4> { static constexpr const char* name = "uvec4"; };
+// Column-major 4x4 floats: the same 64 bytes in std430 and in glm (inputs of up to 16 numbers).
+template <> struct GlslTypeName<glm::mat4> { static constexpr const char* name = "mat4"; };
 
 // Source of a probe shader: `includes` (lines such as #include "../lib/hash.glsl"), optional
 // `helpers` (GLSL declarations), and `expression`, evaluated per input with `input_value`

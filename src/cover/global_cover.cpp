@@ -1,29 +1,11 @@
 #include "cover/global_cover.hpp"
 
 #include <algorithm>
-#include <chrono>
+
+#include "gpu/pass_timer.hpp"
+#include "shader_math/uniforms.hpp"
 
 namespace nephele::cover {
-
-void set_uniform(const gpu::ComputeProgram& program, const std::string& name,
-                 const glsl::FbmParams& params) {
-  program.set(name + ".frequency", params.frequency);
-  program.set(name + ".octaves", params.octaves);
-  program.set(name + ".lacunarity", params.lacunarity);
-  program.set(name + ".gain", params.gain);
-  program.set(name + ".seed", static_cast<unsigned>(params.seed));
-  // The sphere's noise is not periodic; the linker may drop an unused member.
-  if (program.has_uniform(name + ".period")) program.set(name + ".period", params.period);
-}
-
-void set_uniform(const gpu::ComputeProgram& program, const std::string& name,
-                 const glsl::CurlParams& params) {
-  set_uniform(program, name + ".potential_north", params.potential_north);
-  set_uniform(program, name + ".potential_south", params.potential_south);
-  program.set(name + ".prevailing", params.prevailing);
-  program.set(name + ".mix_frequency", params.mix_frequency);
-  program.set(name + ".strength", params.strength);
-}
 
 double cover_gpu_bytes(int size) {
   const double texels = 6.0 * size * size;
@@ -46,12 +28,7 @@ GlobalCover::GlobalCover(const CoverParameters& parameters)
 template <class Work>
 void GlobalCover::timed(const std::string& pass, Work&& work) {
   if (on_pass_) on_pass_(pass);
-  glFinish();
-  const auto start = std::chrono::steady_clock::now();
-  work();
-  glFinish();
-  const std::chrono::duration<double, std::milli> elapsed = std::chrono::steady_clock::now() - start;
-  timings_.push_back({pass, elapsed.count()});
+  timings_.push_back({pass, gpu::time_pass(work)});
 }
 
 void GlobalCover::run() {
@@ -72,7 +49,7 @@ void GlobalCover::run_identity() {
 
 void GlobalCover::run_curl() {
   timed("curl", [&] {
-    set_uniform(curl_program_, "u_curl", curl_params(parameters_));
+    glsl::set_uniform(curl_program_, "u_curl", curl_params(parameters_));
     curl_program_.set("u_noise_offset", potential_offset(parameters_));
     identity_field_.bind_image(0, GL_READ_ONLY);
     curl_field_.bind_image(1, GL_WRITE_ONLY);
@@ -102,7 +79,7 @@ void GlobalCover::dispatch_warp(const gpu::Texture& starts, const gpu::Texture& 
     warp_program_.set("u_max_substeps", p.max_substeps);
   }
   if (p.curl_mode == cover::CurlMode::procedural) {
-    set_uniform(warp_program_, "u_curl", curl_params(p));
+    glsl::set_uniform(warp_program_, "u_curl", curl_params(p));
     warp_program_.set("u_noise_offset", potential_offset(p));
   }
   curl_field_.bind_image(1, GL_READ_ONLY);
@@ -175,7 +152,7 @@ const cover::WarpDiagnostics& GlobalCover::diagnose() {
 
 void GlobalCover::run_density() {
   timed("density", [&] {
-    set_uniform(density_program_, "u_cover", density_params(parameters_));
+    glsl::set_uniform(density_program_, "u_cover", density_params(parameters_));
     density_program_.set("u_noise_offset", density_offset(parameters_));
     warp_field_.bind_image(0, GL_READ_ONLY);
     density_field_.bind_image(1, GL_WRITE_ONLY);

@@ -70,12 +70,6 @@ class GlobalCover {
   std::optional<cover::WarpDiagnostics> diagnostics_;
 };
 
-// Uploads FbmParams / CurlParams to a uniform struct of the same layout named `name`.
-void set_uniform(const gpu::ComputeProgram& program, const std::string& name,
-                 const glsl::FbmParams& params);
-void set_uniform(const gpu::ComputeProgram& program, const std::string& name,
-                 const glsl::CurlParams& params);
-
 // Bytes of GPU memory the passes allocate for a cube face size (plus the equirect export).
 double cover_gpu_bytes(int size);
 

@@ -3,40 +3,27 @@
 #include <epoxy/gl.h>
 
 #include <algorithm>
-#include <chrono>
 #include <stdexcept>
+
+#include "gpu/pass_timer.hpp"
+#include "shader_math/uniforms.hpp"
 
 namespace nephele::noise {
 namespace {
 
 // The linker drops uniforms a kind does not read (the Worley part outside perlin-worley).
-void set_active(const gpu::ComputeProgram& program, const std::string& name, float v) {
-  if (program.has_uniform(name)) program.set(name, v);
-}
 void set_active(const gpu::ComputeProgram& program, const std::string& name, int v) {
-  if (program.has_uniform(name)) program.set(name, v);
-}
-void set_active(const gpu::ComputeProgram& program, const std::string& name, unsigned v) {
   if (program.has_uniform(name)) program.set(name, v);
 }
 void set_active(const gpu::ComputeProgram& program, const std::string& name, glsl::ivec3 v) {
   if (program.has_uniform(name)) program.set(name, v);
 }
 
-void set_fbm(const gpu::ComputeProgram& program, const std::string& name, const glsl::FbmParams& f) {
-  set_active(program, name + ".frequency", f.frequency);
-  set_active(program, name + ".octaves", f.octaves);
-  set_active(program, name + ".lacunarity", f.lacunarity);
-  set_active(program, name + ".gain", f.gain);
-  set_active(program, name + ".seed", static_cast<unsigned>(f.seed));
-  set_active(program, name + ".period", f.period);
-}
-
 void set_channel(const gpu::ComputeProgram& program, const glsl::NoiseChannel& channel,
                  const TextureSpec& spec, int stride) {
   set_active(program, "u_channel.type", channel.type);
-  set_fbm(program, "u_channel.fbm", channel.fbm);
-  set_fbm(program, "u_channel.worley", channel.worley);
+  glsl::set_uniform(program, "u_channel.fbm", channel.fbm, glsl::Members::active);
+  glsl::set_uniform(program, "u_channel.worley", channel.worley, glsl::Members::active);
   set_active(program, "u_size", glsl::ivec3(spec.width, spec.height, spec.depth));
   set_active(program, "u_stride", stride);
 }
@@ -47,11 +34,6 @@ float last_frequency(const glsl::FbmParams& fbm) {
   glsl::ivec3 period = fbm.period;
   for (int k = 1; k < fbm.octaves; ++k) glsl::next_octave(fbm, amplitude, frequency, period);
   return frequency;
-}
-
-using Clock = std::chrono::steady_clock;
-double ms_since(Clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
 
 }  // namespace
@@ -135,7 +117,7 @@ void TextureGenerator::generate(const TextureSpec& spec, Volume& out) {
     if (patch) set_channel(*patch, params, spec, stride);
     for (int z0 = 0; z0 < depth; z0 += slices) {
       const int n = std::min(slices, depth - z0);
-      const auto start = Clock::now();
+      gpu::PassTimer timer;
       const GLuint header[4] = {0u, capacity, 0u, 0u};
       glNamedBufferSubData(patches, 0, sizeof header, header);
       glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, values);
@@ -156,10 +138,9 @@ void TextureGenerator::generate(const TextureSpec& spec, Volume& out) {
         }
       }
       glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-      glFinish();
-      timings_.compute_ms += ms_since(start);
+      timings_.compute_ms += timer.milliseconds();
 
-      const auto copy_start = Clock::now();
+      timer.restart();
       // Mapped, a software driver's buffer is read in place (no staging copy).
       const auto* mapped = static_cast<const float*>(
           glMapNamedBufferRange(values, 0, static_cast<GLsizeiptr>(slice_bytes * n), GL_MAP_READ_BIT));
@@ -175,7 +156,7 @@ void TextureGenerator::generate(const TextureSpec& spec, Volume& out) {
           }
         }
       glUnmapNamedBuffer(values);
-      timings_.readback_ms += ms_since(copy_start);
+      timings_.readback_ms += timer.milliseconds();
     }
   }
   if (glGetError() != GL_NO_ERROR) throw std::runtime_error("OpenGL error while generating noise");

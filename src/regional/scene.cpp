@@ -9,39 +9,10 @@
 #include "regional/sites.hpp"
 #include "core/time.hpp"
 #include "core/json.hpp"
+#include "core/json_keys.hpp"
 
 namespace nephele::regional {
 namespace {
-
-struct Keys {
-  const std::string& source;
-  [[noreturn]] void fail(const std::string& key, const std::string& message) const {
-    throw SceneError(source + ": '" + key + "': " + message);
-  }
-  double number(const json::Value& v, const std::string& key) const {
-    if (!v.is_number()) fail(key, "must be a number");
-    return v.as_number();
-  }
-  int integer(const json::Value& v, const std::string& key) const {
-    const double d = number(v, key);
-    if (d != std::floor(d) || std::abs(d) > 1e9) fail(key, "must be an integer");
-    return static_cast<int>(d);
-  }
-  std::string string(const json::Value& v, const std::string& key) const {
-    if (!v.is_string()) fail(key, "must be a string");
-    return v.as_string();
-  }
-  bool boolean(const json::Value& v, const std::string& key) const {
-    if (!v.is_bool()) fail(key, "must be true or false");
-    return v.as_bool();
-  }
-  std::vector<std::string> strings(const json::Value& v, const std::string& key) const {
-    if (!v.is_array()) fail(key, "must be an array of strings");
-    std::vector<std::string> out;
-    for (const auto& item : v.as_array()) out.push_back(string(item, key + "[]"));
-    return out;
-  }
-};
 
 void check_range(const std::string& source, const std::string& key, double value, double lo, double hi) {
   if (!(value >= lo && value <= hi)) {
@@ -69,7 +40,9 @@ Scene parse_scene(const std::string& text, const std::string& source, const std:
     throw SceneError(source + ": not valid JSON: " + e.what());
   }
   if (!root.is_object()) throw SceneError(source + ": the top level must be a JSON object");
-  Keys k{source};
+  const json::KeyReader k([&source](const std::string& key, const std::string& message) {
+    throw SceneError(source + ": '" + key + "': " + message);
+  });
   Scene s;
   for (const auto& [key, v] : root.as_object()) {
     if (key == "view") {

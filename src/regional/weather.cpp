@@ -7,6 +7,7 @@
 
 #include "core/time.hpp"
 #include "core/json.hpp"
+#include "core/json_keys.hpp"
 
 namespace nephele::regional {
 namespace {
@@ -14,19 +15,16 @@ namespace {
 struct Reader {
   const std::string& source;
   const json::Value& root;
-
-  [[noreturn]] void fail(const std::string& field, const std::string& message) const {
+  json::KeyReader keys{[this](const std::string& field, const std::string& message) {
     throw WeatherError(source + ": " + field + ": " + message);
-  }
+  }};
+
+  [[noreturn]] void fail(const std::string& field, const std::string& message) const { keys.fail(field, message); }
   const json::Value& member(const json::Value& object, const std::string& path, const std::string& key) const {
-    const json::Value* v = object.find(key);
-    if (!v) fail(path + key, "missing");
-    return *v;
+    return keys.member(object, key, path);
   }
   double number(const json::Value& object, const std::string& path, const std::string& key) const {
-    const json::Value& v = member(object, path, key);
-    if (!v.is_number()) fail(path + key, "must be a number");
-    return v.as_number();
+    return keys.number(member(object, path, key), path + key);
   }
   // An hourly array of numbers; nulls (missing values, NaN in the source) are errors.
   std::vector<double> series(const json::Value& block, const std::string& path, const std::string& key,

@@ -5,12 +5,12 @@
 #include <epoxy/gl.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <memory>
 #include <stdexcept>
 
 #include "gpu/compute_program.hpp"
+#include "gpu/pass_timer.hpp"
 #include "gpu/textures.hpp"
 #include "render/sun_position.hpp"
 #include "shader_math/shader_math.hpp"
@@ -107,14 +107,7 @@ RenderResult render_clouds(const Camera& camera, const std::vector<regional::Clo
                            const regional::WeatherField& field, double unix_seconds, const RenderSettings& settings,
                            glm::dvec2 wind_towards, double wind_speed, const NoiseVolume* noise) {
   RenderResult result;
-  auto timed = [&](const std::string& name, auto&& work) {
-    glFinish();
-    const auto start = std::chrono::steady_clock::now();
-    work();
-    glFinish();
-    const std::chrono::duration<double, std::milli> elapsed = std::chrono::steady_clock::now() - start;
-    result.timings_ms.emplace_back(name, elapsed.count());
-  };
+  auto timed = [&](const std::string& name, auto&& work) { result.timings_ms.emplace_back(name, gpu::time_pass(work)); };
 
   // Only layers with cloud somewhere in the field are marched.
   std::vector<const regional::CloudLayer*> active;

@@ -1,6 +1,5 @@
 // nephele bench cover: time of each pass of the global cover for several sizes.
 #include <algorithm>
-#include <chrono>
 #include <cstdio>
 #include <iostream>
 #include <sstream>
@@ -12,6 +11,7 @@
 #include "apps/cli/device_limits.hpp"
 #include "cover/global_cover.hpp"
 #include "cover/equirect.hpp"
+#include "gpu/pass_timer.hpp"
 
 namespace nephele::cli {
 namespace {
@@ -60,11 +60,7 @@ int bench_cover(const std::vector<std::string>& arguments) {
       for (const auto& t : cover.timings())
         for (size_t k = 0; k < std::size(passes); ++k)
           if (t.pass == passes[k]) runs[k].push_back(t.milliseconds);
-      glFinish();
-      const auto start = std::chrono::steady_clock::now();
-      cover::equirect_from_cube(cover.cover_field(), 4 * size, 2 * size);
-      const std::chrono::duration<double, std::milli> elapsed = std::chrono::steady_clock::now() - start;
-      runs.back().push_back(elapsed.count());
+      runs.back().push_back(gpu::time_pass([&] { cover::equirect_from_cube(cover.cover_field(), 4 * size, 2 * size); }));
     }
     double total = 0;
     std::printf("%6d", size);

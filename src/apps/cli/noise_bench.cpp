@@ -3,7 +3,6 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -12,13 +11,12 @@
 #include "params/table.hpp"
 #include "apps/cli/noise_options.hpp"
 #include "apps/cli/options.hpp"
+#include "gpu/pass_timer.hpp"
 #include "io/noise_files.hpp"
 #include "noise/noise_texture.hpp"
 
 namespace nephele::cli {
 namespace {
-
-using Clock = std::chrono::steady_clock;
 
 double median(std::vector<double> v) {
   std::sort(v.begin(), v.end());
@@ -44,14 +42,10 @@ struct Run {
 Run measure(noise::TextureGenerator& generator, const noise::TextureSpec& spec, int repeat) {
   Run run;
   noise::Volume volume;
-  auto start = Clock::now();
-  generator.generate(spec, volume);
-  run.first_ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+  run.first_ms = gpu::time_pass([&] { generator.generate(spec, volume); });
   std::vector<double> compute, total;
   for (int r = 0; r < repeat; ++r) {
-    start = Clock::now();
-    generator.generate(spec, volume);
-    total.push_back(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
+    total.push_back(gpu::time_pass([&] { generator.generate(spec, volume); }));
     compute.push_back(generator.timings().compute_ms);
   }
   run.compute_ms = median(compute);
@@ -114,9 +108,8 @@ int bench_noise(const std::vector<std::string>& arguments) {
     const noise::TextureSpec spec = noise::preset(name, 1);
     const Run run = measure(generator, spec, repeat);
     const noise::Volume volume = generator.generate(spec);
-    const auto start = Clock::now();
-    io::write_noise_files(directory / (name + ".png"), spec, volume, 8, name, json::Value());
-    const double write_s = std::chrono::duration<double>(Clock::now() - start).count();
+    const double write_s =
+        gpu::time_pass([&] { io::write_noise_files(directory / (name + ".png"), spec, volume, 8, name, json::Value()); }) / 1e3;
     std::printf("  %-42s %10.3f %13.3f %15.3f\n",
                 (name + " " + std::to_string(spec.width) + "^3 " + std::to_string(spec.channels.size()) + " channels").c_str(),
                 run.total_ms / 1e3, run.first_ms / 1e3, write_s);

@@ -1,6 +1,5 @@
 // nephele bench render: seconds per frame, and the image error against the number of steps.
 #include <algorithm>
-#include <chrono>
 #include <cstdio>
 #include <iostream>
 
@@ -8,6 +7,7 @@
 #include "params/table.hpp"
 #include "apps/cli/options.hpp"
 #include "gpu/egl_context.hpp"
+#include "gpu/pass_timer.hpp"
 #include "studies/render_error.hpp"
 #include "studies/render_report.hpp"
 #include "render/scene_renderer.hpp"
@@ -47,10 +47,9 @@ int bench_render(const std::vector<std::string>& arguments) {
               scene.width, scene.height, scene.view_steps, scene.light_steps, scene.sky_steps);
   std::vector<double> frames;
   for (int r = 0; r < repeat; ++r) {
-    const auto start = std::chrono::steady_clock::now();
+    const gpu::PassTimer timer;
     const render::SceneRender result = render::render_scene(scene);
-    const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;
-    frames.push_back(elapsed.count());
+    frames.push_back(timer.milliseconds() / 1000.0);
     if (r == 0)
       for (const auto& [name, ms] : result.render.timings_ms) std::printf("  pass %-14s %10.1f ms\n", name.c_str(), ms);
   }

@@ -1,0 +1,29 @@
+// The one compiled copy of the GLSL function library (shaders/lib), with external linkage.
+// Every library file is included here; each includes the files it needs, so the order does not
+// matter. shader_math.hpp declares what this defines (generated from the same files).
+#include "shader_math/hooks.hpp"
+
+namespace nephele::glsl {
+#include "lib/atmosphere.glsl"
+#include "lib/cloud_density.glsl"
+#include "lib/cover_density.glsl"
+#include "lib/cube_faces.glsl"
+#include "lib/cube_sampling.glsl"
+#include "lib/curl_flow.glsl"
+#include "lib/equirect_mapping.glsl"
+#include "lib/hash.glsl"
+#include "lib/noise_rows.glsl"
+#include "lib/noise_types.glsl"
+#include "lib/parameters.glsl"
+#include "lib/perlin.glsl"
+#include "lib/portable_math.glsl"
+#include "lib/ray_sphere.glsl"
+#include "lib/render_types.glsl"
+#include "lib/tileable_noise.glsl"
+#include "lib/warp_step.glsl"
+#include "lib/worley.glsl"
+#include "lib/worley_fbm.glsl"
+
+vec3 warp_velocity(vec3 w, IN(CubeSource) source) { return vec3(sample_cube_bilinear(w, source)); }
+vec3 warp_velocity(vec3 w, IN(CurlParams) curl) { return curl_velocity(w, curl); }
+}  // namespace nephele::glsl

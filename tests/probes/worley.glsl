@@ -1,0 +1,18 @@
+// Probe of lib/worley.glsl (shared GLSL/C++ subset; tests/test_shader_probes.cpp).
+#ifndef __cplusplus
+#include "../lib/worley.glsl"
+#endif
+vec4 probe_worley(mat4 x) {
+  int f = int(x[0].x);
+  ivec3 period = ivec3(vec3(x[2]));
+  uvec3 key = uvec3(vec3(x[3]));
+  if (f == 0) return vec4(vec3(wrap_cell(ivec3(vec3(x[1])), period)), 0.0f);
+  if (f == 1) return vec4(feature_offset(ivec3(vec3(x[1])), period, key), 0.0f);
+  if (f == 2) {
+    float best = x[0].y;
+    vec3 best_delta = vec3(0.0f);
+    worley_candidate(ivec3(0), ivec3(int(x[0].z), int(x[0].w), 1), vec3(x[1]), period, key, best, best_delta);
+    return vec4(best_delta, best);
+  }
+  return worley_f1(vec3(x[1]), period, key);
+}

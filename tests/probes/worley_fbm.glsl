@@ -1,0 +1,14 @@
+// Probe of lib/worley_fbm.glsl (shared GLSL/C++ subset; tests/test_shader_probes.cpp).
+#ifndef __cplusplus
+#include "../lib/worley_fbm.glsl"
+#endif
+vec4 probe_worley_fbm(mat4 x) {
+  FbmParams params;  // members one by one: C++17 has no parenthesised aggregate initialisation
+  params.frequency = x[2].x;
+  params.octaves = int(x[2].y);
+  params.lacunarity = x[2].z;
+  params.gain = x[2].w;
+  params.seed = uint(x[3].x);
+  params.period = ivec3(vec3(x[3].y, x[3].z, x[3].w));
+  return inverted_worley_fbm(vec3(x[1]), params);
+}
