@@ -1,0 +1,26 @@
+#!/usr/bin/env bash
+# Regenerates the README's pictures in docs/images from today's code (after a build in build/):
+#   docs/images/cover_equirect.png           nephele generate (defaults), the equirect preview
+#   docs/images/render_gurten.png/.json      nephele render --view gurten (defaults)
+#   docs/images/render_gurten_panorama.*     the same scene as a panorama
+# With --report it also runs `nephele report` (about 35 minutes on two cores) and copies its
+# work-precision diagrams (error_vs_runtime*.svg).
+set -euo pipefail
+repo_root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+cd "$repo_root"
+nephele=build/nephele
+[[ -x "$nephele" ]] || { echo "readme-images: build first (scripts/quickstart.sh)" >&2; exit 1; }
+work="$(mktemp -d)"
+trap 'rm -rf "$work"' EXIT
+
+"$nephele" generate --out "$work/cover"
+cp "$work/cover/cover_equirect.png" docs/images/cover_equirect.png
+"$nephele" render --view gurten --out "$work/render_gurten.png"
+cp "$work/render_gurten.png" "$work/render_gurten.json" docs/images/
+"$nephele" render --view gurten --panorama --out "$work/render_gurten_panorama.png"
+cp "$work/render_gurten_panorama.png" "$work/render_gurten_panorama.json" docs/images/
+if [[ "${1:-}" == "--report" ]]; then
+  "$nephele" report --out "$work/report"
+  cp "$work/report/error_vs_runtime.svg" docs/images/error_vs_runtime.svg
+fi
+echo "readme-images: docs/images updated"
