@@ -6,6 +6,7 @@
 #include <string>
 
 #include "apps/cli/options.hpp"
+#include "core/json.hpp"
 #include "cli_support.hpp"
 #include "params/table.hpp"
 #include "params/values.hpp"
@@ -146,5 +147,27 @@ TEST_CASE("every command's --help lists each option the table gives that command
         INFO(p->option());
         CHECK_THAT(result.output, Catch::Contains(p->option() + (p->type == params::Type::flag ? "" : " VALUE")));
       }
+  }
+}
+
+TEST_CASE("cover.json records every cover parameter of the table under its sidecar path", "[params][cli]") {
+  test::TemporaryDirectory out;
+  // Adaptive, so that its tolerance and sub-step limit are recorded too.
+  const auto r = test::run("generate --size 8 --iterations 2 --integrator adaptive --quiet --out " + out.path.string());
+  REQUIRE(r.exit_code == 0);
+  const json::Value sidecar = json::parse(test::read_file(out.path / "cover.json"));
+  const json::Value& recorded = sidecar.at("parameters");
+  for (const params::Parameter* p : params::all()) {
+    if (!p->used_by(params::cover_sidecar)) continue;
+    const std::string path(p->sidecar_path());
+    INFO(path);
+    const auto dot = path.find('.');
+    const json::Value* value =
+        dot == std::string::npos ? recorded.find(path) : recorded.at(path.substr(0, dot)).find(path.substr(dot + 1));
+    REQUIRE(value != nullptr);
+    // Float fields are written as the shortest decimal that reads back as the same float, so
+    // they differ from the table's double default by at most half a float ulp: 2^-24 < 1e-7.
+    if (p->type == params::Type::text) CHECK(value->as_string() == std::string(p->default_text == "euler" ? "adaptive" : p->default_text));
+    else CHECK(value->as_number() == Approx(p == &params::cover::size ? 8 : p == &params::cover::iterations ? 2 : p->default_number).epsilon(1e-7));
   }
 }

@@ -42,6 +42,34 @@ struct CoverParameters {
   double noise_offset = params::cover::noise_offset.default_number;
 };
 
+// The numeric fields of a cover with their declarations in the parameter table, in the order
+// of cover.json: the one place that ties the table to the fields. The command line binds
+// options through it and the sidecar writes its keys through it. (The integrator and the curl
+// mode are names, handled beside it.) `P` is CoverParameters, const or not.
+template <class P, class Visit>
+void visit_numeric_parameters(P& p, Visit&& visit) {
+  namespace c = params::cover;
+  visit(c::size, p.size);
+  visit(c::seed, p.seed);
+  visit(c::iterations, p.iterations);
+  visit(c::step, p.step);
+  visit(c::tolerance, p.tolerance);
+  visit(c::max_substeps, p.max_substeps);
+  visit(c::coverage, p.coverage);
+  visit(c::noise_offset, p.noise_offset);
+  visit(c::curl_frequency, p.potential.frequency);
+  visit(c::curl_octaves, p.potential.octaves);
+  visit(c::curl_lacunarity, p.potential.lacunarity);
+  visit(c::curl_gain, p.potential.gain);
+  visit(c::prevailing, p.prevailing);
+  visit(c::mix_frequency, p.mix_frequency);
+  visit(c::curl_strength, p.curl_strength);
+  visit(c::density_frequency, p.density.frequency);
+  visit(c::density_octaves, p.density.octaves);
+  visit(c::density_lacunarity, p.density.lacunarity);
+  visit(c::density_gain, p.density.gain);
+}
+
 // Independent seeds per noise layer, derived from the user's seed.
 enum class NoiseLayer : std::uint32_t { potential_north = 1, potential_south = 2, density = 3 };
 std::uint32_t layer_seed(std::uint32_t seed, NoiseLayer layer);

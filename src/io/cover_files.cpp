@@ -6,17 +6,29 @@
 #include "cover/equirect.hpp"
 #include "io/image_files.hpp"
 #include "nephele/version.hpp"
+#include "params/table.hpp"
 
 namespace nephele::io {
 namespace {
 
-json::Value octaves_json(const cover::NoiseOctaves& o) {
-  json::Value v;
-  v.set("frequency", o.frequency);
-  v.set("octaves", o.octaves);
-  v.set("lacunarity", o.lacunarity);
-  v.set("gain", o.gain);
-  return v;
+// A sidecar value: the seed as an unsigned integer, other numbers as they are.
+json::Value json_number(std::uint32_t v) { return json::Value(static_cast<unsigned long>(v)); }
+template <class T>
+json::Value json_number(T v) {
+  return json::Value(v);
+}
+
+// Sets "a.b" in nested objects, creating "a" at its first use (so the order of first uses stays).
+void set_path(json::Value& object, const std::string& path, json::Value value) {
+  const auto dot = path.find('.');
+  if (dot == std::string::npos) {
+    object.set(path, std::move(value));
+    return;
+  }
+  const std::string head = path.substr(0, dot);
+  json::Value inner = object.find(head) ? *object.find(head) : json::Value();
+  set_path(inner, path.substr(dot + 1), std::move(value));
+  object.set(head, std::move(inner));
 }
 
 json::Value conventions_json() {
@@ -48,25 +60,19 @@ std::vector<std::string> cover_file_names() {
 json::Value cover_sidecar(const cover::GlobalCover& cover, const gpu::ContextInfo& context,
                           const std::vector<cover::PassTiming>& export_timings) {
   const cover::CoverParameters& p = cover.parameters();
+  // Keys and nesting come from the parameter table (sidecar paths such as "potential.gain").
   json::Value parameters;
-  parameters.set("size", p.size);
-  parameters.set("seed", static_cast<unsigned long>(p.seed));
-  parameters.set("iterations", p.iterations);
-  parameters.set("step", p.step);
-  parameters.set("flow_time", static_cast<double>(p.iterations) * p.step);
-  parameters.set("integrator", cover::integrator_name(p.integrator));
-  parameters.set("curl_mode", cover::curl_mode_name(p.curl_mode));
-  if (p.integrator == cover::Integrator::adaptive) {
-    parameters.set("tolerance", p.tolerance);
-    parameters.set("max_substeps", p.max_substeps);
-  }
-  parameters.set("coverage", p.coverage);
-  parameters.set("noise_offset", p.noise_offset);
-  parameters.set("potential", octaves_json(p.potential));
-  parameters.set("prevailing", p.prevailing);
-  parameters.set("mix_frequency", p.mix_frequency);
-  parameters.set("curl_strength", p.curl_strength);
-  parameters.set("density", octaves_json(p.density));
+  const bool adaptive = p.integrator == cover::Integrator::adaptive;
+  cover::visit_numeric_parameters(p, [&](const params::Parameter& parameter, const auto& value) {
+    if (!parameter.used_by(params::cover_sidecar)) return;
+    if (!adaptive && (&parameter == &params::cover::tolerance || &parameter == &params::cover::max_substeps)) return;
+    set_path(parameters, std::string(parameter.sidecar_path()), json_number(value));
+    if (&parameter == &params::cover::step) {
+      parameters.set("flow_time", static_cast<double>(p.iterations) * p.step);
+      parameters.set(std::string(params::cover::integrator.key), cover::integrator_name(p.integrator));
+      parameters.set(std::string(params::cover::curl_mode.key), cover::curl_mode_name(p.curl_mode));
+    }
+  });
 
   const cover::CoverageCalibration& c = cover.calibration();
   json::Value result;

@@ -34,11 +34,13 @@ struct Parameter {
   std::string_view allowed;       // text: the allowed words "a|b|c", or the form, e.g. "WIDTHxHEIGHT"
   std::string_view help;
   unsigned uses;
+  std::string_view sidecar = "";  // path in a sidecar when it differs from the key ("potential.octaves")
 
   std::string option() const;        // "--view-steps" for key "view_steps"
   std::string range_text() const;    // "1 to 4096", "euler, heun, rk4", "WIDTHxHEIGHT"
   std::string default_display() const;  // "48", "0.006", "gurten"; "" when there is none
   bool used_by(unsigned use) const { return (uses & use) != 0; }
+  constexpr std::string_view sidecar_path() const { return sidecar.empty() ? key : sidecar; }
   constexpr int default_int() const { return static_cast<int>(default_number); }
   constexpr float default_float() const { return static_cast<float>(default_number); }
   constexpr std::uint32_t default_uint32() const { return static_cast<std::uint32_t>(default_number); }
@@ -46,12 +48,14 @@ struct Parameter {
 
 // Factories that keep the table readable (src/params/table.hpp).
 constexpr Parameter integer(std::string_view key, double default_value, double min, double max,
-                            std::string_view unit, std::string_view help, unsigned uses) {
-  return {key, Type::integer, unit, default_value, "", min, max, "", help, uses};
+                            std::string_view unit, std::string_view help, unsigned uses,
+                            std::string_view sidecar = "") {
+  return {key, Type::integer, unit, default_value, "", min, max, "", help, uses, sidecar};
 }
 constexpr Parameter real(std::string_view key, double default_value, double min, double max,
-                         std::string_view unit, std::string_view help, unsigned uses) {
-  return {key, Type::real, unit, default_value, "", min, max, "", help, uses};
+                         std::string_view unit, std::string_view help, unsigned uses,
+                         std::string_view sidecar = "") {
+  return {key, Type::real, unit, default_value, "", min, max, "", help, uses, sidecar};
 }
 constexpr Parameter text(std::string_view key, std::string_view default_value, std::string_view allowed,
                          std::string_view help, unsigned uses) {

@@ -35,7 +35,7 @@ int bench_cover(const std::vector<std::string>& arguments) {
                   "each size, on the current OpenGL device.", params::bench_cover);
   options.bind(params::run::bench_cover_sizes, &sizes_text);
   options.bind(params::run::bench_cover_repeat, &repeat);
-  add_cover_options(options, parameters, false);
+  add_cover_options(options, parameters, params::bench_cover);
   if (!options.parse(arguments)) {
     std::cout << options.help();
     return exit_ok;

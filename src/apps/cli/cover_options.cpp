@@ -11,24 +11,11 @@ namespace nephele::cli {
 // precision on the unit sphere.
 static constexpr double max_octave_frequency = 4096.0;
 
-void add_cover_options(Options& o, cover::CoverParameters& p, bool include_size) {
-  namespace c = params::cover;
-  if (include_size) o.bind(c::size, &p.size);
-  o.bind(c::seed, &p.seed);
-  o.bind(c::iterations, &p.iterations);
-  o.bind(c::step, &p.step);
-  o.bind(c::coverage, &p.coverage);
-  o.bind(c::curl_frequency, &p.potential.frequency);
-  o.bind(c::curl_octaves, &p.potential.octaves);
-  o.bind(c::curl_lacunarity, &p.potential.lacunarity);
-  o.bind(c::curl_gain, &p.potential.gain);
-  o.bind(c::prevailing, &p.prevailing);
-  o.bind(c::mix_frequency, &p.mix_frequency);
-  o.bind(c::curl_strength, &p.curl_strength);
-  o.bind(c::density_frequency, &p.density.frequency);
-  o.bind(c::density_octaves, &p.density.octaves);
-  o.bind(c::density_lacunarity, &p.density.lacunarity);
-  o.bind(c::density_gain, &p.density.gain);
+void add_cover_options(Options& o, cover::CoverParameters& p, unsigned use) {
+  cover::visit_numeric_parameters(p, [&](const params::Parameter& parameter, auto& field) {
+    // The warp's own options (tolerance, ...) are bound by WarpOptions.
+    if (parameter.used_by(use) && !WarpOptions::binds(parameter)) o.bind(parameter, &field);
+  });
 }
 
 void validate_cover_parameters(const cover::CoverParameters& p) {
@@ -46,6 +33,11 @@ void validate_cover_parameters(const cover::CoverParameters& p) {
   };
   check("curl", p.potential);
   check("density", p.density);
+}
+
+bool WarpOptions::binds(const params::Parameter& p) {
+  namespace c = params::cover;
+  return &p == &c::tolerance || &p == &c::max_substeps || &p == &c::noise_offset;
 }
 
 void WarpOptions::add(Options& o, cover::CoverParameters& p, bool include_integrator) {

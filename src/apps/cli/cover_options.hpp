@@ -6,8 +6,9 @@
 
 namespace nephele::cli {
 
-// Registers the cover's parameters (the size too, unless include_size is false).
-void add_cover_options(Options& options, cover::CoverParameters& p, bool include_size = true);
+// Registers the cover's numeric parameters that the table gives the command `use`
+// (params::generate, params::bench_cover, params::report).
+void add_cover_options(Options& options, cover::CoverParameters& p, unsigned use);
 // Checks that span several options; throws UsageError.
 void validate_cover_parameters(const cover::CoverParameters& p);
 
@@ -18,6 +19,8 @@ class WarpOptions {
  public:
   void add(Options& options, cover::CoverParameters& p, bool include_integrator = true);
   void apply(cover::CoverParameters& p) const;  // throws UsageError naming the option
+  // The numeric parameters that add() binds (so add_cover_options leaves them out).
+  static bool binds(const params::Parameter& p);
 
  private:
   std::string integrator_{params::cover::integrator.default_text};

@@ -18,7 +18,7 @@ int run_generate(const std::vector<std::string>& arguments) {
   Options options("generate",
                   "Generates a global cloud cover: curl-warped Worley noise on a cube map, written to\n"
                   "cover_{px,nx,py,ny,pz,nz}.exr, cover_equirect.exr, cover_equirect.png and cover.json.", params::generate);
-  add_cover_options(options, parameters);
+  add_cover_options(options, parameters, params::generate);
   WarpOptions warp_options;
   warp_options.add(options, parameters);
   options.bind(params::run::cover_out, &out);

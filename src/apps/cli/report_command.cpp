@@ -59,7 +59,7 @@ int run_report(const std::vector<std::string>& arguments) {
   options.bind(params::run::report_render_size, &render_size);
   options.bind(params::run::report_no_render, &no_render);
   options.bind(params::run::report_budget_ms, &budget_ms);
-  add_cover_options(options, parameters, false);
+  add_cover_options(options, parameters, params::report);
   WarpOptions warp_options;
   warp_options.add(options, parameters, false);
   if (!options.parse(arguments)) {
