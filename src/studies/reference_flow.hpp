@@ -1,6 +1,7 @@
 #pragma once
 // The reference solution of the warp: the procedural curl flow solved far more accurately
 // than any GPU variant, in double precision on the CPU (docs/numerics.md, "Reference").
+#include <chrono>
 #include <cstdint>
 #include <vector>
 
@@ -13,12 +14,18 @@ struct ReferenceOptions {
   double max_step = 5e-3;    // flow time per step at most
   long max_steps = 200000;   // attempted steps per point before it is marked unconverged
   int threads = 2;
+  // The budget: points not finished by then are left unconverged and marked `cut`.
+  std::chrono::steady_clock::time_point deadline = std::chrono::steady_clock::time_point::max();
 };
 
 struct ReferencePoint {
   glm::dvec3 end{0.0};
   long steps = 0;           // attempted steps
-  bool converged = false;   // false: max_steps ran out (end is where it got to)
+  bool converged = false;   // false: max_steps or the deadline ran out (end is where it got to)
+  bool cut = false;         // the deadline ran out before this point was finished
+  // The reference's own error: the sum of the accepted steps' local error estimates, radians
+  // (a first-order bound of the global error that ignores the flow's stretching).
+  double error_estimate = 0.0;
 };
 
 // Classical RK4 in double with step doubling (Richardson): a step of h and two of h/2 differ

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <map>
 #include <sstream>
+#include <stdexcept>
 
 #include "cover/global_cover.hpp"
 #include "studies/svg_plot.hpp"
@@ -115,7 +116,12 @@ SweepResult run_sweep(const SweepOptions& o, const std::function<void(const std:
   const int m = std::max(1, o.sample_grid);
   const std::vector<glm::vec3> starts = sample_directions(6 * m * m, 0x5A3F1u);
   const auto reference_start = std::chrono::steady_clock::now();
-  const std::vector<ReferencePoint> reference = reference_warps(starts, curl, flow_offset, flow_time, o.reference);
+  ReferenceOptions reference_options = o.reference;
+  // The reference honours the budget too: points left when it runs out are dropped.
+  if (o.budget_ms > 0.0)
+    reference_options.deadline =
+        reference_start + std::chrono::microseconds(static_cast<long long>(o.budget_ms * 1000.0));
+  const std::vector<ReferencePoint> reference = reference_warps(starts, curl, flow_offset, flow_time, reference_options);
   result.reference_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - reference_start).count();
   result.samples = static_cast<int>(starts.size());
@@ -123,10 +129,20 @@ SweepResult run_sweep(const SweepOptions& o, const std::function<void(const std:
   for (const auto& r : reference) {
     steps_sum += static_cast<double>(r.steps);
     if (!r.converged) ++result.unconverged_samples;
+    if (r.cut) ++result.cut_samples;
+    if (r.converged) result.reference_error_estimate = std::max(result.reference_error_estimate, r.error_estimate);
   }
   result.mean_reference_steps = steps_sum / static_cast<double>(reference.size());
   progress("reference: " + std::to_string(starts.size()) + " points in " + format("%.1f", result.reference_seconds) +
-           " s, " + format("%.0f", result.mean_reference_steps) + " steps per point on average");
+           " s, " + format("%.0f", result.mean_reference_steps) + " steps per point on average; own error estimate " +
+           format("%.1e", result.reference_error_estimate) + " rad");
+  if (result.cut_samples > 0)
+    progress("reference cut short by --budget-ms " + format("%.0f", o.budget_ms) + ": " +
+             std::to_string(result.cut_samples) + " of " + std::to_string(starts.size()) +
+             " points unfinished and left out of the statistics (raise --budget-ms for all)");
+  if (result.cut_samples == static_cast<int>(starts.size()))
+    throw std::runtime_error("the reference solution finished no sample point within --budget-ms " +
+                             format("%.0f", o.budget_ms) + " ms: raise --budget-ms or lower --samples");
 
   std::vector<float> start_texels(4 * starts.size(), 0.0f);
   for (size_t k = 0; k < starts.size(); ++k)
@@ -412,6 +428,15 @@ std::string summary_markdown(const SweepResult& result, const SweepOptions& opti
                 "and are left out.\n\n",
                 result.flow_time, result.samples, options.reference.tolerance, options.reference.max_step,
                 result.mean_reference_steps, result.reference_seconds, result.unconverged_samples);
+  s << line;
+  std::snprintf(line, sizeof line,
+                "The reference's own error estimate (sum of its accepted local error estimates, largest over the "
+                "points) is %.1e rad: warp errors near it are not resolved.%s\n\n",
+                result.reference_error_estimate,
+                result.cut_samples > 0
+                    ? (" The budget (--budget-ms " + format("%.0f", options.budget_ms) + ") cut the reference short: " +
+                       std::to_string(result.cut_samples) + " of the points above were not finished.").c_str()
+                    : "");
   s << line;
   s << "Times are the fastest of up to " << options.repeat
     << " runs of the curl pass (sampled curl only) plus the warp pass, "

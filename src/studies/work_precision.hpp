@@ -81,7 +81,9 @@ struct SweepResult {
   std::vector<SkippedRun> skipped;
   std::vector<Comparison> comparisons;
   int samples = 0;
-  int unconverged_samples = 0;   // reference points dropped from the statistics
+  int unconverged_samples = 0;   // reference points dropped from the statistics (cut ones included)
+  int cut_samples = 0;           // of those, the points the budget cut short
+  double reference_error_estimate = 0.0;  // largest error estimate of a converged reference point, radians
   double reference_seconds = 0.0;
   double mean_reference_steps = 0.0;
   double flow_time = 0.0;
