@@ -102,7 +102,19 @@ SweepOptions SweepOptions::quick(const cover::CoverParameters& base) {
   return o;
 }
 
-SweepResult run_sweep(const SweepOptions& o, const std::function<void(const std::string&)>& progress) {
+int SweepOptions::planned_runs() const {
+  int per_mode = 0;
+  for (Integrator integrator : integrators)
+    per_mode += static_cast<int>(integrator == Integrator::adaptive ? tolerances.size() : steps.size());
+  return static_cast<int>(sizes.size() * curl_modes.size()) * per_mode;
+}
+
+SweepResult run_sweep(const SweepOptions& o, const std::function<void(const std::string&)>& progress,
+                      const std::function<void(int)>& advance) {
+  int runs_done = 0;
+  auto advanced = [&] {
+    if (advance) advance(++runs_done);
+  };
   SweepResult result;
   const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
   result.cpu_device = renderer && std::string(renderer).find("llvmpipe") != std::string::npos;
@@ -196,6 +208,7 @@ SweepResult run_sweep(const SweepOptions& o, const std::function<void(const std:
           if (predicted > o.budget_ms) {
             result.skipped.push_back({name, predicted});
             progress("skipped " + name + ": predicted " + format("%.0f", predicted) + " ms");
+            advanced();
             continue;
           }
 
@@ -267,6 +280,7 @@ SweepResult run_sweep(const SweepOptions& o, const std::function<void(const std:
           progress(name + ": " + format("%.1f", row.time_ms) + " ms, warp error rms " +
                    format("%.2e", row.warp_err_rms) + " max " + format("%.2e", row.warp_err_max) +
                    ", cover error rms " + format("%.2e", row.cover_err_rms));
+          advanced();
         }
       }
   }

@@ -35,6 +35,9 @@ struct SweepOptions {
   double budget_ms = 30000.0;           // skip runs predicted to take longer than this
   ReferenceOptions reference;
 
+  // Runs the sweep plans (some may be skipped by the budget), for progress reports.
+  int planned_runs() const;
+
   static SweepOptions full(const cover::CoverParameters& base);
   static SweepOptions quick(const cover::CoverParameters& base);
 };
@@ -92,7 +95,10 @@ struct SweepResult {
 };
 
 // Runs the sweep; needs a current OpenGL context. `progress` gets one line per run.
-SweepResult run_sweep(const SweepOptions& options, const std::function<void(const std::string&)>& progress);
+// `progress` gets a line per run and per event; `advance`, if given, the runs done (ran or
+// skipped) after each, out of options.planned_runs().
+SweepResult run_sweep(const SweepOptions& options, const std::function<void(const std::string&)>& progress,
+                      const std::function<void(int)>& advance = {});
 
 std::vector<Comparison> compare_with_default(const std::vector<SweepRow>& rows);
 

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "apps/cli/commands.hpp"
+#include "core/progress.hpp"
 #include "params/table.hpp"
 #include "apps/cli/cover_options.hpp"
 #include "apps/cli/device_limits.hpp"
@@ -38,7 +39,7 @@ std::vector<T> parse_list(const std::string& option, const std::string& text, do
 int run_report(const std::vector<std::string>& arguments) {
   cover::CoverParameters parameters;
   std::string out(params::run::report_out.default_text), sizes, steps, tolerances, render_size;
-  bool quick = false, no_render = false;
+  bool quick = false, no_render = false, quiet = false;
   int samples = 0, repeat = 0;  // 0: the mode's default
   float budget_ms = 0.0f;
   Options options("report",
@@ -51,6 +52,7 @@ int run_report(const std::vector<std::string>& arguments) {
                   "and a section of summary.md.", params::report);
   options.bind(params::run::report_out, &out);
   options.bind(params::run::report_quick, &quick);
+  options.bind(params::run::quiet, &quiet);
   options.bind(params::run::report_sizes, &sizes);
   options.bind(params::run::report_steps, &steps);
   options.bind(params::run::report_tolerances, &tolerances);
@@ -101,8 +103,11 @@ int run_report(const std::vector<std::string>& arguments) {
   // Opened before the sweep, so that an interrupt at any time removes its temporary directory.
   io::OutputSet outputs(directory, io::OutputSet::Scope::directory);
   std::cout << "device: " << context.info().renderer << " (" << context.info().version << ")\n" << std::flush;
+  core::Progress sweep_progress("report", sweep.planned_runs(), core::Progress::for_stderr(quiet));
   studies::SweepResult result =
-      studies::run_sweep(sweep, [](const std::string& line) { std::cout << line << "\n" << std::flush; });
+      studies::run_sweep(sweep, [](const std::string& line) { std::cout << line << "\n" << std::flush; },
+                         [&](int done) { sweep_progress.update(done, "warp runs"); });
+  sweep_progress.finish();
   result.device = context.info().renderer + " (" + context.info().version + ")";
 
   std::vector<studies::RenderErrorRow> render_rows;
@@ -111,8 +116,12 @@ int run_report(const std::vector<std::string>& arguments) {
               << ", reference " << render_sweep.reference_view << " view x " << render_sweep.reference_light
               << " light steps\n"
               << studies::render_error_table_header() << std::flush;
-    render_rows = studies::render_error_sweep(render_scene, render_sweep, [](const studies::RenderErrorRow& row) {
+    core::Progress render_progress("report", static_cast<double>(render_sweep.view_steps.size() * render_sweep.light_steps.size()),
+                                   core::Progress::for_stderr(quiet));
+    int renders_done = 0;
+    render_rows = studies::render_error_sweep(render_scene, render_sweep, [&](const studies::RenderErrorRow& row) {
       std::cout << studies::render_error_table_line(row) << std::flush;
+      render_progress.update(++renders_done, "renders");
     });
   }
   const studies::RenderStepChoice render_choice =
