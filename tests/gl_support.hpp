@@ -1,6 +1,6 @@
 #pragma once
-// Test support: one headless OpenGL context per test process, and probes that run a GLSL
-// expression on a handful of inputs and read the values back (the sfsim way of testing shaders).
+// Test support: one headless OpenGL context per test process, and the probes of src/gpu/probe.hpp
+// run in it.
 #include <epoxy/gl.h>
 #include <glm/glm.hpp>
 
@@ -9,36 +9,21 @@
 
 #include "gpu/compute_program.hpp"
 #include "gpu/egl_context.hpp"
+#include "gpu/probe.hpp"
 
 namespace nephele::test {
 
 gpu::EglContext& test_context();
 
-template <class T> struct GlslTypeName;
-template <> struct GlslTypeName<glm::vec4> { static constexpr const char* name = "vec4"; };
-template <> struct GlslTypeName<glm::uvec4> { static constexpr const char* name = "uvec4"; };
-// Column-major 4x4 floats: the same 64 bytes in std430 and in glm (inputs of up to 16 numbers).
-template <> struct GlslTypeName<glm::mat4> { static constexpr const char* name = "mat4"; };
-
-// Source of a probe shader: `includes` (lines such as #include "../lib/hash.glsl"), optional
-// `helpers` (GLSL declarations), and `expression`, evaluated per input with `input_value`
-// (of type In) in scope, converted to Out.
-std::string probe_source(const std::string& in_type, const std::string& out_type,
-                         const std::string& includes, const std::string& helpers,
-                         const std::string& expression);
-
-void run_probe(const std::string& source, const void* inputs, size_t input_bytes, void* outputs,
-               size_t output_bytes, size_t count);
+using gpu::GlslTypeName;
+using gpu::probe_source;
+using gpu::run_probe;
 
 template <class Out, class In>
-std::vector<Out> probe(const std::string& includes, const std::string& expression,
-                       const std::vector<In>& inputs, const std::string& helpers = "") {
+std::vector<Out> probe(const std::string& includes, const std::string& expression, const std::vector<In>& inputs,
+                       const std::string& helpers = "") {
   test_context();
-  std::vector<Out> outputs(inputs.size());
-  run_probe(probe_source(GlslTypeName<In>::name, GlslTypeName<Out>::name, includes, helpers, expression),
-            inputs.data(), inputs.size() * sizeof(In), outputs.data(), outputs.size() * sizeof(Out),
-            inputs.size());
-  return outputs;
+  return gpu::probe<Out>(includes, expression, inputs, helpers);
 }
 
 }  // namespace nephele::test

@@ -149,10 +149,10 @@ EglContext::~EglContext() {
   }
 }
 
-bool EglContext::is_software() const {
-  return info_.renderer.find("llvmpipe") != std::string::npos ||
-         info_.renderer.find("softpipe") != std::string::npos ||
-         info_.renderer.find("lavapipe") != std::string::npos;
+void EglContext::make_current() {
+  auto display = static_cast<EGLDisplay>(display_);
+  if (!eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, static_cast<EGLContext>(context_)))
+    throw ContextError("eglMakeCurrent failed (" + egl_error_name(eglGetError()) + ")");
 }
 
 }  // namespace nephele::gpu

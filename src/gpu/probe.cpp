@@ -1,0 +1,40 @@
+#include "gpu/probe.hpp"
+
+#include "gpu/compute_program.hpp"
+
+namespace nephele::gpu {
+
+std::string probe_source(const std::string& in_type, const std::string& out_type,
+                         const std::string& includes, const std::string& helpers,
+                         const std::string& expression) {
+  return "#version 450\n"
+         "layout(local_size_x = 64) in;\n"
+         "layout(std430, binding = 0) readonly buffer Inputs { " + in_type + " inputs[]; };\n"
+         "layout(std430, binding = 1) writeonly buffer Outputs { " + out_type + " outputs[]; };\n"
+         "uniform uint u_count;\n" +
+         includes + "\n" + helpers + "\n" +
+         "void main() {\n"
+         "  uint k = gl_GlobalInvocationID.x;\n"
+         "  if (k >= u_count) return;\n"
+         "  " + in_type + " input_value = inputs[k];\n"
+         "  outputs[k] = " + out_type + "(" + expression + ");\n"
+         "}\n";
+}
+
+void run_probe(const std::string& source, const void* inputs, size_t input_bytes, void* outputs,
+               size_t output_bytes, size_t count) {
+  auto program = ComputeProgram::from_text("tests/probe.comp", source);
+  GLuint buffers[2];
+  glCreateBuffers(2, buffers);
+  glNamedBufferStorage(buffers[0], static_cast<GLsizeiptr>(input_bytes), inputs, 0);
+  glNamedBufferStorage(buffers[1], static_cast<GLsizeiptr>(output_bytes), nullptr, GL_MAP_READ_BIT);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, buffers[0]);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, buffers[1]);
+  program.set("u_count", static_cast<unsigned>(count));
+  program.dispatch_covering(static_cast<int>(count), 1, 1);
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  glGetNamedBufferSubData(buffers[1], 0, static_cast<GLsizeiptr>(output_bytes), outputs);
+  glDeleteBuffers(2, buffers);
+}
+
+}  // namespace nephele::gpu
