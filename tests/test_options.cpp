@@ -171,3 +171,17 @@ TEST_CASE("cover.json records every cover parameter of the table under its sidec
     else CHECK(value->as_number() == Approx(p == &params::cover::size ? 8 : p == &params::cover::iterations ? 2 : p->default_number).epsilon(1e-7));
   }
 }
+
+TEST_CASE("render takes --pitch=X, --fov=X and --exposure=X like the spaced form, and options override the scene file", "[cli]") {
+  test::TemporaryDirectory out(true);
+  const std::string scene = (out.path / "scene.json").string();
+  std::ofstream(scene) << R"({"view": "gurten", "pitch": 5, "fov": 70, "view_steps": 48, "size": "16x8"})";
+  const auto r = test::run("render --scene " + scene + " --pitch=30 --fov=40 --exposure=2 --view-steps=2 --light-steps 1 " +
+                           "--quiet --out " + (out.path / "a.png").string());
+  REQUIRE(r.exit_code == 0);
+  const json::Value sidecar = json::parse(test::read_file(out.path / "a.json"));
+  CHECK(sidecar.at("camera").at("pitch_deg").as_number() == 30);
+  CHECK(sidecar.at("camera").at("fov_deg").as_number() == 40);
+  CHECK(sidecar.at("exposure").as_number() == 2);
+  CHECK(sidecar.at("steps").at("view").as_number() == 2);
+}

@@ -2,7 +2,9 @@
 #include <catch2/catch.hpp>
 
 #include <cstdio>
+#include <chrono>
 #include <string>
+#include <thread>
 
 #include "cli_support.hpp"
 #include "core/progress.hpp"
@@ -28,6 +30,7 @@ Progress::Settings immediate(std::FILE* stream, bool terminal) {
   s.quiet_below_s = 0;
   s.line_interval_s = 0;
   s.redraw_interval_s = 0;
+  s.heartbeat = false;  // only the updates below print, so the output is exactly known
   s.stream = stream;
   return s;
 }
@@ -65,6 +68,27 @@ TEST_CASE("progress goes to plain lines off a terminal and to one redrawn line o
   CHECK_THAT(drawn, Catch::StartsWith("\rgenerate: [############") && Catch::Contains("100%") && Catch::EndsWith("\n"));
   CHECK(drawn.find("\rgenerate: [########################] 100%") != std::string::npos);
   std::fclose(terminal);
+}
+
+TEST_CASE("the heartbeat reports a step that runs long without updates of its own", "[progress]") {
+  std::FILE* stream = std::tmpfile();
+  {
+    Progress::Settings s;
+    s.terminal = false;
+    s.quiet_below_s = 0.05;
+    s.line_interval_s = 0.2;
+    s.stream = stream;
+    Progress p("render", 2, s);
+    p.update(1, "clouds");
+    // One update, then silence for 1.3 s: the heartbeat repeats the line (every 0.5 s at most).
+    std::this_thread::sleep_for(std::chrono::milliseconds(1300));
+  }
+  const std::string lines = contents(stream);
+  std::size_t repeats = 0;
+  for (std::size_t at = lines.find("50%"); at != std::string::npos; at = lines.find("50%", at + 1)) ++repeats;
+  CHECK(repeats >= 2);
+  CHECK_THAT(lines, Catch::Contains("clouds") && Catch::Contains("100%"));
+  std::fclose(stream);
 }
 
 TEST_CASE("quiet progress and work shorter than the threshold print nothing", "[progress]") {

@@ -15,9 +15,27 @@ Progress::Settings Progress::for_stderr(bool quiet) {
 }
 
 Progress::Progress(std::string label, double total, Settings settings)
-    : label_(std::move(label)), total_(total > 0 ? total : 1.0), settings_(settings), start_(Clock::now()) {}
+    : label_(std::move(label)), total_(total > 0 ? total : 1.0), settings_(settings), start_(Clock::now()) {
+  if (settings_.enabled && settings_.heartbeat) heartbeat_ = std::thread([this] { heartbeat(); });
+}
 
 Progress::~Progress() { finish(); }
+
+void Progress::heartbeat() {
+  std::unique_lock<std::mutex> lock(mutex_);
+  while (!finished_) {
+    const double t = elapsed();
+    // A step that runs long repeats its line no faster than every half second.
+    const double interval =
+        std::max(0.5, settings_.terminal ? settings_.redraw_interval_s : settings_.line_interval_s);
+    const double next = std::max(settings_.quiet_below_s, drawn_ ? last_shown_ + interval : 0.0);
+    if (t >= next) {
+      show(t);
+      continue;
+    }
+    wake_.wait_for(lock, std::chrono::duration<double>(next - t));
+  }
+}
 
 double Progress::elapsed() const { return std::chrono::duration<double>(Clock::now() - start_).count(); }
 
@@ -43,12 +61,20 @@ std::string Progress::format(const std::string& label, const std::string& stage,
 }
 
 void Progress::update(double done, const std::string& stage) {
-  if (!settings_.enabled || finished_) return;
+  if (!settings_.enabled) return;
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (finished_) return;
+  done_ = done;
+  stage_ = stage;
   const double t = elapsed();
   if (t < settings_.quiet_below_s) return;
   const double interval = settings_.terminal ? settings_.redraw_interval_s : settings_.line_interval_s;
   if (drawn_ && t - last_shown_ < interval) return;
-  const std::string text = format(label_, stage, done / total_, t, settings_.terminal);
+  show(t);
+}
+
+void Progress::show(double t) {
+  const std::string text = format(label_, stage_, done_ / total_, t, settings_.terminal);
   if (settings_.terminal)
     std::fprintf(settings_.stream, "\r%-79s", text.c_str());  // pads over a longer previous line
   else
@@ -59,8 +85,13 @@ void Progress::update(double done, const std::string& stage) {
 }
 
 void Progress::finish() {
-  if (finished_) return;
-  finished_ = true;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (finished_) return;
+    finished_ = true;
+  }
+  wake_.notify_all();
+  if (heartbeat_.joinable()) heartbeat_.join();
   if (!settings_.enabled || !drawn_) return;
   const std::string text = format(label_, "done", 1.0, elapsed(), settings_.terminal);
   if (settings_.terminal)

@@ -1,10 +1,15 @@
 #pragma once
 // Progress of long work on stderr: a bar with the estimated time left when stderr is a
 // terminal, otherwise a plain line at most every few seconds (logs stay readable). Work that
-// ends within `quiet_below_s` prints nothing, and `--quiet` silences it altogether.
+// ends within `quiet_below_s` prints nothing, and `--quiet` silences it altogether. A
+// background heartbeat repeats the report while one step runs long (a single GPU dispatch
+// gives no updates of its own), so the output never stalls.
 #include <chrono>
+#include <condition_variable>
 #include <cstdio>
+#include <mutex>
 #include <string>
+#include <thread>
 
 namespace nephele::core {
 
@@ -16,6 +21,7 @@ class Progress {
     double quiet_below_s = 1.0;   // nothing is shown before this much time has passed
     double line_interval_s = 5.0; // between plain lines
     double redraw_interval_s = 0.1;
+    bool heartbeat = true;        // repeat the report from a background thread while a step runs
     std::FILE* stream = stderr;
   };
   // Settings for stderr: enabled unless quiet, terminal when stderr is a TTY.
@@ -37,13 +43,20 @@ class Progress {
  private:
   using Clock = std::chrono::steady_clock;
   double elapsed() const;
+  void show(double t);  // with mutex_ held
+  void heartbeat();
   std::string label_;
   double total_;
   Settings settings_;
   Clock::time_point start_;
+  double done_ = 0;
+  std::string stage_;
   double last_shown_ = -1e9;
   bool drawn_ = false;
   bool finished_ = false;
+  std::mutex mutex_;
+  std::condition_variable wake_;
+  std::thread heartbeat_;
 };
 
 }  // namespace nephele::core

@@ -7,6 +7,7 @@
 
 #include "apps/cli/commands.hpp"
 #include "apps/cli/options.hpp"
+#include "core/progress.hpp"
 #include "params/table.hpp"
 #include "gpu/egl_context.hpp"
 #include "regional/scene.hpp"
@@ -35,7 +36,7 @@ int run_render(const std::vector<std::string>& arguments) {
   regional::Scene scene;
   std::string view, at, size, time, scene_file, out;
   double heading = 0, pitch = scene.pitch_deg, fov = scene.fov_deg, exposure = scene.exposure;
-  bool panorama = false, verbose = false;
+  bool panorama = false, verbose = false, quiet = false;
   std::vector<std::string> weather;
   Options options("render",
                   "Renders the cloud layers, sky and ground from a viewpoint near the ground. Without\n"
@@ -60,6 +61,7 @@ int run_render(const std::vector<std::string>& arguments) {
   options.bind(s::seed, &seed);
   options.bind(s::scene_path, &scene_file);
   options.bind(s::out, &out);
+  options.bind(params::run::quiet, &quiet);
   options.bind(params::run::verbose, &verbose);
   if (!options.parse(arguments)) {
     std::cout << options.help();
@@ -121,15 +123,15 @@ int run_render(const std::vector<std::string>& arguments) {
 
   gpu::EglContext context;
   if (verbose) std::cerr << "renderer: " << context.info().renderer << "\n";
-  render::SceneRender result;
-  try {
-    result = render::render_scene(scene);
-  } catch (const regional::WeatherError& e) {
-    throw UsageError(e.what());
-  } catch (const regional::SceneError& e) {
-    throw UsageError(e.what());
-  }
+  // Weather (with the global cover when no files are given), the march, the files.
+  core::Progress progress("render", 3, core::Progress::for_stderr(quiet));
+  progress.update(0, "weather");
+  const render::PreparedScene prepared = render::prepare_scene(scene);
+  progress.update(1, "clouds");
+  const render::SceneRender result = render::render_prepared(prepared, scene);
+  progress.update(2, "writing files");
   io::write_scene_outputs(result, scene, directory, outputs, scope);
+  progress.finish();
   if (result.render.loop_limited_pixels > 0 && context.info().renderer.find("llvmpipe") != std::string::npos)
     std::cerr << "warning: " << result.render.loop_limited_pixels
               << " pixels need 65535 or more shader loop iterations, where llvmpipe stops every loop; they are "
