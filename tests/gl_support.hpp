@@ -27,17 +27,19 @@ std::string probe_source(const std::string& in_type, const std::string& out_type
                          const std::string& includes, const std::string& helpers,
                          const std::string& expression);
 
+// `data`, when not empty, is bound read-only at binding 2 (a probe's cube map, say).
 void run_probe(const std::string& source, const void* inputs, size_t input_bytes, void* outputs,
-               size_t output_bytes, size_t count);
+               size_t output_bytes, size_t count, const std::vector<glm::vec4>& data = {});
 
 template <class Out, class In>
 std::vector<Out> probe(const std::string& includes, const std::string& expression,
-                       const std::vector<In>& inputs, const std::string& helpers = "") {
+                       const std::vector<In>& inputs, const std::string& helpers = "",
+                       const std::vector<glm::vec4>& data = {}) {
   test_context();
   std::vector<Out> outputs(inputs.size());
   run_probe(probe_source(GlslTypeName<In>::name, GlslTypeName<Out>::name, includes, helpers, expression),
             inputs.data(), inputs.size() * sizeof(In), outputs.data(), outputs.size() * sizeof(Out),
-            inputs.size());
+            inputs.size(), data);
   return outputs;
 }
 
