@@ -34,6 +34,32 @@ std::string literal(const CurlParams& c) {
          literal(c.prevailing) + ", " + literal(c.mix_frequency) + ", " + literal(c.strength) + ")";
 }
 
+// One float rounding, relative: 2^-24.
+constexpr float kUlp = 1.0f / 16777216.0f;
+// A texel direction: the face coordinates' division (GLSL: 2.5 ulp), normalize's inversesqrt
+// (2 ulp) and multiply, and up to 2 contracted multiply-adds (1 ulp each): 8 ulp per component
+// of a unit vector, sqrt(3) x 8 x 2^-24 = 8.3e-7 in length; rounded up to 1e-6.
+constexpr float kDirection = 1.0e-6f;
+static_assert(kDirection >= 1.7321f * 8 * kUlp);
+// Worley F1 < sqrt(3) < 2: the squared distance's 3 products and 2 sums may be contracted into
+// multiply-adds (1 ulp each of d^2 < 4, where the ulp is 2^-22), and sqrt halves the relative
+// error: about 5 x 2^-22 / 2 = 6e-7; rounded up to 1e-6 (8 ulp of values in [1, 2)).
+constexpr float kF1 = 1.0e-6f;
+static_assert(kF1 >= 5 * (4 * kUlp) / 2);
+// F1's gradient is delta / F1 with delta formed without products (no contraction, the same
+// floats on both sides): an error dF1 turns it by dF1 / F1, so kF1 / F1 (floored at F1 = 1e-3).
+// Not derivable in full: GLSL's division may add 2.5 ulp (3e-7 on the unit vector), which this
+// bound covers only for F1 below about 0.7; llvmpipe's division is measured to be exact here.
+constexpr float kF1GradientTimesF1 = kF1;
+// An fBm of 5 octaves of F1 (each kF1) is their weighted mean (weights summing to 1) and a
+// normalising division: kF1 + 2.5 ulp; 1e-5 leaves a factor of 9 (not tighter: kept as set).
+constexpr float kFbmValue = 1.0e-5f;
+// The fBm gradient: octave k's unit gradient turns by kF1 / F1_k (above) and is scaled by f_k;
+// per unit of the highest frequency 1e-4 covers F1_k >= 0.01 cells everywhere (kF1 / 0.01).
+// Not derivable for points nearer a feature point than 0.01 cells (probability about
+// 4/3 pi 0.01^3 = 4e-6 per octave and point, none among the 256 random points here).
+constexpr float kFbmGradientPerFrequency = 1.0e-4f;
+
 std::vector<vec4> random_points(int n, float extent, unsigned seed) {
   std::mt19937 rng(seed);
   std::uniform_real_distribution<float> u(-extent, extent);
@@ -72,7 +98,7 @@ TEST_CASE("cube face directions on the GPU agree with the CPU", "[probe][cube]")
                                inputs);
   for (size_t k = 0; k < inputs.size(); ++k) {
     const vec3 cpu = texel_direction(int(inputs[k].x), int(inputs[k].y), int(inputs[k].z), size);
-    REQUIRE(length(vec3(gpu[k]) - cpu) < 1e-6f);  // a few ulp of normalize
+    REQUIRE(length(vec3(gpu[k]) - cpu) < kDirection);
     REQUIRE(gpu[k].w == inputs[k].x);
   }
 }
@@ -85,9 +111,9 @@ TEST_CASE("Worley F1 and its gradient on the GPU agree with the CPU", "[probe][w
                                "worley_f1(input_value.xyz, ivec3(0), " + key_literal + ")", inputs);
   for (size_t k = 0; k < inputs.size(); ++k) {
     const vec4 cpu = worley_f1(vec3(inputs[k]), ivec3(0), key);
-    // Same float operations; the driver may contract a*b+c into fma (1 ulp of values < 2).
-    REQUIRE(gpu[k].w == Approx(cpu.w).margin(1e-6));
-    REQUIRE(length(vec3(gpu[k]) - vec3(cpu)) < 1e-6f / std::max(cpu.w, 1e-3f));
+    // Same float operations; the driver may contract a*b+c into fma.
+    REQUIRE(gpu[k].w == Approx(cpu.w).margin(kF1));
+    REQUIRE(length(vec3(gpu[k]) - vec3(cpu)) < kF1GradientTimesF1 / std::max(cpu.w, 1e-3f));
   }
 }
 
@@ -98,9 +124,9 @@ TEST_CASE("inverted Worley fBm on the GPU agrees with the CPU", "[probe][worley]
                                "inverted_worley_fbm(input_value.xyz, " + literal(params) + ")", inputs);
   for (size_t k = 0; k < inputs.size(); ++k) {
     const vec4 cpu = inverted_worley_fbm(vec3(inputs[k]), params);
-    REQUIRE(gpu[k].w == Approx(cpu.w).margin(1e-5));
-    // Gradients scale with the highest frequency (48 here).
-    REQUIRE(length(vec3(gpu[k]) - vec3(cpu)) < 1e-4f * 48.0f);
+    REQUIRE(gpu[k].w == Approx(cpu.w).margin(kFbmValue));
+    // Gradients scale with the highest frequency: 3 x 2^4 = 48 here.
+    REQUIRE(length(vec3(gpu[k]) - vec3(cpu)) < kFbmGradientPerFrequency * 48.0f);
   }
 }
 

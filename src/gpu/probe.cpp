@@ -22,7 +22,7 @@ std::string probe_source(const std::string& in_type, const std::string& out_type
 }
 
 void run_probe(const std::string& source, const void* inputs, size_t input_bytes, void* outputs,
-               size_t output_bytes, size_t count) {
+               size_t output_bytes, size_t count, const std::vector<glm::vec4>& data) {
   auto program = ComputeProgram::from_text("tests/probe.comp", source);
   GLuint buffers[2];
   glCreateBuffers(2, buffers);
@@ -30,11 +30,18 @@ void run_probe(const std::string& source, const void* inputs, size_t input_bytes
   glNamedBufferStorage(buffers[1], static_cast<GLsizeiptr>(output_bytes), nullptr, GL_MAP_READ_BIT);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, buffers[0]);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, buffers[1]);
+  GLuint data_buffer = 0;
+  if (!data.empty()) {
+    glCreateBuffers(1, &data_buffer);
+    glNamedBufferStorage(data_buffer, static_cast<GLsizeiptr>(data.size() * sizeof(glm::vec4)), data.data(), 0);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, data_buffer);
+  }
   program.set("u_count", static_cast<unsigned>(count));
   program.dispatch_covering(static_cast<int>(count), 1, 1);
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
   glGetNamedBufferSubData(buffers[1], 0, static_cast<GLsizeiptr>(output_bytes), outputs);
   glDeleteBuffers(2, buffers);
+  if (data_buffer) glDeleteBuffers(1, &data_buffer);
 }
 
 }  // namespace nephele::gpu

@@ -24,15 +24,17 @@ std::string probe_source(const std::string& in_type, const std::string& out_type
                          const std::string& helpers, const std::string& expression);
 
 // Compiles `source` and runs it over `count` inputs; needs a current OpenGL 4.5 context.
+// `data`, when not empty, is bound read-only at binding 2 (a probe's cube map, say).
 void run_probe(const std::string& source, const void* inputs, std::size_t input_bytes, void* outputs,
-               std::size_t output_bytes, std::size_t count);
+               std::size_t output_bytes, std::size_t count, const std::vector<glm::vec4>& data = {});
 
 template <class Out, class In>
 std::vector<Out> probe(const std::string& includes, const std::string& expression, const std::vector<In>& inputs,
-                       const std::string& helpers = "") {
+                       const std::string& helpers = "", const std::vector<glm::vec4>& data = {}) {
   std::vector<Out> outputs(inputs.size());
   run_probe(probe_source(GlslTypeName<In>::name, GlslTypeName<Out>::name, includes, helpers, expression),
-            inputs.data(), inputs.size() * sizeof(In), outputs.data(), outputs.size() * sizeof(Out), inputs.size());
+            inputs.data(), inputs.size() * sizeof(In), outputs.data(), outputs.size() * sizeof(Out), inputs.size(),
+            data);
   return outputs;
 }
 

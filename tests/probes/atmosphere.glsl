@@ -1,0 +1,27 @@
+// Probe of lib/atmosphere.glsl (shared GLSL/C++ subset; tests/test_library_probes.cpp).
+// Lengths in metres; x[0] = (function, earth radius, a, b), x[1..3] points and directions.
+#ifndef __cplusplus
+#include "../lib/atmosphere.glsl"
+#endif
+vec4 probe_atmosphere(mat4 x) {
+  int f = int(x[0].x);
+  float earth_radius = x[0].y;
+  if (f == 0) return vec4(rayleigh_scattering() * 1.0e5f, rayleigh_phase(x[0].z));
+  if (f == 1) return vec4(solar_irradiance(), henyey_greenstein(x[0].z, x[0].w));
+  if (f == 2) return vec4(air_extinction(x[0].z) * 1.0e5f, 0.0f);
+  if (f == 3) return vec4(transmittance_to_space(vec3(x[1]), vec3(x[2]), earth_radius), 0.0f);
+  // sky_single_scattering from x[1] along x[2] over x[1].w metres (split at x[2].w) towards the
+  // sun x[3] with int(x[3].w) steps; x[0].z picks which of its four results to return
+  // (radiances scaled by 1e3 to order one).
+  vec3 inscatter_total;
+  vec3 inscatter_split;
+  vec3 transmittance_total;
+  vec3 transmittance_split;
+  sky_single_scattering(vec3(x[1]), vec3(x[2]), x[1].w, x[2].w, vec3(x[3]), earth_radius, int(x[3].w),
+                        inscatter_total, inscatter_split, transmittance_total, transmittance_split);
+  int part = int(x[0].z);
+  if (part == 0) return vec4(inscatter_total * 1.0e3f, 0.0f);
+  if (part == 1) return vec4(inscatter_split * 1.0e3f, 0.0f);
+  if (part == 2) return vec4(transmittance_total, 0.0f);
+  return vec4(transmittance_split, 0.0f);
+}

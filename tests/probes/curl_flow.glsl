@@ -1,0 +1,26 @@
+// Probe of lib/curl_flow.glsl (shared GLSL/C++ subset; tests/test_library_probes.cpp).
+// x[2] = (frequency, octaves, seed north, seed south), x[3] = (prevailing, mix frequency,
+// strength, period); lacunarity 2 and gain 0.3 (the defaults) are fixed.
+#ifndef __cplusplus
+#include "../lib/curl_flow.glsl"
+#endif
+CurlParams curl_flow_probe_params(mat4 x) {
+  CurlParams c;  // members one by one: C++17 has no parenthesised aggregate initialisation
+  c.potential_north.frequency = x[2].x;
+  c.potential_north.octaves = int(x[2].y);
+  c.potential_north.lacunarity = 2.0f;
+  c.potential_north.gain = 0.3f;
+  c.potential_north.seed = uint(x[2].z);
+  c.potential_north.period = ivec3(int(x[3].w));
+  c.potential_south = c.potential_north;
+  c.potential_south.seed = uint(x[2].w);
+  c.prevailing = x[3].x;
+  c.mix_frequency = x[3].y;
+  c.strength = x[3].z;
+  return c;
+}
+vec4 probe_curl_flow(mat4 x) {
+  CurlParams c = curl_flow_probe_params(x);
+  if (int(x[0].x) == 0) return vec4(curl_velocity(vec3(x[1]), c), 0.0f);
+  return vec4(curl_velocity_shifted(vec3(x[1]), c, vec3(x[0].y, x[0].z, x[0].w)), 0.0f);
+}

@@ -1,0 +1,23 @@
+// Probe of lib/perlin.glsl (shared GLSL/C++ subset; tests/test_library_probes.cpp).
+#ifndef __cplusplus
+#include "../lib/perlin.glsl"
+#endif
+vec4 probe_perlin(mat4 x) {
+  int f = int(x[0].x);
+  vec3 p = vec3(x[1]);
+  ivec3 period = ivec3(vec3(x[2]));
+  uvec3 key = uvec3(vec3(x[3]));
+  if (f == 0) return vec4(float(wrap_axis(int(x[0].y), int(x[0].z))), perlin_fade(x[0].w), 0.0f, 0.0f);
+  if (f == 1) return vec4(perlin_gradient(ivec3(p), key), 0.0f);
+  if (f == 2) return perlin_yz_weights(x[0].y, x[0].z);
+  if (f == 3) {
+    // The faces at lattice x and x + 1 of the cell (y, z) and the row's value between them at p.x.
+    ivec2 ys = ivec2(int(x[0].z), int(x[0].z) + 1);
+    ivec2 zs = ivec2(int(x[0].w), int(x[0].w) + 1);
+    vec4 w = perlin_yz_weights(p.y, p.z);
+    vec2 face0 = perlin_face(int(x[0].y), ys, zs, p.y, p.z, w, key);
+    vec2 face1 = perlin_face(int(x[0].y) + 1, ys, zs, p.y, p.z, w, key);
+    return vec4(face0, face1.x, perlin_along_row(face0, face1, p.x));
+  }
+  return vec4(perlin_noise(p, period, key), 0.0f, 0.0f, 0.0f);
+}
