@@ -3,6 +3,7 @@
 // subset, so the same text evaluates the functions on both sides: one shader per library file.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <map>
@@ -12,11 +13,17 @@
 #include <vector>
 
 #include "gl_support.hpp"
+#include "march_tolerance.hpp"
+#include "render/cloud_renderer.hpp"
 #include "shader_math/shader_math.hpp"
+
+// The probes that call functions with texture hooks need the hook macros again.
+#include "shader_math/hook_macros.hpp"
 
 namespace nephele::glsl {
 #include "probes/atmosphere.glsl"
 #include "probes/cloud_density.glsl"
+#include "probes/cloud_march.glsl"
 #include "probes/cover_density.glsl"
 #include "probes/cube_faces.glsl"
 #include "probes/cube_sampling.glsl"
@@ -193,7 +200,7 @@ TEST_CASE("every function of each GLSL library file appears in that file's probe
       CHECK(probe.find(f + "(") != std::string::npos);
     }
   }
-  CHECK(files >= 16);
+  CHECK(files >= 17);
 }
 
 TEST_CASE("portable_math.glsl on the GPU agrees with the CPU", "[probe]") {
@@ -502,4 +509,69 @@ TEST_CASE("noise_rows.glsl on the GPU agrees with the CPU and with the point fun
       REQUIRE(std::abs(walk[i] - point[i]) <= kWalkVersusPoint);
     }
   }
+}
+
+TEST_CASE("cloud_march.glsl on the GPU agrees with the CPU", "[probe][march]") {
+  test::test_context();
+  // The textures at the units the probe reads: a 16^3 noise volume and a 4 x 4 weather field of
+  // five channels with varying coverage in [0.2, 0.9].
+  const render::NoiseVolume noise(16, 3);
+  const int size = 4, channels = 5;
+  std::vector<float> weather;
+  for (int c = 0; c < channels; ++c)
+    for (int k = 0; k < size * size; ++k) weather.push_back(0.2f + 0.7f * float((3 * k + c) % 7) / 6.0f);
+  GLuint weather_texture = 0;
+  glCreateTextures(GL_TEXTURE_2D_ARRAY, 1, &weather_texture);
+  glTextureStorage3D(weather_texture, 1, GL_R32F, size, size, channels);
+  glTextureSubImage3D(weather_texture, 0, 0, 0, 0, size, size, channels, GL_RED, GL_FLOAT, weather.data());
+  glTextureParameteri(weather_texture, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTextureParameteri(weather_texture, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTextureParameteri(weather_texture, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTextureParameteri(weather_texture, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  glBindTextureUnit(1, noise.texture());
+  glBindTextureUnit(2, weather_texture);
+  MarchSources sources;
+  sources.noise = noise.host_copy();
+  sources.weather = {size, channels, weather.data()};
+  auto cpu = [&](const mat4& x) { return probe_cloud_march(x, sources); };
+
+  // Altitudes are rounded at the scale of the Earth's radius (march_tolerance.hpp): the height
+  // fraction moves by kPosition over the 1500 m layers, the noise values by kPosition over the
+  // 4000 m shortest period in texels times the largest texel step, the shape by 1 / 0.6 of that;
+  // whole marches by march_tolerance, relative.
+  const float height = float(test::kPosition / 1500.0);
+  const float detail = float(test::kPosition / 4000.0 * 16 * test::max_texel_step(sources.noise));
+  const float shape = detail / 0.6f;
+  const float march = float(test::march_tolerance(1500.0, 4000.0, sources.noise));
+  // A shell shifted by kPosition moves the crossing of a ray at elevation e by kPosition / sin e;
+  // the rays here rise at least 0.2 rad (sin > 0.198).
+  const float crossing = float(test::kPosition / 0.198);
+
+  Random r(18);
+  std::vector<Case> cases;
+  auto relative = [&](const mat4& x, float tolerance) {
+    const vec4 v = abs(cpu(x));
+    return Case{x, tolerance * std::max({1e-6f, v.x, v.y, v.z, v.w})};
+  };
+  for (int k = 0; k < 12; ++k) {
+    const vec4 pixel(float(k % 16), float((5 * k) % 9), 0, 0);
+    cases.push_back({arguments(0, vec4(0, 0, float(k % 2), 0), vec4(0), vec4(0), pixel), kTranscendental});
+    // Points in the two layers, within 20 km of the camera.
+    const int layer = k % 2;
+    const float altitude = layer == 0 ? r(1600.0f, 2900.0f) : r(3600.0f, 4900.0f);
+    const vec4 p(r(-20000.0f, 20000.0f), r(-20000.0f, 20000.0f), altitude - 860.0f, 0.0f);
+    cases.push_back({arguments(1, vec4(float(k % 5), 0, 0, 0), p), kArithmetic});
+    cases.push_back({arguments(2, vec4(float(layer), r(10.0f, 3000.0f), 0, 0), p), std::max(height, shape)});
+    cases.push_back({arguments(3, vec4(float(layer), r(10.0f, 3000.0f), 0, 0), p), 0.01f * march});
+    cases.push_back(relative(arguments(4, vec4(float(layer), 0, 0, 0), p), march));
+    // View rays rising 0.2 to 1.2 rad.
+    const float elevation = r(0.2f, 1.2f), azimuth = r(-3.0f, 3.0f);
+    const vec4 d(std::cos(elevation) * std::sin(azimuth), std::cos(elevation) * std::cos(azimuth), std::sin(elevation), 0);
+    cases.push_back({arguments(5, vec4(0, r(5000.0f, 150000.0f), 0, 0), vec4(0), d), crossing});
+    cases.push_back(relative(arguments(6, vec4(0, 150000.0f, r(0.0f, 1.0f), 0), vec4(0), d), march));
+    cases.push_back(relative(arguments(7, vec4(0), vec4(0), vec4(0), pixel), march));
+    cases.push_back({arguments(8, vec4(float(65535 + k - 6), 0, 0, 0)), kExact});
+  }
+  compare("cloud_march", cpu, cases);
+  glDeleteTextures(1, &weather_texture);
 }

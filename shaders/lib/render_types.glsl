@@ -2,6 +2,8 @@
 #ifndef NEPHELE_RENDER_TYPES_GLSL
 #define NEPHELE_RENDER_TYPES_GLSL
 
+const int MAX_LAYERS = 8;  // layers one render marches at most
+
 // One cloud layer as the ray marcher sees it. Lengths in metres, altitudes above the Earth
 // sphere that osculates the WGS84 ellipsoid at the viewpoint.
 struct LayerParams {
@@ -15,6 +17,32 @@ struct LayerParams {
   float min_distance;    // the layer starts this far from the camera (cumulonimbus)
   vec2 wind;             // unit wind direction (towards), east-north
   vec2 noise_offset;     // how far the wind moved the noise (tau), along and across the wind, m
+};
+
+// Everything the ray marcher (cloud_march.glsl) reads besides its two textures: the uniform
+// u_march of shaders/render/clouds.comp, filled by render::march_params on the host. Local
+// frame: east, north, up with the camera at the origin.
+struct MarchParams {
+  LayerParams layers[MAX_LAYERS];
+  int layer_count;
+  float earth_radius;      // the sphere osculating the WGS84 ellipsoid at the viewpoint
+  float camera_altitude;
+  vec3 forward;            // the perspective view's axes
+  vec3 right;
+  vec3 up;
+  float tan_half_fov;
+  int panorama;            // 1: 360 x 180 equirectangular view sphere instead
+  float heading;           // panorama's centre, radians clockwise from north
+  vec3 sun;                // unit direction towards the sun
+  vec3 ambient;            // sky irradiance on a horizontal surface
+  vec3 ground_radiance;    // radiance of the sunlit and skylit ground below the clouds
+  int view_steps;
+  int light_steps;
+  int sky_steps;
+  float weather_extent;    // half-size of the weather field square, metres
+  float max_distance;
+  float pixel_angle;       // angle subtended by one pixel (radians), for noise level of detail
+  float noise_texels;      // texels per side of the noise volume
 };
 
 #endif

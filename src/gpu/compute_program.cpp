@@ -69,6 +69,9 @@ void ComputeProgram::set(const std::string& name, int value) const {
 void ComputeProgram::set(const std::string& name, unsigned value) const {
   glProgramUniform1ui(program_, location(name), value);
 }
+void ComputeProgram::set(const std::string& name, glm::vec2 value) const {
+  glProgramUniform2f(program_, location(name), value.x, value.y);
+}
 void ComputeProgram::set(const std::string& name, glm::vec3 value) const {
   glProgramUniform3f(program_, location(name), value.x, value.y, value.z);
 }

@@ -14,11 +14,11 @@
 #include "gpu/textures.hpp"
 #include "render/sun_position.hpp"
 #include "shader_math/shader_math.hpp"
+#include "shader_math/uniforms.hpp"
 
 namespace nephele::render {
 namespace {
 
-constexpr int max_layers = 8;
 // The wind's offset is wrapped at a length that every noise period divides, so the noise stays
 // continuous in time while the offset stays small enough for float precision.
 constexpr double offset_wrap_m = 120000.0;
@@ -103,21 +103,92 @@ NoiseVolume::~NoiseVolume() {
   if (texture_ != 0) glDeleteTextures(1, &texture_);
 }
 
+namespace {
+
+// Layers with cloud somewhere in the field, at most MAX_LAYERS of them: those the marcher sees.
+std::vector<const regional::CloudLayer*> marched_layers(const std::vector<regional::CloudLayer>& layers,
+                                                        const regional::WeatherField& field) {
+  std::vector<const regional::CloudLayer*> active;
+  for (const auto& layer : layers)
+    if (field.max_of(int(layer.channel)) > 0.0f && static_cast<int>(active.size()) < glsl::MAX_LAYERS)
+      active.push_back(&layer);
+  return active;
+}
+
+}  // namespace
+
+glsl::VolumeSource NoiseVolume::host_copy() const {
+  glsl::VolumeSource source;
+  source.size = size_;
+  for (int level = 0, n = size_; n >= 1; ++level, n /= 2) {
+    std::vector<glm::vec2> texels(static_cast<size_t>(n) * n * n);
+    glGetTextureImage(texture_, level, GL_RG, GL_FLOAT, static_cast<GLsizei>(texels.size() * sizeof(glm::vec2)),
+                      texels.data());
+    source.levels.push_back(std::move(texels));
+  }
+  return source;
+}
+
+glsl::MarchParams march_params(const Camera& camera, const std::vector<regional::CloudLayer>& layers,
+                               const regional::WeatherField& field, double unix_seconds,
+                               const RenderSettings& settings, glm::dvec2 wind_towards, double wind_speed) {
+  glsl::MarchParams m{};
+  const auto active = marched_layers(layers, field);
+  const glm::dvec2 wind = glm::length(wind_towards) > 0 ? glm::normalize(wind_towards) : glm::dvec2(0, 1);
+  const double travelled = std::fmod(wind_speed * unix_seconds, offset_wrap_m);
+  for (size_t i = 0; i < active.size(); ++i) {
+    const auto& l = *active[i];
+    m.layers[i] = {static_cast<int>(l.type), static_cast<int>(l.channel), l.base_m, l.top_m, l.extinction, l.morph,
+                   l.darkness, l.min_distance_m, glm::vec2(wind), glm::vec2(static_cast<float>(travelled), 0.0f)};
+  }
+  m.layer_count = static_cast<int>(active.size());
+
+  const double earth_radius = osculating_earth_radius(camera.latitude_deg);
+  const glm::dvec3 sun = sun_direction_enu(unix_seconds, camera.latitude_deg, camera.longitude_deg);
+  const glm::vec3 ambient = sky_irradiance(glm::vec3(sun), earth_radius, 2000.0);
+  m.earth_radius = static_cast<float>(earth_radius);
+  m.camera_altitude = static_cast<float>(camera.height_m);
+  const double heading = camera.heading_deg * M_PI / 180, pitch = camera.pitch_deg * M_PI / 180;
+  const glm::dvec3 forward(std::sin(heading) * std::cos(pitch), std::cos(heading) * std::cos(pitch), std::sin(pitch));
+  const glm::dvec3 right(std::cos(heading), -std::sin(heading), 0.0);
+  m.forward = glm::vec3(forward);
+  m.right = glm::vec3(right);
+  m.up = glm::vec3(glm::cross(right, forward));
+  m.tan_half_fov = static_cast<float>(std::tan(camera.fov_deg * M_PI / 360));
+  m.panorama = camera.panorama ? 1 : 0;
+  m.heading = static_cast<float>(heading);
+  m.sun = glm::vec3(sun);
+  m.ambient = ambient;
+  {
+    // Lambertian ground of albedo 0.15 under the camera, lit by the sun and the sky.
+    using namespace glsl;
+    const vec3 ground(0.0f, 0.0f, static_cast<float>(earth_radius + camera.height_m));
+    const vec3 sunlight = solar_irradiance() * transmittance_to_space(ground, vec3(sun), static_cast<float>(earth_radius)) *
+                          std::max(static_cast<float>(sun.z), 0.0f);
+    m.ground_radiance = (0.15f / PI_F) * (sunlight + ambient);
+  }
+  m.view_steps = settings.view_steps;
+  m.light_steps = settings.light_steps;
+  m.sky_steps = settings.sky_steps;
+  m.weather_extent = static_cast<float>(field.extent_m);
+  m.max_distance = static_cast<float>(settings.max_distance_m);
+  const double pixel_angle = camera.panorama ? 2 * M_PI / camera.width
+                                             : 2 * std::tan(camera.fov_deg * M_PI / 360) / camera.width;
+  m.pixel_angle = static_cast<float>(pixel_angle);
+  m.noise_texels = static_cast<float>(settings.noise_size);
+  return m;
+}
+
 RenderResult render_clouds(const Camera& camera, const std::vector<regional::CloudLayer>& layers,
                            const regional::WeatherField& field, double unix_seconds, const RenderSettings& settings,
                            glm::dvec2 wind_towards, double wind_speed, const NoiseVolume* noise) {
   RenderResult result;
   auto timed = [&](const std::string& name, auto&& work) { result.timings_ms.emplace_back(name, gpu::time_pass(work)); };
 
-  // Only layers with cloud somewhere in the field are marched.
-  std::vector<const regional::CloudLayer*> active;
-  for (const auto& layer : layers) {
-    if (field.max_of(int(layer.channel)) <= 0.0f) {
+  for (const auto& layer : layers)
+    if (field.max_of(int(layer.channel)) <= 0.0f)
       result.passes.push_back(std::string("skip layer ") + regional::cloud_type_name(layer.type) + " (no cloud)");
-      continue;
-    }
-    if (static_cast<int>(active.size()) < max_layers) active.push_back(&layer);
-  }
+  const auto active = marched_layers(layers, field);
 
   // Noise volume, only when a layer will read it.
   std::unique_ptr<NoiseVolume> own_noise;
@@ -140,65 +211,13 @@ RenderResult render_clouds(const Camera& camera, const std::vector<regional::Clo
   glTextureParameteri(weather, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
   glTextureParameteri(weather, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
 
-  const double earth_radius = osculating_earth_radius(camera.latitude_deg);
-  const glm::dvec3 sun = sun_direction_enu(unix_seconds, camera.latitude_deg, camera.longitude_deg, &result.sun_elevation_deg);
-  result.sun_direction = sun;
-  const glm::vec3 ambient = sky_irradiance(glm::vec3(sun), earth_radius, 2000.0);
+  result.sun_direction = sun_direction_enu(unix_seconds, camera.latitude_deg, camera.longitude_deg, &result.sun_elevation_deg);
 
   gpu::Texture image = gpu::Texture::plane(camera.width, camera.height, GL_RGBA32F);
   timed("clouds", [&] {
     gpu::ComputeProgram program("render/clouds.comp");
-    const glm::dvec2 wind = glm::length(wind_towards) > 0 ? glm::normalize(wind_towards) : glm::dvec2(0, 1);
-    const double travelled = std::fmod(wind_speed * unix_seconds, offset_wrap_m);
-    for (size_t i = 0; i < active.size(); ++i) {
-      const auto& l = *active[i];
-      const std::string name = "u_layers[" + std::to_string(i) + "].";
-      program.set(name + "type", static_cast<int>(l.type));
-      program.set(name + "channel", static_cast<int>(l.channel));
-      program.set(name + "base", l.base_m);
-      program.set(name + "top", l.top_m);
-      program.set(name + "extinction", l.extinction);
-      program.set(name + "morph", l.morph);
-      program.set(name + "darkness", l.darkness);
-      program.set(name + "min_distance", l.min_distance_m);
-      glProgramUniform2f(program.id(), glGetUniformLocation(program.id(), (name + "wind").c_str()),
-                         static_cast<float>(wind.x), static_cast<float>(wind.y));
-      glProgramUniform2f(program.id(), glGetUniformLocation(program.id(), (name + "noise_offset").c_str()),
-                         static_cast<float>(travelled), 0.0f);
-      result.passes.push_back(std::string("march layer ") + regional::cloud_type_name(l.type));
-    }
-    program.set("u_layer_count", static_cast<int>(active.size()));
-    program.set("u_earth_radius", static_cast<float>(earth_radius));
-    program.set("u_camera_altitude", static_cast<float>(camera.height_m));
-    const double heading = camera.heading_deg * M_PI / 180, pitch = camera.pitch_deg * M_PI / 180;
-    const glm::dvec3 forward(std::sin(heading) * std::cos(pitch), std::cos(heading) * std::cos(pitch), std::sin(pitch));
-    const glm::dvec3 right(std::cos(heading), -std::sin(heading), 0.0);
-    const glm::dvec3 up = glm::cross(right, forward);
-    program.set("u_forward", glm::vec3(forward));
-    program.set("u_right", glm::vec3(right));
-    program.set("u_up", glm::vec3(up));
-    program.set("u_tan_half_fov", static_cast<float>(std::tan(camera.fov_deg * M_PI / 360)));
-    program.set("u_panorama", camera.panorama ? 1 : 0);
-    program.set("u_heading", static_cast<float>(heading));
-    program.set("u_sun", glm::vec3(sun));
-    program.set("u_ambient", ambient);
-    {
-      // Lambertian ground of albedo 0.15 under the camera, lit by the sun and the sky.
-      using namespace glsl;
-      const vec3 ground(0.0f, 0.0f, static_cast<float>(earth_radius + camera.height_m));
-      const vec3 sunlight = solar_irradiance() * transmittance_to_space(ground, vec3(sun), static_cast<float>(earth_radius)) *
-                            std::max(static_cast<float>(sun.z), 0.0f);
-      program.set("u_ground_radiance", (0.15f / PI_F) * (sunlight + ambient));
-    }
-    program.set("u_view_steps", settings.view_steps);
-    program.set("u_light_steps", settings.light_steps);
-    program.set("u_sky_steps", settings.sky_steps);
-    program.set("u_weather_extent", static_cast<float>(field.extent_m));
-    program.set("u_max_distance", static_cast<float>(settings.max_distance_m));
-    const double pixel_angle = camera.panorama ? 2 * M_PI / camera.width
-                                               : 2 * std::tan(camera.fov_deg * M_PI / 360) / camera.width;
-    program.set("u_pixel_angle", static_cast<float>(pixel_angle));
-    program.set("u_noise_texels", static_cast<float>(settings.noise_size));
+    glsl::set_uniform(program, "u_march", march_params(camera, layers, field, unix_seconds, settings, wind_towards, wind_speed));
+    for (const auto* l : active) result.passes.push_back(std::string("march layer ") + regional::cloud_type_name(l->type));
     image.bind_image(0, GL_WRITE_ONLY);
     glBindTextureUnit(1, noise != nullptr ? noise->texture() : 0);
     glBindTextureUnit(2, weather);

@@ -9,6 +9,7 @@
 #include "core/image.hpp"
 #include "regional/cloud_layers.hpp"
 #include "regional/weather_field.hpp"
+#include "shader_math/shader_math.hpp"
 
 namespace nephele::render {
 
@@ -60,12 +61,21 @@ class NoiseVolume {
   unsigned texture() const { return texture_; }
   int size() const { return size_; }
   std::uint32_t seed() const { return seed_; }
+  // Every mip level read back, for the marcher's C++ twin (tests).
+  glsl::VolumeSource host_copy() const;
 
  private:
   unsigned texture_ = 0;
   int size_;
   std::uint32_t seed_;
 };
+
+// What the marcher (shaders/lib/cloud_march.glsl) is given for a render: the layers with cloud
+// in the field (at most MAX_LAYERS), camera, sun, sky light and step counts. render_clouds
+// uploads it; the marcher's C++ twin takes it as it is.
+glsl::MarchParams march_params(const Camera& camera, const std::vector<regional::CloudLayer>& layers,
+                               const regional::WeatherField& field, double unix_seconds,
+                               const RenderSettings& settings, glm::dvec2 wind_towards = {0, 1}, double wind_speed = 0);
 
 // Needs a current OpenGL 4.5 context. Layers whose coverage channel is zero everywhere in the
 // field are not marched (their absence is listed in passes). The noise volume is made when a

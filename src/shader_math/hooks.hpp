@@ -1,8 +1,10 @@
 #pragma once
 // What the GLSL library (shaders/lib) expects its includer to define, for C++: the cube map
-// source of cube_sampling.glsl and the velocity source of warp_step.glsl's templates. Shared by
+// source of cube_sampling.glsl, the velocity source of warp_step.glsl's templates and the two
+// textures of cloud_march.glsl. Shared by
 // shader_math.hpp (declarations) and shader_math.cpp (the one compiled copy of the functions).
 #include <cstddef>
+#include <vector>
 
 #include "shader_math/glsl_cpp.hpp"
 
@@ -19,6 +21,32 @@ struct CubeSource {
   }
 };
 
+// The renderer's noise volume in host memory (cloud_march.glsl's NOISE_LOD): RG per texel,
+// every mip level (level k of size >> k texels per side, x fastest, then y, then z), sampled as
+// GLSL's textureLod with GL_LINEAR_MIPMAP_LINEAR filtering and GL_REPEAT wrapping (OpenGL 4.5
+// section 8.14: lerps along x, y, z, then between the levels floor(lod) and floor(lod) + 1).
+struct VolumeSource {
+  int size = 0;
+  std::vector<std::vector<vec2>> levels;
+  vec4 sample_lod(vec3 x, float lod) const;
+};
+
+// A 2D array texture of one channel in host memory (cloud_march.glsl's WEATHER_COVERAGE, the
+// weather field): values[(layer * size + row) * size + column], sampled as GLSL's texture() with
+// GL_LINEAR filtering and GL_CLAMP_TO_EDGE wrapping.
+struct LayeredSource {
+  int size = 0;
+  int layers = 0;
+  const float* values = nullptr;
+  float sample(vec2 uv, int layer) const;
+};
+
+// The two textures of cloud_march.glsl.
+struct MarchSources {
+  VolumeSource noise;
+  LayeredSource weather;
+};
+
 // The velocity sources of the warp's stepping rules: the sampled cube map, the procedural curl,
 // or any callable vec3(vec3) (the analytic flows of the tests). Declared before warp_step.glsl
 // so that its templates find them for callables, whose namespace ADL would not search.
@@ -29,12 +57,4 @@ vec3 warp_velocity(vec3 w, const F& velocity) { return velocity(w); }
 
 }  // namespace nephele::glsl
 
-#define CUBE_SOURCE_PARAM , IN(CubeSource) source
-#define CUBE_SOURCE_ARG , source
-#define CUBE_FETCH(face, i, j) source.fetch(face, i, j)
-#define CUBE_SIZE source.size
-// The warp's stepping rules are templates over the velocity source (shaders/lib/warp_step.glsl).
-#define WARP_TEMPLATE template <class Field>
-#define WARP_FIELD_PARAM , IN(Field) field
-#define WARP_FIELD_ARG , field
-#define WARP_VELOCITY(w) warp_velocity(w, field)
+#include "shader_math/hook_macros.hpp"

@@ -15,6 +15,10 @@ namespace nephele::glsl {
 #undef CUBE_SOURCE_ARG
 #undef CUBE_FETCH
 #undef CUBE_SIZE
+#undef MARCH_SOURCES_PARAM
+#undef MARCH_SOURCES_ARG
+#undef NOISE_LOD
+#undef WEATHER_COVERAGE
 #undef WARP_TEMPLATE
 #undef WARP_FIELD_PARAM
 #undef WARP_FIELD_ARG

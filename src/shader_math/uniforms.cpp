@@ -28,4 +28,40 @@ void set_uniform(const gpu::ComputeProgram& program, const std::string& name, co
   program.set(name + ".strength", params.strength);
 }
 
+void set_uniform(const gpu::ComputeProgram& program, const std::string& name, const MarchParams& params) {
+  for (int i = 0; i < MAX_LAYERS; ++i) {
+    const LayerParams& l = params.layers[i];
+    const std::string layer = name + ".layers[" + std::to_string(i) + "].";
+    program.set(layer + "type", l.type);
+    program.set(layer + "channel", l.channel);
+    program.set(layer + "base", l.base);
+    program.set(layer + "top", l.top);
+    program.set(layer + "extinction", l.extinction);
+    program.set(layer + "morph", l.morph);
+    program.set(layer + "darkness", l.darkness);
+    program.set(layer + "min_distance", l.min_distance);
+    program.set(layer + "wind", l.wind);
+    program.set(layer + "noise_offset", l.noise_offset);
+  }
+  program.set(name + ".layer_count", params.layer_count);
+  program.set(name + ".earth_radius", params.earth_radius);
+  program.set(name + ".camera_altitude", params.camera_altitude);
+  program.set(name + ".forward", params.forward);
+  program.set(name + ".right", params.right);
+  program.set(name + ".up", params.up);
+  program.set(name + ".tan_half_fov", params.tan_half_fov);
+  program.set(name + ".panorama", params.panorama);
+  program.set(name + ".heading", params.heading);
+  program.set(name + ".sun", params.sun);
+  program.set(name + ".ambient", params.ambient);
+  program.set(name + ".ground_radiance", params.ground_radiance);
+  program.set(name + ".view_steps", params.view_steps);
+  program.set(name + ".light_steps", params.light_steps);
+  program.set(name + ".sky_steps", params.sky_steps);
+  program.set(name + ".weather_extent", params.weather_extent);
+  program.set(name + ".max_distance", params.max_distance);
+  program.set(name + ".pixel_angle", params.pixel_angle);
+  program.set(name + ".noise_texels", params.noise_texels);
+}
+
 }  // namespace nephele::glsl

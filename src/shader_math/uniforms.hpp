@@ -1,5 +1,5 @@
 #pragma once
-// The one upload of the library's parameter blocks (FbmParams, CurlParams) to a shader's
+// The one upload of the library's parameter blocks (FbmParams, CurlParams, MarchParams) to a shader's
 // uniform struct of the same layout.
 #include <string>
 
@@ -19,5 +19,7 @@ enum class Members {
 void set_uniform(const gpu::ComputeProgram& program, const std::string& name, const FbmParams& params,
                  Members members = Members::all);
 void set_uniform(const gpu::ComputeProgram& program, const std::string& name, const CurlParams& params);
+// Every member, all MAX_LAYERS layers included (those past layer_count as given).
+void set_uniform(const gpu::ComputeProgram& program, const std::string& name, const MarchParams& params);
 
 }  // namespace nephele::glsl

@@ -1,0 +1,98 @@
+// Probe of lib/cloud_march.glsl (shared GLSL/C++ subset; tests/test_library_probes.cpp). The
+// GLSL side reads the textures bound to units 1 (noise volume) and 2 (weather field).
+#ifndef __cplusplus
+layout(binding = 1) uniform sampler3D noise_volume;
+layout(binding = 2) uniform sampler2DArray weather_field;
+#define MARCH_SOURCES_PARAM
+#define MARCH_SOURCES_ARG
+#define NOISE_LOD(x, lod) textureLod(noise_volume, x, lod)
+#define WEATHER_COVERAGE(uv, channel) texture(weather_field, vec3(uv, float(channel))).x
+#include "../lib/cloud_march.glsl"
+#endif
+
+// A cumulus and an alto layer seen from 860 m, the sun 40 degrees up in the south-west.
+MarchParams probe_march_params() {
+  MarchParams m;
+  m.layers[0].type = CLOUD_CUMULUS;
+  m.layers[0].channel = 2;
+  m.layers[0].base = 1500.0f;
+  m.layers[0].top = 3000.0f;
+  m.layers[0].extinction = 0.01f;
+  m.layers[0].morph = 0.0f;
+  m.layers[0].darkness = 0.0f;
+  m.layers[0].min_distance = 0.0f;
+  m.layers[0].wind = vec2(0.6f, 0.8f);
+  m.layers[0].noise_offset = vec2(120.0f, 0.0f);
+  m.layers[1].type = CLOUD_ALTO;
+  m.layers[1].channel = 1;
+  m.layers[1].base = 3500.0f;
+  m.layers[1].top = 5000.0f;
+  m.layers[1].extinction = 0.002f;
+  m.layers[1].morph = 0.5f;
+  m.layers[1].darkness = 0.2f;
+  m.layers[1].min_distance = 0.0f;
+  m.layers[1].wind = vec2(0.6f, 0.8f);
+  m.layers[1].noise_offset = vec2(120.0f, 0.0f);
+  m.layer_count = 2;
+  m.earth_radius = 6367000.0f;
+  m.camera_altitude = 860.0f;
+  m.forward = vec3(0.0f, 0.9781476f, 0.2079117f);
+  m.right = vec3(1.0f, 0.0f, 0.0f);
+  m.up = vec3(0.0f, -0.2079117f, 0.9781476f);
+  m.tan_half_fov = 0.7f;
+  m.panorama = 0;
+  m.heading = 0.3f;
+  m.sun = vec3(-0.5416752f, -0.5416752f, 0.6427876f);
+  m.ambient = vec3(0.3f, 0.45f, 0.7f);
+  m.ground_radiance = vec3(0.05f, 0.05f, 0.045f);
+  m.view_steps = 6;
+  m.light_steps = 3;
+  m.sky_steps = 6;
+  m.weather_extent = 40000.0f;
+  m.max_distance = 150000.0f;
+  m.pixel_angle = 0.0875f;
+  m.noise_texels = 16.0f;
+  return m;
+}
+
+// x[0] = (function, a, b, c), x[1] = a point, x[2] = a direction, x[3] = further numbers.
+vec4 probe_cloud_march(mat4 x MARCH_SOURCES_PARAM) {
+  int f = int(x[0].x);
+  MarchParams m = probe_march_params();
+  vec3 p = vec3(x[1]);
+  vec3 d = vec3(x[2]);
+  vec3 centre = vec3(0.0f, 0.0f, -(m.earth_radius + m.camera_altitude));
+  int layer = int(x[0].y);
+  float footprint = x[0].z;
+  if (f == 0) {
+    m.panorama = int(x[0].w);
+    return vec4(view_direction(ivec2(int(x[3].x), int(x[3].y)), ivec2(16, 9), m), 0.0f);
+  }
+  if (f == 1) return vec4(coverage_at(p, int(x[0].y), m MARCH_SOURCES_ARG), 0.0f, 0.0f, 0.0f);
+  if (f == 2) {
+    ShapeSample q = shape_at(p, centre, layer, footprint, m MARCH_SOURCES_ARG);
+    return vec4(q.h, q.c, q.shape, q.detail);
+  }
+  if (f == 3) {
+    ShapeSample q = shape_at(p, centre, layer, footprint, m MARCH_SOURCES_ARG);
+    return vec4(extinction_bound(layer, q, m), extinction_bound_at(p, centre, layer, footprint, m MARCH_SOURCES_ARG),
+                density_at(p, centre, layer, footprint, true, m MARCH_SOURCES_ARG),
+                density_at(p, centre, layer, footprint, false, m MARCH_SOURCES_ARG));
+  }
+  if (f == 4) return vec4(optical_depth_to_sun(p, centre, layer, m MARCH_SOURCES_ARG), 0.0f, 0.0f, 0.0f);
+  if (f == 5) {
+    RayIntervals r = layer_intervals(d, centre, x[0].z, m);
+    return vec4(float(r.count), r.count > 0 ? r.bounds[0].x : 0.0f, r.count > 0 ? r.bounds[0].y : 0.0f,
+                r.count > 0 ? float(r.layer[0]) : -1.0f);
+  }
+  if (f == 6) {
+    CloudMarch c = march_clouds(d, centre, x[0].z, x[0].w, m MARCH_SOURCES_ARG);
+    return vec4(c.radiance, c.transmittance);
+  }
+  if (f == 7) {
+    int loops = 0;
+    vec4 pixel = render_pixel(ivec2(int(x[3].x), int(x[3].y)), ivec2(16, 9), m, loops MARCH_SOURCES_ARG);
+    return loop_limited(loops) ? vec4(-1.0f) : pixel;
+  }
+  return vec4(loop_limited(int(x[0].y)) ? 1.0f : 0.0f, 0.0f, 0.0f, 0.0f);
+}
