@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "apps/cli/commands.hpp"
+#include "apps/cli/device_limits.hpp"
 #include "apps/cli/options.hpp"
 #include "gpu/egl_context.hpp"
 #include "regional/scene.hpp"
@@ -61,25 +62,46 @@ int run_render(const std::vector<std::string>& arguments) {
     std::cout << options.help();
     return exit_ok;
   }
+  // The keys set by options: their errors name the option the user typed, not a scene key.
+  regional::KeyOptions typed;
   try {
     if (!scene_file.empty()) scene = regional::read_scene_file(scene_file);
     if (!view.empty()) {
       scene.view = view;
       scene.latitude_deg.reset();
+      typed["view"] = "--view";
     }
-    if (!at.empty()) parse_position(at, scene);
-    if (heading != 1000) scene.heading_deg = heading;
+    if (!at.empty()) {
+      parse_position(at, scene);
+      typed["at"] = "--at";
+    }
+    if (heading != 1000) {
+      scene.heading_deg = heading;
+      typed["heading"] = "--heading";
+    }
     if (arguments.end() != std::find(arguments.begin(), arguments.end(), "--pitch")) scene.pitch_deg = pitch;
     if (arguments.end() != std::find(arguments.begin(), arguments.end(), "--fov")) scene.fov_deg = fov;
     if (arguments.end() != std::find(arguments.begin(), arguments.end(), "--exposure")) scene.exposure = exposure;
-    if (!time.empty()) scene.time = time;
+    if (!time.empty()) {
+      scene.time = time;
+      typed["time"] = "--time";
+    }
     if (panorama) {
       scene.panorama = true;
-      if (size.empty()) scene.width = 2048, scene.height = 1024;
+      if (size.empty()) {
+        scene.width = 2048, scene.height = 1024;
+        typed["size"] = "--panorama";
+      }
     }
-    if (!size.empty()) regional::parse_size(size, scene.width, scene.height, "--size");
-    if (!weather.empty()) scene.weather = weather;
-    regional::validate_scene(scene, scene_file.empty() ? "flags" : scene_file);
+    if (!size.empty()) {
+      regional::parse_size(size, scene.width, scene.height, "--size");
+      typed["size"] = "--size";
+    }
+    if (!weather.empty()) {
+      scene.weather = weather;
+      typed["weather"] = "--weather";
+    }
+    regional::validate_scene(scene, scene_file.empty() ? "flags" : scene_file, typed);
   } catch (const regional::SceneError& e) {
     throw UsageError(e.what());
   }
@@ -104,6 +126,10 @@ int run_render(const std::vector<std::string>& arguments) {
 
   gpu::EglContext context;
   if (verbose) std::cerr << "renderer: " << context.info().renderer << "\n";
+  const std::string size_label = typed.count("size") ? typed.at("size")
+                                 : scene_file.empty() ? std::string("--size")  // the default; --size changes it
+                                                      : scene_file + ": 'size'";
+  check_render_fits(context, scene.width, scene.height, size_label);
   render::SceneRender result;
   try {
     result = render::render_scene(scene);
