@@ -23,7 +23,10 @@ double parse_utc_time(const std::string& text) {
   in >> date::parse("%FT%T", point);
   if (in.fail())
     throw std::invalid_argument("'" + text + "' is not a valid date and time (month 1-12, a day that exists in that month, hour 0-23, minute 0-59, second 0-59)");
-  return std::chrono::duration<double>(point.time_since_epoch()).count();
+  // Whole seconds and the fraction apart: converting the nanosecond count (about 1.7e18, past
+  // 2^53) to double first rounded .250 s to .2499998 s.
+  const auto whole = std::chrono::floor<std::chrono::seconds>(point);
+  return static_cast<double>(whole.time_since_epoch().count()) + static_cast<double>((point - whole).count()) / 1e9;
 }
 
 std::string format_utc_minutes(double unix_seconds) {

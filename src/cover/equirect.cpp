@@ -2,6 +2,7 @@
 
 #include <GeographicLib/Geocentric.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 #include "gpu/compute_program.hpp"
@@ -21,19 +22,41 @@ std::vector<glm::vec2> geodetic_row_directions(int height) {
   return rows;
 }
 
-std::vector<float> equirect_from_cube(const gpu::Texture& cube, int width, int height) {
+std::vector<PixelTile> equirect_tiles(int width, int height, int max_tile) {
+  std::vector<PixelTile> tiles;
+  for (int y = 0; y < height; y += max_tile)
+    for (int x = 0; x < width; x += max_tile)
+      tiles.push_back({x, y, std::min(max_tile, width - x), std::min(max_tile, height - y)});
+  return tiles;
+}
+
+std::vector<float> equirect_from_cube(const gpu::Texture& cube, int width, int height, int max_tile) {
+  if (max_tile <= 0) {
+    GLint max_side = 0;
+    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_side);
+    max_tile = std::min(default_equirect_tile, static_cast<int>(max_side));
+  }
   gpu::ComputeProgram program("cover/equirect.comp");
-  gpu::Texture target = gpu::Texture::plane(width, height, GL_R32F);
   const std::vector<glm::vec2> rows = geodetic_row_directions(height);
   GLuint buffer = 0;
   glCreateBuffers(1, &buffer);
   glNamedBufferStorage(buffer, static_cast<GLsizeiptr>(rows.size() * sizeof(glm::vec2)), rows.data(), 0);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, buffer);
   cube.bind_image(0, GL_READ_ONLY);
-  target.bind_image(1, GL_WRITE_ONLY);
-  program.dispatch_covering(width, height, 1);
-  gpu::image_barrier();
-  std::vector<float> pixels = target.read();
+  program.set("u_width", width);
+  std::vector<float> pixels(static_cast<size_t>(width) * static_cast<size_t>(height));
+  for (const PixelTile& tile : equirect_tiles(width, height, max_tile)) {
+    gpu::Texture target = gpu::Texture::plane(tile.width, tile.height, GL_R32F);
+    target.bind_image(1, GL_WRITE_ONLY);
+    program.set("u_origin_x", tile.x);
+    program.set("u_origin_y", tile.y);
+    program.dispatch_covering(tile.width, tile.height, 1);
+    gpu::image_barrier();
+    const std::vector<float> part = target.read();
+    for (int r = 0; r < tile.height; ++r)
+      std::copy_n(part.begin() + static_cast<std::ptrdiff_t>(r) * tile.width, tile.width,
+                  pixels.begin() + (static_cast<std::ptrdiff_t>(tile.y + r) * width + tile.x));
+  }
   glDeleteBuffers(1, &buffer);
   return pixels;
 }

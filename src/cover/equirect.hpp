@@ -14,7 +14,23 @@ namespace nephele::cover {
 // direction from the Earth's centre.
 std::vector<glm::vec2> geodetic_row_directions(int height);
 
-// Resamples `cube` (GL_R32F) to width x height; longitude -180 deg at the left edge.
-std::vector<float> equirect_from_cube(const gpu::Texture& cube, int width, int height);
+// A rectangle of pixels of the equirect map; x, y from its top-left corner.
+struct PixelTile {
+  int x = 0, y = 0, width = 0, height = 0;
+};
+
+// Tiles of at most max_tile x max_tile pixels covering width x height exactly once, row by row.
+std::vector<PixelTile> equirect_tiles(int width, int height, int max_tile);
+
+// The export's tile edge: small enough for any driver's 2D texture limit (OpenGL 4.5 guarantees
+// 16384) and for llvmpipe's 1 GiB per texture; 64 MiB of R32F per tile.
+constexpr int default_equirect_tile = 4096;
+
+// Resamples `cube` (GL_R32F) to width x height; longitude -180 deg at the left edge. The map is
+// made in tiles of at most max_tile (0: default_equirect_tile, capped by GL_MAX_TEXTURE_SIZE)
+// and assembled here, so that maps wider than the driver's texture limit (4 x 16384 for the
+// largest cover) work; every pixel is computed from its place in the whole map, so any tiling
+// gives the same bits.
+std::vector<float> equirect_from_cube(const gpu::Texture& cube, int width, int height, int max_tile = 0);
 
 }  // namespace nephele::cover

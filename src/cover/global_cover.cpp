@@ -1,4 +1,5 @@
 #include "cover/global_cover.hpp"
+#include "cover/equirect.hpp"
 
 #include <algorithm>
 
@@ -12,7 +13,8 @@ double cover_gpu_bytes(int size) {
   // identity, curl, warp; density, cover; and two RGBA32F cubes the warp pass adds for long or
   // adaptive integrations (a scratch map and the adaptive state).
   const double cubes = texels * (16.0 * 5 + 4.0 * 2);
-  const double equirect = 8.0 * size * size * 4.0;
+  // The equirect export holds one R32F tile of the 4 size x 2 size map at a time.
+  const double equirect = std::min(8.0 * size * size, double(default_equirect_tile) * default_equirect_tile) * 4.0;
   return cubes + equirect;
 }
 

@@ -1,6 +1,7 @@
 #include "noise/noise_spec.hpp"
 
 #include <cmath>
+#include <cstdint>
 #include <numeric>
 #include <sstream>
 
@@ -18,11 +19,18 @@ std::uint32_t channel_seed(std::uint32_t seed, int channel, bool worley_part) {
   return glsl::noise_key(seed, 0x20000u + 2u * static_cast<std::uint32_t>(channel) + (worley_part ? 1u : 0u)).x;
 }
 
+// Cells along an axis of `size` texels for `cells` along the width: cells * size / width, in 64
+// bits since both factors reach 2^16 and more (--cells to 2^20) and their int product overflowed.
+// The quotient is at most `size` whenever cells <= width, which validate checks.
+int cells_along(int cells, int size, int width) {
+  return static_cast<int>(static_cast<std::int64_t>(cells) * size / width);
+}
+
 glsl::FbmParams fbm_params(const TextureSpec& spec, int cells, int octaves, const ChannelSpec& c,
                            std::uint32_t seed) {
   return glsl::FbmParams{static_cast<float>(cells) / static_cast<float>(spec.width), octaves,
                          c.lacunarity, c.gain, seed,
-                         glsl::ivec3(cells, cells * spec.height / spec.width, cells * spec.depth / spec.width)};
+                         glsl::ivec3(cells, cells_along(cells, spec.height, spec.width), cells_along(cells, spec.depth, spec.width))};
 }
 
 // Checks one fBm of a channel: whole cells on every axis at every octave, none narrower than
@@ -46,7 +54,7 @@ void validate_fbm(const TextureSpec& spec, const std::string& where, const std::
                     std::to_string(max_octaves));
   // Step the octaves exactly as the shaders do (next_octave in tileable_noise.glsl).
   float frequency = static_cast<float>(cells) / static_cast<float>(spec.width);
-  glsl::ivec3 period(cells, cells * spec.height / spec.width, cells * spec.depth / spec.width);
+  glsl::ivec3 period(cells, cells_along(cells, spec.height, spec.width), cells_along(cells, spec.depth, spec.width));
   double exact[3] = {double(period.x), double(period.y), double(period.z)};
   const char* axes[3] = {"width", "height", "depth"};
   for (int k = 1; k < octaves; ++k) {

@@ -3,10 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <sstream>
 
 #include "regional/sites.hpp"
+#include "core/input_file.hpp"
+#include "core/integer_text.hpp"
 #include "core/time.hpp"
 #include "core/json.hpp"
 #include "core/json_keys.hpp"
@@ -14,10 +15,17 @@
 namespace nephele::regional {
 namespace {
 
-void check_range(const std::string& source, const std::string& key, double value, double lo, double hi) {
+// The name an error about `key` starts with: the option that set it, else the source and key.
+std::string label(const std::string& source, const KeyOptions& options, const std::string& key) {
+  const std::string head = key.substr(0, key.find('.'));  // at.latitude was set by --at
+  if (const auto o = options.find(head); o != options.end()) return o->second;
+  return source + ": '" + key + "'";
+}
+
+void check_range(const std::string& where, double value, double lo, double hi, const std::string& what = "") {
   if (!(value >= lo && value <= hi)) {
     std::ostringstream m;
-    m << source << ": '" << key << "': " << value << " is outside the allowed range " << lo << " to " << hi;
+    m << where << ": " << what << value << " is outside the allowed range " << lo << " to " << hi;
     throw SceneError(m.str());
   }
 }
@@ -25,11 +33,20 @@ void check_range(const std::string& source, const std::string& key, double value
 }  // namespace
 
 void parse_size(const std::string& text, int& width, int& height, const std::string& name) {
-  int w = 0, h = 0, consumed = 0;
-  if (std::sscanf(text.c_str(), "%dx%d%n", &w, &h, &consumed) != 2 || consumed != static_cast<int>(text.size()))
-    throw SceneError(name + ": '" + text + "' is not WIDTHxHEIGHT, e.g. 1280x720");
-  width = w;
-  height = h;
+  const std::string form = "is not WIDTHxHEIGHT, e.g. 1280x720 (each 1 to " + std::to_string(max_image_side) + ")";
+  const size_t x = text.find('x');
+  if (x == std::string::npos) throw SceneError(name + ": '" + text + "' " + form);
+  // Digits only: sscanf's %d skipped spaces, took signs and wrapped 4294967297 to 1.
+  const auto w = core::parse_integer(text.substr(0, x));
+  const auto h = core::parse_integer(text.substr(x + 1));
+  if (!w || !h || *w < 0 || *h < 0)
+    throw SceneError(name + ": '" + text + "' " + form);
+  for (const auto& [what, value] : {std::pair<const char*, long long>{"width", *w}, {"height", *h}})
+    if (value < 1 || value > max_image_side)
+      throw SceneError(name + ": " + what + " " + std::to_string(value) + " is outside the allowed range 1 to " +
+                       std::to_string(max_image_side));
+  width = static_cast<int>(*w);
+  height = static_cast<int>(*h);
 }
 
 Scene parse_scene(const std::string& text, const std::string& source, const std::string& base_directory) {
@@ -66,7 +83,7 @@ Scene parse_scene(const std::string& text, const std::string& source, const std:
     } else if (key == "time") {
       s.time = k.string(v, key);
     } else if (key == "size") {
-      parse_size(k.string(v, key), s.width, s.height, source + ": 'size'");
+      parse_size(k.string(v, key), s.width, s.height, label(source, {}, key));
     } else if (key == "panorama") {
       s.panorama = k.boolean(v, key);
     } else if (key == "weather") {
@@ -74,7 +91,7 @@ Scene parse_scene(const std::string& text, const std::string& source, const std:
         s.weather.push_back(std::filesystem::path(f).is_absolute() ? f : (std::filesystem::path(base_directory) / f).string());
     } else if (key == "seed") {
       const double d = k.number(v, key);
-      check_range(source, key, d, 0, 4294967295.0);
+      check_range(label(source, {}, key), d, 0, 4294967295.0);
       if (d != std::floor(d)) k.fail(key, "must be an integer");
       s.seed = static_cast<std::uint32_t>(d);
     } else if (key == "view_steps") {
@@ -100,27 +117,28 @@ Scene parse_scene(const std::string& text, const std::string& source, const std:
   return s;
 }
 
-void validate_scene(const Scene& s, const std::string& source) {
+void validate_scene(const Scene& s, const std::string& source, const KeyOptions& options) {
+  auto where = [&](const std::string& key) { return label(source, options, key); };
   if (!s.view.empty() && !find_viewpoint(s.view))
-    throw SceneError(source + ": 'view': '" + s.view + "' is not a known viewpoint (allowed: gurten, bantiger)");
+    throw SceneError(where("view") + ": '" + s.view + "' is not a known viewpoint (allowed: gurten, bantiger)");
   if (s.view.empty() && !s.latitude_deg) throw SceneError(source + ": give a view or a position (at)");
-  if (s.latitude_deg) check_range(source, "at.latitude", *s.latitude_deg, -90, 90);
-  if (s.longitude_deg) check_range(source, "at.longitude", *s.longitude_deg, -180, 180);
-  if (s.height_m) check_range(source, "at.height", *s.height_m, -400, 20000);
-  if (s.heading_deg) check_range(source, "heading", *s.heading_deg, -360, 360);
-  check_range(source, "pitch", s.pitch_deg, -90, 90);
-  check_range(source, "fov", s.fov_deg, 1, 179);
-  check_range(source, "size (width)", s.width, 1, 16384);
-  check_range(source, "size (height)", s.height, 1, 16384);
-  check_range(source, "view_steps", s.view_steps, 1, 4096);
-  check_range(source, "light_steps", s.light_steps, 0, 256);
-  check_range(source, "sky_steps", s.sky_steps, 1, 1024);
-  check_range(source, "exposure", s.exposure, 1e-6, 1e6);
-  check_range(source, "cover_size", s.cover_size, 4, 4096);
+  if (s.latitude_deg) check_range(where("at.latitude"), *s.latitude_deg, -90, 90, "latitude ");
+  if (s.longitude_deg) check_range(where("at.longitude"), *s.longitude_deg, -180, 180, "longitude ");
+  if (s.height_m) check_range(where("at.height"), *s.height_m, -400, 20000, "height ");
+  if (s.heading_deg) check_range(where("heading"), *s.heading_deg, -360, 360);
+  check_range(where("pitch"), s.pitch_deg, -90, 90);
+  check_range(where("fov"), s.fov_deg, 1, 179);
+  check_range(where("size"), s.width, 1, max_image_side, "width ");
+  check_range(where("size"), s.height, 1, max_image_side, "height ");
+  check_range(where("view_steps"), s.view_steps, 1, 4096);
+  check_range(where("light_steps"), s.light_steps, 0, 256);
+  check_range(where("sky_steps"), s.sky_steps, 1, 1024);
+  check_range(where("exposure"), s.exposure, 1e-6, 1e6);
+  check_range(where("cover_size"), s.cover_size, 4, 4096);
   try {
     core::parse_utc_time(s.time);
   } catch (const std::invalid_argument& e) {
-    throw SceneError(source + ": 'time': " + e.what());
+    throw SceneError(where("time") + ": " + e.what());
   }
   std::vector<std::string> seen;
   for (const auto& o : s.outputs) {
@@ -142,11 +160,13 @@ void validate_scene(const Scene& s, const std::string& source) {
 }
 
 Scene read_scene_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw SceneError(path + ": cannot be read");
-  std::stringstream text;
-  text << in.rdbuf();
-  return parse_scene(text.str(), path, std::filesystem::path(path).parent_path().string());
+  std::string text;
+  try {
+    text = core::read_input_file(path);
+  } catch (const core::InputFileError& e) {
+    throw SceneError(e.what());
+  }
+  return parse_scene(text, path, std::filesystem::path(path).parent_path().string());
 }
 
 }  // namespace nephele::regional

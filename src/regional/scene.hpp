@@ -1,6 +1,7 @@
 #pragma once
 // A scene: everything `nephele render` needs, from flags or from a JSON scene file.
 #include <cstdint>
+#include <map>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -36,9 +37,17 @@ struct Scene {
 // Reads a scene file; unknown keys and wrong types are errors naming the key.
 Scene read_scene_file(const std::string& path);
 Scene parse_scene(const std::string& json_text, const std::string& source_name, const std::string& base_directory);
-// Checks ranges; throws SceneError naming the key.
-void validate_scene(const Scene& scene, const std::string& source_name);
-// Parses "1280x720".
+// Which option set a scene key ("view" -> "--view"): errors about that key name the option the
+// user typed instead of the key of a file they did not write. Keys: view, at, heading, pitch,
+// fov, time, size, weather, view_steps, light_steps, exposure, seed.
+using KeyOptions = std::map<std::string, std::string>;
+
+// Checks ranges; throws SceneError naming the key ("SOURCE: 'key': ...") or, for the keys in
+// `options`, the option ("--view: ...").
+void validate_scene(const Scene& scene, const std::string& source_name, const KeyOptions& options = {});
+// Parses "1280x720": decimal digits only on both sides, each 1 to max_image_side; throws
+// SceneError starting with `name` (an option or "FILE: 'size'").
 void parse_size(const std::string& text, int& width, int& height, const std::string& name);
+constexpr int max_image_side = 16384;
 
 }  // namespace nephele::regional

@@ -2,9 +2,9 @@
 
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <sstream>
 
+#include "core/input_file.hpp"
 #include "core/time.hpp"
 #include "core/json.hpp"
 #include "core/json_keys.hpp"
@@ -194,11 +194,13 @@ WeatherSeries parse_weather(const std::string& text, const std::string& source) 
 }
 
 WeatherSeries read_weather_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw WeatherError(path + ": cannot be read");
-  std::stringstream text;
-  text << in.rdbuf();
-  return parse_weather(text.str(), path);
+  std::string text;
+  try {
+    text = core::read_input_file(path);
+  } catch (const core::InputFileError& e) {
+    throw WeatherError(e.what());
+  }
+  return parse_weather(text, path);
 }
 
 }  // namespace nephele::regional

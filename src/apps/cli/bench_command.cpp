@@ -2,13 +2,13 @@
 #include <algorithm>
 #include <cstdio>
 #include <iostream>
-#include <sstream>
 
 #include "apps/cli/commands.hpp"
 #include "params/table.hpp"
 #include "apps/cli/noise_options.hpp"
 #include "apps/cli/cover_options.hpp"
 #include "apps/cli/device_limits.hpp"
+#include "core/integer_text.hpp"
 #include "cover/global_cover.hpp"
 #include "cover/equirect.hpp"
 #include "gpu/pass_timer.hpp"
@@ -16,13 +16,22 @@
 namespace nephele::cli {
 namespace {
 
+// Strict integers: parse_number took "1.5" (then truncated to 1), "0x10" and " 16".
 std::vector<int> parse_sizes(const std::string& text) {
+  const std::string allowed = "give a comma-separated list of integers in 1..16384, e.g. 256,512";
   std::vector<int> sizes;
-  std::stringstream stream(text);
-  std::string item;
-  while (std::getline(stream, item, ','))
-    sizes.push_back(static_cast<int>(parse_number("--sizes", item, 1, 16384, true)));
-  if (sizes.empty()) throw UsageError("--sizes", text, "a comma-separated list of integers 1 to 16384", "is empty");
+  size_t start = 0;
+  while (true) {
+    const size_t comma = text.find(',', start);
+    const std::string item = text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+    const auto value = core::parse_integer(item);
+    if (!value) throw UsageError("--sizes: '" + item + "' is not an integer (" + allowed + ")");
+    if (*value < 1 || *value > 16384)
+      throw UsageError("--sizes: " + item + " is out of range (" + allowed + ")");
+    sizes.push_back(static_cast<int>(*value));
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
   return sizes;
 }
 

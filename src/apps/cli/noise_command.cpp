@@ -5,30 +5,20 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <sstream>
 
 #include "apps/cli/commands.hpp"
 #include "apps/cli/noise_options.hpp"
 #include "apps/cli/options.hpp"
-#include "params/table.hpp"
+#include "core/memory.hpp"
 #include "gpu/egl_context.hpp"
 #include "io/noise_files.hpp"
 #include "noise/noise_texture.hpp"
+#include "params/table.hpp"
 
 namespace nephele::cli {
 namespace {
-
-// MemAvailable from /proc/meminfo in bytes; 0 when unknown.
-double memory_available() {
-  std::ifstream meminfo("/proc/meminfo");
-  std::string key, unit;
-  double kilobytes = 0;
-  while (meminfo >> key >> kilobytes >> unit)
-    if (key == "MemAvailable:") return kilobytes * 1024.0;
-  return 0.0;
-}
 
 // Parses "type=worley,cells=8,octaves=3" into a channel (keys as the global options).
 noise::ChannelSpec parse_channel(const std::string& option, const std::string& text, noise::ChannelSpec c) {
@@ -182,7 +172,7 @@ void check_noise_fits(const noise::TextureSpec& spec, const gpu::EglContext& con
     if (value > max_3d)
       throw UsageError(std::string(option) + ": " + std::to_string(value) + " exceeds this driver's 3D texture limit (" +
                        context.info().renderer + "); allowed range 1 to " + std::to_string(max_3d));
-  const double available = memory_available();
+  const double available = core::host_memory_available_bytes();
   const double needed = noise::host_bytes(spec);
   if (available > 0 && needed > available) {
     std::ostringstream m;

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "apps/cli/commands.hpp"
+#include "apps/cli/device_limits.hpp"
 #include "apps/cli/options.hpp"
 #include "core/progress.hpp"
 #include "params/table.hpp"
@@ -67,29 +68,50 @@ int run_render(const std::vector<std::string>& arguments) {
     std::cout << options.help();
     return exit_ok;
   }
+  // The keys set by options: their errors name the option the user typed, not a scene key.
+  regional::KeyOptions typed;
   try {
     if (!scene_file.empty()) scene = regional::read_scene_file(scene_file);
     if (!view.empty()) {
       scene.view = view;
       scene.latitude_deg.reset();
+      typed["view"] = "--view";
     }
-    if (!at.empty()) parse_position(at, scene);
+    if (!at.empty()) {
+      parse_position(at, scene);
+      typed["at"] = "--at";
+    }
     // Options override the scene file only where they were given.
-    if (options.given(s::heading)) scene.heading_deg = heading;
+    if (options.given(s::heading)) {
+      scene.heading_deg = heading;
+      typed["heading"] = "--heading";
+    }
     if (options.given(s::pitch)) scene.pitch_deg = pitch;
     if (options.given(s::fov)) scene.fov_deg = fov;
     if (options.given(s::exposure)) scene.exposure = exposure;
     if (options.given(s::view_steps)) scene.view_steps = view_steps;
     if (options.given(s::light_steps)) scene.light_steps = light_steps;
     if (options.given(s::seed)) scene.seed = seed;
-    if (!time.empty()) scene.time = time;
+    if (!time.empty()) {
+      scene.time = time;
+      typed["time"] = "--time";
+    }
     if (panorama) {
       scene.panorama = true;
-      if (size.empty()) scene.width = 2048, scene.height = 1024;
+      if (size.empty()) {
+        scene.width = 2048, scene.height = 1024;
+        typed["size"] = "--panorama";
+      }
     }
-    if (!size.empty()) regional::parse_size(size, scene.width, scene.height, "--size");
-    if (!weather.empty()) scene.weather = weather;
-    regional::validate_scene(scene, scene_file.empty() ? "flags" : scene_file);
+    if (!size.empty()) {
+      regional::parse_size(size, scene.width, scene.height, "--size");
+      typed["size"] = "--size";
+    }
+    if (!weather.empty()) {
+      scene.weather = weather;
+      typed["weather"] = "--weather";
+    }
+    regional::validate_scene(scene, scene_file.empty() ? "flags" : scene_file, typed);
   } catch (const regional::SceneError& e) {
     throw UsageError(e.what());
   }
@@ -123,6 +145,10 @@ int run_render(const std::vector<std::string>& arguments) {
 
   gpu::EglContext context;
   if (verbose) std::cerr << "renderer: " << context.info().renderer << "\n";
+  const std::string size_label = typed.count("size") ? typed.at("size")
+                                 : scene_file.empty() ? std::string("--size")  // the default; --size changes it
+                                                      : scene_file + ": 'size'";
+  check_render_fits(context, scene.width, scene.height, size_label);
   // Weather (with the global cover when no files are given), the march, the files.
   core::Progress progress("render", 3, core::Progress::for_stderr(quiet));
   progress.update(0, "weather");

@@ -86,7 +86,7 @@ int run_report(const std::vector<std::string>& arguments) {
     regional::Scene check = render_scene;
     check.width = render_sweep.width;
     check.height = render_sweep.height;
-    regional::validate_scene(check, "--render-size");
+    regional::validate_scene(check, "--render-size", {{"size", "--render-size"}});
   } catch (const regional::SceneError& e) {
     throw UsageError(e.what());
   }
@@ -96,6 +96,7 @@ int run_report(const std::vector<std::string>& arguments) {
 
   gpu::EglContext context;
   for (int size : sweep.sizes) check_cover_fits(context, size);
+  if (!no_render) check_render_fits(context, render_sweep.width, render_sweep.height, "--render-size");
   std::error_code error;
   std::filesystem::create_directories(directory, error);
   if (error) throw UsageError("--out: cannot create directory '" + out + "': " + error.message());
