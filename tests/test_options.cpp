@@ -2,6 +2,7 @@
 #include <catch2/catch.hpp>
 
 #include <map>
+#include <sstream>
 #include <set>
 #include <string>
 
@@ -10,6 +11,7 @@
 #include "cli_support.hpp"
 #include "params/table.hpp"
 #include "params/values.hpp"
+#include "regional/scene.hpp"
 
 using namespace nephele;
 using namespace nephele::cli;
@@ -184,4 +186,31 @@ TEST_CASE("render takes --pitch=X, --fov=X and --exposure=X like the spaced form
   CHECK(sidecar.at("camera").at("fov_deg").as_number() == 40);
   CHECK(sidecar.at("exposure").as_number() == 2);
   CHECK(sidecar.at("steps").at("view").as_number() == 2);
+}
+
+TEST_CASE("scene files refuse every numeric key just outside the range the table declares, naming the key", "[params]") {
+  for (const params::Parameter* p : params::all()) {
+    if (!p->used_by(params::scene_file) || (p->type != params::Type::integer && p->type != params::Type::real)) continue;
+    const std::string key(p->key);
+    const bool nested = p == &params::scene::latitude || p == &params::scene::longitude || p == &params::scene::height;
+    for (const double value : {p->min - 1.0, p->max + 1.0}) {
+      std::ostringstream text;
+      text.precision(17);
+      if (nested) {
+        std::map<std::string, double> at = {{"latitude", 46.9}, {"longitude", 7.4}, {"height", 860}};
+        at[key] = value;
+        text << R"({"at": {"latitude": )" << at["latitude"] << R"(, "longitude": )" << at["longitude"]
+             << R"(, "height": )" << at["height"] << "}}";
+      } else {
+        text << "{\"" << key << "\": " << value << "}";
+      }
+      INFO(text.str());
+      try {
+        regional::parse_scene(text.str(), "scene.json", ".");
+        FAIL("accepted");
+      } catch (const core::InputError& e) {
+        CHECK_THAT(e.what(), Catch::Contains(key));
+      }
+    }
+  }
 }

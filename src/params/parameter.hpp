@@ -46,6 +46,19 @@ struct Parameter {
   constexpr std::uint32_t default_uint32() const { return static_cast<std::uint32_t>(default_number); }
 };
 
+// The width and height of a default "WIDTHxHEIGHT" text, at compile time (0 when malformed).
+constexpr int size_part(std::string_view text, bool height) {
+  const auto x = text.find('x');
+  if (x == std::string_view::npos) return 0;
+  const std::string_view digits = height ? text.substr(x + 1) : text.substr(0, x);
+  int value = 0;
+  for (char c : digits) {
+    if (c < '0' || c > '9') return 0;
+    value = 10 * value + (c - '0');
+  }
+  return value;
+}
+
 // Factories that keep the table readable (src/params/table.hpp).
 constexpr Parameter integer(std::string_view key, double default_value, double min, double max,
                             std::string_view unit, std::string_view help, unsigned uses,

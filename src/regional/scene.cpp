@@ -22,12 +22,29 @@ std::string label(const std::string& source, const KeyOptions& options, const st
   return source + ": '" + key + "'";
 }
 
+// The allowed scene keys, from the table (for the message about an unknown key).
+std::string scene_keys() {
+  std::string keys;
+  for (const params::Parameter* p : params::all())
+    if (p->used_by(params::scene_file) && p != &params::scene::latitude && p != &params::scene::longitude &&
+        p != &params::scene::height) {
+      keys += (keys.empty() ? "" : ", ") + std::string(p->key);
+      if (p == &params::scene::view) keys += ", at";
+    }
+  return keys;
+}
+
 void check_range(const std::string& where, double value, double lo, double hi, const std::string& what = "") {
   if (!(value >= lo && value <= hi)) {
     std::ostringstream m;
     m << where << ": " << what << value << " is outside the allowed range " << lo << " to " << hi;
     throw SceneError(m.str());
   }
+}
+
+// The range the table declares for a parameter.
+void check_range(const std::string& where, double value, const params::Parameter& p, const std::string& what = "") {
+  check_range(where, value, p.min, p.max, what);
 }
 
 }  // namespace
@@ -91,7 +108,7 @@ Scene parse_scene(const std::string& text, const std::string& source, const std:
         s.weather.push_back(std::filesystem::path(f).is_absolute() ? f : (std::filesystem::path(base_directory) / f).string());
     } else if (key == "seed") {
       const double d = k.number(v, key);
-      check_range(label(source, {}, key), d, 0, 4294967295.0);
+      check_range(label(source, {}, key), d, params::scene::seed);
       if (d != std::floor(d)) k.fail(key, "must be an integer");
       s.seed = static_cast<std::uint32_t>(d);
     } else if (key == "view_steps") {
@@ -109,8 +126,7 @@ Scene parse_scene(const std::string& text, const std::string& source, const std:
     } else if (key == "description") {
       k.string(v, key);  // free text for people
     } else {
-      k.fail(key, "unknown key (allowed: view, at, heading, pitch, fov, time, size, panorama, weather, seed, "
-                  "view_steps, light_steps, sky_steps, exposure, cover_size, outputs, description)");
+      k.fail(key, "unknown key (allowed: " + scene_keys() + ")");
     }
   }
   validate_scene(s, source);
@@ -122,19 +138,19 @@ void validate_scene(const Scene& s, const std::string& source, const KeyOptions&
   if (!s.view.empty() && !find_viewpoint(s.view))
     throw SceneError(where("view") + ": '" + s.view + "' is not a known viewpoint (allowed: gurten, bantiger)");
   if (s.view.empty() && !s.latitude_deg) throw SceneError(source + ": give a view or a position (at)");
-  if (s.latitude_deg) check_range(where("at.latitude"), *s.latitude_deg, -90, 90, "latitude ");
-  if (s.longitude_deg) check_range(where("at.longitude"), *s.longitude_deg, -180, 180, "longitude ");
-  if (s.height_m) check_range(where("at.height"), *s.height_m, -400, 20000, "height ");
-  if (s.heading_deg) check_range(where("heading"), *s.heading_deg, -360, 360);
-  check_range(where("pitch"), s.pitch_deg, -90, 90);
-  check_range(where("fov"), s.fov_deg, 1, 179);
+  if (s.latitude_deg) check_range(where("at.latitude"), *s.latitude_deg, params::scene::latitude, "latitude ");
+  if (s.longitude_deg) check_range(where("at.longitude"), *s.longitude_deg, params::scene::longitude, "longitude ");
+  if (s.height_m) check_range(where("at.height"), *s.height_m, params::scene::height, "height ");
+  if (s.heading_deg) check_range(where("heading"), *s.heading_deg, params::scene::heading);
+  check_range(where("pitch"), s.pitch_deg, params::scene::pitch);
+  check_range(where("fov"), s.fov_deg, params::scene::fov);
   check_range(where("size"), s.width, 1, max_image_side, "width ");
   check_range(where("size"), s.height, 1, max_image_side, "height ");
-  check_range(where("view_steps"), s.view_steps, 1, 4096);
-  check_range(where("light_steps"), s.light_steps, 0, 256);
-  check_range(where("sky_steps"), s.sky_steps, 1, 1024);
-  check_range(where("exposure"), s.exposure, 1e-6, 1e6);
-  check_range(where("cover_size"), s.cover_size, 4, 4096);
+  check_range(where("view_steps"), s.view_steps, params::scene::view_steps);
+  check_range(where("light_steps"), s.light_steps, params::scene::light_steps);
+  check_range(where("sky_steps"), s.sky_steps, params::scene::sky_steps);
+  check_range(where("exposure"), s.exposure, params::scene::exposure);
+  check_range(where("cover_size"), s.cover_size, params::scene::cover_size);
   try {
     core::parse_utc_time(s.time);
   } catch (const std::invalid_argument& e) {

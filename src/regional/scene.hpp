@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/error.hpp"
+#include "params/table.hpp"
 
 namespace nephele::regional {
 
@@ -17,20 +18,25 @@ class SceneError : public core::InputError {
   using core::InputError::InputError;
 };
 
+// Defaults and ranges come from the parameter table (src/params/table.hpp, namespace scene).
 struct Scene {
-  std::string view = "gurten";              // named viewpoint, or "" when `at` is given
+  std::string view{params::scene::view.default_text};  // named viewpoint, or "" when `at` is given
   std::optional<double> latitude_deg, longitude_deg, height_m;  // --at, overrides the viewpoint
   std::optional<double> heading_deg;        // default: the viewpoint's heading
-  double pitch_deg = 5;
-  double fov_deg = 70;
-  std::string time = "2026-06-21T16:00Z";
-  int width = 1280, height = 720;
+  double pitch_deg = params::scene::pitch.default_number;
+  double fov_deg = params::scene::fov.default_number;
+  std::string time{params::scene::time.default_text};
+  int width = params::size_part(params::scene::size.default_text, false);
+  int height = params::size_part(params::scene::size.default_text, true);
   bool panorama = false;
   std::vector<std::string> weather;          // weather files (paths resolved against the scene file)
-  std::uint32_t seed = 1;
-  int view_steps = 48, light_steps = 12, sky_steps = 16;  // from the image-error sweep (docs/rendering.md)
-  double exposure = 4.0;
-  int cover_size = 128;                      // global cover size when no weather is given
+  std::uint32_t seed = params::scene::seed.default_uint32();
+  // Step counts from the image-error sweep (docs/rendering.md).
+  int view_steps = params::scene::view_steps.default_int();
+  int light_steps = params::scene::light_steps.default_int();
+  int sky_steps = params::scene::sky_steps.default_int();
+  double exposure = params::scene::exposure.default_number;
+  int cover_size = params::scene::cover_size.default_int();  // global cover size when no weather is given
   std::vector<std::string> outputs;          // file names (png, exr); --scene renders into --out DIR
 };
 
