@@ -18,12 +18,19 @@ double parse_utc_time(const std::string& text) {
   if (!std::regex_match(text, parts, shape))
     throw std::invalid_argument("'" + text + "' is not an ISO 8601 UTC time (" + form + ")");
   const std::string seconds = parts[3].matched ? parts[3].str() : ":00";
-  std::istringstream in(parts[1].str() + "T" + parts[2].str() + seconds);
-  date::sys_time<std::chrono::nanoseconds> point;
-  in >> date::parse("%FT%T", point);
-  if (in.fail())
+  // The day and the time of day apart: 64-bit nanoseconds since 1970 overflow outside the years
+  // 1678-2262 (undefined behaviour inside date::parse, found by tests/fuzz), days and a
+  // nanosecond time of day do not. The sum in 128 bits divides as the single parse did.
+  std::istringstream day_in(parts[1].str()), time_in("1970-01-01T" + parts[2].str() + seconds);
+  date::sys_days day;
+  date::sys_time<std::chrono::nanoseconds> time_of_day;
+  day_in >> date::parse("%F", day);
+  time_in >> date::parse("%FT%T", time_of_day);
+  if (day_in.fail() || time_in.fail())
     throw std::invalid_argument("'" + text + "' is not a valid date and time (month 1-12, a day that exists in that month, hour 0-23, minute 0-59, second 0-59)");
-  return std::chrono::duration<double>(point.time_since_epoch()).count();
+  const __int128 nanoseconds = static_cast<__int128>(day.time_since_epoch().count()) * 86'400'000'000'000 +
+                               time_of_day.time_since_epoch().count();
+  return static_cast<double>(nanoseconds) / 1e9;
 }
 
 std::string format_utc_minutes(double unix_seconds) {
