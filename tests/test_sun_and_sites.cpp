@@ -21,6 +21,17 @@ TEST_CASE("ISO 8601 UTC times parse to Unix seconds and bad ones are refused", "
   CHECK_THROWS(core::parse_utc_time("tomorrow"));
 }
 
+TEST_CASE("ISO 8601 UTC times of the years 0000 to 9999 parse without 64-bit nanosecond overflow", "[sun]") {
+  // Year 0 to 1970: 719528 days of the proleptic Gregorian calendar, times 86400 s.
+  CHECK(core::parse_utc_time("0000-01-01T00:00Z") == -719528.0 * 86400);
+  // The last second of 9999: one second before 10000-01-01, 2932897 days after 1970.
+  CHECK(core::parse_utc_time("9999-12-31T23:59:59Z") == 2932897.0 * 86400 - 1);
+  CHECK(core::parse_utc_time("0226-06-22T19:00Z") == -55020402000.0);  // a fuzzer's find (tests/fuzz)
+  // Whole minutes stay whole seconds where nanoseconds since 1970 would not fit 64 bits.
+  CHECK(core::parse_utc_time("0901-12-31T23:59Z") == -33702825660.0);
+  CHECK(core::parse_utc_time("0901-12-31T23:59:59.5Z") == -33702825600.5);
+}
+
 TEST_CASE("the sun stands over the tropic at the June solstice and over the equator at the equinox", "[sun]") {
   // June solstice 2026: June 21 08:24 UTC; March equinox 2026: March 20 14:46 UTC (published
   // times). The Almanac formulas are good to about 0.01 deg; the obliquity is 23.436 deg.

@@ -90,6 +90,18 @@ TEST_CASE("bad weather input names the file and the field", "[weather]") {
   }
 }
 
+TEST_CASE("UTC offsets beyond 18 hours are refused naming the key, the value and the range", "[weather]") {
+  std::string text = open_meteo();
+  text.replace(text.find("\"utc_offset_seconds\": 0"), 23, "\"utc_offset_seconds\": 1e300");
+  CHECK_THAT(error_of(text), Catch::Contains("utc_offset_seconds") && Catch::Contains("1e+300") &&
+                                 Catch::Contains("-64800 to 64800"));
+  const std::string meteoblue = R"({"metadata": {"latitude": 0, "longitude": 0, "utc_timeoffset": -19},
+    "data_1h": {"time": ["2026-06-21 00:00"], "totalcloudcover": [1], "lowclouds": [1], "midclouds": [1],
+    "highclouds": [1]}})";
+  CHECK_THAT(error_of(meteoblue), Catch::Contains("metadata.utc_timeoffset") && Catch::Contains("-19") &&
+                                      Catch::Contains("-18 to 18"));
+}
+
 TEST_CASE("station weights give a station's own data there and the linear blend between two", "[weather]") {
   const std::vector<Station> stations = {{46.94806, 7.44750, {}}, {47.20833, 7.53722, {}}};
   const auto at_first = station_weights(stations, 46.94806, 7.44750);

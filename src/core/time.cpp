@@ -3,6 +3,7 @@
 #include <date/date.h>
 
 #include <chrono>
+#include <cstdint>
 #include <cmath>
 #include <regex>
 #include <sstream>
@@ -18,15 +19,23 @@ double parse_utc_time(const std::string& text) {
   if (!std::regex_match(text, parts, shape))
     throw std::invalid_argument("'" + text + "' is not an ISO 8601 UTC time (" + form + ")");
   const std::string seconds = parts[3].matched ? parts[3].str() : ":00";
-  std::istringstream in(parts[1].str() + "T" + parts[2].str() + seconds);
-  date::sys_time<std::chrono::nanoseconds> point;
-  in >> date::parse("%FT%T", point);
-  if (in.fail())
+  // The day and the time of day apart: 64-bit nanoseconds since 1970 overflow outside the years
+  // 1678-2262 (undefined behaviour inside date::parse, found by tests/fuzz); days and a
+  // nanosecond time of day do not.
+  std::istringstream day_in(parts[1].str()), time_in("1970-01-01T" + parts[2].str() + seconds);
+  date::sys_days day;
+  date::sys_time<std::chrono::nanoseconds> time_of_day;
+  day_in >> date::parse("%F", day);
+  time_in >> date::parse("%FT%T", time_of_day);
+  if (day_in.fail() || time_in.fail())
     throw std::invalid_argument("'" + text + "' is not a valid date and time (month 1-12, a day that exists in that month, hour 0-23, minute 0-59, second 0-59)");
-  // Whole seconds and the fraction apart: converting the nanosecond count (about 1.7e18, past
-  // 2^53) to double first rounded .250 s to .2499998 s.
-  const auto whole = std::chrono::floor<std::chrono::seconds>(point);
-  return static_cast<double>(whole.time_since_epoch().count()) + static_cast<double>((point - whole).count()) / 1e9;
+  // Whole seconds and the fraction apart, each exact in a double: a count of nanoseconds since
+  // 1970 (about 1.7e18, past 2^53) rounded .250 s to .2499998 s and could move a whole minute
+  // off by an ulp outside the common years (found by tests/fuzz).
+  const std::int64_t tod = time_of_day.time_since_epoch().count();
+  const std::int64_t whole = std::int64_t{day.time_since_epoch().count()} * 86400 + tod / 1'000'000'000;
+  const std::int64_t fraction = tod % 1'000'000'000;
+  return static_cast<double>(whole) + static_cast<double>(fraction) / 1e9;
 }
 
 std::string format_utc_minutes(double unix_seconds) {

@@ -6,6 +6,11 @@
 #include <cstdlib>
 #include <cstring>
 
+#if defined(__SANITIZE_ADDRESS__)
+#include <dlfcn.h>
+#include <link.h>
+#endif
+
 namespace nephele::gpu {
 namespace {
 
@@ -41,6 +46,26 @@ std::string gl_string(GLenum name) {
   return s ? s : "";
 }
 
+#if defined(__SANITIZE_ADDRESS__)
+// AddressSanitizer builds only (scripts/sanitize.sh): eglTerminate unloads Mesa's driver before
+// LeakSanitizer reports at exit, and leaks inside unloaded code show as "<unknown module>", which
+// no suppression can name. Marking the loaded drivers RTLD_NODELETE keeps them mapped, so that
+// scripts/lsan.supp can suppress Mesa's own leaks by library name.
+void keep_drivers_loaded() {
+  std::vector<std::string> drivers;
+  dl_iterate_phdr(
+      [](dl_phdr_info* info, size_t, void* found) {
+        if (info->dlpi_name && std::strstr(info->dlpi_name, "_dri.so"))
+          static_cast<std::vector<std::string>*>(found)->push_back(info->dlpi_name);
+        return 0;
+      },
+      &drivers);
+  for (const auto& path : drivers) dlopen(path.c_str(), RTLD_LAZY | RTLD_NOLOAD | RTLD_NODELETE);
+}
+#else
+void keep_drivers_loaded() {}
+#endif
+
 }  // namespace
 
 bool EglContext::try_display(void* display_ptr, const std::string& platform,
@@ -55,6 +80,7 @@ bool EglContext::try_display(void* display_ptr, const std::string& platform,
     attempts.push_back(platform + ": eglInitialize failed (" + egl_error_name(eglGetError()) + ")");
     return false;
   }
+  keep_drivers_loaded();
   const char* extensions = eglQueryString(display, EGL_EXTENSIONS);
   if (!has_extension(extensions, "EGL_KHR_surfaceless_context") ||
       !has_extension(extensions, "EGL_KHR_no_config_context")) {

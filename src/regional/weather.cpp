@@ -12,6 +12,11 @@
 namespace nephele::regional {
 namespace {
 
+// UTC offsets stay within +-18 h (ISO 8601 zone offsets; real zones span -12 h to +14 h). Larger
+// ones would carry times out of the years 0000-9999 that parse_utc_time and the messages handle
+// (a fuzzed 1e300 s offset made every time the same double, and --time checks meaningless).
+constexpr double max_utc_offset_hours = 18;
+
 struct Reader {
   const std::string& source;
   const json::Value& root;
@@ -22,6 +27,12 @@ struct Reader {
   [[noreturn]] void fail(const std::string& field, const std::string& message) const { keys.fail(field, message); }
   const json::Value& member(const json::Value& object, const std::string& path, const std::string& key) const {
     return keys.member(object, key, path);
+  }
+  void within(const std::string& field, double x, double lo, double hi) const {
+    if (x >= lo && x <= hi) return;
+    std::ostringstream m;
+    m << x << " is outside the allowed range " << lo << " to " << hi;
+    fail(field, m.str());
   }
   double number(const json::Value& object, const std::string& path, const std::string& key) const {
     return keys.number(member(object, path, key), path + key);
@@ -136,6 +147,7 @@ WeatherSeries parse_weather(const std::string& text, const std::string& source) 
     w.latitude_deg = r.number(root, "", "latitude");
     w.longitude_deg = r.number(root, "", "longitude");
     const double offset = root.find("utc_offset_seconds") ? r.number(root, "", "utc_offset_seconds") : 0.0;
+    r.within("utc_offset_seconds", offset, -max_utc_offset_hours * 3600, max_utc_offset_hours * 3600);
     const json::Value& hourly = root.at("hourly");
     if (!hourly.is_object()) r.fail("hourly", "must be an object");
     times = r.times(hourly, "hourly.", offset);
@@ -163,7 +175,9 @@ WeatherSeries parse_weather(const std::string& text, const std::string& source) 
     const json::Value& metadata = r.member(root, "", "metadata");
     w.latitude_deg = r.number(metadata, "metadata.", "latitude");
     w.longitude_deg = r.number(metadata, "metadata.", "longitude");
-    const double offset = metadata.find("utc_timeoffset") ? r.number(metadata, "metadata.", "utc_timeoffset") * 3600.0 : 0.0;
+    const double offset_hours = metadata.find("utc_timeoffset") ? r.number(metadata, "metadata.", "utc_timeoffset") : 0.0;
+    r.within("metadata.utc_timeoffset", offset_hours, -max_utc_offset_hours, max_utc_offset_hours);
+    const double offset = offset_hours * 3600.0;
     const json::Value& hourly = root.at("data_1h");
     times = r.times(hourly, "data_1h.", offset);
     const size_t n = times.size();
