@@ -11,6 +11,8 @@
 #include <fstream>
 #include <string>
 
+#include "io/scene_files.hpp"
+#include "io/weather_files.hpp"
 #include "apps/cli/device_limits.hpp"
 #include "apps/cli/options.hpp"
 #include "cli_support.hpp"
@@ -69,7 +71,7 @@ TEST_CASE("a bad or empty time in a weather file names the file and the field", 
   for (const char* times : {R"(["2024-02-31T12:00"])", R"([""])", R"(["2024-06-01T12:00+01:00"])"}) {
     INFO(times);
     const std::string message = error_of<regional::WeatherError>(
-        [&] { regional::parse_weather(weather_with_times(times), "station.json"); });
+        [&] { io::parse_weather(weather_with_times(times), "station.json"); });
     CHECK_THAT(message, Catch::StartsWith("station.json: hourly.time[0]: "));
   }
 }
@@ -171,10 +173,10 @@ TEST_CASE("render sizes beyond the driver's image limit are refused naming the o
 }
 
 TEST_CASE("a scene file that is not a regular file or is too large is refused naming it", "[bad-input][scene]") {
-  CHECK_THAT(error_of<regional::SceneError>([] { regional::read_scene_file("/dev/zero"); }),
+  CHECK_THAT(error_of<regional::SceneError>([] { io::read_scene_file("/dev/zero"); }),
              Catch::StartsWith("/dev/zero: not a regular file"));
   TemporaryDirectory dir(true);
-  CHECK_THAT(error_of<regional::SceneError>([&] { regional::read_scene_file(dir.path.string()); }),
+  CHECK_THAT(error_of<regional::SceneError>([&] { io::read_scene_file(dir.path.string()); }),
              Catch::StartsWith(dir.path.string() + ": "));
   const fs::path big = dir.path / "big.json";
   std::ofstream(big) << std::string(17, ' ');
@@ -183,7 +185,7 @@ TEST_CASE("a scene file that is not a regular file or is too large is refused na
   CHECK(core::read_input_file(big.string(), 17).size() == 17);
   const fs::path fifo = dir.path / "fifo.json";
   REQUIRE(mkfifo(fifo.c_str(), 0600) == 0);
-  CHECK_THAT(error_of<regional::WeatherError>([&] { regional::read_weather_file(fifo.string()); }),
+  CHECK_THAT(error_of<regional::WeatherError>([&] { io::read_weather_file(fifo.string()); }),
              Catch::StartsWith(fifo.string() + ": not a regular file"));
 }
 
@@ -200,10 +202,10 @@ TEST_CASE("invalid UTF-8 in scene and weather files is refused naming the file a
   for (const auto& [bytes, offset] : cases) {
     const std::string text = "{\"description\": \"" + bytes + "\"}";
     INFO("offset " << offset);
-    CHECK_THAT(error_of<regional::SceneError>([&] { regional::parse_scene(text, "scene.json", "."); }),
+    CHECK_THAT(error_of<regional::SceneError>([&] { io::parse_scene(text, "scene.json", "."); }),
                Catch::StartsWith("scene.json: ") && Catch::Contains("byte offset " + std::to_string(offset)));
   }
-  CHECK_THAT(error_of<regional::WeatherError>([] { regional::parse_weather("{\"latitude\": \"\xfe\"}", "w.json"); }),
+  CHECK_THAT(error_of<regional::WeatherError>([] { io::parse_weather("{\"latitude\": \"\xfe\"}", "w.json"); }),
              Catch::StartsWith("w.json: ") && Catch::Contains("byte offset 14"));
   // Valid two, three and four byte sequences pass: e acute, euro sign, an emoji.
   CHECK(json::parse("\"\xc3\xa9\xe2\x82\xac\xf0\x9f\x98\x80\"").as_string() == "\xc3\xa9\xe2\x82\xac\xf0\x9f\x98\x80");

@@ -6,6 +6,8 @@
 #include <set>
 #include <string>
 
+#include "io/scene_files.hpp"
+#include "io/weather_files.hpp"
 #include "apps/cli/options.hpp"
 #include "core/json.hpp"
 #include "cli_support.hpp"
@@ -206,7 +208,7 @@ TEST_CASE("scene files refuse every numeric key just outside the range the table
       }
       INFO(text.str());
       try {
-        regional::parse_scene(text.str(), "scene.json", ".");
+        io::parse_scene(text.str(), "scene.json", ".");
         FAIL("accepted");
       } catch (const core::InputError& e) {
         CHECK_THAT(e.what(), Catch::Contains(key));

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "io/scene_files.hpp"
+#include "io/weather_files.hpp"
 #include "core/time.hpp"
 #include "gl_support.hpp"
 #include "regional/scene.hpp"
@@ -164,12 +166,12 @@ TEST_CASE("a scene with weather files does not generate the global cover and one
   scene.time = "2026-06-21T15:00Z";
   scene.weather = {std::string(NEPHELE_SOURCE_DIR) + "/scenes/weather/bern-summer.json",
                    std::string(NEPHELE_SOURCE_DIR) + "/scenes/weather/solothurn-summer.json"};
-  const auto with_weather = render::render_scene(scene);
+  const auto with_weather = render::render_scene(scene, io::read_scene_weather(scene));
   CHECK_FALSE(contains(with_weather.passes, "global_cover"));
   CHECK(contains(with_weather.passes, "weather_field (2 stations)"));
   CHECK(contains(with_weather.passes, "march layer cumulus"));
   scene.weather.clear();
-  const auto from_cover = render::render_scene(scene);
+  const auto from_cover = render::render_scene(scene, io::read_scene_weather(scene));
   CHECK(with_weather.passes.front() != from_cover.passes.front());
   CHECK(from_cover.passes.front() == "global_cover");
   CHECK(contains(from_cover.passes, "weather_field (global cover)"));

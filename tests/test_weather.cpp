@@ -4,6 +4,8 @@
 #include <GeographicLib/Geodesic.hpp>
 #include <GeographicLib/GeodesicLine.hpp>
 
+#include "io/scene_files.hpp"
+#include "io/weather_files.hpp"
 #include "core/time.hpp"
 #include "regional/cloud_layers.hpp"
 #include "regional/weather.hpp"
@@ -26,7 +28,7 @@ std::string open_meteo(const std::string& low = "[10, 20, 30]", const std::strin
 
 std::string error_of(const std::string& text) {
   try {
-    parse_weather(text, "test.json");
+    io::parse_weather(text, "test.json");
   } catch (const WeatherError& e) {
     return e.what();
   }
@@ -53,7 +55,7 @@ bool has(const std::vector<CloudLayer>& layers, CloudType type) {
 }  // namespace
 
 TEST_CASE("Open-Meteo hourly data are read with units converted and interpolated in time", "[weather]") {
-  const WeatherSeries w = parse_weather(open_meteo(), "bern.json");
+  const WeatherSeries w = io::parse_weather(open_meteo(), "bern.json");
   CHECK(w.format == "open-meteo");
   REQUIRE(w.hours.size() == 3);
   CHECK(w.hours[1].cloud_low == Approx(0.2));
@@ -66,7 +68,7 @@ TEST_CASE("Open-Meteo hourly data are read with units converted and interpolated
 }
 
 TEST_CASE("meteoblue data are read from data_1h with the metadata position", "[weather]") {
-  const WeatherSeries w = read_weather_file(std::string(NEPHELE_SOURCE_DIR) + "/scenes/weather/fribourg-meteoblue.json");
+  const WeatherSeries w = io::read_weather_file(std::string(NEPHELE_SOURCE_DIR) + "/scenes/weather/fribourg-meteoblue.json");
   CHECK(w.format == "meteoblue");
   CHECK(w.latitude_deg == Approx(46.8));
   CHECK(w.hours.front().cloud_mid == Approx(0.7));
@@ -81,7 +83,7 @@ TEST_CASE("bad weather input names the file and the field", "[weather]") {
              Catch::Contains("hourly.cloud_cover") && Catch::Contains("missing"));
   CHECK_THAT(error_of("{\"hourly\": 3"), Catch::Contains("not valid JSON"));
   CHECK_THAT(error_of(R"({"a": 1})"), Catch::Contains("neither an Open-Meteo file"));
-  const WeatherSeries w = parse_weather(open_meteo(), "bern.json");
+  const WeatherSeries w = io::parse_weather(open_meteo(), "bern.json");
   try {
     w.at(core::parse_utc_time("2026-06-22T00:00Z"));
     FAIL("no error");

@@ -40,9 +40,7 @@ struct Scene {
   std::vector<std::string> outputs;          // file names (png, exr); --scene renders into --out DIR
 };
 
-// Reads a scene file; unknown keys and wrong types are errors naming the key.
-Scene read_scene_file(const std::string& path);
-Scene parse_scene(const std::string& json_text, const std::string& source_name, const std::string& base_directory);
+// Scene files are read by src/io/scene_files.hpp.
 // Which option set a scene key ("view" -> "--view"): errors about that key name the option the
 // user typed instead of the key of a file they did not write. Keys: view, at, heading, pitch,
 // fov, time, size, weather, view_steps, light_steps, exposure, seed.

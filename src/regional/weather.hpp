@@ -1,5 +1,5 @@
 #pragma once
-// Hourly weather of one station, read from Open-Meteo or meteoblue JSON.
+// Hourly weather of one station (read from Open-Meteo or meteoblue JSON by src/io/weather_files).
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -36,8 +36,6 @@ struct WeatherSeries {
   std::vector<WeatherSample> ahead(double time, double horizon_hours) const;
 };
 
-// Reads either format (recognised by its keys); throws WeatherError naming file and field.
-WeatherSeries read_weather_file(const std::string& path);
-WeatherSeries parse_weather(const std::string& json_text, const std::string& source_name);
+// The files are read by src/io/weather_files.hpp.
 
 }  // namespace nephele::regional

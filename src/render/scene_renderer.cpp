@@ -6,6 +6,7 @@
 #include <limits>
 #include <map>
 #include <memory>
+#include <stdexcept>
 
 #include "cover/global_cover.hpp"
 #include "regional/sites.hpp"
@@ -45,7 +46,10 @@ Camera camera_of(const regional::Scene& scene) {
 
 }  // namespace
 
-PreparedScene prepare_scene(const regional::Scene& scene) {
+PreparedScene prepare_scene(const regional::Scene& scene, const std::vector<regional::WeatherSeries>& weather) {
+  if (weather.size() != scene.weather.size())
+    throw std::logic_error("prepare_scene: " + std::to_string(weather.size()) + " weather series for " +
+                           std::to_string(scene.weather.size()) + " files");
   PreparedScene prepared;
   SceneRender& out = prepared.partial;
   out.camera = camera_of(scene);
@@ -55,14 +59,13 @@ PreparedScene prepare_scene(const regional::Scene& scene) {
   glm::dvec2& wind = prepared.wind;
   double& wind_speed = prepared.wind_speed;
 
-  if (!scene.weather.empty()) {
+  if (!weather.empty()) {
     std::vector<regional::Station> stations;
     std::vector<regional::WeatherSample> now;
     std::vector<std::vector<regional::WeatherSample>> ahead;
     size_t nearest = 0;
     double nearest_distance = std::numeric_limits<double>::max();
-    for (const auto& path : scene.weather) {
-      const regional::WeatherSeries series = regional::read_weather_file(path);
+    for (const regional::WeatherSeries& series : weather) {
       now.push_back(series.at(time));
       ahead.push_back(series.ahead(time, look_ahead_hours));
       stations.push_back({series.latitude_deg, series.longitude_deg,
@@ -120,6 +123,8 @@ SceneRender render_prepared(const PreparedScene& prepared, const regional::Scene
   return out;
 }
 
-SceneRender render_scene(const regional::Scene& scene) { return render_prepared(prepare_scene(scene), scene); }
+SceneRender render_scene(const regional::Scene& scene, const std::vector<regional::WeatherSeries>& stations) {
+  return render_prepared(prepare_scene(scene, stations), scene);
+}
 
 }  // namespace nephele::render

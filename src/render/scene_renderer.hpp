@@ -29,12 +29,14 @@ struct PreparedScene {
 };
 
 // Need a current OpenGL 4.5 context. Throw regional::WeatherError / SceneError for bad input.
-PreparedScene prepare_scene(const regional::Scene& scene);
+// `stations`: the weather of the scene's files (io::read_scene_weather), one per file in its
+// order; empty when the scene names none (the global cover is then the weather).
+PreparedScene prepare_scene(const regional::Scene& scene, const std::vector<regional::WeatherSeries>& stations);
 // The march of a prepared scene with the scene's step counts and seed (its camera and weather
 // come from `prepared`); `noise` as in render_clouds.
 RenderSettings render_settings(const regional::Scene& scene);
 SceneRender render_prepared(const PreparedScene& prepared, const regional::Scene& scene,
                             const NoiseVolume* noise = nullptr);
-SceneRender render_scene(const regional::Scene& scene);
+SceneRender render_scene(const regional::Scene& scene, const std::vector<regional::WeatherSeries>& stations);
 
 }  // namespace nephele::render

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <iostream>
 
+#include "io/weather_files.hpp"
 #include "render/scene_renderer.hpp"
 
 namespace nephele::studies {
@@ -42,7 +43,7 @@ std::vector<RenderErrorRow> render_error_sweep(const regional::Scene& scene, con
   base.height = options.height;
   // The weather and the noise volume do not depend on the step counts: made once, shared by
   // every render of the sweep.
-  const PreparedScene prepared = render::prepare_scene(base);
+  const PreparedScene prepared = render::prepare_scene(base, io::read_scene_weather(base));
   const RenderSettings settings = render::render_settings(base);
   const NoiseVolume noise(settings.noise_size, settings.seed);
   regional::Scene reference_scene = base;

@@ -1,3 +1,5 @@
+#include "io/scene_files.hpp"
+#include "io/weather_files.hpp"
 #include "fuzz_targets.hpp"
 
 #include <cmath>
@@ -70,7 +72,7 @@ void time_input(const std::uint8_t* data, std::size_t size) {
 
 void scene_input(const std::uint8_t* data, std::size_t size) {
   try {
-    const regional::Scene scene = regional::parse_scene(text_of(data, size), "fuzz-scene.json", "base");
+    const regional::Scene scene = io::parse_scene(text_of(data, size), "fuzz-scene.json", "base");
     regional::validate_scene(scene, "fuzz-scene.json");  // an accepted scene stays valid
   } catch (const regional::SceneError&) {
   }
@@ -79,7 +81,7 @@ void scene_input(const std::uint8_t* data, std::size_t size) {
 void weather_input(const std::uint8_t* data, std::size_t size) {
   regional::WeatherSeries series;
   try {
-    series = regional::parse_weather(text_of(data, size), "fuzz-weather.json");
+    series = io::parse_weather(text_of(data, size), "fuzz-weather.json");
   } catch (const regional::WeatherError&) {
     return;
   }

@@ -20,8 +20,8 @@ class Finding : public std::logic_error {
 
 void json_input(const std::uint8_t* data, std::size_t size);     // core::json parse/write
 void time_input(const std::uint8_t* data, std::size_t size);     // core::parse_utc_time
-void scene_input(const std::uint8_t* data, std::size_t size);    // regional::parse_scene
-void weather_input(const std::uint8_t* data, std::size_t size);  // regional::parse_weather
+void scene_input(const std::uint8_t* data, std::size_t size);    // io::parse_scene
+void weather_input(const std::uint8_t* data, std::size_t size);  // io::parse_weather
 
 struct Target {
   const char* name;  // also the folder of its seed corpus, tests/fuzz/corpus/<name>/

@@ -14,6 +14,8 @@
 #include "regional/scene.hpp"
 #include "regional/weather.hpp"
 #include "io/render_files.hpp"
+#include "io/scene_files.hpp"
+#include "io/weather_files.hpp"
 #include "render/scene_renderer.hpp"
 
 namespace nephele::cli {
@@ -71,7 +73,7 @@ int run_render(const std::vector<std::string>& arguments) {
   // The keys set by options: their errors name the option the user typed, not a scene key.
   regional::KeyOptions typed;
   try {
-    if (!scene_file.empty()) scene = regional::read_scene_file(scene_file);
+    if (!scene_file.empty()) scene = io::read_scene_file(scene_file);
     if (!view.empty()) {
       scene.view = view;
       scene.latitude_deg.reset();
@@ -152,7 +154,7 @@ int run_render(const std::vector<std::string>& arguments) {
   // Weather (with the global cover when no files are given), the march, the files.
   core::Progress progress("render", 3, core::Progress::for_stderr(quiet));
   progress.update(0, "weather");
-  const render::PreparedScene prepared = render::prepare_scene(scene);
+  const render::PreparedScene prepared = render::prepare_scene(scene, io::read_scene_weather(scene));
   progress.update(1, "clouds");
   const render::SceneRender result = render::render_prepared(prepared, scene);
   progress.update(2, "writing files");
