@@ -10,15 +10,47 @@
 #include "cube_fields.hpp"
 #include "gl_support.hpp"
 #include "shader_math/shader_math.hpp"
+#include "tolerances.hpp"
 
 using namespace nephele;
 using namespace nephele::glsl;
 
 using test::as_vec4;
 using test::index;
+using test::kDirection;
+using test::kFractionSum;
+using test::kOperationRounding;
+using test::kOperationsPerEvaluation;
+using test::kTangentRelative;
+using test::kUlp;
+using test::kUnitLength;
 using test::velocity_lipschitz;
 
 namespace {
+
+// Density on the GPU against cover_density on the CPU at the same warped point: normalize differs
+// by about 4 x 2^-24 relative (inversesqrt's 2 ulp, the dot product's fused additions), which
+// moves octave k's lattice point p f_k by 2.4e-7 f_k and F1 (1-Lipschitz) as much; with the
+// default density octaves (frequency 3, 6 octaves, lacunarity 2, gain 0.5: a_k f_k = 3 each,
+// sum a_k = 1.97) the weighted mean moves by 18 x 2.4e-7 / 1.97 = 2.2e-6, and each octave's F1
+// differs by kF1 (1e-6, test_shader_probes.cpp): 3.2e-6; 1e-5 leaves a factor 3.
+constexpr double kDensity = 1.0e-5;
+static_assert(kDensity >= 18 * 4 * kUlp / 1.97 + 1.0e-6);
+// cover_from_density at the same density on both sides: one subtraction and the division
+// (GLSL: 2.5 ulp) of values in [0, 1], plus the span's subtraction: about 4 x 2^-24 = 2.4e-7;
+// 1e-6 leaves a factor 4.
+constexpr double kCoverRemap = 1.0e-6;
+static_assert(kCoverRemap >= 4 * kUlp);
+// The achieved cloudy fraction is within one texel's share of the target (the calibration
+// walks texel by texel); the slack on top of that is 1e-9, far looser than the double sums'
+// rounding kFractionSum (1e-12) that it needs to absorb (kept as set).
+constexpr double kFractionSlack = 1.0e-9;
+static_assert(kFractionSlack >= kFractionSum);
+// Seams: the mean |difference| of texels one texel apart across face edges against that inside
+// faces; both are means over different sets of the same kind of neighbours, so they differ by
+// sampling alone; 1.5 is empirical (a ratio, not a rounding bound; a real seam adds a jump of
+// the order of the cover's range, far more).
+constexpr double kSeamMeanRatio = 1.5;
 
 cover::CoverParameters small(int size, int iterations = 50) {
   cover::CoverParameters p;
@@ -38,8 +70,8 @@ TEST_CASE("identity pass writes the unit direction of every texel centre", "[pas
     for (int j = 0; j < 16; ++j)
       for (int i = 0; i < 16; ++i) {
         const vec3 w = vec3(identity[index(16, face, i, j)]);
-        REQUIRE(length(w - texel_direction(face, i, j, 16)) < 1e-6f);
-        REQUIRE(std::abs(length(w) - 1.0f) < 1e-6f);
+        REQUIRE(length(w - texel_direction(face, i, j, 16)) < kDirection);
+        REQUIRE(std::abs(length(w) - 1.0f) < kUnitLength);
       }
 }
 
@@ -57,7 +89,7 @@ TEST_CASE("curl pass agrees with the CPU twin and its vectors are tangent", "[pa
     const vec3 cpu = curl_velocity(n, c);
     const vec3 gpu = vec3(curl[k]);
     REQUIRE(length(gpu - cpu) < test::curl_rounding_bound(n, c));
-    REQUIRE(std::abs(dot(gpu, n)) < 1e-6f * (1.0f + length(gpu)));
+    REQUIRE(std::abs(dot(gpu, n)) < kTangentRelative * (1.0f + length(gpu)));
   }
 }
 
@@ -77,14 +109,15 @@ TEST_CASE("warp pass agrees with the CPU twin within the growth of rounding erro
     // earlier error grows at most by (1 + h L) per step, L the sampled field's Lipschitz bound
     // (bilinear within a texel: rate of change between texel centres, doubled for the seams).
     const double L = 2.0 * velocity_lipschitz(curl, p.size);
-    const double tolerance = 8 * 2.4e-7 * iterations * std::pow(1 + p.step * L, iterations);
+    const double tolerance =
+        kOperationsPerEvaluation * kOperationRounding * iterations * std::pow(1 + p.step * L, iterations);
     INFO("K = " << iterations << ", L = " << L << ", tolerance " << tolerance);
     double worst = 0;
     for (size_t k = 0; k < warp.size(); ++k) {
       const vec3 cpu = integrate_warp(vec3(identity[k]), p.iterations, p.step, source);
       const vec3 gpu = vec3(warp[k]);
       worst = std::max(worst, static_cast<double>(length(gpu - cpu)));
-      REQUIRE(std::abs(length(gpu) - 1.0f) < 1e-6f);  // warped points stay on the unit sphere
+      REQUIRE(std::abs(length(gpu) - 1.0f) < kUnitLength);  // warped points stay on the unit sphere
     }
     INFO("largest difference " << worst);
     CHECK(worst <= tolerance);
@@ -102,8 +135,8 @@ TEST_CASE("density and coverage passes agree with the CPU twin", "[pass]") {
   const FbmParams params = cover::density_params(p);
   const auto& c = cover.calibration();
   for (size_t k = 0; k < density.size(); ++k) {
-    REQUIRE(density[k] == Approx(cover_density(vec3(warp[k]), params)).margin(1e-5));
-    REQUIRE(covered[k] == Approx(cover_from_density(density[k], c.threshold, c.density_max)).margin(1e-6));
+    REQUIRE(density[k] == Approx(cover_density(vec3(warp[k]), params)).margin(kDensity));
+    REQUIRE(covered[k] == Approx(cover_from_density(density[k], c.threshold, c.density_max)).margin(kCoverRemap));
   }
 }
 
@@ -121,8 +154,8 @@ TEST_CASE("cover lies between 0 and 1 with the calibrated cloudy fraction", "[pa
     }
     const double fraction = cover::cloudy_fraction(covered, p.size);
     INFO("coverage " << coverage << " achieved " << fraction);
-    CHECK(std::abs(fraction - coverage) <= cover.calibration().max_texel_fraction + 1e-9);
-    CHECK(fraction == Approx(cover.calibration().achieved_fraction).margin(1e-12));
+    CHECK(std::abs(fraction - coverage) <= cover.calibration().max_texel_fraction + kFractionSlack);
+    CHECK(fraction == Approx(cover.calibration().achieved_fraction).margin(kFractionSum));
   }
 }
 
@@ -161,7 +194,7 @@ TEST_CASE("the cover has no seams: differences across face edges are like those 
   const double interior_mean = interior_sum / interior_count, seam_mean = seam_sum / seam_count;
   INFO("mean difference inside " << interior_mean << ", across edges " << seam_mean);
   // Both are means of |difference| of texels one texel apart; a seam would add a jump.
-  CHECK(seam_mean <= 1.5 * interior_mean);
+  CHECK(seam_mean <= kSeamMeanRatio * interior_mean);
   CHECK(seam_max <= interior_max);
 }
 

@@ -7,10 +7,30 @@
 #include "cover/cover_parameters.hpp"
 #include "curl_bounds.hpp"
 #include "shader_math/shader_math.hpp"
+#include "tolerances.hpp"
 
 using namespace nephele::glsl;
+using nephele::test::kFbmValueRounding;
+using nephele::test::kTangentRelative;
 
 namespace {
+
+// The midpoint rule's flux error is O(ds) per Voronoi border crossed (where v jumps), so the
+// relative flux is below C / M for M samples; C = 20 is empirical (it depends on how many borders
+// a loop crosses and how large the jumps are against the mean speed, not derived).
+constexpr double kFluxTimesSamples = 20.0;
+// Points whose one-sided differences disagree by more than this straddle a Voronoi border and
+// are skipped: a choice (empirical, it keeps more than 1000 of the 2000 points), not a bound.
+constexpr double kStreamKinkGap = 0.05;
+// Zonal flow without noise (defaults s = 0.5, P = 0.5, a = 2.5, so |u| <= s P a = 0.625): the
+// latitude from portable_asin errs by kPortableAsin (5.2e-7), which moves u = -s P a cos(a lat)
+// by s P a^2 x that = 8.1e-7; the float directions n and east (half an ulp per component) and
+// the cross product's few ulp of 0.625 add about 5e-7: 1.3e-6 in all; 1e-5 leaves a factor 7.
+constexpr float kZonalWind = 1.0e-5f;
+static_assert(kZonalWind >= 0.5 * 0.5 * 2.5 * 2.5 * nephele::test::kPortableAsin + 8 * 0.625 * nephele::test::kUlp);
+// At a pole n = (0, 0, +-1): the latitude term is dropped and v.z = s (n.x g.y - n.y g.x) is
+// exactly zero (products with zero, fused or not). Exact; the margin only guards the check.
+constexpr float kPoleVertical = 1.0e-6f;
 
 vec3 random_unit(std::mt19937& rng) {
   std::normal_distribution<float> g;
@@ -47,7 +67,7 @@ TEST_CASE("curl vectors are tangent to the sphere", "[curl]") {
     const vec3 n = random_unit(rng);
     const vec3 v = curl_velocity(n, c);
     // cross(n, g) . n vanishes up to float rounding of |g|.
-    REQUIRE(std::abs(dot(v, n)) <= 1e-6f * (1.0f + length(v)));
+    REQUIRE(std::abs(dot(v, n)) <= kTangentRelative * (1.0f + length(v)));
   }
 }
 
@@ -77,7 +97,7 @@ TEST_CASE("the curl field is divergence-free: its flux through closed loops vani
       }
       const double relative = std::abs(flux) / magnitude;
       INFO("loop " << loop << " samples " << samples << " relative flux " << relative);
-      CHECK(relative < 20.0 / samples);
+      CHECK(relative < kFluxTimesSamples / samples);
       previous_relative = relative;
     }
     (void)previous_relative;
@@ -104,13 +124,13 @@ TEST_CASE("curl_velocity equals s n x grad phi of the documented stream function
       gradient[a] = (plus - minus) / (2 * h);
       gap = std::max(gap, std::abs((plus - f0) - (f0 - minus)) / h);
     }
-    if (gap > 0.05) continue;
+    if (gap > kStreamKinkGap) continue;
     ++compared;
     const vec3 expected = vec3(glm::cross(dvec3(n), gradient));
     const vec3 actual = curl_velocity(n, c);
     // Truncation: central differences of |p - feature| err by (h f_k / F1_k)^2 per octave;
-    // rounding: phi is evaluated to ~1e-7, divided by 2h.
-    const float tolerance = 1e-7f / h + static_cast<float>(gap) + nephele::test::curl_octave_bound(n, c, [&](float f, float f1) {
+    // rounding: phi is evaluated to ~1e-7 (kFbmValueRounding), twice, divided by 2h.
+    const float tolerance = kFbmValueRounding / h + static_cast<float>(gap) + nephele::test::curl_octave_bound(n, c, [&](float f, float f1) {
       return 2.0f * (h * f / f1) * (h * f / f1);
     });
     REQUIRE(length(actual - expected) < tolerance);
@@ -130,8 +150,8 @@ TEST_CASE("without noise the flow is the zonal wind u = -s P m'(lat)", "[curl]")
       const double u = -c.strength * c.prevailing * c.mix_frequency * std::cos(c.mix_frequency * lat);
       const vec3 v = curl_velocity(n, c);
       INFO("lat " << latitude_deg << " lon " << longitude_deg);
-      CHECK(dot(v, east) == Approx(u).margin(1e-5));
-      CHECK(length(v - static_cast<float>(u) * east) < 1e-5f);
+      CHECK(dot(v, east) == Approx(u).margin(kZonalWind));
+      CHECK(length(v - static_cast<float>(u) * east) < kZonalWind);
     }
   }
   // With P > 0 the trade winds blow from the east in both tropics (u < 0 at the equator) and
@@ -147,6 +167,6 @@ TEST_CASE("the curl field is finite at the poles", "[curl][extreme]") {
     CHECK(std::isfinite(v.x));
     CHECK(std::isfinite(v.y));
     CHECK(std::isfinite(v.z));
-    CHECK(std::abs(v.z) < 1e-6f);
+    CHECK(std::abs(v.z) < kPoleVertical);
   }
 }

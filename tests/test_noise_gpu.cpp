@@ -21,6 +21,7 @@
 #include "noise/noise_texture.hpp"
 #include "shader_math/shader_math.hpp"
 #include "core/json.hpp"
+#include "tolerances.hpp"
 
 namespace fs = std::filesystem;
 using namespace nephele;
@@ -47,10 +48,35 @@ noise::TextureSpec spec_of(int w, int h, int d, noise::NoiseType type, int cells
   return spec;
 }
 
+using nephele::test::kUlp;
+
+// Perlin noise at points up to 30 (no frequency: the fraction p - floor(p) is exact on both
+// sides): the same float operations except that the GPU may contract a * b + c, which changes
+// a result by at most one rounding; perlin.glsl chains at most 16 such operations (fade 5,
+// weights 2, dot products and sums 5, the mixes 4; kPerlin of test_library_probes.cpp) on
+// values below 2 (2^-23 each): 1.9e-6; 2e-6. Tighter than test_library_probes' kPerlin, which
+// also allows GLSL's division error (perlin_noise divides nothing).
+constexpr double kPerlinGpu = 2.0e-6;
+static_assert(kPerlinGpu >= 16 * 2 * kUlp);
+
 // GPU and CPU run the same float operations except that the GPU may fuse a * b + c: a few
-// rounding steps of 2^-24 on values below 4 through at most ~30 operations per octave, and the
-// final divisions by sums of amplitudes >= 1 do not amplify them.
-constexpr float gpu_tolerance = 1e-5f;
+// rounding steps of 2^-24 on values below 4 through at most ~30 operations per octave
+// (30 x 4 x 2^-24 = 7.2e-6), and the final divisions by sums of amplitudes >= 1 do not amplify
+// them: 1e-5.
+constexpr float kTextureGpu = 1e-5f;
+static_assert(kTextureGpu >= 30 * 4 * kUlp);
+// An 8-bit PNG holds round(255 v) / 255: half a quantisation step from the (GPU) value, which is
+// within kTextureGpu of the CPU twin's.
+constexpr double kPng8 = 0.5 / 255 + 1e-5;
+static_assert(kPng8 >= 0.5 / 255 + kTextureGpu);
+// A 16-bit PNG against the float EXR of the same texture: half a step of 1/65535, plus the
+// float roundings of v 65535 when writing and q / 65535 when reading (2 x 2^-24 of values
+// below 1, 1.2e-7); 1e-6 leaves a factor 8.
+constexpr double kPng16 = 0.5 / 65535 + 1e-6;
+static_assert(kPng16 >= 0.5 / 65535 + 2 * kUlp);
+// The sidecar's range minimum, from the GPU values, against the CPU twin's minimum: kTextureGpu.
+constexpr double kRangeMinimum = 1e-5;
+static_assert(kRangeMinimum >= kTextureGpu);
 
 }  // namespace
 
@@ -68,8 +94,8 @@ TEST_CASE("perlin noise on the GPU agrees with the CPU", "[probe][noise]") {
                                inputs);
   for (size_t k = 0; k < inputs.size(); ++k) {
     // Same operations up to fused multiply-adds: a few ulp of terms below 2.
-    REQUIRE(gpu[k].x == Approx(perlin_noise(vec3(inputs[k]), ivec3(7, 3, 5), key)).margin(2e-6));
-    REQUIRE(gpu[k].y == Approx(perlin_noise(vec3(inputs[k]), ivec3(0), key)).margin(2e-6));
+    REQUIRE(gpu[k].x == Approx(perlin_noise(vec3(inputs[k]), ivec3(7, 3, 5), key)).margin(kPerlinGpu));
+    REQUIRE(gpu[k].y == Approx(perlin_noise(vec3(inputs[k]), ivec3(0), key)).margin(kPerlinGpu));
   }
 }
 
@@ -95,7 +121,7 @@ TEST_CASE("the GPU texture generator agrees with its CPU twin for every channel 
     REQUIRE(gpu.values.size() == cpu.values.size());
     for (size_t k = 0; k < cpu.values.size(); ++k) {
       INFO(noise::type_name(spec.channels[0].type) << " value " << k);
-      REQUIRE(gpu.values[k] == Approx(cpu.values[k]).margin(gpu_tolerance));
+      REQUIRE(gpu.values[k] == Approx(cpu.values[k]).margin(kTextureGpu));
     }
   }
   // Some segments had texels with F1 > 1, so the patch pass ran and agreed as well.
@@ -223,8 +249,8 @@ TEST_CASE("nephele noise writes the slice atlas and a sidecar that describes it"
   const float lo = static_cast<float>(channel.at("range").at("min").as_number());
   for (int z = 0; z < 4; ++z)
     for (int y = 0; y < 8; ++y)
-      for (int x = 0; x < 16; ++x) REQUIRE(image.pixels[y * 64 + z * 16 + x] == Approx(cpu.at(x, y, z, 0)).margin(0.5 / 255 + 1e-5));
-  CHECK(lo == Approx(*std::min_element(cpu.values.begin(), cpu.values.end())).margin(1e-5));
+      for (int x = 0; x < 16; ++x) REQUIRE(image.pixels[y * 64 + z * 16 + x] == Approx(cpu.at(x, y, z, 0)).margin(kPng8));
+  CHECK(lo == Approx(*std::min_element(cpu.values.begin(), cpu.values.end())).margin(kRangeMinimum));
 }
 
 TEST_CASE("nephele noise writes float EXR atlases 16 bit PNGs and raw volumes", "[cli][noise]") {
@@ -255,7 +281,7 @@ TEST_CASE("nephele noise writes float EXR atlases 16 bit PNGs and raw volumes", 
   const Run png16 = run("noise" + common + " --bits 16 --out " + (out.path / "t16.png").string());
   REQUIRE(png16.exit_code == 0);
   const auto deep = io::read_image(out.path / "t16.png");
-  for (size_t k = 0; k < deep.pixels.size(); ++k) REQUIRE(deep.pixels[k] == Approx(image.pixels[k]).margin(0.5 / 65535 + 1e-6));
+  for (size_t k = 0; k < deep.pixels.size(); ++k) REQUIRE(deep.pixels[k] == Approx(image.pixels[k]).margin(kPng16));
 }
 
 TEST_CASE("stretch maps each channel's range onto 0 to 1 and records the range before", "[cli][noise]") {

@@ -13,6 +13,7 @@
 #include "gl_support.hpp"
 #include "cover/integrators.hpp"
 #include "shader_math/shader_math.hpp"
+#include "tolerances.hpp"
 
 using namespace nephele;
 using namespace nephele::glsl;
@@ -20,11 +21,51 @@ using cover::CurlMode;
 using cover::Integrator;
 
 using test::as_vec4;
+using test::kUlp;
+using test::kUnitLength;
 
 namespace {
 
+// At a pole the latitude term is multiplied by north = 0, so the velocity does not depend on
+// the prevailing winds at all: exact (0 x finite = 0); 1e-6 only guards the check.
+constexpr float kPoleIndependent = 1e-6f;
+// On the feature point q (|q| < 3.5): n = q / |q| scaled back by the frequency |q| is q up to
+// the length's, the division's and the product's roundings (3 ulp of 3.5 per component, 2^-24
+// x 4 each): sqrt(3) x 3 x 4 x 2^-24 = 1.2e-6 from the feature point, F1 as much; 1e-5 leaves a
+// factor 8.
+constexpr float kOnFeaturePoint = 1e-5f;
+static_assert(kOnFeaturePoint >= 1.7321f * 3 * 4 * kUlp);
+// On a Voronoi border the velocity is one of the two one-sided limits (1e-3 cells either side):
+// within 5% of their difference plus 1e-3 absolute, for the smooth change over those 1e-3
+// cells. Empirical (the share and the floor are not derived).
+constexpr float kOneSidedShare = 0.05f;
+constexpr float kOneSidedFloor = 1e-3f;
+// Zero flow: each step renormalises a unit vector, moving it by at most about 1.5 ulp per
+// component (the multiplier's rounding), sqrt(3) x 1.5 x 2 x 2^-24 = 3.1e-7 with fused
+// differences; 4.8e-7 (8 x 2^-24 rounded up) per step.
+constexpr float kRenormalisePerStep = 4.8e-7f;
+static_assert(kRenormalisePerStep >= 8 * kUlp);
+// The reduced noise offset (below the period, < 4 radii) against fmod in double rounded to float:
+// at most one float rounding of values below 4 apart (an ulp, 2^-22 = 2.4e-7, if the double sum
+// 1e6 + 7 period rounds the remainder across a float boundary); 1e-6 covers 2 ulp. The comment
+// "to the last bit" below is what happens; the check allows 2 ulp.
+constexpr float kReducedOffset = 1e-6f;
+// The sampled velocity at a corner, a convex combination of texels, against the worst texel:
+// the weights and the mixes round by a few ulp of speeds below 4 (4 x 2^-24 x 4 = 9.5e-7):
+// 1e-6 (only just; partly empirical, the speeds near the corners are not checked).
+constexpr float kConvexCombination = 1e-6f;
+static_assert(kConvexCombination >= 4 * 4 * kUlp);
+// 100000 tiny steps: the rounding of W + h v (half an ulp of 1 per component, 2^-24, in the
+// same direction for many consecutive steps) and the normalisation add up linearly: at most
+// about 1e-7 per step (the test's comment; strictly sqrt(3) x 2^-24 = 1.03e-7 if all three
+// components round the same way, 3% above the value used; measured: 1e-3 over 1e5 steps, 1e-8
+// per step, so the check has a factor 10 in practice).
+constexpr float kDriftPerStep = 1e-7f;
+static_assert(kDriftPerStep >= kUlp);
+static_assert(kReducedOffset >= 2 * 4 * kUlp);
+
 bool on_sphere(vec3 w) {
-  return std::isfinite(w.x) && std::isfinite(w.y) && std::isfinite(w.z) && std::abs(length(w) - 1.0f) <= 1e-6f;
+  return std::isfinite(w.x) && std::isfinite(w.y) && std::isfinite(w.z) && std::abs(length(w) - 1.0f) <= kUnitLength;
 }
 
 // Warps `points` with the GPU warp pass's shader of `cover` (the start texture holds them).
@@ -128,7 +169,7 @@ TEST_CASE("extreme: warps starting at the poles stay finite and on the sphere", 
   CurlParams c = cover::curl_params(p);
   const vec3 v = curl_velocity(poles[0], c);
   c.prevailing = 7.0f;
-  CHECK(length(curl_velocity(poles[0], c) - v) < 1e-6f);
+  CHECK(length(curl_velocity(poles[0], c) - v) < kPoleIndependent);
 }
 
 TEST_CASE("extreme: warps starting at cube corners and on face edges stay finite and on the sphere",
@@ -161,7 +202,7 @@ TEST_CASE("extreme: warps starting at cube corners and on face edges stay finite
             worst_texel = std::max(worst_texel, length(vec3(curl[(static_cast<size_t>(face) * n + j) * n + i]) - exact));
     const vec3 sampled = flow_velocity(corner, CubeSource{n, curl.data()});
     INFO("corner " << k);
-    CHECK(length(sampled - exact) <= worst_texel + 1e-6f);
+    CHECK(length(sampled - exact) <= worst_texel + kConvexCombination);
   }
 }
 
@@ -184,14 +225,14 @@ TEST_CASE("extreme: warps starting exactly on Worley feature points and cell bor
     INFO("F1 at the start " << f1.w);
     check_every_variant(p, {n});
     if (q == q1) {
-      CHECK(f1.w < 1e-5f);  // on the feature point: the gradient is singular (zero at F1 = 0)
+      CHECK(f1.w < kOnFeaturePoint);  // on the feature point: the gradient is singular (zero at F1 = 0)
     } else {
       // On the border the gradient jumps; the velocity is one of the two one-sided limits.
       const CurlParams c = cover::curl_params(p);
       const vec3 across = normalize(q2 - q1) * (1e-3f / f.frequency);
       const vec3 v = curl_velocity(n, c);
       const vec3 left = curl_velocity(normalize(n - across), c), right = curl_velocity(normalize(n + across), c);
-      CHECK(std::min(length(v - left), length(v - right)) < 0.05f * length(left - right) + 1e-3f);
+      CHECK(std::min(length(v - left), length(v - right)) < kOneSidedShare * length(left - right) + kOneSidedFloor);
     }
   }
 }
@@ -203,7 +244,7 @@ TEST_CASE("extreme: zero flow leaves every point where it is", "[numerics][extre
   for (const auto& r : results)
     for (size_t k = 0; k < r.warp.size(); ++k) {
       // Each step renormalises a unit vector: at most a few ulp per step.
-      REQUIRE(length(vec3(r.warp[k]) - vec3(r.identity[k])) <= p.iterations * 4.8e-7f);
+      REQUIRE(length(vec3(r.warp[k]) - vec3(r.identity[k])) <= p.iterations * kRenormalisePerStep);
       if (r.parameters.integrator == Integrator::adaptive) REQUIRE(std::abs(r.warp[k].w) <= 4.0f);  // steps grow 5x
     }
 }
@@ -239,7 +280,7 @@ TEST_CASE("extreme: zero steps are the identity and huge step counts converge", 
     for (size_t k = 0; k < warp.size(); ++k) {
       INFO(cover::integrator_name(integrator) << " texel " << k);
       REQUIRE(on_sphere(vec3(warp[k])));
-      CHECK(length(vec3(warp[k]) - vec3(expected[k])) < huge.iterations * 1e-7f);
+      CHECK(length(vec3(warp[k]) - vec3(expected[k])) < huge.iterations * kDriftPerStep);
     }
   }
   // Huge steps: one step of h = 10 is finite and on the sphere, though not accurate.
@@ -288,11 +329,11 @@ TEST_CASE("extreme: far-away noise offsets keep float precision through the peri
   const vec3 reduced = cover::potential_offset(far);
   CHECK(reduced.x >= 0.0f);
   CHECK(reduced.x < period);
-  CHECK(std::abs(reduced.x - static_cast<float>(std::fmod(1e6, period))) < 1e-6f);
+  CHECK(std::abs(reduced.x - static_cast<float>(std::fmod(1e6, period))) < kReducedOffset);
   // One period further is the same noise, to the last bit.
   cover::CoverParameters further = far;
   further.noise_offset = 1e6 + 7 * period;
-  CHECK(std::abs(cover::potential_offset(further).x - reduced.x) < 1e-6f);
+  CHECK(std::abs(cover::potential_offset(further).x - reduced.x) < kReducedOffset);
 
   // The potential at the far offset is resolved as near the origin; the naive float
   // evaluation, (n + 1e6) in float, has a spacing of 0.0625 radii: a staircase in which

@@ -8,11 +8,52 @@
 #include "cover/integrators.hpp"
 #include "cover/stability.hpp"
 #include "shader_math/shader_math.hpp"
+#include "tolerances.hpp"
 
 using namespace nephele;
 using namespace nephele::glsl;
+using test::kUlp;
 
 namespace {
+
+// Flow rates from differences between texels of a size-32 map (texels about 0.05 rad apart):
+// the solid-body rotation's rate omega |n_z| within 5% of omega everywhere, and the largest
+// rate within 5% of omega. Empirical: the discretisation error of the differences over one or
+// two texels (and across the seams) is not derived here.
+constexpr double kRateRelative = 0.05;
+// The share of the sphere beyond the stable step, 1 - 1.732 / 3: texels are counted whole, so
+// the texels straddling the two circles |lat| = 35.3 deg decide it: half a texel (0.025 rad) on
+// either side of 2 circles of length 2 pi cos(35.3 deg) = 5.13, over 4 pi: 2 x 5.13 x 0.025 /
+// 12.57 = 0.020.
+constexpr double kBeyondFraction = 0.02;
+static_assert(kBeyondFraction >= 2 * 5.13 * 0.0245 / 12.57);
+// The texel at a side face's centre of a size-64 map is half a texel (0.012 rad) from the
+// equator; 0.05 is a loose check of that geometry.
+constexpr float kNearEquator = 0.05f;
+// A steep jet's pure shear at the equator: a rate below 10% of c k counts as zero. Empirical
+// (the differences over a texel of a tanh of slope 40 per radian are not derived).
+constexpr double kShearRateShare = 0.1;
+// Folding measures of the identity, from differences of texel directions (float, within a few
+// ulp, 2e-7) over texels 0.065 rad apart: Jacobians within about 2e-7 / 0.065 = 3e-6 of 1, so
+// 1e-4 is 30x looser (kept as set); the same margin for the mirror's J = -1.
+constexpr double kJacobian = 1e-4;
+static_assert(kJacobian >= 4 * kUlp / 0.065);
+constexpr double kIdentityAreaRms = 1e-4;
+// The rotation by 0.7 rad in float (cos, sin and the products: a few ulp more per texel):
+// 1e-3, empirical (10x the identity's; not derived).
+constexpr double kRotatedAreaRms = 1e-3;
+// The mirror's folded fraction is a ratio of texel counts (or solid angles) in double, all of
+// them folded: 1 up to the sum's rounding; 1e-9 is far looser than that (kept as set).
+constexpr double kMirrorFolded = 1e-9;
+// Folding the south onto the north: the texel rows next to the equator have differences that
+// straddle the fold and may count either way; on a size-24 map those are 2 rows of the 4 side
+// faces, 192 of 3456 texels (5.6%), so 0.5 +- 0.05 is about half that band either way; partly
+// derived (the band's solid angle is not computed).
+constexpr double kFoldedHalf = 0.05;
+// The reduced offset (below the period 3) in float against the exact reduction in double: one
+// rounding, half an ulp of values below 4 (2^-23 = 1.2e-7); 1e-6 leaves a factor 8.
+constexpr double kReducedOffset = 1e-6;
+static_assert(kReducedOffset >= 2 * kUlp * 4);
 
 // A cube map (RGBA, GL face order) of a vector field given as a function of the direction.
 template <class Field>
@@ -45,8 +86,8 @@ TEST_CASE("the flow rate of a solid-body rotation is omega times the sine of the
         worst = std::max(worst, std::abs(rho - omega * std::abs(n.z)));
       }
   INFO("largest deviation " << worst);
-  CHECK(worst < 0.05 * omega);  // differences over one or two texels
-  CHECK(rates.max_rate == Approx(omega).epsilon(0.05));
+  CHECK(worst < kRateRelative * omega);  // differences over one or two texels
+  CHECK(rates.max_rate == Approx(omega).epsilon(kRateRelative));
   const auto report = cover::stiffness_report(rates, 0.5, cover::Integrator::euler);
   CHECK(report.stiffness == Approx(0.5 * rates.max_rate));
   CHECK(!report.beyond());
@@ -54,7 +95,7 @@ TEST_CASE("the flow rate of a solid-body rotation is omega times the sine of the
   const auto stiff = cover::stiffness_report(rates, 1.0, cover::Integrator::adaptive);  // h rho up to 3 > 1.73
   CHECK(stiff.beyond());
   // Where h omega |n_z| > 1.732: |lat| > asin(0.577) = 35.3 deg, 1 - 0.577 = 42% of the sphere.
-  CHECK(stiff.beyond_fraction == Approx(1.0 - 1.732 / 3.0).margin(0.02));
+  CHECK(stiff.beyond_fraction == Approx(1.0 - 1.732 / 3.0).margin(kBeyondFraction));
 }
 
 TEST_CASE("shear does not count as a rate of change: a jet across the equator has rate zero there", "[stability]") {
@@ -70,10 +111,10 @@ TEST_CASE("shear does not count as a rate of change: a jet across the equator ha
   for (int face : {0, 1, 2, 3}) {
     const int i = size / 2, j = size / 2;
     const vec3 n = texel_direction(face, i, j, size);
-    REQUIRE(std::abs(n.z) < 0.05f);
+    REQUIRE(std::abs(n.z) < kNearEquator);
     const double rho = rates.spectral_radius[(static_cast<size_t>(face) * size + j) * size + i];
     INFO("face " << face << " rho " << rho);
-    CHECK(rho < 0.1 * c * k);
+    CHECK(rho < kShearRateShare * c * k);
   }
 }
 
@@ -82,23 +123,23 @@ TEST_CASE("folding is zero for rotations and total for a mirror image", "[stabil
   const auto identity = cube_of(size, [](vec3 n) { return n; });
   const auto id = cover::folding_report(identity, size);
   CHECK(id.folded_fraction == 0.0);
-  CHECK(id.jacobian_min == Approx(1.0).margin(1e-4));
-  CHECK(id.jacobian_max == Approx(1.0).margin(1e-4));
-  CHECK(id.area_error_rms < 1e-4);
+  CHECK(id.jacobian_min == Approx(1.0).margin(kJacobian));
+  CHECK(id.jacobian_max == Approx(1.0).margin(kJacobian));
+  CHECK(id.area_error_rms < kIdentityAreaRms);
   // A rotation preserves area and orientation: J = 1 (the exact flow map has J = 1 too).
   const auto rotated = cover::folding_report(cube_of(size, [](vec3 n) {
     const float a = 0.7f;
     return vec3(std::cos(a) * n.x - std::sin(a) * n.y, std::sin(a) * n.x + std::cos(a) * n.y, n.z);
   }), size);
   CHECK(rotated.folded_fraction == 0.0);
-  CHECK(rotated.area_error_rms < 1e-3);
+  CHECK(rotated.area_error_rms < kRotatedAreaRms);
   // A mirror image reverses orientation everywhere: J = -1.
   const auto mirror = cover::folding_report(cube_of(size, [](vec3 n) { return vec3(n.x, n.y, -n.z); }), size);
-  CHECK(mirror.folded_fraction == Approx(1.0).margin(1e-9));
-  CHECK(mirror.jacobian_max == Approx(-1.0).margin(1e-4));
+  CHECK(mirror.folded_fraction == Approx(1.0).margin(kMirrorFolded));
+  CHECK(mirror.jacobian_max == Approx(-1.0).margin(kJacobian));
   // Folding the south onto the north reverses the southern half.
   const auto folded = cover::folding_report(cube_of(size, [](vec3 n) { return vec3(n.x, n.y, std::abs(n.z)); }), size);
-  CHECK(folded.folded_fraction == Approx(0.5).margin(0.05));
+  CHECK(folded.folded_fraction == Approx(0.5).margin(kFoldedHalf));
 }
 
 TEST_CASE("the sub-step report counts attempts and the texels that ran out", "[stability]") {
@@ -164,7 +205,7 @@ TEST_CASE("noise offsets are reduced modulo a lattice period larger than the sph
     CHECK(r.x == r.y);
     CHECK(r.y == r.z);
     const double expected = offset - period * std::floor(offset / period);
-    CHECK(r.x == Approx(expected).margin(1e-6));
+    CHECK(r.x == Approx(expected).margin(kReducedOffset));
   }
   cover::CoverParameters p;
   p.noise_offset = 1e6;

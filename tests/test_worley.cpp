@@ -6,10 +6,65 @@
 #include <random>
 
 #include "shader_math/shader_math.hpp"
+#include "tolerances.hpp"
 
 using namespace nephele::glsl;
+using nephele::test::kUlp;
 
 namespace {
+
+// worley_f1 against brute force in double at the same float point p: f = p - floor(p) is exact
+// (both sides take the same float p), so only the candidate's delta = f - (o + offset) (two
+// roundings of values below 3, 2^-22 each at most), its squared length (3 products and 2 sums,
+// 5 roundings of d^2 < 4: 5 x 2^-22) and sqrt (which halves that, plus one rounding) differ:
+// about 2 x 2^-22 + 5 x 2^-22 / 2 + 2^-24 < 1.1e-6. The former comment blamed "float rounding
+// of positions near 50 (4e-6)", which does not enter: 1e-5 is kept as set, 9x the derivation.
+constexpr float kF1VsBruteForce = 1.0e-5f;
+static_assert(kF1VsBruteForce >= (2 * 4 + 5 * 4 / 2 + 1) * kUlp);
+// The same comparison for points up to 200 (and F1 > 1, only via the 5^3 fallback): the same
+// derivation (p - floor(p) is still exact), 1.1e-6; 1e-4 is far looser than that (kept as set).
+// Also the margin by which the 27-cell search must miss the exact F1 for a point to count.
+constexpr float kFallbackVsBruteForce = 1.0e-4f;
+static_assert(kFallbackVsBruteForce >= kF1VsBruteForce);
+// F1 is at most sqrt(3) (the farthest a point can be from the feature point of its own cell),
+// up to the rounding of kF1VsBruteForce.
+constexpr float kF1AboveSqrt3 = kF1VsBruteForce;
+// Chi-square with 63 degrees of freedom (64 bins): mean 63, standard deviation sqrt(2 x 63);
+// the uniformity test allows 6 standard deviations (a false alarm below 1e-6 for a good hash,
+// and the fixed seed makes it deterministic).
+constexpr double kChiSquareSigmas = 6.0;
+// A shifted point q = p + k period (|q| < 30) is rounded to half an ulp of 30, 2^-19 / 2 =
+// 9.5e-7, per axis, which moves F1 (1-Lipschitz) by at most sqrt(3) x that = 1.7e-6, plus both
+// sides' kF1VsBruteForce rounding (1.1e-6 each): 3.9e-6; 1e-5 leaves a factor of 2.5.
+constexpr float kTiling = 1.0e-5f;
+static_assert(kTiling >= 1.7321f * 16 * kUlp + 2 * (2 * 4 + 5 * 4 / 2 + 1) * kUlp);
+// Finite differences of F1 with step h at |p| <= 8: each F1 value is rounded by an ulp of the
+// shifted position (2^-21 for |p| in [4, 8)) and kF1VsBruteForce; the central difference divides
+// the difference of two by 2h and the one-sided gap that of up to four by h: 2 ulp(8) / (2h) =
+// 9.5e-4 for the test's h = 1e-3, rounded up to 2e-3 (the central difference's rounding).
+constexpr float kWorleyStep = 1.0e-3f;
+constexpr float kCentralRounding = 2.0e-3f;
+static_assert(kCentralRounding >= 2 * (8.0f / 8388608.0f) / (2 * kWorleyStep));
+// The one-sided gap of a smooth F1 is h |F1''| <= h / F1; the gap above which a kink is assumed
+// is 4 h / F1 plus the gap's own rounding, 1e-3 for h = 1e-3 (about the derivation above; the
+// factor 4 and this floor are choices of which points to skip, not bounds: empirical).
+constexpr float kKinkGapFactor = 4.0f;
+constexpr float kKinkGapRounding = 1.0e-3f;
+// On a feature point f - (0 + offset) is exactly zero (p = offset, floor 0), so F1 is exactly
+// 0; the margin, 16 ulp of values below 1, only guards against a contracted dot product.
+constexpr float kAtFeature = 1.0e-6f;
+// 0.01 away along x from the feature point, delta = (0.01 + r, 0, 0) with r the rounding of
+// feature + 0.01 (the y and z components cancel exactly): the gradient is delta / |delta|,
+// (1, 0, 0) to a couple of ulp. 1e-3 is far looser than that (kept as set; it would also
+// absorb a neighbouring feature point within 0.01, which the key does not have).
+constexpr float kNearFeatureDirection = 1.0e-3f;
+// The gradient's length: normalize's rounding, kUnitLength (1e-6); 1e-5 here is 10x looser
+// (kept as set).
+constexpr float kNearFeatureLength = 1.0e-5f;
+// fBm finite differences: the value is within kFbmValueRounding; a central difference divides
+// two such errors by 2h: kFbmValueRounding / h. The gap above which a kink is assumed (0.5) is
+// a choice (empirical: it keeps more than 2000 of the 3000 points), not a bound.
+constexpr float kFbmKinkGap = 0.5f;
 
 // Brute force: the nearest feature point over a 7^3 block of cells, in double precision.
 double brute_force_f1(vec3 p, ivec3 period, uvec3 key) {
@@ -58,9 +113,8 @@ TEST_CASE("worley_f1 finds the nearest feature point exactly also when F1 exceed
     const double exact = brute_force_f1(p, ivec3(0), key);
     if (exact > 1.0) ++beyond_one;
     INFO("p = " << p.x << "," << p.y << "," << p.z);
-    // Float rounding of positions near 50 is 4e-6; distances below 2 add 2e-7.
-    REQUIRE(f1 == Approx(exact).margin(1e-5));
-    REQUIRE(f1 <= std::sqrt(3.0f) + 1e-5f);
+    REQUIRE(f1 == Approx(exact).margin(kF1VsBruteForce));
+    REQUIRE(f1 <= std::sqrt(3.0f) + kF1AboveSqrt3);
   }
   // Points where F1 > 1 need the 5^3 fallback; make sure the test met some.
   WARN("points with F1 > 1: " << beyond_one << " of 20000");
@@ -85,9 +139,9 @@ TEST_CASE("the fallback search is exact where the 27-cell search is not", "[worl
           best27 = std::min(best27, dot(d, d));
         }
     const double exact = brute_force_f1(p, ivec3(0), key);
-    if (std::sqrt(best27) > exact + 1e-4) {
+    if (std::sqrt(best27) > exact + kFallbackVsBruteForce) {
       ++found;
-      CHECK(worley_f1(p, ivec3(0), key).w == Approx(exact).margin(1e-4));
+      CHECK(worley_f1(p, ivec3(0), key).w == Approx(exact).margin(kFallbackVsBruteForce));
     }
   }
   WARN("points where 27 cells are not enough: " << found);
@@ -108,7 +162,7 @@ TEST_CASE("feature points are jittered uniformly and independently inside their 
   double chi2 = 0;
   const double expected = n / 64.0;
   for (int c : counts) chi2 += (c - expected) * (c - expected) / expected;
-  CHECK(chi2 < 63 + 6 * std::sqrt(2.0 * 63));
+  CHECK(chi2 < 63 + kChiSquareSigmas * std::sqrt(2.0 * 63));
 }
 
 TEST_CASE("periodic Worley noise tiles exactly for negative coordinates too", "[worley]") {
@@ -124,7 +178,7 @@ TEST_CASE("periodic Worley noise tiles exactly for negative coordinates too", "[
         q[axis] += float(shift * period[axis]);
         const vec4 b = worley_f1(q, period, key);
         // Only the rounding of the shifted position (|q| < 30, ulp 2e-6) differs.
-        REQUIRE(b.w == Approx(a.w).margin(1e-5));
+        REQUIRE(b.w == Approx(a.w).margin(kTiling));
       }
     }
   }
@@ -134,7 +188,7 @@ TEST_CASE("periodic Worley noise tiles exactly for negative coordinates too", "[
 TEST_CASE("the Worley gradient matches finite differences away from cell borders", "[worley]") {
   const uvec3 key = noise_key(4u, 0u);
   std::mt19937 rng(5);
-  const float h = 1e-3f;
+  const float h = kWorleyStep;
   int compared = 0;
   for (int n = 0; n < 5000; ++n) {
     const vec3 p = random_point(rng, 8.0f);
@@ -144,11 +198,11 @@ TEST_CASE("the Worley gradient matches finite differences away from cell borders
     differences([&](vec3 q) { return static_cast<double>(worley_f1(q, ivec3(0), key).w); }, p, h, central, gap);
     // A smooth F1 = |p - f| has one-sided differences that differ by h |f''| <= h / F1; a
     // larger gap means a Voronoi border lies inside the stencil, where F1 has a kink.
-    if (gap > 4.0f * h / g.w + 1e-3f) continue;
+    if (gap > kKinkGapFactor * h / g.w + kKinkGapRounding) continue;
     ++compared;
     // Central differences err by h^2 |f'''| / 6 ~ h^2 / F1^2, plus rounding 2 ulp(8) / (2h), plus
     // at most the gradient jump of a weak kink that the gap did not exclude (it measures it).
-    const float tolerance = h * h / (g.w * g.w) + 2e-3f + gap;
+    const float tolerance = h * h / (g.w * g.w) + kCentralRounding + gap;
     REQUIRE(glm::length(vec3(g) - central) < tolerance);
   }
   CHECK(compared > 4000);
@@ -159,11 +213,11 @@ TEST_CASE("the gradient is the unit vector away from the nearest feature point",
   // In cell (0, 0, 0) the feature point is exactly representable (24-bit offsets below 1).
   const vec3 feature = feature_offset(ivec3(0), ivec3(0), key);
   const vec4 at_feature = worley_f1(feature, ivec3(0), key);
-  CHECK(at_feature.w == Approx(0.0f).margin(1e-6));
+  CHECK(at_feature.w == Approx(0.0f).margin(kAtFeature));
   CHECK(vec3(at_feature) == vec3(0.0f));  // defined as zero on the singular point
   const vec4 near = worley_f1(feature + vec3(0.01f, 0.0f, 0.0f), ivec3(0), key);
-  CHECK(near.x == Approx(1.0f).margin(1e-3));
-  CHECK(length(vec3(near)) == Approx(1.0f).margin(1e-5));
+  CHECK(near.x == Approx(1.0f).margin(kNearFeatureDirection));
+  CHECK(length(vec3(near)) == Approx(1.0f).margin(kNearFeatureLength));
 }
 
 TEST_CASE("inverted Worley fBm is normalised and its gradient matches finite differences", "[worley]") {
@@ -180,11 +234,11 @@ TEST_CASE("inverted Worley fBm is normalised and its gradient matches finite dif
     float gap;
     differences([&](vec3 q) { return static_cast<double>(inverted_worley_fbm(q, params).w); }, p, h, central, gap);
     // Highest octave: frequency 24, so curvature up to 24^2 / (24 F1) per octave; skip kinks.
-    if (gap > 0.5f) continue;
+    if (gap > kFbmKinkGap) continue;
     ++compared;
     // Per octave k (frequency f_k = 3 2^k, weight a_k / sum a): truncation (h f_k / F1_k)^2 f_k,
     // rounding 1e-7 / h, and the measured jump of weak kinks.
-    float tolerance = 1e-7f / h + gap;
+    float tolerance = nephele::test::kFbmValueRounding / h + gap;
     float amplitude = 1.0f, frequency = params.frequency, norm = 0.0f, truncation = 0.0f;
     for (int k = 0; k < params.octaves; ++k) {
       const float f1 = std::max(worley_f1(p * frequency, ivec3(0), noise_key(params.seed, uint(k))).w, 1e-6f);
