@@ -89,7 +89,7 @@ inline constexpr Parameter stretch = flag("stretch", "map each channel's range l
 namespace run {
 inline constexpr Parameter cover_out = text("out", "cubemaps", "DIR", "output directory (created if missing)", generate);
 inline constexpr Parameter report_out = text("out", "report", "DIR", "output directory (created if missing)", report);
-inline constexpr Parameter quiet = flag("quiet", "no progress reports on stderr (they appear for work of more than a second)", generate | report | render);
+inline constexpr Parameter quiet = flag("quiet", "no progress reports on stderr (they appear for work of more than a second)", generate | report | render | noise);
 inline constexpr Parameter verbose = flag("verbose", "print the renderer, the passes that ran and their times", generate | render | noise);
 inline constexpr Parameter bench_cover_sizes = text("sizes", "256,512,1024", "N,N,... (1 to 16384)", "comma-separated cube face sizes", bench_cover);
 inline constexpr Parameter bench_cover_repeat = integer("repeat", 3, 1, 100, "runs", "runs per size; the median is printed", bench_cover);

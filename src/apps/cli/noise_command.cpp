@@ -12,6 +12,7 @@
 #include "apps/cli/noise_options.hpp"
 #include "apps/cli/options.hpp"
 #include "core/memory.hpp"
+#include "core/progress.hpp"
 #include "gpu/egl_context.hpp"
 #include "io/noise_files.hpp"
 #include "noise/noise_texture.hpp"
@@ -99,6 +100,7 @@ NoiseRequest parse_noise_request(const std::vector<std::string>& arguments, bool
   options.bind(n::bits, &request.png_bits);
   options.bind(n::out, &request.out);
   options.bind(n::stretch, &request.stretch);
+  options.bind(params::run::quiet, &request.quiet);
   options.bind(params::run::verbose, &request.verbose);
   if (!options.parse(arguments)) {
     request.help = options.help();
@@ -197,6 +199,8 @@ int run_noise(const std::vector<std::string>& arguments) {
   if (request.verbose)
     std::cerr << "renderer: " << context.info().renderer << " (" << context.info().version << ")\n";
   check_noise_fits(request.spec, context);
+  core::Progress progress("noise", 2, core::Progress::for_stderr(request.quiet));
+  progress.update(0, "generating");
   const auto start = std::chrono::steady_clock::now();
   noise::TextureGenerator generator;
   noise::Volume volume = generator.generate(request.spec);
@@ -206,12 +210,14 @@ int run_noise(const std::vector<std::string>& arguments) {
   run.set("generate_ms", generate_ms);
   run.set("compute_ms", generator.timings().compute_ms);
   run.set("patched_segments", static_cast<double>(generator.timings().patched_segments));
+  progress.update(1, "writing files");
   const auto write_start = std::chrono::steady_clock::now();
   std::vector<io::ValueRange> stretched_from;
   if (request.stretch) stretched_from = io::stretch_channels(volume);
   const auto sidecar =
       io::write_noise_files(request.out, request.spec, volume, request.png_bits, request.preset, run, stretched_from);
   const double write_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - write_start).count();
+  progress.finish();
   if (request.verbose)
     std::cerr << "generate: " << generate_ms << " ms (compute " << generator.timings().compute_ms << " ms), write: "
               << write_ms << " ms\n";

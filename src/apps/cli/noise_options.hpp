@@ -14,6 +14,7 @@ struct NoiseRequest {
   std::string out;
   int png_bits = 8;
   bool verbose = false;
+  bool quiet = false;    // no progress report
   bool stretch = false;  // map each channel's range onto [0, 1]
   std::string help;  // the --help text when *help_shown
 };
