@@ -24,7 +24,7 @@ static_assert(kDensityRounding >= 8 * kUlp);
 // cloud_density does the test's own float operations (the build turns contraction off): equal
 // bit for bit. The margin only guards values near 0, where Approx's relative epsilon (100 float
 // epsilons) allows nothing.
-constexpr float kSameOperations = 1.0e-7f;
+constexpr double kSameOperations = 1.0e-7;
 // Phase functions integrated by the midpoint rule over 200000 float nu. The midpoint rule errs by
 // h^2/24 x 2 pi (p'(1) - p'(-1)), 5.6e-9 for Henyey-Greenstein g = 0.8 (p'(1) = 215), far less
 // for Rayleigh. The float nu = -1 + 2 (i + 0.5) / n is off by the division's rounding of a value

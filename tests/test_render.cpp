@@ -36,7 +36,7 @@ constexpr double kNightShareOfDay = 0.1;
 // Tone mapping of 1e6 x exposure: the curve saturates and clamps to 1, and the sRGB encoding
 // 1.055 x 1^(1/2.4) - 0.055 is 1 up to one double rounding (1.1e-16) before the conversion to
 // float; 1e-3 is far looser (kept as set).
-constexpr float kSaturatedEncoding = 1.0e-3f;
+constexpr double kSaturatedEncoding = 1.0e-3;
 static_assert(kSaturatedEncoding >= 1.2e-16);
 
 const double noon = core::parse_utc_time("2026-06-21T11:30Z");
