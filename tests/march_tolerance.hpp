@@ -25,6 +25,13 @@
 namespace nephele::test {
 
 constexpr double kPosition = 1.25;  // metres, 2.5 ulp of the Earth's radius in float
+// The steepest vertical profile, per unit height fraction: the cumulus top 1 - H(0.95, 1, h),
+// a Hermite step over 0.05 with slope up to 1.5 / 0.05 = 30.
+constexpr double kSteepestProfile = 30.0;
+// The coverage threshold's step H(0, 0.12, .): slope up to 1.5 / 0.12 = 12.5.
+constexpr double kThresholdSlope = 12.5;
+// The shape's remap uniform_from_mix has slope up to 1 / a, a = 1 - w = 0.6 (w = 0.4).
+constexpr double kRemapA = 0.6;
 
 // The largest difference between neighbouring texels (along any axis, wrapping) of the noise
 // volume's base level, either channel.
@@ -46,9 +53,9 @@ inline float max_texel_step(const glsl::VolumeSource& volume) {
 // Relative tolerance for layers at least `thickness` thick whose noise repeats vertically every
 // `period` metres or more, with the volume `noise` of noise.size texels per period.
 inline double march_tolerance(double thickness, double period, const glsl::VolumeSource& noise) {
-  const double vertical = 30.0 * kPosition / thickness;
+  const double vertical = kSteepestProfile * kPosition / thickness;
   const double texels_moved = kPosition / period * noise.size;
-  return vertical + 12.5 / 0.6 * max_texel_step(noise) * texels_moved;
+  return vertical + kThresholdSlope / kRemapA * max_texel_step(noise) * texels_moved;
 }
 
 }  // namespace nephele::test

@@ -6,8 +6,49 @@
 #include <random>
 
 #include "shader_math/shader_math.hpp"
+#include "tolerances.hpp"
 
 using namespace nephele::glsl;
+using nephele::test::kUlp;
+
+namespace {
+
+// Densities are monotone (in the coverage, the morph and the detail noise) in exact arithmetic;
+// in float the two sides share the profile factors bit for bit (same h) and only the rounding of
+// the threshold factors and their product (a few roundings of values <= 1, 6e-8 each) can
+// reverse the order, where both sides saturate or nearly coincide. 1e-6 (16.8 ulp) is a loose
+// bound of that, not counted operation by operation (partly empirical).
+constexpr float kDensityRounding = 1.0e-6f;
+static_assert(kDensityRounding >= 8 * kUlp);
+// At morph 1 (k = 0) mix(phi, 1, 0), (1 - 0)(1 - e) and mix(1, amount, 0) are exact, so
+// cloud_density does the test's own float operations (the build turns contraction off): equal
+// bit for bit. The margin only guards values near 0, where Approx's relative epsilon (100 float
+// epsilons) allows nothing.
+constexpr double kSameOperations = 1.0e-7;
+// Phase functions integrated by the midpoint rule over 200000 float nu. The midpoint rule errs by
+// h^2/24 x 2 pi (p'(1) - p'(-1)), 5.6e-9 for Henyey-Greenstein g = 0.8 (p'(1) = 215), far less
+// for Rayleigh. The float nu = -1 + 2 (i + 0.5) / n is off by the division's rounding of a value
+// up to 2 (2^-23 = 1.2e-7; the subtraction is exact or rounds below that), which moves the integral by up to 2 pi (p(1) - p(-1)) x that, 2.7e-6 for g = 0.8
+// (p(1) = 3.58), and evaluating p in float adds a few roundings (5 x 2^-24 relative): 3e-6 in all
+// (1.3e-6 measured). 2e-3 is about 700x looser (kept as set), for HG and the cloud phase (0.7 HG
+// 0.8 + 0.3 HG -0.3, smaller).
+constexpr double kPhaseIntegral = 2e-3;
+static_assert(kPhaseIntegral >= 2 * M_PI * 3.58 * 2 * kUlp + 5 * kUlp);
+// Rayleigh, 3/(16 pi) (1 + nu^2): the float constant (one rounding, 2^-24 relative), about 3
+// roundings in the evaluation, and the nu offsets (|p'| <= 0.12: 2 pi x 0.24 x 1.2e-7 = 1.8e-7,
+// in the worst case; they cancel between the two symmetric halves): 4 x 2^-24 + 1.8e-7 = 4.2e-7
+// (9e-9 measured); 1e-6 leaves a factor 2.4.
+constexpr double kRayleighIntegral = 1e-6;
+static_assert(kRayleighIntegral >= 4 * kUlp + 2 * M_PI * 0.24 * 2 * kUlp);
+// The vertical transmittance's relative error, derived in the test: the midpoint rule's 2.4% of
+// the optical depth (0.27 in blue) is 0.65% of the transmittance (0.12% measured in blue).
+constexpr double kTransmittanceRelative = 6.5e-3;
+static_assert(kTransmittanceRelative >= 0.024 * 0.27);
+// Chi-square over 32 bins allows 6 standard deviations: exceeded with probability 5.8e-6 for 31
+// degrees of freedom (the seed is fixed, so the test is deterministic).
+constexpr double kChiSquareSigmas = 6.0;
+
+}  // namespace
 
 TEST_CASE("cloud densities vanish without coverage or outside their layer and stay within 0 and 1", "[density]") {
   std::mt19937 rng(1);
@@ -33,7 +74,7 @@ TEST_CASE("more coverage never thins a heaped cloud", "[density]") {
     const float h = u(rng), shape = u(rng), detail = u(rng), c = u(rng);
     const float more = std::min(1.0f, c + 0.1f);
     REQUIRE(cloud_density(CLOUD_CUMULUS, h, more, shape, detail, 0.0f) >=
-            cloud_density(CLOUD_CUMULUS, h, c, shape, detail, 0.0f) - 1e-6f);
+            cloud_density(CLOUD_CUMULUS, h, c, shape, detail, 0.0f) - kDensityRounding);
   }
 }
 
@@ -51,7 +92,7 @@ TEST_CASE("the alto morph runs from the altostratus sheet to the altocumulus cel
       const float phi = hermite_step(1.0f - c, 1.0f, shape);
       for (float detail : {0.1f, 0.5f, 0.95f})
         CHECK(cloud_density(CLOUD_ALTO, h, c, shape, detail, 1.0f) ==
-              Approx(std::max(phi - (1.0f - detail), 0.0f) * profile).margin(1e-7));
+              Approx(std::max(phi - (1.0f - detail), 0.0f) * profile).margin(kSameOperations));
     }
     CHECK(cloud_density(CLOUD_ALTO, h, c, 0.35f, 1.0f, 1.0f) == 0.0f);  // s below 1 - c: clear
   }
@@ -59,8 +100,8 @@ TEST_CASE("the alto morph runs from the altostratus sheet to the altocumulus cel
   const float sheet = cloud_density(CLOUD_ALTO, 0.5f, c, 0.8f, 0.7f, 0.0f);
   const float cells = cloud_density(CLOUD_ALTO, 0.5f, c, 0.8f, 0.7f, 1.0f);
   const float half = cloud_density(CLOUD_ALTO, 0.5f, c, 0.8f, 0.7f, 0.5f);
-  CHECK(half >= std::min(sheet, cells) - 1e-6f);
-  CHECK(half <= std::max(sheet, cells) + 1e-6f);
+  CHECK(half >= std::min(sheet, cells) - kDensityRounding);
+  CHECK(half <= std::max(sheet, cells) + kDensityRounding);
 }
 
 TEST_CASE("fog thins with height and the Hermite step is the cubic smoothstep", "[density]") {
@@ -81,9 +122,9 @@ TEST_CASE("phase functions integrate to one over the sphere", "[atmosphere]") {
     rayleigh += 2 * M_PI * rayleigh_phase(nu) * dnu;
     cloud += 2 * M_PI * cloud_phase(nu, 1.0f) * dnu;
   }
-  CHECK(hg == Approx(1.0).epsilon(2e-3));
-  CHECK(rayleigh == Approx(1.0).epsilon(1e-6));
-  CHECK(cloud == Approx(1.0).epsilon(2e-3));
+  CHECK(hg == Approx(1.0).epsilon(kPhaseIntegral));
+  CHECK(rayleigh == Approx(1.0).epsilon(kRayleighIntegral));
+  CHECK(cloud == Approx(1.0).epsilon(kPhaseIntegral));
 }
 
 TEST_CASE("vertical transmittance matches the scale-height integral and vanishes below the horizon", "[atmosphere]") {
@@ -95,8 +136,8 @@ TEST_CASE("vertical transmittance matches the scale-height integral and vanishes
   // transmittance is within 0.65%.
   const vec3 t = transmittance_to_space(sea_level, vec3(0, 0, 1), radius);
   const vec3 beta = rayleigh_scattering() * RAYLEIGH_SCALE_HEIGHT + vec3(MIE_EXTINCTION * MIE_SCALE_HEIGHT);
-  CHECK(t.x == Approx(std::exp(-beta.x)).epsilon(6.5e-3));
-  CHECK(t.z == Approx(std::exp(-beta.z)).epsilon(6.5e-3));
+  CHECK(t.x == Approx(std::exp(-beta.x)).epsilon(kTransmittanceRelative));
+  CHECK(t.z == Approx(std::exp(-beta.z)).epsilon(kTransmittanceRelative));
   CHECK(transmittance_to_space(sea_level, normalize(vec3(1, 0, -0.1f)), radius) == vec3(0.0f));
   // Sun just above the horizon: redder light (blue attenuated more).
   const vec3 low_sun = transmittance_to_space(sea_level, normalize(vec3(1, 0, 0.05f)), radius);
@@ -137,13 +178,14 @@ TEST_CASE("every density grows with the detail noise so its value at detail 1 bo
   for (int type = CLOUD_CIRRUS; type <= CLOUD_CUMULONIMBUS; ++type) {
     for (int k = 0; k < 5000; ++k) {
       const float h = u(rng), c = u(rng), shape = u(rng), detail = u(rng), morph = u(rng);
-      REQUIRE(cloud_density(type, h, c, shape, detail, morph) <= cloud_density(type, h, c, shape, 1.0f, morph) + 1e-6f);
+      REQUIRE(cloud_density(type, h, c, shape, detail, morph) <= cloud_density(type, h, c, shape, 1.0f, morph) + kDensityRounding);
     }
   }
 }
 
 TEST_CASE("mixing two uniform noises and applying uniform_from_mix gives a uniform value", "[density]") {
-  // Chi-square over 32 bins of 100000 samples: mean 31, standard deviation 7.9; 6 of them bound it.
+  // Chi-square over 32 bins of 100000 samples: mean 31, standard deviation 7.9; kChiSquareSigmas
+  // of them bound it.
   std::mt19937 rng(4);
   std::uniform_real_distribution<float> u(0.0f, 1.0f);
   std::vector<int> counts(32, 0);
@@ -156,7 +198,7 @@ TEST_CASE("mixing two uniform noises and applying uniform_from_mix gives a unifo
   }
   double chi2 = 0;
   for (int c : counts) chi2 += (c - n / 32.0) * (c - n / 32.0) / (n / 32.0);
-  CHECK(chi2 < 31 + 6 * std::sqrt(62.0));
+  CHECK(chi2 < 31 + kChiSquareSigmas * std::sqrt(62.0));
   CHECK(uniform_from_mix(0.0f, 0.4f) == 0.0f);
   CHECK(uniform_from_mix(1.0f, 0.4f) == 1.0f);
   CHECK(uniform_from_mix(0.5f, 0.4f) == Approx(0.5f));

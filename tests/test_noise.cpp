@@ -10,11 +10,57 @@
 #include "noise/noise_spec.hpp"
 #include "noise/noise_texture.hpp"
 #include "shader_math/shader_math.hpp"
+#include "tolerances.hpp"
 
 using namespace nephele;
 using namespace nephele::glsl;
+using test::kUlp;
 
 namespace {
+
+// perlin_noise against the textbook evaluation in double at the same float p: f = p - floor(p)
+// is exact for p >= 0 and within 2^-25 for negative p (so the rounding of positions near 40 does
+// not enter); the float dot products (values below 2), fade polynomials and 7 lerps round about
+// 20 times, 2^-23 each for values below 2: 2.4e-6 (1.3e-6 measured over 2e5 points). 2e-5 is 8x
+// looser (kept as set). The operation count is an estimate, not counted exactly.
+constexpr double kPerlinVsTextbook = 2e-5;
+static_assert(kPerlinVsTextbook >= 20 * 2 * kUlp);
+// The grid of spacing 1/48 misses the maximum of the smooth S by about |S''| / 2 x (1/96)^2 per
+// axis, a few 1e-4 for |S''| of a few units: 2e-3 leaves room. Partly empirical (S'' near the
+// maximum is not computed).
+constexpr double kPerlinBoundGrid = 2e-3;
+// Statistical checks allow 6 standard deviations. For chi-square statistics (skewed) mean + 6 sd
+// is exceeded with probability 5e-5 for 11 degrees of freedom and 1.3e-6 for 63; for a mean of
+// 64000 products (close to normal) 2e-9. The seeds are fixed, so the tests are deterministic.
+constexpr double kSigmas = 6.0;
+// A shifted point q = p + k period (|q| < 30) is rounded to half an ulp of values below 32,
+// 2^-20 = 9.5e-7, along one axis, which moves the noise by its slope (below 3 per unit, not
+// derived here) times that, 2.9e-6, plus both sides' evaluation rounding (kPerlinVsTextbook's
+// 2.4e-6 each): 7.7e-6 (2.7e-6 measured). 1e-5 leaves a factor 1.3 over that estimate.
+constexpr double kPerlinTiling = 1.0e-5;
+static_assert(kPerlinTiling >= 3 * 16 * kUlp + 2 * 20 * 2 * kUlp);
+// Channel values one texture period further along (texel units below 128: half an ulp 3.8e-6)
+// times a slope below 10 per texel (an estimate, not derived): 3.8e-5; 1e-4 leaves a factor 2.6.
+// Partly empirical (the slope bound and the rounding of the cell coordinates are not derived).
+constexpr double kChannelTiling = 1.0e-4;
+static_assert(kChannelTiling >= 10 * 64 * kUlp);
+// The row walk against the point functions for Worley types: the squared distance dy^2 + dz^2
+// summed first, one rounding of a value below 3 (2^-24 relative, halved by the square root: 5.2e-8
+// of F1 <= sqrt 3), then averaged and scaled by <= 1 (two roundings of values <= 1): 1.7e-7; 2e-7
+// leaves a factor 1.2.
+constexpr double kRowWalk = 2.0e-7;
+static_assert(kRowWalk >= 1.7321f * kUlp / 2 + 2 * kUlp);
+// The inverted Worley channel against 1 - (1 - w) / sqrt 3 of the fBm: kRowWalk for the F1 values
+// (carried through the fBm's mean, weights summing to 1) and the rescaling's 3 roundings on
+// either side (6 x 2^-24): 5.6e-7; 1e-6 leaves a factor 1.8.
+constexpr double kInvertedWorleyRescaled = 1.0e-6;
+static_assert(kInvertedWorleyRescaled >= kRowWalk + 6 * kUlp);
+// The channel values spread over at least this much of [0, 1] on a 16^3 texture: a choice
+// (empirical), not derived.
+constexpr float kChannelSpread = 0.2f;
+// Two seeds give fewer than one texel in this many equal: a choice (empirical; equal values by
+// chance are far rarer for continuous noise).
+constexpr size_t kSameAtMostOneIn = 100;
 
 double fade_d(double t) { return t * t * t * (t * (t * 6 - 15) + 10); }
 
@@ -63,9 +109,8 @@ TEST_CASE("perlin noise equals the textbook trilinear evaluation", "[noise]") {
   for (int n = 0; n < 20000; ++n) {
     const vec3 p = random_point(rng, 40.0f);
     const ivec3 period = n % 2 ? ivec3(0) : ivec3(7, 5, 9);
-    // Float rounding of f (|p| < 40: 4e-6) times a gradient of at most 2 per unit, plus
-    // the float sums.
-    REQUIRE(perlin_noise(p, period, key) == Approx(textbook_perlin(p, period, key)).margin(2e-5));
+    // The float operations of the evaluation (f itself is exact): kPerlinVsTextbook.
+    REQUIRE(perlin_noise(p, period, key) == Approx(textbook_perlin(p, period, key)).margin(kPerlinVsTextbook));
   }
 }
 
@@ -108,7 +153,7 @@ TEST_CASE("the perlin bound is the supremum over all gradient choices", "[noise]
       }
   // A grid of spacing 1/48 finds the maximum 1.036354 to a few 1e-4 (S is smooth near it).
   CHECK(best <= PERLIN_BOUND);
-  CHECK(best >= PERLIN_BOUND - 2e-3);
+  CHECK(best >= PERLIN_BOUND - kPerlinBoundGrid);
 }
 
 TEST_CASE("perlin gradients are uniform over the twelve edge directions", "[noise]") {
@@ -125,7 +170,7 @@ TEST_CASE("perlin gradients are uniform over the twelve edge directions", "[nois
   }
   double chi2 = 0;
   for (int c : counts) chi2 += (c - n / 12.0) * (c - n / 12.0) / (n / 12.0);
-  CHECK(chi2 < 11 + 6 * std::sqrt(22.0));
+  CHECK(chi2 < 11 + kSigmas * std::sqrt(22.0));
 }
 
 TEST_CASE("the texture's feature points are jittered uniformly and independently in their cells", "[noise]") {
@@ -146,9 +191,9 @@ TEST_CASE("the texture's feature points are jittered uniformly and independently
   }
   double chi2 = 0;
   for (int c : counts) chi2 += (c - n / 64.0) * (c - n / 64.0) / (n / 64.0);
-  CHECK(chi2 < 63 + 6 * std::sqrt(2.0 * 63));
-  // Each product has variance 1/144; 6 standard errors of the mean.
-  const double limit = 6.0 / 12.0 / std::sqrt(double(n));
+  CHECK(chi2 < 63 + kSigmas * std::sqrt(2.0 * 63));
+  // Each product has variance 1/144; kSigmas standard errors of the mean.
+  const double limit = kSigmas / 12.0 / std::sqrt(double(n));
   CHECK(std::abs(xy / n) < limit);
   CHECK(std::abs(yz / n) < limit);
   CHECK(std::abs(zx / n) < limit);
@@ -165,8 +210,9 @@ TEST_CASE("periodic perlin noise tiles exactly for negative coordinates too", "[
       for (int shift : {-3, -1, 1, 2}) {
         vec3 q = p;
         q[axis] += float(shift * period[axis]);
-        // Only the rounding of the shifted position (|q| < 30, ulp 2e-6) times the slope (< 3).
-        REQUIRE(perlin_noise(q, period, key) == Approx(a).margin(1e-5));
+        // The rounding of the shifted position (|q| < 30, ulp 2e-6) times the slope (< 3), and
+        // both sides' evaluation: kPerlinTiling.
+        REQUIRE(perlin_noise(q, period, key) == Approx(a).margin(kPerlinTiling));
       }
   }
 }
@@ -192,7 +238,7 @@ TEST_CASE("every channel type tiles across the texture's edges", "[noise]") {
         for (int shift : {-2, 1, 3}) {
           vec3 q = p;
           q[axis] += float(shift) * size[axis];
-          REQUIRE(noise_channel_value(q, channel) == Approx(a).margin(1e-4));
+          REQUIRE(noise_channel_value(q, channel) == Approx(a).margin(kChannelTiling));
         }
     }
   }
@@ -224,7 +270,7 @@ TEST_CASE("the row walk computes the point functions' values", "[noise]") {
           } else {
             // The row walk sums dy^2 + dz^2 first: one rounding of a squared distance below 3
             // (2^-24 relative, halved by the square root), then averaged and scaled by <= 1.
-            REQUIRE(volume.at(x, y, z, 0) == Approx(noise::reference_value(channel, x, y, z)).margin(2e-7));
+            REQUIRE(volume.at(x, y, z, 0) == Approx(noise::reference_value(channel, x, y, z)).margin(kRowWalk));
           }
         }
   }
@@ -238,7 +284,7 @@ TEST_CASE("inverted worley channels are the cover library's inverted worley fbm 
     for (int y = 0; y < 16; y += 2)
       for (int x = 0; x < 16; ++x) {
         const float w = inverted_worley_fbm(vec3(x, y, z) + 0.5f, fbm).w;  // mean of 1 - F1
-        REQUIRE(volume.at(x, y, z, 0) == Approx(1.0f - (1.0f - w) / std::sqrt(3.0f)).margin(1e-6));
+        REQUIRE(volume.at(x, y, z, 0) == Approx(1.0f - (1.0f - w) / std::sqrt(3.0f)).margin(kInvertedWorleyRescaled));
       }
 }
 
@@ -257,7 +303,7 @@ TEST_CASE("channel values stay inside 0 to 1 without clipping", "[noise]") {
     INFO(noise::type_name(type) << ": " << lo << " .. " << hi);
     CHECK(lo > 0.0f);
     CHECK(hi < 1.0f);
-    CHECK(hi - lo > 0.2f);
+    CHECK(hi - lo > kChannelSpread);
   }
 }
 
@@ -269,7 +315,7 @@ TEST_CASE("seeds select the noise and the same seed gives the same texture", "[n
   const noise::Volume b = noise::generate_cpu(spec);
   int same = 0;
   for (size_t k = 0; k < a.values.size(); ++k) same += a.values[k] == b.values[k];
-  CHECK(same < int(a.values.size() / 100));
+  CHECK(same < int(a.values.size() / kSameAtMostOneIn));
 }
 
 TEST_CASE("channels default to one detail level each with their own seeds", "[noise]") {

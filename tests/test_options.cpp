@@ -14,11 +14,18 @@
 #include "params/table.hpp"
 #include "params/values.hpp"
 #include "regional/scene.hpp"
+#include "tolerances.hpp"
 
 using namespace nephele;
 using namespace nephele::cli;
 
 namespace {
+
+// A float field written as the shortest decimal that reads back as the same float differs from
+// the table's double default by at most half a float ulp, 2^-24 relative (6e-8); 1e-7 leaves a
+// factor 1.7.
+constexpr double kFloatField = 1e-7;
+static_assert(kFloatField >= test::kUlp);
 
 std::string message_of(Options& o, const std::vector<std::string>& args) {
   try {
@@ -170,9 +177,9 @@ TEST_CASE("cover.json records every cover parameter of the table under its sidec
         dot == std::string::npos ? recorded.find(path) : recorded.at(path.substr(0, dot)).find(path.substr(dot + 1));
     REQUIRE(value != nullptr);
     // Float fields are written as the shortest decimal that reads back as the same float, so
-    // they differ from the table's double default by at most half a float ulp: 2^-24 < 1e-7.
+    // they differ from the table's double default by at most half a float ulp (kFloatField).
     if (p->type == params::Type::text) CHECK(value->as_string() == std::string(p->default_text == "euler" ? "adaptive" : p->default_text));
-    else CHECK(value->as_number() == Approx(p == &params::cover::size ? 8 : p == &params::cover::iterations ? 2 : p->default_number).epsilon(1e-7));
+    else CHECK(value->as_number() == Approx(p == &params::cover::size ? 8 : p == &params::cover::iterations ? 2 : p->default_number).epsilon(kFloatField));
   }
 }
 

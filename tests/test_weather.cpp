@@ -1,6 +1,8 @@
 // Weather files, their validation, blending between stations and the layer rules.
 #include <catch2/catch.hpp>
 
+#include <cmath>
+
 #include <GeographicLib/Geodesic.hpp>
 #include <GeographicLib/GeodesicLine.hpp>
 
@@ -16,6 +18,18 @@ using namespace nephele;
 using namespace nephele::regional;
 
 namespace {
+
+// Directions 350 and 10 deg averaged through the wind vector: the angles in radians (6.1 and
+// 0.17) are rounded by up to 2^-53 x 6.1 = 6.8e-16, so sin(350 deg) + sin(10 deg) leaves about
+// 1e-15, an angle of 1e-15 rad = 6e-14 deg from north. 1e-6 deg is far looser (kept as set).
+constexpr double kWindDirectionDeg = 1e-6;
+static_assert(kWindDirectionDeg >= 1e-15 * 180 / M_PI);
+// Inverse-distance weights of two stations at a point a fraction f along their geodesic are
+// exactly 1 - f and f (w_0 = d_1 / (d_0 + d_1)). GeographicLib's geodesics are accurate to 15 nm,
+// so the weights (d / L with L = 33 km) are within about 2 x 15 nm / 33 km = 1e-12, and a few
+// double roundings; 1e-6 is far looser (kept as set).
+constexpr double kStationWeight = 1e-6;
+static_assert(kStationWeight >= 2 * 15e-9 / 33000);
 
 std::string open_meteo(const std::string& low = "[10, 20, 30]", const std::string& extra = "") {
   return R"({"latitude": 46.95, "longitude": 7.45, "utc_offset_seconds": 0,
@@ -64,7 +78,7 @@ TEST_CASE("Open-Meteo hourly data are read with units converted and interpolated
   CHECK(half.cloud_low == Approx(0.15));
   CHECK(half.precipitation == Approx(0.25));
   // Directions 350 and 10 average to north through the wind vector, not to 180.
-  CHECK(std::min(half.wind_direction_deg, 360 - half.wind_direction_deg) < 1e-6);
+  CHECK(std::min(half.wind_direction_deg, 360 - half.wind_direction_deg) < kWindDirectionDeg);
 }
 
 TEST_CASE("meteoblue data are read from data_1h with the metadata position", "[weather]") {
@@ -115,8 +129,8 @@ TEST_CASE("station weights give a station's own data there and the linear blend 
     double lat = 0, lon = 0;
     line.Position(fraction * line.Distance(), lat, lon);
     const auto w = station_weights(stations, lat, lon);
-    CHECK(w[0] == Approx(1 - fraction).margin(1e-6));
-    CHECK(w[1] == Approx(fraction).margin(1e-6));
+    CHECK(w[0] == Approx(1 - fraction).margin(kStationWeight));
+    CHECK(w[1] == Approx(fraction).margin(kStationWeight));
   }
 }
 

@@ -30,7 +30,7 @@ static_assert(kFallbackVsBruteForce >= kF1VsBruteForce);
 // up to the rounding of kF1VsBruteForce.
 constexpr float kF1AboveSqrt3 = kF1VsBruteForce;
 // Chi-square with 63 degrees of freedom (64 bins): mean 63, standard deviation sqrt(2 x 63);
-// the uniformity test allows 6 standard deviations (a false alarm below 1e-6 for a good hash,
+// the uniformity test allows 6 standard deviations (a false alarm 1.3e-6 for a good hash,
 // and the fixed seed makes it deterministic).
 constexpr double kChiSquareSigmas = 6.0;
 // A shifted point q = p + k period (|q| < 30) is rounded to half an ulp of 30, 2^-19 / 2 =
