@@ -95,7 +95,7 @@ TEST_CASE("the flow rate of a solid-body rotation is omega times the sine of the
   const auto stiff = cover::stiffness_report(rates, 1.0, cover::Integrator::adaptive);  // h rho up to 3 > 1.73
   CHECK(stiff.beyond());
   // Where h omega |n_z| > 1.732: |lat| > asin(0.577) = 35.3 deg, 1 - 0.577 = 42% of the sphere.
-  CHECK(stiff.beyond_fraction == Approx(1.0 - 1.732 / 3.0).margin(kBeyondFraction));
+  CHECK(stiff.beyond_fraction == Approx(1.0 - 1.732 / 3.0).epsilon(0).margin(kBeyondFraction));
 }
 
 TEST_CASE("shear does not count as a rate of change: a jet across the equator has rate zero there", "[stability]") {
@@ -123,8 +123,8 @@ TEST_CASE("folding is zero for rotations and total for a mirror image", "[stabil
   const auto identity = cube_of(size, [](vec3 n) { return n; });
   const auto id = cover::folding_report(identity, size);
   CHECK(id.folded_fraction == 0.0);
-  CHECK(id.jacobian_min == Approx(1.0).margin(kJacobian));
-  CHECK(id.jacobian_max == Approx(1.0).margin(kJacobian));
+  CHECK(id.jacobian_min == Approx(1.0).epsilon(0).margin(kJacobian));
+  CHECK(id.jacobian_max == Approx(1.0).epsilon(0).margin(kJacobian));
   CHECK(id.area_error_rms < kIdentityAreaRms);
   // A rotation preserves area and orientation: J = 1 (the exact flow map has J = 1 too).
   const auto rotated = cover::folding_report(cube_of(size, [](vec3 n) {
@@ -135,11 +135,11 @@ TEST_CASE("folding is zero for rotations and total for a mirror image", "[stabil
   CHECK(rotated.area_error_rms < kRotatedAreaRms);
   // A mirror image reverses orientation everywhere: J = -1.
   const auto mirror = cover::folding_report(cube_of(size, [](vec3 n) { return vec3(n.x, n.y, -n.z); }), size);
-  CHECK(mirror.folded_fraction == Approx(1.0).margin(kMirrorFolded));
-  CHECK(mirror.jacobian_max == Approx(-1.0).margin(kJacobian));
+  CHECK(mirror.folded_fraction == Approx(1.0).epsilon(0).margin(kMirrorFolded));
+  CHECK(mirror.jacobian_max == Approx(-1.0).epsilon(0).margin(kJacobian));
   // Folding the south onto the north reverses the southern half.
   const auto folded = cover::folding_report(cube_of(size, [](vec3 n) { return vec3(n.x, n.y, std::abs(n.z)); }), size);
-  CHECK(folded.folded_fraction == Approx(0.5).margin(kFoldedHalf));
+  CHECK(folded.folded_fraction == Approx(0.5).epsilon(0).margin(kFoldedHalf));
 }
 
 TEST_CASE("the sub-step report counts attempts and the texels that ran out", "[stability]") {
@@ -205,7 +205,7 @@ TEST_CASE("noise offsets are reduced modulo a lattice period larger than the sph
     CHECK(r.x == r.y);
     CHECK(r.y == r.z);
     const double expected = offset - period * std::floor(offset / period);
-    CHECK(r.x == Approx(expected).margin(kReducedOffset));
+    CHECK(r.x == Approx(expected).epsilon(0).margin(kReducedOffset));
   }
   cover::CoverParameters p;
   p.noise_offset = 1e6;

@@ -78,9 +78,9 @@ TEST_CASE("the sun stands over the tropic at the June solstice and over the equa
   // June solstice 2026: June 21 08:24 UTC; March equinox 2026: March 20 14:46 UTC (published
   // times). The Almanac formulas are good to about 0.01 deg; the obliquity is 23.436 deg.
   const auto solstice = render::sun_position(core::parse_utc_time("2026-06-21T08:24Z"), 0, 0);
-  CHECK(solstice.declination_deg == Approx(23.436).margin(kSolsticeDeg));
+  CHECK(solstice.declination_deg == Approx(23.436).epsilon(0).margin(kSolsticeDeg));
   const auto equinox = render::sun_position(core::parse_utc_time("2026-03-20T14:46Z"), 0, 0);
-  CHECK(equinox.declination_deg == Approx(0.0).margin(kEquinoxDeg));  // 0.017 deg per hour near the equinox
+  CHECK(equinox.declination_deg == Approx(0.0).epsilon(0).margin(kEquinoxDeg));  // 0.017 deg per hour near the equinox
 }
 
 TEST_CASE("at Bern the midsummer sun culminates at 90 - latitude + 23.44 deg due south", "[sun]") {
@@ -95,8 +95,8 @@ TEST_CASE("at Bern the midsummer sun culminates at 90 - latitude + 23.44 deg due
     }
   }
   // One minute of time moves the culminating sun by < 0.001 deg in elevation.
-  CHECK(best == Approx(90 - lat + 23.436).margin(kCulminationDeg));
-  CHECK(best_azimuth == Approx(180).margin(kCulminationAzimuthDeg));  // within half a minute: 0.29 deg
+  CHECK(best == Approx(90 - lat + 23.436).epsilon(0).margin(kCulminationDeg));
+  CHECK(best_azimuth == Approx(180).epsilon(0).margin(kCulminationAzimuthDeg));  // within half a minute: 0.29 deg
   const auto night = render::sun_position(core::parse_utc_time("2026-06-21T23:00Z"), lat, lon);
   CHECK(night.elevation_deg < 0);
 }
@@ -118,7 +118,7 @@ TEST_CASE("the views run from Gurten north-north-east and from Bantiger south-we
   CHECK_FALSE(regional::find_viewpoint("matterhorn"));
   // Gurten to Solothurn is about 33 km.
   CHECK(regional::geodesic_distance_m(46.91722, 7.44361, 47.20833, 7.53722) ==
-        Approx(kGurtenSolothurnM).margin(kDistanceCheckM));
+        Approx(kGurtenSolothurnM).epsilon(0).margin(kDistanceCheckM));
 }
 
 TEST_CASE("the built-in coordinates match the reference table when it is present", "[sites]") {
@@ -138,8 +138,8 @@ TEST_CASE("the built-in coordinates match the reference table when it is present
     std::getline(row, lon, ',');
     auto check = [&](const std::string& prefix, double la, double lo) {
       if (name.rfind(prefix, 0) != 0) return;
-      CHECK(std::stod(lat) == Approx(la).margin(kSiteCoordinateDeg));
-      CHECK(std::stod(lon) == Approx(lo).margin(kSiteCoordinateDeg));
+      CHECK(std::stod(lat) == Approx(la).epsilon(0).margin(kSiteCoordinateDeg));
+      CHECK(std::stod(lon) == Approx(lo).epsilon(0).margin(kSiteCoordinateDeg));
       ++matched;
     };
     check("Gurten", regional::find_viewpoint("gurten")->site.latitude_deg, regional::find_viewpoint("gurten")->site.longitude_deg);
