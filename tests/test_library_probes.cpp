@@ -30,6 +30,7 @@ namespace nephele::glsl {
 #include "probes/curl_flow.glsl"
 #include "probes/equirect_mapping.glsl"
 #include "probes/hash.glsl"
+#include "probes/implicit_field.glsl"
 #include "probes/noise_rows.glsl"
 #include "probes/perlin.glsl"
 #include "probes/portable_math.glsl"
@@ -336,6 +337,33 @@ TEST_CASE("perlin.glsl on the GPU agrees with the CPU", "[probe]") {
     if (f == 4) cases.push_back({arguments(4, vec4(0.0f), r.v(-20.0f, 20.0f), period, key), kPerlin});
   }
   compare("perlin", probe_perlin, cases);
+}
+
+TEST_CASE("implicit_field.glsl on the GPU agrees with the CPU", "[probe][model]") {
+  // The field: a distance (kArithmetic) over an influence of at least 1/4 moves x by 4 such,
+  // and Wyvill's slope is below 1.6 (|b'| peaks near x = 0.5): 8 kArithmetic for w <= 1.
+  constexpr float kField = 8 * kArithmetic;
+  // Turbulence of 3 octaves with amplitudes 0.6, 0.3, 0.15 (sum 1.05 < 1.2), each octave a
+  // point of Perlin noise within kNoiseMean (lattice coordinates below kLatticeLimit = 32:
+  // |p| <= 2, frequency <= 4, lacunarity 2 over 3 octaves); a field value below 2 times
+  // np <= 1 times that, plus the field's and the blend's arithmetic.
+  constexpr float kTurbulence = 1.2f * kNoiseMean + kArithmetic;
+  constexpr float kBlended = 2 * kTurbulence + kField + 4 * kArithmetic;
+  Random r(31);
+  std::vector<Case> cases;
+  for (int k = 0; k < 96; ++k) {
+    const int f = k % 4;
+    const vec4 a = vec4(r(-1.0f, 1.0f), r(-1.0f, 1.0f), r(-1.0f, 1.0f), r(0.0f, 0.3f));
+    const vec4 b = vec4(r(-1.0f, 1.0f), r(-1.0f, 1.0f), r(-1.0f, 1.0f), r(0.25f, 1.0f));
+    const vec4 kind = vec4(r(0.5f, 1.0f), float(k / 4 % 2), r(0.5f, 4.0f), r(0.0f, 1.0f));
+    if (f == 0)
+      cases.push_back({arguments(0, vec4(r(-0.2f, 1.2f), r(0.0f, 1.0f), r(0.0f, 1.0f), 0.0f),
+                                 vec4(1.0f, r(0.0f, 1.0f), r(0.0f, 2.0f), r(0.0f, 1.0f))), kArithmetic});
+    if (f == 1) cases.push_back({arguments(1, r.v(-1.0f, 1.0f), a, b, kind), kField});
+    if (f == 2) cases.push_back({arguments(2, r.v(-2.0f, 2.0f), a, b, kind), kTurbulence});
+    if (f == 3) cases.push_back({arguments(3, r.v(-2.0f, 2.0f), a, b, kind), kBlended});
+  }
+  compare("implicit_field", probe_implicit_field, cases);
 }
 
 TEST_CASE("tileable_noise.glsl on the GPU agrees with the CPU", "[probe]") {

@@ -13,6 +13,7 @@ namespace nephele::glsl {
 #include "lib/curl_flow.glsl"
 #include "lib/equirect_mapping.glsl"
 #include "lib/hash.glsl"
+#include "lib/implicit_field.glsl"
 #include "lib/noise_rows.glsl"
 #include "lib/noise_types.glsl"
 #include "lib/parameters.glsl"
