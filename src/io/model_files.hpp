@@ -1,0 +1,37 @@
+#pragma once
+// Files of a cloud model's density volume (nephele model; docs/model.md, "Files"): the raw
+// float32 volume, its JSON sidecar, an EXR slice atlas, the model as a cloud model file and,
+// when nephele was built with OpenVDB, a .vdb grid. One output set: all or nothing.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "core/json.hpp"
+#include "model/cloud_model.hpp"
+
+namespace nephele::io {
+
+// Extinction per metre of density 1: a cumulus's liquid water content 0.5 g/m^3 with droplets
+// of effective radius 10 um gives beta = 3 LWC / (2 rho_w r_e) = 0.075 / m (docs/model.md).
+constexpr double density_to_extinction_per_m = 0.075;
+
+// The slice atlas: slices z in a grid of `columns` tiles, slice z at tile (z % columns,
+// z / columns); image row j of a tile is y = j. columns = ceil(sqrt(size)).
+int atlas_columns(int size);
+std::vector<float> model_atlas(const std::vector<float>& values, int size);
+
+json::Value model_sidecar(const model::CloudModel& model, int size, const std::vector<float>& values,
+                          const json::Value& run, bool with_vdb);
+
+// Writes density.raw, density.json, density_atlas.exr, model.cloud.json (and density.vdb) into
+// `directory` as one output set. Returns the names written.
+std::vector<std::string> write_model_files(const std::filesystem::path& directory, const model::CloudModel& model,
+                                           int size, const std::vector<float>& values, const json::Value& run);
+
+// The .vdb of a volume (io/vdb_file.cpp): a FOG_VOLUME float grid named "density", background
+// 0, only voxels above 0 active, voxel size extent / size metres, voxel (i, j, k) centred at
+// ((i + 1/2) s, (j + 1/2) s, (k + 1/2) s) metres (z up). Empty when built without OpenVDB.
+bool vdb_available();
+std::string vdb_bytes(const model::CloudModel& model, int size, const std::vector<float>& values);
+
+}  // namespace nephele::io
