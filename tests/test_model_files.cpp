@@ -2,6 +2,8 @@
 // key, and a run writes its output set (raw volume, sidecar, EXR atlas, the model).
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -9,6 +11,8 @@
 #include <sstream>
 
 #include "cli_support.hpp"
+#include "gl_support.hpp"
+#include "model/density_volume.hpp"
 #include "core/json.hpp"
 #include "io/model_files.hpp"
 #include "model/cloud_model.hpp"
@@ -129,6 +133,7 @@ TEST_CASE("nephele model writes the raw volume, its sidecar, the EXR atlas and t
   REQUIRE(r.exit_code == 0);
   CHECK(std::filesystem::file_size(out.path / "density.raw") == 20u * 20u * 20u * 4u);
   CHECK(std::filesystem::exists(out.path / "density_atlas.exr"));
+  CHECK(std::filesystem::exists(out.path / "density.vdb") == io::vdb_available());
   const json::Value sidecar = json::parse(test::read_file(out.path / "density.json"));
   CHECK(sidecar.at("size").as_number() == 20);
   CHECK(sidecar.at("voxel_size_m").as_number() == 6000.0 / 20);
@@ -137,4 +142,54 @@ TEST_CASE("nephele model writes the raw volume, its sidecar, the EXR atlas and t
   // The model written beside the volume reads back as the example.
   CHECK(model::write_cloud_model(model::read_cloud_model((out.path / "model.cloud.json").string())) ==
         model::write_cloud_model(model::example("towering")));
+}
+
+TEST_CASE("density.vdb reads back through OpenVDB with its voxels, grid class, voxel size and orientation", "[model][vdb][gpu]") {
+  if (!io::vdb_available()) {
+    WARN("built without OpenVDB: no .vdb to read back");
+    return;
+  }
+  test::test_context();
+  // One point off every axis's centre, without noise: the density's centroid lies at the
+  // point, so a swapped or mirrored axis moves it by at least 0.1 x extent = 20 voxels.
+  model::CloudModel m;
+  m.blend = model::Blend::lipus;
+  m.extent_m = 1000;
+  model::Primitive p;
+  p.from = p.to = glsl::vec3(0.25f, 0.6f, 0.75f);
+  p.radius = 0.05f;
+  p.influence = 0.1f;
+  m.primitives = {p};
+  const int size = 32;
+  model::DensityVolume volume(size);
+  volume.compute(m);
+  const auto values = volume.read();
+  test::TemporaryDirectory dir(true);
+  const auto path = dir.path / "density.vdb";
+  {
+    const std::string bytes = io::vdb_bytes(m, size, values);
+    std::ofstream(path, std::ios::binary).write(bytes.data(), std::streamsize(bytes.size()));
+  }
+  const io::VdbContents c = io::read_vdb(path.string());
+  CHECK(c.grids == std::vector<std::string>{"density"});
+  CHECK(c.fog_volume);
+  CHECK(c.background == 0.0f);
+  const double s = 1000.0 / size;
+  CHECK(c.voxel_size == Approx(s).epsilon(1e-12));
+  for (double o : c.origin) CHECK(o == Approx(s / 2).epsilon(1e-12));  // voxel (0, 0, 0) centred at s/2
+  CHECK(c.extinction_per_m == io::density_to_extinction_per_m);
+  // Sparse: exactly the voxels above 0 are active, with the raw volume's values.
+  const long nonzero = long(std::count_if(values.begin(), values.end(), [](float v) { return v > 0.0f; }));
+  CHECK(c.active == nonzero);
+  CHECK(nonzero < long(values.size()) / 4);
+  double weight = 0, centroid[3] = {0, 0, 0};
+  for (const auto& v : c.values) {
+    REQUIRE(v.value == values[(size_t(v.z) * size + v.y) * size + v.x]);
+    const int k[3] = {v.x, v.y, v.z};
+    for (int a = 0; a < 3; ++a) centroid[a] += v.value * (k[a] + 0.5) * s;
+    weight += v.value;
+  }
+  // The field is symmetric about the point; voxel centres sample it symmetrically up to one
+  // voxel's shift: within one voxel s of the point in world metres.
+  for (int a = 0; a < 3; ++a) CHECK(std::abs(centroid[a] / weight - 1000.0 * p.from[a]) <= s);
 }

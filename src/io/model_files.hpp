@@ -2,6 +2,7 @@
 // Files of a cloud model's density volume (nephele model; docs/model.md, "Files"): the raw
 // float32 volume, its JSON sidecar, an EXR slice atlas, the model as a cloud model file and,
 // when nephele was built with OpenVDB, a .vdb grid. One output set: all or nothing.
+#include <array>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -33,5 +34,24 @@ std::vector<std::string> write_model_files(const std::filesystem::path& director
 // ((i + 1/2) s, (j + 1/2) s, (k + 1/2) s) metres (z up). Empty when built without OpenVDB.
 bool vdb_available();
 std::string vdb_bytes(const model::CloudModel& model, int size, const std::vector<float>& values);
+
+// What a .vdb holds, read back through OpenVDB (for tests and checks): the grid names, the
+// 'density' grid's class, background, voxel size, world position of voxel (0, 0, 0) and its
+// active voxels.
+struct VdbVoxel {
+  int x, y, z;
+  float value;
+};
+struct VdbContents {
+  std::vector<std::string> grids;
+  bool fog_volume = false;
+  float background = -1;
+  double voxel_size = 0;
+  std::array<double, 3> origin{};
+  long active = 0;
+  double extinction_per_m = 0;
+  std::vector<VdbVoxel> values;
+};
+VdbContents read_vdb(const std::string& path);
 
 }  // namespace nephele::io
