@@ -12,6 +12,7 @@
 #include "model/bricks.hpp"
 #include "model/cloud_model.hpp"
 #include "model/density_volume.hpp"
+#include "render/model_preview.hpp"
 
 using namespace nephele;
 using namespace nephele::glsl;
@@ -202,4 +203,40 @@ TEST_CASE("unequal weights are refused in the Lipus blends and allowed in the pl
   CHECK_THROWS_WITH(model::validate(m, "t"), Catch::Contains("primitives[2].weight") && Catch::Contains("one weight"));
   m.blend = model::Blend::sum;
   CHECK_NOTHROW(model::validate(m, "t"));
+}
+
+TEST_CASE("the preview pass agrees with its CPU twin and shows the cloud in the middle of the frame", "[model][gpu]") {
+  test::test_context();
+  const int size = 24;
+  const model::CloudModel m = model::example("towering");
+  model::DensityVolume volume(size);
+  volume.compute(m);
+  render::PreviewSettings s;
+  s.width = 24;
+  s.height = 16;
+  s.view_steps = 16;
+  s.light_steps = 4;
+  const core::ImageData gpu = render::render_preview(volume, s);
+  const core::ImageData cpu = render::render_preview_cpu(volume.read(), size, m, s);
+  REQUIRE(gpu.pixels.size() == cpu.pixels.size());
+  // Positions are formed with up to 4 roundings of coordinates below 4 extents (kMetres). An
+  // extinction moves by 0.075 per unit of density, the density by at most 1 per voxel of
+  // extent / size, plus the filter's rounding (2^-20). Optical depths along a light ray (4
+  // samples) or the view ray cover at most sqrt(3) extents, so each errs by at most
+  // extinction x 1.8 extents. The pixel is sum_i T_i (1 - e^(-sigma_i ds)) S_i / sigma_i with
+  // sum_i T_i (1 - e^(-sigma_i ds)) <= 1 and sources S / sigma below the radiance scale 4; a
+  // source changes by at most its light depth's error relative (d/dtau e^(-b tau) with b <= 1),
+  // the weights by the view depth's error: 4 x (2 depth errors).
+  const float extent = float(m.extent_m);
+  const float kMetres = 4 * 4 * extent * kUlp;
+  const float extinction = 0.075f * (kMetres / (extent / size) + 16 * kUlp);
+  const float depth = extinction * 1.8f * extent;
+  const float tolerance = 4 * (2 * depth) + 1e-5f;
+  float worst = 0;
+  for (size_t i = 0; i < gpu.pixels.size(); ++i) worst = std::max(worst, std::abs(gpu.pixels[i] - cpu.pixels[i]));
+  INFO("largest difference " << worst << ", tolerance " << tolerance);
+  CHECK(worst <= tolerance);
+  auto alpha = [&](int x, int y) { return gpu.pixels[(size_t(y) * s.width + x) * 4 + 3]; };
+  CHECK(alpha(s.width / 2, s.height / 2) > 0.9f);  // the column, seen through its middle
+  CHECK(alpha(0, 0) == 0.0f);                      // the sky beside the box
 }

@@ -128,11 +128,12 @@ TEST_CASE("nephele model refuses bad options and files with exit code 2", "[mode
 
 TEST_CASE("nephele model writes the raw volume, its sidecar, the EXR atlas and the model as one set", "[model][cli][gpu]") {
   test::TemporaryDirectory out;
-  const auto r = test::run("model --example towering --size 20 --quiet --out " + out.path.string());
+  const auto r = test::run("model --example towering --size 20 --preview 32x24 --quiet --out " + out.path.string());
   INFO(r.output);
   REQUIRE(r.exit_code == 0);
   CHECK(std::filesystem::file_size(out.path / "density.raw") == 20u * 20u * 20u * 4u);
   CHECK(std::filesystem::exists(out.path / "density_atlas.exr"));
+  CHECK(std::filesystem::exists(out.path / "preview.png"));
   CHECK(std::filesystem::exists(out.path / "density.vdb") == io::vdb_available());
   const json::Value sidecar = json::parse(test::read_file(out.path / "density.json"));
   CHECK(sidecar.at("size").as_number() == 20);

@@ -5,6 +5,7 @@
 
 #include "io/atomic_output.hpp"
 #include "io/image_files.hpp"
+#include "render/cloud_renderer.hpp"
 #include "nephele/version.hpp"
 
 namespace nephele::io {
@@ -68,7 +69,8 @@ json::Value model_sidecar(const model::CloudModel& model, int size, const std::v
 }
 
 std::vector<std::string> write_model_files(const std::filesystem::path& directory, const model::CloudModel& model,
-                                           int size, const std::vector<float>& values, const json::Value& run) {
+                                           int size, const std::vector<float>& values, const json::Value& run,
+                                           const core::ImageData* preview) {
   OutputSet outputs(directory, OutputSet::Scope::directory);
   std::vector<std::string> names = {"density.raw", "density_atlas.exr", "model.cloud.json", "density.json"};
   outputs.write("density.raw", values.data(), values.size() * sizeof(float));
@@ -80,6 +82,10 @@ std::vector<std::string> write_model_files(const std::filesystem::path& director
   if (vdb) {
     outputs.write("density.vdb", vdb_bytes(model, size, values));
     names.push_back("density.vdb");
+  }
+  if (preview) {
+    outputs.write("preview.png", encode_image(render::tone_map(*preview, preview_exposure), png_encoding(8), "preview.png"));
+    names.push_back("preview.png");
   }
   outputs.write("density.json", json::write(model_sidecar(model, size, values, run, vdb)));
   outputs.commit();

@@ -7,14 +7,14 @@
 #include <string>
 #include <vector>
 
+#include "core/image.hpp"
 #include "core/json.hpp"
 #include "model/cloud_model.hpp"
 
 namespace nephele::io {
 
-// Extinction per metre of density 1: a cumulus's liquid water content 0.5 g/m^3 with droplets
-// of effective radius 10 um gives beta = 3 LWC / (2 rho_w r_e) = 0.075 / m (docs/model.md).
-constexpr double density_to_extinction_per_m = 0.075;
+// Extinction per metre of density 1, as the sidecar and the .vdb record it.
+constexpr double density_to_extinction_per_m = model::density_to_extinction_per_m;
 
 // The slice atlas: slices z in a grid of `columns` tiles, slice z at tile (z % columns,
 // z / columns); image row j of a tile is y = j. columns = ceil(sqrt(size)).
@@ -24,10 +24,15 @@ std::vector<float> model_atlas(const std::vector<float>& values, int size);
 json::Value model_sidecar(const model::CloudModel& model, int size, const std::vector<float>& values,
                           const json::Value& run, bool with_vdb);
 
-// Writes density.raw, density.json, density_atlas.exr, model.cloud.json (and density.vdb) into
-// `directory` as one output set. Returns the names written.
+// Exposure of preview.png before the regional renderer's tone mapping (render::tone_map).
+constexpr double preview_exposure = 4.0;
+
+// Writes density.raw, density.json, density_atlas.exr, model.cloud.json (and density.vdb, and
+// preview.png from the linear radiance `preview` unless it is null) into `directory` as one
+// output set. Returns the names written.
 std::vector<std::string> write_model_files(const std::filesystem::path& directory, const model::CloudModel& model,
-                                           int size, const std::vector<float>& values, const json::Value& run);
+                                           int size, const std::vector<float>& values, const json::Value& run,
+                                           const core::ImageData* preview = nullptr);
 
 // The .vdb of a volume (io/vdb_file.cpp): a FOG_VOLUME float grid named "density", background
 // 0, only voxels above 0 active, voxel size extent / size metres, voxel (i, j, k) centred at

@@ -12,6 +12,10 @@
 
 namespace nephele::model {
 
+// Extinction per metre of density 1: a cumulus's liquid water content 0.5 g/m^3 with droplets
+// of effective radius 10 um gives beta = 3 LWC / (2 rho_w r_e) = 0.075 / m (docs/model.md).
+constexpr double density_to_extinction_per_m = 0.075;
+
 // Bad model input (an option, a file key, a value): exit code 2.
 using ModelError = core::InputError;
 

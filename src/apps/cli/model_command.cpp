@@ -12,7 +12,10 @@
 #include "core/memory.hpp"
 #include "core/progress.hpp"
 #include "gpu/egl_context.hpp"
+#include "gpu/pass_timer.hpp"
 #include "io/model_files.hpp"
+#include "regional/scene.hpp"
+#include "render/model_preview.hpp"
 #include "model/density_volume.hpp"
 #include "params/table.hpp"
 
@@ -68,12 +71,13 @@ int run_model(const std::vector<std::string>& arguments) {
   std::string example, scene_path, out(cm::out.default_text), blend(cm::blend.default_text);
   int size = cm::size.default_int();
   double scale = cm::scale.default_number, extent = cm::extent.default_number;
-  bool quiet = false, verbose = false;
+  bool quiet = false, verbose = false, no_preview = false;
+  std::string preview_size(cm::preview.default_text);
   Options options("model",
                   "Builds the density volume of a cloud made of implicit primitives (points and segments with Wyvill\n"
                   "fields, Lipus blending and turbulence per primitive; Montenegro et al., docs/model.md) from a built-in\n"
                   "--example or a --scene file (scenes/*.cloud.json), and writes into --out: density.raw (float32),\n"
-                  "density.json, density_atlas.exr, model.cloud.json and, with OpenVDB, density.vdb.",
+                  "density.json, density_atlas.exr, model.cloud.json, preview.png and, with OpenVDB, density.vdb.",
                   params::model);
   options.bind(cm::example, &example);
   options.bind(cm::scene_path, &scene_path);
@@ -82,6 +86,8 @@ int run_model(const std::vector<std::string>& arguments) {
   options.bind(cm::blend, &blend);
   options.bind(cm::scale, &scale);
   options.bind(cm::extent, &extent);
+  options.bind(cm::preview, &preview_size);
+  options.bind(cm::no_preview, &no_preview);
   options.bind(params::run::quiet, &quiet);
   options.bind(params::run::verbose, &verbose);
   if (!options.parse(arguments)) {
@@ -95,28 +101,40 @@ int run_model(const std::vector<std::string>& arguments) {
   if (options.given(cm::scale)) m.scale = float(scale);
   if (options.given(cm::extent)) m.extent_m = extent;
   model::validate(m, example.empty() ? scene_path : "--example " + example);
+  render::PreviewSettings preview;
+  regional::parse_size(preview_size, preview.width, preview.height, "--preview");
 
   gpu::EglContext context;
   if (verbose) std::cerr << "renderer: " << context.info().renderer << " (" << context.info().version << ")\n";
   check_fits(size, context);
-  core::Progress progress("model", 2, core::Progress::for_stderr(quiet));
+  core::Progress progress("model", 3, core::Progress::for_stderr(quiet));
   progress.update(0, "volume");
   model::DensityVolume volume(size);
   volume.compute(m);
   const std::vector<float> values = volume.read();
   const model::PassStats stats = volume.stats();
-  progress.update(1, "files");
+  core::ImageData image;
+  double preview_ms = 0;
+  if (!no_preview) {
+    progress.update(1, "preview");
+    gpu::PassTimer timer;
+    image = render::render_preview(volume, preview);
+    preview_ms = timer.milliseconds();
+  }
+  progress.update(2, "files");
   json::Value run;
   run.set("renderer", context.info().renderer);
   run.set("volume_ms", stats.ms);
   run.set("bricks", stats.bricks);
   run.set("bricks_computed", stats.bricks_computed);
   run.set("brick_primitive_pairs", static_cast<long>(stats.pairs));
-  const auto names = io::write_model_files(out, m, size, values, run);
+  if (!no_preview) run.set("preview_ms", preview_ms);
+  const auto names = io::write_model_files(out, m, size, values, run, no_preview ? nullptr : &image);
   progress.finish();
   if (verbose) {
     std::fprintf(stderr, "volume: %d^3 in %.1f ms, %d of %d bricks (%.1f%%), %ld brick-primitive pairs\n", size, stats.ms,
                  stats.bricks_computed, stats.bricks, 100.0 * stats.occupancy(), stats.pairs);
+    if (!no_preview) std::fprintf(stderr, "preview: %d x %d in %.1f ms\n", preview.width, preview.height, preview_ms);
   }
   for (const auto& name : names) std::cout << (std::filesystem::path(out) / name).string() << "\n";
   return exit_ok;
