@@ -114,14 +114,12 @@ void DensityVolume::run(const std::vector<int>& bricks) {
   std::vector<std::uint32_t> indices;
   jobs.reserve(bricks.size());
   stats_.pairs = 0;
-  const int n = grid_.per_axis();
   for (int b : bricks) {
     const auto& list = lists_[size_t(b)];
     jobs.emplace_back(std::uint32_t(b), std::uint32_t(indices.size()), std::uint32_t(list.size()), 0u);
     indices.insert(indices.end(), list.begin(), list.end());
     stats_.pairs += long(list.size());
   }
-  (void)n;
   stats_.bricks_computed = int(bricks.size());
   if (jobs.empty()) return;
   upload(jobs_, jobs.data(), jobs.size() * sizeof(glsl::uvec4));

@@ -50,7 +50,7 @@ double median(std::vector<double> v) {
 
 // n primitives spread over a cumulus field in a fixed pattern (golden-angle spiral), so that
 // the figures for 1, 5, 10 and 50 primitives describe comparable clouds.
-model::CloudModel bench_model(int n, model::Blend blend) {
+model::CloudModel spiral_of_cumuli(int n, model::Blend blend) {
   model::CloudModel m;
   m.blend = blend;
   for (int i = 0; i < n; ++i) {
@@ -162,7 +162,7 @@ int bench_model(const std::vector<std::string>& arguments) {
   model::DensityVolume volume(size);
   for (int n : {1, 5, 10, 50})
     for (auto blend : {model::Blend::global, model::Blend::per_primitive}) {
-      const model::CloudModel m = bench_model(n, blend);
+      const model::CloudModel m = spiral_of_cumuli(n, blend);
       volume.compute(m);  // warming: compiles and allocates
       std::vector<double> full, edit;
       double full_occupancy = 0, edit_occupancy = 0;
