@@ -107,6 +107,24 @@ TEST_CASE("cloud model files refuse unknown and duplicate keys, wrong types, mis
   }
 }
 
+TEST_CASE("a polyline in a model file is its consecutive segments, with its radius, influence and noise", "[model]") {
+  const std::string common = R"("radius": 0.05, "influence": 0.08, "noise": {"seed": 9}})";
+  const model::CloudModel polyline = model::parse_cloud_model(
+      R"({"primitives": [{"type": "polyline", "points": [[0.2, 0.5, 0.8], [0.5, 0.5, 0.82], [0.8, 0.6, 0.8]], )" +
+          common + "]}",
+      "p.cloud.json");
+  const model::CloudModel segments = model::parse_cloud_model(
+      R"({"primitives": [{"type": "segment", "from": [0.2, 0.5, 0.8], "to": [0.5, 0.5, 0.82], )" + common +
+          R"(, {"type": "segment", "from": [0.5, 0.5, 0.82], "to": [0.8, 0.6, 0.8], )" + common + "]}",
+      "s.cloud.json");
+  CHECK(polyline.primitives.size() == 2);
+  CHECK(model::write_cloud_model(polyline) == model::write_cloud_model(segments));
+  CHECK_THAT(refused(R"({"primitives": [{"type": "polyline", "points": [[0.2, 0.5, 0.8]]}]})"),
+             Catch::Contains("primitives[0].points") && Catch::Contains("2 to 64"));
+  CHECK_THAT(refused(R"({"primitives": [{"type": "polyline", "position": [0.2, 0.5, 0.8]}]})"),
+             Catch::Contains("primitives[0].position") && Catch::Contains("points"));
+}
+
 TEST_CASE("nephele model refuses bad options and files with exit code 2", "[model][cli]") {
   test::TemporaryDirectory dir(true);
   const auto bad = dir.path / "bad.cloud.json";

@@ -53,36 +53,55 @@ class Reader {
     return t;
   }
 
-  Primitive primitive(const json::Value& v, const std::string& path, const Turbulence& noise) const {
+  // One primitive of the file; a polyline becomes its consecutive segments, each with the
+  // polyline's radius, influence, weight and noise.
+  std::vector<Primitive> primitives(const json::Value& v, const std::string& path, const Turbulence& noise) const {
     if (!v.is_object()) k_.fail(path, "must be an object");
     Primitive p;
     p.noise = noise;
     const json::Value* type = v.find("type");
-    if (!type) k_.fail(path + ".type", "missing (allowed: point, segment)");
+    if (!type) k_.fail(path + ".type", "missing (allowed: point, segment, polyline)");
     const std::string kind = k_.string(*type, path + ".type");
     params::check_word(cm::kind, kind, source_ + ": '" + path + ".type'");
-    p.segment = kind == "segment";
+    p.segment = kind != "point";
+    const bool polyline = kind == "polyline";
+    const std::string skeleton = polyline ? "points" : p.segment ? "from, to" : "position";
+    std::vector<glsl::vec3> points;
     bool has_from = false, has_to = false;
     for (const auto& [key, w] : v.as_object()) {
       const std::string name = path + "." + key;
       if (key == "type") continue;
-      if (key == (p.segment ? "from" : "position")) {
+      if (!polyline && key == (p.segment ? "from" : "position")) {
         p.from = point(w, name);
         has_from = true;
-      } else if (key == "to" && p.segment) {
+      } else if (!polyline && key == "to" && p.segment) {
         p.to = point(w, name);
         has_to = true;
+      } else if (polyline && key == "points") {
+        if (!w.is_array() || w.as_array().size() < 2 || w.as_array().size() > 64)
+          k_.fail(name, "must be an array of 2 to 64 points [x, y, z]");
+        for (size_t i = 0; i < w.as_array().size(); ++i)
+          points.push_back(point(w.as_array()[i], name + "[" + std::to_string(i) + "]"));
       } else if (key == "radius") p.radius = float(number(cm::radius, w, name));
       else if (key == "influence") p.influence = float(number(cm::influence, w, name));
       else if (key == "weight") p.weight = float(number(cm::weight, w, name));
       else if (key == "noise") p.noise = turbulence(w, name, noise);
       else
-        k_.fail(name, std::string("unknown key (allowed for a ") + kind + ": type, " +
-                          (p.segment ? "from, to" : "position") + ", radius, influence, weight, noise)");
+        k_.fail(name, "unknown key (allowed for a " + kind + ": type, " + skeleton + ", radius, influence, weight, noise)");
+    }
+    if (polyline) {
+      if (points.empty()) k_.fail(path + ".points", "missing");
+      std::vector<Primitive> segments;
+      for (size_t i = 0; i + 1 < points.size(); ++i) {
+        p.from = points[i];
+        p.to = points[i + 1];
+        segments.push_back(p);
+      }
+      return segments;
     }
     if (!has_from) k_.fail(path + (p.segment ? ".from" : ".position"), "missing");
     if (p.segment && !has_to) k_.fail(path + ".to", "missing");
-    return p;
+    return {p};
   }
 
   const json::KeyReader& keys() const { return k_; }
@@ -138,7 +157,8 @@ CloudModel parse_cloud_model(const std::string& text, const std::string& source)
   if (!primitives->is_array()) k.fail("primitives", "must be an array of primitives");
   const auto& list = primitives->as_array();
   for (size_t i = 0; i < list.size(); ++i)
-    m.primitives.push_back(r.primitive(list[i], "primitives[" + std::to_string(i) + "]", m.noise));
+    for (const Primitive& p : r.primitives(list[i], "primitives[" + std::to_string(i) + "]", m.noise))
+      m.primitives.push_back(p);
   validate(m, source);
   return m;
 }
