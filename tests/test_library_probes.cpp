@@ -14,6 +14,7 @@
 
 #include "gl_support.hpp"
 #include "march_tolerance.hpp"
+#include "model/density_volume.hpp"
 #include "render/cloud_renderer.hpp"
 #include "shader_math/shader_math.hpp"
 
@@ -30,6 +31,8 @@ namespace nephele::glsl {
 #include "probes/curl_flow.glsl"
 #include "probes/equirect_mapping.glsl"
 #include "probes/hash.glsl"
+#include "probes/implicit_field.glsl"
+#include "probes/model_march.glsl"
 #include "probes/noise_rows.glsl"
 #include "probes/perlin.glsl"
 #include "probes/portable_math.glsl"
@@ -336,6 +339,75 @@ TEST_CASE("perlin.glsl on the GPU agrees with the CPU", "[probe]") {
     if (f == 4) cases.push_back({arguments(4, vec4(0.0f), r.v(-20.0f, 20.0f), period, key), kPerlin});
   }
   compare("perlin", probe_perlin, cases);
+}
+
+TEST_CASE("implicit_field.glsl on the GPU agrees with the CPU", "[probe][model]") {
+  // The field: a distance (kArithmetic) over an influence of at least 1/4 moves x by 4 such,
+  // and Wyvill's slope is below 1.6 (|b'| peaks near x = 0.5): 8 kArithmetic for w <= 1.
+  constexpr float kField = 8 * kArithmetic;
+  // Turbulence of 3 octaves with amplitudes 0.6, 0.3, 0.15 (sum 1.05 < 1.2), each octave a
+  // point of Perlin noise within kNoiseMean (lattice coordinates below kLatticeLimit = 32:
+  // |p| <= 2, frequency <= 4, lacunarity 2 over 3 octaves); a field value below 2 times
+  // np <= 1 times that, plus the field's and the blend's arithmetic.
+  constexpr float kTurbulence = 1.2f * kNoiseMean + kArithmetic;
+  constexpr float kBlended = 2 * kTurbulence + kField + 4 * kArithmetic;
+  Random r(31);
+  std::vector<Case> cases;
+  for (int k = 0; k < 96; ++k) {
+    const int f = k % 4;
+    const vec4 a = vec4(r(-1.0f, 1.0f), r(-1.0f, 1.0f), r(-1.0f, 1.0f), r(0.0f, 0.3f));
+    const vec4 b = vec4(r(-1.0f, 1.0f), r(-1.0f, 1.0f), r(-1.0f, 1.0f), r(0.25f, 1.0f));
+    const vec4 kind = vec4(r(0.5f, 1.0f), float(k / 4 % 2), r(0.5f, 4.0f), r(0.0f, 1.0f));
+    if (f == 0)
+      cases.push_back({arguments(0, vec4(r(-0.2f, 1.2f), r(0.0f, 1.0f), r(0.0f, 1.0f), 0.0f),
+                                 vec4(1.0f, r(0.0f, 1.0f), r(0.0f, 2.0f), r(0.0f, 1.0f))), kArithmetic});
+    if (f == 1) cases.push_back({arguments(1, r.v(-1.0f, 1.0f), a, b, kind), kField});
+    if (f == 2) cases.push_back({arguments(2, r.v(-2.0f, 2.0f), a, b, kind), kTurbulence});
+    if (f == 3) cases.push_back({arguments(3, r.v(-2.0f, 2.0f), a, b, kind), kBlended});
+  }
+  compare("implicit_field", probe_implicit_field, cases);
+}
+
+TEST_CASE("model_march.glsl on the GPU agrees with the CPU", "[probe][model]") {
+  test::test_context();
+  // The towering cumulus at 24^3 as the density the probe reads (unit 4), and its host copy.
+  const int size = 24;
+  model::DensityVolume volume(size);
+  volume.compute(model::example("towering"));
+  const std::vector<float> values = volume.read();
+  glBindTextureUnit(4, volume.texture());
+  const DensitySource density{size, values.data()};
+  auto cpu = [&](const mat4& x) { return probe_model_march(x, density); };
+  // Tolerances. Positions in the 1000 m box are formed with up to 4 roundings of values below
+  // 2048 m (ulp 2^-13 m), or fused: kMetres = 4 x 2^-13 m. ray_box divides such differences by
+  // direction components of at least 0.05 here: distances within kMetres / 0.05 (relative
+  // kArithmetic on top). A density moves by at most its largest step between voxels (1, the
+  // clamp) per voxel of 1000 / 24 m, so an extinction by 0.02 x kMetres / (1000 / 24) per
+  // sample, plus the filter's rounding (kBilinear). An optical depth sums 4 samples of
+  // extinction below 0.02 times steps below 2000 m (each also within kMetres / 0.05 x 0.02).
+  // A march: transmittances e^(-tau) and sources move by at most the optical depths' errors
+  // (relative, for tau below the 16 samples' 16 x 0.02 x 125 = 40) times the radiance scale
+  // (below 4): those are added up along the ray.
+  const float kMetres = 4.0f / 8192.0f;
+  const float distance = kMetres / 0.05f + 2000.0f * kArithmetic;
+  const float extinction = 0.02f * (kMetres / (1000.0f / size) + kBilinear);
+  const float depth = 4 * (extinction * 2000.0f + 0.02f * distance) + kArithmetic;
+  const float march = 16 * 4 * (extinction * 125.0f + depth + kTranscendental);
+  Random r(41);
+  std::vector<Case> cases;
+  for (int k = 0; k < 48; ++k) {
+    const int f = k % 4;
+    const vec4 inside(r(100.0f, 900.0f), r(100.0f, 900.0f), r(100.0f, 900.0f), 0.0f);
+    vec4 towards(r(-0.3f, 0.3f), 1.0f, r(-0.3f, 0.3f), 0.0f);  // |components| >= 0.05 after normalising
+    if (std::abs(towards.x) < 0.06f) towards.x = 0.06f;
+    if (std::abs(towards.z) < 0.06f) towards.z = 0.06f;
+    const vec4 origin(500.0f, -1500.0f, 450.0f, 0.0f);
+    if (f == 0) cases.push_back({arguments(0, vec4(0.0f), origin, towards), distance});
+    if (f == 1) cases.push_back({arguments(1, vec4(0.0f), inside), std::max(extinction, depth)});
+    if (f == 2) cases.push_back({arguments(2, vec4(r(0.0f, 1.0f), 0, 0, 0), origin, towards), march});
+    if (f == 3) cases.push_back({arguments(3, vec4(float(k % 16), float(k % 12), 0, 0)), march});
+  }
+  compare("model_march", cpu, cases);
 }
 
 TEST_CASE("tileable_noise.glsl on the GPU agrees with the CPU", "[probe]") {

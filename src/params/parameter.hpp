@@ -22,6 +22,9 @@ enum Use : unsigned {
   noise = 1u << 6,
   bench_noise = 1u << 7,
   cover_sidecar = 1u << 8,  // written to cover.json
+  model = 1u << 9,          // nephele model
+  model_file = 1u << 10,    // a key of a cloud model file (scenes/*.cloud.json)
+  bench_model = 1u << 11,
 };
 
 struct Parameter {

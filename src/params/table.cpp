@@ -19,11 +19,15 @@ const std::vector<const Parameter*>& all() {
       &noise_texture::worley_octaves, &noise_texture::channels, &noise_texture::r, &noise_texture::g,
       &noise_texture::b, &noise_texture::a, &noise_texture::seed, &noise_texture::bits, &noise_texture::out,
       &noise_texture::stretch,
+      &cloud_model::example, &cloud_model::scene_path, &cloud_model::size, &cloud_model::out, &cloud_model::blend, &cloud_model::scale, &cloud_model::extent,
+      &cloud_model::description, &cloud_model::preview, &cloud_model::no_preview, &cloud_model::kind, &cloud_model::coordinate, &cloud_model::radius, &cloud_model::influence, &cloud_model::weight,
+      &cloud_model::octaves, &cloud_model::frequency, &cloud_model::amplitude, &cloud_model::gain, &cloud_model::lacunarity, &cloud_model::fraction,
+      &cloud_model::seed,
       &run::cover_out, &run::report_out, &run::quiet, &run::verbose, &run::bench_cover_sizes, &run::bench_cover_repeat,
       &run::bench_noise_size, &run::bench_noise_repeat, &run::bench_render_size, &run::bench_render_sweep_size,
       &run::bench_render_repeat, &run::bench_render_no_sweep, &run::report_quick, &run::report_sizes,
       &run::report_steps, &run::report_tolerances, &run::report_samples, &run::report_repeat,
-      &run::report_render_size, &run::report_no_render, &run::report_budget_ms,
+      &run::bench_model_repeat, &run::report_render_size, &run::report_no_render, &run::report_budget_ms,
   };
   return parameters;
 }

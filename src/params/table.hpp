@@ -85,12 +85,40 @@ inline constexpr Parameter out = text("out", "", "FILE.png|FILE.exr|FILE.raw", "
 inline constexpr Parameter stretch = flag("stretch", "map each channel's range linearly onto [0, 1] (the range before goes to the sidecar)", noise);
 }  // namespace noise_texture
 
+// The implicit cloud modeller (nephele model, scenes/*.cloud.json; docs/model.md). Positions,
+// radii and influences are in model units: the volume is the unit cube, z up.
+namespace cloud_model {
+constexpr unsigned command_and_file = model | model_file;
+inline constexpr Parameter example = text("example", "", "fair-weather|towering|cumulonimbus|stratocumulus", "a built-in cloud instead of --scene", model);
+inline constexpr Parameter scene_path = text("scene", "", "FILE", "cloud model file (JSON, see scenes/*.cloud.json); options override it", model);
+inline constexpr Parameter size = integer("size", 256, 8, 2048, "voxels", "voxels along each edge of the density volume", model | bench_model);
+inline constexpr Parameter out = text("out", "model", "DIR", "output directory (created if missing)", model);
+inline constexpr Parameter blend = text("blend", "per-primitive", "sum|lipus|global|per-primitive", "blend: sum (eq. 2), lipus (eq. 3), global turbulence after Lipus (eq. 5), turbulence per primitive (eq. 6)", command_and_file);
+inline constexpr Parameter scale = real("scale", 0.02, 1e-4, 1e4, "", "noise coordinates are model coordinates divided by this (0.02 in the paper)", command_and_file);
+inline constexpr Parameter extent = real("extent", 2000, 1, 1e6, "metres", "edge of the modelled cube (the voxel size is extent / size)", command_and_file);
+inline constexpr Parameter description = text("description", "", "", "free text for people", model_file);
+inline constexpr Parameter preview = text("preview", "384x384", "WIDTHxHEIGHT", "size of preview.png, the volume lit by the sun from the south-west and seen from the south", model);
+inline constexpr Parameter no_preview = flag("no_preview", "write no preview.png", model);
+inline constexpr Parameter kind = text("type", "point", "point|segment|polyline", "skeleton of a primitive: a point (key position), a segment (keys from, to) or a polyline (key points: its segments)", model_file);
+inline constexpr Parameter coordinate = real("position", 0.5, -1, 2, "model units", "a skeleton point's coordinate (position, from, to: [x, y, z], the cube is [0, 1]^3)", model_file);
+inline constexpr Parameter radius = real("radius", 0.1, 0, 1, "model units", "skeleton radius R: the field is 1 within it", model_file);
+inline constexpr Parameter influence = real("influence", 0.1, 1e-3, 2, "model units", "influence I: the field falls from 1 at R to 0 at R + I", model_file);
+inline constexpr Parameter weight = real("weight", 1, 1e-3, 1, "", "weight w of every primitive (Lipus's blend needs one w for all)", model_file);
+inline constexpr Parameter octaves = integer("octaves", 4, 0, 8, "", "turbulence octaves", model_file);
+inline constexpr Parameter frequency = real("frequency", 0.2, 0, 64, "", "turbulence frequency fr (noise coordinates)", model_file);
+inline constexpr Parameter amplitude = real("amplitude", 1.0, 0, 4, "", "turbulence amplitude a", model_file);
+inline constexpr Parameter gain = real("gain", 0.5, 0, 1, "", "amplitude ratio ga between octaves", model_file);
+inline constexpr Parameter lacunarity = real("lacunarity", 2.0, 1, 4, "", "frequency ratio lc between octaves", model_file);
+inline constexpr Parameter fraction = real("fraction", 0.5, 0, 1, "", "noise fraction np", model_file);
+inline constexpr Parameter seed = integer("seed", 1, 0, 16777215, "", "seed of the turbulence", model_file);
+}  // namespace cloud_model
+
 // Options of the runs themselves: where files go, how much is printed, how long to measure.
 namespace run {
 inline constexpr Parameter cover_out = text("out", "cubemaps", "DIR", "output directory (created if missing)", generate);
 inline constexpr Parameter report_out = text("out", "report", "DIR", "output directory (created if missing)", report);
-inline constexpr Parameter quiet = flag("quiet", "no progress reports on stderr (they appear for work of more than a second)", generate | report | render | noise);
-inline constexpr Parameter verbose = flag("verbose", "print the renderer, the passes that ran and their times", generate | render | noise);
+inline constexpr Parameter quiet = flag("quiet", "no progress reports on stderr (they appear for work of more than a second)", generate | report | render | noise | model);
+inline constexpr Parameter verbose = flag("verbose", "print the renderer, the passes that ran and their times", generate | render | noise | model);
 inline constexpr Parameter bench_cover_sizes = text("sizes", "256,512,1024", "N,N,... (1 to 16384)", "comma-separated cube face sizes", bench_cover);
 inline constexpr Parameter bench_cover_repeat = integer("repeat", 3, 1, 100, "runs", "runs per size; the median is printed", bench_cover);
 inline constexpr Parameter bench_noise_size = integer("size", 128, 8, 1024, "texels", "grid edge of the point-rate figures", bench_noise);
@@ -99,6 +127,7 @@ inline constexpr Parameter bench_render_size = text("size", "1280x720", "WIDTHxH
 inline constexpr Parameter bench_render_sweep_size = text("sweep_size", "320x180", "WIDTHxHEIGHT", "frame size of the error sweep", bench_render);
 inline constexpr Parameter bench_render_repeat = integer("repeat", 2, 1, 20, "frames", "frames timed; the median is printed", bench_render);
 inline constexpr Parameter bench_render_no_sweep = flag("no_sweep", "time frames only", bench_render);
+inline constexpr Parameter bench_model_repeat = integer("repeat", 3, 1, 100, "runs", "runs per figure after a first, warming run; the median is printed", bench_model);
 inline constexpr Parameter report_quick = flag("quick", "a short sweep for CI (size 32, 10 and 50 steps, 96 points; render 32x18)", report);
 inline constexpr Parameter report_sizes = text("sizes", "", "N,N,... (1 to 16384)", "comma-separated cube face sizes (default 128,256,512; quick 32)", report);
 inline constexpr Parameter report_steps = text("steps", "", "N,N,... (1 to 100000)", "comma-separated step counts of the fixed-step schemes (default 5,10,25,50,100,200)", report);

@@ -9,6 +9,9 @@
 #define MARCH_SOURCES_ARG , sources
 #define NOISE_LOD(x, lod) sources.noise.sample_lod(x, lod)
 #define WEATHER_COVERAGE(uv, channel) sources.weather.sample(uv, channel)
+#define MODEL_SOURCE_PARAM , IN(DensitySource) density
+#define MODEL_SOURCE_ARG , density
+#define MODEL_DENSITY(uvw) density.sample(uvw)
 // The warp's stepping rules are templates over the velocity source (shaders/lib/warp_step.glsl).
 #define WARP_TEMPLATE template <class Field>
 #define WARP_FIELD_PARAM , IN(Field) field

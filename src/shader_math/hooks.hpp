@@ -1,7 +1,7 @@
 #pragma once
 // What the GLSL library (shaders/lib) expects its includer to define, for C++: the cube map
 // source of cube_sampling.glsl, the velocity source of warp_step.glsl's templates and the two
-// textures of cloud_march.glsl. Shared by
+// textures of cloud_march.glsl and the density volume of model_march.glsl. Shared by
 // shader_math.hpp (declarations) and shader_math.cpp (the one compiled copy of the functions).
 #include <cstddef>
 #include <vector>
@@ -39,6 +39,14 @@ struct LayeredSource {
   int layers = 0;
   const float* values = nullptr;
   float sample(vec2 uv, int layer) const;
+};
+
+// A cloud model's density volume in host memory (model_march.glsl's MODEL_DENSITY): one float
+// per voxel, x fastest, sampled as GLSL's texture() with GL_LINEAR and GL_CLAMP_TO_EDGE.
+struct DensitySource {
+  int size = 0;
+  const float* values = nullptr;
+  float sample(vec3 uvw) const;
 };
 
 // The two textures of cloud_march.glsl.

@@ -13,6 +13,8 @@ namespace nephele::glsl {
 #include "lib/curl_flow.glsl"
 #include "lib/equirect_mapping.glsl"
 #include "lib/hash.glsl"
+#include "lib/implicit_field.glsl"
+#include "lib/model_march.glsl"
 #include "lib/noise_rows.glsl"
 #include "lib/noise_types.glsl"
 #include "lib/parameters.glsl"

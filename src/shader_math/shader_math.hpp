@@ -19,6 +19,9 @@ namespace nephele::glsl {
 #undef MARCH_SOURCES_ARG
 #undef NOISE_LOD
 #undef WEATHER_COVERAGE
+#undef MODEL_SOURCE_PARAM
+#undef MODEL_SOURCE_ARG
+#undef MODEL_DENSITY
 #undef WARP_TEMPLATE
 #undef WARP_FIELD_PARAM
 #undef WARP_FIELD_ARG

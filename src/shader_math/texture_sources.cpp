@@ -72,4 +72,17 @@ float LayeredSource::sample(vec2 uv, int layer) const {
               ty.weight);
 }
 
+float DensitySource::sample(vec3 uvw) const {
+  const Taps tx = clamp_taps(uvw.x, size), ty = clamp_taps(uvw.y, size), tz = clamp_taps(uvw.z, size);
+  auto at = [&](int i, int j, int k) { return values[(static_cast<size_t>(k) * size + j) * size + i]; };
+  float planes[2];
+  for (int c = 0; c < 2; ++c) {
+    const int k = c == 0 ? tz.i0 : tz.i1;
+    const float row0 = lerp(at(tx.i0, ty.i0, k), at(tx.i1, ty.i0, k), tx.weight);
+    const float row1 = lerp(at(tx.i0, ty.i1, k), at(tx.i1, ty.i1, k), tx.weight);
+    planes[c] = lerp(row0, row1, ty.weight);
+  }
+  return lerp(planes[0], planes[1], tz.weight);
+}
+
 }  // namespace nephele::glsl

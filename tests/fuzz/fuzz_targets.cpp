@@ -6,6 +6,7 @@
 
 #include "core/json.hpp"
 #include "core/time.hpp"
+#include "model/cloud_model.hpp"
 #include "regional/scene.hpp"
 #include "regional/weather.hpp"
 
@@ -107,9 +108,24 @@ void weather_input(const std::uint8_t* data, std::size_t size) {
   series.ahead(first, 6);
 }
 
+void cloud_model_input(const std::uint8_t* data, std::size_t size) {
+  model::CloudModel m;
+  try {
+    m = model::parse_cloud_model(text_of(data, size), "fuzz.cloud.json");
+  } catch (const core::InputError&) {
+    return;
+  }
+  // An accepted model stays valid, and what is written for it reads back to the same model.
+  model::validate(m, "fuzz.cloud.json");
+  const std::string written = model::write_cloud_model(m);
+  require(model::write_cloud_model(model::parse_cloud_model(written, "written")) == written,
+          "cloud model: the written model does not read back");
+}
+
 const std::vector<Target>& targets() {
   static const std::vector<Target> all = {
-      {"json", json_input}, {"time", time_input}, {"scene", scene_input}, {"weather", weather_input}};
+      {"json", json_input}, {"time", time_input}, {"scene", scene_input}, {"weather", weather_input},
+      {"cloud_model", cloud_model_input}};
   return all;
 }
 

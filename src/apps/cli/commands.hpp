@@ -18,5 +18,7 @@ int run_noise(const std::vector<std::string>& arguments);
 int run_report(const std::vector<std::string>& arguments);
 int run_render(const std::vector<std::string>& arguments);
 int bench_render(const std::vector<std::string>& arguments);
+int run_model(const std::vector<std::string>& arguments);
+int bench_model(const std::vector<std::string>& arguments);
 
 }  // namespace nephele::cli

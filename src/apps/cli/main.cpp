@@ -17,6 +17,7 @@ const char* const usage =
     "  generate   make a global cloud cover (cube map faces, equirect map, cover.json)\n"
     "  render     cloud layers seen from the ground (Gurten, Bantiger, anywhere)\n"
     "  noise      tileable 3D noise textures (Worley, Perlin, Perlin-Worley, fBm)\n"
+    "  model      one cloud from implicit primitives: density volume (raw, EXR atlas, OpenVDB)\n"
     "  bench      benchmarks that print timings (nephele bench cover)\n"
     "  report     error of the warp's integrators against their run time (work-precision)\n\n"
     "nephele COMMAND --help describes each command's options and their ranges.\n"
@@ -48,7 +49,8 @@ int main(int argc, char** argv) {
     if (command == "noise") return run_noise(rest);
     if (command == "report") return run_report(rest);
     if (command == "render") return run_render(rest);
-    throw UsageError("unknown command '" + command + "' (allowed: generate, render, noise, bench, report)");
+    if (command == "model") return run_model(rest);
+    throw UsageError("unknown command '" + command + "' (allowed: generate, render, noise, model, bench, report)");
   } catch (const nephele::core::InputError& e) {
     std::cerr << "nephele: " << e.what() << "\n";
     return exit_usage;

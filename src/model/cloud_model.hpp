@@ -1,0 +1,80 @@
+#pragma once
+// A cloud made of implicit primitives (Montenegro et al.; docs/model.md): points and segment
+// skeletons in the unit cube (z up), Wyvill-1 fields blended with Lipus's operator and
+// detailed by turbulence, per primitive (eq. 6) or once after blending (eq. 5).
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "core/error.hpp"
+#include "params/table.hpp"
+#include "shader_math/shader_math.hpp"
+
+namespace nephele::model {
+
+// Extinction per metre of density 1: a cumulus's liquid water content 0.5 g/m^3 with droplets
+// of effective radius 10 um gives beta = 3 LWC / (2 rho_w r_e) = 0.075 / m (docs/model.md).
+constexpr double density_to_extinction_per_m = 0.075;
+
+// Bad model input (an option, a file key, a value): exit code 2.
+using ModelError = core::InputError;
+
+enum class Blend { sum, lipus, global, per_primitive };
+Blend parse_blend(const std::string& word, const std::string& where);
+const char* blend_name(Blend blend);
+int blend_code(Blend blend);  // MODEL_BLEND_* of implicit_field.glsl
+
+struct Turbulence {
+  int octaves = params::cloud_model::octaves.default_int();
+  float frequency = params::cloud_model::frequency.default_float();
+  float amplitude = params::cloud_model::amplitude.default_float();
+  float gain = params::cloud_model::gain.default_float();
+  float lacunarity = params::cloud_model::lacunarity.default_float();
+  float fraction = params::cloud_model::fraction.default_float();  // np
+  std::uint32_t seed = params::cloud_model::seed.default_uint32();
+};
+
+struct Primitive {
+  bool segment = false;
+  glsl::vec3 from{0.5f};  // the point, or the segment's start
+  glsl::vec3 to{0.5f};    // the segment's end
+  float radius = params::cloud_model::radius.default_float();
+  float influence = params::cloud_model::influence.default_float();
+  float weight = params::cloud_model::weight.default_float();
+  Turbulence noise;
+};
+
+struct CloudModel {
+  std::string description;
+  Blend blend = Blend::per_primitive;
+  float scale = params::cloud_model::scale.default_float();
+  double extent_m = params::cloud_model::extent.default_number;
+  Turbulence noise;  // eq. 5's global turbulence, and the default of each primitive's
+  std::vector<Primitive> primitives;
+};
+
+// Checks every value against the table and the rule of eq. 3 (one weight for all primitives
+// in the Lipus blends); throws ModelError naming `source` and the primitive.
+void validate(const CloudModel& model, const std::string& source);
+
+glsl::ModelNoise pack(const Turbulence& t);
+glsl::ModelPrimitive pack(const Primitive& p);
+
+// The distance from a skeleton beyond which the field is exactly 0: R + I.
+inline float reach(const Primitive& p) { return p.radius + p.influence; }
+
+// The density at model point p (unit cube) on the CPU, through the shared functions.
+float density_at(const CloudModel& model, glsl::vec3 p);
+
+// The built-in examples (docs/model.md): names and models.
+const std::vector<std::string>& example_names();
+CloudModel example(const std::string& name);
+
+// Strict cloud model files (scenes/*.cloud.json): unknown or duplicate keys, wrong types and
+// values outside the table's ranges are refused with the key named.
+CloudModel parse_cloud_model(const std::string& text, const std::string& source);
+CloudModel read_cloud_model(const std::string& path);
+// The model as a cloud model file (the sidecar records it; parse_cloud_model reads it back).
+std::string write_cloud_model(const CloudModel& model);
+
+}  // namespace nephele::model

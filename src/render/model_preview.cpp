@@ -1,0 +1,94 @@
+#include "render/model_preview.hpp"
+
+#include <epoxy/gl.h>
+
+#include <cmath>
+#include <stdexcept>
+
+#include "gpu/compute_program.hpp"
+#include "gpu/textures.hpp"
+#include "render/cloud_renderer.hpp"
+
+namespace nephele::render {
+namespace {
+
+// The sphere the light is computed on (the preview has no viewpoint on the Earth): the mean
+// Earth radius, the cloud at 2 km.
+constexpr double kEarthRadius = 6371000.0;
+constexpr double kCloudAltitude = 2000.0;
+
+void set(const gpu::ComputeProgram& p, const std::string& name, glsl::vec3 v) { p.set(name, v); }
+
+}  // namespace
+
+glsl::ModelView preview_view(const model::CloudModel& m, const PreviewSettings& s) {
+  using namespace glsl;
+  ModelView v;
+  const float e = static_cast<float>(m.extent_m);
+  v.extent = e;
+  v.extinction = static_cast<float>(model::density_to_extinction_per_m);
+  v.origin = vec3(0.5f * e, -1.3f * e, 0.45f * e);
+  v.forward = vec3(0.0f, 1.0f, 0.0f);
+  v.right = vec3(1.0f, 0.0f, 0.0f);
+  v.up = vec3(0.0f, 0.0f, 1.0f);
+  v.tan_half_fov = static_cast<float>(std::tan(0.5 * s.fov_deg * M_PI / 180.0));
+  const double el = s.sun_elevation_deg * M_PI / 180.0, az = s.sun_azimuth_deg * M_PI / 180.0;
+  v.sun = vec3(float(std::cos(el) * std::sin(az)), float(std::cos(el) * std::cos(az)), float(std::sin(el)));
+  const float radius = static_cast<float>(kEarthRadius);
+  const vec3 cloud(0.0f, 0.0f, radius + static_cast<float>(kCloudAltitude));
+  v.sunlight = solar_irradiance() * transmittance_to_space(cloud, v.sun, radius);
+  v.ambient = sky_irradiance(v.sun, kEarthRadius, kCloudAltitude);
+  // Lambertian ground of albedo 0.15 (as the regional renderer's) lit by the sun and the sky.
+  v.ground_radiance = (0.15f / PI_F) * (v.sunlight * std::max(v.sun.z, 0.0f) + v.ambient);
+  // The clear sky 10 degrees above the horizon towards the view, from 2 km.
+  const vec3 d(0.0f, float(std::cos(M_PI / 18)), float(std::sin(M_PI / 18)));
+  const vec2 top = ray_sphere(cloud, d, vec3(0.0f), radius + ATMOSPHERE_THICKNESS);
+  vec3 total, split, t_total, t_split;
+  sky_single_scattering(cloud, d, std::max(top.y, 0.0f), 0.0f, v.sun, radius, 16, total, split, t_total, t_split);
+  v.background = total;
+  v.view_steps = s.view_steps;
+  v.light_steps = s.light_steps;
+  return v;
+}
+
+core::ImageData render_preview(const model::DensityVolume& volume, const PreviewSettings& s) {
+  const glsl::ModelView v = preview_view(volume.model(), s);
+  gpu::ComputeProgram program("model/preview.comp");
+  program.use();
+  set(program, "u_view.origin", v.origin);
+  set(program, "u_view.forward", v.forward);
+  set(program, "u_view.right", v.right);
+  set(program, "u_view.up", v.up);
+  program.set("u_view.tan_half_fov", v.tan_half_fov);
+  set(program, "u_view.sun", v.sun);
+  set(program, "u_view.sunlight", v.sunlight);
+  set(program, "u_view.ambient", v.ambient);
+  set(program, "u_view.ground_radiance", v.ground_radiance);
+  set(program, "u_view.background", v.background);
+  program.set("u_view.extent", v.extent);
+  program.set("u_view.extinction", v.extinction);
+  program.set("u_view.view_steps", v.view_steps);
+  program.set("u_view.light_steps", v.light_steps);
+  gpu::Texture image = gpu::Texture::plane(s.width, s.height, GL_RGBA32F);
+  image.bind_image(0, GL_WRITE_ONLY);
+  glBindTextureUnit(1, volume.texture());
+  program.dispatch_covering(s.width, s.height, 1);
+  gpu::image_barrier();
+  if (glGetError() != GL_NO_ERROR) throw std::runtime_error("OpenGL error in the model preview pass");
+  return {s.width, s.height, 4, image.read()};
+}
+
+core::ImageData render_preview_cpu(const std::vector<float>& values, int size, const model::CloudModel& m,
+                                   const PreviewSettings& s) {
+  const glsl::ModelView v = preview_view(m, s);
+  const glsl::DensitySource density{size, values.data()};
+  core::ImageData out{s.width, s.height, 4, std::vector<float>(static_cast<size_t>(s.width) * s.height * 4)};
+  for (int y = 0; y < s.height; ++y)
+    for (int x = 0; x < s.width; ++x) {
+      const glsl::vec4 c = glsl::model_pixel(glsl::ivec2(x, y), glsl::ivec2(s.width, s.height), v, density);
+      for (int k = 0; k < 4; ++k) out.pixels[(static_cast<size_t>(y) * s.width + x) * 4 + k] = c[k];
+    }
+  return out;
+}
+
+}  // namespace nephele::render

@@ -1,0 +1,31 @@
+// Probe of lib/implicit_field.glsl (shared GLSL/C++ subset; tests/test_library_probes.cpp).
+// x[0] = (function, a, b, c); x[1..3] as each function needs.
+#ifndef __cplusplus
+#include "../lib/implicit_field.glsl"
+#endif
+ModelPrimitive probe_model_primitive(mat4 x) {
+  ModelPrimitive prim;
+  prim.a = x[1];
+  prim.b = x[2];
+  prim.kind = vec4(x[3].x, x[3].y, 0.0f, 0.0f);
+  prim.noise.shape = vec4(3.0f, x[3].z, 0.6f, 0.5f);
+  prim.noise.extra = vec4(2.0f, x[3].w, 7.0f, 0.0f);
+  return prim;
+}
+vec4 probe_implicit_field(mat4 x) {
+  int f = int(x[0].x);
+  vec3 p = vec3(x[0].y, x[0].z, x[0].w);
+  ModelPrimitive prim = probe_model_primitive(x);
+  if (f == 0) return vec4(wyvill1(x[0].y), lipus_blend(x[0].z, x[0].w, x[1].x),
+                          apply_turbulence(x[1].y, x[1].z, x[1].w), 0.0f);
+  if (f == 1) return vec4(segment_distance(p, vec3(x[1]), vec3(x[2])), primitive_distance(p, prim),
+                          primitive_field(p, prim), 0.0f);
+  if (f == 2) return vec4(model_turbulence(p, prim.noise), 0.0f, 0.0f, 0.0f);
+  // f == 3: one primitive folded in with each blend, then finished.
+  vec4 r = vec4(0.0f);
+  for (int blend = 0; blend < 4; ++blend) {
+    float rho = model_accumulate(0.25f, p, p, prim, blend);
+    r[blend] = model_finish(rho, p, blend, prim.noise);
+  }
+  return r;
+}
