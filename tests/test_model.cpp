@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <random>
 
+#include "io/cloud_model_files.hpp"
 #include "gl_support.hpp"
 #include "model/bricks.hpp"
 #include "model/cloud_model.hpp"
@@ -193,7 +194,7 @@ TEST_CASE("each scenes/*.cloud.json holds its built-in example", "[model]") {
     const std::string path = std::string(NEPHELE_SOURCE_DIR) + "/scenes/" + name + ".cloud.json";
     INFO(path);
     REQUIRE(std::filesystem::exists(path));
-    CHECK(model::write_cloud_model(model::read_cloud_model(path)) == model::write_cloud_model(model::example(name)));
+    CHECK(io::write_cloud_model(io::read_cloud_model(path)) == io::write_cloud_model(model::example(name)));
   }
 }
 

@@ -10,6 +10,7 @@
 #include <vector>
 #include <sstream>
 
+#include "io/cloud_model_files.hpp"
 #include "cli_support.hpp"
 #include "gl_support.hpp"
 #include "model/density_volume.hpp"
@@ -47,7 +48,7 @@ std::string cloud_file(const std::string& top = "", const std::string& noise = "
 
 std::string refused(const std::string& text) {
   try {
-    model::parse_cloud_model(text, "c.cloud.json");
+    io::parse_cloud_model(text, "c.cloud.json");
   } catch (const core::InputError& e) {
     return e.what();
   }
@@ -57,7 +58,7 @@ std::string refused(const std::string& text) {
 }  // namespace
 
 TEST_CASE("the test's base cloud file is accepted", "[model]") {
-  CHECK_NOTHROW(model::parse_cloud_model(cloud_file(), "c.cloud.json"));
+  CHECK_NOTHROW(io::parse_cloud_model(cloud_file(), "c.cloud.json"));
 }
 
 TEST_CASE("cloud model files refuse every numeric key just outside the range the table declares, naming the key", "[model][params]") {
@@ -109,16 +110,16 @@ TEST_CASE("cloud model files refuse unknown and duplicate keys, wrong types, mis
 
 TEST_CASE("a polyline in a model file is its consecutive segments, with its radius, influence and noise", "[model]") {
   const std::string common = R"("radius": 0.05, "influence": 0.08, "noise": {"seed": 9}})";
-  const model::CloudModel polyline = model::parse_cloud_model(
+  const model::CloudModel polyline = io::parse_cloud_model(
       R"({"primitives": [{"type": "polyline", "points": [[0.2, 0.5, 0.8], [0.5, 0.5, 0.82], [0.8, 0.6, 0.8]], )" +
           common + "]}",
       "p.cloud.json");
-  const model::CloudModel segments = model::parse_cloud_model(
+  const model::CloudModel segments = io::parse_cloud_model(
       R"({"primitives": [{"type": "segment", "from": [0.2, 0.5, 0.8], "to": [0.5, 0.5, 0.82], )" + common +
           R"(, {"type": "segment", "from": [0.5, 0.5, 0.82], "to": [0.8, 0.6, 0.8], )" + common + "]}",
       "s.cloud.json");
   CHECK(polyline.primitives.size() == 2);
-  CHECK(model::write_cloud_model(polyline) == model::write_cloud_model(segments));
+  CHECK(io::write_cloud_model(polyline) == io::write_cloud_model(segments));
   CHECK_THAT(refused(R"({"primitives": [{"type": "polyline", "points": [[0.2, 0.5, 0.8]]}]})"),
              Catch::Contains("primitives[0].points") && Catch::Contains("2 to 64"));
   CHECK_THAT(refused(R"({"primitives": [{"type": "polyline", "position": [0.2, 0.5, 0.8]}]})"),
@@ -159,8 +160,8 @@ TEST_CASE("nephele model writes the raw volume, its sidecar, the EXR atlas and t
   CHECK(sidecar.at("density_to_extinction_per_m").as_number() == io::density_to_extinction_per_m);
   CHECK(sidecar.at("range").at("max").as_number() > 0.5);
   // The model written beside the volume reads back as the example.
-  CHECK(model::write_cloud_model(model::read_cloud_model((out.path / "model.cloud.json").string())) ==
-        model::write_cloud_model(model::example("towering")));
+  CHECK(io::write_cloud_model(io::read_cloud_model((out.path / "model.cloud.json").string())) ==
+        io::write_cloud_model(model::example("towering")));
 }
 
 TEST_CASE("density.vdb reads back through OpenVDB with its voxels, grid class, voxel size and orientation", "[model][vdb][gpu]") {

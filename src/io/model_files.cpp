@@ -1,3 +1,4 @@
+#include "io/cloud_model_files.hpp"
 #include "io/model_files.hpp"
 
 #include <algorithm>
@@ -77,7 +78,7 @@ std::vector<std::string> write_model_files(const std::filesystem::path& director
   const int columns = atlas_columns(size), rows = (size + columns - 1) / columns;
   const ImageData atlas{columns * size, rows * size, 1, model_atlas(values, size)};
   outputs.write("density_atlas.exr", encode_image(atlas, exr_encoding({"Y"}), "density_atlas.exr"));
-  outputs.write("model.cloud.json", model::write_cloud_model(model));
+  outputs.write("model.cloud.json", io::write_cloud_model(model));
   const bool vdb = vdb_available();
   if (vdb) {
     outputs.write("density.vdb", vdb_bytes(model, size, values));

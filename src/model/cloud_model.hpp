@@ -70,11 +70,6 @@ float density_at(const CloudModel& model, glsl::vec3 p);
 const std::vector<std::string>& example_names();
 CloudModel example(const std::string& name);
 
-// Strict cloud model files (scenes/*.cloud.json): unknown or duplicate keys, wrong types and
-// values outside the table's ranges are refused with the key named.
-CloudModel parse_cloud_model(const std::string& text, const std::string& source);
-CloudModel read_cloud_model(const std::string& path);
-// The model as a cloud model file (the sidecar records it; parse_cloud_model reads it back).
-std::string write_cloud_model(const CloudModel& model);
+// Cloud model files are read and written by src/io/cloud_model_files.hpp.
 
 }  // namespace nephele::model

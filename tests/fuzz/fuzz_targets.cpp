@@ -1,3 +1,4 @@
+#include "io/cloud_model_files.hpp"
 #include "io/scene_files.hpp"
 #include "io/weather_files.hpp"
 #include "fuzz_targets.hpp"
@@ -111,14 +112,14 @@ void weather_input(const std::uint8_t* data, std::size_t size) {
 void cloud_model_input(const std::uint8_t* data, std::size_t size) {
   model::CloudModel m;
   try {
-    m = model::parse_cloud_model(text_of(data, size), "fuzz.cloud.json");
+    m = io::parse_cloud_model(text_of(data, size), "fuzz.cloud.json");
   } catch (const core::InputError&) {
     return;
   }
   // An accepted model stays valid, and what is written for it reads back to the same model.
   model::validate(m, "fuzz.cloud.json");
-  const std::string written = model::write_cloud_model(m);
-  require(model::write_cloud_model(model::parse_cloud_model(written, "written")) == written,
+  const std::string written = io::write_cloud_model(m);
+  require(io::write_cloud_model(io::parse_cloud_model(written, "written")) == written,
           "cloud model: the written model does not read back");
 }
 

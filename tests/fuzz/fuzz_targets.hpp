@@ -22,7 +22,7 @@ void json_input(const std::uint8_t* data, std::size_t size);     // core::json p
 void time_input(const std::uint8_t* data, std::size_t size);     // core::parse_utc_time
 void scene_input(const std::uint8_t* data, std::size_t size);    // io::parse_scene
 void weather_input(const std::uint8_t* data, std::size_t size);  // io::parse_weather
-void cloud_model_input(const std::uint8_t* data, std::size_t size);  // model::parse_cloud_model
+void cloud_model_input(const std::uint8_t* data, std::size_t size);  // io::parse_cloud_model
 
 struct Target {
   const char* name;  // also the folder of its seed corpus, tests/fuzz/corpus/<name>/

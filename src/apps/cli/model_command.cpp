@@ -7,6 +7,7 @@
 #include <iostream>
 #include <sstream>
 
+#include "io/cloud_model_files.hpp"
 #include "apps/cli/commands.hpp"
 #include "apps/cli/options.hpp"
 #include "core/memory.hpp"
@@ -96,7 +97,7 @@ int run_model(const std::vector<std::string>& arguments) {
   }
   if (example.empty() == scene_path.empty())
     throw UsageError("--example, --scene: give exactly one (a built-in cloud or a cloud model file)");
-  model::CloudModel m = example.empty() ? model::read_cloud_model(scene_path) : model::example(example);
+  model::CloudModel m = example.empty() ? io::read_cloud_model(scene_path) : model::example(example);
   if (options.given(cm::blend)) m.blend = model::parse_blend(blend, "--blend");
   if (options.given(cm::scale)) m.scale = float(scale);
   if (options.given(cm::extent)) m.extent_m = extent;

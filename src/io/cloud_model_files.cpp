@@ -1,5 +1,7 @@
 // Cloud model files (scenes/*.cloud.json), strict like the regional scene files: every key is
 // known, typed and inside the table's range, and errors name the file and the key's path.
+#include "io/cloud_model_files.hpp"
+
 #include <cmath>
 #include <filesystem>
 #include <sstream>
@@ -7,10 +9,12 @@
 #include "core/input_file.hpp"
 #include "core/json.hpp"
 #include "core/json_keys.hpp"
-#include "model/cloud_model.hpp"
 #include "params/values.hpp"
 
-namespace nephele::model {
+namespace nephele::io {
+
+using namespace model;
+
 namespace {
 
 namespace cm = params::cloud_model;
@@ -196,4 +200,4 @@ std::string write_cloud_model(const CloudModel& m) {
   return json::write(root);
 }
 
-}  // namespace nephele::model
+}  // namespace nephele::io

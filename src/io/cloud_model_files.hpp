@@ -1,0 +1,16 @@
+#pragma once
+// Cloud model files (scenes/*.cloud.json) of the implicit modeller (docs/model.md).
+#include <string>
+
+#include "model/cloud_model.hpp"
+
+namespace nephele::io {
+
+// Strict cloud model files (scenes/*.cloud.json): unknown or duplicate keys, wrong types and
+// values outside the table's ranges are refused with the key named.
+model::CloudModel parse_cloud_model(const std::string& text, const std::string& source);
+model::CloudModel read_cloud_model(const std::string& path);
+// The model as a cloud model file (the sidecar records it; parse_cloud_model reads it back).
+std::string write_cloud_model(const model::CloudModel& model);
+
+}  // namespace nephele::io
