@@ -146,8 +146,8 @@ void GlobalCover::dispatch_warp(const gpu::Texture& starts, const gpu::Texture& 
 
 const cover::WarpDiagnostics& GlobalCover::diagnose() {
   timed("diagnose", [&] {
-    diagnostics_ = cover::diagnose_warp(curl_field_.read(), warp_field_.read(), parameters_.size,
-                                           parameters_.integrator, parameters_.step);
+    if (!gpu_diagnosis_) gpu_diagnosis_ = std::make_unique<GpuDiagnosis>(parameters_.size);
+    diagnostics_ = gpu_diagnosis_->run(curl_field_, warp_field_, parameters_.integrator, parameters_.step);
   });
   return *diagnostics_;
 }
@@ -165,7 +165,8 @@ void GlobalCover::run_density() {
 
 CoverageCalibration GlobalCover::run_coverage() {
   timed("calibrate", [&] {
-    calibration_ = calibrate_coverage(density_field_.read(), parameters_.size, parameters_.coverage);
+    if (!gpu_calibration_) gpu_calibration_ = std::make_unique<GpuCalibration>(parameters_.size);
+    calibration_ = gpu_calibration_->run(density_field_, parameters_.coverage);
   });
   timed("coverage", [&] {
     remap_program_.set("u_threshold", calibration_.threshold);
