@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <stdexcept>
 
 namespace nephele::cover {
@@ -53,6 +54,15 @@ std::vector<std::uint64_t> sums64(const std::vector<GLuint>& words) {
 }
 
 constexpr int bins = 4096;  // per level, as cover::calibrate_coverage
+
+// Texels per invocation of the reduction passes, a strip down a column: at least 32, so that
+// an invocation's atomics and partial record are shared by many texels (on llvmpipe, 1024 per
+// face: 8 texels 1.6 times slower than 32), and enough that 6 N^2 texels make at most 2^20
+// partial records (4096 per face: strips of 96).
+int reduction_strip(int size) {
+  const long texels = 6L * size * size;
+  return static_cast<int>(std::max<long>(32, (texels + (1L << 20) - 1) >> 20));
+}
 
 }  // namespace
 
@@ -107,17 +117,28 @@ CoverageCalibration GpuCalibration::run(const gpu::Texture& density, double targ
   members.bind(3);
   weights_.bind();
   density.bind_image(0, GL_READ_ONLY);
+  const int strip = reduction_strip(size_);
+  program_.set("u_strip", strip);
   auto dispatch = [&](int stage) {
     program_.set("u_stage", stage);
-    program_.dispatch_covering(size_, size_, 6);
+    program_.dispatch_covering(size_, (size_ + strip - 1) / strip, 6);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   };
   dispatch(0);
   const std::vector<GLuint> range = scalars.read(2);
   result.density_min = from_sortable(range[0]);
   result.density_max = from_sortable(range[1]);
+  result.max_texel_fraction = units.largest_fraction;
+  // Bin scales in float, 0 where they would not be finite (all densities equal or nearly).
+  const auto finite_scale = [](double scale) {
+    return std::isfinite(scale) && scale < std::numeric_limits<float>::max() ? static_cast<float>(scale) : 0.0f;
+  };
+  const double span = static_cast<double>(result.density_max) - result.density_min;
+  const float scale = span > 0.0 ? finite_scale(bins / span) : 0.0f;
   program_.set("u_density_min", result.density_min);
-  program_.set("u_density_max", result.density_max);
+  program_.set("u_scale", scale);
+  program_.set("u_coarse_low", result.density_min);
+  program_.set("u_fine_scale", 0.0f);
 
   // Walks down from the top bin while the cloudy fraction stays below the target, as the CPU.
   std::uint64_t above = 0;
@@ -128,16 +149,36 @@ CoverageCalibration GpuCalibration::run(const gpu::Texture& density, double targ
   };
   dispatch(1);
   const int coarse = crossing(sums64(histogram.read(2 * bins)));
-  histogram.clear();
   program_.set("u_coarse", coarse);
+  if (scale > 0.0f) {
+    program_.set("u_coarse_low", static_cast<float>(result.density_min + coarse / static_cast<double>(scale)));
+    program_.set("u_fine_scale", finite_scale(static_cast<double>(scale) * bins));
+  }
+  // The texels of the crossing bin, listed: the coarse bin's (as the CPU sorts them), or where
+  // it holds too many, the fine bin's within it.
   dispatch(2);
-  const std::vector<std::uint64_t> fine_weight = sums64(histogram.read(2 * bins));
-  const int fine = crossing(fine_weight);
-  program_.set("u_fine", fine);
-  dispatch(3);
-  const std::vector<GLuint> found = scalars.read(5);
-  const float below = found[2] ? from_sortable(found[2]) : std::nextafter(result.density_min, -INFINITY);
-  const GLuint count = found[4];
+  int fine = 0;  // the listed texels are those of bins at or above (coarse, fine)
+  std::uint64_t listed_weight = 0;
+  GLuint count = scalars.read(5)[4];
+  if (count > static_cast<GLuint>(calibration_member_capacity)) {
+    histogram.clear();
+    dispatch(3);
+    const std::vector<std::uint64_t> fine_weight = sums64(histogram.read(2 * bins));
+    fine = crossing(fine_weight);
+    listed_weight = fine_weight[fine];
+    program_.set("u_fine", fine);
+    scalars.set(3, 0);
+    scalars.set(4, 0);
+    dispatch(4);
+    count = scalars.read(5)[4];
+  }
+  // The largest density below the listed bin: the threshold when all of it is cloudy.
+  auto largest_below = [&] {
+    program_.set("u_fine", fine);
+    dispatch(5);
+    const GLuint bits = scalars.read(3)[2];
+    return bits ? from_sortable(bits) : std::nextafter(result.density_min, -INFINITY);
+  };
 
   if (count <= static_cast<GLuint>(calibration_member_capacity)) {
     const std::vector<GLuint> words = members.read(2 * static_cast<size_t>(count));
@@ -159,7 +200,7 @@ CoverageCalibration GpuCalibration::run(const gpu::Texture& density, double targ
         best_count = n;
       }
     }
-    result.threshold = best_count < list.size() ? list[best_count].first : below;
+    result.threshold = best_count < list.size() ? list[best_count].first : largest_below();
     std::uint64_t achieved = above;
     for (const auto& m : list)
       if (m.first > result.threshold) achieved += m.second;
@@ -168,12 +209,11 @@ CoverageCalibration GpuCalibration::run(const gpu::Texture& density, double targ
     // Too many texels in one fine bin to list: the bin is cloudy or clear as a whole, whichever
     // is nearer the target. (The CPU may cut inside a run of equal densities, which then all
     // count as clear; this is never further from the target.)
-    const double none = units.fraction(above), all = units.fraction(above + fine_weight[fine]);
+    const double none = units.fraction(above), all = units.fraction(above + listed_weight);
     const bool take_all = std::abs(all - target) < std::abs(none - target);
-    result.threshold = take_all ? below : from_sortable(found[3]);
+    result.threshold = take_all ? largest_below() : from_sortable(scalars.read(4)[3]);
     result.achieved_fraction = take_all ? all : none;
   }
-  result.max_texel_fraction = units.largest_fraction;
   return result;
 }
 
@@ -183,10 +223,12 @@ WarpDiagnostics GpuDiagnosis::run(const gpu::Texture& curl, const gpu::Texture& 
                                   double step) const {
   if (curl.width() != size_ || warp.width() != size_)
     throw std::invalid_argument("GpuDiagnosis: the maps are not of its size");
-  constexpr int figures = 6, group = 16;
-  const int groups_across = (size_ + group - 1) / group;
-  const int partial_count = groups_across * groups_across * 6;
-  WordBuffer counters(8), partials(2 * static_cast<size_t>(figures) * partial_count), totals(2 * figures);
+  constexpr int figures = 6, group = 64;
+  const int strip = reduction_strip(size_);
+  const int strips = (size_ + strip - 1) / strip;
+  const int partial_count = strips * size_ * 6;
+  // Stage 1 writes its 64 intermediate records after the partials.
+  WordBuffer counters(8), partials(2 * static_cast<size_t>(figures) * (partial_count + group)), totals(2 * figures);
   counters.bind(1);
   partials.bind(2);
   totals.bind(3);
@@ -197,8 +239,9 @@ WarpDiagnostics GpuDiagnosis::run(const gpu::Texture& curl, const gpu::Texture& 
   glProgramUniform1d(program_.id(), glGetUniformLocation(program_.id(), "u_step"), step);
   glProgramUniform1d(program_.id(), glGetUniformLocation(program_.id(), "u_limit"), limit);
   program_.set("u_partials", partial_count);
+  program_.set("u_strip", strip);
   program_.set("u_stage", 0);
-  program_.dispatch_covering(size_, size_, 6);
+  program_.dispatch_covering(size_, strips, 6);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   program_.set("u_stage", 1);
   program_.use();

@@ -45,16 +45,22 @@ class GpuTexelWeights {
   unsigned buffer_ = 0;
 };
 
-// Texels listed at most by the last stage of the GPU calibration; a crossing fine bin with
-// more texels (flat fields) is cut at its edges instead.
+// Texels listed at most by the GPU calibration; a crossing bin with more texels is refined
+// into 4096 fine bins, and a crossing fine bin with more (flat fields) is cut at its edges.
 constexpr int calibration_member_capacity = 1 << 16;
 
-// The threshold of calibrate_coverage computed on the GPU from `density` (an R32F cube map),
-// reading back two histograms of 4096 64-bit sums and the texels of one fine bin. The
-// threshold equals the CPU's whenever the fine bin that crosses the target holds at most
-// calibration_member_capacity texels (always, unless about that many texels share nearly one
-// density) and no two cuts are nearer the target than TexelWeightUnits::sum_error_bound();
-// otherwise the cut is at an edge of that fine bin, of width (max - min) / 4096^2.
+// The threshold of calibrate_coverage computed on the GPU from `density` (an R32F cube map).
+// Stages: the density range; a solid-angle weighted histogram of 4096 bins (64-bit sums of
+// texel weight units) that finds the bin where the cloudy fraction crosses the target; the
+// texels of that bin listed, sorted and cut on the host as the CPU does (a second histogram
+// level of 4096 fine bins first where the bin holds more than calibration_member_capacity).
+// Read back: two words, one or two histograms of 4096 sums, the listed texels.
+// Bound: the threshold is the CPU's, and the cloudy fraction within
+// TexelWeightUnits::sum_error_bound() of the CPU's, unless two cuts are that near to being
+// equally far from the target (either may be taken) or the crossing fine bin holds more than
+// calibration_member_capacity texels; then all or none of that bin is cloudy, whichever is
+// nearer the target, which is never further from it than the CPU's cut (whose fraction error
+// is at most one texel's share of the sphere, or the bin's share for equal densities).
 class GpuCalibration {
  public:
   explicit GpuCalibration(int size);
