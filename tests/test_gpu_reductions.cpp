@@ -203,3 +203,25 @@ TEST_CASE("the GPU diagnosis finds the folds of a mirror image", "[gpu-reduce]")
   CHECK(gpu.folding.folded_fraction == Approx(1.0).margin(cover::texel_weight_units(size).sum_error_bound()));
   check_same_diagnosis(gpu, cpu, size);
 }
+
+TEST_CASE("a crowded histogram bin is refined into fine bins and still gives the CPU's threshold", "[gpu-reduce]") {
+  test::test_context();
+  // All but one texel in the lowest of 4096 bins over [0, 1]: more than the listing holds,
+  // so the fine level finds the crossing.
+  const int size = 110;
+  REQUIRE(6 * size * size > cover::calibration_member_capacity);
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<float> u(0.0f, 1e-4f);
+  std::vector<float> densities(6 * size * size);
+  for (auto& d : densities) d = u(rng);
+  densities[12345] = 1.0f;
+  const gpu::Texture field = upload(densities, size);
+  const cover::GpuCalibration gpu_calibration(size);
+  for (double target : {0.1, 0.5, 0.9}) {
+    const auto cpu = cover::calibrate_coverage(densities, size, target);
+    const auto gpu = gpu_calibration.run(field, target);
+    INFO("target " << target);
+    CHECK(gpu.threshold == cpu.threshold);
+    CHECK(std::abs(gpu.achieved_fraction - cpu.achieved_fraction) <= gpu_calibration.weights().units().sum_error_bound());
+  }
+}
