@@ -88,6 +88,9 @@ inline constexpr Parameter stretch = flag("stretch", "map each channel's range l
 // Options of the runs themselves: where files go, how much is printed, how long to measure.
 namespace run {
 inline constexpr Parameter cover_out = text("out", "cubemaps", "DIR", "output directory (created if missing)", generate);
+inline constexpr Parameter cover_files = text("files", "faces,equirect,png", "faces,equirect,png", "comma-separated images to write (cover.json always); what none asks for is not computed", generate);
+inline constexpr Parameter precision = text("precision", "float", "float|half", "EXR samples: 32-bit float, or 16-bit half (11 significant bits, half the bytes)", generate);
+inline constexpr Parameter exr_compression = text("exr_compression", "zip", "none|rle|zips|zip|piz|pxr24|b44|dwaa", "EXR compression: zip (OpenEXR's default), none, rle, zips, piz lose nothing; pxr24, b44, dwaa round values", generate);
 inline constexpr Parameter report_out = text("out", "report", "DIR", "output directory (created if missing)", report);
 inline constexpr Parameter quiet = flag("quiet", "no progress reports on stderr (they appear for work of more than a second)", generate | report | render);
 inline constexpr Parameter verbose = flag("verbose", "print the renderer, the passes that ran and their times", generate | render | noise);
