@@ -30,7 +30,8 @@ GlobalCover::GlobalCover(const CoverParameters& parameters)
 template <class Work>
 void GlobalCover::timed(const std::string& pass, Work&& work) {
   if (on_pass_) on_pass_(pass);
-  timings_.push_back({pass, gpu::time_pass(work)});
+  const gpu::PassTimes times = gpu::time_pass_and_device(work);
+  timings_.push_back({pass, times.wall_ms, times.device_ms});
 }
 
 void GlobalCover::run() {

@@ -18,7 +18,8 @@ namespace nephele::cover {
 
 struct PassTiming {
   std::string pass;
-  double milliseconds;
+  double milliseconds;           // wall clock, between two glFinish
+  double device_milliseconds = 0;  // GPU time by a GL_TIME_ELAPSED query (GPU passes; else 0)
 };
 
 class GlobalCover {
