@@ -19,7 +19,7 @@ const std::vector<const Parameter*>& all() {
       &noise_texture::worley_octaves, &noise_texture::channels, &noise_texture::r, &noise_texture::g,
       &noise_texture::b, &noise_texture::a, &noise_texture::seed, &noise_texture::bits, &noise_texture::out,
       &noise_texture::stretch,
-      &run::cover_out, &run::cover_files, &run::precision, &run::exr_compression, &run::report_out, &run::quiet, &run::verbose, &run::bench_cover_sizes, &run::bench_cover_repeat,
+      &run::cover_out, &run::cover_files, &run::precision, &run::exr_compression, &run::report_out, &run::quiet, &run::no_cache, &run::verbose, &run::bench_cover_sizes, &run::bench_cover_repeat,
       &run::bench_noise_size, &run::bench_noise_repeat, &run::bench_render_size, &run::bench_render_sweep_size,
       &run::bench_render_repeat, &run::bench_render_no_sweep, &run::report_quick, &run::report_sizes,
       &run::report_steps, &run::report_tolerances, &run::report_samples, &run::report_repeat,

@@ -93,6 +93,7 @@ inline constexpr Parameter precision = text("precision", "float", "float|half", 
 inline constexpr Parameter exr_compression = text("exr_compression", "zip", "none|rle|zips|zip|piz|pxr24|b44|dwaa", "EXR compression: zip (OpenEXR's default), none, rle, zips, piz lose nothing; pxr24, b44, dwaa round values", generate);
 inline constexpr Parameter report_out = text("out", "report", "DIR", "output directory (created if missing)", report);
 inline constexpr Parameter quiet = flag("quiet", "no progress reports on stderr (they appear for work of more than a second)", generate | report | render);
+inline constexpr Parameter no_cache = flag("no_cache", "neither read nor write the noise volume cache ($XDG_CACHE_HOME/nephele, else ~/.cache/nephele)", render);
 inline constexpr Parameter verbose = flag("verbose", "print the renderer, the passes that ran and their times", generate | render | noise);
 inline constexpr Parameter bench_cover_sizes = text("sizes", "256,512,1024", "N,N,... (1 to 16384)", "comma-separated cube face sizes", bench_cover);
 inline constexpr Parameter bench_cover_repeat = integer("repeat", 3, 1, 100, "runs", "runs per size; the median is printed", bench_cover);
