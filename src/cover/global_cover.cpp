@@ -13,9 +13,10 @@ double cover_gpu_bytes(int size) {
   // identity, curl, warp; density, cover; and two RGBA32F cubes the warp pass adds for long or
   // adaptive integrations (a scratch map and the adaptive state).
   const double cubes = texels * (16.0 * 5 + 4.0 * 2);
-  // The equirect export holds one R32F tile of the 4 size x 2 size map at a time.
+  // The equirect export holds one R32F tile of the 4 size x 2 size map at a time; the
+  // calibration and diagnosis their tables and partial sums.
   const double equirect = std::min(8.0 * size * size, double(default_equirect_tile) * default_equirect_tile) * 4.0;
-  return cubes + equirect;
+  return cubes + equirect + reduction_gpu_bytes(size);
 }
 
 GlobalCover::GlobalCover(const CoverParameters& parameters)

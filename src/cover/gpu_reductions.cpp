@@ -95,6 +95,14 @@ TexelWeightUnits texel_weight_units(int size) {
   return units;
 }
 
+double reduction_gpu_bytes(int size) {
+  const double half = (size + 1) / 2;
+  const double table = half * (half + 1) / 2 * 4.0;
+  const int strip = reduction_strip(size);
+  const double records = 6.0 * size * ((size + strip - 1) / strip) + 64;  // + stage 1's 64
+  return 2 * table + calibration_member_capacity * 8.0 + 2 * bins * 8.0 + records * 6 * 8.0;
+}
+
 GpuTexelWeights::GpuTexelWeights(int size) : units_(texel_weight_units(size)) {
   glCreateBuffers(1, &buffer_);
   glNamedBufferStorage(buffer_, static_cast<GLsizeiptr>(units_.octant.size() * 4), units_.octant.data(), 0);

@@ -45,6 +45,10 @@ class GpuTexelWeights {
   unsigned buffer_ = 0;
 };
 
+// Bytes of GPU memory the calibration and the diagnosis allocate for a cube face size: two
+// weight tables, the listed texels, the histograms and the diagnosis's partial records.
+double reduction_gpu_bytes(int size);
+
 // Texels listed at most by the GPU calibration; a crossing bin with more texels is refined
 // into 4096 fine bins, and a crossing fine bin with more (flat fields) is cut at its edges.
 constexpr int calibration_member_capacity = 1 << 16;
