@@ -34,9 +34,13 @@ inline Run run_command(const std::string& command) {
   return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, output};
 }
 
-// nephele with the arguments, after `environment` (VAR=value ... or empty).
+// nephele with the arguments, after `environment` (VAR=value ... or empty). Renders get
+// --no-cache, so that the tests never read or fill the user's noise cache (the cache's own
+// tests name a directory through XDG_CACHE_HOME and use run_command).
 inline Run run_with_environment(const std::string& environment, const std::string& arguments) {
-  return run_command(environment + " " + std::string(NEPHELE_EXECUTABLE) + " " + arguments);
+  const bool render = arguments.rfind("render", 0) == 0 && (arguments.size() == 6 || arguments[6] == ' ');
+  const std::string rest = render ? "render --no-cache" + arguments.substr(6) : arguments;
+  return run_command(environment + " " + std::string(NEPHELE_EXECUTABLE) + " " + rest);
 }
 
 inline Run run(const std::string& arguments) { return run_with_environment("", arguments); }

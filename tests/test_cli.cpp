@@ -74,6 +74,55 @@ TEST_CASE("generate writes every output readable with the right sizes and a vali
       CHECK(entry.path().filename().string().rfind(".nephele-" + out.path.filename().string() + "-", 0) != 0);
 }
 
+TEST_CASE("generate writes only the images --files names and does not resample without an equirect", "[cli]") {
+  TemporaryDirectory out;
+  const Run r = run("generate --size 8 --iterations 5 --files faces --out " + out.path.string());
+  INFO(r.output);
+  REQUIRE(r.exit_code == 0);
+  CHECK(fs::exists(out.path / "cover_px.exr"));
+  CHECK_FALSE(fs::exists(out.path / "cover_equirect.exr"));
+  CHECK_FALSE(fs::exists(out.path / "cover_equirect.png"));
+  const json::Value sidecar = json::parse(read_file(out.path / "cover.json"));
+  CHECK(sidecar.at("timings_ms").find("equirect") == nullptr);
+  CHECK(sidecar.at("files").find("equirect") == nullptr);
+  CHECK(sidecar.at("files").at("faces").as_array().size() == 6);
+
+  TemporaryDirectory png_only;
+  REQUIRE(run("generate --size 8 --iterations 5 --files png --out " + png_only.path.string()).exit_code == 0);
+  CHECK(fs::exists(png_only.path / "cover_equirect.png"));
+  CHECK_FALSE(fs::exists(png_only.path / "cover_px.exr"));
+  const json::Value png_sidecar = json::parse(read_file(png_only.path / "cover.json"));
+  CHECK(png_sidecar.at("timings_ms").find("read_faces") == nullptr);
+}
+
+TEST_CASE("generate --precision half writes the float faces rounded to half, with any compression", "[cli]") {
+  TemporaryDirectory full, half;
+  REQUIRE(run("generate --size 16 --iterations 5 --files faces,equirect --out " + full.path.string()).exit_code == 0);
+  const Run r = run("generate --size 16 --iterations 5 --files faces,equirect --precision half --exr-compression piz --out " +
+                    half.path.string());
+  INFO(r.output);
+  REQUIRE(r.exit_code == 0);
+  // Half keeps 11 significant bits: relative rounding error at most 2^-11 (values in [0, 1]
+  // below 2^-14 are subnormal, absolute error at most 2^-25).
+  const double relative = std::ldexp(1.0, -11), absolute = std::ldexp(1.0, -25);
+  for (const char* name : {"cover_px.exr", "cover_nz.exr", "cover_equirect.exr"}) {
+    const auto a = io::read_image(full.path / name);
+    const auto b = io::read_image(half.path / name);
+    REQUIRE(a.pixels.size() == b.pixels.size());
+    for (size_t k = 0; k < a.pixels.size(); ++k)
+      REQUIRE(std::abs(b.pixels[k] - a.pixels[k]) <= relative * std::abs(a.pixels[k]) + absolute);
+  }
+  const json::Value sidecar = json::parse(read_file(half.path / "cover.json"));
+  CHECK(sidecar.at("files").at("exr_precision").as_string() == "half");
+  CHECK(sidecar.at("files").at("exr_compression").as_string() == "piz");
+  for (const auto* arguments : {"--files faces,faces", "--files", "--files maps", "--precision double",
+                                "--exr-compression lzma"}) {
+    const Run bad = run(std::string("generate --size 8 ") + arguments + " --out " + half.path.string() + "/x");
+    INFO(arguments << ": " << bad.output);
+    CHECK(bad.exit_code == 2);
+  }
+}
+
 TEST_CASE("bad input exits with code 2 naming the option and writes nothing", "[cli]") {
   TemporaryDirectory out;
   const std::string dir = " --out " + out.path.string();

@@ -30,7 +30,8 @@ std::vector<PixelTile> equirect_tiles(int width, int height, int max_tile) {
   return tiles;
 }
 
-std::vector<float> equirect_from_cube(const gpu::Texture& cube, int width, int height, int max_tile) {
+std::vector<float> equirect_from_cube(const gpu::Texture& cube, int width, int height, int max_tile,
+                                      gpu::DeviceTimer* device) {
   if (max_tile <= 0) {
     GLint max_side = 0;
     glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_side);
@@ -50,7 +51,9 @@ std::vector<float> equirect_from_cube(const gpu::Texture& cube, int width, int h
     target.bind_image(1, GL_WRITE_ONLY);
     program.set("u_origin_x", tile.x);
     program.set("u_origin_y", tile.y);
+    if (device) device->begin();
     program.dispatch_covering(tile.width, tile.height, 1);
+    if (device) device->end();
     gpu::image_barrier();
     const std::vector<float> part = target.read();
     for (int r = 0; r < tile.height; ++r)

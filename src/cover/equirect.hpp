@@ -4,6 +4,7 @@
 
 #include <vector>
 
+#include "gpu/pass_timer.hpp"
 #include "gpu/textures.hpp"
 
 namespace nephele::cover {
@@ -31,6 +32,8 @@ constexpr int default_equirect_tile = 4096;
 // and assembled here, so that maps wider than the driver's texture limit (4 x 16384 for the
 // largest cover) work; every pixel is computed from its place in the whole map, so any tiling
 // gives the same bits.
-std::vector<float> equirect_from_cube(const gpu::Texture& cube, int width, int height, int max_tile = 0);
+// `device`, when given, measures the GPU time of the tiles' dispatches (not their read-backs).
+std::vector<float> equirect_from_cube(const gpu::Texture& cube, int width, int height, int max_tile = 0,
+                                      gpu::DeviceTimer* device = nullptr);
 
 }  // namespace nephele::cover

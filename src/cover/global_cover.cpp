@@ -13,9 +13,10 @@ double cover_gpu_bytes(int size) {
   // identity, curl, warp; density, cover; and two RGBA32F cubes the warp pass adds for long or
   // adaptive integrations (a scratch map and the adaptive state).
   const double cubes = texels * (16.0 * 5 + 4.0 * 2);
-  // The equirect export holds one R32F tile of the 4 size x 2 size map at a time.
+  // The equirect export holds one R32F tile of the 4 size x 2 size map at a time; the
+  // calibration and diagnosis their tables and partial sums.
   const double equirect = std::min(8.0 * size * size, double(default_equirect_tile) * default_equirect_tile) * 4.0;
-  return cubes + equirect;
+  return cubes + equirect + reduction_gpu_bytes(size);
 }
 
 GlobalCover::GlobalCover(const CoverParameters& parameters)
@@ -30,7 +31,8 @@ GlobalCover::GlobalCover(const CoverParameters& parameters)
 template <class Work>
 void GlobalCover::timed(const std::string& pass, Work&& work) {
   if (on_pass_) on_pass_(pass);
-  timings_.push_back({pass, gpu::time_pass(work)});
+  const gpu::PassTimes times = gpu::time_pass_and_device(work);
+  timings_.push_back({pass, times.wall_ms, times.device_ms});
 }
 
 void GlobalCover::run() {
@@ -146,8 +148,8 @@ void GlobalCover::dispatch_warp(const gpu::Texture& starts, const gpu::Texture& 
 
 const cover::WarpDiagnostics& GlobalCover::diagnose() {
   timed("diagnose", [&] {
-    diagnostics_ = cover::diagnose_warp(curl_field_.read(), warp_field_.read(), parameters_.size,
-                                           parameters_.integrator, parameters_.step);
+    if (!gpu_diagnosis_) gpu_diagnosis_ = std::make_unique<GpuDiagnosis>(parameters_.size);
+    diagnostics_ = gpu_diagnosis_->run(curl_field_, warp_field_, parameters_.integrator, parameters_.step);
   });
   return *diagnostics_;
 }
@@ -165,7 +167,8 @@ void GlobalCover::run_density() {
 
 CoverageCalibration GlobalCover::run_coverage() {
   timed("calibrate", [&] {
-    calibration_ = calibrate_coverage(density_field_.read(), parameters_.size, parameters_.coverage);
+    if (!gpu_calibration_) gpu_calibration_ = std::make_unique<GpuCalibration>(parameters_.size);
+    calibration_ = gpu_calibration_->run(density_field_, parameters_.coverage);
   });
   timed("coverage", [&] {
     remap_program_.set("u_threshold", calibration_.threshold);

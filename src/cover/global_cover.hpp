@@ -9,6 +9,7 @@
 
 #include "cover/cover_parameters.hpp"
 #include "cover/coverage_threshold.hpp"
+#include "cover/gpu_reductions.hpp"
 #include "gpu/compute_program.hpp"
 #include "gpu/textures.hpp"
 #include "cover/stability.hpp"
@@ -17,7 +18,8 @@ namespace nephele::cover {
 
 struct PassTiming {
   std::string pass;
-  double milliseconds;
+  double milliseconds;           // wall clock, between two glFinish
+  double device_milliseconds = 0;  // GPU time by a GL_TIME_ELAPSED query (GPU passes; else 0)
 };
 
 class GlobalCover {
@@ -32,11 +34,11 @@ class GlobalCover {
   void run_curl();
   void run_warp();
   void run_density();
-  CoverageCalibration run_coverage();  // calibrates on the host, remaps on the GPU
+  CoverageCalibration run_coverage();  // calibrates and remaps on the GPU (scalars read back)
   // The warp pass's computation for other start points: `starts` and `warped` are RGBA32F cube
   // maps of one size (any, independent of the cover's), the curl field is this cover's.
   void warp_points(const gpu::Texture& starts, const gpu::Texture& warped);
-  // Stiffness, folding and sub-steps of the warp (reads the curl and warp fields back; after
+  // Stiffness, folding and sub-steps of the warp (GPU reductions, scalars read back; after
   // run_warp). Kept for the sidecar.
   const cover::WarpDiagnostics& diagnose();
   const std::optional<cover::WarpDiagnostics>& diagnostics() const { return diagnostics_; }
@@ -66,6 +68,8 @@ class GlobalCover {
   gpu::ComputeProgram remap_program_{"cover/cover_remap.comp"};
   gpu::Texture identity_field_, curl_field_, warp_field_, density_field_, cover_field_;
   CoverageCalibration calibration_;
+  std::unique_ptr<GpuCalibration> gpu_calibration_;  // made at the first calibration
+  std::unique_ptr<GpuDiagnosis> gpu_diagnosis_;      // made at the first diagnosis
   std::vector<PassTiming> timings_;
   std::optional<cover::WarpDiagnostics> diagnostics_;
 };

@@ -134,6 +134,19 @@ WarpDiagnostics diagnose_warp(const std::vector<float>& curl, const std::vector<
   d.stiffness = stiffness_report(flow_rates(curl, size), step, integrator);
   d.folding = folding_report(warp, size);
   d.substeps = substep_report(warp);
+  const size_t texels = warp.size() / 4;
+  long off = 0;
+  for (size_t k = 0; k < texels; ++k) {
+    const double length = std::sqrt(static_cast<double>(warp[4 * k]) * warp[4 * k] +
+                                    static_cast<double>(warp[4 * k + 1]) * warp[4 * k + 1] +
+                                    static_cast<double>(warp[4 * k + 2]) * warp[4 * k + 2]);
+    if (!(std::abs(length - 1.0) <= 1e-5)) ++off;
+  }
+  add_warp_warnings(d, integrator, step, off);
+  return d;
+}
+
+void add_warp_warnings(WarpDiagnostics& d, Integrator integrator, double step, long off) {
   char text[512];
   if (!d.adaptive && d.stiffness.beyond_fraction > warn_fraction) {
     std::snprintf(text, sizeof text,
@@ -151,19 +164,10 @@ WarpDiagnostics diagnose_warp(const std::vector<float>& curl, const std::vector<
                   d.substeps.capped_texels);
     d.warnings.push_back(text);
   }
-  const size_t texels = warp.size() / 4;
-  long off = 0;
-  for (size_t k = 0; k < texels; ++k) {
-    const double length = std::sqrt(static_cast<double>(warp[4 * k]) * warp[4 * k] +
-                                    static_cast<double>(warp[4 * k + 1]) * warp[4 * k + 1] +
-                                    static_cast<double>(warp[4 * k + 2]) * warp[4 * k + 2]);
-    if (!(std::abs(length - 1.0) <= 1e-5)) ++off;
-  }
   if (off > 0) {
     std::snprintf(text, sizeof text, "%ld warped points are not finite unit vectors", off);
     d.warnings.push_back(text);
   }
-  return d;
 }
 
 }  // namespace nephele::cover

@@ -62,6 +62,9 @@ struct WarpDiagnostics {
   std::vector<std::string> warnings;
 };
 constexpr double warn_fraction = 1e-4;
+// The warnings above for reports already made; `off_sphere`: warped points that are not finite
+// unit vectors. diagnose_warp and the GPU diagnosis (gpu_reductions.hpp) share it.
+void add_warp_warnings(WarpDiagnostics& d, Integrator integrator, double step, long off_sphere);
 WarpDiagnostics diagnose_warp(const std::vector<float>& curl_rgba, const std::vector<float>& warp_rgba, int size,
                               Integrator integrator, double step);
 

@@ -1,10 +1,13 @@
 #include "io/cover_files.hpp"
 
 #include <chrono>
+#include <future>
+#include <memory>
 
 #include "io/atomic_output.hpp"
 #include "cover/equirect.hpp"
 #include "io/image_files.hpp"
+#include "core/error.hpp"
 #include "nephele/version.hpp"
 #include "params/table.hpp"
 
@@ -50,15 +53,34 @@ json::Value conventions_json() {
 
 }  // namespace
 
-std::vector<std::string> cover_file_names() {
+void parse_cover_files(const std::string& list, CoverFileOptions& options) {
+  const std::string allowed = "a comma-separated non-empty subset of faces, equirect, png";
+  options.faces = options.equirect = options.preview = false;
+  size_t start = 0;
+  while (true) {
+    const size_t comma = list.find(',', start);
+    const std::string item = list.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+    bool* flag = item == "faces" ? &options.faces : item == "equirect" ? &options.equirect
+                 : item == "png" ? &options.preview : nullptr;
+    if (!flag || *flag) throw core::InputError(params::run::cover_files.option(), list, allowed);
+    *flag = true;
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+}
+
+std::vector<std::string> cover_file_names(const CoverFileOptions& options) {
   std::vector<std::string> names;
-  for (const char* suffix : face_suffixes) names.push_back(std::string("cover_") + suffix + ".exr");
-  names.insert(names.end(), {"cover_equirect.exr", "cover_equirect.png", "cover.json"});
+  if (options.faces)
+    for (const char* suffix : face_suffixes) names.push_back(std::string("cover_") + suffix + ".exr");
+  if (options.equirect) names.push_back("cover_equirect.exr");
+  if (options.preview) names.push_back("cover_equirect.png");
+  names.push_back("cover.json");
   return names;
 }
 
 json::Value cover_sidecar(const cover::GlobalCover& cover, const gpu::ContextInfo& context,
-                          const std::vector<cover::PassTiming>& export_timings) {
+                          const std::vector<cover::PassTiming>& export_timings, const CoverFileOptions& options) {
   const cover::CoverParameters& p = cover.parameters();
   // Keys and nesting come from the parameter table (sidecar paths such as "potential.gain").
   json::Value parameters;
@@ -121,11 +143,16 @@ json::Value cover_sidecar(const cover::GlobalCover& cover, const gpu::ContextInf
   device.set("version", context.version);
 
   json::Value files;
-  json::Value::Array faces;
-  for (const char* suffix : face_suffixes) faces.emplace_back(std::string("cover_") + suffix + ".exr");
-  files.set("faces", faces);
-  files.set("equirect", "cover_equirect.exr");
-  files.set("preview", "cover_equirect.png");
+  if (options.faces) {
+    json::Value::Array faces;
+    for (const char* suffix : face_suffixes) faces.emplace_back(std::string("cover_") + suffix + ".exr");
+    files.set("faces", faces);
+  }
+  if (options.equirect) files.set("equirect", "cover_equirect.exr");
+  if (options.preview) files.set("preview", "cover_equirect.png");
+  // Recorded when they differ from the defaults, so that default sidecars stay as they were.
+  if (options.half) files.set("exr_precision", "half");
+  if (options.compression != "zip") files.set("exr_compression", options.compression);
 
   json::Value root;
   root.set("program", "nephele");
@@ -139,36 +166,61 @@ json::Value cover_sidecar(const cover::GlobalCover& cover, const gpu::ContextInf
   return root;
 }
 
-std::vector<cover::PassTiming> write_cover_files(OutputSet& outputs, const cover::GlobalCover& cover,
-                                                 const gpu::ContextInfo& context) {
-  std::vector<cover::PassTiming> timings;
+CoverExport write_cover_files(OutputSet& outputs, const cover::GlobalCover& cover, const gpu::ContextInfo& context,
+                              const CoverFileOptions& options) {
+  CoverExport result;
+  using clock = std::chrono::steady_clock;
   auto timed = [&](const std::string& name, auto&& work) {
-    const auto start = std::chrono::steady_clock::now();
+    const auto start = clock::now();
     work();
-    const std::chrono::duration<double, std::milli> elapsed = std::chrono::steady_clock::now() - start;
-    timings.push_back({name, elapsed.count()});
+    const std::chrono::duration<double, std::milli> elapsed = clock::now() - start;
+    result.timings.push_back({name, elapsed.count()});
   };
   const int size = cover.parameters().size;
-  timed("write_faces", [&] {
-    const std::vector<float> texels = cover.cover_field().read();
+  const ImageEncoding exr = exr_encoding({"Y"}, options.half ? 16 : 32, options.compression);
+  // Each image is encoded in memory on its own thread; the files are written afterwards in
+  // order, through the output set (which is not shared between threads).
+  struct Job {
+    std::string name;
+    std::future<std::vector<unsigned char>> bytes;
+  };
+  std::vector<Job> jobs;
+  auto encode = [&](std::string name, std::shared_ptr<const ImageData> image, ImageEncoding encoding) {
+    jobs.push_back({name, std::async(std::launch::async, [name, image, encoding] {
+                      return encode_image(*image, encoding, name);
+                    })});
+  };
+  const auto encode_start = clock::now();
+  if (options.faces) {
+    std::vector<float> texels;
+    timed("read_faces", [&] { texels = cover.cover_field().read(); });
     const size_t per_face = static_cast<size_t>(size) * size;
     for (int face = 0; face < 6; ++face) {
-      ImageData image{size, size, 1,
-                      std::vector<float>(texels.begin() + face * per_face,
-                                         texels.begin() + (face + 1) * per_face)};
-      const std::string name = std::string("cover_") + face_suffixes[face] + ".exr";
-      outputs.write(name, encode_image(image, exr_encoding({"Y"}), name));
+      auto image = std::make_shared<ImageData>(ImageData{
+          size, size, 1,
+          std::vector<float>(texels.begin() + face * per_face, texels.begin() + (face + 1) * per_face)});
+      encode(std::string("cover_") + face_suffixes[face] + ".exr", image, exr);
+    }
+  }
+  if (options.equirect || options.preview) {
+    // Resampled once on the GPU while the faces are encoded; both files come from this map.
+    auto equirect = std::make_shared<ImageData>(ImageData{4 * size, 2 * size, 1, {}});
+    timed("equirect", [&] { equirect->pixels = cover::equirect_from_cube(cover.cover_field(), equirect->width, equirect->height); });
+    if (options.equirect) encode("cover_equirect.exr", equirect, exr);
+    if (options.preview) encode("cover_equirect.png", equirect, png_encoding(8));
+  }
+  std::vector<std::vector<unsigned char>> encoded;
+  for (Job& job : jobs) encoded.push_back(job.bytes.get());
+  result.timings.push_back({"encode", std::chrono::duration<double, std::milli>(clock::now() - encode_start).count()});
+  timed("write_files", [&] {
+    for (size_t k = 0; k < jobs.size(); ++k) {
+      outputs.write(jobs[k].name, encoded[k]);
+      result.bytes += static_cast<double>(encoded[k].size());
     }
   });
-  ImageData equirect{4 * size, 2 * size, 1, {}};
-  timed("equirect", [&] { equirect.pixels = cover::equirect_from_cube(cover.cover_field(), equirect.width, equirect.height); });
-  timed("write_equirect", [&] {
-    outputs.write("cover_equirect.exr", encode_image(equirect, exr_encoding({"Y"}), "cover_equirect.exr"));
-    outputs.write("cover_equirect.png", encode_image(equirect, png_encoding(8), "cover_equirect.png"));
-  });
-  outputs.write("cover.json", json::write(cover_sidecar(cover, context, timings)));
+  outputs.write("cover.json", json::write(cover_sidecar(cover, context, result.timings, options)));
   outputs.commit();
-  return timings;
+  return result;
 }
 
 }  // namespace nephele::io

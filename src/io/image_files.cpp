@@ -9,22 +9,30 @@
 
 namespace nephele::io {
 
+bool is_exr_compression(const std::string& name) {
+  for (const char* known : {"none", "rle", "zips", "zip", "piz", "pxr24", "b44", "dwaa"})
+    if (name == known) return true;
+  return false;
+}
+
 std::vector<unsigned char> encode_image(const ImageData& image, const ImageEncoding& encoding,
                                         const std::string& what) {
   const bool png = encoding.format == ImageFormat::png;
-  if (png ? (encoding.bits != 8 && encoding.bits != 16) : encoding.bits != 32)
+  if (png ? (encoding.bits != 8 && encoding.bits != 16) : (encoding.bits != 32 && encoding.bits != 16))
     throw std::invalid_argument(what + ": " + std::to_string(encoding.bits) +
-                                "-bit images are not written (PNG: 8 or 16, EXR: 32)");
+                                "-bit images are not written (PNG: 8 or 16, EXR: 16 or 32)");
+  if (!png && !is_exr_compression(encoding.compression))
+    throw std::invalid_argument(what + ": unknown EXR compression '" + encoding.compression + "'");
   const char* format = png ? "png" : "openexr";
   auto out = OIIO::ImageOutput::create(format);
   if (!out) throw std::runtime_error("no image writer for " + what + ": " + OIIO::geterror());
   if (!out->supports("ioproxy")) throw std::runtime_error("the " + std::string(format) + " writer cannot write to memory");
-  const OIIO::TypeDesc type = !png ? OIIO::TypeDesc::FLOAT
+  const OIIO::TypeDesc type = !png ? (encoding.bits == 16 ? OIIO::TypeDesc::HALF : OIIO::TypeDesc::FLOAT)
                               : encoding.bits == 16 ? OIIO::TypeDesc::UINT16
                                                     : OIIO::TypeDesc::UINT8;
   OIIO::ImageSpec spec(image.width, image.height, image.channels, type);
   if (!encoding.channel_names.empty()) spec.channelnames = encoding.channel_names;
-  if (!png) spec.attribute("compression", "zip");
+  if (!png) spec.attribute("compression", encoding.compression);
   spec.attribute("Software", "nephele");
   std::vector<unsigned char> bytes;
   OIIO::Filesystem::IOVecOutput memory(bytes);

@@ -13,21 +13,28 @@ using core::ImageData;
 enum class ImageFormat { png, exr };
 
 // How an image is stored. PNG: 8 or 16 bits of values in [0, 1], quantised linearly
-// (round((2^bits - 1) v)), no gamma or sRGB chunk. EXR: 32-bit float, zip-compressed.
+// (round((2^bits - 1) v)), no gamma or sRGB chunk. EXR: 32-bit float or 16-bit half,
+// zip-compressed unless another of OpenEXR's compressions is named.
 struct ImageEncoding {
   ImageFormat format = ImageFormat::png;
-  int bits = 8;                            // png: 8 or 16; exr: 32
+  int bits = 8;                            // png: 8 or 16; exr: 32 (float) or 16 (half)
   std::vector<std::string> channel_names;  // empty: OpenImageIO's defaults (Y, RGB, RGBA ...)
+  std::string compression = "zip";        // exr: none, rle, zips, zip, piz, pxr24, b44, dwaa
 };
 
 inline ImageEncoding png_encoding(int bits = 8) { return {ImageFormat::png, bits, {}}; }
-inline ImageEncoding exr_encoding(std::vector<std::string> channel_names) {
-  return {ImageFormat::exr, 32, std::move(channel_names)};
+inline ImageEncoding exr_encoding(std::vector<std::string> channel_names, int bits = 32,
+                                  std::string compression = "zip") {
+  return {ImageFormat::exr, bits, std::move(channel_names), std::move(compression)};
 }
+
+// OpenEXR's compressions that nephele offers (params::run::exr_compression lists the same).
+bool is_exr_compression(const std::string& name);
 
 // The file's bytes, encoded in memory, so that the caller writes them with every write, fsync
 // and close checked (OpenImageIO's PNG writer does not report a failed fwrite). Throws
-// std::runtime_error naming `what` (the file's name) when encoding fails.
+// std::runtime_error naming `what` (the file's name) when encoding fails. Safe to call from
+// several threads at once (each call has its own writer).
 std::vector<unsigned char> encode_image(const ImageData& image, const ImageEncoding& encoding,
                                         const std::string& what);
 

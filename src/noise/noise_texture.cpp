@@ -124,7 +124,10 @@ void TextureGenerator::generate(const TextureSpec& spec, Volume& out) {
       glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, patches);
       rows.set("u_z0", z0);
       rows.set("u_slices", n);
+      gpu::DeviceTimer device;
+      device.begin();
       rows.dispatch_covering(height, n, segments);
+      device.end();
       ++timings_.dispatches;
       if (patch) {
         glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
@@ -133,12 +136,15 @@ void TextureGenerator::generate(const TextureSpec& spec, Volume& out) {
         count = std::min(count, capacity);
         if (count > 0) {
           patch->set("u_z0", z0);
+          device.begin();
           patch->dispatch_covering(static_cast<int>(count), 1, 1);
+          device.end();
           timings_.patched_segments += count;
         }
       }
       glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
       timings_.compute_ms += timer.milliseconds();
+      timings_.device_ms += device.milliseconds();
 
       timer.restart();
       // Mapped, a software driver's buffer is read in place (no staging copy).

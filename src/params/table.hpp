@@ -116,8 +116,12 @@ inline constexpr Parameter seed = integer("seed", 1, 0, 16777215, "", "seed of t
 // Options of the runs themselves: where files go, how much is printed, how long to measure.
 namespace run {
 inline constexpr Parameter cover_out = text("out", "cubemaps", "DIR", "output directory (created if missing)", generate);
+inline constexpr Parameter cover_files = text("files", "faces,equirect,png", "faces,equirect,png", "comma-separated images to write (cover.json always); what none asks for is not computed", generate);
+inline constexpr Parameter precision = text("precision", "float", "float|half", "EXR samples: 32-bit float, or 16-bit half (11 significant bits, half the bytes)", generate);
+inline constexpr Parameter exr_compression = text("exr_compression", "zip", "none|rle|zips|zip|piz|pxr24|b44|dwaa", "EXR compression: zip (OpenEXR's default), none, rle, zips, piz lose nothing; pxr24, b44, dwaa round values", generate);
 inline constexpr Parameter report_out = text("out", "report", "DIR", "output directory (created if missing)", report);
 inline constexpr Parameter quiet = flag("quiet", "no progress reports on stderr (they appear for work of more than a second)", generate | report | render | noise | model);
+inline constexpr Parameter no_cache = flag("no_cache", "neither read nor write the noise volume cache ($XDG_CACHE_HOME/nephele, else ~/.cache/nephele)", render);
 inline constexpr Parameter verbose = flag("verbose", "print the renderer, the passes that ran and their times", generate | render | noise | model);
 inline constexpr Parameter bench_cover_sizes = text("sizes", "256,512,1024", "N,N,... (1 to 16384)", "comma-separated cube face sizes", bench_cover);
 inline constexpr Parameter bench_cover_repeat = integer("repeat", 3, 1, 100, "runs", "runs per size; the median is printed", bench_cover);

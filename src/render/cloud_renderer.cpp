@@ -5,12 +5,15 @@
 #include <epoxy/gl.h>
 
 #include <algorithm>
+#include <cstdint>
+#include <cstdio>
 #include <cmath>
 #include <memory>
 #include <stdexcept>
 
 #include "gpu/compute_program.hpp"
 #include "gpu/pass_timer.hpp"
+#include "gpu/shader_sources.hpp"
 #include "gpu/textures.hpp"
 #include "render/sun_position.hpp"
 #include "shader_math/shader_math.hpp"
@@ -83,14 +86,53 @@ glm::vec3 sky_irradiance(glm::vec3 sun, double earth_radius, double altitude_m) 
   return irradiance;
 }
 
+namespace {
+
+GLuint make_volume_texture(int size) {
+  const GLuint texture = make_texture(GL_TEXTURE_3D);
+  const int levels = 1 + static_cast<int>(std::log2(size));
+  glTextureStorage3D(texture, levels, GL_RG32F, size, size, size);
+  glTextureParameteri(texture, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+  glTextureParameteri(texture, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  for (GLenum wrap : {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T, GL_TEXTURE_WRAP_R}) glTextureParameteri(texture, wrap, GL_REPEAT);
+  return texture;
+}
+
+// Raise when equalise_histogram or the mip chain changes what a volume holds.
+constexpr int noise_volume_host_version = 1;
+
+}  // namespace
+
+std::string NoiseVolume::recipe_key() {
+  // FNV-1a, 64 bits, of the shader as compiled (includes expanded).
+  std::uint64_t hash = 14695981039346656037ull;
+  for (unsigned char c : gpu::expand_shader("render/noise_volume.comp").text) {
+    hash ^= c;
+    hash *= 1099511628211ull;
+  }
+  char text[64];
+  std::snprintf(text, sizeof text, "noise_volume.comp:%016llx,host:%d", static_cast<unsigned long long>(hash),
+                noise_volume_host_version);
+  return text;
+}
+
+NoiseVolume::NoiseVolume(int size, std::uint32_t seed, const std::vector<float>& level0) : size_(size), seed_(seed) {
+  if (level0.size() != 2 * static_cast<size_t>(size) * size * size)
+    throw std::invalid_argument("NoiseVolume: level 0 has the wrong number of values");
+  texture_ = make_volume_texture(size);
+  glTextureSubImage3D(texture_, 0, 0, 0, 0, size, size, size, GL_RG, GL_FLOAT, level0.data());
+  glGenerateTextureMipmap(texture_);
+}
+
+std::vector<float> NoiseVolume::level0() const {
+  std::vector<float> texels(2 * static_cast<size_t>(size_) * size_ * size_);
+  glGetTextureImage(texture_, 0, GL_RG, GL_FLOAT, static_cast<GLsizei>(texels.size() * sizeof(float)), texels.data());
+  return texels;
+}
+
 NoiseVolume::NoiseVolume(int size, std::uint32_t seed) : size_(size), seed_(seed) {
   gpu::ComputeProgram program("render/noise_volume.comp");
-  texture_ = make_texture(GL_TEXTURE_3D);
-  const int levels = 1 + static_cast<int>(std::log2(size));
-  glTextureStorage3D(texture_, levels, GL_RG32F, size, size, size);
-  glTextureParameteri(texture_, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
-  glTextureParameteri(texture_, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-  for (GLenum wrap : {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T, GL_TEXTURE_WRAP_R}) glTextureParameteri(texture_, wrap, GL_REPEAT);
+  texture_ = make_volume_texture(size);
   program.set("u_seed", static_cast<unsigned>(seed));
   glBindImageTexture(0, texture_, 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RG32F);
   program.dispatch_covering(size, size, size);
@@ -127,6 +169,10 @@ glsl::VolumeSource NoiseVolume::host_copy() const {
     source.levels.push_back(std::move(texels));
   }
   return source;
+}
+
+bool needs_noise_volume(const std::vector<regional::CloudLayer>& layers, const regional::WeatherField& field) {
+  return !marched_layers(layers, field).empty();
 }
 
 glsl::MarchParams march_params(const Camera& camera, const std::vector<regional::CloudLayer>& layers,

@@ -55,6 +55,10 @@ glm::vec3 sky_irradiance(glm::vec3 sun, double earth_radius, double altitude_m);
 class NoiseVolume {
  public:
   NoiseVolume(int size, std::uint32_t seed);
+  // A volume made before (level0() of one of the same size and seed, e.g. from a disk cache):
+  // level 0 uploaded, the mip levels generated from it as the constructor above does, so the
+  // texture is the same to the bit.
+  NoiseVolume(int size, std::uint32_t seed, const std::vector<float>& level0);
   ~NoiseVolume();
   NoiseVolume(const NoiseVolume&) = delete;
   NoiseVolume& operator=(const NoiseVolume&) = delete;
@@ -63,12 +67,20 @@ class NoiseVolume {
   std::uint32_t seed() const { return seed_; }
   // Every mip level read back, for the marcher's C++ twin (tests).
   glsl::VolumeSource host_copy() const;
+  // Level 0 read back: size^3 RG pairs of floats, x fastest.
+  std::vector<float> level0() const;
+  // What determines the volume besides size and seed: a hash of the expanded shader source
+  // and the version of the host's equalisation; a cache key must include it.
+  static std::string recipe_key();
 
  private:
   unsigned texture_ = 0;
   int size_;
   std::uint32_t seed_;
 };
+
+// Whether render_clouds marches a layer, and so reads a noise volume.
+bool needs_noise_volume(const std::vector<regional::CloudLayer>& layers, const regional::WeatherField& field);
 
 // What the marcher (shaders/lib/cloud_march.glsl) is given for a render: the layers with cloud
 // in the field (at most MAX_LAYERS), camera, sun, sky light and step counts. render_clouds

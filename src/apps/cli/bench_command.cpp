@@ -1,5 +1,7 @@
 // nephele bench cover: time of each pass of the global cover for several sizes.
 #include <algorithm>
+#include <chrono>
+#include <future>
 #include <cstdio>
 #include <iostream>
 
@@ -12,6 +14,7 @@
 #include "cover/global_cover.hpp"
 #include "cover/equirect.hpp"
 #include "gpu/pass_timer.hpp"
+#include "io/image_files.hpp"
 
 namespace nephele::cli {
 namespace {
@@ -35,13 +38,37 @@ std::vector<int> parse_sizes(const std::string& text) {
   return sizes;
 }
 
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  return v[v.size() / 2];
+}
+
+// Encodes the faces and the equirect map as generate does by default; returns the bytes.
+double encode_cover_images(const std::vector<float>& texels, const std::vector<float>& equirect, int size) {
+  std::vector<std::future<size_t>> jobs;
+  const size_t per_face = static_cast<size_t>(size) * size;
+  for (int face = 0; face < 6; ++face)
+    jobs.push_back(std::async(std::launch::async, [&, face] {
+      const io::ImageData image{size, size, 1,
+                                std::vector<float>(texels.begin() + face * per_face, texels.begin() + (face + 1) * per_face)};
+      return io::encode_image(image, io::exr_encoding({"Y"}), "face").size();
+    }));
+  jobs.push_back(std::async(std::launch::async, [&] {
+    return io::encode_image(io::ImageData{4 * size, 2 * size, 1, equirect}, io::exr_encoding({"Y"}), "equirect").size();
+  }));
+  double bytes = 0;
+  for (auto& job : jobs) bytes += static_cast<double>(job.get());
+  return bytes;
+}
+
 int bench_cover(const std::vector<std::string>& arguments) {
   cover::CoverParameters parameters;
   std::string sizes_text(params::run::bench_cover_sizes.default_text);
   int repeat = params::run::bench_cover_repeat.default_int();
   Options options("bench cover",
-                  "Prints the time of each pass of the global cover (median of the repeats) for\n"
-                  "each size, on the current OpenGL device.", params::bench_cover);
+                  "Prints the device time of each pass of the global cover (GL_TIME_ELAPSED queries, median\n"
+                  "of the repeats) for each size, and separately the host's wall clock, read-back and image\n"
+                  "encoding. On a GPU use sizes that fill it, e.g. --sizes 1024,4096.", params::bench_cover);
   options.bind(params::run::bench_cover_sizes, &sizes_text);
   options.bind(params::run::bench_cover_repeat, &repeat);
   add_cover_options(options, parameters, params::bench_cover);
@@ -54,32 +81,60 @@ int bench_cover(const std::vector<std::string>& arguments) {
   gpu::EglContext context;
   for (int s : sizes) check_cover_fits(context, s);
   std::printf("device: %s (%s)\n", context.info().renderer.c_str(), context.info().version.c_str());
-  std::printf("K = %d steps, potential %d octaves, density %d octaves; milliseconds, median of %d\n",
-              parameters.iterations, parameters.potential.octaves, parameters.density.octaves, repeat);
-  const char* passes[] = {"identity", "curl", "warp", "density", "calibrate", "coverage", "equirect"};
+  std::printf("K = %d steps, potential %d octaves, density %d octaves; median of %d runs\n", parameters.iterations,
+              parameters.potential.octaves, parameters.density.octaves, repeat);
+  std::printf("device ms: GPU time of each pass by GL_TIME_ELAPSED queries (equirect: its dispatches), or\n"
+              "the wall clock between glFinish calls where the driver reports none (llvmpipe);\n"
+              "host ms: wall clock of the whole cover, of reading the cube map back, and of encoding the six\n"
+              "faces and the equirect map as float32 ZIP EXR in memory (in parallel, as generate does)\n");
+  const char* passes[] = {"identity", "curl", "warp", "density", "calibrate", "coverage", "diagnose", "equirect"};
   std::printf("%6s", "size");
-  for (const char* p : passes) std::printf(" %10s", p);
-  std::printf(" %10s %12s\n", "total", "Mtexel/s");
+  for (const char* p : passes) std::printf(" %9s", p);
+  std::printf(" %9s %10s | %9s %9s %9s %8s\n", "device", "Mtexel/s", "wall", "read", "encode", "MB/s");
   for (int size : sizes) {
     parameters.size = size;
-    std::vector<std::vector<double>> runs(std::size(passes));
+    std::vector<std::vector<double>> device(std::size(passes));
+    std::vector<double> wall, read, encode, megabytes;
+    bool wall_fallback = false;
     for (int r = 0; r < repeat; ++r) {
       cover::GlobalCover cover(parameters);
+      gpu::PassTimer whole;
       cover.run();
+      cover.diagnose();
       for (const auto& t : cover.timings())
         for (size_t k = 0; k < std::size(passes); ++k)
-          if (t.pass == passes[k]) runs[k].push_back(t.milliseconds);
-      runs.back().push_back(gpu::time_pass([&] { cover::equirect_from_cube(cover.cover_field(), 4 * size, 2 * size); }));
+          if (t.pass == passes[k]) {
+            device[k].push_back(t.device_milliseconds > 0 ? t.device_milliseconds : t.milliseconds);
+            if (t.device_milliseconds <= 0 && t.milliseconds > 0) wall_fallback = true;
+          }
+      std::vector<float> equirect;
+      gpu::DeviceTimer equirect_device;
+      const double equirect_wall = gpu::time_pass([&] {
+        equirect = cover::equirect_from_cube(cover.cover_field(), 4 * size, 2 * size, 0, &equirect_device);
+      });
+      // Without device time, the wall clock of the resampling includes its read-back.
+      const double equirect_ms = equirect_device.milliseconds();
+      device.back().push_back(equirect_ms > 0 ? equirect_ms : equirect_wall);
+      wall.push_back(whole.milliseconds());
+      std::vector<float> texels;
+      read.push_back(gpu::time_pass([&] { texels = cover.cover_field().read(); }));
+      double bytes = 0;
+      const auto start = std::chrono::steady_clock::now();
+      bytes = encode_cover_images(texels, equirect, size);
+      encode.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+      megabytes.push_back(bytes / 1e6);
     }
     double total = 0;
     std::printf("%6d", size);
-    for (auto& r : runs) {
-      std::sort(r.begin(), r.end());
-      const double median = r[r.size() / 2];
-      total += median;
-      std::printf(" %10.1f", median);
+    for (auto& d : device) {
+      const double m = median(d);
+      total += m;
+      std::printf(" %9.1f", m);
     }
-    std::printf(" %10.1f %12.2f\n", total, 6.0 * size * size / (total * 1e3));
+    const double texels = 6.0 * size * size;
+    std::printf(" %9.1f %10.1f | %9.1f %9.1f %9.1f %8.1f%s\n", total, texels / (total * 1e3), median(wall),
+                median(read), median(encode), median(megabytes) / (median(encode) / 1e3),
+                wall_fallback ? "  (no device time from the driver: wall clock)" : "");
     std::fflush(stdout);
   }
   return exit_ok;

@@ -8,6 +8,7 @@
 #include "apps/cli/cover_options.hpp"
 #include "apps/cli/device_limits.hpp"
 #include "io/cover_files.hpp"
+#include "params/values.hpp"
 
 namespace nephele::cli {
 
@@ -17,11 +18,17 @@ int run_generate(const std::vector<std::string>& arguments) {
   bool verbose = false, quiet = false;
   Options options("generate",
                   "Generates a global cloud cover: curl-warped Worley noise on a cube map, written to\n"
-                  "cover_{px,nx,py,ny,pz,nz}.exr, cover_equirect.exr, cover_equirect.png and cover.json.", params::generate);
+                  "cover_{px,nx,py,ny,pz,nz}.exr, cover_equirect.exr, cover_equirect.png and cover.json\n"
+                  "(--files chooses the images; what none asks for is not computed).", params::generate);
   add_cover_options(options, parameters, params::generate);
   WarpOptions warp_options;
   warp_options.add(options, parameters);
+  std::string files(params::run::cover_files.default_text), precision(params::run::precision.default_text),
+      compression(params::run::exr_compression.default_text);
   options.bind(params::run::cover_out, &out);
+  options.bind(params::run::cover_files, &files);
+  options.bind(params::run::precision, &precision);
+  options.bind(params::run::exr_compression, &compression);
   options.bind(params::run::quiet, &quiet);
   options.bind(params::run::verbose, &verbose);
   if (!options.parse(arguments)) {
@@ -30,6 +37,12 @@ int run_generate(const std::vector<std::string>& arguments) {
   }
   warp_options.apply(parameters);
   validate_cover_parameters(parameters);
+  io::CoverFileOptions file_options;
+  io::parse_cover_files(files, file_options);
+  params::check_word(params::run::precision, precision, params::run::precision.option());
+  params::check_word(params::run::exr_compression, compression, params::run::exr_compression.option());
+  file_options.half = precision == "half";
+  file_options.compression = compression;
   const std::filesystem::path directory(out);
   if (std::filesystem::exists(directory) && !std::filesystem::is_directory(directory))
     throw UsageError("--out: '" + out + "' exists and is not a directory");
@@ -57,11 +70,18 @@ int run_generate(const std::vector<std::string>& arguments) {
   const cover::WarpDiagnostics& diagnostics = cover.diagnose();
   for (const auto& warning : diagnostics.warnings) std::cerr << "nephele: warning: " << warning << "\n";
   progress.update(stages_started++, "writing files");
-  const auto export_timings = io::write_cover_files(outputs, cover, context.info());
+  const io::CoverExport exported = io::write_cover_files(outputs, cover, context.info(), file_options);
   progress.finish();
   if (verbose) {
     for (const auto& t : cover.timings()) std::cerr << "pass " << t.pass << ": " << t.milliseconds << " ms\n";
-    for (const auto& t : export_timings) std::cerr << "export " << t.pass << ": " << t.milliseconds << " ms\n";
+    double encode_ms = 0;
+    for (const auto& t : exported.timings) {
+      std::cerr << "export " << t.pass << ": " << t.milliseconds << " ms\n";
+      if (t.pass == "encode") encode_ms = t.milliseconds;
+    }
+    if (encode_ms > 0)
+      std::cerr << "export: " << exported.bytes / 1e6 << " MB of images, encoded at " << exported.bytes / 1e3 / encode_ms
+                << " MB/s\n";
     std::cerr << "warp: " << cover::integrator_name(parameters.integrator) << ", "
               << cover::curl_mode_name(parameters.curl_mode) << " curl; stiffness h rho "
               << diagnostics.stiffness.stiffness << " (stable limit " << diagnostics.stiffness.limit << ", beyond on "
@@ -74,7 +94,7 @@ int run_generate(const std::vector<std::string>& arguments) {
     std::cerr << "\n";
   }
   std::cout << "wrote " << (directory / "cover.json").string() << " and "
-            << io::cover_file_names().size() - 1 << " images; cloud fraction "
+            << io::cover_file_names(file_options).size() - 1 << " images; cloud fraction "
             << cover.calibration().achieved_fraction << " (target " << parameters.coverage << ")\n";
   return exit_ok;
 }

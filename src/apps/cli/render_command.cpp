@@ -6,6 +6,9 @@
 #include <sstream>
 
 #include "apps/cli/commands.hpp"
+#include "gpu/pass_timer.hpp"
+#include "io/noise_cache.hpp"
+#include "render/cloud_renderer.hpp"
 #include "apps/cli/device_limits.hpp"
 #include "apps/cli/options.hpp"
 #include "core/progress.hpp"
@@ -65,6 +68,8 @@ int run_render(const std::vector<std::string>& arguments) {
   options.bind(s::scene_path, &scene_file);
   options.bind(s::out, &out);
   options.bind(params::run::quiet, &quiet);
+  bool no_cache = false;
+  options.bind(params::run::no_cache, &no_cache);
   options.bind(params::run::verbose, &verbose);
   if (!options.parse(arguments)) {
     std::cout << options.help();
@@ -156,7 +161,30 @@ int run_render(const std::vector<std::string>& arguments) {
   progress.update(0, "weather");
   const render::PreparedScene prepared = render::prepare_scene(scene, io::read_scene_weather(scene));
   progress.update(1, "clouds");
-  const render::SceneRender result = render::render_prepared(prepared, scene);
+  // The noise volume from the disk cache when a layer is marched (the same bits as making it).
+  std::unique_ptr<render::NoiseVolume> noise;
+  std::string noise_note;
+  const std::filesystem::path cache_directory = no_cache ? std::filesystem::path() : io::default_cache_directory();
+  if (!cache_directory.empty() && render::needs_noise_volume(prepared.partial.layers, prepared.field)) {
+    const render::RenderSettings settings = render::render_settings(scene);
+    const io::FloatCache cache(cache_directory);
+    const std::string key = "noise_volume size " + std::to_string(settings.noise_size) + " seed " +
+                            std::to_string(settings.seed) + " " + render::NoiseVolume::recipe_key();
+    const std::size_t count = 2 * static_cast<std::size_t>(settings.noise_size) * settings.noise_size * settings.noise_size;
+    const double ms = gpu::time_pass([&] {
+      if (auto values = cache.load(key, count)) {
+        noise = std::make_unique<render::NoiseVolume>(settings.noise_size, settings.seed, *values);
+        noise_note = "noise volume: from the cache " + cache.file_of(key).string();
+      } else {
+        noise = std::make_unique<render::NoiseVolume>(settings.noise_size, settings.seed);
+        noise_note = cache.store(key, noise->level0()) ? "noise volume: made and cached in " + cache.file_of(key).string()
+                                                       : "noise volume: made (the cache " + cache_directory.string() +
+                                                             " could not be written)";
+      }
+    });
+    noise_note += " (" + std::to_string(ms) + " ms)";
+  }
+  const render::SceneRender result = render::render_prepared(prepared, scene, noise.get());
   progress.update(2, "writing files");
   io::write_scene_outputs(result, scene, directory, outputs, scope);
   progress.finish();
@@ -166,6 +194,7 @@ int run_render(const std::vector<std::string>& arguments) {
                  "cut short: lower --view-steps (now "
               << scene.view_steps << ") or --light-steps (now " << scene.light_steps << ")\n";
   if (verbose) {
+    if (!noise_note.empty()) std::cerr << noise_note << "\n";
     for (const auto& p : result.passes) std::cerr << "pass: " << p << "\n";
     for (const auto& [name, ms] : result.render.timings_ms) std::cerr << "time " << name << ": " << ms << " ms\n";
     for (const auto& l : result.layers)

@@ -1,0 +1,286 @@
+#include "cover/gpu_reductions.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <stdexcept>
+
+namespace nephele::cover {
+namespace {
+
+double area_antiderivative(double x, double y) { return std::atan2(x * y, std::sqrt(1.0 + x * x + y * y)); }
+
+// A shader storage buffer of 32-bit words, created zeroed.
+class WordBuffer {
+ public:
+  explicit WordBuffer(size_t words) : words_(words) {
+    glCreateBuffers(1, &id_);
+    glNamedBufferStorage(id_, static_cast<GLsizeiptr>(words * 4), nullptr, GL_DYNAMIC_STORAGE_BIT);
+    clear();
+  }
+  ~WordBuffer() { glDeleteBuffers(1, &id_); }
+  WordBuffer(const WordBuffer&) = delete;
+  WordBuffer& operator=(const WordBuffer&) = delete;
+  void clear() const {
+    const GLuint zero = 0;
+    glClearNamedBufferData(id_, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+  }
+  void set(size_t word, GLuint value) const { glNamedBufferSubData(id_, static_cast<GLintptr>(word * 4), 4, &value); }
+  void bind(GLuint binding) const { glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding, id_); }
+  std::vector<GLuint> read(size_t words) const {
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    std::vector<GLuint> out(std::min(words, words_));
+    if (!out.empty()) glGetNamedBufferSubData(id_, 0, static_cast<GLsizeiptr>(out.size() * 4), out.data());
+    return out;
+  }
+
+ private:
+  GLuint id_ = 0;
+  size_t words_;
+};
+
+float from_sortable(GLuint bits) {
+  const GLuint raw = (bits & 0x80000000u) ? bits & 0x7FFFFFFFu : ~bits;
+  float value;
+  std::memcpy(&value, &raw, sizeof value);
+  return value;
+}
+
+std::vector<std::uint64_t> sums64(const std::vector<GLuint>& words) {
+  std::vector<std::uint64_t> sums(words.size() / 2);
+  for (size_t k = 0; k < sums.size(); ++k) sums[k] = words[2 * k] | (static_cast<std::uint64_t>(words[2 * k + 1]) << 32);
+  return sums;
+}
+
+constexpr int bins = 4096;  // per level, as cover::calibrate_coverage
+
+// Texels per invocation of the reduction passes, a strip down a column: at least 32, so that
+// an invocation's atomics and partial record are shared by many texels (on llvmpipe, 1024 per
+// face: 8 texels 1.6 times slower than 32), and enough that 6 N^2 texels make at most 2^20
+// partial records (4096 per face: strips of 96).
+int reduction_strip(int size) {
+  const long texels = 6L * size * size;
+  return static_cast<int>(std::max<long>(32, (texels + (1L << 20) - 1) >> 20));
+}
+
+}  // namespace
+
+double TexelWeightUnits::fraction(std::uint64_t units) const { return std::ldexp(static_cast<double>(units), -scale_bits); }
+
+double TexelWeightUnits::sum_error_bound() const { return 6.0 * size * size * std::ldexp(0.5, -scale_bits); }
+
+TexelWeightUnits texel_weight_units(int size) {
+  // The same edges and expression as cover::face_texel_solid_angles, so octant entries are
+  // the CPU's values to the bit before rounding to units.
+  std::vector<double> edges(static_cast<size_t>(size) + 1);
+  for (int k = 0; k <= size; ++k) edges[k] = 2.0 * k / size - 1.0;
+  const int half = (size + 1) / 2;
+  std::vector<double> fractions;
+  fractions.reserve(static_cast<size_t>(half) * (half + 1) / 2);
+  for (int b = 0; b < half; ++b)
+    for (int a = 0; a <= b; ++a)
+      fractions.push_back((area_antiderivative(edges[a + 1], edges[b + 1]) - area_antiderivative(edges[a], edges[b + 1]) -
+                           area_antiderivative(edges[a + 1], edges[b]) + area_antiderivative(edges[a], edges[b])) /
+                          (4.0 * M_PI));
+  TexelWeightUnits units;
+  units.size = size;
+  // The largest texel is at the face's centre, in the octant: the same double as the CPU's.
+  const double largest = *std::max_element(fractions.begin(), fractions.end());
+  units.largest_fraction = largest;
+  units.scale_bits = static_cast<int>(std::floor(31.0 - std::log2(largest)));
+  units.octant.resize(fractions.size());
+  for (size_t k = 0; k < fractions.size(); ++k)
+    units.octant[k] = static_cast<std::uint32_t>(std::llround(std::ldexp(fractions[k], units.scale_bits)));
+  return units;
+}
+
+double reduction_gpu_bytes(int size) {
+  const double half = (size + 1) / 2;
+  const double table = half * (half + 1) / 2 * 4.0;
+  const int strip = reduction_strip(size);
+  const double records = 6.0 * size * ((size + strip - 1) / strip) + 64;  // + stage 1's 64
+  return 2 * table + calibration_member_capacity * 8.0 + 2 * bins * 8.0 + records * 6 * 8.0;
+}
+
+GpuTexelWeights::GpuTexelWeights(int size) : units_(texel_weight_units(size)) {
+  glCreateBuffers(1, &buffer_);
+  glNamedBufferStorage(buffer_, static_cast<GLsizeiptr>(units_.octant.size() * 4), units_.octant.data(), 0);
+}
+
+GpuTexelWeights::~GpuTexelWeights() { glDeleteBuffers(1, &buffer_); }
+
+void GpuTexelWeights::bind() const { glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 5, buffer_); }
+
+GpuCalibration::GpuCalibration(int size) : size_(size), weights_(size) {}
+
+CoverageCalibration GpuCalibration::run(const gpu::Texture& density, double target) const {
+  if (density.width() != size_) throw std::invalid_argument("GpuCalibration: the density map is not of its size");
+  const TexelWeightUnits& units = weights_.units();
+  CoverageCalibration result;
+  WordBuffer scalars(8), histogram(2 * bins), members(2 * static_cast<size_t>(calibration_member_capacity));
+  scalars.set(0, 0xFFFFFFFFu);
+  scalars.bind(1);
+  histogram.bind(2);
+  members.bind(3);
+  weights_.bind();
+  density.bind_image(0, GL_READ_ONLY);
+  const int strip = reduction_strip(size_);
+  program_.set("u_strip", strip);
+  auto dispatch = [&](int stage) {
+    program_.set("u_stage", stage);
+    program_.dispatch_covering(size_, (size_ + strip - 1) / strip, 6);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  };
+  dispatch(0);
+  const std::vector<GLuint> range = scalars.read(2);
+  result.density_min = from_sortable(range[0]);
+  result.density_max = from_sortable(range[1]);
+  result.max_texel_fraction = units.largest_fraction;
+  // Bin scales in float, 0 where they would not be finite (all densities equal or nearly).
+  const auto finite_scale = [](double scale) {
+    return std::isfinite(scale) && scale < std::numeric_limits<float>::max() ? static_cast<float>(scale) : 0.0f;
+  };
+  const double span = static_cast<double>(result.density_max) - result.density_min;
+  const float scale = span > 0.0 ? finite_scale(bins / span) : 0.0f;
+  program_.set("u_density_min", result.density_min);
+  program_.set("u_scale", scale);
+  program_.set("u_coarse_low", result.density_min);
+  program_.set("u_fine_scale", 0.0f);
+
+  // Walks down from the top bin while the cloudy fraction stays below the target, as the CPU.
+  std::uint64_t above = 0;
+  auto crossing = [&](const std::vector<std::uint64_t>& weight) {
+    int bin = bins - 1;
+    while (bin > 0 && units.fraction(above + weight[bin]) < target) above += weight[bin--];
+    return bin;
+  };
+  dispatch(1);
+  const int coarse = crossing(sums64(histogram.read(2 * bins)));
+  program_.set("u_coarse", coarse);
+  if (scale > 0.0f) {
+    program_.set("u_coarse_low", static_cast<float>(result.density_min + coarse / static_cast<double>(scale)));
+    program_.set("u_fine_scale", finite_scale(static_cast<double>(scale) * bins));
+  }
+  // The texels of the crossing bin, listed: the coarse bin's (as the CPU sorts them), or where
+  // it holds too many, the fine bin's within it.
+  dispatch(2);
+  int fine = 0;  // the listed texels are those of bins at or above (coarse, fine)
+  std::uint64_t listed_weight = 0;
+  GLuint count = scalars.read(5)[4];
+  if (count > static_cast<GLuint>(calibration_member_capacity)) {
+    histogram.clear();
+    dispatch(3);
+    const std::vector<std::uint64_t> fine_weight = sums64(histogram.read(2 * bins));
+    fine = crossing(fine_weight);
+    listed_weight = fine_weight[fine];
+    program_.set("u_fine", fine);
+    scalars.set(3, 0);
+    scalars.set(4, 0);
+    dispatch(4);
+    count = scalars.read(5)[4];
+  }
+  // The largest density below the listed bin: the threshold when all of it is cloudy.
+  auto largest_below = [&] {
+    program_.set("u_fine", fine);
+    dispatch(5);
+    const GLuint bits = scalars.read(3)[2];
+    return bits ? from_sortable(bits) : std::nextafter(result.density_min, -INFINITY);
+  };
+
+  if (count <= static_cast<GLuint>(calibration_member_capacity)) {
+    const std::vector<GLuint> words = members.read(2 * static_cast<size_t>(count));
+    std::vector<std::pair<float, GLuint>> list(count);
+    for (GLuint k = 0; k < count; ++k) {
+      std::memcpy(&list[k].first, &words[2 * k], sizeof(float));
+      list[k].second = words[2 * k + 1];
+    }
+    std::sort(list.begin(), list.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+    // The cut nearest the target, the first of equals (as the CPU).
+    double best_error = std::abs(units.fraction(above) - target);
+    size_t best_count = 0;
+    std::uint64_t cumulative = above;
+    for (size_t n = 1; n <= list.size(); ++n) {
+      cumulative += list[n - 1].second;
+      const double error = std::abs(units.fraction(cumulative) - target);
+      if (error < best_error) {
+        best_error = error;
+        best_count = n;
+      }
+    }
+    result.threshold = best_count < list.size() ? list[best_count].first : largest_below();
+    std::uint64_t achieved = above;
+    for (const auto& m : list)
+      if (m.first > result.threshold) achieved += m.second;
+    result.achieved_fraction = units.fraction(achieved);
+  } else {
+    // Too many texels in one fine bin to list: the bin is cloudy or clear as a whole, whichever
+    // is nearer the target. (The CPU may cut inside a run of equal densities, which then all
+    // count as clear; this is never further from the target.)
+    const double none = units.fraction(above), all = units.fraction(above + listed_weight);
+    const bool take_all = std::abs(all - target) < std::abs(none - target);
+    result.threshold = take_all ? largest_below() : from_sortable(scalars.read(4)[3]);
+    result.achieved_fraction = take_all ? all : none;
+  }
+  return result;
+}
+
+GpuDiagnosis::GpuDiagnosis(int size) : size_(size), weights_(size) {}
+
+WarpDiagnostics GpuDiagnosis::run(const gpu::Texture& curl, const gpu::Texture& warp, Integrator integrator,
+                                  double step) const {
+  if (curl.width() != size_ || warp.width() != size_)
+    throw std::invalid_argument("GpuDiagnosis: the maps are not of its size");
+  constexpr int figures = 6, group = 64;
+  const int strip = reduction_strip(size_);
+  const int strips = (size_ + strip - 1) / strip;
+  const int partial_count = strips * size_ * 6;
+  // Stage 1 writes its 64 intermediate records after the partials.
+  WordBuffer counters(8), partials(2 * static_cast<size_t>(figures) * (partial_count + group)), totals(2 * figures);
+  counters.bind(1);
+  partials.bind(2);
+  totals.bind(3);
+  weights_.bind();
+  curl.bind_image(0, GL_READ_ONLY);
+  warp.bind_image(1, GL_READ_ONLY);
+  const double limit = stability_limit(integrator);
+  glProgramUniform1d(program_.id(), glGetUniformLocation(program_.id(), "u_step"), step);
+  glProgramUniform1d(program_.id(), glGetUniformLocation(program_.id(), "u_limit"), limit);
+  program_.set("u_partials", partial_count);
+  program_.set("u_strip", strip);
+  program_.set("u_stage", 0);
+  program_.dispatch_covering(size_, strips, 6);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  program_.set("u_stage", 1);
+  program_.use();
+  glDispatchCompute(1, 1, 1);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+
+  const std::vector<GLuint> words = counters.read(7);
+  const std::vector<GLuint> total_words = totals.read(2 * figures);
+  double total[figures];
+  std::memcpy(total, total_words.data(), sizeof total);
+  const TexelWeightUnits& units = weights_.units();
+  const auto units64 = [&](int slot) { return words[2 * slot] | (static_cast<std::uint64_t>(words[2 * slot + 1]) << 32); };
+
+  WarpDiagnostics d;
+  d.adaptive = integrator == Integrator::adaptive;
+  d.stiffness.step = step;
+  d.stiffness.max_rate = total[0];
+  d.stiffness.stiffness = step * total[0];
+  d.stiffness.limit = limit;
+  d.stiffness.beyond_fraction = units.fraction(units64(1));
+  const bool measured = total[4] > 0.0;  // size 1: no neighbours, nothing measured
+  d.folding.folded_fraction = units.fraction(units64(0));
+  d.folding.jacobian_min = measured ? total[1] : 1.0;
+  d.folding.jacobian_max = measured ? total[2] : 1.0;
+  d.folding.area_error_rms = measured ? std::sqrt(total[3] / total[4]) : 0.0;
+  const double texels = 6.0 * size_ * size_;
+  d.substeps.mean_attempts = total[5] / texels;
+  d.substeps.max_attempts = from_sortable(words[6]);
+  d.substeps.capped_texels = words[4];
+  add_warp_warnings(d, integrator, step, words[5]);
+  return d;
+}
+
+}  // namespace nephele::cover

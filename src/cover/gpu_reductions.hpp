@@ -1,0 +1,95 @@
+#pragma once
+// Reductions of the cover's cube maps on the GPU that leave only scalars to read back: the
+// coverage threshold (a solid-angle weighted two-level histogram) and the warp diagnostics.
+// The CPU versions (coverage_threshold.hpp, stability.hpp) are their reference; the tests
+// compare the two. docs/performance.md gives the algorithm and its bounds.
+#include <cstdint>
+#include <vector>
+
+#include "cover/coverage_threshold.hpp"
+#include "cover/integrators.hpp"
+#include "cover/stability.hpp"
+#include "gpu/compute_program.hpp"
+#include "gpu/textures.hpp"
+
+namespace nephele::cover {
+
+// Texel solid angles of one face as integers: units of 2^-scale_bits of the sphere, one entry
+// per texel of the octant 0 <= a <= b < ceil(N/2) (index b (b + 1)/2 + a; the other texels
+// by the face's symmetries). The scale puts the largest texel below 2^31 units, so a sum over
+// 6 N^2 texels (N <= 16384) stays below 2^63.
+struct TexelWeightUnits {
+  int size = 0;
+  int scale_bits = 0;
+  std::vector<std::uint32_t> octant;
+  double largest_fraction = 0.0;  // the largest texel's share of the sphere (exact, in double)
+  double fraction(std::uint64_t units) const;  // units as a fraction of the sphere
+  // Largest error of a sum over the whole cube map against the exact solid angles: each
+  // entry is rounded to the nearest unit, half a unit per texel.
+  double sum_error_bound() const;
+};
+TexelWeightUnits texel_weight_units(int size);
+
+// The weight table uploaded once and bound to the binding texel_weights.glsl reads.
+class GpuTexelWeights {
+ public:
+  explicit GpuTexelWeights(int size);
+  ~GpuTexelWeights();
+  GpuTexelWeights(const GpuTexelWeights&) = delete;
+  GpuTexelWeights& operator=(const GpuTexelWeights&) = delete;
+  const TexelWeightUnits& units() const { return units_; }
+  void bind() const;
+
+ private:
+  TexelWeightUnits units_;
+  unsigned buffer_ = 0;
+};
+
+// Bytes of GPU memory the calibration and the diagnosis allocate for a cube face size: two
+// weight tables, the listed texels, the histograms and the diagnosis's partial records.
+double reduction_gpu_bytes(int size);
+
+// Texels listed at most by the GPU calibration; a crossing bin with more texels is refined
+// into 4096 fine bins, and a crossing fine bin with more (flat fields) is cut at its edges.
+constexpr int calibration_member_capacity = 1 << 16;
+
+// The threshold of calibrate_coverage computed on the GPU from `density` (an R32F cube map).
+// Stages: the density range; a solid-angle weighted histogram of 4096 bins (64-bit sums of
+// texel weight units) that finds the bin where the cloudy fraction crosses the target; the
+// texels of that bin listed, sorted and cut on the host as the CPU does (a second histogram
+// level of 4096 fine bins first where the bin holds more than calibration_member_capacity).
+// Read back: two words, one or two histograms of 4096 sums, the listed texels.
+// Bound: the threshold is the CPU's, and the cloudy fraction within
+// TexelWeightUnits::sum_error_bound() of the CPU's, unless two cuts are that near to being
+// equally far from the target (either may be taken) or the crossing fine bin holds more than
+// calibration_member_capacity texels; then all or none of that bin is cloudy, whichever is
+// nearer the target, which is never further from it than the CPU's cut (whose fraction error
+// is at most one texel's share of the sphere, or the bin's share for equal densities).
+class GpuCalibration {
+ public:
+  explicit GpuCalibration(int size);
+  CoverageCalibration run(const gpu::Texture& density, double target) const;
+  const GpuTexelWeights& weights() const { return weights_; }
+
+ private:
+  int size_;
+  GpuTexelWeights weights_;
+  gpu::ComputeProgram program_{"cover/coverage_histogram.comp"};
+};
+
+// cover::diagnose_warp on the GPU: the curl and warp maps stay there, 7 integers and 6 doubles
+// come back. The same figures as the CPU up to the texel directions, which the GPU rounds
+// to float on its own (a few units in the last place; see tests/test_gpu_reductions.cpp for
+// the resulting tolerances), and fractions summed in texel weight units.
+class GpuDiagnosis {
+ public:
+  explicit GpuDiagnosis(int size);
+  WarpDiagnostics run(const gpu::Texture& curl, const gpu::Texture& warp, Integrator integrator, double step) const;
+
+ private:
+  int size_;
+  GpuTexelWeights weights_;
+  gpu::ComputeProgram program_{"cover/warp_diagnostics.comp"};
+};
+
+}  // namespace nephele::cover
