@@ -111,53 +111,49 @@ NoiseRequest parse_noise_request(const std::vector<std::string>& arguments, bool
     throw UsageError("--bits: " + std::to_string(request.png_bits) + " is not allowed (allowed: 8 or 16)");
   if (request.out.empty()) throw UsageError("--out: an output file is required (NAME.png, NAME.exr or NAME.raw)");
 
-  try {
-    if (!preset.empty()) {
-      for (const params::Parameter* o : {&n::type, &n::width, &n::height, &n::depth, &n::size, &n::cells, &n::octaves,
-                                         &n::lacunarity, &n::gain, &n::worley_cells, &n::worley_octaves, &n::channels,
-                                         &n::r, &n::g, &n::b, &n::a})
-        if (options.given(*o))
-          throw UsageError(std::string("--preset fixes the texture's layout; ") + o->option() +
-                           " cannot be combined with it (allowed with --preset: --seed, --out, --bits, --stretch, --verbose)");
-      const std::uint32_t seed = request.spec.seed;
-      request.spec = noise::preset(preset, seed);
-      request.preset = preset;
-    } else {
-      if (options.given(n::size)) {
-        for (const params::Parameter* o : {&n::width, &n::height, &n::depth})
-          if (options.given(*o)) throw UsageError(std::string("--size and ") + o->option() + " exclude each other");
-        width = height = depth = size;
-      }
-      request.spec.width = width;
-      request.spec.height = height;
-      request.spec.depth = depth;
-      base.type = noise::parse_type(type);
-      base.worley_cells = worley_cells > 0 ? worley_cells : base.cells;
-      static const char* const layouts[] = {"r", "rg", "rgb", "rgba"};
-      int channels = 0;
-      for (int k = 0; k < 4; ++k)
-        if (layout == layouts[k]) channels = k + 1;
-      if (channels == 0) throw UsageError("--channels: '" + layout + "' is not allowed (allowed: r, rg, rgb, rgba)");
-      request.spec.channels.clear();
-      for (int k = 0; k < 4; ++k) {
-        if (k >= channels) {
-          if (!channel_text[k].empty())
-            throw UsageError(std::string(letters[k]) + ": channel " + (letters[k] + 2) + " is not in --channels " + layout);
-          continue;
-        }
-        noise::ChannelSpec c = base;  // one detail level per channel
-        // Doubling stops at one cell per texel, so that every size works with the defaults.
-        for (int j = 0; j < k && 2 * c.cells <= width; ++j) c.cells *= 2;
-        for (int j = 0; j < k && 2 * c.worley_cells <= width; ++j) c.worley_cells *= 2;
-        if (!channel_text[k].empty()) c = parse_channel(letters[k], channel_text[k], c);
-        request.spec.channels.push_back(c);
-      }
+  if (!preset.empty()) {
+    for (const params::Parameter* o : {&n::type, &n::width, &n::height, &n::depth, &n::size, &n::cells, &n::octaves,
+                                       &n::lacunarity, &n::gain, &n::worley_cells, &n::worley_octaves, &n::channels,
+                                       &n::r, &n::g, &n::b, &n::a})
+      if (options.given(*o))
+        throw UsageError(std::string("--preset fixes the texture's layout; ") + o->option() +
+                         " cannot be combined with it (allowed with --preset: --seed, --out, --bits, --stretch, --verbose)");
+    const std::uint32_t seed = request.spec.seed;
+    request.spec = noise::preset(preset, seed);
+    request.preset = preset;
+  } else {
+    if (options.given(n::size)) {
+      for (const params::Parameter* o : {&n::width, &n::height, &n::depth})
+        if (options.given(*o)) throw UsageError(std::string("--size and ") + o->option() + " exclude each other");
+      width = height = depth = size;
     }
-    noise::validate(request.spec);
-    io::format_for(request.out);
-  } catch (const noise::SpecError& e) {
-    throw UsageError(e.what());
+    request.spec.width = width;
+    request.spec.height = height;
+    request.spec.depth = depth;
+    base.type = noise::parse_type(type);
+    base.worley_cells = worley_cells > 0 ? worley_cells : base.cells;
+    static const char* const layouts[] = {"r", "rg", "rgb", "rgba"};
+    int channels = 0;
+    for (int k = 0; k < 4; ++k)
+      if (layout == layouts[k]) channels = k + 1;
+    if (channels == 0) throw UsageError("--channels: '" + layout + "' is not allowed (allowed: r, rg, rgb, rgba)");
+    request.spec.channels.clear();
+    for (int k = 0; k < 4; ++k) {
+      if (k >= channels) {
+        if (!channel_text[k].empty())
+          throw UsageError(std::string(letters[k]) + ": channel " + (letters[k] + 2) + " is not in --channels " + layout);
+        continue;
+      }
+      noise::ChannelSpec c = base;  // one detail level per channel
+      // Doubling stops at one cell per texel, so that every size works with the defaults.
+      for (int j = 0; j < k && 2 * c.cells <= width; ++j) c.cells *= 2;
+      for (int j = 0; j < k && 2 * c.worley_cells <= width; ++j) c.worley_cells *= 2;
+      if (!channel_text[k].empty()) c = parse_channel(letters[k], channel_text[k], c);
+      request.spec.channels.push_back(c);
+    }
   }
+  noise::validate(request.spec);
+  io::format_for(request.out);
   const std::filesystem::path out(request.out);
   const std::filesystem::path directory = out.has_parent_path() ? out.parent_path() : std::filesystem::path(".");
   if (!std::filesystem::is_directory(directory))

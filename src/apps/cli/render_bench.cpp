@@ -33,15 +33,11 @@ int bench_render(const std::vector<std::string>& arguments) {
     std::cout << options.help();
     return exit_ok;
   }
-  try {
-    regional::parse_size(size, scene.width, scene.height, "--size");
-    regional::Scene check = scene;
-    regional::parse_size(sweep_size, check.width, check.height, "--sweep-size");
-    regional::validate_scene(scene, "--size");
-    regional::validate_scene(check, "--sweep-size");
-  } catch (const regional::SceneError& e) {
-    throw UsageError(e.what());
-  }
+  regional::parse_size(size, scene.width, scene.height, "--size");
+  regional::Scene check = scene;
+  regional::parse_size(sweep_size, check.width, check.height, "--sweep-size");
+  regional::validate_scene(scene, "--size");
+  regional::validate_scene(check, "--sweep-size");
   gpu::EglContext context;
   std::printf("device: %s (%s)\n", context.info().renderer.c_str(), context.info().version.c_str());
   std::printf("scene: %s, %s, %dx%d, %d view x %d light x %d sky steps\n", scene.view.c_str(), scene.time.c_str(),

@@ -77,51 +77,47 @@ int run_render(const std::vector<std::string>& arguments) {
   }
   // The keys set by options: their errors name the option the user typed, not a scene key.
   regional::KeyOptions typed;
-  try {
-    if (!scene_file.empty()) scene = io::read_scene_file(scene_file);
-    if (!view.empty()) {
-      scene.view = view;
-      scene.latitude_deg.reset();
-      typed["view"] = "--view";
-    }
-    if (!at.empty()) {
-      parse_position(at, scene);
-      typed["at"] = "--at";
-    }
-    // Options override the scene file only where they were given.
-    if (options.given(s::heading)) {
-      scene.heading_deg = heading;
-      typed["heading"] = "--heading";
-    }
-    if (options.given(s::pitch)) scene.pitch_deg = pitch;
-    if (options.given(s::fov)) scene.fov_deg = fov;
-    if (options.given(s::exposure)) scene.exposure = exposure;
-    if (options.given(s::view_steps)) scene.view_steps = view_steps;
-    if (options.given(s::light_steps)) scene.light_steps = light_steps;
-    if (options.given(s::seed)) scene.seed = seed;
-    if (!time.empty()) {
-      scene.time = time;
-      typed["time"] = "--time";
-    }
-    if (panorama) {
-      scene.panorama = true;
-      if (size.empty()) {
-        scene.width = 2048, scene.height = 1024;
-        typed["size"] = "--panorama";
-      }
-    }
-    if (!size.empty()) {
-      regional::parse_size(size, scene.width, scene.height, "--size");
-      typed["size"] = "--size";
-    }
-    if (!weather.empty()) {
-      scene.weather = weather;
-      typed["weather"] = "--weather";
-    }
-    regional::validate_scene(scene, scene_file.empty() ? "flags" : scene_file, typed);
-  } catch (const regional::SceneError& e) {
-    throw UsageError(e.what());
+  if (!scene_file.empty()) scene = io::read_scene_file(scene_file);
+  if (!view.empty()) {
+    scene.view = view;
+    scene.latitude_deg.reset();
+    typed["view"] = "--view";
   }
+  if (!at.empty()) {
+    parse_position(at, scene);
+    typed["at"] = "--at";
+  }
+  // Options override the scene file only where they were given.
+  if (options.given(s::heading)) {
+    scene.heading_deg = heading;
+    typed["heading"] = "--heading";
+  }
+  if (options.given(s::pitch)) scene.pitch_deg = pitch;
+  if (options.given(s::fov)) scene.fov_deg = fov;
+  if (options.given(s::exposure)) scene.exposure = exposure;
+  if (options.given(s::view_steps)) scene.view_steps = view_steps;
+  if (options.given(s::light_steps)) scene.light_steps = light_steps;
+  if (options.given(s::seed)) scene.seed = seed;
+  if (!time.empty()) {
+    scene.time = time;
+    typed["time"] = "--time";
+  }
+  if (panorama) {
+    scene.panorama = true;
+    if (size.empty()) {
+      scene.width = 2048, scene.height = 1024;
+      typed["size"] = "--panorama";
+    }
+  }
+  if (!size.empty()) {
+    regional::parse_size(size, scene.width, scene.height, "--size");
+    typed["size"] = "--size";
+  }
+  if (!weather.empty()) {
+    scene.weather = weather;
+    typed["weather"] = "--weather";
+  }
+  regional::validate_scene(scene, scene_file.empty() ? "flags" : scene_file, typed);
 
   // The outputs are names inside `directory`; with --scene and --out DIR the set owns DIR, else
   // it is only its own files in a directory shared with others.

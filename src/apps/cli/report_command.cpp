@@ -81,15 +81,11 @@ int run_report(const std::vector<std::string>& arguments) {
   studies::RenderSweepOptions render_sweep =
       quick ? studies::RenderSweepOptions::quick() : studies::RenderSweepOptions::full();
   const regional::Scene render_scene;  // the built-in default: Gurten, global cover as the weather
-  try {
-    if (!render_size.empty()) regional::parse_size(render_size, render_sweep.width, render_sweep.height, "--render-size");
-    regional::Scene check = render_scene;
-    check.width = render_sweep.width;
-    check.height = render_sweep.height;
-    regional::validate_scene(check, "--render-size", {{"size", "--render-size"}});
-  } catch (const regional::SceneError& e) {
-    throw UsageError(e.what());
-  }
+  if (!render_size.empty()) regional::parse_size(render_size, render_sweep.width, render_sweep.height, "--render-size");
+  regional::Scene check = render_scene;
+  check.width = render_sweep.width;
+  check.height = render_sweep.height;
+  regional::validate_scene(check, "--render-size", {{"size", "--render-size"}});
   const std::filesystem::path directory(out);
   if (std::filesystem::exists(directory) && !std::filesystem::is_directory(directory))
     throw UsageError("--out: '" + out + "' exists and is not a directory");
