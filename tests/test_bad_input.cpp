@@ -13,7 +13,8 @@
 
 #include "io/scene_files.hpp"
 #include "io/weather_files.hpp"
-#include "apps/cli/device_limits.hpp"
+#include "cover/cover_limits.hpp"
+#include "render/render_limits.hpp"
 #include "apps/cli/options.hpp"
 #include "cli_support.hpp"
 #include "core/input_file.hpp"
@@ -22,6 +23,7 @@
 #include "core/memory.hpp"
 #include "cover/equirect.hpp"
 #include "gl_support.hpp"
+#include "gpu/limits.hpp"
 #include "noise/noise_spec.hpp"
 #include "regional/scene.hpp"
 #include "regional/weather.hpp"
@@ -159,9 +161,9 @@ TEST_CASE("render sizes beyond the driver's image limit are refused naming the o
   gpu::EglContext& context = test::test_context();
   GLint max_side = 0;
   glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_side);
-  CHECK_THAT(error_of<cli::UsageError>([&] { cli::check_render_fits(context, max_side + 1, 1, "--size"); }),
+  CHECK_THAT(error_of<core::InputError>([&] { render::check_render_fits(context, max_side + 1, 1, "--size"); }),
              Catch::StartsWith("--size: "));
-  CHECK_NOTHROW(cli::check_render_fits(context, 64, 32, "--size"));
+  CHECK_NOTHROW(render::check_render_fits(context, 64, 32, "--size"));
   if (context.is_software()) {
     // 16384^2 RGBA32F is 4 GiB, past llvmpipe's largest texture: refused, not a failure (exit 1).
     TemporaryDirectory out;
@@ -270,4 +272,17 @@ TEST_CASE("bench --sizes takes strict integers only", "[bad-input][cli]") {
     CHECK(r.exit_code == 2);
     CHECK_THAT(r.output, Catch::StartsWith("nephele: --sizes: "));
   }
+}
+
+TEST_CASE("a noise texture over the driver's 3D limit is refused naming the option the user typed", "[bad-input][cli]") {
+  test::test_context();
+  const int max_3d = gpu::max_3d_texture_size();
+  if (max_3d >= 65536) return;  // no size the options allow exceeds this driver's limit
+  const std::string size = std::to_string(max_3d * 2);
+  const auto by_size = test::run("noise --size " + size + " --cells " + size + " --out /tmp/nephele_never.raw");
+  CHECK(by_size.exit_code == 2);
+  CHECK_THAT(by_size.output, Catch::StartsWith("nephele: --size: " + size));
+  const auto by_width = test::run("noise --width " + size + " --cells " + size + " --out /tmp/nephele_never.raw");
+  CHECK(by_width.exit_code == 2);
+  CHECK_THAT(by_width.output, Catch::StartsWith("nephele: --width: " + size));
 }

@@ -9,7 +9,8 @@
 #include "params/table.hpp"
 #include "apps/cli/noise_options.hpp"
 #include "apps/cli/cover_options.hpp"
-#include "apps/cli/device_limits.hpp"
+#include "cover/cover_limits.hpp"
+#include "render/render_limits.hpp"
 #include "core/integer_text.hpp"
 #include "cover/global_cover.hpp"
 #include "cover/equirect.hpp"
@@ -79,7 +80,7 @@ int bench_cover(const std::vector<std::string>& arguments) {
   validate_cover_parameters(parameters);
   const std::vector<int> sizes = parse_sizes(sizes_text);
   gpu::EglContext context;
-  for (int s : sizes) check_cover_fits(context, s);
+  for (int s : sizes) cover::check_cover_fits(context, s);
   std::printf("device: %s (%s)\n", context.info().renderer.c_str(), context.info().version.c_str());
   std::printf("K = %d steps, potential %d octaves, density %d octaves; median of %d runs\n", parameters.iterations,
               parameters.potential.octaves, parameters.density.octaves, repeat);

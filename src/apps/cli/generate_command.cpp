@@ -6,7 +6,8 @@
 #include "core/progress.hpp"
 #include "params/table.hpp"
 #include "apps/cli/cover_options.hpp"
-#include "apps/cli/device_limits.hpp"
+#include "cover/cover_limits.hpp"
+#include "render/render_limits.hpp"
 #include "io/cover_files.hpp"
 #include "params/values.hpp"
 
@@ -51,7 +52,7 @@ int run_generate(const std::vector<std::string>& arguments) {
   if (verbose)
     std::cerr << "renderer: " << context.info().renderer << " (" << context.info().version << ", EGL "
               << context.info().platform << ")\n";
-  check_cover_fits(context, parameters.size);
+  cover::check_cover_fits(context, parameters.size);
 
   std::error_code error;
   std::filesystem::create_directories(directory, error);

@@ -13,6 +13,7 @@
 #include "apps/cli/options.hpp"
 #include "core/memory.hpp"
 #include "core/progress.hpp"
+#include "noise/noise_limits.hpp"
 #include "gpu/egl_context.hpp"
 #include "io/noise_files.hpp"
 #include "noise/noise_texture.hpp"
@@ -123,6 +124,7 @@ NoiseRequest parse_noise_request(const std::vector<std::string>& arguments, bool
     request.preset = preset;
   } else {
     if (options.given(n::size)) {
+      request.size_given = true;
       for (const params::Parameter* o : {&n::width, &n::height, &n::depth})
         if (options.given(*o)) throw UsageError(std::string("--size and ") + o->option() + " exclude each other");
       width = height = depth = size;
@@ -162,28 +164,6 @@ NoiseRequest parse_noise_request(const std::vector<std::string>& arguments, bool
   return request;
 }
 
-void check_noise_fits(const noise::TextureSpec& spec, const gpu::EglContext& context) {
-  GLint max_3d = 0;
-  glGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &max_3d);
-  const std::pair<const char*, int> sizes[] = {{"--width", spec.width}, {"--height", spec.height}, {"--depth", spec.depth}};
-  for (const auto& [option, value] : sizes)
-    if (value > max_3d)
-      throw UsageError(std::string(option) + ": " + std::to_string(value) + " exceeds this driver's 3D texture limit (" +
-                       context.info().renderer + "); allowed range 1 to " + std::to_string(max_3d));
-  const double available = core::host_memory_available_bytes();
-  const double needed = noise::host_bytes(spec);
-  if (available > 0 && needed > available) {
-    std::ostringstream m;
-    m << "--width, --height, --depth: " << spec.width << " x " << spec.height << " x " << spec.depth << " with "
-      << spec.channels.size() << " channels needs about " << std::ceil(needed / 1048576.0) << " MiB but "
-      << std::floor(available / 1048576.0) << " MiB of memory are available; allowed at most about "
-      << std::floor((available - static_cast<double>(noise::TextureGenerator::slab_budget_bytes)) / 12.0 /
-                    static_cast<double>(spec.channels.size()))
-      << " texels in all";
-    throw UsageError(m.str());
-  }
-}
-
 int run_noise(const std::vector<std::string>& arguments) {
   bool help = false;
   NoiseRequest request = parse_noise_request(arguments, &help);
@@ -194,7 +174,7 @@ int run_noise(const std::vector<std::string>& arguments) {
   gpu::EglContext context;
   if (request.verbose)
     std::cerr << "renderer: " << context.info().renderer << " (" << context.info().version << ")\n";
-  check_noise_fits(request.spec, context);
+  noise::check_noise_fits(request.spec, context, request.size_given ? "--size" : nullptr);
   core::Progress progress("noise", 2, core::Progress::for_stderr(request.quiet));
   progress.update(0, "generating");
   const auto start = std::chrono::steady_clock::now();

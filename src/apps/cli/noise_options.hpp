@@ -15,6 +15,7 @@ struct NoiseRequest {
   int png_bits = 8;
   bool verbose = false;
   bool quiet = false;    // no progress report
+  bool size_given = false;  // --size rather than --width, --height, --depth
   bool stretch = false;  // map each channel's range onto [0, 1]
   std::string help;  // the --help text when *help_shown
 };
@@ -23,8 +24,6 @@ struct NoiseRequest {
 // option and its allowed values.
 NoiseRequest parse_noise_request(const std::vector<std::string>& arguments, bool* help_shown = nullptr);
 
-// The driver's 3D texture limit and the host memory; throws UsageError.
-void check_noise_fits(const noise::TextureSpec& spec, const gpu::EglContext& context);
 
 // nephele bench noise.
 int bench_noise(const std::vector<std::string>& arguments);

@@ -9,7 +9,8 @@
 #include "gpu/pass_timer.hpp"
 #include "io/noise_cache.hpp"
 #include "render/cloud_renderer.hpp"
-#include "apps/cli/device_limits.hpp"
+#include "cover/cover_limits.hpp"
+#include "render/render_limits.hpp"
 #include "apps/cli/options.hpp"
 #include "core/progress.hpp"
 #include "params/table.hpp"
@@ -151,7 +152,7 @@ int run_render(const std::vector<std::string>& arguments) {
   const std::string size_label = typed.count("size") ? typed.at("size")
                                  : scene_file.empty() ? std::string("--size")  // the default; --size changes it
                                                       : scene_file + ": 'size'";
-  check_render_fits(context, scene.width, scene.height, size_label);
+  render::check_render_fits(context, scene.width, scene.height, size_label);
   // Weather (with the global cover when no files are given), the march, the files.
   core::Progress progress("render", 3, core::Progress::for_stderr(quiet));
   progress.update(0, "weather");

@@ -8,7 +8,8 @@
 #include "core/progress.hpp"
 #include "params/table.hpp"
 #include "apps/cli/cover_options.hpp"
-#include "apps/cli/device_limits.hpp"
+#include "cover/cover_limits.hpp"
+#include "render/render_limits.hpp"
 #include "io/atomic_output.hpp"
 #include "gpu/egl_context.hpp"
 #include "studies/work_precision.hpp"
@@ -91,8 +92,8 @@ int run_report(const std::vector<std::string>& arguments) {
     throw UsageError("--out: '" + out + "' exists and is not a directory");
 
   gpu::EglContext context;
-  for (int size : sweep.sizes) check_cover_fits(context, size);
-  if (!no_render) check_render_fits(context, render_sweep.width, render_sweep.height, "--render-size");
+  for (int size : sweep.sizes) cover::check_cover_fits(context, size);
+  if (!no_render) render::check_render_fits(context, render_sweep.width, render_sweep.height, "--render-size");
   std::error_code error;
   std::filesystem::create_directories(directory, error);
   if (error) throw UsageError("--out: cannot create directory '" + out + "': " + error.message());
