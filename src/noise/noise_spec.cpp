@@ -172,4 +172,11 @@ TextureSpec preset(const std::string& name, std::uint32_t seed) {
   return spec;
 }
 
+ChannelSpec default_channel(const ChannelSpec& base, int k, int width) {
+  ChannelSpec c = base;
+  for (int j = 0; j < k && 2 * c.cells <= width; ++j) c.cells *= 2;
+  for (int j = 0; j < k && 2 * c.worley_cells <= width; ++j) c.worley_cells *= 2;
+  return c;
+}
+
 }  // namespace nephele::noise

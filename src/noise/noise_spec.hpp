@@ -55,6 +55,11 @@ glsl::NoiseChannel channel_params(const TextureSpec& spec, int channel);
 // "shape": 128^3 RGBA (R Perlin-Worley, G B A inverted Worley fBm at 4, 8, 16 cells);
 // "erosion": 32^3 RGB inverted Worley fBm at 2, 4, 8 cells (docs/noise.md).
 TextureSpec preset(const std::string& name, std::uint32_t seed);
+
+// The default settings of channel k (0 = r .. 3 = a) from the settings of channel r: one more
+// detail level per channel, cells (and perlin-worley's Worley cells) doubled k times, stopping
+// at one cell per texel so that every width works with the defaults (docs/noise.md).
+ChannelSpec default_channel(const ChannelSpec& base, int k, int width);
 std::vector<std::string> preset_names();
 
 }  // namespace nephele::noise

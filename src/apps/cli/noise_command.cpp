@@ -146,10 +146,7 @@ NoiseRequest parse_noise_request(const std::vector<std::string>& arguments, bool
           throw UsageError(std::string(letters[k]) + ": channel " + (letters[k] + 2) + " is not in --channels " + layout);
         continue;
       }
-      noise::ChannelSpec c = base;  // one detail level per channel
-      // Doubling stops at one cell per texel, so that every size works with the defaults.
-      for (int j = 0; j < k && 2 * c.cells <= width; ++j) c.cells *= 2;
-      for (int j = 0; j < k && 2 * c.worley_cells <= width; ++j) c.worley_cells *= 2;
+      noise::ChannelSpec c = noise::default_channel(base, k, width);
       if (!channel_text[k].empty()) c = parse_channel(letters[k], channel_text[k], c);
       request.spec.channels.push_back(c);
     }
