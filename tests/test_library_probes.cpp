@@ -282,9 +282,10 @@ TEST_CASE("cover_density.glsl on the GPU agrees with the CPU", "[probe]") {
 TEST_CASE("cloud_density.glsl on the GPU agrees with the CPU", "[probe]") {
   Random r(15);
   std::vector<Case> cases;
-  for (int f = 0; f < 10; ++f)
+  for (int f = 0; f < 11; ++f)
     for (int k = 0; k < 12; ++k) {
       vec4 a(r(0.0f, 1.0f), r(0.0f, 1.0f), r(0.0f, 1.0f), 0.0f);
+      if (f == 10) a = vec4(float(k), 12.0f, r(100.0f, 4000.0f), 0.0f);  // light_sample(i, n, length)
       if (f == 0) a.y = a.x + r(0.05f, 1.0f);  // hermite_step needs a < b
       if (f == 7) a.x = float(k % 9);          // noise_period's cloud type
       if (f == 8) a = vec4(r(-1.0f, 1.0f), r(0.25f, 1.0f), 0, 0);  // cloud_phase(nu, scale)

@@ -120,6 +120,17 @@ float cloud_phase(float nu, float scale) {
   return (0.7f * f + 0.3f * b) / (4.0f * 3.14159265358979f);
 }
 
+// Sample i of n of a light march over a path of length_to_exit towards the sun, spaced
+// quadratically (s = L t^2): the light that reaches a point is decided by the first hundred
+// metres towards the sun (an optical depth of 1 every 50 m in a cumulus), so the steps are
+// short there and long further out. Returns (distance of the sample's midpoint, step length).
+vec2 light_sample(int i, int n, float length_to_exit) {
+  float t0 = float(i) / float(n);
+  float t1 = float(i + 1) / float(n);
+  float t = 0.5f * (t0 + t1);
+  return vec2(length_to_exit * t * t, length_to_exit * (t1 * t1 - t0 * t0));
+}
+
 // Sun light reaching a cloud point through optical depth tau towards the sun, with multiple
 // scattering approximated by octaves (Wrenninge, Kulla and Lundqvist, "Oz: The Great and
 // Volumetric", SIGGRAPH 2013 talk): sum_i a^i e^{-b^i tau} p(nu; c^i g), a = c = 1/2, b = 1/4:

@@ -109,17 +109,10 @@ float density_at(vec3 p, vec3 centre, int layer, float footprint, bool fine, IN(
 float optical_depth_to_sun(vec3 p, vec3 centre, int layer, IN(MarchParams) m MARCH_SOURCES_PARAM) {
   LayerParams l = m.layers[layer];
   float length_to_exit = min((l.top - l.base) / max(m.sun.z, 0.15f), 4000.0f);
-  // Samples spaced quadratically (s = L t^2): the light that reaches a point is decided by the
-  // first hundred metres towards the sun (an optical depth of 1 every 50 m in a cumulus), so
-  // the steps are short there and long further out.
-  float n = float(m.light_steps);
   float tau = 0.0f;
   for (int i = 0; i < m.light_steps; ++i) {
-    float t0 = float(i) / n;
-    float t1 = float(i + 1) / n;
-    float t = 0.5f * (t0 + t1);
-    float ds = length_to_exit * (t1 * t1 - t0 * t0);
-    tau += density_at(p + (length_to_exit * t * t) * m.sun, centre, layer, ds, false, m MARCH_SOURCES_ARG) * ds;
+    vec2 s = light_sample(i, m.light_steps, length_to_exit);  // (distance, step), quadratic
+    tau += density_at(p + s.x * m.sun, centre, layer, s.y, false, m MARCH_SOURCES_ARG) * s.y;
   }
   return tau;
 }

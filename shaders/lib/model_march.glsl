@@ -48,18 +48,13 @@ float model_extinction(vec3 x, IN(ModelView) v MODEL_SOURCE_PARAM) {
   return v.extinction * MODEL_DENSITY(x / v.extent);
 }
 
-// Optical depth from x towards the sun to the box's edge, samples spaced s = L t^2 as in
-// cloud_march.glsl's optical_depth_to_sun.
+// Optical depth from x towards the sun to the box's edge, samples spaced as light_sample says.
 float model_light_depth(vec3 x, IN(ModelView) v MODEL_SOURCE_PARAM) {
   float length_to_exit = ray_box(x, v.sun, vec3(0.0f), vec3(v.extent)).y;
-  float n = float(v.light_steps);
   float tau = 0.0f;
   for (int i = 0; i < v.light_steps; ++i) {
-    float t0 = float(i) / n;
-    float t1 = float(i + 1) / n;
-    float t = 0.5f * (t0 + t1);
-    float ds = length_to_exit * (t1 * t1 - t0 * t0);
-    tau += model_extinction(x + (length_to_exit * t * t) * v.sun, v MODEL_SOURCE_ARG) * ds;
+    vec2 s = light_sample(i, v.light_steps, length_to_exit);  // (distance, step), quadratic
+    tau += model_extinction(x + s.x * v.sun, v MODEL_SOURCE_ARG) * s.y;
   }
   return tau;
 }
