@@ -3,6 +3,7 @@
 #   docs/images/cover_equirect.png           nephele generate (defaults), the equirect preview
 #   docs/images/render_gurten.png/.json      nephele render --view gurten (defaults)
 #   docs/images/render_gurten_panorama.*     the same scene as a panorama
+#   docs/images/model_examples.png           nephele model previews of the four built-in clouds
 # With --report it also runs `nephele report` (about 35 minutes on two cores) and copies its
 # work-precision diagrams (error_vs_runtime*.svg).
 set -euo pipefail
@@ -15,10 +16,17 @@ trap 'rm -rf "$work"' EXIT
 
 "$nephele" generate --out "$work/cover"
 cp "$work/cover/cover_equirect.png" docs/images/cover_equirect.png
-"$nephele" render --view gurten --out "$work/render_gurten.png"
+"$nephele" render --view gurten --no-cache --out "$work/render_gurten.png"
 cp "$work/render_gurten.png" "$work/render_gurten.json" docs/images/
-"$nephele" render --view gurten --panorama --out "$work/render_gurten_panorama.png"
+"$nephele" render --view gurten --panorama --no-cache --out "$work/render_gurten_panorama.png"
 cp "$work/render_gurten_panorama.png" "$work/render_gurten_panorama.json" docs/images/
+examples=(fair-weather towering cumulonimbus stratocumulus)
+for example in "${examples[@]}"; do
+  "$nephele" model --example "$example" --preview 256x256 --quiet --out "$work/model-$example"
+done
+previews=()
+for example in "${examples[@]}"; do previews+=("$work/model-$example/preview.png"); done
+oiiotool "${previews[@]}" --mosaic 4x1 -o docs/images/model_examples.png
 if [[ "${1:-}" == "--report" ]]; then
   "$nephele" report --out "$work/report"
   cp "$work/report/error_vs_runtime.svg" docs/images/error_vs_runtime.svg
