@@ -1,7 +1,4 @@
 // nephele bench cover: time of each pass of the global cover for several sizes.
-#include <algorithm>
-#include <chrono>
-#include <future>
 #include <cstdio>
 #include <iostream>
 
@@ -10,12 +7,8 @@
 #include "apps/cli/noise_options.hpp"
 #include "apps/cli/cover_options.hpp"
 #include "cover/cover_limits.hpp"
-#include "render/render_limits.hpp"
 #include "core/integer_text.hpp"
-#include "cover/global_cover.hpp"
-#include "cover/equirect.hpp"
-#include "gpu/pass_timer.hpp"
-#include "io/image_files.hpp"
+#include "studies/benchmarks.hpp"
 
 namespace nephele::cli {
 namespace {
@@ -39,28 +32,7 @@ std::vector<int> parse_sizes(const std::string& text) {
   return sizes;
 }
 
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v[v.size() / 2];
-}
-
-// Encodes the faces and the equirect map as generate does by default; returns the bytes.
-double encode_cover_images(const std::vector<float>& texels, const std::vector<float>& equirect, int size) {
-  std::vector<std::future<size_t>> jobs;
-  const size_t per_face = static_cast<size_t>(size) * size;
-  for (int face = 0; face < 6; ++face)
-    jobs.push_back(std::async(std::launch::async, [&, face] {
-      const io::ImageData image{size, size, 1,
-                                std::vector<float>(texels.begin() + face * per_face, texels.begin() + (face + 1) * per_face)};
-      return io::encode_image(image, io::exr_encoding({"Y"}), "face").size();
-    }));
-  jobs.push_back(std::async(std::launch::async, [&] {
-    return io::encode_image(io::ImageData{4 * size, 2 * size, 1, equirect}, io::exr_encoding({"Y"}), "equirect").size();
-  }));
-  double bytes = 0;
-  for (auto& job : jobs) bytes += static_cast<double>(job.get());
-  return bytes;
-}
+}  // namespace
 
 int bench_cover(const std::vector<std::string>& arguments) {
   cover::CoverParameters parameters;
@@ -88,60 +60,26 @@ int bench_cover(const std::vector<std::string>& arguments) {
               "the wall clock between glFinish calls where the driver reports none (llvmpipe);\n"
               "host ms: wall clock of the whole cover, of reading the cube map back, and of encoding the six\n"
               "faces and the equirect map as float32 ZIP EXR in memory (in parallel, as generate does)\n");
-  const char* passes[] = {"identity", "curl", "warp", "density", "calibrate", "coverage", "diagnose", "equirect"};
+  const auto& passes = studies::cover_bench_passes();
   std::printf("%6s", "size");
-  for (const char* p : passes) std::printf(" %9s", p);
+  for (const auto& p : passes) std::printf(" %9s", p.c_str());
   std::printf(" %9s %10s | %9s %9s %9s %8s\n", "device", "Mtexel/s", "wall", "read", "encode", "MB/s");
   for (int size : sizes) {
-    parameters.size = size;
-    std::vector<std::vector<double>> device(std::size(passes));
-    std::vector<double> wall, read, encode, megabytes;
-    bool wall_fallback = false;
-    for (int r = 0; r < repeat; ++r) {
-      cover::GlobalCover cover(parameters);
-      gpu::PassTimer whole;
-      cover.run();
-      cover.diagnose();
-      for (const auto& t : cover.timings())
-        for (size_t k = 0; k < std::size(passes); ++k)
-          if (t.pass == passes[k]) {
-            device[k].push_back(t.device_milliseconds > 0 ? t.device_milliseconds : t.milliseconds);
-            if (t.device_milliseconds <= 0 && t.milliseconds > 0) wall_fallback = true;
-          }
-      std::vector<float> equirect;
-      gpu::DeviceTimer equirect_device;
-      const double equirect_wall = gpu::time_pass([&] {
-        equirect = cover::equirect_from_cube(cover.cover_field(), 4 * size, 2 * size, 0, &equirect_device);
-      });
-      // Without device time, the wall clock of the resampling includes its read-back.
-      const double equirect_ms = equirect_device.milliseconds();
-      device.back().push_back(equirect_ms > 0 ? equirect_ms : equirect_wall);
-      wall.push_back(whole.milliseconds());
-      std::vector<float> texels;
-      read.push_back(gpu::time_pass([&] { texels = cover.cover_field().read(); }));
-      double bytes = 0;
-      const auto start = std::chrono::steady_clock::now();
-      bytes = encode_cover_images(texels, equirect, size);
-      encode.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
-      megabytes.push_back(bytes / 1e6);
-    }
+    const studies::CoverBenchRow row = studies::bench_cover_size(parameters, size, repeat);
     double total = 0;
     std::printf("%6d", size);
-    for (auto& d : device) {
-      const double m = median(d);
-      total += m;
-      std::printf(" %9.1f", m);
+    for (double ms : row.device_ms) {
+      total += ms;
+      std::printf(" %9.1f", ms);
     }
     const double texels = 6.0 * size * size;
-    std::printf(" %9.1f %10.1f | %9.1f %9.1f %9.1f %8.1f%s\n", total, texels / (total * 1e3), median(wall),
-                median(read), median(encode), median(megabytes) / (median(encode) / 1e3),
-                wall_fallback ? "  (no device time from the driver: wall clock)" : "");
+    std::printf(" %9.1f %10.1f | %9.1f %9.1f %9.1f %8.1f%s\n", total, texels / (total * 1e3), row.wall_ms, row.read_ms,
+                row.encode_ms, row.megabytes / (row.encode_ms / 1e3),
+                row.wall_fallback ? "  (no device time from the driver: wall clock)" : "");
     std::fflush(stdout);
   }
   return exit_ok;
 }
-
-}  // namespace
 
 int run_bench(const std::vector<std::string>& arguments) {
   if (arguments.empty() || arguments[0] == "--help" || arguments[0] == "-h") {

@@ -18,55 +18,13 @@
 #include "regional/scene.hpp"
 #include "render/model_preview.hpp"
 #include "model/density_volume.hpp"
+#include "model/model_limits.hpp"
+#include "studies/benchmarks.hpp"
 #include "params/table.hpp"
 
 namespace nephele::cli {
-namespace {
 
 namespace cm = params::cloud_model;
-
-// Host bytes of a run: the read-back volume, the atlas, the encoded files and the VDB tree
-// (each about one volume), plus the texture itself on a software driver (host memory).
-double host_bytes(int size, bool software) {
-  return 4.0 * model::DensityVolume::device_bytes(size) + (software ? model::DensityVolume::device_bytes(size) : 0.0);
-}
-
-void check_fits(int size, const gpu::Context& context) {
-  const double available = core::host_memory_available_bytes();
-  const double needed = host_bytes(size, context.is_software());
-  if (available > 0 && needed > available) {
-    int largest = size;
-    while (largest > 8 && host_bytes(largest, context.is_software()) > available) largest = largest * 7 / 8;
-    std::ostringstream m;
-    m << "--size: " << size << "^3 voxels need about " << std::ceil(needed / 1048576.0) << " MiB but "
-      << std::floor(available / 1048576.0) << " MiB of memory are available; allowed up to about " << largest;
-    throw UsageError(m.str());
-  }
-}
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v[v.size() / 2];
-}
-
-// n primitives spread over a cumulus field in a fixed pattern (golden-angle spiral), so that
-// the figures for 1, 5, 10 and 50 primitives describe comparable clouds.
-model::CloudModel spiral_of_cumuli(int n, model::Blend blend) {
-  model::CloudModel m;
-  m.blend = blend;
-  for (int i = 0; i < n; ++i) {
-    model::Primitive p;
-    const float r = 0.3f * std::sqrt((float(i) + 0.5f) / float(n)), angle = 2.39996323f * float(i);
-    p.from = p.to = glsl::vec3(0.5f + r * std::cos(angle), 0.5f + r * std::sin(angle), 0.35f + 0.05f * float(i % 3));
-    p.radius = 0.05f;
-    p.influence = 0.08f;
-    p.noise.seed = std::uint32_t(i + 1);
-    m.primitives.push_back(p);
-  }
-  return m;
-}
-
-}  // namespace
 
 int run_model(const std::vector<std::string>& arguments) {
   std::string example, scene_path, out(cm::out.default_text), blend(cm::blend.default_text);
@@ -107,7 +65,7 @@ int run_model(const std::vector<std::string>& arguments) {
 
   gpu::EglContext context;
   if (verbose) std::cerr << "renderer: " << context.info().renderer << " (" << context.info().version << ")\n";
-  check_fits(size, context);
+  model::check_model_fits(size, context);
   core::Progress progress("model", 3, core::Progress::for_stderr(quiet));
   progress.update(0, "volume");
   model::DensityVolume volume(size);
@@ -155,7 +113,7 @@ int bench_model(const std::vector<std::string>& arguments) {
     return exit_ok;
   }
   gpu::EglContext context;
-  check_fits(size, context);
+  model::check_model_fits(size, context);
   std::printf("device: %s (%s)\n", context.info().renderer.c_str(), context.info().version.c_str());
   std::printf("volume %d^3, median of %d runs after a warming run\n\n", size, repeat);
   std::printf("%-10s  %-13s  %10s  %9s  %10s  %9s  %9s\n", "primitives", "noise", "full ms", "bricks", "edit ms",
@@ -163,28 +121,10 @@ int bench_model(const std::vector<std::string>& arguments) {
   model::DensityVolume volume(size);
   for (int n : {1, 5, 10, 50})
     for (auto blend : {model::Blend::global, model::Blend::per_primitive}) {
-      const model::CloudModel m = spiral_of_cumuli(n, blend);
-      volume.compute(m);  // warming: compiles and allocates
-      std::vector<double> full, edit;
-      double full_occupancy = 0, edit_occupancy = 0;
-      for (int r = 0; r < repeat; ++r) {
-        volume.compute(m);
-        full.push_back(volume.stats().ms);
-        full_occupancy = volume.stats().occupancy();
-        // Moves the first primitive by one brick's width and back: two edits, each timed.
-        model::Primitive moved = m.primitives[0];
-        moved.from += glsl::vec3(8.0f / float(size), 0.0f, 0.0f);
-        moved.to = moved.from;
-        volume.edit(0, moved);
-        edit.push_back(volume.stats().ms);
-        edit_occupancy = volume.stats().occupancy();
-        volume.edit(0, m.primitives[0]);
-        edit.push_back(volume.stats().ms);
-      }
-      const double ms = median(full);
+      const studies::ModelBenchRow row = studies::bench_model_case(volume, n, blend, repeat);
       std::printf("%-10d  %-13s  %10.1f  %8.1f%%  %10.1f  %8.1f%%  %9.1f\n", n,
-                  blend == model::Blend::global ? "global (5)" : "per-prim (6)", ms, 100.0 * full_occupancy,
-                  median(edit), 100.0 * edit_occupancy, 1000.0 / ms);
+                  blend == model::Blend::global ? "global (5)" : "per-prim (6)", row.full_ms, 100.0 * row.full_occupancy,
+                  row.edit_ms, 100.0 * row.edit_occupancy, 1000.0 / row.full_ms);
       std::fflush(stdout);
     }
   return exit_ok;

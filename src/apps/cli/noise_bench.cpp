@@ -14,50 +14,9 @@
 #include "gpu/pass_timer.hpp"
 #include "io/noise_files.hpp"
 #include "noise/noise_texture.hpp"
+#include "studies/benchmarks.hpp"
 
 namespace nephele::cli {
-namespace {
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v[v.size() / 2];
-}
-
-noise::TextureSpec single(int size, noise::NoiseType type, int cells, int octaves) {
-  noise::TextureSpec spec;
-  spec.width = spec.height = spec.depth = size;
-  spec.channels[0].type = type;
-  spec.channels[0].cells = cells;
-  spec.channels[0].octaves = octaves;
-  return spec;
-}
-
-struct Run {
-  double first_ms = 0;     // first generate(): shader compilation (or cache lookup) included
-  double compute_ms = 0;   // median: until the values are in GPU memory (wall clock)
-  double device_ms = 0;    // median: the dispatches' GPU time (GL_TIME_ELAPSED; 0: none from the driver)
-  double total_ms = 0;     // median: until they are interleaved in host memory
-};
-
-// Into one host array, as FastNoise's benchmarks fill a caller's array.
-Run measure(noise::TextureGenerator& generator, const noise::TextureSpec& spec, int repeat) {
-  Run run;
-  noise::Volume volume;
-  run.first_ms = gpu::time_pass([&] { generator.generate(spec, volume); });
-  std::vector<double> compute, device, total;
-  for (int r = 0; r < repeat; ++r) {
-    total.push_back(gpu::time_pass([&] { generator.generate(spec, volume); }));
-    compute.push_back(generator.timings().compute_ms);
-    device.push_back(generator.timings().device_ms);
-  }
-  run.compute_ms = median(compute);
-  run.device_ms = median(device);
-  run.total_ms = median(total);
-  return run;
-}
-
-}  // namespace
-
 int bench_noise(const std::vector<std::string>& arguments) {
   int size = params::run::bench_noise_size.default_int();
   int repeat = params::run::bench_noise_repeat.default_int();
@@ -79,27 +38,14 @@ int bench_noise(const std::vector<std::string>& arguments) {
   const double points = static_cast<double>(size) * size * size;
   std::printf("%d^3 grid, tileable, median of %d runs   Mpt/s device  Mpt/s GPU mem  Mpt/s host  first run ms\n", size,
               repeat);
-  struct Case {
-    const char* name;
-    noise::TextureSpec spec;
-  };
-  using noise::NoiseType;
-  const Case cases[] = {
-      {"Worley F1, 8 cells (16 texels/cell)", single(size, NoiseType::worley, std::max(1, size / 16), 1)},
-      {"Worley F1, 32 cells (4 texels/cell)", single(size, NoiseType::worley, std::max(1, size / 4), 1)},
-      {"Perlin, 8 cells", single(size, NoiseType::perlin, std::max(1, size / 16), 1)},
-      {"Perlin, 32 cells", single(size, NoiseType::perlin, std::max(1, size / 4), 1)},
-      {"Perlin fBm 4 octaves, 8..64 cells", single(size, NoiseType::perlin, std::max(1, size / 16), 4)},
-      {"Worley F1 fBm 4 octaves, 8..64 cells", single(size, NoiseType::worley, std::max(1, size / 16), 4)},
-  };
-  for (const Case& c : cases) {
+  for (const studies::NoiseBenchCase& c : studies::noise_bench_cases(size)) {
     try {
       noise::validate(c.spec);
     } catch (const noise::SpecError&) {
       std::printf("  %-42s (not possible at this size)\n", c.name);
       continue;
     }
-    const Run run = measure(generator, c.spec, repeat);
+    const studies::NoiseRun run = studies::measure_noise(generator, c.spec, repeat);
     if (run.device_ms > 0)
       std::printf("  %-42s %7.1f", c.name, points / (run.device_ms * 1e3));
     else
@@ -114,7 +60,7 @@ int bench_noise(const std::vector<std::string>& arguments) {
   std::printf("presets, median of %d runs                  generate s   first run s   + write PNG s\n", repeat);
   for (const std::string name : {"shape", "erosion"}) {
     const noise::TextureSpec spec = noise::preset(name, 1);
-    const Run run = measure(generator, spec, repeat);
+    const studies::NoiseRun run = studies::measure_noise(generator, spec, repeat);
     const noise::Volume volume = generator.generate(spec);
     const double write_s =
         gpu::time_pass([&] { io::write_noise_files(directory / (name + ".png"), spec, volume, 8, name, json::Value()); }) / 1e3;
