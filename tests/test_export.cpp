@@ -315,4 +315,123 @@ TEST_CASE("export refuses a ktx2 format outside r16f, r32f, r8", "[export][cli]"
   CHECK_THAT(e.run.output, Catch::Contains("--format") && Catch::Contains("bc7"));
 }
 
+// The fields of a DDS file that place its texels (Microsoft's "DDS_HEADER", "DDS_PIXELFORMAT"
+// and "DDS_HEADER_DXT10" reference pages), read at their documented byte offsets.
+TEST_CASE("export dds: legacy RGBA8 and DX10 float cube headers as documented; OpenImageIO finds the marker in the RGBA8 cube",
+          "[export]") {
+  Exported e("dds");
+  REQUIRE(e.run.exit_code == 0);
+  const struct {
+    const char* name;
+    std::uint32_t dxgi, bytes;  // dxgi 0: the legacy header
+  } cases[] = {{"cover_cube_rgba8.dds", 0, 4}, {"cover_cube_r16f.dds", 54, 2}, {"cover_cube_r32f.dds", 41, 4}};
+  for (const auto& c : cases) {
+    INFO(c.name);
+    const std::string b = test::read_file(e.out.path / c.name);
+    REQUIRE(b.size() > 128);
+    CHECK(b.compare(0, 4, "DDS ") == 0);
+    CHECK(u32(b, 4) == 124);                      // dwSize
+    CHECK(u32(b, 12) == std::uint32_t(kSize));    // dwHeight
+    CHECK(u32(b, 16) == std::uint32_t(kSize));    // dwWidth
+    CHECK(u32(b, 20) == kSize * c.bytes);         // dwPitchOrLinearSize: bytes per row
+    CHECK(u32(b, 76) == 32);                      // ddspf.dwSize
+    CHECK((u32(b, 108) & 0x1008u) == 0x1008u);    // dwCaps: TEXTURE | COMPLEX
+    CHECK(u32(b, 112) == 0xFE00u);                // dwCaps2: CUBEMAP and all six faces
+    std::size_t data = 128;
+    if (c.dxgi == 0) {
+      CHECK(u32(b, 80) == 0x41u);  // DDPF_RGB | DDPF_ALPHAPIXELS
+      CHECK(u32(b, 88) == 32);     // dwRGBBitCount
+      CHECK(u32(b, 92) == 0x000000ffu);
+      CHECK(u32(b, 104) == 0xff000000u);
+    } else {
+      CHECK(u32(b, 80) == 0x4u);  // DDPF_FOURCC
+      CHECK(b.compare(84, 4, "DX10") == 0);
+      CHECK(u32(b, 128) == c.dxgi);
+      CHECK(u32(b, 132) == 3);    // D3D10_RESOURCE_DIMENSION_TEXTURE2D
+      CHECK(u32(b, 136) == 0x4);  // DDS_RESOURCE_MISC_TEXTURECUBE
+      CHECK(u32(b, 140) == 1);    // one cube
+      data = 148;
+    }
+    CHECK(b.size() == data + 6ull * kSize * kSize * c.bytes);
+  }
+  // OpenImageIO 2.4 reads the legacy RGBA8 cube as an N x 6N image of the faces in order; the
+  // marker must be on the third face (+Y), where the GL table puts it.
+  const auto image = io::read_image(e.out.path / "cover_cube_rgba8.dds");
+  REQUIRE(image.width == kSize);
+  REQUIRE(image.height == 6 * kSize);
+  REQUIRE(image.channels == 4);
+  for (int channel = 0; channel < 4; ++channel)
+    for (int f = 0; f < 6; ++f) {
+      INFO("channel " << channel << " face " << f);
+      const auto centroid = bright_centroid(image.pixels, kSize, 4, channel, 0, f * kSize, kSize, kSize);
+      if (f != 2) {
+        CHECK(centroid.count == 0);
+        continue;
+      }
+      CHECK(centroid.x == Approx(marker_on_face()[0]).margin(kMarkerPixels));
+      CHECK(centroid.y == Approx(marker_on_face()[1]).margin(kMarkerPixels));
+    }
+}
+
+TEST_CASE("export celestia: an add-on folder with a white RGBA map, coverage in alpha, prime meridian centred, and CloudMap",
+          "[export]") {
+  Exported e("celestia", " --name marker_test");
+  REQUIRE(e.run.exit_code == 0);
+  const auto folder = e.out.path / "extras" / "marker_test";
+  const std::string ssc = test::read_file(folder / "marker_test.ssc");
+  CHECK_THAT(ssc, Catch::Contains("Modify \"Earth\" \"Sol\"") && Catch::Contains("CloudMap \"marker_test.png\""));
+  const auto png = folder / "textures" / "hires" / "marker_test.png";
+  // Read as stored: PNG alpha is unassociated, and OpenImageIO would premultiply the colour.
+  OIIO::ImageSpec config;
+  config.attribute("oiio:UnassociatedAlpha", 1);
+  auto in = OIIO::ImageInput::open(png.string(), &config);
+  REQUIRE(in);
+  io::ImageData image{in->spec().width, in->spec().height, in->spec().nchannels, {}};
+  image.pixels.resize(std::size_t(image.width) * image.height * image.channels);
+  REQUIRE(in->read_image(0, 0, 0, image.channels, OIIO::TypeDesc::FLOAT, image.pixels.data()));
+  in->close();
+  REQUIRE(image.channels == 4);
+  REQUIRE(image.width == 4 * kSize);
+  REQUIRE(image.height == 2 * kSize);
+  for (std::size_t i = 0; i < image.pixels.size(); i += 4) {
+    if (image.pixels[i] != 1.0f || image.pixels[i + 1] != 1.0f || image.pixels[i + 2] != 1.0f) FAIL("not white at " << i / 4);
+  }
+  // Celestia's cloud maps have longitude 0 at the centre column and -180 at the left edge.
+  const auto c = bright_centroid(image.pixels, image.width, 4, 3, 0, 0, image.width, image.height);
+  REQUIRE(c.count > 0);
+  CHECK(c.x == Approx(marker_on_equirect(image.width, image.height)[0]).margin(kMarkerPixels));
+  CHECK(c.y == Approx(marker_on_equirect(image.width, image.height)[1]).margin(kMarkerPixels));
+  for (const auto& type : png_chunks(test::read_file(png))) CHECK(type != "gAMA");
+  CHECK(std::filesystem::exists(e.out.path / "README.txt"));
+  Exported bad("celestia", " --name ../x");
+  CHECK(bad.run.exit_code == 2);
+  CHECK_THAT(bad.run.output, Catch::Contains("--name"));
+}
+
+TEST_CASE("export exr-cube: an N x 6N envmap=cube strip with the +Y face flipped top-bottom, as OpenEXR's layout wants",
+          "[export]") {
+  Exported e("exr-cube");
+  REQUIRE(e.run.exit_code == 0);
+  const auto path = e.out.path / "cover_envcube.exr";
+  auto in = OIIO::ImageInput::open(path.string());
+  REQUIRE(in);
+  // OpenImageIO reports the header's envmap = cube as this texture format.
+  CHECK(in->spec().get_string_attribute("textureformat") == "CubeFace Environment");
+  in->close();
+  const auto image = io::read_image(path);
+  REQUIRE(image.width == kSize);
+  REQUIRE(image.height == 6 * kSize);
+  for (int f = 0; f < 6; ++f) {
+    INFO("face " << f);
+    const auto centroid = bright_centroid(image.pixels, kSize, image.channels, 0, 0, f * kSize, kSize, kSize);
+    if (f != 2) {
+      CHECK(centroid.count == 0);
+      continue;
+    }
+    // The Y faces are mirrored top-bottom relative to the GL face (REFERENCE.md, OpenEXR cube).
+    CHECK(centroid.x == Approx(marker_on_face()[0]).margin(kMarkerPixels));
+    CHECK(centroid.y == Approx(kSize - 1 - marker_on_face()[1]).margin(kMarkerPixels));
+  }
+}
+
 }  // namespace nephele

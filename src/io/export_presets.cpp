@@ -142,7 +142,9 @@ void write_celestia(OutputSet& out, std::vector<std::string>& names, const Expor
   for (std::size_t i = 0; i < map.pixels.size(); ++i) rgba.pixels[4 * i + 3] = std::clamp(map.pixels[i], 0.0f, 1.0f);
   const std::string folder = "extras/" + options.name + "/";
   const std::string texture = folder + "textures/hires/" + options.name + ".png";
-  out.write(texture, encode_image(rgba, png_encoding(8), texture));
+  ImageEncoding encoding = png_encoding(8);
+  encoding.unassociated_alpha = true;  // PNG's alpha is unassociated: the colour stays white
+  out.write(texture, encode_image(rgba, encoding, texture));
   names.push_back(texture);
   const std::string ssc = folder + options.name + ".ssc";
   out.write(ssc, "# nephele cloud cover for Celestia: copy extras/" + options.name +
