@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -15,6 +16,7 @@
 #include "io/atomic_output.hpp"
 #include "io/export_presets.hpp"
 #include "io/image_files.hpp"
+#include "io/texture_containers.hpp"
 #include "params/table.hpp"
 
 namespace nephele {
@@ -406,6 +408,7 @@ TEST_CASE("export celestia: an add-on folder with a white RGBA map, coverage in 
   Exported bad("celestia", " --name ../x");
   CHECK(bad.run.exit_code == 2);
   CHECK_THAT(bad.run.output, Catch::Contains("--name"));
+  CHECK_FALSE(std::filesystem::exists(bad.out.path / "README.txt"));  // the set appears whole or not at all
 }
 
 TEST_CASE("export exr-cube: an N x 6N envmap=cube strip with the +Y face flipped top-bottom, as OpenEXR's layout wants",
@@ -431,6 +434,46 @@ TEST_CASE("export exr-cube: an N x 6N envmap=cube strip with the +Y face flipped
     // The Y faces are mirrored top-bottom relative to the GL face (REFERENCE.md, OpenEXR cube).
     CHECK(centroid.x == Approx(marker_on_face()[0]).margin(kMarkerPixels));
     CHECK(centroid.y == Approx(kSize - 1 - marker_on_face()[1]).margin(kMarkerPixels));
+  }
+}
+
+TEST_CASE("every export preset writes a README.txt naming the preset beside its files", "[export]") {
+  for (const auto& preset : io::export_presets()) {
+    INFO(preset.name);
+    Exported e(preset.name);
+    REQUIRE(e.run.exit_code == 0);
+    const std::string readme = test::read_file(e.out.path / "README.txt");
+    CHECK_THAT(readme, Catch::Contains("preset " + preset.name) && Catch::Contains("linear"));
+    // The command prints each file it wrote; every one exists.
+    std::istringstream lines(e.run.output);
+    int files = 0;
+    for (std::string line; std::getline(lines, line);) {
+      CHECK(std::filesystem::is_regular_file(line));
+      ++files;
+    }
+    CHECK(files >= 2);
+  }
+}
+
+TEST_CASE("half_from_float rounds to the nearest binary16, ties to even, through subnormals and overflow", "[export]") {
+  // Exact values and their bit patterns (IEEE 754-2008, binary16).
+  CHECK(io::half_from_float(0.0f) == 0x0000);
+  CHECK(io::half_from_float(-0.0f) == 0x8000);
+  CHECK(io::half_from_float(1.0f) == 0x3C00);
+  CHECK(io::half_from_float(0.5f) == 0x3800);
+  CHECK(io::half_from_float(65504.0f) == 0x7BFF);                 // largest finite half
+  CHECK(io::half_from_float(std::ldexp(1.0f, -24)) == 0x0001);    // smallest subnormal
+  CHECK(io::half_from_float(std::ldexp(1.0f, -14)) == 0x0400);    // smallest normal
+  // Between 1 and the next half (1 + 2^-10): below, at and above the midpoint.
+  CHECK(io::half_from_float(1.0f + std::ldexp(1.0f, -12)) == 0x3C00);
+  CHECK(io::half_from_float(1.0f + std::ldexp(1.0f, -11)) == 0x3C00);  // tie to even (mantissa 0)
+  CHECK(io::half_from_float(1.0f + 3 * std::ldexp(1.0f, -11)) == 0x3C02);  // tie to even (mantissa 2)
+  CHECK(io::half_from_float(1.0f + std::ldexp(1.0f, -11) + std::ldexp(1.0f, -20)) == 0x3C01);
+  CHECK(io::half_from_float(std::ldexp(1.0f, -25)) == 0x0000);  // half the smallest subnormal: tie to even 0
+  CHECK(io::half_from_float(1e6f) == 0x7C00);                    // overflow to infinity
+  // Every value the reader decodes maps back to itself.
+  for (std::uint32_t h = 0; h < 0x7C00; ++h) {
+    if (io::half_from_float(from_half(std::uint16_t(h))) != h) FAIL("round trip of " << h);
   }
 }
 
