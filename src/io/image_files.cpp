@@ -34,6 +34,8 @@ std::vector<unsigned char> encode_image(const ImageData& image, const ImageEncod
   if (!encoding.channel_names.empty()) spec.channelnames = encoding.channel_names;
   if (!png) spec.attribute("compression", encoding.compression);
   spec.attribute("Software", "nephele");
+  for (const auto& [name, value] : encoding.attributes) spec.attribute(name, value);
+  if (encoding.unassociated_alpha) spec.attribute("oiio:UnassociatedAlpha", 1);
   std::vector<unsigned char> bytes;
   OIIO::Filesystem::IOVecOutput memory(bytes);
   const auto fail = [&](const char* step) {

@@ -2,6 +2,7 @@
 // Image files through OpenImageIO. Coverage is data, not colour: nothing is sRGB-encoded.
 #include <filesystem>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/image.hpp"
@@ -20,12 +21,25 @@ struct ImageEncoding {
   int bits = 8;                            // png: 8 or 16; exr: 32 (float) or 16 (half)
   std::vector<std::string> channel_names;  // empty: OpenImageIO's defaults (Y, RGB, RGBA ...)
   std::string compression = "zip";        // exr: none, rle, zips, zip, piz, pxr24, b44, dwaa
+  std::vector<std::pair<std::string, std::string>> attributes;  // extra string metadata (OpenImageIO names)
+  // With 4 channels: the colour is not premultiplied by alpha (white clouds with coverage in
+  // alpha are stored as given; OpenImageIO would otherwise divide the colour by alpha).
+  bool unassociated_alpha = false;
 };
 
-inline ImageEncoding png_encoding(int bits = 8) { return {ImageFormat::png, bits, {}}; }
+inline ImageEncoding png_encoding(int bits = 8) {
+  ImageEncoding e;
+  e.bits = bits;
+  return e;
+}
 inline ImageEncoding exr_encoding(std::vector<std::string> channel_names, int bits = 32,
                                   std::string compression = "zip") {
-  return {ImageFormat::exr, bits, std::move(channel_names), std::move(compression)};
+  ImageEncoding e;
+  e.format = ImageFormat::exr;
+  e.bits = bits;
+  e.channel_names = std::move(channel_names);
+  e.compression = std::move(compression);
+  return e;
 }
 
 // OpenEXR's compressions that nephele offers (params::run::exr_compression lists the same).

@@ -25,6 +25,7 @@ enum Use : unsigned {
   model = 1u << 9,          // nephele model
   model_file = 1u << 10,    // a key of a cloud model file (scenes/*.cloud.json)
   bench_model = 1u << 11,
+  export_cover = 1u << 12,  // nephele export
 };
 
 struct Parameter {

@@ -20,5 +20,6 @@ int run_render(const std::vector<std::string>& arguments);
 int bench_render(const std::vector<std::string>& arguments);
 int run_model(const std::vector<std::string>& arguments);
 int bench_model(const std::vector<std::string>& arguments);
+int run_export(const std::vector<std::string>& arguments);
 
 }  // namespace nephele::cli

@@ -18,6 +18,7 @@ const char* const usage =
     "  render     cloud layers seen from the ground (Gurten, Bantiger, anywhere)\n"
     "  noise      tileable 3D noise textures (Worley, Perlin, Perlin-Worley, fBm)\n"
     "  model      one cloud from implicit primitives: density volume (raw, EXR atlas, OpenVDB)\n"
+    "  export     a generated cover as one target's files (equirect, gl-faces, ktx2, dds, celestia, exr-cube)\n"
     "  bench      benchmarks that print timings (nephele bench cover)\n"
     "  report     error of the warp's integrators against their run time (work-precision)\n\n"
     "nephele COMMAND --help describes each command's options and their ranges.\n"
@@ -50,7 +51,8 @@ int main(int argc, char** argv) {
     if (command == "report") return run_report(rest);
     if (command == "render") return run_render(rest);
     if (command == "model") return run_model(rest);
-    throw UsageError("unknown command '" + command + "' (allowed: generate, render, noise, model, bench, report)");
+    if (command == "export") return run_export(rest);
+    throw UsageError("unknown command '" + command + "' (allowed: generate, render, noise, model, export, bench, report)");
   } catch (const nephele::core::InputError& e) {
     std::cerr << "nephele: " << e.what() << "\n";
     return exit_usage;

@@ -1,0 +1,67 @@
+// nephele export COVER_DIR --preset NAME --out DIR: a generated cover turned into the files one
+// target reads (docs/export.md), written as one output set with a README.txt.
+#include <filesystem>
+#include <iostream>
+#include <memory>
+
+#include "apps/cli/commands.hpp"
+#include "apps/cli/options.hpp"
+#include "gpu/egl_context.hpp"
+#include "io/atomic_output.hpp"
+#include "io/export_presets.hpp"
+#include "params/table.hpp"
+
+namespace nephele::cli {
+
+int run_export(const std::vector<std::string>& arguments) {
+  namespace run = params::run;
+  std::string preset_name, out, format(run::export_format.default_text), name(run::export_name.default_text);
+  std::string presets_text;
+  for (const auto& p : io::export_presets()) presets_text += (presets_text.empty() ? "  " : "\n  ") + p.name + ": " + p.summary;
+  Options options("export COVER_DIR",
+                  "Turns a cover directory written by `nephele generate` (cover_px.exr ... cover_nz.exr) into the\n"
+                  "files one target reads, with a README.txt saying where they go (docs/export.md). Presets:\n" +
+                      presets_text,
+                  params::export_cover);
+  options.bind(run::export_preset, &preset_name);
+  options.bind(run::export_out, &out);
+  options.bind(run::export_format, &format);
+  options.bind(run::export_name, &name);
+  // COVER_DIR comes first; the rest are options.
+  std::vector<std::string> rest = arguments;
+  std::string cover_dir;
+  if (!rest.empty() && !rest.front().empty() && rest.front()[0] != '-') {
+    cover_dir = rest.front();
+    rest.erase(rest.begin());
+  }
+  if (!options.parse(rest)) {
+    std::cout << options.help();
+    return exit_ok;
+  }
+  if (cover_dir.empty())
+    throw UsageError("COVER_DIR", "", "a directory written by nephele generate, given before the options", "is missing");
+  if (!options.given(run::export_preset))
+    throw UsageError("--preset", "", std::string(run::export_preset.allowed), "is missing");
+  if (!options.given(run::export_out)) throw UsageError("--out", "", "DIR", "is missing");
+  const io::ExportPreset& preset = io::find_export_preset(preset_name);
+  io::ExportOptions export_options;
+  export_options.ktx2_format = format;
+  export_options.name = name;
+  const io::CoverFaces faces = io::read_cover_faces(cover_dir);
+
+  const std::filesystem::path directory(out);
+  if (std::filesystem::exists(directory) && !std::filesystem::is_directory(directory))
+    throw UsageError("--out", out, "DIR", "exists and is not a directory");
+  std::unique_ptr<gpu::EglContext> context;
+  if (preset.needs_equirect) context = std::make_unique<gpu::EglContext>();
+  std::error_code error;
+  std::filesystem::create_directories(directory, error);
+  if (error) throw UsageError("--out", out, "DIR", "cannot be created: " + error.message());
+  io::OutputSet outputs(directory, io::OutputSet::Scope::directory);
+  const std::vector<std::string> names = io::write_export(outputs, preset, faces, export_options);
+  outputs.commit();
+  for (const auto& file : names) std::cout << (directory / file).string() << "\n";
+  return exit_ok;
+}
+
+}  // namespace nephele::cli

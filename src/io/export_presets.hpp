@@ -1,0 +1,42 @@
+#pragma once
+// nephele export: a cover directory written by `generate` turned into what one target reads
+// (docs/export.md). Each preset writes its files and a README.txt into one output set.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "io/atomic_output.hpp"
+
+namespace nephele::io {
+
+// The six faces of a cover, GL order +X, -X, +Y, -Y, +Z, -Z, rows from t = 0.
+struct CoverFaces {
+  int size = 0;
+  std::vector<float> texels;  // 6 * size * size
+};
+
+// Reads cover_px.exr ... cover_nz.exr of `directory` (the first channel of each). Throws
+// core::InputError naming COVER_DIR when the directory, a face or its size is wrong.
+CoverFaces read_cover_faces(const std::filesystem::path& directory);
+
+struct ExportPreset {
+  std::string name;     // --preset word
+  std::string summary;  // one line for --help and the README
+  bool needs_equirect;  // resamples the cube map on the GPU (a context must be current)
+};
+// The presets in the order --help lists them.
+const std::vector<ExportPreset>& export_presets();
+// "equirect|gl-faces|..." for the parameter table's check; throws core::InputError for an unknown name.
+const ExportPreset& find_export_preset(const std::string& name);
+
+struct ExportOptions {
+  std::string ktx2_format = "r16f";    // ktx2: r16f, r32f, r8
+  std::string name = "nephele_clouds";  // celestia: the add-on's folder and file names
+};
+
+// Writes the preset's files (README.txt included) into `outputs` without committing it, and
+// returns their names in the order written. Equirect presets need a current GL context.
+std::vector<std::string> write_export(OutputSet& outputs, const ExportPreset& preset, const CoverFaces& faces,
+                                      const ExportOptions& options = {});
+
+}  // namespace nephele::io

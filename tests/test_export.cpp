@@ -1,0 +1,480 @@
+// nephele export: every preset's files, read back by readers written here from the formats'
+// specifications (not the writers' code), with an asymmetric marker cover whose one bright dot
+// must appear at the pixel each target's convention puts it.
+#include <OpenImageIO/imageio.h>
+
+#include <catch2/catch.hpp>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "cli_support.hpp"
+#include "io/atomic_output.hpp"
+#include "io/export_presets.hpp"
+#include "io/image_files.hpp"
+#include "io/texture_containers.hpp"
+#include "params/table.hpp"
+
+namespace nephele {
+namespace {
+
+constexpr int kSize = 32;
+// The marker: geocentric latitude 30 N, longitude 60 E. It lies on the +Y face, away from its
+// edges, and no mirror or rotation of a face or of the map maps it onto itself.
+constexpr double kLat = 30.0, kLon = 60.0;
+constexpr double kRadius = 0.1;  // angular radius in radians: about 3 texels of a 32^2 face
+constexpr double kPi = 3.14159265358979323846;
+
+std::array<double, 3> marker_direction() {
+  const double lat = kLat * kPi / 180, lon = kLon * kPi / 180;
+  return {std::cos(lat) * std::cos(lon), std::cos(lat) * std::sin(lon), std::sin(lat)};
+}
+
+// Direction of texel (i, j) of GL face f, from the table of docs/conventions.md
+// (OpenGL 4.6 section 8.13): sc = 2s - 1, tc = 2t - 1 on the face plane |ma| = 1.
+std::array<double, 3> texel_direction(int f, int i, int j, int n) {
+  const double sc = 2 * (i + 0.5) / n - 1, tc = 2 * (j + 0.5) / n - 1;
+  std::array<double, 3> d;
+  switch (f) {
+    case 0: d = {1, -tc, -sc}; break;
+    case 1: d = {-1, -tc, sc}; break;
+    case 2: d = {sc, 1, tc}; break;
+    case 3: d = {sc, -1, -tc}; break;
+    case 4: d = {sc, -tc, 1}; break;
+    default: d = {-sc, -tc, -1}; break;
+  }
+  const double l = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+  return {d[0] / l, d[1] / l, d[2] / l};
+}
+
+// Writes a cover directory: 0.1 everywhere, 1 within kRadius of the marker, through the same
+// image writer as `generate`.
+void write_marker_cover(const std::filesystem::path& dir) {
+  std::filesystem::create_directories(dir);
+  const auto m = marker_direction();
+  const char* const suffixes[6] = {"px", "nx", "py", "ny", "pz", "nz"};
+  for (int f = 0; f < 6; ++f) {
+    io::ImageData face{kSize, kSize, 1, std::vector<float>(kSize * kSize)};
+    for (int j = 0; j < kSize; ++j)
+      for (int i = 0; i < kSize; ++i) {
+        const auto d = texel_direction(f, i, j, kSize);
+        const double angle = std::acos(std::min(1.0, d[0] * m[0] + d[1] * m[1] + d[2] * m[2]));
+        face.pixels[j * kSize + i] = angle < kRadius ? 1.0f : 0.1f;
+      }
+    io::write_image(dir / (std::string("cover_") + suffixes[f] + ".exr"), face, io::exr_encoding({"Y"}));
+  }
+  io::write_text_file(dir / "cover.json", "{}\n");
+}
+
+struct Centroid {
+  double x = 0, y = 0;
+  int count = 0;
+};
+// Centroid of the pixels above 0.5 in channel c of the rectangle [x0, x0 + w) x [y0, y0 + h).
+Centroid bright_centroid(const std::vector<float>& pixels, int width, int channels, int c, int x0, int y0, int w,
+                         int h) {
+  Centroid r;
+  for (int y = y0; y < y0 + h; ++y)
+    for (int x = x0; x < x0 + w; ++x)
+      if (pixels[(std::size_t(y) * width + x) * channels + c] > 0.5f) r.x += x - x0, r.y += y - y0, ++r.count;
+  if (r.count) r.x /= r.count, r.y /= r.count;
+  return r;
+}
+
+// Where the marker's centre falls on the +Y face, in pixel coordinates (centres at i + 0.5).
+std::array<double, 2> marker_on_face() {
+  const auto m = marker_direction();
+  const double s = (m[0] / m[1] + 1) / 2, t = (m[2] / m[1] + 1) / 2;
+  return {s * kSize - 0.5, t * kSize - 0.5};
+}
+
+// Where it falls on a W x H equirect: -180 at the left edge, geodetic latitude down the rows.
+std::array<double, 2> marker_on_equirect(int width, int height) {
+  const double f = 1 / 298.257223563;
+  const double geodetic = std::atan(std::tan(kLat * kPi / 180) / ((1 - f) * (1 - f))) * 180 / kPi;
+  return {(kLon + 180) / 360 * width - 0.5, (90 - geodetic) / 180 * height - 0.5};
+}
+
+// The thresholded dot is about 6 texels across; its centroid moves by less than half a pixel
+// with the texel grid, plus the bilinear resampling's blur of the edge: one pixel bounds both.
+constexpr double kMarkerPixels = 1.0;
+
+struct Exported {
+  test::TemporaryDirectory cover{true}, out;
+  test::Run run;
+  explicit Exported(const std::string& preset, const std::string& extra = "") {
+    write_marker_cover(cover.path);
+    run = test::run("export " + cover.path.string() + " --preset " + preset + " --out " + out.path.string() + extra);
+  }
+};
+
+std::uint32_t u32(const std::string& b, std::size_t at) {
+  std::uint32_t v = 0;
+  for (int i = 3; i >= 0; --i) v = (v << 8) | (unsigned char)b[at + i];
+  return v;
+}
+std::uint64_t u64(const std::string& b, std::size_t at) { return u32(b, at) | (std::uint64_t(u32(b, at + 4)) << 32); }
+
+// PNG chunk types in file order (PNG specification, section 5.3: length, type, data, CRC).
+std::vector<std::string> png_chunks(const std::string& bytes) {
+  std::vector<std::string> types;
+  for (std::size_t at = 8; at + 8 <= bytes.size();) {
+    const std::uint32_t length = (std::uint32_t((unsigned char)bytes[at]) << 24) |
+                                 (std::uint32_t((unsigned char)bytes[at + 1]) << 16) |
+                                 (std::uint32_t((unsigned char)bytes[at + 2]) << 8) | (unsigned char)bytes[at + 3];
+    types.push_back(bytes.substr(at + 4, 4));
+    at += 12 + length;
+  }
+  return types;
+}
+
+// IEEE 754 binary16 to float, for the readers below.
+float from_half(std::uint16_t h) {
+  const int exponent = (h >> 10) & 31, mantissa = h & 1023;
+  const float magnitude = exponent == 0 ? std::ldexp(float(mantissa), -24)
+                                        : std::ldexp(float(mantissa + 1024), exponent - 25);
+  return (h & 0x8000) ? -magnitude : magnitude;
+}
+
+}  // namespace
+
+TEST_CASE("export's preset registry and the parameter table name the same presets", "[export]") {
+  std::string words;
+  for (const auto& p : io::export_presets()) words += (words.empty() ? "" : "|") + p.name;
+  CHECK(words == std::string(params::run::export_preset.allowed));
+}
+
+TEST_CASE("export refuses an unknown preset and a directory without cover faces with exit code 2", "[export][cli]") {
+  test::TemporaryDirectory cover(true), out;
+  write_marker_cover(cover.path);
+  auto r = test::run("export " + cover.path.string() + " --preset blue --out " + out.path.string());
+  CHECK(r.exit_code == 2);
+  CHECK_THAT(r.output, Catch::Contains("--preset") && Catch::Contains("blue") && Catch::Contains("equirect"));
+  test::TemporaryDirectory empty(true);
+  r = test::run("export " + empty.path.string() + " --preset gl-faces --out " + out.path.string());
+  CHECK(r.exit_code == 2);
+  CHECK_THAT(r.output, Catch::Contains("COVER_DIR") && Catch::Contains("cover_px.exr"));
+  r = test::run("export --preset gl-faces --out " + out.path.string());
+  CHECK(r.exit_code == 2);
+  CHECK_THAT(r.output, Catch::Contains("COVER_DIR"));
+  CHECK_FALSE(std::filesystem::exists(out.path / "README.txt"));
+}
+
+TEST_CASE("export equirect: the marker at its longitude and geodetic latitude in the EXR and both PNGs, no gamma chunk",
+          "[export]") {
+  Exported e("equirect");
+  REQUIRE(e.run.exit_code == 0);
+  CHECK(std::filesystem::exists(e.out.path / "README.txt"));
+  for (const char* name : {"cover_equirect.exr", "cover_equirect_16.png", "cover_equirect_8.png"}) {
+    INFO(name);
+    const auto image = io::read_image(e.out.path / name);
+    REQUIRE(image.width == 4 * kSize);
+    REQUIRE(image.height == 2 * kSize);
+    const auto c = bright_centroid(image.pixels, image.width, image.channels, 0, 0, 0, image.width, image.height);
+    const auto expected = marker_on_equirect(image.width, image.height);
+    REQUIRE(c.count > 0);
+    CHECK(c.x == Approx(expected[0]).margin(kMarkerPixels));
+    CHECK(c.y == Approx(expected[1]).margin(kMarkerPixels));
+  }
+  // Coverage is data: a gAMA, sRGB or iCCP chunk would make viewers and engines re-encode it.
+  for (const char* name : {"cover_equirect_16.png", "cover_equirect_8.png"}) {
+    const std::string bytes = test::read_file(e.out.path / name);
+    INFO(name);
+    REQUIRE(bytes.compare(0, 8, "\x89PNG\r\n\x1a\n") == 0);
+    CHECK(bytes[24] == (std::string(name).find("16") != std::string::npos ? 16 : 8));  // IHDR bit depth
+    for (const auto& type : png_chunks(bytes)) {
+      CHECK(type != "gAMA");
+      CHECK(type != "sRGB");
+      CHECK(type != "iCCP");
+    }
+  }
+}
+
+TEST_CASE("export gl-faces: the marker on the +Y face only, at the texel of the GL face table", "[export]") {
+  Exported e("gl-faces");
+  REQUIRE(e.run.exit_code == 0);
+  const char* const suffixes[6] = {"px", "nx", "py", "ny", "pz", "nz"};
+  for (int f = 0; f < 6; ++f) {
+    INFO(suffixes[f]);
+    const auto face = io::read_image(e.out.path / (std::string("cover_") + suffixes[f] + ".exr"));
+    REQUIRE(face.width == kSize);
+    const auto c = bright_centroid(face.pixels, kSize, face.channels, 0, 0, 0, kSize, kSize);
+    if (f != 2) {
+      CHECK(c.count == 0);
+      continue;
+    }
+    REQUIRE(c.count > 0);
+    CHECK(c.x == Approx(marker_on_face()[0]).margin(kMarkerPixels));
+    CHECK(c.y == Approx(marker_on_face()[1]).margin(kMarkerPixels));
+  }
+}
+
+// A KTX2 reader from the Khronos KTX 2.0 specification, sections 3.1-3.9, and the Khronos Data
+// Format Specification 1.3, section 5: only what a loader needs to place a cube's texels.
+struct Ktx2 {
+  std::uint32_t vk_format, type_size, width, height, depth, layers, faces, levels, supercompression;
+  std::uint32_t dfd_offset, dfd_length, kvd_offset, kvd_length;
+  std::uint64_t level_offset, level_length;
+  std::uint32_t color_model, primaries, transfer, bytes_plane0, bit_length, channel_byte;
+  std::string orientation;
+};
+
+Ktx2 read_ktx2(const std::string& b) {
+  const unsigned char identifier[12] = {0xAB, 'K', 'T', 'X', ' ', '2', '0', 0xBB, '\r', '\n', 0x1A, '\n'};
+  REQUIRE(b.size() > 80);
+  REQUIRE(std::memcmp(b.data(), identifier, 12) == 0);
+  Ktx2 k;
+  std::uint32_t* header[] = {&k.vk_format, &k.type_size, &k.width, &k.height, &k.depth,
+                             &k.layers,    &k.faces,     &k.levels, &k.supercompression};
+  for (int i = 0; i < 9; ++i) *header[i] = u32(b, 12 + 4 * i);
+  k.dfd_offset = u32(b, 48), k.dfd_length = u32(b, 52), k.kvd_offset = u32(b, 56), k.kvd_length = u32(b, 60);
+  CHECK(u64(b, 64) == 0);  // no supercompression global data
+  k.level_offset = u64(b, 80), k.level_length = u64(b, 88);
+  CHECK(u64(b, 96) == k.level_length);  // uncompressedByteLength
+  const std::size_t d = k.dfd_offset;
+  CHECK(u32(b, d) == k.dfd_length);                  // dfdTotalSize
+  CHECK(u32(b, d + 4) == 0);                          // Khronos vendor, basic descriptor type
+  CHECK((u32(b, d + 8) & 0xffff) == 2);               // version 2 (KDF 1.3)
+  CHECK((u32(b, d + 8) >> 16) == k.dfd_length - 4);  // descriptorBlockSize: one block
+  k.color_model = u32(b, d + 12) & 0xff, k.primaries = (u32(b, d + 12) >> 8) & 0xff;
+  k.transfer = (u32(b, d + 12) >> 16) & 0xff;
+  k.bytes_plane0 = u32(b, d + 20) & 0xff;
+  k.bit_length = ((u32(b, d + 28) >> 16) & 0xff) + 1;
+  k.channel_byte = u32(b, d + 28) >> 24;
+  // Key/value pairs: length, "key\0value", padded to 4 bytes.
+  for (std::size_t at = k.kvd_offset; at < k.kvd_offset + k.kvd_length;) {
+    const std::uint32_t length = u32(b, at);
+    const std::string entry = b.substr(at + 4, length);
+    const std::string key = entry.substr(0, entry.find('\0'));
+    if (key == "KTXorientation") k.orientation = std::string(entry.c_str() + key.size() + 1);
+    at += 4 + ((length + 3) / 4) * 4;
+  }
+  return k;
+}
+
+TEST_CASE("export ktx2: an independent reader finds the spec's header, descriptor and orientation, and the marker on +Y",
+          "[export]") {
+  const struct {
+    const char* format;
+    std::uint32_t vk_format, bytes;
+  } cases[] = {{"r16f", 76, 2}, {"r32f", 100, 4}, {"r8", 9, 1}};
+  for (const auto& c : cases) {
+    INFO(c.format);
+    Exported e("ktx2", std::string(" --format ") + c.format);
+    REQUIRE(e.run.exit_code == 0);
+    const std::string b = test::read_file(e.out.path / "cover_cube.ktx2");
+    const Ktx2 k = read_ktx2(b);
+    CHECK(k.vk_format == c.vk_format);
+    CHECK(k.type_size == c.bytes);
+    CHECK(k.width == std::uint32_t(kSize));
+    CHECK(k.height == std::uint32_t(kSize));
+    CHECK(k.depth == 0);
+    CHECK(k.layers == 0);
+    CHECK(k.faces == 6);
+    CHECK(k.levels == 1);
+    CHECK(k.supercompression == 0);
+    CHECK(k.color_model == 1);  // RGBSDA
+    CHECK(k.primaries == 1);    // BT.709
+    CHECK(k.transfer == 1);     // linear: coverage is data
+    CHECK(k.bytes_plane0 == c.bytes);
+    CHECK(k.bit_length == 8 * c.bytes);
+    CHECK(k.channel_byte == (c.bytes == 1 ? 0x00u : 0xC0u));  // red; float and signed for SFLOAT
+    CHECK(k.orientation == "rd");
+    CHECK(k.level_offset % 4 == 0);
+    REQUIRE(k.level_length == 6ull * kSize * kSize * c.bytes);
+    REQUIRE(k.level_offset + k.level_length <= b.size());
+    // Faces in GL order, rows without padding: the marker on face 2.
+    std::vector<float> texels(6 * kSize * kSize);
+    for (std::size_t i = 0; i < texels.size(); ++i) {
+      const std::size_t at = k.level_offset + i * c.bytes;
+      if (c.bytes == 1) texels[i] = (unsigned char)b[at] / 255.0f;
+      else if (c.bytes == 2) texels[i] = from_half(std::uint16_t((unsigned char)b[at] | ((unsigned char)b[at + 1] << 8)));
+      else {
+        const std::uint32_t bits = u32(b, at);
+        std::memcpy(&texels[i], &bits, 4);
+      }
+    }
+    for (int f = 0; f < 6; ++f) {
+      const auto centroid = bright_centroid(texels, kSize, 1, 0, 0, f * kSize, kSize, kSize);
+      INFO("face " << f);
+      if (f != 2) {
+        CHECK(centroid.count == 0);
+        continue;
+      }
+      CHECK(centroid.x == Approx(marker_on_face()[0]).margin(kMarkerPixels));
+      CHECK(centroid.y == Approx(marker_on_face()[1]).margin(kMarkerPixels));
+    }
+  }
+}
+
+TEST_CASE("export refuses a ktx2 format outside r16f, r32f, r8", "[export][cli]") {
+  Exported e("ktx2", " --format bc7");
+  CHECK(e.run.exit_code == 2);
+  CHECK_THAT(e.run.output, Catch::Contains("--format") && Catch::Contains("bc7"));
+}
+
+// The fields of a DDS file that place its texels (Microsoft's "DDS_HEADER", "DDS_PIXELFORMAT"
+// and "DDS_HEADER_DXT10" reference pages), read at their documented byte offsets.
+TEST_CASE("export dds: legacy RGBA8 and DX10 float cube headers as documented; OpenImageIO finds the marker in the RGBA8 cube",
+          "[export]") {
+  Exported e("dds");
+  REQUIRE(e.run.exit_code == 0);
+  const struct {
+    const char* name;
+    std::uint32_t dxgi, bytes;  // dxgi 0: the legacy header
+  } cases[] = {{"cover_cube_rgba8.dds", 0, 4}, {"cover_cube_r16f.dds", 54, 2}, {"cover_cube_r32f.dds", 41, 4}};
+  for (const auto& c : cases) {
+    INFO(c.name);
+    const std::string b = test::read_file(e.out.path / c.name);
+    REQUIRE(b.size() > 128);
+    CHECK(b.compare(0, 4, "DDS ") == 0);
+    CHECK(u32(b, 4) == 124);                      // dwSize
+    CHECK(u32(b, 12) == std::uint32_t(kSize));    // dwHeight
+    CHECK(u32(b, 16) == std::uint32_t(kSize));    // dwWidth
+    CHECK(u32(b, 20) == kSize * c.bytes);         // dwPitchOrLinearSize: bytes per row
+    CHECK(u32(b, 76) == 32);                      // ddspf.dwSize
+    CHECK((u32(b, 108) & 0x1008u) == 0x1008u);    // dwCaps: TEXTURE | COMPLEX
+    CHECK(u32(b, 112) == 0xFE00u);                // dwCaps2: CUBEMAP and all six faces
+    std::size_t data = 128;
+    if (c.dxgi == 0) {
+      CHECK(u32(b, 80) == 0x41u);  // DDPF_RGB | DDPF_ALPHAPIXELS
+      CHECK(u32(b, 88) == 32);     // dwRGBBitCount
+      CHECK(u32(b, 92) == 0x000000ffu);
+      CHECK(u32(b, 104) == 0xff000000u);
+    } else {
+      CHECK(u32(b, 80) == 0x4u);  // DDPF_FOURCC
+      CHECK(b.compare(84, 4, "DX10") == 0);
+      CHECK(u32(b, 128) == c.dxgi);
+      CHECK(u32(b, 132) == 3);    // D3D10_RESOURCE_DIMENSION_TEXTURE2D
+      CHECK(u32(b, 136) == 0x4);  // DDS_RESOURCE_MISC_TEXTURECUBE
+      CHECK(u32(b, 140) == 1);    // one cube
+      data = 148;
+    }
+    CHECK(b.size() == data + 6ull * kSize * kSize * c.bytes);
+  }
+  // OpenImageIO 2.4 reads the legacy RGBA8 cube as an N x 6N image of the faces in order; the
+  // marker must be on the third face (+Y), where the GL table puts it.
+  const auto image = io::read_image(e.out.path / "cover_cube_rgba8.dds");
+  REQUIRE(image.width == kSize);
+  REQUIRE(image.height == 6 * kSize);
+  REQUIRE(image.channels == 4);
+  for (int channel = 0; channel < 4; ++channel)
+    for (int f = 0; f < 6; ++f) {
+      INFO("channel " << channel << " face " << f);
+      const auto centroid = bright_centroid(image.pixels, kSize, 4, channel, 0, f * kSize, kSize, kSize);
+      if (f != 2) {
+        CHECK(centroid.count == 0);
+        continue;
+      }
+      CHECK(centroid.x == Approx(marker_on_face()[0]).margin(kMarkerPixels));
+      CHECK(centroid.y == Approx(marker_on_face()[1]).margin(kMarkerPixels));
+    }
+}
+
+TEST_CASE("export celestia: an add-on folder with a white RGBA map, coverage in alpha, prime meridian centred, and CloudMap",
+          "[export]") {
+  Exported e("celestia", " --name marker_test");
+  REQUIRE(e.run.exit_code == 0);
+  const auto folder = e.out.path / "extras" / "marker_test";
+  const std::string ssc = test::read_file(folder / "marker_test.ssc");
+  CHECK_THAT(ssc, Catch::Contains("Modify \"Earth\" \"Sol\"") && Catch::Contains("CloudMap \"marker_test.png\""));
+  const auto png = folder / "textures" / "hires" / "marker_test.png";
+  // Read as stored: PNG alpha is unassociated, and OpenImageIO would premultiply the colour.
+  OIIO::ImageSpec config;
+  config.attribute("oiio:UnassociatedAlpha", 1);
+  auto in = OIIO::ImageInput::open(png.string(), &config);
+  REQUIRE(in);
+  io::ImageData image{in->spec().width, in->spec().height, in->spec().nchannels, {}};
+  image.pixels.resize(std::size_t(image.width) * image.height * image.channels);
+  REQUIRE(in->read_image(0, 0, 0, image.channels, OIIO::TypeDesc::FLOAT, image.pixels.data()));
+  in->close();
+  REQUIRE(image.channels == 4);
+  REQUIRE(image.width == 4 * kSize);
+  REQUIRE(image.height == 2 * kSize);
+  for (std::size_t i = 0; i < image.pixels.size(); i += 4) {
+    if (image.pixels[i] != 1.0f || image.pixels[i + 1] != 1.0f || image.pixels[i + 2] != 1.0f) FAIL("not white at " << i / 4);
+  }
+  // Celestia's cloud maps have longitude 0 at the centre column and -180 at the left edge.
+  const auto c = bright_centroid(image.pixels, image.width, 4, 3, 0, 0, image.width, image.height);
+  REQUIRE(c.count > 0);
+  CHECK(c.x == Approx(marker_on_equirect(image.width, image.height)[0]).margin(kMarkerPixels));
+  CHECK(c.y == Approx(marker_on_equirect(image.width, image.height)[1]).margin(kMarkerPixels));
+  for (const auto& type : png_chunks(test::read_file(png))) CHECK(type != "gAMA");
+  CHECK(std::filesystem::exists(e.out.path / "README.txt"));
+  Exported bad("celestia", " --name ../x");
+  CHECK(bad.run.exit_code == 2);
+  CHECK_THAT(bad.run.output, Catch::Contains("--name"));
+  CHECK_FALSE(std::filesystem::exists(bad.out.path / "README.txt"));  // the set appears whole or not at all
+}
+
+TEST_CASE("export exr-cube: an N x 6N envmap=cube strip with the +Y face flipped top-bottom, as OpenEXR's layout wants",
+          "[export]") {
+  Exported e("exr-cube");
+  REQUIRE(e.run.exit_code == 0);
+  const auto path = e.out.path / "cover_envcube.exr";
+  auto in = OIIO::ImageInput::open(path.string());
+  REQUIRE(in);
+  // OpenImageIO reports the header's envmap = cube as this texture format.
+  CHECK(in->spec().get_string_attribute("textureformat") == "CubeFace Environment");
+  in->close();
+  const auto image = io::read_image(path);
+  REQUIRE(image.width == kSize);
+  REQUIRE(image.height == 6 * kSize);
+  for (int f = 0; f < 6; ++f) {
+    INFO("face " << f);
+    const auto centroid = bright_centroid(image.pixels, kSize, image.channels, 0, 0, f * kSize, kSize, kSize);
+    if (f != 2) {
+      CHECK(centroid.count == 0);
+      continue;
+    }
+    // The Y faces are mirrored top-bottom relative to the GL face (REFERENCE.md, OpenEXR cube).
+    CHECK(centroid.x == Approx(marker_on_face()[0]).margin(kMarkerPixels));
+    CHECK(centroid.y == Approx(kSize - 1 - marker_on_face()[1]).margin(kMarkerPixels));
+  }
+}
+
+TEST_CASE("every export preset writes a README.txt naming the preset beside its files", "[export]") {
+  for (const auto& preset : io::export_presets()) {
+    INFO(preset.name);
+    Exported e(preset.name);
+    REQUIRE(e.run.exit_code == 0);
+    const std::string readme = test::read_file(e.out.path / "README.txt");
+    CHECK_THAT(readme, Catch::Contains("preset " + preset.name) && Catch::Contains("linear"));
+    // The command prints each file it wrote; every one exists.
+    std::istringstream lines(e.run.output);
+    int files = 0;
+    for (std::string line; std::getline(lines, line);) {
+      CHECK(std::filesystem::is_regular_file(line));
+      ++files;
+    }
+    CHECK(files >= 2);
+  }
+}
+
+TEST_CASE("half_from_float rounds to the nearest binary16, ties to even, through subnormals and overflow", "[export]") {
+  // Exact values and their bit patterns (IEEE 754-2008, binary16).
+  CHECK(io::half_from_float(0.0f) == 0x0000);
+  CHECK(io::half_from_float(-0.0f) == 0x8000);
+  CHECK(io::half_from_float(1.0f) == 0x3C00);
+  CHECK(io::half_from_float(0.5f) == 0x3800);
+  CHECK(io::half_from_float(65504.0f) == 0x7BFF);                 // largest finite half
+  CHECK(io::half_from_float(std::ldexp(1.0f, -24)) == 0x0001);    // smallest subnormal
+  CHECK(io::half_from_float(std::ldexp(1.0f, -14)) == 0x0400);    // smallest normal
+  // Between 1 and the next half (1 + 2^-10): below, at and above the midpoint.
+  CHECK(io::half_from_float(1.0f + std::ldexp(1.0f, -12)) == 0x3C00);
+  CHECK(io::half_from_float(1.0f + std::ldexp(1.0f, -11)) == 0x3C00);  // tie to even (mantissa 0)
+  CHECK(io::half_from_float(1.0f + 3 * std::ldexp(1.0f, -11)) == 0x3C02);  // tie to even (mantissa 2)
+  CHECK(io::half_from_float(1.0f + std::ldexp(1.0f, -11) + std::ldexp(1.0f, -20)) == 0x3C01);
+  CHECK(io::half_from_float(std::ldexp(1.0f, -25)) == 0x0000);  // half the smallest subnormal: tie to even 0
+  CHECK(io::half_from_float(1e6f) == 0x7C00);                    // overflow to infinity
+  // Every value the reader decodes maps back to itself.
+  for (std::uint32_t h = 0; h < 0x7C00; ++h) {
+    if (io::half_from_float(from_half(std::uint16_t(h))) != h) FAIL("round trip of " << h);
+  }
+}
+
+}  // namespace nephele
