@@ -177,8 +177,8 @@ TEST_CASE("export equirect: the marker at its longitude and geodetic latitude in
     const auto c = bright_centroid(image.pixels, image.width, image.channels, 0, 0, 0, image.width, image.height);
     const auto expected = marker_on_equirect(image.width, image.height);
     REQUIRE(c.count > 0);
-    CHECK(c.x == Approx(expected[0]).margin(kMarkerPixels));
-    CHECK(c.y == Approx(expected[1]).margin(kMarkerPixels));
+    CHECK(c.x == Approx(expected[0]).epsilon(0).margin(kMarkerPixels));
+    CHECK(c.y == Approx(expected[1]).epsilon(0).margin(kMarkerPixels));
   }
   // Coverage is data: a gAMA, sRGB or iCCP chunk would make viewers and engines re-encode it.
   for (const char* name : {"cover_equirect_16.png", "cover_equirect_8.png"}) {
@@ -208,8 +208,8 @@ TEST_CASE("export gl-faces: the marker on the +Y face only, at the texel of the 
       continue;
     }
     REQUIRE(c.count > 0);
-    CHECK(c.x == Approx(marker_on_face()[0]).margin(kMarkerPixels));
-    CHECK(c.y == Approx(marker_on_face()[1]).margin(kMarkerPixels));
+    CHECK(c.x == Approx(marker_on_face()[0]).epsilon(0).margin(kMarkerPixels));
+    CHECK(c.y == Approx(marker_on_face()[1]).epsilon(0).margin(kMarkerPixels));
   }
 }
 
@@ -305,8 +305,8 @@ TEST_CASE("export ktx2: an independent reader finds the spec's header, descripto
         CHECK(centroid.count == 0);
         continue;
       }
-      CHECK(centroid.x == Approx(marker_on_face()[0]).margin(kMarkerPixels));
-      CHECK(centroid.y == Approx(marker_on_face()[1]).margin(kMarkerPixels));
+      CHECK(centroid.x == Approx(marker_on_face()[0]).epsilon(0).margin(kMarkerPixels));
+      CHECK(centroid.y == Approx(marker_on_face()[1]).epsilon(0).margin(kMarkerPixels));
     }
   }
 }
@@ -370,8 +370,8 @@ TEST_CASE("export dds: legacy RGBA8 and DX10 float cube headers as documented; O
         CHECK(centroid.count == 0);
         continue;
       }
-      CHECK(centroid.x == Approx(marker_on_face()[0]).margin(kMarkerPixels));
-      CHECK(centroid.y == Approx(marker_on_face()[1]).margin(kMarkerPixels));
+      CHECK(centroid.x == Approx(marker_on_face()[0]).epsilon(0).margin(kMarkerPixels));
+      CHECK(centroid.y == Approx(marker_on_face()[1]).epsilon(0).margin(kMarkerPixels));
     }
 }
 
@@ -401,8 +401,8 @@ TEST_CASE("export celestia: an add-on folder with a white RGBA map, coverage in 
   // Celestia's cloud maps have longitude 0 at the centre column and -180 at the left edge.
   const auto c = bright_centroid(image.pixels, image.width, 4, 3, 0, 0, image.width, image.height);
   REQUIRE(c.count > 0);
-  CHECK(c.x == Approx(marker_on_equirect(image.width, image.height)[0]).margin(kMarkerPixels));
-  CHECK(c.y == Approx(marker_on_equirect(image.width, image.height)[1]).margin(kMarkerPixels));
+  CHECK(c.x == Approx(marker_on_equirect(image.width, image.height)[0]).epsilon(0).margin(kMarkerPixels));
+  CHECK(c.y == Approx(marker_on_equirect(image.width, image.height)[1]).epsilon(0).margin(kMarkerPixels));
   for (const auto& type : png_chunks(test::read_file(png))) CHECK(type != "gAMA");
   CHECK(std::filesystem::exists(e.out.path / "README.txt"));
   Exported bad("celestia", " --name ../x");
@@ -432,8 +432,8 @@ TEST_CASE("export exr-cube: an N x 6N envmap=cube strip with the +Y face flipped
       continue;
     }
     // The Y faces are mirrored top-bottom relative to the GL face (REFERENCE.md, OpenEXR cube).
-    CHECK(centroid.x == Approx(marker_on_face()[0]).margin(kMarkerPixels));
-    CHECK(centroid.y == Approx(kSize - 1 - marker_on_face()[1]).margin(kMarkerPixels));
+    CHECK(centroid.x == Approx(marker_on_face()[0]).epsilon(0).margin(kMarkerPixels));
+    CHECK(centroid.y == Approx(kSize - 1 - marker_on_face()[1]).epsilon(0).margin(kMarkerPixels));
   }
 }
 
