@@ -36,17 +36,20 @@ T lerp(const T& a, const T& b, float w) {
   return a + w * (b - a);
 }
 
+// Trilinear interpolation of at(i, j, k) between the taps of each axis: along x, then y, then
+// z, in the order GL_LINEAR weights them.
+template <class At>
+auto trilinear(const At& at, const Taps& tx, const Taps& ty, const Taps& tz) {
+  auto plane = [&](int k) {
+    return lerp(lerp(at(tx.i0, ty.i0, k), at(tx.i1, ty.i0, k), tx.weight),
+                lerp(at(tx.i0, ty.i1, k), at(tx.i1, ty.i1, k), tx.weight), ty.weight);
+  };
+  return lerp(plane(tz.i0), plane(tz.i1), tz.weight);
+}
+
 vec2 sample_level(const std::vector<vec2>& texels, int size, vec3 x) {
-  const Taps tx = repeat_taps(x.x, size), ty = repeat_taps(x.y, size), tz = repeat_taps(x.z, size);
   auto at = [&](int i, int j, int k) { return texels[(static_cast<size_t>(k) * size + j) * size + i]; };
-  vec2 planes[2];
-  for (int c = 0; c < 2; ++c) {
-    const int k = c == 0 ? tz.i0 : tz.i1;
-    const vec2 row0 = lerp(at(tx.i0, ty.i0, k), at(tx.i1, ty.i0, k), tx.weight);
-    const vec2 row1 = lerp(at(tx.i0, ty.i1, k), at(tx.i1, ty.i1, k), tx.weight);
-    planes[c] = lerp(row0, row1, ty.weight);
-  }
-  return lerp(planes[0], planes[1], tz.weight);
+  return trilinear(at, repeat_taps(x.x, size), repeat_taps(x.y, size), repeat_taps(x.z, size));
 }
 
 }  // namespace
@@ -73,16 +76,8 @@ float LayeredSource::sample(vec2 uv, int layer) const {
 }
 
 float DensitySource::sample(vec3 uvw) const {
-  const Taps tx = clamp_taps(uvw.x, size), ty = clamp_taps(uvw.y, size), tz = clamp_taps(uvw.z, size);
   auto at = [&](int i, int j, int k) { return values[(static_cast<size_t>(k) * size + j) * size + i]; };
-  float planes[2];
-  for (int c = 0; c < 2; ++c) {
-    const int k = c == 0 ? tz.i0 : tz.i1;
-    const float row0 = lerp(at(tx.i0, ty.i0, k), at(tx.i1, ty.i0, k), tx.weight);
-    const float row1 = lerp(at(tx.i0, ty.i1, k), at(tx.i1, ty.i1, k), tx.weight);
-    planes[c] = lerp(row0, row1, ty.weight);
-  }
-  return lerp(planes[0], planes[1], tz.weight);
+  return trilinear(at, clamp_taps(uvw.x, size), clamp_taps(uvw.y, size), clamp_taps(uvw.z, size));
 }
 
 }  // namespace nephele::glsl
