@@ -27,6 +27,20 @@ gpu::Texture upload(const std::vector<float>& densities, int size) {
   return t;
 }
 
+// The GPU calibration of `densities` at targets 0.1, 0.5 and 0.9 gives the CPU's threshold, and
+// its fraction within the fixed-point sum's bound of the CPU's.
+void check_calibration_matches_cpu(const std::vector<float>& densities, int size) {
+  const gpu::Texture field = upload(densities, size);
+  const cover::GpuCalibration gpu_calibration(size);
+  for (double target : {0.1, 0.5, 0.9}) {
+    const auto cpu = cover::calibrate_coverage(densities, size, target);
+    const auto gpu = gpu_calibration.run(field, target);
+    INFO("target " << target);
+    CHECK(gpu.threshold == cpu.threshold);
+    CHECK(std::abs(gpu.achieved_fraction - cpu.achieved_fraction) <= gpu_calibration.weights().units().sum_error_bound());
+  }
+}
+
 }  // namespace
 
 TEST_CASE("texel weight units sum to the sphere within half a unit per texel", "[gpu-reduce]") {
@@ -98,15 +112,7 @@ TEST_CASE("fields with many equal densities are calibrated like the CPU", "[gpu-
   // Few distinct values: whole fine bins of equal densities, listed and sorted.
   const int size = 40;
   const auto densities = random_densities(size, 3, 5);
-  const gpu::Texture field = upload(densities, size);
-  const cover::GpuCalibration gpu_calibration(size);
-  for (double target : {0.1, 0.5, 0.9}) {
-    const auto cpu = cover::calibrate_coverage(densities, size, target);
-    const auto gpu = gpu_calibration.run(field, target);
-    INFO("target " << target);
-    CHECK(gpu.threshold == cpu.threshold);
-    CHECK(std::abs(gpu.achieved_fraction - cpu.achieved_fraction) <= gpu_calibration.weights().units().sum_error_bound());
-  }
+  check_calibration_matches_cpu(densities, size);
 }
 
 TEST_CASE("a flat field too large to list is all cloudy or all clear, whichever is nearer the target", "[gpu-reduce][extreme]") {
@@ -215,13 +221,5 @@ TEST_CASE("a crowded histogram bin is refined into fine bins and still gives the
   std::vector<float> densities(6 * size * size);
   for (auto& d : densities) d = u(rng);
   densities[12345] = 1.0f;
-  const gpu::Texture field = upload(densities, size);
-  const cover::GpuCalibration gpu_calibration(size);
-  for (double target : {0.1, 0.5, 0.9}) {
-    const auto cpu = cover::calibrate_coverage(densities, size, target);
-    const auto gpu = gpu_calibration.run(field, target);
-    INFO("target " << target);
-    CHECK(gpu.threshold == cpu.threshold);
-    CHECK(std::abs(gpu.achieved_fraction - cpu.achieved_fraction) <= gpu_calibration.weights().units().sum_error_bound());
-  }
+  check_calibration_matches_cpu(densities, size);
 }
