@@ -286,3 +286,21 @@ TEST_CASE("a noise texture over the driver's 3D limit is refused naming the opti
   CHECK(by_width.exit_code == 2);
   CHECK_THAT(by_width.output, Catch::StartsWith("nephele: --width: " + size));
 }
+
+TEST_CASE("render --at takes three strict decimals, naming the part, within the scene's ranges", "[bad-input][cli]") {
+  for (const auto& [at, part] : std::vector<std::pair<std::string, std::string>>{
+           {"0x10,7,800", "--at (latitude): "},  // sscanf's %lf read hex as 16 degrees
+           {"46.9, 7.4,800", "--at (longitude): "},
+           {"46.9,7.4,1e5", "--at: height "},  // in form, out of the table's range
+           {"46.9,7.4", "--at: "},
+           {"46.9,7.4,800,1", "--at: "}}) {
+    const auto r = test::run("render --at '" + at + "' --out /tmp/nephele_never.png");
+    INFO(at << ": " << r.output);
+    CHECK(r.exit_code == 2);
+    CHECK_THAT(r.output, Catch::StartsWith("nephele: " + part));
+  }
+  test::TemporaryDirectory out(true);
+  const auto ok = test::run("render --at 46.9,7.44,860 --size 8x4 --view-steps 2 --light-steps 1 --quiet --out " +
+                            (out.path / "a.png").string());
+  CHECK(ok.exit_code == 0);
+}

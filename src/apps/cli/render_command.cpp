@@ -1,8 +1,8 @@
 // nephele render: cloud layers seen from the ground, from weather files or the global cover.
+#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 #include <algorithm>
-#include <cstdio>
 #include <sstream>
 
 #include "apps/cli/commands.hpp"
@@ -14,6 +14,7 @@
 #include "apps/cli/options.hpp"
 #include "core/progress.hpp"
 #include "params/table.hpp"
+#include "params/values.hpp"
 #include "gpu/egl_context.hpp"
 #include "regional/scene.hpp"
 #include "regional/weather.hpp"
@@ -25,15 +26,20 @@
 namespace nephele::cli {
 namespace {
 
+// LAT,LON,HEIGHT, each a strict decimal; their ranges are checked with the scene's.
 void parse_position(const std::string& text, regional::Scene& scene) {
-  double lat = 0, lon = 0, height = 0;
-  int consumed = 0;
-  if (std::sscanf(text.c_str(), "%lf,%lf,%lf%n", &lat, &lon, &height, &consumed) != 3 ||
-      consumed != static_cast<int>(text.size()))
-    throw UsageError("--at: '" + text + "' is not LAT,LON,HEIGHT (degrees, degrees, metres)");
-  scene.latitude_deg = lat;
-  scene.longitude_deg = lon;
-  scene.height_m = height;
+  const std::string form = "LAT,LON,HEIGHT (degrees, degrees, metres)";
+  const auto first = text.find(','), second = first == std::string::npos ? first : text.find(',', first + 1);
+  if (second == std::string::npos || text.find(',', second + 1) != std::string::npos)
+    throw UsageError("--at", text, form, "is not three numbers");
+  auto number = [&](const std::string& part, const char* name) {
+    if (!params::is_decimal_number(part, false))
+      throw UsageError(std::string("--at (") + name + ")", part, form, "is not a number");
+    return std::strtod(part.c_str(), nullptr);
+  };
+  scene.latitude_deg = number(text.substr(0, first), "latitude");
+  scene.longitude_deg = number(text.substr(first + 1, second - first - 1), "longitude");
+  scene.height_m = number(text.substr(second + 1), "height");
   scene.view.clear();
 }
 
