@@ -274,6 +274,16 @@ TEST_CASE("bench --sizes takes strict integers only", "[bad-input][cli]") {
   }
 }
 
+TEST_CASE("report's lists refuse an empty item like bench's do", "[bad-input][cli]") {
+  // std::getline dropped the empty item after a trailing comma, so "16," passed as "16".
+  for (const char* option : {"--sizes 16,", "--steps 10,,50", "--tolerances 1e-3,"}) {
+    const Run r = run_without_gl(std::string("report --quick --no-render --out /tmp/nephele_never ") + option);
+    INFO(option << "\n" << r.output);
+    CHECK(r.exit_code == 2);
+    CHECK_THAT(r.output, Catch::StartsWith(std::string("nephele: ") + std::string(option).substr(0, std::string(option).find(' ')) + ": "));
+  }
+}
+
 TEST_CASE("a noise texture over the driver's 3D limit is refused naming the option the user typed", "[bad-input][cli]") {
   test::test_context();
   const int max_3d = gpu::max_3d_texture_size();

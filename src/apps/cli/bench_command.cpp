@@ -7,33 +7,9 @@
 #include "apps/cli/noise_options.hpp"
 #include "apps/cli/cover_options.hpp"
 #include "cover/cover_limits.hpp"
-#include "core/integer_text.hpp"
 #include "studies/benchmarks.hpp"
 
 namespace nephele::cli {
-namespace {
-
-// Strict integers: parse_number took "1.5" (then truncated to 1), "0x10" and " 16".
-std::vector<int> parse_sizes(const std::string& text) {
-  const std::string allowed = "give a comma-separated list of integers in 1..16384, e.g. 256,512";
-  std::vector<int> sizes;
-  size_t start = 0;
-  while (true) {
-    const size_t comma = text.find(',', start);
-    const std::string item = text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
-    const auto value = core::parse_integer(item);
-    if (!value) throw UsageError("--sizes: '" + item + "' is not an integer (" + allowed + ")");
-    if (*value < 1 || *value > 16384)
-      throw UsageError("--sizes: " + item + " is out of range (" + allowed + ")");
-    sizes.push_back(static_cast<int>(*value));
-    if (comma == std::string::npos) break;
-    start = comma + 1;
-  }
-  return sizes;
-}
-
-}  // namespace
-
 int bench_cover(const std::vector<std::string>& arguments) {
   cover::CoverParameters parameters;
   std::string sizes_text(params::run::bench_cover_sizes.default_text);
@@ -50,7 +26,7 @@ int bench_cover(const std::vector<std::string>& arguments) {
     return exit_ok;
   }
   validate_cover_parameters(parameters);
-  const std::vector<int> sizes = parse_sizes(sizes_text);
+  const std::vector<int> sizes = parse_number_list<int>("--sizes", sizes_text, 1, 16384, true);
   gpu::EglContext context;
   for (int s : sizes) cover::check_cover_fits(context, s);
   std::printf("device: %s (%s)\n", context.info().renderer.c_str(), context.info().version.c_str());

@@ -62,4 +62,19 @@ class Options {
 double parse_number(const std::string& option, const std::string& text, double min, double max,
                     bool integer_only = false);
 
+// A comma-separated list of such numbers; an empty item ("16,", "16,,32") is refused too.
+template <class T>
+std::vector<T> parse_number_list(const std::string& option, const std::string& text, double min, double max,
+                                 bool integer_only) {
+  std::vector<T> values;
+  std::size_t start = 0;
+  while (true) {
+    const std::size_t comma = text.find(',', start);
+    const std::string item = text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+    values.push_back(static_cast<T>(parse_number(option, item, min, max, integer_only)));
+    if (comma == std::string::npos) return values;
+    start = comma + 1;
+  }
+}
+
 }  // namespace nephele::cli

@@ -18,24 +18,6 @@
 #include "studies/render_report.hpp"
 
 namespace nephele::cli {
-namespace {
-
-template <class T>
-std::vector<T> parse_list(const std::string& option, const std::string& text, double min, double max, bool integers) {
-  std::vector<T> values;
-  std::stringstream stream(text);
-  std::string item;
-  const std::string allowed = "a comma-separated list of " + std::string(integers ? "integers" : "numbers") + " in " +
-                              std::to_string(min) + ".." + std::to_string(max);
-  while (std::getline(stream, item, ',')) {
-    const double v = parse_number(option, item, min, max, integers);
-    values.push_back(static_cast<T>(v));
-  }
-  if (values.empty()) throw UsageError(option, text, allowed, "is empty");
-  return values;
-}
-
-}  // namespace
 
 int run_report(const std::vector<std::string>& arguments) {
   cover::CoverParameters parameters;
@@ -73,9 +55,9 @@ int run_report(const std::vector<std::string>& arguments) {
   validate_cover_parameters(parameters);
   studies::SweepOptions sweep =
       quick ? studies::SweepOptions::quick(parameters) : studies::SweepOptions::full(parameters);
-  if (!sizes.empty()) sweep.sizes = parse_list<int>("--sizes", sizes, 1, 16384, true);
-  if (!steps.empty()) sweep.steps = parse_list<int>("--steps", steps, 1, 100000, true);
-  if (!tolerances.empty()) sweep.tolerances = parse_list<float>("--tolerances", tolerances, 1e-7, 1.0, false);
+  if (!sizes.empty()) sweep.sizes = parse_number_list<int>("--sizes", sizes, 1, 16384, true);
+  if (!steps.empty()) sweep.steps = parse_number_list<int>("--steps", steps, 1, 100000, true);
+  if (!tolerances.empty()) sweep.tolerances = parse_number_list<float>("--tolerances", tolerances, 1e-7, 1.0, false);
   if (samples > 0) sweep.sample_grid = samples;
   if (repeat > 0) sweep.repeat = repeat;
   if (budget_ms > 0) sweep.budget_ms = budget_ms;
