@@ -13,6 +13,8 @@ const std::vector<const Parameter*>& all() {
       &scene::pitch, &scene::fov, &scene::time, &scene::size, &scene::panorama, &scene::weather,
       &scene::view_steps, &scene::light_steps, &scene::sky_steps, &scene::exposure, &scene::seed,
       &scene::cover_size, &scene::outputs, &scene::description, &scene::scene_path, &scene::out,
+      &scene::lat, &scene::lon, &scene::altitude_km, &scene::cover, &scene::earth_texture, &scene::night_texture,
+      &scene::planet_radius_km, &scene::cloud_base_km, &scene::cloud_thickness_km,
       &noise_texture::preset, &noise_texture::type, &noise_texture::width, &noise_texture::height,
       &noise_texture::depth, &noise_texture::size, &noise_texture::cells, &noise_texture::octaves,
       &noise_texture::lacunarity, &noise_texture::gain, &noise_texture::worley_cells,

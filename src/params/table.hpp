@@ -37,7 +37,7 @@ inline constexpr Parameter noise_offset = real("noise_offset", 0.0, -1e9, 1e9, "
 
 namespace scene {
 constexpr unsigned render_and_scene = render | scene_file;
-inline constexpr Parameter view = text("view", "gurten", "gurten|bantiger", "viewpoint: gurten (towards Solothurn) or bantiger (towards Fribourg)", render_and_scene);
+inline constexpr Parameter view = text("view", "gurten", "gurten|bantiger|orbit", "viewpoint: gurten (towards Solothurn), bantiger (towards Fribourg), or orbit (the planet from --lat, --lon, --altitude-km; docs/orbit_view.md)", render_and_scene);
 inline constexpr Parameter at = text("at", "", "LAT,LON,HEIGHT", "camera position (WGS84 degrees, degrees, metres above the ellipsoid) instead of a view", render);
 inline constexpr Parameter latitude = real("latitude", 0, -90, 90, "degrees", "camera latitude (scene key at.latitude)", scene_file);
 inline constexpr Parameter longitude = real("longitude", 0, -180, 180, "degrees", "camera longitude (scene key at.longitude)", scene_file);
@@ -59,6 +59,16 @@ inline constexpr Parameter outputs = list("outputs", "NAME.png|NAME.exr", "file 
 inline constexpr Parameter description = text("description", "", "", "free text for people", scene_file);
 inline constexpr Parameter scene_path = text("scene", "", "FILE", "scene file (JSON, see scenes/); options override it", render);
 inline constexpr Parameter out = text("out", "", "FILE.png|FILE.exr|DIR", "output file (.png or .exr), or a directory with --scene", render);
+// The orbit view (render --view orbit; docs/orbit_view.md).
+inline constexpr Parameter lat = real("lat", 46.9, -90, 90, "degrees", "orbit view: latitude below the camera", render);
+inline constexpr Parameter lon = real("lon", 7.4, -180, 180, "degrees", "orbit view: longitude below the camera", render);
+inline constexpr Parameter altitude_km = real("altitude_km", 2000, 0.001, 40000, "km", "orbit view: camera altitude above the planet's sphere (1 m to 40000 km)", render);
+inline constexpr Parameter cover = text("cover", "", "DIR", "orbit view: cover directory written by nephele generate (default: a cover generated with --seed, 128 texels per face)", render);
+inline constexpr Parameter earth_texture = text("earth_texture", "", "FILE", "orbit view: equirect day map, longitude -180 at the left, north up (default /usr/share/xplanet/images/earth.jpg, else procedural)", render);
+inline constexpr Parameter night_texture = text("night_texture", "", "FILE", "orbit view: equirect city-light map (default /usr/share/xplanet/images/night.jpg with the default day map)", render);
+inline constexpr Parameter planet_radius_km = real("planet_radius_km", 6371, 1, 1e6, "km", "orbit view: radius of the planet's sphere", render);
+inline constexpr Parameter cloud_base_km = real("cloud_base_km", 2, 0, 90, "km", "orbit view: altitude of the cloud shell's bottom", render);
+inline constexpr Parameter cloud_thickness_km = real("cloud_thickness_km", 8, 0.01, 90, "km", "orbit view: thickness of the cloud shell (base + thickness below 100 km)", render);
 }  // namespace scene
 
 namespace noise_texture {

@@ -22,6 +22,7 @@
 #include "io/scene_files.hpp"
 #include "io/weather_files.hpp"
 #include "render/scene_renderer.hpp"
+#include "apps/cli/orbit_render.hpp"
 
 namespace nephele::cli {
 namespace {
@@ -78,10 +79,31 @@ int run_render(const std::vector<std::string>& arguments) {
   bool no_cache = false;
   options.bind(params::run::no_cache, &no_cache);
   options.bind(params::run::verbose, &verbose);
+  OrbitOptions orbit;
+  bind_orbit_options(options, orbit);
   if (!options.parse(arguments)) {
     std::cout << options.help();
     return exit_ok;
   }
+  if (view == "orbit") {
+    orbit.time = time;
+    orbit.size = size;
+    orbit.out = out;
+    orbit.seed = seed;
+    orbit.exposure = exposure;
+    orbit.verbose = verbose;
+    orbit.quiet = quiet;
+    if (options.given(s::heading)) orbit.heading = heading;
+    if (options.given(s::pitch)) orbit.pitch = pitch;
+    if (options.given(s::fov)) orbit.fov = fov;
+    for (const auto* ground_only : {&s::at, &s::scene_path, &s::panorama, &s::weather, &s::view_steps, &s::light_steps})
+      if (options.given(*ground_only))
+        throw UsageError(ground_only->option() + ": not taken by --view orbit (it belongs to the ground views)");
+    return run_orbit_render(orbit);
+  }
+  for (const auto* orbit_only : orbit_only_parameters())
+    if (options.given(*orbit_only))
+      throw UsageError(orbit_only->option() + ": only taken with --view orbit");
   // The keys set by options: their errors name the option the user typed, not a scene key.
   regional::KeyOptions typed;
   if (!scene_file.empty()) scene = io::read_scene_file(scene_file);

@@ -1,0 +1,163 @@
+#include "apps/cli/orbit_render.hpp"
+
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <stdexcept>
+
+#include "apps/cli/commands.hpp"
+#include "core/json.hpp"
+#include "core/progress.hpp"
+#include "core/time.hpp"
+#include "cover/global_cover.hpp"
+#include "gpu/egl_context.hpp"
+#include "gpu/pass_timer.hpp"
+#include "io/atomic_output.hpp"
+#include "io/image_files.hpp"
+#include "io/planet_textures.hpp"
+#include "params/table.hpp"
+#include "regional/scene.hpp"
+#include "render/orbit_renderer.hpp"
+#include "render/render_limits.hpp"
+
+namespace nephele::cli {
+
+namespace s = params::scene;
+
+void bind_orbit_options(Options& options, OrbitOptions& orbit) {
+  orbit.lat = s::lat.default_number;
+  orbit.lon = s::lon.default_number;
+  orbit.altitude_km = s::altitude_km.default_number;
+  orbit.planet_radius_km = s::planet_radius_km.default_number;
+  orbit.cloud_base_km = s::cloud_base_km.default_number;
+  orbit.cloud_thickness_km = s::cloud_thickness_km.default_number;
+  options.bind(s::lat, &orbit.lat);
+  options.bind(s::lon, &orbit.lon);
+  options.bind(s::altitude_km, &orbit.altitude_km);
+  options.bind(s::cover, &orbit.cover);
+  options.bind(s::earth_texture, &orbit.earth_texture);
+  options.bind(s::night_texture, &orbit.night_texture);
+  options.bind(s::planet_radius_km, &orbit.planet_radius_km);
+  options.bind(s::cloud_base_km, &orbit.cloud_base_km);
+  options.bind(s::cloud_thickness_km, &orbit.cloud_thickness_km);
+}
+
+const std::vector<const params::Parameter*>& orbit_only_parameters() {
+  static const std::vector<const params::Parameter*> list = {
+      &s::lat,           &s::lon,           &s::altitude_km,   &s::cover,
+      &s::earth_texture, &s::night_texture, &s::planet_radius_km, &s::cloud_base_km,
+      &s::cloud_thickness_km};
+  return list;
+}
+
+int run_orbit_render(const OrbitOptions& orbit) {
+  // Everything is checked before the context is made: bad input exits 2 at once.
+  if (orbit.cloud_base_km + orbit.cloud_thickness_km >= 100)
+    throw UsageError("--cloud-base-km + --cloud-thickness-km: " + std::to_string(orbit.cloud_base_km + orbit.cloud_thickness_km) +
+                     " km; the cloud shell must end below the atmosphere's top at 100 km");
+  if (orbit.out.empty()) throw UsageError("--out: give an output file (.png or .exr)");
+  const std::filesystem::path out(orbit.out);
+  const std::string extension = out.extension().string();
+  if (extension != ".png" && extension != ".exr") throw UsageError("--out: '" + orbit.out + "' must end in .png or .exr");
+  std::filesystem::path directory = out.parent_path();
+  if (directory.empty()) directory = ".";
+  if (std::filesystem::exists(directory) && !std::filesystem::is_directory(directory))
+    throw UsageError("--out: '" + directory.string() + "' is not a directory");
+
+  render::OrbitCamera camera;
+  camera.latitude_deg = orbit.lat;
+  camera.longitude_deg = orbit.lon;
+  camera.altitude_m = orbit.altitude_km * 1000.0;
+  camera.width = params::size_part(s::size.default_text, false);
+  camera.height = params::size_part(s::size.default_text, true);
+  if (!orbit.size.empty()) regional::parse_size(orbit.size, camera.width, camera.height, "--size");
+  camera.heading_deg = orbit.heading.value_or(0.0);
+  camera.pitch_deg = orbit.pitch.value_or(-90.0);
+  const double radius_m = orbit.planet_radius_km * 1000.0;
+  camera.fov_deg = orbit.fov ? *orbit.fov : render::framing_fov_deg(camera.altitude_m, radius_m, camera.width, camera.height);
+  const std::string time_text = orbit.time.empty() ? std::string(s::time.default_text) : orbit.time;
+  double unix_seconds = 0;
+  try {
+    unix_seconds = core::parse_utc_time(time_text);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(std::string("--time: ") + e.what());
+  }
+  render::OrbitSettings settings;
+  settings.planet_radius_m = radius_m;
+  settings.cloud_base_m = orbit.cloud_base_km * 1000.0;
+  settings.cloud_thickness_m = orbit.cloud_thickness_km * 1000.0;
+
+  // Files named by options are read before the context: a missing one exits 2 quickly.
+  io::PlanetTextures textures = io::read_planet_textures(orbit.earth_texture, orbit.night_texture);
+  for (const auto& w : textures.warnings) std::cerr << "warning: " << w << "\n";
+  std::optional<render::CoverCube> cover;
+  if (!orbit.cover.empty()) {
+    if (!std::filesystem::is_directory(orbit.cover))
+      throw UsageError("--cover", orbit.cover, "a directory written by nephele generate", "is not a directory");
+    cover = io::read_cover_cube(orbit.cover);
+  }
+
+  gpu::EglContext context;
+  if (orbit.verbose) std::cerr << "renderer: " << context.info().renderer << "\n";
+  render::check_render_fits(context, camera.width, camera.height, orbit.size.empty() ? "--size" : "--size");
+  core::Progress progress("render", 3, core::Progress::for_stderr(orbit.quiet));
+  std::vector<std::pair<std::string, double>> timings;
+  std::string cover_source = orbit.cover;
+  if (!cover) {
+    progress.update(0, "global cover");
+    cover::CoverParameters parameters;
+    parameters.size = s::cover_size.default_int();
+    parameters.seed = orbit.seed;
+    timings.emplace_back("global cover", gpu::time_pass([&] {
+      cover::GlobalCover generated(parameters);
+      generated.run();
+      cover = render::CoverCube{parameters.size, generated.cover_field().read()};
+    }));
+    cover_source = "generated (seed " + std::to_string(orbit.seed) + ", " + std::to_string(parameters.size) + " texels per face)";
+  }
+  progress.update(1, "orbit view");
+  render::RenderResult result = render::render_orbit(camera, unix_seconds, textures.images, *cover, settings);
+  progress.update(2, "writing files");
+  {
+    io::OutputSet outputs(directory, io::OutputSet::Scope::files);
+    const std::string name = out.filename().string();
+    if (extension == ".png")
+      outputs.write(name, io::encode_image(render::tone_map(result.radiance, orbit.exposure), io::png_encoding(8), name));
+    else
+      outputs.write(name, io::encode_image(result.radiance, io::exr_encoding({"R", "G", "B", "A"}), name));
+    json::Value root, cam;
+    root.set("view", "orbit");
+    cam.set("latitude", camera.latitude_deg);
+    cam.set("longitude", camera.longitude_deg);
+    cam.set("altitude_m", camera.altitude_m);
+    cam.set("heading_deg", camera.heading_deg);
+    cam.set("pitch_deg", camera.pitch_deg);
+    cam.set("fov_deg", camera.fov_deg);
+    cam.set("width", camera.width);
+    cam.set("height", camera.height);
+    root.set("camera", cam);
+    root.set("time", time_text);
+    root.set("sun_elevation_deg", result.sun_elevation_deg);
+    root.set("planet_radius_m", settings.planet_radius_m);
+    root.set("cloud_base_m", settings.cloud_base_m);
+    root.set("cloud_thickness_m", settings.cloud_thickness_m);
+    root.set("earth_texture", textures.day_source);
+    root.set("night_texture", textures.night_source);
+    root.set("cover", cover_source);
+    root.set("exposure", orbit.exposure);
+    outputs.write(out.stem().string() + ".json", json::write(root));
+    outputs.commit();
+  }
+  progress.finish();
+  if (orbit.verbose) {
+    std::cerr << "earth texture: " << textures.day_source << "\nnight texture: " << textures.night_source
+              << "\ncover: " << cover_source << "\n";
+    for (const auto& p : result.passes) std::cerr << "pass: " << p << "\n";
+    for (const auto& [name, ms] : timings) std::cerr << "time " << name << ": " << ms << " ms\n";
+    for (const auto& [name, ms] : result.timings_ms) std::cerr << "time " << name << ": " << ms << " ms\n";
+  }
+  std::cout << "wrote " << orbit.out << " (sun elevation " << result.sun_elevation_deg << " deg at the point below the camera)\n";
+  return exit_ok;
+}
+
+}  // namespace nephele::cli

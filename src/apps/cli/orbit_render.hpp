@@ -1,0 +1,30 @@
+#pragma once
+// nephele render --view orbit: the planet, its cloud shell and atmosphere from anywhere between
+// 1 m and 40000 km (src/render/orbit_renderer.hpp, docs/orbit_view.md).
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "apps/cli/options.hpp"
+
+namespace nephele::cli {
+
+struct OrbitOptions {
+  double lat = 0, lon = 0, altitude_km = 0;  // from the table's defaults (bind_orbit_options)
+  std::string cover, earth_texture, night_texture;
+  double planet_radius_km = 0, cloud_base_km = 0, cloud_thickness_km = 0;
+  // Shared with the ground views (set by run_render).
+  std::string time, size, out;
+  std::optional<double> heading, pitch, fov;
+  std::uint32_t seed = 1;
+  double exposure = 4;
+  bool verbose = false, quiet = false;
+};
+
+void bind_orbit_options(Options& options, OrbitOptions& orbit);
+// The table's parameters only the orbit view takes.
+const std::vector<const params::Parameter*>& orbit_only_parameters();
+int run_orbit_render(const OrbitOptions& orbit);
+
+}  // namespace nephele::cli

@@ -1,0 +1,34 @@
+#pragma once
+// The planet's surface images for the orbit view (docs/orbit_view.md): equirect day and night
+// (city lights) maps read with OpenImageIO and decoded from sRGB to linear values.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "render/orbit_renderer.hpp"
+
+namespace nephele::io {
+
+// Debian's xplanet-images: NASA Visible Earth maps, 2048 x 1024, longitude -180 at the left edge,
+// north up.
+inline const char* const default_earth_texture = "/usr/share/xplanet/images/earth.jpg";
+inline const char* const default_night_texture = "/usr/share/xplanet/images/night.jpg";
+
+struct PlanetTextures {
+  render::PlanetImages images;
+  std::string day_source;    // the file, or "procedural"
+  std::string night_source;  // the file, or "none"
+  std::vector<std::string> warnings;  // e.g. the default maps are missing: procedural fallback
+};
+
+// `day`: an equirect image (any size, ideally 2:1); "" means the xplanet map, and when that is
+// missing a procedural ocean/land map with a warning. `night`: city lights, "" means the xplanet
+// map when `day` is also the default (else none). A named file that cannot be read throws
+// core::InputError naming `option`. 8-bit images are taken as sRGB, float images as linear.
+PlanetTextures read_planet_textures(const std::string& day, const std::string& night = "",
+                                    const std::string& option = "--earth-texture");
+
+// A cover directory written by `nephele generate` as a cube map for the renderer.
+render::CoverCube read_cover_cube(const std::filesystem::path& directory);
+
+}  // namespace nephele::io

@@ -1,0 +1,282 @@
+#include "render/orbit_renderer.hpp"
+
+#include <epoxy/gl.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+
+#include "gpu/compute_program.hpp"
+#include "gpu/pass_timer.hpp"
+#include "gpu/textures.hpp"
+#include "render/sun_position.hpp"
+
+namespace nephele::render {
+namespace {
+
+constexpr double degree = M_PI / 180.0;
+constexpr double atmosphere_thickness_m = 100000.0;  // ATMOSPHERE_THICKNESS of atmosphere.glsl
+
+struct Enu {
+  glm::dvec3 east, north, up;
+};
+
+Enu enu_at(double latitude_deg, double longitude_deg) {
+  const double lat = latitude_deg * degree, lon = longitude_deg * degree;
+  return {{-std::sin(lon), std::cos(lon), 0.0},
+          {-std::sin(lat) * std::cos(lon), -std::sin(lat) * std::sin(lon), std::cos(lat)},
+          {std::cos(lat) * std::cos(lon), std::cos(lat) * std::sin(lon), std::sin(lat)}};
+}
+
+void check_camera(const OrbitCamera& c) {
+  auto bad = [](const std::string& what) { throw std::invalid_argument("orbit camera: " + what); };
+  if (!(c.latitude_deg >= -90 && c.latitude_deg <= 90)) bad("latitude outside -90..90 degrees");
+  if (!(c.longitude_deg >= -360 && c.longitude_deg <= 360)) bad("longitude outside -360..360 degrees");
+  if (!(c.altitude_m >= 1 && c.altitude_m <= 4.0e7)) bad("altitude outside 1 m..40000 km");
+  if (!(c.fov_deg >= 1 && c.fov_deg <= 179)) bad("field of view outside 1..179 degrees");
+  if (!(c.pitch_deg >= -90 && c.pitch_deg <= 90) || !std::isfinite(c.heading_deg)) bad("pitch or heading out of range");
+  if (c.width < 1 || c.height < 1) bad("image size below 1 x 1");
+}
+
+void check_settings(const OrbitSettings& s) {
+  auto bad = [](const std::string& what) { throw std::invalid_argument("orbit settings: " + what); };
+  if (!(s.planet_radius_m >= 1000 && s.planet_radius_m <= 1.0e9)) bad("planet radius outside 1 km..1e6 km");
+  if (!(s.cloud_base_m >= 0) || !(s.cloud_thickness_m > 0) ||
+      !(s.cloud_base_m + s.cloud_thickness_m < atmosphere_thickness_m))
+    bad("the cloud shell must lie within the 100 km atmosphere and have a thickness above 0");
+  if (!(s.cloud_extinction >= 0) || !(s.night_lights >= 0)) bad("negative extinction or night lights");
+  if (s.cloud_steps < 1 || s.cloud_steps > 1024 || s.shadow_steps < 0 || s.shadow_steps > 256 || s.sky_steps < 1 ||
+      s.sky_steps > 256)
+    bad("step counts out of range");
+}
+
+GLuint equirect_texture(const core::ImageData& image) {
+  GLuint id = 0;
+  glCreateTextures(GL_TEXTURE_2D, 1, &id);
+  const int levels = 1 + static_cast<int>(std::floor(std::log2(std::max(image.width, image.height))));
+  glTextureStorage2D(id, levels, GL_RGBA16F, image.width, image.height);
+  std::vector<float> rgba(static_cast<size_t>(image.width) * image.height * 4, 1.0f);
+  for (size_t k = 0, n = static_cast<size_t>(image.width) * image.height; k < n; ++k)
+    for (int c = 0; c < 3; ++c)
+      rgba[4 * k + c] = image.pixels[k * image.channels + std::min(c, image.channels - 1)];
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  glTextureSubImage2D(id, 0, 0, 0, image.width, image.height, GL_RGBA, GL_FLOAT, rgba.data());
+  glGenerateTextureMipmap(id);
+  glTextureParameteri(id, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+  glTextureParameteri(id, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTextureParameteri(id, GL_TEXTURE_WRAP_S, GL_REPEAT);
+  glTextureParameteri(id, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  return id;
+}
+
+GLuint cover_texture(const CoverCube& cover) {
+  GLuint id = 0;
+  glCreateTextures(GL_TEXTURE_CUBE_MAP, 1, &id);
+  const int levels = 1 + static_cast<int>(std::floor(std::log2(cover.size)));
+  glTextureStorage2D(id, levels, GL_R32F, cover.size, cover.size);
+  const size_t face = static_cast<size_t>(cover.size) * cover.size;
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  // Rows from t = 0 in file order: what glTexSubImage expects for a cube face (cubemaps/README.md).
+  glTextureSubImage3D(id, 0, 0, 0, 0, cover.size, cover.size, 6, GL_RED, GL_FLOAT, cover.texels.data());
+  (void)face;
+  glGenerateTextureMipmap(id);
+  glTextureParameteri(id, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+  glTextureParameteri(id, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTextureParameteri(id, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTextureParameteri(id, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  return id;
+}
+
+// Smooth value noise on the lattice of integers (for the procedural planet).
+double lattice(int x, int y, int z) {
+  std::uint32_t h = static_cast<std::uint32_t>(x) * 73856093u ^ static_cast<std::uint32_t>(y) * 19349663u ^
+                    static_cast<std::uint32_t>(z) * 83492791u;
+  h ^= h >> 13;
+  h *= 0x5bd1e995u;
+  h ^= h >> 15;
+  return (h & 0xffffffu) / double(0xffffff);
+}
+
+double value_noise(glm::dvec3 p) {
+  const glm::dvec3 f = glm::floor(p), t = p - f;
+  const glm::dvec3 w = t * t * (3.0 - 2.0 * t);
+  const int x = int(f.x), y = int(f.y), z = int(f.z);
+  double result = 0;
+  for (int k = 0; k < 8; ++k) {
+    const int dx = k & 1, dy = (k >> 1) & 1, dz = (k >> 2) & 1;
+    result += lattice(x + dx, y + dy, z + dz) * (dx ? w.x : 1 - w.x) * (dy ? w.y : 1 - w.y) * (dz ? w.z : 1 - w.z);
+  }
+  return result;
+}
+
+}  // namespace
+
+OrbitFrame orbit_frame(const OrbitCamera& camera, double planet_radius_m) {
+  const Enu local = enu_at(camera.latitude_deg, camera.longitude_deg);
+  const double heading = camera.heading_deg * degree, pitch = camera.pitch_deg * degree;
+  const glm::dvec3 f(std::sin(heading) * std::cos(pitch), std::cos(heading) * std::cos(pitch), std::sin(pitch));
+  const glm::dvec3 r(std::cos(heading), -std::sin(heading), 0.0);
+  const glm::dvec3 u = glm::cross(r, f);
+  auto to_ecef = [&](glm::dvec3 v) { return v.x * local.east + v.y * local.north + v.z * local.up; };
+  return {(planet_radius_m + camera.altitude_m) * local.up, glm::normalize(to_ecef(f)), glm::normalize(to_ecef(r)),
+          glm::normalize(to_ecef(u))};
+}
+
+glm::dvec3 sun_direction_ecef(double unix_seconds) {
+  // The sun's direction is the same everywhere (parallax below 5e-5 rad): read it at latitude 0,
+  // longitude 0, where east, north and up are +Y, +Z and +X.
+  const SunPosition sun = sun_position(unix_seconds, 0.0, 0.0);
+  const double el = sun.elevation_deg * degree, az = sun.azimuth_deg * degree;
+  return {std::sin(el), std::cos(el) * std::sin(az), std::cos(el) * std::cos(az)};
+}
+
+glm::dvec2 project_to_pixel(const OrbitCamera& camera, double planet_radius_m, glm::dvec3 point) {
+  const OrbitFrame frame = orbit_frame(camera, planet_radius_m);
+  const glm::dvec3 v = point - frame.position;
+  const double z = glm::dot(v, frame.forward);
+  if (z <= 0) return {-1, -1};
+  const double tan_half = std::tan(camera.fov_deg * degree / 2);
+  const double x = glm::dot(v, frame.right) / z / tan_half;
+  const double y = glm::dot(v, frame.up) / z / tan_half / (double(camera.height) / camera.width);
+  return {(x + 1) / 2 * camera.width, (1 - y) / 2 * camera.height};
+}
+
+double framing_fov_deg(double altitude_m, double planet_radius_m, int width, int height) {
+  // Angular radius of the disc including the atmosphere's glow; the vertical field gets 15 % more.
+  const double radius = planet_radius_m + 60000.0;
+  const double distance = planet_radius_m + altitude_m;
+  const double half = distance > radius ? std::asin(radius / distance) : M_PI / 2;
+  const double vertical_tan = std::tan(std::min(1.15 * half, 1.4));
+  const double horizontal = 2 * std::atan(vertical_tan * double(width) / height) / degree;
+  return std::clamp(horizontal, 10.0, 120.0);
+}
+
+struct OrbitRenderer::Gl {
+  gpu::ComputeProgram program{"render/orbit.comp"};
+  GLuint day = 0, night = 0, cover = 0;
+  int day_width = 1, cover_size = 1;
+  ~Gl() {
+    for (GLuint id : {day, night, cover})
+      if (id != 0) glDeleteTextures(1, &id);
+  }
+};
+
+OrbitRenderer::OrbitRenderer(const PlanetImages& planet, const CoverCube& cover, const OrbitSettings& settings)
+    : gl_(std::make_unique<Gl>()), settings_(settings) {
+  check_settings(settings);
+  if (planet.day.width < 2 || planet.day.height < 1 || planet.day.channels < 1 ||
+      planet.day.pixels.size() != static_cast<size_t>(planet.day.width) * planet.day.height * planet.day.channels)
+    throw std::invalid_argument("orbit renderer: the day image is empty or malformed");
+  if (cover.size < 1 || cover.texels.size() != 6 * static_cast<size_t>(cover.size) * cover.size)
+    throw std::invalid_argument("orbit renderer: the cover cube needs 6 x size x size texels");
+  gl_->day = equirect_texture(planet.day);
+  gl_->day_width = planet.day.width;
+  core::ImageData night = planet.night;
+  if (night.width < 1 || night.height < 1 || night.channels < 1 ||
+      night.pixels.size() != static_cast<size_t>(night.width) * night.height * night.channels)
+    night = {1, 1, 3, {0.0f, 0.0f, 0.0f}};
+  gl_->night = equirect_texture(night);
+  gl_->cover = cover_texture(cover);
+  gl_->cover_size = cover.size;
+}
+
+OrbitRenderer::~OrbitRenderer() = default;
+
+void OrbitRenderer::set_settings(const OrbitSettings& settings) {
+  check_settings(settings);
+  settings_ = settings;
+}
+
+RenderResult OrbitRenderer::render(const OrbitCamera& camera, double unix_seconds) const {
+  check_camera(camera);
+  RenderResult result;
+  const OrbitSettings& s = settings_;
+  const double R = s.planet_radius_m;
+  const OrbitFrame frame = orbit_frame(camera, R);
+  const glm::dvec3 sun = sun_direction_ecef(unix_seconds);
+  result.sun_direction = sun_direction_enu(unix_seconds, camera.latitude_deg, camera.longitude_deg, &result.sun_elevation_deg);
+
+  // q = |camera - centre|^2 - r^2 = (h - h_r)(2R + h + h_r) for a sphere at altitude h_r: exact
+  // in double, and no cancellation at all when the camera is 1 m above the ground.
+  const double h = camera.altitude_m;
+  auto q = [&](double sphere_altitude) { return static_cast<float>((h - sphere_altitude) * (2 * R + h + sphere_altitude)); };
+
+  gpu::Texture image = gpu::Texture::plane(camera.width, camera.height, GL_RGBA32F);
+  const gpu::ComputeProgram& p = gl_->program;
+  result.timings_ms.emplace_back("orbit", gpu::time_pass([&] {
+    p.use();
+    p.set("u_centre", glm::vec3(-frame.position));
+    p.set("u_q_ground", q(0.0));
+    p.set("u_q_base", q(s.cloud_base_m));
+    p.set("u_q_top", q(s.cloud_base_m + s.cloud_thickness_m));
+    p.set("u_q_atmosphere", q(atmosphere_thickness_m));
+    p.set("u_radius", static_cast<float>(R));
+    p.set("u_cloud_base", static_cast<float>(s.cloud_base_m));
+    p.set("u_cloud_top", static_cast<float>(s.cloud_base_m + s.cloud_thickness_m));
+    p.set("u_extinction", static_cast<float>(s.cloud_extinction));
+    p.set("u_forward", glm::vec3(frame.forward));
+    p.set("u_right", glm::vec3(frame.right));
+    p.set("u_up", glm::vec3(frame.up));
+    const double tan_half = std::tan(camera.fov_deg * degree / 2);
+    p.set("u_tan_half_fov", static_cast<float>(tan_half));
+    p.set("u_pixel_angle", static_cast<float>(2 * tan_half / camera.width));
+    p.set("u_sun", glm::vec3(sun));
+    p.set("u_night_lights", static_cast<float>(s.night_lights));
+    p.set("u_cover_texel", static_cast<float>(R * (M_PI / 2) / gl_->cover_size));
+    p.set("u_day_texel", static_cast<float>(2 * M_PI * R / gl_->day_width));
+    p.set("u_cloud_steps", s.cloud_steps);
+    p.set("u_shadow_steps", s.shadow_steps);
+    p.set("u_sky_steps", s.sky_steps);
+    glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
+    image.bind_image(0, GL_WRITE_ONLY);
+    glBindTextureUnit(1, gl_->day);
+    glBindTextureUnit(2, gl_->night);
+    glBindTextureUnit(3, gl_->cover);
+    p.dispatch_covering(camera.width, camera.height, 1);
+    gpu::image_barrier();
+  }));
+  result.passes = {"orbit: ground, cloud shell (" + std::to_string(s.cloud_steps) + " steps), shadows (" +
+                   std::to_string(s.shadow_steps) + "), atmosphere (" + std::to_string(s.sky_steps) + ")"};
+  result.timings_ms.emplace_back("read back", gpu::time_pass([&] {
+    result.radiance = {camera.width, camera.height, 4, image.read()};
+  }));
+  return result;
+}
+
+RenderResult render_orbit(const OrbitCamera& camera, double unix_seconds, const PlanetImages& planet,
+                          const CoverCube& cover, const OrbitSettings& settings) {
+  RenderResult result;
+  double upload_ms = 0;
+  std::unique_ptr<OrbitRenderer> renderer;
+  upload_ms = gpu::time_pass([&] { renderer = std::make_unique<OrbitRenderer>(planet, cover, settings); });
+  result = renderer->render(camera, unix_seconds);
+  result.passes.insert(result.passes.begin(), "upload textures");
+  result.timings_ms.insert(result.timings_ms.begin(), {"upload textures", upload_ms});
+  return result;
+}
+
+PlanetImages procedural_planet(int width, int height) {
+  PlanetImages planet;
+  planet.day = {width, height, 3, {}};
+  planet.day.pixels.reserve(static_cast<size_t>(width) * height * 3);
+  for (int j = 0; j < height; ++j) {
+    const double lat = M_PI / 2 - (j + 0.5) * M_PI / height;
+    for (int i = 0; i < width; ++i) {
+      const double lon = -M_PI + (i + 0.5) * 2 * M_PI / width;
+      const glm::dvec3 n(std::cos(lat) * std::cos(lon), std::cos(lat) * std::sin(lon), std::sin(lat));
+      double land = 0, amplitude = 0.5, frequency = 2.0;
+      for (int octave = 0; octave < 5; ++octave, amplitude *= 0.5, frequency *= 2.0)
+        land += amplitude * value_noise(n * frequency + glm::dvec3(17.0 * octave));
+      glm::dvec3 colour = land > 0.52 ? glm::mix(glm::dvec3(0.06, 0.10, 0.03), glm::dvec3(0.25, 0.20, 0.12),
+                                                 std::clamp((land - 0.52) * 5, 0.0, 1.0))
+                                      : glm::dvec3(0.005, 0.015, 0.05);
+      if (std::abs(lat) > 70 * degree) colour = glm::dvec3(0.7, 0.72, 0.75);
+      for (int c = 0; c < 3; ++c) planet.day.pixels.push_back(static_cast<float>(colour[c]));
+    }
+  }
+  return planet;
+}
+
+}  // namespace nephele::render

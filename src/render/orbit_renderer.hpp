@@ -1,0 +1,94 @@
+#pragma once
+// The orbit view: the planet seen from anywhere between 1 m and 40000 km above it, with a
+// volumetric cloud shell driven by the global cover, cloud shadows, city lights on the night
+// side and the atmosphere (shaders/render/orbit.comp, docs/orbit_view.md).
+//
+// Use: make one OrbitRenderer (it uploads the textures once; needs a current OpenGL 4.5
+// context, e.g. gpu::EglContext or a window's), then render(camera, time) per frame.
+#include <glm/glm.hpp>
+
+#include <memory>
+#include <vector>
+
+#include "core/image.hpp"
+#include "render/cloud_renderer.hpp"
+
+namespace nephele::render {
+
+struct OrbitCamera {
+  double latitude_deg = 0, longitude_deg = 0;  // the point below the camera (spherical planet)
+  double altitude_m = 2000000;                 // above the planet's sphere, 1 m to 4e7 m
+  double heading_deg = 0;   // clockwise from north
+  double pitch_deg = -90;   // up from the local horizon; -90 looks at the planet's centre
+  double fov_deg = 70;      // horizontal field of view
+  int width = 1280, height = 720;
+};
+
+struct OrbitSettings {
+  double planet_radius_m = 6371000;     // mean Earth radius (IUGG)
+  double cloud_base_m = 2000;           // altitude of the cloud shell's bottom
+  double cloud_thickness_m = 8000;      // the shell's thickness
+  double cloud_extinction = 0.02;       // 1/m at density 1 (optical depth 20 per km)
+  double night_lights = 0.03;           // radiance (W m^-2 sr^-1 nm^-1) of a city-light texel of value 1
+  int cloud_steps = 32;                 // samples along a view ray through the shell
+  int shadow_steps = 6;                 // samples from the ground towards the sun
+  int sky_steps = 12;                   // samples of the atmosphere along a view ray
+};
+
+// The planet's surface: equirect images, longitude -180 at the left edge, north up, RGB or RGBA,
+// linear values (io::read_planet_textures decodes sRGB). An empty night image means no lights.
+struct PlanetImages {
+  core::ImageData day, night;
+};
+
+// The global cover as a cube map: faces +X, -X, +Y, -Y, +Z, -Z, size x size floats each, rows
+// from t = 0 (io::read_cover_faces, or cover::GlobalCover::cover_field().read() of R32F).
+struct CoverCube {
+  int size = 0;
+  std::vector<float> texels;
+};
+
+// Camera frame in Earth-centred, Earth-fixed axes (+Z north, +X latitude 0 longitude 0), double.
+struct OrbitFrame {
+  glm::dvec3 position;                // camera, m from the planet's centre
+  glm::dvec3 forward, right, up;      // unit vectors of the view
+};
+OrbitFrame orbit_frame(const OrbitCamera& camera, double planet_radius_m);
+// Unit direction towards the sun in Earth-centred, Earth-fixed axes at a UTC time.
+glm::dvec3 sun_direction_ecef(double unix_seconds);
+// The pixel (column, row from the top; fractional, centres at .5) where the ray towards an
+// ECEF point meets the image, or (-1, -1) when the point is behind the camera.
+glm::dvec2 project_to_pixel(const OrbitCamera& camera, double planet_radius_m, glm::dvec3 point);
+// The horizontal field of view that shows the whole planet disc with a margin when looking at
+// its centre (clamped to 10..120 degrees): the default of `render --view orbit`.
+double framing_fov_deg(double altitude_m, double planet_radius_m, int width, int height);
+
+class OrbitRenderer {
+ public:
+  // Uploads the textures (mipmapped) and builds the program. Throws std::invalid_argument for an
+  // empty day image or a cover of the wrong size.
+  OrbitRenderer(const PlanetImages& planet, const CoverCube& cover, const OrbitSettings& settings = {});
+  ~OrbitRenderer();
+  OrbitRenderer(const OrbitRenderer&) = delete;
+  OrbitRenderer& operator=(const OrbitRenderer&) = delete;
+
+  // One frame: RGBA float linear radiance (A = cloud opacity), the passes and their times, the
+  // sun at the sub-camera point. Throws std::invalid_argument for a camera out of range.
+  RenderResult render(const OrbitCamera& camera, double unix_seconds) const;
+  const OrbitSettings& settings() const { return settings_; }
+  void set_settings(const OrbitSettings& settings);  // same textures; checks as the constructor
+
+ private:
+  struct Gl;
+  std::unique_ptr<Gl> gl_;
+  OrbitSettings settings_;
+};
+
+// One frame without keeping the renderer (uploads everything each call).
+RenderResult render_orbit(const OrbitCamera& camera, double unix_seconds, const PlanetImages& planet,
+                          const CoverCube& cover, const OrbitSettings& settings = {});
+
+// A planet texture when no image is at hand: ocean and land from smooth value noise, ice caps.
+PlanetImages procedural_planet(int width = 1024, int height = 512);
+
+}  // namespace nephele::render
