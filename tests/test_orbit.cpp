@@ -307,6 +307,43 @@ TEST_CASE("orbit: a descent from 2000 km to 1 km changes luminance and cloud fra
   CHECK(largest_jumps(switched, 0.002 * mean) == std::vector<size_t>{size_t(frames / 2 - 1)});
 }
 
+TEST_CASE("orbit: 1 m and 40000 km are both exact: the horizon's dip and the disc's size", "[orbit][precision]") {
+  test::test_context();
+  // At night with uniform city lights every ground pixel shines and every sky pixel is black
+  // (the air is in the planet's shadow), so the ground's edge is where the geometry puts it.
+  const double night = core::parse_utc_time("2026-06-21T20:00Z");
+  render::PlanetImages planet = uniform_planet(0.2);
+  planet.night = equirect(16, [](double, double) { return glm::dvec3(1.0); });
+  const double R = render::OrbitSettings{}.planet_radius_m;
+  SECTION("1 m: the horizon lies acos(R / (R + 1 m)) = 0.0321 deg below the horizontal") {
+    render::OrbitCamera camera = nadir_camera(30, 60, 1.0, 9, 101, 0.1);
+    camera.pitch_deg = 0;
+    const auto r = render::render_orbit(camera, night, planet, clear_cover());
+    const double dip = std::acos(R / (R + 1.0));
+    const double tan_half = std::tan(0.05 * degree), aspect = 101.0 / 9.0;
+    int checked = 0;
+    for (int row = 0; row < 101; ++row) {
+      const double elevation = std::atan((1 - (row + 0.5) / 101 * 2) * aspect * tan_half);
+      // Rows within a fifth of a pixel (0.0022 deg) of the edge are not judged.
+      if (std::abs(elevation + dip) < 0.2 * 2 * aspect * tan_half / 101) continue;
+      INFO("row " << row << " elevation " << elevation / degree << " deg");
+      CHECK((luminance(pixel(r, 4, row)) > 0) == (elevation < -dip));
+      ++checked;
+    }
+    CHECK(checked > 95);
+  }
+  SECTION("40000 km: the lit disc spans 2 asin(R / D) up to the air's 100 km") {
+    const auto camera = nadir_camera(30, 60, 4.0e7, 401, 3, 20);
+    const auto r = render::render_orbit(camera, night, planet, clear_cover());
+    const double D = R + camera.altitude_m, tan_half = std::tan(10 * degree);
+    auto half_width_px = [&](double radius) { return std::tan(std::asin(radius / D)) / tan_half * 200.5; };
+    int lit = 0;
+    for (int x = 0; x < 401; ++x) lit += luminance(pixel(r, x, 1)) > 0 ? 1 : 0;
+    CHECK(lit >= 2 * half_width_px(R) - 2);
+    CHECK(lit <= 2 * half_width_px(R + 100000) + 2);
+  }
+}
+
 TEST_CASE("render --view orbit writes the image and refuses bad values naming the option", "[orbit][cli]") {
   test::TemporaryDirectory out(true);
   const std::string file = (out.path / "orbit.png").string();

@@ -35,7 +35,7 @@ void check_camera(const OrbitCamera& c) {
   if (!(c.latitude_deg >= -90 && c.latitude_deg <= 90)) bad("latitude outside -90..90 degrees");
   if (!(c.longitude_deg >= -360 && c.longitude_deg <= 360)) bad("longitude outside -360..360 degrees");
   if (!(c.altitude_m >= 1 && c.altitude_m <= 4.0e7)) bad("altitude outside 1 m..40000 km");
-  if (!(c.fov_deg >= 1 && c.fov_deg <= 179)) bad("field of view outside 1..179 degrees");
+  if (!(c.fov_deg >= 0.001 && c.fov_deg <= 179)) bad("field of view outside 0.001..179 degrees");
   if (!(c.pitch_deg >= -90 && c.pitch_deg <= 90) || !std::isfinite(c.heading_deg)) bad("pitch or heading out of range");
   if (c.width < 1 || c.height < 1) bad("image size below 1 x 1");
 }

@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "apps/cli/commands.hpp"
+#include "apps/cli/orbit_render.hpp"
 #include "params/table.hpp"
 #include "apps/cli/noise_options.hpp"
 #include "apps/cli/cover_options.hpp"
@@ -63,7 +64,8 @@ int run_bench(const std::vector<std::string>& arguments) {
                  "  cover   time of each global cover pass for sizes 256, 512, 1024\n"
                  "  render  seconds per frame of the default scene, image error against steps\n"
                  "  noise   million points per second of 3D Worley and Perlin, seconds of the noise presets\n"
-                 "  model   milliseconds per cloud model volume (1 to 50 primitives), whole and after one edit\n";
+                 "  model   milliseconds per cloud model volume (1 to 50 primitives), whole and after one edit\n"
+                 "  orbit   milliseconds per frame of the orbit view at 640x360 and 1280x720\n";
     return arguments.empty() ? exit_usage : exit_ok;
   }
   const std::vector<std::string> rest(arguments.begin() + 1, arguments.end());
@@ -71,7 +73,8 @@ int run_bench(const std::vector<std::string>& arguments) {
   if (arguments[0] == "render") return bench_render(rest);
   if (arguments[0] == "noise") return bench_noise(rest);
   if (arguments[0] == "model") return bench_model(rest);
-  throw UsageError("nephele bench: unknown benchmark '" + arguments[0] + "' (allowed: cover, render, noise, model)");
+  if (arguments[0] == "orbit") return bench_orbit(rest);
+  throw UsageError("nephele bench: unknown benchmark '" + arguments[0] + "' (allowed: cover, render, noise, model, orbit)");
 }
 
 }  // namespace nephele::cli

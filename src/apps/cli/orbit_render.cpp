@@ -1,5 +1,7 @@
 #include "apps/cli/orbit_render.hpp"
 
+#include <algorithm>
+#include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -88,14 +90,14 @@ int run_orbit_render(const OrbitOptions& orbit) {
   settings.cloud_thickness_m = orbit.cloud_thickness_km * 1000.0;
 
   // Files named by options are read before the context: a missing one exits 2 quickly.
-  io::PlanetTextures textures = io::read_planet_textures(orbit.earth_texture, orbit.night_texture);
-  for (const auto& w : textures.warnings) std::cerr << "warning: " << w << "\n";
   std::optional<render::CoverCube> cover;
   if (!orbit.cover.empty()) {
     if (!std::filesystem::is_directory(orbit.cover))
       throw UsageError("--cover", orbit.cover, "a directory written by nephele generate", "is not a directory");
     cover = io::read_cover_cube(orbit.cover);
   }
+  io::PlanetTextures textures = io::read_planet_textures(orbit.earth_texture, orbit.night_texture);
+  for (const auto& w : textures.warnings) std::cerr << "warning: " << w << "\n";
 
   gpu::EglContext context;
   if (orbit.verbose) std::cerr << "renderer: " << context.info().renderer << "\n";
@@ -157,6 +159,50 @@ int run_orbit_render(const OrbitOptions& orbit) {
     for (const auto& [name, ms] : result.timings_ms) std::cerr << "time " << name << ": " << ms << " ms\n";
   }
   std::cout << "wrote " << orbit.out << " (sun elevation " << result.sun_elevation_deg << " deg at the point below the camera)\n";
+  return exit_ok;
+}
+
+int bench_orbit(const std::vector<std::string>& arguments) {
+  int repeat = params::run::bench_render_repeat.default_int();
+  Options options("bench orbit",
+                  "Prints milliseconds per frame of the orbit view (render --view orbit's defaults) at\n"
+                  "640x360 and 1280x720: the median of --repeat frames after one warm-up frame.",
+                  params::bench_render);
+  options.bind(params::run::bench_render_repeat, &repeat);
+  if (!options.parse(arguments)) {
+    std::cout << options.help();
+    return exit_ok;
+  }
+  gpu::EglContext context;
+  std::printf("device: %s (%s)\n", context.info().renderer.c_str(), context.info().version.c_str());
+  io::PlanetTextures textures = io::read_planet_textures("");
+  for (const auto& w : textures.warnings) std::cerr << "warning: " << w << "\n";
+  cover::CoverParameters parameters;
+  parameters.size = s::cover_size.default_int();
+  cover::GlobalCover generated(parameters);
+  generated.run();
+  render::OrbitRenderer renderer(textures.images, {parameters.size, generated.cover_field().read()});
+  const double time = core::parse_utc_time(std::string(s::time.default_text));
+  for (const auto& [width, height] : {std::pair{640, 360}, std::pair{1280, 720}}) {
+    render::OrbitCamera camera;
+    camera.latitude_deg = s::lat.default_number;
+    camera.longitude_deg = s::lon.default_number;
+    camera.altitude_m = s::altitude_km.default_number * 1000;
+    camera.width = width;
+    camera.height = height;
+    camera.fov_deg = render::framing_fov_deg(camera.altitude_m, renderer.settings().planet_radius_m, width, height);
+    renderer.render(camera, time);  // warm-up: compilation, first touch of the textures
+    std::vector<double> ms;
+    for (int k = 0; k < repeat; ++k) {
+      const render::RenderResult r = renderer.render(camera, time);
+      double total = 0;
+      for (const auto& [name, t] : r.timings_ms) total += t;
+      ms.push_back(total);
+    }
+    std::sort(ms.begin(), ms.end());
+    std::printf("orbit %dx%d: %.1f ms per frame (median of %d)\n", width, height, ms[ms.size() / 2], repeat);
+    std::fflush(stdout);
+  }
   return exit_ok;
 }
 
