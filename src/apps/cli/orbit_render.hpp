@@ -10,6 +10,9 @@
 
 namespace nephele::cli {
 
+// --exposure of the orbit view when none is given.
+constexpr double orbit_default_exposure = 2.5;
+
 struct OrbitOptions {
   double lat = 0, lon = 0, altitude_km = 0;  // from the table's defaults (bind_orbit_options)
   std::string cover, earth_texture, night_texture;

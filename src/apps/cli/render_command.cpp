@@ -90,7 +90,8 @@ int run_render(const std::vector<std::string>& arguments) {
     orbit.size = size;
     orbit.out = out;
     orbit.seed = seed;
-    orbit.exposure = exposure;
+    // Clouds seen from above reflect most of the sunlight: a lower default exposure than the ground views'.
+    orbit.exposure = options.given(s::exposure) ? exposure : orbit_default_exposure;
     orbit.verbose = verbose;
     orbit.quiet = quiet;
     if (options.given(s::heading)) orbit.heading = heading;
