@@ -52,6 +52,11 @@ void check_settings(const OrbitSettings& s) {
     bad("step counts out of range");
 }
 
+void check_cover(const CoverCube& cover) {
+  if (cover.size < 1 || cover.texels.size() != 6 * static_cast<size_t>(cover.size) * cover.size)
+    throw std::invalid_argument("orbit renderer: the cover cube needs 6 x size x size texels");
+}
+
 GLuint equirect_texture(const core::ImageData& image) {
   GLuint id = 0;
   glCreateTextures(GL_TEXTURE_2D, 1, &id);
@@ -76,11 +81,9 @@ GLuint cover_texture(const CoverCube& cover) {
   glCreateTextures(GL_TEXTURE_CUBE_MAP, 1, &id);
   const int levels = 1 + static_cast<int>(std::floor(std::log2(cover.size)));
   glTextureStorage2D(id, levels, GL_R32F, cover.size, cover.size);
-  const size_t face = static_cast<size_t>(cover.size) * cover.size;
   glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
   // Rows from t = 0 in file order: what glTexSubImage expects for a cube face (cubemaps/README.md).
   glTextureSubImage3D(id, 0, 0, 0, 0, cover.size, cover.size, 6, GL_RED, GL_FLOAT, cover.texels.data());
-  (void)face;
   glGenerateTextureMipmap(id);
   glTextureParameteri(id, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
   glTextureParameteri(id, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
@@ -169,8 +172,7 @@ OrbitRenderer::OrbitRenderer(const PlanetImages& planet, const CoverCube& cover,
   if (planet.day.width < 2 || planet.day.height < 1 || planet.day.channels < 1 ||
       planet.day.pixels.size() != static_cast<size_t>(planet.day.width) * planet.day.height * planet.day.channels)
     throw std::invalid_argument("orbit renderer: the day image is empty or malformed");
-  if (cover.size < 1 || cover.texels.size() != 6 * static_cast<size_t>(cover.size) * cover.size)
-    throw std::invalid_argument("orbit renderer: the cover cube needs 6 x size x size texels");
+  check_cover(cover);
   gl_->day = equirect_texture(planet.day);
   gl_->day_width = planet.day.width;
   core::ImageData night = planet.night;
@@ -189,23 +191,26 @@ void OrbitRenderer::set_settings(const OrbitSettings& settings) {
   settings_ = settings;
 }
 
-RenderResult OrbitRenderer::render(const OrbitCamera& camera, double unix_seconds) const {
+void OrbitRenderer::set_cover(const CoverCube& cover) {
+  check_cover(cover);
+  const GLuint texture = cover_texture(cover);
+  glDeleteTextures(1, &gl_->cover);
+  gl_->cover = texture;
+  gl_->cover_size = cover.size;
+}
+
+double OrbitRenderer::render_into(const OrbitCamera& camera, double unix_seconds, unsigned rgba32f_texture) const {
   check_camera(camera);
-  RenderResult result;
   const OrbitSettings& s = settings_;
   const double R = s.planet_radius_m;
   const OrbitFrame frame = orbit_frame(camera, R);
   const glm::dvec3 sun = sun_direction_ecef(unix_seconds);
-  result.sun_direction = sun_direction_enu(unix_seconds, camera.latitude_deg, camera.longitude_deg, &result.sun_elevation_deg);
-
   // q = |camera - centre|^2 - r^2 = (h - h_r)(2R + h + h_r) for a sphere at altitude h_r: exact
   // in double, and no cancellation at all when the camera is 1 m above the ground.
   const double h = camera.altitude_m;
   auto q = [&](double sphere_altitude) { return static_cast<float>((h - sphere_altitude) * (2 * R + h + sphere_altitude)); };
-
-  gpu::Texture image = gpu::Texture::plane(camera.width, camera.height, GL_RGBA32F);
   const gpu::ComputeProgram& p = gl_->program;
-  result.timings_ms.emplace_back("orbit", gpu::time_pass([&] {
+  return gpu::time_pass([&] {
     p.use();
     p.set("u_centre", glm::vec3(-frame.position));
     p.set("u_q_ground", q(0.0));
@@ -230,13 +235,22 @@ RenderResult OrbitRenderer::render(const OrbitCamera& camera, double unix_second
     p.set("u_shadow_steps", s.shadow_steps);
     p.set("u_sky_steps", s.sky_steps);
     glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
-    image.bind_image(0, GL_WRITE_ONLY);
+    glBindImageTexture(0, rgba32f_texture, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
     glBindTextureUnit(1, gl_->day);
     glBindTextureUnit(2, gl_->night);
     glBindTextureUnit(3, gl_->cover);
     p.dispatch_covering(camera.width, camera.height, 1);
     gpu::image_barrier();
-  }));
+  });
+}
+
+RenderResult OrbitRenderer::render(const OrbitCamera& camera, double unix_seconds) const {
+  check_camera(camera);
+  RenderResult result;
+  const OrbitSettings& s = settings_;
+  result.sun_direction = sun_direction_enu(unix_seconds, camera.latitude_deg, camera.longitude_deg, &result.sun_elevation_deg);
+  gpu::Texture image = gpu::Texture::plane(camera.width, camera.height, GL_RGBA32F);
+  result.timings_ms.emplace_back("orbit", render_into(camera, unix_seconds, image.id()));
   result.passes = {"orbit: ground, cloud shell (" + std::to_string(s.cloud_steps) + " steps), shadows (" +
                    std::to_string(s.shadow_steps) + "), atmosphere (" + std::to_string(s.sky_steps) + ")"};
   result.timings_ms.emplace_back("read back", gpu::time_pass([&] {

@@ -75,8 +75,12 @@ class OrbitRenderer {
   // One frame: RGBA float linear radiance (A = cloud opacity), the passes and their times, the
   // sun at the sub-camera point. Throws std::invalid_argument for a camera out of range.
   RenderResult render(const OrbitCamera& camera, double unix_seconds) const;
+  // The same frame into a texture the caller owns (GL_RGBA32F, 2D, at least camera.width x
+  // camera.height; a window viewer draws it without reading it back). Returns milliseconds.
+  double render_into(const OrbitCamera& camera, double unix_seconds, unsigned rgba32f_texture) const;
   const OrbitSettings& settings() const { return settings_; }
   void set_settings(const OrbitSettings& settings);  // same textures; checks as the constructor
+  void set_cover(const CoverCube& cover);            // a new cover (e.g. regenerated), same checks
 
  private:
   struct Gl;
