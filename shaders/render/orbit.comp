@@ -12,6 +12,7 @@ layout(rgba32f, binding = 0) uniform writeonly image2D radiance_image;
 layout(binding = 1) uniform sampler2D day_texture;    // equirect, linear RGB, row 0 = north
 layout(binding = 2) uniform sampler2D night_texture;  // equirect, linear RGB (city lights)
 layout(binding = 3) uniform samplerCube cover_map;    // coverage in [0, 1], GL face convention
+layout(binding = 4) uniform sampler3D detail_noise;   // 32^3 value noise in [0, 1], repeating
 
 #include "../lib/atmosphere.glsl"
 #include "../lib/hash.glsl"
@@ -72,25 +73,39 @@ vec2 equirect_uv(vec3 n) {
   return vec2(longitude / (2.0f * PI_F) + 0.5f, 0.5f - latitude / PI_F);
 }
 
-// Cloud density in [0, 1] at p (relative to the planet centre): the cover at p's direction sets
-// how high the column reaches (0.15 of the shell at the thinnest, all of it at coverage 1) and how
-// dense it is; the base and the top are soft.
-float cloud_density(vec3 p, float lod) {
-  float r = length(p);
-  float hf = (r - u_radius - u_cloud_base) / (u_cloud_top - u_cloud_base);
-  if (hf <= 0.0f || hf >= 1.0f) return 0.0f;
-  float c = textureLod(cover_map, p / r, lod).r;
-  if (c <= 0.0f) return 0.0f;
-  float top = 0.15f + 0.85f * c;
-  float column = smoothstep(0.0f, 0.08f, hf) * (1.0f - smoothstep(0.75f * top, top, hf));
-  return smoothstep(0.0f, 0.15f, c) * (0.4f + 0.6f * c) * column;
-}
+const float DETAIL_CELL = 1600.0f;  // m: the detail noise's coarse cell (the fine one is a quarter)
 
 float cover_lod(float footprint) { return max(log2(max(footprint, 1.0f) / u_cover_texel), 0.0f); }
 
+// Cloud density in [0, 1] at p (relative to the planet centre) for a sample that stands for
+// `footprint` metres: the cover at p's direction sets how high the column reaches (0.15 of the
+// shell at the thinnest, all of it at coverage 1) and how dense it is; the base and the top are
+// soft. Close up, two octaves of value noise erode it (more where the cover is thin); they fade
+// out smoothly where a sample covers a noise cell, so nothing switches with distance.
+float cloud_density(vec3 p, float footprint) {
+  float r = length(p);
+  float hf = (r - u_radius - u_cloud_base) / (u_cloud_top - u_cloud_base);
+  if (hf <= 0.0f || hf >= 1.0f) return 0.0f;
+  float c = textureLod(cover_map, p / r, cover_lod(footprint)).r;
+  if (c <= 0.0f) return 0.0f;
+  float top = 0.15f + 0.85f * c;
+  float column = smoothstep(0.0f, 0.08f, hf) * (1.0f - smoothstep(0.75f * top, top, hf));
+  float density = smoothstep(0.0f, 0.15f, c) * (0.4f + 0.6f * c) * column;
+  float coarse = 1.0f - smoothstep(0.5f * DETAIL_CELL, 2.0f * DETAIL_CELL, footprint);
+  if (coarse > 0.0f) {
+    float fine = 1.0f - smoothstep(0.125f * DETAIL_CELL, 0.5f * DETAIL_CELL, footprint);
+    float n1 = textureLod(detail_noise, p / (32.0f * DETAIL_CELL), 0.0f).r;
+    float n2 = textureLod(detail_noise, p / (8.0f * DETAIL_CELL) + vec3(0.37f), 0.0f).r;
+    float n = 0.7f * n1 + 0.3f * mix(0.5f, n2, fine);
+    float erosion = clamp((n - 0.45f * (1.0f - c) - 0.1f) * 3.0f, 0.0f, 1.0f);
+    density *= mix(1.0f, erosion, coarse);
+  }
+  return density;
+}
+
 // Optical depth of the shell from p (relative to the centre) towards the sun, `steps` samples
 // spread over the path to the shell's top (at most 60 km: beyond, low sun light is gone anyway).
-float optical_depth_to_sun(vec3 p, int steps, float lod) {
+float optical_depth_to_sun(vec3 p, int steps, float footprint) {
   float b = dot(p, u_sun);
   float r_top = u_radius + u_cloud_top;
   float q = dot(p, p) - r_top * r_top;
@@ -107,7 +122,7 @@ float optical_depth_to_sun(vec3 p, int steps, float lod) {
     float t0 = float(i) / float(steps), t1 = float(i + 1) / float(steps);
     // Quadratic spacing: short steps near p, where the light's shadow detail is.
     float s = start + span * 0.25f * (t0 + t1) * (t0 + t1);
-    depth += cloud_density(p + s * u_sun, lod) * span * (t1 * t1 - t0 * t0);
+    depth += cloud_density(p + s * u_sun, footprint) * span * (t1 * t1 - t0 * t0);
   }
   return depth * u_extinction;
 }
@@ -158,13 +173,13 @@ void main() {
       float s = (float(i) + jitter) * dt;
       float t = s < len0 ? shell.x + s : shell.z + (s - len0);
       vec3 p = oc + t * d;
-      float lod = cover_lod(max(t * u_pixel_angle, 0.25f * dt));
-      float density = cloud_density(p, lod);
+      float footprint = max(t * u_pixel_angle, 0.25f * dt);
+      float density = cloud_density(p, footprint);
       if (density <= 0.0f) continue;
       vec3 n = normalize(p);
       if (sun_at_cloud.x < 0.0f) sun_at_cloud = solar_irradiance() * transmittance_to_space(p, u_sun, u_radius);
       float sigma = density * u_extinction;
-      float tau_light = optical_depth_to_sun(p, 4, lod);
+      float tau_light = optical_depth_to_sun(p, 4, footprint);
       float nu = dot(d, u_sun);
       float phase = 0.7f * hg(nu, 0.6f) + 0.3f * hg(nu, -0.3f);
       // Single scattering plus the light that diffuses through the cloud (multiple scattering,
@@ -195,7 +210,7 @@ void main() {
     vec3 direct = vec3(0.0f);
     if (mu > -0.02f) {
       // Cloud shadow: the shell's optical depth towards the sun; some light diffuses through.
-      float tau = optical_depth_to_sun(g, u_shadow_steps, cover_lod(footprint));
+      float tau = optical_depth_to_sun(g, u_shadow_steps, footprint);
       float shadow = exp(-tau) + (1.0f - exp(-tau)) * diffuse_transmission(tau);
       direct = solar_irradiance() * transmittance_to_space(g + 1.0f * n, u_sun, u_radius) * max(mu, 0.0f) * shadow;
     }

@@ -102,6 +102,23 @@ double lattice(int x, int y, int z) {
   return (h & 0xffffffu) / double(0xffffff);
 }
 
+// The clouds' close-up detail: 32^3 hashed values in [0, 1], repeating, trilinear (value noise).
+GLuint detail_texture() {
+  constexpr int n = 32;
+  std::vector<float> values(n * n * n);
+  for (int z = 0; z < n; ++z)
+    for (int y = 0; y < n; ++y)
+      for (int x = 0; x < n; ++x) values[(z * n + y) * n + x] = static_cast<float>(lattice(x, y, z + 1000));
+  GLuint id = 0;
+  glCreateTextures(GL_TEXTURE_3D, 1, &id);
+  glTextureStorage3D(id, 1, GL_R16F, n, n, n);
+  glTextureSubImage3D(id, 0, 0, 0, 0, n, n, n, GL_RED, GL_FLOAT, values.data());
+  glTextureParameteri(id, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTextureParameteri(id, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  for (GLenum wrap : {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T, GL_TEXTURE_WRAP_R}) glTextureParameteri(id, wrap, GL_REPEAT);
+  return id;
+}
+
 double value_noise(glm::dvec3 p) {
   const glm::dvec3 f = glm::floor(p), t = p - f;
   const glm::dvec3 w = t * t * (3.0 - 2.0 * t);
@@ -158,10 +175,10 @@ double framing_fov_deg(double altitude_m, double planet_radius_m, int width, int
 
 struct OrbitRenderer::Gl {
   gpu::ComputeProgram program{"render/orbit.comp"};
-  GLuint day = 0, night = 0, cover = 0;
+  GLuint day = 0, night = 0, cover = 0, detail = 0;
   int day_width = 1, cover_size = 1;
   ~Gl() {
-    for (GLuint id : {day, night, cover})
+    for (GLuint id : {day, night, cover, detail})
       if (id != 0) glDeleteTextures(1, &id);
   }
 };
@@ -182,6 +199,7 @@ OrbitRenderer::OrbitRenderer(const PlanetImages& planet, const CoverCube& cover,
   gl_->night = equirect_texture(night);
   gl_->cover = cover_texture(cover);
   gl_->cover_size = cover.size;
+  gl_->detail = detail_texture();
 }
 
 OrbitRenderer::~OrbitRenderer() = default;
@@ -239,6 +257,7 @@ double OrbitRenderer::render_into(const OrbitCamera& camera, double unix_seconds
     glBindTextureUnit(1, gl_->day);
     glBindTextureUnit(2, gl_->night);
     glBindTextureUnit(3, gl_->cover);
+    glBindTextureUnit(4, gl_->detail);
     p.dispatch_covering(camera.width, camera.height, 1);
     gpu::image_barrier();
   });
