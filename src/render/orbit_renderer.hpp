@@ -29,7 +29,7 @@ struct OrbitSettings {
   double cloud_base_m = 2000;           // altitude of the cloud shell's bottom
   double cloud_thickness_m = 8000;      // the shell's thickness
   double cloud_extinction = 0.02;       // 1/m at density 1 (optical depth 20 per km)
-  double night_lights = 0.03;           // radiance (W m^-2 sr^-1 nm^-1) of a city-light texel of value 1
+  double night_lights = 0.08;           // radiance (W m^-2 sr^-1 nm^-1) of a city-light texel of value 1
   int cloud_steps = 32;                 // samples along a view ray through the shell
   int shadow_steps = 6;                 // samples from the ground towards the sun
   int sky_steps = 12;                   // samples of the atmosphere along a view ray
