@@ -221,6 +221,11 @@ TEST_CASE("orbit: a cloud patch of the cover appears at its pixel and nowhere el
   CHECK(alpha_elsewhere == 0.0);
   if (mirrored.x >= 0 && mirrored.x < 64 && mirrored.y >= 0 && mirrored.y < 48)
     CHECK(pixel(r, int(mirrored.x), int(mirrored.y)).a == 0.0f);
+  // A renderer made with a clear cover shows the patch once it is given the patch's cover.
+  render::OrbitRenderer renderer(uniform_planet(0.1), clear_cover());
+  CHECK(pixel(renderer.render(camera, june_morning + 4 * 3600), int(at.x), int(at.y)).a == 0.0f);
+  renderer.set_cover(cover);
+  CHECK(pixel(renderer.render(camera, june_morning + 4 * 3600), int(at.x), int(at.y)).a > 0.99f);
 }
 
 TEST_CASE("orbit: with the sun overhead the ground below the cloud patch is darker than beside it", "[orbit]") {
