@@ -13,6 +13,7 @@
 #include "core/time.hpp"
 #include "cover/global_cover.hpp"
 #include "gl_support.hpp"
+#include "io/image_files.hpp"
 #include "io/planet_textures.hpp"
 #include "render/orbit_renderer.hpp"
 
@@ -379,4 +380,31 @@ TEST_CASE("render --view orbit writes the image and refuses bad values naming th
   INFO(ground.output);
   CHECK(ground.exit_code == 2);
   CHECK_THAT(ground.output, Catch::Contains("--view orbit"));
+}
+
+TEST_CASE("orbit: the procedural stand-in has ocean and land; any equirect map and radius render", "[orbit][cli]") {
+  const render::PlanetImages planet = render::procedural_planet(128, 64);
+  REQUIRE(planet.day.pixels.size() == 128 * 64 * 3);
+  int ocean = 0, land = 0;
+  for (size_t k = 0; k < planet.day.pixels.size(); k += 3) {
+    const float r = planet.day.pixels[k], b = planet.day.pixels[k + 2];
+    ocean += b > r ? 1 : 0;
+    land += r > b ? 1 : 0;
+  }
+  CHECK(ocean > 128 * 64 / 10);
+  CHECK(land > 128 * 64 / 10);
+
+  // Another planet: a small reddish map that is not 2:1 (warned about) on a 3390 km sphere.
+  test::TemporaryDirectory out(true);
+  core::ImageData mars{64, 48, 3, {}};
+  for (int k = 0; k < 64 * 48; ++k) mars.pixels.insert(mars.pixels.end(), {0.7f, 0.35f, 0.2f});
+  const auto map = out.path / "mars.png";
+  io::write_image(map, mars, io::png_encoding(8));
+  const auto r = test::run("render --view orbit --earth-texture " + map.string() +
+                           " --planet-radius-km 3390 --altitude-km 8000 --size 24x12 --quiet --out " +
+                           (out.path / "mars_view.exr").string());
+  INFO(r.output);
+  CHECK(r.exit_code == 0);
+  CHECK_THAT(r.output, Catch::Contains("not 2:1"));
+  CHECK(std::filesystem::exists(out.path / "mars_view.exr"));
 }
