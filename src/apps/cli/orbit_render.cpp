@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <sstream>
 #include <stdexcept>
 
 #include "apps/cli/commands.hpp"
@@ -55,8 +56,12 @@ const std::vector<const params::Parameter*>& orbit_only_parameters() {
 int run_orbit_render(const OrbitOptions& orbit) {
   // Everything is checked before the context is made: bad input exits 2 at once.
   if (orbit.cloud_base_km + orbit.cloud_thickness_km >= 100)
-    throw UsageError("--cloud-base-km + --cloud-thickness-km: " + std::to_string(orbit.cloud_base_km + orbit.cloud_thickness_km) +
+  {
+    std::ostringstream top;
+    top << orbit.cloud_base_km + orbit.cloud_thickness_km;
+    throw UsageError("--cloud-base-km + --cloud-thickness-km: " + top.str() +
                      " km; the cloud shell must end below the atmosphere's top at 100 km");
+  }
   if (orbit.out.empty()) throw UsageError("--out: give an output file (.png or .exr)");
   const std::filesystem::path out(orbit.out);
   const std::string extension = out.extension().string();
