@@ -4,6 +4,7 @@
 #include <OpenImageIO/imageio.h>
 
 #include <catch2/catch.hpp>
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -14,9 +15,11 @@
 
 #include "cli_support.hpp"
 #include "io/atomic_output.hpp"
+#include "io/cube_frames.hpp"
 #include "io/export_presets.hpp"
 #include "io/image_files.hpp"
 #include "io/texture_containers.hpp"
+#include "core/error.hpp"
 #include "params/table.hpp"
 
 namespace nephele {
@@ -138,6 +141,19 @@ float from_half(std::uint16_t h) {
   const float magnitude = exponent == 0 ? std::ldexp(float(mantissa), -24)
                                         : std::ldexp(float(mantissa + 1024), exponent - 25);
   return (h & 0x8000) ? -magnitude : magnitude;
+}
+
+// Read as stored: PNG alpha is unassociated, and OpenImageIO would premultiply the colour.
+io::ImageData read_png_as_stored(const std::filesystem::path& png) {
+  OIIO::ImageSpec config;
+  config.attribute("oiio:UnassociatedAlpha", 1);
+  auto in = OIIO::ImageInput::open(png.string(), &config);
+  REQUIRE(in);
+  io::ImageData image{in->spec().width, in->spec().height, in->spec().nchannels, {}};
+  image.pixels.resize(std::size_t(image.width) * image.height * image.channels);
+  REQUIRE(in->read_image(0, 0, 0, image.channels, OIIO::TypeDesc::FLOAT, image.pixels.data()));
+  in->close();
+  return image;
 }
 
 }  // namespace
@@ -383,15 +399,7 @@ TEST_CASE("export celestia: an add-on folder with a white RGBA map, coverage in 
   const std::string ssc = test::read_file(folder / "marker_test.ssc");
   CHECK_THAT(ssc, Catch::Contains("Modify \"Earth\" \"Sol\"") && Catch::Contains("CloudMap \"marker_test.png\""));
   const auto png = folder / "textures" / "hires" / "marker_test.png";
-  // Read as stored: PNG alpha is unassociated, and OpenImageIO would premultiply the colour.
-  OIIO::ImageSpec config;
-  config.attribute("oiio:UnassociatedAlpha", 1);
-  auto in = OIIO::ImageInput::open(png.string(), &config);
-  REQUIRE(in);
-  io::ImageData image{in->spec().width, in->spec().height, in->spec().nchannels, {}};
-  image.pixels.resize(std::size_t(image.width) * image.height * image.channels);
-  REQUIRE(in->read_image(0, 0, 0, image.channels, OIIO::TypeDesc::FLOAT, image.pixels.data()));
-  in->close();
+  const auto image = read_png_as_stored(png);
   REQUIRE(image.channels == 4);
   REQUIRE(image.width == 4 * kSize);
   REQUIRE(image.height == 2 * kSize);
@@ -475,6 +483,238 @@ TEST_CASE("half_from_float rounds to the nearest binary16, ties to even, through
   for (std::uint32_t h = 0; h < 0x7C00; ++h) {
     if (io::half_from_float(from_half(std::uint16_t(h))) != h) FAIL("round trip of " << h);
   }
+}
+
+namespace {
+
+// Face and (s, t) of direction d by the GL table (OpenGL 4.6, table 8.19), for the engines'
+// face layouts; written here from the table, not from the writer's code.
+struct FaceHit {
+  int face;
+  double s, t;
+};
+FaceHit gl_face_of(const std::array<double, 3>& d) {
+  const double ax = std::abs(d[0]), ay = std::abs(d[1]), az = std::abs(d[2]);
+  if (ax >= ay && ax >= az)
+    return d[0] > 0 ? FaceHit{0, (-d[2] / ax + 1) / 2, (-d[1] / ax + 1) / 2} : FaceHit{1, (d[2] / ax + 1) / 2, (-d[1] / ax + 1) / 2};
+  if (ay >= az)
+    return d[1] > 0 ? FaceHit{2, (d[0] / ay + 1) / 2, (d[2] / ay + 1) / 2} : FaceHit{3, (d[0] / ay + 1) / 2, (-d[2] / ay + 1) / 2};
+  return d[2] > 0 ? FaceHit{4, (d[0] / az + 1) / 2, (-d[1] / az + 1) / 2} : FaceHit{5, (-d[0] / az + 1) / 2, (-d[1] / az + 1) / 2};
+}
+
+// Checks the marker in face `hit.face` of a layout `columns` faces wide, and nothing bright in
+// the other faces.
+void check_marker_in_layout(const io::ImageData& image, int columns, const FaceHit& hit) {
+  REQUIRE(image.width == columns * kSize);
+  REQUIRE(image.height == 6 / columns * kSize);
+  for (int f = 0; f < 6; ++f) {
+    INFO("face " << f);
+    const auto c = bright_centroid(image.pixels, image.width, image.channels, 0, f % columns * kSize,
+                                   f / columns * kSize, kSize, kSize);
+    if (f != hit.face) {
+      CHECK(c.count == 0);
+      continue;
+    }
+    REQUIRE(c.count > 0);
+    CHECK(c.x == Approx(hit.s * kSize - 0.5).epsilon(0).margin(kMarkerPixels));
+    CHECK(c.y == Approx(hit.t * kSize - 0.5).epsilon(0).margin(kMarkerPixels));
+  }
+}
+
+void check_no_gamma_chunk(const std::filesystem::path& png) {
+  INFO(png.string());
+  const std::string bytes = test::read_file(png);
+  REQUIRE(bytes.compare(0, 8, "\x89PNG\r\n\x1a\n") == 0);
+  for (const auto& type : png_chunks(bytes)) {
+    CHECK(type != "gAMA");
+    CHECK(type != "sRGB");
+    CHECK(type != "iCCP");
+  }
+}
+
+void check_equirect_marker(const io::ImageData& image, int channel = 0) {
+  REQUIRE(image.width == 2 * image.height);
+  const auto c = bright_centroid(image.pixels, image.width, image.channels, channel, 0, 0, image.width, image.height);
+  const auto expected = marker_on_equirect(image.width, image.height);
+  REQUIRE(c.count > 0);
+  CHECK(c.x == Approx(expected[0]).epsilon(0).margin(kMarkerPixels));
+  CHECK(c.y == Approx(expected[1]).epsilon(0).margin(kMarkerPixels));
+}
+
+// A 2D legacy RGBA8 DDS (Microsoft's DDS_HEADER at its documented offsets): width, height and the
+// texels as floats (4 channels), after checking that it is not a cube.
+io::ImageData read_dds_2d_rgba8(const std::filesystem::path& path) {
+  const std::string b = test::read_file(path);
+  REQUIRE(b.size() >= 128);
+  CHECK(b.compare(0, 4, "DDS ") == 0);
+  CHECK(u32(b, 80) == 0x41u);  // DDPF_RGB | DDPF_ALPHAPIXELS
+  CHECK(u32(b, 112) == 0u);    // dwCaps2: no cube
+  io::ImageData image{int(u32(b, 16)), int(u32(b, 12)), 4, {}};
+  REQUIRE(b.size() == 128 + 4 * std::size_t(image.width) * image.height);
+  for (std::size_t i = 128; i < b.size(); ++i) image.pixels.push_back((unsigned char)b[i] / 255.0f);
+  return image;
+}
+
+}  // namespace
+
+TEST_CASE("export flightgear: eight bordered tiles whose inner 126/128 reassemble to the map with the marker in N3",
+          "[export]") {
+  Exported e("flightgear");
+  REQUIRE(e.run.exit_code == 0);
+  const int tile = io::flightgear_tile_size(kSize), border = tile / 128, content = tile - 2 * border;
+  REQUIRE(tile == 128);
+  io::ImageData mosaic{4 * content, 2 * content, 1, std::vector<float>(std::size_t(8) * content * content)};
+  for (int h = 0; h < 2; ++h)
+    for (int q = 0; q < 4; ++q) {
+      const std::string name = std::string("clouds_") + (h ? "S" : "N") + std::to_string(q + 1) + ".png";
+      INFO(name);
+      check_no_gamma_chunk(e.out.path / name);
+      const auto image = read_png_as_stored(e.out.path / name);
+      REQUIRE(image.width == tile);
+      REQUIRE(image.height == tile);
+      REQUIRE(image.channels == 2);  // grey + alpha, as the shipped tiles
+      const auto at = [&](int x, int y, int c) { return image.pixels[(std::size_t(y) * tile + x) * 2 + c]; };
+      for (int y = 0; y < tile; ++y)
+        for (int x = 0; x < tile; ++x) {
+          if (at(x, y, 0) != 1.0f) FAIL("grey is not white at " << x << ", " << y);
+          // The border repeats the nearest content pixel.
+          const int cx = std::clamp(x, border, tile - 1 - border), cy = std::clamp(y, border, tile - 1 - border);
+          if (at(x, y, 1) != at(cx, cy, 1)) FAIL("border pixel " << x << ", " << y << " is not its edge pixel");
+        }
+      for (int y = 0; y < content; ++y)
+        for (int x = 0; x < content; ++x)
+          mosaic.pixels[std::size_t(h * content + y) * mosaic.width + q * content + x] = at(x + border, y + border, 1);
+    }
+  check_equirect_marker(mosaic);
+}
+
+TEST_CASE("export eve: the marker where EVE's equirect and GetCubeCubeUV rules look, and the config names the faces",
+          "[export]") {
+  Exported e("eve");
+  REQUIRE(e.run.exit_code == 0);
+  const auto dir = e.out.path / "GameData" / "nephele_clouds";
+  // The marker in EVE's body frame: +Z longitude 0, +X 90 E, +Y north.
+  const auto m = marker_direction();
+  const std::array<double, 3> v{m[1], m[2], m[0]};
+  {
+    const auto image = read_dds_2d_rgba8(dir / "clouds_equirect.dds");
+    REQUIRE(image.width == 4 * kSize);
+    const double u = 0.5 + std::atan2(v[0], v[2]) / (2 * kPi), vv = std::acos(v[1]) / kPi;
+    const auto c = bright_centroid(image.pixels, image.width, 4, 3, 0, 0, image.width, image.height);
+    REQUIRE(c.count > 0);
+    CHECK(c.x == Approx(u * image.width - 0.5).epsilon(0).margin(kMarkerPixels));
+    CHECK(c.y == Approx(vv * image.height - 0.5).epsilon(0).margin(kMarkerPixels));  // v = 0 is the first row
+    CHECK(image.pixels[0] == 1.0f);  // RGB white
+  }
+  // GetCubeCubeUV (cubeMap.cginc), transcribed: the face and its uv.
+  const double ax = std::abs(v[0]), ay = std::abs(v[1]), az = std::abs(v[2]);
+  const bool zx = az >= ax, ny = ay <= std::max(ax, az);
+  const double s = (ny ? (zx ? v[2] : v[0]) : v[1]) > 0 ? 1 : -1;
+  std::array<double, 3> dc = !ny ? std::array<double, 3>{v[1], v[0], s * v[2]}
+                                 : zx ? std::array<double, 3>{v[2], s * v[0], -v[1]}
+                                      : std::array<double, 3>{v[0], -s * v[2], -v[1]};
+  const double u = 0.5 * dc[1] / std::abs(dc[0]) + 0.5, vv = 0.5 * dc[2] / std::abs(dc[0]) + 0.5;
+  const std::string hit = std::string(ny ? (zx ? "z" : "x") : "y") + (s > 0 ? "p" : "n");
+  const std::string config = test::read_file(dir / "nephele_clouds_textures.cfg");
+  CHECK_THAT(config, Catch::Contains("EVE_TEXTURE_CONFIG") && Catch::Contains("type = TEX_CUBE_6"));
+  for (const char* key : {"xn", "xp", "yn", "yp", "zn", "zp"}) {
+    INFO(key);
+    const std::string file = std::string("clouds_") + key;
+    CHECK_THAT(config, Catch::Contains(std::string("tex") + char(std::toupper(key[0])) + key[1] + " = nephele_clouds/" + file));
+    const auto image = read_dds_2d_rgba8(dir / (file + ".dds"));
+    REQUIRE(image.width == kSize);
+    const auto c = bright_centroid(image.pixels, kSize, 4, 3, 0, 0, kSize, kSize);
+    if (hit != key) {
+      CHECK(c.count == 0);
+      continue;
+    }
+    REQUIRE(c.count > 0);
+    CHECK(c.x == Approx(u * kSize - 0.5).epsilon(0).margin(kMarkerPixels));
+    CHECK(c.y == Approx(vv * kSize - 0.5).epsilon(0).margin(kMarkerPixels));
+  }
+  CHECK(hit == "xp");  // 30 N 60 E: EVE's +X (90 E) face
+}
+
+TEST_CASE("export unity: the lat-long maps carry the marker, HDRP's in red, and the 6x1 strip is the reflected cube",
+          "[export]") {
+  Exported e("unity");
+  REQUIRE(e.run.exit_code == 0);
+  check_equirect_marker(io::read_image(e.out.path / "cover_latlong.exr"));
+  check_equirect_marker(io::read_image(e.out.path / "cover_latlong_16.png"));
+  const auto hdrp = io::read_image(e.out.path / "cover_latlong_hdrp.png");
+  REQUIRE(hdrp.channels == 3);
+  check_equirect_marker(hdrp, 0);
+  CHECK(bright_centroid(hdrp.pixels, hdrp.width, 3, 1, 0, 0, hdrp.width, hdrp.height).count == 0);
+  for (const char* png : {"cover_latlong_16.png", "cover_latlong_hdrp.png", "cover_cube_6x1.png"})
+    check_no_gamma_chunk(e.out.path / png);
+  // Unity's frame: +X longitude 0, +Y north, +Z 90 E (left-handed); its sampler uses the GL table.
+  const auto m = marker_direction();
+  const auto hit = gl_face_of({m[0], m[2], m[1]});
+  CHECK(hit.face == 4);  // Unity +Z: 90 E is nearest to 60 E
+  CHECK(io::AxisMap{{0, 2, 1}, {1, 1, 1}}.determinant() == -1);  // the writer's Unity axes: a reflection
+  check_marker_in_layout(io::read_image(e.out.path / "cover_cube_6x1.png"), 6, hit);
+}
+
+TEST_CASE("export godot: 2x3 and 6x1 cubes rotated into Godot's Y-up frame and a panorama with the marker",
+          "[export]") {
+  Exported e("godot");
+  REQUIRE(e.run.exit_code == 0);
+  // Godot's frame: +Z longitude 0, +X 90 E, +Y north (right-handed, a rotation of nephele's).
+  const auto m = marker_direction();
+  const auto hit = gl_face_of({m[1], m[2], m[0]});
+  CHECK(hit.face == 0);  // Godot +X
+  CHECK(io::AxisMap{{2, 0, 1}, {1, 1, 1}}.determinant() == 1);  // the writer's Godot axes: a rotation
+  check_marker_in_layout(io::read_image(e.out.path / "cover_cube_2x3.png"), 2, hit);
+  check_marker_in_layout(io::read_image(e.out.path / "cover_cube_6x1.png"), 6, hit);
+  check_equirect_marker(io::read_image(e.out.path / "cover_panorama.exr"));
+  for (const char* png : {"cover_cube_2x3.png", "cover_cube_6x1.png", "cover_panorama_16.png"})
+    check_no_gamma_chunk(e.out.path / png);
+}
+
+TEST_CASE("export unreal: linear EXR and 16-bit PNG maps with the marker where the README's UV formula looks",
+          "[export]") {
+  Exported e("unreal");
+  REQUIRE(e.run.exit_code == 0);
+  for (const char* name : {"cover_equirect.exr", "cover_equirect_16.png"}) {
+    INFO(name);
+    const auto image = io::read_image(e.out.path / name);
+    check_equirect_marker(image);
+    // The README's formula in Unreal's axes (X forward, Y right, Z up): Y = -(nephele Y).
+    const auto m = marker_direction();
+    const double u = 0.5 + std::atan2(-(-m[1]), m[0]) / (2 * kPi);
+    const auto c = bright_centroid(image.pixels, image.width, image.channels, 0, 0, 0, image.width, image.height);
+    CHECK(c.x == Approx(u * image.width - 0.5).epsilon(0).margin(kMarkerPixels));
+  }
+  check_no_gamma_chunk(e.out.path / "cover_equirect_16.png");
+  const std::string readme = test::read_file(e.out.path / "README.txt");
+  CHECK_THAT(readme, Catch::Contains("u = 0.5 + atan2(-y, x)/(2 pi)"));
+}
+
+TEST_CASE("export blender: the equirect with the marker and a World script whose Mapping scales Y by -1", "[export]") {
+  Exported e("blender");
+  REQUIRE(e.run.exit_code == 0);
+  check_equirect_marker(io::read_image(e.out.path / "cover_equirect.exr"));
+  const std::string script = test::read_file(e.out.path / "nephele_world.py");
+  CHECK_THAT(script, Catch::Contains("(1.0, -1.0, 1.0)") && Catch::Contains("Non-Color"));
+}
+
+TEST_CASE("export refuses up front a preset whose image would exceed 16384 pixels, naming the largest face size",
+          "[export]") {
+  const auto& equirect = io::find_export_preset("equirect");
+  CHECK_NOTHROW(io::check_texture_limit(equirect, 4096));
+  try {
+    io::check_texture_limit(equirect, 4097);
+    FAIL("no error for a 16388-pixel equirect");
+  } catch (const core::InputError& error) {
+    CHECK_THAT(error.what(), Catch::Contains("COVER_DIR") && Catch::Contains("4096") && Catch::Contains("16384"));
+  }
+  CHECK_NOTHROW(io::check_texture_limit(io::find_export_preset("unity"), 2730));
+  CHECK_THROWS_AS(io::check_texture_limit(io::find_export_preset("unity"), 2731), core::InputError);
+  CHECK_THROWS_AS(io::check_texture_limit(io::find_export_preset("godot"), 2731), core::InputError);
+  // Tiles and cube faces stay within the limit for every face size generate makes.
+  CHECK(io::flightgear_tile_size(16384) == 16384);
+  CHECK_NOTHROW(io::check_texture_limit(io::find_export_preset("flightgear"), 16384));
+  CHECK_NOTHROW(io::check_texture_limit(io::find_export_preset("ktx2"), 16384));
 }
 
 }  // namespace nephele

@@ -48,6 +48,7 @@ int run_export(const std::vector<std::string>& arguments) {
   export_options.ktx2_format = format;
   export_options.name = name;
   const io::CoverFaces faces = io::read_cover_faces(cover_dir);
+  io::check_texture_limit(preset, faces.size);
 
   const std::filesystem::path directory(out);
   if (std::filesystem::exists(directory) && !std::filesystem::is_directory(directory))
