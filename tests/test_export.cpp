@@ -9,6 +9,8 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <cstdlib>
+#include <map>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -715,6 +717,45 @@ TEST_CASE("export refuses up front a preset whose image would exceed 16384 pixel
   CHECK(io::flightgear_tile_size(16384) == 16384);
   CHECK_NOTHROW(io::check_texture_limit(io::find_export_preset("flightgear"), 16384));
   CHECK_NOTHROW(io::check_texture_limit(io::find_export_preset("ktx2"), 16384));
+}
+
+// A real client: Blender renders the World that the preset's own script sets up, looking at the
+// marker and at its mirror images (scripts/blender_probe.py). Blender is not a CI package (see
+// docs/export.md, "blender"): without it on PATH the test says so and passes.
+TEST_CASE("export blender: Blender renders the marker at 30 N 60 E through the preset's World, and at 60 W without Y = -1",
+          "[export][blender]") {
+  if (std::system("command -v blender > /dev/null 2>&1") != 0) {
+    WARN("skipped: blender is not installed (apt-get install --no-install-recommends blender)");
+    return;
+  }
+  Exported e("blender");
+  REQUIRE(e.run.exit_code == 0);
+  const auto run = test::run_command(
+      "blender -b --factory-startup --python-exit-code 1 --python " + std::string(NEPHELE_SOURCE_DIR) +
+      "/scripts/blender_probe.py -- " + (e.out.path / "nephele_world.py").string() + " " +
+      (e.out.path / "cover_equirect.exr").string() + " 30 60 30 -60 -30 60 -30 -60");
+  INFO(run.output);
+  REQUIRE(run.exit_code == 0);
+  std::istringstream lines(run.output);
+  std::map<std::string, double> probes;  // "scale lat lon" -> value
+  for (std::string line; std::getline(lines, line);) {
+    if (line.rfind("PROBE ", 0) != 0) continue;
+    std::istringstream fields(line.substr(6));
+    std::string scale, lat, lon;
+    double value;
+    fields >> scale >> lat >> lon >> value;
+    probes[scale + " " + lat + " " + lon] = value;
+  }
+  REQUIRE(probes.size() == 8);
+  // The cover is 1 inside the marker and 0.1 elsewhere; a 1-degree view inside the 5.7-degree
+  // marker sees 1 up to the bilinear blur, outside it 0.1: 0.5 separates them.
+  CHECK(probes["-1 30 60"] > 0.5);
+  CHECK(probes["-1 30 -60"] < 0.5);
+  CHECK(probes["-1 -30 60"] < 0.5);
+  CHECK(probes["-1 -30 -60"] < 0.5);
+  // Without the reflection Blender shows the map mirrored: the marker at 60 W.
+  CHECK(probes["1 30 60"] < 0.5);
+  CHECK(probes["1 30 -60"] > 0.5);
 }
 
 }  // namespace nephele
