@@ -758,4 +758,26 @@ TEST_CASE("export blender: Blender renders the marker at 30 N 60 E through the p
   CHECK(probes["1 30 -60"] > 0.5);
 }
 
+TEST_CASE("generate --export runs the presets into export/NAME of the same set, and refuses an unknown one before work",
+          "[export][cli]") {
+  test::TemporaryDirectory out;
+  const auto r = test::run("generate --size 16 --iterations 5 --files faces --export flightgear,godot --out " +
+                           out.path.string());
+  REQUIRE(r.exit_code == 0);
+  CHECK(std::filesystem::is_regular_file(out.path / "cover_px.exr"));
+  for (const char* file : {"export/flightgear/clouds_N1.png", "export/flightgear/clouds_S4.png",
+                           "export/flightgear/README.txt", "export/godot/cover_cube_2x3.png", "export/godot/README.txt"})
+    CHECK(std::filesystem::is_regular_file(out.path / file));
+  const auto strip = io::read_image(out.path / "export/godot/cover_cube_6x1.png");
+  CHECK(strip.width == 6 * 16);  // made from the generated 16^2 faces
+  test::TemporaryDirectory bad;
+  const auto refused = test::run("generate --size 16 --iterations 5 --export godot,blue --out " + bad.path.string());
+  CHECK(refused.exit_code == 2);
+  CHECK_THAT(refused.output, Catch::Contains("--export") && Catch::Contains("blue"));
+  CHECK_FALSE(std::filesystem::exists(bad.path / "cover.json"));
+  const auto too_wide = test::run("generate --size 4097 --export equirect --out " + bad.path.string());
+  CHECK(too_wide.exit_code == 2);
+  CHECK_THAT(too_wide.output, Catch::Contains("16384"));
+}
+
 }  // namespace nephele

@@ -117,6 +117,7 @@ inline constexpr Parameter seed = integer("seed", 1, 0, 16777215, "", "seed of t
 namespace run {
 inline constexpr Parameter cover_out = text("out", "cubemaps", "DIR", "output directory (created if missing)", generate);
 inline constexpr Parameter cover_files = text("files", "faces,equirect,png", "faces,equirect,png", "comma-separated images to write (cover.json always); what none asks for is not computed", generate);
+inline constexpr Parameter cover_exports = text("export", "", "NAME,NAME,...", "export presets (docs/export.md) run on the new cover, each into DIR/export/NAME of the same output set", generate);
 inline constexpr Parameter precision = text("precision", "float", "float|half", "EXR samples: 32-bit float, or 16-bit half (11 significant bits, half the bytes)", generate);
 inline constexpr Parameter exr_compression = text("exr_compression", "zip", "none|rle|zips|zip|piz|pxr24|b44|dwaa", "EXR compression: zip (OpenEXR's default), none, rle, zips, piz lose nothing; pxr24, b44, dwaa round values", generate);
 inline constexpr Parameter export_preset = text("preset", "", "equirect|gl-faces|ktx2|dds|celestia|exr-cube|flightgear|eve|unity|godot|unreal|blender", "the target's files (docs/export.md)", export_cover);
