@@ -780,4 +780,69 @@ TEST_CASE("generate --export runs the presets into export/NAME of the same set, 
   CHECK_THAT(too_wide.output, Catch::Contains("16384"));
 }
 
+// FlightGear's own models (Debian flightgear-data-models, optional): every vertex of the
+// shipped clouds_*.ac samples the exported tile at its UV. The models' frame (AC3D, y up):
+// latitude asin(y), longitude atan2(-x, -z); u = 1/128 + (126/128) lon/90 from the tile's west
+// edge, and v (0 at the bottom row) runs from 1/128 at the equator of N tiles (127/128 for S)
+// at 88.61 degrees per unit: the meshes' last ring is at 87.2 degrees before the pole fan, so
+// FlightGear draws every Earthview texture, the shipped ones included, with latitudes scaled
+// by 87.23/90. The bright vertices must sit at 60 E and 30 N times that scale.
+TEST_CASE("export flightgear: through the UVs of FlightGear's shipped cloud models the marker lands at 60 E, 30 N",
+          "[export][flightgear]") {
+  const std::filesystem::path astro = "/usr/share/games/flightgear/Models/Astro";
+  if (!std::filesystem::exists(astro / "clouds_N1.ac")) {
+    WARN("skipped: FlightGear's models are not installed (apt-get install flightgear-data-models)");
+    return;
+  }
+  Exported e("flightgear");
+  REQUIRE(e.run.exit_code == 0);
+  double lat_sum = 0, lon_sum = 0;
+  int bright = 0, vertices = 0;
+  for (const char* hemisphere : {"N", "S"})
+    for (int q = 1; q <= 4; ++q) {
+      const std::string name = std::string("clouds_") + hemisphere + std::to_string(q);
+      const auto tile = read_png_as_stored(e.out.path / (name + ".png"));
+      std::istringstream ac(test::read_file(astro / (name + ".ac")));
+      // AC3D: the object named `name` lists numvert positions, then surfaces whose refs lines
+      // are "vertex u v".
+      std::vector<std::array<double, 3>> points;
+      bool ours = false;
+      for (std::string line; std::getline(ac, line);) {
+        std::istringstream words(line);
+        std::string word;
+        words >> word;
+        if (word == "name") ours = line == "name \"" + name + "\"";
+        if (!ours) continue;
+        if (word == "numvert") {
+          int n;
+          words >> n;
+          points.resize(n);
+          for (auto& p : points) ac >> p[0] >> p[1] >> p[2];
+        } else if (word == "refs") {
+          int n;
+          words >> n;
+          for (int k = 0; k < n; ++k) {
+            int index;
+            double u, v;
+            ac >> index >> u >> v;
+            const auto& p = points.at(index);
+            const double r = std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
+            const double lat = std::asin(p[1] / r) * 180 / kPi, lon = std::atan2(-p[0], -p[2]) * 180 / kPi;
+            const int x = std::clamp(int(u * tile.width), 0, tile.width - 1);
+            const int y = std::clamp(int((1 - v) * tile.height), 0, tile.height - 1);
+            ++vertices;
+            if (tile.pixels[(std::size_t(y) * tile.width + x) * 2 + 1] > 0.5f) lat_sum += lat, lon_sum += lon, ++bright;
+          }
+        }
+      }
+    }
+  CHECK(vertices == 8 * 4356);
+  REQUIRE(bright > 0);
+  // The mesh's vertices are 2.8 degrees apart: the centroid of the references inside the
+  // 5.7-degree marker (a vertex once per surface using it) is within about half a spacing of
+  // its centre; a mirrored or misplaced tile puts it 60 or more degrees away.
+  CHECK(lon_sum / bright == Approx(kLon).epsilon(0).margin(1.5));
+  CHECK(lat_sum / bright == Approx(kLat * 87.23 / 90).epsilon(0).margin(1.5));
+}
+
 }  // namespace nephele
