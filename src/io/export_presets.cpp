@@ -448,9 +448,9 @@ void write_blender(OutputSet& out, std::vector<std::string>& names, const Export
                    "  3. Mapping -> Environment Texture Vector; open cover_equirect.exr, Color Space\n"
                    "     Non-Color; Color -> Background.\n"
                    "or run nephele_world.py (blender -b FILE.blend --python nephele_world.py). For a\n"
-                   "planet: the same chain on an Image Texture fed by the object's direction\n"
-                   "(Texture Coordinate Object -> Vector Math Normalize -> Mapping with Y -1 ->\n"
-                   "Image Texture, projection Sphere). Checked in Blender 3.4.1:\n"
+                   "planet: the same chain in the sphere's material, fed by the object's direction\n"
+                   "(Texture Coordinate Object -> Mapping Y -1 -> Environment Texture, which takes\n"
+                   "any vector; see scripts/blender_planet.py). Checked in Blender 3.4.1:\n"
                    "scripts/check-blender-export.sh (docs/export.md, \"blender\").\n"));
   names.push_back("README.txt");
 }
