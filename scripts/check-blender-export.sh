@@ -11,4 +11,4 @@ build=${1:-build}
 command -v blender > /dev/null || { echo "blender not found: apt-get install -y --no-install-recommends blender" >&2; exit 1; }
 blender --version | head -n 1
 "$build/tests/nephele_tests" "export blender: Blender renders*" -s 2>&1 | grep -E '^PROBE|passed|failed' | sort -u
-"$build/tests/nephele_tests" "model's density.vdb opens in Blender*" -s 2>&1 | grep -E '^(GRID|BOUNDS)|passed|failed' | sort -u
+"$build/tests/nephele_tests" "model's density.vdb opens in Blender*" -s 2>&1 | grep -oE 'GRID [^ ]+ [^ ]+ [0-9]+|BOUNDS( [0-9.-]+){6}|All tests passed.*|failed.*' | sort -u
