@@ -22,6 +22,7 @@
 #include "io/image_files.hpp"
 #include "io/model_files.hpp"
 #include "io/texture_containers.hpp"
+#include "io/volume_export.hpp"
 #include "core/error.hpp"
 #include "params/table.hpp"
 
@@ -448,8 +449,9 @@ TEST_CASE("export exr-cube: an N x 6N envmap=cube strip with the +Y face flipped
   }
 }
 
-TEST_CASE("every export preset writes a README.txt naming the preset beside its files", "[export]") {
+TEST_CASE("every cover export preset writes a README.txt naming the preset beside its files", "[export]") {
   for (const auto& preset : io::export_presets()) {
+    if (preset.volume) continue;  // atlas and openvdb read volumes: their own tests read their README
     INFO(preset.name);
     Exported e(preset.name);
     REQUIRE(e.run.exit_code == 0);
@@ -895,6 +897,89 @@ TEST_CASE("model's density.vdb opens in Blender as a Volume with the grid densit
     CHECK(b[k] == Approx(s * (low[k] / 8 * 8 + 0.5)).epsilon(0).margin(1e-3));
     CHECK(b[3 + k] == Approx(s * (high[k] / 8 * 8 + 7 + 0.5)).epsilon(0).margin(1e-3));
   }
+}
+
+TEST_CASE("export atlas: a noise volume's slices in rows and columns, every texel where the layout says", "[export]") {
+  test::TemporaryDirectory dir(true);
+  REQUIRE(test::run("noise --width 16 --height 16 --depth 10 --cells 8 --channels rg --quiet --out " + (dir.path / "n.raw").string()).exit_code == 0);
+  test::TemporaryDirectory out;
+  const auto r = test::run("export " + (dir.path / "n.json").string() + " --preset atlas --out " + out.path.string());
+  REQUIRE(r.exit_code == 0);
+  const std::string raw = test::read_file(dir.path / "n.raw");
+  REQUIRE(raw.size() == 4u * 16 * 16 * 10 * 2);
+  const auto atlas = io::read_image(out.path / "volume_atlas.exr");
+  const auto png = read_png_as_stored(out.path / "volume_atlas_16.png");
+  check_no_gamma_chunk(out.path / "volume_atlas_16.png");
+  REQUIRE(atlas.width == 4 * 16);   // ceil(sqrt(10)) = 4 columns
+  REQUIRE(atlas.height == 3 * 16);  // 3 rows
+  REQUIRE(atlas.channels == 2);
+  REQUIRE(png.channels == 2);
+  int wrong = 0;
+  for (int z = 0; z < 10; ++z)
+    for (int y = 0; y < 16; ++y)
+      for (int x = 0; x < 16; ++x)
+        for (int c = 0; c < 2; ++c) {
+          float v;
+          std::memcpy(&v, raw.data() + 4 * ((((std::size_t(z) * 16 + y) * 16 + x) * 2) + c), 4);
+          const std::size_t at = ((std::size_t(z / 4) * 16 + y) * atlas.width + std::size_t(z % 4) * 16 + x) * 2 + c;
+          // The 16-bit PNG quantises to 1/65535: half a step.
+          if (atlas.pixels[at] != v || std::abs(png.pixels[at] - v) > 0.5f / 65535 + 1e-7f) ++wrong;
+        }
+  CHECK(wrong == 0);
+  CHECK_THAT(test::read_file(out.path / "README.txt"),
+             Catch::Contains("preset atlas") && Catch::Contains("Columns 4, Rows 3") && Catch::Contains("data"));
+}
+
+TEST_CASE("export atlas keeps every side within 16384 pixels: 160^3 in 13 x 13, and refuses what cannot fit", "[export]") {
+  const auto g = io::atlas_grid(160, 160, 160);
+  CHECK(g.columns == 13);
+  CHECK(g.rows == 13);
+  CHECK(g.columns * 160 <= io::max_texture_edge);
+  const auto wide = io::atlas_grid(4096, 64, 64);  // only 4 slices fit across
+  CHECK(wide.columns == 4);
+  CHECK(wide.rows == 16);
+  CHECK_THROWS_AS(io::atlas_grid(16384, 16384, 2), core::InputError);
+}
+
+TEST_CASE("export openvdb: a model's density.json becomes a FOG grid density with its voxel size and every voxel",
+          "[export]") {
+  if (!io::vdb_available()) {
+    WARN("skipped: nephele was built without OpenVDB (libopenvdb-dev)");
+    return;
+  }
+  test::TemporaryDirectory model, out;
+  REQUIRE(test::run("model --example fair-weather --size 16 --extent 3200 --no-preview --quiet --out " +
+                    model.path.string()).exit_code == 0);
+  const auto r = test::run("export " + (model.path / "density.json").string() + " --preset openvdb --out " +
+                           out.path.string());
+  REQUIRE(r.exit_code == 0);
+  const auto vdb = io::read_vdb((out.path / "volume.vdb").string());
+  CHECK(vdb.grids == std::vector<std::string>{"density"});
+  CHECK(vdb.fog_volume);
+  CHECK(vdb.background == 0.0f);
+  CHECK(vdb.voxel_size == Approx(200.0).epsilon(0).margin(1e-9));
+  CHECK(vdb.origin[0] == Approx(100.0).epsilon(0).margin(1e-9));  // voxel (0, 0, 0) centred at s/2
+  const std::string raw = test::read_file(model.path / "density.raw");
+  long nonzero = 0;
+  for (std::size_t i = 0; i + 4 <= raw.size(); i += 4) {
+    float v;
+    std::memcpy(&v, raw.data() + i, 4);
+    nonzero += v > 0;
+  }
+  CHECK(vdb.active == nonzero);
+  int wrong = 0;
+  for (const auto& voxel : vdb.values) {
+    float v;
+    std::memcpy(&v, raw.data() + 4 * ((std::size_t(voxel.z) * 16 + voxel.y) * 16 + voxel.x), 4);
+    wrong += v != voxel.value;
+  }
+  CHECK(wrong == 0);
+  CHECK_THAT(test::read_file(out.path / "README.txt"), Catch::Contains("preset openvdb") && Catch::Contains("density"));
+  test::TemporaryDirectory bad;
+  const auto refused = test::run("export " + (model.path / "model.cloud.json").string() + " --preset openvdb --out " +
+                                 bad.path.string());
+  CHECK(refused.exit_code == 2);
+  CHECK_THAT(refused.output, Catch::Contains("VOLUME"));
 }
 
 }  // namespace nephele

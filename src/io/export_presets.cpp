@@ -497,6 +497,8 @@ const std::vector<ExportPreset>& export_presets() {
       {"godot", "Godot 4: 2x3 and 6x1 cubemap images and a panorama equirect", true},
       {"unreal", "Unreal: linear EXR and 16-bit PNG equirect for a cloud or planet material", true},
       {"blender", "Blender: equirect EXR and a script for an unmirrored World (Mapping Y = -1)", true},
+      {"atlas", "volume (noise .raw or model density.json): slice atlas in rows and columns", false, true},
+      {"openvdb", "volume (noise .raw or model density.json): OpenVDB FOG_VOLUME grids", false, true},
   };
   return presets;
 }
@@ -515,6 +517,7 @@ int flightgear_tile_size(int face_size) {
 
 long long widest_image_edge(const ExportPreset& preset, int face_size) {
   const long long n = face_size;
+  if (preset.volume) return 0;  // not a cover: volume_export.cpp checks its atlas
   if (preset.name == "flightgear") return flightgear_tile_size(face_size);
   if (preset.name == "unity" || preset.name == "godot") return 6 * n;  // the 6x1 strip
   if (preset.needs_equirect) return 4 * n;

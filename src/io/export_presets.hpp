@@ -23,6 +23,7 @@ struct ExportPreset {
   std::string name;     // --preset word
   std::string summary;  // one line for --help and the README
   bool needs_equirect;  // resamples the cube map on the GPU (a context must be current)
+  bool volume = false;  // reads a volume's sidecar (io/volume_export.hpp) instead of a cover
 };
 // The presets in the order --help lists them.
 const std::vector<ExportPreset>& export_presets();

@@ -57,6 +57,7 @@ int run_generate(const std::vector<std::string>& arguments) {
       const auto& all = io::export_presets();
       const auto found = std::find_if(all.begin(), all.end(), [&](const io::ExportPreset& p) { return p.name == name; });
       if (found == all.end()) throw UsageError("--export", name, std::string(params::run::export_preset.allowed));
+      if (found->volume) throw UsageError("--export", name, "a cover preset", "exports volumes, not covers");
       presets.push_back(&*found);
       io::check_texture_limit(*presets.back(), parameters.size);
     }
