@@ -41,25 +41,10 @@ std::array<double, 3> marker_direction() {
   return {std::cos(lat) * std::cos(lon), std::cos(lat) * std::sin(lon), std::sin(lat)};
 }
 
-// Direction of texel (i, j) of GL face f, from the table of docs/conventions.md
-// (OpenGL 4.6 section 8.13): sc = 2s - 1, tc = 2t - 1 on the face plane |ma| = 1.
-std::array<double, 3> texel_direction(int f, int i, int j, int n) {
-  const double sc = 2 * (i + 0.5) / n - 1, tc = 2 * (j + 0.5) / n - 1;
-  std::array<double, 3> d;
-  switch (f) {
-    case 0: d = {1, -tc, -sc}; break;
-    case 1: d = {-1, -tc, sc}; break;
-    case 2: d = {sc, 1, tc}; break;
-    case 3: d = {sc, -1, -tc}; break;
-    case 4: d = {sc, -tc, 1}; break;
-    default: d = {-sc, -tc, -1}; break;
-  }
-  const double l = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
-  return {d[0] / l, d[1] / l, d[2] / l};
-}
-
 // Writes a cover directory: 0.1 everywhere, 1 within kRadius of the marker, through the same
-// image writer as `generate`.
+// image writer as `generate`. Texel directions come from io::gl_texel_direction; the checks
+// below place the marker with formulas of their own (marker_on_face, gl_face_of), so an error
+// there shows up as a misplaced marker.
 void write_marker_cover(const std::filesystem::path& dir) {
   std::filesystem::create_directories(dir);
   const auto m = marker_direction();
@@ -68,7 +53,7 @@ void write_marker_cover(const std::filesystem::path& dir) {
     io::ImageData face{kSize, kSize, 1, std::vector<float>(kSize * kSize)};
     for (int j = 0; j < kSize; ++j)
       for (int i = 0; i < kSize; ++i) {
-        const auto d = texel_direction(f, i, j, kSize);
+        const auto d = io::gl_texel_direction(f, i, j, kSize);
         const double angle = std::acos(std::min(1.0, d[0] * m[0] + d[1] * m[1] + d[2] * m[2]));
         face.pixels[j * kSize + i] = angle < kRadius ? 1.0f : 0.1f;
       }

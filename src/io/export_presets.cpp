@@ -66,6 +66,13 @@ std::string readme(const ExportPreset& preset, const CoverFaces& faces, const st
   return text.str();
 }
 
+// The preset's README.txt, listed after its files.
+void add_readme(OutputSet& out, std::vector<std::string>& names, const ExportPreset& preset, const CoverFaces& faces,
+                const std::string& body) {
+  out.write("README.txt", readme(preset, faces, body));
+  names.push_back("README.txt");
+}
+
 void write_equirect(OutputSet& out, std::vector<std::string>& names, const ExportPreset& preset,
                     const CoverFaces& faces) {
   const ImageData map = equirect_image(faces);
@@ -77,7 +84,7 @@ void write_equirect(OutputSet& out, std::vector<std::string>& names, const Expor
     names.push_back(name);
   }
   const std::string w = std::to_string(map.width), h = std::to_string(map.height);
-  out.write("README.txt", readme(preset, faces,
+  add_readme(out, names, preset, faces,
                                  "Files (" + w + " x " + h + ", one grey channel, 2:1 plate carree):\n"
                                  "  cover_equirect.exr     OpenEXR float32, channel Y\n"
                                  "  cover_equirect_16.png  PNG 16-bit, value = round(65535 c)\n"
@@ -85,8 +92,7 @@ void write_equirect(OutputSet& out, std::vector<std::string>& names, const Expor
                                  "Orientation: north up, longitude -180 deg at the left edge, 0 at the centre;\n"
                                  "column i at longitude -180 + 360 (i + 0.5)/W, row j at geodetic latitude\n"
                                  "90 - 180 (j + 0.5)/H (WGS84). Use it wherever a lat-long / equirectangular\n"
-                                 "map is taken (NASA Blue Marble layout).\n"));
-  names.push_back("README.txt");
+                                 "map is taken (NASA Blue Marble layout).\n");
 }
 
 void write_gl_faces(OutputSet& out, std::vector<std::string>& names, const ExportPreset& preset,
@@ -96,15 +102,14 @@ void write_gl_faces(OutputSet& out, std::vector<std::string>& names, const Expor
     out.write(name, encode_image(face_image(faces, f), exr_encoding({"Y"}), name));
     names.push_back(name);
   }
-  out.write("README.txt", readme(preset, faces,
+  add_readme(out, names, preset, faces,
                                  "Files: cover_px.exr, cover_nx.exr, cover_py.exr, cover_ny.exr, cover_pz.exr,\n"
                                  "cover_nz.exr: N x N OpenEXR float32, channel Y, the cube faces +X, -X, +Y, -Y,\n"
                                  "+Z (north), -Z (south) in the OpenGL convention (OpenGL 4.6 core, section 8.13,\n"
                                  "table 8.19). Upload face i to GL_TEXTURE_CUBE_MAP_POSITIVE_X + i as stored, row 0\n"
                                  "first, without flips. World axes: +X to 0 N 0 E, +Y to 0 N 90 E, +Z to the North\n"
                                  "Pole; a renderer with Y up must rotate its direction into these axes (a rotation,\n"
-                                 "not an exchange of two axes, which would mirror the map).\n"));
-  names.push_back("README.txt");
+                                 "not an exchange of two axes, which would mirror the map).\n");
 }
 
 void write_ktx2(OutputSet& out, std::vector<std::string>& names, const ExportPreset& preset, const CoverFaces& faces,
@@ -115,14 +120,13 @@ void write_ktx2(OutputSet& out, std::vector<std::string>& names, const ExportPre
   const std::string format = sample == TextureSample::r8     ? "VK_FORMAT_R8_UNORM (9)"
                              : sample == TextureSample::r16f ? "VK_FORMAT_R16_SFLOAT (76)"
                                                              : "VK_FORMAT_R32_SFLOAT (100)";
-  out.write("README.txt", readme(preset, faces,
+  add_readme(out, names, preset, faces,
                                  "File: cover_cube.ktx2, a KTX 2.0 cube map (faceCount 6, one mip level, no\n"
                                  "supercompression), " + format + ", faces in the order +X, -X, +Y, -Y, +Z, -Z\n"
                                  "with the OpenGL/Vulkan face orientation, KTXorientation \"rd\". Load it with\n"
                                  "libktx (ktxTexture2_CreateFromNamedFile, then ktxTexture_GLUpload or\n"
                                  "ktxTexture_VkUpload) or any KTX2 loader as a cube texture; no flips are needed.\n"
-                                 "World axes as for gl-faces: +Z is the North Pole.\n"));
-  names.push_back("README.txt");
+                                 "World axes as for gl-faces: +Z is the North Pole.\n");
 }
 
 void write_dds(OutputSet& out, std::vector<std::string>& names, const ExportPreset& preset, const CoverFaces& faces) {
@@ -133,8 +137,7 @@ void write_dds(OutputSet& out, std::vector<std::string>& names, const ExportPres
     out.write(name, encode_dds_cube(faces.texels, faces.size, variant));
     names.push_back(name);
   }
-  out.write("README.txt",
-            readme(preset, faces,
+  add_readme(out, names, preset, faces,
                    "Files (DDS cube maps, one mip level, faces +X, -X, +Y, -Y, +Z, -Z, rows top-down):\n"
                    "  cover_cube_rgba8.dds  legacy header, uncompressed 32-bit RGBA, coverage in R, G, B\n"
                    "                        and A: for loaders that read only legacy DDS (KSP's texture\n"
@@ -145,8 +148,7 @@ void write_dds(OutputSet& out, std::vector<std::string>& names, const ExportPres
                    "                        2.4 does not read these\n"
                    "Faces are addressed as in OpenGL (Direct3D's cube addressing is the same). In a\n"
                    "left-handed engine (Unity, Unreal, KSP) the world must be reflected into nephele's\n"
-                   "right-handed axes (+Z north): an axis rename alone mirrors the map.\n"));
-  names.push_back("README.txt");
+                   "right-handed axes (+Z north): an axis rename alone mirrors the map.\n");
 }
 
 void write_celestia(OutputSet& out, std::vector<std::string>& names, const ExportPreset& preset,
@@ -168,8 +170,7 @@ void write_celestia(OutputSet& out, std::vector<std::string>& names, const Expor
                      "Modify \"Earth\" \"Sol\"\n{\n\tAtmosphere\n\t{\n\t\tCloudMap \"" + options.name +
                      ".png\"\n\t}\n}\n");
   names.push_back(ssc);
-  out.write("README.txt",
-            readme(preset, faces,
+  add_readme(out, names, preset, faces,
                    "Files: " + texture + " (RGBA 8-bit PNG, " + std::to_string(map.width) + " x " +
                        std::to_string(map.height) +
                        ", white, coverage in alpha, 2:1 with the prime meridian at\n"
@@ -179,8 +180,7 @@ void write_celestia(OutputSet& out, std::vector<std::string>& names, const Expor
                        "folder named by ExtrasDirectories in celestia.cfg) and restart Celestia. The .ssc\n"
                        "modifies Earth's atmosphere so that its CloudMap is this texture; Celestia looks it\n"
                        "up in textures/hires/ when the high-resolution texture setting is chosen (it falls\n"
-                       "back to the other resolutions' folders otherwise).\n"));
-  names.push_back("README.txt");
+                       "back to the other resolutions' folders otherwise).\n");
 }
 
 // OpenEXR's cube environment layout (OpenEXR "envmap" attribute, ENVMAP_CUBE): an N x 6N
@@ -202,15 +202,13 @@ void write_exr_cube(OutputSet& out, std::vector<std::string>& names, const Expor
   encoding.attributes.push_back({"textureformat", "CubeFace Environment"});
   out.write("cover_envcube.exr", encode_image(strip, encoding, "cover_envcube.exr"));
   names.push_back("cover_envcube.exr");
-  out.write("README.txt",
-            readme(preset, faces,
+  add_readme(out, names, preset, faces,
                    "File: cover_envcube.exr, an OpenEXR cube environment map (header envmap = cube):\n"
                    "an N x 6N vertical strip of the faces +X, -X, +Y, -Y, +Z, -Z, each mirrored as\n"
                    "OpenEXR's cube layout wants relative to the GL faces (X and Z faces left-right, Y\n"
                    "faces top-bottom). For renderers that take OpenEXR environment cubes (RenderMan-\n"
                    "style lookups, OpenEXR's envmap tools). OpenImageIO 2.4 reads the file but cannot\n"
-                   "sample it as a cube environment. Axes as for gl-faces: +Z is the North Pole.\n"));
-  names.push_back("README.txt");
+                   "sample it as a cube environment. Axes as for gl-faces: +Z is the North Pole.\n");
 }
 
 // FlightGear Earthview: eight tiles of 90 x 90 degrees whose shipped models (Models/Astro/
@@ -236,8 +234,7 @@ void write_flightgear(OutputSet& out, std::vector<std::string>& names, const Exp
       names.push_back(name);
     }
   const std::string t = std::to_string(tile), b = std::to_string(border), c = std::to_string(content);
-  out.write("README.txt",
-            readme(preset, faces,
+  add_readme(out, names, preset, faces,
                    "Files: clouds_N1.png .. clouds_N4.png (latitude 90 N to 0) and clouds_S1.png ..\n"
                    "clouds_S4.png (0 to 90 S); 1 to 4 are the longitudes 180 W-90 W, 90 W-0, 0-90 E,\n"
                    "90 E-180 E. Each is " + t + " x " + t + " PNG grey + alpha, 8-bit: grey white, coverage in\n"
@@ -247,8 +244,7 @@ void write_flightgear(OutputSet& out, std::vector<std::string>& names, const Exp
                    "Rows are geodetic latitudes, north up. Install: replace the files of the same names\n"
                    "in $FG_ROOT/Models/Astro/Textures/ (keep a copy of the shipped ones) or put them in\n"
                    "an aircraft's or a scenery overlay's Models/Astro/Textures/; Earthview shows them\n"
-                   "when started (Menu: View > Earthview, or --prop:/earthview/show-clouds=1).\n"));
-  names.push_back("README.txt");
+                   "when started (Menu: View > Earthview, or --prop:/earthview/show-clouds=1).\n");
 }
 
 // KSP's Environmental Visual Enhancements, the fork LGhassen/EnvironmentalVisualEnhancements
@@ -296,8 +292,7 @@ void write_eve(OutputSet& out, std::vector<std::string>& names, const ExportPres
   const std::string cfg = folder + options.name + "_textures.cfg";
   out.write(cfg, config);
   names.push_back(cfg);
-  out.write("README.txt",
-            readme(preset, faces,
+  add_readme(out, names, preset, faces,
                    "For Kerbal Space Program's Environmental Visual Enhancements, the fork\n"
                    "LGhassen/EnvironmentalVisualEnhancements (its shader Assets/Shaders/cubeMap.cginc).\n"
                    "Files (legacy RGBA8 DDS, RGB white, coverage in alpha, one mip level):\n"
@@ -316,8 +311,7 @@ void write_eve(OutputSet& out, std::vector<std::string>& names, const ExportPres
                    "GameData; in a cloud layer's config set _MainTex to " + options.name +
                        "/clouds_equirect (one texture) or\n"
                    "to " + options.name + "_cube (the faces). Rows are geodetic latitudes (EVE's v is spherical: at most\n"
-                   "0.19 degrees apart). Not checked in KSP (not available here).\n"));
-  names.push_back("README.txt");
+                   "0.19 degrees apart). Not checked in KSP (not available here).\n");
 }
 
 // A face strip or grid for an engine's cube importer, 16-bit grey PNG.
@@ -351,8 +345,7 @@ void write_unity(OutputSet& out, std::vector<std::string>& names, const ExportPr
   names.push_back("cover_latlong_hdrp.png");
   write_cube_layout(out, names, faces_for_axes(faces, AxisMap{{0, 2, 1}, {1, 1, 1}}), faces.size, 6,
                     "cover_cube_6x1.png");
-  out.write("README.txt",
-            readme(preset, faces,
+  add_readme(out, names, preset, faces,
                    "Files:\n"
                    "  cover_latlong.exr, cover_latlong_16.png  the lat-long map (float, 16-bit grey): " +
                        std::string(map_orientation) + "\n"
@@ -364,8 +357,7 @@ void write_unity(OutputSet& out, std::vector<std::string>& names, const ExportPr
                    "longitude 0, +Z 90 E (nephele X, Y, Z = Unity x, z, y): a reflection of nephele's\n"
                    "right-handed axes, which is what makes the planet unmirrored in Unity; renaming\n"
                    "axes alone would mirror it. Import settings: sRGB (Color Texture) off, Single\n"
-                   "Channel Red or R16, no compression for data. Not checked in Unity (not available here).\n"));
-  names.push_back("README.txt");
+                   "Channel Red or R16, no compression for data. Not checked in Unity (not available here).\n");
 }
 
 // Godot 4: right-handed, Y up, -Z forward. Frame for the cover: +Y north, +Z longitude 0,
@@ -375,8 +367,7 @@ void write_godot(OutputSet& out, std::vector<std::string>& names, const ExportPr
   write_cube_layout(out, names, godot_faces, faces.size, 2, "cover_cube_2x3.png");
   write_cube_layout(out, names, godot_faces, faces.size, 6, "cover_cube_6x1.png");
   write_map_files(out, names, equirect_image(faces), "cover_panorama");
-  out.write("README.txt",
-            readme(preset, faces,
+  add_readme(out, names, preset, faces,
                    "Files:\n"
                    "  cover_cube_2x3.png  six faces, 2 columns x 3 rows: +X -X / +Y -Y / +Z -Z (Godot's\n"
                    "      default Cubemap import layout, 2x3), 16-bit grey\n"
@@ -386,15 +377,13 @@ void write_godot(OutputSet& out, std::vector<std::string>& names, const ExportPr
                    "Godot is right-handed like OpenGL (Y up, -Z forward): the faces hold the cover in the\n"
                    "frame +Y north, +Z longitude 0, +X 90 E (nephele X, Y, Z = Godot z, x, y), a rotation,\n"
                    "so nothing is mirrored. Import as Cubemap with Compress Mode Lossless and no sRGB\n"
-                   "(data). Not checked in Godot (not in Debian bookworm).\n"));
-  names.push_back("README.txt");
+                   "(data). Not checked in Godot (not in Debian bookworm).\n");
 }
 
 void write_unreal(OutputSet& out, std::vector<std::string>& names, const ExportPreset& preset,
                   const CoverFaces& faces) {
   write_map_files(out, names, equirect_image(faces), "cover_equirect");
-  out.write("README.txt",
-            readme(preset, faces,
+  add_readme(out, names, preset, faces,
                    "Files: cover_equirect.exr (float) and cover_equirect_16.png (16-bit grey), linear 2D\n"
                    "maps for a Volumetric Cloud material or a planet material: " + std::string(map_orientation) + ".\n"
                    "Import: sRGB off, Compression Settings HDR (EXR) or Grayscale / Alpha (16-bit PNG),\n"
@@ -403,8 +392,7 @@ void write_unreal(OutputSet& out, std::vector<std::string>& names, const ExportP
                    "the map's UV is u = 0.5 + atan2(-y, x)/(2 pi), v = 0.5 - asin(z)/pi: the minus sign on\n"
                    "y is the reflection between Unreal's left-handed axes and nephele's right-handed\n"
                    "ones (+X longitude 0, -Y 90 E, +Z north). Not the HDRI Backdrop (a sky dome for\n"
-                   "product shots). Not checked in Unreal (not available here).\n"));
-  names.push_back("README.txt");
+                   "product shots). Not checked in Unreal (not available here).\n");
 }
 
 // Blender (right-handed, Z up) maps an equirect with u = 0.5 - atan2(y, x)/2pi: a north-up,
@@ -436,8 +424,7 @@ void write_blender(OutputSet& out, std::vector<std::string>& names, const Export
             "links.new(texture.outputs['Color'], background.inputs['Color'])\n"
             "links.new(background.outputs['Background'], output.inputs['Surface'])\n");
   names.push_back("nephele_world.py");
-  out.write("README.txt",
-            readme(preset, faces,
+  add_readme(out, names, preset, faces,
                    "Files: cover_equirect.exr (float, channel Y; " + std::string(map_orientation) + ")\n"
                    "and nephele_world.py. Blender is right-handed with Z up like nephele, but its\n"
                    "Environment Texture maps an equirect with u = 0.5 - atan2(y, x)/(2 pi): the map\n"
@@ -451,8 +438,7 @@ void write_blender(OutputSet& out, std::vector<std::string>& names, const Export
                    "planet: the same chain in the sphere's material, fed by the object's direction\n"
                    "(Texture Coordinate Object -> Mapping Y -1 -> Environment Texture, which takes\n"
                    "any vector; see scripts/blender_planet.py). Checked in Blender 3.4.1:\n"
-                   "scripts/check-blender-export.sh (docs/export.md, \"blender\").\n"));
-  names.push_back("README.txt");
+                   "scripts/check-blender-export.sh (docs/export.md, \"blender\").\n");
 }
 
 }  // namespace
