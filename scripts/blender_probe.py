@@ -10,6 +10,7 @@
 # 1, to show what the reflection changes.
 import math
 import os
+import shutil
 import sys
 import tempfile
 
@@ -47,7 +48,8 @@ scene.collection.objects.link(camera)
 scene.camera = camera
 mapping = next(n for n in scene.world.node_tree.nodes if n.type == 'MAPPING')
 
-out = os.path.join(tempfile.mkdtemp(), 'probe.exr')
+scratch = tempfile.mkdtemp()
+out = os.path.join(scratch, 'probe.exr')
 for scale_y in (-1.0, 1.0):
     mapping.inputs['Scale'].default_value = (1.0, scale_y, 1.0)
     for lat, lon in probes:
@@ -62,3 +64,4 @@ for scale_y in (-1.0, 1.0):
         value = sum(pixels[0::4]) / (len(pixels) // 4)  # mean red
         bpy.data.images.remove(result)
         print('PROBE %g %g %g %.4f' % (scale_y, lat, lon, value), flush=True)
+shutil.rmtree(scratch)
