@@ -4,19 +4,26 @@
 #include <OpenImageIO/imageio.h>
 
 #include <catch2/catch.hpp>
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <cstdlib>
+#include <map>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include "cli_support.hpp"
 #include "io/atomic_output.hpp"
+#include "io/cube_frames.hpp"
 #include "io/export_presets.hpp"
 #include "io/image_files.hpp"
+#include "io/model_files.hpp"
 #include "io/texture_containers.hpp"
+#include "io/volume_export.hpp"
+#include "core/error.hpp"
 #include "params/table.hpp"
 
 namespace nephele {
@@ -34,25 +41,10 @@ std::array<double, 3> marker_direction() {
   return {std::cos(lat) * std::cos(lon), std::cos(lat) * std::sin(lon), std::sin(lat)};
 }
 
-// Direction of texel (i, j) of GL face f, from the table of docs/conventions.md
-// (OpenGL 4.6 section 8.13): sc = 2s - 1, tc = 2t - 1 on the face plane |ma| = 1.
-std::array<double, 3> texel_direction(int f, int i, int j, int n) {
-  const double sc = 2 * (i + 0.5) / n - 1, tc = 2 * (j + 0.5) / n - 1;
-  std::array<double, 3> d;
-  switch (f) {
-    case 0: d = {1, -tc, -sc}; break;
-    case 1: d = {-1, -tc, sc}; break;
-    case 2: d = {sc, 1, tc}; break;
-    case 3: d = {sc, -1, -tc}; break;
-    case 4: d = {sc, -tc, 1}; break;
-    default: d = {-sc, -tc, -1}; break;
-  }
-  const double l = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
-  return {d[0] / l, d[1] / l, d[2] / l};
-}
-
 // Writes a cover directory: 0.1 everywhere, 1 within kRadius of the marker, through the same
-// image writer as `generate`.
+// image writer as `generate`. Texel directions come from io::gl_texel_direction; the checks
+// below place the marker with formulas of their own (marker_on_face, gl_face_of), so an error
+// there shows up as a misplaced marker.
 void write_marker_cover(const std::filesystem::path& dir) {
   std::filesystem::create_directories(dir);
   const auto m = marker_direction();
@@ -61,7 +53,7 @@ void write_marker_cover(const std::filesystem::path& dir) {
     io::ImageData face{kSize, kSize, 1, std::vector<float>(kSize * kSize)};
     for (int j = 0; j < kSize; ++j)
       for (int i = 0; i < kSize; ++i) {
-        const auto d = texel_direction(f, i, j, kSize);
+        const auto d = io::gl_texel_direction(f, i, j, kSize);
         const double angle = std::acos(std::min(1.0, d[0] * m[0] + d[1] * m[1] + d[2] * m[2]));
         face.pixels[j * kSize + i] = angle < kRadius ? 1.0f : 0.1f;
       }
@@ -138,6 +130,19 @@ float from_half(std::uint16_t h) {
   const float magnitude = exponent == 0 ? std::ldexp(float(mantissa), -24)
                                         : std::ldexp(float(mantissa + 1024), exponent - 25);
   return (h & 0x8000) ? -magnitude : magnitude;
+}
+
+// Read as stored: PNG alpha is unassociated, and OpenImageIO would premultiply the colour.
+io::ImageData read_png_as_stored(const std::filesystem::path& png) {
+  OIIO::ImageSpec config;
+  config.attribute("oiio:UnassociatedAlpha", 1);
+  auto in = OIIO::ImageInput::open(png.string(), &config);
+  REQUIRE(in);
+  io::ImageData image{in->spec().width, in->spec().height, in->spec().nchannels, {}};
+  image.pixels.resize(std::size_t(image.width) * image.height * image.channels);
+  REQUIRE(in->read_image(0, 0, 0, image.channels, OIIO::TypeDesc::FLOAT, image.pixels.data()));
+  in->close();
+  return image;
 }
 
 }  // namespace
@@ -383,15 +388,7 @@ TEST_CASE("export celestia: an add-on folder with a white RGBA map, coverage in 
   const std::string ssc = test::read_file(folder / "marker_test.ssc");
   CHECK_THAT(ssc, Catch::Contains("Modify \"Earth\" \"Sol\"") && Catch::Contains("CloudMap \"marker_test.png\""));
   const auto png = folder / "textures" / "hires" / "marker_test.png";
-  // Read as stored: PNG alpha is unassociated, and OpenImageIO would premultiply the colour.
-  OIIO::ImageSpec config;
-  config.attribute("oiio:UnassociatedAlpha", 1);
-  auto in = OIIO::ImageInput::open(png.string(), &config);
-  REQUIRE(in);
-  io::ImageData image{in->spec().width, in->spec().height, in->spec().nchannels, {}};
-  image.pixels.resize(std::size_t(image.width) * image.height * image.channels);
-  REQUIRE(in->read_image(0, 0, 0, image.channels, OIIO::TypeDesc::FLOAT, image.pixels.data()));
-  in->close();
+  const auto image = read_png_as_stored(png);
   REQUIRE(image.channels == 4);
   REQUIRE(image.width == 4 * kSize);
   REQUIRE(image.height == 2 * kSize);
@@ -437,8 +434,9 @@ TEST_CASE("export exr-cube: an N x 6N envmap=cube strip with the +Y face flipped
   }
 }
 
-TEST_CASE("every export preset writes a README.txt naming the preset beside its files", "[export]") {
+TEST_CASE("every cover export preset writes a README.txt naming the preset beside its files", "[export]") {
   for (const auto& preset : io::export_presets()) {
+    if (preset.volume) continue;  // atlas and openvdb read volumes: their own tests read their README
     INFO(preset.name);
     Exported e(preset.name);
     REQUIRE(e.run.exit_code == 0);
@@ -475,6 +473,498 @@ TEST_CASE("half_from_float rounds to the nearest binary16, ties to even, through
   for (std::uint32_t h = 0; h < 0x7C00; ++h) {
     if (io::half_from_float(from_half(std::uint16_t(h))) != h) FAIL("round trip of " << h);
   }
+}
+
+namespace {
+
+// Face and (s, t) of direction d by the GL table (OpenGL 4.6, table 8.19), for the engines'
+// face layouts; written here from the table, not from the writer's code.
+struct FaceHit {
+  int face;
+  double s, t;
+};
+FaceHit gl_face_of(const std::array<double, 3>& d) {
+  const double ax = std::abs(d[0]), ay = std::abs(d[1]), az = std::abs(d[2]);
+  if (ax >= ay && ax >= az)
+    return d[0] > 0 ? FaceHit{0, (-d[2] / ax + 1) / 2, (-d[1] / ax + 1) / 2} : FaceHit{1, (d[2] / ax + 1) / 2, (-d[1] / ax + 1) / 2};
+  if (ay >= az)
+    return d[1] > 0 ? FaceHit{2, (d[0] / ay + 1) / 2, (d[2] / ay + 1) / 2} : FaceHit{3, (d[0] / ay + 1) / 2, (-d[2] / ay + 1) / 2};
+  return d[2] > 0 ? FaceHit{4, (d[0] / az + 1) / 2, (-d[1] / az + 1) / 2} : FaceHit{5, (-d[0] / az + 1) / 2, (-d[1] / az + 1) / 2};
+}
+
+// Checks the marker in face `hit.face` of a layout `columns` faces wide, and nothing bright in
+// the other faces.
+void check_marker_in_layout(const io::ImageData& image, int columns, const FaceHit& hit) {
+  REQUIRE(image.width == columns * kSize);
+  REQUIRE(image.height == 6 / columns * kSize);
+  for (int f = 0; f < 6; ++f) {
+    INFO("face " << f);
+    const auto c = bright_centroid(image.pixels, image.width, image.channels, 0, f % columns * kSize,
+                                   f / columns * kSize, kSize, kSize);
+    if (f != hit.face) {
+      CHECK(c.count == 0);
+      continue;
+    }
+    REQUIRE(c.count > 0);
+    CHECK(c.x == Approx(hit.s * kSize - 0.5).epsilon(0).margin(kMarkerPixels));
+    CHECK(c.y == Approx(hit.t * kSize - 0.5).epsilon(0).margin(kMarkerPixels));
+  }
+}
+
+void check_no_gamma_chunk(const std::filesystem::path& png) {
+  INFO(png.string());
+  const std::string bytes = test::read_file(png);
+  REQUIRE(bytes.compare(0, 8, "\x89PNG\r\n\x1a\n") == 0);
+  for (const auto& type : png_chunks(bytes)) {
+    CHECK(type != "gAMA");
+    CHECK(type != "sRGB");
+    CHECK(type != "iCCP");
+  }
+}
+
+void check_equirect_marker(const io::ImageData& image, int channel = 0) {
+  REQUIRE(image.width == 2 * image.height);
+  const auto c = bright_centroid(image.pixels, image.width, image.channels, channel, 0, 0, image.width, image.height);
+  const auto expected = marker_on_equirect(image.width, image.height);
+  REQUIRE(c.count > 0);
+  CHECK(c.x == Approx(expected[0]).epsilon(0).margin(kMarkerPixels));
+  CHECK(c.y == Approx(expected[1]).epsilon(0).margin(kMarkerPixels));
+}
+
+// A 2D legacy RGBA8 DDS (Microsoft's DDS_HEADER at its documented offsets): width, height and the
+// texels as floats (4 channels), after checking that it is not a cube.
+io::ImageData read_dds_2d_rgba8(const std::filesystem::path& path) {
+  const std::string b = test::read_file(path);
+  REQUIRE(b.size() >= 128);
+  CHECK(b.compare(0, 4, "DDS ") == 0);
+  CHECK(u32(b, 80) == 0x41u);  // DDPF_RGB | DDPF_ALPHAPIXELS
+  CHECK(u32(b, 112) == 0u);    // dwCaps2: no cube
+  io::ImageData image{int(u32(b, 16)), int(u32(b, 12)), 4, {}};
+  REQUIRE(b.size() == 128 + 4 * std::size_t(image.width) * image.height);
+  for (std::size_t i = 128; i < b.size(); ++i) image.pixels.push_back((unsigned char)b[i] / 255.0f);
+  return image;
+}
+
+}  // namespace
+
+TEST_CASE("export flightgear: eight bordered tiles whose inner 126/128 reassemble to the map with the marker in N3",
+          "[export]") {
+  Exported e("flightgear");
+  REQUIRE(e.run.exit_code == 0);
+  const int tile = io::flightgear_tile_size(kSize), border = tile / 128, content = tile - 2 * border;
+  REQUIRE(tile == 128);
+  io::ImageData mosaic{4 * content, 2 * content, 1, std::vector<float>(std::size_t(8) * content * content)};
+  for (int h = 0; h < 2; ++h)
+    for (int q = 0; q < 4; ++q) {
+      const std::string name = std::string("clouds_") + (h ? "S" : "N") + std::to_string(q + 1) + ".png";
+      INFO(name);
+      check_no_gamma_chunk(e.out.path / name);
+      const auto image = read_png_as_stored(e.out.path / name);
+      REQUIRE(image.width == tile);
+      REQUIRE(image.height == tile);
+      REQUIRE(image.channels == 2);  // grey + alpha, as the shipped tiles
+      const auto at = [&](int x, int y, int c) { return image.pixels[(std::size_t(y) * tile + x) * 2 + c]; };
+      for (int y = 0; y < tile; ++y)
+        for (int x = 0; x < tile; ++x) {
+          if (at(x, y, 0) != 1.0f) FAIL("grey is not white at " << x << ", " << y);
+          // The border repeats the nearest content pixel.
+          const int cx = std::clamp(x, border, tile - 1 - border), cy = std::clamp(y, border, tile - 1 - border);
+          if (at(x, y, 1) != at(cx, cy, 1)) FAIL("border pixel " << x << ", " << y << " is not its edge pixel");
+        }
+      for (int y = 0; y < content; ++y)
+        for (int x = 0; x < content; ++x)
+          mosaic.pixels[std::size_t(h * content + y) * mosaic.width + q * content + x] = at(x + border, y + border, 1);
+    }
+  check_equirect_marker(mosaic);
+}
+
+TEST_CASE("export eve: the marker where EVE's equirect and GetCubeCubeUV rules look, and the config names the faces",
+          "[export]") {
+  Exported e("eve");
+  REQUIRE(e.run.exit_code == 0);
+  const auto dir = e.out.path / "GameData" / "nephele_clouds";
+  // The marker in EVE's body frame: +Z longitude 0, +X 90 E, +Y north.
+  const auto m = marker_direction();
+  const std::array<double, 3> v{m[1], m[2], m[0]};
+  {
+    const auto image = read_dds_2d_rgba8(dir / "clouds_equirect.dds");
+    REQUIRE(image.width == 4 * kSize);
+    const double u = 0.5 + std::atan2(v[0], v[2]) / (2 * kPi), vv = std::acos(v[1]) / kPi;
+    const auto c = bright_centroid(image.pixels, image.width, 4, 3, 0, 0, image.width, image.height);
+    REQUIRE(c.count > 0);
+    CHECK(c.x == Approx(u * image.width - 0.5).epsilon(0).margin(kMarkerPixels));
+    CHECK(c.y == Approx(vv * image.height - 0.5).epsilon(0).margin(kMarkerPixels));  // v = 0 is the first row
+    CHECK(image.pixels[0] == 1.0f);  // RGB white
+  }
+  // GetCubeCubeUV (cubeMap.cginc), transcribed: the face and its uv.
+  const double ax = std::abs(v[0]), ay = std::abs(v[1]), az = std::abs(v[2]);
+  const bool zx = az >= ax, ny = ay <= std::max(ax, az);
+  const double s = (ny ? (zx ? v[2] : v[0]) : v[1]) > 0 ? 1 : -1;
+  std::array<double, 3> dc = !ny ? std::array<double, 3>{v[1], v[0], s * v[2]}
+                                 : zx ? std::array<double, 3>{v[2], s * v[0], -v[1]}
+                                      : std::array<double, 3>{v[0], -s * v[2], -v[1]};
+  const double u = 0.5 * dc[1] / std::abs(dc[0]) + 0.5, vv = 0.5 * dc[2] / std::abs(dc[0]) + 0.5;
+  const std::string hit = std::string(ny ? (zx ? "z" : "x") : "y") + (s > 0 ? "p" : "n");
+  const std::string config = test::read_file(dir / "nephele_clouds_textures.cfg");
+  CHECK_THAT(config, Catch::Contains("EVE_TEXTURE_CONFIG") && Catch::Contains("type = TEX_CUBE_6"));
+  for (const char* key : {"xn", "xp", "yn", "yp", "zn", "zp"}) {
+    INFO(key);
+    const std::string file = std::string("clouds_") + key;
+    CHECK_THAT(config, Catch::Contains(std::string("tex") + char(std::toupper(key[0])) + key[1] + " = nephele_clouds/" + file));
+    const auto image = read_dds_2d_rgba8(dir / (file + ".dds"));
+    REQUIRE(image.width == kSize);
+    const auto c = bright_centroid(image.pixels, kSize, 4, 3, 0, 0, kSize, kSize);
+    if (hit != key) {
+      CHECK(c.count == 0);
+      continue;
+    }
+    REQUIRE(c.count > 0);
+    CHECK(c.x == Approx(u * kSize - 0.5).epsilon(0).margin(kMarkerPixels));
+    CHECK(c.y == Approx(vv * kSize - 0.5).epsilon(0).margin(kMarkerPixels));
+  }
+  CHECK(hit == "xp");  // 30 N 60 E: EVE's +X (90 E) face
+}
+
+TEST_CASE("export unity: the lat-long maps carry the marker, HDRP's in red, and the 6x1 strip is the reflected cube",
+          "[export]") {
+  Exported e("unity");
+  REQUIRE(e.run.exit_code == 0);
+  check_equirect_marker(io::read_image(e.out.path / "cover_latlong.exr"));
+  check_equirect_marker(io::read_image(e.out.path / "cover_latlong_16.png"));
+  const auto hdrp = io::read_image(e.out.path / "cover_latlong_hdrp.png");
+  REQUIRE(hdrp.channels == 3);
+  check_equirect_marker(hdrp, 0);
+  CHECK(bright_centroid(hdrp.pixels, hdrp.width, 3, 1, 0, 0, hdrp.width, hdrp.height).count == 0);
+  for (const char* png : {"cover_latlong_16.png", "cover_latlong_hdrp.png", "cover_cube_6x1.png"})
+    check_no_gamma_chunk(e.out.path / png);
+  // Unity's frame: +X longitude 0, +Y north, +Z 90 E (left-handed); its sampler uses the GL table.
+  const auto m = marker_direction();
+  const auto hit = gl_face_of({m[0], m[2], m[1]});
+  CHECK(hit.face == 4);  // Unity +Z: 90 E is nearest to 60 E
+  CHECK(io::AxisMap{{0, 2, 1}, {1, 1, 1}}.determinant() == -1);  // the writer's Unity axes: a reflection
+  check_marker_in_layout(io::read_image(e.out.path / "cover_cube_6x1.png"), 6, hit);
+}
+
+TEST_CASE("export godot: 2x3 and 6x1 cubes rotated into Godot's Y-up frame and a panorama with the marker",
+          "[export]") {
+  Exported e("godot");
+  REQUIRE(e.run.exit_code == 0);
+  // Godot's frame: +Z longitude 0, +X 90 E, +Y north (right-handed, a rotation of nephele's).
+  const auto m = marker_direction();
+  const auto hit = gl_face_of({m[1], m[2], m[0]});
+  CHECK(hit.face == 0);  // Godot +X
+  CHECK(io::AxisMap{{2, 0, 1}, {1, 1, 1}}.determinant() == 1);  // the writer's Godot axes: a rotation
+  check_marker_in_layout(io::read_image(e.out.path / "cover_cube_2x3.png"), 2, hit);
+  check_marker_in_layout(io::read_image(e.out.path / "cover_cube_6x1.png"), 6, hit);
+  check_equirect_marker(io::read_image(e.out.path / "cover_panorama.exr"));
+  for (const char* png : {"cover_cube_2x3.png", "cover_cube_6x1.png", "cover_panorama_16.png"})
+    check_no_gamma_chunk(e.out.path / png);
+}
+
+TEST_CASE("export unreal: linear EXR and 16-bit PNG maps with the marker where the README's UV formula looks",
+          "[export]") {
+  Exported e("unreal");
+  REQUIRE(e.run.exit_code == 0);
+  for (const char* name : {"cover_equirect.exr", "cover_equirect_16.png"}) {
+    INFO(name);
+    const auto image = io::read_image(e.out.path / name);
+    check_equirect_marker(image);
+    // The README's formula in Unreal's axes (X forward, Y right, Z up): Y = -(nephele Y).
+    const auto m = marker_direction();
+    const double u = 0.5 + std::atan2(-(-m[1]), m[0]) / (2 * kPi);
+    const auto c = bright_centroid(image.pixels, image.width, image.channels, 0, 0, 0, image.width, image.height);
+    CHECK(c.x == Approx(u * image.width - 0.5).epsilon(0).margin(kMarkerPixels));
+  }
+  check_no_gamma_chunk(e.out.path / "cover_equirect_16.png");
+  const std::string readme = test::read_file(e.out.path / "README.txt");
+  CHECK_THAT(readme, Catch::Contains("u = 0.5 + atan2(-y, x)/(2 pi)"));
+}
+
+TEST_CASE("export blender: the equirect with the marker and a World script whose Mapping scales Y by -1", "[export]") {
+  Exported e("blender");
+  REQUIRE(e.run.exit_code == 0);
+  check_equirect_marker(io::read_image(e.out.path / "cover_equirect.exr"));
+  const std::string script = test::read_file(e.out.path / "nephele_world.py");
+  CHECK_THAT(script, Catch::Contains("(1.0, -1.0, 1.0)") && Catch::Contains("Non-Color"));
+}
+
+TEST_CASE("export refuses up front a preset whose image would exceed 16384 pixels, naming the largest face size",
+          "[export]") {
+  const auto& equirect = io::find_export_preset("equirect");
+  CHECK_NOTHROW(io::check_texture_limit(equirect, 4096));
+  try {
+    io::check_texture_limit(equirect, 4097);
+    FAIL("no error for a 16388-pixel equirect");
+  } catch (const core::InputError& error) {
+    CHECK_THAT(error.what(), Catch::Contains("COVER_DIR") && Catch::Contains("4096") && Catch::Contains("16384"));
+  }
+  CHECK_NOTHROW(io::check_texture_limit(io::find_export_preset("unity"), 2730));
+  CHECK_THROWS_AS(io::check_texture_limit(io::find_export_preset("unity"), 2731), core::InputError);
+  CHECK_THROWS_AS(io::check_texture_limit(io::find_export_preset("godot"), 2731), core::InputError);
+  // Tiles and cube faces stay within the limit for every face size generate makes.
+  CHECK(io::flightgear_tile_size(16384) == 16384);
+  CHECK_NOTHROW(io::check_texture_limit(io::find_export_preset("flightgear"), 16384));
+  CHECK_NOTHROW(io::check_texture_limit(io::find_export_preset("ktx2"), 16384));
+}
+
+// A real client: Blender renders the World that the preset's own script sets up, looking at the
+// marker and at its mirror images (scripts/blender_probe.py). Blender is not a CI package (see
+// docs/export.md, "blender"): without it on PATH the test says so and passes.
+TEST_CASE("export blender: Blender renders the marker at 30 N 60 E through the preset's World, and at 60 W without Y = -1",
+          "[export][blender]") {
+  if (std::system("command -v blender > /dev/null 2>&1") != 0) {
+    WARN("skipped: blender is not installed (apt-get install --no-install-recommends blender)");
+    return;
+  }
+  Exported e("blender");
+  REQUIRE(e.run.exit_code == 0);
+  const auto run = test::run_command(
+      "blender -b --factory-startup --python-exit-code 1 --python " + std::string(NEPHELE_SOURCE_DIR) +
+      "/scripts/blender_probe.py -- " + (e.out.path / "nephele_world.py").string() + " " +
+      (e.out.path / "cover_equirect.exr").string() + " 30 60 30 -60 -30 60 -30 -60");
+  INFO(run.output);
+  REQUIRE(run.exit_code == 0);
+  std::istringstream lines(run.output);
+  std::map<std::string, double> probes;  // "scale lat lon" -> value
+  for (std::string line; std::getline(lines, line);) {
+    if (line.rfind("PROBE ", 0) != 0) continue;
+    std::istringstream fields(line.substr(6));
+    std::string scale, lat, lon;
+    double value;
+    fields >> scale >> lat >> lon >> value;
+    probes[scale + " " + lat + " " + lon] = value;
+  }
+  REQUIRE(probes.size() == 8);
+  // The cover is 1 inside the marker and 0.1 elsewhere; a 1-degree view inside the 5.7-degree
+  // marker sees 1 up to the bilinear blur, outside it 0.1: 0.5 separates them.
+  CHECK(probes["-1 30 60"] > 0.5);
+  CHECK(probes["-1 30 -60"] < 0.5);
+  CHECK(probes["-1 -30 60"] < 0.5);
+  CHECK(probes["-1 -30 -60"] < 0.5);
+  // Without the reflection Blender shows the map mirrored: the marker at 60 W.
+  CHECK(probes["1 30 60"] < 0.5);
+  CHECK(probes["1 30 -60"] > 0.5);
+}
+
+TEST_CASE("generate --export runs the presets into export/NAME of the same set, and refuses an unknown one before work",
+          "[export][cli]") {
+  test::TemporaryDirectory out;
+  const auto r = test::run("generate --size 16 --iterations 5 --files faces --export flightgear,godot --out " +
+                           out.path.string());
+  REQUIRE(r.exit_code == 0);
+  CHECK(std::filesystem::is_regular_file(out.path / "cover_px.exr"));
+  for (const char* file : {"export/flightgear/clouds_N1.png", "export/flightgear/clouds_S4.png",
+                           "export/flightgear/README.txt", "export/godot/cover_cube_2x3.png", "export/godot/README.txt"})
+    CHECK(std::filesystem::is_regular_file(out.path / file));
+  const auto strip = io::read_image(out.path / "export/godot/cover_cube_6x1.png");
+  CHECK(strip.width == 6 * 16);  // made from the generated 16^2 faces
+  test::TemporaryDirectory bad;
+  const auto refused = test::run("generate --size 16 --iterations 5 --export godot,blue --out " + bad.path.string());
+  CHECK(refused.exit_code == 2);
+  CHECK_THAT(refused.output, Catch::Contains("--export") && Catch::Contains("blue"));
+  CHECK_FALSE(std::filesystem::exists(bad.path / "cover.json"));
+  const auto too_wide = test::run("generate --size 4097 --export equirect --out " + bad.path.string());
+  CHECK(too_wide.exit_code == 2);
+  CHECK_THAT(too_wide.output, Catch::Contains("16384"));
+}
+
+// FlightGear's own models (Debian flightgear-data-models, optional): every vertex of the
+// shipped clouds_*.ac samples the exported tile at its UV. The models' frame (AC3D, y up):
+// latitude asin(y), longitude atan2(-x, -z); u = 1/128 + (126/128) lon/90 from the tile's west
+// edge, and v (0 at the bottom row) runs from 1/128 at the equator of N tiles (127/128 for S)
+// at 88.61 degrees per unit: the meshes' last ring is at 87.2 degrees before the pole fan, so
+// FlightGear draws every Earthview texture, the shipped ones included, with latitudes scaled
+// by 87.23/90. The bright vertices must sit at 60 E and 30 N times that scale.
+TEST_CASE("export flightgear: through the UVs of FlightGear's shipped cloud models the marker lands at 60 E, 30 N",
+          "[export][flightgear]") {
+  const std::filesystem::path astro = "/usr/share/games/flightgear/Models/Astro";
+  if (!std::filesystem::exists(astro / "clouds_N1.ac")) {
+    WARN("skipped: FlightGear's models are not installed (apt-get install flightgear-data-models)");
+    return;
+  }
+  Exported e("flightgear");
+  REQUIRE(e.run.exit_code == 0);
+  double lat_sum = 0, lon_sum = 0;
+  int bright = 0, vertices = 0;
+  for (const char* hemisphere : {"N", "S"})
+    for (int q = 1; q <= 4; ++q) {
+      const std::string name = std::string("clouds_") + hemisphere + std::to_string(q);
+      const auto tile = read_png_as_stored(e.out.path / (name + ".png"));
+      std::istringstream ac(test::read_file(astro / (name + ".ac")));
+      // AC3D: the object named `name` lists numvert positions, then surfaces whose refs lines
+      // are "vertex u v".
+      std::vector<std::array<double, 3>> points;
+      bool ours = false;
+      for (std::string line; std::getline(ac, line);) {
+        std::istringstream words(line);
+        std::string word;
+        words >> word;
+        if (word == "name") ours = line == "name \"" + name + "\"";
+        if (!ours) continue;
+        if (word == "numvert") {
+          int n;
+          words >> n;
+          points.resize(n);
+          for (auto& p : points) ac >> p[0] >> p[1] >> p[2];
+        } else if (word == "refs") {
+          int n;
+          words >> n;
+          for (int k = 0; k < n; ++k) {
+            int index;
+            double u, v;
+            ac >> index >> u >> v;
+            const auto& p = points.at(index);
+            const double r = std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
+            const double lat = std::asin(p[1] / r) * 180 / kPi, lon = std::atan2(-p[0], -p[2]) * 180 / kPi;
+            const int x = std::clamp(int(u * tile.width), 0, tile.width - 1);
+            const int y = std::clamp(int((1 - v) * tile.height), 0, tile.height - 1);
+            ++vertices;
+            if (tile.pixels[(std::size_t(y) * tile.width + x) * 2 + 1] > 0.5f) lat_sum += lat, lon_sum += lon, ++bright;
+          }
+        }
+      }
+    }
+  CHECK(vertices == 8 * 4356);
+  REQUIRE(bright > 0);
+  // The mesh's vertices are 2.8 degrees apart: the centroid of the references inside the
+  // 5.7-degree marker (a vertex once per surface using it) is within about half a spacing of
+  // its centre; a mirrored or misplaced tile puts it 60 or more degrees away.
+  CHECK(lon_sum / bright == Approx(kLon).epsilon(0).margin(1.5));
+  CHECK(lat_sum / bright == Approx(kLat * 87.23 / 90).epsilon(0).margin(1.5));
+}
+
+// The other Blender check: `nephele model`'s density.vdb imported as a Volume object. Blender
+// must find the grid `density` as floats, and its bounds (of OpenVDB's active 8^3 leaf nodes,
+// voxel centre to centre) must be the raw volume's nonzero voxels rounded out to leaves on each
+// axis: the towering example is taller than wide, so a swapped axis (z up) or a wrong voxel
+// size fails.
+TEST_CASE("model's density.vdb opens in Blender as a Volume with the grid density where the raw volume has density",
+          "[export][blender]") {
+  if (std::system("command -v blender > /dev/null 2>&1") != 0) {
+    WARN("skipped: blender is not installed (apt-get install --no-install-recommends blender)");
+    return;
+  }
+  if (!io::vdb_available()) {
+    WARN("skipped: nephele was built without OpenVDB (libopenvdb-dev)");
+    return;
+  }
+  test::TemporaryDirectory out;
+  constexpr int n = 32;
+  constexpr double extent = 6000, s = extent / n;
+  REQUIRE(test::run("model --example towering --size 32 --extent 6000 --no-preview --quiet --out " + out.path.string())
+              .exit_code == 0);
+  const std::string raw = test::read_file(out.path / "density.raw");
+  REQUIRE(raw.size() == std::size_t(4) * n * n * n);
+  std::array<int, 3> low{n, n, n}, high{-1, -1, -1};
+  for (int i = 0; i < n * n * n; ++i) {
+    float v;
+    std::memcpy(&v, raw.data() + 4 * std::size_t(i), 4);
+    if (!(v > 0)) continue;
+    const int c[3] = {i % n, i / n % n, i / (n * n)};
+    for (int k = 0; k < 3; ++k) low[k] = std::min(low[k], c[k]), high[k] = std::max(high[k], c[k]);
+  }
+  REQUIRE(high[0] >= 0);
+  const auto run = test::run_command("blender -b --factory-startup --python-exit-code 1 --python " +
+                                     std::string(NEPHELE_SOURCE_DIR) + "/scripts/blender_volume_probe.py -- " +
+                                     (out.path / "density.vdb").string());
+  INFO(run.output);
+  REQUIRE(run.exit_code == 0);
+  CHECK_THAT(run.output, Catch::Contains("GRID density FLOAT 1"));
+  const auto at = run.output.find("BOUNDS ");
+  REQUIRE(at != std::string::npos);
+  std::istringstream bounds(run.output.substr(at + 7));
+  double b[6];
+  for (double& x : b) bounds >> x;
+  // The nonzero voxels' range rounded out to whole leaves, voxel centre to centre: what
+  // Blender 3.4 reports (observed), exact up to printing.
+  for (int k = 0; k < 3; ++k) {
+    INFO("axis " << k);
+    CHECK(b[k] == Approx(s * (low[k] / 8 * 8 + 0.5)).epsilon(0).margin(1e-3));
+    CHECK(b[3 + k] == Approx(s * (high[k] / 8 * 8 + 7 + 0.5)).epsilon(0).margin(1e-3));
+  }
+}
+
+TEST_CASE("export atlas: a noise volume's slices in rows and columns, every texel where the layout says", "[export]") {
+  test::TemporaryDirectory dir(true);
+  REQUIRE(test::run("noise --width 16 --height 16 --depth 10 --cells 8 --channels rg --quiet --out " + (dir.path / "n.raw").string()).exit_code == 0);
+  test::TemporaryDirectory out;
+  const auto r = test::run("export " + (dir.path / "n.json").string() + " --preset atlas --out " + out.path.string());
+  REQUIRE(r.exit_code == 0);
+  const std::string raw = test::read_file(dir.path / "n.raw");
+  REQUIRE(raw.size() == 4u * 16 * 16 * 10 * 2);
+  const auto atlas = io::read_image(out.path / "volume_atlas.exr");
+  const auto png = read_png_as_stored(out.path / "volume_atlas_16.png");
+  check_no_gamma_chunk(out.path / "volume_atlas_16.png");
+  REQUIRE(atlas.width == 4 * 16);   // ceil(sqrt(10)) = 4 columns
+  REQUIRE(atlas.height == 3 * 16);  // 3 rows
+  REQUIRE(atlas.channels == 2);
+  REQUIRE(png.channels == 2);
+  int wrong = 0;
+  for (int z = 0; z < 10; ++z)
+    for (int y = 0; y < 16; ++y)
+      for (int x = 0; x < 16; ++x)
+        for (int c = 0; c < 2; ++c) {
+          float v;
+          std::memcpy(&v, raw.data() + 4 * ((((std::size_t(z) * 16 + y) * 16 + x) * 2) + c), 4);
+          const std::size_t at = ((std::size_t(z / 4) * 16 + y) * atlas.width + std::size_t(z % 4) * 16 + x) * 2 + c;
+          // The 16-bit PNG quantises to 1/65535: half a step.
+          if (atlas.pixels[at] != v || std::abs(png.pixels[at] - v) > 0.5f / 65535 + 1e-7f) ++wrong;
+        }
+  CHECK(wrong == 0);
+  CHECK_THAT(test::read_file(out.path / "README.txt"),
+             Catch::Contains("preset atlas") && Catch::Contains("Columns 4, Rows 3") && Catch::Contains("data"));
+}
+
+TEST_CASE("export atlas keeps every side within 16384 pixels: 160^3 in 13 x 13, and refuses what cannot fit", "[export]") {
+  const auto g = io::atlas_grid(160, 160, 160);
+  CHECK(g.columns == 13);
+  CHECK(g.rows == 13);
+  CHECK(g.columns * 160 <= io::max_texture_edge);
+  const auto wide = io::atlas_grid(4096, 64, 64);  // only 4 slices fit across
+  CHECK(wide.columns == 4);
+  CHECK(wide.rows == 16);
+  CHECK_THROWS_AS(io::atlas_grid(16384, 16384, 2), core::InputError);
+}
+
+TEST_CASE("export openvdb: a model's density.json becomes a FOG grid density with its voxel size and every voxel",
+          "[export]") {
+  if (!io::vdb_available()) {
+    WARN("skipped: nephele was built without OpenVDB (libopenvdb-dev)");
+    return;
+  }
+  test::TemporaryDirectory model, out;
+  REQUIRE(test::run("model --example fair-weather --size 16 --extent 3200 --no-preview --quiet --out " +
+                    model.path.string()).exit_code == 0);
+  const auto r = test::run("export " + (model.path / "density.json").string() + " --preset openvdb --out " +
+                           out.path.string());
+  REQUIRE(r.exit_code == 0);
+  const auto vdb = io::read_vdb((out.path / "volume.vdb").string());
+  CHECK(vdb.grids == std::vector<std::string>{"density"});
+  CHECK(vdb.fog_volume);
+  CHECK(vdb.background == 0.0f);
+  CHECK(vdb.voxel_size == Approx(200.0).epsilon(0).margin(1e-9));
+  CHECK(vdb.origin[0] == Approx(100.0).epsilon(0).margin(1e-9));  // voxel (0, 0, 0) centred at s/2
+  const std::string raw = test::read_file(model.path / "density.raw");
+  long nonzero = 0;
+  for (std::size_t i = 0; i + 4 <= raw.size(); i += 4) {
+    float v;
+    std::memcpy(&v, raw.data() + i, 4);
+    nonzero += v > 0;
+  }
+  CHECK(vdb.active == nonzero);
+  int wrong = 0;
+  for (const auto& voxel : vdb.values) {
+    float v;
+    std::memcpy(&v, raw.data() + 4 * ((std::size_t(voxel.z) * 16 + voxel.y) * 16 + voxel.x), 4);
+    wrong += v != voxel.value;
+  }
+  CHECK(wrong == 0);
+  CHECK_THAT(test::read_file(out.path / "README.txt"), Catch::Contains("preset openvdb") && Catch::Contains("density"));
+  test::TemporaryDirectory bad;
+  const auto refused = test::run("export " + (model.path / "model.cloud.json").string() + " --preset openvdb --out " +
+                                 bad.path.string());
+  CHECK(refused.exit_code == 2);
+  CHECK_THAT(refused.output, Catch::Contains("VOLUME"));
 }
 
 }  // namespace nephele

@@ -23,11 +23,24 @@ struct ExportPreset {
   std::string name;     // --preset word
   std::string summary;  // one line for --help and the README
   bool needs_equirect;  // resamples the cube map on the GPU (a context must be current)
+  bool volume = false;  // reads a volume's sidecar (io/volume_export.hpp) instead of a cover
 };
 // The presets in the order --help lists them.
 const std::vector<ExportPreset>& export_presets();
 // "equirect|gl-faces|..." for the parameter table's check; throws core::InputError for an unknown name.
 const ExportPreset& find_export_preset(const std::string& name);
+
+// The widest texture an export writes: OpenGL 4.5's guaranteed GL_MAX_TEXTURE_SIZE, the limit of
+// llvmpipe, most GPUs and Unity (/work/shared/REFERENCE.md).
+constexpr int max_texture_edge = 16384;
+// FlightGear's tile edge for face size n: the smallest power of two >= n, at least 128 (the
+// border is tile/128 pixels).
+int flightgear_tile_size(int face_size);
+// The longest image edge `preset` writes for face size n.
+long long widest_image_edge(const ExportPreset& preset, int face_size);
+// Throws core::InputError naming COVER_DIR, the preset, the edge and the limit when the preset
+// would write an image over max_texture_edge: checked before any work, never a late failure.
+void check_texture_limit(const ExportPreset& preset, int face_size);
 
 struct ExportOptions {
   std::string ktx2_format = "r16f";    // ktx2: r16f, r32f, r8

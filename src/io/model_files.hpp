@@ -39,6 +39,10 @@ std::vector<std::string> write_model_files(const std::filesystem::path& director
 // ((i + 1/2) s, (j + 1/2) s, (k + 1/2) s) metres (z up). Empty when built without OpenVDB.
 bool vdb_available();
 std::string vdb_bytes(const model::CloudModel& model, int size, const std::vector<float>& values);
+// The same kind of grids for any width x height x depth volume (nephele export --preset
+// openvdb): one FOG_VOLUME float grid per name, values x fastest, voxel size `voxel_size`.
+std::string vdb_grids_bytes(const std::vector<std::string>& names, const std::vector<std::vector<float>>& grids,
+                            int width, int height, int depth, double voxel_size);
 
 // What a .vdb holds, read back through OpenVDB (for tests and checks): the grid names, the
 // 'density' grid's class, background, voxel size, world position of voxel (0, 0, 0) and its

@@ -165,9 +165,13 @@ std::vector<unsigned char> encode_ktx2_cube(const std::vector<float>& texels, in
   return out;
 }
 
-std::vector<unsigned char> encode_dds_cube(const std::vector<float>& texels, int size, DdsVariant variant) {
-  check_texels(texels, size);
-  const bool legacy = variant == DdsVariant::rgba8;
+namespace {
+
+// The DDS of `layers` images of width x height (6: a cube, faces in order), one mip level.
+std::vector<unsigned char> encode_dds(const std::vector<float>& texels, int width, int height, int layers,
+                                      DdsVariant variant) {
+  const bool legacy = variant == DdsVariant::rgba8 || variant == DdsVariant::rgba8_white;
+  const bool cube = layers == 6;
   const TextureSample sample = variant == DdsVariant::dx10_r16f   ? TextureSample::r16f
                                : variant == DdsVariant::dx10_r32f ? TextureSample::r32f
                                                                   : TextureSample::r8;
@@ -177,9 +181,9 @@ std::vector<unsigned char> encode_dds_cube(const std::vector<float>& texels, int
   // DDS_HEADER (124 bytes).
   put32(out, 124);
   put32(out, 0x1u | 0x2u | 0x4u | 0x8u | 0x1000u);  // CAPS | HEIGHT | WIDTH | PITCH | PIXELFORMAT
-  put32(out, std::uint32_t(size));                  // dwHeight
-  put32(out, std::uint32_t(size));                  // dwWidth
-  put32(out, std::uint32_t(size) * pixel_bytes);    // dwPitchOrLinearSize: bytes per row
+  put32(out, std::uint32_t(height));                // dwHeight
+  put32(out, std::uint32_t(width));                 // dwWidth
+  put32(out, std::uint32_t(width) * pixel_bytes);   // dwPitchOrLinearSize: bytes per row
   put32(out, 0);                                    // dwDepth
   put32(out, 1);                                    // dwMipMapCount
   for (int i = 0; i < 11; ++i) put32(out, 0);       // dwReserved1
@@ -195,24 +199,38 @@ std::vector<unsigned char> encode_dds_cube(const std::vector<float>& texels, int
     put32(out, 0x30315844u);  // "DX10"
     for (int i = 0; i < 5; ++i) put32(out, 0);
   }
-  put32(out, 0x1000u | 0x8u);  // dwCaps: DDSCAPS_TEXTURE | DDSCAPS_COMPLEX
-  put32(out, 0x200u | 0xFC00u); // dwCaps2: DDSCAPS2_CUBEMAP and all six DDSCAPS2_CUBEMAP_* faces
+  put32(out, cube ? 0x1000u | 0x8u : 0x1000u);  // dwCaps: DDSCAPS_TEXTURE (| DDSCAPS_COMPLEX for a cube)
+  put32(out, cube ? 0x200u | 0xFC00u : 0u);     // dwCaps2: DDSCAPS2_CUBEMAP and all six face bits
   put32(out, 0), put32(out, 0), put32(out, 0);  // dwCaps3, dwCaps4, dwReserved2
   if (!legacy) {
     // DDS_HEADER_DXT10: dxgiFormat, resourceDimension (3: TEXTURE2D), miscFlag
-    // (0x4: TEXTURECUBE), arraySize (1 cube), miscFlags2 (0: alpha mode unknown).
+    // (0x4: TEXTURECUBE), arraySize (1), miscFlags2 (0: alpha mode unknown).
     const std::uint32_t dxgi = sample == TextureSample::r16f ? 54u : sample == TextureSample::r32f ? 41u : 61u;
-    put32(out, dxgi), put32(out, 3), put32(out, 0x4u), put32(out, 1), put32(out, 0);
+    put32(out, dxgi), put32(out, 3), put32(out, cube ? 0x4u : 0u), put32(out, 1), put32(out, 0);
   }
   for (float v : texels) {
     if (legacy) {
       const auto byte = (unsigned char)std::lround(255.0f * clamp01(v));
-      out.insert(out.end(), {byte, byte, byte, byte});
+      if (variant == DdsVariant::rgba8_white) out.insert(out.end(), {255, 255, 255, byte});
+      else out.insert(out.end(), {byte, byte, byte, byte});
     } else {
       put_sample(out, v, sample);
     }
   }
   return out;
+}
+
+}  // namespace
+
+std::vector<unsigned char> encode_dds_cube(const std::vector<float>& texels, int size, DdsVariant variant) {
+  check_texels(texels, size);
+  return encode_dds(texels, size, size, 6, variant);
+}
+
+std::vector<unsigned char> encode_dds_2d(const std::vector<float>& texels, int width, int height, DdsVariant variant) {
+  if (width < 1 || height < 1 || texels.size() != std::size_t(width) * std::size_t(height))
+    throw std::invalid_argument("DDS texels do not match the image size");
+  return encode_dds(texels, width, height, 1, variant);
 }
 
 }  // namespace nephele::io

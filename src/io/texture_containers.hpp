@@ -31,7 +31,10 @@ std::vector<unsigned char> encode_ktx2_cube(const std::vector<float>& texels, in
 // format with coverage in R, G, B and A (what KSP's and Unity's DDS loaders read); otherwise
 // the DX10 extension header with DXGI_FORMAT_R16_FLOAT (54), R32_FLOAT (41) or R8_UNORM (61)
 // (Direct3D 10+ engines, DirectXTex/texconv).
-enum class DdsVariant { rgba8, dx10_r16f, dx10_r32f, dx10_r8 };
+// rgba8_white: the legacy header with RGB white and coverage in alpha (a cloud colour map).
+enum class DdsVariant { rgba8, rgba8_white, dx10_r16f, dx10_r32f, dx10_r8 };
 std::vector<unsigned char> encode_dds_cube(const std::vector<float>& texels, int size, DdsVariant variant);
+// A 2D DDS of width x height texels (rows top-down as stored; one mip level), same variants.
+std::vector<unsigned char> encode_dds_2d(const std::vector<float>& texels, int width, int height, DdsVariant variant);
 
 }  // namespace nephele::io

@@ -16,27 +16,39 @@ namespace nephele::io {
 
 namespace {
 
-openvdb::FloatGrid::Ptr make_grid(const model::CloudModel& model, int size, const std::vector<float>& values) {
+// A FOG_VOLUME float grid of a width x height x depth volume (x fastest), zeros left as the
+// background (sparse). Index (i, j, k) is the raw volume's voxel; OpenVDB puts a voxel's centre
+// at its integer index, so world = s (index + 1/2): the volume spans [0, s size] on each axis.
+openvdb::FloatGrid::Ptr fog_grid(const std::string& name, const std::vector<float>& values, int width, int height,
+                                 int depth, double s) {
   openvdb::initialize();
   auto grid = openvdb::FloatGrid::create(0.0f);
-  grid->setName("density");
+  grid->setName(name);
   grid->setGridClass(openvdb::GRID_FOG_VOLUME);
-  // Index (i, j, k) is the raw volume's voxel; OpenVDB puts a voxel's centre at its integer
-  // index, so world = s (index + 1/2) metres: the volume spans [0, extent]^3, z up.
-  const double s = model.extent_m / size;
   auto transform = openvdb::math::Transform::createLinearTransform(s);
   transform->postTranslate(openvdb::Vec3d(0.5 * s, 0.5 * s, 0.5 * s));
   grid->setTransform(transform);
   auto access = grid->getAccessor();
-  for (int z = 0; z < size; ++z)
-    for (int y = 0; y < size; ++y)
-      for (int x = 0; x < size; ++x) {
-        const float v = values[(size_t(z) * size + y) * size + x];
-        if (v > 0.0f) access.setValue(openvdb::Coord(x, y, z), v);  // zeros stay background: sparse
+  for (int z = 0; z < depth; ++z)
+    for (int y = 0; y < height; ++y)
+      for (int x = 0; x < width; ++x) {
+        const float v = values[(size_t(z) * height + y) * width + x];
+        if (v > 0.0f) access.setValue(openvdb::Coord(x, y, z), v);
       }
+  return grid;
+}
+
+openvdb::FloatGrid::Ptr make_grid(const model::CloudModel& model, int size, const std::vector<float>& values) {
+  auto grid = fog_grid("density", values, size, size, size, model.extent_m / size);
   grid->insertMeta("density_to_extinction_per_m", openvdb::DoubleMetadata(density_to_extinction_per_m));
   grid->insertMeta("creator", openvdb::StringMetadata("nephele model"));
   return grid;
+}
+
+std::string grids_bytes(const openvdb::GridCPtrVec& grids) {
+  std::ostringstream out(std::ios_base::binary);
+  openvdb::io::Stream(out).write(grids);
+  return out.str();
 }
 
 }  // namespace
@@ -44,9 +56,18 @@ openvdb::FloatGrid::Ptr make_grid(const model::CloudModel& model, int size, cons
 bool vdb_available() { return true; }
 
 std::string vdb_bytes(const model::CloudModel& model, int size, const std::vector<float>& values) {
-  std::ostringstream out(std::ios_base::binary);
-  openvdb::io::Stream(out).write(openvdb::GridCPtrVec{make_grid(model, size, values)});
-  return out.str();
+  return grids_bytes(openvdb::GridCPtrVec{make_grid(model, size, values)});
+}
+
+std::string vdb_grids_bytes(const std::vector<std::string>& names, const std::vector<std::vector<float>>& grids,
+                            int width, int height, int depth, double voxel_size) {
+  openvdb::GridCPtrVec out;
+  for (std::size_t g = 0; g < grids.size(); ++g) {
+    auto grid = fog_grid(names[g], grids[g], width, height, depth, voxel_size);
+    grid->insertMeta("creator", openvdb::StringMetadata("nephele export"));
+    out.push_back(grid);
+  }
+  return grids_bytes(out);
 }
 
 VdbContents read_vdb(const std::string& path) {
@@ -78,6 +99,10 @@ VdbContents read_vdb(const std::string& path) {
 
 bool vdb_available() { return false; }
 std::string vdb_bytes(const model::CloudModel&, int, const std::vector<float>&) { return {}; }
+std::string vdb_grids_bytes(const std::vector<std::string>&, const std::vector<std::vector<float>>&, int, int, int,
+                            double) {
+  return {};
+}
 VdbContents read_vdb(const std::string& path) { throw std::runtime_error(path + ": nephele was built without OpenVDB"); }
 
 #endif

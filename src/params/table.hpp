@@ -127,12 +127,13 @@ inline constexpr Parameter seed = integer("seed", 1, 0, 16777215, "", "seed of t
 namespace run {
 inline constexpr Parameter cover_out = text("out", "cubemaps", "DIR", "output directory (created if missing)", generate);
 inline constexpr Parameter cover_files = text("files", "faces,equirect,png", "faces,equirect,png", "comma-separated images to write (cover.json always); what none asks for is not computed", generate);
+inline constexpr Parameter cover_exports = text("export", "", "NAME,NAME,...", "export presets (docs/export.md) run on the new cover, each into DIR/export/NAME of the same output set", generate);
 inline constexpr Parameter precision = text("precision", "float", "float|half", "EXR samples: 32-bit float, or 16-bit half (11 significant bits, half the bytes)", generate);
 inline constexpr Parameter exr_compression = text("exr_compression", "zip", "none|rle|zips|zip|piz|pxr24|b44|dwaa", "EXR compression: zip (OpenEXR's default), none, rle, zips, piz lose nothing; pxr24, b44, dwaa round values", generate);
-inline constexpr Parameter export_preset = text("preset", "", "equirect|gl-faces|ktx2|dds|celestia|exr-cube", "the target's files (docs/export.md)", export_cover);
+inline constexpr Parameter export_preset = text("preset", "", "equirect|gl-faces|ktx2|dds|celestia|exr-cube|flightgear|eve|unity|godot|unreal|blender|atlas|openvdb", "the target's files (docs/export.md)", export_cover);
 inline constexpr Parameter export_out = text("out", "", "DIR", "output directory (created if missing; the set appears whole or not at all)", export_cover);
 inline constexpr Parameter export_format = text("format", "r16f", "r16f|r32f|r8", "sample format of the ktx2 preset: half float, float, 8-bit unsigned normalised", export_cover);
-inline constexpr Parameter export_name = text("name", "nephele_clouds", "NAME", "add-on folder and file name of the celestia preset (letters, digits, _ and -)", export_cover);
+inline constexpr Parameter export_name = text("name", "nephele_clouds", "NAME", "add-on folder and file name of the celestia and eve presets (letters, digits, _ and -)", export_cover);
 inline constexpr Parameter report_out = text("out", "report", "DIR", "output directory (created if missing)", report);
 inline constexpr Parameter quiet = flag("quiet", "no progress reports on stderr (they appear for work of more than a second)", generate | report | render | noise | model);
 inline constexpr Parameter no_cache = flag("no_cache", "neither read nor write the noise volume cache ($XDG_CACHE_HOME/nephele, else ~/.cache/nephele)", render);

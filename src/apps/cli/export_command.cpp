@@ -9,6 +9,7 @@
 #include "gpu/egl_context.hpp"
 #include "io/atomic_output.hpp"
 #include "io/export_presets.hpp"
+#include "io/volume_export.hpp"
 #include "params/table.hpp"
 
 namespace nephele::cli {
@@ -18,9 +19,11 @@ int run_export(const std::vector<std::string>& arguments) {
   std::string preset_name, out, format(run::export_format.default_text), name(run::export_name.default_text);
   std::string presets_text;
   for (const auto& p : io::export_presets()) presets_text += (presets_text.empty() ? "  " : "\n  ") + p.name + ": " + p.summary;
-  Options options("export COVER_DIR",
-                  "Turns a cover directory written by `nephele generate` (cover_px.exr ... cover_nz.exr) into the\n"
-                  "files one target reads, with a README.txt saying where they go (docs/export.md). Presets:\n" +
+  Options options("export COVER_DIR|VOLUME.json",
+                  "Turns a cover directory written by `nephele generate` (cover_px.exr ... cover_nz.exr), or for\n"
+                  "atlas and openvdb the sidecar of a volume (nephele noise --out NAME.raw, or a model's\n"
+                  "density.json), into the files one target reads, with a README.txt saying where they go\n"
+                  "(docs/export.md). Presets:\n" +
                       presets_text,
                   params::export_cover);
   options.bind(run::export_preset, &preset_name);
@@ -47,7 +50,15 @@ int run_export(const std::vector<std::string>& arguments) {
   io::ExportOptions export_options;
   export_options.ktx2_format = format;
   export_options.name = name;
-  const io::CoverFaces faces = io::read_cover_faces(cover_dir);
+  io::CoverFaces faces;
+  io::VolumeData volume;
+  if (preset.volume) {
+    volume = io::read_volume(cover_dir);
+    if (preset.name == "atlas") io::atlas_grid(volume.width, volume.height, volume.depth);  // fits, before any work
+  } else {
+    faces = io::read_cover_faces(cover_dir);
+    io::check_texture_limit(preset, faces.size);
+  }
 
   const std::filesystem::path directory(out);
   if (std::filesystem::exists(directory) && !std::filesystem::is_directory(directory))
@@ -58,7 +69,8 @@ int run_export(const std::vector<std::string>& arguments) {
   std::filesystem::create_directories(directory, error);
   if (error) throw UsageError("--out", out, "DIR", "cannot be created: " + error.message());
   io::OutputSet outputs(directory, io::OutputSet::Scope::directory);
-  const std::vector<std::string> names = io::write_export(outputs, preset, faces, export_options);
+  const std::vector<std::string> names = preset.volume ? io::write_volume_export(outputs, preset.name, volume)
+                                                       : io::write_export(outputs, preset, faces, export_options);
   outputs.commit();
   for (const auto& file : names) std::cout << (directory / file).string() << "\n";
   return exit_ok;

@@ -1,5 +1,7 @@
 // nephele generate: the global cloud cover, written as cube map faces, equirect and sidecar.
+#include <algorithm>
 #include <filesystem>
+#include <sstream>
 #include <iostream>
 
 #include "apps/cli/commands.hpp"
@@ -9,6 +11,7 @@
 #include "cover/cover_limits.hpp"
 #include "render/render_limits.hpp"
 #include "io/cover_files.hpp"
+#include "io/export_presets.hpp"
 #include "params/values.hpp"
 
 namespace nephele::cli {
@@ -28,6 +31,8 @@ int run_generate(const std::vector<std::string>& arguments) {
       compression(params::run::exr_compression.default_text);
   options.bind(params::run::cover_out, &out);
   options.bind(params::run::cover_files, &files);
+  std::string exports;
+  options.bind(params::run::cover_exports, &exports);
   options.bind(params::run::precision, &precision);
   options.bind(params::run::exr_compression, &compression);
   options.bind(params::run::quiet, &quiet);
@@ -44,6 +49,21 @@ int run_generate(const std::vector<std::string>& arguments) {
   params::check_word(params::run::exr_compression, compression, params::run::exr_compression.option());
   file_options.half = precision == "half";
   file_options.compression = compression;
+  // The presets are checked before any work: a name or a texture limit never fails late.
+  std::vector<const io::ExportPreset*> presets;
+  if (options.given(params::run::cover_exports)) {
+    std::stringstream list(exports);
+    for (std::string name; std::getline(list, name, ',');) {
+      const auto& all = io::export_presets();
+      const auto found = std::find_if(all.begin(), all.end(), [&](const io::ExportPreset& p) { return p.name == name; });
+      if (found == all.end()) throw UsageError("--export", name, std::string(params::run::export_preset.allowed));
+      if (found->volume) throw UsageError("--export", name, "a cover preset", "exports volumes, not covers");
+      presets.push_back(&*found);
+      io::check_texture_limit(*presets.back(), parameters.size);
+    }
+    if (presets.empty() || exports.back() == ',')
+      throw UsageError("--export", exports, std::string(params::run::cover_exports.allowed), "names no preset or ends with a comma");
+  }
   const std::filesystem::path directory(out);
   if (std::filesystem::exists(directory) && !std::filesystem::is_directory(directory))
     throw UsageError("--out: '" + out + "' exists and is not a directory");
@@ -71,6 +91,18 @@ int run_generate(const std::vector<std::string>& arguments) {
   const cover::WarpDiagnostics& diagnostics = cover.diagnose();
   for (const auto& warning : diagnostics.warnings) std::cerr << "nephele: warning: " << warning << "\n";
   progress.update(stages_started++, "writing files");
+  if (!presets.empty()) {
+    // Each preset writes its own set into export/NAME inside this set's temporary directory,
+    // so that everything still appears whole or not at all (write_cover_files commits it).
+    const io::CoverFaces faces{parameters.size, cover.cover_field().read()};
+    for (const io::ExportPreset* preset : presets) {
+      const std::filesystem::path folder = outputs.temporary_directory() / "export" / preset->name;
+      std::filesystem::create_directories(folder);
+      io::OutputSet set(folder, io::OutputSet::Scope::directory);
+      io::write_export(set, *preset, faces);
+      set.commit();
+    }
+  }
   const io::CoverExport exported = io::write_cover_files(outputs, cover, context.info(), file_options);
   progress.finish();
   if (verbose) {
