@@ -6,7 +6,6 @@
 #include <sstream>
 
 #include "apps/cli/commands.hpp"
-#include "gpu/pass_timer.hpp"
 #include "io/noise_cache.hpp"
 #include "render/cloud_renderer.hpp"
 #include "cover/cover_limits.hpp"
@@ -170,22 +169,7 @@ int run_render(const std::vector<std::string>& arguments) {
   const std::filesystem::path cache_directory = no_cache ? std::filesystem::path() : io::default_cache_directory();
   if (!cache_directory.empty() && render::needs_noise_volume(prepared.partial.layers, prepared.field)) {
     const render::RenderSettings settings = render::render_settings(scene);
-    const io::FloatCache cache(cache_directory);
-    const std::string key = "noise_volume size " + std::to_string(settings.noise_size) + " seed " +
-                            std::to_string(settings.seed) + " " + render::NoiseVolume::recipe_key();
-    const std::size_t count = 2 * static_cast<std::size_t>(settings.noise_size) * settings.noise_size * settings.noise_size;
-    const double ms = gpu::time_pass([&] {
-      if (auto values = cache.load(key, count)) {
-        noise = std::make_unique<render::NoiseVolume>(settings.noise_size, settings.seed, *values);
-        noise_note = "noise volume: from the cache " + cache.file_of(key).string();
-      } else {
-        noise = std::make_unique<render::NoiseVolume>(settings.noise_size, settings.seed);
-        noise_note = cache.store(key, noise->level0()) ? "noise volume: made and cached in " + cache.file_of(key).string()
-                                                       : "noise volume: made (the cache " + cache_directory.string() +
-                                                             " could not be written)";
-      }
-    });
-    noise_note += " (" + std::to_string(ms) + " ms)";
+    noise = io::cached_noise_volume(settings.noise_size, settings.seed, cache_directory, &noise_note);
   }
   const render::SceneRender result = render::render_prepared(prepared, scene, noise.get());
   progress.update(2, "writing files");

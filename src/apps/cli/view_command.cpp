@@ -1,0 +1,106 @@
+// nephele view [COVER_DIR] [--scene FILE]: the window (src/apps/viewer, docs/viewer.md).
+#include <iostream>
+
+#include "apps/cli/commands.hpp"
+#include "apps/cli/options.hpp"
+#include "apps/viewer/viewer.hpp"
+#include "cover/integrators.hpp"
+#include "io/noise_cache.hpp"
+#include "io/scene_files.hpp"
+#include "params/table.hpp"
+
+namespace nephele::cli {
+
+int run_view(const std::vector<std::string>& arguments) {
+  namespace s = params::scene;
+  namespace c = params::cover;
+  regional::Scene scene;
+  std::string view, time, size, scene_file, record, integrator(c::integrator.default_text);
+  double heading = 0, pitch = scene.pitch_deg, fov = scene.fov_deg, exposure = scene.exposure;
+  int view_steps = scene.view_steps, light_steps = scene.light_steps, cover_size = scene.cover_size;
+  int iterations = c::iterations.default_int(), frames = 0;
+  float coverage = c::coverage.default_float(), step = c::step.default_float();
+  std::uint32_t seed = scene.seed;
+  bool no_cache = false;
+  Options options("view [COVER_DIR]",
+                  "Opens a window on the ground view of the clouds, with panels for the parameters below\n"
+                  "(their ranges and help come from the same table). COVER_DIR: a cover written by\n"
+                  "nephele generate; without it the cover is made from the cover parameters. Without a\n"
+                  "display: xvfb-run -a nephele view ..., or render headless with nephele render.\n\n" +
+                      std::string(viewer::key_help()),
+                  params::viewer);
+  options.bind(s::view, &view);
+  options.bind(s::heading, &heading);
+  options.bind(s::pitch, &pitch);
+  options.bind(s::fov, &fov);
+  options.bind(s::time, &time);
+  options.bind(s::size, &size);
+  options.bind(s::view_steps, &view_steps);
+  options.bind(s::light_steps, &light_steps);
+  options.bind(s::exposure, &exposure);
+  options.bind(s::seed, &seed);
+  options.bind(s::cover_size, &cover_size);
+  options.bind(s::scene_path, &scene_file);
+  options.bind(c::coverage, &coverage);
+  options.bind(c::iterations, &iterations);
+  options.bind(c::step, &step);
+  options.bind(c::integrator, &integrator);
+  options.bind(params::run::view_record, &record);
+  options.bind(params::run::view_frames, &frames);
+  options.bind(params::run::no_cache, &no_cache);
+  // COVER_DIR comes first; the rest are options (as for nephele export).
+  std::vector<std::string> rest = arguments;
+  std::string cover_dir;
+  if (!rest.empty() && !rest.front().empty() && rest.front()[0] != '-') {
+    cover_dir = rest.front();
+    rest.erase(rest.begin());
+  }
+  if (!options.parse(rest)) {
+    std::cout << options.help();
+    return exit_ok;
+  }
+  regional::KeyOptions typed;
+  if (!scene_file.empty()) scene = io::read_scene_file(scene_file);
+  if (!view.empty()) {
+    scene.view = view;
+    scene.latitude_deg.reset();
+    typed["view"] = "--view";
+  }
+  if (options.given(s::heading)) {
+    scene.heading_deg = heading;
+    typed["heading"] = "--heading";
+  }
+  if (options.given(s::pitch)) scene.pitch_deg = pitch;
+  if (options.given(s::fov)) scene.fov_deg = fov;
+  if (options.given(s::exposure)) scene.exposure = exposure;
+  if (options.given(s::view_steps)) scene.view_steps = view_steps;
+  if (options.given(s::light_steps)) scene.light_steps = light_steps;
+  if (options.given(s::seed)) scene.seed = seed;
+  if (options.given(s::cover_size)) scene.cover_size = cover_size;
+  if (!time.empty()) {
+    scene.time = time;
+    typed["time"] = "--time";
+  }
+  if (!size.empty()) {
+    regional::parse_size(size, scene.width, scene.height, "--size");
+    typed["size"] = "--size";
+  }
+  regional::validate_scene(scene, scene_file.empty() ? "flags" : scene_file, typed);
+
+  viewer::ViewerOptions view_options;
+  view_options.scene = scene;
+  view_options.cover_dir = cover_dir;
+  view_options.record_dir = record;
+  view_options.frames = frames;
+  view_options.cache_directory = no_cache ? std::filesystem::path() : io::default_cache_directory();
+  viewer::Viewer window(view_options);
+  viewer::ViewState& state = window.state();
+  state.coverage = coverage;
+  state.iterations = iterations;
+  state.step = step;
+  state.integrator = integrator;
+  window.run();
+  return exit_ok;
+}
+
+}  // namespace nephele::cli

@@ -1,0 +1,102 @@
+#pragma once
+// nephele view: a window that shows a ViewSource's image, with panels made from the parameter
+// table, mouse and keyboard flight, screenshots and frame recording (docs/viewer.md).
+//
+// Refinement: a change of the view renders at once at a quarter of the window's size in each
+// direction (the preview), then at half and at full size in the next frames, one render per
+// frame, so that input is answered between renders and the window never waits on a full-size
+// render to show the change. Exposure only tone-maps the last render again.
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "apps/viewer/view_source.hpp"
+#include "apps/viewer/view_state.hpp"
+#include "apps/viewer/window.hpp"
+#include "core/image.hpp"
+#include "regional/scene.hpp"
+
+struct GLFWwindow;
+
+namespace nephele::viewer {
+
+struct ViewerOptions {
+  regional::Scene scene;                  // the first view (its size is the window's)
+  std::filesystem::path cover_dir;        // a cover of nephele generate; empty: made from the panels' values
+  std::filesystem::path cache_directory;  // the noise volume cache; empty: none
+  std::filesystem::path record_dir;       // every displayed frame as frame_NNNNNN.png; empty: none
+  long frames = 0;                        // close after this many frames; 0: when the window is closed
+  bool visible = true;                    // false: a hidden window (tests)
+};
+
+// The keys, for --help and docs/viewer.md.
+const char* key_help();
+
+// The resolution divisors of the refinement, coarse to fine.
+const std::vector<int>& refinement_divisors();
+
+class Viewer {
+ public:
+  explicit Viewer(const ViewerOptions& options);  // throws WindowError when no window can be opened
+  ~Viewer();
+  Viewer(const Viewer&) = delete;
+  Viewer& operator=(const Viewer&) = delete;
+
+  // Frames until the window is closed (or options.frames are shown).
+  void run();
+  // One frame: input events, the next refinement render if one is due, display, panels,
+  // recording, buffer swap.
+  void frame();
+
+  ViewState& state() { return state_; }
+  Window& window() { return *window_; }
+  // True when the image shown is the full-size render of the current state.
+  bool refined() const { return next_level_ >= refinement_divisors().size() && !changed(); }
+  // The last render: its radiance, passes and times.
+  const render::RenderResult& last_render() const { return last_render_; }
+  long renders() const { return renders_; }
+  // The default framebuffer as shown at the end of the last frame: RGB in [0, 1] (8-bit
+  // values / 255), rows from the top. Only kept while capture is on (or when recording).
+  void set_capture(bool on) { capture_ = on; }
+  const core::ImageData& last_frame() const { return last_frame_; }
+  void set_panels_visible(bool on) { panels_ = on; }
+  // Writes the tone-mapped image of the last render as a PNG (the key F12 or P, into the
+  // working directory as nephele_view_NNNN.png); returns the path.
+  std::filesystem::path screenshot(const std::filesystem::path& directory = ".");
+
+  // The window's GLFW callbacks; tests call them directly as the window would.
+  static void on_key(GLFWwindow* window, int key, int scancode, int action, int mods);
+  static void on_mouse_button(GLFWwindow* window, int button, int action, int mods);
+  static void on_cursor(GLFWwindow* window, double x, double y);
+  static void on_scroll(GLFWwindow* window, double dx, double dy);
+
+ private:
+  bool changed() const;
+  std::string render_key() const;
+  void refine(int framebuffer_width, int framebuffer_height);
+  void upload(const core::ImageData& display);
+  void draw_image(int framebuffer_width, int framebuffer_height);
+  core::ImageData read_framebuffer(int width, int height) const;
+
+  ViewerOptions options_;
+  std::unique_ptr<Window> window_;
+  std::unique_ptr<ViewSource> source_;
+  ViewState state_;
+  std::string shown_key_;        // render_key of the state being refined
+  double shown_exposure_ = 0;    // exposure of the texture shown
+  std::size_t next_level_ = 0;   // refinement level rendered next
+  int target_width_ = 0, target_height_ = 0;  // framebuffer size being refined
+  render::RenderResult last_render_;
+  long renders_ = 0, frames_ = 0;
+  double frame_ms_ = 0;
+  bool panels_ = true, capture_ = false, dragging_ = false;
+  double cursor_x_ = 0, cursor_y_ = 0;
+  std::string panel_error_;
+  core::ImageData last_frame_;
+  unsigned texture_ = 0, program_ = 0, vertex_array_ = 0;
+  int texture_width_ = 0, texture_height_ = 0;
+};
+
+}  // namespace nephele::viewer
