@@ -29,6 +29,15 @@ std::string tooltip(const params::Parameter& p) {
   return text;
 }
 
+// A time as the scene's rule reads it; refused as bad input naming the option.
+void check_time(const params::Parameter& p, const std::string& text) {
+  try {
+    core::parse_utc_time(text);
+  } catch (const std::invalid_argument&) {
+    throw core::InputError(p.option(), text, p.range_text(), "is not a date and time that exists");
+  }
+}
+
 // Ranges wider than this many units are dragged (with clamping), narrower ones slid.
 constexpr double slider_span = 4096;
 
@@ -82,12 +91,12 @@ bool text_widget(const params::Parameter& p, std::string& value, std::string& er
   draft = buffer;
   if (!entered || draft == value) return false;
   try {
-    if (&p == &params::scene::time) core::parse_utc_time(draft);
+    if (&p == &params::scene::time) check_time(p, draft);
     value = draft;
     error.clear();
     return true;
-  } catch (const std::exception& e) {
-    error = p.option() + ": '" + draft + "': " + e.what();
+  } catch (const core::InputError& e) {
+    error = e.what();
     return false;
   }
 }
@@ -111,8 +120,9 @@ void set_value(ViewState& state, const params::Parameter& p, const std::string& 
         using T = std::remove_pointer_t<decltype(field)>;
         if constexpr (std::is_same_v<T, std::string>) {
           if (!p.words().empty()) params::check_word(p, text, p.option());
-          else if (&p == &params::scene::time) core::parse_utc_time(text);
+          else if (&p == &params::scene::time) check_time(p, text);
           *field = text;
+          if (&p == &params::scene::view) go_to_viewpoint(state, text);
         } else {
           *field = static_cast<T>(params::parse_number(p, text, p.option()));
         }
