@@ -28,6 +28,7 @@ enum Use : unsigned {
   bench_model = 1u << 11,
   export_cover = 1u << 12,  // nephele export
   viewer = 1u << 13,        // nephele view: its options and its window's panels (src/apps/viewer)
+  bench_view = 1u << 14,    // nephele bench view
 };
 
 struct Parameter {

@@ -147,6 +147,8 @@ inline constexpr Parameter report_render_size = text("render_size", "", "WIDTHxH
 inline constexpr Parameter report_no_render = flag("no_render", "skip the render sweep", report);
 inline constexpr Parameter view_record = text("record", "", "DIR", "write every displayed frame as DIR/frame_NNNNNN.png (created if missing)", viewer);
 inline constexpr Parameter view_frames = integer("frames", 0, 0, 1e9, "frames", "close the window after this many frames (0: when it is closed); for scripts", viewer);
+inline constexpr Parameter bench_view_size = text("size", "640x360", "WIDTHxHEIGHT", "window size (the full-size render; the preview is a quarter of it each way)", bench_view);
+inline constexpr Parameter bench_view_repeat = integer("repeat", 3, 1, 100, "changes", "view changes timed, each refined to full size; the median is printed", bench_view);
 inline constexpr Parameter report_budget_ms = real("budget_ms", 0.0, 0.0, 1e7, "ms", "skip runs predicted to take longer (0: 20000, quick 2000)", report);
 }  // namespace run
 

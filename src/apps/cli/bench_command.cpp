@@ -63,7 +63,8 @@ int run_bench(const std::vector<std::string>& arguments) {
                  "  cover   time of each global cover pass for sizes 256, 512, 1024\n"
                  "  render  seconds per frame of the default scene, image error against steps\n"
                  "  noise   million points per second of 3D Worley and Perlin, seconds of the noise presets\n"
-                 "  model   milliseconds per cloud model volume (1 to 50 primitives), whole and after one edit\n";
+                 "  model   milliseconds per cloud model volume (1 to 50 primitives), whole and after one edit\n"
+                 "  view    milliseconds per pass of nephele view's preview and refinement frames (needs a display)\n";
     return arguments.empty() ? exit_usage : exit_ok;
   }
   const std::vector<std::string> rest(arguments.begin() + 1, arguments.end());
@@ -71,7 +72,8 @@ int run_bench(const std::vector<std::string>& arguments) {
   if (arguments[0] == "render") return bench_render(rest);
   if (arguments[0] == "noise") return bench_noise(rest);
   if (arguments[0] == "model") return bench_model(rest);
-  throw UsageError("nephele bench: unknown benchmark '" + arguments[0] + "' (allowed: cover, render, noise, model)");
+  if (arguments[0] == "view") return bench_view(rest);
+  throw UsageError("nephele bench: unknown benchmark '" + arguments[0] + "' (allowed: cover, render, noise, model, view)");
 }
 
 }  // namespace nephele::cli

@@ -57,6 +57,8 @@ class Viewer {
   // The last render: its radiance, passes and times.
   const render::RenderResult& last_render() const { return last_render_; }
   long renders() const { return renders_; }
+  // Wall-clock milliseconds of the last frame (events, render, display, panels, swap).
+  double frame_ms() const { return frame_ms_; }
   // The default framebuffer as shown at the end of the last frame: RGB in [0, 1] (8-bit
   // values / 255), rows from the top. Only kept while capture is on (or when recording).
   void set_capture(bool on) { capture_ = on; }
