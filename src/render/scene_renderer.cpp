@@ -21,29 +21,6 @@ constexpr int field_size = 64;
 constexpr double field_extent_m = 160000.0;
 constexpr double look_ahead_hours = 168.0;  // the original system looked up to 7 days ahead
 
-Camera camera_of(const regional::Scene& scene) {
-  Camera c;
-  if (scene.latitude_deg) {
-    c.latitude_deg = *scene.latitude_deg;
-    c.longitude_deg = *scene.longitude_deg;
-    c.height_m = *scene.height_m;
-    c.heading_deg = scene.heading_deg.value_or(0.0);
-  } else {
-    const auto viewpoint = regional::find_viewpoint(scene.view);
-    c.latitude_deg = viewpoint->site.latitude_deg;
-    c.longitude_deg = viewpoint->site.longitude_deg;
-    // Eye height 2 m above the summit.
-    c.height_m = viewpoint->site.elevation_m + 2.0;
-    c.heading_deg = scene.heading_deg.value_or(viewpoint->heading_deg);
-  }
-  c.pitch_deg = scene.pitch_deg;
-  c.fov_deg = scene.fov_deg;
-  c.panorama = scene.panorama;
-  c.width = scene.width;
-  c.height = scene.height;
-  return c;
-}
-
 }  // namespace
 
 GlobalCoverFaces make_global_cover(const cover::CoverParameters& parameters) {
@@ -66,6 +43,29 @@ PreparedScene prepare_scene(const regional::Scene& scene, const std::vector<regi
   return prepared;
 }
 
+Camera scene_camera(const regional::Scene& scene) {
+  Camera c;
+  if (scene.latitude_deg) {
+    c.latitude_deg = *scene.latitude_deg;
+    c.longitude_deg = *scene.longitude_deg;
+    c.height_m = *scene.height_m;
+    c.heading_deg = scene.heading_deg.value_or(0.0);
+  } else {
+    const auto viewpoint = regional::find_viewpoint(scene.view);
+    c.latitude_deg = viewpoint->site.latitude_deg;
+    c.longitude_deg = viewpoint->site.longitude_deg;
+    // Eye height 2 m above the summit.
+    c.height_m = viewpoint->site.elevation_m + 2.0;
+    c.heading_deg = scene.heading_deg.value_or(viewpoint->heading_deg);
+  }
+  c.pitch_deg = scene.pitch_deg;
+  c.fov_deg = scene.fov_deg;
+  c.panorama = scene.panorama;
+  c.width = scene.width;
+  c.height = scene.height;
+  return c;
+}
+
 PreparedScene prepare_scene(const regional::Scene& scene, const std::vector<regional::WeatherSeries>& weather,
                             const GlobalCoverFaces& cover) {
   if (weather.size() != scene.weather.size())
@@ -73,7 +73,7 @@ PreparedScene prepare_scene(const regional::Scene& scene, const std::vector<regi
                            std::to_string(scene.weather.size()) + " files");
   PreparedScene prepared;
   SceneRender& out = prepared.partial;
-  out.camera = camera_of(scene);
+  out.camera = scene_camera(scene);
   const double time = prepared.time = core::parse_utc_time(scene.time);
   const GeographicLib::LocalCartesian frame(out.camera.latitude_deg, out.camera.longitude_deg, 0.0);
   regional::WeatherField& field = prepared.field;

@@ -29,6 +29,10 @@ struct PreparedScene {
   double wind_speed = 0.0;    // m/s
 };
 
+// The camera of a scene: its position (`at`, else the viewpoint's summit with the eye 2 m above
+// it), heading (given, else the viewpoint's), pitch, field of view and size.
+Camera scene_camera(const regional::Scene& scene);
+
 // The global cover a scene without weather reads: six faces in GL order, size^2 texels each,
 // rows from t = 0 (the layout of cover_field() and of io::read_cover_faces).
 struct GlobalCoverFaces {

@@ -15,6 +15,13 @@ double parse_number(const std::string& option, const std::string& text, double m
   return params::parse_number(option, text, min, max, integer_only);
 }
 
+std::string take_leading_operand(std::vector<std::string>& arguments) {
+  if (arguments.empty() || arguments.front().empty() || arguments.front()[0] == '-') return "";
+  std::string operand = arguments.front();
+  arguments.erase(arguments.begin());
+  return operand;
+}
+
 Options::Options(std::string command, std::string summary, unsigned use)
     : command_(std::move(command)), summary_(std::move(summary)), use_(use),
       app_(std::make_unique<CLI::App>(summary_, "nephele " + command_)) {

@@ -11,6 +11,7 @@
 #include "cover/cover_limits.hpp"
 #include "render/render_limits.hpp"
 #include "apps/cli/options.hpp"
+#include "apps/cli/scene_options.hpp"
 #include "core/progress.hpp"
 #include "params/table.hpp"
 #include "params/values.hpp"
@@ -45,10 +46,8 @@ void parse_position(const std::string& text, regional::Scene& scene) {
 }  // namespace
 
 int run_render(const std::vector<std::string>& arguments) {
-  regional::Scene scene;
-  std::string view, at, size, time, scene_file, out;
-  double heading = 0, pitch = scene.pitch_deg, fov = scene.fov_deg, exposure = scene.exposure;
-  bool panorama = false, verbose = false, quiet = false;
+  std::string at, out;
+  bool panorama = false, verbose = false, quiet = false, no_cache = false;
   std::vector<std::string> weather;
   Options options("render",
                   "Renders the cloud layers, sky and ground from a viewpoint near the ground. Without\n"
@@ -56,25 +55,12 @@ int run_render(const std::vector<std::string>& arguments) {
                   "FILE.exr linear radiance; with --scene, --out is a directory for the scene's outputs.",
                   params::render);
   namespace s = params::scene;
-  options.bind(s::view, &view);
+  const SceneOptions scene_options(options);
   options.bind(s::at, &at);
-  options.bind(s::heading, &heading);
-  options.bind(s::pitch, &pitch);
-  options.bind(s::fov, &fov);
-  options.bind(s::time, &time);
-  options.bind(s::size, &size);
   options.bind(s::panorama, &panorama);
   options.bind(s::weather, &weather);
-  int view_steps = scene.view_steps, light_steps = scene.light_steps;
-  std::uint32_t seed = scene.seed;
-  options.bind(s::view_steps, &view_steps);
-  options.bind(s::light_steps, &light_steps);
-  options.bind(s::exposure, &exposure);
-  options.bind(s::seed, &seed);
-  options.bind(s::scene_path, &scene_file);
   options.bind(s::out, &out);
   options.bind(params::run::quiet, &quiet);
-  bool no_cache = false;
   options.bind(params::run::no_cache, &no_cache);
   options.bind(params::run::verbose, &verbose);
   if (!options.parse(arguments)) {
@@ -83,41 +69,18 @@ int run_render(const std::vector<std::string>& arguments) {
   }
   // The keys set by options: their errors name the option the user typed, not a scene key.
   regional::KeyOptions typed;
-  if (!scene_file.empty()) scene = io::read_scene_file(scene_file);
-  if (!view.empty()) {
-    scene.view = view;
-    scene.latitude_deg.reset();
-    typed["view"] = "--view";
-  }
+  regional::Scene scene = scene_options.scene(typed);
+  const std::string& scene_file = scene_options.scene_file();
   if (!at.empty()) {
     parse_position(at, scene);
     typed["at"] = "--at";
   }
-  // Options override the scene file only where they were given.
-  if (options.given(s::heading)) {
-    scene.heading_deg = heading;
-    typed["heading"] = "--heading";
-  }
-  if (options.given(s::pitch)) scene.pitch_deg = pitch;
-  if (options.given(s::fov)) scene.fov_deg = fov;
-  if (options.given(s::exposure)) scene.exposure = exposure;
-  if (options.given(s::view_steps)) scene.view_steps = view_steps;
-  if (options.given(s::light_steps)) scene.light_steps = light_steps;
-  if (options.given(s::seed)) scene.seed = seed;
-  if (!time.empty()) {
-    scene.time = time;
-    typed["time"] = "--time";
-  }
   if (panorama) {
     scene.panorama = true;
-    if (size.empty()) {
+    if (!scene_options.size_given()) {
       scene.width = 2048, scene.height = 1024;
       typed["size"] = "--panorama";
     }
-  }
-  if (!size.empty()) {
-    regional::parse_size(size, scene.width, scene.height, "--size");
-    typed["size"] = "--size";
   }
   if (!weather.empty()) {
     scene.weather = weather;

@@ -6,24 +6,19 @@
 
 #include "apps/cli/commands.hpp"
 #include "apps/cli/options.hpp"
+#include "apps/cli/scene_options.hpp"
 #include "apps/viewer/viewer.hpp"
 #include "cover/integrators.hpp"
 #include "io/noise_cache.hpp"
-#include "io/scene_files.hpp"
 #include "params/table.hpp"
 
 namespace nephele::cli {
 
 int run_view(const std::vector<std::string>& arguments) {
-  namespace s = params::scene;
   namespace c = params::cover;
-  regional::Scene scene;
-  std::string view, time, size, scene_file, record, integrator(c::integrator.default_text);
-  double heading = 0, pitch = scene.pitch_deg, fov = scene.fov_deg, exposure = scene.exposure;
-  int view_steps = scene.view_steps, light_steps = scene.light_steps, cover_size = scene.cover_size;
-  int iterations = c::iterations.default_int(), frames = 0;
+  std::string record, integrator(c::integrator.default_text);
+  int cover_size = params::scene::cover_size.default_int(), iterations = c::iterations.default_int(), frames = 0;
   float coverage = c::coverage.default_float(), step = c::step.default_float();
-  std::uint32_t seed = scene.seed;
   bool no_cache = false;
   Options options("view [COVER_DIR]",
                   "Opens a window on the ground view of the clouds, with panels for the parameters below\n"
@@ -32,18 +27,8 @@ int run_view(const std::vector<std::string>& arguments) {
                   "display: xvfb-run -a nephele view ..., or render headless with nephele render.\n\n" +
                       std::string(viewer::key_help()),
                   params::viewer);
-  options.bind(s::view, &view);
-  options.bind(s::heading, &heading);
-  options.bind(s::pitch, &pitch);
-  options.bind(s::fov, &fov);
-  options.bind(s::time, &time);
-  options.bind(s::size, &size);
-  options.bind(s::view_steps, &view_steps);
-  options.bind(s::light_steps, &light_steps);
-  options.bind(s::exposure, &exposure);
-  options.bind(s::seed, &seed);
-  options.bind(s::cover_size, &cover_size);
-  options.bind(s::scene_path, &scene_file);
+  const SceneOptions scene_options(options);
+  options.bind(params::scene::cover_size, &cover_size);
   options.bind(c::coverage, &coverage);
   options.bind(c::iterations, &iterations);
   options.bind(c::step, &step);
@@ -51,43 +36,16 @@ int run_view(const std::vector<std::string>& arguments) {
   options.bind(params::run::view_record, &record);
   options.bind(params::run::view_frames, &frames);
   options.bind(params::run::no_cache, &no_cache);
-  // COVER_DIR comes first; the rest are options (as for nephele export).
   std::vector<std::string> rest = arguments;
-  std::string cover_dir;
-  if (!rest.empty() && !rest.front().empty() && rest.front()[0] != '-') {
-    cover_dir = rest.front();
-    rest.erase(rest.begin());
-  }
+  const std::string cover_dir = take_leading_operand(rest);
   if (!options.parse(rest)) {
     std::cout << options.help();
     return exit_ok;
   }
   regional::KeyOptions typed;
-  if (!scene_file.empty()) scene = io::read_scene_file(scene_file);
-  if (!view.empty()) {
-    scene.view = view;
-    scene.latitude_deg.reset();
-    typed["view"] = "--view";
-  }
-  if (options.given(s::heading)) {
-    scene.heading_deg = heading;
-    typed["heading"] = "--heading";
-  }
-  if (options.given(s::pitch)) scene.pitch_deg = pitch;
-  if (options.given(s::fov)) scene.fov_deg = fov;
-  if (options.given(s::exposure)) scene.exposure = exposure;
-  if (options.given(s::view_steps)) scene.view_steps = view_steps;
-  if (options.given(s::light_steps)) scene.light_steps = light_steps;
-  if (options.given(s::seed)) scene.seed = seed;
-  if (options.given(s::cover_size)) scene.cover_size = cover_size;
-  if (!time.empty()) {
-    scene.time = time;
-    typed["time"] = "--time";
-  }
-  if (!size.empty()) {
-    regional::parse_size(size, scene.width, scene.height, "--size");
-    typed["size"] = "--size";
-  }
+  regional::Scene scene = scene_options.scene(typed);
+  const std::string& scene_file = scene_options.scene_file();
+  if (options.given(params::scene::cover_size)) scene.cover_size = cover_size;
   regional::validate_scene(scene, scene_file.empty() ? "flags" : scene_file, typed);
 
   viewer::ViewerOptions view_options;

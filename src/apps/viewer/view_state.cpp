@@ -7,6 +7,7 @@
 
 #include "cover/integrators.hpp"
 #include "regional/sites.hpp"
+#include "render/scene_renderer.hpp"
 
 namespace nephele::viewer {
 
@@ -26,27 +27,21 @@ bool option_only(const params::Parameter& p) {
 }
 
 void go_to_viewpoint(ViewState& state, const std::string& name) {
-  const auto viewpoint = regional::find_viewpoint(name);
-  if (!viewpoint) return;
+  if (!regional::find_viewpoint(name)) return;
+  regional::Scene scene;
+  scene.view = name;
+  const render::Camera camera = render::scene_camera(scene);
   state.viewpoint = name;
-  state.camera.latitude_deg = viewpoint->site.latitude_deg;
-  state.camera.longitude_deg = viewpoint->site.longitude_deg;
-  state.camera.height_m = viewpoint->site.elevation_m + 2.0;  // as the renderer's viewpoints
-  state.camera.heading_deg = viewpoint->heading_deg;
+  state.camera.latitude_deg = camera.latitude_deg;
+  state.camera.longitude_deg = camera.longitude_deg;
+  state.camera.height_m = camera.height_m;
+  state.camera.heading_deg = camera.heading_deg;
 }
 
 ViewState state_of_scene(const regional::Scene& scene) {
   ViewState state;
-  if (scene.latitude_deg) {
-    state.camera.latitude_deg = *scene.latitude_deg;
-    state.camera.longitude_deg = *scene.longitude_deg;
-    state.camera.height_m = *scene.height_m;
-  } else {
-    go_to_viewpoint(state, scene.view);
-  }
-  if (scene.heading_deg) state.camera.heading_deg = *scene.heading_deg;
-  state.camera.pitch_deg = scene.pitch_deg;
-  state.camera.fov_deg = scene.fov_deg;
+  state.viewpoint = scene.latitude_deg ? "" : scene.view;
+  state.camera = render::scene_camera(scene);
   state.time = scene.time;
   state.seed = scene.seed;
   state.cover_size = scene.cover_size;
