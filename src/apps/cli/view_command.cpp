@@ -93,7 +93,7 @@ int bench_view(const std::vector<std::string>& arguments) {
               scene.width, scene.height, scene.view_steps, scene.light_steps);
   // The first change also makes the cover and the noise volume: refined once before timing.
   while (!window.refined()) window.frame();
-  const std::size_t levels = viewer::refinement_divisors().size();
+  const std::size_t levels = viewer::refinement_levels().size();
   // Per refinement level: the passes' times and the frame's, over the changes.
   std::vector<std::map<std::string, std::vector<double>>> times(levels);
   std::vector<std::string> order;
@@ -111,9 +111,11 @@ int bench_view(const std::vector<std::string>& arguments) {
   order.push_back("frame");
   std::printf("milliseconds per pass, median of %d changes\n%-16s", repeat, "pass");
   for (std::size_t level = 0; level < levels; ++level) {
-    const int d = viewer::refinement_divisors()[level];
-    const std::string label = std::to_string((scene.width + d - 1) / d) + "x" + std::to_string((scene.height + d - 1) / d);
-    std::printf(" %14s", label.c_str());
+    const viewer::RefinementLevel l = viewer::refinement_levels()[level];
+    const int d = l.divisor;
+    std::string label = std::to_string((scene.width + d - 1) / d) + "x" + std::to_string((scene.height + d - 1) / d);
+    if (l.bands > 1) label = "band " + std::to_string(l.band + 1) + "/" + std::to_string(l.bands);
+    std::printf(" %11s", label.c_str());
   }
   std::printf("\n");
   for (const std::string& name : order) {
@@ -121,11 +123,11 @@ int bench_view(const std::vector<std::string>& arguments) {
     for (std::size_t level = 0; level < levels; ++level) {
       auto values = times[level][name];
       if (values.empty()) {
-        std::printf(" %14s", "-");
+        std::printf(" %11s", "-");
         continue;
       }
       std::sort(values.begin(), values.end());
-      std::printf(" %14.1f", values[values.size() / 2]);
+      std::printf(" %11.1f", values[values.size() / 2]);
     }
     std::printf("\n");
   }

@@ -31,7 +31,8 @@ GroundSource::GroundSource(const std::filesystem::path& cover_dir, const std::fi
   }
 }
 
-render::RenderResult GroundSource::render(const ViewState& state, int width, int height) {
+render::RenderResult GroundSource::render(const ViewState& state, int width, int height, int first_row,
+                                          int row_count) {
   const regional::Scene scene = scene_of(state, width, height);
   std::vector<std::pair<std::string, double>> setup_ms;
   if (state.weather != station_files_) {
@@ -50,13 +51,17 @@ render::RenderResult GroundSource::render(const ViewState& state, int width, int
   // resampling of the cover or the stations, no GPU pass).
   render::PreparedScene prepared;
   setup_ms.emplace_back("weather_field", gpu::time_pass([&] { prepared = render::prepare_scene(scene, stations_, cover_); }));
-  const render::RenderSettings settings = render::render_settings(scene);
+  render::RenderSettings settings = render::render_settings(scene);
+  settings.first_row = first_row;
+  settings.row_count = row_count;
   if (render::needs_noise_volume(prepared.partial.layers, prepared.field) &&
       (!noise_ || noise_->seed() != settings.seed || noise_->size() != settings.noise_size))
     setup_ms.emplace_back("noise_volume", gpu::time_pass([&] {
                             noise_ = io::cached_noise_volume(settings.noise_size, settings.seed, cache_directory_);
                           }));
-  render::SceneRender out = render::render_prepared(prepared, scene, noise_.get());
+  render::SceneRender out = prepared.partial;
+  out.render = render::render_clouds(out.camera, out.layers, prepared.field, prepared.time, settings, prepared.wind,
+                                     prepared.wind_speed, noise_.get());
   out.render.timings_ms.insert(out.render.timings_ms.begin(), setup_ms.begin(), setup_ms.end());
   return out.render;
 }

@@ -20,7 +20,10 @@ class ViewSource {
   // The linear radiance of the view of `state` at width x height (passes and their times in
   // the result). Runs in the current GL context (the window's). Slow work that a change of the
   // state needs once (a cover, a noise volume) is kept for the next calls.
-  virtual render::RenderResult render(const ViewState& state, int width, int height) = 0;
+  // `first_row` and `row_count` (0: every row) select a band of rows of the width x height
+  // image; the other rows of the result are undefined.
+  virtual render::RenderResult render(const ViewState& state, int width, int height, int first_row = 0,
+                                      int row_count = 0) = 0;
 };
 
 // The ground view (render::prepare_scene, render_prepared): the global cover from `cover_dir`
@@ -31,7 +34,8 @@ class GroundSource : public ViewSource {
  public:
   GroundSource(const std::filesystem::path& cover_dir, const std::filesystem::path& cache_directory);
   std::string name() const override { return "ground"; }
-  render::RenderResult render(const ViewState& state, int width, int height) override;
+  render::RenderResult render(const ViewState& state, int width, int height, int first_row = 0,
+                              int row_count = 0) override;
 
  private:
   std::filesystem::path cache_directory_;

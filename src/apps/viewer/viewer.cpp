@@ -7,6 +7,7 @@
 #include <backends/imgui_impl_opengl3.h>
 #include <imgui.h>
 
+#include <algorithm>
 #include <chrono>
 #include <iostream>
 #include <cstdio>
@@ -56,6 +57,19 @@ Viewer* viewer_of(GLFWwindow* window) { return static_cast<Viewer*>(glfwGetWindo
 bool panels_take_mouse() { return ImGui::GetCurrentContext() != nullptr && ImGui::GetIO().WantCaptureMouse; }
 bool panels_take_keyboard() { return ImGui::GetCurrentContext() != nullptr && ImGui::GetIO().WantCaptureKeyboard; }
 
+// `image` at width x height by the nearest pixel: the rows that the bands have not reached yet.
+core::ImageData upsampled(const core::ImageData& image, int width, int height) {
+  core::ImageData out{width, height, image.channels, std::vector<float>(std::size_t(width) * height * image.channels)};
+  if (image.width == 0 || image.height == 0) return out;
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x) {
+      const int sx = std::min(image.width - 1, x * image.width / width), sy = std::min(image.height - 1, y * image.height / height);
+      std::copy_n(&image.pixels[(std::size_t(sy) * image.width + sx) * image.channels], image.channels,
+                  &out.pixels[(std::size_t(y) * width + x) * image.channels]);
+    }
+  return out;
+}
+
 std::string frame_name(long index) {
   char name[32];
   std::snprintf(name, sizeof name, "frame_%06ld.png", index);
@@ -82,9 +96,16 @@ const char* key_help() {
          "  Escape                  close the window\n";
 }
 
-const std::vector<int>& refinement_divisors() {
-  static const std::vector<int> divisors = {4, 2, 1};
-  return divisors;
+const std::vector<RefinementLevel>& refinement_levels() {
+  // Eight bands: the rows of sky and cloud cost most (the ground's rays end at once), so the
+  // bands of the upper half take most of the time; eight keep each under about a quarter of a
+  // whole full-size render (docs/viewer.md).
+  static const std::vector<RefinementLevel> levels = [] {
+    std::vector<RefinementLevel> out = {{4, 0, 1}, {2, 0, 1}};
+    for (int band = 0; band < 8; ++band) out.push_back({1, band, 8});
+    return out;
+  }();
+  return levels;
 }
 
 Viewer::Viewer(const ViewerOptions& options) : options_(options) {
@@ -153,17 +174,26 @@ void Viewer::refine(int width, int height) {
     target_height_ = height;
     next_level_ = 0;
   }
-  if (next_level_ < refinement_divisors().size()) {
-    const int divisor = refinement_divisors()[next_level_];
+  if (next_level_ < refinement_levels().size()) {
+    const RefinementLevel level = refinement_levels()[next_level_];
     // Sizes round up, so that the preview is never empty.
-    const int w = (width + divisor - 1) / divisor, h = (height + divisor - 1) / divisor;
-    last_render_ = source_->render(state_, w, h);
+    const int w = (width + level.divisor - 1) / level.divisor, h = (height + level.divisor - 1) / level.divisor;
+    const int rows = (h + level.bands - 1) / level.bands, first = std::min(h, level.band * rows);
+    last_render_ = source_->render(state_, w, h, first, level.bands > 1 ? std::min(rows, h - first) : 0);
     ++renders_;
     ++next_level_;
-    upload(render::tone_map(last_render_.radiance, state_.exposure));
+    if (level.bands == 1) {
+      shown_ = last_render_.radiance;
+    } else {
+      if (level.band == 0) shown_ = upsampled(shown_, w, h);
+      const std::size_t row = std::size_t(w) * shown_.channels;
+      std::copy(last_render_.radiance.pixels.begin() + first * row,
+                last_render_.radiance.pixels.begin() + std::min(h, first + rows) * row, shown_.pixels.begin() + first * row);
+    }
+    upload(render::tone_map(shown_, state_.exposure));
     shown_exposure_ = state_.exposure;
   } else if (shown_exposure_ != state_.exposure) {
-    upload(render::tone_map(last_render_.radiance, state_.exposure));
+    upload(render::tone_map(shown_, state_.exposure));
     shown_exposure_ = state_.exposure;
   }
 }
@@ -230,8 +260,11 @@ void Viewer::frame() {
     ImGui::NewFrame();
     if (panels_) {
       draw_panels(state_, panel_error_);
-      const std::size_t level = std::min(next_level_, refinement_divisors().size()) - 1;
-      std::string refinement = next_level_ >= refinement_divisors().size() ? "full size" : "preview 1/" + std::to_string(refinement_divisors()[level]);
+      const RefinementLevel level = refinement_levels()[std::min(next_level_, refinement_levels().size()) - 1];
+      const std::string refinement =
+          next_level_ >= refinement_levels().size() ? "full size"
+          : level.bands > 1 ? "band " + std::to_string(level.band + 1) + "/" + std::to_string(level.bands)
+                            : "1/" + std::to_string(level.divisor);
       draw_timings(last_render_.timings_ms, last_render_.radiance.width, last_render_.radiance.height, refinement, frame_ms_);
     }
     ImGui::Render();
@@ -256,7 +289,7 @@ std::filesystem::path Viewer::screenshot(const std::filesystem::path& directory)
       break;
     }
   }
-  write_png(directory, name, render::tone_map(last_render_.radiance, state_.exposure));
+  write_png(directory, name, render::tone_map(shown_, state_.exposure));
   return directory / name;
 }
 

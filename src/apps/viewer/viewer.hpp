@@ -3,9 +3,9 @@
 // table, mouse and keyboard flight, screenshots and frame recording (docs/viewer.md).
 //
 // Refinement: a change of the view renders at once at a quarter of the window's size in each
-// direction (the preview), then at half and at full size in the next frames, one render per
-// frame, so that input is answered between renders and the window never waits on a full-size
-// render to show the change. Exposure only tone-maps the last render again.
+// direction (the preview), then at half size, then at full size in eight bands of rows, one
+// render per frame, so that input is answered between renders and no frame costs a whole
+// full-size render. Exposure only tone-maps the last image again.
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -34,8 +34,14 @@ struct ViewerOptions {
 // The keys, for --help and docs/viewer.md.
 const char* key_help();
 
-// The resolution divisors of the refinement, coarse to fine.
-const std::vector<int>& refinement_divisors();
+// One step of the refinement: the image at 1/divisor of the window's size each way, or band
+// `band` of `bands` (of equal rows, the last one shorter) of it.
+struct RefinementLevel {
+  int divisor;
+  int band, bands;
+};
+// The steps, coarse to fine: 1/4, 1/2, then the full size in eight bands.
+const std::vector<RefinementLevel>& refinement_levels();
 
 class Viewer {
  public:
@@ -53,8 +59,8 @@ class Viewer {
   ViewState& state() { return state_; }
   Window& window() { return *window_; }
   // True when the image shown is the full-size render of the current state.
-  bool refined() const { return next_level_ >= refinement_divisors().size() && !changed(); }
-  // The last render: its radiance, passes and times.
+  bool refined() const { return next_level_ >= refinement_levels().size() && !changed(); }
+  // The last render (a band's rows only, for a band): its radiance, passes and times.
   const render::RenderResult& last_render() const { return last_render_; }
   long renders() const { return renders_; }
   // Wall-clock milliseconds of the last frame (events, render, display, panels, swap).
@@ -64,7 +70,10 @@ class Viewer {
   void set_capture(bool on) { capture_ = on; }
   const core::ImageData& last_frame() const { return last_frame_; }
   void set_panels_visible(bool on) { panels_ = on; }
-  // Writes the tone-mapped image of the last render as a PNG (the key F12 or P, into the
+  // The linear radiance shown: the last whole render, or the full-size image its bands have
+  // filled so far (the rows not yet marched from the half-size render, nearest pixel).
+  const core::ImageData& shown_radiance() const { return shown_; }
+  // Writes the tone-mapped image shown (without the panels) as a PNG (the key F12 or P, into the
   // working directory as nephele_view_NNNN.png); returns the path.
   std::filesystem::path screenshot(const std::filesystem::path& directory = ".");
 
@@ -91,6 +100,7 @@ class Viewer {
   std::size_t next_level_ = 0;   // refinement level rendered next
   int target_width_ = 0, target_height_ = 0;  // framebuffer size being refined
   render::RenderResult last_render_;
+  core::ImageData shown_;
   long renders_ = 0, frames_ = 0;
   double frame_ms_ = 0;
   bool panels_ = true, capture_ = false, dragging_ = false;
