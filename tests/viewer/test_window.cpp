@@ -215,3 +215,28 @@ TEST_CASE("without xvfb-run the window tests are skipped", "[no-xvfb]") {
 }
 
 }  // namespace nephele
+
+namespace nephele {
+
+TEST_CASE("nephele view COVER_DIR --record DIR --frames N shows a generated cover and writes N frames", "[window]") {
+  test::TemporaryDirectory out(true);
+  const auto cover = out.path / "cover";
+  REQUIRE(test::run("generate --size 16 --iterations 2 --files faces --quiet --out " + cover.string()).exit_code == 0);
+  const auto frames = out.path / "frames";
+  const auto r = test::run("view " + cover.string() + " --size 48x27 --frames 3 --view-steps 4 --light-steps 1 --no-cache --record " +
+                           frames.string());
+  INFO(r.output);
+  REQUIRE(r.exit_code == 0);
+  for (const char* name : {"frame_000000.png", "frame_000001.png", "frame_000002.png"}) {
+    const core::ImageData image = io::read_image(frames / name);
+    CHECK(image.width == 48);
+    CHECK(image.height == 27);
+  }
+  CHECK_FALSE(std::filesystem::exists(frames / "frame_000003.png"));
+  // A directory that is not a cover is bad input naming COVER_DIR.
+  const auto bad = test::run("view " + out.path.string() + " --size 48x27 --frames 1 --no-cache");
+  CHECK(bad.exit_code == 2);
+  CHECK_THAT(bad.output, Catch::Contains("COVER_DIR"));
+}
+
+}  // namespace nephele

@@ -110,6 +110,8 @@ const std::vector<RefinementLevel>& refinement_levels() {
 
 Viewer::Viewer(const ViewerOptions& options) : options_(options) {
   state_ = state_of_scene(options.scene);
+  // Files first (a COVER_DIR that is not a cover is bad input, with or without a display).
+  source_ = make_view_source(options.cover_dir, options.cache_directory);
   window_ = std::make_unique<Window>(options.scene.width, options.scene.height, "nephele view", options.visible);
   GLFWwindow* handle = window_->handle();
   glfwSetWindowUserPointer(handle, this);
@@ -118,7 +120,6 @@ Viewer::Viewer(const ViewerOptions& options) : options_(options) {
   glfwSetCursorPosCallback(handle, on_cursor);
   glfwSetScrollCallback(handle, on_scroll);
   glfwSetCharCallback(handle, ImGui_ImplGlfw_CharCallback);
-  source_ = make_view_source(options.cover_dir, options.cache_directory);
 
   IMGUI_CHECKVERSION();
   ImGui::CreateContext();
