@@ -57,6 +57,9 @@ PreparedScene prepare_scene(const regional::Scene& scene, const std::vector<regi
 RenderSettings render_settings(const regional::Scene& scene);
 SceneRender render_prepared(const PreparedScene& prepared, const regional::Scene& scene,
                             const NoiseVolume* noise = nullptr);
+// The same with settings of its own (the viewer's bands of rows).
+SceneRender render_prepared(const PreparedScene& prepared, const RenderSettings& settings,
+                            const NoiseVolume* noise = nullptr);
 SceneRender render_scene(const regional::Scene& scene, const std::vector<regional::WeatherSeries>& stations);
 
 }  // namespace nephele::render

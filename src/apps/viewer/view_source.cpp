@@ -59,9 +59,7 @@ render::RenderResult GroundSource::render(const ViewState& state, int width, int
     setup_ms.emplace_back("noise_volume", gpu::time_pass([&] {
                             noise_ = io::cached_noise_volume(settings.noise_size, settings.seed, cache_directory_);
                           }));
-  render::SceneRender out = prepared.partial;
-  out.render = render::render_clouds(out.camera, out.layers, prepared.field, prepared.time, settings, prepared.wind,
-                                     prepared.wind_speed, noise_.get());
+  render::SceneRender out = render::render_prepared(prepared, settings, noise_.get());
   out.render.timings_ms.insert(out.render.timings_ms.begin(), setup_ms.begin(), setup_ms.end());
   return out.render;
 }
