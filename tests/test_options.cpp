@@ -123,7 +123,8 @@ TEST_CASE("help lists every option with its range, unit and default from the tab
 TEST_CASE("the parameter table: defaults inside their ranges, one key per command, options from keys", "[params]") {
   const std::vector<unsigned> uses = {params::generate, params::bench_cover, params::report, params::render,
                                       params::scene_file, params::bench_render, params::noise, params::bench_noise,
-                                      params::model, params::model_file, params::bench_model, params::export_cover};
+                                      params::model, params::model_file, params::bench_model, params::export_cover,
+                                      params::viewer, params::bench_view};
   for (const params::Parameter* p : params::all()) {
     INFO(p->key);
     CHECK_FALSE(p->help.empty());
@@ -148,7 +149,8 @@ TEST_CASE("every command's --help lists each option the table gives that command
       {{"report"}, params::report},            {{"render"}, params::render},
       {{"bench", "render"}, params::bench_render}, {{"noise"}, params::noise},
       {{"bench", "noise"}, params::bench_noise}, {{"model"}, params::model},
-      {{"bench", "model"}, params::bench_model}, {{"export"}, params::export_cover}};
+      {{"bench", "model"}, params::bench_model}, {{"export"}, params::export_cover},
+      {{"view"}, params::viewer}, {{"bench", "view"}, params::bench_view}};
   for (const auto& [words, use] : commands) {
     std::string arguments;
     for (const auto& w : words) arguments += w + " ";

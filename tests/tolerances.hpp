@@ -74,4 +74,17 @@ constexpr double kAdaptiveErrorFactor = 5.0;
 constexpr double kFractionSum = 1.0e-12;
 static_assert(kFractionSum >= (6 * 32 * 32 - 1) * kDoubleUlp);
 
+// A window's 8-bit framebuffer against the same tone-mapped float image: storing v rounds
+// 255 v to an integer (half a step, 0.5 / 255), and OpenGL leaves the direction of that rounding
+// to the implementation (a further half step); bilinear sampling at texel centres adds a few
+// float ulps, far below. One 8-bit step in all.
+constexpr double kEightBitDisplay = 1.0 / 255.0;
+
+// A flight step of d metres against the straight line between the camera's positions (ECEF):
+// the move goes along the tangent plane, d^2 / 2R (1 mm at 100 m) above the camera's height,
+// and back down along the normal to that height, which shortens the line by about
+// d^3 / (2 R^2), 1e-8 m at 100 m; 1e-6 m is a hundred times that, and far above the double
+// rounding of GeographicLib's conversions (about 1e-9 m at the Earth's radius).
+constexpr double kFlightStepMetres = 1.0e-6;
+
 }  // namespace nephele::test

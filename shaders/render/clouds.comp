@@ -17,9 +17,11 @@ layout(std430, binding = 3) buffer LoopGuard { uint loop_limited_pixels; };
 #include "../lib/cloud_march.glsl"
 
 uniform MarchParams u_march;
+// The first row of the band being marched (RenderSettings::first_row; 0 for a whole image).
+uniform int u_first_row;
 
 void main() {
-  ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
+  ivec2 pixel = ivec2(gl_GlobalInvocationID.xy) + ivec2(0, u_first_row);
   ivec2 size = imageSize(radiance_image);
   if (pixel.x >= size.x || pixel.y >= size.y) return;
   int loop_count = 0;

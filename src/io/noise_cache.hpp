@@ -6,9 +6,14 @@
 // never an error, and a cache that cannot be written is skipped. docs/performance.md.
 #include <cstdint>
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
+
+namespace nephele::render {
+class NoiseVolume;
+}
 
 namespace nephele::io {
 
@@ -37,5 +42,12 @@ class FloatCache {
   std::filesystem::path directory_;
   std::uintmax_t cap_bytes_;
 };
+
+// The ground renderer's noise volume of `size` and `seed` (current GL context): from the cache in
+// `directory` when it holds one (the same bits as making it), else made and stored there. An
+// empty directory means no cache. `note` (if given) says which happened and how long it took.
+std::unique_ptr<render::NoiseVolume> cached_noise_volume(int size, std::uint32_t seed,
+                                                         const std::filesystem::path& directory,
+                                                         std::string* note = nullptr);
 
 }  // namespace nephele::io

@@ -39,6 +39,18 @@ std::string Parameter::range_text() const {
   return "";
 }
 
+std::vector<std::string> Parameter::words() const {
+  if (type != Type::text || allowed.empty()) return {};
+  for (char c : allowed)
+    if (!((c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '-' || c == '|')) return {};
+  std::vector<std::string> out(1);
+  for (char c : allowed) {
+    if (c == '|') out.emplace_back();
+    else out.back() += c;
+  }
+  return out;
+}
+
 std::string Parameter::default_display() const {
   if (!default_text.empty()) return std::string(default_text);
   if (type == Type::integer || type == Type::real) return number_text(default_number);

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace nephele::params {
 
@@ -26,6 +27,8 @@ enum Use : unsigned {
   model_file = 1u << 10,    // a key of a cloud model file (scenes/*.cloud.json)
   bench_model = 1u << 11,
   export_cover = 1u << 12,  // nephele export
+  viewer = 1u << 13,        // nephele view: its options and its window's panels (src/apps/viewer)
+  bench_view = 1u << 14,    // nephele bench view
 };
 
 struct Parameter {
@@ -43,6 +46,9 @@ struct Parameter {
   std::string option() const;        // "--view-steps" for key "view_steps"
   std::string range_text() const;    // "1 to 4096", "euler, heun, rk4", "WIDTHxHEIGHT"
   std::string default_display() const;  // "48", "0.006", "gurten"; "" when there is none
+  // Text: the allowed words when `allowed` lists lower-case words ("euler|heun"), else empty
+  // (a form such as WIDTHxHEIGHT, or free text).
+  std::vector<std::string> words() const;
   bool used_by(unsigned use) const { return (uses & use) != 0; }
   constexpr std::string_view sidecar_path() const { return sidecar.empty() ? key : sidecar; }
   constexpr int default_int() const { return static_cast<int>(default_number); }

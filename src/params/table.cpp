@@ -30,6 +30,7 @@ const std::vector<const Parameter*>& all() {
       &run::bench_render_repeat, &run::bench_render_no_sweep, &run::report_quick, &run::report_sizes,
       &run::report_steps, &run::report_tolerances, &run::report_samples, &run::report_repeat,
       &run::bench_model_repeat, &run::report_render_size, &run::report_no_render, &run::report_budget_ms,
+      &run::view_record, &run::view_frames, &run::bench_view_size, &run::bench_view_repeat,
   };
   return parameters;
 }

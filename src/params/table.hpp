@@ -14,9 +14,9 @@ constexpr unsigned cover_commands = generate | bench_cover | report | cover_side
 namespace cover {
 inline constexpr Parameter size = integer("size", 512, 1, 16384, "texels", "texels per cube face edge", generate | cover_sidecar);
 inline constexpr Parameter seed = integer("seed", 1, 0, 4294967295.0, "", "seed of all noise layers", cover_commands);
-inline constexpr Parameter iterations = integer("iterations", 50, 0, 100000, "steps", "warp steps K", cover_commands);
-inline constexpr Parameter step = real("step", 0.006, 0.0, 10.0, "radians", "warp step size h (flow time T = K h)", cover_commands);
-inline constexpr Parameter coverage = real("coverage", 0.67, 0.0, 1.0, "fraction", "cloudy fraction of the sphere, by solid angle", cover_commands);
+inline constexpr Parameter iterations = integer("iterations", 50, 0, 100000, "steps", "warp steps K", cover_commands | viewer);
+inline constexpr Parameter step = real("step", 0.006, 0.0, 10.0, "radians", "warp step size h (flow time T = K h)", cover_commands | viewer);
+inline constexpr Parameter coverage = real("coverage", 0.67, 0.0, 1.0, "fraction", "cloudy fraction of the sphere, by solid angle", cover_commands | viewer);
 inline constexpr Parameter curl_frequency = real("curl_frequency", 2.0, 0.01, 4096.0, "cells per radius", "Worley cells per unit radius of the flow's potential", cover_commands, "potential.frequency");
 inline constexpr Parameter curl_octaves = integer("curl_octaves", 3, 0, 16, "", "octaves of the potential", cover_commands, "potential.octaves");
 inline constexpr Parameter curl_lacunarity = real("curl_lacunarity", 2.0, 1.0, 8.0, "", "frequency ratio between octaves", cover_commands, "potential.lacunarity");
@@ -28,7 +28,7 @@ inline constexpr Parameter density_frequency = real("density_frequency", 3.0, 0.
 inline constexpr Parameter density_octaves = integer("density_octaves", 6, 0, 16, "", "octaves of the cloud density", cover_commands, "density.octaves");
 inline constexpr Parameter density_lacunarity = real("density_lacunarity", 2.0, 1.0, 8.0, "", "frequency ratio between octaves", cover_commands, "density.lacunarity");
 inline constexpr Parameter density_gain = real("density_gain", 0.5, 0.0, 1.0, "", "amplitude ratio between octaves", cover_commands, "density.gain");
-inline constexpr Parameter integrator = text("integrator", "euler", "euler|heun|rk4|geodesic|adaptive", "warp stepping rule", generate | cover_sidecar);
+inline constexpr Parameter integrator = text("integrator", "euler", "euler|heun|rk4|geodesic|adaptive", "warp stepping rule", generate | cover_sidecar | viewer);
 inline constexpr Parameter curl_mode = text("curl_mode", "sampled", "sampled|procedural", "velocity of the warp: sampled (bilinear from the curl cube map) or procedural (exact point)", generate | cover_sidecar);
 inline constexpr Parameter tolerance = real("tolerance", 1e-4, 1e-7, 1.0, "radians", "adaptive: largest error estimate per step (the flow time is iterations * step)", generate | cover_sidecar);
 inline constexpr Parameter max_substeps = integer("max_substeps", 4096, 1, 1000000, "steps", "adaptive: attempted steps per texel at most", generate | cover_sidecar);
@@ -37,27 +37,28 @@ inline constexpr Parameter noise_offset = real("noise_offset", 0.0, -1e9, 1e9, "
 
 namespace scene {
 constexpr unsigned render_and_scene = render | scene_file;
-inline constexpr Parameter view = text("view", "gurten", "gurten|bantiger|orbit", "viewpoint: gurten (towards Solothurn), bantiger (towards Fribourg), or orbit (the planet from --lat, --lon, --altitude-km; docs/orbit_view.md)", render_and_scene);
+constexpr unsigned render_scene_view = render_and_scene | viewer;  // also options and panels of nephele view
+inline constexpr Parameter view = text("view", "gurten", "gurten|bantiger|orbit", "viewpoint: gurten (towards Solothurn), bantiger (towards Fribourg), or orbit (the planet from --lat, --lon, --altitude-km; docs/orbit_view.md)", render_scene_view);
 inline constexpr Parameter at = text("at", "", "LAT,LON,HEIGHT", "camera position (WGS84 degrees, degrees, metres above the ellipsoid) instead of a view", render);
 inline constexpr Parameter latitude = real("latitude", 0, -90, 90, "degrees", "camera latitude (scene key at.latitude)", scene_file);
 inline constexpr Parameter longitude = real("longitude", 0, -180, 180, "degrees", "camera longitude (scene key at.longitude)", scene_file);
 inline constexpr Parameter height = real("height", 0, -400, 20000, "metres", "camera height above the ellipsoid (scene key at.height)", scene_file);
-inline constexpr Parameter heading = Parameter{"heading", Type::real, "degrees", 0, "towards the view's city", -360, 360, "", "view heading, clockwise from north", render_and_scene};
-inline constexpr Parameter pitch = real("pitch", 5, -90, 90, "degrees", "view pitch above the horizon", render_and_scene);
-inline constexpr Parameter fov = real("fov", 70, 1, 179, "degrees", "horizontal field of view", render_and_scene);
-inline constexpr Parameter time = text("time", "2026-06-21T16:00Z", "YYYY-MM-DDTHH:MM[:SS]Z", "date and time, ISO 8601 UTC", render_and_scene);
-inline constexpr Parameter size = text("size", "1280x720", "WIDTHxHEIGHT", "image size (panorama: 2048x1024 unless given)", render_and_scene);
+inline constexpr Parameter heading = Parameter{"heading", Type::real, "degrees", 0, "towards the view's city", -360, 360, "", "view heading, clockwise from north", render_scene_view};
+inline constexpr Parameter pitch = real("pitch", 5, -90, 90, "degrees", "view pitch above the horizon", render_scene_view);
+inline constexpr Parameter fov = real("fov", 70, 1, 179, "degrees", "horizontal field of view", render_scene_view);
+inline constexpr Parameter time = text("time", "2026-06-21T16:00Z", "YYYY-MM-DDTHH:MM[:SS]Z", "date and time, ISO 8601 UTC", render_scene_view);
+inline constexpr Parameter size = text("size", "1280x720", "WIDTHxHEIGHT", "image size (panorama: 2048x1024 unless given)", render_scene_view);
 inline constexpr Parameter panorama = flag("panorama", "render the full 360 x 180 view sphere (equirectangular)", render_and_scene);
 inline constexpr Parameter weather = list("weather", "FILE", "Open-Meteo or meteoblue JSON of a station", render_and_scene);
-inline constexpr Parameter view_steps = integer("view_steps", 48, 1, 4096, "samples", "samples per layer along each view ray", render_and_scene);
-inline constexpr Parameter light_steps = integer("light_steps", 12, 0, 256, "samples", "samples towards the sun per cloud sample", render_and_scene);
+inline constexpr Parameter view_steps = integer("view_steps", 48, 1, 4096, "samples", "samples per layer along each view ray", render_scene_view);
+inline constexpr Parameter light_steps = integer("light_steps", 12, 0, 256, "samples", "samples towards the sun per cloud sample", render_scene_view);
 inline constexpr Parameter sky_steps = integer("sky_steps", 16, 1, 1024, "samples", "samples of the clear-sky integral", scene_file);
-inline constexpr Parameter exposure = real("exposure", 4.0, 1e-6, 1e6, "", "exposure before tone mapping (PNG)", render_and_scene);
-inline constexpr Parameter seed = integer("seed", 1, 0, 4294967295.0, "", "seed of the global cover and the cloud noise", render_and_scene);
-inline constexpr Parameter cover_size = integer("cover_size", 128, 4, 4096, "texels", "global cover size per face when no weather is given", scene_file);
+inline constexpr Parameter exposure = real("exposure", 4.0, 1e-6, 1e6, "", "exposure before tone mapping (PNG)", render_scene_view);
+inline constexpr Parameter seed = integer("seed", 1, 0, 4294967295.0, "", "seed of the global cover and the cloud noise", render_scene_view);
+inline constexpr Parameter cover_size = integer("cover_size", 128, 4, 4096, "texels", "global cover size per face when no weather is given", scene_file | viewer);
 inline constexpr Parameter outputs = list("outputs", "NAME.png|NAME.exr", "file names written into --out", scene_file);
 inline constexpr Parameter description = text("description", "", "", "free text for people", scene_file);
-inline constexpr Parameter scene_path = text("scene", "", "FILE", "scene file (JSON, see scenes/); options override it", render);
+inline constexpr Parameter scene_path = text("scene", "", "FILE", "scene file (JSON, see scenes/); options override it", render | viewer);
 inline constexpr Parameter out = text("out", "", "FILE.png|FILE.exr|DIR", "output file (.png or .exr), or a directory with --scene", render);
 // The orbit view (render --view orbit; docs/orbit_view.md).
 inline constexpr Parameter lat = real("lat", 46.9, -90, 90, "degrees", "orbit view: latitude below the camera", render);
@@ -136,7 +137,7 @@ inline constexpr Parameter export_format = text("format", "r16f", "r16f|r32f|r8"
 inline constexpr Parameter export_name = text("name", "nephele_clouds", "NAME", "add-on folder and file name of the celestia and eve presets (letters, digits, _ and -)", export_cover);
 inline constexpr Parameter report_out = text("out", "report", "DIR", "output directory (created if missing)", report);
 inline constexpr Parameter quiet = flag("quiet", "no progress reports on stderr (they appear for work of more than a second)", generate | report | render | noise | model);
-inline constexpr Parameter no_cache = flag("no_cache", "neither read nor write the noise volume cache ($XDG_CACHE_HOME/nephele, else ~/.cache/nephele)", render);
+inline constexpr Parameter no_cache = flag("no_cache", "neither read nor write the noise volume cache ($XDG_CACHE_HOME/nephele, else ~/.cache/nephele)", render | viewer);
 inline constexpr Parameter verbose = flag("verbose", "print the renderer, the passes that ran and their times", generate | render | noise | model);
 inline constexpr Parameter bench_cover_sizes = text("sizes", "256,512,1024", "N,N,... (1 to 16384)", "comma-separated cube face sizes", bench_cover);
 inline constexpr Parameter bench_cover_repeat = integer("repeat", 3, 1, 100, "runs", "runs per size; the median is printed", bench_cover);
@@ -155,6 +156,10 @@ inline constexpr Parameter report_samples = integer("samples", 0, 0, 64, "", "sa
 inline constexpr Parameter report_repeat = integer("repeat", 0, 0, 20, "runs", "timed runs per configuration, the fastest counts (0: 3, quick 1)", report);
 inline constexpr Parameter report_render_size = text("render_size", "", "WIDTHxHEIGHT", "frame size of the render sweep (default 160x90; quick 32x18)", report);
 inline constexpr Parameter report_no_render = flag("no_render", "skip the render sweep", report);
+inline constexpr Parameter view_record = text("record", "", "DIR", "write every displayed frame as DIR/frame_NNNNNN.png (created if missing)", viewer);
+inline constexpr Parameter view_frames = integer("frames", 0, 0, 1e9, "frames", "close the window after this many frames (0: when it is closed); for scripts", viewer);
+inline constexpr Parameter bench_view_size = text("size", "640x360", "WIDTHxHEIGHT", "window size (the full-size render; the preview is a quarter of it each way)", bench_view);
+inline constexpr Parameter bench_view_repeat = integer("repeat", 3, 1, 100, "changes", "view changes timed, each refined to full size; the median is printed", bench_view);
 inline constexpr Parameter report_budget_ms = real("budget_ms", 0.0, 0.0, 1e7, "ms", "skip runs predicted to take longer (0: 20000, quick 2000)", report);
 }  // namespace run
 

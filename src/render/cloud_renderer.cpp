@@ -259,6 +259,10 @@ RenderResult render_clouds(const Camera& camera, const std::vector<regional::Clo
 
   result.sun_direction = sun_direction_enu(unix_seconds, camera.latitude_deg, camera.longitude_deg, &result.sun_elevation_deg);
 
+  const int rows = settings.row_count > 0 ? settings.row_count : camera.height;
+  if (settings.first_row < 0 || rows > camera.height - settings.first_row)
+    throw std::logic_error("render_clouds: rows " + std::to_string(settings.first_row) + " + " + std::to_string(rows) +
+                           " outside an image of " + std::to_string(camera.height));
   gpu::Texture image = gpu::Texture::plane(camera.width, camera.height, GL_RGBA32F);
   timed("clouds", [&] {
     gpu::ComputeProgram program("render/clouds.comp");
@@ -272,7 +276,8 @@ RenderResult render_clouds(const Camera& camera, const std::vector<regional::Clo
     glCreateBuffers(1, &guard);
     glNamedBufferStorage(guard, sizeof zero, &zero, GL_MAP_READ_BIT);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, guard);
-    program.dispatch_covering(camera.width, camera.height, 1);
+    program.set("u_first_row", settings.first_row);
+    program.dispatch_covering(camera.width, rows, 1);
     gpu::image_barrier();
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
     glGetNamedBufferSubData(guard, 0, sizeof result.loop_limited_pixels, &result.loop_limited_pixels);

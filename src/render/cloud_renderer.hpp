@@ -29,6 +29,10 @@ struct RenderSettings {
   double max_distance_m = 150000;
   std::uint32_t seed = 1;
   int noise_size = 64;      // texels per side of the noise volume
+  // Only rows [first_row, first_row + row_count) of the image are marched (row_count 0: every
+  // row); the others are left undefined. Each pixel is the same as in a whole render: the
+  // viewer refines a frame in bands of rows across frames.
+  int first_row = 0, row_count = 0;
 };
 
 struct RenderResult {

@@ -21,7 +21,29 @@ constexpr int field_size = 64;
 constexpr double field_extent_m = 160000.0;
 constexpr double look_ahead_hours = 168.0;  // the original system looked up to 7 days ahead
 
-Camera camera_of(const regional::Scene& scene) {
+}  // namespace
+
+GlobalCoverFaces make_global_cover(const cover::CoverParameters& parameters) {
+  cover::GlobalCover cover(parameters);
+  cover.run();
+  return {parameters.size, cover.cover_field().read()};
+}
+
+cover::CoverParameters scene_cover_parameters(const regional::Scene& scene) {
+  cover::CoverParameters parameters;
+  parameters.size = scene.cover_size;
+  parameters.seed = scene.seed;
+  return parameters;
+}
+
+PreparedScene prepare_scene(const regional::Scene& scene, const std::vector<regional::WeatherSeries>& weather) {
+  if (!weather.empty()) return prepare_scene(scene, weather, GlobalCoverFaces{});
+  PreparedScene prepared = prepare_scene(scene, weather, make_global_cover(scene_cover_parameters(scene)));
+  prepared.partial.passes.insert(prepared.partial.passes.begin(), "global_cover");
+  return prepared;
+}
+
+Camera scene_camera(const regional::Scene& scene) {
   Camera c;
   if (scene.latitude_deg) {
     c.latitude_deg = *scene.latitude_deg;
@@ -44,15 +66,14 @@ Camera camera_of(const regional::Scene& scene) {
   return c;
 }
 
-}  // namespace
-
-PreparedScene prepare_scene(const regional::Scene& scene, const std::vector<regional::WeatherSeries>& weather) {
+PreparedScene prepare_scene(const regional::Scene& scene, const std::vector<regional::WeatherSeries>& weather,
+                            const GlobalCoverFaces& cover) {
   if (weather.size() != scene.weather.size())
     throw std::logic_error("prepare_scene: " + std::to_string(weather.size()) + " weather series for " +
                            std::to_string(scene.weather.size()) + " files");
   PreparedScene prepared;
   SceneRender& out = prepared.partial;
-  out.camera = camera_of(scene);
+  out.camera = scene_camera(scene);
   const double time = prepared.time = core::parse_utc_time(scene.time);
   const GeographicLib::LocalCartesian frame(out.camera.latitude_deg, out.camera.longitude_deg, 0.0);
   regional::WeatherField& field = prepared.field;
@@ -89,14 +110,10 @@ PreparedScene prepare_scene(const regional::Scene& scene, const std::vector<regi
       wind_speed = now[nearest].wind_speed;
     }
   } else {
-    cover::CoverParameters parameters;
-    parameters.size = scene.cover_size;
-    parameters.seed = scene.seed;
-    cover::GlobalCover cover(parameters);
-    cover.run();
-    out.passes.push_back("global_cover");
-    field = regional::field_from_cover(cover.cover_field().read(), parameters.size, scene.seed, frame, field_size,
-                                       field_extent_m);
+    if (cover.texels.size() != std::size_t(6) * cover.size * cover.size || cover.size <= 0)
+      throw std::logic_error("prepare_scene: a global cover of " + std::to_string(cover.texels.size()) +
+                             " texels is not six faces of " + std::to_string(cover.size) + "^2");
+    field = regional::field_from_cover(cover.texels, cover.size, scene.seed, frame, field_size, field_extent_m);
     out.passes.push_back("weather_field (global cover)");
     out.weather_source = "global cover";
     out.weather_at_camera = regional::sample_from_field(field, time);
@@ -116,9 +133,13 @@ RenderSettings render_settings(const regional::Scene& scene) {
 }
 
 SceneRender render_prepared(const PreparedScene& prepared, const regional::Scene& scene, const NoiseVolume* noise) {
+  return render_prepared(prepared, render_settings(scene), noise);
+}
+
+SceneRender render_prepared(const PreparedScene& prepared, const RenderSettings& settings, const NoiseVolume* noise) {
   SceneRender out = prepared.partial;
-  out.render = render_clouds(out.camera, out.layers, prepared.field, prepared.time, render_settings(scene),
-                             prepared.wind, prepared.wind_speed, noise);
+  out.render = render_clouds(out.camera, out.layers, prepared.field, prepared.time, settings, prepared.wind,
+                             prepared.wind_speed, noise);
   out.passes.insert(out.passes.end(), out.render.passes.begin(), out.render.passes.end());
   return out;
 }

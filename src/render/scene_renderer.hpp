@@ -3,6 +3,7 @@
 #include <string>
 #include <vector>
 
+#include "cover/cover_parameters.hpp"
 #include "regional/cloud_layers.hpp"
 #include "regional/scene.hpp"
 #include "render/cloud_renderer.hpp"
@@ -28,14 +29,36 @@ struct PreparedScene {
   double wind_speed = 0.0;    // m/s
 };
 
+// The camera of a scene: its position (`at`, else the viewpoint's summit with the eye 2 m above
+// it), heading (given, else the viewpoint's), pitch, field of view and size.
+Camera scene_camera(const regional::Scene& scene);
+
+// The global cover a scene without weather reads: six faces in GL order, size^2 texels each,
+// rows from t = 0 (the layout of cover_field() and of io::read_cover_faces).
+struct GlobalCoverFaces {
+  int size = 0;
+  std::vector<float> texels;
+};
+// Runs the cover passes with `parameters` and reads the cover back (current GL context).
+GlobalCoverFaces make_global_cover(const cover::CoverParameters& parameters);
+// The cover a scene makes when it names no weather: its cover_size and seed, the rest defaults.
+cover::CoverParameters scene_cover_parameters(const regional::Scene& scene);
+
 // Need a current OpenGL 4.5 context. Throw regional::WeatherError / SceneError for bad input.
 // `stations`: the weather of the scene's files (io::read_scene_weather), one per file in its
 // order; empty when the scene names none (the global cover is then the weather).
 PreparedScene prepare_scene(const regional::Scene& scene, const std::vector<regional::WeatherSeries>& stations);
+// The same with a cover made before (the viewer keeps one while the camera moves); it is read
+// only when `stations` is empty. The seed of the layers' rotations is the scene's.
+PreparedScene prepare_scene(const regional::Scene& scene, const std::vector<regional::WeatherSeries>& stations,
+                            const GlobalCoverFaces& cover);
 // The march of a prepared scene with the scene's step counts and seed (its camera and weather
 // come from `prepared`); `noise` as in render_clouds.
 RenderSettings render_settings(const regional::Scene& scene);
 SceneRender render_prepared(const PreparedScene& prepared, const regional::Scene& scene,
+                            const NoiseVolume* noise = nullptr);
+// The same with settings of its own (the viewer's bands of rows).
+SceneRender render_prepared(const PreparedScene& prepared, const RenderSettings& settings,
                             const NoiseVolume* noise = nullptr);
 SceneRender render_scene(const regional::Scene& scene, const std::vector<regional::WeatherSeries>& stations);
 

@@ -65,7 +65,8 @@ int run_bench(const std::vector<std::string>& arguments) {
                  "  render  seconds per frame of the default scene, image error against steps\n"
                  "  noise   million points per second of 3D Worley and Perlin, seconds of the noise presets\n"
                  "  model   milliseconds per cloud model volume (1 to 50 primitives), whole and after one edit\n"
-                 "  orbit   milliseconds per frame of the orbit view at 640x360 and 1280x720\n";
+                 "  orbit   milliseconds per frame of the orbit view at 640x360 and 1280x720\n"
+                 "  view    milliseconds per pass of nephele view's preview and refinement frames (needs a display)\n";
     return arguments.empty() ? exit_usage : exit_ok;
   }
   const std::vector<std::string> rest(arguments.begin() + 1, arguments.end());
@@ -74,7 +75,8 @@ int run_bench(const std::vector<std::string>& arguments) {
   if (arguments[0] == "noise") return bench_noise(rest);
   if (arguments[0] == "model") return bench_model(rest);
   if (arguments[0] == "orbit") return bench_orbit(rest);
-  throw UsageError("nephele bench: unknown benchmark '" + arguments[0] + "' (allowed: cover, render, noise, model, orbit)");
+  if (arguments[0] == "view") return bench_view(rest);
+  throw UsageError("nephele bench: unknown benchmark '" + arguments[0] + "' (allowed: cover, render, noise, model, orbit, view)");
 }
 
 }  // namespace nephele::cli

@@ -32,11 +32,7 @@ int run_export(const std::vector<std::string>& arguments) {
   options.bind(run::export_name, &name);
   // COVER_DIR comes first; the rest are options.
   std::vector<std::string> rest = arguments;
-  std::string cover_dir;
-  if (!rest.empty() && !rest.front().empty() && rest.front()[0] != '-') {
-    cover_dir = rest.front();
-    rest.erase(rest.begin());
-  }
+  const std::string cover_dir = take_leading_operand(rest);
   if (!options.parse(rest)) {
     std::cout << options.help();
     return exit_ok;

@@ -19,6 +19,7 @@ const char* const usage =
     "  noise      tileable 3D noise textures (Worley, Perlin, Perlin-Worley, fBm)\n"
     "  model      one cloud from implicit primitives: density volume (raw, EXR atlas, OpenVDB)\n"
     "  export     a generated cover as one target's files (equirect, gl-faces, ktx2, dds, celestia, exr-cube)\n"
+    "  view       a window on the clouds, with panels, flight and recording (needs a display)\n"
     "  bench      benchmarks that print timings (nephele bench cover)\n"
     "  report     error of the warp's integrators against their run time (work-precision)\n\n"
     "nephele COMMAND --help describes each command's options and their ranges.\n"
@@ -52,7 +53,8 @@ int main(int argc, char** argv) {
     if (command == "render") return run_render(rest);
     if (command == "model") return run_model(rest);
     if (command == "export") return run_export(rest);
-    throw UsageError("unknown command '" + command + "' (allowed: generate, render, noise, model, export, bench, report)");
+    if (command == "view") return run_view(rest);
+    throw UsageError("unknown command '" + command + "' (allowed: generate, render, noise, model, export, view, bench, report)");
   } catch (const nephele::core::InputError& e) {
     std::cerr << "nephele: " << e.what() << "\n";
     return exit_usage;

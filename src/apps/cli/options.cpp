@@ -10,19 +10,16 @@
 #include "params/values.hpp"
 
 namespace nephele::cli {
-namespace {
-
-// Text parameters whose `allowed` lists lower-case words (not a form such as WIDTHxHEIGHT).
-bool lists_words(const params::Parameter& p) {
-  if (p.allowed.empty()) return false;
-  return std::all_of(p.allowed.begin(), p.allowed.end(),
-                     [](char c) { return (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '-' || c == '|'; });
-}
-
-}  // namespace
 
 double parse_number(const std::string& option, const std::string& text, double min, double max, bool integer_only) {
   return params::parse_number(option, text, min, max, integer_only);
+}
+
+std::string take_leading_operand(std::vector<std::string>& arguments) {
+  if (arguments.empty() || arguments.front().empty() || arguments.front()[0] == '-') return "";
+  std::string operand = arguments.front();
+  arguments.erase(arguments.begin());
+  return operand;
 }
 
 Options::Options(std::string command, std::string summary, unsigned use)
@@ -83,7 +80,7 @@ void Options::bind(const params::Parameter& p, double* target) {
 void Options::bind(const params::Parameter& p, std::string* target) {
   add(p, true, false, [&p, target](const std::string& text) {
     if (text.empty()) throw UsageError(p.option(), text, p.range_text(), "is empty");
-    if (lists_words(p)) params::check_word(p, text, p.option());
+    if (!p.words().empty()) params::check_word(p, text, p.option());
     *target = text;
   });
 }

@@ -57,6 +57,10 @@ class Options {
   std::vector<Entry> entries_;
 };
 
+// The operand before the options (export's and view's COVER_DIR): removed from `arguments` and
+// returned; "" when the first argument is an option or there is none.
+std::string take_leading_operand(std::vector<std::string>& arguments);
+
 // Strict number parsing for values outside the table (list items, channel settings): the whole
 // text, decimal, finite, within [min, max]; errors name the option.
 double parse_number(const std::string& option, const std::string& text, double min, double max,

@@ -6,12 +6,12 @@
 #include <sstream>
 
 #include "apps/cli/commands.hpp"
-#include "gpu/pass_timer.hpp"
 #include "io/noise_cache.hpp"
 #include "render/cloud_renderer.hpp"
 #include "cover/cover_limits.hpp"
 #include "render/render_limits.hpp"
 #include "apps/cli/options.hpp"
+#include "apps/cli/scene_options.hpp"
 #include "core/progress.hpp"
 #include "params/table.hpp"
 #include "params/values.hpp"
@@ -47,10 +47,8 @@ void parse_position(const std::string& text, regional::Scene& scene) {
 }  // namespace
 
 int run_render(const std::vector<std::string>& arguments) {
-  regional::Scene scene;
-  std::string view, at, size, time, scene_file, out;
-  double heading = 0, pitch = scene.pitch_deg, fov = scene.fov_deg, exposure = scene.exposure;
-  bool panorama = false, verbose = false, quiet = false;
+  std::string at, out;
+  bool panorama = false, verbose = false, quiet = false, no_cache = false;
   std::vector<std::string> weather;
   Options options("render",
                   "Renders the cloud layers, sky and ground from a viewpoint near the ground. Without\n"
@@ -58,25 +56,12 @@ int run_render(const std::vector<std::string>& arguments) {
                   "FILE.exr linear radiance; with --scene, --out is a directory for the scene's outputs.",
                   params::render);
   namespace s = params::scene;
-  options.bind(s::view, &view);
+  const SceneOptions scene_options(options);
   options.bind(s::at, &at);
-  options.bind(s::heading, &heading);
-  options.bind(s::pitch, &pitch);
-  options.bind(s::fov, &fov);
-  options.bind(s::time, &time);
-  options.bind(s::size, &size);
   options.bind(s::panorama, &panorama);
   options.bind(s::weather, &weather);
-  int view_steps = scene.view_steps, light_steps = scene.light_steps;
-  std::uint32_t seed = scene.seed;
-  options.bind(s::view_steps, &view_steps);
-  options.bind(s::light_steps, &light_steps);
-  options.bind(s::exposure, &exposure);
-  options.bind(s::seed, &seed);
-  options.bind(s::scene_path, &scene_file);
   options.bind(s::out, &out);
   options.bind(params::run::quiet, &quiet);
-  bool no_cache = false;
   options.bind(params::run::no_cache, &no_cache);
   options.bind(params::run::verbose, &verbose);
   OrbitOptions orbit;
@@ -85,18 +70,18 @@ int run_render(const std::vector<std::string>& arguments) {
     std::cout << options.help();
     return exit_ok;
   }
-  if (view == "orbit") {
-    orbit.time = time;
-    orbit.size = size;
+  if (scene_options.view() == "orbit") {
+    orbit.time = scene_options.time();
+    orbit.size = scene_options.size();
     orbit.out = out;
-    orbit.seed = seed;
+    orbit.seed = scene_options.seed();
     // Clouds seen from above reflect most of the sunlight: a lower default exposure than the ground views'.
-    orbit.exposure = options.given(s::exposure) ? exposure : orbit_default_exposure;
+    orbit.exposure = options.given(s::exposure) ? scene_options.exposure() : orbit_default_exposure;
     orbit.verbose = verbose;
     orbit.quiet = quiet;
-    if (options.given(s::heading)) orbit.heading = heading;
-    if (options.given(s::pitch)) orbit.pitch = pitch;
-    if (options.given(s::fov)) orbit.fov = fov;
+    if (options.given(s::heading)) orbit.heading = scene_options.heading();
+    if (options.given(s::pitch)) orbit.pitch = scene_options.pitch();
+    if (options.given(s::fov)) orbit.fov = scene_options.fov();
     for (const auto* ground_only : {&s::at, &s::scene_path, &s::panorama, &s::weather, &s::view_steps, &s::light_steps})
       if (options.given(*ground_only))
         throw UsageError(ground_only->option() + ": not taken by --view orbit (it belongs to the ground views)");
@@ -107,41 +92,18 @@ int run_render(const std::vector<std::string>& arguments) {
       throw UsageError(orbit_only->option() + ": only taken with --view orbit");
   // The keys set by options: their errors name the option the user typed, not a scene key.
   regional::KeyOptions typed;
-  if (!scene_file.empty()) scene = io::read_scene_file(scene_file);
-  if (!view.empty()) {
-    scene.view = view;
-    scene.latitude_deg.reset();
-    typed["view"] = "--view";
-  }
+  regional::Scene scene = scene_options.scene(typed);
+  const std::string& scene_file = scene_options.scene_file();
   if (!at.empty()) {
     parse_position(at, scene);
     typed["at"] = "--at";
   }
-  // Options override the scene file only where they were given.
-  if (options.given(s::heading)) {
-    scene.heading_deg = heading;
-    typed["heading"] = "--heading";
-  }
-  if (options.given(s::pitch)) scene.pitch_deg = pitch;
-  if (options.given(s::fov)) scene.fov_deg = fov;
-  if (options.given(s::exposure)) scene.exposure = exposure;
-  if (options.given(s::view_steps)) scene.view_steps = view_steps;
-  if (options.given(s::light_steps)) scene.light_steps = light_steps;
-  if (options.given(s::seed)) scene.seed = seed;
-  if (!time.empty()) {
-    scene.time = time;
-    typed["time"] = "--time";
-  }
   if (panorama) {
     scene.panorama = true;
-    if (size.empty()) {
+    if (!scene_options.size_given()) {
       scene.width = 2048, scene.height = 1024;
       typed["size"] = "--panorama";
     }
-  }
-  if (!size.empty()) {
-    regional::parse_size(size, scene.width, scene.height, "--size");
-    typed["size"] = "--size";
   }
   if (!weather.empty()) {
     scene.weather = weather;
@@ -193,22 +155,7 @@ int run_render(const std::vector<std::string>& arguments) {
   const std::filesystem::path cache_directory = no_cache ? std::filesystem::path() : io::default_cache_directory();
   if (!cache_directory.empty() && render::needs_noise_volume(prepared.partial.layers, prepared.field)) {
     const render::RenderSettings settings = render::render_settings(scene);
-    const io::FloatCache cache(cache_directory);
-    const std::string key = "noise_volume size " + std::to_string(settings.noise_size) + " seed " +
-                            std::to_string(settings.seed) + " " + render::NoiseVolume::recipe_key();
-    const std::size_t count = 2 * static_cast<std::size_t>(settings.noise_size) * settings.noise_size * settings.noise_size;
-    const double ms = gpu::time_pass([&] {
-      if (auto values = cache.load(key, count)) {
-        noise = std::make_unique<render::NoiseVolume>(settings.noise_size, settings.seed, *values);
-        noise_note = "noise volume: from the cache " + cache.file_of(key).string();
-      } else {
-        noise = std::make_unique<render::NoiseVolume>(settings.noise_size, settings.seed);
-        noise_note = cache.store(key, noise->level0()) ? "noise volume: made and cached in " + cache.file_of(key).string()
-                                                       : "noise volume: made (the cache " + cache_directory.string() +
-                                                             " could not be written)";
-      }
-    });
-    noise_note += " (" + std::to_string(ms) + " ms)";
+    noise = io::cached_noise_volume(settings.noise_size, settings.seed, cache_directory, &noise_note);
   }
   const render::SceneRender result = render::render_prepared(prepared, scene, noise.get());
   progress.update(2, "writing files");

@@ -1,0 +1,53 @@
+#pragma once
+// What the window shows, behind one interface: the ground renderer today; another renderer
+// (an orbit view) plugs in by implementing ViewSource and being chosen in make_view_source.
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "apps/viewer/view_state.hpp"
+#include "regional/weather.hpp"
+#include "render/cloud_renderer.hpp"
+#include "render/scene_renderer.hpp"
+
+namespace nephele::viewer {
+
+class ViewSource {
+ public:
+  virtual ~ViewSource() = default;
+  virtual std::string name() const = 0;
+  // The linear radiance of the view of `state` at width x height (passes and their times in
+  // the result). Runs in the current GL context (the window's). Slow work that a change of the
+  // state needs once (a cover, a noise volume) is kept for the next calls.
+  // `first_row` and `row_count` (0: every row) select a band of rows of the width x height
+  // image; the other rows of the result are undefined.
+  virtual render::RenderResult render(const ViewState& state, int width, int height, int first_row = 0,
+                                      int row_count = 0) = 0;
+};
+
+// The ground view (render::prepare_scene, render_prepared): the global cover from `cover_dir`
+// when given (a directory written by nephele generate), else made from the state's cover
+// parameters; station weather when the state names files. The noise volume comes from the
+// disk cache at `cache_directory` (empty: none).
+class GroundSource : public ViewSource {
+ public:
+  GroundSource(const std::filesystem::path& cover_dir, const std::filesystem::path& cache_directory);
+  std::string name() const override { return "ground"; }
+  render::RenderResult render(const ViewState& state, int width, int height, int first_row = 0,
+                              int row_count = 0) override;
+
+ private:
+  std::filesystem::path cache_directory_;
+  bool cover_from_files_ = false;
+  render::GlobalCoverFaces cover_;
+  std::string cover_key_;    // the parameters cover_ was made with
+  std::vector<regional::WeatherSeries> stations_;
+  std::vector<std::string> station_files_;
+  std::unique_ptr<render::NoiseVolume> noise_;
+};
+
+std::unique_ptr<ViewSource> make_view_source(const std::filesystem::path& cover_dir,
+                                             const std::filesystem::path& cache_directory);
+
+}  // namespace nephele::viewer

@@ -1,0 +1,118 @@
+#include "apps/viewer/view_state.hpp"
+
+#include <GeographicLib/LocalCartesian.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+#include "cover/integrators.hpp"
+#include "regional/sites.hpp"
+#include "render/scene_renderer.hpp"
+
+namespace nephele::viewer {
+
+std::vector<Binding> bindings(ViewState& s) {
+  namespace sc = params::scene;
+  namespace co = params::cover;
+  return {{&sc::view, &s.viewpoint},        {&sc::heading, &s.camera.heading_deg}, {&sc::pitch, &s.camera.pitch_deg},
+          {&sc::fov, &s.camera.fov_deg},    {&sc::time, &s.time},                  {&sc::view_steps, &s.view_steps},
+          {&sc::light_steps, &s.light_steps}, {&sc::exposure, &s.exposure},         {&sc::seed, &s.seed},
+          {&sc::cover_size, &s.cover_size}, {&co::coverage, &s.coverage},          {&co::iterations, &s.iterations},
+          {&co::step, &s.step},             {&co::integrator, &s.integrator}};
+}
+
+bool option_only(const params::Parameter& p) {
+  return &p == &params::scene::size || &p == &params::scene::scene_path || &p == &params::run::view_record ||
+         &p == &params::run::view_frames || &p == &params::run::no_cache;
+}
+
+void go_to_viewpoint(ViewState& state, const std::string& name) {
+  if (!regional::find_viewpoint(name)) return;
+  regional::Scene scene;
+  scene.view = name;
+  const render::Camera camera = render::scene_camera(scene);
+  state.viewpoint = name;
+  state.camera.latitude_deg = camera.latitude_deg;
+  state.camera.longitude_deg = camera.longitude_deg;
+  state.camera.height_m = camera.height_m;
+  state.camera.heading_deg = camera.heading_deg;
+}
+
+ViewState state_of_scene(const regional::Scene& scene) {
+  ViewState state;
+  state.viewpoint = scene.latitude_deg ? "" : scene.view;
+  state.camera = render::scene_camera(scene);
+  state.time = scene.time;
+  state.seed = scene.seed;
+  state.cover_size = scene.cover_size;
+  state.view_steps = scene.view_steps;
+  state.light_steps = scene.light_steps;
+  state.exposure = scene.exposure;
+  state.weather = scene.weather;
+  return state;
+}
+
+regional::Scene scene_of(const ViewState& state, int width, int height) {
+  regional::Scene scene;
+  scene.view.clear();
+  scene.latitude_deg = state.camera.latitude_deg;
+  scene.longitude_deg = state.camera.longitude_deg;
+  scene.height_m = state.camera.height_m;
+  scene.heading_deg = state.camera.heading_deg;
+  scene.pitch_deg = state.camera.pitch_deg;
+  scene.fov_deg = state.camera.fov_deg;
+  scene.time = state.time;
+  scene.width = width;
+  scene.height = height;
+  scene.weather = state.weather;
+  scene.seed = state.seed;
+  scene.view_steps = state.view_steps;
+  scene.light_steps = state.light_steps;
+  scene.exposure = state.exposure;
+  scene.cover_size = state.cover_size;
+  return scene;
+}
+
+cover::CoverParameters cover_of(const ViewState& state) {
+  cover::CoverParameters p;
+  p.size = state.cover_size;
+  p.seed = state.seed;
+  p.coverage = state.coverage;
+  p.iterations = state.iterations;
+  p.step = state.step;
+  p.integrator = cover::parse_integrator(state.integrator).value_or(p.integrator);
+  return p;
+}
+
+void drag(ViewState& state, double dx, double dy, int width) {
+  const double degrees_per_pixel = state.camera.fov_deg / std::max(width, 1);
+  const double heading = std::fmod(state.camera.heading_deg - dx * degrees_per_pixel, 360.0);
+  state.camera.heading_deg = heading < 0 ? heading + 360.0 : heading;
+  state.camera.pitch_deg = std::clamp(state.camera.pitch_deg + dy * degrees_per_pixel, params::scene::pitch.min,
+                                      params::scene::pitch.max);
+}
+
+void zoom(ViewState& state, double notches) {
+  state.camera.fov_deg = std::clamp(state.camera.fov_deg * std::pow(zoom_per_notch, notches), params::scene::fov.min,
+                                    params::scene::fov.max);
+}
+
+double flight_step_m(const ViewState& state) { return std::max(50.0, 0.1 * std::abs(state.camera.height_m)); }
+
+void fly(ViewState& state, double forward_m, double right_m, double up_m) {
+  render::Camera& c = state.camera;
+  const double heading = c.heading_deg * M_PI / 180.0;
+  // East and north of the forward and right directions (heading clockwise from north).
+  const double east = forward_m * std::sin(heading) + right_m * std::cos(heading);
+  const double north = forward_m * std::cos(heading) - right_m * std::sin(heading);
+  const GeographicLib::LocalCartesian frame(c.latitude_deg, c.longitude_deg, c.height_m);
+  double latitude = 0, longitude = 0, height = 0;
+  frame.Reverse(east, north, 0.0, latitude, longitude, height);
+  c.latitude_deg = std::clamp(latitude, params::scene::latitude.min, params::scene::latitude.max);
+  c.longitude_deg = longitude;
+  // Level flight: the height stays as it was, whatever the curvature under the move.
+  c.height_m = std::clamp(c.height_m + up_m, params::scene::height.min, params::scene::height.max);
+  state.viewpoint.clear();
+}
+
+}  // namespace nephele::viewer

@@ -1,0 +1,66 @@
+#pragma once
+// What the viewer shows: the camera (double precision on the CPU) and the values of the
+// parameters its panels offer, each field tied to its declaration in the parameter table
+// (src/params/table.hpp), so that panels, tooltips and ranges come from the table. No GL here:
+// the tests drive it directly.
+#include <cstdint>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "cover/cover_parameters.hpp"
+#include "params/table.hpp"
+#include "regional/scene.hpp"
+#include "render/cloud_renderer.hpp"
+
+namespace nephele::viewer {
+
+struct ViewState {
+  render::Camera camera;  // position, heading, pitch, fov; width and height are set per render
+  std::string viewpoint{params::scene::view.default_text};  // choosing one moves the camera there
+  std::string time{params::scene::time.default_text};
+  std::uint32_t seed = params::scene::seed.default_uint32();
+  int cover_size = params::scene::cover_size.default_int();
+  int view_steps = params::scene::view_steps.default_int();
+  int light_steps = params::scene::light_steps.default_int();
+  double exposure = params::scene::exposure.default_number;
+  float coverage = params::cover::coverage.default_float();
+  int iterations = params::cover::iterations.default_int();
+  float step = params::cover::step.default_float();
+  std::string integrator{params::cover::integrator.default_text};
+  std::vector<std::string> weather;  // station files of --scene (the global cover when empty)
+};
+
+// A field of ViewState and the parameter that declares it.
+using FieldPointer = std::variant<double*, float*, int*, std::uint32_t*, std::string*>;
+struct Binding {
+  const params::Parameter* parameter;
+  FieldPointer field;
+};
+// The fields of `state` that panels edit, by parameter.
+std::vector<Binding> bindings(ViewState& state);
+// The parameters of the table that nephele view takes only as options, not in a panel.
+bool option_only(const params::Parameter& p);
+
+// The state of a scene (flags or --scene FILE): its viewpoint or position, view, time, steps.
+ViewState state_of_scene(const regional::Scene& scene);
+// Moves the camera to a named viewpoint (eye 2 m above the summit, the view's heading).
+void go_to_viewpoint(ViewState& state, const std::string& name);
+// The scene and cover of a render of `state` at width x height.
+regional::Scene scene_of(const ViewState& state, int width, int height);
+cover::CoverParameters cover_of(const ViewState& state);
+
+// Inputs. A drag of (dx, dy) pixels in a window `width` pixels wide turns the view so that the
+// scene follows the cursor: heading -= dx fov / width, pitch += dy fov / width (pitch kept in
+// its table range, heading wrapped into [0, 360)).
+void drag(ViewState& state, double dx, double dy, int width);
+// Scroll: each notch up narrows the field of view by `zoom_per_notch` (within the table's range).
+constexpr double zoom_per_notch = 0.9;
+void zoom(ViewState& state, double notches);
+// Flight: metres along the heading (forward), to its right, and up; the position is moved on
+// the WGS84 ellipsoid in double (GeographicLib's local frame at the camera).
+void fly(ViewState& state, double forward_m, double right_m, double up_m);
+// The distance one key press flies: a tenth of the height above sea level, at least 50 m.
+double flight_step_m(const ViewState& state);
+
+}  // namespace nephele::viewer

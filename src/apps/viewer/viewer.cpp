@@ -1,0 +1,348 @@
+#include "apps/viewer/viewer.hpp"
+
+#include <epoxy/gl.h>
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <backends/imgui_impl_glfw.h>
+#include <backends/imgui_impl_opengl3.h>
+#include <imgui.h>
+
+#include <algorithm>
+#include <chrono>
+#include <iostream>
+#include <cstdio>
+#include <sstream>
+#include <stdexcept>
+
+#include "apps/viewer/panels.hpp"
+#include "io/atomic_output.hpp"
+#include "io/image_files.hpp"
+
+namespace nephele::viewer {
+namespace {
+
+// The display pass: the tone-mapped image stretched over the framebuffer (rows of the image
+// from the top, of GL textures from the bottom: the flip is here).
+const char* const vertex_shader = R"(#version 450 core
+void main() {
+  vec2 corner = vec2(float((gl_VertexID << 1) & 2), float(gl_VertexID & 2));
+  gl_Position = vec4(2.0 * corner - 1.0, 0.0, 1.0);
+})";
+const char* const fragment_shader = R"(#version 450 core
+uniform sampler2D u_image;
+uniform vec2 u_viewport;
+out vec4 colour;
+void main() {
+  vec2 uv = gl_FragCoord.xy / u_viewport;
+  colour = vec4(texture(u_image, vec2(uv.x, 1.0 - uv.y)).rgb, 1.0);
+})";
+
+unsigned compile(GLenum kind, const char* source) {
+  const GLuint shader = glCreateShader(kind);
+  glShaderSource(shader, 1, &source, nullptr);
+  glCompileShader(shader);
+  GLint ok = 0;
+  glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+  if (!ok) {
+    char log[2048];
+    glGetShaderInfoLog(shader, sizeof log, nullptr, log);
+    throw std::runtime_error(std::string("nephele view: display shader: ") + log);
+  }
+  return shader;
+}
+
+Viewer* viewer_of(GLFWwindow* window) { return static_cast<Viewer*>(glfwGetWindowUserPointer(window)); }
+
+// ImGui takes the input first when the pointer is over a panel or a text field has focus.
+bool panels_take_mouse() { return ImGui::GetCurrentContext() != nullptr && ImGui::GetIO().WantCaptureMouse; }
+bool panels_take_keyboard() { return ImGui::GetCurrentContext() != nullptr && ImGui::GetIO().WantCaptureKeyboard; }
+
+// `image` at width x height by the nearest pixel: the rows that the bands have not reached yet.
+core::ImageData upsampled(const core::ImageData& image, int width, int height) {
+  core::ImageData out{width, height, image.channels, std::vector<float>(std::size_t(width) * height * image.channels)};
+  if (image.width == 0 || image.height == 0) return out;
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x) {
+      const int sx = std::min(image.width - 1, x * image.width / width), sy = std::min(image.height - 1, y * image.height / height);
+      std::copy_n(&image.pixels[(std::size_t(sy) * image.width + sx) * image.channels], image.channels,
+                  &out.pixels[(std::size_t(y) * width + x) * image.channels]);
+    }
+  return out;
+}
+
+std::string frame_name(long index) {
+  char name[32];
+  std::snprintf(name, sizeof name, "frame_%06ld.png", index);
+  return name;
+}
+
+void write_png(const std::filesystem::path& directory, const std::string& name, const core::ImageData& image) {
+  io::OutputSet set(directory, io::OutputSet::Scope::files);
+  set.write(name, io::encode_image(image, io::png_encoding(8), name));
+  set.commit();
+}
+
+}  // namespace
+
+const char* key_help() {
+  return "keys and mouse in the window:\n"
+         "  drag (left button)      turn the view: the scene follows the cursor\n"
+         "  scroll                  zoom (field of view); with Shift: climb or descend\n"
+         "  W/S or Up/Down          fly forward/back along the heading\n"
+         "  A/D or Left/Right       fly left/right\n"
+         "  PageUp/PageDown         climb/descend (a key press flies a tenth of the height, at least 50 m)\n"
+         "  F12 or P                screenshot: nephele_view_NNNN.png in the working directory\n"
+         "  Tab                     hide or show the panels and the times\n"
+         "  Escape                  close the window\n";
+}
+
+const std::vector<RefinementLevel>& refinement_levels() {
+  // Eight bands: the rows of sky and cloud cost most (the ground's rays end at once), so the
+  // bands of the upper half take most of the time; eight keep each under about a quarter of a
+  // whole full-size render (docs/viewer.md).
+  static const std::vector<RefinementLevel> levels = [] {
+    std::vector<RefinementLevel> out = {{4, 0, 1}, {2, 0, 1}};
+    for (int band = 0; band < 8; ++band) out.push_back({1, band, 8});
+    return out;
+  }();
+  return levels;
+}
+
+Viewer::Viewer(const ViewerOptions& options) : options_(options) {
+  state_ = state_of_scene(options.scene);
+  // Files first (a COVER_DIR that is not a cover is bad input, with or without a display).
+  source_ = make_view_source(options.cover_dir, options.cache_directory);
+  window_ = std::make_unique<Window>(options.scene.width, options.scene.height, "nephele view", options.visible);
+  GLFWwindow* handle = window_->handle();
+  glfwSetWindowUserPointer(handle, this);
+  glfwSetKeyCallback(handle, on_key);
+  glfwSetMouseButtonCallback(handle, on_mouse_button);
+  glfwSetCursorPosCallback(handle, on_cursor);
+  glfwSetScrollCallback(handle, on_scroll);
+  glfwSetCharCallback(handle, ImGui_ImplGlfw_CharCallback);
+
+  IMGUI_CHECKVERSION();
+  ImGui::CreateContext();
+  ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini in the working directory
+  ImGui::StyleColorsDark();
+  // Our callbacks forward to ImGui's (install_callbacks = false), so that one route serves both.
+  ImGui_ImplGlfw_InitForOpenGL(handle, false);
+  ImGui_ImplOpenGL3_Init("#version 450 core");
+
+  program_ = glCreateProgram();
+  const GLuint vs = compile(GL_VERTEX_SHADER, vertex_shader), fs = compile(GL_FRAGMENT_SHADER, fragment_shader);
+  glAttachShader(program_, vs);
+  glAttachShader(program_, fs);
+  glLinkProgram(program_);
+  glDeleteShader(vs);
+  glDeleteShader(fs);
+  glCreateVertexArrays(1, &vertex_array_);
+  if (!options.record_dir.empty()) std::filesystem::create_directories(options.record_dir);
+}
+
+Viewer::~Viewer() {
+  glDeleteTextures(1, &texture_);
+  glDeleteProgram(program_);
+  glDeleteVertexArrays(1, &vertex_array_);
+  ImGui_ImplOpenGL3_Shutdown();
+  ImGui_ImplGlfw_Shutdown();
+  ImGui::DestroyContext();
+}
+
+std::string Viewer::render_key() const {
+  // Everything a render reads; exposure only tone-maps.
+  ViewState copy = state_;
+  std::ostringstream key;
+  key.precision(17);
+  key << copy.camera.latitude_deg << ' ' << copy.camera.longitude_deg << ' ' << copy.camera.height_m;
+  for (const Binding& b : bindings(copy))
+    if (b.parameter != &params::scene::exposure && b.parameter != &params::scene::view)
+      key << ' ' << value_text(copy, *b.parameter);
+  for (const auto& w : copy.weather) key << ' ' << w;
+  return key.str();
+}
+
+bool Viewer::changed() const { return render_key() != shown_key_; }
+
+void Viewer::run() {
+  while (!glfwWindowShouldClose(window_->handle()) && (options_.frames == 0 || frames_ < options_.frames)) frame();
+}
+
+void Viewer::refine(int width, int height) {
+  if (changed() || width != target_width_ || height != target_height_) {
+    shown_key_ = render_key();
+    target_width_ = width;
+    target_height_ = height;
+    next_level_ = 0;
+  }
+  if (next_level_ < refinement_levels().size()) {
+    const RefinementLevel level = refinement_levels()[next_level_];
+    // Sizes round up, so that the preview is never empty.
+    const int w = (width + level.divisor - 1) / level.divisor, h = (height + level.divisor - 1) / level.divisor;
+    const int rows = (h + level.bands - 1) / level.bands, first = std::min(h, level.band * rows);
+    last_render_ = source_->render(state_, w, h, first, level.bands > 1 ? std::min(rows, h - first) : 0);
+    ++renders_;
+    ++next_level_;
+    if (level.bands == 1) {
+      shown_ = last_render_.radiance;
+    } else {
+      if (level.band == 0) shown_ = upsampled(shown_, w, h);
+      const std::size_t row = std::size_t(w) * shown_.channels;
+      std::copy(last_render_.radiance.pixels.begin() + first * row,
+                last_render_.radiance.pixels.begin() + std::min(h, first + rows) * row, shown_.pixels.begin() + first * row);
+    }
+    upload(render::tone_map(shown_, state_.exposure));
+    shown_exposure_ = state_.exposure;
+  } else if (shown_exposure_ != state_.exposure) {
+    upload(render::tone_map(shown_, state_.exposure));
+    shown_exposure_ = state_.exposure;
+  }
+}
+
+void Viewer::upload(const core::ImageData& display) {
+  if (display.width != texture_width_ || display.height != texture_height_) {
+    glDeleteTextures(1, &texture_);
+    glCreateTextures(GL_TEXTURE_2D, 1, &texture_);
+    glTextureStorage2D(texture_, 1, GL_RGBA32F, display.width, display.height);
+    glTextureParameteri(texture_, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTextureParameteri(texture_, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTextureParameteri(texture_, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTextureParameteri(texture_, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    texture_width_ = display.width;
+    texture_height_ = display.height;
+  }
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glTextureSubImage2D(texture_, 0, 0, 0, display.width, display.height, GL_RGB, GL_FLOAT, display.pixels.data());
+}
+
+void Viewer::draw_image(int width, int height) {
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  glViewport(0, 0, width, height);
+  glDisable(GL_BLEND);
+  glDisable(GL_SCISSOR_TEST);
+  glDisable(GL_DEPTH_TEST);
+  glClearColor(0, 0, 0, 1);
+  glClear(GL_COLOR_BUFFER_BIT);
+  if (texture_ == 0) return;
+  glUseProgram(program_);
+  glUniform2f(glGetUniformLocation(program_, "u_viewport"), float(width), float(height));
+  glUniform1i(glGetUniformLocation(program_, "u_image"), 0);
+  glBindTextureUnit(0, texture_);
+  glBindVertexArray(vertex_array_);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glBindVertexArray(0);
+  glUseProgram(0);
+}
+
+core::ImageData Viewer::read_framebuffer(int width, int height) const {
+  std::vector<unsigned char> bytes(std::size_t(width) * height * 4);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadBuffer(GL_BACK);
+  glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, bytes.data());
+  core::ImageData image{width, height, 3, std::vector<float>(std::size_t(width) * height * 3)};
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x)
+      for (int c = 0; c < 3; ++c)
+        image.pixels[(std::size_t(height - 1 - y) * width + x) * 3 + c] =
+            bytes[(std::size_t(y) * width + x) * 4 + c] / 255.0f;
+  return image;
+}
+
+void Viewer::frame() {
+  const auto start = std::chrono::steady_clock::now();
+  glfwPollEvents();
+  int width = 0, height = 0;
+  window_->framebuffer_size(width, height);
+  if (width > 0 && height > 0) {
+    refine(width, height);
+    draw_image(width, height);
+    ImGui_ImplOpenGL3_NewFrame();
+    ImGui_ImplGlfw_NewFrame();
+    ImGui::NewFrame();
+    if (panels_) {
+      draw_panels(state_, panel_error_);
+      const RefinementLevel level = refinement_levels()[std::min(next_level_, refinement_levels().size()) - 1];
+      const std::string refinement =
+          next_level_ >= refinement_levels().size() ? "full size"
+          : level.bands > 1 ? "band " + std::to_string(level.band + 1) + "/" + std::to_string(level.bands)
+                            : "1/" + std::to_string(level.divisor);
+      draw_timings(last_render_.timings_ms, last_render_.radiance.width, last_render_.radiance.height, refinement, frame_ms_);
+    }
+    ImGui::Render();
+    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+    if (capture_ || !options_.record_dir.empty()) last_frame_ = read_framebuffer(width, height);
+    if (!options_.record_dir.empty()) write_png(options_.record_dir, frame_name(frames_), last_frame_);
+    glfwSwapBuffers(window_->handle());
+  }
+  ++frames_;
+  frame_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  // Nothing left to refine: wait for input instead of spinning (the panels still redraw on it).
+  if (refined() && options_.record_dir.empty() && options_.frames == 0) glfwWaitEventsTimeout(0.1);
+}
+
+std::filesystem::path Viewer::screenshot(const std::filesystem::path& directory) {
+  std::string name;
+  for (int i = 0;; ++i) {
+    char text[32];
+    std::snprintf(text, sizeof text, "nephele_view_%04d.png", i);
+    if (!std::filesystem::exists(directory / text)) {
+      name = text;
+      break;
+    }
+  }
+  write_png(directory, name, render::tone_map(shown_, state_.exposure));
+  return directory / name;
+}
+
+void Viewer::on_key(GLFWwindow* window, int key, int scancode, int action, int mods) {
+  ImGui_ImplGlfw_KeyCallback(window, key, scancode, action, mods);
+  Viewer* viewer = viewer_of(window);
+  if (viewer == nullptr || panels_take_keyboard() || (action != GLFW_PRESS && action != GLFW_REPEAT)) return;
+  ViewState& s = viewer->state_;
+  const double step = flight_step_m(s);
+  switch (key) {
+    case GLFW_KEY_W: case GLFW_KEY_UP: fly(s, step, 0, 0); break;
+    case GLFW_KEY_S: case GLFW_KEY_DOWN: fly(s, -step, 0, 0); break;
+    case GLFW_KEY_D: case GLFW_KEY_RIGHT: fly(s, 0, step, 0); break;
+    case GLFW_KEY_A: case GLFW_KEY_LEFT: fly(s, 0, -step, 0); break;
+    case GLFW_KEY_PAGE_UP: fly(s, 0, 0, step); break;
+    case GLFW_KEY_PAGE_DOWN: fly(s, 0, 0, -step); break;
+    case GLFW_KEY_F12: case GLFW_KEY_P:
+      if (action == GLFW_PRESS) std::cerr << "nephele view: wrote " << viewer->screenshot().string() << "\n";
+      break;
+    case GLFW_KEY_TAB: if (action == GLFW_PRESS) viewer->panels_ = !viewer->panels_; break;
+    case GLFW_KEY_ESCAPE: glfwSetWindowShouldClose(window, GLFW_TRUE); break;
+    default: break;
+  }
+}
+
+void Viewer::on_mouse_button(GLFWwindow* window, int button, int action, int mods) {
+  ImGui_ImplGlfw_MouseButtonCallback(window, button, action, mods);
+  Viewer* viewer = viewer_of(window);
+  if (viewer == nullptr || button != GLFW_MOUSE_BUTTON_LEFT) return;
+  viewer->dragging_ = action == GLFW_PRESS && !panels_take_mouse();
+}
+
+void Viewer::on_cursor(GLFWwindow* window, double x, double y) {
+  Viewer* viewer = viewer_of(window);
+  if (viewer == nullptr) return;
+  if (viewer->dragging_) {
+    int width = 0, height = 0;
+    glfwGetWindowSize(window, &width, &height);
+    drag(viewer->state_, x - viewer->cursor_x_, y - viewer->cursor_y_, width);
+  }
+  viewer->cursor_x_ = x;
+  viewer->cursor_y_ = y;
+}
+
+void Viewer::on_scroll(GLFWwindow* window, double dx, double dy) {
+  ImGui_ImplGlfw_ScrollCallback(window, dx, dy);
+  Viewer* viewer = viewer_of(window);
+  if (viewer == nullptr || panels_take_mouse()) return;
+  if (glfwGetKey(window, GLFW_KEY_LEFT_SHIFT) == GLFW_PRESS || glfwGetKey(window, GLFW_KEY_RIGHT_SHIFT) == GLFW_PRESS)
+    fly(viewer->state_, 0, 0, dy * flight_step_m(viewer->state_));
+  else
+    zoom(viewer->state_, dy);
+}
+
+}  // namespace nephele::viewer

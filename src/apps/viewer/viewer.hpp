@@ -1,0 +1,114 @@
+#pragma once
+// nephele view: a window that shows a ViewSource's image, with panels made from the parameter
+// table, mouse and keyboard flight, screenshots and frame recording (docs/viewer.md).
+//
+// Refinement: a change of the view renders at once at a quarter of the window's size in each
+// direction (the preview), then at half size, then at full size in eight bands of rows, one
+// render per frame, so that input is answered between renders and no frame costs a whole
+// full-size render. Exposure only tone-maps the last image again.
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "apps/viewer/view_source.hpp"
+#include "apps/viewer/view_state.hpp"
+#include "apps/viewer/window.hpp"
+#include "core/image.hpp"
+#include "regional/scene.hpp"
+
+struct GLFWwindow;
+
+namespace nephele::viewer {
+
+struct ViewerOptions {
+  regional::Scene scene;                  // the first view (its size is the window's)
+  std::filesystem::path cover_dir;        // a cover of nephele generate; empty: made from the panels' values
+  std::filesystem::path cache_directory;  // the noise volume cache; empty: none
+  std::filesystem::path record_dir;       // every displayed frame as frame_NNNNNN.png; empty: none
+  long frames = 0;                        // close after this many frames; 0: when the window is closed
+  bool visible = true;                    // false: a hidden window (tests)
+};
+
+// The keys, for --help and docs/viewer.md.
+const char* key_help();
+
+// One step of the refinement: the image at 1/divisor of the window's size each way, or band
+// `band` of `bands` (of equal rows, the last one shorter) of it.
+struct RefinementLevel {
+  int divisor;
+  int band, bands;
+};
+// The steps, coarse to fine: 1/4, 1/2, then the full size in eight bands.
+const std::vector<RefinementLevel>& refinement_levels();
+
+class Viewer {
+ public:
+  explicit Viewer(const ViewerOptions& options);  // throws WindowError when no window can be opened
+  ~Viewer();
+  Viewer(const Viewer&) = delete;
+  Viewer& operator=(const Viewer&) = delete;
+
+  // Frames until the window is closed (or options.frames are shown).
+  void run();
+  // One frame: input events, the next refinement render if one is due, display, panels,
+  // recording, buffer swap.
+  void frame();
+
+  ViewState& state() { return state_; }
+  Window& window() { return *window_; }
+  // True when the image shown is the full-size render of the current state.
+  bool refined() const { return next_level_ >= refinement_levels().size() && !changed(); }
+  // The last render (a band's rows only, for a band): its radiance, passes and times.
+  const render::RenderResult& last_render() const { return last_render_; }
+  long renders() const { return renders_; }
+  // Wall-clock milliseconds of the last frame (events, render, display, panels, swap).
+  double frame_ms() const { return frame_ms_; }
+  // The default framebuffer as shown at the end of the last frame: RGB in [0, 1] (8-bit
+  // values / 255), rows from the top. Only kept while capture is on (or when recording).
+  void set_capture(bool on) { capture_ = on; }
+  const core::ImageData& last_frame() const { return last_frame_; }
+  void set_panels_visible(bool on) { panels_ = on; }
+  // The linear radiance shown: the last whole render, or the full-size image its bands have
+  // filled so far (the rows not yet marched from the half-size render, nearest pixel).
+  const core::ImageData& shown_radiance() const { return shown_; }
+  // Writes the tone-mapped image shown (without the panels) as a PNG (the key F12 or P, into the
+  // working directory as nephele_view_NNNN.png); returns the path.
+  std::filesystem::path screenshot(const std::filesystem::path& directory = ".");
+
+  // The window's GLFW callbacks; tests call them directly as the window would.
+  static void on_key(GLFWwindow* window, int key, int scancode, int action, int mods);
+  static void on_mouse_button(GLFWwindow* window, int button, int action, int mods);
+  static void on_cursor(GLFWwindow* window, double x, double y);
+  static void on_scroll(GLFWwindow* window, double dx, double dy);
+
+ private:
+  bool changed() const;
+  std::string render_key() const;
+  void refine(int framebuffer_width, int framebuffer_height);
+  void upload(const core::ImageData& display);
+  void draw_image(int framebuffer_width, int framebuffer_height);
+  core::ImageData read_framebuffer(int width, int height) const;
+
+  ViewerOptions options_;
+  std::unique_ptr<Window> window_;
+  std::unique_ptr<ViewSource> source_;
+  ViewState state_;
+  std::string shown_key_;        // render_key of the state being refined
+  double shown_exposure_ = 0;    // exposure of the texture shown
+  std::size_t next_level_ = 0;   // refinement level rendered next
+  int target_width_ = 0, target_height_ = 0;  // framebuffer size being refined
+  render::RenderResult last_render_;
+  core::ImageData shown_;
+  long renders_ = 0, frames_ = 0;
+  double frame_ms_ = 0;
+  bool panels_ = true, capture_ = false, dragging_ = false;
+  double cursor_x_ = 0, cursor_y_ = 0;
+  std::string panel_error_;
+  core::ImageData last_frame_;
+  unsigned texture_ = 0, program_ = 0, vertex_array_ = 0;
+  int texture_width_ = 0, texture_height_ = 0;
+};
+
+}  // namespace nephele::viewer

@@ -1,0 +1,107 @@
+// nephele view without a window: its panels against the parameter table, the camera's input
+// rules, and the exit code without a display. The window itself: tests/viewer (under Xvfb).
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <set>
+
+#include "apps/viewer/panels.hpp"
+#include "apps/viewer/view_state.hpp"
+#include "apps/viewer/viewer.hpp"
+#include "cli_support.hpp"
+#include "core/error.hpp"
+#include "params/table.hpp"
+
+namespace nephele {
+
+TEST_CASE("the viewer's panels offer every viewer parameter of the table that is not an option only, in table order", "[viewer]") {
+  viewer::ViewState state;
+  const auto panel = viewer::panel_parameters();
+  std::set<const params::Parameter*> bound;
+  for (const auto& b : viewer::bindings(state)) bound.insert(b.parameter);
+  std::size_t last = 0;
+  for (const params::Parameter* p : panel) {
+    INFO(p->key);
+    CHECK(bound.count(p) == 1);  // a field to edit
+    const auto& all = params::all();
+    const std::size_t at = std::find(all.begin(), all.end(), p) - all.begin();
+    CHECK(at >= last);
+    last = at;
+  }
+  for (const params::Parameter* p : params::all())
+    if (p->used_by(params::viewer)) {
+      INFO(p->key);
+      CHECK((viewer::option_only(*p) || std::count(panel.begin(), panel.end(), p) == 1));
+    }
+  // What the brief asks of the panels is there: the cover's and the view's parameters.
+  for (const params::Parameter* p : {&params::scene::seed, &params::cover::coverage, &params::cover::iterations,
+                                     &params::cover::integrator, &params::cover::step, &params::scene::time,
+                                     &params::scene::heading, &params::scene::exposure, &params::scene::view_steps})
+    CHECK(std::count(panel.begin(), panel.end(), p) == 1);
+  // The integrator is a combo of the table's words.
+  CHECK(params::cover::integrator.words() == std::vector<std::string>{"euler", "heun", "rk4", "geodesic", "adaptive"});
+  CHECK(params::scene::time.words().empty());
+}
+
+TEST_CASE("a panel value is checked as the command line checks it", "[viewer]") {
+  viewer::ViewState state;
+  viewer::set_value(state, params::cover::coverage, "0.25");
+  CHECK(state.coverage == 0.25f);
+  CHECK(viewer::value_text(state, params::cover::coverage) == "0.25");
+  CHECK_THROWS_WITH(viewer::set_value(state, params::cover::coverage, "1.5"), Catch::Contains("--coverage") && Catch::Contains("0 to 1"));
+  CHECK_THROWS_AS(viewer::set_value(state, params::cover::integrator, "midpoint"), core::InputError);
+  CHECK_THROWS_AS(viewer::set_value(state, params::scene::time, "2026-02-30T00:00Z"), core::InputError);
+  CHECK(state.coverage == 0.25f);
+  viewer::set_value(state, params::scene::view, "bantiger");
+  CHECK(state.viewpoint == "bantiger");
+}
+
+TEST_CASE("a drag turns by the field of view per window width; the wheel zooms within the table's range", "[viewer]") {
+  viewer::ViewState state;
+  state.camera.heading_deg = 10;
+  state.camera.pitch_deg = 0;
+  state.camera.fov_deg = 60;
+  viewer::drag(state, 40, -20, 240);  // 10 and 5 degrees
+  CHECK(state.camera.heading_deg == Approx(0).epsilon(0).margin(1e-12));
+  CHECK(state.camera.pitch_deg == Approx(-5).epsilon(0).margin(1e-12));
+  viewer::drag(state, 40, 0, 240);
+  CHECK(state.camera.heading_deg == Approx(350).epsilon(0).margin(1e-12));  // wrapped into [0, 360)
+  viewer::drag(state, 0, 100000, 240);
+  CHECK(state.camera.pitch_deg == params::scene::pitch.max);
+  viewer::zoom(state, 1);
+  CHECK(state.camera.fov_deg == Approx(60 * viewer::zoom_per_notch).epsilon(1e-15));
+  viewer::zoom(state, -1000);
+  CHECK(state.camera.fov_deg == params::scene::fov.max);
+}
+
+TEST_CASE("flight keeps the camera in double: a 50 m step at 46.9 degrees north moves the latitude by 4.5e-4 degrees", "[viewer]") {
+  viewer::ViewState state;
+  state.camera.latitude_deg = 46.9;
+  state.camera.longitude_deg = 7.44;
+  state.camera.height_m = 0;
+  state.camera.heading_deg = 0;
+  CHECK(viewer::flight_step_m(state) == 50);
+  viewer::fly(state, 50, 0, 0);
+  // A degree of latitude is about 111.2 km here: 50 m is 4.497e-4 degrees; float would keep
+  // only about 3e-6 degrees (0.3 m) at this latitude.
+  CHECK(state.camera.latitude_deg - 46.9 == Approx(50.0 / 111180.0).epsilon(2e-3));
+  CHECK(state.camera.longitude_deg == Approx(7.44).epsilon(0).margin(1e-12));
+  CHECK(state.viewpoint.empty());
+}
+
+TEST_CASE("nephele view without a display exits 3 and names xvfb-run and nephele render", "[viewer][cli]") {
+  const auto r = test::run_with_environment("env -u DISPLAY -u WAYLAND_DISPLAY", "view --size 32x18");
+  CHECK(r.exit_code == core::exit_environment);
+  CHECK_THAT(r.output, Catch::Contains("xvfb-run -a nephele view") && Catch::Contains("nephele render"));
+}
+
+TEST_CASE("nephele view --help lists the keys and the table's options; bad options exit 2 before a window opens", "[viewer][cli]") {
+  const auto help = test::run("view --help");
+  CHECK(help.exit_code == 0);
+  CHECK_THAT(help.output, Catch::Contains("F12") && Catch::Contains("PageUp") && Catch::Contains("--record"));
+  const auto bad = test::run_with_environment("env -u DISPLAY", "view --coverage 2");
+  CHECK(bad.exit_code == core::exit_bad_input);
+  CHECK_THAT(bad.output, Catch::Contains("--coverage"));
+}
+
+}  // namespace nephele
