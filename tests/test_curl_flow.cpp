@@ -52,10 +52,10 @@ void tangent_basis(vec3 n, vec3& e1, vec3& e2) {
 
 // The stream function written out independently of curl_velocity, from fBm values only.
 double stream_function(vec3 p, const CurlParams& c) {
-  const double w1 = inverted_worley_fbm(p, c.potential_north).w;
-  const double w2 = inverted_worley_fbm(p, c.potential_south).w;
+  const double w1 = smooth_worley_fbm(p, c.potential_north, c.smoothing).w;
+  const double w2 = smooth_worley_fbm(p, c.potential_south, c.smoothing).w;
   const double m = std::sin(c.mix_frequency * std::asin(std::clamp(static_cast<double>(p.z), -1.0, 1.0)));
-  return c.strength * ((w1 + c.prevailing) * (1 + m) / 2 - (w2 + c.prevailing) * (1 - m) / 2);
+  return c.strength * (c.prevailing * m - w1 * (1 + m) / 2 + w2 * (1 - m) / 2);
 }
 
 }  // namespace

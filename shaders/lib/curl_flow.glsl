@@ -12,7 +12,7 @@
 // around their peaks (the feature points) the flow turns counter-clockwise in the north and
 // clockwise in the south seen from outside, the sense of cyclones. The latitude term gives
 // zonal winds u = -s (P - (w1 + w2)/2) m'(lat): easterly trade winds where m' > 0 when P
-// exceeds the noise mean (w of the smooth potential averages about 0.2, 1 - F1 about 0.47).
+// exceeds the noise mean (w of the smooth potential averages about 0.30 at lambda 0.3, 1 - F1 about 0.47).
 // Returns the velocity
 //   v = s n x grad phi,
 // tangent to the sphere and divergence-free on it. At the poles the direction north is
