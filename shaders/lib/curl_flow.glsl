@@ -12,13 +12,13 @@
 // around their peaks (the feature points) the flow turns counter-clockwise in the north and
 // clockwise in the south seen from outside, the sense of cyclones. The latitude term gives
 // zonal winds u = -s (P - (w1 + w2)/2) m'(lat): easterly trade winds where m' > 0 when P
-// exceeds the noise mean (w of the smooth potential averages about 0.30 at lambda 0.3, 1 - F1 about 0.47).
+// exceeds the noise mean (the smooth w averages about 0.30 at lambda 0.3, 1 - F1 about 0.47).
 // Returns the velocity
 //   v = s n x grad phi,
 // tangent to the sphere and divergence-free on it. At the poles the direction north is
 // undefined; there the latitude term is dropped. For odd a (the default 3) m is a polynomial
 // in z (sin 3 lat = 3z - 4z^3) and the term vanishes there smoothly; otherwise the mix has a
-// conical tip at the poles and the flow a singular spin (docs/numerics.md, "Poles").
+// conical tip at the poles and the flow a singular spin (docs/algorithm.md, "Poles").
 // w1 and w2 are smooth_worley_fbm with lambda = params.smoothing (0: 1 - F1, whose gradient
 // jumps across Voronoi borders).
 // `offset` shifts the noise of both potentials (sphere radii): they are sampled at n + offset.
