@@ -11,6 +11,7 @@
 
 #include "cli_support.hpp"
 #include "io/image_files.hpp"
+#include "params/table.hpp"
 #include "core/json.hpp"
 #include "tolerances.hpp"
 
@@ -61,7 +62,7 @@ TEST_CASE("generate writes every output readable with the right sizes and a vali
   const json::Value sidecar = json::parse(read_file(out.path / "cover.json"));
   CHECK(sidecar.at("parameters").at("seed").as_number() == 42);
   CHECK(sidecar.at("parameters").at("size").as_number() == 8);
-  CHECK(sidecar.at("parameters").at("step").as_number() == 0.006);
+  CHECK(sidecar.at("parameters").at("step").as_number() == params::cover::step.default_number);
   CHECK_FALSE(sidecar.at("version").as_string().empty());
   const auto& result = sidecar.at("result");
   CHECK(std::abs(result.at("cloud_fraction").as_number() - 0.5) <= result.at("cloud_fraction_tolerance").as_number());

@@ -56,6 +56,10 @@ cover::CoverParameters small(int size, int iterations = 50) {
   cover::CoverParameters p;
   p.size = size;
   p.iterations = iterations;
+  // sfsim's scheme, which these passes are checked against (integrate_warp, warp_step).
+  p.integrator = cover::Integrator::euler;
+  p.curl_mode = cover::CurlMode::sampled;
+  p.step = 0.006f;
   return p;
 }
 

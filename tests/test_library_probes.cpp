@@ -66,6 +66,13 @@ constexpr float kWorley = 16 * kUlp;
 // An fBm of up to 5 octaves of F1 (each kWorley), normalised by a division (2.5 ulp): its
 // value and, scaled by the highest frequency f_max, its gradient: 2^-16 per unit of f_max.
 constexpr float kFbm = 256 * kUlp;
+// smooth_worley with lambda >= 1/20: exp(x), x <= 20, errs by 3 + 2x <= 43 ulp (GLSL 4.50
+// 4.7.1) and x itself by 5 ulp relative, 100 ulp of exp; the sum and log of values below
+// 27 e^20 and the ratios e_i / total double that, on gradients |dK/dp| <= 2.1 (10 (1 - r^2)^4 r
+// at r = 1/3) and values below 1 + lambda ln 27: 2.1 x 2 x 143 ulp, rounded up to 1024 ulp.
+constexpr float kSmoothWorley = 1024 * kUlp;
+// Its fBm (up to 5 octaves, as kFbm) scaled by the highest frequency for the gradient.
+constexpr float kSmoothFbm = 4 * kSmoothWorley;
 // Perlin noise and its parts (perlin.glsl) chain at most 16 operations (fade 5, weights 2, a
 // face's dot products and sums 5, the row's mix 4) on values below 4, each as in kArithmetic.
 constexpr float kPerlin = 16 * 3.5f * 4 * kUlp;
@@ -301,13 +308,14 @@ TEST_CASE("worley.glsl on the GPU agrees with the CPU", "[probe]") {
   Random r(16);
   std::vector<Case> cases;
   const vec4 key = vec4(std::floor(r(0.0f, 16777215.0f)), std::floor(r(0.0f, 16777215.0f)), 12345.0f, 0.0f);
-  for (int k = 0; k < 64; ++k) {
-    const int f = k % 4;
+  for (int k = 0; k < 80; ++k) {
+    const int f = k % 5;
     const vec4 period = (k / 4) % 2 ? vec4(5.0f, 7.0f, 3.0f, 0.0f) : vec4(0.0f);
     const vec4 p = f < 2 ? vec4(std::floor(r(-40.0f, 40.0f)), std::floor(r(-40.0f, 40.0f)), std::floor(r(-40.0f, 40.0f)), 0)
                          : (f == 2 ? r.v(0.0f, 1.0f) : r.v(-20.0f, 20.0f));
-    const vec4 a(r(0.5f, 3.0f), float(k % 3 - 1), float((k / 3) % 3 - 1), 0.0f);
-    cases.push_back({arguments(f, a, p, period, key), f < 2 ? kExact : kWorley});
+    vec4 a(r(0.5f, 3.0f), float(k % 3 - 1), float((k / 3) % 3 - 1), 0.0f);
+    if (f == 4) a.y = r(0.05f, 1.0f);  // smooth_worley's lambda
+    cases.push_back({arguments(f, a, p, period, key), f < 2 ? kExact : f == 4 ? kSmoothWorley : kWorley});
   }
   compare("worley", probe_worley, cases);
 }
@@ -316,11 +324,12 @@ TEST_CASE("worley_fbm.glsl on the GPU agrees with the CPU", "[probe]") {
   Random r(17);
   std::vector<Case> cases;
   const float highest_frequency = 3.0f * 16.0f;  // 5 octaves of lacunarity 2 from frequency 3
-  for (int k = 0; k < 32; ++k) {
+  for (int k = 0; k < 48; ++k) {
     const vec4 period = k % 2 ? vec4(4.0f, 4.0f, 4.0f, 0.0f) : vec4(0.0f);
-    cases.push_back({arguments(0, vec4(0.0f), r.v(0.0f, 1.0f), vec4(3.0f, 5.0f, 2.0f, 0.5f),
-                               vec4(99.0f, period.x, period.y, period.z)),
-                     kFbm * highest_frequency});
+    const bool smooth = k % 3 == 2;  // smooth_worley_fbm with lambda in [0.05, 1]
+    cases.push_back({arguments(0, vec4(smooth ? 1.0f : 0.0f, smooth ? r(0.05f, 1.0f) : 0.0f, 0.0f, 0.0f),
+                               r.v(0.0f, 1.0f), vec4(3.0f, 5.0f, 2.0f, 0.5f), vec4(99.0f, period.x, period.y, period.z)),
+                     (smooth ? kSmoothFbm : kFbm) * highest_frequency});
   }
   compare("worley_fbm", probe_worley_fbm, cases);
 }
@@ -443,8 +452,10 @@ TEST_CASE("curl_flow.glsl on the GPU agrees with the CPU", "[probe]") {
     const vec4 potential(fast ? 4.0f : 2.0f, 3.0f, float(k), float(k + 100));
     const vec4 flow(0.5f, 2.5f, fast ? 2.0f : 0.5f, fast ? 8.0f : 0.0f);
     const float highest_frequency = potential.x * 4.0f;
+    // Function 0 runs the smooth potential (lambda 0.3): its fBm errs by kSmoothFbm, not kFbm.
+    const float smooth_extra = k % 2 == 0 ? flow.z * (kSmoothFbm - kFbm) * highest_frequency : 0.0f;
     cases.push_back({arguments(k % 2, vec4(r(-0.5f, 0.5f), r(-0.5f, 0.5f), r(-0.5f, 0.5f), 0), n, potential, flow),
-                     curl_tolerance(flow.z, highest_frequency, flow.x, flow.y)});
+                     curl_tolerance(flow.z, highest_frequency, flow.x, flow.y) + smooth_extra});
   }
   compare("curl_flow", probe_curl_flow, cases);
 }

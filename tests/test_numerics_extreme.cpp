@@ -150,6 +150,7 @@ cover::CoverParameters small(int size = 8) {
   p.size = size;
   p.iterations = 10;
   p.step = 0.03f;
+  p.curl_mode = cover::CurlMode::sampled;  // the cheap mode; tests of every variant set their own
   return p;
 }
 

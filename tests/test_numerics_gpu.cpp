@@ -51,10 +51,9 @@ constexpr double kTriangleSlack = 1e-6;
 // them for spans above 0.5 (the default densities' span, not checked here).
 constexpr double kCoverRounding = 1e-6;
 static_assert(kCoverRounding >= 2 * 4 * kUlp / 0.5);
-// Stiff flow: the adaptive scheme's rms error against Euler's (same h): below 0.2 of it. And the
-// default cover's folded fraction: below 0.2. Both empirical thresholds, not derived.
+// Stiff flow: the adaptive scheme's rms error against Euler's (same h): below 0.2 of it. An
+// empirical threshold, not derived.
 constexpr double kAdaptiveVersusEuler = 0.2;
-constexpr double kDefaultFoldedFraction = 0.2;
 
 cover::CoverParameters parameters(int size, Integrator integrator, CurlMode mode, int steps, float flow_time) {
   cover::CoverParameters p;
@@ -308,7 +307,9 @@ TEST_CASE("a stiff flow with large steps is reported for fixed-step schemes and 
     CHECK(d.stiffness.stiffness > d.stiffness.limit);
     for (float v : cover.warp_field().read()) REQUIRE(std::isfinite(v));
     if (integrator == Integrator::adaptive) {
-      CHECK(d.warnings.empty());  // not silent: it sub-stepped instead
+      // No stiffness warning: it sub-stepped instead (the fold warning may stand: at size 32
+      // the texels cannot resolve this flow's stretching).
+      for (const auto& w : d.warnings) CHECK(w.find("stiffness") == std::string::npos);
       CHECK(d.substeps.mean_attempts > 6.0);
       CHECK(d.substeps.capped_texels == 0);
       CHECK(error < kAdaptiveVersusEuler * euler_error);
@@ -321,7 +322,7 @@ TEST_CASE("a stiff flow with large steps is reported for fixed-step schemes and 
   }
 }
 
-TEST_CASE("the default cover is within the stable step and not reported as stiff", "[numerics][gpu][stiff]") {
+TEST_CASE("the default cover is within the stable step and neither reported as stiff nor folded", "[numerics][gpu][stiff]") {
   test::test_context();
   cover::CoverParameters p;
   p.size = 64;
@@ -331,5 +332,8 @@ TEST_CASE("the default cover is within the stable step and not reported as stiff
   INFO("stiffness " << d.stiffness.stiffness << " beyond on " << d.stiffness.beyond_fraction);
   CHECK(d.warnings.empty());
   CHECK(d.stiffness.beyond_fraction <= cover::warn_fraction);
-  CHECK(d.folding.folded_fraction < kDefaultFoldedFraction);
+  // The exact flow keeps area (J = 1); the default flow is gentle enough for the texels of
+  // size 64 to resolve its stretching (measured J_min 0.71).
+  CHECK(d.folding.folded_fraction == 0.0);
+  CHECK(d.folding.jacobian_min > 0.0);
 }

@@ -31,7 +31,8 @@ std::string literal(const FbmParams& p) {
 }
 std::string literal(const CurlParams& c) {
   return "CurlParams(" + literal(c.potential_north) + ", " + literal(c.potential_south) + ", " +
-         literal(c.prevailing) + ", " + literal(c.mix_frequency) + ", " + literal(c.strength) + ")";
+         literal(c.prevailing) + ", " + literal(c.mix_frequency) + ", " + literal(c.strength) + ", " +
+         literal(c.smoothing) + ")";
 }
 
 // One float rounding, relative: 2^-24.

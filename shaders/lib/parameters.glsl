@@ -18,6 +18,7 @@ struct CurlParams {
   float prevailing;           // P: strength of the zonal (prevailing wind) bands
   float mix_frequency;        // a in m(lat) = sin(a lat)
   float strength;             // s: the potential is s phi, so velocities scale with s
+  float smoothing;            // lambda of smooth_worley (worley.glsl); 0: classic 1 - F1
 };
 
 #endif

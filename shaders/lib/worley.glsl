@@ -70,4 +70,41 @@ vec4 worley_f1(vec3 p, ivec3 period, uvec3 key) {
   return vec4(gradient, distance);
 }
 
+// Smooth inverted Worley noise, the flow's potential (docs/numerics.md, "Smooth potential").
+// Each feature point carries a bump K(r) = (1 - r^2)^5 for r < 1 cell, 0 beyond; the bumps
+// are combined by a smooth maximum (log-sum-exp with exact zeros for absent points),
+//   W = lambda ln(1 + sum_i (exp(K_i / lambda) - 1)),
+// so W = K_i where only one bump reaches p and W -> max_i K_i as lambda -> 0 (W is a smooth
+// minimum of the distances). Every point within 1 cell of p lies in the 27 searched cells and
+// K vanishes with its first four derivatives at r = 1, so nothing jumps where a point enters
+// or leaves the search: W is C^4, its gradient (the velocity) C^3, enough for order 4.
+// `smoothing` is lambda; values below 0.02 count as 0.02, which keeps 27 exp(1 / lambda)
+// finite in float (lambda > 0.0118). Returns vec4(dW/dp, W); W lies in [0, 1 + lambda ln 27].
+vec4 smooth_worley(vec3 p, ivec3 period, uvec3 key, float smoothing) {
+  float lambda = max(smoothing, 0.02f);
+  vec3 base = floor(p);
+  ivec3 cell = ivec3(base);
+  vec3 f = p - base;
+  float sum = 0.0f;
+  vec3 gradient = vec3(0.0f);
+  for (int k = -1; k <= 1; ++k) {
+    for (int j = -1; j <= 1; ++j) {
+      for (int i = -1; i <= 1; ++i) {
+        ivec3 offset = ivec3(i, j, k);
+        vec3 delta = f - (vec3(offset) + feature_offset(cell + offset, period, key));
+        float r2 = dot(delta, delta);
+        if (r2 < 1.0f) {
+          float s = 1.0f - r2;
+          float s4 = (s * s) * (s * s);
+          float e = exp((s4 * s) / lambda);
+          sum += e - 1.0f;
+          gradient += (-10.0f * s4 * e) * delta;  // e dK/dp, dK/dp = -10 (1 - r^2)^4 delta
+        }
+      }
+    }
+  }
+  float total = 1.0f + sum;
+  return vec4(gradient / total, lambda * log(total));
+}
+
 #endif

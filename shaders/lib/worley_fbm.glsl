@@ -6,23 +6,36 @@
 #include "parameters.glsl"
 
 
-// sum_k gain^k (1 - F1(p frequency lacunarity^k)) / sum_k gain^k and its gradient d/dp.
-// Returns vec4(gradient, value); value lies in [1 - sqrt(3), 1] and is 1 on feature points.
-vec4 inverted_worley_fbm(vec3 p, IN(FbmParams) params) {
+// sum_k gain^k n_k(p frequency lacunarity^k) / sum_k gain^k and its gradient d/dp, where n_k
+// is 1 - F1 (smoothing 0) or smooth_worley with lambda = smoothing (worley.glsl).
+vec4 smooth_worley_fbm(vec3 p, IN(FbmParams) params, float smoothing) {
   vec4 sum = vec4(0.0f);
   float amplitude = 1.0f;
   float frequency = params.frequency;
   float norm = 0.0f;
   ivec3 period = params.period;
   for (int octave = 0; octave < params.octaves; ++octave) {
-    vec4 f1 = worley_f1(p * frequency, period, noise_key(params.seed, uint(octave)));
-    sum += amplitude * vec4(-frequency * vec3(f1), 1.0f - f1.w);
+    uvec3 key = noise_key(params.seed, uint(octave));
+    vec4 octave_value;
+    if (smoothing > 0.0f) {
+      vec4 w = smooth_worley(p * frequency, period, key, smoothing);
+      octave_value = vec4(frequency * vec3(w), w.w);
+    } else {
+      vec4 f1 = worley_f1(p * frequency, period, key);
+      octave_value = vec4(-frequency * vec3(f1), 1.0f - f1.w);
+    }
+    sum += amplitude * octave_value;
     norm += amplitude;
     amplitude *= params.gain;
     frequency *= params.lacunarity;
     period = ivec3(vec3(period) * params.lacunarity + 0.5f);
   }
   return norm > 0.0f ? sum / norm : vec4(0.0f);
+}
+
+// The classic fBm of 1 - F1: value in [1 - sqrt(3), 1], 1 on feature points.
+vec4 inverted_worley_fbm(vec3 p, IN(FbmParams) params) {
+  return smooth_worley_fbm(p, params, 0.0f);
 }
 
 #endif

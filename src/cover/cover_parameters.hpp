@@ -28,12 +28,14 @@ struct CoverParameters {
   float prevailing = params::cover::prevailing.default_float();  // strength of the zonal wind bands
   float mix_frequency = params::cover::mix_frequency.default_float();  // m(lat) = sin(a lat); sfsim uses 3
   float curl_strength = params::cover::curl_strength.default_float();  // scale of the stream function
+  float curl_smoothing = params::cover::curl_smoothing.default_float();  // lambda of the smooth potential
   NoiseOctaves density{params::cover::density_frequency.default_float(), params::cover::density_octaves.default_int(),
                        params::cover::density_lacunarity.default_float(),
                        params::cover::density_gain.default_float()};  // Worley fBm of the cloud density
-  // How the warp is solved (docs/numerics.md); the defaults are sfsim's scheme.
-  cover::Integrator integrator = cover::Integrator::euler;
-  cover::CurlMode curl_mode = cover::CurlMode::sampled;
+  // How the warp is solved (docs/numerics.md): RK4 on the analytic curl of the smooth
+  // potential, whose velocity is smooth enough for order 4 (sfsim: Euler, sampled, 50 steps).
+  cover::Integrator integrator = *cover::parse_integrator(std::string(params::cover::integrator.default_text));
+  cover::CurlMode curl_mode = *cover::parse_curl_mode(std::string(params::cover::curl_mode.default_text));
   float tolerance = params::cover::tolerance.default_float();   // adaptive: largest error estimate of a step, radians
   int max_substeps = params::cover::max_substeps.default_int();  // adaptive: attempted steps per texel at most
   // Shifts every noise layer by (d, d, d) sphere radii. Non-zero offsets make the lattices
@@ -64,6 +66,7 @@ void visit_numeric_parameters(P& p, Visit&& visit) {
   visit(c::prevailing, p.prevailing);
   visit(c::mix_frequency, p.mix_frequency);
   visit(c::curl_strength, p.curl_strength);
+  visit(c::curl_smoothing, p.curl_smoothing);
   visit(c::density_frequency, p.density.frequency);
   visit(c::density_octaves, p.density.octaves);
   visit(c::density_lacunarity, p.density.lacunarity);

@@ -164,6 +164,16 @@ void add_warp_warnings(WarpDiagnostics& d, Integrator integrator, double step, l
                   d.substeps.capped_texels);
     d.warnings.push_back(text);
   }
+  if (d.folding.folded_fraction > 0.0) {
+    // The exact flow keeps area (J = 1); J <= 0 between neighbouring texels means the warp
+    // stretches the cover faster than the texels resolve, or the integration failed.
+    std::snprintf(text, sizeof text,
+                  "the warp folds the sphere over itself on %.3g%% of it (area Jacobian down to %.4g, 1 keeps "
+                  "area): lower --curl-strength, --curl-gain or the flow time (--iterations x --step), or raise "
+                  "--size",
+                  100.0 * d.folding.folded_fraction, d.folding.jacobian_min);
+    d.warnings.push_back(text);
+  }
   if (off > 0) {
     std::snprintf(text, sizeof text, "%ld warped points are not finite unit vectors", off);
     d.warnings.push_back(text);

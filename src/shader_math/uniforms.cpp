@@ -26,6 +26,7 @@ void set_uniform(const gpu::ComputeProgram& program, const std::string& name, co
   program.set(name + ".prevailing", params.prevailing);
   program.set(name + ".mix_frequency", params.mix_frequency);
   program.set(name + ".strength", params.strength);
+  program.set(name + ".smoothing", params.smoothing);
 }
 
 void set_uniform(const gpu::ComputeProgram& program, const std::string& name, const MarchParams& params) {

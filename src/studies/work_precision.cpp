@@ -80,7 +80,7 @@ SweepOptions SweepOptions::full(const cover::CoverParameters& base) {
   o.sizes = {128, 256, 512};
   o.integrators = all_integrators();
   o.curl_modes = {CurlMode::sampled, CurlMode::procedural};
-  o.steps = {5, 10, 25, 50, 100, 200};
+  o.steps = {1, 2, 4, 8, 16, 32, 50, 100, 200};
   o.tolerances = {1e-2f, 1e-3f, 1e-4f, 1e-5f, 1e-6f};
   o.sample_grid = 20;
   o.repeat = 3;
@@ -94,7 +94,7 @@ SweepOptions SweepOptions::quick(const cover::CoverParameters& base) {
   o.sizes = {32};
   o.integrators = all_integrators();
   o.curl_modes = {CurlMode::sampled, CurlMode::procedural};
-  o.steps = {10, 50};
+  o.steps = {1, 2, 4, 8, 50};  // 1 and 2 keep RK4 above the float floor for its order
   o.tolerances = {1e-3f};
   o.sample_grid = 4;
   o.repeat = 1;
@@ -285,10 +285,39 @@ SweepResult run_sweep(const SweepOptions& o, const std::function<void(const std:
       }
   }
   result.comparisons = compare_with_default(result.rows);
+  for (const auto& c : compare_with_default(result.rows, CurlMode::procedural))
+    if (c.has_baseline) result.comparisons.push_back(c);
+  result.orders = observed_orders(result.rows);
   return result;
 }
 
-std::vector<Comparison> compare_with_default(const std::vector<SweepRow>& rows) {
+std::vector<ObservedOrder> observed_orders(const std::vector<SweepRow>& rows, double floor) {
+  std::vector<ObservedOrder> orders;
+  for (const auto& first : rows) {
+    if (first.integrator == Integrator::adaptive) continue;
+    bool seen = false;
+    for (const auto& o : orders)
+      seen = seen || (o.integrator == first.integrator && o.curl_mode == first.curl_mode && o.size == first.size);
+    if (seen) continue;
+    double n = 0, sx = 0, sy = 0, sxx = 0, sxy = 0;
+    for (const auto& r : rows)
+      if (r.integrator == first.integrator && r.curl_mode == first.curl_mode && r.size == first.size &&
+          r.warp_err_rms > floor && r.steps > 0) {
+        const double x = std::log(static_cast<double>(r.steps)), y = std::log(r.warp_err_rms);
+        n += 1;
+        sx += x;
+        sy += y;
+        sxx += x * x;
+        sxy += x * y;
+      }
+    const double spread = n * sxx - sx * sx;
+    if (n < 2 || !(spread > 0)) continue;
+    orders.push_back({first.integrator, first.curl_mode, first.size, -(n * sxy - sx * sy) / spread, static_cast<int>(n)});
+  }
+  return orders;
+}
+
+std::vector<Comparison> compare_with_default(const std::vector<SweepRow>& rows, CurlMode baseline_mode) {
   std::vector<int> sizes;
   for (const auto& r : rows)
     if (std::find(sizes.begin(), sizes.end(), r.size) == sizes.end()) sizes.push_back(r.size);
@@ -296,14 +325,15 @@ std::vector<Comparison> compare_with_default(const std::vector<SweepRow>& rows) 
   for (int size : sizes) {
     Comparison c;
     c.size = size;
+    c.baseline_mode = baseline_mode;
     for (const auto& r : rows)
-      if (r.size == size && r.integrator == Integrator::euler && r.curl_mode == CurlMode::sampled && r.steps == 50) {
+      if (r.size == size && r.integrator == Integrator::euler && r.curl_mode == baseline_mode && r.steps == 50) {
         c.baseline = r;
         c.has_baseline = true;
       }
     if (c.has_baseline) {
       for (const auto& r : rows) {
-        if (r.size != size || (r.integrator == Integrator::euler && r.curl_mode == CurlMode::sampled && r.steps == 50))
+        if (r.size != size || (r.integrator == Integrator::euler && r.curl_mode == baseline_mode && r.steps == 50))
           continue;
         if (r.warp_err_rms <= c.baseline.warp_err_rms && (!c.has_equal_error || r.time_ms < c.equal_error.time_ms)) {
           c.equal_error = r;
@@ -459,7 +489,19 @@ std::string summary_markdown(const SweepResult& result, const SweepOptions& opti
                           : "in wall-clock time")
     << "; errors are great-circle distances (radians) of the warped sample points from the reference, and "
        "differences of the cover there.\n\n";
-  s << "## Against the default (euler, 50 steps, sampled curl)\n\n";
+  s << "## Observed orders\n\n";
+  s << "Minus the least-squares slope of log(warp rms error) against log(steps), over the runs whose error "
+       "exceeds "
+    << format("%.0e", order_error_floor)
+    << " rad (below it float rounding sets the error). The sampled curl is bilinear, only continuous: its "
+       "error levels off at the sampling error of the size.\n\n| integrator | curl | size | order | runs |\n"
+       "|---|---|---|---|---|\n";
+  for (const auto& o : result.orders) {
+    std::snprintf(line, sizeof line, "| %s | %s | %d | %.2f | %d |\n", integrator_name(o.integrator),
+                  curl_mode_name(o.curl_mode), o.size, o.order, o.runs);
+    s << line;
+  }
+  s << "\n## Against euler with 50 steps (sfsim's scheme), sampled and procedural curl\n\n";
   s << "| size | default time ms | default warp rms | equal error: fastest run | time ms | speed-up | equal time: "
        "most accurate run | warp rms | error ratio |\n|---|---|---|---|---|---|---|---|---|\n";
   auto name = [](const SweepRow& r) {
@@ -476,8 +518,8 @@ std::string summary_markdown(const SweepResult& result, const SweepOptions& opti
       s << "| " << c.size << " | no default run in the sweep | | | | | | | |\n";
       continue;
     }
-    std::snprintf(line, sizeof line, "| %d | %.1f | %.3e | %s | %s | %s | %s | %s | %s |\n", c.size, c.baseline.time_ms,
-                  c.baseline.warp_err_rms, c.has_equal_error ? name(c.equal_error).c_str() : "none",
+    std::snprintf(line, sizeof line, "| %d %s | %.1f | %.3e | %s | %s | %s | %s | %s | %s |\n", c.size, curl_mode_name(c.baseline_mode),
+                  c.baseline.time_ms, c.baseline.warp_err_rms, c.has_equal_error ? name(c.equal_error).c_str() : "none",
                   c.has_equal_error ? format("%.1f", c.equal_error.time_ms).c_str() : "-",
                   c.has_equal_error ? format("%.2fx", c.speedup).c_str() : "-",
                   c.has_equal_time ? name(c.equal_time).c_str() : "none",

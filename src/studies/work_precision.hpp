@@ -66,9 +66,11 @@ struct SkippedRun {
   double predicted_ms;
 };
 
-// A comparison with the default (Euler, 50 steps, sampled curl) at one size.
+// A comparison with Euler, 50 steps (sfsim's scheme) at one size, with the sampled curl or,
+// with the same velocity as the default, the procedural one.
 struct Comparison {
   int size = 0;
+  CurlMode baseline_mode = CurlMode::sampled;
   bool has_baseline = false;
   SweepRow baseline;
   bool has_equal_error = false;  // the fastest run with warp_err_rms <= the baseline's
@@ -79,8 +81,23 @@ struct Comparison {
   double error_ratio = 0.0;      // baseline warp_err_rms / its warp_err_rms
 };
 
+// The observed order of a fixed-step scheme: minus the least-squares slope of log(warp_err_rms)
+// against log(steps) over its runs at one size and curl mode whose error lies above `floor`
+// (below it float rounding, not the step, sets the error).
+struct ObservedOrder {
+  Integrator integrator = Integrator::euler;
+  CurlMode curl_mode = CurlMode::sampled;
+  int size = 0;
+  double order = 0.0;
+  int runs = 0;  // runs in the fit (at least 2)
+};
+// The warp's float rounding: about 1e-7 rad per unit of flow (the RK4 errors level off there).
+constexpr double order_error_floor = 1e-6;
+std::vector<ObservedOrder> observed_orders(const std::vector<SweepRow>& rows, double floor = order_error_floor);
+
 struct SweepResult {
   std::vector<SweepRow> rows;
+  std::vector<ObservedOrder> orders;
   std::vector<SkippedRun> skipped;
   std::vector<Comparison> comparisons;
   int samples = 0;
@@ -100,7 +117,7 @@ struct SweepResult {
 SweepResult run_sweep(const SweepOptions& options, const std::function<void(const std::string&)>& progress,
                       const std::function<void(int)>& advance = {});
 
-std::vector<Comparison> compare_with_default(const std::vector<SweepRow>& rows);
+std::vector<Comparison> compare_with_default(const std::vector<SweepRow>& rows, CurlMode baseline_mode = CurlMode::sampled);
 
 // error_vs_runtime.csv: integrator, curl_mode, size, steps, time_ms, warp_err_rms, warp_err_max,
 // cover_err_rms, cover_err_max.

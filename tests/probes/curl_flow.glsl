@@ -17,6 +17,7 @@ CurlParams curl_flow_probe_params(mat4 x) {
   c.prevailing = x[3].x;
   c.mix_frequency = x[3].y;
   c.strength = x[3].z;
+  c.smoothing = int(x[0].x) == 0 ? 0.3f : 0.0f;  // function 0: the smooth potential, 1: classic F1
   return c;
 }
 vec4 probe_curl_flow(mat4 x) {

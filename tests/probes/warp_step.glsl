@@ -22,6 +22,7 @@ CurlParams warp_probe_curl() {
   c.prevailing = 0.5f;
   c.mix_frequency = 2.5f;
   c.strength = 0.5f;
+  c.smoothing = 0.0f;  // the classic potential these cases were set up with
   return c;
 }
 #ifdef __cplusplus

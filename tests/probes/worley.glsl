@@ -14,5 +14,6 @@ vec4 probe_worley(mat4 x) {
     worley_candidate(ivec3(0), ivec3(int(x[0].z), int(x[0].w), 1), vec3(x[1]), period, key, best, best_delta);
     return vec4(best_delta, best);
   }
+  if (f == 4) return smooth_worley(vec3(x[1]), period, key, x[0].y);
   return worley_f1(vec3(x[1]), period, key);
 }

@@ -10,5 +10,6 @@ vec4 probe_worley_fbm(mat4 x) {
   params.gain = x[2].w;
   params.seed = uint(x[3].x);
   params.period = ivec3(vec3(x[3].y, x[3].z, x[3].w));
+  if (x[0].x > 0.5f) return smooth_worley_fbm(vec3(x[1]), params, x[0].y);
   return inverted_worley_fbm(vec3(x[1]), params);
 }
