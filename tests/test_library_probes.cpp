@@ -659,6 +659,15 @@ TEST_CASE("cloud_march.glsl on the GPU agrees with the CPU", "[probe][march]") {
   // the rays here rise at least 0.2 rad (sin > 0.198).
   const float crossing = float(test::kPosition / 0.198);
 
+  // Baked fields: a texture coordinate of up to 320 texels rounds by 2^-24 x 320 x 2 texels on
+  // each of 3 axes, each moving a channel by at most its largest texel step (the standardised
+  // G3 channel's steps: max_texel_step_of(.., 2)); G3's normal_cdf has slope <= 0.4 and adds
+  // kTranscendental. Webanck's shape and detail chain up to 4 fields through Hermite steps of
+  // slope <= 1.5 / 0.2 and products of factors <= 2: 8 x 7.5 x that.
+  const float texel_rounding = 3 * 2 * 320 * kUlp;
+  const float baked = texel_rounding * test::max_texel_step_of(sources.noise, 2) + kTranscendental +
+                      texel_rounding * test::max_texel_step_of(sources.noise, 3);
+  const float webanck = 8 * 7.5f * baked;
   Random r(18);
   std::vector<Case> cases;
   auto relative = [&](const mat4& x, float tolerance) {
@@ -683,6 +692,12 @@ TEST_CASE("cloud_march.glsl on the GPU agrees with the CPU", "[probe][march]") {
     cases.push_back(relative(arguments(6, vec4(0, 150000.0f, r(0.0f, 1.0f), 0), vec4(0), d), march));
     cases.push_back(relative(arguments(7, vec4(0), vec4(0), vec4(0), pixel), march));
     cases.push_back({arguments(8, vec4(float(65535 + k - 6), 0, 0, 0)), kExact});
+    // Baked Webanck fields at p_n within 0.2 (frequencies up to 400: texel coordinates below
+    // 0.2 x 400 / 4 x 16 = 320, whose rounding moves a lookup by kPosition-like amounts).
+    const vec4 pn(r(0.0f, 0.2f), r(0.0f, 0.2f), r(0.0f, 0.03f), 0.0f);
+    cases.push_back({arguments(9, vec4(float(k % 14), r(10.0f, 400.0f), r(-1.0f, 3.0f), 0), pn), baked});
+    cases.push_back({arguments(10, vec4(float(layer), 0, float(k % 3), 0), pn, vec4(0), vec4(r(0.0f, 1.0f), r(0.2f, 0.9f), r(-2.0f, 2.0f), 0)),
+                     webanck});
   }
   compare("cloud_march", cpu, cases);
   glDeleteTextures(1, &weather_texture);

@@ -173,7 +173,7 @@ int run_render(const std::vector<std::string>& arguments) {
     const io::FloatCache cache(cache_directory);
     const std::string key = "noise_volume size " + std::to_string(settings.noise_size) + " seed " +
                             std::to_string(settings.seed) + " " + render::NoiseVolume::recipe_key();
-    const std::size_t count = 2 * static_cast<std::size_t>(settings.noise_size) * settings.noise_size * settings.noise_size;
+    const std::size_t count = render::NoiseVolume::channels * static_cast<std::size_t>(settings.noise_size) * settings.noise_size * settings.noise_size;
     const double ms = gpu::time_pass([&] {
       if (auto values = cache.load(key, count)) {
         noise = std::make_unique<render::NoiseVolume>(settings.noise_size, settings.seed, *values);
