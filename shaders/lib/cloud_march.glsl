@@ -258,6 +258,16 @@ struct CloudMarch {
   int loop_count;
 };
 
+// The march start's offset in [0, 1) of a pixel in a frame: Jimenez's interleaved gradient
+// noise ("Next Generation Post Processing in Call of Duty: Advanced Warfare", SIGGRAPH 2014),
+// fract(52.9829189 fract(0.06711056 x + 0.00583715 y)), whose neighbouring pixels take offsets
+// far apart (low-frequency error becomes fine grain that a few frames or a blur average out),
+// plus frame x (golden ratio - 1), an additive recurrence that fills [0, 1) evenly.
+float march_jitter(ivec2 pixel, int frame) {
+  float ign = fract(52.9829189f * fract(0.06711056f * float(pixel.x) + 0.00583715f * float(pixel.y)));
+  return fract(ign + 0.618034f * float(frame));
+}
+
 // Marches the layers along the unit view direction d. jitter in [0, 1): the offset of the
 // samples within their steps.
 CloudMarch march_clouds(vec3 d, vec3 centre, float cloud_limit, float jitter, IN(MarchParams) m MARCH_SOURCES_PARAM) {
@@ -343,8 +353,9 @@ vec4 render_pixel(ivec2 pixel, ivec2 size, IN(MarchParams) m, OUT(int) loop_coun
   float ray_end = hits_ground ? ground.x : max(top.y, 0.0f);
   float cloud_limit = min(ray_end, m.max_distance);
 
-  // A fixed per-pixel offset of the samples trades banding for noise, the same on every run.
-  float jitter = hash_to_unit3(pcg3d(uvec3(uvec2(pixel), 7u))).x;
+  // A per-pixel offset of the samples trades banding for noise; each frame of an accumulation
+  // moves it on by the golden ratio, so N frames spread every pixel's offsets evenly.
+  float jitter = march_jitter(pixel, m.frame);
   CloudMarch clouds = march_clouds(d, centre, cloud_limit, jitter, m MARCH_SOURCES_ARG);
   // The sky's loops (a sun transmittance per step) and the ground's.
   loop_count = clouds.loop_count + 17 * m.sky_steps + 16;

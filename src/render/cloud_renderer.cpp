@@ -271,9 +271,12 @@ RenderResult render_clouds(const Camera& camera, const std::vector<regional::Clo
   result.sun_direction = sun_direction_enu(unix_seconds, camera.latitude_deg, camera.longitude_deg, &result.sun_elevation_deg);
 
   gpu::Texture image = gpu::Texture::plane(camera.width, camera.height, GL_RGBA32F);
+  // Frames of an accumulation, each with its own jitter of the march start, averaged.
+  std::vector<double> sum;
   timed("clouds", [&] {
     gpu::ComputeProgram program("render/clouds.comp");
-    glsl::set_uniform(program, "u_march", march_params(camera, layers, field, unix_seconds, settings, wind_towards, wind_speed));
+    glsl::MarchParams params = march_params(camera, layers, field, unix_seconds, settings, wind_towards, wind_speed);
+    glsl::set_uniform(program, "u_march", params);
     for (const auto* l : active) result.passes.push_back(std::string("march layer ") + regional::cloud_type_name(l->type));
     image.bind_image(0, GL_WRITE_ONLY);
     glBindTextureUnit(1, noise != nullptr ? noise->texture() : 0);
@@ -283,14 +286,30 @@ RenderResult render_clouds(const Camera& camera, const std::vector<regional::Clo
     glCreateBuffers(1, &guard);
     glNamedBufferStorage(guard, sizeof zero, &zero, GL_MAP_READ_BIT);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, guard);
-    program.dispatch_covering(camera.width, camera.height, 1);
-    gpu::image_barrier();
+    const int frames = std::max(settings.frames, 1);
+    for (int frame = 0; frame < frames; ++frame) {
+      program.set("u_march.frame", frame);
+      program.dispatch_covering(camera.width, camera.height, 1);
+      gpu::image_barrier();
+      if (frames > 1) {
+        const std::vector<float> pixels = image.read();
+        sum.resize(pixels.size(), 0.0);
+        for (size_t k = 0; k < pixels.size(); ++k) sum[k] += pixels[k];
+      }
+    }
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
     glGetNamedBufferSubData(guard, 0, sizeof result.loop_limited_pixels, &result.loop_limited_pixels);
     glDeleteBuffers(1, &guard);
   });
   result.passes.push_back("sky");
-  result.radiance = {camera.width, camera.height, 4, image.read()};
+  if (sum.empty()) {
+    result.radiance = {camera.width, camera.height, 4, image.read()};
+  } else {
+    std::vector<float> mean(sum.size());
+    for (size_t k = 0; k < sum.size(); ++k) mean[k] = static_cast<float>(sum[k] / std::max(settings.frames, 1));
+    result.radiance = {camera.width, camera.height, 4, std::move(mean)};
+    result.passes.push_back("accumulate " + std::to_string(settings.frames) + " frames");
+  }
   glDeleteTextures(1, &weather);
   return result;
 }

@@ -26,6 +26,7 @@ struct RenderSettings {
   int view_steps = 48;      // samples per layer interval along the view ray
   int light_steps = 12;     // samples towards the sun per cloud sample
   int sky_steps = 16;       // samples of the clear-sky integral
+  int frames = 1;           // frames averaged, each with its own jitter of the march start
   double max_distance_m = 150000;
   std::uint32_t seed = 1;
   int noise_size = 64;      // texels per side of the noise volume

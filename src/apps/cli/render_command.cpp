@@ -70,6 +70,8 @@ int run_render(const std::vector<std::string>& arguments) {
   std::uint32_t seed = scene.seed;
   options.bind(s::view_steps, &view_steps);
   options.bind(s::light_steps, &light_steps);
+  int frames = scene.frames;
+  options.bind(s::frames, &frames);
   options.bind(s::exposure, &exposure);
   options.bind(s::seed, &seed);
   options.bind(s::scene_path, &scene_file);
@@ -104,6 +106,7 @@ int run_render(const std::vector<std::string>& arguments) {
   if (options.given(s::exposure)) scene.exposure = exposure;
   if (options.given(s::view_steps)) scene.view_steps = view_steps;
   if (options.given(s::light_steps)) scene.light_steps = light_steps;
+  if (options.given(s::frames)) scene.frames = frames;
   if (options.given(s::seed)) scene.seed = seed;
   if (!time.empty()) {
     scene.time = time;
