@@ -698,6 +698,10 @@ TEST_CASE("cloud_march.glsl on the GPU agrees with the CPU", "[probe][march]") {
     cases.push_back({arguments(9, vec4(float(k % 14), r(10.0f, 400.0f), r(-1.0f, 3.0f), 0), pn), baked});
     cases.push_back({arguments(10, vec4(float(layer), 0, float(k % 3), 0), pn, vec4(0), vec4(r(0.0f, 1.0f), r(0.2f, 0.9f), r(-2.0f, 2.0f), 0)),
                      webanck});
+    // Shadows from the ground (all layers) or from the cumulus (the alto above), and jitters.
+    cases.push_back(relative(arguments(11, vec4(k % 2 ? -1.0f : 0.0f, k % 2 ? -1.0e30f : 3000.0f, 0, 0),
+                                       vec4(p.x, p.y, k % 2 ? -860.0f : altitude - 860.0f, 0), vec4(0), pixel + vec4(0, 0, float(k), 0)),
+                             march));
   }
   compare("cloud_march", cpu, cases);
   glDeleteTextures(1, &weather_texture);

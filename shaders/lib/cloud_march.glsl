@@ -179,7 +179,7 @@ ShapeSample shape_at(vec3 p, vec3 centre, int layer, float footprint, int fields
 float extinction_bound(int layer, IN(ShapeSample) q, IN(MarchParams) m) {
   LayerParams l = m.layers[layer];
   if (webanck_type(l.type)) return q.c <= 0.0f || q.h < 0.0f || q.h > 1.0f ? 0.0f : l.extinction * q.shape * q.gate;
-  return l.extinction * cloud_density(l.type, q.h, q.c, q.shape, 1.0f, l.morph);
+  return l.extinction * cloud_density(l.type, q.h, q.c, q.shape, 1.0f);
 }
 
 float extinction_bound_at(vec3 p, vec3 centre, int layer, float footprint, IN(MarchParams) m MARCH_SOURCES_PARAM) {
@@ -199,7 +199,7 @@ float density_at(vec3 p, vec3 centre, int layer, float footprint, bool fine, IN(
     return l.extinction * max(q.shape - delta, 0.0f) * q.gate;
   }
   float detail = fine ? NOISE_LOD(q.coordinates * 4.0f, q.lod + 2.0f).y : q.detail;
-  return l.extinction * cloud_density(l.type, q.h, q.c, q.shape, mix(q.detail, detail, 0.5f), l.morph);
+  return l.extinction * cloud_density(l.type, q.h, q.c, q.shape, mix(q.detail, detail, 0.5f));
 }
 
 // Optical depth from p towards the sun within the same layer (other layers' shadows are left out).
@@ -210,6 +210,34 @@ float optical_depth_to_sun(vec3 p, vec3 centre, int layer, IN(MarchParams) m MAR
   for (int i = 0; i < m.light_steps; ++i) {
     vec2 s = light_sample(i, m.light_steps, length_to_exit);  // (distance, step), quadratic
     tau += density_at(p + s.x * m.sun, centre, layer, s.y, false, m MARCH_SOURCES_ARG) * s.y;
+  }
+  return tau;
+}
+
+// Samples per layer crossed of a shadow ray (shadow_depth).
+const int SHADOW_STEPS = 6;
+
+// Optical depth from p towards the sun through the layers whose base is at or above min_base,
+// except layer skip (-1: none): the shadows of the layers above on a lower layer and on the
+// ground. SHADOW_STEPS midpoint samples of the light march's density per interval; counts its
+// loop iterations into loop_count.
+float shadow_depth(vec3 p, vec3 centre, int skip, float min_base, INOUT(int) loop_count,
+                   IN(MarchParams) m MARCH_SOURCES_PARAM) {
+  float tau = 0.0f;
+  for (int layer = 0; layer < m.layer_count; ++layer) {
+    LayerParams l = m.layers[layer];
+    if (layer == skip || l.base < min_base) continue;
+    vec4 s = ray_shell(p, m.sun, centre, m.earth_radius + l.base, m.earth_radius + l.top, m.max_distance);
+    for (int k = 0; k < 2; ++k) {
+      float a = max(k == 0 ? s.x : s.z, 0.0f);
+      float b = k == 0 ? s.y : s.w;
+      if (a >= b) continue;
+      float ds = (b - a) / float(SHADOW_STEPS);
+      for (int i = 0; i < SHADOW_STEPS; ++i) {
+        tau += density_at(p + (a + (float(i) + 0.5f) * ds) * m.sun, centre, layer, ds, false, m MARCH_SOURCES_ARG) * ds;
+      }
+      loop_count += SHADOW_STEPS;
+    }
   }
   return tau;
 }
@@ -321,6 +349,8 @@ CloudMarch march_clouds(vec3 d, vec3 centre, float cloud_limit, float jitter, IN
         if (sigma <= 0.0f) continue;
         float h = clamp((length(p - centre) - m.earth_radius - l.base) / (l.top - l.base), 0.0f, 1.0f);
         float tau = m.light_steps > 0 ? optical_depth_to_sun(p, centre, layer, m MARCH_SOURCES_ARG) : 0.0f;
+        // The layers above shade this one (their optical depth joins the scattering octaves).
+        tau += shadow_depth(p, centre, layer, l.top, result.loop_count, m MARCH_SOURCES_ARG);
         result.loop_count += m.light_steps + 3;  // the light march and the scattering octaves
         // Ambient: half the sphere sees the sky (radiance E/pi, dimmer towards the cloud's base),
         // half the ground; isotropic scattering of a radiance field L adds sigma_s L.
@@ -369,8 +399,12 @@ vec4 render_pixel(ivec2 pixel, ivec2 size, IN(MarchParams) m, OUT(int) loop_coun
     // Lambertian ground, albedo 0.15, lit by the sun and the sky.
     vec3 point = origin_from_centre + ray_end * d;
     vec3 normal = normalize(point);
+    // The clouds' shadows: every layer between the ground and the sun.
+    int shadow_loops = 0;
+    float shadow = exp(-shadow_depth(ray_end * d, centre, -1, -1.0e30f, shadow_loops, m MARCH_SOURCES_ARG));
+    loop_count += shadow_loops;
     vec3 sun_at_ground = solar_irradiance() * transmittance_to_space(point, m.sun, m.earth_radius) *
-                         max(dot(normal, m.sun), 0.0f);
+                         max(dot(normal, m.sun), 0.0f) * shadow;
     background = transmittance_total * (0.15f / PI_F) * (sun_at_ground + m.ambient);
   }
   vec3 color = inscatter_split + transmittance_split * clouds.radiance +

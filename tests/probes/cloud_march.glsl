@@ -110,5 +110,11 @@ vec4 probe_cloud_march(mat4 x MARCH_SOURCES_PARAM) {
     webanck_shape(q, m.layers[layer].type, 0.5f, 0.01f, int(x[0].w) MARCH_SOURCES_ARG);
     return vec4(q.shape, q.detail, q.gate, webanck_detail(q, m.layers[layer].type, 0.5f, 0.01f MARCH_SOURCES_ARG));
   }
+  if (f == 11) {
+    // Shadow depth from p (below layer x[0].y's top, min_base x[0].z) and a pixel's jitter.
+    int loops = 0;
+    float tau = shadow_depth(p, centre, layer, footprint, loops, m MARCH_SOURCES_ARG);
+    return vec4(tau, float(loops), march_jitter(ivec2(int(x[3].x), int(x[3].y)), int(x[3].z)), 0.0f);
+  }
   return vec4(loop_limited(int(x[0].y)) ? 1.0f : 0.0f, 0.0f, 0.0f, 0.0f);
 }
