@@ -119,7 +119,7 @@ TEST_CASE("an overcast layer shades the ground below it and no layer shades what
   // profile's six midpoint samples averaging 0.753: optical depth >= 2e-2 x 600 x 0.753 x 0.7 =
   // 6.3 straight up, more along the slanted sun ray.
   CHECK(glsl::shadow_depth(ground, centre, -1, -1.0e30f, loops, params, sources) >= 2e-2 * 600 * 0.753 * 0.7);
-  CHECK(loops == glsl::SHADOW_STEPS);
+  CHECK(loops == params.layer_count + 2 + glsl::SHADOW_STEPS);  // the layer loop, the two intervals, the samples
   // Only layers with a base at or above 2100 m shade a point at the layer's top: none here.
   CHECK(glsl::shadow_depth(ground, centre, -1, 2100.0f, loops, params, sources) == 0.0f);
   CHECK(glsl::shadow_depth(ground, centre, 0, -1.0e30f, loops, params, sources) == 0.0f);

@@ -218,16 +218,19 @@ float optical_depth_to_sun(vec3 p, vec3 centre, int layer, IN(MarchParams) m MAR
 const int SHADOW_STEPS = 6;
 
 // Optical depth from p towards the sun through the layers whose base is at or above min_base,
-// except layer skip (-1: none): the shadows of the layers above on a lower layer and on the
-// ground. SHADOW_STEPS midpoint samples of the light march's density per interval; counts its
+// except layer skip (-1: none): the clouds' shadows on the ground. (Called per cloud sample for
+// the shadows of higher layers on lower ones, it made llvmpipe cut loops before the marcher's
+// count reached LOOP_LIMIT, so the loop guard missed them: left out, docs/rendering.md.) SHADOW_STEPS midpoint samples of the light march's density per interval; counts its
 // loop iterations into loop_count.
 float shadow_depth(vec3 p, vec3 centre, int skip, float min_base, INOUT(int) loop_count,
                    IN(MarchParams) m MARCH_SOURCES_PARAM) {
   float tau = 0.0f;
+  loop_count += m.layer_count;  // every iteration of the layer loop counts towards the limit
   for (int layer = 0; layer < m.layer_count; ++layer) {
     LayerParams l = m.layers[layer];
     if (layer == skip || l.base < min_base) continue;
     vec4 s = ray_shell(p, m.sun, centre, m.earth_radius + l.base, m.earth_radius + l.top, m.max_distance);
+    loop_count += 2;
     for (int k = 0; k < 2; ++k) {
       float a = max(k == 0 ? s.x : s.z, 0.0f);
       float b = k == 0 ? s.y : s.w;
@@ -349,8 +352,6 @@ CloudMarch march_clouds(vec3 d, vec3 centre, float cloud_limit, float jitter, IN
         if (sigma <= 0.0f) continue;
         float h = clamp((length(p - centre) - m.earth_radius - l.base) / (l.top - l.base), 0.0f, 1.0f);
         float tau = m.light_steps > 0 ? optical_depth_to_sun(p, centre, layer, m MARCH_SOURCES_ARG) : 0.0f;
-        // The layers above shade this one (their optical depth joins the scattering octaves).
-        tau += shadow_depth(p, centre, layer, l.top, result.loop_count, m MARCH_SOURCES_ARG);
         result.loop_count += m.light_steps + 3;  // the light march and the scattering octaves
         // Ambient: half the sphere sees the sky (radiance E/pi, dimmer towards the cloud's base),
         // half the ground; isotropic scattering of a radiance field L adds sigma_s L.
