@@ -34,20 +34,22 @@ constexpr double kThresholdSlope = 12.5;
 constexpr double kRemapA = 0.6;
 
 // The largest difference between neighbouring texels (along any axis, wrapping) of the noise
-// volume's base level, either channel.
-inline float max_texel_step(const glsl::VolumeSource& volume) {
+// volume's base level in one channel (0 R .. 3 A).
+inline float max_texel_step_of(const glsl::VolumeSource& volume, int channel) {
   const int n = volume.size;
   const auto& v = volume.levels[0];
-  auto at = [&](int i, int j, int k) { return v[(static_cast<size_t>(k % n) * n + j % n) * n + i % n]; };
+  auto at = [&](int i, int j, int k) { return v[(static_cast<size_t>(k % n) * n + j % n) * n + i % n][channel]; };
   float step = 0.0f;
   for (int k = 0; k < n; ++k)
     for (int j = 0; j < n; ++j)
       for (int i = 0; i < n; ++i)
-        for (const glm::vec2& next : {at(i + 1, j, k), at(i, j + 1, k), at(i, j, k + 1)}) {
-          const glm::vec2 d = glm::abs(next - at(i, j, k));
-          step = std::max({step, d.x, d.y});
-        }
+        for (float next : {at(i + 1, j, k), at(i, j + 1, k), at(i, j, k + 1)}) step = std::max(step, std::abs(next - at(i, j, k)));
   return step;
+}
+
+// The same over the shape and detail channels (RG), which the other types read.
+inline float max_texel_step(const glsl::VolumeSource& volume) {
+  return std::max(max_texel_step_of(volume, 0), max_texel_step_of(volume, 1));
 }
 
 // Relative tolerance for layers at least `thickness` thick whose noise repeats vertically every

@@ -98,3 +98,29 @@ TEST_CASE("the marcher on the GPU agrees with its C++ twin pixel by pixel", "[re
     CHECK(limited == static_cast<int>(gpu.loop_limited_pixels));
   }
 }
+
+TEST_CASE("an overcast layer shades the ground below it and no layer shades what lies above it", "[render][shadow]") {
+  test::test_context();
+  const double time = core::parse_utc_time("2026-06-21T11:30Z");  // sun about 66 degrees up
+  const std::vector<CloudLayer> layers = {{CloudType::stratus, CoverageChannel::low, 1500, 2100, 2e-2f, 0, 0, 0, "test"}};
+  WeatherField field{4, 160000.0, {}};
+  for (int c = 0; c < coverage_channels; ++c) field.values.insert(field.values.end(), 16, c == int(CoverageChannel::low) ? 1.0f : 0.0f);
+  render::RenderSettings settings;
+  settings.noise_size = 16;
+  const render::NoiseVolume noise(settings.noise_size, settings.seed);
+  glsl::MarchSources sources;
+  sources.noise = noise.host_copy();
+  sources.weather = {field.size, coverage_channels, field.values.data()};
+  const glsl::MarchParams params = render::march_params(camera(false), layers, field, time, settings);
+  const glm::vec3 centre(0.0f, 0.0f, -(params.earth_radius + params.camera_altitude));
+  const glm::vec3 ground(0.0f, 0.0f, -params.camera_altitude);
+  int loops = 0;
+  // Overcast stratus (sheet amount 1) 600 m thick, extinction 2e-2 /m, texture >= 0.7, the
+  // profile's six midpoint samples averaging 0.753: optical depth >= 2e-2 x 600 x 0.753 x 0.7 =
+  // 6.3 straight up, more along the slanted sun ray.
+  CHECK(glsl::shadow_depth(ground, centre, -1, -1.0e30f, loops, params, sources) >= 2e-2 * 600 * 0.753 * 0.7);
+  CHECK(loops == params.layer_count + 2 + glsl::SHADOW_STEPS);  // the layer loop, the two intervals, the samples
+  // Only layers with a base at or above 2100 m shade a point at the layer's top: none here.
+  CHECK(glsl::shadow_depth(ground, centre, -1, 2100.0f, loops, params, sources) == 0.0f);
+  CHECK(glsl::shadow_depth(ground, centre, 0, -1.0e30f, loops, params, sources) == 0.0f);
+}

@@ -39,6 +39,7 @@ namespace nephele::glsl {
 #include "probes/ray_sphere.glsl"
 #include "probes/tileable_noise.glsl"
 #include "probes/warp_step.glsl"
+#include "probes/webanck_forms.glsl"
 #include "probes/worley.glsl"
 #include "probes/worley_fbm.glsl"
 }  // namespace nephele::glsl
@@ -441,6 +442,44 @@ TEST_CASE("tileable_noise.glsl on the GPU agrees with the CPU", "[probe]") {
   compare("tileable_noise", probe_tileable_noise, cases);
 }
 
+// An exact Webanck field (webanck_forms.glsl) at points whose lattice coordinates at octave 0
+// stay below x0: octave k's coordinates, x0 2.02^k, may each move by half an ulp (2^-24 of
+// twice the value) where the GPU fuses p f differently, changing that octave by kPerlinSlope per
+// unit on 3 axes; weighted by 0.52^k / sum a (>= 2.07) the octaves add
+// 3 kPerlinSlope 2^-24 x0 sum_k 1.0504^k / 2.07 <= 3 x 8.5 x 2^-24 x0 x 9.6 / 2.07; G3's map
+// divides by sigma_m >= 0.152 and multiplies by Phi' <= 0.4 (x 2.7); on top, kPerlin per octave
+// and kTranscendental for the exp of the CDF.
+float webanck_field_tolerance(float x0) {
+  return 2.7f * (3.0f * kPerlinSlope * kUlp * x0 * 9.6f / 2.07f + kPerlin) + kTranscendental;
+}
+
+TEST_CASE("webanck_forms.glsl on the GPU agrees with the CPU", "[probe]") {
+  Random r(23);
+  std::vector<Case> cases;
+  for (int k = 0; k < 12; ++k) {
+    const float z = r(-4.0f, 4.0f);
+    cases.push_back({arguments(0, vec4(z, float(1 + k % 8), r(0.3f, 0.7f), 0), vec4(r(0.1f, 1.0f), 0, 0, 0)), kTranscendental});
+    cases.push_back({arguments(1, vec4(float(1 + k % 8), 0.52f, 2.02f, 0), vec4(r(1.0f, 400.0f), 0, 0, 0), vec4(0, 0, 0, float(k))),
+                     kArithmetic * 400.0f});
+    // G3 and W3 of up to 8 octaves at frequency f on points in [0, 0.05]^3: x0 = 0.05 f.
+    const float frequency = r(10.0f, 400.0f);
+    const vec4 point(r.v(0.0f, 0.05f).x, r.v(0.0f, 0.05f).y, r(0.0f, 0.05f), frequency);
+    cases.push_back({arguments(2, vec4(float(1 + k % 8), 0.52f, 2.02f, 0), point, vec4(0, 0, 0, float(k))),
+                     webanck_field_tolerance(0.05f * frequency)});
+    const vec2 wind = normalize(vec2(r(-1.0f, 1.0f), r(-1.0f, 1.0f)) + vec2(1e-3f));
+    cases.push_back({arguments(3, vec4(0.0f), vec4(r.v(-5.0e4f, 5.0e4f)), vec4(wind, 0, 0)), kArithmetic});
+    cases.push_back({arguments(4, vec4(r(0.0f, 1.0f), r(0.0f, 1.0f), r(0.0f, 1.0f), 0), vec4(r(0.0f, 1.0f), r(-0.2f, 0.2f), 0, 0)),
+                     kArithmetic});
+    cases.push_back({arguments(5, vec4(r(-0.2f, 0.2f), 0, 0, 0), r.v(0.0f, 1.0f), r.v(0.0f, 1.0f)), kArithmetic});
+    // The exact fields: points in [0, 0.05]^3 and tau <= 0.01 keep p_n + 8 q below 0.13, so
+    // x0 <= 0.13 x 400 (the highest base frequency).
+    const vec4 pn(r(0.0f, 0.05f), r(0.0f, 0.05f), r(0.0f, 0.05f), 0.0f);
+    cases.push_back({arguments(6 + (k % 2), vec4(r(0.0f, 0.01f), float(k / 2 % 2), 0, 0), pn, vec4(0, 0, 0, float(k))),
+                     webanck_field_tolerance(0.13f * 400.0f)});
+  }
+  compare("webanck_forms", probe_webanck_forms, cases);
+}
+
 TEST_CASE("curl_flow.glsl on the GPU agrees with the CPU", "[probe]") {
   Random r(20);
   std::vector<Case> cases;
@@ -631,6 +670,15 @@ TEST_CASE("cloud_march.glsl on the GPU agrees with the CPU", "[probe][march]") {
   // the rays here rise at least 0.2 rad (sin > 0.198).
   const float crossing = float(test::kPosition / 0.198);
 
+  // Baked fields: a texture coordinate of up to 320 texels rounds by 2^-24 x 320 x 2 texels on
+  // each of 3 axes, each moving a channel by at most its largest texel step (the standardised
+  // G3 channel's steps: max_texel_step_of(.., 2)); G3's normal_cdf has slope <= 0.4 and adds
+  // kTranscendental. Webanck's shape and detail chain up to 4 fields through Hermite steps of
+  // slope <= 1.5 / 0.2 and products of factors <= 2: 8 x 7.5 x that.
+  const float texel_rounding = 3 * 2 * 320 * kUlp;
+  const float baked = texel_rounding * test::max_texel_step_of(sources.noise, 2) + kTranscendental +
+                      texel_rounding * test::max_texel_step_of(sources.noise, 3);
+  const float webanck = 8 * 7.5f * baked;
   Random r(18);
   std::vector<Case> cases;
   auto relative = [&](const mat4& x, float tolerance) {
@@ -655,6 +703,16 @@ TEST_CASE("cloud_march.glsl on the GPU agrees with the CPU", "[probe][march]") {
     cases.push_back(relative(arguments(6, vec4(0, 150000.0f, r(0.0f, 1.0f), 0), vec4(0), d), march));
     cases.push_back(relative(arguments(7, vec4(0), vec4(0), vec4(0), pixel), march));
     cases.push_back({arguments(8, vec4(float(65535 + k - 6), 0, 0, 0)), kExact});
+    // Baked Webanck fields at p_n within 0.2 (frequencies up to 400: texel coordinates below
+    // 0.2 x 400 / 4 x 16 = 320, whose rounding moves a lookup by kPosition-like amounts).
+    const vec4 pn(r(0.0f, 0.2f), r(0.0f, 0.2f), r(0.0f, 0.03f), 0.0f);
+    cases.push_back({arguments(9, vec4(float(k % 14), r(10.0f, 400.0f), r(-1.0f, 3.0f), 0), pn), baked});
+    cases.push_back({arguments(10, vec4(float(layer), 0, float(k % 3), 0), pn, vec4(0), vec4(r(0.0f, 1.0f), r(0.2f, 0.9f), r(-2.0f, 2.0f), 0)),
+                     webanck});
+    // Shadows from the ground (all layers) or from the cumulus (the alto above), and jitters.
+    cases.push_back(relative(arguments(11, vec4(k % 2 ? -1.0f : 0.0f, k % 2 ? -1.0e30f : 3000.0f, 0, 0),
+                                       vec4(p.x, p.y, k % 2 ? -860.0f : altitude - 860.0f, 0), vec4(0), pixel + vec4(0, 0, float(k), 0)),
+                             march));
   }
   compare("cloud_march", cpu, cases);
   glDeleteTextures(1, &weather_texture);

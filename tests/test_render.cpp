@@ -249,3 +249,37 @@ TEST_CASE("renders that share a noise volume give the image of their own volume 
   CHECK_THROWS_AS(render::render_clouds(small_camera(), layers, field, noon, other_seed, {0, 1}, 0, &noise),
                   std::logic_error);
 }
+
+TEST_CASE("averaging frames with shifted march jitter brings the image closer to the converged one", "[render][frames]") {
+  test::test_context();
+  std::vector<CloudLayer> layers = {{CloudType::cumulus, CoverageChannel::low, 1500, 3000, 1e-2f, 0, 0, 0, "test"}};
+  render::Camera camera = small_camera(20);
+  camera.width = 48;
+  camera.height = 27;
+  const WeatherField field = uniform_field(0.6f, 0, 0);
+  render::RenderSettings coarse = quick();
+  coarse.view_steps = 4;
+  render::RenderSettings reference = coarse;
+  reference.view_steps = 96;
+  reference.light_steps = 3;
+  const render::NoiseVolume noise(coarse.noise_size, coarse.seed);
+  const auto converged = render::render_clouds(camera, layers, field, noon, reference, {0, 1}, 0, &noise).radiance.pixels;
+  auto rms = [&](int frames) {
+    render::RenderSettings s = coarse;
+    s.frames = frames;
+    const auto r = render::render_clouds(camera, layers, field, noon, s, {0, 1}, 0, &noise);
+    if (frames > 1) CHECK(contains(r.passes, "accumulate " + std::to_string(frames) + " frames"));
+    double sum = 0;
+    for (size_t k = 0; k < converged.size(); ++k)
+      if (k % 4 != 3) sum += std::pow(r.radiance.pixels[k] - converged[k], 2);
+    return std::sqrt(sum / (converged.size() * 3 / 4));
+  };
+  // The marcher's 4 coarse steps misplace the cloud edges by up to a step; N frames spread each
+  // pixel's sample offsets over [0, 1) (golden-ratio recurrence), so the average approaches the
+  // integral over the offsets, which the 96-step reference approximates: error must fall.
+  const double one = rms(1), four = rms(4), sixteen = rms(16);
+  INFO("RMS radiance error: 1 frame " << one << ", 4 frames " << four << ", 16 frames " << sixteen);
+  CHECK(one > 0.0);
+  CHECK(four < one);
+  CHECK(sixteen < four);
+}

@@ -2,7 +2,7 @@
 // local coverage and two noise values (a shape noise and a detail noise, both inverted Worley
 // fBm in [0, 1]). In the style of Webanck et al., "Procedural Cloudscapes" (Computer Graphics
 // Forum 37(2), 2018): coverage thresholds, Hermite steps H and a vertical profile per type;
-// see docs/layers.md for each formula and where it departs from the paper.
+// see docs/layers.md. Cumulus and alto have the paper's exact forms in webanck_forms.glsl.
 #ifndef NEPHELE_CLOUD_DENSITY_GLSL
 #define NEPHELE_CLOUD_DENSITY_GLSL
 #include "prelude.glsl"
@@ -28,7 +28,7 @@ float sheet_profile(float h, float soft) {
   return hermite_step(0.0f, soft, h) * (1.0f - hermite_step(1.0f - soft, 1.0f, h));
 }
 
-// Heaped clouds (cumulus, cirrocumulus, the cells of altocumulus): the shape noise must exceed
+// Heaped clouds (cirrocumulus, the cells of stratocumulus): the shape noise must exceed
 // the clear-sky fraction 1 - c, more so higher up (rounded tops, flat bases); the detail noise
 // erodes the edges.
 float heaped_density(float h, float c, float shape, float detail, float top_rounding) {
@@ -43,30 +43,16 @@ float sheet_density(float h, float c, float shape, float detail) {
   return amount * sheet_profile(h, 0.25f) * (0.7f + 0.3f * detail);
 }
 
-// The altostratus-altocumulus family in the form of Webanck et al.'s supplementary material:
-// rho = max(0, phi - delta) with phi = mix(H(0.43, 1, n1), 1, k) and
-// delta = mix(mix(n2, 1 - n3, 1/4), 0, k), so k = 1 gives a uniform sheet (altostratus) and
-// k = 0 cells carved out of a thresholded noise (altocumulus). Here k = 1 - morph, the threshold
-// 0.43 becomes the clear fraction 1 - c (0.43 is c = 0.57), both erosion noises are the detail
-// noise taken as 1 - e (so that density grows with e, which the renderer's bound needs), and
-// the sheet keeps the weather's coverage through the sheet amount (docs/layers.md).
-float alto_density(float h, float c, float shape, float detail, float morph) {
-  float k = 1.0f - morph;
-  float phi = mix(hermite_step(1.0f - c, 1.0f, shape), 1.0f, k);
-  float delta = (1.0f - k) * (1.0f - detail);
-  float sheet_amount = hermite_step(0.15f, 0.55f, c + 0.5f * (shape - 0.5f));
-  return max(phi - delta, 0.0f) * mix(1.0f, sheet_amount, k) * sheet_profile(h, 0.25f);
-}
-
-float cloud_density(int type, float h, float c, float shape, float detail, float morph) {
+float cloud_density(int type, float h, float c, float shape, float detail) {
   if (c <= 0.0f || h < 0.0f || h > 1.0f) return 0.0f;
-  if (type == CLOUD_CUMULUS) return heaped_density(h, c, shape, detail, 0.6f);
+  // Cumulus and alto have Webanck et al.'s exact forms (webanck_forms.glsl), which the marcher
+  // evaluates on their own fields; they have no density of this kind.
+  if (type == CLOUD_CUMULUS || type == CLOUD_ALTO) return 0.0f;
   if (type == CLOUD_STRATOCUMULUS) {
     // Flattened heaps that merge into a sheet as coverage grows.
     return max(heaped_density(h, c, shape, detail, 0.3f), sheet_density(h, c - 0.3f, shape, detail));
   }
   if (type == CLOUD_STRATUS) return sheet_density(h, c, shape, detail);
-  if (type == CLOUD_ALTO) return alto_density(h, c, shape, detail, morph);
   if (type == CLOUD_CIRRUS) {
     // Fibres: the noise is stretched along the wind by the caller; thin, patchy.
     return c * hermite_step(0.45f, 0.8f, shape * (0.6f + 0.4f * detail)) * sheet_profile(h, 0.4f);

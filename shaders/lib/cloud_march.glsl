@@ -5,8 +5,10 @@
 // two textures are read:
 //   MARCH_SOURCES_PARAM   extra trailing parameter(s) naming the textures (empty in GLSL)
 //   MARCH_SOURCES_ARG     the matching argument(s) (empty in GLSL)
-//   NOISE_LOD(x, lod)     vec4 (RG used) of the noise volume at x (one period per unit,
-//                         repeating): trilinear within and linear between mip levels at lod
+//   NOISE_LOD(x, lod)     vec4 of the noise volume at x (one period per unit, repeating):
+//                         trilinear within and linear between mip levels at lod; RG the
+//                         shape and detail noise, B the standardised gradient-noise octave
+//                         mean behind G3, A the W3 field (render/noise_volume.comp)
 //   WEATHER_COVERAGE(uv, channel)  float: the weather field's channel at uv in [0, 1]^2,
 //                         bilinear, clamped to the edge
 #ifndef NEPHELE_CLOUD_MARCH_GLSL
@@ -15,6 +17,7 @@
 #include "render_types.glsl"
 #include "atmosphere.glsl"
 #include "cloud_density.glsl"
+#include "webanck_forms.glsl"
 #include "hash.glsl"
 #include "ray_sphere.glsl"
 
@@ -47,14 +50,94 @@ float coverage_at(vec3 p, int channel, IN(MarchParams) m MARCH_SOURCES_PARAM) {
 // A layer's shape-noise lookups at a point: the height fraction h in the layer, the coverage c,
 // the shape value (0 outside the layer or where the weather gives no cover) and the base detail
 // value, with the noise coordinates and mip level that a detail lookup goes on with.
+// Webanck's types (cumulus, alto) keep phi in shape, the mean of delta in detail, their
+// envelope in gate and p_n in coordinates; lod is then that of a field of frequency 1.
 struct ShapeSample {
-  float h, c, shape, detail, lod;
+  float h, c, shape, detail, lod, gate;
   vec3 coordinates;
 };
 
+bool webanck_type(int type) { return type == CLOUD_CUMULUS || type == CLOUD_ALTO; }
+
+// Base cells of the baked G3 and W3 fields per period of the noise volume (noise_volume.comp).
+const float BAKED_CELLS = 4.0f;
+
+// A field of base frequency f at p_n from the volume: f p_n / BAKED_CELLS periods, shifted by
+// a fixed offset per field so that the fields read different parts of the volume. lod: that of
+// a field of frequency 1 (log2 of the footprint in texels at f = 1).
+vec4 baked_fields(vec3 pn, float frequency, int field, float lod MARCH_SOURCES_PARAM) {
+  vec3 decorrelate = fract(float(field) * vec3(0.3819660f, 0.6180340f, 0.2360680f));
+  return NOISE_LOD(pn * (frequency / BAKED_CELLS) + decorrelate, max(lod + log2(frequency), 0.0f));
+}
+
+// G3 of the baked standardised octave mean (channel B) and W3 (channel A).
+float baked_g3(vec3 pn, float frequency, int field, float lod MARCH_SOURCES_PARAM) {
+  return normal_cdf(baked_fields(pn, frequency, field, lod MARCH_SOURCES_ARG).z);
+}
+
+float baked_w3(vec3 pn, float frequency, int field, float lod MARCH_SOURCES_PARAM) {
+  return baked_fields(pn, frequency, field, lod MARCH_SOURCES_ARG).w;
+}
+
+// The mean of delta over the fields (E[G3] = 1/2, E[W3] = WEBANCK_W3_MEAN): what the light
+// march subtracts instead of reading the four detail fields.
+const float WEBANCK_W3_MEAN = 0.70f;
+
+// How many of Webanck's shape fields a lookup reads: the bound reads n2 and n3 and takes
+// k2 = 1 (its largest value, so phi can only shrink); the light march takes k2 at the mean of
+// n4 and n5 (1/2: k1 = 1/4, k2 = 7/8); the view samples read all four.
+const int WEBANCK_BOUND = 0;
+const int WEBANCK_LIGHT = 1;
+const int WEBANCK_FULL = 2;
+
+// Webanck's phi from the baked fields, with the weather's coverage c moving the n2 (cumulus) or
+// n1 (alto) window: G3 is close to uniform, so n2 > 0.55 covers 45 % of space; the shift
+// 0.45 - c makes it c (exact paper form at c = 0.45, and for alto at c = 0.57). Cumulus tops are
+// rounded by raising the window with height (0.25 h), ours, not the paper's.
+void webanck_shape(INOUT(ShapeSample) q, int type, float k, float tau, int fields MARCH_SOURCES_PARAM) {
+  vec3 pn = q.coordinates;
+  vec3 offset = vec3(-tau, 0.0f, 0.0f);
+  if (type == CLOUD_CUMULUS) {
+    float n2 = baked_g3(vec3(0.65f * pn.x, pn.y, pn.z) + offset, 15.0f, 2, q.lod MARCH_SOURCES_ARG);
+    float n3 = baked_g3(pn + 2.0f * offset, 40.0f, 3, q.lod MARCH_SOURCES_ARG);
+    float n4 = fields == WEBANCK_BOUND ? 0.0f : 0.5f;
+    float n5 = 0.5f;
+    if (fields == WEBANCK_FULL) {
+      n4 = baked_g3(pn + 2.0f * offset, 40.0f, 4, q.lod MARCH_SOURCES_ARG);
+      n5 = baked_g3(pn + 3.0f * offset, 80.0f, 5, q.lod MARCH_SOURCES_ARG);
+    }
+    q.shape = cumulus_phi(n2, n3, n4, n5, 0.45f - q.c + 0.25f * q.h);
+    q.detail = cumulus_delta(WEBANCK_W3_MEAN, WEBANCK_W3_MEAN, 0.5f, 0.5f);
+    q.gate = hermite_step(0.0f, 0.06f, q.h) * (1.0f - hermite_step(0.95f, 1.0f, q.h));
+  } else {
+    float n1 = baked_g3(vec3(0.35f * pn.x, pn.y, pn.z) + 2.0f * offset, 36.0f, 11, q.lod MARCH_SOURCES_ARG);
+    q.shape = alto_phi(k, n1 + (q.c - 0.57f));  // H(0.43 + s, 1 + s, n1), s = 0.57 - c
+    q.detail = alto_delta(k, 0.5f, WEBANCK_W3_MEAN);
+    // The sheet (k near 1) keeps the weather's coverage, its edges frayed by n1.
+    q.gate = mix(1.0f, hermite_step(0.15f, 0.55f, q.c + 0.5f * (n1 - 0.5f)), k) * sheet_profile(q.h, 0.25f);
+  }
+}
+
+// Webanck's delta from the baked detail fields.
+float webanck_detail(IN(ShapeSample) q, int type, float k, float tau MARCH_SOURCES_PARAM) {
+  vec3 pn = q.coordinates;
+  vec3 offset = vec3(-tau, 0.0f, 0.0f);
+  if (type == CLOUD_CUMULUS) {
+    float n6 = baked_w3(pn + 4.0f * offset, 160.0f, 6, q.lod MARCH_SOURCES_ARG);
+    float n7 = baked_w3(pn + 0.8f * offset, 240.0f, 7, q.lod MARCH_SOURCES_ARG);
+    float n8 = baked_g3(pn + 8.0f * offset, 288.0f, 8, q.lod MARCH_SOURCES_ARG);
+    float n9 = baked_g3(pn + 8.0f * offset, 384.0f, 9, q.lod MARCH_SOURCES_ARG);
+    return cumulus_delta(n6, n7, n8, n9);
+  }
+  float n2 = baked_g3(pn + 8.0f * offset, 96.0f, 12, q.lod MARCH_SOURCES_ARG);
+  float n3 = baked_w3(pn + 8.0f * offset, 400.0f, 13, q.lod MARCH_SOURCES_ARG);
+  return alto_delta(k, n2, n3);
+}
+
 // footprint: the length one sample stands for (the pixel's width at that distance, or the step),
 // which picks the noise volume's mip level so that distant clouds do not alias into speckle.
-ShapeSample shape_at(vec3 p, vec3 centre, int layer, float footprint, IN(MarchParams) m MARCH_SOURCES_PARAM) {
+// fields: WEBANCK_BOUND, _LIGHT or _FULL, how much of the Webanck types' shape to read.
+ShapeSample shape_at(vec3 p, vec3 centre, int layer, float footprint, int fields, IN(MarchParams) m MARCH_SOURCES_PARAM) {
   LayerParams l = m.layers[layer];
   ShapeSample q;
   float altitude = length(p - centre) - m.earth_radius;
@@ -63,8 +146,16 @@ ShapeSample shape_at(vec3 p, vec3 centre, int layer, float footprint, IN(MarchPa
   q.shape = 0.0f;
   q.detail = 0.0f;
   q.lod = 0.0f;
+  q.gate = 1.0f;
   q.coordinates = vec3(0.0f);
   if (q.c <= 0.0f || q.h < 0.0f || q.h > 1.0f) return q;
+  if (webanck_type(l.type)) {
+    // p_n in the wind's frame; tau in units of p_n (the base field n2 drifts with the wind).
+    q.coordinates = webanck_position(vec3(vec2(p), altitude), l.wind);
+    q.lod = log2(max(footprint * (m.noise_texels / (BAKED_CELLS * 108000.0f)), 1.0e-30f));
+    webanck_shape(q, l.type, 1.0f - l.morph, l.noise_offset.x / 108000.0f, fields MARCH_SOURCES_ARG);
+    return q;
+  }
   // Noise coordinates in the wind's frame, moved by the wind's offset (tau).
   vec2 along_across = vec2(dot(vec2(p), l.wind), dot(vec2(p), vec2(-l.wind.y, l.wind.x))) - l.noise_offset;
   vec2 period = noise_period(l.type);
@@ -87,22 +178,28 @@ ShapeSample shape_at(vec3 p, vec3 centre, int layer, float footprint, IN(MarchPa
 // (cloud_density is zero outside the layer and without cover.)
 float extinction_bound(int layer, IN(ShapeSample) q, IN(MarchParams) m) {
   LayerParams l = m.layers[layer];
-  return l.extinction * cloud_density(l.type, q.h, q.c, q.shape, 1.0f, l.morph);
+  if (webanck_type(l.type)) return q.c <= 0.0f || q.h < 0.0f || q.h > 1.0f ? 0.0f : l.extinction * q.shape * q.gate;
+  return l.extinction * cloud_density(l.type, q.h, q.c, q.shape, 1.0f);
 }
 
 float extinction_bound_at(vec3 p, vec3 centre, int layer, float footprint, IN(MarchParams) m MARCH_SOURCES_PARAM) {
-  return extinction_bound(layer, shape_at(p, centre, layer, footprint, m MARCH_SOURCES_ARG), m);
+  return extinction_bound(layer, shape_at(p, centre, layer, footprint, WEBANCK_BOUND, m MARCH_SOURCES_ARG), m);
 }
 
 // Extinction (1/m) of a layer at p. fine: also read the detail noise (the light march does
 // without it).
 float density_at(vec3 p, vec3 centre, int layer, float footprint, bool fine, IN(MarchParams) m MARCH_SOURCES_PARAM) {
   LayerParams l = m.layers[layer];
-  ShapeSample q = shape_at(p, centre, layer, footprint, m MARCH_SOURCES_ARG);
+  ShapeSample q = shape_at(p, centre, layer, footprint, fine ? WEBANCK_FULL : WEBANCK_LIGHT, m MARCH_SOURCES_ARG);
   // Where even the bound is zero (most of the sky) the detail lookup is skipped.
   if (extinction_bound(layer, q, m) <= 0.0f) return 0.0f;
+  if (webanck_type(l.type)) {
+    // The light march subtracts delta's mean instead of reading the detail fields.
+    float delta = fine ? webanck_detail(q, l.type, 1.0f - l.morph, l.noise_offset.x / 108000.0f MARCH_SOURCES_ARG) : q.detail;
+    return l.extinction * max(q.shape - delta, 0.0f) * q.gate;
+  }
   float detail = fine ? NOISE_LOD(q.coordinates * 4.0f, q.lod + 2.0f).y : q.detail;
-  return l.extinction * cloud_density(l.type, q.h, q.c, q.shape, mix(q.detail, detail, 0.5f), l.morph);
+  return l.extinction * cloud_density(l.type, q.h, q.c, q.shape, mix(q.detail, detail, 0.5f));
 }
 
 // Optical depth from p towards the sun within the same layer (other layers' shadows are left out).
@@ -113,6 +210,37 @@ float optical_depth_to_sun(vec3 p, vec3 centre, int layer, IN(MarchParams) m MAR
   for (int i = 0; i < m.light_steps; ++i) {
     vec2 s = light_sample(i, m.light_steps, length_to_exit);  // (distance, step), quadratic
     tau += density_at(p + s.x * m.sun, centre, layer, s.y, false, m MARCH_SOURCES_ARG) * s.y;
+  }
+  return tau;
+}
+
+// Samples per layer crossed of a shadow ray (shadow_depth).
+const int SHADOW_STEPS = 6;
+
+// Optical depth from p towards the sun through the layers whose base is at or above min_base,
+// except layer skip (-1: none): the clouds' shadows on the ground. (Called per cloud sample for
+// the shadows of higher layers on lower ones, it made llvmpipe cut loops before the marcher's
+// count reached LOOP_LIMIT, so the loop guard missed them: left out, docs/rendering.md.) SHADOW_STEPS midpoint samples of the light march's density per interval; counts its
+// loop iterations into loop_count.
+float shadow_depth(vec3 p, vec3 centre, int skip, float min_base, INOUT(int) loop_count,
+                   IN(MarchParams) m MARCH_SOURCES_PARAM) {
+  float tau = 0.0f;
+  loop_count += m.layer_count;  // every iteration of the layer loop counts towards the limit
+  for (int layer = 0; layer < m.layer_count; ++layer) {
+    LayerParams l = m.layers[layer];
+    if (layer == skip || l.base < min_base) continue;
+    vec4 s = ray_shell(p, m.sun, centre, m.earth_radius + l.base, m.earth_radius + l.top, m.max_distance);
+    loop_count += 2;
+    for (int k = 0; k < 2; ++k) {
+      float a = max(k == 0 ? s.x : s.z, 0.0f);
+      float b = k == 0 ? s.y : s.w;
+      if (a >= b) continue;
+      float ds = (b - a) / float(SHADOW_STEPS);
+      for (int i = 0; i < SHADOW_STEPS; ++i) {
+        tau += density_at(p + (a + (float(i) + 0.5f) * ds) * m.sun, centre, layer, ds, false, m MARCH_SOURCES_ARG) * ds;
+      }
+      loop_count += SHADOW_STEPS;
+    }
   }
   return tau;
 }
@@ -160,6 +288,16 @@ struct CloudMarch {
   float distance;
   int loop_count;
 };
+
+// The march start's offset in [0, 1) of a pixel in a frame: Jimenez's interleaved gradient
+// noise ("Next Generation Post Processing in Call of Duty: Advanced Warfare", SIGGRAPH 2014),
+// fract(52.9829189 fract(0.06711056 x + 0.00583715 y)), whose neighbouring pixels take offsets
+// far apart (low-frequency error becomes fine grain that a few frames or a blur average out),
+// plus frame x (golden ratio - 1), an additive recurrence that fills [0, 1) evenly.
+float march_jitter(ivec2 pixel, int frame) {
+  float ign = fract(52.9829189f * fract(0.06711056f * float(pixel.x) + 0.00583715f * float(pixel.y)));
+  return fract(ign + 0.618034f * float(frame));
+}
 
 // Marches the layers along the unit view direction d. jitter in [0, 1): the offset of the
 // samples within their steps.
@@ -246,8 +384,9 @@ vec4 render_pixel(ivec2 pixel, ivec2 size, IN(MarchParams) m, OUT(int) loop_coun
   float ray_end = hits_ground ? ground.x : max(top.y, 0.0f);
   float cloud_limit = min(ray_end, m.max_distance);
 
-  // A fixed per-pixel offset of the samples trades banding for noise, the same on every run.
-  float jitter = hash_to_unit3(pcg3d(uvec3(uvec2(pixel), 7u))).x;
+  // A per-pixel offset of the samples trades banding for noise; each frame of an accumulation
+  // moves it on by the golden ratio, so N frames spread every pixel's offsets evenly.
+  float jitter = march_jitter(pixel, m.frame);
   CloudMarch clouds = march_clouds(d, centre, cloud_limit, jitter, m MARCH_SOURCES_ARG);
   // The sky's loops (a sun transmittance per step) and the ground's.
   loop_count = clouds.loop_count + 17 * m.sky_steps + 16;
@@ -261,8 +400,12 @@ vec4 render_pixel(ivec2 pixel, ivec2 size, IN(MarchParams) m, OUT(int) loop_coun
     // Lambertian ground, albedo 0.15, lit by the sun and the sky.
     vec3 point = origin_from_centre + ray_end * d;
     vec3 normal = normalize(point);
+    // The clouds' shadows: every layer between the ground and the sun.
+    int shadow_loops = 0;
+    float shadow = exp(-shadow_depth(ray_end * d, centre, -1, -1.0e30f, shadow_loops, m MARCH_SOURCES_ARG));
+    loop_count += shadow_loops;
     vec3 sun_at_ground = solar_irradiance() * transmittance_to_space(point, m.sun, m.earth_radius) *
-                         max(dot(normal, m.sun), 0.0f);
+                         max(dot(normal, m.sun), 0.0f) * shadow;
     background = transmittance_total * (0.15f / PI_F) * (sun_at_ground + m.ambient);
   }
   vec3 color = inscatter_split + transmittance_split * clouds.radiance +

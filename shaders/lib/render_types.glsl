@@ -43,6 +43,7 @@ struct MarchParams {
   float max_distance;
   float pixel_angle;       // angle subtended by one pixel (radians), for noise level of detail
   float noise_texels;      // texels per side of the noise volume
+  int frame;               // which frame of a temporal accumulation (shifts the jitter)
 };
 
 #endif

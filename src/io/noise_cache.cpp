@@ -139,7 +139,7 @@ std::unique_ptr<render::NoiseVolume> cached_noise_volume(int size, std::uint32_t
     const FloatCache cache(directory);
     const std::string key = "noise_volume size " + std::to_string(size) + " seed " + std::to_string(seed) + " " +
                             render::NoiseVolume::recipe_key();
-    const std::size_t count = 2 * static_cast<std::size_t>(size) * size * size;
+    const std::size_t count = render::NoiseVolume::channels * static_cast<std::size_t>(size) * size * size;
     if (auto values = cache.load(key, count)) {
       noise = std::make_unique<render::NoiseVolume>(size, seed, *values);
       what = "noise volume: from the cache " + cache.file_of(key).string();

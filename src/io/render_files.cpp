@@ -53,6 +53,7 @@ json::Value scene_sidecar(const SceneRender& r, const regional::Scene& scene) {
   json::Value steps;
   steps.set("view", scene.view_steps);
   steps.set("light", scene.light_steps);
+  steps.set("frames", scene.frames);
   steps.set("sky", scene.sky_steps);
   root.set("steps", steps);
   root.set("exposure", scene.exposure);

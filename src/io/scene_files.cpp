@@ -83,6 +83,8 @@ Scene parse_scene(const std::string& text, const std::string& source, const std:
       s.view_steps = k.integer(v, key);
     } else if (key == "light_steps") {
       s.light_steps = k.integer(v, key);
+    } else if (key == "frames") {
+      s.frames = k.integer(v, key);
     } else if (key == "sky_steps") {
       s.sky_steps = k.integer(v, key);
     } else if (key == "exposure") {

@@ -53,6 +53,7 @@ inline constexpr Parameter panorama = flag("panorama", "render the full 360 x 18
 inline constexpr Parameter weather = list("weather", "FILE", "Open-Meteo or meteoblue JSON of a station", render_and_scene);
 inline constexpr Parameter view_steps = integer("view_steps", 48, 1, 4096, "samples", "samples per layer along each view ray", render_scene_view);
 inline constexpr Parameter light_steps = integer("light_steps", 12, 0, 256, "samples", "samples towards the sun per cloud sample", render_scene_view);
+inline constexpr Parameter frames = integer("frames", 1, 1, 1024, "frames", "frames averaged, each with its own jitter of the march start (temporal accumulation)", render_and_scene);
 inline constexpr Parameter sky_steps = integer("sky_steps", 16, 1, 1024, "samples", "samples of the clear-sky integral", scene_file);
 inline constexpr Parameter exposure = real("exposure", 4.0, 1e-6, 1e6, "", "exposure before tone mapping (PNG)", render_scene_view);
 inline constexpr Parameter seed = integer("seed", 1, 0, 4294967295.0, "", "seed of the global cover and the cloud noise", render_scene_view);

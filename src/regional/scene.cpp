@@ -66,6 +66,7 @@ void validate_scene(const Scene& s, const std::string& source, const KeyOptions&
   check_range(where("size"), s.height, 1, max_image_side, "height ");
   check_range(where("view_steps"), s.view_steps, params::scene::view_steps);
   check_range(where("light_steps"), s.light_steps, params::scene::light_steps);
+  check_range(where("frames"), s.frames, params::scene::frames);
   check_range(where("sky_steps"), s.sky_steps, params::scene::sky_steps);
   check_range(where("exposure"), s.exposure, params::scene::exposure);
   check_range(where("cover_size"), s.cover_size, params::scene::cover_size);

@@ -35,6 +35,7 @@ struct Scene {
   int view_steps = params::scene::view_steps.default_int();
   int light_steps = params::scene::light_steps.default_int();
   int sky_steps = params::scene::sky_steps.default_int();
+  int frames = params::scene::frames.default_int();
   double exposure = params::scene::exposure.default_number;
   int cover_size = params::scene::cover_size.default_int();  // global cover size when no weather is given
   std::vector<std::string> outputs;          // file names (png, exr); --scene renders into --out DIR
@@ -43,7 +44,7 @@ struct Scene {
 // Scene files are read by src/io/scene_files.hpp.
 // Which option set a scene key ("view" -> "--view"): errors about that key name the option the
 // user typed instead of the key of a file they did not write. Keys: view, at, heading, pitch,
-// fov, time, size, weather, view_steps, light_steps, exposure, seed.
+// fov, time, size, weather, view_steps, light_steps, frames, exposure, seed.
 using KeyOptions = std::map<std::string, std::string>;
 
 // Checks ranges; throws SceneError naming the key ("SOURCE: 'key': ...") or, for the keys in

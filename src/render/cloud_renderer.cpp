@@ -24,24 +24,35 @@ namespace {
 
 // The wind's offset is wrapped at a length that every noise period divides, so the noise stays
 // continuous in time while the offset stays small enough for float precision.
-constexpr double offset_wrap_m = 120000.0;
+// 2160 km: also a whole number of periods of every baked Webanck field (f tau m / 4 with tau
+// = offset / 108 km, f m a multiple of 1/5 of an integer: 5 x 4 x 108 km).
+constexpr double offset_wrap_m = 2160000.0;
 
-// Replaces each channel's values by their ranks, (rank + 1/2) / n: uniformly distributed noise,
-// so that a coverage threshold covers the intended fraction of the sky.
+// Replaces the shape and detail channels' values by their ranks, (rank + 1/2) / n: uniformly
+// distributed noise, so that a coverage threshold covers the intended fraction of the sky; and
+// standardises the G3 channel (B) to mean 0 and variance 1, which the trilinear bake of three
+// octaves lowers a little from the 8-octave mean's, so that normal_cdf maps it as webanck_g3
+// maps the exact field (docs/layers.md).
 void equalise_histogram(GLuint volume, int size) {
   const size_t n = static_cast<size_t>(size) * size * size;
-  std::vector<float> texels(2 * n);
-  glGetTextureImage(volume, 0, GL_RG, GL_FLOAT, static_cast<GLsizei>(texels.size() * sizeof(float)), texels.data());
+  std::vector<float> texels(4 * n);
+  glGetTextureImage(volume, 0, GL_RGBA, GL_FLOAT, static_cast<GLsizei>(texels.size() * sizeof(float)), texels.data());
   std::vector<unsigned> order(n);
   for (int channel = 0; channel < 2; ++channel) {
     for (size_t k = 0; k < n; ++k) order[k] = static_cast<unsigned>(k);
     std::sort(order.begin(), order.end(), [&](unsigned a, unsigned b) {
-      return texels[2 * a + channel] < texels[2 * b + channel];
+      return texels[4 * a + channel] < texels[4 * b + channel];
     });
     for (size_t rank = 0; rank < n; ++rank)
-      texels[2 * order[rank] + channel] = static_cast<float>((rank + 0.5) / n);
+      texels[4 * order[rank] + channel] = static_cast<float>((rank + 0.5) / n);
   }
-  glTextureSubImage3D(volume, 0, 0, 0, 0, size, size, size, GL_RG, GL_FLOAT, texels.data());
+  double sum = 0, sum_squares = 0;
+  for (size_t k = 0; k < n; ++k) sum += texels[4 * k + 2];
+  const double mean = sum / n;
+  for (size_t k = 0; k < n; ++k) sum_squares += (texels[4 * k + 2] - mean) * (texels[4 * k + 2] - mean);
+  const double deviation = std::sqrt(sum_squares / n);
+  for (size_t k = 0; k < n; ++k) texels[4 * k + 2] = static_cast<float>((texels[4 * k + 2] - mean) / deviation);
+  glTextureSubImage3D(volume, 0, 0, 0, 0, size, size, size, GL_RGBA, GL_FLOAT, texels.data());
 }
 
 GLuint make_texture(GLenum target) {
@@ -91,7 +102,7 @@ namespace {
 GLuint make_volume_texture(int size) {
   const GLuint texture = make_texture(GL_TEXTURE_3D);
   const int levels = 1 + static_cast<int>(std::log2(size));
-  glTextureStorage3D(texture, levels, GL_RG32F, size, size, size);
+  glTextureStorage3D(texture, levels, GL_RGBA32F, size, size, size);
   glTextureParameteri(texture, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
   glTextureParameteri(texture, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
   for (GLenum wrap : {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T, GL_TEXTURE_WRAP_R}) glTextureParameteri(texture, wrap, GL_REPEAT);
@@ -99,7 +110,7 @@ GLuint make_volume_texture(int size) {
 }
 
 // Raise when equalise_histogram or the mip chain changes what a volume holds.
-constexpr int noise_volume_host_version = 1;
+constexpr int noise_volume_host_version = 2;
 
 }  // namespace
 
@@ -117,16 +128,16 @@ std::string NoiseVolume::recipe_key() {
 }
 
 NoiseVolume::NoiseVolume(int size, std::uint32_t seed, const std::vector<float>& level0) : size_(size), seed_(seed) {
-  if (level0.size() != 2 * static_cast<size_t>(size) * size * size)
+  if (level0.size() != 4 * static_cast<size_t>(size) * size * size)
     throw std::invalid_argument("NoiseVolume: level 0 has the wrong number of values");
   texture_ = make_volume_texture(size);
-  glTextureSubImage3D(texture_, 0, 0, 0, 0, size, size, size, GL_RG, GL_FLOAT, level0.data());
+  glTextureSubImage3D(texture_, 0, 0, 0, 0, size, size, size, GL_RGBA, GL_FLOAT, level0.data());
   glGenerateTextureMipmap(texture_);
 }
 
 std::vector<float> NoiseVolume::level0() const {
-  std::vector<float> texels(2 * static_cast<size_t>(size_) * size_ * size_);
-  glGetTextureImage(texture_, 0, GL_RG, GL_FLOAT, static_cast<GLsizei>(texels.size() * sizeof(float)), texels.data());
+  std::vector<float> texels(4 * static_cast<size_t>(size_) * size_ * size_);
+  glGetTextureImage(texture_, 0, GL_RGBA, GL_FLOAT, static_cast<GLsizei>(texels.size() * sizeof(float)), texels.data());
   return texels;
 }
 
@@ -134,7 +145,7 @@ NoiseVolume::NoiseVolume(int size, std::uint32_t seed) : size_(size), seed_(seed
   gpu::ComputeProgram program("render/noise_volume.comp");
   texture_ = make_volume_texture(size);
   program.set("u_seed", static_cast<unsigned>(seed));
-  glBindImageTexture(0, texture_, 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RG32F);
+  glBindImageTexture(0, texture_, 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
   program.dispatch_covering(size, size, size);
   gpu::image_barrier();
   equalise_histogram(texture_, size);
@@ -163,8 +174,8 @@ glsl::VolumeSource NoiseVolume::host_copy() const {
   glsl::VolumeSource source;
   source.size = size_;
   for (int level = 0, n = size_; n >= 1; ++level, n /= 2) {
-    std::vector<glm::vec2> texels(static_cast<size_t>(n) * n * n);
-    glGetTextureImage(texture_, level, GL_RG, GL_FLOAT, static_cast<GLsizei>(texels.size() * sizeof(glm::vec2)),
+    std::vector<glm::vec4> texels(static_cast<size_t>(n) * n * n);
+    glGetTextureImage(texture_, level, GL_RGBA, GL_FLOAT, static_cast<GLsizei>(texels.size() * sizeof(glm::vec4)),
                       texels.data());
     source.levels.push_back(std::move(texels));
   }
@@ -264,9 +275,12 @@ RenderResult render_clouds(const Camera& camera, const std::vector<regional::Clo
     throw std::logic_error("render_clouds: rows " + std::to_string(settings.first_row) + " + " + std::to_string(rows) +
                            " outside an image of " + std::to_string(camera.height));
   gpu::Texture image = gpu::Texture::plane(camera.width, camera.height, GL_RGBA32F);
+  // Frames of an accumulation, each with its own jitter of the march start, averaged.
+  std::vector<double> sum;
   timed("clouds", [&] {
     gpu::ComputeProgram program("render/clouds.comp");
-    glsl::set_uniform(program, "u_march", march_params(camera, layers, field, unix_seconds, settings, wind_towards, wind_speed));
+    glsl::MarchParams params = march_params(camera, layers, field, unix_seconds, settings, wind_towards, wind_speed);
+    glsl::set_uniform(program, "u_march", params);
     for (const auto* l : active) result.passes.push_back(std::string("march layer ") + regional::cloud_type_name(l->type));
     image.bind_image(0, GL_WRITE_ONLY);
     glBindTextureUnit(1, noise != nullptr ? noise->texture() : 0);
@@ -277,14 +291,30 @@ RenderResult render_clouds(const Camera& camera, const std::vector<regional::Clo
     glNamedBufferStorage(guard, sizeof zero, &zero, GL_MAP_READ_BIT);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, guard);
     program.set("u_first_row", settings.first_row);
-    program.dispatch_covering(camera.width, rows, 1);
-    gpu::image_barrier();
+    const int frames = std::max(settings.frames, 1);
+    for (int frame = 0; frame < frames; ++frame) {
+      program.set("u_march.frame", frame);
+      program.dispatch_covering(camera.width, rows, 1);
+      gpu::image_barrier();
+      if (frames > 1) {
+        const std::vector<float> pixels = image.read();
+        sum.resize(pixels.size(), 0.0);
+        for (size_t k = 0; k < pixels.size(); ++k) sum[k] += pixels[k];
+      }
+    }
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
     glGetNamedBufferSubData(guard, 0, sizeof result.loop_limited_pixels, &result.loop_limited_pixels);
     glDeleteBuffers(1, &guard);
   });
   result.passes.push_back("sky");
-  result.radiance = {camera.width, camera.height, 4, image.read()};
+  if (sum.empty()) {
+    result.radiance = {camera.width, camera.height, 4, image.read()};
+  } else {
+    std::vector<float> mean(sum.size());
+    for (size_t k = 0; k < sum.size(); ++k) mean[k] = static_cast<float>(sum[k] / std::max(settings.frames, 1));
+    result.radiance = {camera.width, camera.height, 4, std::move(mean)};
+    result.passes.push_back("accumulate " + std::to_string(settings.frames) + " frames");
+  }
   glDeleteTextures(1, &weather);
   return result;
 }

@@ -26,6 +26,7 @@ struct RenderSettings {
   int view_steps = 48;      // samples per layer interval along the view ray
   int light_steps = 12;     // samples towards the sun per cloud sample
   int sky_steps = 16;       // samples of the clear-sky integral
+  int frames = 1;           // frames averaged, each with its own jitter of the march start
   double max_distance_m = 150000;
   std::uint32_t seed = 1;
   int noise_size = 64;      // texels per side of the noise volume
@@ -55,9 +56,11 @@ glm::dvec3 sun_direction_enu(double unix_seconds, double latitude_deg, double lo
 glm::vec3 sky_irradiance(glm::vec3 sun, double earth_radius, double altitude_m);
 
 // The tileable shape and detail noise the marcher reads (render/noise_volume.comp,
-// rank-equalised, mipmapped): size^3 texels, RG. Needs a current OpenGL 4.5 context.
+// mipmapped): size^3 texels, RGBA (shape and detail noise, rank-equalised; the G3 and W3
+// fields of the Webanck forms). Needs a current OpenGL 4.5 context.
 class NoiseVolume {
  public:
+  static constexpr int channels = 4;
   NoiseVolume(int size, std::uint32_t seed);
   // A volume made before (level0() of one of the same size and seed, e.g. from a disk cache):
   // level 0 uploaded, the mip levels generated from it as the constructor above does, so the
@@ -71,7 +74,7 @@ class NoiseVolume {
   std::uint32_t seed() const { return seed_; }
   // Every mip level read back, for the marcher's C++ twin (tests).
   glsl::VolumeSource host_copy() const;
-  // Level 0 read back: size^3 RG pairs of floats, x fastest.
+  // Level 0 read back: size^3 RGBA texels of floats, x fastest.
   std::vector<float> level0() const;
   // What determines the volume besides size and seed: a hash of the expanded shader source
   // and the version of the host's equalisation; a cache key must include it.

@@ -127,6 +127,7 @@ RenderSettings render_settings(const regional::Scene& scene) {
   RenderSettings settings;
   settings.view_steps = scene.view_steps;
   settings.light_steps = scene.light_steps;
+  settings.frames = scene.frames;
   settings.sky_steps = scene.sky_steps;
   settings.seed = scene.seed;
   return settings;

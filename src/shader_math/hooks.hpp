@@ -21,13 +21,13 @@ struct CubeSource {
   }
 };
 
-// The renderer's noise volume in host memory (cloud_march.glsl's NOISE_LOD): RG per texel,
+// The renderer's noise volume in host memory (cloud_march.glsl's NOISE_LOD): RGBA per texel,
 // every mip level (level k of size >> k texels per side, x fastest, then y, then z), sampled as
 // GLSL's textureLod with GL_LINEAR_MIPMAP_LINEAR filtering and GL_REPEAT wrapping (OpenGL 4.5
 // section 8.14: lerps along x, y, z, then between the levels floor(lod) and floor(lod) + 1).
 struct VolumeSource {
   int size = 0;
-  std::vector<std::vector<vec2>> levels;
+  std::vector<std::vector<vec4>> levels;
   vec4 sample_lod(vec3 x, float lod) const;
 };
 

@@ -24,6 +24,7 @@ namespace nephele::glsl {
 #include "lib/render_types.glsl"
 #include "lib/tileable_noise.glsl"
 #include "lib/warp_step.glsl"
+#include "lib/webanck_forms.glsl"
 #include "lib/worley.glsl"
 #include "lib/worley_fbm.glsl"
 

@@ -47,7 +47,7 @@ auto trilinear(const At& at, const Taps& tx, const Taps& ty, const Taps& tz) {
   return lerp(plane(tz.i0), plane(tz.i1), tz.weight);
 }
 
-vec2 sample_level(const std::vector<vec2>& texels, int size, vec3 x) {
+vec4 sample_level(const std::vector<vec4>& texels, int size, vec3 x) {
   auto at = [&](int i, int j, int k) { return texels[(static_cast<size_t>(k) * size + j) * size + i]; };
   return trilinear(at, repeat_taps(x.x, size), repeat_taps(x.y, size), repeat_taps(x.z, size));
 }
@@ -61,10 +61,10 @@ vec4 VolumeSource::sample_lod(vec3 x, float lod) const {
   const float clamped = std::clamp(lod, 0.0f, float(top));
   const int level = static_cast<int>(std::floor(clamped));
   const float fraction = clamped - float(level);
-  const vec2 v0 = sample_level(levels[level], std::max(size >> level, 1), x);
-  if (level >= top || fraction == 0.0f) return vec4(v0, 0.0f, 1.0f);
-  const vec2 v1 = sample_level(levels[level + 1], std::max(size >> (level + 1), 1), x);
-  return vec4(lerp(v0, v1, fraction), 0.0f, 1.0f);
+  const vec4 v0 = sample_level(levels[level], std::max(size >> level, 1), x);
+  if (level >= top || fraction == 0.0f) return v0;
+  const vec4 v1 = sample_level(levels[level + 1], std::max(size >> (level + 1), 1), x);
+  return lerp(v0, v1, fraction);
 }
 
 float LayeredSource::sample(vec2 uv, int layer) const {

@@ -63,6 +63,7 @@ void set_uniform(const gpu::ComputeProgram& program, const std::string& name, co
   program.set(name + ".max_distance", params.max_distance);
   program.set(name + ".pixel_angle", params.pixel_angle);
   program.set(name + ".noise_texels", params.noise_texels);
+  program.set(name + ".frame", params.frame);
 }
 
 }  // namespace nephele::glsl

@@ -13,8 +13,8 @@ vec4 probe_cloud_density(mat4 x) {
   if (f == 1) return vec4(sheet_profile(a, b), 0.0f, 0.0f, 0.0f);
   if (f == 2) return vec4(heaped_density(a, b, c, d, e), 0.0f, 0.0f, 0.0f);
   if (f == 3) return vec4(sheet_density(a, b, c, d), 0.0f, 0.0f, 0.0f);
-  if (f == 4) return vec4(alto_density(a, b, c, d, e), 0.0f, 0.0f, 0.0f);
-  if (f == 5) return vec4(cloud_density(int(x[1].z), a, b, c, d, e), 0.0f, 0.0f, 0.0f);
+  if (f == 4) return vec4(hermite_step(b, b + 0.5f, a), 0.0f, 0.0f, 0.0f);
+  if (f == 5) return vec4(cloud_density(int(x[1].z), a, b, c, d), 0.0f, 0.0f, 0.0f);
   if (f == 6) return vec4(uniform_from_mix(a, b), 0.0f, 0.0f, 0.0f);
   if (f == 7) return vec4(noise_period(int(a)), 0.0f, 0.0f);
   if (f == 8) return vec4(cloud_phase(a, b), 0.0f, 0.0f, 0.0f);

@@ -70,11 +70,11 @@ vec4 probe_cloud_march(mat4 x MARCH_SOURCES_PARAM) {
   }
   if (f == 1) return vec4(coverage_at(p, int(x[0].y), m MARCH_SOURCES_ARG), 0.0f, 0.0f, 0.0f);
   if (f == 2) {
-    ShapeSample q = shape_at(p, centre, layer, footprint, m MARCH_SOURCES_ARG);
+    ShapeSample q = shape_at(p, centre, layer, footprint, WEBANCK_FULL, m MARCH_SOURCES_ARG);
     return vec4(q.h, q.c, q.shape, q.detail);
   }
   if (f == 3) {
-    ShapeSample q = shape_at(p, centre, layer, footprint, m MARCH_SOURCES_ARG);
+    ShapeSample q = shape_at(p, centre, layer, footprint, WEBANCK_FULL, m MARCH_SOURCES_ARG);
     return vec4(extinction_bound(layer, q, m), extinction_bound_at(p, centre, layer, footprint, m MARCH_SOURCES_ARG),
                 density_at(p, centre, layer, footprint, true, m MARCH_SOURCES_ARG),
                 density_at(p, centre, layer, footprint, false, m MARCH_SOURCES_ARG));
@@ -93,6 +93,28 @@ vec4 probe_cloud_march(mat4 x MARCH_SOURCES_PARAM) {
     int loops = 0;
     vec4 pixel = render_pixel(ivec2(int(x[3].x), int(x[3].y)), ivec2(16, 9), m, loops MARCH_SOURCES_ARG);
     return loop_limited(loops) ? vec4(-1.0f) : pixel;
+  }
+  if (f == 9) {
+    // The baked Webanck fields at p_n = x[1] (frequency x[0].z, level of detail x[0].w).
+    vec4 v = baked_fields(p, footprint, layer, x[0].w MARCH_SOURCES_ARG);
+    return vec4(v.z, baked_g3(p, footprint, layer, x[0].w MARCH_SOURCES_ARG), baked_w3(p, footprint, layer, x[0].w MARCH_SOURCES_ARG),
+                webanck_type(layer) ? 1.0f : 0.0f);
+  }
+  if (f == 10) {
+    // Webanck's shape (fields x[0].w) and detail of layer x[0].y at p_n = x[1], h and c in x[3].
+    ShapeSample q;
+    q.h = x[3].x;
+    q.c = x[3].y;
+    q.lod = x[3].z;
+    q.coordinates = p;
+    webanck_shape(q, m.layers[layer].type, 0.5f, 0.01f, int(x[0].w) MARCH_SOURCES_ARG);
+    return vec4(q.shape, q.detail, q.gate, webanck_detail(q, m.layers[layer].type, 0.5f, 0.01f MARCH_SOURCES_ARG));
+  }
+  if (f == 11) {
+    // Shadow depth from p (below layer x[0].y's top, min_base x[0].z) and a pixel's jitter.
+    int loops = 0;
+    float tau = shadow_depth(p, centre, layer, footprint, loops, m MARCH_SOURCES_ARG);
+    return vec4(tau, float(loops), march_jitter(ivec2(int(x[3].x), int(x[3].y)), int(x[3].z)), 0.0f);
   }
   return vec4(loop_limited(int(x[0].y)) ? 1.0f : 0.0f, 0.0f, 0.0f, 0.0f);
 }

@@ -60,6 +60,8 @@ int run_render(const std::vector<std::string>& arguments) {
   options.bind(s::at, &at);
   options.bind(s::panorama, &panorama);
   options.bind(s::weather, &weather);
+  int frames = regional::Scene{}.frames;  // render's own: the viewer accumulates by reprojection
+  options.bind(s::frames, &frames);
   options.bind(s::out, &out);
   options.bind(params::run::quiet, &quiet);
   options.bind(params::run::no_cache, &no_cache);
@@ -82,7 +84,7 @@ int run_render(const std::vector<std::string>& arguments) {
     if (options.given(s::heading)) orbit.heading = scene_options.heading();
     if (options.given(s::pitch)) orbit.pitch = scene_options.pitch();
     if (options.given(s::fov)) orbit.fov = scene_options.fov();
-    for (const auto* ground_only : {&s::at, &s::scene_path, &s::panorama, &s::weather, &s::view_steps, &s::light_steps})
+    for (const auto* ground_only : {&s::at, &s::scene_path, &s::panorama, &s::weather, &s::view_steps, &s::light_steps, &s::frames})
       if (options.given(*ground_only))
         throw UsageError(ground_only->option() + ": not taken by --view orbit (it belongs to the ground views)");
     return run_orbit_render(orbit);
@@ -98,6 +100,7 @@ int run_render(const std::vector<std::string>& arguments) {
     parse_position(at, scene);
     typed["at"] = "--at";
   }
+  if (options.given(s::frames)) scene.frames = frames;
   if (panorama) {
     scene.panorama = true;
     if (!scene_options.size_given()) {
