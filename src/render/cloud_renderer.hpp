@@ -3,11 +3,13 @@
 #include <glm/glm.hpp>
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "core/image.hpp"
 #include "regional/cloud_layers.hpp"
+#include "regional/terrain.hpp"
 #include "regional/weather_field.hpp"
 #include "shader_math/shader_math.hpp"
 
@@ -29,6 +31,8 @@ struct RenderSettings {
   double max_distance_m = 150000;
   std::uint32_t seed = 1;
   int noise_size = 64;      // texels per side of the noise volume
+  // The ground's height field about the camera (io::load_terrain); none: the bare sphere.
+  std::shared_ptr<const regional::TerrainGrid> terrain;
 };
 
 struct RenderResult {

@@ -117,7 +117,9 @@ RenderSettings render_settings(const regional::Scene& scene) {
 
 SceneRender render_prepared(const PreparedScene& prepared, const regional::Scene& scene, const NoiseVolume* noise) {
   SceneRender out = prepared.partial;
-  out.render = render_clouds(out.camera, out.layers, prepared.field, prepared.time, render_settings(scene),
+  RenderSettings settings = render_settings(scene);
+  settings.terrain = prepared.terrain;
+  out.render = render_clouds(out.camera, out.layers, prepared.field, prepared.time, settings,
                              prepared.wind, prepared.wind_speed, noise);
   out.passes.insert(out.passes.end(), out.render.passes.begin(), out.render.passes.end());
   return out;

@@ -7,6 +7,7 @@
 
 #include "apps/cli/commands.hpp"
 #include "gpu/pass_timer.hpp"
+#include "io/elevation_files.hpp"
 #include "io/noise_cache.hpp"
 #include "render/cloud_renderer.hpp"
 #include "cover/cover_limits.hpp"
@@ -48,7 +49,7 @@ void parse_position(const std::string& text, regional::Scene& scene) {
 
 int run_render(const std::vector<std::string>& arguments) {
   regional::Scene scene;
-  std::string view, at, size, time, scene_file, out;
+  std::string view, at, size, time, scene_file, out, terrain;
   double heading = 0, pitch = scene.pitch_deg, fov = scene.fov_deg, exposure = scene.exposure;
   bool panorama = false, verbose = false, quiet = false;
   std::vector<std::string> weather;
@@ -67,6 +68,7 @@ int run_render(const std::vector<std::string>& arguments) {
   options.bind(s::size, &size);
   options.bind(s::panorama, &panorama);
   options.bind(s::weather, &weather);
+  options.bind(s::terrain, &terrain);
   int view_steps = scene.view_steps, light_steps = scene.light_steps;
   std::uint32_t seed = scene.seed;
   options.bind(s::view_steps, &view_steps);
@@ -97,7 +99,7 @@ int run_render(const std::vector<std::string>& arguments) {
     if (options.given(s::heading)) orbit.heading = heading;
     if (options.given(s::pitch)) orbit.pitch = pitch;
     if (options.given(s::fov)) orbit.fov = fov;
-    for (const auto* ground_only : {&s::at, &s::scene_path, &s::panorama, &s::weather, &s::view_steps, &s::light_steps})
+    for (const auto* ground_only : {&s::at, &s::scene_path, &s::panorama, &s::weather, &s::terrain, &s::view_steps, &s::light_steps})
       if (options.given(*ground_only))
         throw UsageError(ground_only->option() + ": not taken by --view orbit (it belongs to the ground views)");
     return run_orbit_render(orbit);
@@ -125,6 +127,7 @@ int run_render(const std::vector<std::string>& arguments) {
   if (options.given(s::pitch)) scene.pitch_deg = pitch;
   if (options.given(s::fov)) scene.fov_deg = fov;
   if (options.given(s::exposure)) scene.exposure = exposure;
+  if (options.given(s::terrain)) scene.terrain = terrain;
   if (options.given(s::view_steps)) scene.view_steps = view_steps;
   if (options.given(s::light_steps)) scene.light_steps = light_steps;
   if (options.given(s::seed)) scene.seed = seed;
@@ -185,7 +188,14 @@ int run_render(const std::vector<std::string>& arguments) {
   // Weather (with the global cover when no files are given), the march, the files.
   core::Progress progress("render", 3, core::Progress::for_stderr(quiet));
   progress.update(0, "weather");
-  const render::PreparedScene prepared = render::prepare_scene(scene, io::read_scene_weather(scene));
+  render::PreparedScene prepared = render::prepare_scene(scene, io::read_scene_weather(scene));
+  std::string terrain_warning;
+  const std::string terrain_field = options.given(s::terrain) || scene_file.empty() ? s::terrain.option()
+                                                                                     : scene_file + ": 'terrain'";
+  const render::Camera& camera = prepared.partial.camera;
+  prepared.terrain = io::load_terrain(scene.terrain, camera.latitude_deg, camera.longitude_deg, camera.height_m,
+                                      &terrain_warning, terrain_field);
+  if (!terrain_warning.empty()) std::cerr << "warning: " << terrain_warning << "\n";
   progress.update(1, "clouds");
   // The noise volume from the disk cache when a layer is marched (the same bits as making it).
   std::unique_ptr<render::NoiseVolume> noise;
