@@ -95,6 +95,18 @@ double steepest_slope(const regional::ElevationRaster& r, double south, double n
   return steepest;
 }
 
+// How far the ray-cast horizon may lie from the elevation data's, in degrees, for ground at
+// distance_m. The height field resamples the raster's bilinear surface at texel centres; a
+// bilinear interpolation of those is a convex combination of values within sqrt(2) Delta of the
+// point, so it differs from the raster by at most L sqrt(2) Delta (L the raster's steepest slope
+// around Bern and the Alps). The reference's samples, step_m apart, miss the highest point by at
+// most L step / 2. At the distance these heights are angles; rounding (kPosition at the Earth's
+// radius) adds kPosition / D.
+double horizon_tolerance_deg(const regional::TerrainGrid& g, double distance_m, double step_m) {
+  static const double L = steepest_slope(raster(), 46.0, 47.6, 6.5, 8.5);
+  return (L * std::sqrt(2.0) * g.texel_m() + L * step_m / 2 + test::kPosition) / distance_m * 180 / M_PI;
+}
+
 }  // namespace
 
 TEST_CASE("ETOPO5 reads Bern's plateau, the Bernese Alps and the Atlantic where they are", "[terrain]") {
@@ -159,13 +171,6 @@ TEST_CASE("from Gurten the ray-cast horizon towards the Eiger and the Jura match
   if (!have_etopo5()) FAIL("ferret-datasets is not installed (scripts/debian-packages.txt)");
   const auto& g = gurten_grid();
   const double step = 100.0;
-  // The height field resamples the raster's bilinear surface at texel centres; a bilinear
-  // interpolation of those is a convex combination of values within sqrt(2) Delta of the point,
-  // so it differs from the raster by at most L sqrt(2) Delta (L the raster's steepest slope
-  // there). The reference's samples, `step` apart, miss the highest point by at most L step / 2.
-  // At the horizon's distance D these heights are angles; rounding (kPosition at the Earth's
-  // radius) adds kPosition / D.
-  const double L = steepest_slope(raster(), 46.0, 47.6, 6.5, 8.5);
   for (const auto& [name, lat, lon] : {std::tuple<const char*, double, double>{"Eiger", eiger_lat, eiger_lon},
                                        {"Chasseral (Jura)", chasseral_lat, chasseral_lon}}) {
     const double azimuth = azimuth_deg(lat, lon);
@@ -173,10 +178,9 @@ TEST_CASE("from Gurten the ray-cast horizon towards the Eiger and the Jura match
     const double reference = regional::horizon_elevation_deg(gurten_lat, gurten_lon, eye_height, azimuth, raster(),
                                                              regional::substitute_hills(), 140000.0, step, &distance);
     const double cast = cast_horizon_deg(g, azimuth);
-    const double tolerance =
-        (L * std::sqrt(2.0) * g.texel_m() + L * step / 2 + test::kPosition) / distance * 180 / M_PI;
+    const double tolerance = horizon_tolerance_deg(g, distance, step);
     INFO(name << ": azimuth " << azimuth << ", reference " << reference << " deg at " << distance << " m, cast " << cast
-              << " deg, slope " << L << ", tolerance " << tolerance << " deg");
+              << " deg, tolerance " << tolerance << " deg");
     CHECK(cast == Approx(reference).epsilon(0).margin(tolerance));
     // The bare sphere's horizon from 860 m lies acos(R / (R + h)) below the horizontal: the
     // ground stands above it in both directions.
@@ -186,4 +190,59 @@ TEST_CASE("from Gurten the ray-cast horizon towards the Eiger and the Jura match
   // The Alps stand higher on the horizon than the Jura.
   CHECK(cast_horizon_deg(g, azimuth_deg(eiger_lat, eiger_lon)) >
         cast_horizon_deg(g, azimuth_deg(chasseral_lat, chasseral_lon)) + 0.5);
+}
+
+TEST_CASE("rendered from Gurten, the ground meets the sky where the elevation data put the horizon", "[terrain][render]") {
+  if (!have_etopo5()) FAIL("ferret-datasets is not installed (scripts/debian-packages.txt)");
+  test::test_context();
+  const auto grid = io::load_terrain("etopo5", gurten_lat, gurten_lon, eye_height);
+  // A clear sky: no layer is marched, so the pixels differ only where the ground does.
+  regional::WeatherField field{4, 160000.0, std::vector<float>(regional::coverage_channels * 16, 0.0f)};
+  render::RenderSettings settings;
+  settings.sky_steps = 4;
+  for (const auto& [name, lat, lon] : {std::tuple<const char*, double, double>{"Eiger", eiger_lat, eiger_lon},
+                                       {"Chasseral (Jura)", chasseral_lat, chasseral_lon}}) {
+    // A narrow column of pixels about the bare sphere's horizon and the reference's.
+    render::Camera camera;
+    camera.latitude_deg = gurten_lat;
+    camera.longitude_deg = gurten_lon;
+    camera.height_m = eye_height;
+    camera.heading_deg = azimuth_deg(lat, lon);
+    camera.pitch_deg = 0.5;
+    camera.fov_deg = 1.5;
+    camera.width = 8;
+    camera.height = 48;  // 0.19 degrees a pixel, 9 degrees tall
+    const double time = 1782036000;  // 2026-06-21 10:00 UTC
+    settings.terrain = grid;
+    const render::RenderResult with = render::render_clouds(camera, {}, field, time, settings);
+    settings.terrain = nullptr;
+    const render::RenderResult bare = render::render_clouds(camera, {}, field, time, settings);
+    const glsl::MarchParams m = render::march_params(camera, {}, field, time, settings);
+    double distance = 0;
+    const double reference = regional::horizon_elevation_deg(gurten_lat, gurten_lon, eye_height, camera.heading_deg,
+                                                             raster(), regional::substitute_hills(), 140000.0, 100.0,
+                                                             &distance);
+    const double tolerance = horizon_tolerance_deg(*grid, distance, 100.0);
+    // The first row from the top where the ground shows: its ray meets the ground, the row
+    // above it does not, so the horizon lies between their elevations (within the height
+    // field's tolerance).
+    const int column = camera.width / 2;
+    int first = -1;
+    for (int row = 0; row < camera.height && first < 0; ++row) {
+      const size_t k = (size_t(row) * camera.width + column) * 4;
+      if (std::abs(with.radiance.pixels[k] - bare.radiance.pixels[k]) > 1e-6f * std::abs(bare.radiance.pixels[k]))
+        first = row;
+    }
+    REQUIRE(first > 0);
+    auto elevation = [&](int row) {
+      return std::asin(glsl::view_direction(glsl::ivec2(column, row), glsl::ivec2(camera.width, camera.height), m).z) *
+             180 / M_PI;
+    };
+    INFO(name << ": reference " << reference << " deg, ground from row " << first << " at " << elevation(first)
+              << " deg, row above at " << elevation(first - 1) << " deg");
+    CHECK(reference >= elevation(first) - tolerance);
+    CHECK(reference <= elevation(first - 1) + tolerance);
+    // Above the bare sphere's horizon (0.94 degrees below the horizontal from 860 m).
+    CHECK(elevation(first) > -0.9);
+  }
 }
