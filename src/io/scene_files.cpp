@@ -85,6 +85,8 @@ Scene parse_scene(const std::string& text, const std::string& source, const std:
       s.light_steps = k.integer(v, key);
     } else if (key == "sky_steps") {
       s.sky_steps = k.integer(v, key);
+    } else if (key == "fog_top") {
+      s.fog_top_m = k.number(v, key);
     } else if (key == "terrain") {
       const std::string t = k.string(v, key);
       const bool word = t == "etopo5" || t == "flat";

@@ -52,6 +52,7 @@ inline constexpr Parameter weather = list("weather", "FILE", "Open-Meteo or mete
 inline constexpr Parameter view_steps = integer("view_steps", 48, 1, 4096, "samples", "samples per layer along each view ray", render_and_scene);
 inline constexpr Parameter light_steps = integer("light_steps", 12, 0, 256, "samples", "samples towards the sun per cloud sample", render_and_scene);
 inline constexpr Parameter sky_steps = integer("sky_steps", 16, 1, 1024, "samples", "samples of the clear-sky integral", scene_file);
+inline constexpr Parameter fog_top = real("fog_top", 800, 300, 3000, "metres", "top of the ground fog (sea of fog) above sea level when the weather brings fog; 800 m: the Swiss Plateau's winter inversion, below Gurten and Bantiger (docs/terrain.md)", render_and_scene);
 inline constexpr Parameter terrain = text("terrain", "etopo5", "etopo5|flat|FILE", "ground relief: ETOPO5 of ferret-datasets (bare sphere with a warning when absent), flat (the bare sphere), or an ETOPO5 netCDF file (docs/terrain.md)", render_and_scene);
 inline constexpr Parameter exposure = real("exposure", 4.0, 1e-6, 1e6, "", "exposure before tone mapping (PNG)", render_and_scene);
 inline constexpr Parameter seed = integer("seed", 1, 0, 4294967295.0, "", "seed of the global cover and the cloud noise", render_and_scene);

@@ -44,6 +44,12 @@ Camera camera_of(const regional::Scene& scene) {
   return c;
 }
 
+regional::LayerRules layer_rules(const regional::Scene& scene) {
+  regional::LayerRules rules;
+  rules.fog_top_m = scene.fog_top_m;
+  return rules;
+}
+
 }  // namespace
 
 PreparedScene prepare_scene(const regional::Scene& scene, const std::vector<regional::WeatherSeries>& weather) {
@@ -81,7 +87,7 @@ PreparedScene prepare_scene(const regional::Scene& scene, const std::vector<regi
     out.passes.push_back("weather_field (" + std::to_string(stations.size()) + " stations)");
     out.weather_source = "stations";
     // Layer types follow the weather at the viewpoint: its nearest station.
-    out.layers = regional::choose_layers(now[nearest], ahead[nearest]);
+    out.layers = regional::choose_layers(now[nearest], ahead[nearest], layer_rules(scene));
     out.weather_at_camera = now[nearest];
     if (now[nearest].has_wind) {
       const double from = now[nearest].wind_direction_deg * M_PI / 180;
@@ -100,7 +106,7 @@ PreparedScene prepare_scene(const regional::Scene& scene, const std::vector<regi
     out.passes.push_back("weather_field (global cover)");
     out.weather_source = "global cover";
     out.weather_at_camera = regional::sample_from_field(field, time);
-    out.layers = regional::choose_layers(out.weather_at_camera, {});
+    out.layers = regional::choose_layers(out.weather_at_camera, {}, layer_rules(scene));
   }
 
   return prepared;

@@ -69,6 +69,8 @@ int run_render(const std::vector<std::string>& arguments) {
   options.bind(s::panorama, &panorama);
   options.bind(s::weather, &weather);
   options.bind(s::terrain, &terrain);
+  double fog_top = scene.fog_top_m;
+  options.bind(s::fog_top, &fog_top);
   int view_steps = scene.view_steps, light_steps = scene.light_steps;
   std::uint32_t seed = scene.seed;
   options.bind(s::view_steps, &view_steps);
@@ -99,7 +101,7 @@ int run_render(const std::vector<std::string>& arguments) {
     if (options.given(s::heading)) orbit.heading = heading;
     if (options.given(s::pitch)) orbit.pitch = pitch;
     if (options.given(s::fov)) orbit.fov = fov;
-    for (const auto* ground_only : {&s::at, &s::scene_path, &s::panorama, &s::weather, &s::terrain, &s::view_steps, &s::light_steps})
+    for (const auto* ground_only : {&s::at, &s::scene_path, &s::panorama, &s::weather, &s::terrain, &s::fog_top, &s::view_steps, &s::light_steps})
       if (options.given(*ground_only))
         throw UsageError(ground_only->option() + ": not taken by --view orbit (it belongs to the ground views)");
     return run_orbit_render(orbit);
@@ -128,6 +130,10 @@ int run_render(const std::vector<std::string>& arguments) {
   if (options.given(s::fov)) scene.fov_deg = fov;
   if (options.given(s::exposure)) scene.exposure = exposure;
   if (options.given(s::terrain)) scene.terrain = terrain;
+  if (options.given(s::fog_top)) {
+    scene.fog_top_m = fog_top;
+    typed["fog_top"] = "--fog-top";
+  }
   if (options.given(s::view_steps)) scene.view_steps = view_steps;
   if (options.given(s::light_steps)) scene.light_steps = light_steps;
   if (options.given(s::seed)) scene.seed = seed;
