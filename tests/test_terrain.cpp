@@ -144,6 +144,17 @@ TEST_CASE("an elevation file that is not ETOPO5 is bad input naming the option a
   CHECK(io::load_terrain("flat", gurten_lat, gurten_lon, eye_height) == nullptr);
 }
 
+TEST_CASE("a camera below the smoothed ground is warned about, one on Gurten is not", "[terrain]") {
+  if (!have_etopo5()) FAIL("ferret-datasets is not installed (scripts/debian-packages.txt)");
+  std::string warning;
+  // Bern's old town (540 m) lies under ETOPO5's 700 m there.
+  CHECK(io::load_terrain("etopo5", 46.94806, 7.44750, 542.0, &warning) != nullptr);
+  CHECK(warning.find("below the terrain") != std::string::npos);
+  warning.clear();
+  CHECK(io::load_terrain("etopo5", gurten_lat, gurten_lon, eye_height, &warning) != nullptr);
+  CHECK(warning.empty());
+}
+
 TEST_CASE("the substitute hills bring Gurten and Bantiger up to their summits", "[terrain]") {
   if (!have_etopo5()) FAIL("ferret-datasets is not installed (scripts/debian-packages.txt)");
   const auto& g = gurten_grid();

@@ -101,9 +101,19 @@ std::shared_ptr<const regional::TerrainGrid> load_terrain(const std::string& set
   // The rows the square reaches, with a margin: its corner lies extent * sqrt(2) away.
   const double reach_deg = terrain_grid_extent_m * 1.5 / 111000.0;
   const regional::ElevationRaster raster = read_etopo5(path, latitude_deg - reach_deg, latitude_deg + reach_deg, field);
-  return std::make_shared<const regional::TerrainGrid>(
+  auto grid = std::make_shared<const regional::TerrainGrid>(
       regional::terrain_grid(latitude_deg, longitude_deg, height_m, render::osculating_earth_radius(latitude_deg), raster,
                              regional::substitute_hills(), terrain_grid_size, terrain_grid_extent_m));
+  // The camera stands where the four middle texels meet; below their mean it looks out from
+  // underground (ETOPO5 fills valleys: Bern's old town at 540 m lies under 700 m of it).
+  const std::size_t n = grid->size, middle = n / 2;
+  const double ground = (grid->altitudes[(middle - 1) * n + middle - 1] + grid->altitudes[(middle - 1) * n + middle] +
+                         grid->altitudes[middle * n + middle - 1] + grid->altitudes[middle * n + middle]) / 4;
+  if (ground > height_m && warning)
+    *warning = "the camera at " + std::to_string(int(std::lround(height_m))) + " m is below the terrain there (" +
+               std::to_string(int(std::lround(ground))) + " m, " + raster.source +
+               " smooths valleys): raise its height or use --terrain flat";
+  return grid;
 }
 
 }  // namespace nephele::io

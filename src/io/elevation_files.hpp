@@ -23,6 +23,7 @@ regional::ElevationRaster read_etopo5(const std::string& path, double south_deg,
 // The ground for a camera from the `terrain` setting (params::scene::terrain): "flat" or an
 // absent default file gives none (the bare sphere; `warning` then says why when the default
 // was meant), "etopo5" the packaged file, anything else an ETOPO5 file of that path.
+// `warning` also says when the camera is below the ground under it.
 std::shared_ptr<const regional::TerrainGrid> load_terrain(const std::string& setting, double latitude_deg,
                                                           double longitude_deg, double height_m,
                                                           std::string* warning = nullptr,
