@@ -701,6 +701,17 @@ TEST_CASE("terrain.glsl on the GPU agrees with the CPU", "[probe][terrain]") {
     // Points on the ground: their normals.
     const vec4 ground(xy.x, xy.y, R + cpu(arguments(1, vec4(0, 0, float(enabled), 0), q, vec4(0), xy)).x, 0);
     cases.push_back({arguments(3, vec4(0, 0, float(enabled), 0), ground), normal});
+    // The sun high above (lit: the probe's slopes are below 0.06) or below the horizon (hidden
+    // by the ground): no ray grazes, so both sides agree exactly on the verdict and within the
+    // march's few steps on the loops.
+    const float sun_elevation = k % 2 == 0 ? r(0.3f, 1.4f) : r(-1.0f, -0.2f);
+    const vec4 sun(std::cos(sun_elevation) * std::sin(azimuth), std::cos(sun_elevation) * std::cos(azimuth),
+                   std::sin(sun_elevation), 0);
+    // Points well inside the square (outside it the ground drops to sea level at its edge).
+    const vec4 inner(0.6f * xy.x, 0.6f * xy.y, 0, 0);
+    const vec4 on_ground(inner.x, inner.y, R + cpu(arguments(1, vec4(0, 0, float(enabled), 0), q, vec4(0), inner)).x, 0);
+    cases.push_back({arguments(5, vec4(0, 0, float(enabled), 0), on_ground, sun), 4.0f});
+    if (enabled == 1) CHECK(cpu(arguments(5, vec4(0, 0, 1, 0), on_ground, sun)).x == (sun_elevation > 0 ? 1.0f : 0.0f));
     const vec4 n = normalize(vec4(r(-0.5f, 0.5f), r(-0.5f, 0.5f), 1.0f, 0.0f));
     cases.push_back({arguments(4, vec4(r(0.0f, 4000.0f), 0, 0, 0), vec4(0), n), kArithmetic});
   }

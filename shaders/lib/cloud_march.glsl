@@ -266,8 +266,11 @@ vec4 render_pixel(ivec2 pixel, ivec2 size, IN(MarchParams) m, OUT(int) loop_coun
     vec3 point = origin_from_centre + ray_end * d;
     vec3 normal = terrain_normal(point, m.earth_radius, m.terrain MARCH_TERRAIN_ARG);
     vec3 albedo = m.terrain.enabled != 0 ? terrain_albedo(length(point) - m.earth_radius, normal, normalize(point)) : vec3(0.15f);
+    int shadow_loops = 0;
+    float sunlit = terrain_sunlit(point, normal, m.sun, m.earth_radius, m.terrain, shadow_loops MARCH_TERRAIN_ARG);
+    loop_count += shadow_loops;
     vec3 sun_at_ground = solar_irradiance() * transmittance_to_space(point, m.sun, m.earth_radius) *
-                         max(dot(normal, m.sun), 0.0f);
+                         (sunlit * max(dot(normal, m.sun), 0.0f));
     background = transmittance_total * (albedo / PI_F) * (sun_at_ground + m.ambient);
   }
   vec3 color = inscatter_split + transmittance_split * clouds.radiance +

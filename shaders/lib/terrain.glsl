@@ -70,6 +70,17 @@ float terrain_hit(vec3 o, vec3 d, float earth_radius, float limit, IN(TerrainPar
   return s <= end ? s : ground;
 }
 
+// 1 where the ground point q (on the ground, outward normal `normal`) sees the sun in the unit
+// direction `sun`, 0 where the terrain hides it: a march towards the sun from 5 m off the
+// surface (four times the altitudes' float rounding at the Earth's radius, so that the point
+// does not find itself). loops: the iterations it took.
+float terrain_sunlit(vec3 q, vec3 normal, vec3 sun, float earth_radius, IN(TerrainParams) t, OUT(int) loops TERRAIN_SOURCE_PARAM) {
+  loops = 0;
+  if (t.enabled == 0) return 1.0f;
+  float hit = terrain_hit(q + 5.0f * normal, sun, earth_radius, 1.0e7f, t, loops TERRAIN_SOURCE_ARG);
+  return hit > 0.0f ? 0.0f : 1.0f;
+}
+
 // Outward unit normal of the ground at q (a point on it): the sphere's radial direction tilted
 // by the height field's gradient (central differences one texel apart).
 vec3 terrain_normal(vec3 q, float earth_radius, IN(TerrainParams) t TERRAIN_SOURCE_PARAM) {

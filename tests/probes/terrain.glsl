@@ -38,5 +38,12 @@ vec4 probe_terrain(mat4 x TERRAIN_SOURCE_PARAM) {
     return vec4(s, float(loops), 0.0f, 0.0f);
   }
   if (f == 3) return vec4(terrain_normal(q, earth_radius, t TERRAIN_SOURCE_ARG), 0.0f);
+  if (f == 5) {
+    int loops = 0;
+    vec3 normal = terrain_normal(q, earth_radius, t TERRAIN_SOURCE_ARG);
+    // Called before the vector is built: C++ leaves the order of a constructor's arguments open.
+    float sunlit = terrain_sunlit(q, normal, d, earth_radius, t, loops TERRAIN_SOURCE_ARG);
+    return vec4(sunlit, float(loops), 0.0f, 0.0f);
+  }
   return vec4(terrain_albedo(x[0].y, d, vec3(0.0f, 0.0f, 1.0f)), 0.0f);
 }
