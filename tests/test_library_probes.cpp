@@ -37,6 +37,7 @@ namespace nephele::glsl {
 #include "probes/perlin.glsl"
 #include "probes/portable_math.glsl"
 #include "probes/ray_sphere.glsl"
+#include "probes/terrain.glsl"
 #include "probes/tileable_noise.glsl"
 #include "probes/warp_step.glsl"
 #include "probes/webanck_forms.glsl"
@@ -716,4 +717,73 @@ TEST_CASE("cloud_march.glsl on the GPU agrees with the CPU", "[probe][march]") {
   }
   compare("cloud_march", cpu, cases);
   glDeleteTextures(1, &weather_texture);
+}
+
+TEST_CASE("terrain.glsl on the GPU agrees with the CPU", "[probe][terrain]") {
+  test::test_context();
+  // The probe's height field: 8 x 8 texels, 300 to 900 m, smooth (slopes below 0.06).
+  const int size = 8;
+  std::vector<float> heights;
+  for (int j = 0; j < size; ++j)
+    for (int i = 0; i < size; ++i) heights.push_back(600.0f + 300.0f * std::sin(0.9f * i) * std::cos(0.7f * j));
+  GLuint texture = 0;
+  glCreateTextures(GL_TEXTURE_2D, 1, &texture);
+  glTextureStorage2D(texture, 1, GL_R32F, size, size);
+  glTextureSubImage2D(texture, 0, 0, 0, size, size, GL_RED, GL_FLOAT, heights.data());
+  glTextureParameteri(texture, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTextureParameteri(texture, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTextureParameteri(texture, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTextureParameteri(texture, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  glBindTextureUnit(4, texture);
+  const LayeredSource source{size, 1, heights.data()};
+  auto cpu = [&](const mat4& x) { return probe_terrain(x, source); };
+
+  const float R = 6367000.0f;
+  // Heights below 900 m interpolated with texture coordinates within kArithmetic of each other
+  // (8 texels, neighbours at most 600 m apart): 8 x 600 m x kArithmetic each way; clearances add
+  // the altitude's rounding at the Earth's radius (kPosition).
+  const float altitude = 2 * 8 * 600.0f * kArithmetic;
+  const float clearance = float(test::kPosition) + altitude;
+  // A hit moves by the clearance's error over the rate at which the ray's clearance falls: rays
+  // fall at 0.15 rad or more onto slopes of at most 0.06 (sin 0.15 - 0.06 > 0.089); the
+  // bisection's last interval (a texel over 2^16) is below 0.1 m. Loop counts agree within the
+  // steps such a difference can add or remove (a few).
+  const float hit = clearance / 0.089f + 0.1f + 4.0f;
+  // Normals: two altitudes' errors over the 10 km of a central difference, then normalisation.
+  const float normal = 2 * altitude / 10000.0f + kArithmetic;
+  Random r(31);
+  std::vector<Case> cases;
+  for (int k = 0; k < 16; ++k) {
+    const int enabled = k % 4 == 3 ? 0 : 1;
+    const vec4 xy(r(-25000.0f, 25000.0f), r(-25000.0f, 25000.0f), 0, 0);  // also outside the square
+    const vec4 q(xy.x, xy.y, R + r(200.0f, 1500.0f), 0);
+    cases.push_back({arguments(0, vec4(0, 0, float(enabled), 0), q), 25000.0f * kArithmetic});
+    cases.push_back({arguments(1, vec4(0, 0, float(enabled), 0), q, vec4(0), xy), clearance});
+    const float fall = r(0.15f, 0.8f), azimuth = r(-3.0f, 3.0f);
+    const vec4 down(std::cos(fall) * std::sin(azimuth), std::cos(fall) * std::cos(azimuth), -std::sin(fall), 0);
+    const vec4 eye(r(-5000.0f, 5000.0f), r(-5000.0f, 5000.0f), R + 1500.0f, 0);
+    cases.push_back({arguments(2, vec4(0, 200000.0f, 0, float(enabled)), eye, down), hit});
+    // Rising rays meet nothing; falling ones with a short limit stop before the ground.
+    const vec4 up(down.x, down.y, -down.z, 0);
+    cases.push_back({arguments(2, vec4(0, 200000.0f, 0, float(enabled)), eye, up), hit});
+    cases.push_back({arguments(2, vec4(0, 200.0f, 0, float(enabled)), eye, down), hit});
+    // Points on the ground: their normals.
+    const vec4 ground(xy.x, xy.y, R + cpu(arguments(1, vec4(0, 0, float(enabled), 0), q, vec4(0), xy)).x, 0);
+    cases.push_back({arguments(3, vec4(0, 0, float(enabled), 0), ground), normal});
+    // The sun high above (lit: the probe's slopes are below 0.06) or below the horizon (hidden
+    // by the ground): no ray grazes, so both sides agree exactly on the verdict and within the
+    // march's few steps on the loops.
+    const float sun_elevation = k % 2 == 0 ? r(0.3f, 1.4f) : r(-1.0f, -0.2f);
+    const vec4 sun(std::cos(sun_elevation) * std::sin(azimuth), std::cos(sun_elevation) * std::cos(azimuth),
+                   std::sin(sun_elevation), 0);
+    // Points well inside the square (outside it the ground drops to sea level at its edge).
+    const vec4 inner(0.6f * xy.x, 0.6f * xy.y, 0, 0);
+    const vec4 on_ground(inner.x, inner.y, R + cpu(arguments(1, vec4(0, 0, float(enabled), 0), q, vec4(0), inner)).x, 0);
+    cases.push_back({arguments(5, vec4(0, 0, float(enabled), 0), on_ground, sun), 4.0f});
+    if (enabled == 1) CHECK(cpu(arguments(5, vec4(0, 0, 1, 0), on_ground, sun)).x == (sun_elevation > 0 ? 1.0f : 0.0f));
+    const vec4 n = normalize(vec4(r(-0.5f, 0.5f), r(-0.5f, 0.5f), 1.0f, 0.0f));
+    cases.push_back({arguments(4, vec4(r(0.0f, 4000.0f), 0, 0, 0), vec4(0), n), kArithmetic});
+  }
+  compare("terrain", cpu, cases);
+  glDeleteTextures(1, &texture);
 }

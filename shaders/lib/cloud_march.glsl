@@ -11,6 +11,8 @@
 //                         mean behind G3, A the W3 field (render/noise_volume.comp)
 //   WEATHER_COVERAGE(uv, channel)  float: the weather field's channel at uv in [0, 1]^2,
 //                         bilinear, clamped to the edge
+//   MARCH_TERRAIN_ARG     the ground's height texture as terrain.glsl takes it (empty in GLSL;
+//                         the includer also defines terrain.glsl's hooks)
 #ifndef NEPHELE_CLOUD_MARCH_GLSL
 #define NEPHELE_CLOUD_MARCH_GLSL
 #include "prelude.glsl"
@@ -20,6 +22,7 @@
 #include "webanck_forms.glsl"
 #include "hash.glsl"
 #include "ray_sphere.glsl"
+#include "terrain.glsl"
 
 // Mesa's llvmpipe stops every loop of an invocation after 65535 iterations in all, so pixels
 // whose loops run (or would run) that long are cut short on that driver (docs/rendering.md);
@@ -377,11 +380,12 @@ vec4 render_pixel(ivec2 pixel, ivec2 size, IN(MarchParams) m, OUT(int) loop_coun
   vec3 centre = vec3(0.0f, 0.0f, -(m.earth_radius + m.camera_altitude));
   vec3 origin_from_centre = -centre;
 
-  // The ray ends at the ground or at the top of the atmosphere.
-  vec2 ground = ray_sphere(vec3(0.0f), d, centre, m.earth_radius);
-  bool hits_ground = ground.x < ground.y && ground.x > 0.0f;
+  // The ray ends at the ground (terrain.glsl) or at the top of the atmosphere.
   vec2 top = ray_sphere(vec3(0.0f), d, centre, m.earth_radius + ATMOSPHERE_THICKNESS);
-  float ray_end = hits_ground ? ground.x : max(top.y, 0.0f);
+  int ground_loops = 0;
+  float ground = terrain_hit(origin_from_centre, d, m.earth_radius, max(top.y, 0.0f), m.terrain, ground_loops MARCH_TERRAIN_ARG);
+  bool hits_ground = ground > 0.0f;
+  float ray_end = hits_ground ? ground : max(top.y, 0.0f);
   float cloud_limit = min(ray_end, m.max_distance);
 
   // A per-pixel offset of the samples trades banding for noise; each frame of an accumulation
@@ -389,7 +393,7 @@ vec4 render_pixel(ivec2 pixel, ivec2 size, IN(MarchParams) m, OUT(int) loop_coun
   float jitter = march_jitter(pixel, m.frame);
   CloudMarch clouds = march_clouds(d, centre, cloud_limit, jitter, m MARCH_SOURCES_ARG);
   // The sky's loops (a sun transmittance per step) and the ground's.
-  loop_count = clouds.loop_count + 17 * m.sky_steps + 16;
+  loop_count = clouds.loop_count + 17 * m.sky_steps + 16 + ground_loops;
 
   // The clear sky, split at the clouds' mean distance for aerial perspective.
   vec3 inscatter_total, inscatter_split, transmittance_total, transmittance_split;
@@ -397,16 +401,20 @@ vec4 render_pixel(ivec2 pixel, ivec2 size, IN(MarchParams) m, OUT(int) loop_coun
                         inscatter_total, inscatter_split, transmittance_total, transmittance_split);
   vec3 background = vec3(0.0f);
   if (hits_ground) {
-    // Lambertian ground, albedo 0.15, lit by the sun and the sky.
+    // Lambertian ground (terrain.glsl's albedo), lit by the sun and the sky.
     vec3 point = origin_from_centre + ray_end * d;
-    vec3 normal = normalize(point);
-    // The clouds' shadows: every layer between the ground and the sun.
+    vec3 normal = terrain_normal(point, m.earth_radius, m.terrain MARCH_TERRAIN_ARG);
+    vec3 albedo = m.terrain.enabled != 0 ? terrain_albedo(length(point) - m.earth_radius, normal, normalize(point)) : vec3(0.15f);
     int shadow_loops = 0;
-    float shadow = exp(-shadow_depth(ray_end * d, centre, -1, -1.0e30f, shadow_loops, m MARCH_SOURCES_ARG));
+    float sunlit = terrain_sunlit(point, normal, m.sun, m.earth_radius, m.terrain, shadow_loops MARCH_TERRAIN_ARG);
     loop_count += shadow_loops;
+    // The clouds' shadows: every layer between the ground and the sun.
+    int cloud_shadow_loops = 0;
+    float shadow = exp(-shadow_depth(ray_end * d, centre, -1, -1.0e30f, cloud_shadow_loops, m MARCH_SOURCES_ARG));
+    loop_count += cloud_shadow_loops;
     vec3 sun_at_ground = solar_irradiance() * transmittance_to_space(point, m.sun, m.earth_radius) *
-                         max(dot(normal, m.sun), 0.0f) * shadow;
-    background = transmittance_total * (0.15f / PI_F) * (sun_at_ground + m.ambient);
+                         (sunlit * shadow * max(dot(normal, m.sun), 0.0f));
+    background = transmittance_total * (albedo / PI_F) * (sun_at_ground + m.ambient);
   }
   vec3 color = inscatter_split + transmittance_split * clouds.radiance +
                clouds.transmittance * (inscatter_total - inscatter_split + background);

@@ -19,6 +19,14 @@ struct LayerParams {
   vec2 noise_offset;     // how far the wind moved the noise (tau), along and across the wind, m
 };
 
+// The ground's height field (shaders/lib/terrain.glsl, docs/terrain.md).
+struct TerrainParams {
+  int enabled;           // 0: the bare sphere
+  float extent;          // half-size of the height field's square, metres
+  float top;             // highest altitude in it (above the sphere), metres
+  float texel;           // its texel spacing, metres
+};
+
 // Everything the ray marcher (cloud_march.glsl) reads besides its two textures: the uniform
 // u_march of shaders/render/clouds.comp, filled by render::march_params on the host. Local
 // frame: east, north, up with the camera at the origin.
@@ -44,6 +52,7 @@ struct MarchParams {
   float pixel_angle;       // angle subtended by one pixel (radians), for noise level of detail
   float noise_texels;      // texels per side of the noise volume
   int frame;               // which frame of a temporal accumulation (shifts the jitter)
+  TerrainParams terrain;   // the ground (its heights are the third texture)
 };
 
 #endif

@@ -6,6 +6,7 @@ layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
 layout(rgba32f, binding = 0) uniform writeonly image2D radiance_image;
 layout(binding = 1) uniform sampler3D noise_volume;
 layout(binding = 2) uniform sampler2DArray weather_field;
+layout(binding = 4) uniform sampler2D terrain_heights;  // terrain.glsl's height field
 // Pixels whose loops ran (or would have run) past LOOP_LIMIT iterations in all (cut short on
 // llvmpipe, docs/rendering.md). The host reads the count and warns.
 layout(std430, binding = 3) buffer LoopGuard { uint loop_limited_pixels; };
@@ -14,6 +15,10 @@ layout(std430, binding = 3) buffer LoopGuard { uint loop_limited_pixels; };
 #define MARCH_SOURCES_ARG
 #define NOISE_LOD(x, lod) textureLod(noise_volume, x, lod)
 #define WEATHER_COVERAGE(uv, channel) texture(weather_field, vec3(uv, float(channel))).x
+#define TERRAIN_SOURCE_PARAM
+#define TERRAIN_SOURCE_ARG
+#define TERRAIN_HEIGHT(uv) texture(terrain_heights, uv).x
+#define MARCH_TERRAIN_ARG
 #include "../lib/cloud_march.glsl"
 
 uniform MarchParams u_march;

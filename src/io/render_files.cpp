@@ -5,6 +5,7 @@
 #include "io/atomic_output.hpp"
 #include "io/image_files.hpp"
 #include "nephele/version.hpp"
+#include "params/table.hpp"
 #include "regional/cloud_layers.hpp"
 
 namespace nephele::io {
@@ -57,6 +58,7 @@ json::Value scene_sidecar(const SceneRender& r, const regional::Scene& scene) {
   steps.set("sky", scene.sky_steps);
   root.set("steps", steps);
   root.set("exposure", scene.exposure);
+  root.set(std::string(params::scene::terrain.key), scene.terrain);
   return root;
 }
 

@@ -87,6 +87,12 @@ Scene parse_scene(const std::string& text, const std::string& source, const std:
       s.frames = k.integer(v, key);
     } else if (key == "sky_steps") {
       s.sky_steps = k.integer(v, key);
+    } else if (key == "fog_top") {
+      s.fog_top_m = k.number(v, key);
+    } else if (key == "terrain") {
+      const std::string t = k.string(v, key);
+      const bool word = t == "etopo5" || t == "flat";
+      s.terrain = word || std::filesystem::path(t).is_absolute() ? t : (std::filesystem::path(base_directory) / t).string();
     } else if (key == "exposure") {
       s.exposure = k.number(v, key);
     } else if (key == "cover_size") {

@@ -3,6 +3,8 @@
 #include <string>
 #include <vector>
 
+#include "params/table.hpp"
+
 #include "regional/weather.hpp"
 
 namespace nephele::regional {
@@ -38,6 +40,7 @@ struct CloudLayer {
 
 struct LayerRules {
   double ground_m = 540;   // terrain height for fog and the low layer (Bern)
+  double fog_top_m = params::scene::fog_top.default_number;  // top of the ground fog (sea of fog)
 };
 
 // Coverage of each channel at one station, in [0, 1].

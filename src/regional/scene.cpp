@@ -69,6 +69,7 @@ void validate_scene(const Scene& s, const std::string& source, const KeyOptions&
   check_range(where("frames"), s.frames, params::scene::frames);
   check_range(where("sky_steps"), s.sky_steps, params::scene::sky_steps);
   check_range(where("exposure"), s.exposure, params::scene::exposure);
+  check_range(where("fog_top"), s.fog_top_m, params::scene::fog_top);
   check_range(where("cover_size"), s.cover_size, params::scene::cover_size);
   try {
     core::parse_utc_time(s.time);

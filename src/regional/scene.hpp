@@ -36,6 +36,8 @@ struct Scene {
   int light_steps = params::scene::light_steps.default_int();
   int sky_steps = params::scene::sky_steps.default_int();
   int frames = params::scene::frames.default_int();
+  std::string terrain{params::scene::terrain.default_text};  // etopo5, flat or an ETOPO5 file
+  double fog_top_m = params::scene::fog_top.default_number;  // sea of fog's top, m above sea level
   double exposure = params::scene::exposure.default_number;
   int cover_size = params::scene::cover_size.default_int();  // global cover size when no weather is given
   std::vector<std::string> outputs;          // file names (png, exr); --scene renders into --out DIR

@@ -233,6 +233,12 @@ glsl::MarchParams march_params(const Camera& camera, const std::vector<regional:
                                              : 2 * std::tan(camera.fov_deg * M_PI / 360) / camera.width;
   m.pixel_angle = static_cast<float>(pixel_angle);
   m.noise_texels = static_cast<float>(settings.noise_size);
+  m.terrain = {0, 1.0f, 0.0f, 1.0f};
+  if (settings.terrain) {
+    const regional::TerrainGrid& t = *settings.terrain;
+    // The shell the march searches reaches a metre above the highest texel.
+    m.terrain = {1, static_cast<float>(t.extent_m), t.top_m + 1.0f, static_cast<float>(t.texel_m())};
+  }
   return m;
 }
 
@@ -268,6 +274,19 @@ RenderResult render_clouds(const Camera& camera, const std::vector<regional::Clo
   glTextureParameteri(weather, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
   glTextureParameteri(weather, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
 
+  GLuint terrain = 0;
+  if (settings.terrain) {
+    const regional::TerrainGrid& t = *settings.terrain;
+    terrain = make_texture(GL_TEXTURE_2D);
+    glTextureStorage2D(terrain, 1, GL_R32F, t.size, t.size);
+    glTextureSubImage2D(terrain, 0, 0, 0, t.size, t.size, GL_RED, GL_FLOAT, t.altitudes.data());
+    glTextureParameteri(terrain, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTextureParameteri(terrain, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTextureParameteri(terrain, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTextureParameteri(terrain, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    result.passes.push_back("terrain (" + t.source + ")");
+  }
+
   result.sun_direction = sun_direction_enu(unix_seconds, camera.latitude_deg, camera.longitude_deg, &result.sun_elevation_deg);
 
   const int rows = settings.row_count > 0 ? settings.row_count : camera.height;
@@ -285,6 +304,7 @@ RenderResult render_clouds(const Camera& camera, const std::vector<regional::Clo
     image.bind_image(0, GL_WRITE_ONLY);
     glBindTextureUnit(1, noise != nullptr ? noise->texture() : 0);
     glBindTextureUnit(2, weather);
+    glBindTextureUnit(4, terrain);
     GLuint guard = 0;
     const GLuint zero = 0;
     glCreateBuffers(1, &guard);
@@ -316,6 +336,7 @@ RenderResult render_clouds(const Camera& camera, const std::vector<regional::Clo
     result.passes.push_back("accumulate " + std::to_string(settings.frames) + " frames");
   }
   glDeleteTextures(1, &weather);
+  if (terrain != 0) glDeleteTextures(1, &terrain);
   return result;
 }
 

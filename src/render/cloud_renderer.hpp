@@ -3,11 +3,13 @@
 #include <glm/glm.hpp>
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "core/image.hpp"
 #include "regional/cloud_layers.hpp"
+#include "regional/terrain.hpp"
 #include "regional/weather_field.hpp"
 #include "shader_math/shader_math.hpp"
 
@@ -34,6 +36,8 @@ struct RenderSettings {
   // row); the others are left undefined. Each pixel is the same as in a whole render: the
   // viewer refines a frame in bands of rows across frames.
   int first_row = 0, row_count = 0;
+  // The ground's height field about the camera (io::load_terrain); none: the bare sphere.
+  std::shared_ptr<const regional::TerrainGrid> terrain;
 };
 
 struct RenderResult {

@@ -21,6 +21,12 @@ constexpr int field_size = 64;
 constexpr double field_extent_m = 160000.0;
 constexpr double look_ahead_hours = 168.0;  // the original system looked up to 7 days ahead
 
+regional::LayerRules layer_rules(const regional::Scene& scene) {
+  regional::LayerRules rules;
+  rules.fog_top_m = scene.fog_top_m;
+  return rules;
+}
+
 }  // namespace
 
 GlobalCoverFaces make_global_cover(const cover::CoverParameters& parameters) {
@@ -102,7 +108,7 @@ PreparedScene prepare_scene(const regional::Scene& scene, const std::vector<regi
     out.passes.push_back("weather_field (" + std::to_string(stations.size()) + " stations)");
     out.weather_source = "stations";
     // Layer types follow the weather at the viewpoint: its nearest station.
-    out.layers = regional::choose_layers(now[nearest], ahead[nearest]);
+    out.layers = regional::choose_layers(now[nearest], ahead[nearest], layer_rules(scene));
     out.weather_at_camera = now[nearest];
     if (now[nearest].has_wind) {
       const double from = now[nearest].wind_direction_deg * M_PI / 180;
@@ -117,7 +123,7 @@ PreparedScene prepare_scene(const regional::Scene& scene, const std::vector<regi
     out.passes.push_back("weather_field (global cover)");
     out.weather_source = "global cover";
     out.weather_at_camera = regional::sample_from_field(field, time);
-    out.layers = regional::choose_layers(out.weather_at_camera, {});
+    out.layers = regional::choose_layers(out.weather_at_camera, {}, layer_rules(scene));
   }
 
   return prepared;
@@ -139,7 +145,9 @@ SceneRender render_prepared(const PreparedScene& prepared, const regional::Scene
 
 SceneRender render_prepared(const PreparedScene& prepared, const RenderSettings& settings, const NoiseVolume* noise) {
   SceneRender out = prepared.partial;
-  out.render = render_clouds(out.camera, out.layers, prepared.field, prepared.time, settings, prepared.wind,
+  RenderSettings with_terrain = settings;
+  with_terrain.terrain = prepared.terrain;
+  out.render = render_clouds(out.camera, out.layers, prepared.field, prepared.time, with_terrain, prepared.wind,
                              prepared.wind_speed, noise);
   out.passes.insert(out.passes.end(), out.render.passes.begin(), out.render.passes.end());
   return out;

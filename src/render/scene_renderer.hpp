@@ -27,6 +27,8 @@ struct PreparedScene {
   double time = 0;      // Unix seconds
   glm::dvec2 wind{0.0, 1.0};  // direction the wind blows towards (east, north)
   double wind_speed = 0.0;    // m/s
+  // The ground (io::load_terrain from the scene's `terrain`); none: the bare sphere.
+  std::shared_ptr<const regional::TerrainGrid> terrain;
 };
 
 // The camera of a scene: its position (`at`, else the viewpoint's summit with the eye 2 m above

@@ -9,6 +9,10 @@
 #define MARCH_SOURCES_ARG , sources
 #define NOISE_LOD(x, lod) sources.noise.sample_lod(x, lod)
 #define WEATHER_COVERAGE(uv, channel) sources.weather.sample(uv, channel)
+#define TERRAIN_SOURCE_PARAM , IN(LayeredSource) terrain
+#define TERRAIN_SOURCE_ARG , terrain
+#define TERRAIN_HEIGHT(uv) terrain.sample(uv, 0)
+#define MARCH_TERRAIN_ARG , sources.terrain
 #define MODEL_SOURCE_PARAM , IN(DensitySource) density
 #define MODEL_SOURCE_ARG , density
 #define MODEL_DENSITY(uvw) density.sample(uvw)

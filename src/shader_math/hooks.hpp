@@ -1,7 +1,7 @@
 #pragma once
 // What the GLSL library (shaders/lib) expects its includer to define, for C++: the cube map
 // source of cube_sampling.glsl, the velocity source of warp_step.glsl's templates and the two
-// textures of cloud_march.glsl and the density volume of model_march.glsl. Shared by
+// textures of cloud_march.glsl and terrain.glsl and the density volume of model_march.glsl. Shared by
 // shader_math.hpp (declarations) and shader_math.cpp (the one compiled copy of the functions).
 #include <cstddef>
 #include <vector>
@@ -49,10 +49,12 @@ struct DensitySource {
   float sample(vec3 uvw) const;
 };
 
-// The two textures of cloud_march.glsl.
+// The textures of cloud_march.glsl: the noise volume, the weather field and the ground's
+// height field (terrain.glsl's TERRAIN_HEIGHT: layer 0 of a one-layer source).
 struct MarchSources {
   VolumeSource noise;
   LayeredSource weather;
+  LayeredSource terrain;
 };
 
 // The velocity sources of the warp's stepping rules: the sampled cube map, the procedural curl,

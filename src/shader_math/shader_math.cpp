@@ -22,6 +22,7 @@ namespace nephele::glsl {
 #include "lib/portable_math.glsl"
 #include "lib/ray_sphere.glsl"
 #include "lib/render_types.glsl"
+#include "lib/terrain.glsl"
 #include "lib/tileable_noise.glsl"
 #include "lib/warp_step.glsl"
 #include "lib/webanck_forms.glsl"

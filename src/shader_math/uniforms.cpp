@@ -64,6 +64,10 @@ void set_uniform(const gpu::ComputeProgram& program, const std::string& name, co
   program.set(name + ".pixel_angle", params.pixel_angle);
   program.set(name + ".noise_texels", params.noise_texels);
   program.set(name + ".frame", params.frame);
+  program.set(name + ".terrain.enabled", params.terrain.enabled);
+  program.set(name + ".terrain.extent", params.terrain.extent);
+  program.set(name + ".terrain.top", params.terrain.top);
+  program.set(name + ".terrain.texel", params.terrain.texel);
 }
 
 }  // namespace nephele::glsl

@@ -3,10 +3,15 @@
 #ifndef __cplusplus
 layout(binding = 1) uniform sampler3D noise_volume;
 layout(binding = 2) uniform sampler2DArray weather_field;
+layout(binding = 4) uniform sampler2D terrain_heights;  // terrain.glsl's height field
 #define MARCH_SOURCES_PARAM
 #define MARCH_SOURCES_ARG
 #define NOISE_LOD(x, lod) textureLod(noise_volume, x, lod)
 #define WEATHER_COVERAGE(uv, channel) texture(weather_field, vec3(uv, float(channel))).x
+#define TERRAIN_SOURCE_PARAM
+#define TERRAIN_SOURCE_ARG
+#define TERRAIN_HEIGHT(uv) texture(terrain_heights, uv).x
+#define MARCH_TERRAIN_ARG
 #include "../lib/cloud_march.glsl"
 #endif
 
@@ -52,6 +57,10 @@ MarchParams probe_march_params() {
   m.max_distance = 150000.0f;
   m.pixel_angle = 0.0875f;
   m.noise_texels = 16.0f;
+  m.terrain.enabled = 0;  // the bare sphere (tests/probes/terrain.glsl probes the terrain)
+  m.terrain.extent = 1.0f;
+  m.terrain.top = 0.0f;
+  m.terrain.texel = 1.0f;
   return m;
 }
 

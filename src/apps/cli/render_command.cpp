@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "apps/cli/commands.hpp"
+#include "io/elevation_files.hpp"
 #include "io/noise_cache.hpp"
 #include "render/cloud_renderer.hpp"
 #include "cover/cover_limits.hpp"
@@ -62,6 +63,10 @@ int run_render(const std::vector<std::string>& arguments) {
   options.bind(s::weather, &weather);
   int frames = regional::Scene{}.frames;  // render's own: the viewer accumulates by reprojection
   options.bind(s::frames, &frames);
+  std::string terrain;
+  options.bind(s::terrain, &terrain);
+  double fog_top = regional::Scene{}.fog_top_m;
+  options.bind(s::fog_top, &fog_top);
   options.bind(s::out, &out);
   options.bind(params::run::quiet, &quiet);
   options.bind(params::run::no_cache, &no_cache);
@@ -84,7 +89,7 @@ int run_render(const std::vector<std::string>& arguments) {
     if (options.given(s::heading)) orbit.heading = scene_options.heading();
     if (options.given(s::pitch)) orbit.pitch = scene_options.pitch();
     if (options.given(s::fov)) orbit.fov = scene_options.fov();
-    for (const auto* ground_only : {&s::at, &s::scene_path, &s::panorama, &s::weather, &s::view_steps, &s::light_steps, &s::frames})
+    for (const auto* ground_only : {&s::at, &s::scene_path, &s::panorama, &s::weather, &s::terrain, &s::fog_top, &s::view_steps, &s::light_steps, &s::frames})
       if (options.given(*ground_only))
         throw UsageError(ground_only->option() + ": not taken by --view orbit (it belongs to the ground views)");
     return run_orbit_render(orbit);
@@ -101,6 +106,11 @@ int run_render(const std::vector<std::string>& arguments) {
     typed["at"] = "--at";
   }
   if (options.given(s::frames)) scene.frames = frames;
+  if (options.given(s::terrain)) scene.terrain = terrain;
+  if (options.given(s::fog_top)) {
+    scene.fog_top_m = fog_top;
+    typed["fog_top"] = "--fog-top";
+  }
   if (panorama) {
     scene.panorama = true;
     if (!scene_options.size_given()) {
@@ -150,7 +160,14 @@ int run_render(const std::vector<std::string>& arguments) {
   // Weather (with the global cover when no files are given), the march, the files.
   core::Progress progress("render", 3, core::Progress::for_stderr(quiet));
   progress.update(0, "weather");
-  const render::PreparedScene prepared = render::prepare_scene(scene, io::read_scene_weather(scene));
+  render::PreparedScene prepared = render::prepare_scene(scene, io::read_scene_weather(scene));
+  std::string terrain_warning;
+  const std::string terrain_field = options.given(s::terrain) || scene_file.empty() ? s::terrain.option()
+                                                                                     : scene_file + ": 'terrain'";
+  const render::Camera& camera = prepared.partial.camera;
+  prepared.terrain = io::load_terrain(scene.terrain, camera.latitude_deg, camera.longitude_deg, camera.height_m,
+                                      &terrain_warning, terrain_field);
+  if (!terrain_warning.empty()) std::cerr << "warning: " << terrain_warning << "\n";
   progress.update(1, "clouds");
   // The noise volume from the disk cache when a layer is marched (the same bits as making it).
   std::unique_ptr<render::NoiseVolume> noise;

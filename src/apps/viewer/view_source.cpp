@@ -1,8 +1,10 @@
 #include "apps/viewer/view_source.hpp"
 
+#include <iostream>
 #include <sstream>
 
 #include "gpu/pass_timer.hpp"
+#include "io/elevation_files.hpp"
 #include "io/export_presets.hpp"
 #include "io/noise_cache.hpp"
 #include "io/weather_files.hpp"
@@ -51,6 +53,22 @@ render::RenderResult GroundSource::render(const ViewState& state, int width, int
   // resampling of the cover or the stations, no GPU pass).
   render::PreparedScene prepared;
   setup_ms.emplace_back("weather_field", gpu::time_pass([&] { prepared = render::prepare_scene(scene, stations_, cover_); }));
+  std::ostringstream terrain_key;
+  terrain_key.precision(17);
+  terrain_key << scene.terrain << ' ' << prepared.partial.camera.latitude_deg << ' ' << prepared.partial.camera.longitude_deg
+              << ' ' << prepared.partial.camera.height_m;
+  if (terrain_key.str() != terrain_key_) {
+    std::string warning;
+    setup_ms.emplace_back("terrain", gpu::time_pass([&] {
+                            terrain_ = io::load_terrain(scene.terrain, prepared.partial.camera.latitude_deg,
+                                                        prepared.partial.camera.longitude_deg,
+                                                        prepared.partial.camera.height_m, &warning);
+                          }));
+    // Said once per place, not once per frame.
+    if (!warning.empty()) std::cerr << "warning: " << warning << "\n";
+    terrain_key_ = terrain_key.str();
+  }
+  prepared.terrain = terrain_;
   render::RenderSettings settings = render::render_settings(scene);
   settings.first_row = first_row;
   settings.row_count = row_count;

@@ -45,6 +45,9 @@ class GroundSource : public ViewSource {
   std::vector<regional::WeatherSeries> stations_;
   std::vector<std::string> station_files_;
   std::unique_ptr<render::NoiseVolume> noise_;
+  // The ground's height grid is centred on the camera: made again only when the camera moved.
+  std::shared_ptr<const regional::TerrainGrid> terrain_;
+  std::string terrain_key_;
 };
 
 std::unique_ptr<ViewSource> make_view_source(const std::filesystem::path& cover_dir,

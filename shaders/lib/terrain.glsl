@@ -1,0 +1,114 @@
+// The ground of the views near the ground: a height field over the Earth sphere, its ray
+// intersection, normal and albedo (docs/terrain.md). Points q are relative to the centre of the
+// sphere that osculates the WGS84 ellipsoid at the viewpoint, in the camera's east-north-up
+// axes; the height field's horizontal coordinate of q is earth_radius * normalize(q).xy, metres
+// on the tangent plane at the camera. The including file defines how the heights are read:
+//   TERRAIN_SOURCE_PARAM  extra trailing parameter naming the height texture (empty in GLSL)
+//   TERRAIN_SOURCE_ARG    the matching argument (empty in GLSL)
+//   TERRAIN_HEIGHT(uv)    float: altitude (m above the sphere) at uv in [0, 1]^2, bilinear,
+//                         clamped to the edge; u east, v north
+#ifndef NEPHELE_TERRAIN_GLSL
+#define NEPHELE_TERRAIN_GLSL
+#include "prelude.glsl"
+#include "render_types.glsl"
+#include "ray_sphere.glsl"
+
+// March steps along a ray at most: a ray grazing the ground all the way needs about 100 steps
+// to 200 m, 530 more at 1% of the distance to 39 km, then 1 per texel (390 m) beyond.
+const int TERRAIN_MARCH_STEPS = 2048;
+const int TERRAIN_BISECTIONS = 16;     // halvings of the step that crossed the surface
+
+// The height field's horizontal coordinate (m) of a point.
+vec2 terrain_plane(vec3 q, float earth_radius) { return earth_radius * vec2(normalize(q)); }
+
+// Altitude of the ground above the sphere at a horizontal coordinate: the height field within
+// its square, the sphere itself (sea level) outside it and without terrain.
+float terrain_altitude(vec2 xy, IN(TerrainParams) t TERRAIN_SOURCE_PARAM) {
+  if (t.enabled == 0 || abs(xy.x) > t.extent || abs(xy.y) > t.extent) return 0.0f;
+  return TERRAIN_HEIGHT(0.5f + 0.5f * xy / t.extent);
+}
+
+// Height of a point above the ground below it (negative underground).
+float terrain_clearance(vec3 q, float earth_radius, IN(TerrainParams) t TERRAIN_SOURCE_PARAM) {
+  return length(q) - earth_radius - terrain_altitude(terrain_plane(q, earth_radius), t TERRAIN_SOURCE_ARG);
+}
+
+// Distance along the unit direction d from o (relative to the centre) to the first ground
+// point, at most `limit`; -1 when the ray reaches neither the terrain nor the sphere by then.
+// Within the shell below the highest terrain the ray steps by half its clearance (at least 2 m
+// plus 1% of the distance, so that rays grazing flat ground for long get through; at most one
+// texel, so that no texel is skipped), then bisects the step that crossed the surface. A ray
+// still above the ground after the last step has grazed it all along and counts as meeting it
+// there. loops: the iterations it took.
+float terrain_hit(vec3 o, vec3 d, float earth_radius, float limit, IN(TerrainParams) t, OUT(int) loops TERRAIN_SOURCE_PARAM) {
+  loops = 0;
+  vec2 sphere = ray_sphere(o, d, vec3(0.0f), earth_radius);
+  float ground = sphere.x < sphere.y && sphere.x > 0.0f && sphere.x <= limit ? sphere.x : -1.0f;
+  if (t.enabled == 0) return ground;
+  vec2 shell = ray_sphere(o, d, vec3(0.0f), earth_radius + t.top);
+  if (shell.x > shell.y || shell.y <= 0.0f) return ground;
+  float s = max(shell.x, 0.0f);
+  float end = min(shell.y, ground > 0.0f ? ground : limit);
+  float previous = s;
+  for (int i = 0; i < TERRAIN_MARCH_STEPS && s <= end; ++i) {
+    loops += 1;
+    float h = terrain_clearance(o + s * d, earth_radius, t TERRAIN_SOURCE_ARG);
+    if (h <= 0.0f) {
+      // The surface lies between the previous sample (above) and this one (below).
+      float a = previous;
+      float b = s;
+      for (int k = 0; k < TERRAIN_BISECTIONS; ++k) {
+        loops += 1;
+        float c = 0.5f * (a + b);
+        if (terrain_clearance(o + c * d, earth_radius, t TERRAIN_SOURCE_ARG) > 0.0f) a = c; else b = c;
+      }
+      return b;
+    }
+    previous = s;
+    s += min(max(0.5f * h, 2.0f + 0.01f * s), t.texel);
+  }
+  return s <= end ? s : ground;
+}
+
+// 1 where the ground point q (on the ground, outward normal `normal`) sees the sun in the unit
+// direction `sun`, 0 where the terrain hides it: a march towards the sun from 5 m off the
+// surface (four times the altitudes' float rounding at the Earth's radius, so that the point
+// does not find itself). loops: the iterations it took.
+float terrain_sunlit(vec3 q, vec3 normal, vec3 sun, float earth_radius, IN(TerrainParams) t, OUT(int) loops TERRAIN_SOURCE_PARAM) {
+  loops = 0;
+  if (t.enabled == 0) return 1.0f;
+  float hit = terrain_hit(q + 5.0f * normal, sun, earth_radius, 1.0e7f, t, loops TERRAIN_SOURCE_ARG);
+  return hit > 0.0f ? 0.0f : 1.0f;
+}
+
+// Outward unit normal of the ground at q (a point on it): the sphere's radial direction tilted
+// by the height field's gradient (central differences one texel apart).
+vec3 terrain_normal(vec3 q, float earth_radius, IN(TerrainParams) t TERRAIN_SOURCE_PARAM) {
+  vec3 up = normalize(q);
+  if (t.enabled == 0) return up;
+  vec2 xy = terrain_plane(q, earth_radius);
+  vec2 dx = vec2(t.texel, 0.0f);
+  vec2 dy = vec2(0.0f, t.texel);
+  float gx = (terrain_altitude(xy + dx, t TERRAIN_SOURCE_ARG) - terrain_altitude(xy - dx, t TERRAIN_SOURCE_ARG)) / (2.0f * t.texel);
+  float gy = (terrain_altitude(xy + dy, t TERRAIN_SOURCE_ARG) - terrain_altitude(xy - dy, t TERRAIN_SOURCE_ARG)) / (2.0f * t.texel);
+  // The grid's east and north axes made tangent at q.
+  vec3 east = normalize(vec3(1.0f, 0.0f, 0.0f) - up.x * up);
+  vec3 north = normalize(vec3(0.0f, 1.0f, 0.0f) - up.y * up);
+  return normalize(up - gx * east - gy * north);
+}
+
+// Lambertian albedo of the ground (docs/terrain.md): meadow and forest below the tree line,
+// rock on steep slopes and above it, snow above the snow line on slopes that hold it.
+vec3 terrain_albedo(float altitude, vec3 normal, vec3 up) {
+  vec3 meadow = vec3(0.10f, 0.14f, 0.07f);
+  vec3 rock = vec3(0.20f, 0.19f, 0.17f);
+  vec3 snow = vec3(0.80f, 0.82f, 0.85f);
+  float slope = 1.0f - dot(normal, up);  // 0 flat, 0.29 at 45 degrees
+  float rocky = clamp((altitude - 1800.0f) / 600.0f, 0.0f, 1.0f);
+  rocky = max(rocky, clamp((slope - 0.10f) / 0.10f, 0.0f, 1.0f));
+  vec3 ground = mix(meadow, rock, rocky);
+  float snowy = clamp((altitude - 2500.0f) / 400.0f, 0.0f, 1.0f) * (1.0f - clamp((slope - 0.25f) / 0.15f, 0.0f, 1.0f));
+  return mix(ground, snow, snowy);
+}
+
+#endif

@@ -1,0 +1,119 @@
+#include "io/elevation_files.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+
+#include "core/error.hpp"
+#include "render/cloud_renderer.hpp"
+
+namespace nephele::io {
+namespace {
+
+constexpr std::uint64_t etopo5_header_bytes = 52552;
+constexpr int etopo5_rows = 2161, etopo5_columns = 4320;
+constexpr double etopo5_step_deg = 1.0 / 12.0;
+
+float big_endian_float(const unsigned char* b) {
+  const std::uint32_t bits = (std::uint32_t(b[0]) << 24) | (std::uint32_t(b[1]) << 16) | (std::uint32_t(b[2]) << 8) | b[3];
+  float f;
+  std::memcpy(&f, &bits, sizeof f);
+  return f;
+}
+
+}  // namespace
+
+regional::ElevationRaster read_etopo5(const std::string& path, double south_deg, double north_deg,
+                                      const std::string& field) {
+  const std::string allowed = "the ETOPO5 netCDF of ferret-datasets (" + std::string(etopo5_default_path) + ")";
+  std::error_code error;
+  const std::uint64_t expected = etopo5_header_bytes + std::uint64_t(etopo5_rows) * etopo5_columns * 4;
+  const auto bytes = std::filesystem::file_size(path, error);
+  if (error || !std::filesystem::is_regular_file(path, error))
+    throw core::InputError(field, path, allowed, "cannot be read");
+  if (bytes != expected)
+    throw core::InputError(field, path, allowed, "has " + std::to_string(bytes) + " bytes, not " + std::to_string(expected));
+  std::ifstream in(path, std::ios::binary);
+  std::string header(etopo5_header_bytes, '\0');
+  if (!in.read(header.data(), header.size()) || header.compare(0, 4, std::string("CDF\x01", 4)) != 0 ||
+      header.find("ETOPO05_X") == std::string::npos || header.find("ETOPO05_Y") == std::string::npos)
+    throw core::InputError(field, path, allowed, "is not ETOPO5 (no netCDF header naming ETOPO05_X and ETOPO05_Y)");
+  // The coordinate variables end the header, big-endian doubles: 4320 longitudes from 0 east,
+  // then 2161 latitudes from -90 to 90. The lattice assumed below must be theirs.
+  const std::size_t latitudes = etopo5_header_bytes - std::size_t(etopo5_rows) * 8;
+  auto coordinate = [&](std::size_t offset) {
+    unsigned char b[8];
+    std::memcpy(b, header.data() + offset, 8);
+    std::uint64_t bits = 0;
+    for (unsigned char c : b) bits = (bits << 8) | c;
+    double d;
+    std::memcpy(&d, &bits, sizeof d);
+    return d;
+  };
+  if (coordinate(latitudes - std::size_t(etopo5_columns) * 8) != 0.0 || coordinate(latitudes) != -90.0 ||
+      coordinate(etopo5_header_bytes - 8) != 90.0)
+    throw core::InputError(field, path, allowed, "has other coordinates than ETOPO5 (0 E first, -90 to 90 N)");
+  const int first = std::clamp(static_cast<int>(std::floor((south_deg + 90.0) * 12.0)), 0, etopo5_rows - 1);
+  const int last = std::clamp(static_cast<int>(std::ceil((north_deg + 90.0) * 12.0)), first, etopo5_rows - 1);
+  regional::ElevationRaster raster;
+  raster.south_deg = -90.0 + first * etopo5_step_deg;
+  raster.west_deg = 0.0;
+  raster.step_deg = etopo5_step_deg;
+  raster.rows = last - first + 1;
+  raster.columns = etopo5_columns + 1;
+  raster.source = "ETOPO5 (" + path + ")";
+  raster.heights.resize(static_cast<size_t>(raster.rows) * raster.columns);
+  std::vector<unsigned char> row(etopo5_columns * 4);
+  in.seekg(static_cast<std::streamoff>(etopo5_header_bytes + std::uint64_t(first) * etopo5_columns * 4));
+  for (int r = 0; r < raster.rows; ++r) {
+    if (!in.read(reinterpret_cast<char*>(row.data()), static_cast<std::streamsize>(row.size())))
+      throw core::InputError(field, path, allowed, "could not be read to its end");
+    float* out = raster.heights.data() + static_cast<size_t>(r) * raster.columns;
+    for (int c = 0; c < etopo5_columns; ++c) {
+      const float h = big_endian_float(&row[4 * c]);
+      // Everest is 8849 m, the Challenger Deep -10935 m: anything else is not elevation.
+      if (!std::isfinite(h) || h < -11000.0f || h > 9000.0f)
+        throw core::InputError(field, path, allowed, "holds " + std::to_string(h) + " m, not an elevation");
+      out[c] = h;
+    }
+    out[etopo5_columns] = out[0];
+  }
+  return raster;
+}
+
+std::shared_ptr<const regional::TerrainGrid> load_terrain(const std::string& setting, double latitude_deg,
+                                                          double longitude_deg, double height_m, std::string* warning,
+                                                          const std::string& field) {
+  if (setting == "flat") return nullptr;
+  std::string path = setting;
+  if (setting == "etopo5") {
+    path = etopo5_default_path;
+    std::error_code error;
+    if (!std::filesystem::exists(path, error)) {
+      if (warning)
+        *warning = "no elevation data at " + path + " (install ferret-datasets): the ground is the bare sphere";
+      return nullptr;
+    }
+  }
+  // The rows the square reaches, with a margin: its corner lies extent * sqrt(2) away.
+  const double reach_deg = terrain_grid_extent_m * 1.5 / 111000.0;
+  const regional::ElevationRaster raster = read_etopo5(path, latitude_deg - reach_deg, latitude_deg + reach_deg, field);
+  auto grid = std::make_shared<const regional::TerrainGrid>(
+      regional::terrain_grid(latitude_deg, longitude_deg, height_m, render::osculating_earth_radius(latitude_deg), raster,
+                             regional::substitute_hills(), terrain_grid_size, terrain_grid_extent_m));
+  // The camera stands where the four middle texels meet; below their mean it looks out from
+  // underground (ETOPO5 fills valleys: Bern's old town at 540 m lies under 700 m of it).
+  const std::size_t n = grid->size, middle = n / 2;
+  const double ground = (grid->altitudes[(middle - 1) * n + middle - 1] + grid->altitudes[(middle - 1) * n + middle] +
+                         grid->altitudes[middle * n + middle - 1] + grid->altitudes[middle * n + middle]) / 4;
+  if (ground > height_m && warning)
+    *warning = "the camera at " + std::to_string(int(std::lround(height_m))) + " m is below the terrain there (" +
+               std::to_string(int(std::lround(ground))) + " m, " + raster.source +
+               " smooths valleys): raise its height or use --terrain flat";
+  return grid;
+}
+
+}  // namespace nephele::io

@@ -1,0 +1,49 @@
+// Probe of lib/terrain.glsl (shared GLSL/C++ subset; tests/test_library_probes.cpp). The GLSL
+// side reads the height field bound to texture unit 4.
+#ifndef __cplusplus
+layout(binding = 4) uniform sampler2D terrain_heights;
+#define TERRAIN_SOURCE_PARAM
+#define TERRAIN_SOURCE_ARG
+#define TERRAIN_HEIGHT(uv) texture(terrain_heights, uv).x
+#include "../lib/terrain.glsl"
+#endif
+
+// A 40 km square of 8 x 8 texels (5 km apart) on a sphere of radius 6367 km.
+TerrainParams probe_terrain_params() {
+  TerrainParams t;
+  t.enabled = 1;
+  t.extent = 20000.0f;
+  t.top = 1201.0f;
+  t.texel = 5000.0f;
+  return t;
+}
+
+// x[0] = (function, a, b, c), x[1] = a point (relative to the sphere's centre), x[2] = a
+// direction, x[3] = further numbers.
+vec4 probe_terrain(mat4 x TERRAIN_SOURCE_PARAM) {
+  int f = int(x[0].x);
+  float earth_radius = 6367000.0f;
+  TerrainParams t = probe_terrain_params();
+  t.enabled = int(x[0].w);
+  vec3 q = vec3(x[1]);
+  vec3 d = vec3(x[2]);
+  if (f == 0) return vec4(terrain_plane(q, earth_radius), 0.0f, 0.0f);
+  if (f == 1) {
+    return vec4(terrain_altitude(vec2(x[3]), t TERRAIN_SOURCE_ARG), terrain_clearance(q, earth_radius, t TERRAIN_SOURCE_ARG),
+                0.0f, 0.0f);
+  }
+  if (f == 2) {
+    int loops = 0;
+    float s = terrain_hit(q, d, earth_radius, x[0].y, t, loops TERRAIN_SOURCE_ARG);
+    return vec4(s, float(loops), 0.0f, 0.0f);
+  }
+  if (f == 3) return vec4(terrain_normal(q, earth_radius, t TERRAIN_SOURCE_ARG), 0.0f);
+  if (f == 5) {
+    int loops = 0;
+    vec3 normal = terrain_normal(q, earth_radius, t TERRAIN_SOURCE_ARG);
+    // Called before the vector is built: C++ leaves the order of a constructor's arguments open.
+    float sunlit = terrain_sunlit(q, normal, d, earth_radius, t, loops TERRAIN_SOURCE_ARG);
+    return vec4(sunlit, float(loops), 0.0f, 0.0f);
+  }
+  return vec4(terrain_albedo(x[0].y, d, vec3(0.0f, 0.0f, 1.0f)), 0.0f);
+}

@@ -1,0 +1,259 @@
+// The ground of the views near the ground: ETOPO5 as read, the height field built from it with
+// the substitute hills, and the horizon the renderer sees against the one computed from the
+// elevation data (docs/terrain.md).
+#include <catch2/catch.hpp>
+
+#include <GeographicLib/Geodesic.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include "core/error.hpp"
+#include "gl_support.hpp"
+#include "io/elevation_files.hpp"
+#include "march_tolerance.hpp"
+#include "regional/sites.hpp"
+#include "regional/terrain.hpp"
+#include "render/cloud_renderer.hpp"
+#include "shader_math/shader_math.hpp"
+#include "tolerances.hpp"
+
+using namespace nephele;
+
+namespace {
+
+constexpr double gurten_lat = 46.91722, gurten_lon = 7.44361, eye_height = 860.0;  // 2 m above the summit
+constexpr double eiger_lat = 46.5776, eiger_lon = 7.9974;         // 3967 m
+constexpr double chasseral_lat = 47.1328, chasseral_lon = 7.0586;  // 1607 m, the Jura
+
+bool have_etopo5() { return std::filesystem::exists(io::etopo5_default_path); }
+
+const regional::ElevationRaster& raster() {
+  static const regional::ElevationRaster r = io::read_etopo5(io::etopo5_default_path, 44.0, 50.0);
+  return r;
+}
+
+const regional::TerrainGrid& gurten_grid() {
+  static const std::shared_ptr<const regional::TerrainGrid> grid =
+      io::load_terrain("etopo5", gurten_lat, gurten_lon, eye_height);
+  return *grid;
+}
+
+double azimuth_deg(double lat, double lon) {
+  double s, a1, a2;
+  GeographicLib::Geodesic::WGS84().Inverse(gurten_lat, gurten_lon, lat, lon, s, a1, a2);
+  return a1;
+}
+
+glsl::TerrainParams params_of(const regional::TerrainGrid& g) {
+  return {1, float(g.extent_m), g.top_m + 1.0f, float(g.texel_m())};
+}
+
+// The highest pitch (degrees) at which a ray from the camera in an azimuth meets the ground, by
+// bisection over rays cast with the marcher's C++ twin (terrain.glsl).
+double cast_horizon_deg(const regional::TerrainGrid& g, double azimuth) {
+  using namespace glsl;
+  const float R = float(render::osculating_earth_radius(gurten_lat));
+  const TerrainParams t = params_of(g);
+  const LayeredSource source{g.size, 1, g.altitudes.data()};
+  const vec3 o(0.0f, 0.0f, R + float(eye_height));
+  auto hits = [&](double pitch_deg) {
+    const double p = pitch_deg * M_PI / 180, a = azimuth * M_PI / 180;
+    const vec3 d(float(std::cos(p) * std::sin(a)), float(std::cos(p) * std::cos(a)), float(std::sin(p)));
+    int loops = 0;
+    return terrain_hit(o, d, R, 1.0e6f, t, loops, source) > 0.0f;
+  };
+  double below = -5.0, above = 10.0;
+  REQUIRE(hits(below));
+  REQUIRE(!hits(above));
+  while (above - below > 1e-5) {
+    const double middle = 0.5 * (below + above);
+    (hits(middle) ? below : above) = middle;
+  }
+  return 0.5 * (below + above);
+}
+
+// The steepest slope of the raster's bilinear surface between two latitudes and longitudes:
+// its largest sample-to-sample difference over the sample spacing (metres).
+double steepest_slope(const regional::ElevationRaster& r, double south, double north, double west, double east) {
+  double steepest = 0;
+  const double dy = r.step_deg * 111132.0;
+  for (int row = 0; row + 1 < r.rows; ++row) {
+    const double lat = r.south_deg + row * r.step_deg;
+    if (lat < south || lat > north) continue;
+    const double dx = dy * std::cos(lat * M_PI / 180);
+    for (int c = 0; c + 1 < r.columns; ++c) {
+      const double lon = r.west_deg + c * r.step_deg;
+      if (lon < west || lon > east) continue;
+      const float h = r.heights[size_t(row) * r.columns + c];
+      steepest = std::max({steepest, std::abs(r.heights[size_t(row) * r.columns + c + 1] - h) / dx,
+                           std::abs(r.heights[size_t(row + 1) * r.columns + c] - h) / dy});
+    }
+  }
+  return steepest;
+}
+
+// How far the ray-cast horizon may lie from the elevation data's, in degrees, for ground at
+// distance_m. The height field resamples the raster's bilinear surface at texel centres; a
+// bilinear interpolation of those is a convex combination of values within sqrt(2) Delta of the
+// point, so it differs from the raster by at most L sqrt(2) Delta (L the raster's steepest slope
+// around Bern and the Alps). The reference's samples, step_m apart, miss the highest point by at
+// most L step / 2. At the distance these heights are angles; rounding (kPosition at the Earth's
+// radius) adds kPosition / D.
+double horizon_tolerance_deg(const regional::TerrainGrid& g, double distance_m, double step_m) {
+  static const double L = steepest_slope(raster(), 46.0, 47.6, 6.5, 8.5);
+  return (L * std::sqrt(2.0) * g.texel_m() + L * step_m / 2 + test::kPosition) / distance_m * 180 / M_PI;
+}
+
+}  // namespace
+
+TEST_CASE("ETOPO5 reads Bern's plateau, the Bernese Alps and the Atlantic where they are", "[terrain]") {
+  if (!have_etopo5()) FAIL("ferret-datasets is not installed (scripts/debian-packages.txt)");
+  const auto& r = raster();
+  // The samples next to Bern as the file holds them (row 1643 is 46.91667 N, column 89 is
+  // 7.41667 E): 610 m, 713 m a row north (1644), the plateau at row 1645 560 m; between
+  // samples bilinear. (Lattice coordinates are rounded: a micrometre's margin.)
+  CHECK(*r.at(-90.0 + 1643 / 12.0, 89 / 12.0) == Approx(610.0).epsilon(0).margin(1e-6));
+  CHECK(*r.at(-90.0 + 1645 / 12.0, 89 / 12.0) == Approx(560.0).epsilon(0).margin(1e-6));
+  CHECK(*r.at(-90.0 + 1643.5 / 12.0, 89 / 12.0) == Approx((610.0 + 713.0) / 2).epsilon(0).margin(1e-6));
+  // The Eiger region: the highest cells of the Bernese Oberland exceed 2500 m but are below the
+  // 3967 m summit (5' cells average the relief).
+  CHECK(*r.at(eiger_lat, eiger_lon) > 2500.0);
+  CHECK(*r.at(eiger_lat, eiger_lon) < 3967.0);
+  // Longitude wraps: 359.99 E is next to 0 E.
+  CHECK(r.at(46.0, -0.01).has_value());
+  const regional::ElevationRaster ocean = io::read_etopo5(io::etopo5_default_path, -1.0, 1.0);
+  CHECK(*ocean.at(0.0, -30.0) < -2000.0);
+}
+
+TEST_CASE("an elevation file that is not ETOPO5 is bad input naming the option and the file", "[terrain]") {
+  const std::filesystem::path path = std::filesystem::temp_directory_path() / "nephele_not_etopo5.cdf";
+  std::ofstream(path) << "CDF\x01 not the data";
+  try {
+    io::read_etopo5(path.string(), 46.0, 47.0, "--terrain");
+    FAIL("no error");
+  } catch (const core::InputError& e) {
+    CHECK(std::string(e.what()).find("--terrain") != std::string::npos);
+    CHECK(std::string(e.what()).find(path.string()) != std::string::npos);
+  }
+  CHECK_THROWS_AS(io::read_etopo5((path.string() + ".absent"), 46.0, 47.0), core::InputError);
+  std::filesystem::remove(path);
+  // "flat" asks for no terrain at all.
+  CHECK(io::load_terrain("flat", gurten_lat, gurten_lon, eye_height) == nullptr);
+}
+
+TEST_CASE("a camera below the smoothed ground is warned about, one on Gurten is not", "[terrain]") {
+  if (!have_etopo5()) FAIL("ferret-datasets is not installed (scripts/debian-packages.txt)");
+  std::string warning;
+  // Bern's old town (540 m) lies under ETOPO5's 700 m there.
+  CHECK(io::load_terrain("etopo5", 46.94806, 7.44750, 542.0, &warning) != nullptr);
+  CHECK(warning.find("below the terrain") != std::string::npos);
+  warning.clear();
+  CHECK(io::load_terrain("etopo5", gurten_lat, gurten_lon, eye_height, &warning) != nullptr);
+  CHECK(warning.empty());
+}
+
+TEST_CASE("the substitute hills bring Gurten and Bantiger up to their summits", "[terrain]") {
+  if (!have_etopo5()) FAIL("ferret-datasets is not installed (scripts/debian-packages.txt)");
+  const auto& g = gurten_grid();
+  const glsl::LayeredSource source{g.size, 1, g.altitudes.data()};
+  const glsl::TerrainParams t = params_of(g);
+  // Bilinear interpolation between texels Delta apart lowers a peak of curvature A / sigma^2
+  // along each axis by at most Delta^2 / 8 of the curvatures' sum.
+  for (const auto& hill : regional::substitute_hills()) {
+    const double relief = hill.summit_m - *raster().at(hill.latitude_deg, hill.longitude_deg);
+    const double peak_loss = g.texel_m() * g.texel_m() / 8 * 2 * relief / (hill.sigma_m * hill.sigma_m);
+    // The summit's horizontal coordinate in the camera's frame (metres east and north).
+    double s, a1, a2;
+    GeographicLib::Geodesic::WGS84().Inverse(gurten_lat, gurten_lon, hill.latitude_deg, hill.longitude_deg, s, a1, a2);
+    const glsl::vec2 xy(float(s * std::sin(a1 * M_PI / 180)), float(s * std::cos(a1 * M_PI / 180)));
+    INFO(hill.name << ": relief above the raster " << relief << " m, peak loss bound " << peak_loss << " m");
+    const double altitude = glsl::terrain_altitude(xy, t, source);
+    // The sphere lies below the ellipsoid by s^2 / 2 (1/R_sphere - 1/R_ellipsoid) (under a metre
+    // within 10 km): absorbed by a metre's margin.
+    CHECK(altitude <= hill.summit_m + 1.0);
+    CHECK(altitude >= hill.summit_m - peak_loss - 1.0);
+  }
+}
+
+TEST_CASE("from Gurten the ray-cast horizon towards the Eiger and the Jura matches the elevation data", "[terrain]") {
+  if (!have_etopo5()) FAIL("ferret-datasets is not installed (scripts/debian-packages.txt)");
+  const auto& g = gurten_grid();
+  const double step = 100.0;
+  for (const auto& [name, lat, lon] : {std::tuple<const char*, double, double>{"Eiger", eiger_lat, eiger_lon},
+                                       {"Chasseral (Jura)", chasseral_lat, chasseral_lon}}) {
+    const double azimuth = azimuth_deg(lat, lon);
+    double distance = 0;
+    const double reference = regional::horizon_elevation_deg(gurten_lat, gurten_lon, eye_height, azimuth, raster(),
+                                                             regional::substitute_hills(), 140000.0, step, &distance);
+    const double cast = cast_horizon_deg(g, azimuth);
+    const double tolerance = horizon_tolerance_deg(g, distance, step);
+    INFO(name << ": azimuth " << azimuth << ", reference " << reference << " deg at " << distance << " m, cast " << cast
+              << " deg, tolerance " << tolerance << " deg");
+    CHECK(cast == Approx(reference).epsilon(0).margin(tolerance));
+    // The bare sphere's horizon from 860 m lies acos(R / (R + h)) below the horizontal: the
+    // ground stands above it in both directions.
+    const double sphere_dip = -std::acos(6.367e6 / (6.367e6 + eye_height)) * 180 / M_PI;
+    CHECK(cast > sphere_dip + 0.5);
+  }
+  // The Alps stand higher on the horizon than the Jura.
+  CHECK(cast_horizon_deg(g, azimuth_deg(eiger_lat, eiger_lon)) >
+        cast_horizon_deg(g, azimuth_deg(chasseral_lat, chasseral_lon)) + 0.5);
+}
+
+TEST_CASE("rendered from Gurten, the ground meets the sky where the elevation data put the horizon", "[terrain][render]") {
+  if (!have_etopo5()) FAIL("ferret-datasets is not installed (scripts/debian-packages.txt)");
+  test::test_context();
+  const auto grid = io::load_terrain("etopo5", gurten_lat, gurten_lon, eye_height);
+  // A clear sky: no layer is marched, so the pixels differ only where the ground does.
+  regional::WeatherField field{4, 160000.0, std::vector<float>(regional::coverage_channels * 16, 0.0f)};
+  render::RenderSettings settings;
+  settings.sky_steps = 4;
+  for (const auto& [name, lat, lon] : {std::tuple<const char*, double, double>{"Eiger", eiger_lat, eiger_lon},
+                                       {"Chasseral (Jura)", chasseral_lat, chasseral_lon}}) {
+    // A narrow column of pixels about the bare sphere's horizon and the reference's.
+    render::Camera camera;
+    camera.latitude_deg = gurten_lat;
+    camera.longitude_deg = gurten_lon;
+    camera.height_m = eye_height;
+    camera.heading_deg = azimuth_deg(lat, lon);
+    camera.pitch_deg = 0.5;
+    camera.fov_deg = 1.5;
+    camera.width = 8;
+    camera.height = 48;  // 0.19 degrees a pixel, 9 degrees tall
+    const double time = 1782036000;  // 2026-06-21 10:00 UTC
+    settings.terrain = grid;
+    const render::RenderResult with = render::render_clouds(camera, {}, field, time, settings);
+    settings.terrain = nullptr;
+    const render::RenderResult bare = render::render_clouds(camera, {}, field, time, settings);
+    const glsl::MarchParams m = render::march_params(camera, {}, field, time, settings);
+    double distance = 0;
+    const double reference = regional::horizon_elevation_deg(gurten_lat, gurten_lon, eye_height, camera.heading_deg,
+                                                             raster(), regional::substitute_hills(), 140000.0, 100.0,
+                                                             &distance);
+    const double tolerance = horizon_tolerance_deg(*grid, distance, 100.0);
+    // The first row from the top where the ground shows: its ray meets the ground, the row
+    // above it does not, so the horizon lies between their elevations (within the height
+    // field's tolerance).
+    const int column = camera.width / 2;
+    int first = -1;
+    for (int row = 0; row < camera.height && first < 0; ++row) {
+      const size_t k = (size_t(row) * camera.width + column) * 4;
+      if (std::abs(with.radiance.pixels[k] - bare.radiance.pixels[k]) > 1e-6f * std::abs(bare.radiance.pixels[k]))
+        first = row;
+    }
+    REQUIRE(first > 0);
+    auto elevation = [&](int row) {
+      return std::asin(glsl::view_direction(glsl::ivec2(column, row), glsl::ivec2(camera.width, camera.height), m).z) *
+             180 / M_PI;
+    };
+    INFO(name << ": reference " << reference << " deg, ground from row " << first << " at " << elevation(first)
+              << " deg, row above at " << elevation(first - 1) << " deg");
+    CHECK(reference >= elevation(first) - tolerance);
+    CHECK(reference <= elevation(first - 1) + tolerance);
+    // Above the bare sphere's horizon (0.94 degrees below the horizontal from 860 m).
+    CHECK(elevation(first) > -0.9);
+  }
+}
