@@ -104,4 +104,32 @@ TEST_CASE("nephele view --help lists the keys and the table's options; bad optio
   CHECK_THAT(bad.output, Catch::Contains("--coverage"));
 }
 
+
+TEST_CASE("the orbit viewpoint lifts the camera to the orbit view's altitude over the same point; above the ground views' ceiling the orbit renderer shows", "[viewer]") {
+  viewer::ViewState state;
+  viewer::go_to_viewpoint(state, "gurten");
+  const double latitude = state.camera.latitude_deg, longitude = state.camera.longitude_deg;
+  CHECK_FALSE(viewer::shows_orbit(state));
+  viewer::go_to_viewpoint(state, "orbit");
+  CHECK(viewer::shows_orbit(state));
+  CHECK(state.camera.height_m == params::scene::altitude_km.default_number * 1000.0);
+  CHECK(state.camera.pitch_deg == -90);
+  CHECK(state.camera.latitude_deg == latitude);
+  CHECK(state.camera.longitude_deg == longitude);
+  // Flying clears the named viewpoint; the height alone then decides, the ground renderer's
+  // range ending at the scene's highest camera.
+  viewer::fly(state, 0, 0, 0);
+  CHECK(viewer::shows_orbit(state));
+  state.camera.height_m = params::scene::height.max;
+  CHECK_FALSE(viewer::shows_orbit(state));
+  state.camera.height_m = params::scene::height.max + 1;
+  CHECK(viewer::shows_orbit(state));
+  // A scene that asks for the orbit view starts there (render --view orbit's default point).
+  regional::Scene scene;
+  scene.view = "orbit";
+  const viewer::ViewState from_scene = viewer::state_of_scene(scene);
+  CHECK(viewer::shows_orbit(from_scene));
+  CHECK(from_scene.camera.latitude_deg == Approx(params::scene::lat.default_number).epsilon(0).margin(1e-9));
+}
+
 }  // namespace nephele

@@ -96,6 +96,28 @@ TEST_CASE("the window shows the image nephele render makes headless of the same 
   CHECK(sum / shown.pixels.size() > 0.1);
 }
 
+TEST_CASE("in orbit the window shows the image render --view orbit makes headless of the same camera", "[window][orbit]") {
+  Viewer v(small_view());
+  v.set_panels_visible(false);
+  viewer::go_to_viewpoint(v.state(), "orbit");
+  v.state().camera.fov_deg = 60;
+  CHECK(viewer::shows_orbit(v.state()));
+  refine(v);
+  test::TemporaryDirectory out(true);
+  const auto exr = out.path / "orbit.exr";
+  const auto r = test::run("render --view orbit --lat 46.9191 --lon 7.4397 --altitude-km 2000 --heading 300 --pitch -90 "
+                           "--fov 60 --time 2026-06-21T16:00Z --size 64x36 --quiet --out " + exr.string());
+  REQUIRE(r.exit_code == 0);
+  const core::ImageData radiance = io::read_image(exr);
+  // The same renderer, cover (made from the same default parameters and seed) and camera in the
+  // window's context and the headless one: the same radiance to the bit.
+  CHECK(largest_difference(v.shown_radiance(), radiance) == 0);
+  // The planet is there: the disc's centre is lit at 16:00 UTC over Bern (sun up).
+  double sum = 0;
+  for (float p : v.shown_radiance().pixels) sum += p;
+  CHECK(sum > 0);
+}
+
 TEST_CASE("a change renders a quarter-size preview in the next frame, then refines to full size", "[window]") {
   Viewer v(small_view());
   v.set_panels_visible(false);

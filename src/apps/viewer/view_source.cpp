@@ -1,5 +1,6 @@
 #include "apps/viewer/view_source.hpp"
 
+#include <algorithm>
 #include <iostream>
 #include <sstream>
 
@@ -7,6 +8,8 @@
 #include "io/elevation_files.hpp"
 #include "io/export_presets.hpp"
 #include "io/noise_cache.hpp"
+#include "io/planet_textures.hpp"
+#include "core/time.hpp"
 #include "io/weather_files.hpp"
 
 namespace nephele::viewer {
@@ -82,9 +85,60 @@ render::RenderResult GroundSource::render(const ViewState& state, int width, int
   return out.render;
 }
 
+OrbitSource::OrbitSource(const std::filesystem::path& cover_dir) : cover_dir_(cover_dir) {}
+OrbitSource::~OrbitSource() = default;
+
+render::RenderResult OrbitSource::render(const ViewState& state, int width, int height, int, int) {
+  std::vector<std::pair<std::string, double>> setup_ms;
+  // The cover: the files once, or made again when the panels change its parameters.
+  const std::string key = cover_dir_.empty() ? cover_key(cover_of(state)) : cover_dir_.string();
+  if (!renderer_ || key != cover_key_) {
+    render::CoverCube cube;
+    setup_ms.emplace_back("global_cover", gpu::time_pass([&] {
+                            if (!cover_dir_.empty()) {
+                              cube = io::read_cover_cube(cover_dir_);
+                            } else {
+                              render::GlobalCoverFaces faces = render::make_global_cover(cover_of(state));
+                              cube = {faces.size, std::move(faces.texels)};
+                            }
+                          }));
+    if (renderer_) {
+      renderer_->set_cover(cube);
+    } else {
+      const io::PlanetTextures textures = io::read_planet_textures("");
+      for (const auto& warning : textures.warnings) std::cerr << "warning: " << warning << "\n";
+      setup_ms.emplace_back("planet_textures", gpu::time_pass([&] {
+                              renderer_ = std::make_unique<render::OrbitRenderer>(textures.images, cube);
+                            }));
+    }
+    cover_key_ = key;
+  }
+  render::OrbitCamera camera;
+  camera.latitude_deg = state.camera.latitude_deg;
+  camera.longitude_deg = state.camera.longitude_deg;
+  // The orbit view's range starts at 1 m above its sphere.
+  camera.altitude_m = std::clamp(state.camera.height_m, 1.0, params::scene::altitude_km.max * 1000.0);
+  camera.heading_deg = state.camera.heading_deg;
+  camera.pitch_deg = state.camera.pitch_deg;
+  camera.fov_deg = state.camera.fov_deg;
+  camera.width = width;
+  camera.height = height;
+  render::RenderResult result = renderer_->render(camera, core::parse_utc_time(state.time));
+  result.timings_ms.insert(result.timings_ms.begin(), setup_ms.begin(), setup_ms.end());
+  return result;
+}
+
+ViewSwitch::ViewSwitch(const std::filesystem::path& cover_dir, const std::filesystem::path& cache_directory)
+    : ground_(cover_dir, cache_directory), orbit_(cover_dir) {}
+
+render::RenderResult ViewSwitch::render(const ViewState& state, int width, int height, int first_row, int row_count) {
+  if (shows_orbit(state)) return orbit_.render(state, width, height, first_row, row_count);
+  return ground_.render(state, width, height, first_row, row_count);
+}
+
 std::unique_ptr<ViewSource> make_view_source(const std::filesystem::path& cover_dir,
                                              const std::filesystem::path& cache_directory) {
-  return std::make_unique<GroundSource>(cover_dir, cache_directory);
+  return std::make_unique<ViewSwitch>(cover_dir, cache_directory);
 }
 
 }  // namespace nephele::viewer

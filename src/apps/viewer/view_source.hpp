@@ -1,6 +1,6 @@
 #pragma once
-// What the window shows, behind one interface: the ground renderer today; another renderer
-// (an orbit view) plugs in by implementing ViewSource and being chosen in make_view_source.
+// What the window shows, behind one interface: the ground renderer and the orbit renderer,
+// chosen per frame by ViewSwitch (make_view_source).
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -9,6 +9,7 @@
 #include "apps/viewer/view_state.hpp"
 #include "regional/weather.hpp"
 #include "render/cloud_renderer.hpp"
+#include "render/orbit_renderer.hpp"
 #include "render/scene_renderer.hpp"
 
 namespace nephele::viewer {
@@ -48,6 +49,37 @@ class GroundSource : public ViewSource {
   // The ground's height grid is centred on the camera: made again only when the camera moved.
   std::shared_ptr<const regional::TerrainGrid> terrain_;
   std::string terrain_key_;
+};
+
+// The orbit view (render::OrbitRenderer): the planet's maps of io::read_planet_textures (the
+// xplanet maps, else a procedural planet with a warning) and the cover of `cover_dir`, else made
+// from the state's cover parameters. The camera's height is the altitude above the sphere.
+class OrbitSource : public ViewSource {
+ public:
+  explicit OrbitSource(const std::filesystem::path& cover_dir);
+  ~OrbitSource() override;
+  std::string name() const override { return "orbit"; }
+  // Renders the whole image (the orbit view has no bands; `first_row`, `row_count` are ignored).
+  render::RenderResult render(const ViewState& state, int width, int height, int first_row = 0,
+                              int row_count = 0) override;
+
+ private:
+  std::filesystem::path cover_dir_;
+  std::unique_ptr<render::OrbitRenderer> renderer_;
+  std::string cover_key_;
+};
+
+// The view nephele view shows: the orbit renderer where shows_orbit(state), else the ground's.
+class ViewSwitch : public ViewSource {
+ public:
+  ViewSwitch(const std::filesystem::path& cover_dir, const std::filesystem::path& cache_directory);
+  std::string name() const override { return "ground or orbit"; }
+  render::RenderResult render(const ViewState& state, int width, int height, int first_row = 0,
+                              int row_count = 0) override;
+
+ private:
+  GroundSource ground_;
+  OrbitSource orbit_;
 };
 
 std::unique_ptr<ViewSource> make_view_source(const std::filesystem::path& cover_dir,

@@ -27,6 +27,12 @@ bool option_only(const params::Parameter& p) {
 }
 
 void go_to_viewpoint(ViewState& state, const std::string& name) {
+  if (name == "orbit") {
+    state.viewpoint = name;
+    state.camera.height_m = params::scene::altitude_km.default_number * 1000.0;
+    state.camera.pitch_deg = -90;
+    return;
+  }
   if (!regional::find_viewpoint(name)) return;
   regional::Scene scene;
   scene.view = name;
@@ -40,8 +46,18 @@ void go_to_viewpoint(ViewState& state, const std::string& name) {
 
 ViewState state_of_scene(const regional::Scene& scene) {
   ViewState state;
-  state.viewpoint = scene.latitude_deg ? "" : scene.view;
-  state.camera = render::scene_camera(scene);
+  if (!scene.latitude_deg && scene.view == "orbit") {
+    // Above the orbit view's default point (render --view orbit without --lat, --lon).
+    regional::Scene ground = scene;
+    ground.latitude_deg = params::scene::lat.default_number;
+    ground.longitude_deg = params::scene::lon.default_number;
+    ground.height_m = 0.0;
+    state.camera = render::scene_camera(ground);
+    go_to_viewpoint(state, "orbit");
+  } else {
+    state.viewpoint = scene.latitude_deg ? "" : scene.view;
+    state.camera = render::scene_camera(scene);
+  }
   state.time = scene.time;
   state.seed = scene.seed;
   state.cover_size = scene.cover_size;
@@ -95,6 +111,10 @@ void drag(ViewState& state, double dx, double dy, int width) {
 void zoom(ViewState& state, double notches) {
   state.camera.fov_deg = std::clamp(state.camera.fov_deg * std::pow(zoom_per_notch, notches), params::scene::fov.min,
                                     params::scene::fov.max);
+}
+
+bool shows_orbit(const ViewState& state) {
+  return state.viewpoint == "orbit" || state.camera.height_m > params::scene::height.max;
 }
 
 double flight_step_m(const ViewState& state) { return std::max(50.0, 0.1 * std::abs(state.camera.height_m)); }

@@ -44,8 +44,12 @@ bool option_only(const params::Parameter& p);
 
 // The state of a scene (flags or --scene FILE): its viewpoint or position, view, time, steps.
 ViewState state_of_scene(const regional::Scene& scene);
-// Moves the camera to a named viewpoint (eye 2 m above the summit, the view's heading).
+// Moves the camera to a named viewpoint (eye 2 m above the summit, the view's heading); "orbit"
+// lifts it to the orbit view's default altitude above the point where it is, looking down.
 void go_to_viewpoint(ViewState& state, const std::string& name);
+// Whether a state is shown by the orbit renderer: chosen as the viewpoint, or the camera above
+// the ground views' highest camera (the scene's height range).
+bool shows_orbit(const ViewState& state);
 // The scene and cover of a render of `state` at width x height.
 regional::Scene scene_of(const ViewState& state, int width, int height);
 cover::CoverParameters cover_of(const ViewState& state);
