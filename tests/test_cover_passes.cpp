@@ -60,6 +60,7 @@ cover::CoverParameters small(int size, int iterations = 50) {
   p.integrator = cover::Integrator::euler;
   p.curl_mode = cover::CurlMode::sampled;
   p.step = 0.006f;
+  p.profile = cover::flat_profile();  // one threshold for the sphere (test_latitude_profile.cpp: the bands)
   return p;
 }
 

@@ -4,7 +4,7 @@ namespace nephele::params {
 
 const std::vector<const Parameter*>& all() {
   static const std::vector<const Parameter*> parameters = {
-      &cover::size, &cover::seed, &cover::iterations, &cover::step, &cover::coverage,
+      &cover::size, &cover::seed, &cover::iterations, &cover::step, &cover::coverage, &cover::profile, &cover::month,
       &cover::curl_frequency, &cover::curl_octaves, &cover::curl_lacunarity, &cover::curl_gain,
       &cover::prevailing, &cover::mix_frequency, &cover::curl_strength, &cover::curl_smoothing, &cover::density_frequency,
       &cover::density_octaves, &cover::density_lacunarity, &cover::density_gain, &cover::integrator,

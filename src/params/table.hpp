@@ -17,6 +17,8 @@ inline constexpr Parameter seed = integer("seed", 1, 0, 4294967295.0, "", "seed 
 inline constexpr Parameter iterations = integer("iterations", 2, 0, 100000, "steps", "warp steps K", cover_commands | viewer);
 inline constexpr Parameter step = real("step", 0.15, 0.0, 10.0, "radians", "warp step size h (flow time T = K h)", cover_commands | viewer);
 inline constexpr Parameter coverage = real("coverage", 0.67, 0.0, 1.0, "fraction", "cloudy fraction of the sphere, by solid angle", cover_commands | viewer);
+inline constexpr Parameter profile = text("profile", "earth", "earth|flat|FILE", "target cloudy fraction by latitude: earth (zonal-mean climatology), flat (one threshold for the sphere), or a CSV of latitude_deg,fraction rows; its area-weighted mean is rescaled to --coverage (docs/climate.md)", cover_commands);
+inline constexpr Parameter month = integer("month", 0, 0, 12, "", "month of the profile's seasonal shift of the ITCZ and storm tracks (1 January .. 12 December; 0 the annual mean)", cover_commands | viewer);
 inline constexpr Parameter curl_frequency = real("curl_frequency", 2.0, 0.01, 4096.0, "cells per radius", "Worley cells per unit radius of the flow's potential", cover_commands, "potential.frequency");
 inline constexpr Parameter curl_octaves = integer("curl_octaves", 2, 0, 16, "", "octaves of the potential", cover_commands, "potential.octaves");
 inline constexpr Parameter curl_lacunarity = real("curl_lacunarity", 2.0, 1.0, 8.0, "", "frequency ratio between octaves", cover_commands, "potential.lacunarity");
