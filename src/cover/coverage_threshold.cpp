@@ -116,7 +116,10 @@ std::vector<BandCrossing> band_crossings(const std::vector<double>& coarse, cons
 std::vector<float> band_thresholds(const std::vector<BandCrossing>& crossings, const std::vector<double>& fine,
                                    float density_min, float density_max, float scale) {
   const int bands = static_cast<int>(crossings.size());
-  const float none_cloudy = density_max, all_cloudy = std::nextafter(density_min, -INFINITY);
+  // Nothing cloudy: a threshold one span above the largest density, so that the float blend of
+  // equal neighbours (whose weights sum to 1 only within rounding) stays above every density.
+  const float none_cloudy = density_max + std::max(density_max - density_min, 1.0f);
+  const float all_cloudy = std::nextafter(density_min, -INFINITY);
   std::vector<float> thresholds(static_cast<size_t>(bands), 0.0f);
   std::vector<int> filled;
   for (int b = 0; b < bands; ++b) {

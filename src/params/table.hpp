@@ -141,6 +141,7 @@ inline constexpr Parameter export_preset = text("preset", "", "equirect|gl-faces
 inline constexpr Parameter export_out = text("out", "", "DIR", "output directory (created if missing; the set appears whole or not at all)", export_cover);
 inline constexpr Parameter export_format = text("format", "r16f", "r16f|r32f|r8", "sample format of the ktx2 preset: half float, float, 8-bit unsigned normalised", export_cover);
 inline constexpr Parameter export_name = text("name", "nephele_clouds", "NAME", "add-on folder and file name of the celestia and eve presets (letters, digits, _ and -)", export_cover);
+inline constexpr Parameter stats_out = text("out", "", "DIR", "output directory of stats.json and stats.png (default COVER_DIR/stats; created if missing, replaced whole)", stats);
 inline constexpr Parameter report_out = text("out", "report", "DIR", "output directory (created if missing)", report);
 inline constexpr Parameter quiet = flag("quiet", "no progress reports on stderr (they appear for work of more than a second)", generate | report | render | noise | model);
 inline constexpr Parameter no_cache = flag("no_cache", "neither read nor write the noise volume cache ($XDG_CACHE_HOME/nephele, else ~/.cache/nephele)", render | viewer);
