@@ -157,3 +157,21 @@ TEST_CASE("stats refuses a missing directory, a malformed cover.json and wrong s
   CHECK(wrong.output.find("cover_equirect.exr") != std::string::npos);
   CHECK(!std::filesystem::exists(cover.path / "stats"));
 }
+
+TEST_CASE("the climatology notebook runs headless on a small cover and draws its figure", "[stats][notebook]") {
+  // notebooks/climatology.ipynb runs nephele generate --size 64 and nephele stats itself
+  // (Debian's jupyter-nbconvert, python3-ipykernel, python3-matplotlib, as error_vs_runtime).
+  test::TemporaryDirectory out(true);
+  const std::filesystem::path notebook =
+      std::filesystem::path(__FILE__).parent_path().parent_path() / "notebooks" / "climatology.ipynb";
+  REQUIRE(std::filesystem::exists(notebook));
+  const std::filesystem::path figure = out.path / "climatology.png";
+  const test::Run nb = test::run_command(
+      "NEPHELE_EXECUTABLE=" + std::string(NEPHELE_EXECUTABLE) + " NEPHELE_FIGURE=" + figure.string() +
+      " jupyter nbconvert --to notebook --execute --ExecutePreprocessor.timeout=300 " + notebook.string() +
+      " --output-dir " + out.path.string() + " --output executed.ipynb");
+  INFO(nb.output);
+  REQUIRE(nb.exit_code == 0);
+  CHECK(std::filesystem::file_size(figure) > 10000);
+  CHECK(test::read_file(out.path / "executed.ipynb").find("largest error") != std::string::npos);
+}

@@ -107,7 +107,7 @@ TEST_CASE("the profile is rescaled to any coverage keeping its order and [0, 1]"
   }
 }
 
-TEST_CASE("--month moves the ITCZ north in August and south in February", "[profile]") {
+TEST_CASE("the month option moves the ITCZ north in August and south in February", "[profile]") {
   const auto itcz = [](int month) {
     return centre_deg(argmax_in(cover::band_targets(cover::earth_profile(), month, 0.67), -20, 20));
   };

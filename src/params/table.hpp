@@ -28,9 +28,9 @@ inline constexpr Parameter mix_frequency = real("mix_frequency", 3.0, 0.0, 10.0,
 inline constexpr Parameter curl_smoothing = real("curl_smoothing", 0.3, 0.0, 10.0, "", "lambda of the smooth Worley potential (0: classic 1 - F1, whose gradient jumps; below 0.02 counts as 0.02)", cover_commands);
 inline constexpr Parameter curl_strength = real("curl_strength", 0.1, 0.0, 100.0, "", "scale of the flow's potential (velocity = strength * n x grad phi)", cover_commands);
 inline constexpr Parameter density_frequency = real("density_frequency", 3.0, 0.01, 4096.0, "cells per radius", "Worley cells per unit radius of the cloud density", cover_commands, "density.frequency");
-inline constexpr Parameter density_octaves = integer("density_octaves", 6, 0, 16, "", "octaves of the cloud density", cover_commands, "density.octaves");
+inline constexpr Parameter density_octaves = integer("density_octaves", 8, 0, 16, "", "octaves of the cloud density", cover_commands, "density.octaves");
 inline constexpr Parameter density_lacunarity = real("density_lacunarity", 2.0, 1.0, 8.0, "", "frequency ratio between octaves", cover_commands, "density.lacunarity");
-inline constexpr Parameter density_gain = real("density_gain", 0.5, 0.0, 1.0, "", "amplitude ratio between octaves", cover_commands, "density.gain");
+inline constexpr Parameter density_gain = real("density_gain", 0.75, 0.0, 1.0, "", "amplitude ratio between octaves", cover_commands, "density.gain");
 inline constexpr Parameter integrator = text("integrator", "rk4", "euler|heun|rk4|geodesic|adaptive", "warp stepping rule", generate | cover_sidecar | viewer);
 inline constexpr Parameter curl_mode = text("curl_mode", "procedural", "sampled|procedural", "velocity of the warp: sampled (bilinear from the curl cube map) or procedural (exact point)", generate | cover_sidecar);
 inline constexpr Parameter tolerance = real("tolerance", 1e-4, 1e-7, 1.0, "radians", "adaptive: largest error estimate per step (the flow time is iterations * step)", generate | cover_sidecar);
