@@ -36,7 +36,7 @@ static_assert(kQuantisationRounding >= 4 * test::kUlp);
 
 TEST_CASE("generate writes every output readable with the right sizes and a valid sidecar", "[cli]") {
   TemporaryDirectory out;
-  const Run r = run("generate --size 8 --iterations 5 --seed 42 --coverage 0.5 --out " + out.path.string());
+  const Run r = run("generate --size 8 --iterations 5 --seed 42 --coverage 0.5 --profile flat --out " + out.path.string());
   INFO(r.output);
   REQUIRE(r.exit_code == 0);
   for (const char* face : {"px", "nx", "py", "ny", "pz", "nz"}) {

@@ -99,6 +99,7 @@ TEST_CASE("the GPU calibration of a cover's density matches the CPU's on the sam
   cover::CoverParameters p;
   p.size = 48;
   p.iterations = 10;
+  p.profile = cover::flat_profile();
   cover::GlobalCover cover(p);
   cover.run();
   const cover::CoverageCalibration cpu = cover::calibrate_coverage(cover.density_field().read(), p.size, p.coverage);

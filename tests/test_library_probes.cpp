@@ -32,6 +32,7 @@ namespace nephele::glsl {
 #include "probes/equirect_mapping.glsl"
 #include "probes/hash.glsl"
 #include "probes/implicit_field.glsl"
+#include "probes/latitude_bands.glsl"
 #include "probes/model_march.glsl"
 #include "probes/noise_rows.glsl"
 #include "probes/perlin.glsl"
@@ -286,6 +287,32 @@ TEST_CASE("cover_density.glsl on the GPU agrees with the CPU", "[probe]") {
     cases.push_back({arguments(2, vec4(r(0.0f, 1.0f), r(0.0f, 0.5f), r(0.5f, 1.0f), 0)), kArithmetic});
   }
   compare("cover_density", probe_cover_density, cases);
+}
+
+TEST_CASE("latitude_bands.glsl on the GPU agrees with the CPU", "[probe]") {
+  Random r(21);
+  std::vector<Case> cases;
+  // The coordinate is (asin z + pi/2) 90/pi - 0.5, below 90: portable_asin's few ulp (as the
+  // portable_math probe, kArithmetic on values below 2) times 90/pi, plus the products' rounding.
+  const float coordinate_tolerance = 32.0f * kArithmetic;
+  for (int k = 0; k < 32; ++k) {
+    const vec4 direction = vec4(normalize(vec3(r.v(-1.0f, 1.0f)) + vec3(1e-3f)), 0.0f);
+    cases.push_back({arguments(0, vec4(90.0f, 0, 0, 0), direction), coordinate_tolerance});
+    // Coordinates given as floats: the band, fraction and neighbours (mirrored at both poles)
+    // involve only floor, a subtraction of it and integer arithmetic.
+    const float c = k < 4 ? -0.5f + 0.1f * k : k < 8 ? 89.5f - 0.1f * (k - 4) : r(-0.5f, 89.5f);
+    cases.push_back({arguments(1, vec4(90.0f, c, 0, 0)), kExact});
+    cases.push_back({arguments(2, vec4(90.0f, c, 0, 0)), kExact});
+    cases.push_back({arguments(3, vec4(0.0f, r(0.0f, 1.0f), 0, 0)), kArithmetic});
+  }
+  compare("latitude_bands", probe_latitude_bands, cases);
+  // The mirror at the poles: the neighbours of the southernmost half band are 1, 0, 0, 1.
+  CHECK(band_neighbours(-0.25f, 90) == ivec4(1, 0, 0, 1));
+  CHECK(band_neighbours(89.25f, 90) == ivec4(88, 89, 89, 88));
+  // Catmull-Rom reproduces linear data exactly (its weights sum to 1 and have the mean t).
+  const vec4 w = catmull_rom_weights(0.3f);
+  CHECK(std::abs(w.x + w.y + w.z + w.w - 1.0f) < 4 * kUlp);
+  CHECK(std::abs(-w.x + w.z + 2.0f * w.w - 0.3f) < 8 * kUlp);
 }
 
 TEST_CASE("cloud_density.glsl on the GPU agrees with the CPU", "[probe]") {

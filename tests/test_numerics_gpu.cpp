@@ -62,6 +62,7 @@ cover::CoverParameters parameters(int size, Integrator integrator, CurlMode mode
   p.curl_mode = mode;
   p.iterations = steps;
   p.step = flow_time / steps;
+  p.profile = cover::flat_profile();  // one threshold, which the cover bounds below use
   return p;
 }
 

@@ -124,7 +124,7 @@ TEST_CASE("the parameter table: defaults inside their ranges, one key per comman
   const std::vector<unsigned> uses = {params::generate, params::bench_cover, params::report, params::render,
                                       params::scene_file, params::bench_render, params::noise, params::bench_noise,
                                       params::model, params::model_file, params::bench_model, params::export_cover,
-                                      params::viewer, params::bench_view};
+                                      params::viewer, params::bench_view, params::stats};
   for (const params::Parameter* p : params::all()) {
     INFO(p->key);
     CHECK_FALSE(p->help.empty());
@@ -150,7 +150,7 @@ TEST_CASE("every command's --help lists each option the table gives that command
       {{"bench", "render"}, params::bench_render}, {{"noise"}, params::noise},
       {{"bench", "noise"}, params::bench_noise}, {{"model"}, params::model},
       {{"bench", "model"}, params::bench_model}, {{"export"}, params::export_cover},
-      {{"view"}, params::viewer}, {{"bench", "view"}, params::bench_view}};
+      {{"view"}, params::viewer}, {{"bench", "view"}, params::bench_view}, {{"stats"}, params::stats}};
   for (const auto& [words, use] : commands) {
     std::string arguments;
     for (const auto& w : words) arguments += w + " ";

@@ -254,6 +254,9 @@ TEST_CASE("orbit: a descent from 2000 km to 1 km changes luminance and cloud fra
   // on 5184 pixels) count as smooth.
   cover::CoverParameters parameters;
   parameters.size = 32;
+  // The descent's point and the floors were chosen on the one-threshold cover; this test judges
+  // the renderer along the descent, not the latitude profile (test_latitude_profile.cpp).
+  parameters.profile = cover::flat_profile();
   cover::GlobalCover generated(parameters);
   generated.run();
   const render::CoverCube cover{parameters.size, generated.cover_field().read()};

@@ -162,6 +162,10 @@ TEST_CASE("the render error sweep is exactly zero at the reference's own step co
   test::test_context();
   regional::Scene scene;  // the default scene, made cheap
   scene.cover_size = 16;
+  // A seed whose 16-texel cover (Earth profile, 8 density octaves at gain 0.75) has clouds in
+  // this small view: with none in view every step count renders the same sky and the sweep has
+  // nothing to measure (seeds 2, 8 and 12 have none).
+  scene.seed = 4;
   studies::RenderSweepOptions options;
   options.view_steps = {6, 12};
   options.light_steps = {3};

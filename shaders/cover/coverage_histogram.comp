@@ -7,11 +7,17 @@
 //   stage 3: the histogram of 4096 fine bins within coarse bin u_coarse;
 //   stage 4: the texels of fine bin (u_coarse, u_fine) listed;
 //   stage 5: the largest density of the bins below (u_coarse, u_fine).
+// The latitude profile (docs/climate.md) has its own stages, per latitude band:
+//   stage 6: a histogram of band_bins bins over [min, max] per band;
+//   stage 7: per band, band_bins fine bins within that band's crossing bin (band_crossing);
+//   stage 8: each band's cloudy weight at the smooth threshold of the remap pass.
 // Each invocation walks a strip of u_strip texels of a column and adds runs of one bin at once,
 // so that few atomics are needed.
 layout(local_size_x = 64, local_size_y = 1, local_size_z = 1) in;
 layout(r32f, binding = 0) uniform readonly imageCube density_field;
 #include "texel_weights.glsl"
+#include "../lib/cube_faces.glsl"
+#include "band_thresholds.glsl"
 
 const int bins = 4096;
 uniform int u_stage;
@@ -28,6 +34,10 @@ uniform int u_fine;
 layout(std430, binding = 1) buffer Scalars { uint scalars[]; };
 layout(std430, binding = 2) buffer Histogram { uint histogram[]; };  // 2 words per bin
 layout(std430, binding = 3) buffer Members { uvec2 members[]; };    // (float bits, units)
+// Per band: its crossing coarse bin and that bin's lower edge (float bits), from the host.
+layout(std430, binding = 7) readonly buffer BandCrossing { uvec2 band_crossing[]; };
+const int band_bins = 256;
+uniform float u_band_scale;  // band_bins / (max - min)
 
 // Coarse and fine bin of a density. Any binning that never puts a larger density in a lower
 // bin finds the same cut (the cut nearest the target lies in the bin where the cumulative
@@ -62,28 +72,44 @@ void main() {
       high = max(high, sortable_bits(density));
       continue;
     }
-    ivec2 b = bins_of(density);
-    if (u_stage == 5) {
-      if (b.x < u_coarse || (b.x == u_coarse && b.y < u_fine)) high = max(high, sortable_bits(density));
-      continue;
-    }
-    uint units = texel_weight(i, j, size);
-    if (u_stage == 1 || u_stage == 3) {
-      if (u_stage == 3 && b.x != u_coarse) continue;
-      int bin = u_stage == 1 ? b.x : b.y;
-      // A run is flushed once it reaches 2^31 units; a texel is below 2^31, so the 32-bit
-      // run sum never wraps.
-      if (bin != run_bin || run_units >= 0x80000000u) {
-        if (run_bin >= 0) ADD_UNITS64(histogram, run_bin, run_units);
-        run_bin = bin;
-        run_units = 0u;
+    // The histogram slot a texel adds its weight to (stages 1, 3, 6, 7, 8; -1: none).
+    int slot = -1;
+    if (u_stage >= 6) {
+      // The band of the texel's centre, as the CPU reference (coverage_threshold.cpp).
+      vec3 direction = texel_direction(face, i, j, size);
+      int band = band_of(band_coordinate(direction, u_bands), u_bands);
+      int coarse = min(band_bins - 1, int((density - u_density_min) * u_band_scale));
+      if (u_stage == 6) {
+        slot = band * band_bins + coarse;
+      } else if (u_stage == 7) {
+        if (coarse == int(band_crossing[band].x)) {
+          float band_low = uintBitsToFloat(band_crossing[band].y);
+          slot = band * band_bins +
+                 clamp(int((density - band_low) * (u_band_scale * float(band_bins))), 0, band_bins - 1);
+        }
+      } else if (density > smooth_band_threshold(direction)) {
+        slot = band;
       }
-      run_units += units;
-    } else if (u_stage == 2) {
-      if (b.x == u_coarse) list_member(density, units);
-    } else if (b.x == u_coarse && b.y == u_fine) {
-      list_member(density, units);
+    } else {
+      ivec2 b = bins_of(density);
+      if (u_stage == 5) {
+        if (b.x < u_coarse || (b.x == u_coarse && b.y < u_fine)) high = max(high, sortable_bits(density));
+        continue;
+      }
+      if (u_stage == 1) slot = b.x;
+      if (u_stage == 3 && b.x == u_coarse) slot = b.y;
+      if (u_stage == 2 && b.x == u_coarse) list_member(density, texel_weight(i, j, size));
+      if (u_stage == 4 && b.x == u_coarse && b.y == u_fine) list_member(density, texel_weight(i, j, size));
     }
+    if (slot < 0) continue;
+    // A run is flushed once it reaches 2^31 units; a texel is below 2^31, so the 32-bit run
+    // sum never wraps.
+    if (slot != run_bin || run_units >= 0x80000000u) {
+      if (run_bin >= 0) ADD_UNITS64(histogram, run_bin, run_units);
+      run_bin = slot;
+      run_units = 0u;
+    }
+    run_units += texel_weight(i, j, size);
   }
   if (u_stage == 0) {
     atomicMin(scalars[0], low);

@@ -3,6 +3,7 @@
 #include <cstdint>
 
 #include "cover/integrators.hpp"
+#include "cover/latitude_profile.hpp"
 #include "params/table.hpp"
 #include "shader_math/shader_math.hpp"
 
@@ -22,6 +23,9 @@ struct CoverParameters {
   int iterations = params::cover::iterations.default_int();      // K, warp steps
   float step = params::cover::step.default_float();              // h, warp step size; flow time T = K h
   float coverage = params::cover::coverage.default_float();      // target solid-angle fraction of cloudy sky
+  // Target fraction by latitude, rescaled to `coverage` (docs/climate.md); flat: one threshold.
+  LatitudeProfile profile = earth_profile();
+  int month = params::cover::month.default_int();                // seasonal shift; 0 annual mean
   NoiseOctaves potential{params::cover::curl_frequency.default_float(), params::cover::curl_octaves.default_int(),
                          params::cover::curl_lacunarity.default_float(),
                          params::cover::curl_gain.default_float()};  // Worley fBm of the stream function
@@ -58,6 +62,7 @@ void visit_numeric_parameters(P& p, Visit&& visit) {
   visit(c::tolerance, p.tolerance);
   visit(c::max_substeps, p.max_substeps);
   visit(c::coverage, p.coverage);
+  visit(c::month, p.month);
   visit(c::noise_offset, p.noise_offset);
   visit(c::curl_frequency, p.potential.frequency);
   visit(c::curl_octaves, p.potential.octaves);

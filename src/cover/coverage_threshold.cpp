@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <utility>
 
@@ -80,6 +81,157 @@ double cloudy_fraction(const std::vector<float>& cover, int size) {
   for (size_t k = 0; k < cover.size(); ++k)
     if (cover[k] > 0.0f) cloudy += weights[k % per_face];
   return cloudy / (4.0 * M_PI);
+}
+
+}  // namespace nephele::cover
+
+namespace nephele::cover {
+
+float band_bin_scale(float density_min, float density_max) {
+  const double span = static_cast<double>(density_max) - density_min;
+  const double scale = span > 0.0 ? band_bins / span : 0.0;
+  return std::isfinite(scale) && scale < std::numeric_limits<float>::max() ? static_cast<float>(scale) : 0.0f;
+}
+
+std::vector<BandCrossing> band_crossings(const std::vector<double>& coarse, const std::vector<double>& targets,
+                                         float density_min, float scale) {
+  const size_t bands = targets.size();
+  if (coarse.size() != bands * band_bins) throw std::invalid_argument("band_crossings: wrong histogram size");
+  std::vector<BandCrossing> out(bands);
+  for (size_t b = 0; b < bands; ++b) {
+    const double* h = &coarse[b * band_bins];
+    BandCrossing& c = out[b];
+    for (int k = 0; k < band_bins; ++k) c.total += h[k];
+    c.needed = targets[b] * c.total;
+    // Down from the densest bin while the cloudy weight stays below the need, as
+    // calibrate_coverage walks its bins.
+    int bin = band_bins - 1;
+    while (bin > 0 && c.above + h[bin] < c.needed) c.above += h[bin--];
+    c.bin = bin;
+    c.low = scale > 0.0f ? static_cast<float>(density_min + bin / static_cast<double>(scale)) : density_min;
+  }
+  return out;
+}
+
+std::vector<float> band_thresholds(const std::vector<BandCrossing>& crossings, const std::vector<double>& fine,
+                                   float density_min, float density_max, float scale) {
+  const int bands = static_cast<int>(crossings.size());
+  // Nothing cloudy: a threshold one span above the largest density, so that the float blend of
+  // equal neighbours (whose weights sum to 1 only within rounding) stays above every density.
+  const float none_cloudy = density_max + std::max(density_max - density_min, 1.0f);
+  const float all_cloudy = std::nextafter(density_min, -INFINITY);
+  std::vector<float> thresholds(static_cast<size_t>(bands), 0.0f);
+  std::vector<int> filled;
+  for (int b = 0; b < bands; ++b) {
+    const BandCrossing& c = crossings[b];
+    if (c.total <= 0.0) continue;
+    filled.push_back(b);
+    float& t = thresholds[b];
+    if (c.needed <= 0.0) {
+      t = none_cloudy;
+    } else if (c.needed >= c.total) {
+      t = all_cloudy;
+    } else if (scale <= 0.0f) {
+      // One density everywhere: all or nothing, whichever is nearer the target.
+      t = c.needed >= 0.5 * c.total ? all_cloudy : none_cloudy;
+    } else {
+      const double* h = &fine[static_cast<size_t>(b) * band_bins];
+      double above = c.above;
+      int bin = band_bins - 1;
+      while (bin > 0 && above + h[bin] < c.needed) above += h[bin--];
+      // The cloudy share q of the crossing fine bin lies at its top, its texels taken as spread
+      // evenly over the bin's width.
+      const double q = h[bin] > 0.0 ? std::clamp((c.needed - above) / h[bin], 0.0, 1.0) : 0.0;
+      const double width = 1.0 / (static_cast<double>(scale) * band_bins);
+      t = static_cast<float>(c.low + (bin + 1.0 - q) * width);
+    }
+  }
+  if (filled.empty()) return thresholds;
+  // Bands without texels: linear between the nearest filled bands (constant beyond the ends).
+  for (int b = 0; b < bands; ++b) {
+    if (crossings[b].total > 0.0) continue;
+    const auto next = std::lower_bound(filled.begin(), filled.end(), b);
+    if (next == filled.begin()) thresholds[b] = thresholds[*next];
+    else if (next == filled.end()) thresholds[b] = thresholds[filled.back()];
+    else {
+      const int lo = *(next - 1), hi = *next;
+      thresholds[b] = thresholds[lo] + (thresholds[hi] - thresholds[lo]) * static_cast<float>(b - lo) / (hi - lo);
+    }
+  }
+  return thresholds;
+}
+
+float smooth_band_threshold(const std::vector<float>& thresholds, const glsl::vec3& direction) {
+  const int bands = static_cast<int>(thresholds.size());
+  const float c = glsl::band_coordinate(direction, bands);
+  const glsl::ivec4 k = glsl::band_neighbours(c, bands);
+  const glsl::vec4 values(thresholds[k.x], thresholds[k.y], thresholds[k.z], thresholds[k.w]);
+  return glsl::dot(glsl::catmull_rom_weights(glsl::band_fraction(c, bands)), values);
+}
+
+namespace {
+
+// Calls visit(index, face texel weight (fraction of the sphere), direction, band) for every texel.
+template <class Visit>
+void for_each_band_texel(int size, int bands, Visit&& visit) {
+  const size_t per_face = static_cast<size_t>(size) * size;
+  const std::vector<double> weights = face_texel_solid_angles(size);
+  for (int face = 0; face < 6; ++face)
+    for (int j = 0; j < size; ++j)
+      for (int i = 0; i < size; ++i) {
+        const size_t in_face = static_cast<size_t>(j) * size + i;
+        const glsl::vec3 direction = glsl::texel_direction(face, i, j, size);
+        const int band = glsl::band_of(glsl::band_coordinate(direction, bands), bands);
+        visit(face * per_face + in_face, weights[in_face] / (4.0 * M_PI), direction, band);
+      }
+}
+
+}  // namespace
+
+void measure_band_coverage(const std::vector<float>& densities, int size, BandCalibration& c) {
+  const int bands = static_cast<int>(c.thresholds.size());
+  std::vector<double> cloudy(static_cast<size_t>(bands), 0.0);
+  c.band_weight.assign(static_cast<size_t>(bands), 0.0);
+  for_each_band_texel(size, bands, [&](size_t k, double weight, const glsl::vec3& direction, int band) {
+    c.band_weight[band] += weight;
+    if (densities[k] > smooth_band_threshold(c.thresholds, direction)) cloudy[band] += weight;
+  });
+  c.achieved.assign(static_cast<size_t>(bands), 0.0);
+  c.achieved_fraction = 0.0;
+  for (int b = 0; b < bands; ++b) {
+    c.achieved[b] = c.band_weight[b] > 0.0 ? cloudy[b] / c.band_weight[b] : 0.0;
+    c.achieved_fraction += cloudy[b];
+  }
+}
+
+BandCalibration calibrate_band_coverage(const std::vector<float>& densities, int size,
+                                        const std::vector<double>& targets) {
+  if (densities.size() != 6 * static_cast<size_t>(size) * size)
+    throw std::invalid_argument("calibrate_band_coverage: wrong size");
+  const int bands = static_cast<int>(targets.size());
+  BandCalibration c;
+  c.targets = targets;
+  const auto [lowest, highest] = std::minmax_element(densities.begin(), densities.end());
+  c.density_min = *lowest;
+  c.density_max = *highest;
+  const float scale = band_bin_scale(c.density_min, c.density_max);
+  // The bins as the GPU computes them (coverage_histogram.comp, stages 6 and 7), in float.
+  auto coarse_bin = [&](float d) { return std::min(band_bins - 1, static_cast<int>((d - c.density_min) * scale)); };
+  std::vector<double> coarse(static_cast<size_t>(bands) * band_bins, 0.0), fine(coarse.size(), 0.0);
+  for_each_band_texel(size, bands, [&](size_t k, double weight, const glsl::vec3&, int band) {
+    coarse[static_cast<size_t>(band) * band_bins + coarse_bin(densities[k])] += weight;
+  });
+  const std::vector<BandCrossing> crossings = band_crossings(coarse, targets, c.density_min, scale);
+  const float fine_scale = scale * static_cast<float>(band_bins);
+  for_each_band_texel(size, bands, [&](size_t k, double weight, const glsl::vec3&, int band) {
+    const float d = densities[k];
+    if (coarse_bin(d) != crossings[band].bin) return;
+    const int bin = std::clamp(static_cast<int>((d - crossings[band].low) * fine_scale), 0, band_bins - 1);
+    fine[static_cast<size_t>(band) * band_bins + bin] += weight;
+  });
+  c.thresholds = band_thresholds(crossings, fine, c.density_min, c.density_max, scale);
+  measure_band_coverage(densities, size, c);
+  return c;
 }
 
 }  // namespace nephele::cover

@@ -166,13 +166,31 @@ void GlobalCover::run_density() {
 }
 
 CoverageCalibration GlobalCover::run_coverage() {
+  const bool flat = parameters_.profile.kind == LatitudeProfile::Kind::flat;
   timed("calibrate", [&] {
     if (!gpu_calibration_) gpu_calibration_ = std::make_unique<GpuCalibration>(parameters_.size);
-    calibration_ = gpu_calibration_->run(density_field_, parameters_.coverage);
+    if (flat) {
+      calibration_ = gpu_calibration_->run(density_field_, parameters_.coverage);
+      bands_.reset();
+      return;
+    }
+    // The profile: a threshold per band, then what the smooth threshold of the remap achieves
+    // (it blends neighbouring bands, so each band's fraction differs a little from its target).
+    BandCalibration bands = gpu_calibration_->run_bands(
+        density_field_, band_targets(parameters_.profile, parameters_.month, parameters_.coverage));
+    gpu_calibration_->measure_bands(density_field_, bands);
+    calibration_ = CoverageCalibration{};
+    calibration_.density_min = bands.density_min;
+    calibration_.density_max = bands.density_max;
+    calibration_.achieved_fraction = bands.achieved_fraction;
+    calibration_.max_texel_fraction = gpu_calibration_->weights().units().largest_fraction;
+    bands_ = std::move(bands);
   });
   timed("coverage", [&] {
     remap_program_.set("u_threshold", calibration_.threshold);
     remap_program_.set("u_density_max", calibration_.density_max);
+    remap_program_.set("u_bands", flat ? 0 : profile_bands);
+    if (!flat) gpu_calibration_->bind_band_thresholds();
     density_field_.bind_image(0, GL_READ_ONLY);
     cover_field_.bind_image(1, GL_WRITE_ONLY);
     remap_program_.dispatch_covering(parameters_.size, parameters_.size, 6);

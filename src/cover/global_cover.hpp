@@ -10,6 +10,7 @@
 #include "cover/cover_parameters.hpp"
 #include "cover/coverage_threshold.hpp"
 #include "cover/gpu_reductions.hpp"
+#include "cover/latitude_profile.hpp"
 #include "gpu/compute_program.hpp"
 #include "gpu/textures.hpp"
 #include "cover/stability.hpp"
@@ -50,6 +51,9 @@ class GlobalCover {
   const gpu::Texture& density_field() const { return density_field_; }
   const gpu::Texture& cover_field() const { return cover_field_; }
   const CoverageCalibration& calibration() const { return calibration_; }
+  // The latitude profile's calibration (absent with --profile flat, whose threshold is
+  // calibration().threshold).
+  const std::optional<BandCalibration>& band_calibration() const { return bands_; }
   const std::vector<PassTiming>& timings() const { return timings_; }
   // Called with a pass's name as it starts (for progress reports).
   void on_pass(std::function<void(const std::string&)> callback) { on_pass_ = std::move(callback); }
@@ -68,6 +72,7 @@ class GlobalCover {
   gpu::ComputeProgram remap_program_{"cover/cover_remap.comp"};
   gpu::Texture identity_field_, curl_field_, warp_field_, density_field_, cover_field_;
   CoverageCalibration calibration_;
+  std::optional<BandCalibration> bands_;
   std::unique_ptr<GpuCalibration> gpu_calibration_;  // made at the first calibration
   std::unique_ptr<GpuDiagnosis> gpu_diagnosis_;      // made at the first diagnosis
   std::vector<PassTiming> timings_;

@@ -1,4 +1,5 @@
 #include "cover/gpu_reductions.hpp"
+#include "cover/latitude_profile.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -100,7 +101,8 @@ double reduction_gpu_bytes(int size) {
   const double table = half * (half + 1) / 2 * 4.0;
   const int strip = reduction_strip(size);
   const double records = 6.0 * size * ((size + strip - 1) / strip) + 64;  // + stage 1's 64
-  return 2 * table + calibration_member_capacity * 8.0 + 2 * bins * 8.0 + records * 6 * 8.0;
+  const double band_tables = profile_bands * (band_bins * 8.0 + 12.0);  // one histogram, crossings, thresholds
+  return 2 * table + calibration_member_capacity * 8.0 + 2 * bins * 8.0 + records * 6 * 8.0 + band_tables;
 }
 
 GpuTexelWeights::GpuTexelWeights(int size) : units_(texel_weight_units(size)) {
@@ -112,7 +114,96 @@ GpuTexelWeights::~GpuTexelWeights() { glDeleteBuffers(1, &buffer_); }
 
 void GpuTexelWeights::bind() const { glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 5, buffer_); }
 
-GpuCalibration::GpuCalibration(int size) : size_(size), weights_(size) {}
+GpuCalibration::GpuCalibration(int size) : size_(size), weights_(size) {
+  glCreateBuffers(1, &band_thresholds_);
+  glNamedBufferStorage(band_thresholds_, profile_bands * 4, nullptr, GL_DYNAMIC_STORAGE_BIT);
+  glCreateBuffers(1, &band_crossing_);
+  glNamedBufferStorage(band_crossing_, profile_bands * 8, nullptr, GL_DYNAMIC_STORAGE_BIT);
+}
+
+GpuCalibration::~GpuCalibration() {
+  glDeleteBuffers(1, &band_thresholds_);
+  glDeleteBuffers(1, &band_crossing_);
+}
+
+void GpuCalibration::bind_band_thresholds() const { glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 6, band_thresholds_); }
+
+std::vector<std::uint64_t> GpuCalibration::band_histogram(const gpu::Texture& density, int stage, int bands,
+                                                          float density_min, float scale) const {
+  const size_t slots = stage == 8 ? bands : static_cast<size_t>(bands) * band_bins;
+  WordBuffer histogram(2 * slots);
+  histogram.bind(2);
+  weights_.bind();
+  bind_band_thresholds();
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 7, band_crossing_);
+  density.bind_image(0, GL_READ_ONLY);
+  const int strip = reduction_strip(size_);
+  program_.set("u_strip", strip);
+  program_.set("u_stage", stage);
+  program_.set("u_bands", bands);
+  program_.set("u_density_min", density_min);
+  program_.set("u_band_scale", scale);
+  program_.dispatch_covering(size_, (size_ + strip - 1) / strip, 6);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  return sums64(histogram.read(2 * slots));
+}
+
+BandCalibration GpuCalibration::run_bands(const gpu::Texture& density, const std::vector<double>& targets) const {
+  if (density.width() != size_) throw std::invalid_argument("GpuCalibration: the density map is not of its size");
+  const int bands = static_cast<int>(targets.size());
+  if (bands < 1 || bands > profile_bands) throw std::invalid_argument("GpuCalibration: bands out of range");
+  const TexelWeightUnits& units = weights_.units();
+  BandCalibration c;
+  c.targets = targets;
+  // Stage 0: the density range.
+  WordBuffer scalars(8);
+  scalars.set(0, 0xFFFFFFFFu);
+  scalars.bind(1);
+  weights_.bind();
+  density.bind_image(0, GL_READ_ONLY);
+  const int strip = reduction_strip(size_);
+  program_.set("u_strip", strip);
+  program_.set("u_stage", 0);
+  program_.dispatch_covering(size_, (size_ + strip - 1) / strip, 6);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  const std::vector<GLuint> range = scalars.read(2);
+  c.density_min = from_sortable(range[0]);
+  c.density_max = from_sortable(range[1]);
+  const float scale = band_bin_scale(c.density_min, c.density_max);
+  const auto as_fractions = [&](const std::vector<std::uint64_t>& sums) {
+    std::vector<double> out(sums.size());
+    for (size_t k = 0; k < sums.size(); ++k) out[k] = units.fraction(sums[k]);
+    return out;
+  };
+  const std::vector<BandCrossing> crossings =
+      band_crossings(as_fractions(band_histogram(density, 6, bands, c.density_min, scale)), targets, c.density_min, scale);
+  std::vector<GLuint> crossing_words(2 * static_cast<size_t>(bands));
+  for (int b = 0; b < bands; ++b) {
+    crossing_words[2 * b] = static_cast<GLuint>(crossings[b].bin);
+    std::memcpy(&crossing_words[2 * b + 1], &crossings[b].low, 4);
+  }
+  glNamedBufferSubData(band_crossing_, 0, static_cast<GLsizeiptr>(crossing_words.size() * 4), crossing_words.data());
+  const std::vector<double> fine = as_fractions(band_histogram(density, 7, bands, c.density_min, scale));
+  c.thresholds = band_thresholds(crossings, fine, c.density_min, c.density_max, scale);
+  glNamedBufferSubData(band_thresholds_, 0, static_cast<GLsizeiptr>(bands * 4), c.thresholds.data());
+  c.band_weight.resize(static_cast<size_t>(bands));
+  for (int b = 0; b < bands; ++b) c.band_weight[b] = crossings[b].total;
+  return c;
+}
+
+void GpuCalibration::measure_bands(const gpu::Texture& density, BandCalibration& c) const {
+  const int bands = static_cast<int>(c.thresholds.size());
+  glNamedBufferSubData(band_thresholds_, 0, static_cast<GLsizeiptr>(bands * 4), c.thresholds.data());
+  const std::vector<std::uint64_t> cloudy = band_histogram(density, 8, bands, c.density_min, 0.0f);
+  const TexelWeightUnits& units = weights_.units();
+  c.achieved.assign(static_cast<size_t>(bands), 0.0);
+  std::uint64_t total = 0;
+  for (int b = 0; b < bands; ++b) {
+    total += cloudy[b];
+    c.achieved[b] = c.band_weight[b] > 0.0 ? units.fraction(cloudy[b]) / c.band_weight[b] : 0.0;
+  }
+  c.achieved_fraction = units.fraction(total);
+}
 
 CoverageCalibration GpuCalibration::run(const gpu::Texture& density, double target) const {
   if (density.width() != size_) throw std::invalid_argument("GpuCalibration: the density map is not of its size");

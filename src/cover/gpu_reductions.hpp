@@ -68,13 +68,32 @@ constexpr int calibration_member_capacity = 1 << 16;
 class GpuCalibration {
  public:
   explicit GpuCalibration(int size);
+  ~GpuCalibration();
+  GpuCalibration(const GpuCalibration&) = delete;
+  GpuCalibration& operator=(const GpuCalibration&) = delete;
   CoverageCalibration run(const gpu::Texture& density, double target) const;
+  // cover::calibrate_band_coverage on the GPU (stages 0, 6, 7 of coverage_histogram.comp; one
+  // target per band): read back are two words and two tables of bands x band_bins 64-bit sums.
+  // The thresholds stay in a buffer for the remap pass (bind_band_thresholds).
+  // Bound: the histograms are the CPU's up to the texels whose centre the GPU's and the CPU's
+  // float latitude put in different bands (within a few ulp of a band edge) and the rounding
+  // of the solid angles to units (TexelWeightUnits::sum_error_bound per band); so are the
+  // thresholds, which move with the histograms continuously within one fine bin.
+  BandCalibration run_bands(const gpu::Texture& density, const std::vector<double>& targets) const;
+  // The achieved fractions at the smooth threshold of `calibration` (stage 8), in place.
+  void measure_bands(const gpu::Texture& density, BandCalibration& calibration) const;
+  // Binds the thresholds of the last run_bands (binding 6 of band_thresholds.glsl).
+  void bind_band_thresholds() const;
   const GpuTexelWeights& weights() const { return weights_; }
 
  private:
+  std::vector<std::uint64_t> band_histogram(const gpu::Texture& density, int stage, int bands, float density_min,
+                                            float scale) const;
   int size_;
   GpuTexelWeights weights_;
   gpu::ComputeProgram program_{"cover/coverage_histogram.comp"};
+  unsigned band_thresholds_ = 0;  // a float per band
+  unsigned band_crossing_ = 0;    // (bin, lower edge bits) per band
 };
 
 // cover::diagnose_warp on the GPU: the curl and warp maps stay there, 7 integers and 6 doubles

@@ -89,6 +89,8 @@ json::Value cover_sidecar(const cover::GlobalCover& cover, const gpu::ContextInf
     if (!parameter.used_by(params::cover_sidecar)) return;
     if (!adaptive && (&parameter == &params::cover::tolerance || &parameter == &params::cover::max_substeps)) return;
     set_path(parameters, std::string(parameter.sidecar_path()), json_number(value));
+    if (&parameter == &params::cover::coverage)
+      parameters.set(std::string(params::cover::profile.key), p.profile.name);
     if (&parameter == &params::cover::step) {
       parameters.set("flow_time", static_cast<double>(p.iterations) * p.step);
       parameters.set(std::string(params::cover::integrator.key), cover::integrator_name(p.integrator));
@@ -100,7 +102,26 @@ json::Value cover_sidecar(const cover::GlobalCover& cover, const gpu::ContextInf
   json::Value result;
   result.set("cloud_fraction", c.achieved_fraction);
   result.set("cloud_fraction_tolerance", c.max_texel_fraction);
-  result.set("threshold", c.threshold);
+  // One threshold (--profile flat), or the latitude profile's bands (docs/climate.md).
+  if (const auto& bands = cover.band_calibration()) {
+    json::Value profile;
+    const double band_deg = 180.0 / static_cast<double>(bands->targets.size());
+    profile.set("bands", static_cast<double>(bands->targets.size()));
+    profile.set("band_degrees", band_deg);
+    profile.set("first_band_south_edge_deg", -90.0);
+    json::Value::Array targets, achieved, thresholds;
+    for (size_t b = 0; b < bands->targets.size(); ++b) {
+      targets.emplace_back(bands->targets[b]);
+      achieved.emplace_back(bands->achieved[b]);
+      thresholds.emplace_back(static_cast<double>(bands->thresholds[b]));
+    }
+    profile.set("targets", targets);
+    profile.set("achieved", achieved);
+    profile.set("thresholds", thresholds);
+    result.set("profile", profile);
+  } else {
+    result.set("threshold", c.threshold);
+  }
   result.set("density_min", c.density_min);
   result.set("density_max", c.density_max);
 

@@ -1,6 +1,8 @@
 #include "io/image_files.hpp"
 
 #include <OpenImageIO/filesystem.h>
+#include <OpenImageIO/imagebuf.h>
+#include <OpenImageIO/imagebufalgo.h>
 #include <OpenImageIO/imageio.h>
 
 #include <stdexcept>
@@ -64,6 +66,14 @@ ImageData read_image(const std::filesystem::path& path) {
     throw std::runtime_error("could not read " + path.string() + ": " + in->geterror());
   in->close();
   return image;
+}
+
+bool draw_text(ImageData& image, int x, int y, const std::string& text, int size, const float rgb[3]) {
+  static const char* const font = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
+  if (image.channels != 3 || !std::filesystem::is_regular_file(font)) return false;
+  const OIIO::ImageSpec spec(image.width, image.height, 3, OIIO::TypeDesc::FLOAT);
+  OIIO::ImageBuf buffer(spec, image.pixels.data());  // draws into the image's own pixels
+  return OIIO::ImageBufAlgo::render_text(buffer, x, y, text, size, font, OIIO::cspan<float>(rgb, 3));
 }
 
 }  // namespace nephele::io

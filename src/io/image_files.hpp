@@ -58,4 +58,9 @@ void write_image(const std::filesystem::path& path, const ImageData& image, cons
 
 ImageData read_image(const std::filesystem::path& path);
 
+// Draws `text` into an RGB image with its baseline's left end at (x, y), `size` pixels high,
+// in DejaVu Sans (fonts-dejavu-core) through OpenImageIO's FreeType text. Returns false and
+// leaves the image as it was when the font or FreeType is not there (a plot then has no labels).
+bool draw_text(ImageData& image, int x, int y, const std::string& text, int size, const float rgb[3]);
+
 }  // namespace nephele::io

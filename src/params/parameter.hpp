@@ -29,6 +29,7 @@ enum Use : unsigned {
   export_cover = 1u << 12,  // nephele export
   viewer = 1u << 13,        // nephele view: its options and its window's panels (src/apps/viewer)
   bench_view = 1u << 14,    // nephele bench view
+  stats = 1u << 15,         // nephele stats
 };
 
 struct Parameter {

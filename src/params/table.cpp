@@ -4,7 +4,7 @@ namespace nephele::params {
 
 const std::vector<const Parameter*>& all() {
   static const std::vector<const Parameter*> parameters = {
-      &cover::size, &cover::seed, &cover::iterations, &cover::step, &cover::coverage,
+      &cover::size, &cover::seed, &cover::iterations, &cover::step, &cover::coverage, &cover::profile, &cover::month,
       &cover::curl_frequency, &cover::curl_octaves, &cover::curl_lacunarity, &cover::curl_gain,
       &cover::prevailing, &cover::mix_frequency, &cover::curl_strength, &cover::curl_smoothing, &cover::density_frequency,
       &cover::density_octaves, &cover::density_lacunarity, &cover::density_gain, &cover::integrator,
@@ -25,7 +25,7 @@ const std::vector<const Parameter*>& all() {
       &cloud_model::description, &cloud_model::preview, &cloud_model::no_preview, &cloud_model::kind, &cloud_model::coordinate, &cloud_model::radius, &cloud_model::influence, &cloud_model::weight,
       &cloud_model::octaves, &cloud_model::frequency, &cloud_model::amplitude, &cloud_model::gain, &cloud_model::lacunarity, &cloud_model::fraction,
       &cloud_model::seed,
-      &run::cover_out, &run::cover_files, &run::precision, &run::exr_compression, &run::report_out, &run::quiet, &run::no_cache, &run::verbose, &run::bench_cover_sizes, &run::bench_cover_repeat,
+      &run::cover_out, &run::cover_files, &run::precision, &run::exr_compression, &run::stats_out, &run::report_out, &run::quiet, &run::no_cache, &run::verbose, &run::bench_cover_sizes, &run::bench_cover_repeat,
       &run::bench_noise_size, &run::bench_noise_repeat, &run::bench_render_size, &run::bench_render_sweep_size,
       &run::bench_render_repeat, &run::bench_render_no_sweep, &run::report_quick, &run::report_sizes,
       &run::report_steps, &run::report_tolerances, &run::report_samples, &run::report_repeat,

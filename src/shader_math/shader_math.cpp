@@ -14,6 +14,7 @@ namespace nephele::glsl {
 #include "lib/equirect_mapping.glsl"
 #include "lib/hash.glsl"
 #include "lib/implicit_field.glsl"
+#include "lib/latitude_bands.glsl"
 #include "lib/model_march.glsl"
 #include "lib/noise_rows.glsl"
 #include "lib/noise_types.glsl"

@@ -22,10 +22,13 @@ int bench_cover(const std::vector<std::string>& arguments) {
   options.bind(params::run::bench_cover_sizes, &sizes_text);
   options.bind(params::run::bench_cover_repeat, &repeat);
   add_cover_options(options, parameters, params::bench_cover);
+  ProfileOption profile_option;
+  profile_option.add(options);
   if (!options.parse(arguments)) {
     std::cout << options.help();
     return exit_ok;
   }
+  profile_option.apply(parameters);
   validate_cover_parameters(parameters);
   const std::vector<int> sizes = parse_number_list<int>("--sizes", sizes_text, 1, 16384, true);
   gpu::EglContext context;

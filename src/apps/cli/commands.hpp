@@ -22,6 +22,7 @@ int run_model(const std::vector<std::string>& arguments);
 int bench_model(const std::vector<std::string>& arguments);
 int run_export(const std::vector<std::string>& arguments);
 int run_view(const std::vector<std::string>& arguments);
+int run_stats(const std::vector<std::string>& arguments);
 int bench_view(const std::vector<std::string>& arguments);
 
 }  // namespace nephele::cli

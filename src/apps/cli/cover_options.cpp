@@ -1,5 +1,6 @@
 #include "apps/cli/cover_options.hpp"
 
+#include "io/profile_files.hpp"
 #include "params/table.hpp"
 
 #include <cmath>
@@ -58,6 +59,15 @@ void WarpOptions::apply(cover::CoverParameters& p) const {
   if (!mode) throw UsageError(params::cover::curl_mode.option(), curl_mode_, params::cover::curl_mode.range_text());
   p.integrator = *integrator;
   p.curl_mode = *mode;
+}
+
+void ProfileOption::add(Options& o) { o.bind(params::cover::profile, &value_); }
+
+void ProfileOption::apply(cover::CoverParameters& p) const {
+  p.profile = io::profile_from_option(value_);
+  if (p.profile.kind == cover::LatitudeProfile::Kind::flat && p.month != 0)
+    throw UsageError(params::cover::month.option(), std::to_string(p.month), "0 with --profile flat",
+                     "has no profile to shift");
 }
 
 }  // namespace nephele::cli

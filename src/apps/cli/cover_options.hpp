@@ -27,4 +27,15 @@ class WarpOptions {
   std::string curl_mode_{params::cover::curl_mode.default_text};
 };
 
+// The latitude profile, --profile earth|flat|FILE (read after Options::parse by apply(), which
+// also refuses --month with --profile flat: a flat profile has nothing to shift).
+class ProfileOption {
+ public:
+  void add(Options& options);
+  void apply(cover::CoverParameters& p) const;  // throws core::InputError (exit 2)
+
+ private:
+  std::string value_{params::cover::profile.default_text};
+};
+
 }  // namespace nephele::cli

@@ -26,6 +26,8 @@ int run_generate(const std::vector<std::string>& arguments) {
                   "(--files chooses the images; what none asks for is not computed).", params::generate);
   add_cover_options(options, parameters, params::generate);
   WarpOptions warp_options;
+  ProfileOption profile_option;
+  profile_option.add(options);
   warp_options.add(options, parameters);
   std::string files(params::run::cover_files.default_text), precision(params::run::precision.default_text),
       compression(params::run::exr_compression.default_text);
@@ -42,6 +44,7 @@ int run_generate(const std::vector<std::string>& arguments) {
     return exit_ok;
   }
   warp_options.apply(parameters);
+  profile_option.apply(parameters);
   validate_cover_parameters(parameters);
   io::CoverFileOptions file_options;
   io::parse_cover_files(files, file_options);

@@ -21,7 +21,8 @@ const char* const usage =
     "  export     a generated cover as one target's files (equirect, gl-faces, ktx2, dds, celestia, exr-cube)\n"
     "  view       a window on the clouds, with panels, flight and recording (needs a display)\n"
     "  bench      benchmarks that print timings (nephele bench cover)\n"
-    "  report     error of the warp's integrators against their run time (work-precision)\n\n"
+    "  report     error of the warp's integrators against their run time (work-precision)\n"
+    "  stats      statistics of a cover: coverage by latitude, spectrum, perimeter dimension\n\n"
     "nephele COMMAND --help describes each command's options and their ranges.\n"
     "exit codes: 0 success, 1 runtime failure, 2 bad input (the option, key or field is named),\n"
     "            3 environment (no OpenGL 4.5 context; no display for a window)\n";
@@ -54,7 +55,8 @@ int main(int argc, char** argv) {
     if (command == "model") return run_model(rest);
     if (command == "export") return run_export(rest);
     if (command == "view") return run_view(rest);
-    throw UsageError("unknown command '" + command + "' (allowed: generate, render, noise, model, export, view, bench, report)");
+    if (command == "stats") return run_stats(rest);
+    throw UsageError("unknown command '" + command + "' (allowed: generate, render, noise, model, export, view, bench, report, stats)");
   } catch (const nephele::core::InputError& e) {
     std::cerr << "nephele: " << e.what() << "\n";
     return exit_usage;

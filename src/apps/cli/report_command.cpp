@@ -46,12 +46,15 @@ int run_report(const std::vector<std::string>& arguments) {
   options.bind(params::run::report_budget_ms, &budget_ms);
   add_cover_options(options, parameters, params::report);
   WarpOptions warp_options;
+  ProfileOption profile_option;
+  profile_option.add(options);
   warp_options.add(options, parameters, false);
   if (!options.parse(arguments)) {
     std::cout << options.help();
     return exit_ok;
   }
   warp_options.apply(parameters);
+  profile_option.apply(parameters);
   validate_cover_parameters(parameters);
   studies::SweepOptions sweep =
       quick ? studies::SweepOptions::quick(parameters) : studies::SweepOptions::full(parameters);

@@ -18,6 +18,7 @@ int run_view(const std::vector<std::string>& arguments) {
   namespace c = params::cover;
   std::string record, integrator(c::integrator.default_text);
   int cover_size = params::scene::cover_size.default_int(), iterations = c::iterations.default_int(), frames = 0;
+  int month = c::month.default_int();
   float coverage = c::coverage.default_float(), step = c::step.default_float();
   bool no_cache = false;
   Options options("view [COVER_DIR]",
@@ -30,6 +31,7 @@ int run_view(const std::vector<std::string>& arguments) {
   const SceneOptions scene_options(options);
   options.bind(params::scene::cover_size, &cover_size);
   options.bind(c::coverage, &coverage);
+  options.bind(c::month, &month);
   options.bind(c::iterations, &iterations);
   options.bind(c::step, &step);
   options.bind(c::integrator, &integrator);
@@ -57,6 +59,7 @@ int run_view(const std::vector<std::string>& arguments) {
   viewer::Viewer window(view_options);
   viewer::ViewState& state = window.state();
   state.coverage = coverage;
+  state.month = month;
   state.iterations = iterations;
   state.step = step;
   state.integrator = integrator;

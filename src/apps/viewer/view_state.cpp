@@ -17,7 +17,8 @@ std::vector<Binding> bindings(ViewState& s) {
   return {{&sc::view, &s.viewpoint},        {&sc::heading, &s.camera.heading_deg}, {&sc::pitch, &s.camera.pitch_deg},
           {&sc::fov, &s.camera.fov_deg},    {&sc::time, &s.time},                  {&sc::view_steps, &s.view_steps},
           {&sc::light_steps, &s.light_steps}, {&sc::exposure, &s.exposure},         {&sc::seed, &s.seed},
-          {&sc::cover_size, &s.cover_size}, {&co::coverage, &s.coverage},          {&co::iterations, &s.iterations},
+          {&sc::cover_size, &s.cover_size}, {&co::coverage, &s.coverage},          {&co::month, &s.month},
+          {&co::iterations, &s.iterations},
           {&co::step, &s.step},             {&co::integrator, &s.integrator}};
 }
 
@@ -94,6 +95,7 @@ cover::CoverParameters cover_of(const ViewState& state) {
   p.size = state.cover_size;
   p.seed = state.seed;
   p.coverage = state.coverage;
+  p.month = state.month;
   p.iterations = state.iterations;
   p.step = state.step;
   p.integrator = cover::parse_integrator(state.integrator).value_or(p.integrator);

@@ -25,6 +25,7 @@ struct ViewState {
   int light_steps = params::scene::light_steps.default_int();
   double exposure = params::scene::exposure.default_number;
   float coverage = params::cover::coverage.default_float();
+  int month = params::cover::month.default_int();  // the Earth profile's season (0: annual mean)
   int iterations = params::cover::iterations.default_int();
   float step = params::cover::step.default_float();
   std::string integrator{params::cover::integrator.default_text};
