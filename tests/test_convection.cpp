@@ -9,6 +9,7 @@
 
 #include "core/time.hpp"
 #include "gl_support.hpp"
+#include "io/render_files.hpp"
 #include "io/weather_files.hpp"
 #include "regional/cloud_layers.hpp"
 #include "regional/convection.hpp"
@@ -222,6 +223,14 @@ TEST_CASE("a scene without convection computes no convective volume and one with
   CHECK(count(storm.passes, "convective_volume cumulonimbus 128^3") == static_cast<long>(storm.convective_clouds.size()));
   CHECK(count(storm.passes, "march convective cumulonimbus") == static_cast<long>(storm.convective_clouds.size()));
   CHECK(storm.convection_reason.find("cape >= 1000") != std::string::npos);
+  // The render sidecar says why and where: one entry per placed cloud, none without convection.
+  const nephele::json::Value storm_sidecar = io::scene_sidecar(storm, scene);
+  const auto& listed = storm_sidecar.at("convection").at("clouds").as_array();
+  REQUIRE(listed.size() == storm.convective_clouds.size());
+  CHECK(listed.front().at("kind").as_string() == "cumulonimbus");
+  CHECK(listed.front().at("cloud_top_m").as_number() == storm.convective_clouds.front().cloud_top_m);
+  CHECK(storm_sidecar.at("convection").at("reason").as_string() == storm.convection_reason);
+  CHECK(io::scene_sidecar(quiet, scene).at("convection").at("clouds").as_array().empty());
 }
 
 TEST_CASE("a pixel towards a placed cumulonimbus's column is opaque, and clear sky without it", "[convection][render]") {

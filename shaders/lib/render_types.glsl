@@ -15,7 +15,7 @@ struct LayerParams {
   float extinction;      // 1/m at density 1
   float morph;           // alto: 0 altostratus .. 1 altocumulus
   float darkness;        // reduces the single-scattering albedo
-  float min_distance;    // the layer starts this far from the camera (cumulonimbus)
+  float min_distance;    // the layer starts this far from the camera (no rule uses it today)
   vec2 wind;             // unit wind direction (towards), east-north
   vec2 noise_offset;     // how far the wind moved the noise (tau), along and across the wind, m
 };

@@ -39,7 +39,6 @@ const char* cloud_type_name(CloudType type) {
     case CloudType::stratocumulus: return "stratocumulus";
     case CloudType::stratus: return "stratus";
     case CloudType::fog: return "fog";
-    case CloudType::cumulonimbus: return "cumulonimbus";
   }
   return "?";
 }
