@@ -6,6 +6,7 @@
 #   docs/images/render_gurten_panorama.*     the same scene as a panorama
 #   docs/images/model_examples.png           nephele model previews of the four built-in clouds
 #   docs/images/render_orbit.png/.json       nephele render --view orbit of the default cover
+#   docs/images/gurten-thunderstorm.png      scenes/gurten-thunderstorm.json (convective clouds)
 # With --report it also runs `nephele report` (about 35 minutes on two cores) and copies its
 # work-precision diagrams (error_vs_runtime*.svg).
 set -euo pipefail
@@ -27,6 +28,8 @@ cp "$work/render_gurten_panorama.png" "$work/render_gurten_panorama.json" docs/i
 "$nephele" render --view orbit --cover "$work/cover" --altitude-km 12000 --time 2026-06-21T17:00Z --quiet \
   --out "$work/render_orbit.png"
 cp "$work/render_orbit.png" "$work/render_orbit.json" docs/images/
+"$nephele" render --scene scenes/gurten-thunderstorm.json --no-cache --quiet --out "$work/storm"
+cp "$work/storm/gurten-thunderstorm.png" docs/images/gurten-thunderstorm.png
 examples=(fair-weather towering cumulonimbus stratocumulus)
 for example in "${examples[@]}"; do
   "$nephele" model --example "$example" --preview 256x256 --quiet --out "$work/model-$example"

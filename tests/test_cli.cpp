@@ -220,6 +220,9 @@ TEST_CASE("render rejects bad input with code 2 naming the key or option", "[cli
   std::ofstream(typed) << R"({"view": "gurten", "fov": "wide", "outputs": ["a.png"]})";
   const fs::path broken_weather = out.path / "weather.json";
   std::ofstream(broken_weather) << R"({"latitude": 47, "longitude": 7, "hourly": {"time": ["2026-06-21T00:00"], "cloud_cover": [50]}})";
+  const fs::path bad_cape = out.path / "cape.json";
+  std::ofstream(bad_cape) << R"({"latitude": 47, "longitude": 7, "hourly": {"time": ["2026-06-21T00:00"], "cloud_cover": [50],
+    "cloud_cover_low": [50], "cloud_cover_mid": [0], "cloud_cover_high": [0], "cape": [-5]}})";
   const std::string weather = std::string(NEPHELE_SOURCE_DIR) + "/scenes/weather/bern-summer.json";
   const std::string png = " --out " + (out.path / "x.png").string();
   const std::pair<std::string, std::string> cases[] = {
@@ -230,6 +233,7 @@ TEST_CASE("render rejects bad input with code 2 naming the key or option", "[cli
       {"render --view gurten --time yesterday" + png, "time"},
       {"render --view gurten --weather " + weather + " --time 2027-01-01T00:00Z" + png, "outside the file's range"},
       {"render --view gurten --weather " + broken_weather.string() + png, "hourly.cloud_cover_low"},
+      {"render --view gurten --weather " + bad_cape.string() + png, "hourly.cape[0]: -5 is outside the allowed range 0 to 10000"},
       {"render --view gurten --out " + (out.path / "x.jpg").string(), ".png or .exr"},
       {"render --view gurten --fov 200" + png, "--fov"},
   };

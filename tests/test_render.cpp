@@ -138,7 +138,7 @@ TEST_CASE("extreme views and lights render without NaN or Inf", "[render][extrem
       {CloudType::fog, CoverageChannel::fog, 500, 1200, 2e-3f, 0, 0, 0, "camera inside"},
       {CloudType::cumulus, CoverageChannel::low, 1500, 3000, 1e-2f, 0, 0, 0, "test"},
       {CloudType::alto, CoverageChannel::mid, 3500, 5000, 2e-3f, 0.5f, 0, 0, "test"},
-      {CloudType::cumulonimbus, CoverageChannel::convective, 1300, 11000, 1.5e-2f, 0, 0.3f, 15000, "test"}};
+      {CloudType::stratocumulus, CoverageChannel::convective, 1300, 11000, 1.5e-2f, 0, 0.3f, 15000, "tall, from 15 km"}};
   const WeatherField field = uniform_field(0.6f, 0.5f, 0.3f, 1.0f, 0.8f);
   for (double pitch : {-90.0, -30.0, 0.0, 45.0, 90.0}) {
     for (double time : {noon, midnight}) {

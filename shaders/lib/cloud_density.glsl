@@ -15,7 +15,6 @@ const int CLOUD_CUMULUS = 4;
 const int CLOUD_STRATOCUMULUS = 5;
 const int CLOUD_STRATUS = 6;
 const int CLOUD_FOG = 7;
-const int CLOUD_CUMULONIMBUS = 8;
 
 // The cubic Hermite step H(a, b, x): 0 below a, 1 above b, 3t^2 - 2t^3 between.
 float hermite_step(float a, float b, float x) {
@@ -60,11 +59,6 @@ float cloud_density(int type, float h, float c, float shape, float detail) {
   if (type == CLOUD_CIRROSTRATUS) return c * sheet_profile(h, 0.4f) * (0.5f + 0.5f * detail);
   if (type == CLOUD_CIRROCUMULUS) return heaped_density(h, c, shape, detail, 0.1f);
   if (type == CLOUD_FOG) return c * exp(-3.0f * h) * (0.75f + 0.25f * detail);
-  if (type == CLOUD_CUMULONIMBUS) {
-    // Towers, widening into an anvil in the top fifth.
-    float field = shape - (1.0f - c) + 0.35f * hermite_step(0.8f, 0.95f, h) - 0.1f * h;
-    return hermite_step(0.0f, 0.1f, field) * hermite_step(0.0f, 0.03f, h) * (1.0f - hermite_step(0.97f, 1.0f, h));
-  }
   return 0.0f;
 }
 
@@ -93,8 +87,7 @@ vec2 noise_period(int type) {
   if (type == CLOUD_CIRRUS) return vec2(40000.0f, 5000.0f);
   if (type == CLOUD_CIRROSTRATUS) return vec2(20000.0f, 20000.0f);
   if (type == CLOUD_CIRROCUMULUS) return vec2(1500.0f, 1500.0f);
-  if (type == CLOUD_FOG) return vec2(3000.0f, 3000.0f);
-  return vec2(30000.0f, 30000.0f);  // cumulonimbus
+  return vec2(3000.0f, 3000.0f);  // fog
 }
 
 // Henyey-Greenstein lobes forward (g = 0.8) and back (g = -0.3), 70:30.

@@ -13,6 +13,8 @@
 //                         bilinear, clamped to the edge
 //   MARCH_TERRAIN_ARG     the ground's height texture as terrain.glsl takes it (empty in GLSL;
 //                         the includer also defines terrain.glsl's hooks)
+//   CONVECTIVE_DENSITY(q, c)  float: the density of convective cloud c's volume at q in [0, 1]^3,
+//                         trilinear, clamped to the edge (docs/convection.md)
 #ifndef NEPHELE_CLOUD_MARCH_GLSL
 #define NEPHELE_CLOUD_MARCH_GLSL
 #include "prelude.glsl"
@@ -220,6 +222,114 @@ float optical_depth_to_sun(vec3 p, vec3 centre, int layer, IN(MarchParams) m MAR
 // Samples per layer crossed of a shadow ray (shadow_depth).
 const int SHADOW_STEPS = 6;
 
+// ---- Convective clouds: density volumes of implicit models (docs/convection.md) ----
+
+// The volume coordinates of p in convective cloud c: x along its axis, y to the left, z up by
+// altitude; the cloud's volume is the unit cube.
+vec3 convective_coordinates(vec3 p, vec3 centre, int c, IN(MarchParams) m) {
+  ConvectiveParams v = m.convective[c];
+  vec2 offset = vec2(p) - v.centre;
+  vec2 side = vec2(-v.axis.y, v.axis.x);
+  float altitude = length(p - centre) - m.earth_radius;
+  return vec3(dot(offset, v.axis) / v.extent + 0.5f, dot(offset, side) / v.extent + 0.5f, (altitude - v.bottom) / v.extent);
+}
+
+bool in_unit_cube(vec3 q) {
+  return q.x >= 0.0f && q.x <= 1.0f && q.y >= 0.0f && q.y <= 1.0f && q.z >= 0.0f && q.z <= 1.0f;
+}
+
+// The extinction (1/m) of the convective clouds at p (x) and the height fraction, 0 at the
+// base and 1 at the top, of the cloud that holds most of it (y; the ambient light's height).
+vec2 convective_at(vec3 p, vec3 centre, IN(MarchParams) m MARCH_SOURCES_PARAM) {
+  float sigma = 0.0f;
+  float h = 0.0f;
+  float strongest = 0.0f;
+  for (int c = 0; c < m.convective_count; ++c) {
+    vec3 q = convective_coordinates(p, centre, c, m);
+    if (!in_unit_cube(q)) continue;  // the box test before the texture
+    ConvectiveParams v = m.convective[c];
+    float s = v.extinction * CONVECTIVE_DENSITY(q, c);
+    sigma += s;
+    if (s > strongest) {
+      strongest = s;
+      h = clamp((v.bottom + q.z * v.extent - v.cloud_base) / (v.cloud_top - v.cloud_base), 0.0f, 1.0f);
+    }
+  }
+  return vec2(sigma, h);
+}
+
+// The part of the ray o + t d, 0 <= t <= limit, inside convective cloud c's box: (start, end),
+// empty when start >= end. Across: the two pairs of vertical planes of its sides; up: the shell
+// between its bottom and top altitudes (the hull of ray_shell's two intervals).
+vec2 convective_box(vec3 o, vec3 d, vec3 centre, int c, float limit, IN(MarchParams) m) {
+  ConvectiveParams v = m.convective[c];
+  vec2 t = vec2(0.0f, limit);
+  vec2 offset = vec2(o) - v.centre;
+  float half_edge = 0.5f * v.extent;
+  for (int k = 0; k < 2; ++k) {
+    vec2 normal = k == 0 ? v.axis : vec2(-v.axis.y, v.axis.x);
+    float po = dot(offset, normal);
+    float pd = dot(vec2(d), normal);
+    if (abs(pd) < 1.0e-9f) {
+      if (abs(po) > half_edge) return vec2(1.0f, 0.0f);
+      continue;
+    }
+    float t0 = (-half_edge - po) / pd;
+    float t1 = (half_edge - po) / pd;
+    t = vec2(max(t.x, min(t0, t1)), min(t.y, max(t0, t1)));
+  }
+  vec4 s = ray_shell(o, d, centre, m.earth_radius + v.bottom, m.earth_radius + v.bottom + v.extent, limit);
+  bool first = s.x < s.y;
+  bool second = s.z < s.w;
+  if (!first && !second) return vec2(1.0f, 0.0f);
+  return vec2(max(t.x, first ? s.x : s.z), min(t.y, second ? s.w : s.y));
+}
+
+// The stretch of the ray that crosses any convective box, from the first entry to the last exit
+// (start >= end: none).
+vec2 convective_span(vec3 o, vec3 d, vec3 centre, float limit, IN(MarchParams) m) {
+  vec2 span = vec2(limit, 0.0f);
+  for (int c = 0; c < m.convective_count; ++c) {
+    vec2 r = convective_box(o, d, centre, c, limit, m);
+    if (r.x < r.y) span = vec2(min(span.x, r.x), max(span.y, r.y));
+  }
+  return span;
+}
+
+// How far the light march towards the sun follows the convective boxes (the anvil's side of a
+// cumulonimbus at a low sun).
+const float CONVECTIVE_LIGHT_REACH = 20000.0f;
+
+// Optical depth from p towards the sun through the convective clouds, samples spaced as the
+// layers' light march (light_sample) up to where the last box along the sun ends.
+float convective_depth_to_sun(vec3 p, vec3 centre, IN(MarchParams) m MARCH_SOURCES_PARAM) {
+  vec2 span = convective_span(p, m.sun, centre, CONVECTIVE_LIGHT_REACH, m);
+  float tau = 0.0f;
+  if (span.x >= span.y) return tau;
+  for (int i = 0; i < m.light_steps; ++i) {
+    vec2 s = light_sample(i, m.light_steps, span.y);
+    tau += convective_at(p + s.x * m.sun, centre, m MARCH_SOURCES_ARG).x * s.y;
+  }
+  return tau;
+}
+
+// The convective clouds' share of a ground point's shadow: 2 SHADOW_STEPS midpoint samples
+// where the sun ray crosses their boxes.
+float convective_shadow_depth(vec3 p, vec3 centre, INOUT(int) loop_count, IN(MarchParams) m MARCH_SOURCES_PARAM) {
+  loop_count += m.convective_count;
+  vec2 span = convective_span(p, m.sun, centre, m.max_distance, m);
+  float tau = 0.0f;
+  if (span.x >= span.y) return tau;
+  float ds = (span.y - span.x) / float(2 * SHADOW_STEPS);
+  for (int i = 0; i < 2 * SHADOW_STEPS; ++i)
+    tau += convective_at(p + (span.x + (float(i) + 0.5f) * ds) * m.sun, centre, m MARCH_SOURCES_ARG).x * ds;
+  loop_count += 2 * SHADOW_STEPS * (1 + m.convective_count);
+  return tau;
+}
+
+// Single-scattering albedo of the convective clouds' water droplets.
+const float CONVECTIVE_ALBEDO = 0.99f;
+
 // Optical depth from p towards the sun through the layers whose base is at or above min_base,
 // except layer skip (-1: none): the clouds' shadows on the ground. (Called per cloud sample for
 // the shadows of higher layers on lower ones, it made llvmpipe cut loops before the marcher's
@@ -245,7 +355,7 @@ float shadow_depth(vec3 p, vec3 centre, int skip, float min_base, INOUT(int) loo
       loop_count += SHADOW_STEPS;
     }
   }
-  return tau;
+  return tau + convective_shadow_depth(p, centre, loop_count, m MARCH_SOURCES_ARG);
 }
 
 // The intervals of a view ray inside each layer, in order of distance (start, end in .x, .y):
@@ -288,7 +398,8 @@ RayIntervals layer_intervals(vec3 d, vec3 centre, float cloud_limit, IN(MarchPar
 struct CloudMarch {
   vec3 radiance;
   float transmittance;
-  float distance;
+  float distance;  // while marching: the sum of what each step absorbs times its distance
+  float weight;    // while marching: the sum of what the steps absorb
   int loop_count;
 };
 
@@ -302,74 +413,124 @@ float march_jitter(ivec2 pixel, int frame) {
   return fract(ign + 0.618034f * float(frame));
 }
 
-// Marches the layers along the unit view direction d. jitter in [0, 1): the offset of the
-// samples within their steps.
-CloudMarch march_clouds(vec3 d, vec3 centre, float cloud_limit, float jitter, IN(MarchParams) m MARCH_SOURCES_PARAM) {
+// Marches the stretch [a, b] of the view ray d: layer `layer`'s density (-1: none) plus, when
+// `convective`, the convective clouds' (where the stretch lies in their boxes). jitter in [0, 1):
+// the offset of the samples within their steps; nu = cos(angle between d and the sun).
+void march_interval(float a, float b, int layer, bool convective, vec3 d, vec3 centre, float jitter, float nu,
+                    INOUT(CloudMarch) result, IN(MarchParams) m MARCH_SOURCES_PARAM) {
   vec3 origin_from_centre = -centre;
+  LayerParams l = m.layers[max(layer, 0)];
+  // Samples spaced quadratically: s_i = a + (b - a) t_i^2 puts short steps near the start of
+  // the interval and long ones far away, where a pixel covers more ground anyway.
+  // Long grazing intervals near the horizon get up to four times the samples.
+  int steps = m.view_steps * int(clamp((b - a) / 20000.0f, 1.0f, 4.0f));
+  float n = float(steps);
+  // Sun light arriving at the layer through the clear atmosphere, once per interval.
+  vec3 mid = origin_from_centre + (0.5f * (a + b)) * d;
+  vec3 sunlight = solar_irradiance() * transmittance_to_space(mid, m.sun, m.earth_radius);
+  float albedo = layer >= 0 ? 0.99f * (1.0f - l.darkness) : 0.0f;
+  // Coarse steps probe the cheap bound (inside the convective boxes: the box test); a coarse
+  // step that holds cloud (or follows one that did, to catch edges between probes) is marched
+  // in VIEW_REFINE sub-steps with the full density and a light march each, so the samples go
+  // where the cloud is.
+  bool was_cloudy = false;
+  result.loop_count += 17;  // transmittance_to_space of the interval
+  for (int i = 0; i < steps && result.transmittance > 0.01f; ++i) {
+    result.loop_count += 1;
+    float t0 = float(i) / n;
+    float t1 = float(i + 1) / n;
+    float t = (float(i) + jitter) / n;
+    float s = a + (b - a) * t * t;
+    float coarse = (b - a) * (t1 * t1 - t0 * t0);
+    bool cloudy = layer >= 0 && extinction_bound_at(s * d, centre, layer, max(coarse, s * m.pixel_angle), m MARCH_SOURCES_ARG) > 0.0f;
+    if (convective) {
+      cloudy = true;  // the whole stretch lies in the convective span
+      result.loop_count += m.convective_count;
+    }
+    if (!cloudy && !was_cloudy) continue;
+    was_cloudy = cloudy;
+    for (int j = 0; j < VIEW_REFINE && result.transmittance > 0.01f; ++j) {
+      float u0 = t0 + (t1 - t0) * float(j) / float(VIEW_REFINE);
+      float u1 = t0 + (t1 - t0) * float(j + 1) / float(VIEW_REFINE);
+      float u = t0 + (t1 - t0) * (float(j) + jitter) / float(VIEW_REFINE);
+      float sj = a + (b - a) * u * u;
+      float ds = (b - a) * (u1 * u1 - u0 * u0);
+      result.loop_count += 1;
+      vec3 p = sj * d;
+      float sigma_layer = layer >= 0 ? density_at(p, centre, layer, max(ds, sj * m.pixel_angle), true, m MARCH_SOURCES_ARG) : 0.0f;
+      vec2 cloud = vec2(0.0f);
+      if (convective) {
+        cloud = convective_at(p, centre, m MARCH_SOURCES_ARG);
+        result.loop_count += m.convective_count;
+      }
+      float sigma = sigma_layer + cloud.x;
+      if (sigma <= 0.0f) continue;
+      float h = layer >= 0 ? clamp((length(p - centre) - m.earth_radius - l.base) / (l.top - l.base), 0.0f, 1.0f) : cloud.y;
+      if (layer >= 0 && cloud.x > 0.0f) h = (h * sigma_layer + cloud.y * cloud.x) / sigma;
+      float tau = 0.0f;
+      if (m.light_steps > 0) {
+        if (layer >= 0) tau = optical_depth_to_sun(p, centre, layer, m MARCH_SOURCES_ARG);
+        if (convective) {
+          tau += convective_depth_to_sun(p, centre, m MARCH_SOURCES_ARG);
+          result.loop_count += m.light_steps * (1 + m.convective_count) + 2 * m.convective_count;
+        }
+      }
+      result.loop_count += m.light_steps + 3;  // the light march and the scattering octaves
+      // Ambient: half the sphere sees the sky (radiance E/pi, dimmer towards the cloud's base),
+      // half the ground; isotropic scattering of a radiance field L adds sigma_s L.
+      vec3 ambient = 0.5f * (m.ambient * ((0.4f + 0.6f * h) / PI_F) + m.ground_radiance);
+      float scattering = albedo * sigma_layer + CONVECTIVE_ALBEDO * cloud.x;  // sigma_s
+      vec3 source = scattering * (sunlight * sun_scattering(tau, nu) + ambient);
+      float step_transmittance = exp(-sigma * ds);
+      float absorbed = 1.0f - step_transmittance;
+      result.radiance += result.transmittance * source * absorbed / sigma;
+      result.distance += result.transmittance * absorbed * sj;
+      result.weight += result.transmittance * absorbed;
+      result.transmittance *= step_transmittance;
+    }
+  }
+}
+
+// Marches the layers and the convective clouds along the unit view direction d. jitter in
+// [0, 1): the offset of the samples within their steps. The layers' intervals are marched in
+// order of their starts; the convective span's points are each marched once with the
+// convective density added: with the first layer interval that holds them (the density is then
+// the sum of both, so clouds that share space are composited in depth), or, where no layer
+// interval does, alone.
+CloudMarch march_clouds(vec3 d, vec3 centre, float cloud_limit, float jitter, IN(MarchParams) m MARCH_SOURCES_PARAM) {
   RayIntervals intervals = layer_intervals(d, centre, cloud_limit, m);
   float nu = dot(d, m.sun);
   CloudMarch result;
   result.radiance = vec3(0.0f);
   result.transmittance = 1.0f;
-  result.loop_count = 4 * MAX_LAYERS * MAX_LAYERS;  // at most, for building the sorted intervals
-  float weighted_distance = 0.0f;
-  float weight = 0.0f;
-  for (int k = 0; k < intervals.count && result.transmittance > 0.01f; ++k) {
-    int layer = intervals.layer[k];
-    LayerParams l = m.layers[layer];
-    float a = intervals.bounds[k].x;
-    float b = intervals.bounds[k].y;
-    // Samples spaced quadratically: s_i = a + (b - a) t_i^2 puts short steps near the start of
-    // the interval and long ones far away, where a pixel covers more ground anyway.
-    // Long grazing intervals near the horizon get up to four times the samples.
-    int steps = m.view_steps * int(clamp((b - a) / 20000.0f, 1.0f, 4.0f));
-    float n = float(steps);
-    // Sun light arriving at the layer through the clear atmosphere, once per interval.
-    vec3 mid = origin_from_centre + (0.5f * (a + b)) * d;
-    vec3 sunlight = solar_irradiance() * transmittance_to_space(mid, m.sun, m.earth_radius);
-    float albedo = 0.99f * (1.0f - l.darkness);
-    // Coarse steps probe the cheap bound; a coarse step that holds cloud (or follows one that
-    // did, to catch edges between probes) is marched in VIEW_REFINE sub-steps with the full density
-    // and a light march each, so the samples go where the cloud is.
-    bool was_cloudy = false;
-    result.loop_count += 17;  // transmittance_to_space of the interval
-    for (int i = 0; i < steps && result.transmittance > 0.01f; ++i) {
-      result.loop_count += 1;
-      float t0 = float(i) / n;
-      float t1 = float(i + 1) / n;
-      float t = (float(i) + jitter) / n;
-      float s = a + (b - a) * t * t;
-      float coarse = (b - a) * (t1 * t1 - t0 * t0);
-      bool cloudy = extinction_bound_at(s * d, centre, layer, max(coarse, s * m.pixel_angle), m MARCH_SOURCES_ARG) > 0.0f;
-      if (!cloudy && !was_cloudy) continue;
-      was_cloudy = cloudy;
-      for (int j = 0; j < VIEW_REFINE && result.transmittance > 0.01f; ++j) {
-        float u0 = t0 + (t1 - t0) * float(j) / float(VIEW_REFINE);
-        float u1 = t0 + (t1 - t0) * float(j + 1) / float(VIEW_REFINE);
-        float u = t0 + (t1 - t0) * (float(j) + jitter) / float(VIEW_REFINE);
-        float sj = a + (b - a) * u * u;
-        float ds = (b - a) * (u1 * u1 - u0 * u0);
-        result.loop_count += 1;
-        vec3 p = sj * d;
-        float sigma = density_at(p, centre, layer, max(ds, sj * m.pixel_angle), true, m MARCH_SOURCES_ARG);
-        if (sigma <= 0.0f) continue;
-        float h = clamp((length(p - centre) - m.earth_radius - l.base) / (l.top - l.base), 0.0f, 1.0f);
-        float tau = m.light_steps > 0 ? optical_depth_to_sun(p, centre, layer, m MARCH_SOURCES_ARG) : 0.0f;
-        result.loop_count += m.light_steps + 3;  // the light march and the scattering octaves
-        // Ambient: half the sphere sees the sky (radiance E/pi, dimmer towards the cloud's base),
-        // half the ground; isotropic scattering of a radiance field L adds sigma_s L.
-        vec3 ambient = 0.5f * (m.ambient * ((0.4f + 0.6f * h) / PI_F) + m.ground_radiance);
-        vec3 source = albedo * sigma * (sunlight * sun_scattering(tau, nu) + ambient);
-        float step_transmittance = exp(-sigma * ds);
-        float absorbed = 1.0f - step_transmittance;
-        result.radiance += result.transmittance * source * absorbed / sigma;
-        weighted_distance += result.transmittance * absorbed * sj;
-        weight += result.transmittance * absorbed;
-        result.transmittance *= step_transmittance;
-      }
+  result.distance = 0.0f;
+  result.weight = 0.0f;
+  // At most, for building the sorted intervals, and the convective boxes' tests.
+  result.loop_count = 4 * MAX_LAYERS * MAX_LAYERS + m.convective_count;
+  vec2 span = convective_span(vec3(0.0f), d, centre, cloud_limit, m);
+  float covered = span.x;  // the convective span is marched up to here
+  for (int k = 0; k <= intervals.count && result.transmittance > 0.01f; ++k) {
+    bool last = k == intervals.count;
+    float a = last ? span.y : intervals.bounds[k].x;
+    float b = last ? span.y : intervals.bounds[k].y;
+    int layer = last ? -1 : intervals.layer[k];
+    // The span before this interval that no layer interval holds: the convective clouds alone.
+    float gap_end = min(a, span.y);
+    if (covered < gap_end) march_interval(covered, gap_end, -1, true, d, centre, jitter, nu, result, m MARCH_SOURCES_ARG);
+    covered = max(covered, gap_end);
+    if (last) break;
+    float c0 = max(a, covered);
+    float c1 = min(b, span.y);
+    if (c0 >= c1) {
+      march_interval(a, b, layer, false, d, centre, jitter, nu, result, m MARCH_SOURCES_ARG);
+      continue;
     }
+    if (a < c0) march_interval(a, c0, layer, false, d, centre, jitter, nu, result, m MARCH_SOURCES_ARG);
+    march_interval(c0, c1, layer, true, d, centre, jitter, nu, result, m MARCH_SOURCES_ARG);
+    if (c1 < b) march_interval(c1, b, layer, false, d, centre, jitter, nu, result, m MARCH_SOURCES_ARG);
+    covered = c1;
   }
-  result.distance = weight > 0.0f ? weighted_distance / weight : 0.0f;
+  result.distance = result.weight > 0.0f ? result.distance / result.weight : 0.0f;
   return result;
 }
 

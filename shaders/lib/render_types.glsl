@@ -3,6 +3,7 @@
 #define NEPHELE_RENDER_TYPES_GLSL
 
 const int MAX_LAYERS = 8;  // layers one render marches at most
+const int MAX_CONVECTIVE = 4;  // convective clouds (density volumes) one render marches at most
 
 // One cloud layer as the ray marcher sees it. Lengths in metres, altitudes above the Earth
 // sphere that osculates the WGS84 ellipsoid at the viewpoint.
@@ -14,7 +15,7 @@ struct LayerParams {
   float extinction;      // 1/m at density 1
   float morph;           // alto: 0 altostratus .. 1 altocumulus
   float darkness;        // reduces the single-scattering albedo
-  float min_distance;    // the layer starts this far from the camera (cumulonimbus)
+  float min_distance;    // the layer starts this far from the camera (no rule uses it today)
   vec2 wind;             // unit wind direction (towards), east-north
   vec2 noise_offset;     // how far the wind moved the noise (tau), along and across the wind, m
 };
@@ -25,6 +26,20 @@ struct TerrainParams {
   float extent;          // half-size of the height field's square, metres
   float top;             // highest altitude in it (above the sphere), metres
   float texel;           // its texel spacing, metres
+};
+
+// One convective cloud's density volume (docs/convection.md) as the marcher sees it: a cube of
+// edge `extent` standing on the ground point `centre` (east, north of the camera), its bottom
+// at altitude `bottom`; the volume's x runs along `axis`, its y to the left of it, its z up
+// (altitude, so the cube follows the Earth's curvature like the layers' shells).
+struct ConvectiveParams {
+  vec2 centre;           // metres east and north of the camera
+  vec2 axis;             // unit direction of the volume's x (where the anvil spreads), east-north
+  float bottom;          // altitude of the cube's bottom
+  float extent;          // the cube's edge, metres
+  float cloud_base;      // altitudes of the cloud's base and top (the ambient light's height)
+  float cloud_top;
+  float extinction;      // 1/m at density 1
 };
 
 // Everything the ray marcher (cloud_march.glsl) reads besides its two textures: the uniform
@@ -53,6 +68,8 @@ struct MarchParams {
   float noise_texels;      // texels per side of the noise volume
   int frame;               // which frame of a temporal accumulation (shifts the jitter)
   TerrainParams terrain;   // the ground (its heights are the third texture)
+  ConvectiveParams convective[MAX_CONVECTIVE];  // volume c is layer c of the fourth texture
+  int convective_count;
 };
 
 #endif

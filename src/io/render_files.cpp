@@ -7,6 +7,7 @@
 #include "nephele/version.hpp"
 #include "params/table.hpp"
 #include "regional/cloud_layers.hpp"
+#include "regional/convection.hpp"
 
 namespace nephele::io {
 
@@ -44,6 +45,25 @@ json::Value scene_sidecar(const SceneRender& r, const regional::Scene& scene) {
     layers.push_back(v);
   }
   root.set("layers", layers);
+  // The convective clouds placed from the weather (docs/convection.md): what called for them and
+  // where each stands, so that a render says why it has (or has no) towers.
+  json::Value convection;
+  convection.set("reason", r.convection_reason);
+  json::Value::Array clouds;
+  for (const auto& c : r.convective_clouds) {
+    json::Value v;
+    v.set("kind", regional::convective_kind_name(c.kind));
+    v.set("east_m", c.east_m);
+    v.set("north_m", c.north_m);
+    v.set("cloud_base_m", c.cloud_base_m);
+    v.set("cloud_top_m", c.cloud_top_m);
+    v.set("extent_m", c.extent_m);
+    v.set("anvil_towards_deg", c.axis_deg);
+    v.set("reason", c.reason);
+    clouds.push_back(v);
+  }
+  convection.set("clouds", clouds);
+  root.set("convection", convection);
   json::Value::Array passes;
   for (const auto& p : r.passes) passes.emplace_back(p);
   root.set("passes", passes);

@@ -101,7 +101,7 @@ regional::WeatherSeries parse_weather(const std::string& text, const std::string
   Reader r{source, root};
   WeatherSeries w;
   w.source = source;
-  std::vector<double> times, total, low, mid, high, rain, speed, direction;
+  std::vector<double> times, total, low, mid, high, rain, speed, direction, cape, lifted, code;
   // The cloud fields and precipitation, named differently by each provider.
   auto read_clouds = [&](const json::Value& block, const std::string& path, const char* total_key,
                          const char* low_key, const char* mid_key, const char* high_key) {
@@ -124,6 +124,16 @@ regional::WeatherSeries parse_weather(const std::string& text, const std::string
     times = r.times(hourly, "hourly.", offset);
     const size_t n = times.size();
     read_clouds(hourly, "hourly.", "cloud_cover", "cloud_cover_low", "cloud_cover_mid", "cloud_cover_high");
+    // The convective inputs (docs/convection.md), each optional. Ranges: CAPE is at most a few
+    // thousand J/kg even in the strongest outbreaks (about 8000 measured); the lifted index spans
+    // about -15 K (extreme instability) to +30 K (winter inversions); WMO code table 4677 has
+    // the integer codes 0 to 99.
+    cape = r.series(hourly, "hourly.", "cape", n, 0, 10000, false);
+    lifted = r.series(hourly, "hourly.", "lifted_index", n, -30, 50, false);
+    code = r.series(hourly, "hourly.", "weather_code", n, 0, 99, false);
+    for (size_t i = 0; i < code.size(); ++i)
+      if (code[i] != std::floor(code[i]))
+        r.fail("hourly.weather_code[" + std::to_string(i) + "]", "must be an integer code of WMO table 4677 (0 to 99)");
     // Wind aloft when present, else at 10 m (km/h in Open-Meteo's default units).
     const char* speed_keys[] = {"wind_speed_850hPa", "wind_speed_10m"};
     const char* direction_keys[] = {"wind_direction_850hPa", "wind_direction_10m"};
@@ -172,6 +182,18 @@ regional::WeatherSeries parse_weather(const std::string& text, const std::string
       s.has_wind = true;
       s.wind_speed = speed[i];
       s.wind_direction_deg = direction[i];
+    }
+    if (!cape.empty()) {
+      s.has_cape = true;
+      s.cape = cape[i];
+    }
+    if (!lifted.empty()) {
+      s.has_lifted_index = true;
+      s.lifted_index = lifted[i];
+    }
+    if (!code.empty()) {
+      s.has_weather_code = true;
+      s.weather_code = static_cast<int>(code[i]);
     }
     w.hours.push_back(s);
   }

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "regional/convection.hpp"
+
 namespace nephele::regional {
 namespace {
 
@@ -37,7 +39,6 @@ const char* cloud_type_name(CloudType type) {
     case CloudType::stratocumulus: return "stratocumulus";
     case CloudType::stratus: return "stratus";
     case CloudType::fog: return "fog";
-    case CloudType::cumulonimbus: return "cumulonimbus";
   }
   return "?";
 }
@@ -48,9 +49,8 @@ StationCoverage station_coverage(const WeatherSample& now, const std::vector<Wea
   c.channel[int(CoverageChannel::mid)] = now.cloud_mid;
   c.channel[int(CoverageChannel::low)] = now.cloud_low;
   c.channel[int(CoverageChannel::fog)] = is_foggy(now) ? 1.0 : 0.0;
-  // Convective towers: heavy showers now or within six hours (10 mm/h saturates).
-  c.channel[int(CoverageChannel::convective)] =
-      std::clamp(std::max(now.precipitation, max_precipitation(ahead, 6, now.time)) / 10.0, 0.0, 1.0);
+  // Convective towers (docs/convection.md): the strength of what the station's weather calls for.
+  c.channel[int(CoverageChannel::convective)] = convective_strength(convection_from_weather(now, ahead).kind);
   return c;
 }
 
@@ -105,10 +105,8 @@ std::vector<CloudLayer> choose_layers(const WeatherSample& now, const std::vecto
     layers.push_back({CloudType::fog, CoverageChannel::fog, static_cast<float>(rules.ground_m) - 50,
                       static_cast<float>(std::max(rules.fog_top_m, rules.ground_m + 50)), nimbostratus ? 4e-3f : 2e-3f, 0, 0, 0,
                       nimbostratus ? "rain: denser fog" : "low cover >= 95%, calm, dry: ground fog"});
-  // Cumulonimbus: a distant layer spanning all heights.
-  if (std::max(now.precipitation, rain_ahead) >= 2.0)
-    layers.push_back({CloudType::cumulonimbus, CoverageChannel::convective, static_cast<float>(rules.ground_m) + 800,
-                      11000, 5e-2f, 0, 0.3f, 15000, "showers >= 2 mm/h now or within 6 h: distant cumulonimbus"});
+  // Towering cumulus and cumulonimbus are no layer: implicit models placed where the convective
+  // channel calls for them (regional/convection.hpp).
   return layers;
 }
 

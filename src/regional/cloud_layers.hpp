@@ -19,7 +19,7 @@ enum class CloudType : int {
   stratocumulus = 5,
   stratus = 6,
   fog = 7,
-  cumulonimbus = 8,
+  // (8 was the cumulonimbus layer: convective clouds are implicit models now, convection.hpp)
 };
 const char* cloud_type_name(CloudType type);
 
@@ -34,7 +34,7 @@ struct CloudLayer {
   float extinction;        // 1/m at density 1
   float morph = 0;         // alto: 0 altostratus .. 1 altocumulus
   float darkness = 0;      // 0 normal .. 1 black (nimbostratus substitute darkens)
-  float min_distance_m = 0;  // cumulonimbus is a distant layer
+  float min_distance_m = 0;  // the layer starts this far from the camera (no rule uses it today)
   std::string reason;      // the rule that chose it
 };
 

@@ -26,6 +26,10 @@ WeatherSample WeatherSeries::at(double time) const {
   s.cloud_high = mix(a.cloud_high, b.cloud_high);
   s.precipitation = mix(a.precipitation, b.precipitation);
   s.wind_speed = mix(a.wind_speed, b.wind_speed);
+  s.cape = mix(a.cape, b.cape);
+  s.lifted_index = mix(a.lifted_index, b.lifted_index);
+  // A code names a state, not an amount: the nearer hour's (the earlier one at half past).
+  s.weather_code = t <= 0.5 ? a.weather_code : b.weather_code;
   // Wind direction: interpolate the vector, not the angle (350 and 10 degrees average to 0).
   const double ra = a.wind_direction_deg * M_PI / 180, rb = b.wind_direction_deg * M_PI / 180;
   s.wind_direction_deg = std::atan2(mix(std::sin(ra), std::sin(rb)), mix(std::cos(ra), std::cos(rb))) * 180 / M_PI;

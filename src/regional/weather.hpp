@@ -22,6 +22,12 @@ struct WeatherSample {
   double precipitation = 0;
   double wind_speed = 0, wind_direction_deg = 0;
   bool has_wind = false;
+  // What says whether the air is unstable (Open-Meteo's hourly `cape`, `lifted_index` and
+  // `weather_code`; docs/convection.md); each is optional in a file, and has_* says whether it
+  // was there. CAPE in J/kg, the lifted index in K, the code from WMO code table 4677.
+  double cape = 0, lifted_index = 0;
+  int weather_code = 0;
+  bool has_cape = false, has_lifted_index = false, has_weather_code = false;
 };
 
 struct WeatherSeries {

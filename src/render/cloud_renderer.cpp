@@ -15,6 +15,7 @@
 #include "gpu/pass_timer.hpp"
 #include "gpu/shader_sources.hpp"
 #include "gpu/textures.hpp"
+#include "render/convective_volumes.hpp"
 #include "render/sun_position.hpp"
 #include "shader_math/shader_math.hpp"
 #include "shader_math/uniforms.hpp"
@@ -188,7 +189,8 @@ bool needs_noise_volume(const std::vector<regional::CloudLayer>& layers, const r
 
 glsl::MarchParams march_params(const Camera& camera, const std::vector<regional::CloudLayer>& layers,
                                const regional::WeatherField& field, double unix_seconds,
-                               const RenderSettings& settings, glm::dvec2 wind_towards, double wind_speed) {
+                               const RenderSettings& settings, glm::dvec2 wind_towards, double wind_speed,
+                               const ConvectiveVolumes* convective) {
   glsl::MarchParams m{};
   const auto active = marched_layers(layers, field);
   const glm::dvec2 wind = glm::length(wind_towards) > 0 ? glm::normalize(wind_towards) : glm::dvec2(0, 1);
@@ -239,12 +241,15 @@ glsl::MarchParams march_params(const Camera& camera, const std::vector<regional:
     // The shell the march searches reaches a metre above the highest texel.
     m.terrain = {1, static_cast<float>(t.extent_m), t.top_m + 1.0f, static_cast<float>(t.texel_m())};
   }
+  m.convective_count = convective != nullptr ? convective->count() : 0;
+  for (int c = 0; c < m.convective_count; ++c) m.convective[c] = convective->params(c);
   return m;
 }
 
 RenderResult render_clouds(const Camera& camera, const std::vector<regional::CloudLayer>& layers,
                            const regional::WeatherField& field, double unix_seconds, const RenderSettings& settings,
-                           glm::dvec2 wind_towards, double wind_speed, const NoiseVolume* noise) {
+                           glm::dvec2 wind_towards, double wind_speed, const NoiseVolume* noise,
+                           const ConvectiveVolumes* convective) {
   RenderResult result;
   auto timed = [&](const std::string& name, auto&& work) { result.timings_ms.emplace_back(name, gpu::time_pass(work)); };
 
@@ -298,13 +303,17 @@ RenderResult render_clouds(const Camera& camera, const std::vector<regional::Clo
   std::vector<double> sum;
   timed("clouds", [&] {
     gpu::ComputeProgram program("render/clouds.comp");
-    glsl::MarchParams params = march_params(camera, layers, field, unix_seconds, settings, wind_towards, wind_speed);
+    glsl::MarchParams params =
+        march_params(camera, layers, field, unix_seconds, settings, wind_towards, wind_speed, convective);
     glsl::set_uniform(program, "u_march", params);
     for (const auto* l : active) result.passes.push_back(std::string("march layer ") + regional::cloud_type_name(l->type));
+    for (int c = 0; c < params.convective_count; ++c)
+      result.passes.push_back(std::string("march convective ") + regional::convective_kind_name(convective->clouds()[c].kind));
     image.bind_image(0, GL_WRITE_ONLY);
     glBindTextureUnit(1, noise != nullptr ? noise->texture() : 0);
     glBindTextureUnit(2, weather);
     glBindTextureUnit(4, terrain);
+    glBindTextureUnit(5, convective != nullptr ? convective->texture() : 0);
     GLuint guard = 0;
     const GLuint zero = 0;
     glCreateBuffers(1, &guard);

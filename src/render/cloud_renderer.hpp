@@ -15,6 +15,8 @@
 
 namespace nephele::render {
 
+class ConvectiveVolumes;  // render/convective_volumes.hpp
+
 struct Camera {
   double latitude_deg = 0, longitude_deg = 0, height_m = 0;  // WGS84, height above the ellipsoid
   double heading_deg = 0;   // clockwise from north
@@ -98,16 +100,18 @@ bool needs_noise_volume(const std::vector<regional::CloudLayer>& layers, const r
 // uploads it; the marcher's C++ twin takes it as it is.
 glsl::MarchParams march_params(const Camera& camera, const std::vector<regional::CloudLayer>& layers,
                                const regional::WeatherField& field, double unix_seconds,
-                               const RenderSettings& settings, glm::dvec2 wind_towards = {0, 1}, double wind_speed = 0);
+                               const RenderSettings& settings, glm::dvec2 wind_towards = {0, 1}, double wind_speed = 0,
+                               const ConvectiveVolumes* convective = nullptr);
 
 // Needs a current OpenGL 4.5 context. Layers whose coverage channel is zero everywhere in the
 // field are not marched (their absence is listed in passes). The noise volume is made when a
 // layer is marched, unless `noise` (of settings.noise_size and settings.seed) is given: renders
-// of one scene with other step counts share it.
+// of one scene with other step counts share it. `convective`: the convective clouds' volumes,
+// marched with the layers (docs/convection.md); none: no convective cloud.
 RenderResult render_clouds(const Camera& camera, const std::vector<regional::CloudLayer>& layers,
                            const regional::WeatherField& field, double unix_seconds,
                            const RenderSettings& settings, glm::dvec2 wind_towards = {0, 1}, double wind_speed = 0,
-                           const NoiseVolume* noise = nullptr);
+                           const NoiseVolume* noise = nullptr, const ConvectiveVolumes* convective = nullptr);
 
 // Display encoding for PNG: exposure, the ACES filmic curve fit of Narkowicz (2015), sRGB.
 core::ImageData tone_map(const core::ImageData& radiance, double exposure);

@@ -2,6 +2,7 @@
 
 #include <GeographicLib/LocalCartesian.hpp>
 
+#include <cmath>
 #include <filesystem>
 #include <limits>
 #include <map>
@@ -80,6 +81,7 @@ PreparedScene prepare_scene(const regional::Scene& scene, const std::vector<regi
   PreparedScene prepared;
   SceneRender& out = prepared.partial;
   out.camera = scene_camera(scene);
+  double anchor_bearing_deg = out.camera.heading_deg;
   const double time = prepared.time = core::parse_utc_time(scene.time);
   const GeographicLib::LocalCartesian frame(out.camera.latitude_deg, out.camera.longitude_deg, 0.0);
   regional::WeatherField& field = prepared.field;
@@ -115,6 +117,21 @@ PreparedScene prepare_scene(const regional::Scene& scene, const std::vector<regi
       wind = -glm::dvec2(std::sin(from), std::cos(from));
       wind_speed = now[nearest].wind_speed;
     }
+    out.convection_reason = regional::convection_from_weather(now[nearest], ahead[nearest]).reason;
+    // Convective clouds stand towards the farthest station whose weather calls for them (its
+    // direction from the camera), or about the view's heading when that station is the camera's.
+    double farthest = 10000.0;
+    for (size_t i = 0; i < weather.size(); ++i) {
+      if (regional::convection_from_weather(now[i], ahead[i]).kind == regional::ConvectiveKind::none) continue;
+      const regional::Site camera_site{"camera", out.camera.latitude_deg, out.camera.longitude_deg, 0.0};
+      const regional::Site station{"station", weather[i].latitude_deg, weather[i].longitude_deg, 0.0};
+      const double d = regional::geodesic_distance_m(camera_site.latitude_deg, camera_site.longitude_deg,
+                                                     station.latitude_deg, station.longitude_deg);
+      if (d > farthest) {
+        farthest = d;
+        anchor_bearing_deg = regional::geodesic_azimuth_deg(camera_site, station);
+      }
+    }
   } else {
     if (cover.texels.size() != std::size_t(6) * cover.size * cover.size || cover.size <= 0)
       throw std::logic_error("prepare_scene: a global cover of " + std::to_string(cover.texels.size()) +
@@ -124,6 +141,19 @@ PreparedScene prepare_scene(const regional::Scene& scene, const std::vector<regi
     out.weather_source = "global cover";
     out.weather_at_camera = regional::sample_from_field(field, time);
     out.layers = regional::choose_layers(out.weather_at_camera, {}, layer_rules(scene));
+    regional::add_cover_convection(field, time, out.camera.longitude_deg);
+    out.convection_reason =
+        regional::convection_from_cover(out.weather_at_camera.cloud_low, time, out.camera.longitude_deg).reason;
+  }
+
+  // Convective clouds where the field's convective channel calls for them; their volumes only
+  // then (a scene without convection computes none).
+  const double wind_towards_deg = std::atan2(wind.x, wind.y) * 180 / M_PI;
+  out.convective_clouds = regional::place_convective_clouds(field, anchor_bearing_deg, wind_towards_deg, scene.seed,
+                                                            layer_rules(scene).ground_m);
+  if (!out.convective_clouds.empty()) {
+    prepared.convective = std::make_shared<ConvectiveVolumes>(out.convective_clouds);
+    out.passes.insert(out.passes.end(), prepared.convective->passes().begin(), prepared.convective->passes().end());
   }
 
   return prepared;
@@ -148,7 +178,7 @@ SceneRender render_prepared(const PreparedScene& prepared, const RenderSettings&
   RenderSettings with_terrain = settings;
   with_terrain.terrain = prepared.terrain;
   out.render = render_clouds(out.camera, out.layers, prepared.field, prepared.time, with_terrain, prepared.wind,
-                             prepared.wind_speed, noise);
+                             prepared.wind_speed, noise, prepared.convective.get());
   out.passes.insert(out.passes.end(), out.render.passes.begin(), out.render.passes.end());
   return out;
 }

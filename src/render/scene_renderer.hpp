@@ -5,8 +5,10 @@
 
 #include "cover/cover_parameters.hpp"
 #include "regional/cloud_layers.hpp"
+#include "regional/convection.hpp"
 #include "regional/scene.hpp"
 #include "render/cloud_renderer.hpp"
+#include "render/convective_volumes.hpp"
 
 namespace nephele::render {
 
@@ -17,6 +19,10 @@ struct SceneRender {
   std::vector<std::string> passes;  // every pass that ran, in order
   std::string weather_source;       // "stations" or "global cover"
   regional::WeatherSample weather_at_camera;  // what the layer rules read
+  // The towering cumulus and cumulonimbus placed where the weather calls for convection
+  // (docs/convection.md), and what called for it at the camera (empty: no convection there).
+  std::vector<regional::ConvectiveCloud> convective_clouds;
+  std::string convection_reason;
 };
 
 // What a scene needs before its march: the camera, the weather field (from the stations or the
@@ -29,6 +35,8 @@ struct PreparedScene {
   double wind_speed = 0.0;    // m/s
   // The ground (io::load_terrain from the scene's `terrain`); none: the bare sphere.
   std::shared_ptr<const regional::TerrainGrid> terrain;
+  // The convective clouds' density volumes, made by prepare_scene; none without convection.
+  std::shared_ptr<const ConvectiveVolumes> convective;
 };
 
 // The camera of a scene: its position (`at`, else the viewpoint's summit with the eye 2 m above

@@ -13,6 +13,7 @@
 #define TERRAIN_SOURCE_ARG , terrain
 #define TERRAIN_HEIGHT(uv) terrain.sample(uv, 0)
 #define MARCH_TERRAIN_ARG , sources.terrain
+#define CONVECTIVE_DENSITY(q, cloud) sources.convective.sample(q, cloud)
 #define MODEL_SOURCE_PARAM , IN(DensitySource) density
 #define MODEL_SOURCE_ARG , density
 #define MODEL_DENSITY(uvw) density.sample(uvw)

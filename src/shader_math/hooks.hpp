@@ -49,12 +49,24 @@ struct DensitySource {
   float sample(vec3 uvw) const;
 };
 
-// The textures of cloud_march.glsl: the noise volume, the weather field and the ground's
-// height field (terrain.glsl's TERRAIN_HEIGHT: layer 0 of a one-layer source).
+// The convective clouds' density volumes (cloud_march.glsl's CONVECTIVE_DENSITY): `count`
+// volumes of size^3 floats one after the other, each sampled as a DensitySource (the GPU holds
+// them as the z-layers of one 3D texture and clamps within each).
+struct ConvectiveSource {
+  int size = 0;
+  int count = 0;
+  const float* values = nullptr;
+  float sample(vec3 uvw, int cloud) const;
+};
+
+// The textures of cloud_march.glsl: the noise volume, the weather field, the ground's height
+// field (terrain.glsl's TERRAIN_HEIGHT: layer 0 of a one-layer source) and the convective
+// clouds' volumes.
 struct MarchSources {
   VolumeSource noise;
   LayeredSource weather;
   LayeredSource terrain;
+  ConvectiveSource convective;
 };
 
 // The velocity sources of the warp's stepping rules: the sampled cube map, the procedural curl,

@@ -23,6 +23,7 @@ namespace nephele::glsl {
 #undef TERRAIN_SOURCE_ARG
 #undef TERRAIN_HEIGHT
 #undef MARCH_TERRAIN_ARG
+#undef CONVECTIVE_DENSITY
 #undef MODEL_SOURCE_PARAM
 #undef MODEL_SOURCE_ARG
 #undef MODEL_DENSITY

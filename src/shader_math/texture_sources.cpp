@@ -80,4 +80,9 @@ float DensitySource::sample(vec3 uvw) const {
   return trilinear(at, clamp_taps(uvw.x, size), clamp_taps(uvw.y, size), clamp_taps(uvw.z, size));
 }
 
+float ConvectiveSource::sample(vec3 uvw, int cloud) const {
+  const size_t voxels = static_cast<size_t>(size) * size * size;
+  return DensitySource{size, values + cloud * voxels}.sample(uvw);
+}
+
 }  // namespace nephele::glsl

@@ -68,6 +68,18 @@ void set_uniform(const gpu::ComputeProgram& program, const std::string& name, co
   program.set(name + ".terrain.extent", params.terrain.extent);
   program.set(name + ".terrain.top", params.terrain.top);
   program.set(name + ".terrain.texel", params.terrain.texel);
+  for (int i = 0; i < MAX_CONVECTIVE; ++i) {
+    const ConvectiveParams& c = params.convective[i];
+    const std::string cloud = name + ".convective[" + std::to_string(i) + "].";
+    program.set(cloud + "centre", c.centre);
+    program.set(cloud + "axis", c.axis);
+    program.set(cloud + "bottom", c.bottom);
+    program.set(cloud + "extent", c.extent);
+    program.set(cloud + "cloud_base", c.cloud_base);
+    program.set(cloud + "cloud_top", c.cloud_top);
+    program.set(cloud + "extinction", c.extinction);
+  }
+  program.set(name + ".convective_count", params.convective_count);
 }
 
 }  // namespace nephele::glsl

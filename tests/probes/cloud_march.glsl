@@ -12,6 +12,8 @@ layout(binding = 4) uniform sampler2D terrain_heights;  // terrain.glsl's height
 #define TERRAIN_SOURCE_ARG
 #define TERRAIN_HEIGHT(uv) texture(terrain_heights, uv).x
 #define MARCH_TERRAIN_ARG
+layout(binding = 5) uniform sampler3D convective_volumes;  // one volume here: no stack to clamp in
+#define CONVECTIVE_DENSITY(q, cloud) texture(convective_volumes, q).x
 #include "../lib/cloud_march.glsl"
 #endif
 
@@ -61,6 +63,17 @@ MarchParams probe_march_params() {
   m.terrain.extent = 1.0f;
   m.terrain.top = 0.0f;
   m.terrain.texel = 1.0f;
+  // One convective cloud 20 km north, turned to (0.6, 0.8); marched only by functions 12-16.
+  m.convective_count = 0;
+  for (int c = 0; c < MAX_CONVECTIVE; ++c) {
+    m.convective[c].centre = vec2(0.0f, 20000.0f);
+    m.convective[c].axis = vec2(0.6f, 0.8f);
+    m.convective[c].bottom = 1000.0f;
+    m.convective[c].extent = 6000.0f;
+    m.convective[c].cloud_base = 1500.0f;
+    m.convective[c].cloud_top = 6000.0f;
+    m.convective[c].extinction = 0.01f;
+  }
   return m;
 }
 
@@ -124,6 +137,38 @@ vec4 probe_cloud_march(mat4 x MARCH_SOURCES_PARAM) {
     int loops = 0;
     float tau = shadow_depth(p, centre, layer, footprint, loops, m MARCH_SOURCES_ARG);
     return vec4(tau, float(loops), march_jitter(ivec2(int(x[3].x), int(x[3].y)), int(x[3].z)), 0.0f);
+  }
+  m.convective_count = 1;
+  if (f == 12) {
+    // The convective cloud at p: extinction, height fraction, inside its box, volume z.
+    vec2 v = convective_at(p, centre, m MARCH_SOURCES_ARG);
+    vec3 q = convective_coordinates(p, centre, 0, m);
+    return vec4(v.x, v.y, in_unit_cube(q) ? 1.0f : 0.0f, q.z);
+  }
+  if (f == 13) {
+    // A ray from p along d (limit x[0].z): its box interval and the span.
+    return vec4(convective_box(p, d, centre, 0, x[0].z, m), convective_span(p, d, centre, x[0].z, m));
+  }
+  if (f == 14) {
+    int loops = 0;
+    float shadow = convective_shadow_depth(p, centre, loops, m MARCH_SOURCES_ARG);
+    return vec4(convective_depth_to_sun(p, centre, m MARCH_SOURCES_ARG), shadow, float(loops), 0.0f);
+  }
+  if (f == 15) {
+    // The layers and the convective cloud marched together (limit x[0].z, jitter x[0].w).
+    CloudMarch c = march_clouds(d, centre, x[0].z, x[0].w, m MARCH_SOURCES_ARG);
+    return vec4(c.radiance, c.transmittance);
+  }
+  if (f == 16) {
+    // The convective cloud alone on [x[3].x, x[3].y] of the ray d.
+    CloudMarch c;
+    c.radiance = vec3(0.0f);
+    c.transmittance = 1.0f;
+    c.distance = 0.0f;
+    c.weight = 0.0f;
+    c.loop_count = 0;
+    march_interval(x[3].x, x[3].y, -1, true, d, centre, x[0].w, dot(d, m.sun), c, m MARCH_SOURCES_ARG);
+    return vec4(c.radiance, c.transmittance);
   }
   return vec4(loop_limited(int(x[0].y)) ? 1.0f : 0.0f, 0.0f, 0.0f, 0.0f);
 }
