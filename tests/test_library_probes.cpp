@@ -16,6 +16,7 @@
 #include "march_tolerance.hpp"
 #include "model/density_volume.hpp"
 #include "render/cloud_renderer.hpp"
+#include "cover/curl_spline.hpp"
 #include "shader_math/shader_math.hpp"
 
 // The probes that call functions with texture hooks need the hook macros again.
@@ -29,6 +30,7 @@ namespace nephele::glsl {
 #include "probes/cube_faces.glsl"
 #include "probes/cube_sampling.glsl"
 #include "probes/curl_flow.glsl"
+#include "probes/curl_spline.glsl"
 #include "probes/equirect_mapping.glsl"
 #include "probes/hash.glsl"
 #include "probes/implicit_field.glsl"
@@ -581,6 +583,61 @@ TEST_CASE("cube_sampling.glsl on the GPU agrees with the CPU", "[probe]") {
   for (int k = 0; k < 64; ++k)
     cases.push_back({arguments(1, vec4(0.0f), vec4(normalize(vec3(r.v(-1.0f, 1.0f)) + vec3(1e-3f)), 0)), kBilinear});
   compare("cube_sampling", [&](const mat4& x) { return probe_cube_sampling(x, source); }, cases, texels);
+}
+
+TEST_CASE("curl_spline.glsl on the GPU agrees with the CPU", "[probe][spline]") {
+  // Known data: node (i, j) of face f holds (its direction, f), so that a coefficient fetched
+  // from the wrong face or node shows; |values| <= 5.
+  const int extent = cover::spline_coefficient_extent(SPLINE_PROBE_CELLS);
+  std::vector<vec4> nodes;
+  for (int face = 0; face < 6; ++face)
+    for (int j = 0; j < extent; ++j)
+      for (int i = 0; i < extent; ++i)
+        nodes.push_back(vec4(curl_spline_node(face, i, j, SPLINE_MARGIN, SPLINE_PROBE_CELLS), float(face)));
+  const SplineSource source{SPLINE_PROBE_CELLS, nodes.data()};
+  // Tolerances. The prefilter (8 c - p - n) / 6 of values in [-1, 1]: 4 operations on values
+  // below 10, each within 3.5 ulp (kArithmetic's rule). A row: 4 products and 3 sums of weights
+  // below 1 and values below 5: 7 x 3.5 ulp of 5. A spline value: its 4 rows and 4 more products
+  // and 3 sums (14 x 3.5 ulp of 5), plus the fractions x - floor(x) of both axes, each within
+  // kArithmetic (x = (0.5 s + 0.5) cells - 0.5 with a division in s, values below 4): the weights'
+  // slopes sum to at most 1.5 (at t = 1/2: 1/8 + 5/8 + 5/8 + 1/8) and sum to 0, so a fraction's
+  // error moves the value by 1.5 times the spread of 4 neighbouring nodes (directions: at most 2)
+  // times it. The velocity projects that value: the dot product and the subtraction add 5
+  // operations on values below 5 and the value's own error at most once more.
+  constexpr float kPrefilter = 4 * 3.5f * 10 * kUlp;
+  constexpr float kRow = 7 * 3.5f * 5 * kUlp;
+  constexpr float kSample = 14 * 3.5f * 5 * kUlp + 2 * 1.5f * 2 * kArithmetic;
+  constexpr float kProjected = 2 * kSample + 5 * 3.5f * 5 * kUlp;
+  Random r(24);
+  std::vector<Case> cases;
+  for (int k = 0; k < 96; ++k) {
+    const int f = k % 6;
+    const vec3 w = normalize(vec3(r.v(-1.0f, 1.0f)) + vec3(1e-3f));
+    if (f == 0) cases.push_back({arguments(0, vec4(r(0.0f, 1.0f), 0, 0, 0)), kArithmetic});
+    if (f == 1) cases.push_back({arguments(1, vec4(0.0f), r.v(-1.0f, 1.0f) + vec4(0, 0, 0, r(-1.0f, 1.0f)),
+                                           r.v(-1.0f, 1.0f), r.v(-1.0f, 1.0f)), kPrefilter});
+    if (f == 2) {
+      const int i = int(r(0.0f, float(extent - 4) + 0.999f)), j = int(r(0.0f, float(extent) - 0.001f));
+      cases.push_back({arguments(2, vec4(float((k / 6) % 6), float(i), float(j), 0),
+                                 cubic_bspline_weights(r(0.0f, 1.0f))), kRow});
+    }
+    if (f == 3) cases.push_back({arguments(3, vec4(0.0f), vec4(w, 0)), kSample});
+    if (f == 4) cases.push_back({arguments(4, vec4(0.0f), vec4(w, 0)), kProjected});
+    if (f == 5) {
+      // Nodes inside, on and beyond the face's edges, with margins 2 and 3.
+      const int margin = 2 + (k / 6) % 2;
+      cases.push_back({arguments(5, vec4(float((k / 6) % 6), float(k % 9), float((k / 3) % 9), 0),
+                                 vec4(float(margin), float(SPLINE_PROBE_CELLS), 0, 0)), kArithmetic});
+    }
+  }
+  // The faces' edges and corners, where the nodes read reach into the margin.
+  for (int face = 0; face < 6; ++face)
+    for (float s : {-1.0f, -0.999f, 0.0f, 0.999f, 1.0f})
+      for (float t : {-1.0f, 0.37f, 1.0f}) {
+        const vec3 w = normalize(cube_face_point(face, s, t));
+        cases.push_back({arguments(3, vec4(0.0f), vec4(w, 0)), kSample});
+      }
+  compare("curl_spline", [&](const mat4& x) { return probe_curl_spline(x, source); }, cases, nodes);
 }
 
 TEST_CASE("warp_step.glsl on the GPU agrees with the CPU, sampled and procedural", "[probe]") {

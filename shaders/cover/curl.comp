@@ -1,17 +1,37 @@
 #version 450
-// Pass 2: the curl vector v = n x grad phi at every texel direction n.
+// Pass 2: the curl vector v = n x grad phi at every texel direction n; with CURL_FROM_SPLINE 1
+// the velocity the spline warp uses there instead (curl_mode spline: the diagnosis then judges
+// the flow that was integrated, and no procedural evaluation is made per texel).
 layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
 layout(rgba32f, binding = 0) uniform readonly imageCube identity_field;
 layout(rgba32f, binding = 1) uniform writeonly imageCube curl_field;
+#ifndef CURL_FROM_SPLINE
+#define CURL_FROM_SPLINE 0
+#endif
+// Both variants' libraries come in before the #if: the host expands each file once (the first
+// include wins, active or not), so a file first included inside an inactive branch would be
+// missing from the other.
 #include "../lib/curl_flow.glsl"
-
+#if CURL_FROM_SPLINE
+layout(rgba32f, binding = 2) uniform readonly image2DArray curl_spline;
+#define SPLINE_SOURCE_PARAM
+#define SPLINE_SOURCE_ARG
+#define SPLINE_FETCH(face, i, j) imageLoad(curl_spline, ivec3(i, j, face))
+#define SPLINE_CELLS (imageSize(curl_spline).x - 2 * SPLINE_MARGIN)
+#include "../lib/curl_spline.glsl"
+#else
 uniform CurlParams u_curl;
 uniform vec3 u_noise_offset;  // reduced modulo the lattice period by the host
+#endif
 
 void main() {
   ivec3 texel = ivec3(gl_GlobalInvocationID);
   int size = imageSize(curl_field).x;
   if (texel.x >= size || texel.y >= size) return;
   vec3 n = imageLoad(identity_field, texel).xyz;
+#if CURL_FROM_SPLINE
+  imageStore(curl_field, texel, vec4(spline_velocity(n), 0.0f));
+#else
   imageStore(curl_field, texel, vec4(curl_velocity_shifted(n, u_curl, u_noise_offset), 0.0f));
+#endif
 }

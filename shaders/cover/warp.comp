@@ -2,7 +2,7 @@
 // Pass 3: the flow map over the flow time T, each texel following its own trajectory.
 // Variants (defines from src/numerics/integrators.cpp): WARP_INTEGRATOR, an INTEGRATOR_*
 // number of warp_step.glsl; WARP_PROCEDURAL 1 evaluates the curl at the exact point instead
-// of sampling the curl cube map. The start points come from identity_field, whose size (that
+// of sampling the curl cube map, WARP_SPLINE 1 the cubic B-spline of the curl grid (binding 4). The start points come from identity_field, whose size (that
 // of warp_field) may differ from the curl field's: the report warps sample points that way.
 layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
 layout(rgba32f, binding = 0) uniform readonly imageCube identity_field;
@@ -14,6 +14,9 @@ layout(rgba32f, binding = 2) uniform writeonly imageCube warp_field;
 #endif
 #ifndef WARP_PROCEDURAL
 #define WARP_PROCEDURAL 0
+#endif
+#ifndef WARP_SPLINE
+#define WARP_SPLINE 0
 #endif
 
 #define CUBE_SOURCE_PARAM
@@ -30,6 +33,14 @@ layout(rgba32f, binding = 2) uniform writeonly imageCube warp_field;
 uniform CurlParams u_curl;
 uniform vec3 u_noise_offset;
 #define WARP_VELOCITY(w) curl_velocity_shifted(w, u_curl, u_noise_offset)
+#elif WARP_SPLINE
+layout(rgba32f, binding = 4) uniform readonly image2DArray curl_spline;
+#define SPLINE_SOURCE_PARAM
+#define SPLINE_SOURCE_ARG
+#define SPLINE_FETCH(face, i, j) imageLoad(curl_spline, ivec3(i, j, face))
+#define SPLINE_CELLS (imageSize(curl_spline).x - 2 * SPLINE_MARGIN)
+#include "../lib/curl_spline.glsl"
+#define WARP_VELOCITY(w) spline_velocity(w)
 #else
 #define WARP_VELOCITY(w) flow_velocity(w)
 #endif

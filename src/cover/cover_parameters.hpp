@@ -36,12 +36,13 @@ struct CoverParameters {
   NoiseOctaves density{params::cover::density_frequency.default_float(), params::cover::density_octaves.default_int(),
                        params::cover::density_lacunarity.default_float(),
                        params::cover::density_gain.default_float()};  // Worley fBm of the cloud density
-  // How the warp is solved (docs/numerics.md): RK4 on the analytic curl of the smooth
-  // potential, whose velocity is smooth enough for order 4 (sfsim: Euler, sampled, 50 steps).
+  // How the warp is solved (docs/numerics.md): RK4 on a C2 cubic B-spline of the curl of the
+  // smooth potential, smooth enough for order 4 (sfsim: Euler, sampled, 50 steps).
   cover::Integrator integrator = *cover::parse_integrator(std::string(params::cover::integrator.default_text));
   cover::CurlMode curl_mode = *cover::parse_curl_mode(std::string(params::cover::curl_mode.default_text));
   float tolerance = params::cover::tolerance.default_float();   // adaptive: largest error estimate of a step, radians
   int max_substeps = params::cover::max_substeps.default_int();  // adaptive: attempted steps per texel at most
+  int curl_size = params::cover::curl_size.default_int();        // spline: curl grid nodes per face edge
   // Shifts every noise layer by (d, d, d) sphere radii. Non-zero offsets make the lattices
   // periodic and are reduced modulo the period in double (noise_offset below), so that float
   // keeps its precision however far away the offset is.
@@ -61,6 +62,7 @@ void visit_numeric_parameters(P& p, Visit&& visit) {
   visit(c::step, p.step);
   visit(c::tolerance, p.tolerance);
   visit(c::max_substeps, p.max_substeps);
+  visit(c::curl_size, p.curl_size);
   visit(c::coverage, p.coverage);
   visit(c::month, p.month);
   visit(c::noise_offset, p.noise_offset);

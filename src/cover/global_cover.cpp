@@ -16,11 +16,14 @@ double cover_gpu_bytes(int size) {
   // The equirect export holds one R32F tile of the 4 size x 2 size map at a time; the
   // calibration and diagnosis their tables and partial sums.
   const double equirect = std::min(8.0 * size * size, double(default_equirect_tile) * default_equirect_tile) * 4.0;
+  // Curl mode spline adds its grid, at most 6 x 16 x 2 x 1030^2 bytes (200 MiB) for the
+  // largest --curl-size (1024), 13 MiB for the default 256: not counted.
   return cubes + equirect + reduction_gpu_bytes(size);
 }
 
 GlobalCover::GlobalCover(const CoverParameters& parameters)
     : parameters_(parameters),
+      curl_program_("cover/curl.comp", {{"CURL_FROM_SPLINE", parameters.curl_mode == CurlMode::spline ? "1" : "0"}}),
       warp_program_("cover/warp.comp", cover::warp_defines(parameters.integrator, parameters.curl_mode)),
       identity_field_(gpu::Texture::cube(parameters.size, GL_RGBA32F)),
       curl_field_(gpu::Texture::cube(parameters.size, GL_RGBA32F)),
@@ -37,6 +40,7 @@ void GlobalCover::timed(const std::string& pass, Work&& work) {
 
 void GlobalCover::run() {
   run_identity();
+  run_spline();
   run_curl();
   run_warp();
   run_density();
@@ -51,10 +55,44 @@ void GlobalCover::run_identity() {
   });
 }
 
+void GlobalCover::run_spline() {
+  if (parameters_.curl_mode != CurlMode::spline) return;
+  timed("spline", [&] {
+    const int cells = parameters_.curl_size;
+    const int margin = glsl::SPLINE_MARGIN;
+    if (!spline_samples_program_) {
+      spline_samples_program_ = std::make_unique<gpu::ComputeProgram>(
+          "cover/curl_spline.comp", std::vector<std::pair<std::string, std::string>>{{"CURL_SPLINE_PREFILTER", "0"}});
+      spline_prefilter_program_ = std::make_unique<gpu::ComputeProgram>(
+          "cover/curl_spline.comp", std::vector<std::pair<std::string, std::string>>{{"CURL_SPLINE_PREFILTER", "1"}});
+      spline_coefficients_ = gpu::Texture::layered(cells + 2 * margin, cells + 2 * margin, 6, GL_RGBA32F);
+    }
+    // The samples reach one node further than the coefficients: the prefilter's neighbours.
+    const int samples_extent = cells + 2 * (margin + 1);
+    const gpu::Texture samples = gpu::Texture::layered(samples_extent, samples_extent, 6, GL_RGBA32F);
+    glsl::set_uniform(*spline_samples_program_, "u_curl", curl_params(parameters_));
+    spline_samples_program_->set("u_noise_offset", potential_offset(parameters_));
+    spline_samples_program_->set("u_cells", cells);
+    samples.bind_image(0, GL_WRITE_ONLY);
+    spline_samples_program_->dispatch_covering(samples_extent, samples_extent, 6);
+    gpu::image_barrier();
+    samples.bind_image(0, GL_READ_ONLY);
+    spline_coefficients_.bind_image(1, GL_WRITE_ONLY);
+    spline_prefilter_program_->dispatch_covering(cells + 2 * margin, cells + 2 * margin, 6);
+    gpu::image_barrier();
+  });
+}
+
 void GlobalCover::run_curl() {
+  const bool spline = parameters_.curl_mode == CurlMode::spline;
+  if (spline && !spline_coefficients_.id()) run_spline();
   timed("curl", [&] {
-    glsl::set_uniform(curl_program_, "u_curl", curl_params(parameters_));
-    curl_program_.set("u_noise_offset", potential_offset(parameters_));
+    if (spline) {
+      spline_coefficients_.bind_image(2, GL_READ_ONLY);
+    } else {
+      glsl::set_uniform(curl_program_, "u_curl", curl_params(parameters_));
+      curl_program_.set("u_noise_offset", potential_offset(parameters_));
+    }
     identity_field_.bind_image(0, GL_READ_ONLY);
     curl_field_.bind_image(1, GL_WRITE_ONLY);
     curl_program_.dispatch_covering(parameters_.size, parameters_.size, 6);
@@ -87,6 +125,10 @@ void GlobalCover::dispatch_warp(const gpu::Texture& starts, const gpu::Texture& 
     warp_program_.set("u_noise_offset", potential_offset(p));
   }
   curl_field_.bind_image(1, GL_READ_ONLY);
+  if (p.curl_mode == CurlMode::spline) {
+    if (!spline_coefficients_.id()) run_spline();
+    spline_coefficients_.bind_image(4, GL_READ_ONLY);
+  }
   // Long integrations run over several dispatches (cover::shader_loop_budget): each one
   // continues from the points of the last, alternating between `warped` and a scratch map.
   const int size = warped.width();

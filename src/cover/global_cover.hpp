@@ -32,7 +32,12 @@ class GlobalCover {
 
   // The passes one by one (tests run them separately).
   void run_identity();
+  // The curl cube map at the texel centres: the procedural curl, or in curl mode spline the
+  // spline's velocity, after the spline's grid (pass "spline", run_spline) where it is missing.
   void run_curl();
+  // Curl mode spline: the procedural curl on the grid of curl_size nodes per face edge and its
+  // prefiltered coefficients (pass "spline"); what the warp reads. Nothing in other modes.
+  void run_spline();
   void run_warp();
   void run_density();
   CoverageCalibration run_coverage();  // calibrates and remaps on the GPU (scalars read back)
@@ -47,6 +52,9 @@ class GlobalCover {
   const CoverParameters& parameters() const { return parameters_; }
   const gpu::Texture& identity_field() const { return identity_field_; }
   const gpu::Texture& curl_field() const { return curl_field_; }
+  // The spline's coefficients: a 2D array of 6 layers of (curl_size + 2 SPLINE_MARGIN)^2
+  // RGBA32F nodes (empty before run_spline and in other curl modes).
+  const gpu::Texture& curl_spline() const { return spline_coefficients_; }
   const gpu::Texture& warp_field() const { return warp_field_; }
   const gpu::Texture& density_field() const { return density_field_; }
   const gpu::Texture& cover_field() const { return cover_field_; }
@@ -66,11 +74,13 @@ class GlobalCover {
   CoverParameters parameters_;
   std::function<void(const std::string&)> on_pass_;
   gpu::ComputeProgram identity_program_{"cover/identity.comp"};
-  gpu::ComputeProgram curl_program_{"cover/curl.comp"};
+  gpu::ComputeProgram curl_program_;  // the procedural curl, or the spline's velocity
+  std::unique_ptr<gpu::ComputeProgram> spline_samples_program_, spline_prefilter_program_;
   gpu::ComputeProgram warp_program_;  // the integrator's and curl mode's variant
   gpu::ComputeProgram density_program_{"cover/cover_density.comp"};
   gpu::ComputeProgram remap_program_{"cover/cover_remap.comp"};
   gpu::Texture identity_field_, curl_field_, warp_field_, density_field_, cover_field_;
+  gpu::Texture spline_coefficients_;
   CoverageCalibration calibration_;
   std::optional<BandCalibration> bands_;
   std::unique_ptr<GpuCalibration> gpu_calibration_;  // made at the first calibration

@@ -23,7 +23,19 @@ const char* integrator_name(Integrator integrator) {
   return "?";
 }
 
-const char* curl_mode_name(CurlMode mode) { return mode == CurlMode::sampled ? "sampled" : "procedural"; }
+const char* curl_mode_name(CurlMode mode) {
+  switch (mode) {
+    case CurlMode::sampled: return "sampled";
+    case CurlMode::procedural: return "procedural";
+    case CurlMode::spline: return "spline";
+  }
+  return "?";
+}
+
+const std::vector<CurlMode>& all_curl_modes() {
+  static const std::vector<CurlMode> all{CurlMode::sampled, CurlMode::procedural, CurlMode::spline};
+  return all;
+}
 
 const std::vector<Integrator>& all_integrators() {
   static const std::vector<Integrator> all{Integrator::euler, Integrator::heun, Integrator::rk4,
@@ -38,8 +50,8 @@ std::optional<Integrator> parse_integrator(const std::string& name) {
 }
 
 std::optional<CurlMode> parse_curl_mode(const std::string& name) {
-  if (name == "sampled") return CurlMode::sampled;
-  if (name == "procedural") return CurlMode::procedural;
+  for (CurlMode m : all_curl_modes())
+    if (name == curl_mode_name(m)) return m;
   return std::nullopt;
 }
 
@@ -80,7 +92,8 @@ int steps_per_dispatch(Integrator integrator, CurlMode mode, int potential_octav
 
 std::vector<std::pair<std::string, std::string>> warp_defines(Integrator integrator, CurlMode mode) {
   return {{"WARP_INTEGRATOR", std::to_string(static_cast<int>(integrator))},
-          {"WARP_PROCEDURAL", mode == CurlMode::procedural ? "1" : "0"}};
+          {"WARP_PROCEDURAL", mode == CurlMode::procedural ? "1" : "0"},
+          {"WARP_SPLINE", mode == CurlMode::spline ? "1" : "0"}};
 }
 
 }  // namespace nephele::cover

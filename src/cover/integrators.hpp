@@ -10,15 +10,16 @@ namespace nephele::cover {
 
 // Values equal the INTEGRATOR_* numbers of warp_step.glsl.
 enum class Integrator { euler = 0, heun = 1, rk4 = 2, geodesic = 3, adaptive = 4 };
-// Where the warp takes the velocity: bilinearly from the curl cube map, or the procedural curl
-// evaluated at the exact point.
-enum class CurlMode { sampled, procedural };
+// Where the warp takes the velocity: bilinearly from the curl cube map, the procedural curl
+// evaluated at the exact point, or the cubic B-spline of the curl grid (curl_spline.glsl).
+enum class CurlMode { sampled, procedural, spline };
 
 const char* integrator_name(Integrator integrator);
 const char* curl_mode_name(CurlMode mode);
 std::optional<Integrator> parse_integrator(const std::string& name);
 std::optional<CurlMode> parse_curl_mode(const std::string& name);
 const std::vector<Integrator>& all_integrators();
+const std::vector<CurlMode>& all_curl_modes();
 
 // Order of convergence on a smooth flow (adaptive: that of the solution it advances with).
 int integrator_order(Integrator integrator);
@@ -43,7 +44,7 @@ constexpr int shader_loop_budget = 32768;
 // Loop iterations per step (adaptive: per attempted step) at most: the step loop itself and,
 // per procedural evaluation, the octave loops of both potentials with the outer loops of the
 // Worley cell search, 13 per octave and potential (measured on llvmpipe: about 50 for 3
-// octaves; the bound is 78). Sampled evaluations have no loops.
+// octaves; the bound is 78). Sampled and spline evaluations have no loops.
 int loop_iterations_per_step(Integrator integrator, CurlMode mode, int potential_octaves);
 // Steps (adaptive: attempts) per texel that one dispatch of the warp pass may take.
 int steps_per_dispatch(Integrator integrator, CurlMode mode, int potential_octaves);

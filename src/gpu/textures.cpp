@@ -46,6 +46,21 @@ Texture Texture::plane(int width, int height, GLenum internal_format) {
   return t;
 }
 
+Texture Texture::layered(int width, int height, int layers, GLenum internal_format) {
+  Texture t;
+  t.target_ = GL_TEXTURE_2D_ARRAY;
+  t.format_ = internal_format;
+  t.width_ = width;
+  t.height_ = height;
+  t.layers_ = layers;
+  glCreateTextures(GL_TEXTURE_2D_ARRAY, 1, &t.id_);
+  glTextureStorage3D(t.id_, 1, internal_format, width, height, layers);
+  if (glGetError() != GL_NO_ERROR)
+    throw std::runtime_error("could not allocate a " + std::to_string(width) + "x" + std::to_string(height) + "x" +
+                             std::to_string(layers) + " array texture");
+  return t;
+}
+
 Texture::~Texture() {
   if (id_) glDeleteTextures(1, &id_);
 }

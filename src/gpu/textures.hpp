@@ -12,6 +12,8 @@ class Texture {
   // A cube map of size x size texels per face (one mip level), e.g. GL_RGBA32F or GL_R32F.
   static Texture cube(int size, GLenum internal_format);
   static Texture plane(int width, int height, GLenum internal_format);
+  // A 2D array texture of `layers` width x height layers (one mip level).
+  static Texture layered(int width, int height, int layers, GLenum internal_format);
   ~Texture();
   Texture(Texture&& other) noexcept;
   Texture& operator=(Texture&& other) noexcept;

@@ -88,6 +88,7 @@ json::Value cover_sidecar(const cover::GlobalCover& cover, const gpu::ContextInf
   cover::visit_numeric_parameters(p, [&](const params::Parameter& parameter, const auto& value) {
     if (!parameter.used_by(params::cover_sidecar)) return;
     if (!adaptive && (&parameter == &params::cover::tolerance || &parameter == &params::cover::max_substeps)) return;
+    if (p.curl_mode != cover::CurlMode::spline && &parameter == &params::cover::curl_size) return;
     set_path(parameters, std::string(parameter.sidecar_path()), json_number(value));
     if (&parameter == &params::cover::coverage)
       parameters.set(std::string(params::cover::profile.key), p.profile.name);

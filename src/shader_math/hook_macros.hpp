@@ -5,6 +5,10 @@
 #define CUBE_SOURCE_ARG , source
 #define CUBE_FETCH(face, i, j) source.fetch(face, i, j)
 #define CUBE_SIZE source.size
+#define SPLINE_SOURCE_PARAM , IN(SplineSource) spline
+#define SPLINE_SOURCE_ARG , spline
+#define SPLINE_FETCH(face, i, j) spline.fetch(face, i, j)
+#define SPLINE_CELLS spline.cells
 #define MARCH_SOURCES_PARAM , IN(MarchSources) sources
 #define MARCH_SOURCES_ARG , sources
 #define NOISE_LOD(x, lod) sources.noise.sample_lod(x, lod)

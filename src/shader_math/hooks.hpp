@@ -21,6 +21,15 @@ struct CubeSource {
   }
 };
 
+// The curl spline's coefficient grid in host memory (curl_spline.glsl): vec4 per node, faces in GL
+// order, each face (cells + 2 SPLINE_MARGIN)^2 nodes, rows from t = 0, as the GPU's 2D array
+// texture reads back.
+struct SplineSource {
+  int cells = 0;
+  const vec4* texels = nullptr;
+  vec4 fetch(int face, int i, int j) const;  // defined after curl_spline.glsl (SPLINE_MARGIN)
+};
+
 // The renderer's noise volume in host memory (cloud_march.glsl's NOISE_LOD): RGBA per texel,
 // every mip level (level k of size >> k texels per side, x fastest, then y, then z), sampled as
 // GLSL's textureLod with GL_LINEAR_MIPMAP_LINEAR filtering and GL_REPEAT wrapping (OpenGL 4.5
@@ -70,10 +79,11 @@ struct MarchSources {
 };
 
 // The velocity sources of the warp's stepping rules: the sampled cube map, the procedural curl,
-// or any callable vec3(vec3) (the analytic flows of the tests). Declared before warp_step.glsl
+// the curl spline, or any callable vec3(vec3) (the analytic flows of the tests). Declared before warp_step.glsl
 // so that its templates find them for callables, whose namespace ADL would not search.
 vec3 warp_velocity(vec3 w, IN(CubeSource) source);
 vec3 warp_velocity(vec3 w, IN(CurlParams) curl);
+vec3 warp_velocity(vec3 w, IN(SplineSource) spline);
 template <class F>
 vec3 warp_velocity(vec3 w, const F& velocity) { return velocity(w); }
 

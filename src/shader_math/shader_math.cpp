@@ -11,6 +11,7 @@ namespace nephele::glsl {
 #include "lib/cube_faces.glsl"
 #include "lib/cube_sampling.glsl"
 #include "lib/curl_flow.glsl"
+#include "lib/curl_spline.glsl"
 #include "lib/equirect_mapping.glsl"
 #include "lib/hash.glsl"
 #include "lib/implicit_field.glsl"
@@ -32,4 +33,9 @@ namespace nephele::glsl {
 
 vec3 warp_velocity(vec3 w, IN(CubeSource) source) { return vec3(sample_cube_bilinear(w, source)); }
 vec3 warp_velocity(vec3 w, IN(CurlParams) curl) { return curl_velocity(w, curl); }
+vec3 warp_velocity(vec3 w, IN(SplineSource) spline) { return spline_velocity(w, spline); }
+vec4 SplineSource::fetch(int face, int i, int j) const {
+  const int row = cells + 2 * SPLINE_MARGIN;
+  return texels[(static_cast<size_t>(face) * row + j) * row + i];
+}
 }  // namespace nephele::glsl

@@ -15,6 +15,10 @@ namespace nephele::glsl {
 #undef CUBE_SOURCE_ARG
 #undef CUBE_FETCH
 #undef CUBE_SIZE
+#undef SPLINE_SOURCE_PARAM
+#undef SPLINE_SOURCE_ARG
+#undef SPLINE_FETCH
+#undef SPLINE_CELLS
 #undef MARCH_SOURCES_PARAM
 #undef MARCH_SOURCES_ARG
 #undef NOISE_LOD

@@ -85,8 +85,14 @@ void LogLogPanel::draw_axes(std::ostream& s, const std::string& x_label, const s
 
 void polyline(std::ostream& s, const std::vector<std::pair<double, double>>& points, const std::string& colour,
               bool dashed) {
-  s << "<polyline fill='none' stroke='" << colour << "' stroke-width='1.5'"
-    << (dashed ? " stroke-dasharray='6,3'" : "") << " points='";
+  polyline(s, points, colour, dashed ? "6,3" : "");
+}
+
+void polyline(std::ostream& s, const std::vector<std::pair<double, double>>& points, const std::string& colour,
+              const char* dasharray) {
+  s << "<polyline fill='none' stroke='" << colour << "' stroke-width='1.5'";
+  if (*dasharray) s << " stroke-dasharray='" << dasharray << "'";
+  s << " points='";
   for (const auto& [x, y] : points) s << x << "," << y << " ";
   s << "'/>\n";
 }
@@ -109,9 +115,15 @@ void ring(std::ostream& s, double x, double y) {
 
 void legend_line(std::ostream& s, double x, double y, const std::string& colour, const std::string& label,
                  bool dashed) {
+  legend_line(s, x, y, colour, label, dashed ? "6,3" : "");
+}
+
+void legend_line(std::ostream& s, double x, double y, const std::string& colour, const std::string& label,
+                 const char* dasharray) {
   s << "<line x1='" << x << "' y1='" << y << "' x2='" << x + 20 << "' y2='" << y << "' stroke='" << colour
-    << "' stroke-width='2'" << (dashed ? " stroke-dasharray='6,3'" : "") << "/><text x='" << x + 24 << "' y='"
-    << y + 4 << "'>" << escape(label) << "</text>\n";
+    << "' stroke-width='2'";
+  if (*dasharray) s << " stroke-dasharray='" << dasharray << "'";
+  s << "/><text x='" << x + 24 << "' y='" << y + 4 << "'>" << escape(label) << "</text>\n";
 }
 
 }  // namespace nephele::studies

@@ -39,6 +39,9 @@ class LogLogPanel {
 // A polyline through points given in document coordinates; `dashed` draws it 6,3 dashed.
 void polyline(std::ostream& s, const std::vector<std::pair<double, double>>& points, const std::string& colour,
               bool dashed = false);
+// The same with an SVG stroke-dasharray ("" solid, "6,3" as `dashed`, "2,2" dotted).
+void polyline(std::ostream& s, const std::vector<std::pair<double, double>>& points, const std::string& colour,
+              const char* dasharray);
 // A filled marker: 0 circle, 1 square, 2 triangle (taken modulo 3).
 void marker(std::ostream& s, int shape, double x, double y, const std::string& colour);
 // The black ring that marks a default configuration.
@@ -46,5 +49,7 @@ void ring(std::ostream& s, double x, double y);
 // A short legend line with its label.
 void legend_line(std::ostream& s, double x, double y, const std::string& colour, const std::string& label,
                  bool dashed = false);
+void legend_line(std::ostream& s, double x, double y, const std::string& colour, const std::string& label,
+                 const char* dasharray);
 
 }  // namespace nephele::studies

@@ -79,7 +79,7 @@ SweepOptions SweepOptions::full(const cover::CoverParameters& base) {
   o.base = base;
   o.sizes = {128, 256, 512};
   o.integrators = all_integrators();
-  o.curl_modes = {CurlMode::sampled, CurlMode::procedural};
+  o.curl_modes = {CurlMode::sampled, CurlMode::procedural, CurlMode::spline};
   o.steps = {1, 2, 4, 8, 16, 32, 50, 100, 200};
   o.tolerances = {1e-2f, 1e-3f, 1e-4f, 1e-5f, 1e-6f};
   o.sample_grid = 20;
@@ -93,7 +93,7 @@ SweepOptions SweepOptions::quick(const cover::CoverParameters& base) {
   o.base = base;
   o.sizes = {32};
   o.integrators = all_integrators();
-  o.curl_modes = {CurlMode::sampled, CurlMode::procedural};
+  o.curl_modes = {CurlMode::sampled, CurlMode::procedural, CurlMode::spline};
   o.steps = {1, 2, 4, 8, 50};  // 1 and 2 keep RK4 above the float floor for its order
   o.tolerances = {1e-3f};
   o.sample_grid = 4;
@@ -215,11 +215,15 @@ SweepResult run_sweep(const SweepOptions& o, const std::function<void(const std:
           // Timed repeats of both passes (the first curl pass and the sample warp above were the
           // warm-up: llvmpipe compiles a shader at its first dispatch). Repeats stop early once
           // they took a third of the budget: long runs vary little.
+          // Curl mode spline times its grid (pass "spline") in place of the curl pass: that is
+          // what its warp needs, the curl cube map only what the diagnosis reads.
+          const bool spline = mode == CurlMode::spline;
           std::vector<double> curl_wall, warp_wall, curl_cpu, warp_cpu;
           double spent_ms = 0.0;
           for (int r = 0; r < std::max(1, o.repeat) && (r == 0 || spent_ms < o.budget_ms / 3); ++r) {
             const double c0 = process_cpu_ms();
-            cover.run_curl();
+            if (spline) cover.run_spline();
+            else cover.run_curl();
             const double c1 = process_cpu_ms();
             cover.run_warp();
             const double c2 = process_cpu_ms();
@@ -244,9 +248,11 @@ SweepResult run_sweep(const SweepOptions& o, const std::function<void(const std:
           auto fastest = [](const std::vector<double>& v) { return *std::min_element(v.begin(), v.end()); };
           row.curl_ms = fastest(cpu_device ? curl_cpu : curl_wall);
           row.warp_ms = fastest(cpu_device ? warp_cpu : warp_wall);
-          row.wall_ms = fastest(warp_wall) + (mode == CurlMode::sampled ? fastest(curl_wall) : 0.0);
-          // The sampled variant needs the curl cube map; the procedural one only the warp pass.
-          row.time_ms = row.warp_ms + (mode == CurlMode::sampled ? row.curl_ms : 0.0);
+          // The sampled variant needs the curl cube map and the spline its grid (curl_ms: the
+          // grid's pass); the procedural one only the warp pass.
+          const bool needs_curl = mode != CurlMode::procedural;
+          row.wall_ms = fastest(warp_wall) + (needs_curl ? fastest(curl_wall) : 0.0);
+          row.time_ms = row.warp_ms + (needs_curl ? row.curl_ms : 0.0);
           evaluation_ms[mode] = std::min(evaluation_ms.count(mode) ? evaluation_ms[mode] : 1e300,
                                          row.warp_ms / std::max(1.0, evaluations));
 
@@ -398,6 +404,15 @@ const char* colour(Integrator integrator) {
   return "#000000";
 }
 
+// The diagram's line style per curl mode: sampled solid, procedural dashed, spline dotted.
+const char* curl_mode_dashes(CurlMode mode) {
+  switch (mode) {
+    case CurlMode::procedural: return "6,3";
+    case CurlMode::spline: return "2,2";
+    default: return "";
+  }
+}
+
 // One log-log panel of the diagram at (x0, y0).
 void svg_panel(std::ostringstream& s, const std::vector<SweepRow>& rows, double x0, double y0, const std::string& label,
                double SweepRow::*error, const std::vector<int>& sizes, const std::string& time_label) {
@@ -410,7 +425,7 @@ void svg_panel(std::ostringstream& s, const std::vector<SweepRow>& rows, double 
   panel.draw_axes(s, time_label, label);
   // One polyline per integrator, curl mode and size, in order of time.
   for (Integrator integrator : all_integrators())
-    for (CurlMode mode : {CurlMode::sampled, CurlMode::procedural})
+    for (CurlMode mode : cover::all_curl_modes())
       for (size_t si = 0; si < sizes.size(); ++si) {
         std::vector<const SweepRow*> series;
         for (const auto& r : rows)
@@ -419,7 +434,7 @@ void svg_panel(std::ostringstream& s, const std::vector<SweepRow>& rows, double 
         std::sort(series.begin(), series.end(), [](auto a, auto b) { return a->time_ms < b->time_ms; });
         std::vector<std::pair<double, double>> points;
         for (const SweepRow* r : series) points.emplace_back(panel.x(r->time_ms), panel.y(r->*error));
-        studies::polyline(s, points, colour(integrator), mode == CurlMode::procedural);
+        studies::polyline(s, points, colour(integrator), curl_mode_dashes(mode));
         for (size_t k = 0; k < series.size(); ++k) {
           studies::marker(s, static_cast<int>(si), points[k].first, points[k].second, colour(integrator));
           const SweepRow* r = series[k];
@@ -449,7 +464,9 @@ std::string work_precision_svg(const std::vector<SweepRow>& rows, const std::str
   }
   studies::legend_line(s, x, 455, "#444", "sampled");
   x += 85;
-  studies::legend_line(s, x, 455, "#444", "procedural", true);
+  studies::legend_line(s, x, 455, "#444", "procedural", curl_mode_dashes(CurlMode::procedural));
+  x += 95;
+  studies::legend_line(s, x, 455, "#444", "spline", curl_mode_dashes(CurlMode::spline));
   x = 80;  // second row: sizes and the default
   const char* markers[] = {"circle", "square", "triangle"};
   for (size_t si = 0; si < sizes.size(); ++si) {
@@ -483,7 +500,7 @@ std::string summary_markdown(const SweepResult& result, const SweepOptions& opti
                     : "");
   s << line;
   s << "Times are the fastest of up to " << options.repeat
-    << " runs of the curl pass (sampled curl only) plus the warp pass, "
+    << " runs of the curl pass (sampled curl) or the spline's grid (spline curl) plus the warp pass, "
     << (result.cpu_device ? "in CPU time of all threads (the device is the CPU: llvmpipe; other processes barely "
                             "inflate it; stability.csv has the wall-clock times too)"
                           : "in wall-clock time")

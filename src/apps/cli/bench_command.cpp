@@ -24,17 +24,24 @@ int bench_cover(const std::vector<std::string>& arguments) {
   add_cover_options(options, parameters, params::bench_cover);
   ProfileOption profile_option;
   profile_option.add(options);
+  std::string curl_mode(params::cover::curl_mode.default_text);
+  options.bind(params::cover::curl_mode, &curl_mode);
   if (!options.parse(arguments)) {
     std::cout << options.help();
     return exit_ok;
   }
   profile_option.apply(parameters);
+  const auto mode = cover::parse_curl_mode(curl_mode);
+  if (!mode) throw UsageError(params::cover::curl_mode.option(), curl_mode, params::cover::curl_mode.range_text());
+  parameters.curl_mode = *mode;
   validate_cover_parameters(parameters);
   const std::vector<int> sizes = parse_number_list<int>("--sizes", sizes_text, 1, 16384, true);
   gpu::EglContext context;
   for (int s : sizes) cover::check_cover_fits(context, s);
   std::printf("device: %s (%s)\n", context.info().renderer.c_str(), context.info().version.c_str());
-  std::printf("K = %d steps, potential %d octaves, density %d octaves; median of %d runs\n", parameters.iterations,
+  std::printf("K = %d steps, %s curl%s, potential %d octaves, density %d octaves; median of %d runs\n",
+              parameters.iterations, cover::curl_mode_name(parameters.curl_mode),
+              parameters.curl_mode == cover::CurlMode::spline ? (" of " + std::to_string(parameters.curl_size) + " nodes per face edge").c_str() : "",
               parameters.potential.octaves, parameters.density.octaves, repeat);
   std::printf("device ms: GPU time of each pass by GL_TIME_ELAPSED queries (equirect: its dispatches), or\n"
               "the wall clock between glFinish calls where the driver reports none (llvmpipe);\n"

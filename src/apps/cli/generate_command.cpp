@@ -84,8 +84,8 @@ int run_generate(const std::vector<std::string>& arguments) {
   // Opened before the passes run, so that an interrupt at any time removes its temporary directory.
   io::OutputSet outputs(directory, io::OutputSet::Scope::directory);
   cover::GlobalCover cover(parameters);
-  // identity, curl, warp, density, calibrate, coverage, diagnose, then the files.
-  constexpr int stages = 8;
+  // identity, (spline,) curl, warp, density, calibrate, coverage, diagnose, then the files.
+  const int stages = parameters.curl_mode == cover::CurlMode::spline ? 9 : 8;
   core::Progress progress("generate", stages, core::Progress::for_stderr(quiet));
   int stages_started = 0;
   cover.on_pass([&](const std::string& pass) { progress.update(stages_started++, pass); });

@@ -1,0 +1,96 @@
+// The warp's velocity as a cubic B-spline of the curl sampled on a grid per cube face
+// (`curl_mode spline`; docs/numerics.md, "The spline velocity"). The grid of face f has `cells`
+// nodes per face edge at the texel centres of a cells^2 face, continued past the face's edges
+// by SPLINE_MARGIN nodes on each side: the gnomonic face coordinates (sc, tc) simply extend
+// beyond [-1, 1], and normalize(cube_face_point(f, sc, tc)) there is an ordinary direction,
+// so the margin holds more curl evaluations, not copies of neighbouring faces. A point of the
+// face then has all 4 x 4 nodes of its spline on its own face's grid, and the spline is C2
+// everywhere inside each face. Across a face edge the two faces' splines differ only by their
+// approximation errors.
+//
+// The spline is the quasi-interpolant: its coefficients are the samples prefiltered by
+// (-1, 8, -1)/6 along each axis (prefilter_cubic_bspline), which makes it reproduce cubic
+// polynomials, so it approximates the field to O(h^4) instead of the O(h^2) of the plain
+// B-spline with the samples as coefficients. The prefilter reads one more sample beyond each
+// node, so the samples have a margin of SPLINE_MARGIN + 1.
+//
+// The including file defines:
+//   SPLINE_SOURCE_PARAM  extra trailing parameter(s) naming the coefficient grid (empty in GLSL)
+//   SPLINE_SOURCE_ARG    the matching argument(s) (empty in GLSL)
+//   SPLINE_FETCH(face, i, j)  coefficient (i, j) of `face` as vec4, 0 <= i, j < cells + 2 SPLINE_MARGIN
+//                        (index i is node i - SPLINE_MARGIN)
+//   SPLINE_CELLS         nodes per face edge inside the face (the `curl_size` parameter)
+#ifndef NEPHELE_CURL_SPLINE_GLSL
+#define NEPHELE_CURL_SPLINE_GLSL
+#include "prelude.glsl"
+#include "cube_faces.glsl"
+
+// Nodes beyond each face edge: a cubic B-spline reads the nodes floor(x) - 1 .. floor(x) + 2,
+// and x reaches -0.5 and cells - 0.5 on the face's edges.
+const int SPLINE_MARGIN = 2;
+
+// The direction of the node at array index (i, j) of `face`'s grid, whose arrays begin `margin`
+// nodes before the face's edge: the texel centre (i - margin, j - margin) of a cells^2 face,
+// continued beyond the edges along the face's plane (shaders/cover/curl_spline.comp samples the
+// curl there with margin SPLINE_MARGIN + 1).
+vec3 curl_spline_node(int face, int i, int j, int margin, int cells) {
+  return texel_direction(face, i - margin, j - margin, cells);
+}
+
+// The four uniform cubic B-spline weights of the nodes floor(x) - 1 .. floor(x) + 2 at the
+// fraction t = x - floor(x) (C. de Boor, "A Practical Guide to Splines", 2001, chapter IX).
+// They are positive and sum to 1.
+vec4 cubic_bspline_weights(float t) {
+  float s = 1.0f - t;
+  float t2 = t * t;
+  float t3 = t2 * t;
+  return vec4(s * s * s, 4.0f - 6.0f * t2 + 3.0f * t3, 1.0f + 3.0f * (t + t2 - t3), t3) * (1.0f / 6.0f);
+}
+
+// The quasi-interpolating prefilter of the cubic B-spline along one axis: the coefficient of a
+// node from the samples at it and its two neighbours, c = f - (f'' h^2)/6 with f'' by the
+// central difference. A B-spline with coefficients c_i = p(i) reproduces p + p''/6 for cubic p
+// (its weights have variance 1/3 and no third moment), so this c reproduces cubics exactly.
+vec4 prefilter_cubic_bspline(vec4 previous, vec4 centre, vec4 next) {
+  return (8.0f * centre - previous - next) * (1.0f / 6.0f);
+}
+
+// One row of the 4 x 4 coefficients, weighted along x: coefficients (i .. i + 3, j) of `face`.
+vec4 curl_spline_row(int face, int i, int j, vec4 wx SPLINE_SOURCE_PARAM) {
+  return wx.x * SPLINE_FETCH(face, i, j) + wx.y * SPLINE_FETCH(face, i + 1, j) + wx.z * SPLINE_FETCH(face, i + 2, j) +
+         wx.w * SPLINE_FETCH(face, i + 3, j);
+}
+
+// The spline of the curl grid at the unit direction w: a sum of 16 coefficients of w's face,
+// written without a loop (llvmpipe counts every loop iteration against a per-invocation limit;
+// docs/numerics.md, "llvmpipe's loop limit").
+vec3 sample_curl_spline(vec3 w SPLINE_SOURCE_PARAM) {
+  int cells = SPLINE_CELLS;
+  int face = cube_face_of(w);
+  vec2 st = 0.5f * cube_face_coords(face, w) + 0.5f;
+  float x = st.x * float(cells) - 0.5f;
+  float y = st.y * float(cells) - 0.5f;
+  // A driver's division may put |sc| an ulp above 1; the nodes stay within the margin.
+  float x0 = clamp(floor(x), -1.0f, float(cells - 1));
+  float y0 = clamp(floor(y), -1.0f, float(cells - 1));
+  vec4 wx = cubic_bspline_weights(x - x0);
+  vec4 wy = cubic_bspline_weights(y - y0);
+  int i = int(x0) - 1 + SPLINE_MARGIN;
+  int j = int(y0) - 1 + SPLINE_MARGIN;
+  vec4 sum = wy.x * curl_spline_row(face, i, j, wx SPLINE_SOURCE_ARG) +
+             wy.y * curl_spline_row(face, i, j + 1, wx SPLINE_SOURCE_ARG) +
+             wy.z * curl_spline_row(face, i, j + 2, wx SPLINE_SOURCE_ARG) +
+             wy.w * curl_spline_row(face, i, j + 3, wx SPLINE_SOURCE_ARG);
+  return vec3(sum);
+}
+
+// The warp's velocity: the spline's value projected onto the tangent plane at w. The spline
+// approximates the curl, which is tangent at w, so its normal part is no larger than its error
+// (O(h^4)); the projection removes that part, as the procedural curl has none, and cannot
+// increase the error (it is an orthogonal projection and the exact value is in its range).
+vec3 spline_velocity(vec3 w SPLINE_SOURCE_PARAM) {
+  vec3 v = sample_curl_spline(w SPLINE_SOURCE_ARG);
+  return v - dot(v, w) * w;
+}
+
+#endif
