@@ -105,7 +105,7 @@ TEST_CASE("nephele view --help lists the keys and the table's options; bad optio
   CHECK_THAT(bad.output, Catch::Contains("--coverage"));
 }
 
-TEST_CASE("nephele view --help lists the modeller's keys and options; a bad --model exits 2 before a window opens",
+TEST_CASE("nephele view --help lists the modeller's keys and options, and a bad --model exits 2 before a window opens",
           "[viewer][cli][modeller]") {
   const auto help = test::run("view --help");
   CHECK(help.exit_code == 0);

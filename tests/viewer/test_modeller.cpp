@@ -202,7 +202,7 @@ TEST_CASE("modeller: a drag moves the primitive in the plane facing the camera b
   CHECK(opacity_at(v, start) < 0.1f);
 }
 
-TEST_CASE("modeller: Shift + scroll resizes the selected primitive by 1.1 per notch; a drag on the sky orbits",
+TEST_CASE("modeller: Shift + scroll resizes the selected primitive by 1.1 per notch, and a drag on the sky orbits",
           "[window][modeller]") {
   Viewer v(modeller_view(three_primitives()));
   v.set_panels_visible(false);
@@ -243,7 +243,7 @@ TEST_CASE("modeller: Shift + scroll resizes the selected primitive by 1.1 per no
   for (std::size_t i = 0; i < edited.primitives.size(); ++i) CHECK(v.state().model.primitives[i] == edited.primitives[i]);
 }
 
-TEST_CASE("modeller: Ctrl+S saves the edited model whole; the file reads back to it exactly, and nephele model "
+TEST_CASE("modeller: Ctrl+S saves the edited model whole, the file reads back to it exactly, and nephele model "
           "makes the same volume and frame from it",
           "[window][modeller]") {
   test::TemporaryDirectory out(true);
@@ -311,7 +311,7 @@ TEST_CASE("modeller: Ctrl+S saves the edited model whole; the file reads back to
   CHECK(largest_difference(v.shown_radiance(), render::render_preview(*v.model_volume(), settings)) == 0);
 }
 
-TEST_CASE("nephele view --model FILE --frames N opens the modeller on a model file; bad values exit 2",
+TEST_CASE("nephele view --model FILE --frames N opens the modeller on a model file, and bad values exit 2",
           "[window][modeller]") {
   test::TemporaryDirectory out(true);
   const auto file = out.path / "m.cloud.json";
