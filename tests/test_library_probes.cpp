@@ -447,6 +447,9 @@ TEST_CASE("model_march.glsl on the GPU agrees with the CPU", "[probe][model]") {
     if (f == 1) cases.push_back({arguments(1, vec4(0.0f), inside), std::max(extinction, depth)});
     if (f == 2) cases.push_back({arguments(2, vec4(r(0.0f, 1.0f), 0, 0, 0), origin, towards), march});
     if (f == 3) cases.push_back({arguments(3, vec4(float(k % 16), float(k % 12), 0, 0)), march});
+    // A cursor's ray (any position in the 16 x 12 image): a few products and sums of values
+    // below 2, then a normalisation.
+    cases.push_back({arguments(4, vec4(r(0.0f, 16.0f), r(0.0f, 12.0f), 0, 0)), kArithmetic});
   }
   compare("model_march", cpu, cases);
 }

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <set>
 
+#include "apps/viewer/modeller.hpp"
 #include "apps/viewer/panels.hpp"
 #include "apps/viewer/view_state.hpp"
 #include "apps/viewer/viewer.hpp"
@@ -102,6 +103,79 @@ TEST_CASE("nephele view --help lists the keys and the table's options; bad optio
   const auto bad = test::run_with_environment("env -u DISPLAY", "view --coverage 2");
   CHECK(bad.exit_code == core::exit_bad_input);
   CHECK_THAT(bad.output, Catch::Contains("--coverage"));
+}
+
+TEST_CASE("nephele view --help lists the modeller's keys and options, and a bad --model exits 2 before a window opens",
+          "[viewer][cli][modeller]") {
+  const auto help = test::run("view --help");
+  CHECK(help.exit_code == 0);
+  CHECK_THAT(help.output, Catch::Contains("--model VALUE") && Catch::Contains("--model-size VALUE") &&
+                              Catch::Contains("Shift + scroll") && Catch::Contains("Ctrl+S"));
+  const auto missing = test::run_with_environment("env -u DISPLAY", "view --model /nonexistent/m.cloud.json");
+  CHECK(missing.exit_code == core::exit_bad_input);
+  CHECK_THAT(missing.output, Catch::Contains("/nonexistent/m.cloud.json"));
+  const auto both = test::run_with_environment("env -u DISPLAY", "view --model fair-weather --scene " + std::string(NEPHELE_SOURCE_DIR) + "/scenes/bern-gurten.json");
+  CHECK(both.exit_code == core::exit_bad_input);
+  CHECK_THAT(both.output, Catch::Contains("--model"));
+  const auto alone = test::run_with_environment("env -u DISPLAY", "view --model-size 64");
+  CHECK(alone.exit_code == core::exit_bad_input);
+  CHECK_THAT(alone.output, Catch::Contains("--model-size"));
+}
+
+TEST_CASE("modeller picking: a ray enters spheres and capsules where the geometry says, and the nearest is picked",
+          "[viewer][modeller]") {
+  using viewer::entry_distance;
+  // Inputs are floats (relative rounding 6e-8), the geometry double: 1e-7 on distances near 1.
+  constexpr double kFloatInputs = 1e-7;
+  const viewer::Ray along_x{glsl::vec3(0.0f), glsl::vec3(1, 0, 0)};
+  model::Primitive sphere;
+  sphere.from = sphere.to = glsl::vec3(1, 0, 0);
+  sphere.radius = 0.25f;
+  CHECK(entry_distance(sphere, along_x) == Approx(0.75).epsilon(0).margin(kFloatInputs));
+  CHECK(entry_distance(sphere, {glsl::vec3(1.1f, 0, 0), glsl::vec3(1, 0, 0)}) == 0);  // from inside
+  sphere.from = glsl::vec3(1, 0.3f, 0);
+  CHECK(entry_distance(sphere, along_x) < 0);  // passes 0.3 from the centre
+  sphere.from = glsl::vec3(-1, 0, 0);
+  CHECK(entry_distance(sphere, along_x) < 0);  // behind
+  // A capsule across the ray (y from -0.5 to 0.5 at x = 1): its side at 1 - R; past an end, the
+  // end's sphere at 1 - sqrt(R^2 - 0.05^2); beyond the end's reach, nothing.
+  model::Primitive capsule;
+  capsule.segment = true;
+  capsule.from = glsl::vec3(1, -0.5f, 0);
+  capsule.to = glsl::vec3(1, 0.5f, 0);
+  capsule.radius = 0.1f;
+  CHECK(entry_distance(capsule, along_x) == Approx(0.9).epsilon(0).margin(kFloatInputs));
+  CHECK(entry_distance(capsule, {glsl::vec3(0, 0.55f, 0), glsl::vec3(1, 0, 0)}) ==
+        Approx(1 - std::sqrt(0.01 - 0.0025)).epsilon(0).margin(kFloatInputs));
+  CHECK(entry_distance(capsule, {glsl::vec3(0, 0.65f, 0), glsl::vec3(1, 0, 0)}) < 0);
+  // At 45 degrees in the plane across the axis: the axis at sqrt(2), the side R before it.
+  capsule.from = glsl::vec3(1, -0.5f, 1);
+  capsule.to = glsl::vec3(1, 0.5f, 1);
+  const viewer::Ray diagonal{glsl::vec3(0.0f), glm::normalize(glsl::vec3(1, 0, 1))};
+  CHECK(entry_distance(capsule, diagonal) == Approx(std::sqrt(2.0) - 0.1).epsilon(0).margin(kFloatInputs));
+  // Picking: the nearer of two primitives on the ray, whatever their order; none off the ray.
+  model::CloudModel m;
+  model::Primitive near_one, far_one;
+  near_one.from = glsl::vec3(0.5f, 0, 0);
+  far_one.from = glsl::vec3(1.5f, 0, 0);
+  m.primitives = {far_one, near_one};
+  CHECK(viewer::pick_primitive(m, along_x) == 1);
+  CHECK(viewer::pick_primitive(m, {glsl::vec3(0, 1, 0), glsl::vec3(1, 0, 0)}) == -1);
+}
+
+TEST_CASE("modeller picking: project() puts a point where cursor_ray() looks back through it", "[viewer][modeller]") {
+  viewer::ViewState state = viewer::modeller_state(model::example("fair-weather"));
+  state.camera.heading_deg = 30;
+  state.camera.pitch_deg = 20;
+  for (const glsl::vec3 point : {glsl::vec3(0.5f, 0.5f, 0.45f), glsl::vec3(0.1f, 0.8f, 0.9f), glsl::vec3(0.9f, 0.2f, 0.1f)}) {
+    const glsl::vec3 at = viewer::project(state, point, 160, 90);
+    REQUIRE(at.z > 0);
+    const viewer::Ray ray = viewer::cursor_ray(state, at.x, at.y, 160, 90);
+    // The point's distance from the ray: float pixel positions and directions (6e-8 relative)
+    // over distances below 3.
+    const glm::dvec3 r = glm::dvec3(point) - glm::dvec3(ray.origin), d = glm::normalize(glm::dvec3(ray.direction));
+    CHECK(glm::length(r - glm::dot(r, d) * d) == Approx(0).epsilon(0).margin(1e-6));
+  }
 }
 
 

@@ -86,12 +86,19 @@ vec4 model_march(vec3 d, float jitter, IN(ModelView) v MODEL_SOURCE_PARAM) {
   return vec4(radiance, transmittance);
 }
 
-// The pixel's radiance (RGB) over the background and the cloud's opacity (A).
-vec4 model_pixel(ivec2 pixel, ivec2 size, IN(ModelView) v MODEL_SOURCE_PARAM) {
-  vec2 uv = (vec2(pixel) + 0.5f) / vec2(size);
+// The unit view direction through `position`, in pixels of an image of `size` from its top-left
+// corner (a pixel's centre is its index + 0.5); tan_half_fov spans the width. The preview's
+// pixels and nephele view's picking (a cursor position) share it.
+vec3 model_ray(vec2 position, ivec2 size, IN(ModelView) v) {
+  vec2 uv = position / vec2(size);
   float aspect = float(size.y) / float(size.x);
   vec2 xy = vec2(2.0f * uv.x - 1.0f, (1.0f - 2.0f * uv.y) * aspect) * v.tan_half_fov;
-  vec3 d = normalize(v.forward + xy.x * v.right + xy.y * v.up);
+  return normalize(v.forward + xy.x * v.right + xy.y * v.up);
+}
+
+// The pixel's radiance (RGB) over the background and the cloud's opacity (A).
+vec4 model_pixel(ivec2 pixel, ivec2 size, IN(ModelView) v MODEL_SOURCE_PARAM) {
+  vec3 d = model_ray(vec2(pixel) + 0.5f, size, v);
   float jitter = hash_to_unit3(pcg3d(uvec3(uvec2(pixel), 7u))).x;
   vec4 cloud = model_march(d, jitter, v MODEL_SOURCE_ARG);
   return vec4(vec3(cloud) + cloud.w * v.background, 1.0f - cloud.w);

@@ -11,9 +11,10 @@ layout(binding = 1) uniform sampler3D model_density;
 #include "../lib/model_march.glsl"
 
 uniform ModelView u_view;
+uniform int u_first_row;  // the band of rows this dispatch covers starts here (nephele view)
 
 void main() {
-  ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
+  ivec2 pixel = ivec2(gl_GlobalInvocationID.xy) + ivec2(0, u_first_row);
   ivec2 size = imageSize(radiance_image);
   if (pixel.x >= size.x || pixel.y >= size.y) return;
   imageStore(radiance_image, pixel, model_pixel(pixel, size, u_view));

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <filesystem>
 #include <sstream>
+#include <type_traits>
 
 #include "core/input_file.hpp"
 #include "core/json.hpp"
@@ -45,14 +46,13 @@ class Reader {
     if (!v.is_object()) k_.fail(path, "must be an object");
     for (const auto& [key, w] : v.as_object()) {
       const std::string name = path + "." + key;
-      if (key == "octaves") t.octaves = int(number(cm::octaves, w, name));
-      else if (key == "frequency") t.frequency = float(number(cm::frequency, w, name));
-      else if (key == "amplitude") t.amplitude = float(number(cm::amplitude, w, name));
-      else if (key == "gain") t.gain = float(number(cm::gain, w, name));
-      else if (key == "lacunarity") t.lacunarity = float(number(cm::lacunarity, w, name));
-      else if (key == "fraction") t.fraction = float(number(cm::fraction, w, name));
-      else if (key == "seed") t.seed = std::uint32_t(number(cm::seed, w, name));
-      else k_.fail(name, "unknown key (allowed: octaves, frequency, amplitude, gain, lacunarity, fraction, seed)");
+      bool known = false;
+      visit_turbulence(t, [&](const params::Parameter& p, auto& field) {
+        if (p.key != key) return;
+        field = static_cast<std::decay_t<decltype(field)>>(number(p, w, name));
+        known = true;
+      });
+      if (!known) k_.fail(name, "unknown key (allowed: octaves, frequency, amplitude, gain, lacunarity, fraction, seed)");
     }
     return t;
   }
@@ -86,12 +86,18 @@ class Reader {
           k_.fail(name, "must be an array of 2 to 64 points [x, y, z]");
         for (size_t i = 0; i < w.as_array().size(); ++i)
           points.push_back(point(w.as_array()[i], name + "[" + std::to_string(i) + "]"));
-      } else if (key == "radius") p.radius = float(number(cm::radius, w, name));
-      else if (key == "influence") p.influence = float(number(cm::influence, w, name));
-      else if (key == "weight") p.weight = float(number(cm::weight, w, name));
-      else if (key == "noise") p.noise = turbulence(w, name, noise);
-      else
-        k_.fail(name, "unknown key (allowed for a " + kind + ": type, " + skeleton + ", radius, influence, weight, noise)");
+      } else if (key == "noise") {
+        p.noise = turbulence(w, name, noise);
+      } else {
+        bool known = false;
+        visit_primitive(p, [&](const params::Parameter& parameter, auto& field) {
+          if (parameter.key != key) return;
+          field = static_cast<std::decay_t<decltype(field)>>(number(parameter, w, name));
+          known = true;
+        });
+        if (!known)
+          k_.fail(name, "unknown key (allowed for a " + kind + ": type, " + skeleton + ", radius, influence, weight, noise)");
+      }
     }
     if (polyline) {
       if (points.empty()) k_.fail(path + ".points", "missing");
@@ -117,13 +123,7 @@ class Reader {
 
 json::Value noise_json(const Turbulence& t) {
   json::Value v(json::Value::Object{});
-  v.set("octaves", t.octaves);
-  v.set("frequency", t.frequency);
-  v.set("amplitude", t.amplitude);
-  v.set("gain", t.gain);
-  v.set("lacunarity", t.lacunarity);
-  v.set("fraction", t.fraction);
-  v.set("seed", static_cast<unsigned>(t.seed));
+  visit_turbulence(t, [&](const params::Parameter& p, auto value) { v.set(std::string(p.key), value); });
   return v;
 }
 
@@ -190,9 +190,7 @@ std::string write_cloud_model(const CloudModel& m) {
     v.set("type", p.segment ? "segment" : "point");
     v.set(p.segment ? "from" : "position", point_json(p.from));
     if (p.segment) v.set("to", point_json(p.to));
-    v.set("radius", p.radius);
-    v.set("influence", p.influence);
-    v.set("weight", p.weight);
+    visit_primitive(p, [&](const params::Parameter& parameter, auto value) { v.set(std::string(parameter.key), value); });
     v.set("noise", noise_json(p.noise));
     list.push_back(std::move(v));
   }

@@ -22,13 +22,9 @@ void check(const params::Parameter& p, double value, const std::string& field) {
 }
 
 void check_turbulence(const Turbulence& t, const std::string& where) {
-  check(cm::octaves, t.octaves, where + "noise.octaves");
-  check(cm::frequency, t.frequency, where + "noise.frequency");
-  check(cm::amplitude, t.amplitude, where + "noise.amplitude");
-  check(cm::gain, t.gain, where + "noise.gain");
-  check(cm::lacunarity, t.lacunarity, where + "noise.lacunarity");
-  check(cm::fraction, t.fraction, where + "noise.fraction");
-  check(cm::seed, t.seed, where + "noise.seed");
+  visit_turbulence(t, [&](const params::Parameter& p, auto value) {
+    check(p, double(value), where + "noise." + std::string(p.key));
+  });
 }
 
 }  // namespace
@@ -74,9 +70,9 @@ void validate(const CloudModel& m, const std::string& source) {
       check(cm::coordinate, p.from[axis], where + (p.segment ? "from" : "position"));
       if (p.segment) check(cm::coordinate, p.to[axis], where + "to");
     }
-    check(cm::radius, p.radius, where + "radius");
-    check(cm::influence, p.influence, where + "influence");
-    check(cm::weight, p.weight, where + "weight");
+    visit_primitive(p, [&](const params::Parameter& parameter, auto value) {
+      check(parameter, double(value), where + std::string(parameter.key));
+    });
     check_turbulence(p.noise, where);
     // Eq. 3 is Lipus's operator for one weight w: with unequal weights it depends on the order
     // and is no longer bounded by the weights, so it is refused rather than generalised.
@@ -86,6 +82,17 @@ void validate(const CloudModel& m, const std::string& source) {
                            " (Lipus's blend needs one weight for all primitives; blend 'sum' allows others)",
                        "differs from the others");
   }
+}
+
+bool operator==(const Turbulence& a, const Turbulence& b) {
+  return a.octaves == b.octaves && a.frequency == b.frequency && a.amplitude == b.amplitude && a.gain == b.gain &&
+         a.lacunarity == b.lacunarity && a.fraction == b.fraction && a.seed == b.seed;
+}
+
+bool operator==(const Primitive& a, const Primitive& b) {
+  // A point's `to` is not part of it (pack() uses `from` twice).
+  return a.segment == b.segment && a.from == b.from && (!a.segment || a.to == b.to) && a.radius == b.radius &&
+         a.influence == b.influence && a.weight == b.weight && a.noise == b.noise;
 }
 
 glsl::ModelNoise pack(const Turbulence& t) {

@@ -44,6 +44,34 @@ struct Primitive {
   Turbulence noise;
 };
 
+// A turbulence's and a primitive's numbers with the table's declarations that rule them, in
+// table order: f(const params::Parameter&, field&). The checks, the model files and nephele
+// view's sliders all go through these, so a value added here reaches each of them. (The
+// skeleton's points are vectors of params::cloud_model::coordinate, visited by nobody.)
+template <class T, class F>  // T: Turbulence or const Turbulence
+void visit_turbulence(T& t, F&& f) {
+  namespace cm = params::cloud_model;
+  f(cm::octaves, t.octaves);
+  f(cm::frequency, t.frequency);
+  f(cm::amplitude, t.amplitude);
+  f(cm::gain, t.gain);
+  f(cm::lacunarity, t.lacunarity);
+  f(cm::fraction, t.fraction);
+  f(cm::seed, t.seed);
+}
+template <class P, class F>  // P: Primitive or const Primitive
+void visit_primitive(P& p, F&& f) {
+  namespace cm = params::cloud_model;
+  f(cm::radius, p.radius);
+  f(cm::influence, p.influence);
+  f(cm::weight, p.weight);
+}
+
+bool operator==(const Turbulence& a, const Turbulence& b);
+bool operator==(const Primitive& a, const Primitive& b);
+inline bool operator!=(const Turbulence& a, const Turbulence& b) { return !(a == b); }
+inline bool operator!=(const Primitive& a, const Primitive& b) { return !(a == b); }
+
 struct CloudModel {
   std::string description;
   Blend blend = Blend::per_primitive;

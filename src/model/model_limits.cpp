@@ -18,14 +18,14 @@ double host_bytes(int size, bool software) {
 
 }  // namespace
 
-void check_model_fits(int size, const gpu::Context& context) {
+void check_model_fits(int size, const gpu::Context& context, const char* option) {
   const double available = core::host_memory_available_bytes();
   const double needed = host_bytes(size, context.is_software());
   if (available > 0 && needed > available) {
     int largest = size;
     while (largest > 8 && host_bytes(largest, context.is_software()) > available) largest = largest * 7 / 8;
     std::ostringstream m;
-    m << "--size: " << size << "^3 voxels need about " << std::ceil(needed / 1048576.0) << " MiB but "
+    m << option << ": " << size << "^3 voxels need about " << std::ceil(needed / 1048576.0) << " MiB but "
       << std::floor(available / 1048576.0) << " MiB of memory are available; allowed up to about " << largest;
     throw core::InputError(m.str());
   }

@@ -5,8 +5,9 @@
 
 namespace nephele::model {
 
-// Throws core::InputError naming --size and about the largest size that fits. Needs `context`
+// Throws core::InputError naming `option` (the option that set the size) and about the largest
+// size that fits. Needs `context`
 // current (a software driver keeps the texture in host memory too).
-void check_model_fits(int size, const gpu::Context& context);
+void check_model_fits(int size, const gpu::Context& context, const char* option = "--size");
 
 }  // namespace nephele::model

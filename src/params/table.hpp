@@ -129,6 +129,8 @@ inline constexpr Parameter gain = real("gain", 0.5, 0, 1, "", "amplitude ratio g
 inline constexpr Parameter lacunarity = real("lacunarity", 2.0, 1, 4, "", "frequency ratio lc between octaves", model_file);
 inline constexpr Parameter fraction = real("fraction", 0.5, 0, 1, "", "noise fraction np", model_file);
 inline constexpr Parameter seed = integer("seed", 1, 0, 16777215, "", "seed of the turbulence", model_file);
+inline constexpr Parameter view_model = text("model", "", "FILE|EXAMPLE", "open the modeller on a cloud model file (*.cloud.json) or a built-in example (fair-weather, towering, cumulonimbus, stratocumulus) instead of the ground view; Ctrl+S saves it to FILE (an example: EXAMPLE.cloud.json in the working directory)", viewer | bench_view);
+inline constexpr Parameter view_model_size = integer("model_size", 128, 8, 1024, "voxels", "voxels along each edge of the modeller's density volume, a preview size made again on every edit (nephele model --size N writes the same volume at N)", viewer | bench_view);
 }  // namespace cloud_model
 
 // Options of the runs themselves: where files go, how much is printed, how long to measure.

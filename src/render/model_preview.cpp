@@ -2,6 +2,7 @@
 
 #include <epoxy/gl.h>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -27,10 +28,19 @@ glsl::ModelView preview_view(const model::CloudModel& m, const PreviewSettings& 
   const float e = static_cast<float>(m.extent_m);
   v.extent = e;
   v.extinction = static_cast<float>(model::density_to_extinction_per_m);
-  v.origin = vec3(0.5f * e, -1.3f * e, 0.45f * e);
-  v.forward = vec3(0.0f, 1.0f, 0.0f);
-  v.right = vec3(1.0f, 0.0f, 0.0f);
-  v.up = vec3(0.0f, 0.0f, 1.0f);
+  // The orbit's axes in double, then the camera `distance` extents back from the target.
+  const double h = s.heading_deg * M_PI / 180.0, p = s.pitch_deg * M_PI / 180.0;
+  const double forward[3] = {std::sin(h) * std::cos(p), std::cos(h) * std::cos(p), std::sin(p)};
+  const double right[3] = {std::cos(h), -std::sin(h), 0.0};
+  // up = right x forward: level when the pitch is 0, always perpendicular to both.
+  const double up[3] = {right[1] * forward[2] - right[2] * forward[1], right[2] * forward[0] - right[0] * forward[2],
+                        right[0] * forward[1] - right[1] * forward[0]};
+  for (int a = 0; a < 3; ++a) {
+    v.origin[a] = float((double(s.target[a]) - s.distance * forward[a]) * e);
+    v.forward[a] = float(forward[a]);
+    v.right[a] = float(right[a]);
+    v.up[a] = float(up[a]);
+  }
   v.tan_half_fov = static_cast<float>(std::tan(0.5 * s.fov_deg * M_PI / 180.0));
   const double el = s.sun_elevation_deg * M_PI / 180.0, az = s.sun_azimuth_deg * M_PI / 180.0;
   v.sun = vec3(float(std::cos(el) * std::sin(az)), float(std::cos(el) * std::cos(az)), float(std::sin(el)));
@@ -51,9 +61,12 @@ glsl::ModelView preview_view(const model::CloudModel& m, const PreviewSettings& 
   return v;
 }
 
-core::ImageData render_preview(const model::DensityVolume& volume, const PreviewSettings& s) {
+PreviewRenderer::PreviewRenderer() : program_(std::make_unique<gpu::ComputeProgram>("model/preview.comp")) {}
+PreviewRenderer::~PreviewRenderer() = default;
+
+core::ImageData PreviewRenderer::render(const model::DensityVolume& volume, const PreviewSettings& s) {
   const glsl::ModelView v = preview_view(volume.model(), s);
-  gpu::ComputeProgram program("model/preview.comp");
+  const gpu::ComputeProgram& program = *program_;
   program.use();
   set(program, "u_view.origin", v.origin);
   set(program, "u_view.forward", v.forward);
@@ -69,13 +82,24 @@ core::ImageData render_preview(const model::DensityVolume& volume, const Preview
   program.set("u_view.extinction", v.extinction);
   program.set("u_view.view_steps", v.view_steps);
   program.set("u_view.light_steps", v.light_steps);
+  const int first = std::clamp(s.first_row, 0, s.height);
+  const int rows = s.row_count > 0 ? std::min(s.row_count, s.height - first) : s.height - first;
+  program.set("u_first_row", first);
   gpu::Texture image = gpu::Texture::plane(s.width, s.height, GL_RGBA32F);
+  if (rows < s.height) {
+    const float zero[4] = {0, 0, 0, 0};
+    glClearTexImage(image.id(), 0, GL_RGBA, GL_FLOAT, zero);
+  }
   image.bind_image(0, GL_WRITE_ONLY);
   glBindTextureUnit(1, volume.texture());
-  program.dispatch_covering(s.width, s.height, 1);
+  if (rows > 0) program.dispatch_covering(s.width, rows, 1);
   gpu::image_barrier();
   if (glGetError() != GL_NO_ERROR) throw std::runtime_error("OpenGL error in the model preview pass");
   return {s.width, s.height, 4, image.read()};
+}
+
+core::ImageData render_preview(const model::DensityVolume& volume, const PreviewSettings& s) {
+  return PreviewRenderer().render(volume, s);
 }
 
 core::ImageData render_preview_cpu(const std::vector<float>& values, int size, const model::CloudModel& m,

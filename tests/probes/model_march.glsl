@@ -36,5 +36,6 @@ vec4 probe_model_march(mat4 x MODEL_SOURCE_PARAM) {
   if (f == 0) return vec4(ray_box(p, normalize(vec3(x[2])), vec3(0.0f), vec3(1000.0f)), 0.0f, 0.0f);
   if (f == 1) return vec4(model_extinction(p, v MODEL_SOURCE_ARG), model_light_depth(p, v MODEL_SOURCE_ARG), 0.0f, 0.0f);
   if (f == 2) return model_march(normalize(vec3(x[2])), x[0].y, v MODEL_SOURCE_ARG);
-  return model_pixel(ivec2(int(x[0].y), int(x[0].z)), ivec2(16, 12), v MODEL_SOURCE_ARG);
+  if (f == 3) return model_pixel(ivec2(int(x[0].y), int(x[0].z)), ivec2(16, 12), v MODEL_SOURCE_ARG);
+  return vec4(model_ray(vec2(x[0].y, x[0].z), ivec2(16, 12), v), 0.0f);
 }

@@ -1,6 +1,7 @@
 // nephele view [COVER_DIR] [--scene FILE]: the window (src/apps/viewer, docs/viewer.md).
 #include <algorithm>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <map>
 
@@ -9,10 +10,29 @@
 #include "apps/cli/scene_options.hpp"
 #include "apps/viewer/viewer.hpp"
 #include "cover/integrators.hpp"
+#include "io/cloud_model_files.hpp"
 #include "io/noise_cache.hpp"
+#include "model/bricks.hpp"
 #include "params/table.hpp"
 
 namespace nephele::cli {
+namespace {
+
+// --model FILE|EXAMPLE: a built-in example when no file of that name exists (saved as
+// EXAMPLE.cloud.json in the working directory), else the model file (saved over itself).
+void load_view_model(const std::string& name, viewer::ViewerOptions& options) {
+  const auto& examples = model::example_names();
+  const bool example = std::find(examples.begin(), examples.end(), name) != examples.end();
+  if (example && !std::filesystem::exists(name)) {
+    options.model = model::example(name);
+    options.model_file = name + ".cloud.json";
+  } else {
+    options.model = io::read_cloud_model(name);
+    options.model_file = name;
+  }
+}
+
+}  // namespace
 
 int run_view(const std::vector<std::string>& arguments) {
   namespace c = params::cover;
@@ -21,11 +41,16 @@ int run_view(const std::vector<std::string>& arguments) {
   int month = c::month.default_int();
   float coverage = c::coverage.default_float(), step = c::step.default_float();
   bool no_cache = false;
+  std::string model_name;
+  int model_size = params::cloud_model::view_model_size.default_int();
   Options options("view [COVER_DIR]",
                   "Opens a window on the ground view of the clouds, with panels for the parameters below\n"
                   "(their ranges and help come from the same table). COVER_DIR: a cover written by\n"
-                  "nephele generate; without it the cover is made from the cover parameters. Without a\n"
-                  "display: xvfb-run -a nephele view ..., or render headless with nephele render.\n\n" +
+                  "nephele generate; without it the cover is made from the cover parameters. With --model,\n"
+                  "the modeller: a cloud model's volume and preview, its primitives selected, dragged,\n"
+                  "resized and edited in the panels, the volume and the image updated as they change\n"
+                  "(docs/viewer.md). Without a display: xvfb-run -a nephele view ..., or render headless\n"
+                  "with nephele render.\n\n" +
                       std::string(viewer::key_help()),
                   params::viewer);
   const SceneOptions scene_options(options);
@@ -38,6 +63,8 @@ int run_view(const std::vector<std::string>& arguments) {
   options.bind(params::run::view_record, &record);
   options.bind(params::run::view_frames, &frames);
   options.bind(params::run::no_cache, &no_cache);
+  options.bind(params::cloud_model::view_model, &model_name);
+  options.bind(params::cloud_model::view_model_size, &model_size);
   std::vector<std::string> rest = arguments;
   const std::string cover_dir = take_leading_operand(rest);
   if (!options.parse(rest)) {
@@ -56,6 +83,14 @@ int run_view(const std::vector<std::string>& arguments) {
   view_options.record_dir = record;
   view_options.frames = frames;
   view_options.cache_directory = no_cache ? std::filesystem::path() : io::default_cache_directory();
+  if (!model_name.empty()) {
+    if (!cover_dir.empty() || !scene_file.empty())
+      throw UsageError("--model: shows a cloud model alone; COVER_DIR and --scene belong to the ground view");
+    load_view_model(model_name, view_options);
+    view_options.model_size = model_size;
+  } else if (options.given(params::cloud_model::view_model_size)) {
+    throw UsageError("--model-size: the size of the modeller's volume, given with --model");
+  }
   viewer::Viewer window(view_options);
   viewer::ViewState& state = window.state();
   state.coverage = coverage;
@@ -72,13 +107,17 @@ int run_view(const std::vector<std::string>& arguments) {
 namespace nephele::cli {
 
 int bench_view(const std::vector<std::string>& arguments) {
-  std::string size(params::run::bench_view_size.default_text);
-  int repeat = params::run::bench_view_repeat.default_int();
+  std::string size(params::run::bench_view_size.default_text), model_name;
+  int repeat = params::run::bench_view_repeat.default_int(), model_size = params::cloud_model::view_model_size.default_int();
   Options options("bench view",
                   "Prints the milliseconds of each pass of nephele view's frames for the default scene:\n"
                   "the first frame after a change (the preview) and the refinement frames after it, the\n"
-                  "median over --repeat changes of the heading. Needs a display (xvfb-run -a).",
+                  "median over --repeat changes of the heading. With --model, the modeller's frames after moving\n"
+                  "one primitive by one brick (8 voxels of the --model-size volume): the edit of the volume,\n"
+                  "then the preview. Needs a display (xvfb-run -a).",
                   params::bench_view);
+  options.bind(params::cloud_model::view_model, &model_name);
+  options.bind(params::cloud_model::view_model_size, &model_size);
   options.bind(params::run::bench_view_size, &size);
   options.bind(params::run::bench_view_repeat, &repeat);
   if (!options.parse(arguments)) {
@@ -89,11 +128,20 @@ int bench_view(const std::vector<std::string>& arguments) {
   regional::parse_size(size, view_options.scene.width, view_options.scene.height, "--size");
   regional::validate_scene(view_options.scene, "--size");
   view_options.cache_directory = io::default_cache_directory();
+  if (!model_name.empty()) {
+    load_view_model(model_name, view_options);
+    view_options.model_size = model_size;
+  }
   viewer::Viewer window(view_options);
   std::printf("device: %s (%s)\n", window.window().info().renderer.c_str(), window.window().info().version.c_str());
   const regional::Scene& scene = view_options.scene;
-  std::printf("scene: %s, %s, window %dx%d, %d view x %d light steps\n", scene.view.c_str(), scene.time.c_str(),
-              scene.width, scene.height, scene.view_steps, scene.light_steps);
+  if (view_options.model)
+    std::printf("model: %s, %zu primitives, volume %d^3, window %dx%d, %d view x %d light steps\n", model_name.c_str(),
+                view_options.model->primitives.size(), view_options.model_size, scene.width, scene.height,
+                window.state().view_steps, window.state().light_steps);
+  else
+    std::printf("scene: %s, %s, window %dx%d, %d view x %d light steps\n", scene.view.c_str(), scene.time.c_str(),
+                scene.width, scene.height, scene.view_steps, scene.light_steps);
   // The first change also makes the cover and the noise volume: refined once before timing.
   while (!window.refined()) window.frame();
   const std::size_t levels = viewer::refinement_levels().size();
@@ -101,7 +149,15 @@ int bench_view(const std::vector<std::string>& arguments) {
   std::vector<std::map<std::string, std::vector<double>>> times(levels);
   std::vector<std::string> order;
   for (int r = 0; r < repeat; ++r) {
-    window.state().camera.heading_deg += 1.0;
+    if (view_options.model) {
+      // One primitive moved by one brick along x, back and forth: the edit a drag makes.
+      model::Primitive& p = window.state().model.primitives[0];
+      const float brick = float(model::brick_edge) / float(view_options.model_size) * (r % 2 ? -1.0f : 1.0f);
+      p.from.x += brick;
+      p.to.x += brick;
+    } else {
+      window.state().camera.heading_deg += 1.0;
+    }
     for (std::size_t level = 0; level < levels; ++level) {
       window.frame();
       for (const auto& [name, ms] : window.last_render().timings_ms) {

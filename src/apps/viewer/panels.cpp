@@ -3,6 +3,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <cstring>
 #include <map>
 #include <sstream>
@@ -101,7 +102,116 @@ bool text_widget(const params::Parameter& p, std::string& value, std::string& er
   }
 }
 
+// The widget of one of the state's parameters, with the table's tooltip.
+void parameter_widget(ViewState& state, const params::Parameter& p, std::string& error) {
+  std::visit(
+      [&](auto* field) {
+        using T = std::remove_pointer_t<decltype(field)>;
+        if constexpr (std::is_same_v<T, std::string>) {
+          if (text_widget(p, *field, error) && &p == &params::scene::view) go_to_viewpoint(state, *field);
+        } else {
+          number_widget(p, *field);
+        }
+      },
+      field_of(state, p));
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tooltip(p).c_str());
+}
+
+// A model value's slider (the table's range and help); true when it changed. The ImGui id is
+// the key with `scope`, so that equal keys of two groups (noise of the model and of a
+// primitive) stay apart.
+template <class T>
+bool model_widget(const params::Parameter& p, T& value, const char* scope) {
+  ImGui::PushID(scope);
+  const bool changed = number_widget(p, value);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tooltip(p).c_str());
+  ImGui::PopID();
+  return changed;
+}
+
+// A skeleton point's three coordinates within the table's range.
+bool point_widget(const char* label, glsl::vec3& point) {
+  const params::Parameter& p = params::cloud_model::coordinate;
+  const bool changed = ImGui::SliderFloat3(label, &point.x, float(p.min), float(p.max), "%.3f", ImGuiSliderFlags_AlwaysClamp);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tooltip(p).c_str());
+  return changed;
+}
+
+bool turbulence_widgets(model::Turbulence& t, const char* scope) {
+  bool changed = false;
+  model::visit_turbulence(t, [&](const params::Parameter& p, auto& field) { changed |= model_widget(p, field, scope); });
+  return changed;
+}
+
 }  // namespace
+
+bool shown_in_modeller(const params::Parameter& p) {
+  namespace sc = params::scene;
+  return &p == &sc::heading || &p == &sc::pitch || &p == &sc::fov || &p == &sc::view_steps || &p == &sc::light_steps ||
+         &p == &sc::exposure;
+}
+
+void draw_model_panels(ViewState& state, std::string& error, const std::string& status) {
+  namespace cm = params::cloud_model;
+  ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(360, 0), ImGuiCond_FirstUseEver);
+  ImGui::Begin("nephele view --model");
+  if (ImGui::CollapsingHeader("View", ImGuiTreeNodeFlags_DefaultOpen))
+    for (const params::Parameter* p : panel_parameters())
+      if (shown_in_modeller(*p)) parameter_widget(state, *p, error);
+  // Edits go to a copy, applied when the model stays valid (the Lipus blends need one weight:
+  // a weight set on one primitive is set on all of them, as the table's help says).
+  model::CloudModel next = state.model;
+  bool changed = false;
+  if (ImGui::CollapsingHeader("Model", ImGuiTreeNodeFlags_DefaultOpen)) {
+    std::string blend = model::blend_name(next.blend);
+    if (text_widget(cm::blend, blend, error)) {
+      next.blend = model::parse_blend(blend, cm::blend.option());
+      changed = true;
+    }
+    changed |= model_widget(cm::scale, next.scale, "model");
+    if (ImGui::TreeNode("noise (global, eq. 5)")) {
+      changed |= turbulence_widgets(next.noise, "model");
+      ImGui::TreePop();
+    }
+  }
+  if (ImGui::CollapsingHeader("Primitives", ImGuiTreeNodeFlags_DefaultOpen)) {
+    for (std::size_t i = 0; i < next.primitives.size(); ++i) {
+      const model::Primitive& p = next.primitives[i];
+      char label[96];
+      // "###" keeps the id of the entry while its position moves.
+      std::snprintf(label, sizeof label, "%zu %s (%.2f, %.2f, %.2f)###primitive%zu", i, p.segment ? "segment" : "point",
+                    p.from.x, p.from.y, p.from.z, i);
+      if (ImGui::Selectable(label, state.selected == int(i))) state.selected = int(i);
+    }
+    if (state.selected >= 0 && state.selected < int(next.primitives.size())) {
+      model::Primitive& p = next.primitives[std::size_t(state.selected)];
+      ImGui::Separator();
+      ImGui::Text("primitive %d", state.selected);
+      changed |= point_widget(p.segment ? "from" : "position", p.from);
+      if (p.segment) changed |= point_widget("to", p.to);
+      const float weight = p.weight;
+      model::visit_primitive(p, [&](const params::Parameter& parameter, auto& field) {
+        changed |= model_widget(parameter, field, "primitive");
+      });
+      if (p.weight != weight && next.blend != model::Blend::sum)
+        for (model::Primitive& other : next.primitives) other.weight = p.weight;
+      changed |= turbulence_widgets(p.noise, "primitive");
+    }
+  }
+  if (changed) {
+    try {
+      model::validate(next, "");
+      state.model = std::move(next);
+      error.clear();
+    } catch (const core::InputError& e) {
+      error = e.what();
+    }
+  }
+  if (!status.empty()) ImGui::TextWrapped("%s", status.c_str());
+  if (!error.empty()) ImGui::TextColored(ImVec4(1, 0.4f, 0.4f, 1), "%s", error.c_str());
+  ImGui::End();
+}
 
 bool is_cover_parameter(const params::Parameter& p) {
   return p.used_by(params::cover_sidecar) || &p == &params::scene::cover_size || &p == &params::scene::seed;
@@ -152,20 +262,8 @@ void draw_panels(ViewState& state, std::string& error) {
   ImGui::Begin("nephele view");
   for (const bool cover_group : {false, true}) {
     if (!ImGui::CollapsingHeader(cover_group ? "Cover" : "View", ImGuiTreeNodeFlags_DefaultOpen)) continue;
-    for (const params::Parameter* p : panel_parameters()) {
-      if (is_cover_parameter(*p) != cover_group) continue;
-      std::visit(
-          [&](auto* field) {
-            using T = std::remove_pointer_t<decltype(field)>;
-            if constexpr (std::is_same_v<T, std::string>) {
-              if (text_widget(*p, *field, error) && p == &params::scene::view) go_to_viewpoint(state, *field);
-            } else {
-              number_widget(*p, *field);
-            }
-          },
-          field_of(state, *p));
-      if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tooltip(*p).c_str());
-    }
+    for (const params::Parameter* p : panel_parameters())
+      if (is_cover_parameter(*p) == cover_group) parameter_widget(state, *p, error);
   }
   ImGui::Text("%.6f, %.6f, %.1f m", state.camera.latitude_deg, state.camera.longitude_deg, state.camera.height_m);
   if (!error.empty()) ImGui::TextColored(ImVec4(1, 0.4f, 0.4f, 1), "%s", error.c_str());

@@ -25,6 +25,15 @@ std::string value_text(ViewState& state, const params::Parameter& p);
 // Draws the panels (inside an ImGui frame); edits change `state` directly. `error` keeps the
 // last refused text entry's message between frames.
 void draw_panels(ViewState& state, std::string& error);
+// The parameters of the View panel that the modeller's preview uses (the camera's heading,
+// pitch and field of view turn the orbit; the steps and exposure as in nephele model).
+bool shown_in_modeller(const params::Parameter& p);
+// The modeller's panels (nephele view --model): View (the parameters above), Model (blend,
+// scale, global noise) and Primitives (the list, and the selected one's skeleton, radius,
+// influence, weight and noise): every slider made from the parameter table through
+// model::visit_primitive and visit_turbulence. An edit that the model's checks refuse is not
+// applied; `error` says why. `status` is shown under them (the last save).
+void draw_model_panels(ViewState& state, std::string& error, const std::string& status);
 // The overlay of times: the last render's passes, its size, and the frame time.
 void draw_timings(const std::vector<std::pair<std::string, double>>& timings_ms, int width, int height,
                   const std::string& refinement, double frame_ms);

@@ -4,6 +4,7 @@
 #include <iostream>
 #include <sstream>
 
+#include "apps/viewer/modeller.hpp"
 #include "gpu/pass_timer.hpp"
 #include "io/elevation_files.hpp"
 #include "io/export_presets.hpp"
@@ -134,6 +135,43 @@ ViewSwitch::ViewSwitch(const std::filesystem::path& cover_dir, const std::filesy
 render::RenderResult ViewSwitch::render(const ViewState& state, int width, int height, int first_row, int row_count) {
   if (shows_orbit(state)) return orbit_.render(state, width, height, first_row, row_count);
   return ground_.render(state, width, height, first_row, row_count);
+}
+
+ModelSource::ModelSource(int size) : size_(size) {}
+ModelSource::~ModelSource() = default;
+
+render::RenderResult ModelSource::render(const ViewState& state, int width, int height, int first_row, int row_count) {
+  render::RenderResult result;
+  if (!volume_) {
+    volume_ = std::make_unique<model::DensityVolume>(size_);
+    preview_ = std::make_unique<render::PreviewRenderer>();
+  }
+  // What differs from the volume's model: nothing, one primitive (the edit), or more.
+  const model::CloudModel& shown = volume_->model();
+  const model::CloudModel& wanted = state.model;
+  int changed = -1, count = 0;
+  const bool same_frame = !shown.primitives.empty() && shown.primitives.size() == wanted.primitives.size() &&
+                          shown.blend == wanted.blend && shown.scale == wanted.scale &&
+                          shown.extent_m == wanted.extent_m && shown.noise == wanted.noise;
+  if (same_frame)
+    for (std::size_t i = 0; i < wanted.primitives.size(); ++i)
+      if (shown.primitives[i] != wanted.primitives[i]) {
+        changed = int(i);
+        ++count;
+      }
+  if (!same_frame || count > 1) {
+    volume_->compute(wanted);
+    result.timings_ms.emplace_back("volume", volume_->stats().ms);
+  } else if (count == 1) {
+    volume_->edit(changed, wanted.primitives[std::size_t(changed)]);
+    result.timings_ms.emplace_back("volume_edit", volume_->stats().ms);
+  }
+  render::PreviewSettings settings = preview_settings(state, width, height);
+  settings.first_row = first_row;
+  settings.row_count = row_count;
+  result.timings_ms.emplace_back("preview", gpu::time_pass([&] { result.radiance = preview_->render(*volume_, settings); }));
+  result.passes = {"model_preview"};
+  return result;
 }
 
 std::unique_ptr<ViewSource> make_view_source(const std::filesystem::path& cover_dir,

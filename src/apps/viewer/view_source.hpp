@@ -8,7 +8,9 @@
 
 #include "apps/viewer/view_state.hpp"
 #include "regional/weather.hpp"
+#include "model/density_volume.hpp"
 #include "render/cloud_renderer.hpp"
+#include "render/model_preview.hpp"
 #include "render/orbit_renderer.hpp"
 #include "render/scene_renderer.hpp"
 
@@ -80,6 +82,27 @@ class ViewSwitch : public ViewSource {
  private:
   GroundSource ground_;
   OrbitSource orbit_;
+};
+
+// The modeller's view (nephele view --model): the density volume of the state's cloud model
+// (model::DensityVolume, size^3) through the model preview (render::PreviewRenderer), the
+// camera orbiting the cloud. Each render brings the volume up to the state's model first: one
+// primitive changed is the incremental edit (only the bricks of its old and new footprints),
+// anything else a whole recompute. Bands of rows are marched alone, as the ground view's.
+class ModelSource : public ViewSource {
+ public:
+  explicit ModelSource(int size);
+  ~ModelSource() override;
+  std::string name() const override { return "model"; }
+  render::RenderResult render(const ViewState& state, int width, int height, int first_row = 0,
+                              int row_count = 0) override;
+  // The volume as of the last render (nullptr before the first).
+  const model::DensityVolume* volume() const { return volume_.get(); }
+
+ private:
+  int size_;
+  std::unique_ptr<model::DensityVolume> volume_;
+  std::unique_ptr<render::PreviewRenderer> preview_;
 };
 
 std::unique_ptr<ViewSource> make_view_source(const std::filesystem::path& cover_dir,

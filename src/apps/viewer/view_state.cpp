@@ -24,7 +24,8 @@ std::vector<Binding> bindings(ViewState& s) {
 
 bool option_only(const params::Parameter& p) {
   return &p == &params::scene::size || &p == &params::scene::scene_path || &p == &params::run::view_record ||
-         &p == &params::run::view_frames || &p == &params::run::no_cache;
+         &p == &params::run::view_frames || &p == &params::run::no_cache || &p == &params::cloud_model::view_model ||
+         &p == &params::cloud_model::view_model_size;
 }
 
 void go_to_viewpoint(ViewState& state, const std::string& name) {
@@ -102,12 +103,16 @@ cover::CoverParameters cover_of(const ViewState& state) {
   return p;
 }
 
+void turn(ViewState& state, double heading_deg, double pitch_deg) {
+  const double heading = std::fmod(state.camera.heading_deg + heading_deg, 360.0);
+  state.camera.heading_deg = heading < 0 ? heading + 360.0 : heading;
+  state.camera.pitch_deg =
+      std::clamp(state.camera.pitch_deg + pitch_deg, params::scene::pitch.min, params::scene::pitch.max);
+}
+
 void drag(ViewState& state, double dx, double dy, int width) {
   const double degrees_per_pixel = state.camera.fov_deg / std::max(width, 1);
-  const double heading = std::fmod(state.camera.heading_deg - dx * degrees_per_pixel, 360.0);
-  state.camera.heading_deg = heading < 0 ? heading + 360.0 : heading;
-  state.camera.pitch_deg = std::clamp(state.camera.pitch_deg + dy * degrees_per_pixel, params::scene::pitch.min,
-                                      params::scene::pitch.max);
+  turn(state, -dx * degrees_per_pixel, dy * degrees_per_pixel);
 }
 
 void zoom(ViewState& state, double notches) {

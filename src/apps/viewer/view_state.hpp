@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "cover/cover_parameters.hpp"
+#include "model/cloud_model.hpp"
 #include "params/table.hpp"
 #include "regional/scene.hpp"
 #include "render/cloud_renderer.hpp"
@@ -30,6 +31,11 @@ struct ViewState {
   float step = params::cover::step.default_float();
   std::string integrator{params::cover::integrator.default_text};
   std::vector<std::string> weather;  // station files of --scene (the global cover when empty)
+  // nephele view --model: the cloud model being edited, shown by ModelSource (the camera's
+  // heading, pitch and field of view turn the orbit around it; its position is not used).
+  bool modeller = false;
+  model::CloudModel model;
+  int selected = -1;  // the primitive selected in the modeller, -1 for none
 };
 
 // A field of ViewState and the parameter that declares it.
@@ -59,6 +65,9 @@ cover::CoverParameters cover_of(const ViewState& state);
 // scene follows the cursor: heading -= dx fov / width, pitch += dy fov / width (pitch kept in
 // its table range, heading wrapped into [0, 360)).
 void drag(ViewState& state, double dx, double dy, int width);
+// Turns the camera by these angles (degrees): the pitch kept in its table range, the heading
+// wrapped into [0, 360). The ground's drag and the modeller's orbit both turn through it.
+void turn(ViewState& state, double heading_deg, double pitch_deg);
 // Scroll: each notch up narrows the field of view by `zoom_per_notch` (within the table's range).
 constexpr double zoom_per_notch = 0.9;
 void zoom(ViewState& state, double notches);

@@ -9,14 +9,18 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <iostream>
 #include <cstdio>
 #include <sstream>
 #include <stdexcept>
 
+#include "apps/viewer/modeller.hpp"
 #include "apps/viewer/panels.hpp"
 #include "io/atomic_output.hpp"
+#include "io/cloud_model_files.hpp"
 #include "io/image_files.hpp"
+#include "model/model_limits.hpp"
 
 namespace nephele::viewer {
 namespace {
@@ -76,10 +80,46 @@ std::string frame_name(long index) {
   return name;
 }
 
-void write_png(const std::filesystem::path& directory, const std::string& name, const core::ImageData& image) {
-  io::OutputSet set(directory, io::OutputSet::Scope::files);
-  set.write(name, io::encode_image(image, io::png_encoding(8), name));
+// One file written whole or not at all (the frames, screenshots and saved models).
+void write_whole(const std::filesystem::path& directory, const std::string& name, const std::vector<unsigned char>& bytes) {
+  io::OutputSet set(directory.empty() ? "." : directory, io::OutputSet::Scope::files);
+  set.write(name, bytes);
   set.commit();
+}
+
+void write_png(const std::filesystem::path& directory, const std::string& name, const core::ImageData& image) {
+  write_whole(directory, name, io::encode_image(image, io::png_encoding(8), name));
+}
+
+bool shift_held(GLFWwindow* window) {
+  return glfwGetKey(window, GLFW_KEY_LEFT_SHIFT) == GLFW_PRESS || glfwGetKey(window, GLFW_KEY_RIGHT_SHIFT) == GLFW_PRESS;
+}
+
+// The selected primitive's outline over the image: its sphere's circle, or the circles of a
+// capsule's ends joined at their sides (ImGui's foreground list, so the render is untouched).
+void draw_selection(const ViewState& state, int width, int height) {
+  if (state.selected < 0 || state.selected >= int(state.model.primitives.size())) return;
+  const model::Primitive& p = state.model.primitives[std::size_t(state.selected)];
+  ImDrawList* list = ImGui::GetForegroundDrawList();
+  const ImU32 colour = IM_COL32(255, 190, 40, 255);
+  const float tan_half = float(std::tan(0.5 * state.camera.fov_deg * M_PI / 180.0));
+  auto circle = [&](glsl::vec3 point) {
+    const glsl::vec3 at = project(state, point, width, height);
+    if (at.z <= 0) return ImVec4(0, 0, 0, -1);
+    // The sphere's apparent radius: R at depth z spans R / (z tan) of the half width.
+    const float r = std::max(2.0f, p.radius / (at.z * tan_half) * 0.5f * float(width));
+    list->AddCircle(ImVec2(at.x, at.y), r, colour, 48, 2.0f);
+    return ImVec4(at.x, at.y, r, 1);
+  };
+  const ImVec4 a = circle(p.from);
+  if (!p.segment) return;
+  const ImVec4 b = circle(p.to);
+  if (a.w < 0 || b.w < 0) return;
+  const float dx = b.x - a.x, dy = b.y - a.y, length = std::max(1e-3f, std::hypot(dx, dy));
+  const float nx = -dy / length, ny = dx / length;
+  for (const float side : {1.0f, -1.0f})
+    list->AddLine(ImVec2(a.x + side * nx * a.z, a.y + side * ny * a.z), ImVec2(b.x + side * nx * b.z, b.y + side * ny * b.z),
+                  colour, 2.0f);
 }
 
 }  // namespace
@@ -93,7 +133,14 @@ const char* key_help() {
          "  PageUp/PageDown         climb/descend (a key press flies a tenth of the height, at least 50 m)\n"
          "  F12 or P                screenshot: nephele_view_NNNN.png in the working directory\n"
          "  Tab                     hide or show the panels and the times\n"
-         "  Escape                  close the window\n";
+         "  Escape                  close the window\n"
+         "with --model (the modeller):\n"
+         "  click                   select the primitive under the cursor (none: deselect)\n"
+         "  drag a primitive        move it in the plane facing the camera through its centre\n"
+         "  drag elsewhere          orbit the camera around the cloud (half a turn across the window)\n"
+         "  Shift + scroll          resize the selected primitive (radius and influence x1.1 per notch)\n"
+         "  scroll                  zoom (field of view)\n"
+         "  Ctrl+S                  save the model to the --model file (an example: NAME.cloud.json here)\n";
 }
 
 const std::vector<RefinementLevel>& refinement_levels() {
@@ -109,10 +156,19 @@ const std::vector<RefinementLevel>& refinement_levels() {
 }
 
 Viewer::Viewer(const ViewerOptions& options) : options_(options) {
-  state_ = state_of_scene(options.scene);
-  // Files first (a COVER_DIR that is not a cover is bad input, with or without a display).
-  source_ = make_view_source(options.cover_dir, options.cache_directory);
+  if (options.model) {
+    state_ = modeller_state(*options.model);
+    auto source = std::make_unique<ModelSource>(options.model_size);
+    model_source_ = source.get();
+    source_ = std::move(source);
+  } else {
+    state_ = state_of_scene(options.scene);
+    // Files first (a COVER_DIR that is not a cover is bad input, with or without a display).
+    source_ = make_view_source(options.cover_dir, options.cache_directory);
+  }
   window_ = std::make_unique<Window>(options.scene.width, options.scene.height, "nephele view", options.visible);
+  // The modeller's volume must fit before it is made (in the first frame).
+  if (options.model) model::check_model_fits(options.model_size, *window_, "--model-size");
   GLFWwindow* handle = window_->handle();
   glfwSetWindowUserPointer(handle, this);
   glfwSetKeyCallback(handle, on_key);
@@ -159,6 +215,8 @@ std::string Viewer::render_key() const {
     if (b.parameter != &params::scene::exposure && b.parameter != &params::scene::view)
       key << ' ' << value_text(copy, *b.parameter);
   for (const auto& w : copy.weather) key << ' ' << w;
+  // The modeller's model, as its file would hold it (floats to the bit).
+  if (copy.modeller) key << ' ' << io::write_cloud_model(copy.model);
   return key.str();
 }
 
@@ -260,7 +318,14 @@ void Viewer::frame() {
     ImGui_ImplGlfw_NewFrame();
     ImGui::NewFrame();
     if (panels_) {
-      draw_panels(state_, panel_error_);
+      if (state_.modeller) {
+        draw_model_panels(state_, panel_error_, model_status_);
+        int window_width = 0, window_height = 0;
+        glfwGetWindowSize(window_->handle(), &window_width, &window_height);
+        draw_selection(state_, window_width, window_height);
+      } else {
+        draw_panels(state_, panel_error_);
+      }
       const RefinementLevel level = refinement_levels()[std::min(next_level_, refinement_levels().size()) - 1];
       const std::string refinement =
           next_level_ >= refinement_levels().size() ? "full size"
@@ -294,19 +359,50 @@ std::filesystem::path Viewer::screenshot(const std::filesystem::path& directory)
   return directory / name;
 }
 
+const model::DensityVolume* Viewer::model_volume() const {
+  return model_source_ ? model_source_->volume() : nullptr;
+}
+
+std::filesystem::path Viewer::save_model() {
+  const std::filesystem::path& path = options_.model_file;
+  const std::string text = io::write_cloud_model(state_.model);
+  write_whole(path.parent_path(), path.filename().string(), std::vector<unsigned char>(text.begin(), text.end()));
+  model_status_ = "saved " + path.string();
+  return path;
+}
+
 void Viewer::on_key(GLFWwindow* window, int key, int scancode, int action, int mods) {
   ImGui_ImplGlfw_KeyCallback(window, key, scancode, action, mods);
   Viewer* viewer = viewer_of(window);
+  // Shift as the key events report it (the scroll callback has no modifiers; glfwGetKey below
+  // covers a Shift pressed before the window had the focus).
+  if (viewer != nullptr && (key == GLFW_KEY_LEFT_SHIFT || key == GLFW_KEY_RIGHT_SHIFT)) viewer->shift_ = action != GLFW_RELEASE;
   if (viewer == nullptr || panels_take_keyboard() || (action != GLFW_PRESS && action != GLFW_REPEAT)) return;
   ViewState& s = viewer->state_;
+  if (s.modeller && key == GLFW_KEY_S && (mods & GLFW_MOD_CONTROL)) {
+    if (action != GLFW_PRESS) return;
+    try {
+      std::cerr << "nephele view: wrote " << viewer->save_model().string() << "\n";
+    } catch (const std::exception& e) {
+      // The window stays open: the edits are still there to save elsewhere.
+      viewer->model_status_ = e.what();
+      std::cerr << "nephele view: " << e.what() << "\n";
+    }
+    return;
+  }
   const double step = flight_step_m(s);
-  switch (key) {
+  // The modeller's camera orbits the cloud: the flight keys have nothing to fly.
+  const bool flies = !s.modeller;
+  switch (flies ? key : GLFW_KEY_UNKNOWN) {
     case GLFW_KEY_W: case GLFW_KEY_UP: fly(s, step, 0, 0); break;
     case GLFW_KEY_S: case GLFW_KEY_DOWN: fly(s, -step, 0, 0); break;
     case GLFW_KEY_D: case GLFW_KEY_RIGHT: fly(s, 0, step, 0); break;
     case GLFW_KEY_A: case GLFW_KEY_LEFT: fly(s, 0, -step, 0); break;
     case GLFW_KEY_PAGE_UP: fly(s, 0, 0, step); break;
     case GLFW_KEY_PAGE_DOWN: fly(s, 0, 0, -step); break;
+    default: break;
+  }
+  switch (key) {
     case GLFW_KEY_F12: case GLFW_KEY_P:
       if (action == GLFW_PRESS) std::cerr << "nephele view: wrote " << viewer->screenshot().string() << "\n";
       break;
@@ -321,15 +417,36 @@ void Viewer::on_mouse_button(GLFWwindow* window, int button, int action, int mod
   Viewer* viewer = viewer_of(window);
   if (viewer == nullptr || button != GLFW_MOUSE_BUTTON_LEFT) return;
   viewer->dragging_ = action == GLFW_PRESS && !panels_take_mouse();
+  viewer->moving_ = false;
+  ViewState& s = viewer->state_;
+  if (!viewer->dragging_ || !s.modeller) return;
+  // A press picks: the primitive under the cursor is selected and held, else none is selected
+  // and the drag orbits.
+  int width = 0, height = 0;
+  glfwGetWindowSize(window, &width, &height);
+  const Ray ray = cursor_ray(s, viewer->cursor_x_, viewer->cursor_y_, width, height);
+  s.selected = pick_primitive(s.model, ray);
+  if (s.selected < 0) return;
+  viewer->moving_ = true;
+  viewer->grabbed_ = s.model.primitives[std::size_t(s.selected)];
+  viewer->grab_point_ = on_facing_plane(s, ray, centre(viewer->grabbed_));
 }
 
 void Viewer::on_cursor(GLFWwindow* window, double x, double y) {
   Viewer* viewer = viewer_of(window);
   if (viewer == nullptr) return;
-  if (viewer->dragging_) {
-    int width = 0, height = 0;
-    glfwGetWindowSize(window, &width, &height);
-    drag(viewer->state_, x - viewer->cursor_x_, y - viewer->cursor_y_, width);
+  int width = 0, height = 0;
+  glfwGetWindowSize(window, &width, &height);
+  ViewState& s = viewer->state_;
+  if (viewer->moving_ && s.selected >= 0 && s.selected < int(s.model.primitives.size())) {
+    // Moved by the plane's offset from where it was grabbed: no drift over many small moves.
+    const glsl::vec3 now = on_facing_plane(s, cursor_ray(s, x, y, width, height), centre(viewer->grabbed_));
+    s.model.primitives[std::size_t(s.selected)] = moved(viewer->grabbed_, now - viewer->grab_point_);
+  } else if (viewer->dragging_) {
+    if (s.modeller)
+      orbit(s, x - viewer->cursor_x_, y - viewer->cursor_y_, width);
+    else
+      drag(s, x - viewer->cursor_x_, y - viewer->cursor_y_, width);
   }
   viewer->cursor_x_ = x;
   viewer->cursor_y_ = y;
@@ -339,10 +456,13 @@ void Viewer::on_scroll(GLFWwindow* window, double dx, double dy) {
   ImGui_ImplGlfw_ScrollCallback(window, dx, dy);
   Viewer* viewer = viewer_of(window);
   if (viewer == nullptr || panels_take_mouse()) return;
-  if (glfwGetKey(window, GLFW_KEY_LEFT_SHIFT) == GLFW_PRESS || glfwGetKey(window, GLFW_KEY_RIGHT_SHIFT) == GLFW_PRESS)
-    fly(viewer->state_, 0, 0, dy * flight_step_m(viewer->state_));
-  else
-    zoom(viewer->state_, dy);
+  ViewState& s = viewer->state_;
+  if (!viewer->shift_ && !shift_held(window))
+    zoom(s, dy);
+  else if (!s.modeller)
+    fly(s, 0, 0, dy * flight_step_m(s));
+  else if (s.selected >= 0 && s.selected < int(s.model.primitives.size()))
+    s.model.primitives[std::size_t(s.selected)] = resized(s.model.primitives[std::size_t(s.selected)], dy);
 }
 
 }  // namespace nephele::viewer

@@ -8,6 +8,7 @@
 // full-size render. Exposure only tone-maps the last image again.
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -29,6 +30,11 @@ struct ViewerOptions {
   std::filesystem::path record_dir;       // every displayed frame as frame_NNNNNN.png; empty: none
   long frames = 0;                        // close after this many frames; 0: when the window is closed
   bool visible = true;                    // false: a hidden window (tests)
+  // nephele view --model: the cloud model the modeller edits (shown by ModelSource instead of
+  // the ground and orbit views), the file Ctrl+S writes it to, and its volume's edge in voxels.
+  std::optional<model::CloudModel> model;
+  std::filesystem::path model_file;
+  int model_size = params::cloud_model::view_model_size.default_int();
 };
 
 // The keys, for --help and docs/viewer.md.
@@ -76,6 +82,11 @@ class Viewer {
   // Writes the tone-mapped image shown (without the panels) as a PNG (the key F12 or P, into the
   // working directory as nephele_view_NNNN.png); returns the path.
   std::filesystem::path screenshot(const std::filesystem::path& directory = ".");
+  // The modeller (ViewerOptions::model): the density volume as of the last render (nullptr
+  // before it, and outside the modeller); Ctrl+S: the state's model written to
+  // ViewerOptions::model_file as a model file, all or nothing (io::OutputSet); returns the path.
+  const model::DensityVolume* model_volume() const;
+  std::filesystem::path save_model();
 
   // The window's GLFW callbacks; tests call them directly as the window would.
   static void on_key(GLFWwindow* window, int key, int scancode, int action, int mods);
@@ -103,7 +114,14 @@ class Viewer {
   core::ImageData shown_;
   long renders_ = 0, frames_ = 0;
   double frame_ms_ = 0;
-  bool panels_ = true, capture_ = false, dragging_ = false;
+  bool panels_ = true, capture_ = false, dragging_ = false, shift_ = false;
+  // The modeller: its source, and the primitive being moved (as it was when grabbed, and the
+  // point of the facing plane under the cursor then).
+  ModelSource* model_source_ = nullptr;
+  bool moving_ = false;
+  model::Primitive grabbed_;
+  glsl::vec3 grab_point_{0.0f};
+  std::string model_status_;
   double cursor_x_ = 0, cursor_y_ = 0;
   std::string panel_error_;
   core::ImageData last_frame_;
