@@ -8,13 +8,6 @@
 namespace nephele::regional {
 namespace {
 
-double max_precipitation(const std::vector<WeatherSample>& hours, double within_hours, double from) {
-  double m = 0;
-  for (const auto& h : hours)
-    if (h.time <= from + within_hours * 3600) m = std::max(m, h.precipitation);
-  return m;
-}
-
 double max_mid_cover(const std::vector<WeatherSample>& hours, double within_hours, double from) {
   double m = 0;
   for (const auto& h : hours)

@@ -9,13 +9,6 @@
 namespace nephele::regional {
 namespace {
 
-double max_precipitation_within(const std::vector<WeatherSample>& hours, double within_hours, double from) {
-  double m = 0;
-  for (const auto& h : hours)
-    if (h.time <= from + within_hours * 3600) m = std::max(m, h.precipitation);
-  return m;
-}
-
 // The field's channel at a ground point, bilinear between texel centres and clamped to the edge
 // (as the renderer's sampler reads it).
 double field_value(const WeatherField& field, int channel, double east, double north) {
@@ -51,7 +44,7 @@ ConvectiveVerdict convection_from_weather(const WeatherSample& now, const std::v
     return {ConvectiveKind::towering, "lifted_index -2 to 0 K: towering cumulus"};
   if (now.has_cape || now.has_lifted_index || now.has_weather_code) return {};
   // Without instability indices, heavy showers are the sign of convection.
-  if (std::max(now.precipitation, max_precipitation_within(ahead, shower_hours, now.time)) >= shower_rate)
+  if (std::max(now.precipitation, max_precipitation(ahead, shower_hours, now.time)) >= shower_rate)
     return {ConvectiveKind::cumulonimbus, "no cape, lifted_index or weather_code; showers >= 2 mm/h now or within 6 h"};
   return {};
 }

@@ -1,5 +1,6 @@
 #include "regional/weather.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/time.hpp"
@@ -42,6 +43,13 @@ std::vector<WeatherSample> WeatherSeries::ahead(double time, double horizon_hour
   for (const auto& h : hours)
     if (h.time > time && h.time <= time + horizon_hours * 3600.0) out.push_back(h);
   return out;
+}
+
+double max_precipitation(const std::vector<WeatherSample>& hours, double within_hours, double from) {
+  double m = 0;
+  for (const auto& h : hours)
+    if (h.time <= from + within_hours * 3600) m = std::max(m, h.precipitation);
+  return m;
 }
 
 }  // namespace nephele::regional

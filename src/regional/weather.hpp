@@ -44,4 +44,8 @@ struct WeatherSeries {
 
 // The files are read by src/io/weather_files.hpp.
 
+// The largest precipitation rate (mm/h) of the hours up to within_hours after `from` (Unix
+// seconds): the layer rules' and the convection rules' "rain within N hours".
+double max_precipitation(const std::vector<WeatherSample>& hours, double within_hours, double from);
+
 }  // namespace nephele::regional
