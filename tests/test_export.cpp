@@ -324,7 +324,7 @@ TEST_CASE("export refuses a ktx2 format outside r16f, r32f, r8", "[export][cli]"
 
 // The fields of a DDS file that place its texels (Microsoft's "DDS_HEADER", "DDS_PIXELFORMAT"
 // and "DDS_HEADER_DXT10" reference pages), read at their documented byte offsets.
-TEST_CASE("export dds: legacy RGBA8 and DX10 float cube headers as documented; OpenImageIO finds the marker in the RGBA8 cube",
+TEST_CASE("export dds: legacy RGBA8 and DX10 float cube headers as documented, and OpenImageIO finds the marker in the RGBA8 cube",
           "[export]") {
   Exported e("dds");
   REQUIRE(e.run.exit_code == 0);

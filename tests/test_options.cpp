@@ -84,7 +84,7 @@ TEST_CASE("both --name VALUE and --name=VALUE set an option, and given() tells w
   CHECK_FALSE(o.given(params::cover::seed));
 }
 
-TEST_CASE("an option given twice is refused; a list option takes one value per occurrence", "[cli]") {
+TEST_CASE("an option given twice is refused, and a list option takes one value per occurrence", "[cli]") {
   int size = 512;
   Options o("generate", "test", params::generate);
   o.bind(params::cover::size, &size);

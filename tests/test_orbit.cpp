@@ -383,7 +383,7 @@ TEST_CASE("render --view orbit writes the image and refuses bad values naming th
   CHECK_THAT(ground.output, Catch::Contains("--view orbit"));
 }
 
-TEST_CASE("orbit: the procedural stand-in has ocean and land; any equirect map and radius render", "[orbit][cli]") {
+TEST_CASE("orbit: the procedural stand-in has ocean and land, and any equirect map and radius render", "[orbit][cli]") {
   const render::PlanetImages planet = render::procedural_planet(128, 64);
   REQUIRE(planet.day.pixels.size() == 128 * 64 * 3);
   int ocean = 0, land = 0;

@@ -57,7 +57,7 @@ TEST_CASE("a panel value is checked as the command line checks it", "[viewer]") 
   CHECK(state.viewpoint == "bantiger");
 }
 
-TEST_CASE("a drag turns by the field of view per window width; the wheel zooms within the table's range", "[viewer]") {
+TEST_CASE("a drag turns by the field of view per window width, and the wheel zooms within the table's range", "[viewer]") {
   viewer::ViewState state;
   state.camera.heading_deg = 10;
   state.camera.pitch_deg = 0;
@@ -96,7 +96,7 @@ TEST_CASE("nephele view without a display exits 3 and names xvfb-run and nephele
   CHECK_THAT(r.output, Catch::Contains("xvfb-run -a nephele view") && Catch::Contains("nephele render"));
 }
 
-TEST_CASE("nephele view --help lists the keys and the table's options; bad options exit 2 before a window opens", "[viewer][cli]") {
+TEST_CASE("nephele view --help lists the keys and the table's options, and bad options exit 2 before a window opens", "[viewer][cli]") {
   const auto help = test::run("view --help");
   CHECK(help.exit_code == 0);
   CHECK_THAT(help.output, Catch::Contains("F12") && Catch::Contains("PageUp") && Catch::Contains("--record"));
@@ -179,7 +179,7 @@ TEST_CASE("modeller picking: project() puts a point where cursor_ray() looks bac
 }
 
 
-TEST_CASE("the orbit viewpoint lifts the camera to the orbit view's altitude over the same point; above the ground views' ceiling the orbit renderer shows", "[viewer]") {
+TEST_CASE("the orbit viewpoint lifts the camera to the orbit view's altitude over the same point, and above the ground views' ceiling the orbit renderer shows", "[viewer]") {
   viewer::ViewState state;
   viewer::go_to_viewpoint(state, "gurten");
   const double latitude = state.camera.latitude_deg, longitude = state.camera.longitude_deg;
@@ -193,6 +193,7 @@ TEST_CASE("the orbit viewpoint lifts the camera to the orbit view's altitude ove
   // Flying clears the named viewpoint; the height alone then decides, the ground renderer's
   // range ending at the scene's highest camera.
   viewer::fly(state, 0, 0, 0);
+  CHECK(state.camera.height_m == params::scene::altitude_km.default_number * 1000.0);  // still in orbit
   CHECK(viewer::shows_orbit(state));
   state.camera.height_m = params::scene::height.max;
   CHECK_FALSE(viewer::shows_orbit(state));

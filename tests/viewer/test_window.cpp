@@ -215,7 +215,7 @@ TEST_CASE("changing a panel's cover value makes the cover again and shows a diff
   CHECK(largest_difference(before, v.last_frame()) > 10 * test::kEightBitDisplay);
 }
 
-TEST_CASE("F12 writes the shown render as a PNG of its size; --record writes every frame", "[window]") {
+TEST_CASE("F12 writes the shown render as a PNG of its size, and --record writes every frame", "[window]") {
   test::TemporaryDirectory out(true);
   viewer::ViewerOptions options = small_view();
   options.record_dir = out.path / "frames";

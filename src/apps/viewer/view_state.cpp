@@ -137,8 +137,10 @@ void fly(ViewState& state, double forward_m, double right_m, double up_m) {
   frame.Reverse(east, north, 0.0, latitude, longitude, height);
   c.latitude_deg = std::clamp(latitude, params::scene::latitude.min, params::scene::latitude.max);
   c.longitude_deg = longitude;
-  // Level flight: the height stays as it was, whatever the curvature under the move.
-  c.height_m = std::clamp(c.height_m + up_m, params::scene::height.min, params::scene::height.max);
+  // Level flight: the height stays as it was, whatever the curvature under the move. The range
+  // is the viewer's whole one, ground to orbit: clamping to the ground views' ceiling would drop
+  // a camera in orbit to 20 km at its first move.
+  c.height_m = std::clamp(c.height_m + up_m, params::scene::height.min, params::scene::altitude_km.max * 1000.0);
   state.viewpoint.clear();
 }
 
