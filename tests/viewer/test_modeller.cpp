@@ -243,6 +243,71 @@ TEST_CASE("modeller: Shift + scroll resizes the selected primitive by 1.1 per no
   for (std::size_t i = 0; i < edited.primitives.size(); ++i) CHECK(v.state().model.primitives[i] == edited.primitives[i]);
 }
 
+TEST_CASE("modeller: N adds a copy beside the selected primitive and Delete removes it, down to one primitive",
+          "[window][modeller]") {
+  const model::CloudModel original = three_primitives();
+  Viewer v(modeller_view(original));
+  v.set_panels_visible(false);
+  refine(v);
+  GLFWwindow* window = v.window().handle();
+  const core::ImageData three = v.shown_radiance();
+  const std::vector<float> three_volume = v.model_volume()->read();
+  const model::Primitive source = original.primitives[0];
+  click(window, screen_of(pinhole(v.state()), centre_of(source)));
+  REQUIRE(v.state().selected == 0);
+
+  Viewer::on_key(window, GLFW_KEY_N, 0, GLFW_PRESS, 0);
+  REQUIRE(v.state().model.primitives.size() == 4);
+  CHECK(v.state().selected == 3);
+  const model::Primitive added = v.state().model.primitives[3];
+  // Beside it along the camera's right axis by its diameter plus influence (0.22 model units),
+  // to float rounding of the sum (a few ulp of 0.5).
+  const Pinhole camera = pinhole(v.state());
+  const glm::dvec3 offset = centre_of(added) - centre_of(source);
+  CHECK(glm::length(offset) == Approx(2 * source.radius + source.influence).margin(1e-6));
+  CHECK(glm::dot(offset, camera.right) == Approx(glm::length(offset)).margin(1e-6));
+  CHECK(added.radius == source.radius);
+  CHECK(added.influence == source.influence);
+  CHECK(added.weight == source.weight);
+  CHECK(added.noise.seed == 8);  // one above the largest seed in use (7)
+  refine(v);
+  REQUIRE(v.model_volume()->model().primitives.size() == 4);
+  CHECK(opacity_at(v, screen_of(camera, centre_of(added))) > 0.5f);
+
+  Viewer::on_key(window, GLFW_KEY_DELETE, 0, GLFW_PRESS, 0);
+  CHECK(v.state().selected == -1);
+  REQUIRE(v.state().model.primitives.size() == 3);
+  for (std::size_t i = 0; i < 3; ++i) CHECK(v.state().model.primitives[i] == original.primitives[i]);
+  CHECK(v.model_status() == "removed primitive 3");
+  refine(v);
+  // Computed again from the same three primitives: the same voxels and frame, to the bit.
+  CHECK(v.model_volume()->read() == three_volume);
+  CHECK(largest_difference(v.shown_radiance(), three) == 0.0);
+
+  // With nothing selected, Delete removes nothing and N adds a point at the cube's centre.
+  Viewer::on_key(window, GLFW_KEY_BACKSPACE, 0, GLFW_PRESS, 0);
+  CHECK(v.state().model.primitives.size() == 3);
+  CHECK(v.model_status() == "select a primitive to remove");
+  Viewer::on_key(window, GLFW_KEY_INSERT, 0, GLFW_PRESS, 0);
+  REQUIRE(v.state().model.primitives.size() == 4);
+  const model::Primitive centred = v.state().model.primitives[3];
+  CHECK_FALSE(centred.segment);
+  CHECK(centred.from == glsl::vec3(0.5f));
+  CHECK(centred.radius == model::Primitive{}.radius);
+  CHECK(centred.noise.seed == 8);
+
+  // The last primitive stays.
+  for (int i = 0; i < 3; ++i) {
+    v.state().selected = 0;
+    Viewer::on_key(window, GLFW_KEY_DELETE, 0, GLFW_PRESS, 0);
+  }
+  REQUIRE(v.state().model.primitives.size() == 1);
+  v.state().selected = 0;
+  Viewer::on_key(window, GLFW_KEY_DELETE, 0, GLFW_PRESS, 0);
+  CHECK(v.state().model.primitives.size() == 1);
+  CHECK(v.model_status() == "a model keeps at least one primitive");
+}
+
 TEST_CASE("modeller: Ctrl+S saves the edited model whole, the file reads back to it exactly, and nephele model "
           "makes the same volume and frame from it",
           "[window][modeller]") {

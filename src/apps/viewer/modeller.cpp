@@ -146,4 +146,32 @@ void orbit(ViewState& state, double dx, double dy, int width) {
   turn(state, dx * degrees_per_pixel, -dy * degrees_per_pixel);
 }
 
+void add_primitive(ViewState& state, int width, int height) {
+  auto& primitives = state.model.primitives;
+  const bool copy = state.selected >= 0 && state.selected < int(primitives.size());
+  model::Primitive added;
+  if (copy) {
+    const model::Primitive& source = primitives[std::size_t(state.selected)];
+    const glm::dvec3 right = glm::normalize(dvec(view_of(state, width, height).right));
+    added = moved(source, glsl::vec3(right * double(2 * source.radius + source.influence)));
+  } else if (!primitives.empty()) {
+    added.weight = primitives.front().weight;  // Lipus's blends need one weight for all
+    added.noise = primitives.front().noise;
+  }
+  std::uint32_t largest = 0;
+  for (const auto& p : primitives) largest = std::max(largest, p.noise.seed);
+  const auto seeds = std::uint32_t(cm::seed.max) + 1;  // the seed's range is 0 .. max
+  added.noise.seed = (largest + 1) % seeds;
+  primitives.push_back(added);
+  state.selected = int(primitives.size()) - 1;
+}
+
+bool remove_selected(ViewState& state) {
+  auto& primitives = state.model.primitives;
+  if (state.selected < 0 || state.selected >= int(primitives.size()) || primitives.size() < 2) return false;
+  primitives.erase(primitives.begin() + state.selected);
+  state.selected = -1;
+  return true;
+}
+
 }  // namespace nephele::viewer

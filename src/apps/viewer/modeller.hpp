@@ -49,6 +49,17 @@ model::Primitive moved(const model::Primitive& primitive, glsl::vec3 offset);
 constexpr double resize_per_notch = 1.1;
 model::Primitive resized(const model::Primitive& primitive, double notches);
 
+// N or Insert: a copy of the selected primitive beside it (moved along the view's right axis by
+// its diameter plus its influence, within the coordinate range), or with none selected a point
+// at the cube's centre with the table's radius and influence and the first primitive's weight
+// and turbulence; either way with a turbulence seed of its own (one above the largest in use,
+// wrapping within the seed's range), so that it does not repeat its neighbour's detail. The new
+// primitive is selected. width x height: the window, for the view's axes.
+void add_primitive(ViewState& state, int width, int height);
+// Delete or Backspace: removes the selected primitive and selects none. False, and nothing
+// changes, when none is selected or it is the model's last (a model has at least one).
+bool remove_selected(ViewState& state);
+
 // A drag with nothing selected turns the camera around the cloud so that its near side follows
 // the cursor: heading += dx 180 / width, pitch -= dy 180 / width (half a turn across the window).
 void orbit(ViewState& state, double dx, double dy, int width);

@@ -139,6 +139,8 @@ const char* key_help() {
          "  drag a primitive        move it in the plane facing the camera through its centre\n"
          "  drag elsewhere          orbit the camera around the cloud (half a turn across the window)\n"
          "  Shift + scroll          resize the selected primitive (radius and influence x1.1 per notch)\n"
+         "  N or Insert             add a primitive: a copy beside the selected one, else a point at the centre\n"
+         "  Delete or Backspace     remove the selected primitive (a model keeps at least one)\n"
          "  scroll                  zoom (field of view)\n"
          "  Ctrl+S                  save the model to the --model file (an example: NAME.cloud.json here)\n";
 }
@@ -389,6 +391,22 @@ void Viewer::on_key(GLFWwindow* window, int key, int scancode, int action, int m
       std::cerr << "nephele view: " << e.what() << "\n";
     }
     return;
+  }
+  if (s.modeller && action == GLFW_PRESS) {
+    if (key == GLFW_KEY_N || key == GLFW_KEY_INSERT) {
+      int width = 0, height = 0;
+      glfwGetWindowSize(window, &width, &height);
+      add_primitive(s, std::max(width, 1), std::max(height, 1));
+      viewer->model_status_ = "added primitive " + std::to_string(s.selected);
+      return;
+    }
+    if (key == GLFW_KEY_DELETE || key == GLFW_KEY_BACKSPACE) {
+      const int selected = s.selected;
+      viewer->model_status_ = remove_selected(s) ? "removed primitive " + std::to_string(selected)
+                              : selected < 0      ? "select a primitive to remove"
+                                                  : "a model keeps at least one primitive";
+      return;
+    }
   }
   const double step = flight_step_m(s);
   // The modeller's camera orbits the cloud: the flight keys have nothing to fly.

@@ -86,6 +86,8 @@ class Viewer {
   // before it, and outside the modeller); Ctrl+S: the state's model written to
   // ViewerOptions::model_file as a model file, all or nothing (io::OutputSet); returns the path.
   const model::DensityVolume* model_volume() const;
+  // The modeller's last message (saved, added, removed, or why not), shown in its panel.
+  const std::string& model_status() const { return model_status_; }
   std::filesystem::path save_model();
 
   // The window's GLFW callbacks; tests call them directly as the window would.
