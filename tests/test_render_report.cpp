@@ -12,6 +12,7 @@
 #include "regional/scene.hpp"
 #include "studies/render_error.hpp"
 #include "studies/render_report.hpp"
+#include "render/cloud_renderer.hpp"
 
 using namespace nephele;
 using studies::RenderErrorRow;
@@ -32,56 +33,130 @@ size_t count_of(const std::string& text, const std::string& what) {
   return n;
 }
 
-// A hand-made sweep: the default is 48 x 6 (rms 0.20, 100 ms).
+// A row of one frame at full resolution: display RMS `display`, the radiance errors twice it.
+RenderErrorRow row(int view, int light, double ms, double display, int frames = 1, int divisor = 1) {
+  return {view, light, frames, divisor, ms, display, 2 * display, 8 * display};
+}
+
+// A hand-made sweep: the default is 48 x 6 (display rms 0.20, 100 ms).
 const std::vector<RenderErrorRow> table{
-    {8, 2, 20.0, 0.50, 2.0},    // cheap, far too inaccurate
-    {16, 4, 40.0, 0.31, 1.5},   // just over 1.5 x the default's error
-    {32, 4, 60.0, 0.29, 1.4},   // within 1.5 x: the cheapest such
-    {32, 6, 70.0, 0.25, 1.3},   // within 1.5 x but dearer
-    {48, 6, 100.0, 0.20, 1.2},  // the default
-    {96, 2, 95.0, 0.18, 1.1},   // within the default's time, less accurate than the next
-    {48, 12, 99.0, 0.15, 1.0},  // within the default's time: the most accurate such
-    {96, 12, 200.0, 0.05, 0.5}, // more accurate still, but twice the time
+    row(8, 2, 20.0, 0.50),    // cheap, far too inaccurate
+    row(16, 4, 40.0, 0.31),   // just over 1.5 x the default's error
+    row(32, 4, 60.0, 0.29),   // within 1.5 x: the cheapest such
+    row(32, 6, 70.0, 0.25),   // within 1.5 x but dearer
+    row(48, 6, 100.0, 0.20),  // the default
+    row(96, 2, 95.0, 0.18),   // within the default's time, less accurate than the next
+    row(48, 12, 99.0, 0.15),  // within the default's time: the most accurate such
+    row(96, 12, 200.0, 0.05), // more accurate still, but twice the time
+    row(48, 6, 400.0, 0.10, 4),     // the default's steps over 4 frames: not the default
+    row(48, 6, 30.0, 0.40, 1, 2),   // at half resolution: not the default either
 };
 
 }  // namespace
 
-TEST_CASE("both render sweeps contain the default step counts and a reference beyond every swept count", "[render][report]") {
+TEST_CASE("both render sweeps contain the default settings and a reference beyond every swept setting", "[render][report]") {
   // The report states the default's error, so the default must be among the rows; and a
-  // reference is only one if it takes at least as many steps as any row it judges.
+  // reference is only one if it takes at least as many steps and frames as any row it judges.
   const regional::Scene defaults;
   for (const auto& o : {studies::RenderSweepOptions::full(), studies::RenderSweepOptions::quick()}) {
-    CHECK(std::count(o.view_steps.begin(), o.view_steps.end(), defaults.view_steps) == 1);
-    CHECK(std::count(o.light_steps.begin(), o.light_steps.end(), defaults.light_steps) == 1);
-    CHECK(*std::max_element(o.view_steps.begin(), o.view_steps.end()) <= o.reference_view);
-    CHECK(*std::max_element(o.light_steps.begin(), o.light_steps.end()) <= o.reference_light);
+    const auto variants = o.variants();
+    CHECK(std::count_if(variants.begin(), variants.end(), [&](const studies::RenderVariant& v) {
+            return v.view_steps == defaults.view_steps && v.light_steps == defaults.light_steps && v.frames == 1 &&
+                   v.divisor == 1;
+          }) == 1);
+    for (const auto& v : variants) {
+      CHECK(v.view_steps <= o.reference_view);
+      CHECK(v.light_steps <= o.reference_light);
+      CHECK(v.frames <= o.reference_frames);
+      CHECK(v.divisor >= 1);
+      CHECK(o.width / v.divisor >= 1);
+    }
+    // Frame counts and resolutions are swept, not only steps.
+    CHECK(std::any_of(variants.begin(), variants.end(), [](const auto& v) { return v.frames > 1; }));
+    CHECK(std::any_of(variants.begin(), variants.end(), [](const auto& v) { return v.divisor > 1; }));
     CHECK(o.width > 0);
     CHECK(o.height > 0);
   }
+  // The issue's reference: 512 view x 64 light steps over every frame count swept.
+  const auto full = studies::RenderSweepOptions::full();
+  CHECK(full.reference_view == 512);
+  CHECK(full.reference_light == 64);
+  const auto variants = full.variants();
+  CHECK(full.reference_frames ==
+        std::max_element(variants.begin(), variants.end(), [](const auto& a, const auto& b) { return a.frames < b.frames; })
+            ->frames);
+}
+
+TEST_CASE("bilinear upsampling lines up pixel centres and clamps at the edges", "[render][report]") {
+  const core::ImageData two{2, 1, 1, {0.0f, 1.0f}};
+  // Output centres at source x = (i + 1/2) 2/4 - 1/2 = -0.25, 0.25, 0.75, 1.25; clamped to [0, 1].
+  const auto four = studies::upsample_bilinear(two, 4, 1);
+  REQUIRE(four.pixels.size() == 4);
+  CHECK(four.pixels[0] == 0.0f);
+  CHECK(four.pixels[1] == Approx(0.25f));
+  CHECK(four.pixels[2] == Approx(0.75f));
+  CHECK(four.pixels[3] == 1.0f);
+  // The same size is the identity; a constant image stays constant; channels kept apart.
+  const core::ImageData rgba{2, 2, 4, {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16}};
+  CHECK(studies::upsample_bilinear(rgba, 2, 2).pixels == rgba.pixels);
+  const core::ImageData flat{3, 2, 2, std::vector<float>(12, 0.5f)};
+  for (float v : studies::upsample_bilinear(flat, 7, 5).pixels) CHECK(v == Approx(0.5f));
+  const auto down_the_middle = studies::upsample_bilinear(rgba, 4, 4);
+  // Pixel (1, 1) of 4x4 sits at source (0.25, 0.25): 0.75^2 p00 + 0.75 0.25 (p10 + p01) + 0.25^2 p11.
+  CHECK(down_the_middle.pixels[(1 * 4 + 1) * 4 + 0] == Approx(0.5625 * 1 + 0.1875 * (5 + 9) + 0.0625 * 13));
+}
+
+TEST_CASE("the render error of an image is measured in display values and relative radiance", "[render][report]") {
+  // Two pixels: the reference is grey 0.1 and 0.3; the image is off by 0.02 in one channel of one pixel.
+  const double exposure = 4.0;
+  const core::ImageData reference{2, 1, 4, {0.1f, 0.1f, 0.1f, 1.0f, 0.3f, 0.3f, 0.3f, 0.0f}};
+  core::ImageData image = reference;
+  image.pixels[4] += 0.02f;
+  RenderErrorRow r;
+  studies::measure_render_error(image, reference, exposure, r);
+  // Relative to the mean radiance 0.2: rms sqrt(0.02^2 / 6) / 0.2, max 0.02 / 0.2.
+  CHECK(r.rms_error == Approx(std::sqrt(0.0004 / 6.0) / 0.2).epsilon(1e-5));
+  CHECK(r.max_error == Approx(0.1).epsilon(1e-5));
+  // Display: the one channel's difference through the PNG's encoding, over 6 values.
+  const auto shown = render::tone_map(image, exposure);
+  const auto shown_reference = render::tone_map(reference, exposure);
+  const double d = shown.pixels[3] - shown_reference.pixels[3];
+  CHECK(d > 0.0);
+  CHECK(r.display_rms == Approx(std::abs(d) / std::sqrt(6.0)).epsilon(1e-6));
+  RenderErrorRow same;
+  studies::measure_render_error(reference, reference, exposure, same);
+  CHECK(same.display_rms == 0.0);
+  CHECK(same.rms_error == 0.0);
+  CHECK_THROWS(studies::measure_render_error(studies::upsample_bilinear(reference, 4, 2), reference, exposure, same));
 }
 
 TEST_CASE("the render error CSV has the documented columns and one line per row", "[render][report]") {
   auto options = studies::RenderSweepOptions::quick();
-  const std::string csv = studies::render_error_csv({{8, 2, 12.5, 0.25, 1.5}, {48, 6, 80.0, 0.0625, 0.75}}, options);
+  const std::string csv = studies::render_error_csv({row(8, 2, 12.5, 0.25, 4, 2), row(48, 6, 80.0, 0.0625)}, options);
   std::stringstream lines(csv);
   std::string line;
   REQUIRE(std::getline(lines, line));
-  CHECK(line == "view_steps,light_steps,clouds_ms,rel_rms,rel_max,reference_view_steps,reference_light_steps,width,height");
+  CHECK(line == "view_steps,light_steps,frames,divisor,clouds_ms,display_rms,rel_rms,rel_max,reference_view_steps,"
+                "reference_light_steps,reference_frames,width,height");
   REQUIRE(std::getline(lines, line));
   const auto first = fields_of(line);
-  REQUIRE(first.size() == 9);
+  REQUIRE(first.size() == 13);
   CHECK(first[0] == "8");
   CHECK(first[1] == "2");
-  CHECK(std::stod(first[2]) == Approx(12.5));
-  CHECK(std::stod(first[3]) == Approx(0.25));
-  CHECK(std::stod(first[4]) == Approx(1.5));
-  CHECK(first[5] == "96");
-  CHECK(first[6] == "12");
-  CHECK(first[7] == "32");
-  CHECK(first[8] == "18");
+  CHECK(first[2] == "4");
+  CHECK(first[3] == "2");
+  CHECK(std::stod(first[4]) == Approx(12.5));
+  CHECK(std::stod(first[5]) == Approx(0.25));
+  CHECK(std::stod(first[6]) == Approx(0.5));
+  CHECK(std::stod(first[7]) == Approx(2.0));
+  CHECK(first[8] == "96");
+  CHECK(first[9] == "12");
+  CHECK(first[10] == "2");
+  CHECK(first[11] == "32");
+  CHECK(first[12] == "18");
   REQUIRE(std::getline(lines, line));
   CHECK(fields_of(line)[0] == "48");
-  CHECK(std::stod(fields_of(line)[3]) == Approx(0.0625));
+  CHECK(std::stod(fields_of(line)[5]) == Approx(0.0625));
   CHECK_FALSE(std::getline(lines, line));
   CHECK(studies::render_error_csv({}, options).find('\n') == csv.find('\n'));  // only the header
 }
@@ -89,16 +164,18 @@ TEST_CASE("the render error CSV has the documented columns and one line per row"
 TEST_CASE("the render diagram draws one polyline per light-step count labels view steps and rings the default",
           "[render][report]") {
   const std::string svg = studies::render_error_svg(table, "title & <device>", "subtitle", 48, 6);
-  CHECK(count_of(svg, "<polyline") == 4);  // light 2, 4, 6, 12
-  CHECK(count_of(svg, "r='8'") == 1);      // the ring around the default
-  CHECK(count_of(svg, "<circle") == table.size() + 1);
+  CHECK(count_of(svg, "<polyline") == 4);  // light 2, 4, 6, 12: the one-frame full-resolution rows
+  CHECK(count_of(svg, "r='8'") == 1);      // the ring around the default, not around its 4-frame twin
+  CHECK(count_of(svg, "<circle") == table.size() - 2 + 1);
+  CHECK(svg.find(">48x6 4f</text>") != std::string::npos);  // the other variants, labelled
+  CHECK(svg.find(">48x6 1/2</text>") != std::string::npos);
   CHECK(svg.find(">96</text>") != std::string::npos);  // a view-step label
   CHECK(svg.find("12 light steps") != std::string::npos);
   CHECK(svg.find("title &amp; &lt;device&gt;") != std::string::npos);
   CHECK(svg.rfind("</svg>") != std::string::npos);
   // A zero error (the reference's own steps) has no place on a log scale: left out, and said so.
   std::vector<RenderErrorRow> with_zero = table;
-  with_zero.push_back({384, 24, 900.0, 0.0, 0.0});
+  with_zero.push_back(row(384, 24, 900.0, 0.0));
   const std::string svg_zero = studies::render_error_svg(with_zero, "t", "s", 48, 6);
   CHECK(count_of(svg_zero, "<polyline") == 4);
   CHECK(svg_zero.find("zero-error rows not drawn") != std::string::npos);
@@ -145,14 +222,21 @@ TEST_CASE("the render summary section names the defaults their error and the two
   const std::string md = studies::render_summary_markdown(table, options, studies::choose_render_steps(table, 48, 6), 48, 6);
   CHECK(md.find("## Render: image error against run time") == 0);
   CHECK(md.find("160 x 90") != std::string::npos);
-  CHECK(md.find("384 view x 24 light steps") != std::string::npos);
-  CHECK(md.find("Defaults (of `nephele render` and scene files): 48 view x 6 light steps, rel rms 0.2000") !=
+  CHECK(md.find("512 view x 64 light steps over 4 frames") != std::string::npos);
+  CHECK(md.find("Defaults (of `nephele render` and scene files): 48 view x 6 light steps, display rms 0.2000") !=
         std::string::npos);
-  CHECK(md.find("Cheapest within 1.5x the default's error (rel rms <= 0.3000): 32 view x 4 light steps, rel rms "
-                "0.2900, 60.0 ms (0.60x the default's time)") != std::string::npos);
-  CHECK(md.find("Most accurate within the default's time (<= 100.0 ms): 48 view x 12 light steps, rel rms 0.1500 "
+  CHECK(md.find("Cheapest within 1.5x the default's error (display rms <= 0.3000): 48 view x 6 light steps, 1/2 "
+                "resolution, display rms 0.4000") == std::string::npos);  // half resolution is too inaccurate here
+  CHECK(md.find("Cheapest within 1.5x the default's error (display rms <= 0.3000): 32 view x 4 light steps, display "
+                "rms 0.2900, 60.0 ms (0.60x the default's time)") != std::string::npos);
+  CHECK(md.find("Most accurate within the default's time (<= 100.0 ms): 48 view x 12 light steps, display rms 0.1500 "
                 "(0.75x the default's error)") != std::string::npos);
+  CHECK(md.find("| 48 | 6 | 4 | 1/1 | 400.0 |") != std::string::npos);
   CHECK(count_of(md, "\n| ") == table.size() + 1);  // the header and one table line per row
+  CHECK(md.find("Caution") == std::string::npos);
+  const std::string limited =
+      studies::render_summary_markdown(table, options, studies::choose_render_steps(table, 48, 6), 48, 6, 17);
+  CHECK(limited.find("Caution: 17 of the reference's 14400 pixels") != std::string::npos);
   const std::string without =
       studies::render_summary_markdown(table, options, studies::choose_render_steps(table, 64, 6), 64, 6);
   CHECK(without.find("not in this sweep") != std::string::npos);
@@ -169,14 +253,18 @@ TEST_CASE("the render error sweep is exactly zero at the reference's own step co
   studies::RenderSweepOptions options;
   options.view_steps = {6, 12};
   options.light_steps = {3};
+  options.extra = {{12, 3, 2, 1}, {12, 3, 1, 2}};
   options.reference_view = 12;
   options.reference_light = 3;
+  options.reference_frames = 1;
   options.width = 16;
   options.height = 8;
   int reported = 0;
-  const auto rows = studies::render_error_sweep(scene, options, [&](const RenderErrorRow&) { ++reported; });
-  REQUIRE(rows.size() == 2);
-  CHECK(reported == 2);
+  unsigned limited = 99;
+  const auto rows = studies::render_error_sweep(scene, options, [&](const RenderErrorRow&) { ++reported; }, &limited);
+  REQUIRE(rows.size() == 4);
+  CHECK(reported == 4);
+  CHECK(limited == 0);
   CHECK(rows[0].view_steps == 6);
   CHECK(std::isfinite(rows[0].rms_error));
   CHECK(rows[0].rms_error > 0.0);
@@ -184,5 +272,14 @@ TEST_CASE("the render error sweep is exactly zero at the reference's own step co
   CHECK(rows[1].view_steps == 12);
   CHECK(rows[1].rms_error == 0.0);  // rendering is deterministic
   CHECK(rows[1].max_error == 0.0);
-  for (const auto& r : rows) CHECK(r.time_ms > 0.0);
+  CHECK(rows[1].display_rms == 0.0);
+  // The same steps over two frames (another jitter added) and at half resolution differ from it.
+  CHECK(rows[2].frames == 2);
+  CHECK(rows[2].display_rms > 0.0);
+  CHECK(rows[3].divisor == 2);
+  CHECK(rows[3].display_rms > 0.0);
+  for (const auto& r : rows) {
+    CHECK(r.time_ms > 0.0);
+    CHECK(r.display_rms <= 1.0);
+  }
 }

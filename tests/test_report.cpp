@@ -11,6 +11,7 @@
 #include <map>
 #include <random>
 #include <set>
+#include <tuple>
 #include <sstream>
 
 #include "cli_support.hpp"
@@ -163,7 +164,8 @@ TEST_CASE("report --quick writes the CSV the diagram and the summary and the not
 TEST_CASE("report --quick writes the render error CSV and diagram and a render section in the summary",
           "[report][render][cli]") {
   // The warp part made as small as it goes; the render part is the quick one (view 8, 16, 48 x
-  // light 2, 6 against 96 x 12 steps), at a frame size of its own.
+  // light 2, 12, the defaults over 2 frames and at 1/2 resolution, against 96 x 12 steps over 2
+  // frames), at a frame size of its own.
   const std::string small_warp = "--quick --sizes 8 --steps 10 --tolerances 1e-2 --samples 1";
   TemporaryDirectory out;
   const Run r = run("report " + small_warp + " --render-size 24x12 --out " + out.path.string());
@@ -173,37 +175,63 @@ TEST_CASE("report --quick writes the render error CSV and diagram and a render s
   std::stringstream lines(read_file(out.path / "render_error.csv"));
   std::string line;
   std::getline(lines, line);
-  CHECK(line == "view_steps,light_steps,clouds_ms,rel_rms,rel_max,reference_view_steps,reference_light_steps,width,height");
-  std::set<std::pair<int, int>> steps;
+  CHECK(line == "view_steps,light_steps,frames,divisor,clouds_ms,display_rms,rel_rms,rel_max,reference_view_steps,"
+                "reference_light_steps,reference_frames,width,height");
+  std::set<std::tuple<int, int, int, int>> variants;
   int rows = 0;
   while (std::getline(lines, line)) {
     const auto fields = split(line, ',');
-    REQUIRE(fields.size() == 9);
-    steps.insert({std::stoi(fields[0]), std::stoi(fields[1])});
-    for (size_t k = 2; k < 5; ++k) {
+    REQUIRE(fields.size() == 13);
+    variants.insert({std::stoi(fields[0]), std::stoi(fields[1]), std::stoi(fields[2]), std::stoi(fields[3])});
+    for (size_t k = 4; k < 8; ++k) {
       const double v = std::stod(fields[k]);
       CHECK(std::isfinite(v));
       CHECK(v >= 0.0);
     }
-    CHECK(std::stod(fields[3]) > 0.0);  // none of the quick runs is the reference's 96 x 12
-    CHECK(fields[5] == "96");
-    CHECK(fields[6] == "12");
-    CHECK(fields[7] == "24");
-    CHECK(fields[8] == "12");
+    // None of the quick runs is the reference (96 x 12 over 2 frames); display values lie in [0, 1].
+    CHECK(std::stod(fields[5]) > 0.0);
+    CHECK(std::stod(fields[5]) <= 1.0);
+    CHECK(fields[8] == "96");
+    CHECK(fields[9] == "12");
+    CHECK(fields[10] == "2");
+    CHECK(fields[11] == "24");
+    CHECK(fields[12] == "12");
     ++rows;
   }
-  CHECK(rows == 6);
-  CHECK(steps == std::set<std::pair<int, int>>{{8, 2}, {8, 12}, {16, 2}, {16, 12}, {48, 2}, {48, 12}});
+  CHECK(rows == 8);
+  CHECK(variants == std::set<std::tuple<int, int, int, int>>{{8, 2, 1, 1},
+                                                             {8, 12, 1, 1},
+                                                             {16, 2, 1, 1},
+                                                             {16, 12, 1, 1},
+                                                             {48, 2, 1, 1},
+                                                             {48, 12, 1, 1},
+                                                             {48, 12, 2, 1},
+                                                             {48, 12, 1, 2}});
   const std::string svg = read_file(out.path / "render_error_vs_runtime.svg");
   size_t polylines = 0;
   for (size_t at = svg.find("<polyline"); at != std::string::npos; at = svg.find("<polyline", at + 1)) ++polylines;
   CHECK(polylines == 2);
+  CHECK(svg.find(">48x12 2f</text>") != std::string::npos);
+  CHECK(svg.find(">48x12 1/2</text>") != std::string::npos);
   const std::string summary = read_file(out.path / "summary.md");
   CHECK(summary.find("Best speed-up at equal error") != std::string::npos);  // the warp part is still there
   CHECK(summary.find("## Render: image error against run time") != std::string::npos);
-  CHECK(summary.find("Defaults (of `nephele render` and scene files): 48 view x 12 light steps") != std::string::npos);
+  CHECK(summary.find("Defaults (of `nephele render` and scene files): 48 view x 12 light steps, display rms") !=
+        std::string::npos);
   CHECK(summary.find("Cheapest within 1.5x the default's error") != std::string::npos);
   CHECK(summary.find("Most accurate within the default's time") != std::string::npos);
+
+  // `report render`: the render sweep alone, no warp files.
+  TemporaryDirectory render_only;
+  const Run only = run("report render --quick --render-size 16x8 --out " + render_only.path.string());
+  INFO(only.output);
+  REQUIRE(only.exit_code == 0);
+  CHECK(fs::exists(render_only.path / "render_error.csv"));
+  CHECK(fs::exists(render_only.path / "render_error_vs_runtime.svg"));
+  CHECK_FALSE(fs::exists(render_only.path / "error_vs_runtime.csv"));
+  const std::string only_summary = read_file(render_only.path / "summary.md");
+  CHECK(only_summary.find("## Render: image error against run time") == 0);
+  CHECK(only_summary.find("speed-up") == std::string::npos);
 
   // --no-render writes neither render file.
   TemporaryDirectory skipped;

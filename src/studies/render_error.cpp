@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iostream>
+#include <stdexcept>
 
 #include "io/weather_files.hpp"
 #include "render/scene_renderer.hpp"
@@ -11,15 +12,27 @@ namespace nephele::studies {
 
 using render::NoiseVolume;
 using render::PreparedScene;
-using render::RenderSettings;
 using render::SceneRender;
+
+std::vector<RenderVariant> RenderSweepOptions::variants() const {
+  std::vector<RenderVariant> all;
+  for (int v : view_steps)
+    for (int l : light_steps) all.push_back({v, l, 1, 1});
+  all.insert(all.end(), extra.begin(), extra.end());
+  return all;
+}
 
 RenderSweepOptions RenderSweepOptions::full() {
   RenderSweepOptions o;
   o.view_steps = {8, 16, 32, 48, 96};
   o.light_steps = {2, 4, 6, 12};
-  o.reference_view = 384;
-  o.reference_light = 24;
+  const regional::Scene d;
+  o.extra = {{d.view_steps, d.light_steps, 2, 1}, {d.view_steps, d.light_steps, 4, 1},
+             {d.view_steps, d.light_steps, 1, 2}, {d.view_steps, d.light_steps, 1, 4},
+             {24, 6, 4, 1},                       {d.view_steps, d.light_steps, 4, 2}};
+  o.reference_view = 512;
+  o.reference_light = 64;
+  o.reference_frames = 4;
   o.width = 160;
   o.height = 90;
   return o;
@@ -29,57 +42,124 @@ RenderSweepOptions RenderSweepOptions::quick() {
   RenderSweepOptions o;
   o.view_steps = {8, 16, 48};
   o.light_steps = {2, 12};  // the default light steps among them
+  const regional::Scene d;
+  o.extra = {{d.view_steps, d.light_steps, 2, 1}, {d.view_steps, d.light_steps, 1, 2}};
   o.reference_view = 96;
   o.reference_light = 12;
+  o.reference_frames = 2;
   o.width = 32;
   o.height = 18;
   return o;
 }
 
+core::ImageData upsample_bilinear(const core::ImageData& image, int width, int height) {
+  if (image.width < 1 || image.height < 1 || width < 1 || height < 1)
+    throw std::invalid_argument("upsample_bilinear: empty image");
+  core::ImageData out{width, height, image.channels, {}};
+  out.pixels.resize(static_cast<size_t>(width) * height * image.channels);
+  // Pixel centres line up: output pixel x covers the source coordinate (x + 1/2) w/W - 1/2.
+  const auto source = [](int i, int from, int to, int& i0, int& i1, float& t) {
+    const double s = std::clamp((i + 0.5) * from / to - 0.5, 0.0, from - 1.0);
+    i0 = static_cast<int>(std::floor(s));
+    i1 = std::min(i0 + 1, from - 1);
+    t = static_cast<float>(s - i0);
+  };
+  for (int y = 0; y < height; ++y) {
+    int y0, y1;
+    float ty;
+    source(y, image.height, height, y0, y1, ty);
+    for (int x = 0; x < width; ++x) {
+      int x0, x1;
+      float tx;
+      source(x, image.width, width, x0, x1, tx);
+      const auto at = [&](int xi, int yi, int c) {
+        return image.pixels[(static_cast<size_t>(yi) * image.width + xi) * image.channels + c];
+      };
+      for (int c = 0; c < image.channels; ++c) {
+        const float top = at(x0, y0, c) + tx * (at(x1, y0, c) - at(x0, y0, c));
+        const float bottom = at(x0, y1, c) + tx * (at(x1, y1, c) - at(x0, y1, c));
+        out.pixels[(static_cast<size_t>(y) * width + x) * image.channels + c] = top + ty * (bottom - top);
+      }
+    }
+  }
+  return out;
+}
+
+void measure_render_error(const core::ImageData& image, const core::ImageData& reference, double exposure,
+                          RenderErrorRow& row) {
+  if (image.width != reference.width || image.height != reference.height || image.channels != reference.channels ||
+      image.channels < 3)
+    throw std::invalid_argument("measure_render_error: images of different sizes");
+  const auto& p = image.pixels;
+  const auto& ref = reference.pixels;
+  const size_t n = ref.size() / reference.channels;
+  double mean = 0;
+  for (size_t k = 0; k < ref.size(); k += reference.channels) mean += (ref[k] + ref[k + 1] + ref[k + 2]) / 3.0;
+  mean /= static_cast<double>(n);
+  double sum = 0, worst = 0;
+  for (size_t k = 0; k < ref.size(); k += reference.channels)
+    for (int c = 0; c < 3; ++c) {
+      const double d = std::abs(p[k + c] - ref[k + c]);
+      sum += d * d;
+      worst = std::max(worst, d);
+    }
+  row.rms_error = mean > 0 ? std::sqrt(sum / (3.0 * n)) / mean : 0.0;
+  row.max_error = mean > 0 ? worst / mean : 0.0;
+  const core::ImageData shown = render::tone_map(image, exposure);
+  const core::ImageData shown_reference = render::tone_map(reference, exposure);
+  double display = 0;
+  for (size_t k = 0; k < shown.pixels.size(); ++k) {
+    const double d = shown.pixels[k] - shown_reference.pixels[k];
+    display += d * d;
+  }
+  row.display_rms = std::sqrt(display / static_cast<double>(shown.pixels.size()));
+}
+
 std::vector<RenderErrorRow> render_error_sweep(const regional::Scene& scene, const RenderSweepOptions& options,
-                                               const std::function<void(const RenderErrorRow&)>& progress) {
+                                               const std::function<void(const RenderErrorRow&)>& progress,
+                                               unsigned* reference_limited) {
   regional::Scene base = scene;
   base.width = options.width;
   base.height = options.height;
-  // The weather and the noise volume do not depend on the step counts: made once, shared by
-  // every render of the sweep.
+  base.frames = 1;
+  // The weather and the noise volume depend neither on the step counts nor on the frame size:
+  // made once, shared by every render of the sweep (the camera is made again per size).
   const PreparedScene prepared = render::prepare_scene(base, io::read_scene_weather(base));
-  const RenderSettings settings = render::render_settings(base);
-  const NoiseVolume noise(settings.noise_size, settings.seed);
-  regional::Scene reference_scene = base;
-  reference_scene.view_steps = options.reference_view;
-  reference_scene.light_steps = options.reference_light;
-  const SceneRender reference = render::render_prepared(prepared, reference_scene, &noise);
+  const NoiseVolume noise(render::render_settings(base).noise_size, render::render_settings(base).seed);
+  const auto render_variant = [&](const RenderVariant& v, double* time_ms) {
+    regional::Scene s = base;
+    s.view_steps = v.view_steps;
+    s.light_steps = v.light_steps;
+    s.frames = v.frames;
+    PreparedScene at_size = prepared;
+    if (v.divisor > 1) {
+      s.width = std::max(1, options.width / v.divisor);
+      s.height = std::max(1, options.height / v.divisor);
+      at_size.partial.camera = render::scene_camera(s);
+    }
+    const SceneRender r = render::render_prepared(at_size, s, &noise);
+    if (time_ms != nullptr)
+      for (const auto& [name, ms] : r.render.timings_ms)
+        if (name == "clouds") *time_ms = ms;
+    return r;
+  };
+  const SceneRender reference =
+      render_variant({options.reference_view, options.reference_light, options.reference_frames, 1}, nullptr);
+  if (reference_limited != nullptr) *reference_limited = reference.render.loop_limited_pixels;
   if (reference.render.loop_limited_pixels > 0)
     std::cerr << "warning: the " << options.reference_view << " x " << options.reference_light << " reference has "
               << reference.render.loop_limited_pixels
               << " pixels at 65535 or more shader loop iterations; llvmpipe cuts those short, so the errors "
                  "there are not to be trusted (docs/rendering.md)\n";
-  const auto& ref = reference.render.radiance.pixels;
-  double mean = 0;
-  for (size_t k = 0; k < ref.size(); k += 4) mean += (ref[k] + ref[k + 1] + ref[k + 2]) / 3.0;
-  mean /= ref.size() / 4.0;
   std::vector<RenderErrorRow> rows;
-  for (int v : options.view_steps) {
-    for (int l : options.light_steps) {
-      regional::Scene s = base;
-      s.view_steps = v;
-      s.light_steps = l;
-      const SceneRender r = render::render_prepared(prepared, s, &noise);
-      double time = 0;
-      for (const auto& [name, ms] : r.render.timings_ms)
-        if (name == "clouds") time = ms;
-      double sum = 0, worst = 0;
-      const auto& p = r.render.radiance.pixels;
-      for (size_t k = 0; k < p.size(); k += 4)
-        for (int c = 0; c < 3; ++c) {
-          const double d = std::abs(p[k + c] - ref[k + c]);
-          sum += d * d;
-          worst = std::max(worst, d);
-        }
-      rows.push_back({v, l, time, std::sqrt(sum / (3.0 * p.size() / 4.0)) / mean, worst / mean});
-      if (progress) progress(rows.back());
-    }
+  for (const RenderVariant& v : options.variants()) {
+    RenderErrorRow row{v.view_steps, v.light_steps, v.frames, v.divisor};
+    const SceneRender r = render_variant(v, &row.time_ms);
+    const core::ImageData& image = r.render.radiance;
+    measure_render_error(v.divisor > 1 ? upsample_bilinear(image, options.width, options.height) : image,
+                         reference.render.radiance, base.exposure, row);
+    rows.push_back(row);
+    if (progress) progress(rows.back());
   }
   return rows;
 }

@@ -1,36 +1,68 @@
 #pragma once
-// Image error of the ray marcher against its run time, over the numbers of view and light steps.
+// Image error of the ray marcher against its run time, over the numbers of view and light steps,
+// the number of frames averaged and the resolution (docs/rendering.md, "Error against run time").
 #include <functional>
 #include <vector>
 
+#include "core/image.hpp"
 #include "regional/scene.hpp"
 
 namespace nephele::studies {
 
-struct RenderErrorRow {
-  int view_steps, light_steps;
-  double time_ms;      // wall-clock time of the clouds pass
-  double rms_error;    // root mean square over pixels and RGB, relative to the reference's mean
-  double max_error;    // largest absolute difference, relative to the reference's mean
+// One way of rendering the sweep's frame: step counts, frames averaged (each with its own jitter
+// of the march, render::RenderSettings::frames) and a resolution divisor: the frame is rendered at
+// width/divisor x height/divisor and upsampled bilinearly (in linear radiance) to the full size.
+struct RenderVariant {
+  int view_steps = 0, light_steps = 0;
+  int frames = 1;
+  int divisor = 1;
 };
 
-// The step counts a sweep tries, its reference and its frame size: the one place that defines
-// the sweeps of `nephele bench render` and `nephele report` (docs/rendering.md).
+struct RenderErrorRow {
+  int view_steps = 0, light_steps = 0;
+  int frames = 1, divisor = 1;
+  double time_ms = 0;      // wall-clock time of the clouds pass, all frames together
+  double display_rms = 0;  // RMS over pixels and RGB of the display values in [0, 1] (the PNG's)
+  double rms_error = 0;    // RMS over pixels and RGB of the radiance, relative to the reference's mean
+  double max_error = 0;    // largest absolute radiance difference, relative to the reference's mean
+};
+
+// What a sweep renders, its reference and its frame size: the one place that defines the sweeps
+// of `nephele bench render` and `nephele report` (docs/rendering.md).
 struct RenderSweepOptions {
+  // Every view x light pair at one frame and full resolution, then the extra variants.
   std::vector<int> view_steps, light_steps;
-  int reference_view = 384, reference_light = 24;
+  std::vector<RenderVariant> extra;
+  int reference_view = 512, reference_light = 64, reference_frames = 4;
   int width = 160, height = 90;
 
-  // View 8, 16, 32, 48, 96 x light 2, 4, 6, 12 against 384 x 24 steps, 160 x 90 pixels.
+  std::vector<RenderVariant> variants() const;
+
+  // View 8, 16, 32, 48, 96 x light 2, 4, 6, 12; the defaults over 2 and 4 frames and at 1/2 and
+  // 1/4 resolution; 24 x 6 over 4 frames; against 512 x 64 steps over 4 frames, 160 x 90 pixels.
   static RenderSweepOptions full();
-  // View 8, 16, 48 x light 2, 6 against 96 x 12 steps, 32 x 18 pixels (seconds, for CI).
+  // View 8, 16, 48 x light 2, 12, the defaults over 2 frames and at 1/2 resolution, against
+  // 96 x 12 steps over 2 frames, 32 x 18 pixels (seconds, for CI).
   static RenderSweepOptions quick();
 };
 
-// Renders `scene` at the options' frame size with each pair of step counts (view-major order)
-// and compares with a reference rendered with reference_view x reference_light steps; `progress`
-// gets each row when it is done. Needs a current OpenGL 4.5 context.
+// The image a renderer would show at `width` x `height` from one rendered smaller: bilinear
+// between pixel centres, edges clamped. Channels as in `image`.
+core::ImageData upsample_bilinear(const core::ImageData& image, int width, int height);
+
+// The errors of `image` against `reference` (both linear radiance, the same size and channels,
+// RGB first), display_rms through the display encoding at `exposure` (render::tone_map); fills
+// the three error fields of `row`.
+void measure_render_error(const core::ImageData& image, const core::ImageData& reference, double exposure,
+                          RenderErrorRow& row);
+
+// Renders `scene` at the options' frame size with each variant (grid first, view-major) and
+// compares with the reference; `progress` gets each row when it is done. `reference_limited`
+// (optional) gets the number of the reference's pixels that llvmpipe's loop limit cut short
+// (docs/rendering.md): where it is not 0 the errors there are not to be trusted. Needs a current
+// OpenGL 4.5 context.
 std::vector<RenderErrorRow> render_error_sweep(const regional::Scene& scene, const RenderSweepOptions& options,
-                                               const std::function<void(const RenderErrorRow&)>& progress = {});
+                                               const std::function<void(const RenderErrorRow&)>& progress = {},
+                                               unsigned* reference_limited = nullptr);
 
 }  // namespace nephele::studies

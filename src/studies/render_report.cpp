@@ -9,15 +9,22 @@
 namespace nephele::studies {
 namespace {
 
-bool is_default(const RenderErrorRow& r, int view, int light) { return r.view_steps == view && r.light_steps == light; }
-
-std::string steps_name(const RenderErrorRow& r) {
-  return std::to_string(r.view_steps) + " view x " + std::to_string(r.light_steps) + " light steps";
+bool is_default(const RenderErrorRow& r, int view, int light) {
+  return r.view_steps == view && r.light_steps == light && r.frames == 1 && r.divisor == 1;
 }
+
+bool on_grid(const RenderErrorRow& r) { return r.frames == 1 && r.divisor == 1; }
 
 const char* const palette[] = {"#1f77b4", "#ff7f0e", "#2ca02c", "#9467bd", "#d62728", "#8c564b", "#e377c2", "#17becf"};
 
 }  // namespace
+
+std::string render_variant_name(const RenderErrorRow& r) {
+  std::string name = std::to_string(r.view_steps) + " view x " + std::to_string(r.light_steps) + " light steps";
+  if (r.frames > 1) name += ", " + std::to_string(r.frames) + " frames";
+  if (r.divisor > 1) name += ", 1/" + std::to_string(r.divisor) + " resolution";
+  return name;
+}
 
 RenderStepChoice choose_render_steps(const std::vector<RenderErrorRow>& rows, int default_view, int default_light,
                                      double factor) {
@@ -31,15 +38,15 @@ RenderStepChoice choose_render_steps(const std::vector<RenderErrorRow>& rows, in
   if (!c.has_default) return c;
   const RenderErrorRow& d = c.default_row;
   for (const auto& r : rows) {
-    if (r.rms_error <= factor * d.rms_error &&
+    if (r.display_rms <= factor * d.display_rms &&
         (!c.has_cheapest || r.time_ms < c.cheapest.time_ms ||
-         (r.time_ms == c.cheapest.time_ms && r.rms_error < c.cheapest.rms_error))) {
+         (r.time_ms == c.cheapest.time_ms && r.display_rms < c.cheapest.display_rms))) {
       c.cheapest = r;
       c.has_cheapest = true;
     }
     if (r.time_ms <= d.time_ms &&
-        (!c.has_most_accurate || r.rms_error < c.most_accurate.rms_error ||
-         (r.rms_error == c.most_accurate.rms_error && r.time_ms < c.most_accurate.time_ms))) {
+        (!c.has_most_accurate || r.display_rms < c.most_accurate.display_rms ||
+         (r.display_rms == c.most_accurate.display_rms && r.time_ms < c.most_accurate.time_ms))) {
       c.most_accurate = r;
       c.has_most_accurate = true;
     }
@@ -49,27 +56,30 @@ RenderStepChoice choose_render_steps(const std::vector<RenderErrorRow>& rows, in
 
 std::string render_error_csv(const std::vector<RenderErrorRow>& rows, const RenderSweepOptions& options) {
   std::ostringstream s;
-  s << "view_steps,light_steps,clouds_ms,rel_rms,rel_max,reference_view_steps,reference_light_steps,width,height\n";
-  char line[256];
+  s << "view_steps,light_steps,frames,divisor,clouds_ms,display_rms,rel_rms,rel_max,reference_view_steps,"
+       "reference_light_steps,reference_frames,width,height\n";
+  char line[320];
   for (const auto& r : rows) {
-    std::snprintf(line, sizeof line, "%d,%d,%.4f,%.6e,%.6e,%d,%d,%d,%d\n", r.view_steps, r.light_steps, r.time_ms,
-                  r.rms_error, r.max_error, options.reference_view, options.reference_light, options.width,
-                  options.height);
+    std::snprintf(line, sizeof line, "%d,%d,%d,%d,%.4f,%.6e,%.6e,%.6e,%d,%d,%d,%d,%d\n", r.view_steps, r.light_steps,
+                  r.frames, r.divisor, r.time_ms, r.display_rms, r.rms_error, r.max_error, options.reference_view,
+                  options.reference_light, options.reference_frames, options.width, options.height);
     s << line;
   }
   return s.str();
 }
 
 std::string render_error_table_header() {
-  char line[128];
-  std::snprintf(line, sizeof line, "%6s %6s %10s %12s %12s\n", "view", "light", "clouds_ms", "rel_rms", "rel_max");
+  char line[160];
+  std::snprintf(line, sizeof line, "%6s %6s %6s %4s %10s %12s %12s %12s\n", "view", "light", "frames", "res",
+                "clouds_ms", "display_rms", "rel_rms", "rel_max");
   return line;
 }
 
 std::string render_error_table_line(const RenderErrorRow& r) {
-  char line[128];
-  std::snprintf(line, sizeof line, "%6d %6d %10.1f %12.5f %12.5f\n", r.view_steps, r.light_steps, r.time_ms,
-                r.rms_error, r.max_error);
+  char line[160];
+  const std::string resolution = "1/" + std::to_string(r.divisor);
+  std::snprintf(line, sizeof line, "%6d %6d %6d %4s %10.1f %12.5f %12.5f %12.5f\n", r.view_steps, r.light_steps,
+                r.frames, resolution.c_str(), r.time_ms, r.display_rms, r.rms_error, r.max_error);
   return line;
 }
 
@@ -77,13 +87,14 @@ std::string render_error_svg(const std::vector<RenderErrorRow>& rows, const std:
                              const std::string& subtitle, int default_view, int default_light) {
   std::vector<RenderErrorRow> drawn;
   for (const auto& r : rows)
-    if (r.rms_error > 0) drawn.push_back(r);
+    if (r.display_rms > 0) drawn.push_back(r);
   std::vector<int> lights;
   std::vector<double> times, errors;
   for (const auto& r : drawn) {
-    if (std::find(lights.begin(), lights.end(), r.light_steps) == lights.end()) lights.push_back(r.light_steps);
+    if (on_grid(r) && std::find(lights.begin(), lights.end(), r.light_steps) == lights.end())
+      lights.push_back(r.light_steps);
     times.push_back(r.time_ms);
-    errors.push_back(r.rms_error);
+    errors.push_back(r.display_rms);
   }
   std::sort(lights.begin(), lights.end());
 
@@ -91,16 +102,16 @@ std::string render_error_svg(const std::vector<RenderErrorRow>& rows, const std:
   studies::begin_document(s, 600, 490, title);
   s << "<text x='300' y='38' text-anchor='middle' font-size='11'>" << studies::escape(subtitle) << "</text>\n";
   const studies::LogLogPanel panel(30, 20, times, errors);
-  panel.draw_axes(s, "time of the clouds pass, wall-clock (ms)", "image error, rms relative to the mean radiance");
+  panel.draw_axes(s, "time of the clouds pass, all frames, wall-clock (ms)", "image error, rms of display values [0, 1]");
   // One polyline per light-step count, in order of view steps; each point labelled by them.
   for (size_t li = 0; li < lights.size(); ++li) {
     std::vector<RenderErrorRow> series;
     for (const auto& r : drawn)
-      if (r.light_steps == lights[li]) series.push_back(r);
+      if (on_grid(r) && r.light_steps == lights[li]) series.push_back(r);
     std::sort(series.begin(), series.end(), [](const auto& a, const auto& b) { return a.view_steps < b.view_steps; });
     const std::string colour = palette[li % (sizeof palette / sizeof palette[0])];
     std::vector<std::pair<double, double>> points;
-    for (const auto& r : series) points.emplace_back(panel.x(r.time_ms), panel.y(r.rms_error));
+    for (const auto& r : series) points.emplace_back(panel.x(r.time_ms), panel.y(r.display_rms));
     studies::polyline(s, points, colour);
     for (size_t k = 0; k < series.size(); ++k) {
       const auto [x, y] = points[k];
@@ -110,36 +121,61 @@ std::string render_error_svg(const std::vector<RenderErrorRow>& rows, const std:
       if (is_default(series[k], default_view, default_light)) studies::ring(s, x, y);
     }
   }
+  // The other variants (frames, resolution): grey squares with their own labels.
+  for (const auto& r : drawn) {
+    if (on_grid(r)) continue;
+    const double x = panel.x(r.time_ms), y = panel.y(r.display_rms);
+    studies::marker(s, 1, x, y, "#555555");
+    std::string label = std::to_string(r.view_steps) + "x" + std::to_string(r.light_steps);
+    if (r.frames > 1) label += " " + std::to_string(r.frames) + "f";
+    if (r.divisor > 1) label += " 1/" + std::to_string(r.divisor);
+    s << "<text x='" << x + 6 << "' y='" << y + 12 << "' font-size='10' fill='#555555'>" << studies::escape(label)
+      << "</text>\n";
+  }
   // Legend: colours are light-step counts; labels the view steps; the ring the default.
   double x = 100;
   for (size_t li = 0; li < lights.size(); ++li) {
     studies::legend_line(s, x, 455, palette[li % (sizeof palette / sizeof palette[0])],
-                     std::to_string(lights[li]) + " light steps");
+                         std::to_string(lights[li]) + " light steps");
     x += 110;
   }
-  s << "<text x='100' y='479'>labels: view steps; ring: the default, " << default_view << " view x " << default_light
-    << " light steps" << (drawn.size() < rows.size() ? "; zero-error rows not drawn" : "") << "</text>\n";
+  s << "<text x='100' y='479'>labels: view steps; squares: V x L, frames (f), resolution; ring: the default, "
+    << default_view << " x " << default_light << (drawn.size() < rows.size() ? "; zero-error rows not drawn" : "")
+    << "</text>\n";
   studies::end_document(s);
   return s.str();
 }
 
 std::string render_summary_markdown(const std::vector<RenderErrorRow>& rows, const RenderSweepOptions& options,
-                                    const RenderStepChoice& choice, int default_view, int default_light) {
+                                    const RenderStepChoice& choice, int default_view, int default_light,
+                                    unsigned reference_limited) {
   std::ostringstream s;
-  char line[512];
+  char line[768];
   s << "## Render: image error against run time\n\n";
   std::snprintf(line, sizeof line,
                 "The built-in default scene (Gurten, global cover as the weather) at %d x %d pixels, rendered with each "
-                "pair of view and light steps and compared with a reference of %d view x %d light steps. Errors are "
-                "the RMS and the largest absolute difference over pixels and RGB, relative to the reference's mean "
-                "radiance; times are the wall-clock time of the clouds pass of one frame (render_error.csv, "
-                "render_error_vs_runtime.svg).\n\n",
-                options.width, options.height, options.reference_view, options.reference_light);
+                "pair of view and light steps, over several frames (each with its own jitter) and at lower "
+                "resolutions (upsampled bilinearly), and compared with a reference of %d view x %d light steps over "
+                "%d frames. The error is the RMS over pixels and RGB of the display values in [0, 1] (exposure, "
+                "filmic curve and sRGB as in the PNG); the RMS and the largest difference of the linear radiance, "
+                "relative to the reference's mean, are given beside it. Times are the wall-clock time of the clouds "
+                "pass, all frames together (render_error.csv, render_error_vs_runtime.svg).\n\n",
+                options.width, options.height, options.reference_view, options.reference_light,
+                options.reference_frames);
   s << line;
-  s << "| view steps | light steps | clouds ms | rel rms | rel max | |\n|---|---|---|---|---|---|\n";
+  if (reference_limited > 0) {
+    std::snprintf(line, sizeof line,
+                  "Caution: %u of the reference's %d pixels needed 65535 or more shader loop iterations, where "
+                  "llvmpipe stops every loop; the reference is cut short there.\n\n",
+                  reference_limited, options.width * options.height);
+    s << line;
+  }
+  s << "| view steps | light steps | frames | resolution | clouds ms | display rms | rel rms | rel max | |\n"
+       "|---|---|---|---|---|---|---|---|---|\n";
   for (const auto& r : rows) {
-    std::snprintf(line, sizeof line, "| %d | %d | %.1f | %.4f | %.4f | %s |\n", r.view_steps, r.light_steps, r.time_ms,
-                  r.rms_error, r.max_error, is_default(r, default_view, default_light) ? "default" : "");
+    std::snprintf(line, sizeof line, "| %d | %d | %d | 1/%d | %.1f | %.4f | %.4f | %.4f | %s |\n", r.view_steps,
+                  r.light_steps, r.frames, r.divisor, r.time_ms, r.display_rms, r.rms_error, r.max_error,
+                  is_default(r, default_view, default_light) ? "default" : "");
     s << line;
   }
   s << "\n";
@@ -149,27 +185,31 @@ std::string render_summary_markdown(const std::vector<RenderErrorRow>& rows, con
     return s.str();
   }
   const RenderErrorRow& d = choice.default_row;
-  std::snprintf(line, sizeof line, "- Defaults (of `nephele render` and scene files): %s, rel rms %.4f, rel max %.4f, clouds %.1f ms.\n",
-                steps_name(d).c_str(), d.rms_error, d.max_error, d.time_ms);
+  std::snprintf(line, sizeof line,
+                "- Defaults (of `nephele render` and scene files): %s, display rms %.4f, rel rms %.4f, clouds %.1f ms.\n",
+                render_variant_name(d).c_str(), d.display_rms, d.rms_error, d.time_ms);
   s << line;
   if (choice.has_cheapest) {
     const RenderErrorRow& c = choice.cheapest;
-    std::snprintf(line, sizeof line, "- Cheapest within %.3gx the default's error (rel rms <= %.4f): %s%s, rel rms %.4f, "
+    std::snprintf(line, sizeof line,
+                  "- Cheapest within %.3gx the default's error (display rms <= %.4f): %s%s, display rms %.4f, "
                   "%.1f ms (%.2fx the default's time).\n",
-                  choice.factor, choice.factor * d.rms_error, steps_name(c).c_str(),
-                  is_default(c, default_view, default_light) ? " (the default)" : "", c.rms_error, c.time_ms,
+                  choice.factor, choice.factor * d.display_rms, render_variant_name(c).c_str(),
+                  is_default(c, default_view, default_light) ? " (the default)" : "", c.display_rms, c.time_ms,
                   d.time_ms > 0 ? c.time_ms / d.time_ms : 1.0);
     s << line;
   }
   if (choice.has_most_accurate) {
     const RenderErrorRow& a = choice.most_accurate;
-    std::snprintf(line, sizeof line, "- Most accurate within the default's time (<= %.1f ms): %s%s, rel rms %.4f "
+    std::snprintf(line, sizeof line,
+                  "- Most accurate within the default's time (<= %.1f ms): %s%s, display rms %.4f "
                   "(%.2fx the default's error), %.1f ms.\n",
-                  d.time_ms, steps_name(a).c_str(), is_default(a, default_view, default_light) ? " (the default)" : "",
-                  a.rms_error, d.rms_error > 0 ? a.rms_error / d.rms_error : 1.0, a.time_ms);
+                  d.time_ms, render_variant_name(a).c_str(),
+                  is_default(a, default_view, default_light) ? " (the default)" : "", a.display_rms,
+                  d.display_rms > 0 ? a.display_rms / d.display_rms : 1.0, a.time_ms);
     s << line;
   }
-  s << "\nTimes of one frame each; on a shared machine they vary by tens of percent, so read close calls "
+  s << "\nTimes of one sweep each; on a shared machine they vary by tens of percent, so read close calls "
        "with care.\n";
   return s.str();
 }

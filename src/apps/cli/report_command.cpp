@@ -19,7 +19,10 @@
 
 namespace nephele::cli {
 
-int run_report(const std::vector<std::string>& arguments) {
+int run_report(const std::vector<std::string>& all_arguments) {
+  // `nephele report render`: only the render sweep.
+  const bool render_only = !all_arguments.empty() && all_arguments[0] == "render";
+  const std::vector<std::string> arguments(all_arguments.begin() + (render_only ? 1 : 0), all_arguments.end());
   cover::CoverParameters parameters;
   std::string out(params::run::report_out.default_text), sizes, steps, tolerances, render_size;
   bool quick = false, no_render = false, quiet = false;
@@ -30,9 +33,11 @@ int run_report(const std::vector<std::string>& arguments) {
                   "the warped points with a reference solution at sample points. Writes error_vs_runtime.csv,\n"
                   "error_vs_runtime.svg (work-precision diagram), stability.csv and summary.md into --out.\n"
                   "The flow time T = iterations * step stays fixed; fixed-step schemes use h = T / steps.\n"
-                  "Then renders the default scene with view steps 8..96 x light steps 2..12 against 384 x 24\n"
-                  "(quick: 8,16,48 x 2,6 against 96 x 12) into render_error.csv, render_error_vs_runtime.svg\n"
-                  "and a section of summary.md.", params::report);
+                  "Then renders the default scene with view steps 8..96 x light steps 2..12, over 2 and 4\n"
+                  "frames and at 1/2 and 1/4 resolution, against 512 x 64 steps over 4 frames (quick: 8,16,48\n"
+                  "x 2,12 against 96 x 12 over 2 frames) into render_error.csv, render_error_vs_runtime.svg and\n"
+                  "a section of summary.md; the error is the RMS of the display values in [0, 1].\n"
+                  "`nephele report render [options]` runs only the render sweep.", params::report);
   options.bind(params::run::report_out, &out);
   options.bind(params::run::report_quick, &quick);
   options.bind(params::run::quiet, &quiet);
@@ -77,7 +82,9 @@ int run_report(const std::vector<std::string>& arguments) {
     throw UsageError("--out: '" + out + "' exists and is not a directory");
 
   gpu::EglContext context;
-  for (int size : sweep.sizes) cover::check_cover_fits(context, size);
+  if (render_only && no_render) throw UsageError("report render: --no-render leaves nothing to do");
+  if (!render_only)
+    for (int size : sweep.sizes) cover::check_cover_fits(context, size);
   if (!no_render) render::check_render_fits(context, render_sweep.width, render_sweep.height, "--render-size");
   std::error_code error;
   std::filesystem::create_directories(directory, error);
@@ -86,39 +93,50 @@ int run_report(const std::vector<std::string>& arguments) {
   // Opened before the sweep, so that an interrupt at any time removes its temporary directory.
   io::OutputSet outputs(directory, io::OutputSet::Scope::directory);
   std::cout << "device: " << context.info().renderer << " (" << context.info().version << ")\n" << std::flush;
-  core::Progress sweep_progress("report", sweep.planned_runs(), core::Progress::for_stderr(quiet));
-  studies::SweepResult result =
-      studies::run_sweep(sweep, [](const std::string& line) { std::cout << line << "\n" << std::flush; },
-                         [&](int done) { sweep_progress.update(done, "warp runs"); });
-  sweep_progress.finish();
+  studies::SweepResult result;
+  if (!render_only) {
+    core::Progress sweep_progress("report", sweep.planned_runs(), core::Progress::for_stderr(quiet));
+    result = studies::run_sweep(sweep, [](const std::string& line) { std::cout << line << "\n" << std::flush; },
+                                [&](int done) { sweep_progress.update(done, "warp runs"); });
+    sweep_progress.finish();
+  }
   result.device = context.info().renderer + " (" + context.info().version + ")";
 
   std::vector<studies::RenderErrorRow> render_rows;
+  unsigned reference_limited = 0;
   if (!no_render) {
     std::cout << "render sweep: default scene at " << render_sweep.width << "x" << render_sweep.height
               << ", reference " << render_sweep.reference_view << " view x " << render_sweep.reference_light
-              << " light steps\n"
+              << " light steps over " << render_sweep.reference_frames << " frames\n"
               << studies::render_error_table_header() << std::flush;
-    core::Progress render_progress("report", static_cast<double>(render_sweep.view_steps.size() * render_sweep.light_steps.size()),
+    core::Progress render_progress("report", static_cast<double>(render_sweep.variants().size()),
                                    core::Progress::for_stderr(quiet));
+    render_progress.update(0, "rendering the reference");
     int renders_done = 0;
-    render_rows = studies::render_error_sweep(render_scene, render_sweep, [&](const studies::RenderErrorRow& row) {
-      std::cout << studies::render_error_table_line(row) << std::flush;
-      render_progress.update(++renders_done, "renders");
-    });
+    render_rows = studies::render_error_sweep(
+        render_scene, render_sweep,
+        [&](const studies::RenderErrorRow& row) {
+          std::cout << studies::render_error_table_line(row) << std::flush;
+          render_progress.update(++renders_done, "renders");
+        },
+        &reference_limited);
+    render_progress.finish();
   }
   const studies::RenderStepChoice render_choice =
       studies::choose_render_steps(render_rows, render_scene.view_steps, render_scene.light_steps);
 
-  outputs.write("error_vs_runtime.csv", studies::error_csv(result.rows));
-  outputs.write("stability.csv", studies::stability_csv(result.rows));
-  outputs.write("error_vs_runtime.svg",
-                studies::work_precision_svg(result.rows, "Warp error against run time, " + result.device,
-                                            result.cpu_device ? "CPU time of the curl + warp passes, all threads (ms)"
-                                                              : "time of the curl + warp passes (ms)"));
-  std::string summary = studies::summary_markdown(result, sweep);
+  std::string summary;
+  if (!render_only) {
+    outputs.write("error_vs_runtime.csv", studies::error_csv(result.rows));
+    outputs.write("stability.csv", studies::stability_csv(result.rows));
+    outputs.write("error_vs_runtime.svg",
+                  studies::work_precision_svg(result.rows, "Warp error against run time, " + result.device,
+                                              result.cpu_device ? "CPU time of the curl + warp passes, all threads (ms)"
+                                                                : "time of the curl + warp passes (ms)"));
+    summary = studies::summary_markdown(result, sweep) + "\n";
+  }
   if (no_render) {
-    summary += "\n## Render: image error against run time\n\nNot run (--no-render).\n";
+    summary += "## Render: image error against run time\n\nNot run (--no-render).\n";
   } else {
     outputs.write("render_error.csv", studies::render_error_csv(render_rows, render_sweep));
     outputs.write(
@@ -127,10 +145,11 @@ int run_report(const std::vector<std::string>& arguments) {
                                  "Image error against run time, default scene, " + std::to_string(render_sweep.width) +
                                      " x " + std::to_string(render_sweep.height) + " pixels",
                                  "reference " + std::to_string(render_sweep.reference_view) + " view x " +
-                                     std::to_string(render_sweep.reference_light) + " light steps; " + result.device,
+                                     std::to_string(render_sweep.reference_light) + " light steps, " +
+                                     std::to_string(render_sweep.reference_frames) + " frames; " + result.device,
                                  render_scene.view_steps, render_scene.light_steps));
-    summary += "\n" + studies::render_summary_markdown(render_rows, render_sweep, render_choice,
-                                                      render_scene.view_steps, render_scene.light_steps);
+    summary += studies::render_summary_markdown(render_rows, render_sweep, render_choice, render_scene.view_steps,
+                                                render_scene.light_steps, reference_limited);
   }
   outputs.write("summary.md", summary);
   outputs.commit();
@@ -142,14 +161,14 @@ int run_report(const std::vector<std::string>& arguments) {
                 << (c.has_equal_time ? std::to_string(c.error_ratio) + "x less error" : std::string("no run"))
                 << "\n";
   if (render_choice.has_default)
-    std::cout << "render: defaults " << render_choice.default_row.view_steps << " x "
-              << render_choice.default_row.light_steps << ": rel rms " << render_choice.default_row.rms_error << "; within "
-              << render_choice.factor << "x its error the cheapest is " << render_choice.cheapest.view_steps << " x "
-              << render_choice.cheapest.light_steps << " (" << render_choice.cheapest.time_ms
-              << " ms); within its time the most accurate is " << render_choice.most_accurate.view_steps << " x "
-              << render_choice.most_accurate.light_steps << " (rel rms " << render_choice.most_accurate.rms_error
-              << ")\n";
-  std::cout << "wrote " << (directory / "error_vs_runtime.csv").string() << ", error_vs_runtime.svg, stability.csv, "
+    std::cout << "render: defaults " << studies::render_variant_name(render_choice.default_row) << ": display rms "
+              << render_choice.default_row.display_rms << "; within " << render_choice.factor
+              << "x its error the cheapest is " << studies::render_variant_name(render_choice.cheapest) << " ("
+              << render_choice.cheapest.time_ms << " ms); within its time the most accurate is "
+              << studies::render_variant_name(render_choice.most_accurate) << " (display rms "
+              << render_choice.most_accurate.display_rms << ")\n";
+  std::cout << "wrote " << directory.string() << "/: "
+            << (render_only ? "" : "error_vs_runtime.csv, error_vs_runtime.svg, stability.csv, ")
             << (no_render ? "" : "render_error.csv, render_error_vs_runtime.svg, ") << "summary.md\n";
   return exit_ok;
 }
