@@ -15,6 +15,7 @@
 #include "gl_support.hpp"
 #include "march_tolerance.hpp"
 #include "model/density_volume.hpp"
+#include "regional/terrain.hpp"
 #include "render/cloud_renderer.hpp"
 #include "cover/curl_spline.hpp"
 #include "shader_math/shader_math.hpp"
@@ -813,16 +814,20 @@ TEST_CASE("terrain.glsl on the GPU agrees with the CPU", "[probe][terrain]") {
   std::vector<float> heights;
   for (int j = 0; j < size; ++j)
     for (int i = 0; i < size; ++i) heights.push_back(600.0f + 300.0f * std::sin(0.9f * i) * std::cos(0.7f * j));
+  // Ceilings over windows of 3 texels: they bound the ground within 1 texel (the probe's reach).
+  const std::vector<float> ceilings = regional::terrain_ceilings(heights, size, 3);
+  std::vector<float> texels;
+  for (size_t k = 0; k < heights.size(); ++k) texels.insert(texels.end(), {heights[k], ceilings[k]});
   GLuint texture = 0;
   glCreateTextures(GL_TEXTURE_2D, 1, &texture);
-  glTextureStorage2D(texture, 1, GL_R32F, size, size);
-  glTextureSubImage2D(texture, 0, 0, 0, size, size, GL_RED, GL_FLOAT, heights.data());
+  glTextureStorage2D(texture, 1, GL_RG32F, size, size);
+  glTextureSubImage2D(texture, 0, 0, 0, size, size, GL_RG, GL_FLOAT, texels.data());
   glTextureParameteri(texture, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
   glTextureParameteri(texture, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
   glTextureParameteri(texture, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
   glTextureParameteri(texture, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
   glBindTextureUnit(4, texture);
-  const LayeredSource source{size, 1, heights.data()};
+  const TerrainSource source{{size, 1, heights.data()}, {size, 1, ceilings.data()}};
   auto cpu = [&](const mat4& x) { return probe_terrain(x, source); };
 
   const float R = 6367000.0f;
@@ -845,6 +850,7 @@ TEST_CASE("terrain.glsl on the GPU agrees with the CPU", "[probe][terrain]") {
     const vec4 xy(r(-25000.0f, 25000.0f), r(-25000.0f, 25000.0f), 0, 0);  // also outside the square
     const vec4 q(xy.x, xy.y, R + r(200.0f, 1500.0f), 0);
     cases.push_back({arguments(0, vec4(0, 0, float(enabled), 0), q), 25000.0f * kArithmetic});
+    // (altitude, clearance, ceiling): the ceiling is interpolated like the altitude.
     cases.push_back({arguments(1, vec4(0, 0, float(enabled), 0), q, vec4(0), xy), clearance});
     const float fall = r(0.15f, 0.8f), azimuth = r(-3.0f, 3.0f);
     const vec4 down(std::cos(fall) * std::sin(azimuth), std::cos(fall) * std::cos(azimuth), -std::sin(fall), 0);
@@ -871,6 +877,17 @@ TEST_CASE("terrain.glsl on the GPU agrees with the CPU", "[probe][terrain]") {
     const vec4 n = normalize(vec4(r(-0.5f, 0.5f), r(-0.5f, 0.5f), 1.0f, 0.0f));
     cases.push_back({arguments(4, vec4(r(0.0f, 4000.0f), 0, 0, 0), vec4(0), n), kArithmetic});
   }
+  // At a texel's centre the ceiling is the highest of the 7 x 7 texels around it (window 3,
+  // cut at the edges), by brute force here; bilinear weights there are 1 and 0.
+  for (int j = 0; j < size; j += 3)
+    for (int i = 0; i < size; i += 2) {
+      float highest = 0;
+      for (int b = std::max(j - 3, 0); b <= std::min(j + 3, size - 1); ++b)
+        for (int a = std::max(i - 3, 0); a <= std::min(i + 3, size - 1); ++a)
+          highest = std::max(highest, heights[size_t(b) * size + a]);
+      const vec4 centre(((i + 0.5f) / size - 0.5f) * 40000.0f, ((j + 0.5f) / size - 0.5f) * 40000.0f, 0, 0);
+      CHECK(cpu(arguments(1, vec4(0, 0, 1, 0), vec4(0), vec4(0), centre)).z == Approx(highest).epsilon(0).margin(altitude));
+    }
   compare("terrain", cpu, cases);
   glDeleteTextures(1, &texture);
 }

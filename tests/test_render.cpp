@@ -230,6 +230,13 @@ TEST_CASE("pixels whose loops reach llvmpipe's iteration limit are counted and o
   CHECK(r.loop_limited_pixels >= 1u);
   CHECK(r.loop_limited_pixels <= static_cast<unsigned>(camera.width * camera.height));  // every pixel
   CHECK(stats(r).finite);
+  // The pixels are named too, one bit each (one frame: each counted once).
+  unsigned named = 0;
+  for (int y = 0; y < camera.height; ++y)
+    for (int x = 0; x < camera.width; ++x) named += r.loop_limited(x, y) ? 1u : 0u;
+  CHECK(named == r.loop_limited_pixels);
+  for (int y = 0; y < camera.height; ++y)
+    for (int x = 0; x < camera.width; ++x) CHECK_FALSE(ordinary.loop_limited(x, y));
 }
 
 TEST_CASE("renders that share a noise volume give the image of their own volume and build no second one", "[render]") {

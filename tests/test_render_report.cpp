@@ -113,7 +113,7 @@ TEST_CASE("the render error of an image is measured in display values and relati
   core::ImageData image = reference;
   image.pixels[4] += 0.02f;
   RenderErrorRow r;
-  studies::measure_render_error(image, reference, exposure, r);
+  studies::measure_render_error(image, reference, exposure, {}, r);
   // Relative to the mean radiance 0.2: rms sqrt(0.02^2 / 6) / 0.2, max 0.02 / 0.2.
   CHECK(r.rms_error == Approx(std::sqrt(0.0004 / 6.0) / 0.2).epsilon(1e-5));
   CHECK(r.max_error == Approx(0.1).epsilon(1e-5));
@@ -124,10 +124,20 @@ TEST_CASE("the render error of an image is measured in display values and relati
   CHECK(d > 0.0);
   CHECK(r.display_rms == Approx(std::abs(d) / std::sqrt(6.0)).epsilon(1e-6));
   RenderErrorRow same;
-  studies::measure_render_error(reference, reference, exposure, same);
+  studies::measure_render_error(reference, reference, exposure, {}, same);
   CHECK(same.display_rms == 0.0);
   CHECK(same.rms_error == 0.0);
-  CHECK_THROWS(studies::measure_render_error(studies::upsample_bilinear(reference, 4, 2), reference, exposure, same));
+  CHECK_THROWS(studies::measure_render_error(studies::upsample_bilinear(reference, 4, 2), reference, exposure, {}, same));
+  // The differing pixel left out (a reference pixel cut short): no error; the other left out:
+  // the same difference over 3 values, relative to the mean 0.3.
+  RenderErrorRow without_second;
+  studies::measure_render_error(image, reference, exposure, {false, true}, without_second);
+  CHECK(without_second.display_rms == 0.0);
+  CHECK(without_second.max_error == 0.0);
+  RenderErrorRow without_first;
+  studies::measure_render_error(image, reference, exposure, {true, false}, without_first);
+  CHECK(without_first.display_rms == Approx(std::abs(d) / std::sqrt(3.0)).epsilon(1e-6));
+  CHECK(without_first.rms_error == Approx(std::sqrt(0.0004 / 3.0) / 0.3).epsilon(1e-5));
 }
 
 TEST_CASE("the render error CSV has the documented columns and one line per row", "[render][report]") {
@@ -233,10 +243,10 @@ TEST_CASE("the render summary section names the defaults their error and the two
                 "(0.75x the default's error)") != std::string::npos);
   CHECK(md.find("| 48 | 6 | 4 | 1/1 | 400.0 |") != std::string::npos);
   CHECK(count_of(md, "\n| ") == table.size() + 1);  // the header and one table line per row
-  CHECK(md.find("Caution") == std::string::npos);
+  CHECK(md.find("left out of every error") == std::string::npos);
   const std::string limited =
       studies::render_summary_markdown(table, options, studies::choose_render_steps(table, 48, 6), 48, 6, 17);
-  CHECK(limited.find("Caution: 17 of the reference's 14400 pixels") != std::string::npos);
+  CHECK(limited.find("17 of the reference's 14400 pixels (those that needed 65535 or more") != std::string::npos);
   const std::string without =
       studies::render_summary_markdown(table, options, studies::choose_render_steps(table, 64, 6), 64, 6);
   CHECK(without.find("not in this sweep") != std::string::npos);

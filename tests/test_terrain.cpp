@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 
@@ -47,17 +48,13 @@ double azimuth_deg(double lat, double lon) {
   return a1;
 }
 
-glsl::TerrainParams params_of(const regional::TerrainGrid& g) {
-  return {1, float(g.extent_m), g.top_m + 1.0f, float(g.texel_m())};
-}
-
 // The highest pitch (degrees) at which a ray from the camera in an azimuth meets the ground, by
 // bisection over rays cast with the marcher's C++ twin (terrain.glsl).
 double cast_horizon_deg(const regional::TerrainGrid& g, double azimuth) {
   using namespace glsl;
   const float R = float(render::osculating_earth_radius(gurten_lat));
-  const TerrainParams t = params_of(g);
-  const LayeredSource source{g.size, 1, g.altitudes.data()};
+  const TerrainParams t = regional::terrain_params(g);
+  const TerrainSource source = regional::terrain_source(g);
   const vec3 o(0.0f, 0.0f, R + float(eye_height));
   auto hits = [&](double pitch_deg) {
     const double p = pitch_deg * M_PI / 180, a = azimuth * M_PI / 180;
@@ -158,8 +155,8 @@ TEST_CASE("a camera below the smoothed ground is warned about, one on Gurten is 
 TEST_CASE("the substitute hills bring Gurten and Bantiger up to their summits", "[terrain]") {
   if (!have_etopo5()) FAIL("ferret-datasets is not installed (scripts/debian-packages.txt)");
   const auto& g = gurten_grid();
-  const glsl::LayeredSource source{g.size, 1, g.altitudes.data()};
-  const glsl::TerrainParams t = params_of(g);
+  const glsl::TerrainSource source = regional::terrain_source(g);
+  const glsl::TerrainParams t = regional::terrain_params(g);
   // Bilinear interpolation between texels Delta apart lowers a peak of curvature A / sigma^2
   // along each axis by at most Delta^2 / 8 of the curvatures' sum.
   for (const auto& hill : regional::substitute_hills()) {
@@ -256,4 +253,100 @@ TEST_CASE("rendered from Gurten, the ground meets the sky where the elevation da
     // Above the bare sphere's horizon (0.94 degrees below the horizontal from 860 m).
     CHECK(elevation(first) > -0.9);
   }
+}
+
+TEST_CASE("the terrain ceiling is the highest altitude of its window and bounds the bilinear ground within reach",
+          "[terrain]") {
+  // A random field: the running maxima against brute force.
+  const int size = 23, window = 3;
+  std::vector<float> heights;
+  std::uint32_t state = 12345;
+  for (int k = 0; k < size * size; ++k) {
+    state = state * 1664525u + 1013904223u;
+    heights.push_back(float(state >> 8) / float(1 << 24) * 1000.0f);
+  }
+  const auto ceilings = regional::terrain_ceilings(heights, size, window);
+  for (int j = 0; j < size; ++j)
+    for (int i = 0; i < size; ++i) {
+      float highest = 0;
+      for (int b = std::max(j - window, 0); b <= std::min(j + window, size - 1); ++b)
+        for (int a = std::max(i - window, 0); a <= std::min(i + window, size - 1); ++a)
+          highest = std::max(highest, heights[size_t(b) * size + a]);
+      CHECK(ceilings[size_t(j) * size + i] == highest);
+    }
+  if (!have_etopo5()) FAIL("ferret-datasets is not installed (scripts/debian-packages.txt)");
+  // Around Gurten: from any point, the ground within reach never rises above the point's
+  // bilinear ceiling (both sampled as the GPU does; float rounding of the interpolation, a few
+  // ulp of 4000 m, is the only allowance).
+  const auto& g = gurten_grid();
+  REQUIRE(g.ceiling_window == regional::terrain_ceiling_window);
+  const glsl::TerrainParams t = regional::terrain_params(g);
+  const glsl::TerrainSource source = regional::terrain_source(g);
+  CHECK(t.reach == Approx((g.ceiling_window - 2) * g.texel_m()));
+  int checked = 0;
+  for (int k = 0; k < 4000; ++k) {
+    state = state * 1664525u + 1013904223u;
+    const float x = (float(state >> 8) / float(1 << 24) * 2 - 1) * 1.1f * t.extent;
+    state = state * 1664525u + 1013904223u;
+    const float y = (float(state >> 8) / float(1 << 24) * 2 - 1) * 1.1f * t.extent;
+    state = state * 1664525u + 1013904223u;
+    const float angle = float(state >> 8) / float(1 << 24) * 6.2831853f;
+    state = state * 1664525u + 1013904223u;
+    const float r = float(state >> 8) / float(1 << 24) * t.reach;
+    const glsl::vec2 p(x, y), q = p + r * glsl::vec2(std::cos(angle), std::sin(angle));
+    const float ground = glsl::terrain_altitude(q, t, source);
+    const float ceiling = glsl::terrain_ceiling(p, t, source);
+    INFO("p " << x << ", " << y << " offset " << r << " ground " << ground << " ceiling " << ceiling);
+    CHECK(ground <= ceiling + 1e-3f);
+    ++checked;
+  }
+  CHECK(checked == 4000);
+}
+
+TEST_CASE("the terrain march steps over ground it is well above and meets the ground as well as without the ceiling",
+          "[terrain]") {
+  if (!have_etopo5()) FAIL("ferret-datasets is not installed (scripts/debian-packages.txt)");
+  using namespace glsl;
+  const auto& g = gurten_grid();
+  const float R = float(render::osculating_earth_radius(gurten_lat));
+  const vec3 o(0.0f, 0.0f, R + float(eye_height));
+  const TerrainSource source = regional::terrain_source(g);
+  const TerrainParams with = regional::terrain_params(g);
+  TerrainParams without = with;
+  without.reach = 0.0f;  // the march as it was: half the clearance, at most a texel
+  long loops_with = 0, loops_without = 0;
+  int rays = 0;
+  for (int a = 0; a < 360; a += 10)
+    for (double p = -4; p <= 20; p += 1) {
+      const double pr = p * M_PI / 180, ar = a * M_PI / 180;
+      const vec3 d(float(std::cos(pr) * std::sin(ar)), float(std::cos(pr) * std::cos(ar)), float(std::sin(pr)));
+      int n1 = 0, n0 = 0;
+      const float s1 = terrain_hit(o, d, R, 1.5e5f, with, n1, source);
+      const float s0 = terrain_hit(o, d, R, 1.5e5f, without, n0, source);
+      loops_with += n1;
+      loops_without += n0;
+      // The first ground point by 5 m steps (the texels are 390 m: no crossing hides between).
+      float first = -1;
+      for (float x = 0; x < 1.5e5f && p < 3; x += 5.0f)
+        if (terrain_clearance(o + x * d, R, with, source) <= 0) {
+          first = x;
+          break;
+        }
+      INFO("azimuth " << a << " pitch " << p << ": first ground " << first << ", with the ceiling " << s1
+                      << ", without " << s0);
+      // Both marches find ground on the same rays.
+      CHECK((s1 > 0) == (s0 > 0));
+      // Where a grazing ray dips under the ground and out again within one step, a march may
+      // bisect a later crossing of the same step: its resolution is its least step, 2 m + 1% of
+      // the distance (plus the reference's 5 m). The ceiling's steps stay above all ground within
+      // reach, so with them the hit is never further off than that or than the plain march's.
+      if (s1 > 0 && first > 0) {
+        const float resolution = 2.0f + 0.01f * first + 5.0f;
+        CHECK(std::abs(s1 - first) <= std::max(std::abs(s0 - first), resolution));
+      }
+      ++rays;
+    }
+  INFO("rays " << rays << ", loops " << loops_with << " against " << loops_without);
+  // Rays that rise, or look over the Plateau, spend most of their march well above the ground.
+  CHECK(2 * loops_with < loops_without);
 }

@@ -26,6 +26,7 @@ struct TerrainParams {
   float extent;          // half-size of the height field's square, metres
   float top;             // highest altitude in it (above the sphere), metres
   float texel;           // its texel spacing, metres
+  float reach;           // horizontal radius (m) within which the ceiling bounds the ground; 0: unused
 };
 
 // One convective cloud's density volume (docs/convection.md) as the marcher sees it: a cube of

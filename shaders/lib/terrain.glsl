@@ -7,6 +7,10 @@
 //   TERRAIN_SOURCE_ARG    the matching argument (empty in GLSL)
 //   TERRAIN_HEIGHT(uv)    float: altitude (m above the sphere) at uv in [0, 1]^2, bilinear,
 //                         clamped to the edge; u east, v north
+//   TERRAIN_CEILING(uv)   float: the ceiling there, sampled the same way: at each texel the
+//                         highest altitude within a window of texels around it
+//                         (regional::terrain_ceilings), so that, bilinear, it bounds the ground
+//                         within TerrainParams::reach of uv (docs/terrain.md)
 #ifndef NEPHELE_TERRAIN_GLSL
 #define NEPHELE_TERRAIN_GLSL
 #include "prelude.glsl"
@@ -28,6 +32,13 @@ float terrain_altitude(vec2 xy, IN(TerrainParams) t TERRAIN_SOURCE_PARAM) {
   return TERRAIN_HEIGHT(0.5f + 0.5f * xy / t.extent);
 }
 
+// The highest the ground gets within t.reach (horizontally) of a horizontal coordinate: the
+// ceiling texture, and sea level outside the square (the clamped edge is no lower than what
+// the window saw there, since clamping moves a point towards the square).
+float terrain_ceiling(vec2 xy, IN(TerrainParams) t TERRAIN_SOURCE_PARAM) {
+  return max(TERRAIN_CEILING(0.5f + 0.5f * xy / t.extent), 0.0f);
+}
+
 // Height of a point above the ground below it (negative underground).
 float terrain_clearance(vec3 q, float earth_radius, IN(TerrainParams) t TERRAIN_SOURCE_PARAM) {
   return length(q) - earth_radius - terrain_altitude(terrain_plane(q, earth_radius), t TERRAIN_SOURCE_ARG);
@@ -37,9 +48,12 @@ float terrain_clearance(vec3 q, float earth_radius, IN(TerrainParams) t TERRAIN_
 // point, at most `limit`; -1 when the ray reaches neither the terrain nor the sphere by then.
 // Within the shell below the highest terrain the ray steps by half its clearance (at least 2 m
 // plus 1% of the distance, so that rays grazing flat ground for long get through; at most one
-// texel, so that no texel is skipped), then bisects the step that crossed the surface. A ray
-// still above the ground after the last step has grazed it all along and counts as meeting it
-// there. loops: the iterations it took.
+// texel, so that no texel is skipped), then bisects the step that crossed the surface. Where
+// the ray is above the ceiling it may step further, up to t.reach, as long as it stays above
+// the ceiling: the altitude along a straight ray is convex, so over a step L it falls by at most
+// L times its present rate of fall; no ground within reach is skipped. A ray still above the
+// ground after the last step has grazed it all along and counts as meeting it there. loops:
+// the iterations it took.
 float terrain_hit(vec3 o, vec3 d, float earth_radius, float limit, IN(TerrainParams) t, OUT(int) loops TERRAIN_SOURCE_PARAM) {
   loops = 0;
   vec2 sphere = ray_sphere(o, d, vec3(0.0f), earth_radius);
@@ -65,7 +79,16 @@ float terrain_hit(vec3 o, vec3 d, float earth_radius, float limit, IN(TerrainPar
       return b;
     }
     previous = s;
-    s += min(max(0.5f * h, 2.0f + 0.01f * s), t.texel);
+    float step = min(max(0.5f * h, 2.0f + 0.01f * s), t.texel);
+    if (t.reach > 0.0f) {
+      vec3 q = o + s * d;
+      float r = length(q);
+      // 2 m below the ceiling for the float rounding of the altitude at the Earth's radius.
+      float room = r - earth_radius - terrain_ceiling(terrain_plane(q, earth_radius), t TERRAIN_SOURCE_ARG) - 2.0f;
+      float fall = max(-dot(d, q) / r, 1.0e-6f);
+      if (room > 0.0f) step = max(step, min(t.reach, room / fall));
+    }
+    s += step;
   }
   return s <= end ? s : ground;
 }

@@ -10,8 +10,12 @@ layout(binding = 4) uniform sampler2D terrain_heights;  // terrain.glsl's height
 // The convective clouds' density volumes, volume c in z-layers [c N, (c + 1) N) (N^3 each).
 layout(binding = 5) uniform sampler3D convective_volumes;
 // Pixels whose loops ran (or would have run) past LOOP_LIMIT iterations in all (cut short on
-// llvmpipe, docs/rendering.md). The host reads the count and warns.
-layout(std430, binding = 3) buffer LoopGuard { uint loop_limited_pixels; };
+// llvmpipe, docs/rendering.md): their count, and one bit per pixel (pixel y width + x is bit
+// k % 32 of word k / 32). The host reads both; studies leave those pixels out of a reference.
+layout(std430, binding = 3) buffer LoopGuard {
+  uint loop_limited_pixels;
+  uint loop_limited_bits[];
+};
 
 #define MARCH_SOURCES_PARAM
 #define MARCH_SOURCES_ARG
@@ -20,6 +24,7 @@ layout(std430, binding = 3) buffer LoopGuard { uint loop_limited_pixels; };
 #define TERRAIN_SOURCE_PARAM
 #define TERRAIN_SOURCE_ARG
 #define TERRAIN_HEIGHT(uv) texture(terrain_heights, uv).x
+#define TERRAIN_CEILING(uv) texture(terrain_heights, uv).y
 #define MARCH_TERRAIN_ARG
 #define CONVECTIVE_DENSITY(q, cloud) texture(convective_volumes, convective_texel(q, cloud)).x
 // Volume c's coordinates q in the stack, z clamped to its own texel centres (so it is read as
@@ -41,6 +46,10 @@ void main() {
   if (pixel.x >= size.x || pixel.y >= size.y) return;
   int loop_count = 0;
   vec4 radiance = render_pixel(pixel, size, u_march, loop_count);
-  if (loop_limited(loop_count)) atomicAdd(loop_limited_pixels, 1u);
+  if (loop_limited(loop_count)) {
+    atomicAdd(loop_limited_pixels, 1u);
+    uint k = uint(pixel.y * size.x + pixel.x);
+    atomicOr(loop_limited_bits[k / 32u], 1u << (k % 32u));
+  }
   imageStore(radiance_image, pixel, radiance);
 }

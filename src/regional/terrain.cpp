@@ -97,7 +97,37 @@ TerrainGrid terrain_grid(double latitude_deg, double longitude_deg, double heigh
     }
   }
   grid.top_m = top;
+  grid.ceiling_window = terrain_ceiling_window;
+  grid.ceilings = terrain_ceilings(grid.altitudes, size, grid.ceiling_window);
   return grid;
+}
+
+std::vector<float> terrain_ceilings(const std::vector<float>& altitudes, int size, int window) {
+  const auto index = [size](int i, int j) { return static_cast<size_t>(j) * size + i; };
+  std::vector<float> rows(altitudes.size()), out(altitudes.size());
+  for (int j = 0; j < size; ++j)
+    for (int i = 0; i < size; ++i) {
+      float m = altitudes[index(i, j)];
+      for (int k = std::max(i - window, 0); k <= std::min(i + window, size - 1); ++k) m = std::max(m, altitudes[index(k, j)]);
+      rows[index(i, j)] = m;
+    }
+  for (int j = 0; j < size; ++j)
+    for (int i = 0; i < size; ++i) {
+      float m = rows[index(i, j)];
+      for (int k = std::max(j - window, 0); k <= std::min(j + window, size - 1); ++k) m = std::max(m, rows[index(i, k)]);
+      out[index(i, j)] = m;
+    }
+  return out;
+}
+
+glsl::TerrainParams terrain_params(const TerrainGrid& grid) {
+  // The shell the march searches reaches a metre above the highest texel.
+  return {1, static_cast<float>(grid.extent_m), grid.top_m + 1.0f, static_cast<float>(grid.texel_m()),
+          static_cast<float>(grid.reach_m())};
+}
+
+glsl::TerrainSource terrain_source(const TerrainGrid& grid) {
+  return {{grid.size, 1, grid.altitudes.data()}, {grid.size, 1, grid.ceilings.data()}};
 }
 
 double horizon_elevation_deg(double latitude_deg, double longitude_deg, double height_m, double azimuth_deg,

@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "shader_math/shader_math.hpp"
+
 namespace nephele::regional {
 
 // Elevations (m above sea level) on a latitude-longitude lattice: row r at latitude
@@ -39,8 +41,27 @@ struct TerrainGrid {
   std::vector<float> altitudes;  // row j = 0 southmost, column i = 0 westmost
   float top_m = 0;               // highest altitude
   std::string source;            // raster and hills, for messages and the sidecar
+  // terrain_ceilings(altitudes, size, ceiling_window): what lets the march step over ground it
+  // is well above (terrain.glsl's TERRAIN_CEILING).
+  std::vector<float> ceilings;
+  int ceiling_window = 0;
   double texel_m() const { return 2 * extent_m / size; }
+  // How far (m, horizontally) the bilinear ceiling bounds the ground: the window less 2 texels
+  // (1 for the bilinear taps of the ceiling, 1 for those of the ground; docs/terrain.md).
+  double reach_m() const { return ceiling_window > 2 ? (ceiling_window - 2) * texel_m() : 0.0; }
 };
+
+// Texels of the ceiling's window on each side (terrain_grid's choice; docs/terrain.md).
+constexpr int terrain_ceiling_window = 8;
+
+// The ceiling of a size x size height field: at each texel the highest altitude of the texels
+// within `window` texels of it along both axes (the square of side 2 window + 1, cut at the
+// edges). Separable: a running maximum along rows, then along columns.
+std::vector<float> terrain_ceilings(const std::vector<float>& altitudes, int size, int window);
+
+// What the marcher and its C++ twin take of a grid.
+glsl::TerrainParams terrain_params(const TerrainGrid& grid);
+glsl::TerrainSource terrain_source(const TerrainGrid& grid);
 
 // Samples the raster (plus the hills) under every texel; the geodesy (the texel's latitude,
 // longitude and ellipsoidal height) is GeographicLib's local Cartesian frame at the camera.

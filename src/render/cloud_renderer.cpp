@@ -235,12 +235,8 @@ glsl::MarchParams march_params(const Camera& camera, const std::vector<regional:
                                              : 2 * std::tan(camera.fov_deg * M_PI / 360) / camera.width;
   m.pixel_angle = static_cast<float>(pixel_angle);
   m.noise_texels = static_cast<float>(settings.noise_size);
-  m.terrain = {0, 1.0f, 0.0f, 1.0f};
-  if (settings.terrain) {
-    const regional::TerrainGrid& t = *settings.terrain;
-    // The shell the march searches reaches a metre above the highest texel.
-    m.terrain = {1, static_cast<float>(t.extent_m), t.top_m + 1.0f, static_cast<float>(t.texel_m())};
-  }
+  m.terrain = {0, 1.0f, 0.0f, 1.0f, 0.0f};
+  if (settings.terrain) m.terrain = regional::terrain_params(*settings.terrain);
   m.convective_count = convective != nullptr ? convective->count() : 0;
   for (int c = 0; c < m.convective_count; ++c) m.convective[c] = convective->params(c);
   return m;
@@ -283,8 +279,14 @@ RenderResult render_clouds(const Camera& camera, const std::vector<regional::Clo
   if (settings.terrain) {
     const regional::TerrainGrid& t = *settings.terrain;
     terrain = make_texture(GL_TEXTURE_2D);
-    glTextureStorage2D(terrain, 1, GL_R32F, t.size, t.size);
-    glTextureSubImage2D(terrain, 0, 0, 0, t.size, t.size, GL_RED, GL_FLOAT, t.altitudes.data());
+    // Heights in red, ceilings in green (terrain.glsl's TERRAIN_HEIGHT and TERRAIN_CEILING).
+    std::vector<float> texels(2 * t.altitudes.size());
+    for (size_t k = 0; k < t.altitudes.size(); ++k) {
+      texels[2 * k] = t.altitudes[k];
+      texels[2 * k + 1] = t.ceilings[k];
+    }
+    glTextureStorage2D(terrain, 1, GL_RG32F, t.size, t.size);
+    glTextureSubImage2D(terrain, 0, 0, 0, t.size, t.size, GL_RG, GL_FLOAT, texels.data());
     glTextureParameteri(terrain, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
     glTextureParameteri(terrain, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     glTextureParameteri(terrain, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
@@ -315,9 +317,10 @@ RenderResult render_clouds(const Camera& camera, const std::vector<regional::Clo
     glBindTextureUnit(4, terrain);
     glBindTextureUnit(5, convective != nullptr ? convective->texture() : 0);
     GLuint guard = 0;
-    const GLuint zero = 0;
+    // The count, then a bit per pixel of the whole image.
+    const std::vector<GLuint> zeros(1 + (static_cast<std::size_t>(camera.width) * camera.height + 31) / 32, 0u);
     glCreateBuffers(1, &guard);
-    glNamedBufferStorage(guard, sizeof zero, &zero, GL_MAP_READ_BIT);
+    glNamedBufferStorage(guard, static_cast<GLsizeiptr>(zeros.size() * sizeof(GLuint)), zeros.data(), GL_MAP_READ_BIT);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, guard);
     program.set("u_first_row", settings.first_row);
     const int frames = std::max(settings.frames, 1);
@@ -332,7 +335,10 @@ RenderResult render_clouds(const Camera& camera, const std::vector<regional::Clo
       }
     }
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-    glGetNamedBufferSubData(guard, 0, sizeof result.loop_limited_pixels, &result.loop_limited_pixels);
+    std::vector<GLuint> guard_words(zeros.size());
+    glGetNamedBufferSubData(guard, 0, static_cast<GLsizeiptr>(guard_words.size() * sizeof(GLuint)), guard_words.data());
+    result.loop_limited_pixels = guard_words[0];
+    result.loop_limited_bits.assign(guard_words.begin() + 1, guard_words.end());
     glDeleteBuffers(1, &guard);
   });
   result.passes.push_back("sky");

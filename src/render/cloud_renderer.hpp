@@ -48,8 +48,15 @@ struct RenderResult {
   std::vector<std::pair<std::string, double>> timings_ms;
   glm::dvec3 sun_direction;          // east, north, up
   double sun_elevation_deg = 0;
-  // Pixels whose shader loops needed 65535 iterations or more: llvmpipe cuts those short.
+  // Pixels whose shader loops needed 65535 iterations or more: llvmpipe cuts those short (in
+  // any frame of an accumulation, counted per frame); and which: pixel y width + x is bit k % 32
+  // of word k / 32 (see loop_limited()).
   std::uint32_t loop_limited_pixels = 0;
+  std::vector<std::uint32_t> loop_limited_bits;
+  bool loop_limited(int x, int y) const {
+    const std::size_t k = static_cast<std::size_t>(y) * radiance.width + x;
+    return k / 32 < loop_limited_bits.size() && ((loop_limited_bits[k / 32] >> (k % 32)) & 1u) != 0;
+  }
 };
 
 // The Gaussian radius of curvature sqrt(M N) of WGS84 at a latitude: the sphere that osculates

@@ -68,13 +68,20 @@ struct ConvectiveSource {
   float sample(vec3 uvw, int cloud) const;
 };
 
+// The ground's two textures in host memory (terrain.glsl's TERRAIN_HEIGHT and TERRAIN_CEILING,
+// the red and green channels of one texture on the GPU): one-layer sources of the same size,
+// regional::terrain_source of a TerrainGrid.
+struct TerrainSource {
+  LayeredSource heights;
+  LayeredSource ceilings;
+};
+
 // The textures of cloud_march.glsl: the noise volume, the weather field, the ground's height
-// field (terrain.glsl's TERRAIN_HEIGHT: layer 0 of a one-layer source) and the convective
-// clouds' volumes.
+// field and ceiling, and the convective clouds' volumes.
 struct MarchSources {
   VolumeSource noise;
   LayeredSource weather;
-  LayeredSource terrain;
+  TerrainSource terrain;
   ConvectiveSource convective;
 };
 

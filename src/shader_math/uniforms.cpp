@@ -68,6 +68,7 @@ void set_uniform(const gpu::ComputeProgram& program, const std::string& name, co
   program.set(name + ".terrain.extent", params.terrain.extent);
   program.set(name + ".terrain.top", params.terrain.top);
   program.set(name + ".terrain.texel", params.terrain.texel);
+  program.set(name + ".terrain.reach", params.terrain.reach);
   for (int i = 0; i < MAX_CONVECTIVE; ++i) {
     const ConvectiveParams& c = params.convective[i];
     const std::string cloud = name + ".convective[" + std::to_string(i) + "].";

@@ -52,15 +52,18 @@ core::ImageData upsample_bilinear(const core::ImageData& image, int width, int h
 
 // The errors of `image` against `reference` (both linear radiance, the same size and channels,
 // RGB first), display_rms through the display encoding at `exposure` (render::tone_map); fills
-// the three error fields of `row`.
+// the three error fields of `row`. Pixels k = y width + x with excluded[k] are left out (an
+// empty `excluded` leaves none out; all left out gives errors of 0).
 void measure_render_error(const core::ImageData& image, const core::ImageData& reference, double exposure,
-                          RenderErrorRow& row);
+                          const std::vector<bool>& excluded, RenderErrorRow& row);
 
 // Renders `scene` at the options' frame size with each variant (grid first, view-major) and
-// compares with the reference; `progress` gets each row when it is done. `reference_limited`
-// (optional) gets the number of the reference's pixels that llvmpipe's loop limit cut short
-// (docs/rendering.md): where it is not 0 the errors there are not to be trusted. Needs a current
-// OpenGL 4.5 context.
+// compares with the reference; `progress` gets each row when it is done. The pixels of the
+// reference that llvmpipe's loop limit cut short (render::RenderResult::loop_limited, with the
+// rest of their 8 x 8 workgroup, which llvmpipe may have cut with them; the reference's many
+// steps run into the limit near the horizon) are no reference: they are left out of every row's
+// errors, and `reference_limited` (optional) gets their number. Needs a current OpenGL 4.5
+// context.
 std::vector<RenderErrorRow> render_error_sweep(const regional::Scene& scene, const RenderSweepOptions& options,
                                                const std::function<void(const RenderErrorRow&)>& progress = {},
                                                unsigned* reference_limited = nullptr);

@@ -165,8 +165,9 @@ std::string render_summary_markdown(const std::vector<RenderErrorRow>& rows, con
   s << line;
   if (reference_limited > 0) {
     std::snprintf(line, sizeof line,
-                  "Caution: %u of the reference's %d pixels needed 65535 or more shader loop iterations, where "
-                  "llvmpipe stops every loop; the reference is cut short there.\n\n",
+                  "%u of the reference's %d pixels (those that needed 65535 or more shader loop iterations, "
+                  "where llvmpipe stops every loop, and the rest of their 8 x 8 workgroups) are no reference: "
+                  "they are left out of every error below.\n\n",
                   reference_limited, options.width * options.height);
     s << line;
   }

@@ -11,6 +11,7 @@ layout(binding = 4) uniform sampler2D terrain_heights;  // terrain.glsl's height
 #define TERRAIN_SOURCE_PARAM
 #define TERRAIN_SOURCE_ARG
 #define TERRAIN_HEIGHT(uv) texture(terrain_heights, uv).x
+#define TERRAIN_CEILING(uv) texture(terrain_heights, uv).y
 #define MARCH_TERRAIN_ARG
 layout(binding = 5) uniform sampler3D convective_volumes;  // one volume here: no stack to clamp in
 #define CONVECTIVE_DENSITY(q, cloud) texture(convective_volumes, q).x
@@ -63,6 +64,7 @@ MarchParams probe_march_params() {
   m.terrain.extent = 1.0f;
   m.terrain.top = 0.0f;
   m.terrain.texel = 1.0f;
+  m.terrain.reach = 0.0f;
   // One convective cloud 20 km north, turned to (0.6, 0.8); marched only by functions 12-16.
   m.convective_count = 0;
   for (int c = 0; c < MAX_CONVECTIVE; ++c) {

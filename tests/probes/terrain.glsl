@@ -5,6 +5,7 @@ layout(binding = 4) uniform sampler2D terrain_heights;
 #define TERRAIN_SOURCE_PARAM
 #define TERRAIN_SOURCE_ARG
 #define TERRAIN_HEIGHT(uv) texture(terrain_heights, uv).x
+#define TERRAIN_CEILING(uv) texture(terrain_heights, uv).y
 #include "../lib/terrain.glsl"
 #endif
 
@@ -15,6 +16,7 @@ TerrainParams probe_terrain_params() {
   t.extent = 20000.0f;
   t.top = 1201.0f;
   t.texel = 5000.0f;
+  t.reach = 5000.0f;  // a ceiling window of 3 texels (the test's regional::terrain_ceilings)
   return t;
 }
 
@@ -30,7 +32,7 @@ vec4 probe_terrain(mat4 x TERRAIN_SOURCE_PARAM) {
   if (f == 0) return vec4(terrain_plane(q, earth_radius), 0.0f, 0.0f);
   if (f == 1) {
     return vec4(terrain_altitude(vec2(x[3]), t TERRAIN_SOURCE_ARG), terrain_clearance(q, earth_radius, t TERRAIN_SOURCE_ARG),
-                0.0f, 0.0f);
+                terrain_ceiling(vec2(x[3]), t TERRAIN_SOURCE_ARG), 0.0f);
   }
   if (f == 2) {
     int loops = 0;
