@@ -7,6 +7,7 @@
 #   docs/images/model_examples.png           nephele model previews of the four built-in clouds
 #   docs/images/render_orbit.png/.json       nephele render --view orbit of the default cover
 #   docs/images/gurten-thunderstorm.png      scenes/gurten-thunderstorm.json (convective clouds)
+#   docs/images/bantiger-fog.png             scenes/bantiger-fog.json (the sea of fog from the Bantiger)
 # With --report it also runs `nephele report` (about 35 minutes on two cores) and copies its
 # work-precision diagrams (error_vs_runtime*.svg).
 set -euo pipefail
@@ -30,6 +31,8 @@ cp "$work/render_gurten_panorama.png" "$work/render_gurten_panorama.json" docs/i
 cp "$work/render_orbit.png" "$work/render_orbit.json" docs/images/
 "$nephele" render --scene scenes/gurten-thunderstorm.json --no-cache --quiet --out "$work/storm"
 cp "$work/storm/gurten-thunderstorm.png" docs/images/gurten-thunderstorm.png
+"$nephele" render --scene scenes/bantiger-fog.json --no-cache --quiet --out "$work/fog"
+cp "$work/fog/bantiger-fog.png" docs/images/bantiger-fog.png
 examples=(fair-weather towering cumulonimbus stratocumulus)
 for example in "${examples[@]}"; do
   "$nephele" model --example "$example" --preview 256x256 --quiet --out "$work/model-$example"

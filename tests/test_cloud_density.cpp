@@ -73,8 +73,30 @@ TEST_CASE("more coverage never thins a heaped cloud", "[density]") {
   }
 }
 
-TEST_CASE("fog thins with height and the Hermite step is the cubic smoothstep", "[density]") {
-  CHECK(cloud_density(CLOUD_FOG, 0.1f, 1.0f, 0.5f, 1.0f) > cloud_density(CLOUD_FOG, 0.9f, 1.0f, 0.5f, 1.0f));
+TEST_CASE("the sea of fog is full below its undulating top and ends within the edge above it", "[density]") {
+  // Its top lies at 1 - 0.15 shape of the layer; the edge, 0.05 thick, ends there.
+  for (float shape : {0.0f, 0.3f, 1.0f}) {
+    INFO("shape " << shape);
+    const float top = 1.0f - FOG_TOP_UNDULATION * shape;
+    // Below the edge: c (0.85 + 0.15 detail), whatever the height.
+    for (float h : {0.0f, 0.4f, top - FOG_TOP_EDGE})
+      CHECK(cloud_density(CLOUD_FOG, h, 0.8f, shape, 0.5f) == Approx(0.8f * 0.925f).epsilon(0).margin(kDensityRounding));
+    // Halfway up the edge the smoothstep is 1/2; at and above the top nothing.
+    CHECK(cloud_density(CLOUD_FOG, top - 0.5f * FOG_TOP_EDGE, 1.0f, shape, 1.0f) ==
+          Approx(0.5f).epsilon(0).margin(kDensityRounding));
+    CHECK(cloud_density(CLOUD_FOG, top, 1.0f, shape, 1.0f) == 0.0f);
+    if (top < 1.0f) CHECK(cloud_density(CLOUD_FOG, 0.5f * (top + 1.0f), 1.0f, shape, 1.0f) == 0.0f);
+  }
+  // A larger shape value lowers the top: the density at a height never grows with it.
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<float> u(0.0f, 1.0f);
+  for (int k = 0; k < 2000; ++k) {
+    const float h = u(rng), shape = u(rng), more = std::min(1.0f, shape + 0.1f);
+    REQUIRE(cloud_density(CLOUD_FOG, h, 1.0f, more, 0.5f) <= cloud_density(CLOUD_FOG, h, 1.0f, shape, 0.5f) + kDensityRounding);
+  }
+}
+
+TEST_CASE("the Hermite step is the cubic smoothstep", "[density]") {
   CHECK(hermite_step(0.0f, 1.0f, 0.5f) == 0.5f);
   CHECK(hermite_step(0.0f, 1.0f, 0.25f) == Approx(0.15625f));
   CHECK(hermite_step(2.0f, 3.0f, 1.0f) == 0.0f);

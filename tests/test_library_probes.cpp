@@ -321,7 +321,7 @@ TEST_CASE("latitude_bands.glsl on the GPU agrees with the CPU", "[probe]") {
 TEST_CASE("cloud_density.glsl on the GPU agrees with the CPU", "[probe]") {
   Random r(15);
   std::vector<Case> cases;
-  for (int f = 0; f < 11; ++f)
+  for (int f = 0; f < 12; ++f)
     for (int k = 0; k < 12; ++k) {
       vec4 a(r(0.0f, 1.0f), r(0.0f, 1.0f), r(0.0f, 1.0f), 0.0f);
       if (f == 10) a = vec4(float(k), 12.0f, r(100.0f, 4000.0f), 0.0f);  // light_sample(i, n, length)

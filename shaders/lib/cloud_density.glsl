@@ -42,6 +42,18 @@ float sheet_density(float h, float c, float shape, float detail) {
   return amount * sheet_profile(h, 0.25f) * (0.7f + 0.3f * detail);
 }
 
+// The sea of fog (a stratus deck under a winter inversion, docs/terrain.md): full density from
+// its base (below the ground of the Plateau) up to a top that the shape noise lowers by up to
+// FOG_TOP_UNDULATION of the layer (about 45 m for the default 490-800 m layer), with a sharp
+// edge FOG_TOP_EDGE thick there: the inversion caps the mixed layer, so the fog ends within
+// metres rather than thinning away with height; faint texture from the detail noise.
+const float FOG_TOP_UNDULATION = 0.15f;
+const float FOG_TOP_EDGE = 0.05f;
+float fog_density(float h, float c, float shape, float detail) {
+  float top = 1.0f - FOG_TOP_UNDULATION * shape;
+  return c * (1.0f - hermite_step(top - FOG_TOP_EDGE, top, h)) * (0.85f + 0.15f * detail);
+}
+
 float cloud_density(int type, float h, float c, float shape, float detail) {
   if (c <= 0.0f || h < 0.0f || h > 1.0f) return 0.0f;
   // Cumulus and alto have Webanck et al.'s exact forms (webanck_forms.glsl), which the marcher
@@ -58,7 +70,7 @@ float cloud_density(int type, float h, float c, float shape, float detail) {
   }
   if (type == CLOUD_CIRROSTRATUS) return c * sheet_profile(h, 0.4f) * (0.5f + 0.5f * detail);
   if (type == CLOUD_CIRROCUMULUS) return heaped_density(h, c, shape, detail, 0.1f);
-  if (type == CLOUD_FOG) return c * exp(-3.0f * h) * (0.75f + 0.25f * detail);
+  if (type == CLOUD_FOG) return fog_density(h, c, shape, detail);
   return 0.0f;
 }
 

@@ -96,7 +96,7 @@ std::vector<CloudLayer> choose_layers(const WeatherSample& now, const std::vecto
   // Ground fog (and denser fog under nimbostratus).
   if (is_foggy(now) || nimbostratus)
     layers.push_back({CloudType::fog, CoverageChannel::fog, static_cast<float>(rules.ground_m) - 50,
-                      static_cast<float>(std::max(rules.fog_top_m, rules.ground_m + 50)), nimbostratus ? 4e-3f : 2e-3f, 0, 0, 0,
+                      static_cast<float>(std::max(rules.fog_top_m, rules.ground_m + 50)), nimbostratus ? 3e-2f : 2e-2f, 0, 0, 0,
                       nimbostratus ? "rain: denser fog" : "low cover >= 95%, calm, dry: ground fog"});
   // Towering cumulus and cumulonimbus are no layer: implicit models placed where the convective
   // channel calls for them (regional/convection.hpp).
