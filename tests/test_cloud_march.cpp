@@ -40,6 +40,25 @@ WeatherField patterned_field() {
   return f;
 }
 
+// Coverage 1 in the given channels and 0 in the others, over 160 km.
+WeatherField overcast_field(std::initializer_list<CoverageChannel> channels) {
+  WeatherField f{4, 160000.0, {}};
+  for (int c = 0; c < coverage_channels; ++c) {
+    bool on = false;
+    for (CoverageChannel channel : channels) on = on || c == int(channel);
+    f.values.insert(f.values.end(), 16, on ? 1.0f : 0.0f);
+  }
+  return f;
+}
+
+// The marcher's C++ twin's textures: the noise volume read back and the field.
+glsl::MarchSources host_sources(const render::NoiseVolume& noise, const WeatherField& field) {
+  glsl::MarchSources sources;
+  sources.noise = noise.host_copy();
+  sources.weather = {field.size, coverage_channels, field.values.data()};
+  return sources;
+}
+
 }  // namespace
 
 TEST_CASE("the marcher on the GPU agrees with its C++ twin pixel by pixel", "[render][march]") {
@@ -55,6 +74,8 @@ TEST_CASE("the marcher on the GPU agrees with its C++ twin pixel by pixel", "[re
   settings.light_steps = 3;
   settings.sky_steps = 6;
   settings.noise_size = 16;
+  settings.shadow_map_size = 16;
+  settings.read_shadow_maps = true;  // the C++ twin reads the GPU's maps (compared below)
   const render::NoiseVolume noise(settings.noise_size, settings.seed);
   glsl::MarchSources sources;
   sources.noise = noise.host_copy();
@@ -71,6 +92,22 @@ TEST_CASE("the marcher on the GPU agrees with its C++ twin pixel by pixel", "[re
     const auto gpu = render::render_clouds(cam, layers, field, time, settings, wind, wind_speed, &noise);
     const glsl::MarchParams params = render::march_params(cam, layers, field, time, settings, wind, wind_speed);
     REQUIRE(params.layer_count == 3);
+    // The cumulus has the alto and the cirrus above it, the alto the cirrus: two maps.
+    REQUIRE(render::shadow_map_count(params) == 2);
+    REQUIRE(gpu.shadow_maps.size() == 2u * 16 * 16);
+    sources.shadows = {16, 2, gpu.shadow_maps.data()};
+    // Each texel against the C++ twin: a shadow march through thin layers (relative tolerance).
+    const glm::vec3 centre(0.0f, 0.0f, -(params.earth_radius + params.camera_altitude));
+    for (int layer = 0; layer < 2; ++layer)
+      for (int j = 0; j < 16; ++j)
+        for (int i = 0; i < 16; ++i) {
+          int loops = 0;
+          const float cpu = glsl::shadow_map_texel(glm::vec2((i + 0.5f) / 16, (j + 0.5f) / 16), centre, layer, loops,
+                                                   params, sources);
+          const float g = gpu.shadow_maps[(static_cast<size_t>(params.layers[layer].shadow_map) * 16 + j) * 16 + i];
+          INFO("map of layer " << layer << " texel " << i << ", " << j << ": GPU " << g << ", CPU " << cpu);
+          CHECK(std::abs(g - cpu) <= tolerance * std::max(cpu, 1e-6f));
+        }
     int cloudy = 0;
     int limited = 0;
     double worst = 0;
@@ -103,14 +140,11 @@ TEST_CASE("an overcast layer shades the ground below it and no layer shades what
   test::test_context();
   const double time = core::parse_utc_time("2026-06-21T11:30Z");  // sun about 66 degrees up
   const std::vector<CloudLayer> layers = {{CloudType::stratus, CoverageChannel::low, 1500, 2100, 2e-2f, 0, 0, 0, "test"}};
-  WeatherField field{4, 160000.0, {}};
-  for (int c = 0; c < coverage_channels; ++c) field.values.insert(field.values.end(), 16, c == int(CoverageChannel::low) ? 1.0f : 0.0f);
+  const WeatherField field = overcast_field({CoverageChannel::low});
   render::RenderSettings settings;
   settings.noise_size = 16;
   const render::NoiseVolume noise(settings.noise_size, settings.seed);
-  glsl::MarchSources sources;
-  sources.noise = noise.host_copy();
-  sources.weather = {field.size, coverage_channels, field.values.data()};
+  const glsl::MarchSources sources = host_sources(noise, field);
   const glsl::MarchParams params = render::march_params(camera(false), layers, field, time, settings);
   const glm::vec3 centre(0.0f, 0.0f, -(params.earth_radius + params.camera_altitude));
   const glm::vec3 ground(0.0f, 0.0f, -params.camera_altitude);
@@ -123,4 +157,75 @@ TEST_CASE("an overcast layer shades the ground below it and no layer shades what
   // Only layers with a base at or above 2100 m shade a point at the layer's top: none here.
   CHECK(glsl::shadow_depth(ground, centre, -1, 2100.0f, loops, params, sources) == 0.0f);
   CHECK(glsl::shadow_depth(ground, centre, 0, -1.0e30f, loops, params, sources) == 0.0f);
+}
+
+TEST_CASE("a layer under an overcast layer reads the depth through it from its shadow map and gets less sunlight",
+          "[render][shadow]") {
+  test::test_context();
+  const double time = core::parse_utc_time("2026-06-21T11:30Z");  // sun about 66 degrees up
+  // Overcast stratus at 1500-2100 m under an overcast sheet at 3000-3600 m (the mid channel).
+  const std::vector<CloudLayer> two = {{CloudType::stratus, CoverageChannel::low, 1500, 2100, 2e-2f, 0, 0, 0, "low"},
+                                       {CloudType::stratus, CoverageChannel::mid, 3000, 3600, 2e-2f, 0, 0, 0, "high"}};
+  const WeatherField field = overcast_field({CoverageChannel::low, CoverageChannel::mid});
+  render::RenderSettings settings;
+  settings.noise_size = 16;
+  const render::NoiseVolume noise(settings.noise_size, settings.seed);
+  glsl::MarchSources sources = host_sources(noise, field);
+  const glsl::MarchParams params = render::march_params(camera(false), two, field, time, settings);
+  REQUIRE(params.layers[0].shadow_map == 0);
+  REQUIRE(params.layers[1].shadow_map == -1);
+  REQUIRE(render::shadow_map_count(params) == 1);
+  const glm::vec3 centre(0.0f, 0.0f, -(params.earth_radius + params.camera_altitude));
+  // The map made on the CPU, 32 x 32 texels over 300 km.
+  const int size = 32;
+  std::vector<float> map;
+  int loops = 0;
+  for (int j = 0; j < size; ++j)
+    for (int i = 0; i < size; ++i)
+      map.push_back(glsl::shadow_map_texel(glm::vec2((i + 0.5f) / size, (j + 0.5f) / size), centre, 0, loops, params, sources));
+  sources.shadows = {size, 1, map.data()};
+  const double tolerance = test::march_tolerance(600.0, 12000.0, sources.noise);
+  // Points of the lower layer on the sun rays through texel centres of its top: the lookup is
+  // the depth through the upper layer marched from the point itself (the same ray beyond the
+  // top), and that is at least the overcast sheet's vertical depth, 2e-2 x 600 x 0.753 x 0.7
+  // (the profile's six midpoint samples average 0.753, the texture is at least 0.7).
+  for (int k = 0; k < 20; ++k) {
+    const glm::vec2 uv((3 + k % 5 * 6 + 0.5f) / size, (4 + k / 5 * 6 + 0.5f) / size);
+    const glm::vec3 top = glsl::shadow_map_origin((2.0f * uv - 1.0f) * params.shadow_extent, centre, 0, params);
+    const glm::vec3 p = top - (100.0f + 25.0f * k) / params.sun.z * params.sun;  // 100 to 575 m below the top
+    int n = 0;
+    const float marched = glsl::layers_shadow_depth(p, centre, 0, 2100.0f, n, params, sources);
+    const float looked_up = glsl::higher_layers_depth(p, centre, 0, params, sources);
+    INFO("point " << k << ": marched " << marched << ", from the map " << looked_up);
+    CHECK(looked_up == Approx(marched).epsilon(tolerance));
+    CHECK(marched >= 2e-2 * 600 * 0.753 * 0.7);
+  }
+  // Marched along a ray rising through the lower layer, the layer sends less light with its
+  // map than without (the same extinction: the transmittance is the same).
+  glsl::MarchParams unshaded = params;
+  unshaded.layers[0].shadow_map = -1;
+  const glm::vec3 d = glm::normalize(glm::vec3(0.2f, 0.5f, 1.0f));
+  const glm::vec4 b = glsl::ray_shell(glm::vec3(0.0f), d, centre, params.earth_radius + 1500.0f, params.earth_radius + 2100.0f, 1e6f);
+  const auto march = [&](const glsl::MarchParams& m) {
+    glsl::CloudMarch c{glm::vec3(0.0f), 1.0f, 0.0f, 0.0f, 0};
+    glsl::march_interval(b.z, b.w, 0, false, d, centre, 0.5f, glm::dot(d, m.sun), c, m, sources);  // out of the inner sphere
+    return c;
+  };
+  const glsl::CloudMarch shaded = march(params), open = march(unshaded);
+  INFO("radiance with the map " << shaded.radiance.y << ", without " << open.radiance.y);
+  CHECK(shaded.transmittance == open.transmittance);
+  CHECK(shaded.transmittance < 0.5f);  // the ray did go through cloud
+  CHECK(shaded.radiance.x < open.radiance.x);
+  CHECK(shaded.radiance.y < open.radiance.y);
+  CHECK(shaded.radiance.z < open.radiance.z);
+  // The renderer makes the map only where a layer has one above it.
+  render::Camera small = camera(false);
+  small.width = 8;
+  small.height = 4;
+  settings.shadow_map_size = 8;
+  const auto has_maps = [](const render::RenderResult& r) {
+    return std::any_of(r.passes.begin(), r.passes.end(), [](const std::string& p) { return p.rfind("layer_shadows", 0) == 0; });
+  };
+  CHECK(has_maps(render::render_clouds(small, two, field, time, settings, {0, 1}, 0, &noise)));
+  CHECK_FALSE(has_maps(render::render_clouds(small, {two[0]}, field, time, settings, {0, 1}, 0, &noise)));
 }

@@ -742,9 +742,23 @@ TEST_CASE("cloud_march.glsl on the GPU agrees with the CPU", "[probe][march]") {
   glTextureParameteri(weather_texture, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
   glBindTextureUnit(1, noise.texture());
   glBindTextureUnit(2, weather_texture);
+  // The cumulus's shadow map (probe_march_params: shadow_map 0, 30 km each way): 4 x 4 texels of
+  // depths 0.5 to 1.7, neighbours at most 1.2 apart.
+  std::vector<float> shadow;
+  for (int k = 0; k < size * size; ++k) shadow.push_back(0.5f + 0.3f * float((3 * k) % 5));
+  GLuint shadow_texture = 0;
+  glCreateTextures(GL_TEXTURE_2D_ARRAY, 1, &shadow_texture);
+  glTextureStorage3D(shadow_texture, 1, GL_R32F, size, size, 1);
+  glTextureSubImage3D(shadow_texture, 0, 0, 0, 0, size, size, 1, GL_RED, GL_FLOAT, shadow.data());
+  glTextureParameteri(shadow_texture, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTextureParameteri(shadow_texture, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTextureParameteri(shadow_texture, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTextureParameteri(shadow_texture, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  glBindTextureUnit(6, shadow_texture);
   MarchSources sources;
   sources.noise = noise.host_copy();
   sources.weather = {size, channels, weather.data()};
+  sources.shadows = {size, 1, shadow.data()};
   auto cpu = [&](const mat4& x) { return probe_cloud_march(x, sources); };
 
   // Altitudes are rounded at the scale of the Earth's radius (march_tolerance.hpp): the height
@@ -768,6 +782,15 @@ TEST_CASE("cloud_march.glsl on the GPU agrees with the CPU", "[probe][march]") {
   const float baked = texel_rounding * test::max_texel_step_of(sources.noise, 2) + kTranscendental +
                       texel_rounding * test::max_texel_step_of(sources.noise, 3);
   const float webanck = 8 * 7.5f * baked;
+  // The shadow map: a sun ray's exit from the top shell moves by kPosition / sin(40 degrees) with
+  // the rounding of positions at the Earth's radius, its uv by that over the map's 60 km; the
+  // lookup by that times the steepest step, 1.2 per quarter of uv, plus its own arithmetic.
+  // The top shell's point: its altitude by kPosition, its tangent-plane coordinates by
+  // kPosition / sin of the smallest angle between the radial direction and the plane (they are
+  // within 30 km of the camera: about 1, so kPosition).
+  const float exit_uv = float(test::kPosition / 0.64 / 60000.0);
+  const float map_lookup = exit_uv * 1.2f * 4 + kArithmetic;
+  const float shell = float(test::kPosition);
   Random r(18);
   std::vector<Case> cases;
   auto relative = [&](const mat4& x, float tolerance) {
@@ -803,7 +826,25 @@ TEST_CASE("cloud_march.glsl on the GPU agrees with the CPU", "[probe][march]") {
                                        vec4(p.x, p.y, k % 2 ? -860.0f : altitude - 860.0f, 0), vec4(0), pixel + vec4(0, 0, float(k), 0)),
                              march));
   }
+  // Shadow maps: points of the cumulus within 25 km, texels anywhere in the map; the depth
+  // through the alto from the cumulus's top (relative, a march).
+  for (int k = 0; k < 12; ++k) {
+    const vec4 p(r(-25000.0f, 25000.0f), r(-25000.0f, 25000.0f), r(1600.0f, 2900.0f) - 860.0f, 0.0f);
+    const vec4 uv(r(0.0f, 1.0f), r(0.0f, 1.0f), 0, 0);
+    const vec4 v = cpu(arguments(17, vec4(0), p, vec4(0), uv));
+    cases.push_back({arguments(17, vec4(0), p, vec4(0), uv), std::max({exit_uv, map_lookup, march * std::abs(v.w)})});
+    const vec4 xy(r(-30000.0f, 30000.0f), r(-30000.0f, 30000.0f), 0, 0);
+    const vec4 w = cpu(arguments(18, vec4(0), vec4(0), vec4(0), xy));
+    cases.push_back({arguments(18, vec4(0), vec4(0), vec4(0), xy), std::max(shell, march * std::abs(w.w))});
+    // On the CPU: the point lies on the top shell at the coordinates asked for, and the lookup
+    // reads the bilinear map there (texel centres at (i + 1/2) / 4).
+    CHECK(w.x == Approx(3000.0f).epsilon(0).margin(shell));
+    CHECK(std::abs(w.y) <= shell);
+    CHECK(std::abs(w.z) <= shell);
+    CHECK(v.z == Approx(sources.shadows.sample(vec2(v.x, v.y), 0)).epsilon(0).margin(kArithmetic));
+  }
   compare("cloud_march", cpu, cases);
+  glDeleteTextures(1, &shadow_texture);
   glDeleteTextures(1, &weather_texture);
 }
 

@@ -15,6 +15,8 @@
 //                         the includer also defines terrain.glsl's hooks)
 //   CONVECTIVE_DENSITY(q, c)  float: the density of convective cloud c's volume at q in [0, 1]^3,
 //                         trilinear, clamped to the edge (docs/convection.md)
+//   LAYER_SHADOW(uv, map)  float: shadow map `map` (higher_layers_depth below) at uv in [0, 1]^2,
+//                         bilinear, clamped to the edge
 #ifndef NEPHELE_CLOUD_MARCH_GLSL
 #define NEPHELE_CLOUD_MARCH_GLSL
 #include "prelude.glsl"
@@ -207,7 +209,7 @@ float density_at(vec3 p, vec3 centre, int layer, float footprint, bool fine, IN(
   return l.extinction * cloud_density(l.type, q.h, q.c, q.shape, mix(q.detail, detail, 0.5f));
 }
 
-// Optical depth from p towards the sun within the same layer (other layers' shadows are left out).
+// Optical depth from p towards the sun within the same layer (the layers wholly above it: higher_layers_depth).
 float optical_depth_to_sun(vec3 p, vec3 centre, int layer, IN(MarchParams) m MARCH_SOURCES_PARAM) {
   LayerParams l = m.layers[layer];
   float length_to_exit = min((l.top - l.base) / max(m.sun.z, 0.15f), 4000.0f);
@@ -331,12 +333,13 @@ float convective_shadow_depth(vec3 p, vec3 centre, INOUT(int) loop_count, IN(Mar
 const float CONVECTIVE_ALBEDO = 0.99f;
 
 // Optical depth from p towards the sun through the layers whose base is at or above min_base,
-// except layer skip (-1: none): the clouds' shadows on the ground. (Called per cloud sample for
-// the shadows of higher layers on lower ones, it made llvmpipe cut loops before the marcher's
-// count reached LOOP_LIMIT, so the loop guard missed them: left out, docs/rendering.md.) SHADOW_STEPS midpoint samples of the light march's density per interval; counts its
-// loop iterations into loop_count.
-float shadow_depth(vec3 p, vec3 centre, int skip, float min_base, INOUT(int) loop_count,
-                   IN(MarchParams) m MARCH_SOURCES_PARAM) {
+// except layer skip (-1: none): the clouds' shadows on the ground, and the shadow maps' texels.
+// (Called per cloud sample for the shadows of higher layers on lower ones, it made llvmpipe cut
+// loops before the marcher's count reached LOOP_LIMIT, so the loop guard missed them: the maps
+// below replace that.) SHADOW_STEPS midpoint samples of the light march's density per interval;
+// counts its loop iterations into loop_count.
+float layers_shadow_depth(vec3 p, vec3 centre, int skip, float min_base, INOUT(int) loop_count,
+                          IN(MarchParams) m MARCH_SOURCES_PARAM) {
   float tau = 0.0f;
   loop_count += m.layer_count;  // every iteration of the layer loop counts towards the limit
   for (int layer = 0; layer < m.layer_count; ++layer) {
@@ -355,7 +358,55 @@ float shadow_depth(vec3 p, vec3 centre, int skip, float min_base, INOUT(int) loo
       loop_count += SHADOW_STEPS;
     }
   }
-  return tau + convective_shadow_depth(p, centre, loop_count, m MARCH_SOURCES_ARG);
+  return tau;
+}
+
+// The same plus the convective clouds' (all of them, whatever their altitude).
+float shadow_depth(vec3 p, vec3 centre, int skip, float min_base, INOUT(int) loop_count,
+                   IN(MarchParams) m MARCH_SOURCES_PARAM) {
+  float layers = layers_shadow_depth(p, centre, skip, min_base, loop_count, m MARCH_SOURCES_ARG);
+  return layers + convective_shadow_depth(p, centre, loop_count, m MARCH_SOURCES_ARG);
+}
+
+// ---- Shadows of higher layers on lower ones (docs/rendering.md, "Shadows between layers") ----
+// A layer with layers wholly above it (base at or above its top) has a shadow map: over the
+// camera's tangent plane, the optical depth towards the sun through those layers from the
+// points of the layer's top shell (render/layer_shadows.comp fills it once per render). A point
+// p of the layer lies on the sun ray through the point where that ray leaves the top shell, and
+// beyond that point the ray meets only higher layers: the map read there is p's depth through
+// them, so each sample takes one lookup instead of a march through the layers above.
+
+// The tangent-plane coordinates of q: its projection from the Earth's centre onto the plane
+// z = 0 through the camera.
+vec2 shadow_map_xy(vec3 q, vec3 centre) { return vec2(q) * (-centre.z / (q.z - centre.z)); }
+
+// The point of layer `layer`'s top shell whose tangent-plane coordinates are xy.
+vec3 shadow_map_origin(vec2 xy, vec3 centre, int layer, IN(MarchParams) m) {
+  return centre + (m.earth_radius + m.layers[layer].top) * normalize(vec3(xy, 0.0f) - centre);
+}
+
+// The map's value at uv in [0, 1]^2 (a texel's centre when the pass fills it): the depth through
+// the layers wholly above `layer` from the top shell's point there; the map spans
+// [-shadow_extent, shadow_extent]^2 of the tangent plane.
+float shadow_map_texel(vec2 uv, vec3 centre, int layer, INOUT(int) loop_count, IN(MarchParams) m MARCH_SOURCES_PARAM) {
+  vec3 q = shadow_map_origin((2.0f * uv - 1.0f) * m.shadow_extent, centre, layer, m);
+  return layers_shadow_depth(q, centre, layer, m.layers[layer].top, loop_count, m MARCH_SOURCES_ARG);
+}
+
+// Where the sun ray from p (in layer `layer`, below its top) leaves the top shell, as the map's
+// coordinates uv.
+vec2 shadow_map_uv(vec3 p, vec3 centre, int layer, IN(MarchParams) m) {
+  vec2 shell = ray_sphere(p, m.sun, centre, m.earth_radius + m.layers[layer].top);
+  vec3 q = p + max(shell.y, 0.0f) * m.sun;
+  return 0.5f + 0.5f * shadow_map_xy(q, centre) / m.shadow_extent;
+}
+
+// The optical depth from p (in layer `layer`) towards the sun through the layers wholly above
+// it, from its shadow map; 0 where the layer has none.
+float higher_layers_depth(vec3 p, vec3 centre, int layer, IN(MarchParams) m MARCH_SOURCES_PARAM) {
+  int map = m.layers[layer].shadow_map;
+  if (map < 0) return 0.0f;
+  return LAYER_SHADOW(shadow_map_uv(p, centre, layer, m), map);
 }
 
 // The intervals of a view ray inside each layer, in order of distance (start, end in .x, .y):
@@ -469,7 +520,8 @@ void march_interval(float a, float b, int layer, bool convective, vec3 d, vec3 c
       if (layer >= 0 && cloud.x > 0.0f) h = (h * sigma_layer + cloud.y * cloud.x) / sigma;
       float tau = 0.0f;
       if (m.light_steps > 0) {
-        if (layer >= 0) tau = optical_depth_to_sun(p, centre, layer, m MARCH_SOURCES_ARG);
+        // Its own layer's depth by the light march, the layers above it from their map.
+        if (layer >= 0) tau = optical_depth_to_sun(p, centre, layer, m MARCH_SOURCES_ARG) + higher_layers_depth(p, centre, layer, m MARCH_SOURCES_ARG);
         if (convective) {
           tau += convective_depth_to_sun(p, centre, m MARCH_SOURCES_ARG);
           result.loop_count += m.light_steps * (1 + m.convective_count) + 2 * m.convective_count;

@@ -18,6 +18,7 @@ struct LayerParams {
   float min_distance;    // the layer starts this far from the camera (no rule uses it today)
   vec2 wind;             // unit wind direction (towards), east-north
   vec2 noise_offset;     // how far the wind moved the noise (tau), along and across the wind, m
+  int shadow_map;        // layer of the shadow maps with the depth through the layers above; -1: none
 };
 
 // The ground's height field (shaders/lib/terrain.glsl, docs/terrain.md).
@@ -68,6 +69,7 @@ struct MarchParams {
   float pixel_angle;       // angle subtended by one pixel (radians), for noise level of detail
   float noise_texels;      // texels per side of the noise volume
   int frame;               // which frame of a temporal accumulation (shifts the jitter)
+  float shadow_extent;     // half-size of the shadow maps' square (cloud_march.glsl), metres
   TerrainParams terrain;   // the ground (its heights are the third texture)
   ConvectiveParams convective[MAX_CONVECTIVE];  // volume c is layer c of the fourth texture
   int convective_count;

@@ -4,11 +4,6 @@
 // compares the two).
 layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
 layout(rgba32f, binding = 0) uniform writeonly image2D radiance_image;
-layout(binding = 1) uniform sampler3D noise_volume;
-layout(binding = 2) uniform sampler2DArray weather_field;
-layout(binding = 4) uniform sampler2D terrain_heights;  // terrain.glsl's height field
-// The convective clouds' density volumes, volume c in z-layers [c N, (c + 1) N) (N^3 each).
-layout(binding = 5) uniform sampler3D convective_volumes;
 // Pixels whose loops ran (or would have run) past LOOP_LIMIT iterations in all (cut short on
 // llvmpipe, docs/rendering.md): their count, and one bit per pixel (pixel y width + x is bit
 // k % 32 of word k / 32). The host reads both; studies leave those pixels out of a reference.
@@ -17,24 +12,7 @@ layout(std430, binding = 3) buffer LoopGuard {
   uint loop_limited_bits[];
 };
 
-#define MARCH_SOURCES_PARAM
-#define MARCH_SOURCES_ARG
-#define NOISE_LOD(x, lod) textureLod(noise_volume, x, lod)
-#define WEATHER_COVERAGE(uv, channel) texture(weather_field, vec3(uv, float(channel))).x
-#define TERRAIN_SOURCE_PARAM
-#define TERRAIN_SOURCE_ARG
-#define TERRAIN_HEIGHT(uv) texture(terrain_heights, uv).x
-#define TERRAIN_CEILING(uv) texture(terrain_heights, uv).y
-#define MARCH_TERRAIN_ARG
-#define CONVECTIVE_DENSITY(q, cloud) texture(convective_volumes, convective_texel(q, cloud)).x
-// Volume c's coordinates q in the stack, z clamped to its own texel centres (so it is read as
-// its own texture with GL_CLAMP_TO_EDGE would be, the C++ twin's ConvectiveSource).
-vec3 convective_texel(vec3 q, int cloud) {
-  ivec3 size = textureSize(convective_volumes, 0);
-  float n = float(size.x);
-  return vec3(q.x, q.y, (float(cloud) * n + clamp(q.z * n, 0.5, n - 0.5)) / float(size.z));
-}
-#include "../lib/cloud_march.glsl"
+#include "march_sources.glsl"
 
 uniform MarchParams u_march;
 // The first row of the band being marched (RenderSettings::first_row; 0 for a whole image).

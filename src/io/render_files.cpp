@@ -76,6 +76,7 @@ json::Value scene_sidecar(const SceneRender& r, const regional::Scene& scene) {
   steps.set("light", scene.light_steps);
   steps.set("frames", scene.frames);
   steps.set("sky", scene.sky_steps);
+  steps.set("shadow_map", scene.shadow_map_size);
   root.set("steps", steps);
   root.set("exposure", scene.exposure);
   root.set(std::string(params::scene::terrain.key), scene.terrain);

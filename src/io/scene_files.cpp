@@ -87,6 +87,8 @@ Scene parse_scene(const std::string& text, const std::string& source, const std:
       s.frames = k.integer(v, key);
     } else if (key == "sky_steps") {
       s.sky_steps = k.integer(v, key);
+    } else if (key == "shadow_map_size") {
+      s.shadow_map_size = k.integer(v, key);
     } else if (key == "fog_top") {
       s.fog_top_m = k.number(v, key);
     } else if (key == "terrain") {

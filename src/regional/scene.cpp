@@ -68,6 +68,7 @@ void validate_scene(const Scene& s, const std::string& source, const KeyOptions&
   check_range(where("light_steps"), s.light_steps, params::scene::light_steps);
   check_range(where("frames"), s.frames, params::scene::frames);
   check_range(where("sky_steps"), s.sky_steps, params::scene::sky_steps);
+  check_range(where("shadow_map_size"), s.shadow_map_size, params::scene::shadow_map_size);
   check_range(where("exposure"), s.exposure, params::scene::exposure);
   check_range(where("fog_top"), s.fog_top_m, params::scene::fog_top);
   check_range(where("cover_size"), s.cover_size, params::scene::cover_size);

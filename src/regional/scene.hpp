@@ -35,6 +35,7 @@ struct Scene {
   int view_steps = params::scene::view_steps.default_int();
   int light_steps = params::scene::light_steps.default_int();
   int sky_steps = params::scene::sky_steps.default_int();
+  int shadow_map_size = params::scene::shadow_map_size.default_int();
   int frames = params::scene::frames.default_int();
   std::string terrain{params::scene::terrain.default_text};  // etopo5, flat or an ETOPO5 file
   double fog_top_m = params::scene::fog_top.default_number;  // sea of fog's top, m above sea level

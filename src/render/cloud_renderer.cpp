@@ -198,9 +198,20 @@ glsl::MarchParams march_params(const Camera& camera, const std::vector<regional:
   for (size_t i = 0; i < active.size(); ++i) {
     const auto& l = *active[i];
     m.layers[i] = {static_cast<int>(l.type), static_cast<int>(l.channel), l.base_m, l.top_m, l.extinction, l.morph,
-                   l.darkness, l.min_distance_m, glm::vec2(wind), glm::vec2(static_cast<float>(travelled), 0.0f)};
+                   l.darkness, l.min_distance_m, glm::vec2(wind), glm::vec2(static_cast<float>(travelled), 0.0f), -1};
   }
   m.layer_count = static_cast<int>(active.size());
+  // A layer with layers wholly above it (their base at or above its top) gets a shadow map of
+  // the depth through them (cloud_march.glsl's higher_layers_depth).
+  int maps = 0;
+  for (int i = 0; i < glsl::MAX_LAYERS; ++i) {
+    bool below_another = false;
+    for (size_t j = 0; i < m.layer_count && j < active.size(); ++j)
+      below_another = below_another || (static_cast<int>(j) != i && active[j]->base_m >= active[i]->top_m);
+    below_another = below_another && settings.shadow_map_size > 0;
+    m.layers[i].shadow_map = below_another ? maps++ : -1;
+  }
+  m.shadow_extent = static_cast<float>(settings.max_distance_m);
 
   const double earth_radius = osculating_earth_radius(camera.latitude_deg);
   const glm::dvec3 sun = sun_direction_enu(unix_seconds, camera.latitude_deg, camera.longitude_deg);
@@ -240,6 +251,12 @@ glsl::MarchParams march_params(const Camera& camera, const std::vector<regional:
   m.convective_count = convective != nullptr ? convective->count() : 0;
   for (int c = 0; c < m.convective_count; ++c) m.convective[c] = convective->params(c);
   return m;
+}
+
+int shadow_map_count(const glsl::MarchParams& params) {
+  int maps = 0;
+  for (int layer = 0; layer < params.layer_count; ++layer) maps += params.layers[layer].shadow_map >= 0 ? 1 : 0;
+  return maps;
 }
 
 RenderResult render_clouds(const Camera& camera, const std::vector<regional::CloudLayer>& layers,
@@ -300,13 +317,41 @@ RenderResult render_clouds(const Camera& camera, const std::vector<regional::Clo
   if (settings.first_row < 0 || rows > camera.height - settings.first_row)
     throw std::logic_error("render_clouds: rows " + std::to_string(settings.first_row) + " + " + std::to_string(rows) +
                            " outside an image of " + std::to_string(camera.height));
+  const glsl::MarchParams params =
+      march_params(camera, layers, field, unix_seconds, settings, wind_towards, wind_speed, convective);
+  // The layers' shadow maps, only where a layer has layers above it.
+  const int maps = shadow_map_count(params);
+  gpu::Texture shadow_maps;
+  if (maps > 0) {
+    const int size = settings.shadow_map_size;
+    timed("layer_shadows", [&] {
+      shadow_maps = gpu::Texture::layered(size, size, maps, GL_R32F);
+      gpu::ComputeProgram program("render/layer_shadows.comp");
+      glsl::set_uniform(program, "u_march", params);
+      shadow_maps.bind_image(0, GL_WRITE_ONLY);
+      glBindTextureUnit(1, noise != nullptr ? noise->texture() : 0);
+      glBindTextureUnit(2, weather);
+      glBindTextureUnit(4, terrain);
+      glBindTextureUnit(5, convective != nullptr ? convective->texture() : 0);
+      for (int layer = 0; layer < params.layer_count; ++layer)
+        if (params.layers[layer].shadow_map >= 0) {
+          program.set("u_layer", layer);
+          program.dispatch_covering(size, size, 1);
+        }
+      gpu::image_barrier();
+    });
+    glTextureParameteri(shadow_maps.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTextureParameteri(shadow_maps.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTextureParameteri(shadow_maps.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTextureParameteri(shadow_maps.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    result.passes.push_back("layer_shadows (" + std::to_string(maps) + " of " + std::to_string(size) + "^2)");
+    if (settings.read_shadow_maps) result.shadow_maps = shadow_maps.read();
+  }
   gpu::Texture image = gpu::Texture::plane(camera.width, camera.height, GL_RGBA32F);
   // Frames of an accumulation, each with its own jitter of the march start, averaged.
   std::vector<double> sum;
   timed("clouds", [&] {
     gpu::ComputeProgram program("render/clouds.comp");
-    glsl::MarchParams params =
-        march_params(camera, layers, field, unix_seconds, settings, wind_towards, wind_speed, convective);
     glsl::set_uniform(program, "u_march", params);
     for (const auto* l : active) result.passes.push_back(std::string("march layer ") + regional::cloud_type_name(l->type));
     for (int c = 0; c < params.convective_count; ++c)
@@ -316,6 +361,7 @@ RenderResult render_clouds(const Camera& camera, const std::vector<regional::Clo
     glBindTextureUnit(2, weather);
     glBindTextureUnit(4, terrain);
     glBindTextureUnit(5, convective != nullptr ? convective->texture() : 0);
+    glBindTextureUnit(6, shadow_maps.id());
     GLuint guard = 0;
     // The count, then a bit per pixel of the whole image.
     const std::vector<GLuint> zeros(1 + (static_cast<std::size_t>(camera.width) * camera.height + 31) / 32, 0u);

@@ -34,6 +34,10 @@ struct RenderSettings {
   double max_distance_m = 150000;
   std::uint32_t seed = 1;
   int noise_size = 64;      // texels per side of the noise volume
+  // Texels per side of the shadow maps of layers with layers above them (docs/rendering.md,
+  // "Shadows between layers"); they span max_distance_m each way from the camera. 0: none.
+  int shadow_map_size = 512;
+  bool read_shadow_maps = false;  // RenderResult::shadow_maps gets their texels (tests)
   // Only rows [first_row, first_row + row_count) of the image are marched (row_count 0: every
   // row); the others are left undefined. Each pixel is the same as in a whole render: the
   // viewer refines a frame in bands of rows across frames.
@@ -52,6 +56,9 @@ struct RenderResult {
   // any frame of an accumulation, counted per frame); and which: pixel y width + x is bit k % 32
   // of word k / 32 (see loop_limited()).
   std::uint32_t loop_limited_pixels = 0;
+  // With RenderSettings::read_shadow_maps: the maps, shadow_map_size^2 floats each in the order
+  // of LayerParams::shadow_map, rows from v = 0 (south).
+  std::vector<float> shadow_maps;
   std::vector<std::uint32_t> loop_limited_bits;
   bool loop_limited(int x, int y) const {
     const std::size_t k = static_cast<std::size_t>(y) * radiance.width + x;
@@ -109,6 +116,9 @@ glsl::MarchParams march_params(const Camera& camera, const std::vector<regional:
                                const regional::WeatherField& field, double unix_seconds,
                                const RenderSettings& settings, glm::dvec2 wind_towards = {0, 1}, double wind_speed = 0,
                                const ConvectiveVolumes* convective = nullptr);
+
+// How many shadow maps a render with these parameters makes (layers with layers above them).
+int shadow_map_count(const glsl::MarchParams& params);
 
 // Needs a current OpenGL 4.5 context. Layers whose coverage channel is zero everywhere in the
 // field are not marched (their absence is listed in passes). The noise volume is made when a

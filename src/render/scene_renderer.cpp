@@ -165,6 +165,7 @@ RenderSettings render_settings(const regional::Scene& scene) {
   settings.light_steps = scene.light_steps;
   settings.frames = scene.frames;
   settings.sky_steps = scene.sky_steps;
+  settings.shadow_map_size = scene.shadow_map_size;
   settings.seed = scene.seed;
   return settings;
 }

@@ -77,12 +77,14 @@ struct TerrainSource {
 };
 
 // The textures of cloud_march.glsl: the noise volume, the weather field, the ground's height
-// field and ceiling, and the convective clouds' volumes.
+// field and ceiling, the convective clouds' volumes and the layers' shadow maps.
 struct MarchSources {
   VolumeSource noise;
   LayeredSource weather;
   TerrainSource terrain;
   ConvectiveSource convective;
+  // The shadow maps (cloud_march.glsl's LAYER_SHADOW): one layer per map; none by default.
+  LayeredSource shadows;
 };
 
 // The velocity sources of the warp's stepping rules: the sampled cube map, the procedural curl,

@@ -43,6 +43,7 @@ void set_uniform(const gpu::ComputeProgram& program, const std::string& name, co
     program.set(layer + "min_distance", l.min_distance);
     program.set(layer + "wind", l.wind);
     program.set(layer + "noise_offset", l.noise_offset);
+    program.set(layer + "shadow_map", l.shadow_map);
   }
   program.set(name + ".layer_count", params.layer_count);
   program.set(name + ".earth_radius", params.earth_radius);
@@ -64,6 +65,7 @@ void set_uniform(const gpu::ComputeProgram& program, const std::string& name, co
   program.set(name + ".pixel_angle", params.pixel_angle);
   program.set(name + ".noise_texels", params.noise_texels);
   program.set(name + ".frame", params.frame);
+  program.set(name + ".shadow_extent", params.shadow_extent);
   program.set(name + ".terrain.enabled", params.terrain.enabled);
   program.set(name + ".terrain.extent", params.terrain.extent);
   program.set(name + ".terrain.top", params.terrain.top);

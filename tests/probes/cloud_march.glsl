@@ -1,21 +1,9 @@
 // Probe of lib/cloud_march.glsl (shared GLSL/C++ subset; tests/test_library_probes.cpp). The
-// GLSL side reads the textures bound to units 1 (noise volume) and 2 (weather field).
+// GLSL side reads the renderer's textures at their units (render/march_sources.glsl).
 #ifndef __cplusplus
-layout(binding = 1) uniform sampler3D noise_volume;
-layout(binding = 2) uniform sampler2DArray weather_field;
-layout(binding = 4) uniform sampler2D terrain_heights;  // terrain.glsl's height field
-#define MARCH_SOURCES_PARAM
-#define MARCH_SOURCES_ARG
-#define NOISE_LOD(x, lod) textureLod(noise_volume, x, lod)
-#define WEATHER_COVERAGE(uv, channel) texture(weather_field, vec3(uv, float(channel))).x
-#define TERRAIN_SOURCE_PARAM
-#define TERRAIN_SOURCE_ARG
-#define TERRAIN_HEIGHT(uv) texture(terrain_heights, uv).x
-#define TERRAIN_CEILING(uv) texture(terrain_heights, uv).y
-#define MARCH_TERRAIN_ARG
-layout(binding = 5) uniform sampler3D convective_volumes;  // one volume here: no stack to clamp in
-#define CONVECTIVE_DENSITY(q, cloud) texture(convective_volumes, q).x
-#include "../lib/cloud_march.glsl"
+// The renderer's textures and hooks (one convective volume here: its stack of one clamps as the
+// C++ twin's ConvectiveSource does).
+#include "../render/march_sources.glsl"
 #endif
 
 // A cumulus and an alto layer seen from 860 m, the sun 40 degrees up in the south-west.
@@ -41,6 +29,8 @@ MarchParams probe_march_params() {
   m.layers[1].min_distance = 0.0f;
   m.layers[1].wind = vec2(0.6f, 0.8f);
   m.layers[1].noise_offset = vec2(120.0f, 0.0f);
+  m.layers[0].shadow_map = 0;   // the cumulus lies wholly below the alto
+  m.layers[1].shadow_map = -1;
   m.layer_count = 2;
   m.earth_radius = 6367000.0f;
   m.camera_altitude = 860.0f;
@@ -58,6 +48,7 @@ MarchParams probe_march_params() {
   m.sky_steps = 6;
   m.weather_extent = 40000.0f;
   m.max_distance = 150000.0f;
+  m.shadow_extent = 30000.0f;
   m.pixel_angle = 0.0875f;
   m.noise_texels = 16.0f;
   m.terrain.enabled = 0;  // the bare sphere (tests/probes/terrain.glsl probes the terrain)
@@ -139,6 +130,23 @@ vec4 probe_cloud_march(mat4 x MARCH_SOURCES_PARAM) {
     int loops = 0;
     float tau = shadow_depth(p, centre, layer, footprint, loops, m MARCH_SOURCES_ARG);
     return vec4(tau, float(loops), march_jitter(ivec2(int(x[3].x), int(x[3].y)), int(x[3].z)), 0.0f);
+  }
+  if (f == 17) {
+    // The shadow map of layer x[0].y: where p's sun ray leaves the layer's top (uv), the depth
+    // read there, and the texel value at uv = x[3].xy.
+    int loops = 0;
+    vec2 uv = shadow_map_uv(p, centre, layer, m);
+    return vec4(uv, higher_layers_depth(p, centre, layer, m MARCH_SOURCES_ARG),
+                shadow_map_texel(vec2(x[3]), centre, layer, loops, m MARCH_SOURCES_ARG));
+  }
+  if (f == 18) {
+    // The top shell's point above the tangent-plane coordinates x[3].xy, its coordinates again,
+    // and the depth through the layers above from there.
+    vec3 q = shadow_map_origin(vec2(x[3]), centre, layer, m);
+    int loops = 0;
+    float tau = layers_shadow_depth(q, centre, layer, m.layers[layer].top, loops, m MARCH_SOURCES_ARG);
+    vec2 xy = shadow_map_xy(q, centre);
+    return vec4(length(q - centre) - m.earth_radius, xy.x - x[3].x, xy.y - x[3].y, tau);
   }
   m.convective_count = 1;
   if (f == 12) {

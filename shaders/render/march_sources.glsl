@@ -1,0 +1,30 @@
+// The textures of the ray marcher (shaders/lib/cloud_march.glsl) and how it reads them, shared by
+// the passes that include it (render/clouds.comp, render/layer_shadows.comp); their C++ twin is
+// src/shader_math/hook_macros.hpp.
+layout(binding = 1) uniform sampler3D noise_volume;
+layout(binding = 2) uniform sampler2DArray weather_field;
+layout(binding = 4) uniform sampler2D terrain_heights;  // terrain.glsl's height field and ceiling
+// The convective clouds' density volumes, volume c in z-layers [c N, (c + 1) N) (N^3 each).
+layout(binding = 5) uniform sampler3D convective_volumes;
+// The shadow maps of the layers with layers above them (render/layer_shadows.comp).
+layout(binding = 6) uniform sampler2DArray layer_shadows;
+
+#define MARCH_SOURCES_PARAM
+#define MARCH_SOURCES_ARG
+#define NOISE_LOD(x, lod) textureLod(noise_volume, x, lod)
+#define WEATHER_COVERAGE(uv, channel) texture(weather_field, vec3(uv, float(channel))).x
+#define TERRAIN_SOURCE_PARAM
+#define TERRAIN_SOURCE_ARG
+#define TERRAIN_HEIGHT(uv) texture(terrain_heights, uv).x
+#define TERRAIN_CEILING(uv) texture(terrain_heights, uv).y
+#define MARCH_TERRAIN_ARG
+#define CONVECTIVE_DENSITY(q, cloud) texture(convective_volumes, convective_texel(q, cloud)).x
+#define LAYER_SHADOW(uv, map) texture(layer_shadows, vec3(uv, float(map))).x
+// Volume c's coordinates q in the stack, z clamped to its own texel centres (so it is read as
+// its own texture with GL_CLAMP_TO_EDGE would be, the C++ twin's ConvectiveSource).
+vec3 convective_texel(vec3 q, int cloud) {
+  ivec3 size = textureSize(convective_volumes, 0);
+  float n = float(size.x);
+  return vec3(q.x, q.y, (float(cloud) * n + clamp(q.z * n, 0.5, n - 0.5)) / float(size.z));
+}
+#include "../lib/cloud_march.glsl"
