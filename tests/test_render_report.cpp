@@ -10,6 +10,7 @@
 
 #include "gl_support.hpp"
 #include "regional/scene.hpp"
+#include "shader_math/shader_math.hpp"
 #include "studies/render_error.hpp"
 #include "studies/render_report.hpp"
 #include "render/cloud_renderer.hpp"
@@ -77,11 +78,17 @@ TEST_CASE("both render sweeps contain the default settings and a reference beyon
     CHECK(o.width > 0);
     CHECK(o.height > 0);
   }
-  // The issue's reference: 512 view x 64 light steps over every frame count swept.
+  // The reference: more steps than any variant, yet within llvmpipe's loop limit on the longest
+  // grazing interval (4 x the view steps, each in VIEW_REFINE sub-steps with a light march and
+  // 3 scattering octaves; the sky's 17 per sample besides): a reference cut short is none.
   const auto full = studies::RenderSweepOptions::full();
-  CHECK(full.reference_view == 512);
-  CHECK(full.reference_light == 64);
   const auto variants = full.variants();
+  for (const auto& v : variants) {
+    CHECK(full.reference_view > v.view_steps);
+    CHECK(full.reference_light > v.light_steps);
+  }
+  const int loops = full.reference_view * 4 * glsl::VIEW_REFINE * (full.reference_light + 3) + 17 * regional::Scene{}.sky_steps;
+  CHECK(loops < glsl::LOOP_LIMIT);
   CHECK(full.reference_frames ==
         std::max_element(variants.begin(), variants.end(), [](const auto& a, const auto& b) { return a.frames < b.frames; })
             ->frames);
@@ -232,7 +239,7 @@ TEST_CASE("the render summary section names the defaults their error and the two
   const std::string md = studies::render_summary_markdown(table, options, studies::choose_render_steps(table, 48, 6), 48, 6);
   CHECK(md.find("## Render: image error against run time") == 0);
   CHECK(md.find("160 x 90") != std::string::npos);
-  CHECK(md.find("512 view x 64 light steps over 4 frames") != std::string::npos);
+  CHECK(md.find("192 view x 24 light steps over 4 frames") != std::string::npos);
   CHECK(md.find("Defaults (of `nephele render` and scene files): 48 view x 6 light steps, display rms 0.2000") !=
         std::string::npos);
   CHECK(md.find("Cheapest within 1.5x the default's error (display rms <= 0.3000): 48 view x 6 light steps, 1/2 "
@@ -244,9 +251,14 @@ TEST_CASE("the render summary section names the defaults their error and the two
   CHECK(md.find("| 48 | 6 | 4 | 1/1 | 400.0 |") != std::string::npos);
   CHECK(count_of(md, "\n| ") == table.size() + 1);  // the header and one table line per row
   CHECK(md.find("left out of every error") == std::string::npos);
+  CHECK(md.find("own error") == std::string::npos);
+  studies::ReferenceCheck check;
+  check.limited = 17;
+  check.half_steps = {96, 12, 4, 1, 0.0, 0.00123, 0.00456, 0.01};
   const std::string limited =
-      studies::render_summary_markdown(table, options, studies::choose_render_steps(table, 48, 6), 48, 6, 17);
+      studies::render_summary_markdown(table, options, studies::choose_render_steps(table, 48, 6), 48, 6, check);
   CHECK(limited.find("17 of the reference's 14400 pixels (those that needed 65535 or more") != std::string::npos);
+  CHECK(limited.find("half its steps (96 view x 12 light): display rms 0.00123, rel rms 0.00456") != std::string::npos);
   const std::string without =
       studies::render_summary_markdown(table, options, studies::choose_render_steps(table, 64, 6), 64, 6);
   CHECK(without.find("not in this sweep") != std::string::npos);
@@ -270,8 +282,14 @@ TEST_CASE("the render error sweep is exactly zero at the reference's own step co
   options.width = 16;
   options.height = 8;
   int reported = 0;
-  unsigned limited = 99;
-  const auto rows = studies::render_error_sweep(scene, options, [&](const RenderErrorRow&) { ++reported; }, &limited);
+  studies::ReferenceCheck check;
+  check.limited = 99;
+  const auto rows = studies::render_error_sweep(scene, options, [&](const RenderErrorRow&) { ++reported; }, &check);
+  const unsigned limited = check.limited;
+  // The reference's own error: rendered at half its steps (6 x 1), it differs, like the 6-step row.
+  CHECK(check.half_steps.view_steps == 6);
+  CHECK(check.half_steps.light_steps == 1);
+  CHECK(check.half_steps.display_rms > 0.0);
   REQUIRE(rows.size() == 4);
   CHECK(reported == 4);
   CHECK(limited == 0);

@@ -30,8 +30,8 @@ RenderSweepOptions RenderSweepOptions::full() {
   o.extra = {{d.view_steps, d.light_steps, 2, 1}, {d.view_steps, d.light_steps, 4, 1},
              {d.view_steps, d.light_steps, 1, 2}, {d.view_steps, d.light_steps, 1, 4},
              {24, 6, 4, 1},                       {d.view_steps, d.light_steps, 4, 2}};
-  o.reference_view = 512;
-  o.reference_light = 64;
+  o.reference_view = 192;
+  o.reference_light = 24;
   o.reference_frames = 4;
   o.width = 160;
   o.height = 90;
@@ -130,7 +130,7 @@ void measure_render_error(const core::ImageData& image, const core::ImageData& r
 
 std::vector<RenderErrorRow> render_error_sweep(const regional::Scene& scene, const RenderSweepOptions& options,
                                                const std::function<void(const RenderErrorRow&)>& progress,
-                                               unsigned* reference_limited) {
+                                               ReferenceCheck* reference_check) {
   regional::Scene base = scene;
   base.width = options.width;
   base.height = options.height;
@@ -168,8 +168,15 @@ std::vector<RenderErrorRow> render_error_sweep(const regional::Scene& scene, con
         for (int ty = y / tile * tile; ty < std::min(y / tile * tile + tile, options.height); ++ty)
           for (int tx = x / tile * tile; tx < std::min(x / tile * tile + tile, options.width); ++tx)
             excluded[static_cast<size_t>(ty) * options.width + tx] = true;
-  if (reference_limited != nullptr)
-    *reference_limited = static_cast<unsigned>(std::count(excluded.begin(), excluded.end(), true));
+  if (reference_check != nullptr) {
+    reference_check->limited = static_cast<unsigned>(std::count(excluded.begin(), excluded.end(), true));
+    const RenderVariant half{std::max(1, options.reference_view / 2), std::max(1, options.reference_light / 2),
+                             options.reference_frames, 1};
+    RenderErrorRow& row = reference_check->half_steps;
+    row = {half.view_steps, half.light_steps, half.frames, 1};
+    measure_render_error(render_variant(half, &row.time_ms).render.radiance, reference.render.radiance, base.exposure,
+                         excluded, row);
+  }
   std::vector<RenderErrorRow> rows;
   for (const RenderVariant& v : options.variants()) {
     RenderErrorRow row{v.view_steps, v.light_steps, v.frames, v.divisor};

@@ -33,13 +33,15 @@ struct RenderSweepOptions {
   // Every view x light pair at one frame and full resolution, then the extra variants.
   std::vector<int> view_steps, light_steps;
   std::vector<RenderVariant> extra;
-  int reference_view = 512, reference_light = 64, reference_frames = 4;
+  // The reference: the most steps that stay within llvmpipe's loop limit on the default scene
+  // (192 x 4 grazing x 2 sub-steps x (24 + 3) = 41472 iterations of the 65535; docs/rendering.md).
+  int reference_view = 192, reference_light = 24, reference_frames = 4;
   int width = 160, height = 90;
 
   std::vector<RenderVariant> variants() const;
 
   // View 8, 16, 32, 48, 96 x light 2, 4, 6, 12; the defaults over 2 and 4 frames and at 1/2 and
-  // 1/4 resolution; 24 x 6 over 4 frames; against 512 x 64 steps over 4 frames, 160 x 90 pixels.
+  // 1/4 resolution; 24 x 6 over 4 frames; against 192 x 24 steps over 4 frames, 160 x 90 pixels.
   static RenderSweepOptions full();
   // View 8, 16, 48 x light 2, 12, the defaults over 2 frames and at 1/2 resolution, against
   // 96 x 12 steps over 2 frames, 32 x 18 pixels (seconds, for CI).
@@ -57,15 +59,25 @@ core::ImageData upsample_bilinear(const core::ImageData& image, int width, int h
 void measure_render_error(const core::ImageData& image, const core::ImageData& reference, double exposure,
                           const std::vector<bool>& excluded, RenderErrorRow& row);
 
+// What a sweep found about its own reference.
+struct ReferenceCheck {
+  // Pixels left out: those llvmpipe's loop limit cut short, with their workgroups.
+  unsigned limited = 0;
+  // The reference rendered with half its view and light steps (the same frames), against it:
+  // an estimate of the reference's own error, which the rows' errors must clearly exceed to mean
+  // anything. Not measured: the row's steps are 0.
+  RenderErrorRow half_steps;
+};
+
 // Renders `scene` at the options' frame size with each variant (grid first, view-major) and
 // compares with the reference; `progress` gets each row when it is done. The pixels of the
 // reference that llvmpipe's loop limit cut short (render::RenderResult::loop_limited, with the
-// rest of their 8 x 8 workgroup, which llvmpipe may have cut with them; the reference's many
-// steps run into the limit near the horizon) are no reference: they are left out of every row's
-// errors, and `reference_limited` (optional) gets their number. Needs a current OpenGL 4.5
+// rest of their 8 x 8 workgroup, which llvmpipe may have cut with them) are no reference: they
+// are left out of every row's errors. `reference` (optional) gets their number and, rendered
+// once more at half the reference's steps, its own error estimate. Needs a current OpenGL 4.5
 // context.
 std::vector<RenderErrorRow> render_error_sweep(const regional::Scene& scene, const RenderSweepOptions& options,
                                                const std::function<void(const RenderErrorRow&)>& progress = {},
-                                               unsigned* reference_limited = nullptr);
+                                               ReferenceCheck* reference = nullptr);
 
 }  // namespace nephele::studies

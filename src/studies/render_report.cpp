@@ -148,7 +148,7 @@ std::string render_error_svg(const std::vector<RenderErrorRow>& rows, const std:
 
 std::string render_summary_markdown(const std::vector<RenderErrorRow>& rows, const RenderSweepOptions& options,
                                     const RenderStepChoice& choice, int default_view, int default_light,
-                                    unsigned reference_limited) {
+                                    const ReferenceCheck& reference) {
   std::ostringstream s;
   char line[768];
   s << "## Render: image error against run time\n\n";
@@ -163,12 +163,20 @@ std::string render_summary_markdown(const std::vector<RenderErrorRow>& rows, con
                 options.width, options.height, options.reference_view, options.reference_light,
                 options.reference_frames);
   s << line;
-  if (reference_limited > 0) {
+  if (reference.limited > 0) {
     std::snprintf(line, sizeof line,
                   "%u of the reference's %d pixels (those that needed 65535 or more shader loop iterations, "
                   "where llvmpipe stops every loop, and the rest of their 8 x 8 workgroups) are no reference: "
                   "they are left out of every error below.\n\n",
-                  reference_limited, options.width * options.height);
+                  reference.limited, options.width * options.height);
+    s << line;
+  }
+  if (reference.half_steps.view_steps > 0) {
+    std::snprintf(line, sizeof line,
+                  "The reference's own error, estimated by rendering it with half its steps (%d view x %d light): "
+                  "display rms %.5f, rel rms %.5f. Errors below that are not resolved.\n\n",
+                  reference.half_steps.view_steps, reference.half_steps.light_steps, reference.half_steps.display_rms,
+                  reference.half_steps.rms_error);
     s << line;
   }
   s << "| view steps | light steps | frames | resolution | clouds ms | display rms | rel rms | rel max | |\n"

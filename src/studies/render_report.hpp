@@ -48,11 +48,12 @@ std::string render_error_table_line(const RenderErrorRow& row);
 std::string render_error_svg(const std::vector<RenderErrorRow>& rows, const std::string& title,
                              const std::string& subtitle, int default_view, int default_light);
 
-// The "Render: image error against run time" section of summary.md; `reference_limited`: the
-// reference's pixels cut short by llvmpipe's loop limit (said when not 0).
+// The "Render: image error against run time" section of summary.md; `reference`: what the sweep
+// found about its reference (the pixels left out, said when not 0; its own error estimate, said
+// when measured).
 std::string render_summary_markdown(const std::vector<RenderErrorRow>& rows, const RenderSweepOptions& options,
                                     const RenderStepChoice& choice, int default_view, int default_light,
-                                    unsigned reference_limited = 0);
+                                    const ReferenceCheck& reference = {});
 
 // "48 view x 12 light steps", with ", 4 frames" and ", 1/2 resolution" where they apply.
 std::string render_variant_name(const RenderErrorRow& row);

@@ -34,7 +34,7 @@ int run_report(const std::vector<std::string>& all_arguments) {
                   "error_vs_runtime.svg (work-precision diagram), stability.csv and summary.md into --out.\n"
                   "The flow time T = iterations * step stays fixed; fixed-step schemes use h = T / steps.\n"
                   "Then renders the default scene with view steps 8..96 x light steps 2..12, over 2 and 4\n"
-                  "frames and at 1/2 and 1/4 resolution, against 512 x 64 steps over 4 frames (quick: 8,16,48\n"
+                  "frames and at 1/2 and 1/4 resolution, against 192 x 24 steps over 4 frames (quick: 8,16,48\n"
                   "x 2,12 against 96 x 12 over 2 frames) into render_error.csv, render_error_vs_runtime.svg and\n"
                   "a section of summary.md; the error is the RMS of the display values in [0, 1].\n"
                   "`nephele report render [options]` runs only the render sweep.", params::report);
@@ -103,7 +103,7 @@ int run_report(const std::vector<std::string>& all_arguments) {
   result.device = context.info().renderer + " (" + context.info().version + ")";
 
   std::vector<studies::RenderErrorRow> render_rows;
-  unsigned reference_limited = 0;
+  studies::ReferenceCheck reference_check;
   if (!no_render) {
     std::cout << "render sweep: default scene at " << render_sweep.width << "x" << render_sweep.height
               << ", reference " << render_sweep.reference_view << " view x " << render_sweep.reference_light
@@ -119,8 +119,12 @@ int run_report(const std::vector<std::string>& all_arguments) {
           std::cout << studies::render_error_table_line(row) << std::flush;
           render_progress.update(++renders_done, "renders");
         },
-        &reference_limited);
+        &reference_check);
     render_progress.finish();
+    std::cout << "reference check: " << reference_check.half_steps.view_steps << " view x "
+              << reference_check.half_steps.light_steps << " light steps against the reference: display rms "
+              << reference_check.half_steps.display_rms << "; " << reference_check.limited
+              << " reference pixels left out (llvmpipe's loop limit)\n";
   }
   const studies::RenderStepChoice render_choice =
       studies::choose_render_steps(render_rows, render_scene.view_steps, render_scene.light_steps);
@@ -149,7 +153,7 @@ int run_report(const std::vector<std::string>& all_arguments) {
                                      std::to_string(render_sweep.reference_frames) + " frames; " + result.device,
                                  render_scene.view_steps, render_scene.light_steps));
     summary += studies::render_summary_markdown(render_rows, render_sweep, render_choice, render_scene.view_steps,
-                                                render_scene.light_steps, reference_limited);
+                                                render_scene.light_steps, reference_check);
   }
   outputs.write("summary.md", summary);
   outputs.commit();
