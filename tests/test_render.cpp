@@ -11,6 +11,7 @@
 #include "regional/scene.hpp"
 #include "render/cloud_renderer.hpp"
 #include "render/scene_renderer.hpp"
+#include "render/upsample.hpp"
 #include "render/sun_position.hpp"
 
 using namespace nephele;
@@ -173,6 +174,35 @@ TEST_CASE("with the sun below the horizon the scene is far darker than at noon",
   const double day = stats(render::render_clouds(small_camera(), layers, field, noon, quick())).mean;
   const double night = stats(render::render_clouds(small_camera(), layers, field, midnight, quick())).mean;
   CHECK(night < kNightShareOfDay * day);
+}
+
+TEST_CASE("a resolution divisor renders the smaller image and upsamples it to the full size", "[render]") {
+  test::test_context();
+  Scene scene;
+  scene.width = 16;
+  scene.height = 8;
+  scene.view_steps = 8;
+  scene.light_steps = 2;
+  scene.sky_steps = 4;
+  scene.cover_size = 8;
+  scene.time = "2026-06-21T15:00Z";
+  scene.weather = {std::string(NEPHELE_SOURCE_DIR) + "/scenes/weather/bern-summer.json",
+                   std::string(NEPHELE_SOURCE_DIR) + "/scenes/weather/solothurn-summer.json"};
+  const auto stations = io::read_scene_weather(scene);
+  scene.resolution_divisor = 2;
+  const auto divided = render::render_scene(scene, stations);
+  CHECK(contains(divided.passes, "upsample 1/2"));
+  CHECK(divided.render.radiance.width == 16);
+  CHECK(divided.render.radiance.height == 8);
+  // The same as rendering 8 x 4 pixels with the same field of view and upsampling that (bit for
+  // bit: the same marcher on the same pixels, the same interpolation).
+  Scene half = scene;
+  half.resolution_divisor = 1;
+  half.width = 8;
+  half.height = 4;
+  const auto small = render::render_scene(half, stations);
+  CHECK_FALSE(contains(small.passes, "upsample 1/2"));
+  CHECK(render::upsample_bilinear(small.render.radiance, 16, 8).pixels == divided.render.radiance.pixels);
 }
 
 TEST_CASE("a scene with weather files does not generate the global cover and one without does", "[render]") {

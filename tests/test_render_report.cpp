@@ -10,6 +10,7 @@
 
 #include "gl_support.hpp"
 #include "regional/scene.hpp"
+#include "render/upsample.hpp"
 #include "shader_math/shader_math.hpp"
 #include "studies/render_error.hpp"
 #include "studies/render_report.hpp"
@@ -97,7 +98,7 @@ TEST_CASE("both render sweeps contain the default settings and a reference beyon
 TEST_CASE("bilinear upsampling lines up pixel centres and clamps at the edges", "[render][report]") {
   const core::ImageData two{2, 1, 1, {0.0f, 1.0f}};
   // Output centres at source x = (i + 1/2) 2/4 - 1/2 = -0.25, 0.25, 0.75, 1.25; clamped to [0, 1].
-  const auto four = studies::upsample_bilinear(two, 4, 1);
+  const auto four = render::upsample_bilinear(two, 4, 1);
   REQUIRE(four.pixels.size() == 4);
   CHECK(four.pixels[0] == 0.0f);
   CHECK(four.pixels[1] == Approx(0.25f));
@@ -105,10 +106,10 @@ TEST_CASE("bilinear upsampling lines up pixel centres and clamps at the edges", 
   CHECK(four.pixels[3] == 1.0f);
   // The same size is the identity; a constant image stays constant; channels kept apart.
   const core::ImageData rgba{2, 2, 4, {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16}};
-  CHECK(studies::upsample_bilinear(rgba, 2, 2).pixels == rgba.pixels);
+  CHECK(render::upsample_bilinear(rgba, 2, 2).pixels == rgba.pixels);
   const core::ImageData flat{3, 2, 2, std::vector<float>(12, 0.5f)};
-  for (float v : studies::upsample_bilinear(flat, 7, 5).pixels) CHECK(v == Approx(0.5f));
-  const auto down_the_middle = studies::upsample_bilinear(rgba, 4, 4);
+  for (float v : render::upsample_bilinear(flat, 7, 5).pixels) CHECK(v == Approx(0.5f));
+  const auto down_the_middle = render::upsample_bilinear(rgba, 4, 4);
   // Pixel (1, 1) of 4x4 sits at source (0.25, 0.25): 0.75^2 p00 + 0.75 0.25 (p10 + p01) + 0.25^2 p11.
   CHECK(down_the_middle.pixels[(1 * 4 + 1) * 4 + 0] == Approx(0.5625 * 1 + 0.1875 * (5 + 9) + 0.0625 * 13));
 }
@@ -134,7 +135,7 @@ TEST_CASE("the render error of an image is measured in display values and relati
   studies::measure_render_error(reference, reference, exposure, {}, same);
   CHECK(same.display_rms == 0.0);
   CHECK(same.rms_error == 0.0);
-  CHECK_THROWS(studies::measure_render_error(studies::upsample_bilinear(reference, 4, 2), reference, exposure, {}, same));
+  CHECK_THROWS(studies::measure_render_error(render::upsample_bilinear(reference, 4, 2), reference, exposure, {}, same));
   // The differing pixel left out (a reference pixel cut short): no error; the other left out:
   // the same difference over 3 values, relative to the mean 0.3.
   RenderErrorRow without_second;

@@ -75,6 +75,7 @@ json::Value scene_sidecar(const SceneRender& r, const regional::Scene& scene) {
   steps.set("view", scene.view_steps);
   steps.set("light", scene.light_steps);
   steps.set("frames", scene.frames);
+  steps.set("resolution_divisor", scene.resolution_divisor);
   steps.set("sky", scene.sky_steps);
   steps.set("shadow_map", scene.shadow_map_size);
   root.set("steps", steps);

@@ -85,6 +85,8 @@ Scene parse_scene(const std::string& text, const std::string& source, const std:
       s.light_steps = k.integer(v, key);
     } else if (key == "frames") {
       s.frames = k.integer(v, key);
+    } else if (key == "resolution_divisor") {
+      s.resolution_divisor = k.integer(v, key);
     } else if (key == "sky_steps") {
       s.sky_steps = k.integer(v, key);
     } else if (key == "shadow_map_size") {

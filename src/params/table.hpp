@@ -57,6 +57,7 @@ inline constexpr Parameter weather = list("weather", "FILE", "Open-Meteo or mete
 inline constexpr Parameter view_steps = integer("view_steps", 48, 1, 4096, "samples", "samples per layer along each view ray", render_scene_view);
 inline constexpr Parameter light_steps = integer("light_steps", 12, 0, 256, "samples", "samples towards the sun per cloud sample", render_scene_view);
 inline constexpr Parameter frames = integer("frames", 1, 1, 1024, "frames", "frames averaged, each with its own jitter of the march start (temporal accumulation)", render_and_scene);
+inline constexpr Parameter resolution_divisor = integer("resolution_divisor", 1, 1, 8, "", "render at 1/N of the width and height and upsample bilinearly: about N^2 times cheaper, blurred (docs/rendering.md)", render_and_scene);
 inline constexpr Parameter sky_steps = integer("sky_steps", 16, 1, 1024, "samples", "samples of the clear-sky integral", scene_file);
 inline constexpr Parameter shadow_map_size = integer("shadow_map_size", 512, 0, 4096, "texels", "texels per side of the shadow maps that let higher layers shade lower ones (0: no such shadows; docs/rendering.md)", scene_file);
 inline constexpr Parameter fog_top = real("fog_top", 800, 300, 3000, "metres", "top of the ground fog (sea of fog) above sea level when the weather brings fog; 800 m: the Swiss Plateau's winter inversion, below Gurten and Bantiger (docs/terrain.md)", render_and_scene);

@@ -67,6 +67,7 @@ void validate_scene(const Scene& s, const std::string& source, const KeyOptions&
   check_range(where("view_steps"), s.view_steps, params::scene::view_steps);
   check_range(where("light_steps"), s.light_steps, params::scene::light_steps);
   check_range(where("frames"), s.frames, params::scene::frames);
+  check_range(where("resolution_divisor"), s.resolution_divisor, params::scene::resolution_divisor);
   check_range(where("sky_steps"), s.sky_steps, params::scene::sky_steps);
   check_range(where("shadow_map_size"), s.shadow_map_size, params::scene::shadow_map_size);
   check_range(where("exposure"), s.exposure, params::scene::exposure);

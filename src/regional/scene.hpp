@@ -37,6 +37,7 @@ struct Scene {
   int sky_steps = params::scene::sky_steps.default_int();
   int shadow_map_size = params::scene::shadow_map_size.default_int();
   int frames = params::scene::frames.default_int();
+  int resolution_divisor = params::scene::resolution_divisor.default_int();
   std::string terrain{params::scene::terrain.default_text};  // etopo5, flat or an ETOPO5 file
   double fog_top_m = params::scene::fog_top.default_number;  // sea of fog's top, m above sea level
   double exposure = params::scene::exposure.default_number;

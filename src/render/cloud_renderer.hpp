@@ -31,6 +31,9 @@ struct RenderSettings {
   int light_steps = 12;     // samples towards the sun per cloud sample
   int sky_steps = 16;       // samples of the clear-sky integral
   int frames = 1;           // frames averaged, each with its own jitter of the march start
+  // render_prepared marches 1/N of the width and height and upsamples (render/upsample.hpp);
+  // render_clouds itself always renders the camera's size.
+  int resolution_divisor = 1;
   double max_distance_m = 150000;
   std::uint32_t seed = 1;
   int noise_size = 64;      // texels per side of the noise volume

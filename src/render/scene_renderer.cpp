@@ -1,5 +1,7 @@
 #include "render/scene_renderer.hpp"
 
+#include "render/upsample.hpp"
+
 #include <GeographicLib/LocalCartesian.hpp>
 
 #include <cmath>
@@ -164,6 +166,7 @@ RenderSettings render_settings(const regional::Scene& scene) {
   settings.view_steps = scene.view_steps;
   settings.light_steps = scene.light_steps;
   settings.frames = scene.frames;
+  settings.resolution_divisor = scene.resolution_divisor;
   settings.sky_steps = scene.sky_steps;
   settings.shadow_map_size = scene.shadow_map_size;
   settings.seed = scene.seed;
@@ -178,8 +181,19 @@ SceneRender render_prepared(const PreparedScene& prepared, const RenderSettings&
   SceneRender out = prepared.partial;
   RenderSettings with_terrain = settings;
   with_terrain.terrain = prepared.terrain;
-  out.render = render_clouds(out.camera, out.layers, prepared.field, prepared.time, with_terrain, prepared.wind,
+  // With a divisor the camera keeps its field of view at fewer pixels (the pixel angle, and so
+  // the noise's level of detail, grows with it), and the image is upsampled to the full size.
+  const int divisor = std::max(settings.resolution_divisor, 1);
+  Camera marched = out.camera;
+  marched.width = std::max(1, out.camera.width / divisor);
+  marched.height = std::max(1, out.camera.height / divisor);
+  out.render = render_clouds(marched, out.layers, prepared.field, prepared.time, with_terrain, prepared.wind,
                              prepared.wind_speed, noise, prepared.convective.get());
+  if (divisor > 1) {
+    out.render.radiance = upsample_bilinear(out.render.radiance, out.camera.width, out.camera.height);
+    out.render.loop_limited_bits.clear();  // they name the marched pixels; the count stays
+    out.render.passes.push_back("upsample 1/" + std::to_string(divisor));
+  }
   out.passes.insert(out.passes.end(), out.render.passes.begin(), out.render.passes.end());
   return out;
 }

@@ -29,7 +29,8 @@ RenderSweepOptions RenderSweepOptions::full() {
   const regional::Scene d;
   o.extra = {{d.view_steps, d.light_steps, 2, 1}, {d.view_steps, d.light_steps, 4, 1},
              {d.view_steps, d.light_steps, 1, 2}, {d.view_steps, d.light_steps, 1, 4},
-             {24, 6, 4, 1},                       {d.view_steps, d.light_steps, 4, 2}};
+             {24, 6, 4, 1},                       {d.view_steps, d.light_steps, 4, 2},
+             {8, 2, 1, 2},                        {8, 2, 1, 4}};
   o.reference_view = 192;
   o.reference_light = 24;
   o.reference_frames = 4;
@@ -50,39 +51,6 @@ RenderSweepOptions RenderSweepOptions::quick() {
   o.width = 32;
   o.height = 18;
   return o;
-}
-
-core::ImageData upsample_bilinear(const core::ImageData& image, int width, int height) {
-  if (image.width < 1 || image.height < 1 || width < 1 || height < 1)
-    throw std::invalid_argument("upsample_bilinear: empty image");
-  core::ImageData out{width, height, image.channels, {}};
-  out.pixels.resize(static_cast<size_t>(width) * height * image.channels);
-  // Pixel centres line up: output pixel x covers the source coordinate (x + 1/2) w/W - 1/2.
-  const auto source = [](int i, int from, int to, int& i0, int& i1, float& t) {
-    const double s = std::clamp((i + 0.5) * from / to - 0.5, 0.0, from - 1.0);
-    i0 = static_cast<int>(std::floor(s));
-    i1 = std::min(i0 + 1, from - 1);
-    t = static_cast<float>(s - i0);
-  };
-  for (int y = 0; y < height; ++y) {
-    int y0, y1;
-    float ty;
-    source(y, image.height, height, y0, y1, ty);
-    for (int x = 0; x < width; ++x) {
-      int x0, x1;
-      float tx;
-      source(x, image.width, width, x0, x1, tx);
-      const auto at = [&](int xi, int yi, int c) {
-        return image.pixels[(static_cast<size_t>(yi) * image.width + xi) * image.channels + c];
-      };
-      for (int c = 0; c < image.channels; ++c) {
-        const float top = at(x0, y0, c) + tx * (at(x1, y0, c) - at(x0, y0, c));
-        const float bottom = at(x0, y1, c) + tx * (at(x1, y1, c) - at(x0, y1, c));
-        out.pixels[(static_cast<size_t>(y) * width + x) * image.channels + c] = top + ty * (bottom - top);
-      }
-    }
-  }
-  return out;
 }
 
 void measure_render_error(const core::ImageData& image, const core::ImageData& reference, double exposure,
@@ -144,13 +112,8 @@ std::vector<RenderErrorRow> render_error_sweep(const regional::Scene& scene, con
     s.view_steps = v.view_steps;
     s.light_steps = v.light_steps;
     s.frames = v.frames;
-    PreparedScene at_size = prepared;
-    if (v.divisor > 1) {
-      s.width = std::max(1, options.width / v.divisor);
-      s.height = std::max(1, options.height / v.divisor);
-      at_size.partial.camera = render::scene_camera(s);
-    }
-    const SceneRender r = render::render_prepared(at_size, s, &noise);
+    s.resolution_divisor = v.divisor;  // render_prepared marches fewer pixels and upsamples
+    const SceneRender r = render::render_prepared(prepared, s, &noise);
     if (time_ms != nullptr)
       for (const auto& [name, ms] : r.render.timings_ms)
         if (name == "clouds") *time_ms = ms;
@@ -182,8 +145,7 @@ std::vector<RenderErrorRow> render_error_sweep(const regional::Scene& scene, con
     RenderErrorRow row{v.view_steps, v.light_steps, v.frames, v.divisor};
     const SceneRender r = render_variant(v, &row.time_ms);
     const core::ImageData& image = r.render.radiance;
-    measure_render_error(v.divisor > 1 ? upsample_bilinear(image, options.width, options.height) : image,
-                         reference.render.radiance, base.exposure, excluded, row);
+    measure_render_error(image, reference.render.radiance, base.exposure, excluded, row);
     rows.push_back(row);
     if (progress) progress(rows.back());
   }

@@ -41,16 +41,13 @@ struct RenderSweepOptions {
   std::vector<RenderVariant> variants() const;
 
   // View 8, 16, 32, 48, 96 x light 2, 4, 6, 12; the defaults over 2 and 4 frames and at 1/2 and
-  // 1/4 resolution; 24 x 6 over 4 frames; against 192 x 24 steps over 4 frames, 160 x 90 pixels.
+  // 1/4 resolution; 24 x 6 over 4 frames; 8 x 2 at 1/2 and 1/4 resolution; against 192 x 24
+  // steps over 4 frames, 160 x 90 pixels.
   static RenderSweepOptions full();
   // View 8, 16, 48 x light 2, 12, the defaults over 2 frames and at 1/2 resolution, against
   // 96 x 12 steps over 2 frames, 32 x 18 pixels (seconds, for CI).
   static RenderSweepOptions quick();
 };
-
-// The image a renderer would show at `width` x `height` from one rendered smaller: bilinear
-// between pixel centres, edges clamped. Channels as in `image`.
-core::ImageData upsample_bilinear(const core::ImageData& image, int width, int height);
 
 // The errors of `image` against `reference` (both linear radiance, the same size and channels,
 // RGB first), display_rms through the display encoding at `exposure` (render::tone_map); fills

@@ -63,6 +63,8 @@ int run_render(const std::vector<std::string>& arguments) {
   options.bind(s::weather, &weather);
   int frames = regional::Scene{}.frames;  // render's own: the viewer accumulates by reprojection
   options.bind(s::frames, &frames);
+  int divisor = regional::Scene{}.resolution_divisor;  // render's own: the viewer refines in bands
+  options.bind(s::resolution_divisor, &divisor);
   std::string terrain;
   options.bind(s::terrain, &terrain);
   double fog_top = regional::Scene{}.fog_top_m;
@@ -89,7 +91,7 @@ int run_render(const std::vector<std::string>& arguments) {
     if (options.given(s::heading)) orbit.heading = scene_options.heading();
     if (options.given(s::pitch)) orbit.pitch = scene_options.pitch();
     if (options.given(s::fov)) orbit.fov = scene_options.fov();
-    for (const auto* ground_only : {&s::at, &s::scene_path, &s::panorama, &s::weather, &s::terrain, &s::fog_top, &s::view_steps, &s::light_steps, &s::frames})
+    for (const auto* ground_only : {&s::at, &s::scene_path, &s::panorama, &s::weather, &s::terrain, &s::fog_top, &s::view_steps, &s::light_steps, &s::frames, &s::resolution_divisor})
       if (options.given(*ground_only))
         throw UsageError(ground_only->option() + ": not taken by --view orbit (it belongs to the ground views)");
     return run_orbit_render(orbit);
@@ -106,6 +108,10 @@ int run_render(const std::vector<std::string>& arguments) {
     typed["at"] = "--at";
   }
   if (options.given(s::frames)) scene.frames = frames;
+  if (options.given(s::resolution_divisor)) {
+    scene.resolution_divisor = divisor;
+    typed["resolution_divisor"] = "--resolution-divisor";
+  }
   if (options.given(s::terrain)) scene.terrain = terrain;
   if (options.given(s::fog_top)) {
     scene.fog_top_m = fog_top;

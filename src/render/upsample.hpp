@@ -1,0 +1,13 @@
+#pragma once
+// Bilinear upsampling of a rendered image: what `resolution_divisor` shows and what the render
+// error sweep compares at lower resolutions.
+#include "core/image.hpp"
+
+namespace nephele::render {
+
+// The image a renderer would show at `width` x `height` from one rendered smaller: bilinear
+// between pixel centres (output pixel x covers the source coordinate (x + 1/2) w / W - 1/2),
+// edges clamped. Channels as in `image`.
+core::ImageData upsample_bilinear(const core::ImageData& image, int width, int height);
+
+}  // namespace nephele::render
