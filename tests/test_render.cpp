@@ -176,8 +176,8 @@ TEST_CASE("with the sun below the horizon the scene is far darker than at noon",
   CHECK(night < kNightShareOfDay * day);
 }
 
-TEST_CASE("a resolution divisor renders the smaller image and upsamples it to the full size", "[render]") {
-  test::test_context();
+// A 16 x 8 view from the Gurten with few steps, the summer weather of Bern and Solothurn.
+static Scene small_summer_scene() {
   Scene scene;
   scene.width = 16;
   scene.height = 8;
@@ -188,6 +188,12 @@ TEST_CASE("a resolution divisor renders the smaller image and upsamples it to th
   scene.time = "2026-06-21T15:00Z";
   scene.weather = {std::string(NEPHELE_SOURCE_DIR) + "/scenes/weather/bern-summer.json",
                    std::string(NEPHELE_SOURCE_DIR) + "/scenes/weather/solothurn-summer.json"};
+  return scene;
+}
+
+TEST_CASE("a resolution divisor renders the smaller image and upsamples it to the full size", "[render]") {
+  test::test_context();
+  Scene scene = small_summer_scene();
   const auto stations = io::read_scene_weather(scene);
   scene.resolution_divisor = 2;
   const auto divided = render::render_scene(scene, stations);
@@ -207,16 +213,7 @@ TEST_CASE("a resolution divisor renders the smaller image and upsamples it to th
 
 TEST_CASE("a scene with weather files does not generate the global cover and one without does", "[render]") {
   test::test_context();
-  Scene scene;
-  scene.width = 16;
-  scene.height = 8;
-  scene.view_steps = 8;
-  scene.light_steps = 2;
-  scene.sky_steps = 4;
-  scene.cover_size = 8;
-  scene.time = "2026-06-21T15:00Z";
-  scene.weather = {std::string(NEPHELE_SOURCE_DIR) + "/scenes/weather/bern-summer.json",
-                   std::string(NEPHELE_SOURCE_DIR) + "/scenes/weather/solothurn-summer.json"};
+  Scene scene = small_summer_scene();
   const auto with_weather = render::render_scene(scene, io::read_scene_weather(scene));
   CHECK_FALSE(contains(with_weather.passes, "global_cover"));
   CHECK(contains(with_weather.passes, "weather_field (2 stations)"));
