@@ -9,7 +9,7 @@
 #   docs/images/gurten-thunderstorm.png      scenes/gurten-thunderstorm.json (convective clouds)
 #   docs/images/bantiger-fog.png             scenes/bantiger-fog.json (the sea of fog from the Bantiger)
 # With --report it also runs `nephele report` (about 35 minutes on two cores) and copies its
-# work-precision diagrams (error_vs_runtime*.svg).
+# work-precision diagrams (error_vs_runtime*.svg, render_error_vs_runtime.svg).
 set -euo pipefail
 repo_root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$repo_root"
@@ -43,5 +43,6 @@ oiiotool "${previews[@]}" --mosaic 4x1 -o docs/images/model_examples.png
 if [[ "${1:-}" == "--report" ]]; then
   "$nephele" report --out "$work/report"
   cp "$work/report/error_vs_runtime.svg" docs/images/error_vs_runtime.svg
+  cp "$work/report/render_error_vs_runtime.svg" docs/images/render_error_vs_runtime.svg
 fi
 echo "readme-images: docs/images updated"
