@@ -228,4 +228,22 @@ TEST_CASE("a layer under an overcast layer reads the depth through it from its s
   };
   CHECK(has_maps(render::render_clouds(small, two, field, time, settings, {0, 1}, 0, &noise)));
   CHECK_FALSE(has_maps(render::render_clouds(small, {two[0]}, field, time, settings, {0, 1}, 0, &noise)));
+  // With a cache (the viewer's bands) the maps are made once while nothing they depend on
+  // changes, and the image is the same to the bit; another sun makes them again.
+  const auto without_cache = render::render_clouds(small, two, field, time, settings, {0, 1}, 0, &noise);
+  settings.shadow_cache = std::make_shared<render::ShadowMapCache>();
+  const auto first = render::render_clouds(small, two, field, time, settings, {0, 1}, 0, &noise);
+  render::Camera turned = small;
+  turned.heading_deg += 40;  // the view's direction: not in the maps
+  const auto again = render::render_clouds(turned, two, field, time, settings, {0, 1}, 0, &noise);
+  const auto later = render::render_clouds(small, two, field, time + 3600, settings, {0, 1}, 0, &noise);
+  const auto passes_of = [](const render::RenderResult& r) {
+    std::string all;
+    for (const auto& p : r.passes) all += p + "; ";
+    return all;
+  };
+  CHECK(passes_of(first).find("layer_shadows (1 of 8^2)") != std::string::npos);
+  CHECK(passes_of(again).find("layer_shadows (reused)") != std::string::npos);
+  CHECK(passes_of(later).find("layer_shadows (1 of 8^2)") != std::string::npos);
+  CHECK(first.radiance.pixels == without_cache.radiance.pixels);
 }

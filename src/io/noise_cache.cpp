@@ -1,5 +1,7 @@
 #include "io/noise_cache.hpp"
 
+#include "core/hash.hpp"
+
 #include <unistd.h>
 
 #include <algorithm>
@@ -21,14 +23,7 @@ constexpr char magic[8] = {'N', 'E', 'P', 'H', 'C', 'A', 'C', '1'};
 constexpr const char* prefix = "cache-";
 constexpr const char* suffix = ".bin";
 
-std::uint64_t fnv1a(const std::string& text) {
-  std::uint64_t hash = 14695981039346656037ull;
-  for (unsigned char c : text) {
-    hash ^= c;
-    hash *= 1099511628211ull;
-  }
-  return hash;
-}
+using core::fnv1a;
 
 }  // namespace
 

@@ -11,6 +11,7 @@
 #include <memory>
 #include <stdexcept>
 
+#include "core/hash.hpp"
 #include "gpu/compute_program.hpp"
 #include "gpu/pass_timer.hpp"
 #include "gpu/shader_sources.hpp"
@@ -117,11 +118,7 @@ constexpr int noise_volume_host_version = 2;
 
 std::string NoiseVolume::recipe_key() {
   // FNV-1a, 64 bits, of the shader as compiled (includes expanded).
-  std::uint64_t hash = 14695981039346656037ull;
-  for (unsigned char c : gpu::expand_shader("render/noise_volume.comp").text) {
-    hash ^= c;
-    hash *= 1099511628211ull;
-  }
+  const std::uint64_t hash = core::fnv1a(gpu::expand_shader("render/noise_volume.comp").text);
   char text[64];
   std::snprintf(text, sizeof text, "noise_volume.comp:%016llx,host:%d", static_cast<unsigned long long>(hash),
                 noise_volume_host_version);
@@ -206,9 +203,8 @@ glsl::MarchParams march_params(const Camera& camera, const std::vector<regional:
   int maps = 0;
   for (int i = 0; i < glsl::MAX_LAYERS; ++i) {
     bool below_another = false;
-    for (size_t j = 0; i < m.layer_count && j < active.size(); ++j)
-      below_another = below_another || (static_cast<int>(j) != i && active[j]->base_m >= active[i]->top_m);
-    below_another = below_another && settings.shadow_map_size > 0;
+    if (i < m.layer_count && settings.shadow_map_size > 0)
+      for (const auto* other : active) below_another = below_another || (other != active[i] && other->base_m >= active[i]->top_m);
     m.layers[i].shadow_map = below_another ? maps++ : -1;
   }
   m.shadow_extent = static_cast<float>(settings.max_distance_m);
@@ -251,6 +247,19 @@ glsl::MarchParams march_params(const Camera& camera, const std::vector<regional:
   m.convective_count = convective != nullptr ? convective->count() : 0;
   for (int c = 0; c < m.convective_count; ++c) m.convective[c] = convective->params(c);
   return m;
+}
+
+// What a render's shadow maps depend on: the layers, the camera's place, the sun, the maps'
+// extent and size, the noise volume and the weather field (not the view's direction, the steps
+// or the frame).
+std::uint64_t shadow_map_key(const glsl::MarchParams& p, int size, const NoiseVolume* noise, const regional::WeatherField& field) {
+  std::uint64_t h = core::fnv1a(p.layers, sizeof(glsl::LayerParams) * static_cast<std::size_t>(p.layer_count));
+  const float numbers[] = {p.earth_radius,   p.camera_altitude, p.sun.x,       p.sun.y,          p.sun.z,
+                           p.shadow_extent,  p.noise_texels,    p.max_distance, p.weather_extent, float(size)};
+  h = core::fnv1a(numbers, sizeof numbers, h);
+  const std::uint64_t volume[] = {noise != nullptr ? noise->texture() : 0u, noise != nullptr ? noise->seed() : 0u};
+  h = core::fnv1a(volume, sizeof volume, h);
+  return core::fnv1a(field.values.data(), field.values.size() * sizeof(float), h);
 }
 
 int shadow_map_count(const glsl::MarchParams& params) {
@@ -321,8 +330,15 @@ RenderResult render_clouds(const Camera& camera, const std::vector<regional::Clo
       march_params(camera, layers, field, unix_seconds, settings, wind_towards, wind_speed, convective);
   // The layers' shadow maps, only where a layer has layers above it.
   const int maps = shadow_map_count(params);
-  gpu::Texture shadow_maps;
-  if (maps > 0) {
+  // A caller's cache (the viewer's bands of one frame) keeps them while nothing they depend on
+  // changes; without one they are made for this render alone.
+  const std::shared_ptr<ShadowMapCache> cache =
+      settings.shadow_cache ? settings.shadow_cache : std::make_shared<ShadowMapCache>();
+  gpu::Texture& shadow_maps = cache->maps;
+  const std::uint64_t key = maps > 0 ? shadow_map_key(params, settings.shadow_map_size, noise, field) : 0;
+  if (maps > 0 && shadow_maps.id() != 0 && cache->key == key) {
+    result.passes.push_back("layer_shadows (reused)");
+  } else if (maps > 0) {
     const int size = settings.shadow_map_size;
     timed("layer_shadows", [&] {
       shadow_maps = gpu::Texture::layered(size, size, maps, GL_R32F);
@@ -345,8 +361,9 @@ RenderResult render_clouds(const Camera& camera, const std::vector<regional::Clo
     glTextureParameteri(shadow_maps.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
     glTextureParameteri(shadow_maps.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
     result.passes.push_back("layer_shadows (" + std::to_string(maps) + " of " + std::to_string(size) + "^2)");
-    if (settings.read_shadow_maps) result.shadow_maps = shadow_maps.read();
+    cache->key = key;
   }
+  if (maps > 0 && settings.read_shadow_maps) result.shadow_maps = shadow_maps.read();
   gpu::Texture image = gpu::Texture::plane(camera.width, camera.height, GL_RGBA32F);
   // Frames of an accumulation, each with its own jitter of the march start, averaged.
   std::vector<double> sum;
@@ -361,7 +378,7 @@ RenderResult render_clouds(const Camera& camera, const std::vector<regional::Clo
     glBindTextureUnit(2, weather);
     glBindTextureUnit(4, terrain);
     glBindTextureUnit(5, convective != nullptr ? convective->texture() : 0);
-    glBindTextureUnit(6, shadow_maps.id());
+    glBindTextureUnit(6, maps > 0 ? shadow_maps.id() : 0);
     GLuint guard = 0;
     // The count, then a bit per pixel of the whole image.
     const std::vector<GLuint> zeros(1 + (static_cast<std::size_t>(camera.width) * camera.height + 31) / 32, 0u);

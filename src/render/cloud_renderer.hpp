@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/image.hpp"
+#include "gpu/textures.hpp"
 #include "regional/cloud_layers.hpp"
 #include "regional/terrain.hpp"
 #include "regional/weather_field.hpp"
@@ -26,6 +27,13 @@ struct Camera {
   int width = 1280, height = 720;
 };
 
+// The layers' shadow maps of a render, kept by a caller that renders the same scene again (the
+// viewer's bands of one frame): render_clouds makes them again only when their key changes.
+struct ShadowMapCache {
+  gpu::Texture maps;
+  std::uint64_t key = 0;
+};
+
 struct RenderSettings {
   int view_steps = 48;      // samples per layer interval along the view ray
   int light_steps = 12;     // samples towards the sun per cloud sample
@@ -41,6 +49,7 @@ struct RenderSettings {
   // "Shadows between layers"); they span max_distance_m each way from the camera. 0: none.
   int shadow_map_size = 512;
   bool read_shadow_maps = false;  // RenderResult::shadow_maps gets their texels (tests)
+  std::shared_ptr<ShadowMapCache> shadow_cache;  // none: the maps are made for each render
   // Only rows [first_row, first_row + row_count) of the image are marched (row_count 0: every
   // row); the others are left undefined. Each pixel is the same as in a whole render: the
   // viewer refines a frame in bands of rows across frames.

@@ -76,6 +76,7 @@ render::RenderResult GroundSource::render(const ViewState& state, int width, int
   render::RenderSettings settings = render::render_settings(scene);
   settings.first_row = first_row;
   settings.row_count = row_count;
+  settings.shadow_cache = shadow_maps_;  // the bands of a frame share its maps
   if (render::needs_noise_volume(prepared.partial.layers, prepared.field) &&
       (!noise_ || noise_->seed() != settings.seed || noise_->size() != settings.noise_size))
     setup_ms.emplace_back("noise_volume", gpu::time_pass([&] {

@@ -51,6 +51,7 @@ class GroundSource : public ViewSource {
   // The ground's height grid is centred on the camera: made again only when the camera moved.
   std::shared_ptr<const regional::TerrainGrid> terrain_;
   std::string terrain_key_;
+  std::shared_ptr<render::ShadowMapCache> shadow_maps_ = std::make_shared<render::ShadowMapCache>();
 };
 
 // The orbit view (render::OrbitRenderer): the planet's maps of io::read_planet_textures (the
