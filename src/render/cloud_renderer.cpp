@@ -63,6 +63,15 @@ GLuint make_texture(GLenum target) {
   return id;
 }
 
+// GL_LINEAR within and between texels, clamped to the edge in s and t: how the marcher's 2D
+// textures are read (their C++ twins filter the same way, hooks.hpp).
+void filter_linear_clamped(GLuint texture) {
+  glTextureParameteri(texture, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTextureParameteri(texture, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTextureParameteri(texture, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTextureParameteri(texture, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+}
+
 }  // namespace
 
 double osculating_earth_radius(double latitude_deg) {
@@ -296,10 +305,7 @@ RenderResult render_clouds(const Camera& camera, const std::vector<regional::Clo
   glTextureStorage3D(weather, 1, GL_R32F, field.size, field.size, regional::coverage_channels);
   glTextureSubImage3D(weather, 0, 0, 0, 0, field.size, field.size, regional::coverage_channels, GL_RED, GL_FLOAT,
                       field.values.data());
-  glTextureParameteri(weather, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-  glTextureParameteri(weather, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-  glTextureParameteri(weather, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-  glTextureParameteri(weather, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  filter_linear_clamped(weather);
 
   GLuint terrain = 0;
   if (settings.terrain) {
@@ -313,10 +319,7 @@ RenderResult render_clouds(const Camera& camera, const std::vector<regional::Clo
     }
     glTextureStorage2D(terrain, 1, GL_RG32F, t.size, t.size);
     glTextureSubImage2D(terrain, 0, 0, 0, t.size, t.size, GL_RG, GL_FLOAT, texels.data());
-    glTextureParameteri(terrain, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    glTextureParameteri(terrain, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glTextureParameteri(terrain, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glTextureParameteri(terrain, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    filter_linear_clamped(terrain);
     result.passes.push_back("terrain (" + t.source + ")");
   }
 
@@ -356,10 +359,7 @@ RenderResult render_clouds(const Camera& camera, const std::vector<regional::Clo
         }
       gpu::image_barrier();
     });
-    glTextureParameteri(shadow_maps.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    glTextureParameteri(shadow_maps.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glTextureParameteri(shadow_maps.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glTextureParameteri(shadow_maps.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    filter_linear_clamped(shadow_maps.id());
     result.passes.push_back("layer_shadows (" + std::to_string(maps) + " of " + std::to_string(size) + "^2)");
     cache->key = key;
   }
