@@ -12,6 +12,7 @@
 #include <filesystem>
 
 #include "apps/viewer/panels.hpp"
+#include "apps/viewer/view_source.hpp"
 #include "apps/viewer/viewer.hpp"
 #include "cli_support.hpp"
 #include "io/image_files.hpp"
@@ -142,6 +143,26 @@ TEST_CASE("a change renders a quarter-size preview in the next frame, then refin
   const long refined_renders = v.renders();
   v.frame();
   CHECK(v.renders() == refined_renders);
+}
+
+TEST_CASE("the preview sizes march the preview steps and the full size the scene's", "[window]") {
+  viewer::ViewerOptions options = small_view();
+  options.scene.view_steps = 48;
+  options.scene.light_steps = 12;
+  Viewer v(options);
+  v.set_panels_visible(false);
+  refine(v);
+  const auto source = viewer::make_view_source({}, {});
+  viewer::ViewState cheap = v.state();
+  viewer::set_value(cheap, params::scene::view_steps, std::to_string(viewer::preview_steps.view));
+  viewer::set_value(cheap, params::scene::light_steps, std::to_string(viewer::preview_steps.light));
+  const auto coarse = source->render(v.state(), 16, 9, 0, 0, true);
+  const auto same_steps = source->render(cheap, 16, 9, 0, 0, false);
+  const auto full_steps = source->render(v.state(), 16, 9, 0, 0, false);
+  // A coarse frame is the scene marched with 8 x 2 steps, to the bit; without `coarse` the
+  // scene's own 48 x 12 make another image.
+  CHECK(coarse.radiance.pixels == same_steps.radiance.pixels);
+  CHECK(coarse.radiance.pixels != full_steps.radiance.pixels);
 }
 
 TEST_CASE("a mouse drag turns the heading by dx fov / width and the pitch by dy fov / width", "[window]") {

@@ -38,7 +38,7 @@ GroundSource::GroundSource(const std::filesystem::path& cover_dir, const std::fi
 }
 
 render::RenderResult GroundSource::render(const ViewState& state, int width, int height, int first_row,
-                                          int row_count) {
+                                          int row_count, bool coarse) {
   const regional::Scene scene = scene_of(state, width, height);
   std::vector<std::pair<std::string, double>> setup_ms;
   if (state.weather != station_files_) {
@@ -76,6 +76,10 @@ render::RenderResult GroundSource::render(const ViewState& state, int width, int
   render::RenderSettings settings = render::render_settings(scene);
   settings.first_row = first_row;
   settings.row_count = row_count;
+  if (coarse) {
+    settings.view_steps = std::min(settings.view_steps, preview_steps.view);
+    settings.light_steps = std::min(settings.light_steps, preview_steps.light);
+  }
   settings.shadow_cache = shadow_maps_;  // the bands of a frame share its maps
   if (render::needs_noise_volume(prepared.partial.layers, prepared.field) &&
       (!noise_ || noise_->seed() != settings.seed || noise_->size() != settings.noise_size))
@@ -90,7 +94,7 @@ render::RenderResult GroundSource::render(const ViewState& state, int width, int
 OrbitSource::OrbitSource(const std::filesystem::path& cover_dir) : cover_dir_(cover_dir) {}
 OrbitSource::~OrbitSource() = default;
 
-render::RenderResult OrbitSource::render(const ViewState& state, int width, int height, int, int) {
+render::RenderResult OrbitSource::render(const ViewState& state, int width, int height, int, int, bool) {
   std::vector<std::pair<std::string, double>> setup_ms;
   // The cover: the files once, or made again when the panels change its parameters.
   const std::string key = cover_dir_.empty() ? cover_key(cover_of(state)) : cover_dir_.string();
@@ -133,15 +137,17 @@ render::RenderResult OrbitSource::render(const ViewState& state, int width, int 
 ViewSwitch::ViewSwitch(const std::filesystem::path& cover_dir, const std::filesystem::path& cache_directory)
     : ground_(cover_dir, cache_directory), orbit_(cover_dir) {}
 
-render::RenderResult ViewSwitch::render(const ViewState& state, int width, int height, int first_row, int row_count) {
-  if (shows_orbit(state)) return orbit_.render(state, width, height, first_row, row_count);
-  return ground_.render(state, width, height, first_row, row_count);
+render::RenderResult ViewSwitch::render(const ViewState& state, int width, int height, int first_row, int row_count,
+                                        bool coarse) {
+  if (shows_orbit(state)) return orbit_.render(state, width, height, first_row, row_count, coarse);
+  return ground_.render(state, width, height, first_row, row_count, coarse);
 }
 
 ModelSource::ModelSource(int size) : size_(size) {}
 ModelSource::~ModelSource() = default;
 
-render::RenderResult ModelSource::render(const ViewState& state, int width, int height, int first_row, int row_count) {
+render::RenderResult ModelSource::render(const ViewState& state, int width, int height, int first_row, int row_count,
+                                         bool /*coarse*/) {
   render::RenderResult result;
   if (!volume_) {
     volume_ = std::make_unique<model::DensityVolume>(size_);

@@ -240,7 +240,8 @@ void Viewer::refine(int width, int height) {
     // Sizes round up, so that the preview is never empty.
     const int w = (width + level.divisor - 1) / level.divisor, h = (height + level.divisor - 1) / level.divisor;
     const int rows = (h + level.bands - 1) / level.bands, first = std::min(h, level.band * rows);
-    last_render_ = source_->render(state_, w, h, first, level.bands > 1 ? std::min(rows, h - first) : 0);
+    // The reduced sizes are previews the full size replaces: the source may march fewer steps.
+    last_render_ = source_->render(state_, w, h, first, level.bands > 1 ? std::min(rows, h - first) : 0, level.divisor > 1);
     ++renders_;
     ++next_level_;
     if (level.bands == 1) {
