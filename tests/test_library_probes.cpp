@@ -830,18 +830,22 @@ TEST_CASE("cloud_march.glsl on the GPU agrees with the CPU", "[probe][march]") {
   // through the alto from the cumulus's top (relative, a march).
   for (int k = 0; k < 12; ++k) {
     const vec4 p(r(-25000.0f, 25000.0f), r(-25000.0f, 25000.0f), r(1600.0f, 2900.0f) - 860.0f, 0.0f);
-    const vec4 uv(r(0.0f, 1.0f), r(0.0f, 1.0f), 0, 0);
-    const vec4 v = cpu(arguments(17, vec4(0), p, vec4(0), uv));
-    cases.push_back({arguments(17, vec4(0), p, vec4(0), uv), std::max({exit_uv, map_lookup, march * std::abs(v.w)})});
+    const vec4 v = cpu(arguments(17, vec4(0), p));
+    cases.push_back({arguments(17, vec4(0), p), std::max(exit_uv, map_lookup)});
     const vec4 xy(r(-30000.0f, 30000.0f), r(-30000.0f, 30000.0f), 0, 0);
     const vec4 w = cpu(arguments(18, vec4(0), vec4(0), vec4(0), xy));
-    cases.push_back({arguments(18, vec4(0), vec4(0), vec4(0), xy), std::max(shell, march * std::abs(w.w))});
-    // On the CPU: the point lies on the top shell at the coordinates asked for, and the lookup
-    // reads the bilinear map there (texel centres at (i + 1/2) / 4).
+    cases.push_back({arguments(18, vec4(0), vec4(0), vec4(0), xy), shell});
+    const vec4 uv(r(0.0f, 1.0f), r(0.0f, 1.0f), 0, 0);
+    cases.push_back(relative(arguments(19, vec4(0), vec4(0), vec4(0), uv), march));
+    // On the CPU: the point lies on the top shell at the coordinates asked for, the lookup reads
+    // the bilinear map there (texel centres at (i + 1/2) / 4), and a texel is the march from its
+    // point of the top shell.
     CHECK(w.x == Approx(3000.0f).epsilon(0).margin(shell));
     CHECK(std::abs(w.y) <= shell);
     CHECK(std::abs(w.z) <= shell);
     CHECK(v.z == Approx(sources.shadows.sample(vec2(v.x, v.y), 0)).epsilon(0).margin(kArithmetic));
+    const vec4 t = cpu(arguments(19, vec4(0), vec4(0), vec4(0), uv));
+    CHECK(t.x == t.y);
   }
   compare("cloud_march", cpu, cases);
   glDeleteTextures(1, &shadow_texture);

@@ -132,21 +132,25 @@ vec4 probe_cloud_march(mat4 x MARCH_SOURCES_PARAM) {
     return vec4(tau, float(loops), march_jitter(ivec2(int(x[3].x), int(x[3].y)), int(x[3].z)), 0.0f);
   }
   if (f == 17) {
-    // The shadow map of layer x[0].y: where p's sun ray leaves the layer's top (uv), the depth
-    // read there, and the texel value at uv = x[3].xy.
-    int loops = 0;
+    // The shadow map of layer x[0].y: where p's sun ray leaves the layer's top (uv), and the
+    // depth read there.
     vec2 uv = shadow_map_uv(p, centre, layer, m);
-    return vec4(uv, higher_layers_depth(p, centre, layer, m MARCH_SOURCES_ARG),
-                shadow_map_texel(vec2(x[3]), centre, layer, loops, m MARCH_SOURCES_ARG));
+    return vec4(uv, higher_layers_depth(p, centre, layer, m MARCH_SOURCES_ARG), 0.0f);
   }
   if (f == 18) {
-    // The top shell's point above the tangent-plane coordinates x[3].xy, its coordinates again,
-    // and the depth through the layers above from there.
+    // The top shell's point above the tangent-plane coordinates x[3].xy, and its coordinates
+    // again.
     vec3 q = shadow_map_origin(vec2(x[3]), centre, layer, m);
-    int loops = 0;
-    float tau = layers_shadow_depth(q, centre, layer, m.layers[layer].top, loops, m MARCH_SOURCES_ARG);
     vec2 xy = shadow_map_xy(q, centre);
-    return vec4(length(q - centre) - m.earth_radius, xy.x - x[3].x, xy.y - x[3].y, tau);
+    return vec4(length(q - centre) - m.earth_radius, xy.x - x[3].x, xy.y - x[3].y, 0.0f);
+  }
+  if (f == 19) {
+    // Depths through the layers above: the texel value at uv = x[3].xy, and the march from the
+    // top shell's point there.
+    int loops = 0;
+    vec3 q = shadow_map_origin((2.0f * vec2(x[3]) - 1.0f) * m.shadow_extent, centre, layer, m);
+    return vec4(shadow_map_texel(vec2(x[3]), centre, layer, loops, m MARCH_SOURCES_ARG),
+                layers_shadow_depth(q, centre, layer, m.layers[layer].top, loops, m MARCH_SOURCES_ARG), 0.0f, 0.0f);
   }
   m.convective_count = 1;
   if (f == 12) {
