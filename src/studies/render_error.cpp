@@ -22,6 +22,11 @@ std::vector<RenderVariant> RenderSweepOptions::variants() const {
   return all;
 }
 
+std::string RenderSweepOptions::reference_name() const {
+  return std::to_string(reference_view) + " view x " + std::to_string(reference_light) + " light steps over " +
+         std::to_string(reference_frames) + " frames";
+}
+
 RenderSweepOptions RenderSweepOptions::full() {
   RenderSweepOptions o;
   o.view_steps = {8, 16, 32, 48, 96};

@@ -39,6 +39,8 @@ struct RenderSweepOptions {
   int width = 160, height = 90;
 
   std::vector<RenderVariant> variants() const;
+  // "192 view x 24 light steps over 4 frames": the reference, as help texts and reports name it.
+  std::string reference_name() const;
 
   // View 8, 16, 32, 48, 96 x light 2, 4, 6, 12; the defaults over 2 and 4 frames and at 1/2 and
   // 1/4 resolution; 24 x 6 over 4 frames; 8 x 2 at 1/2 and 1/4 resolution; against 192 x 24

@@ -24,7 +24,8 @@ int bench_render(const std::vector<std::string>& arguments) {
   Options options("bench render",
                   "Prints seconds per frame of the default scene, then the image error (RMS of the display\n"
                   "values; relative RMS and max of the radiance) against the numbers of view and light steps,\n"
-                  "frames and resolution, against 192 x 24 steps over 4 frames: the sweep of `nephele report`.",
+                  "frames and resolution, against " + studies::RenderSweepOptions::full().reference_name() +
+                      ": the sweep of `nephele report`.",
                   params::bench_render);
   options.bind(params::run::bench_render_size, &size);
   options.bind(params::run::bench_render_sweep_size, &sweep_size);

@@ -34,9 +34,10 @@ int run_report(const std::vector<std::string>& all_arguments) {
                   "error_vs_runtime.svg (work-precision diagram), stability.csv and summary.md into --out.\n"
                   "The flow time T = iterations * step stays fixed; fixed-step schemes use h = T / steps.\n"
                   "Then renders the default scene with view steps 8..96 x light steps 2..12, over 2 and 4\n"
-                  "frames and at 1/2 and 1/4 resolution, against 192 x 24 steps over 4 frames (quick: 8,16,48\n"
-                  "x 2,12 against 96 x 12 over 2 frames) into render_error.csv, render_error_vs_runtime.svg and\n"
-                  "a section of summary.md; the error is the RMS of the display values in [0, 1].\n"
+                  "frames and at 1/2 and 1/4 resolution, against " + studies::RenderSweepOptions::full().reference_name() +
+                      "\n(quick: 8,16,48 x 2,12 against " + studies::RenderSweepOptions::quick().reference_name() +
+                      ")\ninto render_error.csv, render_error_vs_runtime.svg and a section of summary.md; the error\n"
+                  "is the RMS of the display values in [0, 1].\n"
                   "`nephele report render [options]` runs only the render sweep.", params::report);
   options.bind(params::run::report_out, &out);
   options.bind(params::run::report_quick, &quick);
@@ -106,8 +107,7 @@ int run_report(const std::vector<std::string>& all_arguments) {
   studies::ReferenceCheck reference_check;
   if (!no_render) {
     std::cout << "render sweep: default scene at " << render_sweep.width << "x" << render_sweep.height
-              << ", reference " << render_sweep.reference_view << " view x " << render_sweep.reference_light
-              << " light steps over " << render_sweep.reference_frames << " frames\n"
+              << ", reference " << render_sweep.reference_name() << "\n"
               << studies::render_error_table_header() << std::flush;
     core::Progress render_progress("report", static_cast<double>(render_sweep.variants().size()),
                                    core::Progress::for_stderr(quiet));

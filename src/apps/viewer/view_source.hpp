@@ -30,10 +30,6 @@ class ViewSource {
                                       int row_count = 0, bool coarse = false) = 0;
 };
 
-// The ground view (render::prepare_scene, render_prepared): the global cover from `cover_dir`
-// when given (a directory written by nephele generate), else made from the state's cover
-// parameters; station weather when the state names files. The noise volume comes from the
-// disk cache at `cache_directory` (empty: none).
 // The ground view's steps for coarse (preview) frames: 8 view x 2 light. Measured by `nephele
 // report render` on the default scene at 160 x 90 (docs/rendering.md): display rms 0.008
 // against the converged image, in a seventh of the defaults' time; the full-size bands keep the
@@ -43,6 +39,10 @@ struct PreviewSteps {
 };
 constexpr PreviewSteps preview_steps{};
 
+// The ground view (render::prepare_scene, render_prepared): the global cover from `cover_dir`
+// when given (a directory written by nephele generate), else made from the state's cover
+// parameters; station weather when the state names files. The noise volume comes from the
+// disk cache at `cache_directory` (empty: none).
 class GroundSource : public ViewSource {
  public:
   GroundSource(const std::filesystem::path& cover_dir, const std::filesystem::path& cache_directory);
