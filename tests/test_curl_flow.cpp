@@ -50,12 +50,20 @@ void tangent_basis(vec3 n, vec3& e1, vec3& e2) {
   e2 = cross(n, e1);
 }
 
+// The storm-track envelope as docs/climate.md writes it: 1 - f (1 - exp(-((z^2 - sin^2 50deg) / 0.25)^2)).
+double envelope(double z, double focus) {
+  const double track = std::sin(50.0 * M_PI / 180.0);
+  const double u = (z * z - track * track) / 0.25;
+  return 1.0 - focus * (1.0 - std::exp(-u * u));
+}
+
 // The stream function written out independently of curl_velocity, from fBm values only.
 double stream_function(vec3 p, const CurlParams& c) {
   const double w1 = smooth_worley_fbm(p, c.potential_north, c.smoothing).w;
   const double w2 = smooth_worley_fbm(p, c.potential_south, c.smoothing).w;
-  const double m = std::sin(c.mix_frequency * std::asin(std::clamp(static_cast<double>(p.z), -1.0, 1.0)));
-  return c.strength * (c.prevailing * m - w1 * (1 + m) / 2 + w2 * (1 - m) / 2);
+  const double z = std::clamp(static_cast<double>(p.z), -1.0, 1.0);
+  const double m = std::sin(c.mix_frequency * std::asin(z));
+  return c.strength * (c.prevailing * m + envelope(z, c.storm_tracks) * (-w1 * (1 + m) / 2 + w2 * (1 - m) / 2));
 }
 
 }  // namespace
@@ -136,6 +144,42 @@ TEST_CASE("curl_velocity equals s n x grad phi of the documented stream function
     REQUIRE(length(actual - expected) < tolerance);
   }
   CHECK(compared > 1000);
+}
+
+TEST_CASE("the storm-track envelope is 1 at 50 degrees, 1 - f at the equator, and its derivative is dA/dz", "[curl]") {
+  // Values: float exp and products, a few ulp of 1. Derivative: the central difference with
+  // h = 1e-3 errs by h^2 |A^(3)| / 6, below 3.3e-4 (|A^(3)| < 2000 for f = 1: three factors
+  // 4 z u / sigma of at most 16 each), plus rounding 2 ulp / 2h = 1.2e-4: 1e-3 bounds both.
+  constexpr float kValue = 1.0e-6f, kDerivative = 1.0e-3f;
+  const float track = std::sin(50.0f * float(M_PI) / 180.0f);
+  for (float focus : {0.0f, 0.6f, 1.0f}) {
+    INFO("focus " << focus);
+    CHECK(std::abs(storm_track_envelope(0.0f, focus).x - envelope(0.0, focus)) < kValue);
+    CHECK(envelope(0.0, focus) == Approx(1.0 - focus).margin(0.01));  // g(0) = exp(-5.5) = 0.004
+    CHECK(std::abs(storm_track_envelope(track, focus).x - 1.0f) < kValue);
+    CHECK(std::abs(storm_track_envelope(-track, focus).x - 1.0f) < kValue);
+    for (float z = -0.995f; z < 1.0f; z += 0.0625f) {
+      const double h = 1e-3;
+      const double numeric = (envelope(z + h, focus) - envelope(z - h, focus)) / (2 * h);
+      CHECK(std::abs(storm_track_envelope(z, focus).x - envelope(z, focus)) < kValue);
+      CHECK(std::abs(storm_track_envelope(z, focus).y - numeric) < kDerivative);
+    }
+  }
+}
+
+TEST_CASE("the cyclonic depth is the vortex part of the stream function with the sign of the Coriolis parameter", "[curl]") {
+  // c = A (w1 (1 + m)/2 + w2 (1 - m)/2), written out here from the fBm values.
+  const CurlParams c = default_curl(4);
+  std::mt19937 rng(8);
+  for (int k = 0; k < 500; ++k) {
+    const vec3 n = random_unit(rng);
+    const double w1 = smooth_worley_fbm(n, c.potential_north, c.smoothing).w;
+    const double w2 = smooth_worley_fbm(n, c.potential_south, c.smoothing).w;
+    const double m = std::sin(c.mix_frequency * std::asin(std::clamp(static_cast<double>(n.z), -1.0, 1.0)));
+    const double expected = envelope(n.z, c.storm_tracks) * (w1 * (1 + m) / 2 + w2 * (1 - m) / 2);
+    // float sums of values below 1 (a few ulp) and m from portable_asin (kPortableAsin times a).
+    REQUIRE(std::abs(curl_flow_shifted(n, c, vec3(0.0f)).w - expected) < 1.0e-5);
+  }
 }
 
 TEST_CASE("without noise the flow is the zonal wind u = -s P m'(lat)", "[curl]") {

@@ -288,8 +288,12 @@ TEST_CASE("cover_density.glsl on the GPU agrees with the CPU", "[probe]") {
     const vec4 seed_and_offset(7.0f, r(-0.5f, 0.5f), r(-0.5f, 0.5f), r(-0.5f, 0.5f));
     cases.push_back({arguments(k % 2, vec4(0.0f), p, fbm, seed_and_offset), kFbm});
     cases.push_back({arguments(2, vec4(r(0.0f, 1.0f), r(0.0f, 0.5f), r(0.5f, 1.0f), 0)), kArithmetic});
+    cases.push_back({arguments(3, vec4(r(0.0f, 1.5f), r(0.0f, 0.7f), r(0.0f, 2.0f), 0)), kArithmetic});
   }
   compare("cover_density", probe_cover_density, cases);
+  // d (1 + k c) by hand: 0.8 (1 + 0.5 x 0.6) = 1.04; k = 0 leaves d.
+  CHECK(std::abs(cyclonic_density(0.8f, 0.6f, 0.5f) - 1.04f) < 4 * kUlp);
+  CHECK(cyclonic_density(0.8f, 0.6f, 0.0f) == 0.8f);
 }
 
 TEST_CASE("latitude_bands.glsl on the GPU agrees with the CPU", "[probe]") {
@@ -527,9 +531,19 @@ TEST_CASE("curl_flow.glsl on the GPU agrees with the CPU", "[probe]") {
     const float highest_frequency = potential.x * 4.0f;
     // Function 0 runs the smooth potential (lambda 0.3): its fBm errs by kSmoothFbm, not kFbm.
     const float smooth_extra = k % 2 == 0 ? flow.z * (kSmoothFbm - kFbm) * highest_frequency : 0.0f;
-    cases.push_back({arguments(k % 2, vec4(r(-0.5f, 0.5f), r(-0.5f, 0.5f), r(-0.5f, 0.5f), 0), n, potential, flow),
-                     curl_tolerance(flow.z, highest_frequency, flow.x, flow.y) + smooth_extra});
+    // Function 2 (k % 4 == 2, the fast variant) adds the cyclonic depth, a sum of fBm values
+    // below 1: kSmoothFbm, within the velocity's tolerance. The storm-track envelope of
+    // functions 0 and 2 multiplies the fBm terms by A <= 1 and adds dA/dlat (below 4.2 for
+    // f = 0.6) times values below 1, computed with one exp: 4.2 kTranscendental more.
+    const int function = k % 4 == 2 ? 2 : k % 2;
+    const float envelope_extra = function == 1 ? 0.0f : flow.z * 4.2f * kTranscendental;
+    cases.push_back({arguments(function, vec4(r(-0.5f, 0.5f), r(-0.5f, 0.5f), r(-0.5f, 0.5f), 0), n, potential, flow),
+                     curl_tolerance(flow.z, highest_frequency, flow.x, flow.y) + smooth_extra + envelope_extra});
   }
+  // The envelope alone: one exp and a few products of values below 16 (kTranscendental x 16).
+  for (int k = 0; k < 8; ++k)
+    cases.push_back({arguments(3, vec4(0.0f), vec4(r(-1.0f, 1.0f), k % 2 == 0 ? 0.6f : 1.0f, 0, 0), vec4(0.0f), vec4(0.0f)),
+                     16.0f * kTranscendental});
   compare("curl_flow", probe_curl_flow, cases);
 }
 

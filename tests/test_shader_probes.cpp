@@ -32,7 +32,7 @@ std::string literal(const FbmParams& p) {
 std::string literal(const CurlParams& c) {
   return "CurlParams(" + literal(c.potential_north) + ", " + literal(c.potential_south) + ", " +
          literal(c.prevailing) + ", " + literal(c.mix_frequency) + ", " + literal(c.strength) + ", " +
-         literal(c.smoothing) + ")";
+         literal(c.smoothing) + ", " + literal(c.storm_tracks) + ")";
 }
 
 // One float rounding, relative: 2^-24.

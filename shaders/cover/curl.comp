@@ -1,5 +1,6 @@
 #version 450
-// Pass 2: the curl vector v = n x grad phi at every texel direction n; with CURL_FROM_SPLINE 1
+// Pass 2: the curl vector v = n x grad phi at every texel direction n, and in w the flow's
+// cyclonic depth, which the density pass adds (curl_flow.glsl); with CURL_FROM_SPLINE 1
 // the velocity the spline warp uses there instead (curl_mode spline: the diagnosis then judges
 // the flow that was integrated, and no procedural evaluation is made per texel).
 layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
@@ -30,8 +31,8 @@ void main() {
   if (texel.x >= size || texel.y >= size) return;
   vec3 n = imageLoad(identity_field, texel).xyz;
 #if CURL_FROM_SPLINE
-  imageStore(curl_field, texel, vec4(spline_velocity(n), 0.0f));
+  imageStore(curl_field, texel, vec4(spline_velocity(n), sample_curl_spline(n).w));
 #else
-  imageStore(curl_field, texel, vec4(curl_velocity_shifted(n, u_curl, u_noise_offset), 0.0f));
+  imageStore(curl_field, texel, curl_flow_shifted(n, u_curl, u_noise_offset));
 #endif
 }

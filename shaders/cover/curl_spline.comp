@@ -1,7 +1,7 @@
 #version 450
 // The curl grid of `curl_mode spline` (shaders/lib/curl_spline.glsl), one 2D array layer per
 // cube face, in two dispatches:
-//   CURL_SPLINE_PREFILTER 0: the procedural curl at the nodes of each face's grid, continued
+//   CURL_SPLINE_PREFILTER 0: the procedural curl (and the cyclonic depth in w) at the nodes of each face's grid, continued
 //     SPLINE_MARGIN + 1 nodes past the face's edges (the prefilter reads one node further);
 //   CURL_SPLINE_PREFILTER 1: the spline's coefficients, the samples prefiltered along both axes.
 layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
@@ -26,7 +26,7 @@ void main() {
   int extent = imageSize(samples).x;
   if (node.x >= extent || node.y >= extent) return;
   vec3 n = curl_spline_node(node.z, node.x, node.y, SPLINE_MARGIN + 1, u_cells);
-  imageStore(samples, node, vec4(curl_velocity_shifted(n, u_curl, u_noise_offset), 0.0f));
+  imageStore(samples, node, curl_flow_shifted(n, u_curl, u_noise_offset));
 }
 #else
 layout(rgba32f, binding = 0) uniform readonly image2DArray samples;

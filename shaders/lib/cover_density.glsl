@@ -14,6 +14,14 @@ float cover_density_shifted(vec3 warped, IN(FbmParams) params, vec3 offset) {
   return inverted_worley_fbm(normalize(warped) + offset, params).w;
 }
 
+// The density with the cyclones' share: d (1 + k c), c the flow's cyclonic depth at the texel
+// (curl_flow_shifted's w, 0 .. about 0.6) and k >= 0 the cyclone_cloudiness. A factor rather than
+// a sum keeps the warped noise's structure in the cyclones (a sum adds smooth blobs) and
+// thins it in the highs; the calibration then places the threshold (docs/climate.md).
+float cyclonic_density(float density, float cyclonic, float cloudiness) {
+  return density * (1.0f + cloudiness * cyclonic);
+}
+
 // Linear ramp from the calibrated threshold (cover 0) to the largest density (cover 1):
 // texels with density above the threshold, and only those, are cloudy (cover > 0).
 float cover_from_density(float density, float threshold, float density_max) {

@@ -5,26 +5,45 @@
 #include "worley_fbm.glsl"
 #include "portable_math.glsl"
 
+// The storm-track envelope of the vortices, A = 1 - f (1 - g) with
+//   g = exp(-((z^2 - z_t^2) / sigma)^2),  z_t = sin 50 deg, sigma = 0.25,
+// and f = params.storm_tracks: A is 1 in the storm tracks near 50 N and 50 S (between 35
+// and 66 degrees g > 1/e) and falls to 1 - f at the equator. A polynomial of z^2 under the
+// exponential, it is smooth on the whole sphere, the poles included. f = 0: A = 1 (no focus).
+// Returns (A, dA/dz).
+vec2 storm_track_envelope(float z, float focus) {
+  const float track = 0.58682409f;  // sin^2(50 deg)
+  const float width = 0.25f;
+  float u = (z * z - track) / width;
+  float g = exp(-u * u);
+  return vec2(1.0f - focus * (1.0f - g), focus * g * (-2.0f * u / width) * 2.0f * z);
+}
 
-// Stream function (times s) on the unit sphere (n: unit vector, z north):
-//   phi = P m - w1 (1 + m)/2 + w2 (1 - m)/2,  m = sin(a lat)
+// The flow (times s) and, in w, its cyclonic depth (n: unit vector, z north). The stream
+// function is
+//   phi = P m + A (-w1 (1 + m)/2 + w2 (1 - m)/2),  m = sin(a lat),  A = storm_track_envelope.
 // w1 and w2 enter with opposite signs, as the Coriolis parameter changes sign at the equator:
 // around their peaks (the feature points) the flow turns counter-clockwise in the north and
 // clockwise in the south seen from outside, the sense of cyclones. The latitude term gives
-// zonal winds u = -s (P - (w1 + w2)/2) m'(lat): easterly trade winds where m' > 0 when P
-// exceeds the noise mean (the smooth w averages about 0.30 at lambda 0.3, 1 - F1 about 0.47).
-// Returns the velocity
+// zonal winds u = -s (P - A (w1 + w2)/2) m'(lat) (plus A's small term): easterly trade winds
+// where m' > 0 when P exceeds the noise mean (the smooth w averages about 0.30 at lambda
+// 0.3, 1 - F1 about 0.47); m = sin 3 lat gives easterlies below 30 degrees and westerlies
+// beyond. The velocity is
 //   v = s n x grad phi,
 // tangent to the sphere and divergence-free on it. At the poles the direction north is
-// undefined; there the latitude term is dropped. For odd a (the default 3) m is a polynomial
+// undefined; there the latitude terms are dropped. For odd a (the default 3) m is a polynomial
 // in z (sin 3 lat = 3z - 4z^3) and the term vanishes there smoothly; otherwise the mix has a
 // conical tip at the poles and the flow a singular spin (docs/algorithm.md, "Poles").
+// The cyclonic depth c = A (w1 (1 + m)/2 + w2 (1 - m)/2) is the stream function's vortex
+// part with the sign of the Coriolis parameter: a geostrophic stream function is the pressure
+// anomaly over rho f, so c is largest in the lows (the cyclones) and smallest in the highs;
+// the density pass adds it to tie cloudiness to the cyclones (docs/climate.md).
 // w1 and w2 are smooth_worley_fbm with lambda = params.smoothing (0: 1 - F1, whose gradient
 // jumps across Voronoi borders).
 // `offset` shifts the noise of both potentials (sphere radii): they are sampled at n + offset.
 // The host keeps it below one lattice period (docs/numerics.md, "Far offsets"), so that float
 // keeps its precision however far the user's offset is.
-vec3 curl_velocity_shifted(vec3 n, IN(CurlParams) params, vec3 offset) {
+vec4 curl_flow_shifted(vec3 n, IN(CurlParams) params, vec3 offset) {
   vec4 w1 = smooth_worley_fbm(n + offset, params.potential_north, params.smoothing);
   vec4 w2 = smooth_worley_fbm(n + offset, params.potential_south, params.smoothing);
   float z = clamp(n.z, -1.0f, 1.0f);
@@ -33,11 +52,20 @@ vec3 curl_velocity_shifted(vec3 n, IN(CurlParams) params, vec3 offset) {
   float m = sin(a * latitude);
   float dm_dlatitude = a * cos(a * latitude);
   vec3 north = vec3(0.0f, 0.0f, 1.0f) - z * n;
-  float north_length = length(north);
+  float north_length = length(north);  // cos(latitude)
   north = north_length > 1.0e-6f ? north / north_length : vec3(0.0f);
-  vec3 gradient = (0.5f * (1.0f - m)) * vec3(w2) - (0.5f * (1.0f + m)) * vec3(w1) +
-                  ((params.prevailing - 0.5f * (w1.w + w2.w)) * dm_dlatitude) * north;
-  return params.strength * cross(n, gradient);
+  vec2 envelope = storm_track_envelope(z, params.storm_tracks);
+  float vortices = 0.5f * (1.0f - m) * w2.w - 0.5f * (1.0f + m) * w1.w;
+  vec3 gradient = envelope.x * ((0.5f * (1.0f - m)) * vec3(w2) - (0.5f * (1.0f + m)) * vec3(w1)) +
+                  ((params.prevailing - envelope.x * 0.5f * (w1.w + w2.w)) * dm_dlatitude +
+                   envelope.y * north_length * vortices) *
+                      north;
+  float cyclonic = envelope.x * (0.5f * (1.0f + m) * w1.w + 0.5f * (1.0f - m) * w2.w);
+  return vec4(params.strength * cross(n, gradient), cyclonic);
+}
+
+vec3 curl_velocity_shifted(vec3 n, IN(CurlParams) params, vec3 offset) {
+  return vec3(curl_flow_shifted(n, params, offset));
 }
 
 vec3 curl_velocity(vec3 n, IN(CurlParams) params) {

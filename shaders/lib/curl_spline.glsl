@@ -61,10 +61,11 @@ vec4 curl_spline_row(int face, int i, int j, vec4 wx SPLINE_SOURCE_PARAM) {
          wx.w * SPLINE_FETCH(face, i + 3, j);
 }
 
-// The spline of the curl grid at the unit direction w: a sum of 16 coefficients of w's face,
+// The spline of the curl grid at the unit direction w (xyz; w: the cyclonic depth, which the
+// grid carries along, curl_flow.glsl): a sum of 16 coefficients of w's face,
 // written without a loop (llvmpipe counts every loop iteration against a per-invocation limit;
 // docs/numerics.md, "llvmpipe's loop limit").
-vec3 sample_curl_spline(vec3 w SPLINE_SOURCE_PARAM) {
+vec4 sample_curl_spline(vec3 w SPLINE_SOURCE_PARAM) {
   int cells = SPLINE_CELLS;
   int face = cube_face_of(w);
   vec2 st = 0.5f * cube_face_coords(face, w) + 0.5f;
@@ -81,7 +82,7 @@ vec3 sample_curl_spline(vec3 w SPLINE_SOURCE_PARAM) {
              wy.y * curl_spline_row(face, i, j + 1, wx SPLINE_SOURCE_ARG) +
              wy.z * curl_spline_row(face, i, j + 2, wx SPLINE_SOURCE_ARG) +
              wy.w * curl_spline_row(face, i, j + 3, wx SPLINE_SOURCE_ARG);
-  return vec3(sum);
+  return sum;
 }
 
 // The warp's velocity: the spline's value projected onto the tangent plane at w. The spline
@@ -89,7 +90,7 @@ vec3 sample_curl_spline(vec3 w SPLINE_SOURCE_PARAM) {
 // (O(h^4)); the projection removes that part, as the procedural curl has none, and cannot
 // increase the error (it is an orthogonal projection and the exact value is in its range).
 vec3 spline_velocity(vec3 w SPLINE_SOURCE_PARAM) {
-  vec3 v = sample_curl_spline(w SPLINE_SOURCE_ARG);
+  vec3 v = vec3(sample_curl_spline(w SPLINE_SOURCE_ARG));
   return v - dot(v, w) * w;
 }
 

@@ -35,7 +35,7 @@ std::vector<glsl::vec4> curl_spline_coefficients(const CoverParameters& p) {
   const int cells = p.curl_size;
   return spline_coefficients(cells, [&](int face, int i, int j) {
     const glsl::vec3 n = glsl::curl_spline_node(face, i, j, glsl::SPLINE_MARGIN + 1, cells);
-    return glsl::vec4(glsl::curl_velocity_shifted(n, curl, offset), 0.0f);
+    return glsl::curl_flow_shifted(n, curl, offset);
   });
 }
 

@@ -200,8 +200,10 @@ void GlobalCover::run_density() {
   timed("density", [&] {
     glsl::set_uniform(density_program_, "u_cover", density_params(parameters_));
     density_program_.set("u_noise_offset", density_offset(parameters_));
+    density_program_.set("u_cyclone_cloudiness", parameters_.cyclone_cloudiness);
     warp_field_.bind_image(0, GL_READ_ONLY);
     density_field_.bind_image(1, GL_WRITE_ONLY);
+    curl_field_.bind_image(2, GL_READ_ONLY);
     density_program_.dispatch_covering(parameters_.size, parameters_.size, 6);
     gpu::image_barrier();
   });

@@ -26,6 +26,8 @@ inline constexpr Parameter curl_gain = real("curl_gain", 0.2, 0.0, 1.0, "", "amp
 inline constexpr Parameter prevailing = real("prevailing", 1.0, -100.0, 100.0, "", "strength of the zonal wind bands (> 0: easterly trade winds)", cover_commands);
 inline constexpr Parameter mix_frequency = real("mix_frequency", 3.0, 0.0, 10.0, "", "a in the hemisphere mix m = sin(a lat); odd a is smooth at the poles (3: sfsim, the default; 2.5: the original)", cover_commands);
 inline constexpr Parameter curl_smoothing = real("curl_smoothing", 0.3, 0.0, 10.0, "", "lambda of the smooth Worley potential (0: classic 1 - F1, whose gradient jumps; below 0.02 counts as 0.02)", cover_commands);
+inline constexpr Parameter storm_tracks = real("storm_tracks", 0.6, 0.0, 1.0, "", "focus of the flow's vortices on the storm tracks near 50 N and 50 S: their strength there times 1 - storm_tracks at the equator (0: the same everywhere; docs/climate.md)", cover_commands);
+inline constexpr Parameter cyclone_cloudiness = real("cyclone_cloudiness", 0.5, 0.0, 100.0, "", "k in density * (1 + k c), c the flow's cyclonic depth (0 .. about 0.6): cyclones cloudy, anticyclones clear (0: off; docs/climate.md)", cover_commands);
 inline constexpr Parameter curl_strength = real("curl_strength", 0.1, 0.0, 100.0, "", "scale of the flow's potential (velocity = strength * n x grad phi)", cover_commands);
 inline constexpr Parameter density_frequency = real("density_frequency", 3.0, 0.01, 4096.0, "cells per radius", "Worley cells per unit radius of the cloud density", cover_commands, "density.frequency");
 inline constexpr Parameter density_octaves = integer("density_octaves", 8, 0, 16, "", "octaves of the cloud density", cover_commands, "density.octaves");

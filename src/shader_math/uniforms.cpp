@@ -27,6 +27,7 @@ void set_uniform(const gpu::ComputeProgram& program, const std::string& name, co
   program.set(name + ".mix_frequency", params.mix_frequency);
   program.set(name + ".strength", params.strength);
   program.set(name + ".smoothing", params.smoothing);
+  program.set(name + ".storm_tracks", params.storm_tracks);
 }
 
 void set_uniform(const gpu::ComputeProgram& program, const std::string& name, const MarchParams& params) {

@@ -24,7 +24,7 @@ vec4 probe_curl_spline(mat4 x SPLINE_SOURCE_PARAM) {
   if (f == 0) return cubic_bspline_weights(x[0].y);
   if (f == 1) return prefilter_cubic_bspline(x[1], x[2], x[3]);
   if (f == 2) return curl_spline_row(int(x[0].y), int(x[0].z), int(x[0].w), x[1] SPLINE_SOURCE_ARG);
-  if (f == 3) return vec4(sample_curl_spline(vec3(x[1]) SPLINE_SOURCE_ARG), 0.0f);
+  if (f == 3) return sample_curl_spline(vec3(x[1]) SPLINE_SOURCE_ARG);
   if (f == 4) return vec4(spline_velocity(vec3(x[1]) SPLINE_SOURCE_ARG), 0.0f);
   return vec4(curl_spline_node(int(x[0].y), int(x[0].z), int(x[0].w), int(x[1].x), int(x[1].y)), 0.0f);
 }

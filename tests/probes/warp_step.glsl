@@ -23,6 +23,7 @@ CurlParams warp_probe_curl() {
   c.mix_frequency = 2.5f;
   c.strength = 0.5f;
   c.smoothing = 0.0f;  // the classic potential these cases were set up with
+  c.storm_tracks = 0.0f;
   return c;
 }
 #ifdef __cplusplus
