@@ -50,6 +50,23 @@ void tangent_basis(vec3 n, vec3& e1, vec3& e2) {
   e2 = cross(n, e1);
 }
 
+// The zonal profile's latitude derivative Z'(lat) as docs/climate.md writes it: for `cells`
+// 1..3, 3 cos(lat) times (1 - sin^2 lat / sin^2(90 k / cells) deg) over k = 1 .. cells - 1;
+// cells 0: m'(lat) = a cos(a lat).
+double zonal_derivative(double lat, int cells, double a) {
+  if (cells == 0) return a * std::cos(a * lat);
+  double product = 3.0 * std::cos(lat);
+  for (int k = 1; k < cells; ++k) product *= 1.0 - std::pow(std::sin(lat), 2) / std::pow(std::sin(M_PI / 2 * k / cells), 2);
+  return product;
+}
+
+// Z itself for three cells (the integral of 3 (1 - 4 z^2)(1 - 4 z^2 / 3) dz) or m for cells 0.
+double zonal_profile(double z, int cells, double a) {
+  if (cells == 0) return std::sin(a * std::asin(z));
+  REQUIRE(cells == 3);
+  return 3 * z - 16.0 / 3.0 * z * z * z + 16.0 / 5.0 * std::pow(z, 5);
+}
+
 // The storm-track envelope as docs/climate.md writes it: 1 - f (1 - exp(-((z^2 - sin^2 50deg) / 0.25)^2)).
 double envelope(double z, double focus) {
   const double track = std::sin(50.0 * M_PI / 180.0);
@@ -63,7 +80,8 @@ double stream_function(vec3 p, const CurlParams& c) {
   const double w2 = smooth_worley_fbm(p, c.potential_south, c.smoothing).w;
   const double z = std::clamp(static_cast<double>(p.z), -1.0, 1.0);
   const double m = std::sin(c.mix_frequency * std::asin(z));
-  return c.strength * (c.prevailing * m + envelope(z, c.storm_tracks) * (-w1 * (1 + m) / 2 + w2 * (1 - m) / 2));
+  return c.strength * (c.prevailing * zonal_profile(z, c.zonal_cells, c.mix_frequency) +
+                       envelope(z, c.storm_tracks) * (-w1 * (1 + m) / 2 + w2 * (1 - m) / 2));
 }
 
 }  // namespace
@@ -182,26 +200,35 @@ TEST_CASE("the cyclonic depth is the vortex part of the stream function with the
   }
 }
 
-TEST_CASE("without noise the flow is the zonal wind u = -s P m'(lat)", "[curl]") {
+TEST_CASE("without noise the flow is the zonal wind u = -s P Z'(lat) of its cells", "[curl]") {
   CurlParams c = default_curl();
   c.potential_north.octaves = 0;
   c.potential_south.octaves = 0;
-  for (double latitude_deg : {-80.0, -45.0, -20.0, 0.0, 10.0, 36.0, 60.0, 85.0}) {
-    for (double longitude_deg : {-170.0, 0.0, 33.0}) {
-      const double lat = latitude_deg * M_PI / 180, lon = longitude_deg * M_PI / 180;
-      const vec3 n(std::cos(lat) * std::cos(lon), std::cos(lat) * std::sin(lon), std::sin(lat));
-      const vec3 east(-std::sin(lon), std::cos(lon), 0.0);
-      const double u = -c.strength * c.prevailing * c.mix_frequency * std::cos(c.mix_frequency * lat);
-      const vec3 v = curl_velocity(n, c);
-      INFO("lat " << latitude_deg << " lon " << longitude_deg);
-      CHECK(dot(v, east) == Approx(u).epsilon(0).margin(kZonalWind));
-      CHECK(length(v - static_cast<float>(u) * east) < kZonalWind);
+  for (int cells : {0, 1, 2, 3}) {
+    c.zonal_cells = cells;
+    for (double latitude_deg : {-80.0, -45.0, -20.0, 0.0, 10.0, 36.0, 60.0, 85.0}) {
+      for (double longitude_deg : {-170.0, 0.0, 33.0}) {
+        const double lat = latitude_deg * M_PI / 180, lon = longitude_deg * M_PI / 180;
+        const vec3 n(std::cos(lat) * std::cos(lon), std::cos(lat) * std::sin(lon), std::sin(lat));
+        const vec3 east(-std::sin(lon), std::cos(lon), 0.0);
+        const double u = -c.strength * c.prevailing * zonal_derivative(lat, cells, c.mix_frequency);
+        const vec3 v = curl_velocity(n, c);
+        INFO("cells " << cells << " lat " << latitude_deg << " lon " << longitude_deg);
+        CHECK(dot(v, east) == Approx(u).epsilon(0).margin(kZonalWind));
+        CHECK(length(v - static_cast<float>(u) * east) < kZonalWind);
+      }
     }
   }
-  // With P > 0 the trade winds blow from the east in both tropics (u < 0 at the equator) and
-  // turn westerly beyond lat = 90 / a degrees (36 deg for a = 2.5).
-  const vec3 equator(1, 0, 0);
-  CHECK(curl_velocity(equator, c).y < 0.0f);
+  // The default three cells, P > 0: trade easterlies (u < 0) below 30 degrees, westerlies from
+  // 30 to 60 and polar easterlies beyond, in both hemispheres.
+  c.zonal_cells = 3;
+  for (double sign : {1.0, -1.0})
+    for (auto [latitude_deg, easterly] : {std::pair{15.0, true}, {45.0, false}, {75.0, true}}) {
+      const double lat = sign * latitude_deg * M_PI / 180;
+      const float u = curl_velocity(vec3(std::cos(lat), 0.0, std::sin(lat)), c).y;  // east at lon 0 is +y
+      INFO("lat " << sign * latitude_deg << ": u " << u);
+      CHECK((u < 0.0f) == easterly);
+    }
 }
 
 TEST_CASE("the curl field is finite at the poles", "[curl][extreme]") {
@@ -229,6 +256,7 @@ TEST_CASE("the default flow is continuous through the poles where a = 2.5 whirls
   REQUIRE(smooth.mix_frequency == 3.0f);
   CurlParams whirl = smooth;
   whirl.mix_frequency = 2.5f;
+  whirl.zonal_cells = 0;  // the zonal winds follow m: P m' stays finite at the pole
   whirl.prevailing = 3.0f;  // P - w >= 3 - (1 + 0.3 ln 27) = 1.0: the whirl cannot cancel
   for (float pole : {1.0f, -1.0f}) {
     const float coarse = gap(smooth, pole, 1e-2f), fine = gap(smooth, pole, 1e-4f);

@@ -77,6 +77,7 @@ struct ZonalFlow {
     // The flow the step counts below were chosen for (errors between pre-asymptotic and rounding).
     p.curl_strength = 0.5f;
     p.mix_frequency = 2.5f;
+    p.zonal_cells = 0;  // u = -s P m'(lat), the closed form below
     curl = cover::curl_params(p);
   }
   dvec3 exact(vec3 start) const {

@@ -540,6 +540,12 @@ TEST_CASE("curl_flow.glsl on the GPU agrees with the CPU", "[probe]") {
     cases.push_back({arguments(function, vec4(r(-0.5f, 0.5f), r(-0.5f, 0.5f), r(-0.5f, 0.5f), 0), n, potential, flow),
                      curl_tolerance(flow.z, highest_frequency, flow.x, flow.y) + smooth_extra + envelope_extra});
   }
+  // The zonal profile's derivative: products of values below 3 (kArithmetic), cells 0 .. 3.
+  for (int k = 0; k < 8; ++k) {
+    const float z = r(-1.0f, 1.0f);
+    cases.push_back({arguments(4, vec4(0.0f), vec4(z, std::sqrt(1.0f - z * z), float(k % 4), r(-3.0f, 3.0f)), vec4(0.0f), vec4(0.0f)),
+                     kArithmetic});
+  }
   // The envelope alone: one exp and a few products of values below 16 (kTranscendental x 16).
   for (int k = 0; k < 8; ++k)
     cases.push_back({arguments(3, vec4(0.0f), vec4(r(-1.0f, 1.0f), k % 2 == 0 ? 0.6f : 1.0f, 0, 0), vec4(0.0f), vec4(0.0f)),

@@ -19,16 +19,32 @@ vec2 storm_track_envelope(float z, float focus) {
   return vec2(1.0f - focus * (1.0f - g), focus * g * (-2.0f * u / width) * 2.0f * z);
 }
 
+// The latitude derivative of the zonal profile Z, whose term P Z in the stream function gives
+// the zonal winds u = -s P Z'(lat): for `cells` circulation cells per hemisphere (1 .. 3),
+//   Z'(lat) = 3 cos(lat) prod_k (1 - z^2 / sin^2(90 deg k / cells)),  k = 1 .. cells - 1,
+// easterly (for P > 0) from the equator to the first root, then alternating: 3 cells (Earth:
+// Hadley, Ferrel, polar) give trade easterlies below 30 degrees, westerlies from 30 to 60 and
+// polar easterlies beyond. Z is the integral, a polynomial of z, so the flow is smooth at the
+// poles, where cos(lat) makes the wind vanish. 3 at the equator, as sin 3 lat's derivative.
+// cells 0: Z = m, the hemisphere mix itself (sfsim; dm_dlatitude passed in).
+float zonal_profile_derivative(float z, float cos_latitude, int cells, float dm_dlatitude) {
+  float s = z * z;
+  if (cells == 0) return dm_dlatitude;
+  if (cells == 2) return 3.0f * cos_latitude * (1.0f - 2.0f * s);
+  if (cells == 3) return 3.0f * cos_latitude * (1.0f - 4.0f * s) * (1.0f - s * (4.0f / 3.0f));
+  return 3.0f * cos_latitude;
+}
+
 // The flow (times s) and, in w, its cyclonic depth (n: unit vector, z north). The stream
 // function is
-//   phi = P m + A (-w1 (1 + m)/2 + w2 (1 - m)/2),  m = sin(a lat),  A = storm_track_envelope.
+//   phi = P Z + A (-w1 (1 + m)/2 + w2 (1 - m)/2),  m = sin(a lat),  A = storm_track_envelope,
+// Z the zonal profile (zonal_profile_derivative).
 // w1 and w2 enter with opposite signs, as the Coriolis parameter changes sign at the equator:
 // around their peaks (the feature points) the flow turns counter-clockwise in the north and
-// clockwise in the south seen from outside, the sense of cyclones. The latitude term gives
-// zonal winds u = -s (P - A (w1 + w2)/2) m'(lat) (plus A's small term): easterly trade winds
-// where m' > 0 when P exceeds the noise mean (the smooth w averages about 0.30 at lambda
-// 0.3, 1 - F1 about 0.47); m = sin 3 lat gives easterlies below 30 degrees and westerlies
-// beyond. The velocity is
+// clockwise in the south seen from outside, the sense of cyclones. The latitude terms give
+// zonal winds u = -s (P Z'(lat) - A m'(lat) (w1 + w2)/2) (plus A's small term); the mix's
+// term subtracts the noise mean (the smooth w averages about 0.30 at lambda 0.3, 1 - F1 about
+// 0.47) times m', so for the trade winds P Z' must exceed it. The velocity is
 //   v = s n x grad phi,
 // tangent to the sphere and divergence-free on it. At the poles the direction north is
 // undefined; there the latitude terms are dropped. For odd a (the default 3) m is a polynomial
@@ -56,8 +72,9 @@ vec4 curl_flow_shifted(vec3 n, IN(CurlParams) params, vec3 offset) {
   north = north_length > 1.0e-6f ? north / north_length : vec3(0.0f);
   vec2 envelope = storm_track_envelope(z, params.storm_tracks);
   float vortices = 0.5f * (1.0f - m) * w2.w - 0.5f * (1.0f + m) * w1.w;
+  float zonal = zonal_profile_derivative(z, north_length, params.zonal_cells, dm_dlatitude);
   vec3 gradient = envelope.x * ((0.5f * (1.0f - m)) * vec3(w2) - (0.5f * (1.0f + m)) * vec3(w1)) +
-                  ((params.prevailing - envelope.x * 0.5f * (w1.w + w2.w)) * dm_dlatitude +
+                  (params.prevailing * zonal - envelope.x * 0.5f * (w1.w + w2.w) * dm_dlatitude +
                    envelope.y * north_length * vortices) *
                       north;
   float cyclonic = envelope.x * (0.5f * (1.0f + m) * w1.w + 0.5f * (1.0f - m) * w2.w);

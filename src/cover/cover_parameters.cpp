@@ -17,7 +17,8 @@ glsl::FbmParams fbm_params(const NoiseOctaves& o, std::uint32_t seed, NoiseLayer
 glsl::CurlParams curl_params(const CoverParameters& p) {
   glsl::CurlParams c{fbm_params(p.potential, p.seed, NoiseLayer::potential_north),
                      fbm_params(p.potential, p.seed, NoiseLayer::potential_south),
-                     p.prevailing, p.mix_frequency, p.curl_strength, p.curl_smoothing, p.storm_tracks};
+                     p.prevailing, p.mix_frequency, p.curl_strength, p.curl_smoothing, p.storm_tracks,
+                     p.zonal_cells};
   c.potential_north.period = c.potential_south.period = glsl::ivec3(offset_period_cells(p.potential, p.noise_offset));
   return c;
 }

@@ -33,6 +33,7 @@ struct CoverParameters {
   float mix_frequency = params::cover::mix_frequency.default_float();  // m(lat) = sin(a lat); sfsim uses 3
   float curl_strength = params::cover::curl_strength.default_float();  // scale of the stream function
   float curl_smoothing = params::cover::curl_smoothing.default_float();  // lambda of the smooth potential
+  int zonal_cells = params::cover::zonal_cells.default_int();            // zonal wind cells per hemisphere
   float storm_tracks = params::cover::storm_tracks.default_float();      // vortex focus on the storm tracks
   float cyclone_cloudiness = params::cover::cyclone_cloudiness.default_float();  // weight of the cyclonic depth in the density
   NoiseOctaves density{params::cover::density_frequency.default_float(), params::cover::density_octaves.default_int(),
@@ -76,6 +77,7 @@ void visit_numeric_parameters(P& p, Visit&& visit) {
   visit(c::mix_frequency, p.mix_frequency);
   visit(c::curl_strength, p.curl_strength);
   visit(c::curl_smoothing, p.curl_smoothing);
+  visit(c::zonal_cells, p.zonal_cells);
   visit(c::storm_tracks, p.storm_tracks);
   visit(c::cyclone_cloudiness, p.cyclone_cloudiness);
   visit(c::density_frequency, p.density.frequency);

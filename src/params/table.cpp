@@ -6,7 +6,7 @@ const std::vector<const Parameter*>& all() {
   static const std::vector<const Parameter*> parameters = {
       &cover::size, &cover::seed, &cover::iterations, &cover::step, &cover::coverage, &cover::profile, &cover::month,
       &cover::curl_frequency, &cover::curl_octaves, &cover::curl_lacunarity, &cover::curl_gain,
-      &cover::prevailing, &cover::mix_frequency, &cover::curl_strength, &cover::curl_smoothing, &cover::storm_tracks, &cover::cyclone_cloudiness,
+      &cover::prevailing, &cover::mix_frequency, &cover::curl_strength, &cover::curl_smoothing, &cover::zonal_cells, &cover::storm_tracks, &cover::cyclone_cloudiness,
       &cover::density_frequency,
       &cover::density_octaves, &cover::density_lacunarity, &cover::density_gain, &cover::integrator,
       &cover::curl_mode, &cover::tolerance, &cover::max_substeps, &cover::noise_offset,

@@ -24,6 +24,7 @@ CurlParams warp_probe_curl() {
   c.strength = 0.5f;
   c.smoothing = 0.0f;  // the classic potential these cases were set up with
   c.storm_tracks = 0.0f;
+  c.zonal_cells = 0;
   return c;
 }
 #ifdef __cplusplus
