@@ -2,6 +2,7 @@
 # Regenerates the README's pictures in docs/images from today's code (after a build in build/):
 #   docs/images/cover_equirect.png           nephele generate (defaults), the equirect preview
 #   docs/images/cover_stats.png              nephele stats of that cover (coverage by latitude, spectrum, D)
+#   docs/images/cover_equirect_surface.png   nephele generate --surface etopo5 (the land/ocean mask)
 #   docs/images/render_gurten.png/.json      nephele render --view gurten (defaults)
 #   docs/images/render_gurten_panorama.*     the same scene as a panorama
 #   docs/images/model_examples.png           nephele model previews of the four built-in clouds
@@ -22,6 +23,8 @@ trap 'rm -rf "$work"' EXIT
 cp "$work/cover/cover_equirect.png" docs/images/cover_equirect.png
 "$nephele" stats "$work/cover" --out "$work/stats"
 cp "$work/stats/stats.png" docs/images/cover_stats.png
+"$nephele" generate --surface etopo5 --files png --quiet --out "$work/cover-surface"
+cp "$work/cover-surface/cover_equirect.png" docs/images/cover_equirect_surface.png
 "$nephele" render --view gurten --no-cache --out "$work/render_gurten.png"
 cp "$work/render_gurten.png" "$work/render_gurten.json" docs/images/
 "$nephele" render --view gurten --panorama --no-cache --out "$work/render_gurten_panorama.png"

@@ -148,7 +148,7 @@ TEST_CASE("density and coverage passes agree with the CPU twin", "[pass]") {
     // The cyclonic factor 1 + k c (c from the GPU's curl field on both sides) scales the
     // density's error and adds two roundings of the product.
     const float factor = 1.0f + p.cyclone_cloudiness * curl[k].w;
-    const float expected = cyclonic_density(cover_density(vec3(warp[k]), params), curl[k].w, p.cyclone_cloudiness);
+    const float expected = shaped_density(cover_density(vec3(warp[k]), params), curl[k].w, p.cyclone_cloudiness, 0.0f, 0.0f);
     REQUIRE(density[k] == Approx(expected).epsilon(0).margin(kDensity * factor + 4 * kUlp * expected));
     REQUIRE(covered[k] == Approx(cover_from_density(density[k], c.threshold, c.density_max)).epsilon(0).margin(kCoverRemap));
   }

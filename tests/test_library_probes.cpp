@@ -288,12 +288,14 @@ TEST_CASE("cover_density.glsl on the GPU agrees with the CPU", "[probe]") {
     const vec4 seed_and_offset(7.0f, r(-0.5f, 0.5f), r(-0.5f, 0.5f), r(-0.5f, 0.5f));
     cases.push_back({arguments(k % 2, vec4(0.0f), p, fbm, seed_and_offset), kFbm});
     cases.push_back({arguments(2, vec4(r(0.0f, 1.0f), r(0.0f, 0.5f), r(0.5f, 1.0f), 0)), kArithmetic});
-    cases.push_back({arguments(3, vec4(r(0.0f, 1.5f), r(0.0f, 0.7f), r(0.0f, 2.0f), 0)), kArithmetic});
+    cases.push_back({arguments(3, vec4(r(0.0f, 1.5f), r(0.0f, 0.7f), r(0.0f, 2.0f), 0), vec4(0.0f), vec4(0.0f),
+                               vec4(0.0f, r(-1.0f, 1.0f), r(0.0f, 1.0f), 0.0f)),
+                     kArithmetic});
   }
   compare("cover_density", probe_cover_density, cases);
-  // d (1 + k c) by hand: 0.8 (1 + 0.5 x 0.6) = 1.04; k = 0 leaves d.
-  CHECK(std::abs(cyclonic_density(0.8f, 0.6f, 0.5f) - 1.04f) < 4 * kUlp);
-  CHECK(cyclonic_density(0.8f, 0.6f, 0.0f) == 0.8f);
+  // d (1 + k c)(1 + k_s b) by hand: 0.8 (1 + 0.5 x 0.6)(1 - 0.5 x 0.4) = 0.832; zero weights leave d.
+  CHECK(std::abs(shaped_density(0.8f, 0.6f, 0.5f, -0.4f, 0.5f) - 0.832f) < 4 * kUlp);
+  CHECK(shaped_density(0.8f, 0.6f, 0.0f, -0.4f, 0.0f) == 0.8f);
 }
 
 TEST_CASE("latitude_bands.glsl on the GPU agrees with the CPU", "[probe]") {

@@ -14,12 +14,14 @@ float cover_density_shifted(vec3 warped, IN(FbmParams) params, vec3 offset) {
   return inverted_worley_fbm(normalize(warped) + offset, params).w;
 }
 
-// The density with the cyclones' share: d (1 + k c), c the flow's cyclonic depth at the texel
-// (curl_flow_shifted's w, 0 .. about 0.6) and k >= 0 the cyclone_cloudiness. A factor rather than
-// a sum keeps the warped noise's structure in the cyclones (a sum adds smooth blobs) and
-// thins it in the highs; the calibration then places the threshold (docs/climate.md).
-float cyclonic_density(float density, float cyclonic, float cloudiness) {
-  return density * (1.0f + cloudiness * cyclonic);
+// The density shaped by the circulation and the surface: d (1 + k c) (1 + k_s b). c is the
+// flow's cyclonic depth at the texel (curl_flow_shifted's w, 0 .. about 0.6) and k >= 0 the
+// cyclone_cloudiness; b in [-1, 1] the land/ocean bias there (surface_bias.hpp: deserts < 0,
+// stratocumulus decks > 0) and k_s in [0, 1] its weight, so both factors stay >= 0. Factors
+// rather than sums keep the warped noise's structure (a sum lays smooth blobs over it) and
+// thicken or thin it; the calibration then places the threshold (docs/climate.md).
+float shaped_density(float density, float cyclonic, float cloudiness, float surface, float surface_weight) {
+  return density * (1.0f + cloudiness * cyclonic) * (1.0f + surface_weight * surface);
 }
 
 // Linear ramp from the calibrated threshold (cover 0) to the largest density (cover 1):

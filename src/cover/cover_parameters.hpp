@@ -1,9 +1,11 @@
 #pragma once
 // Everything that determines a global cloud cover. Defaults give an Earth-like cover.
 #include <cstdint>
+#include <memory>
 
 #include "cover/integrators.hpp"
 #include "cover/latitude_profile.hpp"
+#include "cover/surface_bias.hpp"
 #include "params/table.hpp"
 #include "shader_math/shader_math.hpp"
 
@@ -39,6 +41,9 @@ struct CoverParameters {
   NoiseOctaves density{params::cover::density_frequency.default_float(), params::cover::density_octaves.default_int(),
                        params::cover::density_lacunarity.default_float(),
                        params::cover::density_gain.default_float()};  // Worley fBm of the cloud density
+  // Land/ocean mask (--surface; null: none) and its weight k in density (1 + k b).
+  std::shared_ptr<const SurfaceMask> surface;
+  float surface_weight = params::cover::surface_weight.default_float();
   // How the warp is solved (docs/numerics.md): RK4 on a C2 cubic B-spline of the curl of the
   // smooth potential, smooth enough for order 4 (sfsim: Euler, sampled, 50 steps).
   cover::Integrator integrator = *cover::parse_integrator(std::string(params::cover::integrator.default_text));
@@ -84,6 +89,7 @@ void visit_numeric_parameters(P& p, Visit&& visit) {
   visit(c::density_octaves, p.density.octaves);
   visit(c::density_lacunarity, p.density.lacunarity);
   visit(c::density_gain, p.density.gain);
+  visit(c::surface_weight, p.surface_weight);
 }
 
 // Independent seeds per noise layer, derived from the user's seed.

@@ -196,14 +196,32 @@ const cover::WarpDiagnostics& GlobalCover::diagnose() {
   return *diagnostics_;
 }
 
+void GlobalCover::upload_surface_bias() {
+  // Without a mask a 1 x 1 zero texture keeps the sampler complete (the weight is 0 then).
+  if (parameters_.surface) {
+    surface_bias_ = gpu::Texture::plane(surface_bias_columns, surface_bias_rows, GL_R32F);
+    surface_bias_.write(surface_bias(*parameters_.surface));
+  } else {
+    surface_bias_ = gpu::Texture::plane(1, 1, GL_R32F);
+    surface_bias_.write({0.0f});
+  }
+  glTextureParameteri(surface_bias_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTextureParameteri(surface_bias_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTextureParameteri(surface_bias_.id(), GL_TEXTURE_WRAP_S, GL_REPEAT);
+  glTextureParameteri(surface_bias_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+}
+
 void GlobalCover::run_density() {
   timed("density", [&] {
     glsl::set_uniform(density_program_, "u_cover", density_params(parameters_));
     density_program_.set("u_noise_offset", density_offset(parameters_));
     density_program_.set("u_cyclone_cloudiness", parameters_.cyclone_cloudiness);
+    density_program_.set("u_surface_weight", parameters_.surface ? parameters_.surface_weight : 0.0f);
+    if (!surface_bias_.id()) upload_surface_bias();
     warp_field_.bind_image(0, GL_READ_ONLY);
     density_field_.bind_image(1, GL_WRITE_ONLY);
     curl_field_.bind_image(2, GL_READ_ONLY);
+    glBindTextureUnit(3, surface_bias_.id());
     density_program_.dispatch_covering(parameters_.size, parameters_.size, 6);
     gpu::image_barrier();
   });

@@ -70,6 +70,7 @@ class GlobalCover {
   template <class Work>
   void timed(const std::string& pass, Work&& work);
   void dispatch_warp(const gpu::Texture& starts, const gpu::Texture& warped);
+  void upload_surface_bias();  // the land/ocean bias grid (surface_bias.hpp), once
 
   CoverParameters parameters_;
   std::function<void(const std::string&)> on_pass_;
@@ -81,6 +82,7 @@ class GlobalCover {
   gpu::ComputeProgram remap_program_{"cover/cover_remap.comp"};
   gpu::Texture identity_field_, curl_field_, warp_field_, density_field_, cover_field_;
   gpu::Texture spline_coefficients_;
+  gpu::Texture surface_bias_;  // 720 x 360 R32F with --surface, else 1 x 1 zero
   CoverageCalibration calibration_;
   std::optional<BandCalibration> bands_;
   std::unique_ptr<GpuCalibration> gpu_calibration_;  // made at the first calibration

@@ -92,6 +92,8 @@ json::Value cover_sidecar(const cover::GlobalCover& cover, const gpu::ContextInf
     set_path(parameters, std::string(parameter.sidecar_path()), json_number(value));
     if (&parameter == &params::cover::coverage)
       parameters.set(std::string(params::cover::profile.key), p.profile.name);
+    if (&parameter == &params::cover::surface_weight)
+      parameters.set(std::string(params::cover::surface.key), p.surface ? p.surface->source : "none");
     if (&parameter == &params::cover::step) {
       parameters.set("flow_time", static_cast<double>(p.iterations) * p.step);
       parameters.set(std::string(params::cover::integrator.key), cover::integrator_name(p.integrator));

@@ -8,7 +8,7 @@ const std::vector<const Parameter*>& all() {
       &cover::curl_frequency, &cover::curl_octaves, &cover::curl_lacunarity, &cover::curl_gain,
       &cover::prevailing, &cover::mix_frequency, &cover::curl_strength, &cover::curl_smoothing, &cover::zonal_cells, &cover::storm_tracks, &cover::cyclone_cloudiness,
       &cover::density_frequency,
-      &cover::density_octaves, &cover::density_lacunarity, &cover::density_gain, &cover::integrator,
+      &cover::density_octaves, &cover::density_lacunarity, &cover::density_gain, &cover::surface, &cover::surface_weight, &cover::integrator,
       &cover::curl_mode, &cover::tolerance, &cover::max_substeps, &cover::noise_offset,
       &scene::view, &scene::at, &scene::latitude, &scene::longitude, &scene::height, &scene::heading,
       &scene::pitch, &scene::fov, &scene::time, &scene::size, &scene::panorama, &scene::weather,

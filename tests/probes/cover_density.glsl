@@ -13,6 +13,6 @@ vec4 probe_cover_density(mat4 x) {
   params.period = ivec3(0);
   if (f == 0) return vec4(cover_density(vec3(x[1]), params), 0.0f, 0.0f, 0.0f);
   if (f == 1) return vec4(cover_density_shifted(vec3(x[1]), params, vec3(x[3].y, x[3].z, x[3].w)), 0.0f, 0.0f, 0.0f);
-  if (f == 3) return vec4(cyclonic_density(x[0].y, x[0].z, x[0].w), 0.0f, 0.0f, 0.0f);
+  if (f == 3) return vec4(shaped_density(x[0].y, x[0].z, x[0].w, x[3].y, x[3].z), 0.0f, 0.0f, 0.0f);
   return vec4(cover_from_density(x[0].y, x[0].z, x[0].w), 0.0f, 0.0f, 0.0f);
 }

@@ -1,6 +1,7 @@
 #include "apps/cli/cover_options.hpp"
 
 #include "io/profile_files.hpp"
+#include "io/surface_files.hpp"
 #include "params/table.hpp"
 
 #include <cmath>
@@ -69,5 +70,9 @@ void ProfileOption::apply(cover::CoverParameters& p) const {
     throw UsageError(params::cover::month.option(), std::to_string(p.month), "0 with --profile flat",
                      "has no profile to shift");
 }
+
+void SurfaceOption::add(Options& o) { o.bind(params::cover::surface, &value_); }
+
+void SurfaceOption::apply(cover::CoverParameters& p) const { p.surface = io::surface_from_option(value_); }
 
 }  // namespace nephele::cli

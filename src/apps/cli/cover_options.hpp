@@ -38,4 +38,14 @@ class ProfileOption {
   std::string value_{params::cover::profile.default_text};
 };
 
+// The land/ocean mask, --surface none|etopo5|FILE (read after Options::parse by apply()).
+class SurfaceOption {
+ public:
+  void add(Options& options);
+  void apply(cover::CoverParameters& p) const;  // throws core::InputError (exit 2)
+
+ private:
+  std::string value_{params::cover::surface.default_text};
+};
+
 }  // namespace nephele::cli

@@ -28,6 +28,8 @@ int run_generate(const std::vector<std::string>& arguments) {
   WarpOptions warp_options;
   ProfileOption profile_option;
   profile_option.add(options);
+  SurfaceOption surface_option;
+  surface_option.add(options);
   warp_options.add(options, parameters);
   std::string files(params::run::cover_files.default_text), precision(params::run::precision.default_text),
       compression(params::run::exr_compression.default_text);
@@ -45,6 +47,7 @@ int run_generate(const std::vector<std::string>& arguments) {
   }
   warp_options.apply(parameters);
   profile_option.apply(parameters);
+  surface_option.apply(parameters);
   validate_cover_parameters(parameters);
   io::CoverFileOptions file_options;
   io::parse_cover_files(files, file_options);

@@ -1,0 +1,44 @@
+#pragma once
+// The land/ocean mask's share of the cloud density (--surface; docs/climate.md, "Land and
+// ocean"): fewer clouds over the subtropical deserts, stratocumulus decks over the cool
+// oceans off the subtropical west coasts. The density pass multiplies the warped noise by
+// 1 + k b, b the bias of this file in [-1, 1] sampled at the texel's latitude and longitude,
+// before the calibration keeps every band's coverage.
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace nephele::cover {
+
+// An equirectangular land fraction: row 0 at the north edge, column 0 at longitude -180 deg
+// (the convention of the cover's own equirect and of the Earth textures), cell centres at
+// (i + 0.5) / columns of the turn and 90 - (j + 0.5) 180 / rows degrees of latitude.
+struct SurfaceMask {
+  int columns = 0, rows = 0;
+  std::vector<float> land;  // rows * columns, 0 ocean .. 1 land
+  std::string source;       // the --surface value, for cover.json and messages
+};
+
+// Grid of the bias: 720 x 360 (half a degree), finer than any deck or desert and coarse
+// enough for the CPU (0.26 M cells).
+constexpr int surface_bias_columns = 720;
+constexpr int surface_bias_rows = 360;
+
+// The mask resampled to the bias grid by area averages of the cells each bias cell overlaps
+// (nearest cell where the mask is coarser).
+SurfaceMask resample_surface(const SurfaceMask& mask, int columns, int rows);
+
+// The subtropical weights of the desert and of the deck terms at |latitude| (degrees):
+// exp(-((|lat| - 24) / 8)^2) and exp(-((|lat| - 22) / 9)^2) (docs/climate.md gives sources).
+double desert_weight(double latitude_deg);
+double deck_weight(double latitude_deg);
+
+// b = deck - desert on the bias grid (surface_bias_columns x surface_bias_rows, the mask's
+// convention): desert = land S_desert(lat); deck = (1 - land) S_deck(lat) E W, E the largest
+// land fraction within 15 degrees of longitude to the east weighted by 1 - distance / 15 deg
+// (the ocean off a west coast), W the mean ocean fraction over 15 degrees to the west (open
+// ocean there: no decks in inland seas such as the Persian Gulf or the Red Sea); then three 9 x 9 box filters (wrapping in longitude; about a
+// Gaussian of 2.2 degrees) so that coasts do not draw sharp lines into the cover.
+std::vector<float> surface_bias(const SurfaceMask& mask);
+
+}  // namespace nephele::cover

@@ -1,0 +1,66 @@
+#include "io/surface_files.hpp"
+
+#include <cmath>
+#include <filesystem>
+
+#include "core/error.hpp"
+#include "io/elevation_files.hpp"
+#include "io/image_files.hpp"
+
+namespace nephele::io {
+
+namespace {
+
+const std::string field = "--surface";
+
+// Land fraction of each half-degree cell from 6 x 6 bilinear samples of the elevation (the
+// 5-minute lattice's spacing): land where above sea level.
+cover::SurfaceMask etopo5_mask(const std::string& path) {
+  const regional::ElevationRaster raster = read_etopo5(path, -90.0, 90.0, field);
+  cover::SurfaceMask mask{cover::surface_bias_columns, cover::surface_bias_rows, {}, path};
+  mask.land.resize(static_cast<size_t>(mask.columns) * mask.rows);
+  const int samples = 6;
+  for (int j = 0; j < mask.rows; ++j)
+    for (int i = 0; i < mask.columns; ++i) {
+      int land = 0;
+      for (int b = 0; b < samples; ++b)
+        for (int a = 0; a < samples; ++a) {
+          const double latitude = 90.0 - (j + (b + 0.5) / samples) * 180.0 / mask.rows;
+          const double longitude = -180.0 + (i + (a + 0.5) / samples) * 360.0 / mask.columns;
+          land += raster.at(latitude, longitude).value_or(0.0) > 0.0;
+        }
+      mask.land[static_cast<size_t>(j) * mask.columns + i] = static_cast<float>(land) / (samples * samples);
+    }
+  return mask;
+}
+
+cover::SurfaceMask image_mask(const std::string& path) {
+  if (!std::filesystem::is_regular_file(path))
+    throw core::InputError(field, path, "an existing ETOPO5 netCDF or image file, or none or etopo5", "no such file");
+  const core::ImageData image = read_image(path);
+  cover::SurfaceMask mask{image.width, image.height, {}, path};
+  mask.land.resize(static_cast<size_t>(image.width) * image.height);
+  for (size_t k = 0; k < mask.land.size(); ++k) {
+    const float value = image.pixels[k * image.channels];
+    if (!(value >= 0.0f && value <= 1.0f))
+      throw core::InputError(field, path, "land fractions in [0, 1] in the first channel",
+                             "pixel " + std::to_string(k % image.width) + ", " + std::to_string(k / image.width) +
+                                 " holds " + std::to_string(value));
+    mask.land[k] = value;
+  }
+  return cover::resample_surface(mask, cover::surface_bias_columns, cover::surface_bias_rows);
+}
+
+}  // namespace
+
+std::shared_ptr<const cover::SurfaceMask> surface_from_option(const std::string& value) {
+  if (value == "none") return nullptr;
+  if (value == "etopo5") return std::make_shared<const cover::SurfaceMask>(etopo5_mask(etopo5_default_path));
+  const std::string extension = std::filesystem::path(value).extension().string();
+  if (extension == ".cdf" || extension == ".nc") return std::make_shared<const cover::SurfaceMask>(etopo5_mask(value));
+  cover::SurfaceMask mask = image_mask(value);
+  mask.source = value;
+  return std::make_shared<const cover::SurfaceMask>(std::move(mask));
+}
+
+}  // namespace nephele::io

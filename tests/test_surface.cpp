@@ -1,0 +1,152 @@
+// The land/ocean mask (--surface): the bias's terms on synthetic masks and on ETOPO5, the
+// density pass's use of it, and bad masks (docs/climate.md, "Land and ocean").
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <filesystem>
+
+#include "cli_support.hpp"
+#include "core/error.hpp"
+#include "cover/global_cover.hpp"
+#include "cover/surface_bias.hpp"
+#include "gl_support.hpp"
+#include "io/elevation_files.hpp"
+#include "io/image_files.hpp"
+#include "io/surface_files.hpp"
+
+using namespace nephele;
+
+namespace {
+
+// A mask on the bias grid from a land predicate of (latitude, longitude) in degrees.
+template <class Land>
+cover::SurfaceMask synthetic(Land land) {
+  cover::SurfaceMask m{cover::surface_bias_columns, cover::surface_bias_rows, {}, "synthetic"};
+  for (int j = 0; j < m.rows; ++j)
+    for (int i = 0; i < m.columns; ++i) {
+      const double latitude = 90.0 - (j + 0.5) * 180.0 / m.rows, longitude = -180.0 + (i + 0.5) * 360.0 / m.columns;
+      m.land.push_back(land(latitude, longitude) ? 1.0f : 0.0f);
+    }
+  return m;
+}
+
+// The bias at the cell holding (latitude, longitude).
+float bias_at(const std::vector<float>& bias, double latitude, double longitude) {
+  const int j = std::clamp(int((90.0 - latitude) / 180.0 * cover::surface_bias_rows), 0, cover::surface_bias_rows - 1);
+  const int i = int((longitude + 180.0) / 360.0 * cover::surface_bias_columns) % cover::surface_bias_columns;
+  return bias[static_cast<size_t>(j) * cover::surface_bias_columns + i];
+}
+
+// A continent from 0 to 60 degrees east, 45 S to 45 N.
+bool continent(double latitude, double longitude) { return longitude >= 0 && longitude <= 60 && std::abs(latitude) <= 45; }
+
+}  // namespace
+
+TEST_CASE("the surface bias is zero over open ocean and the desert weight over wide land", "[surface]") {
+  // The filters (weights summing to 1) keep a constant field: 0 for all ocean. All land gives
+  // -S(lat) blurred along latitude by a 2.2-degree kernel: at the peak (24 degrees) S'' =
+  // -2/64 per degree^2 lowers it by about |S''| sigma^2 / 2 = 0.08 (0.1 allowed); at 60
+  // degrees S = exp(-20), and the kernel reaches 7 degrees at most: below 1e-4.
+  const auto ocean = cover::surface_bias(synthetic([](double, double) { return false; }));
+  for (float b : ocean) REQUIRE(b == 0.0f);
+  const auto land = cover::surface_bias(synthetic([](double, double) { return true; }));
+  CHECK(bias_at(land, 24.25, 0) == Approx(-1.0).margin(0.1));
+  CHECK(bias_at(land, -24.25, 100) == Approx(-1.0).margin(0.1));
+  CHECK(std::abs(bias_at(land, 60.25, 0)) < 1e-4);
+  CHECK(cover::desert_weight(24.0) == 1.0);
+  CHECK(cover::deck_weight(-22.0) == 1.0);
+}
+
+TEST_CASE("a continent gets a desert inside and a deck off its west coast, none off its east coast", "[surface]") {
+  const auto bias = cover::surface_bias(synthetic(continent));
+  // Inside, at 24 N 30 E: the desert term, -1 but for the blur (> 20 degrees from any coast).
+  CHECK(bias_at(bias, 24.0, 30.0) < -0.8);
+  // 3 degrees off the west coast at 22 S: land 3 degrees east weighted 1 - 3/15 = 0.8, open
+  // ocean to the west (W = 1), deck weight 1: 0.8 before the blur, which mixes in the land's
+  // -1 within a few cells of the coast: above 0.3.
+  CHECK(bias_at(bias, -22.0, -3.0) > 0.3);
+  CHECK(bias_at(bias, 22.0, -3.0) > 0.3);
+  // Off the east coast and far from any coast: no term (the blur reaches 7 degrees at most).
+  CHECK(std::abs(bias_at(bias, 22.0, 70.0)) < 1e-6);
+  CHECK(std::abs(bias_at(bias, 0.0, -120.0)) < 1e-6);
+  // Beyond the subtropics the desert weight fades: inside the land at 40 N, S(40) = exp(-4) =
+  // 0.018, raised by the blur where S is convex (S'' = 14/64 S per degree^2 there, times
+  // sigma^2 / 2 = 2.5: +0.01, and more from the kernel's tails): below 0.04.
+  CHECK(std::abs(bias_at(bias, 40.0, 30.0)) < 0.04);
+}
+
+TEST_CASE("ETOPO5's bias clears the Sahara and puts decks off California, Peru and Namibia", "[surface][terrain]") {
+  if (!std::filesystem::exists(io::etopo5_default_path)) FAIL("ferret-datasets is not installed (scripts/debian-packages.txt)");
+  const auto mask = io::surface_from_option("etopo5");
+  REQUIRE(mask != nullptr);
+  const auto bias = cover::surface_bias(*mask);
+  CHECK(bias_at(bias, 23.0, 10.0) < -0.7);    // central Sahara
+  CHECK(bias_at(bias, -25.0, 135.0) < -0.7);  // central Australia
+  CHECK(bias_at(bias, 28.0, -120.0) > 0.2);   // off Baja California
+  CHECK(bias_at(bias, -18.0, -78.0) > 0.2);   // off Peru
+  CHECK(bias_at(bias, -20.0, 9.0) > 0.2);     // off Namibia
+  CHECK(std::abs(bias_at(bias, 0.0, -150.0)) < 0.05);  // mid-Pacific
+  CHECK(std::abs(bias_at(bias, 50.0, 10.0)) < 0.05);   // central Europe: beyond the subtropics
+}
+
+TEST_CASE("the density pass moves clouds from a continent's desert to the deck off its coast", "[surface][pass]") {
+  // The cloudy fraction (cover > 0) in a box inside the desert and in a box off the west coast,
+  // with and without the mask; the calibration keeps each band's coverage, so the clouds move.
+  test::test_context();
+  auto fractions = [](bool with_mask) {
+    cover::CoverParameters p;
+    p.size = 64;
+    p.curl_size = 64;
+    if (with_mask) p.surface = std::make_shared<const cover::SurfaceMask>(synthetic(continent));
+    cover::GlobalCover cover(p);
+    cover.run();
+    const auto identity = cover.identity_field().read();
+    const auto covered = cover.cover_field().read();
+    double desert = 0, deck = 0;
+    int desert_texels = 0, deck_texels = 0;
+    for (size_t k = 0; k < covered.size(); ++k) {
+      const double x = identity[4 * k], y = identity[4 * k + 1], z = identity[4 * k + 2];
+      const double latitude = std::asin(z) * 180 / M_PI, longitude = std::atan2(y, x) * 180 / M_PI;
+      if (std::abs(std::abs(latitude) - 24) < 6 && longitude > 15 && longitude < 45) desert += covered[k] > 0, ++desert_texels;
+      if (std::abs(std::abs(latitude) - 22) < 6 && longitude > -6 && longitude < -1) deck += covered[k] > 0, ++deck_texels;
+    }
+    return std::pair{desert / desert_texels, deck / deck_texels};
+  };
+  const auto [desert_without, deck_without] = fractions(false);
+  const auto [desert_with, deck_with] = fractions(true);
+  INFO("desert " << desert_without << " -> " << desert_with << ", deck " << deck_without << " -> " << deck_with);
+  // The density factor is 0.6 in the desert and up to 1.3 on the deck (k = 0.4): the desert
+  // keeps only its densest noise, the deck gains most of its texels (measured: desert 0.49 ->
+  // 0.04, deck 0.34 -> 0.81).
+  CHECK(desert_with < 0.5 * desert_without);
+  CHECK(deck_with > deck_without + 0.1);
+}
+
+TEST_CASE("generate records the surface in cover.json and refuses a bad mask naming --surface", "[surface][cli][bad-input]") {
+  test::TemporaryDirectory directory(true);
+  const auto out = directory.path / "cover";
+  const auto none = test::run("generate --size 8 --curl-size 8 --files png --out " + out.string());
+  REQUIRE(none.exit_code == 0);
+  CHECK(test::read_file(out / "cover.json").find("\"surface\": \"none\"") != std::string::npos);
+  const auto missing = test::run("generate --size 8 --surface " + (directory.path / "absent.png").string() + " --out " +
+                                 (directory.path / "x").string());
+  CHECK(missing.exit_code == 2);
+  CHECK(missing.output.find("--surface") != std::string::npos);
+  CHECK(!std::filesystem::exists(directory.path / "x"));
+  // Values above 1 in the first channel are no land fractions.
+  core::ImageData image{4, 2, 1, std::vector<float>(8, 0.0f)};
+  image.pixels[5] = 2.0f;
+  const auto mask = directory.path / "mask.exr";
+  io::write_image(mask, image, io::exr_encoding({"Y"}));
+  const auto bad = test::run("generate --size 8 --surface " + mask.string() + " --out " + (directory.path / "y").string());
+  CHECK(bad.exit_code == 2);
+  CHECK(bad.output.find("--surface") != std::string::npos);
+  CHECK(bad.output.find("[0, 1]") != std::string::npos);
+  // A valid image mask is taken and named in the sidecar.
+  image.pixels[5] = 1.0f;
+  io::write_image(mask, image, io::exr_encoding({"Y"}));
+  const auto taken = test::run("generate --size 8 --curl-size 8 --files png --surface " + mask.string() + " --out " +
+                               (directory.path / "z").string());
+  REQUIRE(taken.exit_code == 0);
+  CHECK(test::read_file(directory.path / "z" / "cover.json").find(mask.string()) != std::string::npos);
+}
