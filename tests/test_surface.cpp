@@ -7,7 +7,7 @@
 
 #include "cli_support.hpp"
 #include "core/error.hpp"
-#include "cover/global_cover.hpp"
+#include "cover_texels.hpp"
 #include "cover/surface_bias.hpp"
 #include "gl_support.hpp"
 #include "io/elevation_files.hpp"
@@ -92,23 +92,18 @@ TEST_CASE("ETOPO5's bias clears the Sahara and puts decks off California, Peru a
 TEST_CASE("the density pass moves clouds from a continent's desert to the deck off its coast", "[surface][pass]") {
   // The cloudy fraction (cover > 0) in a box inside the desert and in a box off the west coast,
   // with and without the mask; the calibration keeps each band's coverage, so the clouds move.
-  test::test_context();
   auto fractions = [](bool with_mask) {
     cover::CoverParameters p;
     p.size = 64;
     p.curl_size = 64;
     if (with_mask) p.surface = std::make_shared<const cover::SurfaceMask>(synthetic(continent));
-    cover::GlobalCover cover(p);
-    cover.run();
-    const auto identity = cover.identity_field().read();
-    const auto covered = cover.cover_field().read();
     double desert = 0, deck = 0;
     int desert_texels = 0, deck_texels = 0;
-    for (size_t k = 0; k < covered.size(); ++k) {
-      const double x = identity[4 * k], y = identity[4 * k + 1], z = identity[4 * k + 2];
-      const double latitude = std::asin(z) * 180 / M_PI, longitude = std::atan2(y, x) * 180 / M_PI;
-      if (std::abs(std::abs(latitude) - 24) < 6 && longitude > 15 && longitude < 45) desert += covered[k] > 0, ++desert_texels;
-      if (std::abs(std::abs(latitude) - 22) < 6 && longitude > -6 && longitude < -1) deck += covered[k] > 0, ++deck_texels;
+    for (const test::CoverTexel& t : test::cover_texels(p)) {
+      const double latitude = std::asin(t.direction.z) * 180 / M_PI;
+      const double longitude = std::atan2(t.direction.y, t.direction.x) * 180 / M_PI;
+      if (std::abs(std::abs(latitude) - 24) < 6 && longitude > 15 && longitude < 45) desert += t.cover > 0, ++desert_texels;
+      if (std::abs(std::abs(latitude) - 22) < 6 && longitude > -6 && longitude < -1) deck += t.cover > 0, ++deck_texels;
     }
     return std::pair{desert / desert_texels, deck / deck_texels};
   };
