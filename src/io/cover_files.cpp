@@ -231,7 +231,13 @@ CoverExport write_cover_files(OutputSet& outputs, const cover::GlobalCover& cove
     auto equirect = std::make_shared<ImageData>(ImageData{4 * size, 2 * size, 1, {}});
     timed("equirect", [&] { equirect->pixels = cover::equirect_from_cube(cover.cover_field(), equirect->width, equirect->height); });
     if (options.equirect) encode("cover_equirect.exr", equirect, exr);
-    if (options.preview) encode("cover_equirect.png", equirect, png_encoding(8));
+    if (options.preview) {
+      // zlib level 1: the 4096 x 2048 preview encodes in about half the time of level 6 (the
+      // longest single encoding of generate) for an 8 % larger file; the pixels are the same.
+      ImageEncoding preview = png_encoding(8);
+      preview.png_compression_level = 1;
+      encode("cover_equirect.png", equirect, preview);
+    }
   }
   std::vector<std::vector<unsigned char>> encoded;
   for (Job& job : jobs) encoded.push_back(job.bytes.get());

@@ -25,6 +25,8 @@ struct ImageEncoding {
   // With 4 channels: the colour is not premultiplied by alpha (white clouds with coverage in
   // alpha are stored as given; OpenImageIO would otherwise divide the colour by alpha).
   bool unassociated_alpha = false;
+  // png: zlib's level, 0 (none) .. 9 (smallest); 6 is zlib's default. The same pixels at any level.
+  int png_compression_level = 6;
 };
 
 inline ImageEncoding png_encoding(int bits = 8) {
