@@ -190,15 +190,24 @@ TEST_CASE("the orbit viewpoint lifts the camera to the orbit view's altitude ove
   CHECK(state.camera.pitch_deg == -90);
   CHECK(state.camera.latitude_deg == latitude);
   CHECK(state.camera.longitude_deg == longitude);
-  // Flying clears the named viewpoint; the height alone then decides, the ground renderer's
-  // range ending at the scene's highest camera.
+  // Flying clears the named viewpoint; the height alone then decides: the orbit renderer alone
+  // from the scene's highest camera (20 km) up, the ground's alone up to 12 km, and a
+  // smoothstep of the two between (orbit_share).
   viewer::fly(state, 0, 0, 0);
   CHECK(state.camera.height_m == params::scene::altitude_km.default_number * 1000.0);  // still in orbit
   CHECK(viewer::shows_orbit(state));
   state.camera.height_m = params::scene::height.max;
-  CHECK_FALSE(viewer::shows_orbit(state));
-  state.camera.height_m = params::scene::height.max + 1;
   CHECK(viewer::shows_orbit(state));
+  CHECK(viewer::orbit_share(state) == 1.0);
+  state.camera.height_m = params::scene::height.max - 1;
+  CHECK_FALSE(viewer::shows_orbit(state));
+  CHECK(viewer::orbit_share(state) > 0.99);
+  state.camera.height_m = 16000;
+  CHECK(viewer::orbit_share(state) == Approx(0.5).epsilon(0).margin(1e-12));
+  state.camera.height_m = 14000;  // t = 1/4: 3/16 - 2/64 = 0.15625
+  CHECK(viewer::orbit_share(state) == Approx(0.15625).epsilon(0).margin(1e-12));
+  state.camera.height_m = viewer::orbit_fade_bottom_m;
+  CHECK(viewer::orbit_share(state) == 0.0);
   // A scene that asks for the orbit view starts there (render --view orbit's default point).
   regional::Scene scene;
   scene.view = "orbit";

@@ -119,6 +119,73 @@ TEST_CASE("in orbit the window shows the image render --view orbit makes headles
   CHECK(sum > 0);
 }
 
+TEST_CASE("between 12 and 20 km the view cross-fades from the ground renderer to the orbit's, without a step", "[window][orbit]") {
+  Viewer v(small_view());  // for its GL context and its state
+  viewer::go_to_viewpoint(v.state(), "orbit");
+  viewer::fly(v.state(), 0, 0, 0);  // flying clears the viewpoint: the height decides
+  viewer::ViewState state = v.state();
+  viewer::ViewSwitch view("", "");
+  viewer::GroundSource ground("", "");
+  viewer::OrbitSource orbit("");
+  auto mean_luminance = [](const core::ImageData& image) {
+    double sum = 0;
+    for (std::size_t k = 0; k + 3 < image.pixels.size(); k += 4)
+      sum += 0.2126 * image.pixels[k] + 0.7152 * image.pixels[k + 1] + 0.0722 * image.pixels[k + 2];
+    return sum / (image.width * image.height);
+  };
+  // The mix at 16 km (share 1/2 by the smoothstep): half of each renderer's radiance, to the
+  // rounding of (1 - s) g + s o, exact in double, to float (half an ulp; one allowed).
+  state.camera.height_m = 16000;
+  REQUIRE(viewer::orbit_share(state) == Approx(0.5).epsilon(0).margin(1e-12));
+  const auto g = ground.render(state, kWidth, kHeight), o = orbit.render(state, kWidth, kHeight);
+  const auto mixed = view.render(state, kWidth, kHeight);
+  int off = 0;
+  for (std::size_t k = 0; k < mixed.radiance.pixels.size(); ++k) {
+    const double expected = 0.5 * g.radiance.pixels[k] + 0.5 * o.radiance.pixels[k];
+    off += std::abs(mixed.radiance.pixels[k] - expected) > test::kUlp * (std::abs(expected) + 1e-30);
+  }
+  CHECK(off == 0);
+  // Outside the band one renderer alone.
+  state.camera.height_m = 20000;
+  CHECK(largest_difference(view.render(state, kWidth, kHeight).radiance, orbit.render(state, kWidth, kHeight).radiance) == 0);
+  state.camera.height_m = 12000;
+  CHECK(largest_difference(view.render(state, kWidth, kHeight).radiance, ground.render(state, kWidth, kHeight).radiance) == 0);
+  // A descent from 24 to 8 km in steps of 500 m: the mean luminance changes by no step larger
+  // than three times the larger of its neighbours (issue 11's test of the descent), above a floor
+  // of 0.2 % of the mean.
+  std::vector<double> series;
+  for (double height = 24000; height >= 8000; height -= 500) {
+    state.camera.height_m = height;
+    series.push_back(mean_luminance(view.render(state, kWidth, kHeight).radiance));
+  }
+  double mean = 0;
+  for (double y : series) mean += y / series.size();
+  auto jumps = [&](const std::vector<double>& values) {
+    std::vector<double> steps;
+    for (std::size_t k = 1; k < values.size(); ++k) steps.push_back(std::abs(values[k] - values[k - 1]));
+    int count = 0;
+    for (std::size_t k = 1; k + 1 < steps.size(); ++k)
+      count += steps[k] > std::max(3 * std::max(steps[k - 1], steps[k + 1]), 0.002 * mean);
+    return count;
+  };
+  INFO("mean luminance from 24 to 8 km: " << [&] {
+    std::string text;
+    for (double y : series) text += std::to_string(y) + " ";
+    return text;
+  }());
+  CHECK(jumps(series) == 0);
+  // The check has teeth: the switch at 20 km without the fade (orbit above, ground below) is a
+  // step, unless the two renderers happened to agree there.
+  std::vector<double> switched;
+  for (double height = 24000; height >= 8000; height -= 500) {
+    state.camera.height_m = height;
+    switched.push_back(mean_luminance(height > 20000 ? orbit.render(state, kWidth, kHeight).radiance
+                                                     : ground.render(state, kWidth, kHeight).radiance));
+  }
+  INFO("ground at 20 km " << switched[8] << ", orbit at 20.5 km " << switched[7]);
+  if (std::abs(switched[8] - switched[7]) > 0.05 * mean) CHECK(jumps(switched) > 0);
+}
+
 TEST_CASE("a change renders a quarter-size preview in the next frame, then refines to full size", "[window]") {
   Viewer v(small_view());
   v.set_panels_visible(false);

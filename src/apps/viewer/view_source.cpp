@@ -139,8 +139,19 @@ ViewSwitch::ViewSwitch(const std::filesystem::path& cover_dir, const std::filesy
 
 render::RenderResult ViewSwitch::render(const ViewState& state, int width, int height, int first_row, int row_count,
                                         bool coarse) {
-  if (shows_orbit(state)) return orbit_.render(state, width, height, first_row, row_count, coarse);
-  return ground_.render(state, width, height, first_row, row_count, coarse);
+  const double share = orbit_share(state);
+  if (share >= 1.0) return orbit_.render(state, width, height, first_row, row_count, coarse);
+  render::RenderResult ground = ground_.render(state, width, height, first_row, row_count, coarse);
+  if (share <= 0.0) return ground;
+  // The fade band: both renderers, their linear radiance (and opacity) mixed by the share.
+  const render::RenderResult orbit = orbit_.render(state, width, height, first_row, row_count, coarse);
+  const int first = row_count > 0 ? first_row : 0, rows = row_count > 0 ? row_count : height;
+  const std::size_t row_floats = static_cast<std::size_t>(width) * 4;
+  for (std::size_t k = first * row_floats; k < (first + rows) * row_floats; ++k)
+    ground.radiance.pixels[k] = static_cast<float>((1.0 - share) * ground.radiance.pixels[k] + share * orbit.radiance.pixels[k]);
+  for (const std::string& pass : orbit.passes) ground.passes.push_back("orbit " + pass);
+  for (const auto& [pass, ms] : orbit.timings_ms) ground.timings_ms.emplace_back("orbit " + pass, ms);
+  return ground;
 }
 
 ModelSource::ModelSource(int size) : size_(size) {}

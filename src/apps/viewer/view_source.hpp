@@ -82,7 +82,9 @@ class OrbitSource : public ViewSource {
   std::string cover_key_;
 };
 
-// The view nephele view shows: the orbit renderer where shows_orbit(state), else the ground's.
+// The view nephele view shows: the orbit renderer where orbit_share(state) is 1, the ground's
+// where it is 0, and between (12 to 20 km) both with their radiance mixed by the share. In
+// that band a frame costs both renders (the orbit one whole for each band of rows).
 class ViewSwitch : public ViewSource {
  public:
   ViewSwitch(const std::filesystem::path& cover_dir, const std::filesystem::path& cache_directory);

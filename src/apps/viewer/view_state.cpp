@@ -120,9 +120,14 @@ void zoom(ViewState& state, double notches) {
                                     params::scene::fov.max);
 }
 
-bool shows_orbit(const ViewState& state) {
-  return state.viewpoint == "orbit" || state.camera.height_m > params::scene::height.max;
+double orbit_share(const ViewState& state) {
+  const double top = params::scene::height.max;
+  if (state.viewpoint == "orbit" || state.camera.height_m >= top) return 1.0;
+  const double t = std::clamp((state.camera.height_m - orbit_fade_bottom_m) / (top - orbit_fade_bottom_m), 0.0, 1.0);
+  return t * t * (3.0 - 2.0 * t);
 }
+
+bool shows_orbit(const ViewState& state) { return orbit_share(state) >= 1.0; }
 
 double flight_step_m(const ViewState& state) { return std::max(50.0, 0.1 * std::abs(state.camera.height_m)); }
 

@@ -54,8 +54,15 @@ ViewState state_of_scene(const regional::Scene& scene);
 // Moves the camera to a named viewpoint (eye 2 m above the summit, the view's heading); "orbit"
 // lifts it to the orbit view's default altitude above the point where it is, looking down.
 void go_to_viewpoint(ViewState& state, const std::string& name);
-// Whether a state is shown by the orbit renderer: chosen as the viewpoint, or the camera above
-// the ground views' highest camera (the scene's height range).
+// The orbit renderer's share of the view: 1 where the orbit viewpoint is chosen or the camera
+// is at or above the ground views' highest camera (the scene's height range, 20 km), 0 at or
+// below orbit_fade_bottom_m, and a smoothstep between, where the window shows the two
+// renderers' radiance mixed (a cross-fade, no visible switch; ViewSwitch).
+double orbit_share(const ViewState& state);
+// 12 km: above the regional cirrus (tops up to 10.5 km, docs/layers.md), so that the ground
+// view has left its stratiform layers before the global shell fades in.
+constexpr double orbit_fade_bottom_m = 12000.0;
+// Whether the orbit renderer alone shows the state (orbit_share 1).
 bool shows_orbit(const ViewState& state);
 // The scene and cover of a render of `state` at width x height.
 regional::Scene scene_of(const ViewState& state, int width, int height);
