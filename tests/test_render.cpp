@@ -8,6 +8,7 @@
 #include "io/weather_files.hpp"
 #include "core/time.hpp"
 #include "gl_support.hpp"
+#include "render_scenes.hpp"
 #include "regional/scene.hpp"
 #include "render/cloud_renderer.hpp"
 #include "render/scene_renderer.hpp"
@@ -177,19 +178,7 @@ TEST_CASE("with the sun below the horizon the scene is far darker than at noon",
 }
 
 // A 16 x 8 view from the Gurten with few steps, the summer weather of Bern and Solothurn.
-static Scene small_summer_scene() {
-  Scene scene;
-  scene.width = 16;
-  scene.height = 8;
-  scene.view_steps = 8;
-  scene.light_steps = 2;
-  scene.sky_steps = 4;
-  scene.cover_size = 8;
-  scene.time = "2026-06-21T15:00Z";
-  scene.weather = {std::string(NEPHELE_SOURCE_DIR) + "/scenes/weather/bern-summer.json",
-                   std::string(NEPHELE_SOURCE_DIR) + "/scenes/weather/solothurn-summer.json"};
-  return scene;
-}
+using test::small_summer_scene;
 
 TEST_CASE("a resolution divisor renders the smaller image and upsamples it to the full size", "[render]") {
   test::test_context();

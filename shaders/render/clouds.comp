@@ -17,9 +17,13 @@ layout(std430, binding = 3) buffer LoopGuard {
 uniform MarchParams u_march;
 // The first row of the band being marched (RenderSettings::first_row; 0 for a whole image).
 uniform int u_first_row;
+// The march lattice (RenderSettings::march_stride, march_phase): invocation (i, j) marches pixel
+// (i s + phase.x, j s + phase.y); stride 1, phase 0: every pixel.
+uniform int u_stride;
+uniform ivec2 u_phase;
 
 void main() {
-  ivec2 pixel = ivec2(gl_GlobalInvocationID.xy) + ivec2(0, u_first_row);
+  ivec2 pixel = ivec2(gl_GlobalInvocationID.xy) * u_stride + u_phase + ivec2(0, u_first_row);
   ivec2 size = imageSize(radiance_image);
   if (pixel.x >= size.x || pixel.y >= size.y) return;
   int loop_count = 0;

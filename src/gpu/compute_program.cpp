@@ -75,6 +75,10 @@ void ComputeProgram::set(const std::string& name, glm::vec2 value) const {
 void ComputeProgram::set(const std::string& name, glm::vec3 value) const {
   glProgramUniform3f(program_, location(name), value.x, value.y, value.z);
 }
+void ComputeProgram::set(const std::string& name, glm::ivec2 value) const {
+  glProgramUniform2i(program_, location(name), value.x, value.y);
+}
+
 void ComputeProgram::set(const std::string& name, glm::ivec3 value) const {
   glProgramUniform3i(program_, location(name), value.x, value.y, value.z);
 }

@@ -329,6 +329,12 @@ RenderResult render_clouds(const Camera& camera, const std::vector<regional::Clo
   if (settings.first_row < 0 || rows > camera.height - settings.first_row)
     throw std::logic_error("render_clouds: rows " + std::to_string(settings.first_row) + " + " + std::to_string(rows) +
                            " outside an image of " + std::to_string(camera.height));
+  const int stride = settings.march_stride;
+  const glm::ivec2 phase = settings.march_phase;
+  if (stride < 1 || phase.x < 0 || phase.y < 0 || phase.x >= stride || phase.y >= stride ||
+      (stride > 1 && (rows != camera.height || settings.frames > 1)))
+    throw std::logic_error("render_clouds: march stride " + std::to_string(stride) +
+                           " needs a phase below it, the whole image and one frame");
   const glsl::MarchParams params =
       march_params(camera, layers, field, unix_seconds, settings, wind_towards, wind_speed, convective);
   // The layers' shadow maps, only where a layer has layers above it.
@@ -386,10 +392,12 @@ RenderResult render_clouds(const Camera& camera, const std::vector<regional::Clo
     glNamedBufferStorage(guard, static_cast<GLsizeiptr>(zeros.size() * sizeof(GLuint)), zeros.data(), GL_MAP_READ_BIT);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, guard);
     program.set("u_first_row", settings.first_row);
+    program.set("u_stride", stride);
+    program.set("u_phase", phase);
     const int frames = std::max(settings.frames, 1);
     for (int frame = 0; frame < frames; ++frame) {
       program.set("u_march.frame", frame);
-      program.dispatch_covering(camera.width, rows, 1);
+      program.dispatch_covering((camera.width - phase.x + stride - 1) / stride, (rows - phase.y + stride - 1) / stride, 1);
       gpu::image_barrier();
       if (frames > 1) {
         const std::vector<float> pixels = image.read();
@@ -405,6 +413,7 @@ RenderResult render_clouds(const Camera& camera, const std::vector<regional::Clo
     glDeleteBuffers(1, &guard);
   });
   result.passes.push_back("sky");
+  if (stride > 1) result.passes.push_back("march 1 of " + std::to_string(stride * stride) + " pixels");
   if (sum.empty()) {
     result.radiance = {camera.width, camera.height, 4, image.read()};
   } else {

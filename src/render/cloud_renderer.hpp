@@ -54,6 +54,13 @@ struct RenderSettings {
   // row); the others are left undefined. Each pixel is the same as in a whole render: the
   // viewer refines a frame in bands of rows across frames.
   int first_row = 0, row_count = 0;
+  // Reduced-rate marching (the viewer's moving preview; docs/rendering.md, "Reprojection"): only
+  // the pixels (x, y) with x % march_stride == march_phase.x and y % march_stride ==
+  // march_phase.y are marched, each the same as in a whole render; the others are left
+  // undefined (render/reprojection.hpp fills them). Stride 1: every pixel. A stride above 1
+  // needs the whole image (no band), one frame and no resolution divisor.
+  int march_stride = 1;
+  glm::ivec2 march_phase{0, 0};
   // The ground's height field about the camera (io::load_terrain); none: the bare sphere.
   std::shared_ptr<const regional::TerrainGrid> terrain;
 };

@@ -184,6 +184,8 @@ SceneRender render_prepared(const PreparedScene& prepared, const RenderSettings&
   // With a divisor the camera keeps its field of view at fewer pixels (the pixel angle, and so
   // the noise's level of detail, grows with it), and the image is upsampled to the full size.
   const int divisor = std::max(settings.resolution_divisor, 1);
+  if (divisor > 1 && settings.march_stride > 1)
+    throw std::logic_error("render_prepared: a march stride leaves pixels for reprojection, which upsampling would blur");
   Camera marched = out.camera;
   marched.width = std::max(1, out.camera.width / divisor);
   marched.height = std::max(1, out.camera.height / divisor);
