@@ -414,6 +414,8 @@ RenderResult render_clouds(const Camera& camera, const std::vector<regional::Clo
   });
   result.passes.push_back("sky");
   if (stride > 1) result.passes.push_back("march 1 of " + std::to_string(stride * stride) + " pixels");
+  result.march_stride = stride;
+  result.march_phase = phase;
   if (sum.empty()) {
     result.radiance = {camera.width, camera.height, 4, image.read()};
   } else {

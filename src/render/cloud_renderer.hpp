@@ -54,7 +54,8 @@ struct RenderSettings {
   // row); the others are left undefined. Each pixel is the same as in a whole render: the
   // viewer refines a frame in bands of rows across frames.
   int first_row = 0, row_count = 0;
-  // Reduced-rate marching (the viewer's moving preview; docs/rendering.md, "Reprojection"): only
+  // Reduced-rate marching (the viewer's moving preview; docs/rendering.md, "Reprojection:
+  // march_stride"): only
   // the pixels (x, y) with x % march_stride == march_phase.x and y % march_stride ==
   // march_phase.y are marched, each the same as in a whole render; the others are left
   // undefined (render/reprojection.hpp fills them). Stride 1: every pixel. A stride above 1
@@ -79,6 +80,10 @@ struct RenderResult {
   // of LayerParams::shadow_map, rows from v = 0 (south).
   std::vector<float> shadow_maps;
   std::vector<std::uint32_t> loop_limited_bits;
+  // The march lattice this render used (RenderSettings::march_stride, march_phase): with a
+  // stride above 1 only its pixels hold values (render/reprojection.hpp fills the others).
+  int march_stride = 1;
+  glm::ivec2 march_phase{0, 0};
   bool loop_limited(int x, int y) const {
     const std::size_t k = static_cast<std::size_t>(y) * radiance.width + x;
     return k / 32 < loop_limited_bits.size() && ((loop_limited_bits[k / 32] >> (k % 32)) & 1u) != 0;

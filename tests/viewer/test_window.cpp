@@ -212,6 +212,56 @@ TEST_CASE("a change renders a quarter-size preview in the next frame, then refin
   CHECK(v.renders() == refined_renders);
 }
 
+TEST_CASE("while the camera turns the preview marches a quarter of its pixels and reprojects the rest", "[window]") {
+  Viewer v(small_view());
+  v.set_panels_visible(false);
+  refine(v);
+  auto has = [](const render::RenderResult& r, const std::string& prefix) {
+    return std::any_of(r.passes.begin(), r.passes.end(), [&](const std::string& p) { return p.rfind(prefix, 0) == 0; });
+  };
+  // A turn of 2 degrees: the next frame is the quarter-size preview, a quarter marched.
+  viewer::turn(v.state(), 2.0, 0.0);
+  v.frame();
+  const render::RenderResult moving = v.last_render();
+  CHECK(moving.radiance.width == (kWidth + 3) / 4);
+  CHECK(moving.march_stride == viewer::preview_march_stride);
+  CHECK(has(moving, "march 1 of 4 pixels"));
+  CHECK(has(moving, "reproject"));
+  // Against the whole preview of the same camera: the marched quarter is the same to the bit,
+  // and the reprojected rest differs only by the turn's resampling and the uncovered strip.
+  viewer::GroundSource ground("", "");
+  const render::RenderResult whole = ground.render(v.state(), moving.radiance.width, moving.radiance.height, 0, 0, true);
+  const render::Camera camera = [&] {
+    render::Camera c = v.state().camera;
+    c.width = moving.radiance.width;
+    c.height = moving.radiance.height;
+    return c;
+  }();
+  const core::ImageData shown = render::tone_map(moving.radiance, 4.0), reference = render::tone_map(whole.radiance, 4.0);
+  double sum = 0;
+  int exact = 0, marched = 0;
+  for (int y = 0; y < camera.height; ++y)
+    for (int x = 0; x < camera.width; ++x) {
+      const std::size_t k = (static_cast<std::size_t>(y) * camera.width + x);
+      if (x % 2 == moving.march_phase.x && y % 2 == moving.march_phase.y) {
+        ++marched;
+        exact += std::equal(&moving.radiance.pixels[4 * k], &moving.radiance.pixels[4 * k + 4], &whole.radiance.pixels[4 * k]);
+      }
+      for (int c = 0; c < 3; ++c) sum += std::pow(shown.pixels[3 * k + c] - reference.pixels[3 * k + c], 2);
+    }
+  CHECK(exact == marched);
+  const double rms = std::sqrt(sum / (3.0 * camera.width * camera.height));
+  INFO("display rms of the moving preview against the whole one: " << rms);
+  // Measured 0.029 on this 16 x 9 preview (a 2-degree turn moves it by half a pixel, and the
+  // reprojection resamples by that much); unfilled or misplaced pixels would give the sky-to-
+  // ground contrast, several tenths.
+  CHECK(rms < 0.05);
+  // At rest the refinement goes on to the full size, every pixel marched.
+  refine(v);
+  CHECK(v.last_render().march_stride == 1);
+  CHECK(v.shown_radiance().width == kWidth);
+}
+
 TEST_CASE("the preview sizes march the preview steps and the full size the scene's", "[window]") {
   viewer::ViewerOptions options = small_view();
   options.scene.view_steps = 48;

@@ -190,6 +190,27 @@ int bench_view(const std::vector<std::string>& arguments) {
     }
     std::printf("\n");
   }
+  if (!view_options.model) {
+    // A drag: the heading turns by a degree every frame, so each frame is a moving preview
+    // (a quarter of its pixels marched, the rest reprojected; docs/viewer.md).
+    std::map<std::string, std::vector<double>> moving;
+    for (int r = 0; r < std::max(repeat, 8); ++r) {
+      window.state().camera.heading_deg += 1.0;
+      window.frame();
+      for (const auto& [name, ms] : window.last_render().timings_ms) moving[name].push_back(ms);
+      moving["frame"].push_back(window.frame_ms());
+    }
+    auto median = [](std::vector<double> values) {
+      std::sort(values.begin(), values.end());
+      return values[values.size() / 2];
+    };
+    const double frame = median(moving["frame"]);
+    std::printf("while turning a degree per frame (median of %zu frames): frame %.1f ms (%.1f fps)", moving["frame"].size(),
+                frame, 1000.0 / frame);
+    for (const char* pass : {"clouds", "reproject"})
+      if (!moving[pass].empty()) std::printf(", %s %.1f ms", pass, median(moving[pass]));
+    std::printf("\n");
+  }
   return exit_ok;
 }
 

@@ -81,6 +81,10 @@ render::RenderResult GroundSource::render(const ViewState& state, int width, int
     settings.light_steps = std::min(settings.light_steps, preview_steps.light);
   }
   settings.shadow_cache = shadow_maps_;  // the bands of a frame share its maps
+  if (row_count == 0 && settings.resolution_divisor == 1) {
+    settings.march_stride = march_stride_;
+    settings.march_phase = march_phase_;
+  }
   if (render::needs_noise_volume(prepared.partial.layers, prepared.field) &&
       (!noise_ || noise_->seed() != settings.seed || noise_->size() != settings.noise_size))
     setup_ms.emplace_back("noise_volume", gpu::time_pass([&] {

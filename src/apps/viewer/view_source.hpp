@@ -28,6 +28,11 @@ class ViewSource {
   // will replace, which a source may render with fewer steps (the ground view: preview_steps).
   virtual render::RenderResult render(const ViewState& state, int width, int height, int first_row = 0,
                                       int row_count = 0, bool coarse = false) = 0;
+  // Asks the following renders of whole images to march only one pixel of each stride x stride
+  // block at `phase` (render::RenderSettings::march_stride; stride 1: all). A source that
+  // cannot (the orbit view, the modeller) renders every pixel; RenderResult::march_stride says
+  // which happened.
+  virtual void set_march_lattice(int /*stride*/, glm::ivec2 /*phase*/) {}
 };
 
 // The ground view's steps for coarse (preview) frames: 8 view x 2 light. Measured by `nephele
@@ -38,6 +43,10 @@ struct PreviewSteps {
   int view = 8, light = 2;
 };
 constexpr PreviewSteps preview_steps{};
+// While the camera moves, the quarter-size preview marches one pixel of each 2 x 2 block and
+// reprojects the other three from the last preview (render/reprojection.hpp): a quarter of the
+// clouds pass, every pixel marched again within four frames.
+constexpr int preview_march_stride = 2;
 
 // The ground view (render::prepare_scene, render_prepared): the global cover from `cover_dir`
 // when given (a directory written by nephele generate), else made from the state's cover
@@ -49,8 +58,14 @@ class GroundSource : public ViewSource {
   std::string name() const override { return "ground"; }
   render::RenderResult render(const ViewState& state, int width, int height, int first_row = 0,
                               int row_count = 0, bool coarse = false) override;
+  void set_march_lattice(int stride, glm::ivec2 phase) override {
+    march_stride_ = stride;
+    march_phase_ = phase;
+  }
 
  private:
+  int march_stride_ = 1;
+  glm::ivec2 march_phase_{0, 0};
   std::filesystem::path cache_directory_;
   bool cover_from_files_ = false;
   render::GlobalCoverFaces cover_;
@@ -91,6 +106,7 @@ class ViewSwitch : public ViewSource {
   std::string name() const override { return "ground or orbit"; }
   render::RenderResult render(const ViewState& state, int width, int height, int first_row = 0,
                               int row_count = 0, bool coarse = false) override;
+  void set_march_lattice(int stride, glm::ivec2 phase) override { ground_.set_march_lattice(stride, phase); }
 
  private:
   GroundSource ground_;

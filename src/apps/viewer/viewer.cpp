@@ -207,15 +207,18 @@ Viewer::~Viewer() {
   ImGui::DestroyContext();
 }
 
-std::string Viewer::render_key() const {
+std::string Viewer::render_key(bool with_camera) const {
   // Everything a render reads; exposure only tone-maps.
   ViewState copy = state_;
   std::ostringstream key;
   key.precision(17);
-  key << copy.camera.latitude_deg << ' ' << copy.camera.longitude_deg << ' ' << copy.camera.height_m;
-  for (const Binding& b : bindings(copy))
-    if (b.parameter != &params::scene::exposure && b.parameter != &params::scene::view)
-      key << ' ' << value_text(copy, *b.parameter);
+  if (with_camera) key << copy.camera.latitude_deg << ' ' << copy.camera.longitude_deg << ' ' << copy.camera.height_m;
+  for (const Binding& b : bindings(copy)) {
+    if (b.parameter == &params::scene::exposure || b.parameter == &params::scene::view) continue;
+    const bool camera = b.parameter == &params::scene::heading || b.parameter == &params::scene::pitch ||
+                        b.parameter == &params::scene::fov;
+    if (with_camera || !camera) key << ' ' << value_text(copy, *b.parameter);
+  }
   for (const auto& w : copy.weather) key << ' ' << w;
   // The modeller's model, as its file would hold it (floats to the bit).
   if (copy.modeller) key << ' ' << io::write_cloud_model(copy.model);
@@ -229,8 +232,12 @@ void Viewer::run() {
 }
 
 void Viewer::refine(int width, int height) {
-  if (changed() || width != target_width_ || height != target_height_) {
+  const bool resized = width != target_width_ || height != target_height_;
+  if (changed() || resized) {
+    camera_moving_ = !resized && render_key(false) == shown_scene_key_;
+    if (!camera_moving_) preview_history_ = {};
     shown_key_ = render_key();
+    shown_scene_key_ = render_key(false);
     target_width_ = width;
     target_height_ = height;
     next_level_ = 0;
@@ -240,8 +247,27 @@ void Viewer::refine(int width, int height) {
     // Sizes round up, so that the preview is never empty.
     const int w = (width + level.divisor - 1) / level.divisor, h = (height + level.divisor - 1) / level.divisor;
     const int rows = (h + level.bands - 1) / level.bands, first = std::min(h, level.band * rows);
+    render::Camera camera = state_.camera;
+    camera.width = w;
+    camera.height = h;
+    // A moving camera's preview: a quarter of the pixels marched, the rest reprojected.
+    const bool reduced = next_level_ == 0 && camera_moving_ && !camera.panorama && !state_.modeller &&
+                         preview_history_.radiance.width == w && preview_history_.radiance.height == h;
+    const glm::ivec2 phase = render::march_phase(moving_frames_, preview_march_stride);
+    if (reduced) source_->set_march_lattice(preview_march_stride, phase);
     // The reduced sizes are previews the full size replaces: the source may march fewer steps.
     last_render_ = source_->render(state_, w, h, first, level.bands > 1 ? std::min(rows, h - first) : 0, level.divisor > 1);
+    source_->set_march_lattice(1, {0, 0});
+    if (last_render_.march_stride > 1) {
+      ++moving_frames_;
+      const auto start = std::chrono::steady_clock::now();
+      const long reprojected = render::fill_unmarched(last_render_.radiance, camera, last_render_.march_stride,
+                                                      last_render_.march_phase, &preview_history_);
+      last_render_.timings_ms.emplace_back("reproject", std::chrono::duration<double, std::milli>(
+                                                            std::chrono::steady_clock::now() - start).count());
+      last_render_.passes.push_back("reproject " + std::to_string(reprojected) + " pixels");
+    }
+    if (next_level_ == 0) preview_history_ = {last_render_.radiance, camera};
     ++renders_;
     ++next_level_;
     if (level.bands == 1) {

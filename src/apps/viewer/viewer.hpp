@@ -18,6 +18,7 @@
 #include "apps/viewer/window.hpp"
 #include "core/image.hpp"
 #include "regional/scene.hpp"
+#include "render/reprojection.hpp"
 
 struct GLFWwindow;
 
@@ -98,7 +99,9 @@ class Viewer {
 
  private:
   bool changed() const;
-  std::string render_key() const;
+  // Everything a render reads (with_camera false: all but the camera's position, heading,
+  // pitch and field of view).
+  std::string render_key(bool with_camera = true) const;
   void refine(int framebuffer_width, int framebuffer_height);
   void upload(const core::ImageData& display);
   void draw_image(int framebuffer_width, int framebuffer_height);
@@ -109,6 +112,13 @@ class Viewer {
   std::unique_ptr<ViewSource> source_;
   ViewState state_;
   std::string shown_key_;        // render_key of the state being refined
+  std::string shown_scene_key_;  // render_key(false) of it
+  // The camera alone changed since the last frame: the quarter-size preview marches one pixel
+  // of each preview_march_stride^2 block and reprojects the rest from the last preview, kept
+  // here with its camera (docs/viewer.md, "Reprojection").
+  bool camera_moving_ = false;
+  long moving_frames_ = 0;
+  render::FrameHistory preview_history_;
   double shown_exposure_ = 0;    // exposure of the texture shown
   std::size_t next_level_ = 0;   // refinement level rendered next
   int target_width_ = 0, target_height_ = 0;  // framebuffer size being refined
