@@ -6,7 +6,7 @@
 #   docs/images/render_gurten.png/.json      nephele render --view gurten (defaults)
 #   docs/images/render_gurten_panorama.*     the same scene as a panorama
 #   docs/images/model_examples.png           nephele model previews of the four built-in clouds
-#   docs/images/render_orbit.png/.json       nephele render --view orbit of the cover with the land/ocean mask
+#   docs/images/render_orbit.png/.json       nephele render --view orbit of the default cover
 #   docs/images/gurten-thunderstorm.png      scenes/gurten-thunderstorm.json (convective clouds)
 #   docs/images/bantiger-fog.png             scenes/bantiger-fog.json (the sea of fog from the Bantiger)
 # With --report it also runs `nephele report` (about 35 minutes on two cores) and copies its
@@ -23,13 +23,13 @@ trap 'rm -rf "$work"' EXIT
 cp "$work/cover/cover_equirect.png" docs/images/cover_equirect.png
 "$nephele" stats "$work/cover" --out "$work/stats"
 cp "$work/stats/stats.png" docs/images/cover_stats.png
-"$nephele" generate --surface etopo5 --quiet --out "$work/cover-surface"
+"$nephele" generate --surface etopo5 --files png --quiet --out "$work/cover-surface"
 cp "$work/cover-surface/cover_equirect.png" docs/images/cover_equirect_surface.png
 "$nephele" render --view gurten --no-cache --out "$work/render_gurten.png"
 cp "$work/render_gurten.png" "$work/render_gurten.json" docs/images/
 "$nephele" render --view gurten --panorama --no-cache --out "$work/render_gurten_panorama.png"
 cp "$work/render_gurten_panorama.png" "$work/render_gurten_panorama.json" docs/images/
-"$nephele" render --view orbit --cover "$work/cover-surface" --altitude-km 12000 --time 2026-06-21T17:00Z --quiet \
+"$nephele" render --view orbit --cover "$work/cover" --altitude-km 12000 --time 2026-06-21T17:00Z --quiet \
   --out "$work/render_orbit.png"
 cp "$work/render_orbit.png" "$work/render_orbit.json" docs/images/
 "$nephele" render --scene scenes/gurten-thunderstorm.json --no-cache --quiet --out "$work/storm"
