@@ -1,4 +1,5 @@
 #include "gpu/egl_context.hpp"
+#include "gpu/driver_lifetime.hpp"
 
 #include <epoxy/egl.h>
 #include <epoxy/gl.h>
@@ -6,10 +7,6 @@
 #include <cstdlib>
 #include <cstring>
 
-#if defined(__SANITIZE_ADDRESS__)
-#include <dlfcn.h>
-#include <link.h>
-#endif
 
 namespace nephele::gpu {
 namespace {
@@ -45,26 +42,6 @@ std::string gl_string(GLenum name) {
   const auto* s = reinterpret_cast<const char*>(glGetString(name));
   return s ? s : "";
 }
-
-#if defined(__SANITIZE_ADDRESS__)
-// AddressSanitizer builds only (scripts/sanitize.sh): eglTerminate unloads Mesa's driver before
-// LeakSanitizer reports at exit, and leaks inside unloaded code show as "<unknown module>", which
-// no suppression can name. Marking the loaded drivers RTLD_NODELETE keeps them mapped, so that
-// scripts/lsan.supp can suppress Mesa's own leaks by library name.
-void keep_drivers_loaded() {
-  std::vector<std::string> drivers;
-  dl_iterate_phdr(
-      [](dl_phdr_info* info, size_t, void* found) {
-        if (info->dlpi_name && std::strstr(info->dlpi_name, "_dri.so"))
-          static_cast<std::vector<std::string>*>(found)->push_back(info->dlpi_name);
-        return 0;
-      },
-      &drivers);
-  for (const auto& path : drivers) dlopen(path.c_str(), RTLD_LAZY | RTLD_NOLOAD | RTLD_NODELETE);
-}
-#else
-void keep_drivers_loaded() {}
-#endif
 
 }  // namespace
 

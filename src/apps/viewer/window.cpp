@@ -1,4 +1,5 @@
 #include "apps/viewer/window.hpp"
+#include "gpu/driver_lifetime.hpp"
 
 #include <epoxy/gl.h>
 // After epoxy: GLFW must not include a GL header of its own.
@@ -40,6 +41,7 @@ Window::Window(int width, int height, const std::string& title, bool visible) {
     throw WindowError(no_window_message(reason));
   }
   glfwMakeContextCurrent(window_);
+  gpu::keep_drivers_loaded();  // sanitizer builds: see gpu/driver_lifetime.hpp
   glfwSwapInterval(0);  // the refinement, not the monitor, paces the frames
   info_.platform = "window";
   info_.vendor = reinterpret_cast<const char*>(glGetString(GL_VENDOR));
