@@ -327,7 +327,7 @@ TEST_CASE("latitude_bands.glsl on the GPU agrees with the CPU", "[probe]") {
 TEST_CASE("cloud_density.glsl on the GPU agrees with the CPU", "[probe]") {
   Random r(15);
   std::vector<Case> cases;
-  for (int f = 0; f < 12; ++f)
+  for (int f = 0; f < 13; ++f)
     for (int k = 0; k < 12; ++k) {
       vec4 a(r(0.0f, 1.0f), r(0.0f, 1.0f), r(0.0f, 1.0f), 0.0f);
       if (f == 10) a = vec4(float(k), 12.0f, r(100.0f, 4000.0f), 0.0f);  // light_sample(i, n, length)
@@ -335,8 +335,9 @@ TEST_CASE("cloud_density.glsl on the GPU agrees with the CPU", "[probe]") {
       if (f == 7) a.x = float(k % 9);          // noise_period's cloud type
       if (f == 8) a = vec4(r(-1.0f, 1.0f), r(0.25f, 1.0f), 0, 0);  // cloud_phase(nu, scale)
       if (f == 9) a = vec4(r(0.0f, 8.0f), r(-1.0f, 1.0f), 0, 0);   // sun_scattering(tau, nu)
+      if (f == 12) a = vec4(r(0.0f, 4.0f), r(-1.0f, 1.0f), r(0.0f, 1.0f), 0);  // powder_factor(tau, nu, k)
       const vec4 b(r(0.0f, 1.0f), r(0.0f, 1.0f), float(k % 9), 0.0f);
-      const bool transcendental = f == 5 || f == 8 || f == 9;
+      const bool transcendental = f == 5 || f == 8 || f == 9 || f == 12;
       cases.push_back({arguments(f, a, b), f == 7 ? kExact : transcendental ? kTranscendental : kArithmetic});
     }
   compare("cloud_density", probe_cloud_density, cases);

@@ -306,3 +306,36 @@ TEST_CASE("averaging frames with shifted march jitter brings the image closer to
   CHECK(four < one);
   CHECK(sixteen < four);
 }
+
+TEST_CASE("the powder term darkens clouds seen with the sun behind, and at strength 0 changes nothing", "[render]") {
+  // P = 1 - k (1 - nu)/2 exp(-2 tau): 1 at k = 0 (the same bits), 1 - k for a sun-facing
+  // surface (tau 0) seen with the sun straight behind (nu = -1), 1 looking into the sun.
+  CHECK(glsl::powder_factor(0.7f, -0.3f, 0.0f) == 1.0f);
+  CHECK(glsl::powder_factor(0.0f, -1.0f, 0.6f) == Approx(0.4f).margin(1e-6));
+  CHECK(glsl::powder_factor(0.0f, 1.0f, 1.0f) == 1.0f);
+  CHECK(glsl::powder_factor(5.0f, -1.0f, 1.0f) == Approx(1.0 - std::exp(-10.0)).margin(1e-6));
+  test::test_context();
+  Scene scene = small_summer_scene(32, 18);
+  const auto stations = io::read_scene_weather(scene);
+  // Mean radiance of the cloudy pixels (opacity above 1/2) with and without the term.
+  auto cloud_radiance = [&](double heading, double powder) {
+    Scene s = scene;
+    s.heading_deg = heading;
+    s.powder = powder;
+    const auto r = render::render_scene(s, stations).render.radiance;
+    double sum = 0;
+    int count = 0;
+    for (std::size_t k = 0; k < r.pixels.size(); k += 4)
+      if (r.pixels[k + 3] > 0.5f) sum += r.pixels[k] + r.pixels[k + 1] + r.pixels[k + 2], ++count;
+    REQUIRE(count > 0);
+    return sum / count;
+  };
+  // At 15:00 UTC on 21 June the sun stands in the west-south-west over Bern (azimuth about 255
+  // degrees): heading 75 has it behind, heading 255 ahead.
+  const double away_off = cloud_radiance(75, 0), away_on = cloud_radiance(75, 1);
+  const double into_off = cloud_radiance(255, 0), into_on = cloud_radiance(255, 1);
+  INFO("sun behind: " << away_off << " -> " << away_on << "; sun ahead: " << into_off << " -> " << into_on);
+  CHECK(away_on < away_off);
+  // Looking towards the sun the weight (1 - nu)/2 is small: the clouds lose relatively less.
+  CHECK(1 - into_on / into_off < 1 - away_on / away_off);
+}

@@ -127,6 +127,17 @@ vec2 light_sample(int i, int n, float length_to_exit) {
 // Volumetric", SIGGRAPH 2013 talk): sum_i a^i e^{-b^i tau} p(nu; c^i g), a = c = 1/2, b = 1/4:
 // the deeper octaves see a quarter and a sixteenth of the optical depth, which keeps the bases
 // of thick clouds (tau of 30 and more towards the sun) from turning black.
+// The powder term (Schneider, "The real-time volumetric cloudscapes of Horizon Zero Dawn",
+// SIGGRAPH 2015 Advances in Real-Time Rendering): near a cloud's sun-facing surface the light
+// has not yet been scattered into all directions, so that surface looks darker than the single
+// and octave terms give, most when the sun is behind the viewer. Art-directed, as Schneider's:
+//   P = 1 - k w(nu) exp(-2 tau),  w = (1 - nu) / 2,
+// tau the optical depth towards the sun, nu the cosine between the view ray and the sun, k in
+// [0, 1] the strength (the scene key powder; 0 leaves the light as it is). Multiplies the sun term.
+float powder_factor(float tau, float nu, float strength) {
+  return 1.0f - strength * (0.5f - 0.5f * nu) * exp(-2.0f * tau);
+}
+
 float sun_scattering(float tau, float nu) {
   float sum = 0.0f;
   float a = 1.0f;

@@ -532,7 +532,7 @@ void march_interval(float a, float b, int layer, bool convective, vec3 d, vec3 c
       // half the ground; isotropic scattering of a radiance field L adds sigma_s L.
       vec3 ambient = 0.5f * (m.ambient * ((0.4f + 0.6f * h) / PI_F) + m.ground_radiance);
       float scattering = albedo * sigma_layer + CONVECTIVE_ALBEDO * cloud.x;  // sigma_s
-      vec3 source = scattering * (sunlight * sun_scattering(tau, nu) + ambient);
+      vec3 source = scattering * (sunlight * (sun_scattering(tau, nu) * powder_factor(tau, nu, m.powder)) + ambient);
       float step_transmittance = exp(-sigma * ds);
       float absorbed = 1.0f - step_transmittance;
       result.radiance += result.transmittance * source * absorbed / sigma;

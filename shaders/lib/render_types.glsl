@@ -70,6 +70,7 @@ struct MarchParams {
   float noise_texels;      // texels per side of the noise volume
   int frame;               // which frame of a temporal accumulation (shifts the jitter)
   float shadow_extent;     // half-size of the shadow maps' square (cloud_march.glsl), metres
+  float powder;            // strength of the powder term (cloud_density.glsl), 0: none
   TerrainParams terrain;   // the ground (its heights are the third texture)
   ConvectiveParams convective[MAX_CONVECTIVE];  // volume c is layer c of the fourth texture
   int convective_count;

@@ -77,6 +77,7 @@ json::Value scene_sidecar(const SceneRender& r, const regional::Scene& scene) {
   steps.set("frames", scene.frames);
   steps.set("resolution_divisor", scene.resolution_divisor);
   steps.set("sky", scene.sky_steps);
+  steps.set("powder", scene.powder);
   steps.set("shadow_map", scene.shadow_map_size);
   root.set("steps", steps);
   root.set("exposure", scene.exposure);

@@ -93,6 +93,8 @@ Scene parse_scene(const std::string& text, const std::string& source, const std:
       s.shadow_map_size = k.integer(v, key);
     } else if (key == "fog_top") {
       s.fog_top_m = k.number(v, key);
+    } else if (key == "powder") {
+      s.powder = k.number(v, key);
     } else if (key == "terrain") {
       const std::string t = k.string(v, key);
       const bool word = t == "etopo5" || t == "flat";

@@ -72,6 +72,7 @@ void validate_scene(const Scene& s, const std::string& source, const KeyOptions&
   check_range(where("shadow_map_size"), s.shadow_map_size, params::scene::shadow_map_size);
   check_range(where("exposure"), s.exposure, params::scene::exposure);
   check_range(where("fog_top"), s.fog_top_m, params::scene::fog_top);
+  check_range(where("powder"), s.powder, params::scene::powder);
   check_range(where("cover_size"), s.cover_size, params::scene::cover_size);
   try {
     core::parse_utc_time(s.time);

@@ -35,6 +35,7 @@ struct Scene {
   int view_steps = params::scene::view_steps.default_int();
   int light_steps = params::scene::light_steps.default_int();
   int sky_steps = params::scene::sky_steps.default_int();
+  double powder = params::scene::powder.default_number;  // strength of the powder term, 0: none
   int shadow_map_size = params::scene::shadow_map_size.default_int();
   int frames = params::scene::frames.default_int();
   int resolution_divisor = params::scene::resolution_divisor.default_int();

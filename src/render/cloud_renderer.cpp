@@ -245,6 +245,7 @@ glsl::MarchParams march_params(const Camera& camera, const std::vector<regional:
   m.view_steps = settings.view_steps;
   m.light_steps = settings.light_steps;
   m.sky_steps = settings.sky_steps;
+  m.powder = settings.powder;
   m.weather_extent = static_cast<float>(field.extent_m);
   m.max_distance = static_cast<float>(settings.max_distance_m);
   const double pixel_angle = camera.panorama ? 2 * M_PI / camera.width

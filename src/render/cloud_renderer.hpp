@@ -38,6 +38,7 @@ struct RenderSettings {
   int view_steps = 48;      // samples per layer interval along the view ray
   int light_steps = 12;     // samples towards the sun per cloud sample
   int sky_steps = 16;       // samples of the clear-sky integral
+  float powder = 0.0f;      // strength of the powder term (cloud_density.glsl), 0: none
   int frames = 1;           // frames averaged, each with its own jitter of the march start
   // render_prepared marches 1/N of the width and height and upsamples (render/upsample.hpp);
   // render_clouds itself always renders the camera's size.

@@ -168,6 +168,7 @@ RenderSettings render_settings(const regional::Scene& scene) {
   settings.frames = scene.frames;
   settings.resolution_divisor = scene.resolution_divisor;
   settings.sky_steps = scene.sky_steps;
+  settings.powder = static_cast<float>(scene.powder);
   settings.shadow_map_size = scene.shadow_map_size;
   settings.seed = scene.seed;
   return settings;

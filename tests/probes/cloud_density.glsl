@@ -20,5 +20,6 @@ vec4 probe_cloud_density(mat4 x) {
   if (f == 8) return vec4(cloud_phase(a, b), 0.0f, 0.0f, 0.0f);
   if (f == 10) return vec4(light_sample(int(a), int(b), c), 0.0f, 0.0f);
   if (f == 11) return vec4(fog_density(a, b, c, d), 0.0f, 0.0f, 0.0f);
+  if (f == 12) return vec4(powder_factor(a, b, c), 0.0f, 0.0f, 0.0f);
   return vec4(sun_scattering(a, b), 0.0f, 0.0f, 0.0f);
 }

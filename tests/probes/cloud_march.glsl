@@ -49,6 +49,7 @@ MarchParams probe_march_params() {
   m.weather_extent = 40000.0f;
   m.max_distance = 150000.0f;
   m.shadow_extent = 30000.0f;
+  m.powder = 0.0f;
   m.pixel_angle = 0.0875f;
   m.noise_texels = 16.0f;
   m.terrain.enabled = 0;  // the bare sphere (tests/probes/terrain.glsl probes the terrain)

@@ -69,6 +69,8 @@ int run_render(const std::vector<std::string>& arguments) {
   options.bind(s::terrain, &terrain);
   double fog_top = regional::Scene{}.fog_top_m;
   options.bind(s::fog_top, &fog_top);
+  double powder = regional::Scene{}.powder;
+  options.bind(s::powder, &powder);
   options.bind(s::out, &out);
   options.bind(params::run::quiet, &quiet);
   options.bind(params::run::no_cache, &no_cache);
@@ -91,7 +93,7 @@ int run_render(const std::vector<std::string>& arguments) {
     if (options.given(s::heading)) orbit.heading = scene_options.heading();
     if (options.given(s::pitch)) orbit.pitch = scene_options.pitch();
     if (options.given(s::fov)) orbit.fov = scene_options.fov();
-    for (const auto* ground_only : {&s::at, &s::scene_path, &s::panorama, &s::weather, &s::terrain, &s::fog_top, &s::view_steps, &s::light_steps, &s::frames, &s::resolution_divisor})
+    for (const auto* ground_only : {&s::at, &s::scene_path, &s::panorama, &s::weather, &s::terrain, &s::fog_top, &s::powder, &s::view_steps, &s::light_steps, &s::frames, &s::resolution_divisor})
       if (options.given(*ground_only))
         throw UsageError(ground_only->option() + ": not taken by --view orbit (it belongs to the ground views)");
     return run_orbit_render(orbit);
@@ -116,6 +118,10 @@ int run_render(const std::vector<std::string>& arguments) {
   if (options.given(s::fog_top)) {
     scene.fog_top_m = fog_top;
     typed["fog_top"] = "--fog-top";
+  }
+  if (options.given(s::powder)) {
+    scene.powder = powder;
+    typed["powder"] = "--powder";
   }
   if (panorama) {
     scene.panorama = true;
