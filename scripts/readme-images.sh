@@ -5,6 +5,7 @@
 #   docs/images/cover_equirect_surface.png   nephele generate --surface etopo5 (the land/ocean mask)
 #   docs/images/render_gurten.png/.json      nephele render --view gurten (defaults)
 #   docs/images/render_gurten_panorama.*     the same scene as a panorama
+#   docs/images/render_bantiger.png/.json    nephele render --view bantiger (defaults)
 #   docs/images/model_examples.png           nephele model previews of the four built-in clouds
 #   docs/images/render_orbit.png/.json       nephele render --view orbit of the default cover
 #   docs/images/gurten-thunderstorm.png      scenes/gurten-thunderstorm.json (convective clouds)
@@ -29,6 +30,8 @@ cp "$work/cover-surface/cover_equirect.png" docs/images/cover_equirect_surface.p
 cp "$work/render_gurten.png" "$work/render_gurten.json" docs/images/
 "$nephele" render --view gurten --panorama --no-cache --out "$work/render_gurten_panorama.png"
 cp "$work/render_gurten_panorama.png" "$work/render_gurten_panorama.json" docs/images/
+"$nephele" render --view bantiger --no-cache --quiet --out "$work/render_bantiger.png"
+cp "$work/render_bantiger.png" "$work/render_bantiger.json" docs/images/
 "$nephele" render --view orbit --cover "$work/cover" --altitude-km 12000 --time 2026-06-21T17:00Z --quiet \
   --out "$work/render_orbit.png"
 cp "$work/render_orbit.png" "$work/render_orbit.json" docs/images/
