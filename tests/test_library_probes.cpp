@@ -250,6 +250,17 @@ TEST_CASE("equirect_mapping.glsl on the GPU agrees with the CPU", "[probe]") {
       cases.push_back({arguments(f, vec4(float(column), 64.0f, 0, 0), vec4(std::cos(latitude), std::sin(latitude), 0, 0)),
                        kTranscendental});
     }
+  // equirect_uv of a column's direction: the column's centre and the row's latitude, within the
+  // transcendental functions' error (atan, asin of values below 1: kTranscendental).
+  for (int column = 0; column < 64; column += 5) {
+    const float latitude = 0.045f * column - 1.4f;
+    const float longitude = equirect_longitude(column, 64);
+    const vec3 n(std::cos(latitude) * std::cos(longitude), std::cos(latitude) * std::sin(longitude), std::sin(latitude));
+    cases.push_back({arguments(2, vec4(0.0f), vec4(n, 0.0f)), kTranscendental});
+    const vec2 uv = equirect_uv(n);
+    CHECK(uv.x == Approx((column + 0.5) / 64).margin(1e-6));
+    CHECK(uv.y == Approx(0.5 - latitude / M_PI).margin(1e-6));
+  }
   compare("equirect_mapping", probe_equirect_mapping, cases);
 }
 

@@ -9,7 +9,7 @@ layout(rgba32f, binding = 2) uniform readonly imageCube curl_field;
 layout(binding = 3) uniform sampler2D surface_bias;  // equirect, row 0 north, longitude -180 at s = 0
 #include "../lib/cover_density.glsl"
 #include "../lib/cube_faces.glsl"
-#include "../lib/portable_math.glsl"
+#include "../lib/equirect_mapping.glsl"
 
 uniform FbmParams u_cover;
 uniform vec3 u_noise_offset;  // reduced modulo the lattice period by the host
@@ -23,10 +23,7 @@ void main() {
   vec3 warped = imageLoad(warp_field, texel).xyz;
   float surface = 0.0f;
   if (u_surface_weight > 0.0f) {
-    vec3 n = texel_direction(texel.z, texel.x, texel.y, size);
-    const float pi = 3.14159265f;
-    vec2 st = vec2((atan(n.y, n.x) + pi) / (2.0f * pi), (0.5f * pi - portable_asin(clamp(n.z, -1.0f, 1.0f))) / pi);
-    surface = texture(surface_bias, st).x;
+    surface = texture(surface_bias, equirect_uv(texel_direction(texel.z, texel.x, texel.y, size))).x;
   }
   float density = shaped_density(cover_density_shifted(warped, u_cover, u_noise_offset), imageLoad(curl_field, texel).w,
                                  u_cyclone_cloudiness, surface, u_surface_weight);

@@ -15,6 +15,7 @@ layout(binding = 3) uniform samplerCube cover_map;    // coverage in [0, 1], GL 
 layout(binding = 4) uniform sampler3D detail_noise;   // 32^3 value noise in [0, 1], repeating
 
 #include "../lib/atmosphere.glsl"
+#include "../lib/equirect_mapping.glsl"
 #include "../lib/hash.glsl"
 
 uniform vec3 u_centre;         // planet centre relative to the camera, m
@@ -64,13 +65,6 @@ vec4 shell_intervals(float b, float q_in, float q_out, float limit) {
   vec2 inner = sphere_hits(b, q_in);
   if (inner.x > inner.y || inner.y <= a || inner.x >= e) return vec4(a, e, 0.0f, 0.0f);
   return vec4(a, max(a, inner.x), min(e, inner.y), e);
-}
-
-// Equirect texture coordinates of a unit direction: longitude -180 at u = 0, north at v = 0.
-vec2 equirect_uv(vec3 n) {
-  float longitude = atan(n.y, n.x);
-  float latitude = asin(clamp(n.z, -1.0f, 1.0f));
-  return vec2(longitude / (2.0f * PI_F) + 0.5f, 0.5f - latitude / PI_F);
 }
 
 const float DETAIL_CELL = 1600.0f;  // m: the detail noise's coarse cell (the fine one is a quarter)
