@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 
 #include "cli_support.hpp"
 #include "core/error.hpp"
@@ -128,6 +129,12 @@ TEST_CASE("generate records the surface in cover.json and refuses a bad mask nam
   CHECK(missing.exit_code == 2);
   CHECK(missing.output.find("--surface") != std::string::npos);
   CHECK(!std::filesystem::exists(directory.path / "x"));
+  // A file that is no image names --surface too.
+  const auto text = directory.path / "mask.png";
+  { std::ofstream(text) << "not an image"; }
+  const auto unreadable = test::run("generate --size 8 --surface " + text.string() + " --out " + (directory.path / "w").string());
+  CHECK(unreadable.exit_code == 2);
+  CHECK(unreadable.output.find("--surface") != std::string::npos);
   // Values above 1 in the first channel are no land fractions.
   core::ImageData image{4, 2, 1, std::vector<float>(8, 0.0f)};
   image.pixels[5] = 2.0f;

@@ -37,8 +37,9 @@ double deck_weight(double latitude_deg);
 // convention): desert = land S_desert(lat); deck = (1 - land) S_deck(lat) E W, E the largest
 // land fraction within 15 degrees of longitude to the east weighted by 1 - distance / 15 deg
 // (the ocean off a west coast), W the mean ocean fraction over 15 degrees to the west (open
-// ocean there: no decks in inland seas such as the Persian Gulf or the Red Sea); then three 9 x 9 box filters (wrapping in longitude; about a
-// Gaussian of 2.2 degrees) so that coasts do not draw sharp lines into the cover.
+// ocean there: no decks in inland seas such as the Persian Gulf or the Red Sea); then three
+// 9 x 9 box filters (wrapping in longitude; about a Gaussian of 2.2 degrees) so that coasts do
+// not draw sharp lines into the cover.
 std::vector<float> surface_bias(const SurfaceMask& mask);
 
 }  // namespace nephele::cover

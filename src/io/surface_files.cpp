@@ -1,7 +1,7 @@
 #include "io/surface_files.hpp"
 
-#include <cmath>
 #include <filesystem>
+#include <stdexcept>
 
 #include "core/error.hpp"
 #include "io/elevation_files.hpp"
@@ -37,7 +37,12 @@ cover::SurfaceMask etopo5_mask(const std::string& path) {
 cover::SurfaceMask image_mask(const std::string& path) {
   if (!std::filesystem::is_regular_file(path))
     throw core::InputError(field, path, "an existing ETOPO5 netCDF or image file, or none or etopo5", "no such file");
-  const core::ImageData image = read_image(path);
+  core::ImageData image;
+  try {
+    image = read_image(path);
+  } catch (const std::runtime_error& e) {
+    throw core::InputError(field, path, "an image OpenImageIO reads (EXR, PNG, TIFF, ...), or an ETOPO5 netCDF", e.what());
+  }
   cover::SurfaceMask mask{image.width, image.height, {}, path};
   mask.land.resize(static_cast<size_t>(image.width) * image.height);
   for (size_t k = 0; k < mask.land.size(); ++k) {
@@ -58,9 +63,7 @@ std::shared_ptr<const cover::SurfaceMask> surface_from_option(const std::string&
   if (value == "etopo5") return std::make_shared<const cover::SurfaceMask>(etopo5_mask(etopo5_default_path));
   const std::string extension = std::filesystem::path(value).extension().string();
   if (extension == ".cdf" || extension == ".nc") return std::make_shared<const cover::SurfaceMask>(etopo5_mask(value));
-  cover::SurfaceMask mask = image_mask(value);
-  mask.source = value;
-  return std::make_shared<const cover::SurfaceMask>(std::move(mask));
+  return std::make_shared<const cover::SurfaceMask>(image_mask(value));
 }
 
 }  // namespace nephele::io
