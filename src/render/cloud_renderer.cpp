@@ -193,6 +193,16 @@ bool needs_noise_volume(const std::vector<regional::CloudLayer>& layers, const r
   return !marched_layers(layers, field).empty();
 }
 
+CameraFrame camera_frame(const Camera& camera) {
+  const double heading = camera.heading_deg * M_PI / 180, pitch = camera.pitch_deg * M_PI / 180;
+  CameraFrame f;
+  f.forward = {std::sin(heading) * std::cos(pitch), std::cos(heading) * std::cos(pitch), std::sin(pitch)};
+  f.right = {std::cos(heading), -std::sin(heading), 0.0};
+  f.up = glm::cross(f.right, f.forward);
+  f.tan_half_fov = std::tan(camera.fov_deg * M_PI / 360);
+  return f;
+}
+
 glsl::MarchParams march_params(const Camera& camera, const std::vector<regional::CloudLayer>& layers,
                                const regional::WeatherField& field, double unix_seconds,
                                const RenderSettings& settings, glm::dvec2 wind_towards, double wind_speed,
@@ -223,15 +233,13 @@ glsl::MarchParams march_params(const Camera& camera, const std::vector<regional:
   const glm::vec3 ambient = sky_irradiance(glm::vec3(sun), earth_radius, 2000.0);
   m.earth_radius = static_cast<float>(earth_radius);
   m.camera_altitude = static_cast<float>(camera.height_m);
-  const double heading = camera.heading_deg * M_PI / 180, pitch = camera.pitch_deg * M_PI / 180;
-  const glm::dvec3 forward(std::sin(heading) * std::cos(pitch), std::cos(heading) * std::cos(pitch), std::sin(pitch));
-  const glm::dvec3 right(std::cos(heading), -std::sin(heading), 0.0);
-  m.forward = glm::vec3(forward);
-  m.right = glm::vec3(right);
-  m.up = glm::vec3(glm::cross(right, forward));
-  m.tan_half_fov = static_cast<float>(std::tan(camera.fov_deg * M_PI / 360));
+  const CameraFrame frame = camera_frame(camera);
+  m.forward = glm::vec3(frame.forward);
+  m.right = glm::vec3(frame.right);
+  m.up = glm::vec3(frame.up);
+  m.tan_half_fov = static_cast<float>(frame.tan_half_fov);
   m.panorama = camera.panorama ? 1 : 0;
-  m.heading = static_cast<float>(heading);
+  m.heading = static_cast<float>(camera.heading_deg * M_PI / 180);
   m.sun = glm::vec3(sun);
   m.ambient = ambient;
   {

@@ -27,6 +27,14 @@ struct Camera {
   int width = 1280, height = 720;
 };
 
+// A perspective camera's axes in its east-north-up frame (level right, up = right x forward)
+// and tan(fov / 2): what the marcher's view_direction spans its pixels with.
+struct CameraFrame {
+  glm::dvec3 forward, right, up;
+  double tan_half_fov;
+};
+CameraFrame camera_frame(const Camera& camera);
+
 // The layers' shadow maps of a render, kept by a caller that renders the same scene again (the
 // viewer's bands of one frame): render_clouds makes them again only when their key changes.
 struct ShadowMapCache {

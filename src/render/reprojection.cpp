@@ -5,25 +5,11 @@
 #include <numeric>
 #include <stdexcept>
 
+#include "render/upsample.hpp"
+
 namespace nephele::render {
 
 namespace {
-
-struct Basis {
-  glm::dvec3 forward, right, up;
-  double tan_half_fov;
-};
-
-// The camera's frame as march_params builds it (cloud_renderer.cpp).
-Basis basis_of(const Camera& c) {
-  const double heading = c.heading_deg * M_PI / 180, pitch = c.pitch_deg * M_PI / 180;
-  Basis b;
-  b.forward = {std::sin(heading) * std::cos(pitch), std::cos(heading) * std::cos(pitch), std::sin(pitch)};
-  b.right = {std::cos(heading), -std::sin(heading), 0.0};
-  b.up = glm::cross(b.right, b.forward);
-  b.tan_half_fov = std::tan(c.fov_deg * M_PI / 360);
-  return b;
-}
 
 bool marched(int x, int y, int stride, glm::ivec2 phase) { return x % stride == phase.x && y % stride == phase.y; }
 
@@ -44,12 +30,19 @@ glm::ivec2 march_phase(long frame, int stride) {
   return {static_cast<int>(i % stride), static_cast<int>(i / stride)};
 }
 
-glm::dvec3 pixel_direction(const Camera& camera, double x, double y) {
-  const Basis b = basis_of(camera);
-  const double u = (x + 0.5) / camera.width, v = (y + 0.5) / camera.height;
-  const double aspect = double(camera.height) / camera.width;
+namespace {
+
+glm::dvec3 direction_in(const CameraFrame& b, int width, int height, double x, double y) {
+  const double u = (x + 0.5) / width, v = (y + 0.5) / height;
+  const double aspect = double(height) / width;
   const double sx = (2 * u - 1) * b.tan_half_fov, sy = (1 - 2 * v) * aspect * b.tan_half_fov;
   return glm::normalize(b.forward + sx * b.right + sy * b.up);
+}
+
+}  // namespace
+
+glm::dvec3 pixel_direction(const Camera& camera, double x, double y) {
+  return direction_in(camera_frame(camera), camera.width, camera.height, x, y);
 }
 
 long fill_unmarched(core::ImageData& image, const Camera& camera, int stride, glm::ivec2 phase,
@@ -63,19 +56,18 @@ long fill_unmarched(core::ImageData& image, const Camera& camera, int stride, gl
               history->radiance.channels == 4 && !history->camera.panorama
           ? &history->radiance
           : nullptr;
-  Basis before{};
-  if (previous != nullptr) before = basis_of(history->camera);
+  const CameraFrame now = camera_frame(camera);
+  CameraFrame before{};
+  if (previous != nullptr) before = camera_frame(history->camera);
   const double before_aspect = double(h) / w;
-  auto at = [&](const core::ImageData& img, int x, int y, int c) {
-    return img.pixels[(static_cast<std::size_t>(y) * w + x) * 4 + c];
-  };
+  auto at = [&](int x, int y, int c) { return image.pixels[(static_cast<std::size_t>(y) * w + x) * 4 + c]; };
   long reprojected = 0;
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x) {
       if (marched(x, y, stride, phase)) continue;
       float* out = &image.pixels[(static_cast<std::size_t>(y) * w + x) * 4];
       if (previous != nullptr) {
-        const glm::dvec3 d = pixel_direction(camera, x, y);
+        const glm::dvec3 d = direction_in(now, w, h, x, y);
         const double z = glm::dot(d, before.forward);
         if (z > 0) {
           // The previous camera's pixel coordinates of d (inverse of pixel_direction).
@@ -85,14 +77,7 @@ long fill_unmarched(core::ImageData& image, const Camera& camera, int stride, gl
           const double px = std::clamp((sx + 1) / 2 * w - 0.5, -1.0, double(w)),
                        py = std::clamp((1 - sy) / 2 * h - 0.5, -1.0, double(h));
           if (px >= -0.5 && py >= -0.5 && px <= w - 0.5 && py <= h - 0.5) {
-            const double cx = std::clamp(px, 0.0, double(w - 1)), cy = std::clamp(py, 0.0, double(h - 1));
-            const int x0 = std::min(static_cast<int>(cx), std::max(w - 2, 0));
-            const int y0 = std::min(static_cast<int>(cy), std::max(h - 2, 0));
-            const int x1 = std::min(x0 + 1, w - 1), y1 = std::min(y0 + 1, h - 1);
-            const double fx = cx - x0, fy = cy - y0;
-            for (int c = 0; c < 4; ++c)
-              out[c] = static_cast<float>((1 - fy) * ((1 - fx) * at(*previous, x0, y0, c) + fx * at(*previous, x1, y0, c)) +
-                                          fy * ((1 - fx) * at(*previous, x0, y1, c) + fx * at(*previous, x1, y1, c)));
+            sample_bilinear(*previous, px, py, out);
             ++reprojected;
             continue;
           }
@@ -106,7 +91,7 @@ long fill_unmarched(core::ImageData& image, const Camera& camera, int stride, gl
       if (my < 0) my += stride;
       mx = std::min(mx, w - 1);
       my = std::min(my, h - 1);
-      for (int c = 0; c < 4; ++c) out[c] = at(image, mx, my, c);
+      for (int c = 0; c < 4; ++c) out[c] = at(mx, my, c);
     }
   return reprojected;
 }

@@ -10,4 +10,9 @@ namespace nephele::render {
 // edges clamped. Channels as in `image`.
 core::ImageData upsample_bilinear(const core::ImageData& image, int width, int height);
 
+// The image bilinear at the pixel coordinate (x, y) (pixel centres at integers), clamped to
+// its edge pixels: every channel into out[0 .. channels). upsample_bilinear samples with it,
+// and so does the reprojection (render/reprojection.hpp).
+void sample_bilinear(const core::ImageData& image, double x, double y, float* out);
+
 }  // namespace nephele::render
