@@ -108,6 +108,40 @@ TEST_CASE("the GPU calibration of a cover's density matches the CPU's on the sam
         cover::texel_weight_units(p.size).sum_error_bound());
 }
 
+TEST_CASE("the density and remap passes reduce the range and band fractions the calibration's own stages find",
+          "[gpu-reduce][profile]") {
+  // The passes reduce as they write (strips of 32 texels: size 45 leaves a partial strip and
+  // partial workgroups); the same integer sums in any order, so equal to the bit.
+  test::test_context();
+  cover::CoverParameters p;
+  p.size = 45;
+  p.iterations = 10;
+  cover::GlobalCover cover(p);
+  cover.run();
+  REQUIRE(cover.band_calibration());
+  const cover::BandCalibration& fused = *cover.band_calibration();
+  const cover::GpuCalibration separate(p.size);
+  cover::BandCalibration own = separate.run_bands(cover.density_field(), fused.targets);
+  separate.measure_bands(cover.density_field(), own);
+  CHECK(fused.density_min == own.density_min);
+  CHECK(fused.density_max == own.density_max);
+  CHECK(fused.thresholds == own.thresholds);
+  CHECK(fused.achieved == own.achieved);
+  CHECK(fused.achieved_fraction == own.achieved_fraction);
+  CHECK(cover.calibration().achieved_fraction == own.achieved_fraction);
+  // And the cover is cloudy exactly where the measurement counted a texel.
+  const std::vector<float> texels = cover.cover_field().read();
+  const std::vector<float> densities = cover.density_field().read();
+  cover::BandCalibration cpu = own;
+  cover::measure_band_coverage(densities, p.size, cpu);
+  CHECK(std::abs(cpu.achieved_fraction - fused.achieved_fraction) <= separate.weights().units().sum_error_bound());
+  double cloudy = 0.0;
+  const std::vector<double> solid = cover::face_texel_solid_angles(p.size);
+  for (size_t k = 0; k < texels.size(); ++k)
+    if (texels[k] > 0.0f) cloudy += solid[k % solid.size()];
+  CHECK(std::abs(cloudy / (4.0 * M_PI) - fused.achieved_fraction) <= 1e-9 + separate.weights().units().sum_error_bound());
+}
+
 TEST_CASE("fields with many equal densities are calibrated like the CPU", "[gpu-reduce]") {
   test::test_context();
   // Few distinct values: whole fine bins of equal densities, listed and sorted.

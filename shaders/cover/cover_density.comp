@@ -1,8 +1,12 @@
 #version 450
 // Pass 4a: cloud density, inverted Worley fBm sampled through the warp, shaped by the flow's
 // cyclonic depth at the texel (the curl field's w: cyclones cloudy) and by the land/ocean bias
-// (--surface; a zero weight without one).
-layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
+// (--surface; a zero weight without one). The pass also reduces the densities' range into
+// DensityRange, which the calibration then needs no pass of its own to find: each invocation
+// walks a strip of u_strip texels down a column (as the reductions of coverage_histogram.comp)
+// and adds its strip's range with two atomics. (A reduction in shared memory needs a barrier,
+// which on llvmpipe cost more than the pass it saved.)
+layout(local_size_x = 64, local_size_y = 1, local_size_z = 1) in;
 layout(rgba32f, binding = 0) uniform readonly imageCube warp_field;
 layout(r32f, binding = 1) uniform writeonly imageCube density_field;
 layout(rgba32f, binding = 2) uniform readonly imageCube curl_field;
@@ -10,6 +14,11 @@ layout(binding = 3) uniform sampler2D surface_bias;  // equirect, row 0 north, l
 #include "../lib/cover_density.glsl"
 #include "../lib/cube_faces.glsl"
 #include "../lib/equirect_mapping.glsl"
+#include "reduction_words.glsl"
+
+// Words 0, 1: sortable bits of the smallest and largest density (reset by the host).
+layout(std430, binding = 8) buffer DensityRange { uint density_range[]; };
+uniform int u_strip;
 
 uniform FbmParams u_cover;
 uniform vec3 u_noise_offset;  // reduced modulo the lattice period by the host
@@ -17,15 +26,25 @@ uniform float u_cyclone_cloudiness;
 uniform float u_surface_weight;
 
 void main() {
-  ivec3 texel = ivec3(gl_GlobalInvocationID);
   int size = imageSize(density_field).x;
-  if (texel.x >= size || texel.y >= size) return;
-  vec3 warped = imageLoad(warp_field, texel).xyz;
-  float surface = 0.0f;
-  if (u_surface_weight > 0.0f) {
-    surface = texture(surface_bias, equirect_uv(texel_direction(texel.z, texel.x, texel.y, size))).x;
+  int i = int(gl_GlobalInvocationID.x), face = int(gl_GlobalInvocationID.z);
+  int first = int(gl_GlobalInvocationID.y) * u_strip;
+  if (i >= size || first >= size) return;
+  int last = min(size, first + u_strip);
+  uint low = 0xFFFFFFFFu, high = 0u;
+  for (int j = first; j < last; ++j) {
+    ivec3 texel = ivec3(i, j, face);
+    vec3 warped = imageLoad(warp_field, texel).xyz;
+    float surface = 0.0f;
+    if (u_surface_weight > 0.0f) {
+      surface = texture(surface_bias, equirect_uv(texel_direction(face, i, j, size))).x;
+    }
+    float density = shaped_density(cover_density_shifted(warped, u_cover, u_noise_offset),
+                                   imageLoad(curl_field, texel).w, u_cyclone_cloudiness, surface, u_surface_weight);
+    imageStore(density_field, texel, vec4(density, 0.0f, 0.0f, 0.0f));
+    low = min(low, sortable_bits(density));
+    high = max(high, sortable_bits(density));
   }
-  float density = shaped_density(cover_density_shifted(warped, u_cover, u_noise_offset), imageLoad(curl_field, texel).w,
-                                 u_cyclone_cloudiness, surface, u_surface_weight);
-  imageStore(density_field, texel, vec4(density, 0.0f, 0.0f, 0.0f));
+  atomicMin(density_range[0], low);
+  atomicMax(density_range[1], high);
 }

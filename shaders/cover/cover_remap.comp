@@ -1,23 +1,53 @@
 #version 450
 // Pass 4b: density to coverage in [0, 1] with the solid-angle-calibrated threshold: one for
 // the sphere (u_bands 0), or one that follows the latitude profile (band_thresholds.glsl).
-layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
+// With the profile, the pass also adds the cloudy texels' solid angles to their band's sum
+// (BandCloudy), the achieved fractions, so that they need no pass of their own: each
+// invocation walks a strip of u_strip texels down a column and adds runs of one band at once
+// (as the reductions of coverage_histogram.comp).
+layout(local_size_x = 64, local_size_y = 1, local_size_z = 1) in;
 layout(r32f, binding = 0) uniform readonly imageCube density_field;
 layout(r32f, binding = 1) uniform writeonly imageCube cover_field;
 #include "../lib/cover_density.glsl"
 #include "../lib/cube_faces.glsl"
 #include "band_thresholds.glsl"
+#include "texel_weights.glsl"
 
 uniform float u_threshold;
 uniform float u_density_max;
+// Per band, a 64-bit sum of texel weight units (cleared by the host), as stage 8 of
+// coverage_histogram.comp, which measures the same on any density map.
+layout(std430, binding = 9) buffer BandCloudy { uint band_cloudy[]; };
+uniform int u_strip;
 
 void main() {
-  ivec3 texel = ivec3(gl_GlobalInvocationID);
   int size = imageSize(cover_field).x;
-  if (texel.x >= size || texel.y >= size) return;
-  float density = imageLoad(density_field, texel).x;
-  float threshold = u_threshold;
-  if (u_bands > 0) threshold = smooth_band_threshold(texel_direction(texel.z, texel.x, texel.y, size));
-  float cover = cover_from_density(density, threshold, u_density_max);
-  imageStore(cover_field, texel, vec4(cover, 0.0f, 0.0f, 0.0f));
+  int i = int(gl_GlobalInvocationID.x), face = int(gl_GlobalInvocationID.z);
+  int first = int(gl_GlobalInvocationID.y) * u_strip;
+  if (i >= size || first >= size) return;
+  int last = min(size, first + u_strip);
+  int run_band = -1;
+  uint run_units = 0u;
+  for (int j = first; j < last; ++j) {
+    ivec3 texel = ivec3(i, j, face);
+    float density = imageLoad(density_field, texel).x;
+    float threshold = u_threshold;
+    if (u_bands > 0) {
+      vec3 direction = texel_direction(face, i, j, size);
+      threshold = smooth_band_threshold(direction);
+      int band = band_of(band_coordinate(direction, u_bands), u_bands);
+      // A run is flushed once it reaches 2^31 units; a texel is below 2^31, so the 32-bit run
+      // sum never wraps.
+      if (density > threshold) {
+        if (band != run_band || run_units >= 0x80000000u) {
+          if (run_band >= 0) ADD_UNITS64(band_cloudy, run_band, run_units);
+          run_band = band;
+          run_units = 0u;
+        }
+        run_units += texel_weight(i, j, size);
+      }
+    }
+    imageStore(cover_field, texel, vec4(cover_from_density(density, threshold, u_density_max), 0.0f, 0.0f, 0.0f));
+  }
+  if (run_band >= 0) ADD_UNITS64(band_cloudy, run_band, run_units);
 }

@@ -3,6 +3,8 @@
 // solid angle is symmetric under i -> N-1-i, j -> N-1-j and i <-> j. A unit is 2^-S of the
 // sphere (S from the host), so sums of units over the sphere are exact 64-bit integers and do
 // not depend on the order in which invocations add them.
+#include "reduction_words.glsl"
+
 layout(std430, binding = 5) readonly buffer TexelWeights {
   uint texel_weight_units[];
 };
@@ -12,20 +14,4 @@ uint texel_weight(int i, int j, int size) {
   int b = min(j, size - 1 - j);
   int lo = min(a, b), hi = max(a, b);
   return texel_weight_units[hi * (hi + 1) / 2 + lo];
-}
-
-// Adds `units` to the 64-bit counter at words (2 slot, 2 slot + 1) of `counters`: the low word
-// with atomicAdd, and a carry into the high word when it wraps. Integer addition commutes, so
-// the sum is the same whatever the order.
-#define ADD_UNITS64(counters, slot, units)                              \
-  {                                                                     \
-    uint add_units_ = (units);                                          \
-    uint old_units_ = atomicAdd(counters[2 * (slot)], add_units_);      \
-    if (old_units_ > 0xFFFFFFFFu - add_units_) atomicAdd(counters[2 * (slot) + 1], 1u); \
-  }
-
-// Floats as unsigned integers of the same order (for atomicMin and atomicMax).
-uint sortable_bits(float value) {
-  uint bits = floatBitsToUint(value);
-  return (bits & 0x80000000u) != 0u ? ~bits : bits | 0x80000000u;
 }

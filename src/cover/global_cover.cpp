@@ -211,6 +211,12 @@ void GlobalCover::upload_surface_bias() {
   glTextureParameteri(surface_bias_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
 }
 
+void GlobalCover::dispatch_strips(const gpu::ComputeProgram& program) const {
+  const int strip = reduction_strip(parameters_.size);
+  program.set("u_strip", strip);
+  program.dispatch_covering(parameters_.size, (parameters_.size + strip - 1) / strip, 6);
+}
+
 void GlobalCover::run_density() {
   timed("density", [&] {
     glsl::set_uniform(density_program_, "u_cover", density_params(parameters_));
@@ -222,42 +228,52 @@ void GlobalCover::run_density() {
     density_field_.bind_image(1, GL_WRITE_ONLY);
     curl_field_.bind_image(2, GL_READ_ONLY);
     glBindTextureUnit(3, surface_bias_.id());
-    density_program_.dispatch_covering(parameters_.size, parameters_.size, 6);
+    // The pass also reduces the density range for the calibration.
+    if (!gpu_calibration_) gpu_calibration_ = std::make_unique<GpuCalibration>(parameters_.size);
+    gpu_calibration_->bind_density_range();
+    dispatch_strips(density_program_);
     gpu::image_barrier();
   });
+  density_range_current_ = true;
 }
 
 CoverageCalibration GlobalCover::run_coverage() {
   const bool flat = parameters_.profile.kind == LatitudeProfile::Kind::flat;
+  std::optional<BandCalibration> bands;
   timed("calibrate", [&] {
     if (!gpu_calibration_) gpu_calibration_ = std::make_unique<GpuCalibration>(parameters_.size);
     if (flat) {
-      calibration_ = gpu_calibration_->run(density_field_, parameters_.coverage);
-      bands_.reset();
+      calibration_ = gpu_calibration_->run(density_field_, parameters_.coverage, density_range_current_);
       return;
     }
-    // The profile: a threshold per band, then what the smooth threshold of the remap achieves
-    // (it blends neighbouring bands, so each band's fraction differs a little from its target).
-    BandCalibration bands = gpu_calibration_->run_bands(
-        density_field_, band_targets(parameters_.profile, parameters_.month, parameters_.coverage));
-    gpu_calibration_->measure_bands(density_field_, bands);
+    bands = gpu_calibration_->run_bands(density_field_,
+                                        band_targets(parameters_.profile, parameters_.month, parameters_.coverage),
+                                        density_range_current_);
     calibration_ = CoverageCalibration{};
-    calibration_.density_min = bands.density_min;
-    calibration_.density_max = bands.density_max;
-    calibration_.achieved_fraction = bands.achieved_fraction;
+    calibration_.density_min = bands->density_min;
+    calibration_.density_max = bands->density_max;
     calibration_.max_texel_fraction = gpu_calibration_->weights().units().largest_fraction;
-    bands_ = std::move(bands);
   });
   timed("coverage", [&] {
     remap_program_.set("u_threshold", calibration_.threshold);
     remap_program_.set("u_density_max", calibration_.density_max);
     remap_program_.set("u_bands", flat ? 0 : profile_bands);
-    if (!flat) gpu_calibration_->bind_band_thresholds();
+    if (!flat) {
+      gpu_calibration_->bind_band_thresholds();
+      gpu_calibration_->bind_band_cloudy();
+    }
     density_field_.bind_image(0, GL_READ_ONLY);
     cover_field_.bind_image(1, GL_WRITE_ONLY);
-    remap_program_.dispatch_covering(parameters_.size, parameters_.size, 6);
+    dispatch_strips(remap_program_);
     gpu::image_barrier();
+    // The profile: what the smooth threshold achieves (it blends neighbouring bands, so each
+    // band's fraction differs a little from its target), measured by the remap as it wrote.
+    if (!flat) {
+      gpu_calibration_->read_band_cloudy(*bands);
+      calibration_.achieved_fraction = bands->achieved_fraction;
+    }
   });
+  bands_ = std::move(bands);
   return calibration_;
 }
 

@@ -70,6 +70,8 @@ class GlobalCover {
   template <class Work>
   void timed(const std::string& pass, Work&& work);
   void dispatch_warp(const gpu::Texture& starts, const gpu::Texture& warped);
+  // The density and remap passes: an invocation per strip of reduction_strip texels of a column.
+  void dispatch_strips(const gpu::ComputeProgram& program) const;
   void upload_surface_bias();  // the land/ocean bias grid (surface_bias.hpp), once
 
   CoverParameters parameters_;
@@ -85,7 +87,8 @@ class GlobalCover {
   gpu::Texture surface_bias_;  // 720 x 360 R32F with --surface, else 1 x 1 zero
   CoverageCalibration calibration_;
   std::optional<BandCalibration> bands_;
-  std::unique_ptr<GpuCalibration> gpu_calibration_;  // made at the first calibration
+  std::unique_ptr<GpuCalibration> gpu_calibration_;  // made at the first density pass or calibration
+  bool density_range_current_ = false;  // the density pass reduced the range into gpu_calibration_
   std::unique_ptr<GpuDiagnosis> gpu_diagnosis_;      // made at the first diagnosis
   std::vector<PassTiming> timings_;
   std::optional<cover::WarpDiagnostics> diagnostics_;

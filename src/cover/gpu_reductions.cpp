@@ -1,11 +1,13 @@
 #include "cover/gpu_reductions.hpp"
-#include "cover/latitude_profile.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <limits>
 #include <stdexcept>
+#include <tuple>
+
+#include "cover/latitude_profile.hpp"
 
 namespace nephele::cover {
 namespace {
@@ -56,16 +58,12 @@ std::vector<std::uint64_t> sums64(const std::vector<GLuint>& words) {
 
 constexpr int bins = 4096;  // per level, as cover::calibrate_coverage
 
-// Texels per invocation of the reduction passes, a strip down a column: at least 32, so that
-// an invocation's atomics and partial record are shared by many texels (on llvmpipe, 1024 per
-// face: 8 texels 1.6 times slower than 32), and enough that 6 N^2 texels make at most 2^20
-// partial records (4096 per face: strips of 96).
+}  // namespace
+
 int reduction_strip(int size) {
   const long texels = 6L * size * size;
   return static_cast<int>(std::max<long>(32, (texels + (1L << 20) - 1) >> 20));
 }
-
-}  // namespace
 
 double TexelWeightUnits::fraction(std::uint64_t units) const { return std::ldexp(static_cast<double>(units), -scale_bits); }
 
@@ -119,11 +117,56 @@ GpuCalibration::GpuCalibration(int size) : size_(size), weights_(size) {
   glNamedBufferStorage(band_thresholds_, profile_bands * 4, nullptr, GL_DYNAMIC_STORAGE_BIT);
   glCreateBuffers(1, &band_crossing_);
   glNamedBufferStorage(band_crossing_, profile_bands * 8, nullptr, GL_DYNAMIC_STORAGE_BIT);
+  glCreateBuffers(1, &density_range_);
+  glNamedBufferStorage(density_range_, 8, nullptr, GL_DYNAMIC_STORAGE_BIT);
+  glCreateBuffers(1, &band_cloudy_);
+  glNamedBufferStorage(band_cloudy_, profile_bands * 8, nullptr, GL_DYNAMIC_STORAGE_BIT);
 }
 
 GpuCalibration::~GpuCalibration() {
   glDeleteBuffers(1, &band_thresholds_);
   glDeleteBuffers(1, &band_crossing_);
+  glDeleteBuffers(1, &density_range_);
+  glDeleteBuffers(1, &band_cloudy_);
+}
+
+void GpuCalibration::bind_density_range() const {
+  const GLuint empty[2] = {0xFFFFFFFFu, 0u};
+  glNamedBufferSubData(density_range_, 0, sizeof empty, empty);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 8, density_range_);
+}
+
+std::pair<float, float> GpuCalibration::density_range(const gpu::Texture& density, bool from_density_pass) const {
+  if (!from_density_pass) {
+    // Stage 0 writes the same two words as the density pass.
+    bind_density_range();
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, density_range_);
+    weights_.bind();
+    density.bind_image(0, GL_READ_ONLY);
+    const int strip = reduction_strip(size_);
+    program_.set("u_strip", strip);
+    program_.set("u_stage", 0);
+    program_.dispatch_covering(size_, (size_ + strip - 1) / strip, 6);
+  }
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+  GLuint words[2];
+  glGetNamedBufferSubData(density_range_, 0, sizeof words, words);
+  return {from_sortable(words[0]), from_sortable(words[1])};
+}
+
+void GpuCalibration::bind_band_cloudy() const {
+  const GLuint zero = 0;
+  glClearNamedBufferData(band_cloudy_, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 9, band_cloudy_);
+  weights_.bind();
+}
+
+void GpuCalibration::read_band_cloudy(BandCalibration& c) const {
+  const size_t bands = c.thresholds.size();
+  std::vector<GLuint> words(2 * bands);
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  glGetNamedBufferSubData(band_cloudy_, 0, static_cast<GLsizeiptr>(words.size() * 4), words.data());
+  set_achieved(sums64(words), c);
 }
 
 void GpuCalibration::bind_band_thresholds() const { glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 6, band_thresholds_); }
@@ -148,27 +191,15 @@ std::vector<std::uint64_t> GpuCalibration::band_histogram(const gpu::Texture& de
   return sums64(histogram.read(2 * slots));
 }
 
-BandCalibration GpuCalibration::run_bands(const gpu::Texture& density, const std::vector<double>& targets) const {
+BandCalibration GpuCalibration::run_bands(const gpu::Texture& density, const std::vector<double>& targets,
+                                          bool range_from_density_pass) const {
   if (density.width() != size_) throw std::invalid_argument("GpuCalibration: the density map is not of its size");
   const int bands = static_cast<int>(targets.size());
   if (bands < 1 || bands > profile_bands) throw std::invalid_argument("GpuCalibration: bands out of range");
   const TexelWeightUnits& units = weights_.units();
   BandCalibration c;
   c.targets = targets;
-  // Stage 0: the density range.
-  WordBuffer scalars(8);
-  scalars.set(0, 0xFFFFFFFFu);
-  scalars.bind(1);
-  weights_.bind();
-  density.bind_image(0, GL_READ_ONLY);
-  const int strip = reduction_strip(size_);
-  program_.set("u_strip", strip);
-  program_.set("u_stage", 0);
-  program_.dispatch_covering(size_, (size_ + strip - 1) / strip, 6);
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-  const std::vector<GLuint> range = scalars.read(2);
-  c.density_min = from_sortable(range[0]);
-  c.density_max = from_sortable(range[1]);
+  std::tie(c.density_min, c.density_max) = density_range(density, range_from_density_pass);
   const float scale = band_bin_scale(c.density_min, c.density_max);
   const auto as_fractions = [&](const std::vector<std::uint64_t>& sums) {
     std::vector<double> out(sums.size());
@@ -194,7 +225,11 @@ BandCalibration GpuCalibration::run_bands(const gpu::Texture& density, const std
 void GpuCalibration::measure_bands(const gpu::Texture& density, BandCalibration& c) const {
   const int bands = static_cast<int>(c.thresholds.size());
   glNamedBufferSubData(band_thresholds_, 0, static_cast<GLsizeiptr>(bands * 4), c.thresholds.data());
-  const std::vector<std::uint64_t> cloudy = band_histogram(density, 8, bands, c.density_min, 0.0f);
+  set_achieved(band_histogram(density, 8, bands, c.density_min, 0.0f), c);
+}
+
+void GpuCalibration::set_achieved(const std::vector<std::uint64_t>& cloudy, BandCalibration& c) const {
+  const int bands = static_cast<int>(c.thresholds.size());
   const TexelWeightUnits& units = weights_.units();
   c.achieved.assign(static_cast<size_t>(bands), 0.0);
   std::uint64_t total = 0;
@@ -205,12 +240,12 @@ void GpuCalibration::measure_bands(const gpu::Texture& density, BandCalibration&
   c.achieved_fraction = units.fraction(total);
 }
 
-CoverageCalibration GpuCalibration::run(const gpu::Texture& density, double target) const {
+CoverageCalibration GpuCalibration::run(const gpu::Texture& density, double target, bool range_from_density_pass) const {
   if (density.width() != size_) throw std::invalid_argument("GpuCalibration: the density map is not of its size");
   const TexelWeightUnits& units = weights_.units();
   CoverageCalibration result;
+  std::tie(result.density_min, result.density_max) = density_range(density, range_from_density_pass);
   WordBuffer scalars(8), histogram(2 * bins), members(2 * static_cast<size_t>(calibration_member_capacity));
-  scalars.set(0, 0xFFFFFFFFu);
   scalars.bind(1);
   histogram.bind(2);
   members.bind(3);
@@ -223,10 +258,6 @@ CoverageCalibration GpuCalibration::run(const gpu::Texture& density, double targ
     program_.dispatch_covering(size_, (size_ + strip - 1) / strip, 6);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   };
-  dispatch(0);
-  const std::vector<GLuint> range = scalars.read(2);
-  result.density_min = from_sortable(range[0]);
-  result.density_max = from_sortable(range[1]);
   result.max_texel_fraction = units.largest_fraction;
   // Bin scales in float, 0 where they would not be finite (all densities equal or nearly).
   const auto finite_scale = [](double scale) {

@@ -4,6 +4,7 @@
 // The CPU versions (coverage_threshold.hpp, stability.hpp) are their reference; the tests
 // compare the two. docs/performance.md gives the algorithm and its bounds.
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "cover/coverage_threshold.hpp"
@@ -13,6 +14,13 @@
 #include "gpu/textures.hpp"
 
 namespace nephele::cover {
+
+// Texels per invocation of the reduction passes, a strip down a column: at least 32, so that
+// an invocation's atomics and partial record are shared by many texels (on llvmpipe, 1024 per
+// face: 8 texels 1.6 times slower than 32), and enough that 6 N^2 texels make at most 2^20
+// partial records (4096 per face: strips of 96). The density and remap passes, which reduce
+// as they write, walk the same strips.
+int reduction_strip(int size);
 
 // Texel solid angles of one face as integers: units of 2^-scale_bits of the sphere, one entry
 // per texel of the octant 0 <= a <= b < ceil(N/2) (index b (b + 1)/2 + a; the other texels
@@ -71,7 +79,9 @@ class GpuCalibration {
   ~GpuCalibration();
   GpuCalibration(const GpuCalibration&) = delete;
   GpuCalibration& operator=(const GpuCalibration&) = delete;
-  CoverageCalibration run(const gpu::Texture& density, double target) const;
+  // The density range: found by a pass of its own (stage 0), or, with range_from_density_pass,
+  // the one cover_density.comp reduced into the buffer bind_density_range bound before it.
+  CoverageCalibration run(const gpu::Texture& density, double target, bool range_from_density_pass = false) const;
   // cover::calibrate_band_coverage on the GPU (stages 0, 6, 7 of coverage_histogram.comp; one
   // target per band): read back are two words and two tables of bands x band_bins 64-bit sums.
   // The thresholds stay in a buffer for the remap pass (bind_band_thresholds).
@@ -79,14 +89,23 @@ class GpuCalibration {
   // float latitude put in different bands (within a few ulp of a band edge) and the rounding
   // of the solid angles to units (TexelWeightUnits::sum_error_bound per band); so are the
   // thresholds, which move with the histograms continuously within one fine bin.
-  BandCalibration run_bands(const gpu::Texture& density, const std::vector<double>& targets) const;
+  BandCalibration run_bands(const gpu::Texture& density, const std::vector<double>& targets,
+                            bool range_from_density_pass = false) const;
   // The achieved fractions at the smooth threshold of `calibration` (stage 8), in place.
   void measure_bands(const gpu::Texture& density, BandCalibration& calibration) const;
+  // The same measured by the remap pass (cover_remap.comp) as it writes the cover: bind before
+  // that pass (binding 9 cleared, and the weights), read after it.
+  void bind_band_cloudy() const;
+  void read_band_cloudy(BandCalibration& calibration) const;
+  // Resets the density range to empty and binds it (binding 8 of cover_density.comp).
+  void bind_density_range() const;
   // Binds the thresholds of the last run_bands (binding 6 of band_thresholds.glsl).
   void bind_band_thresholds() const;
   const GpuTexelWeights& weights() const { return weights_; }
 
  private:
+  std::pair<float, float> density_range(const gpu::Texture& density, bool from_density_pass) const;
+  void set_achieved(const std::vector<std::uint64_t>& cloudy, BandCalibration& calibration) const;
   std::vector<std::uint64_t> band_histogram(const gpu::Texture& density, int stage, int bands, float density_min,
                                             float scale) const;
   int size_;
@@ -94,6 +113,8 @@ class GpuCalibration {
   gpu::ComputeProgram program_{"cover/coverage_histogram.comp"};
   unsigned band_thresholds_ = 0;  // a float per band
   unsigned band_crossing_ = 0;    // (bin, lower edge bits) per band
+  unsigned density_range_ = 0;    // sortable bits of the smallest and largest density
+  unsigned band_cloudy_ = 0;      // a 64-bit sum of units per band (the remap's measurement)
 };
 
 // cover::diagnose_warp on the GPU: the curl and warp maps stay there, 7 integers and 6 doubles
