@@ -83,7 +83,9 @@ double stability_limit(Integrator integrator) {
 
 int loop_iterations_per_step(Integrator integrator, CurlMode mode, int potential_octaves) {
   const int per_evaluation = mode == CurlMode::procedural ? 2 * 13 * std::max(0, potential_octaves) : 0;
-  return 1 + evaluations_per_step(integrator) * per_evaluation;
+  // RK4 runs its four stages in a loop of their own (warp_step.glsl's rk4_step).
+  const int stages = integrator == Integrator::rk4 ? 4 : 0;
+  return 1 + stages + evaluations_per_step(integrator) * per_evaluation;
 }
 
 int steps_per_dispatch(Integrator integrator, CurlMode mode, int potential_octaves) {

@@ -44,7 +44,8 @@ constexpr int shader_loop_budget = 32768;
 // Loop iterations per step (adaptive: per attempted step) at most: the step loop itself and,
 // per procedural evaluation, the octave loops of both potentials with the outer loops of the
 // Worley cell search, 13 per octave and potential (measured on llvmpipe: about 50 for 3
-// octaves; the bound is 78). Sampled and spline evaluations have no loops.
+// octaves; the bound is 78), and RK4's loop over its four stages. Sampled and spline
+// evaluations have no loops.
 int loop_iterations_per_step(Integrator integrator, CurlMode mode, int potential_octaves);
 // Steps (adaptive: attempts) per texel that one dispatch of the warp pass may take.
 int steps_per_dispatch(Integrator integrator, CurlMode mode, int potential_octaves);
