@@ -59,6 +59,17 @@ glsl::MarchSources host_sources(const render::NoiseVolume& noise, const WeatherF
   return sources;
 }
 
+// A shadow map (layer -1: the sky's) made on the CPU, size x size texels.
+std::vector<float> cpu_shadow_map(int size, int layer, const glsl::MarchParams& params, const glsl::MarchSources& sources) {
+  const glm::vec3 centre(0.0f, 0.0f, -(params.earth_radius + params.camera_altitude));
+  std::vector<float> map;
+  int loops = 0;
+  for (int j = 0; j < size; ++j)
+    for (int i = 0; i < size; ++i)
+      map.push_back(glsl::shadow_map_texel(glm::vec2((i + 0.5f) / size, (j + 0.5f) / size), centre, layer, loops, params, sources));
+  return map;
+}
+
 }  // namespace
 
 TEST_CASE("the marcher on the GPU agrees with its C++ twin pixel by pixel", "[render][march]") {
@@ -92,19 +103,23 @@ TEST_CASE("the marcher on the GPU agrees with its C++ twin pixel by pixel", "[re
     const auto gpu = render::render_clouds(cam, layers, field, time, settings, wind, wind_speed, &noise);
     const glsl::MarchParams params = render::march_params(cam, layers, field, time, settings, wind, wind_speed);
     REQUIRE(params.layer_count == 3);
-    // The cumulus has the alto and the cirrus above it, the alto the cirrus: two maps.
-    REQUIRE(render::shadow_map_count(params) == 2);
-    REQUIRE(gpu.shadow_maps.size() == 2u * 16 * 16);
-    sources.shadows = {16, 2, gpu.shadow_maps.data()};
+    // The cumulus has the alto and the cirrus above it, the alto the cirrus: two maps, and the
+    // sky's from the cumulus's base (crepuscular rays).
+    REQUIRE(render::shadow_map_count(params) == 3);
+    REQUIRE(params.sky_shadow_map == 2);
+    REQUIRE(params.sky_shadow_base == 1500.0f);
+    REQUIRE(gpu.shadow_maps.size() == 3u * 16 * 16);
+    sources.shadows = {16, 3, gpu.shadow_maps.data()};
     // Each texel against the C++ twin: a shadow march through thin layers (relative tolerance).
     const glm::vec3 centre(0.0f, 0.0f, -(params.earth_radius + params.camera_altitude));
-    for (int layer = 0; layer < 2; ++layer)
+    for (int layer = -1; layer < 2; ++layer)
       for (int j = 0; j < 16; ++j)
         for (int i = 0; i < 16; ++i) {
           int loops = 0;
           const float cpu = glsl::shadow_map_texel(glm::vec2((i + 0.5f) / 16, (j + 0.5f) / 16), centre, layer, loops,
                                                    params, sources);
-          const float g = gpu.shadow_maps[(static_cast<size_t>(params.layers[layer].shadow_map) * 16 + j) * 16 + i];
+          const int map = layer >= 0 ? params.layers[layer].shadow_map : params.sky_shadow_map;
+          const float g = gpu.shadow_maps[(static_cast<size_t>(map) * 16 + j) * 16 + i];
           INFO("map of layer " << layer << " texel " << i << ", " << j << ": GPU " << g << ", CPU " << cpu);
           CHECK(std::abs(g - cpu) <= tolerance * std::max(cpu, 1e-6f));
         }
@@ -174,15 +189,12 @@ TEST_CASE("a layer under an overcast layer reads the depth through it from its s
   const glsl::MarchParams params = render::march_params(camera(false), two, field, time, settings);
   REQUIRE(params.layers[0].shadow_map == 0);
   REQUIRE(params.layers[1].shadow_map == -1);
-  REQUIRE(render::shadow_map_count(params) == 1);
+  REQUIRE(render::shadow_map_count(params) == 2);  // and the sky's
+  REQUIRE(params.sky_shadow_map == 1);
   const glm::vec3 centre(0.0f, 0.0f, -(params.earth_radius + params.camera_altitude));
   // The map made on the CPU, 32 x 32 texels over 300 km.
   const int size = 32;
-  std::vector<float> map;
-  int loops = 0;
-  for (int j = 0; j < size; ++j)
-    for (int i = 0; i < size; ++i)
-      map.push_back(glsl::shadow_map_texel(glm::vec2((i + 0.5f) / size, (j + 0.5f) / size), centre, 0, loops, params, sources));
+  const std::vector<float> map = cpu_shadow_map(size, 0, params, sources);
   sources.shadows = {size, 1, map.data()};
   const double tolerance = test::march_tolerance(600.0, 12000.0, sources.noise);
   // Points of the lower layer on the sun rays through texel centres of its top: the lookup is
@@ -191,7 +203,7 @@ TEST_CASE("a layer under an overcast layer reads the depth through it from its s
   // (the profile's six midpoint samples average 0.753, the texture is at least 0.7).
   for (int k = 0; k < 20; ++k) {
     const glm::vec2 uv((3 + k % 5 * 6 + 0.5f) / size, (4 + k / 5 * 6 + 0.5f) / size);
-    const glm::vec3 top = glsl::shadow_map_origin((2.0f * uv - 1.0f) * params.shadow_extent, centre, 0, params);
+    const glm::vec3 top = glsl::shadow_map_origin((2.0f * uv - 1.0f) * params.shadow_extent, centre, params.layers[0].top, params);
     const glm::vec3 p = top - (100.0f + 25.0f * k) / params.sun.z * params.sun;  // 100 to 575 m below the top
     int n = 0;
     const float marched = glsl::layers_shadow_depth(p, centre, 0, 2100.0f, n, params, sources);
@@ -218,16 +230,25 @@ TEST_CASE("a layer under an overcast layer reads the depth through it from its s
   CHECK(shaded.radiance.x < open.radiance.x);
   CHECK(shaded.radiance.y < open.radiance.y);
   CHECK(shaded.radiance.z < open.radiance.z);
-  // The renderer makes the map only where a layer has one above it.
+  // The renderer makes a layer's map only where a layer has one above it; the sky's whenever
+  // there is cloud and shadow_map_size is not 0.
   render::Camera small = camera(false);
   small.width = 8;
   small.height = 4;
   settings.shadow_map_size = 8;
-  const auto has_maps = [](const render::RenderResult& r) {
-    return std::any_of(r.passes.begin(), r.passes.end(), [](const std::string& p) { return p.rfind("layer_shadows", 0) == 0; });
+  const auto passes_of = [](const render::RenderResult& r) {
+    std::string all;
+    for (const auto& p : r.passes) all += p + "; ";
+    return all;
   };
-  CHECK(has_maps(render::render_clouds(small, two, field, time, settings, {0, 1}, 0, &noise)));
-  CHECK_FALSE(has_maps(render::render_clouds(small, {two[0]}, field, time, settings, {0, 1}, 0, &noise)));
+  CHECK(passes_of(render::render_clouds(small, two, field, time, settings, {0, 1}, 0, &noise)).find("layer_shadows (2 of 8^2)") !=
+        std::string::npos);
+  CHECK(passes_of(render::render_clouds(small, {two[0]}, field, time, settings, {0, 1}, 0, &noise)).find("layer_shadows (1 of 8^2)") !=
+        std::string::npos);
+  render::RenderSettings no_maps = settings;
+  no_maps.shadow_map_size = 0;
+  CHECK(passes_of(render::render_clouds(small, two, field, time, no_maps, {0, 1}, 0, &noise)).find("layer_shadows") ==
+        std::string::npos);
   // With a cache (the viewer's bands) the maps are made once while nothing they depend on
   // changes, and the image is the same to the bit; another sun makes them again.
   const auto without_cache = render::render_clouds(small, two, field, time, settings, {0, 1}, 0, &noise);
@@ -237,13 +258,62 @@ TEST_CASE("a layer under an overcast layer reads the depth through it from its s
   turned.heading_deg += 40;  // the view's direction: not in the maps
   const auto again = render::render_clouds(turned, two, field, time, settings, {0, 1}, 0, &noise);
   const auto later = render::render_clouds(small, two, field, time + 3600, settings, {0, 1}, 0, &noise);
-  const auto passes_of = [](const render::RenderResult& r) {
-    std::string all;
-    for (const auto& p : r.passes) all += p + "; ";
-    return all;
-  };
-  CHECK(passes_of(first).find("layer_shadows (1 of 8^2)") != std::string::npos);
+  CHECK(passes_of(first).find("layer_shadows (2 of 8^2)") != std::string::npos);
   CHECK(passes_of(again).find("layer_shadows (reused)") != std::string::npos);
-  CHECK(passes_of(later).find("layer_shadows (1 of 8^2)") != std::string::npos);
+  CHECK(passes_of(later).find("layer_shadows (2 of 8^2)") != std::string::npos);
   CHECK(first.radiance.pixels == without_cache.radiance.pixels);
+}
+
+TEST_CASE("the air below an overcast layer scatters no direct sunlight: a pixel loses the clear sky's in-scattering",
+          "[render][shadow][crepuscular]") {
+  test::test_context();
+  const double time = core::parse_utc_time("2026-06-21T11:30Z");  // sun about 66 degrees up
+  const std::vector<CloudLayer> layers = {{CloudType::stratus, CoverageChannel::low, 1500, 2100, 2e-2f, 0, 0, 0, "test"}};
+  const WeatherField field = overcast_field({CoverageChannel::low});
+  render::RenderSettings settings;
+  settings.noise_size = 16;
+  const render::NoiseVolume noise(settings.noise_size, settings.seed);
+  glsl::MarchSources sources = host_sources(noise, field);
+  render::Camera down = camera(false);
+  down.pitch_deg = -30;  // every ray meets the flat ground within 4 km, under the layer
+  down.width = 8;
+  down.height = 4;
+  glsl::MarchParams params = render::march_params(down, layers, field, time, settings);
+  REQUIRE(params.sky_shadow_map == 0);
+  REQUIRE(params.sky_shadow_base == 1500.0f);
+  const glm::vec3 centre(0.0f, 0.0f, -(params.earth_radius + params.camera_altitude));
+  // The sky's map made on the CPU, 16 x 16 texels over 300 km.
+  const int size = 16;
+  const std::vector<float> map = cpu_shadow_map(size, -1, params, sources);
+  sources.shadows = {size, 1, map.data()};
+  // The overcast's optical depth, at least its vertical 2e-2 x 600 x 0.753 x 0.7 = 6.3 (the
+  // test above): the air below keeps at most e^-6.3 = 0.0018 of the direct sun.
+  const float least_depth = 2e-2f * 600 * 0.753f * 0.7f;
+  CHECK(*std::min_element(map.begin(), map.end()) >= least_depth);
+  glsl::MarchParams unshaded = params;
+  unshaded.sky_shadow_map = -1;
+  for (int k = 0; k < 4; ++k) {
+    const glm::ivec2 pixel(2 * k + 1, k);
+    int n = 0;
+    const glm::vec4 with = glsl::render_pixel(pixel, glm::ivec2(down.width, down.height), params, n, sources);
+    const glm::vec4 without = glsl::render_pixel(pixel, glm::ivec2(down.width, down.height), unshaded, n, sources);
+    // The ray's clear-sky in-scattering to the ground (no cloud on it: opacity 0).
+    const glm::vec3 d = glsl::view_direction(pixel, glm::ivec2(down.width, down.height), params);
+    const glm::vec2 ground = glsl::ray_sphere(glm::vec3(0.0f), d, centre, params.earth_radius);
+    REQUIRE(ground.x > 0.0f);
+    REQUIRE(with.w == 0.0f);
+    glm::vec3 total, split, t_total, t_split;
+    glsl::sky_single_scattering(-centre, d, ground.x, 0.0f, params.sun, params.earth_radius, params.sky_steps, total, split,
+                                t_total, t_split);
+    // The loss is that in-scattering times 1 - e^-tau, tau >= least_depth; float rounding of
+    // the sums (16 steps) is far below the e^-6.3 margin.
+    for (int c = 0; c < 3; ++c) {
+      INFO("pixel " << pixel.x << ", " << pixel.y << " channel " << c << ": with " << with[c] << ", without " << without[c]
+                    << ", clear-sky in-scattering " << total[c]);
+      CHECK(total[c] > 0.0f);
+      const float lost = without[c] - with[c];
+      CHECK(lost <= total[c] * (1.0f + 1e-5f));
+      CHECK(lost >= total[c] * (1.0f - std::exp(-least_depth)) * (1.0f - 1e-5f));
+    }
+  }
 }

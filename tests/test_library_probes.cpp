@@ -588,6 +588,30 @@ TEST_CASE("atmosphere.glsl on the GPU agrees with the CPU", "[probe]") {
       const vec4 cpu = probe_atmosphere(x);
       const float largest = std::max(cpu.x, std::max(cpu.y, cpu.z));
       cases.push_back({x, part < 2 ? kSkyRelative * largest + kTranscendental : kTransmittance});
+      // Step by step with the sun's share v at every other step (crepuscular rays): v = 1 is
+      // the plain integral to the bit; the radiance is linear in v (R_even + v R_odd) and the
+      // transmittance does not depend on it.
+      const int half = part % 2;
+      const auto stepwise = [&](float v) {
+        return arguments(5, vec4(earth_radius, float(half), v, 0), p, vec4(d, r(0.0f, p.w)), vec4(sun, 8.0f));
+      };
+      mat4 plain = stepwise(1.0f);
+      plain[0] = vec4(4.0f, earth_radius, float(half), 0.0f);
+      mat4 shaded = stepwise(0.0f);
+      shaded[2] = plain[2];
+      mat4 mid = stepwise(0.5f);
+      mid[2] = plain[2];
+      mat4 lit = stepwise(1.0f);
+      lit[2] = plain[2];
+      const vec4 a = probe_atmosphere(lit), b = probe_atmosphere(plain), s0 = probe_atmosphere(shaded),
+                 s5 = probe_atmosphere(mid);
+      CHECK(vec3(a) == vec3(b));
+      CHECK(a.w == s0.w);
+      for (int c = 0; c < 3; ++c) {
+        CHECK(s0[c] <= a[c]);
+        CHECK(s5[c] == Approx(0.5f * (s0[c] + a[c])).epsilon(0).margin(4 * kUlp * a[c] + 1e-30f));
+      }
+      cases.push_back({mid, kSkyRelative * std::max(a.x, std::max(a.y, a.z)) + kTranscendental});
     }
   }
   compare("atmosphere", probe_atmosphere, cases);
@@ -880,6 +904,15 @@ TEST_CASE("cloud_march.glsl on the GPU agrees with the CPU", "[probe][march]") {
     CHECK(v.z == Approx(sources.shadows.sample(vec2(v.x, v.y), 0)).epsilon(0).margin(kArithmetic));
     const vec4 t = cpu(arguments(19, vec4(0), vec4(0), vec4(0), uv));
     CHECK(t.x == t.y);
+    // Crepuscular rays, map 0 as the sky's from the shell at 1500 m: a point of the air below it
+    // takes e^-depth at its sun ray's exit (e^-x has slope <= 1: the lookup's tolerance); a
+    // point of the cumulus, above the shell, the whole sun.
+    const vec4 air(p.x, p.y, r(0.0f, 1400.0f) - 860.0f, 0.0f);
+    const vec4 sky_shell(0, 1500.0f, 0, 0);  // x[0].z
+    const vec4 s = cpu(arguments(20, sky_shell, air));
+    cases.push_back({arguments(20, sky_shell, air), std::max(exit_uv, map_lookup + kTranscendental)});
+    CHECK(s.z == Approx(std::exp(-sources.shadows.sample(vec2(s.x, s.y), 0))).epsilon(0).margin(kTranscendental));
+    CHECK(cpu(arguments(20, sky_shell, p)).z == 1.0f);
   }
   compare("cloud_march", cpu, cases);
   glDeleteTextures(1, &shadow_texture);

@@ -55,6 +55,72 @@ vec3 transmittance_to_space(vec3 p, vec3 d, float earth_radius) {
   return exp(-depth);
 }
 
+// The clear-sky integral along a view ray, step by step, so that a caller may shadow the sun
+// at each sample (cloud_march.glsl: crepuscular rays). Midpoint rule in `steps` steps of ds.
+struct SkyIntegral {
+  vec3 rayleigh;  // the phase-weighted scattering coefficients at sea level
+  float mie;
+  float ds;
+  float split;
+  vec3 radiance;
+  vec3 transmittance;
+  vec3 inscatter_split;
+  vec3 transmittance_split;
+  bool split_done;
+};
+
+SkyIntegral sky_integral_begin(vec3 d, float distance, float split, vec3 sun, int steps) {
+  SkyIntegral s;
+  float nu = dot(d, sun);
+  s.rayleigh = rayleigh_scattering() * rayleigh_phase(nu);
+  s.mie = MIE_SCATTERING * henyey_greenstein(nu, MIE_ASYMMETRY);
+  s.ds = distance / float(steps);
+  s.split = split;
+  s.radiance = vec3(0.0f);
+  s.transmittance = vec3(1.0f);
+  s.inscatter_split = vec3(0.0f);
+  s.transmittance_split = vec3(1.0f);
+  s.split_done = split <= 0.0f;
+  return s;
+}
+
+// The sample of step i: its point, from o (relative to the Earth's centre) along d.
+vec3 sky_integral_point(IN(SkyIntegral) s, vec3 o, vec3 d, int i) {
+  float s0 = float(i) * s.ds;
+  return o + (s0 + 0.5f * s.ds) * d;
+}
+
+// Step i with its sample q; the sun's direct light reaches q times sun_visibility (1: clear).
+void sky_integral_step(INOUT(SkyIntegral) s, vec3 q, int i, vec3 sun, float earth_radius, float sun_visibility) {
+  float s0 = float(i) * s.ds;
+  float ds = s.ds;
+  float h = length(q) - earth_radius;
+  vec3 extinction = max(air_extinction(h), vec3(1.0e-12f));
+  vec3 source = (s.rayleigh * exp(-h / RAYLEIGH_SCALE_HEIGHT) + vec3(s.mie * exp(-h / MIE_SCALE_HEIGHT))) *
+                transmittance_to_space(q, sun, earth_radius) * solar_irradiance() * sun_visibility;
+  if (!s.split_done && s0 + ds > s.split) {
+    // The split falls in this step: its first part, with the step's source, goes into the
+    // split values.
+    vec3 part_transmittance = exp(-extinction * (s.split - s0));
+    s.inscatter_split = s.radiance + s.transmittance * source * (vec3(1.0f) - part_transmittance) / extinction;
+    s.transmittance_split = s.transmittance * part_transmittance;
+    s.split_done = true;
+  }
+  // Energy-conserving integration over the step (Hillaire 2016, "Physically Based Sky,
+  // Atmosphere and Cloud Rendering in Frostbite"): source (1 - e^{-sigma ds}) / sigma.
+  vec3 step_transmittance = exp(-extinction * ds);
+  s.radiance += s.transmittance * source * (vec3(1.0f) - step_transmittance) / extinction;
+  s.transmittance *= step_transmittance;
+}
+
+void sky_integral_end(IN(SkyIntegral) s, OUT(vec3) inscatter_total, OUT(vec3) inscatter_split,
+                      OUT(vec3) transmittance_total, OUT(vec3) transmittance_split) {
+  inscatter_split = s.split_done ? s.inscatter_split : s.radiance;
+  transmittance_split = s.split_done ? s.transmittance_split : s.transmittance;
+  inscatter_total = s.radiance;
+  transmittance_total = s.transmittance;
+}
+
 // Single-scattered sky radiance along a view ray from o (relative to the Earth's centre) in
 // direction d over [0, distance], and the transmittance over it. `split` is a distance at which
 // the partial in-scattering is also returned (for compositing clouds). Returns the in-scattered
@@ -62,42 +128,9 @@ vec3 transmittance_to_space(vec3 p, vec3 d, float earth_radius) {
 void sky_single_scattering(vec3 o, vec3 d, float distance, float split, vec3 sun, float earth_radius,
                            int steps, OUT(vec3) inscatter_total, OUT(vec3) inscatter_split,
                            OUT(vec3) transmittance_total, OUT(vec3) transmittance_split) {
-  float nu = dot(d, sun);
-  vec3 rayleigh = rayleigh_scattering() * rayleigh_phase(nu);
-  float mie = MIE_SCATTERING * henyey_greenstein(nu, MIE_ASYMMETRY);
-  float ds = distance / float(steps);
-  vec3 transmittance = vec3(1.0f);
-  vec3 radiance = vec3(0.0f);
-  inscatter_split = vec3(0.0f);
-  transmittance_split = vec3(1.0f);
-  bool split_done = split <= 0.0f;
-  for (int i = 0; i < steps; ++i) {
-    float s0 = float(i) * ds;
-    vec3 q = o + (s0 + 0.5f * ds) * d;
-    float h = length(q) - earth_radius;
-    vec3 extinction = max(air_extinction(h), vec3(1.0e-12f));
-    vec3 source = (rayleigh * exp(-h / RAYLEIGH_SCALE_HEIGHT) + vec3(mie * exp(-h / MIE_SCALE_HEIGHT))) *
-                  transmittance_to_space(q, sun, earth_radius) * solar_irradiance();
-    if (!split_done && s0 + ds > split) {
-      // The split falls in this step: its first part, with the step's source, goes into the
-      // split values.
-      vec3 part_transmittance = exp(-extinction * (split - s0));
-      inscatter_split = radiance + transmittance * source * (vec3(1.0f) - part_transmittance) / extinction;
-      transmittance_split = transmittance * part_transmittance;
-      split_done = true;
-    }
-    // Energy-conserving integration over the step (Hillaire 2016, "Physically Based Sky,
-    // Atmosphere and Cloud Rendering in Frostbite"): source (1 - e^{-sigma ds}) / sigma.
-    vec3 step_transmittance = exp(-extinction * ds);
-    radiance += transmittance * source * (vec3(1.0f) - step_transmittance) / extinction;
-    transmittance *= step_transmittance;
-  }
-  if (!split_done) {
-    inscatter_split = radiance;
-    transmittance_split = transmittance;
-  }
-  inscatter_total = radiance;
-  transmittance_total = transmittance;
+  SkyIntegral s = sky_integral_begin(d, distance, split, sun, steps);
+  for (int i = 0; i < steps; ++i) sky_integral_step(s, sky_integral_point(s, o, d, i), i, sun, earth_radius, 1.0f);
+  sky_integral_end(s, inscatter_total, inscatter_split, transmittance_total, transmittance_split);
 }
 
 #endif

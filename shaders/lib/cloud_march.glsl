@@ -380,23 +380,28 @@ float shadow_depth(vec3 p, vec3 centre, int skip, float min_base, INOUT(int) loo
 // z = 0 through the camera.
 vec2 shadow_map_xy(vec3 q, vec3 centre) { return vec2(q) * (-centre.z / (q.z - centre.z)); }
 
-// The point of layer `layer`'s top shell whose tangent-plane coordinates are xy.
-vec3 shadow_map_origin(vec2 xy, vec3 centre, int layer, IN(MarchParams) m) {
-  return centre + (m.earth_radius + m.layers[layer].top) * normalize(vec3(xy, 0.0f) - centre);
+// The point of the shell at `altitude` whose tangent-plane coordinates are xy.
+vec3 shadow_map_origin(vec2 xy, vec3 centre, float altitude, IN(MarchParams) m) {
+  return centre + (m.earth_radius + altitude) * normalize(vec3(xy, 0.0f) - centre);
 }
 
 // The map's value at uv in [0, 1]^2 (a texel's centre when the pass fills it): the depth through
 // the layers wholly above `layer` from the top shell's point there; the map spans
-// [-shadow_extent, shadow_extent]^2 of the tangent plane.
+// [-shadow_extent, shadow_extent]^2 of the tangent plane. Layer -1: the sky's map, the depth
+// through every layer and convective cloud from the shell of the lowest base (sky_sun_visibility).
 float shadow_map_texel(vec2 uv, vec3 centre, int layer, INOUT(int) loop_count, IN(MarchParams) m MARCH_SOURCES_PARAM) {
-  vec3 q = shadow_map_origin((2.0f * uv - 1.0f) * m.shadow_extent, centre, layer, m);
+  if (layer < 0) {
+    vec3 q = shadow_map_origin((2.0f * uv - 1.0f) * m.shadow_extent, centre, m.sky_shadow_base, m);
+    return shadow_depth(q, centre, -1, -1.0e30f, loop_count, m MARCH_SOURCES_ARG);
+  }
+  vec3 q = shadow_map_origin((2.0f * uv - 1.0f) * m.shadow_extent, centre, m.layers[layer].top, m);
   return layers_shadow_depth(q, centre, layer, m.layers[layer].top, loop_count, m MARCH_SOURCES_ARG);
 }
 
-// Where the sun ray from p (in layer `layer`, below its top) leaves the top shell, as the map's
+// Where the sun ray from p (below the shell at `altitude`) leaves that shell, as the map's
 // coordinates uv.
-vec2 shadow_map_uv(vec3 p, vec3 centre, int layer, IN(MarchParams) m) {
-  vec2 shell = ray_sphere(p, m.sun, centre, m.earth_radius + m.layers[layer].top);
+vec2 shadow_map_uv(vec3 p, vec3 centre, float altitude, IN(MarchParams) m) {
+  vec2 shell = ray_sphere(p, m.sun, centre, m.earth_radius + altitude);
   vec3 q = p + max(shell.y, 0.0f) * m.sun;
   return 0.5f + 0.5f * shadow_map_xy(q, centre) / m.shadow_extent;
 }
@@ -406,7 +411,20 @@ vec2 shadow_map_uv(vec3 p, vec3 centre, int layer, IN(MarchParams) m) {
 float higher_layers_depth(vec3 p, vec3 centre, int layer, IN(MarchParams) m MARCH_SOURCES_PARAM) {
   int map = m.layers[layer].shadow_map;
   if (map < 0) return 0.0f;
-  return LAYER_SHADOW(shadow_map_uv(p, centre, layer, m), map);
+  return LAYER_SHADOW(shadow_map_uv(p, centre, m.layers[layer].top, m), map);
+}
+
+// ---- Crepuscular rays (docs/rendering.md) ----
+// The sun's share at a sample p of the clear-sky integral: exp(-depth through the clouds) below
+// the lowest base, from the sky's map (the same construction as the layers' maps, from the
+// lowest base's shell, so that the air in the clouds' shadows scatters less sunlight: shafts of
+// light and shadow); 1 above the lowest base (within the layers the clouds themselves hide most
+// of that air), outside the map (no cloud is marched beyond max_distance) and without a map.
+float sky_sun_visibility(vec3 p, vec3 centre, IN(MarchParams) m MARCH_SOURCES_PARAM) {
+  if (m.sky_shadow_map < 0 || length(p - centre) >= m.earth_radius + m.sky_shadow_base) return 1.0f;
+  vec2 uv = shadow_map_uv(p, centre, m.sky_shadow_base, m);
+  if (uv.x < 0.0f || uv.y < 0.0f || uv.x > 1.0f || uv.y > 1.0f) return 1.0f;
+  return exp(-LAYER_SHADOW(uv, m.sky_shadow_map));
 }
 
 // The intervals of a view ray inside each layer, in order of distance (start, end in .x, .y):
@@ -608,10 +626,15 @@ vec4 render_pixel(ivec2 pixel, ivec2 size, IN(MarchParams) m, OUT(int) loop_coun
   // The sky's loops (a sun transmittance per step) and the ground's.
   loop_count = clouds.loop_count + 17 * m.sky_steps + 16 + ground_loops;
 
-  // The clear sky, split at the clouds' mean distance for aerial perspective.
+  // The clear sky, split at the clouds' mean distance for aerial perspective, its sunlight
+  // shadowed by the clouds (crepuscular rays).
   vec3 inscatter_total, inscatter_split, transmittance_total, transmittance_split;
-  sky_single_scattering(origin_from_centre, d, ray_end, clouds.distance, m.sun, m.earth_radius, m.sky_steps,
-                        inscatter_total, inscatter_split, transmittance_total, transmittance_split);
+  SkyIntegral sky = sky_integral_begin(d, ray_end, clouds.distance, m.sun, m.sky_steps);
+  for (int i = 0; i < m.sky_steps; ++i) {
+    vec3 q = sky_integral_point(sky, origin_from_centre, d, i);
+    sky_integral_step(sky, q, i, m.sun, m.earth_radius, sky_sun_visibility(q + centre, centre, m MARCH_SOURCES_ARG));
+  }
+  sky_integral_end(sky, inscatter_total, inscatter_split, transmittance_total, transmittance_split);
   vec3 background = vec3(0.0f);
   if (hits_ground) {
     // Lambertian ground (terrain.glsl's albedo), lit by the sun and the sky.

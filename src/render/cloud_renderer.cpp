@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <stdexcept>
 
@@ -264,6 +265,16 @@ glsl::MarchParams march_params(const Camera& camera, const std::vector<regional:
   if (settings.terrain) m.terrain = regional::terrain_params(*settings.terrain);
   m.convective_count = convective != nullptr ? convective->count() : 0;
   for (int c = 0; c < m.convective_count; ++c) m.convective[c] = convective->params(c);
+  // The sky's map (crepuscular rays): the depth through all clouds from the lowest base.
+  m.sky_shadow_map = -1;
+  m.sky_shadow_base = 0.0f;
+  if (settings.shadow_map_size > 0 && m.layer_count + m.convective_count > 0) {
+    float lowest = std::numeric_limits<float>::max();
+    for (int i = 0; i < m.layer_count; ++i) lowest = std::min(lowest, m.layers[i].base);
+    for (int c = 0; c < m.convective_count; ++c) lowest = std::min(lowest, m.convective[c].cloud_base);
+    m.sky_shadow_map = maps;
+    m.sky_shadow_base = lowest;
+  }
   return m;
 }
 
@@ -273,8 +284,10 @@ glsl::MarchParams march_params(const Camera& camera, const std::vector<regional:
 std::uint64_t shadow_map_key(const glsl::MarchParams& p, int size, const NoiseVolume* noise, const regional::WeatherField& field) {
   std::uint64_t h = core::fnv1a(p.layers, sizeof(glsl::LayerParams) * static_cast<std::size_t>(p.layer_count));
   const float numbers[] = {p.earth_radius,   p.camera_altitude, p.sun.x,       p.sun.y,          p.sun.z,
-                           p.shadow_extent,  p.noise_texels,    p.max_distance, p.weather_extent, float(size)};
+                           p.shadow_extent,  p.noise_texels,    p.max_distance, p.weather_extent, float(size),
+                           p.sky_shadow_base, float(p.sky_shadow_map)};
   h = core::fnv1a(numbers, sizeof numbers, h);
+  h = core::fnv1a(p.convective, sizeof(glsl::ConvectiveParams) * static_cast<std::size_t>(p.convective_count), h);
   const std::uint64_t volume[] = {noise != nullptr ? noise->texture() : 0u, noise != nullptr ? noise->seed() : 0u};
   h = core::fnv1a(volume, sizeof volume, h);
   return core::fnv1a(field.values.data(), field.values.size() * sizeof(float), h);
@@ -283,6 +296,7 @@ std::uint64_t shadow_map_key(const glsl::MarchParams& p, int size, const NoiseVo
 int shadow_map_count(const glsl::MarchParams& params) {
   int maps = 0;
   for (int layer = 0; layer < params.layer_count; ++layer) maps += params.layers[layer].shadow_map >= 0 ? 1 : 0;
+  if (params.sky_shadow_map >= 0) ++maps;
   return maps;
 }
 
@@ -367,8 +381,8 @@ RenderResult render_clouds(const Camera& camera, const std::vector<regional::Clo
       glBindTextureUnit(2, weather);
       glBindTextureUnit(4, terrain);
       glBindTextureUnit(5, convective != nullptr ? convective->texture() : 0);
-      for (int layer = 0; layer < params.layer_count; ++layer)
-        if (params.layers[layer].shadow_map >= 0) {
+      for (int layer = -1; layer < params.layer_count; ++layer)
+        if (layer >= 0 ? params.layers[layer].shadow_map >= 0 : params.sky_shadow_map >= 0) {
           program.set("u_layer", layer);
           program.dispatch_covering(size, size, 1);
         }

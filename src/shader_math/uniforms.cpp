@@ -68,6 +68,8 @@ void set_uniform(const gpu::ComputeProgram& program, const std::string& name, co
   program.set(name + ".noise_texels", params.noise_texels);
   program.set(name + ".frame", params.frame);
   program.set(name + ".shadow_extent", params.shadow_extent);
+  program.set(name + ".sky_shadow_map", params.sky_shadow_map);
+  program.set(name + ".sky_shadow_base", params.sky_shadow_base);
   program.set(name + ".powder", params.powder);
   program.set(name + ".terrain.enabled", params.terrain.enabled);
   program.set(name + ".terrain.extent", params.terrain.extent);

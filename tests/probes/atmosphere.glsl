@@ -10,6 +10,19 @@ vec4 probe_atmosphere(mat4 x) {
   if (f == 1) return vec4(solar_irradiance(), henyey_greenstein(x[0].z, x[0].w));
   if (f == 2) return vec4(air_extinction(x[0].z) * 1.0e5f, 0.0f);
   if (f == 3) return vec4(transmittance_to_space(vec3(x[1]), vec3(x[2]), earth_radius), 0.0f);
+  if (f == 5) {
+    // The same integral step by step with the sun's share x[0].w at the odd steps (1 at the
+    // others): the in-scattering of part x[0].z (0 total, 1 split, scaled by 1e3) and the total
+    // transmittance's green.
+    SkyIntegral s = sky_integral_begin(vec3(x[2]), x[1].w, x[2].w, vec3(x[3]), int(x[3].w));
+    for (int i = 0; i < int(x[3].w); ++i) {
+      sky_integral_step(s, sky_integral_point(s, vec3(x[1]), vec3(x[2]), i), i, vec3(x[3]), earth_radius,
+                        i % 2 == 1 ? x[0].w : 1.0f);
+    }
+    vec3 total, split, transmittance, transmittance_split;
+    sky_integral_end(s, total, split, transmittance, transmittance_split);
+    return vec4((x[0].z == 0.0f ? total : split) * 1.0e3f, transmittance.y);
+  }
   // sky_single_scattering from x[1] along x[2] over x[1].w metres (split at x[2].w) towards the
   // sun x[3] with int(x[3].w) steps; x[0].z picks which of its four results to return
   // (radiances scaled by 1e3 to order one).

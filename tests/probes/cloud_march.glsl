@@ -49,6 +49,8 @@ MarchParams probe_march_params() {
   m.weather_extent = 40000.0f;
   m.max_distance = 150000.0f;
   m.shadow_extent = 30000.0f;
+  m.sky_shadow_map = -1;  // the one map is the cumulus's (function 20 lends it to the sky)
+  m.sky_shadow_base = 1500.0f;
   m.powder = 0.0f;
   m.pixel_angle = 0.0875f;
   m.noise_texels = 16.0f;
@@ -135,13 +137,21 @@ vec4 probe_cloud_march(mat4 x MARCH_SOURCES_PARAM) {
   if (f == 17) {
     // The shadow map of layer x[0].y: where p's sun ray leaves the layer's top (uv), and the
     // depth read there.
-    vec2 uv = shadow_map_uv(p, centre, layer, m);
+    vec2 uv = shadow_map_uv(p, centre, m.layers[layer].top, m);
     return vec4(uv, higher_layers_depth(p, centre, layer, m MARCH_SOURCES_ARG), 0.0f);
+  }
+  if (f == 20) {
+    // Crepuscular rays: map 0 as the sky's, from the shell at altitude x[0].z: where p's sun ray
+    // leaves it (uv) and the sun's share at p.
+    m.sky_shadow_map = 0;
+    m.sky_shadow_base = x[0].z;
+    vec2 uv = shadow_map_uv(p, centre, x[0].z, m);
+    return vec4(uv, sky_sun_visibility(p, centre, m MARCH_SOURCES_ARG), 0.0f);
   }
   if (f == 18) {
     // The top shell's point above the tangent-plane coordinates x[3].xy, and its coordinates
     // again.
-    vec3 q = shadow_map_origin(vec2(x[3]), centre, layer, m);
+    vec3 q = shadow_map_origin(vec2(x[3]), centre, m.layers[layer].top, m);
     vec2 xy = shadow_map_xy(q, centre);
     return vec4(length(q - centre) - m.earth_radius, xy.x - x[3].x, xy.y - x[3].y, 0.0f);
   }
@@ -149,7 +159,7 @@ vec4 probe_cloud_march(mat4 x MARCH_SOURCES_PARAM) {
     // Depths through the layers above: the texel value at uv = x[3].xy, and the march from the
     // top shell's point there.
     int loops = 0;
-    vec3 q = shadow_map_origin((2.0f * vec2(x[3]) - 1.0f) * m.shadow_extent, centre, layer, m);
+    vec3 q = shadow_map_origin((2.0f * vec2(x[3]) - 1.0f) * m.shadow_extent, centre, m.layers[layer].top, m);
     return vec4(shadow_map_texel(vec2(x[3]), centre, layer, loops, m MARCH_SOURCES_ARG),
                 layers_shadow_depth(q, centre, layer, m.layers[layer].top, loops, m MARCH_SOURCES_ARG), 0.0f, 0.0f);
   }
