@@ -147,3 +147,49 @@ TEST_CASE("cyclones are cloudier than anticyclones, and the cyclone cloudiness m
   CHECK(with > 0.12);
   CHECK(with > without + 0.08);
 }
+
+TEST_CASE("the storm tracks follow the season of --month, as the latitude profile does", "[curl][climate]") {
+  // The annual mean keeps its envelope to the bit.
+  CHECK(cover::storm_track_shift(0) == 0.0);
+  cover::CoverParameters p;
+  CHECK(cover::curl_params(p).storm_track_shift == 0.0f);
+  // August: the northern track at 50 + seasonal_shift_deg(50, 8), about 3 degrees north; the
+  // southern one (the other root of A(z - s)'s peak, z - s = -sin 50) moves north by about as
+  // much; February the other way.
+  const auto envelope = [](double latitude_deg, double shift) {
+    return double(storm_track_envelope(float(std::sin(latitude_deg * M_PI / 180.0) - shift), 0.6f).x);
+  };
+  const auto peak = [&](double from, double to, double shift) {
+    double best = from, best_value = -1;
+    for (double lat = from; lat <= to; lat += 0.01)
+      if (envelope(lat, shift) > best_value) best_value = envelope(lat, shift), best = lat;
+    return best;
+  };
+  for (int month : {8, 2}) {
+    const double s = cover::storm_track_shift(month);
+    const double expected = cover::seasonal_shift_deg(50.0, month);
+    INFO("month " << month << ": s " << s << ", the profile's storm-track shift " << expected << " degrees");
+    CHECK(std::abs(expected) > 2.9);
+    CHECK(peak(30, 70, s) == Approx(50.0 + expected).margin(0.02));
+    CHECK(peak(-70, -30, s) - (-50.0) == Approx(expected).margin(0.25 * std::abs(expected)));
+  }
+  // The flow itself: its cyclonic depth is A(z - s) times a part that does not depend on the
+  // month, so August's over the annual mean's is A(z - s) / A(z) at every point (float rounding
+  // of the two products: a few ulp of the larger).
+  p.month = 8;
+  const CurlParams august = cover::curl_params(p);
+  p.month = 0;
+  const CurlParams mean = cover::curl_params(p);
+  REQUIRE(august.storm_track_shift == float(cover::storm_track_shift(8)));
+  std::mt19937 rng(5);
+  for (int k = 0; k < 500; ++k) {
+    const vec3 n = random_unit(rng);
+    const float c_august = curl_flow_shifted(n, august, vec3(0.0f)).w;
+    const float c_mean = curl_flow_shifted(n, mean, vec3(0.0f)).w;
+    const float a_august = storm_track_envelope(n.z - august.storm_track_shift, august.storm_tracks).x;
+    const float a_mean = storm_track_envelope(n.z, mean.storm_tracks).x;
+    INFO("point " << k << " z " << n.z);
+    CHECK(std::abs(c_august * a_mean - c_mean * a_august) <=
+          8.0f / 16777216.0f * std::max(std::abs(c_august * a_mean), std::abs(c_mean * a_august)) + 1e-30f);
+  }
+}

@@ -32,7 +32,8 @@ std::string literal(const FbmParams& p) {
 std::string literal(const CurlParams& c) {
   return "CurlParams(" + literal(c.potential_north) + ", " + literal(c.potential_south) + ", " +
          literal(c.prevailing) + ", " + literal(c.mix_frequency) + ", " + literal(c.strength) + ", " +
-         literal(c.smoothing) + ", " + literal(c.storm_tracks) + ", " + std::to_string(c.zonal_cells) + ")";
+         literal(c.smoothing) + ", " + literal(c.storm_tracks) + ", " + std::to_string(c.zonal_cells) + ", " +
+         literal(c.storm_track_shift) + ")";
 }
 
 // One float rounding, relative: 2^-24.

@@ -70,7 +70,8 @@ vec4 curl_flow_shifted(vec3 n, IN(CurlParams) params, vec3 offset) {
   vec3 north = vec3(0.0f, 0.0f, 1.0f) - z * n;
   float north_length = length(north);  // cos(latitude)
   north = north_length > 1.0e-6f ? north / north_length : vec3(0.0f);
-  vec2 envelope = storm_track_envelope(z, params.storm_tracks);
+  // The tracks follow the season (--month): A(z - s) moves both north by about s / cos 50 deg.
+  vec2 envelope = storm_track_envelope(z - params.storm_track_shift, params.storm_tracks);
   float vortices = 0.5f * (1.0f - m) * w2.w - 0.5f * (1.0f + m) * w1.w;
   float zonal = zonal_profile_derivative(z, north_length, params.zonal_cells, dm_dlatitude);
   vec3 gradient = envelope.x * ((0.5f * (1.0f - m)) * vec3(w2) - (0.5f * (1.0f + m)) * vec3(w1)) +

@@ -21,6 +21,7 @@ struct CurlParams {
   float smoothing;            // lambda of smooth_worley (worley.glsl); 0: classic 1 - F1
   float storm_tracks;         // f: focus of the vortices on the storm tracks (0: none, 1: none at the equator)
   int zonal_cells;            // circulation cells per hemisphere of the zonal winds (0: they follow m)
+  float storm_track_shift;    // s: the envelope is A(z - s), its tracks moved north with --month (0: annual mean)
 };
 
 #endif

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "cover/latitude_profile.hpp"
+
 namespace nephele::cover {
 
 std::uint32_t layer_seed(std::uint32_t seed, NoiseLayer layer) {
@@ -20,6 +22,7 @@ glsl::CurlParams curl_params(const CoverParameters& p) {
                      p.prevailing, p.mix_frequency, p.curl_strength, p.curl_smoothing, p.storm_tracks,
                      p.zonal_cells};
   c.potential_north.period = c.potential_south.period = glsl::ivec3(offset_period_cells(p.potential, p.noise_offset));
+  c.storm_track_shift = static_cast<float>(storm_track_shift(p.month));
   return c;
 }
 

@@ -107,6 +107,12 @@ double seasonal_shift_deg(double latitude_deg, int month) {
   return season * amplitude * smoothstep(0.0, 20.0, 90.0 - std::abs(latitude_deg));
 }
 
+double storm_track_shift(int month) {
+  if (month == 0) return 0.0;  // exactly the annual mean's envelope
+  const double track = 50.0;    // curl_flow.glsl's storm_track_envelope
+  return std::sin((track + seasonal_shift_deg(track, month)) * degree) - std::sin(track * degree);
+}
+
 std::vector<double> band_areas(int bands) {
   std::vector<double> areas(static_cast<size_t>(bands));
   for (int b = 0; b < bands; ++b) {

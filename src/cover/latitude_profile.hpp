@@ -35,6 +35,10 @@ double profile_fraction(const LatitudeProfile& profile, double latitude_deg);
 // month (1 = January .. 12; 0 = the annual mean, no shift): the ITCZ by up to 5 degrees, the
 // storm tracks by up to 3, northernmost in August, tapered to 0 at the poles.
 double seasonal_shift_deg(double latitude_deg, int month);
+// The flow's storm-track envelope follows the same season: CurlParams::storm_track_shift, the
+// s of A(z - s), puts the northern track at 50 degrees + seasonal_shift_deg(50, month) (the
+// southern moves north by about as much). 0 for month 0.
+double storm_track_shift(int month);
 
 // The target of each of `bands` bands (south pole first): the area-weighted (cos latitude)
 // mean of the shifted profile over the band, rescaled so that the area-weighted mean over the

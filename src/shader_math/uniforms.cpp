@@ -28,6 +28,7 @@ void set_uniform(const gpu::ComputeProgram& program, const std::string& name, co
   program.set(name + ".strength", params.strength);
   program.set(name + ".smoothing", params.smoothing);
   program.set(name + ".storm_tracks", params.storm_tracks);
+  program.set(name + ".storm_track_shift", params.storm_track_shift);
   program.set(name + ".zonal_cells", params.zonal_cells);
 }
 

@@ -25,6 +25,7 @@ CurlParams curl_flow_probe_params(mat4 x) {
   c.smoothing = int(x[0].x) == 1 ? 0.0f : 0.3f;
   c.storm_tracks = int(x[0].x) == 1 ? 0.0f : 0.6f;
   c.zonal_cells = int(x[0].x) == 1 ? 0 : int(x[0].x) + 1;  // 0: 1 cell, 2: 3 cells
+  c.storm_track_shift = int(x[0].x) == 2 ? 0.0326f : 0.0f;  // function 2: August's tracks
   return c;
 }
 vec4 probe_curl_flow(mat4 x) {

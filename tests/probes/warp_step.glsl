@@ -25,6 +25,7 @@ CurlParams warp_probe_curl() {
   c.smoothing = 0.0f;  // the classic potential these cases were set up with
   c.storm_tracks = 0.0f;
   c.zonal_cells = 0;
+  c.storm_track_shift = 0.0f;
   return c;
 }
 #ifdef __cplusplus
