@@ -103,26 +103,31 @@ TEST_CASE("the marcher on the GPU agrees with its C++ twin pixel by pixel", "[re
     const auto gpu = render::render_clouds(cam, layers, field, time, settings, wind, wind_speed, &noise);
     const glsl::MarchParams params = render::march_params(cam, layers, field, time, settings, wind, wind_speed);
     REQUIRE(params.layer_count == 3);
-    // The cumulus has the alto and the cirrus above it, the alto the cirrus: two maps, and the
-    // sky's from the cumulus's base (crepuscular rays).
-    REQUIRE(render::shadow_map_count(params) == 3);
-    REQUIRE(params.sky_shadow_map == 2);
+    // The cumulus has the alto and the cirrus above it, the alto the cirrus: two maps; and the
+    // sky's from the cumulus's base (crepuscular rays), 4 x 4 texels in a texture of its own.
+    REQUIRE(render::shadow_map_count(params) == 2);
+    REQUIRE(gpu.shadow_maps.size() == 2u * 16 * 16);
+    sources.shadows = {16, 2, gpu.shadow_maps.data()};
+    REQUIRE(params.sky_shadow_map == 0);
     REQUIRE(params.sky_shadow_base == 1500.0f);
-    REQUIRE(gpu.shadow_maps.size() == 3u * 16 * 16);
-    sources.shadows = {16, 3, gpu.shadow_maps.data()};
+    REQUIRE(render::sky_shadow_map_size(16) == 4);
+    REQUIRE(gpu.sky_shadow_map.size() == 4u * 4);
+    sources.sky_shadow = {4, 1, gpu.sky_shadow_map.data()};
     // Each texel against the C++ twin: a shadow march through thin layers (relative tolerance).
     const glm::vec3 centre(0.0f, 0.0f, -(params.earth_radius + params.camera_altitude));
-    for (int layer = -1; layer < 2; ++layer)
-      for (int j = 0; j < 16; ++j)
-        for (int i = 0; i < 16; ++i) {
+    for (int layer = -1; layer < 2; ++layer) {
+      const int size = layer >= 0 ? 16 : 4;
+      for (int j = 0; j < size; ++j)
+        for (int i = 0; i < size; ++i) {
           int loops = 0;
-          const float cpu = glsl::shadow_map_texel(glm::vec2((i + 0.5f) / 16, (j + 0.5f) / 16), centre, layer, loops,
+          const float cpu = glsl::shadow_map_texel(glm::vec2((i + 0.5f) / size, (j + 0.5f) / size), centre, layer, loops,
                                                    params, sources);
-          const int map = layer >= 0 ? params.layers[layer].shadow_map : params.sky_shadow_map;
-          const float g = gpu.shadow_maps[(static_cast<size_t>(map) * 16 + j) * 16 + i];
+          const float g = layer >= 0 ? gpu.shadow_maps[(static_cast<size_t>(params.layers[layer].shadow_map) * 16 + j) * 16 + i]
+                                     : gpu.sky_shadow_map[static_cast<size_t>(j) * 4 + i];
           INFO("map of layer " << layer << " texel " << i << ", " << j << ": GPU " << g << ", CPU " << cpu);
           CHECK(std::abs(g - cpu) <= tolerance * std::max(cpu, 1e-6f));
         }
+    }
     int cloudy = 0;
     int limited = 0;
     double worst = 0;
@@ -189,8 +194,8 @@ TEST_CASE("a layer under an overcast layer reads the depth through it from its s
   const glsl::MarchParams params = render::march_params(camera(false), two, field, time, settings);
   REQUIRE(params.layers[0].shadow_map == 0);
   REQUIRE(params.layers[1].shadow_map == -1);
-  REQUIRE(render::shadow_map_count(params) == 2);  // and the sky's
-  REQUIRE(params.sky_shadow_map == 1);
+  REQUIRE(render::shadow_map_count(params) == 1);
+  REQUIRE(params.sky_shadow_map == 0);  // and the sky's, in its own texture
   const glm::vec3 centre(0.0f, 0.0f, -(params.earth_radius + params.camera_altitude));
   // The map made on the CPU, 32 x 32 texels over 300 km.
   const int size = 32;
@@ -241,14 +246,17 @@ TEST_CASE("a layer under an overcast layer reads the depth through it from its s
     for (const auto& p : r.passes) all += p + "; ";
     return all;
   };
-  CHECK(passes_of(render::render_clouds(small, two, field, time, settings, {0, 1}, 0, &noise)).find("layer_shadows (2 of 8^2)") !=
-        std::string::npos);
-  CHECK(passes_of(render::render_clouds(small, {two[0]}, field, time, settings, {0, 1}, 0, &noise)).find("layer_shadows (1 of 8^2)") !=
-        std::string::npos);
+  const std::string both = passes_of(render::render_clouds(small, two, field, time, settings, {0, 1}, 0, &noise));
+  CHECK(both.find("layer_shadows (1 of 8^2)") != std::string::npos);
+  CHECK(both.find("sky_shadow (2^2)") != std::string::npos);
+  const std::string one = passes_of(render::render_clouds(small, {two[0]}, field, time, settings, {0, 1}, 0, &noise));
+  CHECK(one.find("layer_shadows") == std::string::npos);
+  CHECK(one.find("sky_shadow (2^2)") != std::string::npos);
   render::RenderSettings no_maps = settings;
   no_maps.shadow_map_size = 0;
-  CHECK(passes_of(render::render_clouds(small, two, field, time, no_maps, {0, 1}, 0, &noise)).find("layer_shadows") ==
-        std::string::npos);
+  const std::string none = passes_of(render::render_clouds(small, two, field, time, no_maps, {0, 1}, 0, &noise));
+  CHECK(none.find("layer_shadows") == std::string::npos);
+  CHECK(none.find("sky_shadow") == std::string::npos);
   // With a cache (the viewer's bands) the maps are made once while nothing they depend on
   // changes, and the image is the same to the bit; another sun makes them again.
   const auto without_cache = render::render_clouds(small, two, field, time, settings, {0, 1}, 0, &noise);
@@ -258,9 +266,11 @@ TEST_CASE("a layer under an overcast layer reads the depth through it from its s
   turned.heading_deg += 40;  // the view's direction: not in the maps
   const auto again = render::render_clouds(turned, two, field, time, settings, {0, 1}, 0, &noise);
   const auto later = render::render_clouds(small, two, field, time + 3600, settings, {0, 1}, 0, &noise);
-  CHECK(passes_of(first).find("layer_shadows (2 of 8^2)") != std::string::npos);
+  CHECK(passes_of(first).find("layer_shadows (1 of 8^2)") != std::string::npos);
   CHECK(passes_of(again).find("layer_shadows (reused)") != std::string::npos);
-  CHECK(passes_of(later).find("layer_shadows (2 of 8^2)") != std::string::npos);
+  CHECK(passes_of(again).find("sky_shadow (reused)") != std::string::npos);
+  CHECK(passes_of(later).find("layer_shadows (1 of 8^2)") != std::string::npos);
+  CHECK(passes_of(later).find("sky_shadow (2^2)") != std::string::npos);
   CHECK(first.radiance.pixels == without_cache.radiance.pixels);
 }
 
@@ -285,7 +295,7 @@ TEST_CASE("the air below an overcast layer scatters no direct sunlight: a pixel 
   // The sky's map made on the CPU, 16 x 16 texels over 300 km.
   const int size = 16;
   const std::vector<float> map = cpu_shadow_map(size, -1, params, sources);
-  sources.shadows = {size, 1, map.data()};
+  sources.sky_shadow = {size, 1, map.data()};
   // The overcast's optical depth, at least its vertical 2e-2 x 600 x 0.753 x 0.7 = 6.3 (the
   // test above): the air below keeps at most e^-6.3 = 0.0018 of the direct sun.
   const float least_depth = 2e-2f * 600 * 0.753f * 0.7f;

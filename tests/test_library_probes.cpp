@@ -813,10 +813,12 @@ TEST_CASE("cloud_march.glsl on the GPU agrees with the CPU", "[probe][march]") {
   glTextureParameteri(shadow_texture, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
   glTextureParameteri(shadow_texture, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
   glBindTextureUnit(6, shadow_texture);
+  glBindTextureUnit(7, shadow_texture);  // function 20 reads it as the sky's map
   MarchSources sources;
   sources.noise = noise.host_copy();
   sources.weather = {size, channels, weather.data()};
   sources.shadows = {size, 1, shadow.data()};
+  sources.sky_shadow = sources.shadows;
   auto cpu = [&](const mat4& x) { return probe_cloud_march(x, sources); };
 
   // Altitudes are rounded at the scale of the Earth's radius (march_tolerance.hpp): the height

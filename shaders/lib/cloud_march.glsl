@@ -17,6 +17,7 @@
 //                         trilinear, clamped to the edge (docs/convection.md)
 //   LAYER_SHADOW(uv, map)  float: shadow map `map` (higher_layers_depth below) at uv in [0, 1]^2,
 //                         bilinear, clamped to the edge
+//   SKY_SHADOW(uv)        float: the sky's shadow map (sky_sun_visibility below) likewise
 #ifndef NEPHELE_CLOUD_MARCH_GLSL
 #define NEPHELE_CLOUD_MARCH_GLSL
 #include "prelude.glsl"
@@ -417,14 +418,15 @@ float higher_layers_depth(vec3 p, vec3 centre, int layer, IN(MarchParams) m MARC
 // ---- Crepuscular rays (docs/rendering.md) ----
 // The sun's share at a sample p of the clear-sky integral: exp(-depth through the clouds) below
 // the lowest base, from the sky's map (the same construction as the layers' maps, from the
-// lowest base's shell, so that the air in the clouds' shadows scatters less sunlight: shafts of
-// light and shadow); 1 above the lowest base (within the layers the clouds themselves hide most
+// lowest base's shell, in a texture of its own at a quarter of their size: the sky's samples lie
+// kilometres apart), so that the air in the clouds' shadows scatters less sunlight: shafts of
+// light and shadow; 1 above the lowest base (within the layers the clouds themselves hide most
 // of that air), outside the map (no cloud is marched beyond max_distance) and without a map.
 float sky_sun_visibility(vec3 p, vec3 centre, IN(MarchParams) m MARCH_SOURCES_PARAM) {
   if (m.sky_shadow_map < 0 || length(p - centre) >= m.earth_radius + m.sky_shadow_base) return 1.0f;
   vec2 uv = shadow_map_uv(p, centre, m.sky_shadow_base, m);
   if (uv.x < 0.0f || uv.y < 0.0f || uv.x > 1.0f || uv.y > 1.0f) return 1.0f;
-  return exp(-LAYER_SHADOW(uv, m.sky_shadow_map));
+  return exp(-SKY_SHADOW(uv));
 }
 
 // The intervals of a view ray inside each layer, in order of distance (start, end in .x, .y):

@@ -70,7 +70,7 @@ struct MarchParams {
   float noise_texels;      // texels per side of the noise volume
   int frame;               // which frame of a temporal accumulation (shifts the jitter)
   float shadow_extent;     // half-size of the shadow maps' square (cloud_march.glsl), metres
-  int sky_shadow_map;      // the sky's shadow map (crepuscular rays), -1: none
+  int sky_shadow_map;      // the sky's shadow map (crepuscular rays): its layer (0) of its own texture, -1: none
   float sky_shadow_base;   // its shell's altitude: the lowest layer base, metres
   float powder;            // strength of the powder term (cloud_density.glsl), 0: none
   TerrainParams terrain;   // the ground (its heights are the third texture)

@@ -8,6 +8,8 @@ layout(binding = 4) uniform sampler2D terrain_heights;  // terrain.glsl's height
 layout(binding = 5) uniform sampler3D convective_volumes;
 // The shadow maps of the layers with layers above them (render/layer_shadows.comp).
 layout(binding = 6) uniform sampler2DArray layer_shadows;
+// The sky's shadow map (crepuscular rays; render/layer_shadows.comp with layer -1), layer 0.
+layout(binding = 7) uniform sampler2DArray sky_shadow;
 
 #define MARCH_SOURCES_PARAM
 #define MARCH_SOURCES_ARG
@@ -20,6 +22,7 @@ layout(binding = 6) uniform sampler2DArray layer_shadows;
 #define MARCH_TERRAIN_ARG
 #define CONVECTIVE_DENSITY(q, cloud) texture(convective_volumes, convective_texel(q, cloud)).x
 #define LAYER_SHADOW(uv, map) texture(layer_shadows, vec3(uv, float(map))).x
+#define SKY_SHADOW(uv) texture(sky_shadow, vec3(uv, 0.0f)).x
 // Volume c's coordinates q in the stack, z clamped to its own texel centres (so it is read as
 // its own texture with GL_CLAMP_TO_EDGE would be, the C++ twin's ConvectiveSource).
 vec3 convective_texel(vec3 q, int cloud) {

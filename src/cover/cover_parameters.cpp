@@ -20,9 +20,8 @@ glsl::CurlParams curl_params(const CoverParameters& p) {
   glsl::CurlParams c{fbm_params(p.potential, p.seed, NoiseLayer::potential_north),
                      fbm_params(p.potential, p.seed, NoiseLayer::potential_south),
                      p.prevailing, p.mix_frequency, p.curl_strength, p.curl_smoothing, p.storm_tracks,
-                     p.zonal_cells};
+                     p.zonal_cells, static_cast<float>(storm_track_shift(p.month))};
   c.potential_north.period = c.potential_south.period = glsl::ivec3(offset_period_cells(p.potential, p.noise_offset));
-  c.storm_track_shift = static_cast<float>(storm_track_shift(p.month));
   return c;
 }
 

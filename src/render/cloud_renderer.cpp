@@ -272,7 +272,7 @@ glsl::MarchParams march_params(const Camera& camera, const std::vector<regional:
     float lowest = std::numeric_limits<float>::max();
     for (int i = 0; i < m.layer_count; ++i) lowest = std::min(lowest, m.layers[i].base);
     for (int c = 0; c < m.convective_count; ++c) lowest = std::min(lowest, m.convective[c].cloud_base);
-    m.sky_shadow_map = maps;
+    m.sky_shadow_map = 0;  // layer 0 of its own texture
     m.sky_shadow_base = lowest;
   }
   return m;
@@ -293,10 +293,11 @@ std::uint64_t shadow_map_key(const glsl::MarchParams& p, int size, const NoiseVo
   return core::fnv1a(field.values.data(), field.values.size() * sizeof(float), h);
 }
 
+int sky_shadow_map_size(int shadow_map_size) { return shadow_map_size > 0 ? std::max(1, shadow_map_size / 4) : 0; }
+
 int shadow_map_count(const glsl::MarchParams& params) {
   int maps = 0;
   for (int layer = 0; layer < params.layer_count; ++layer) maps += params.layers[layer].shadow_map >= 0 ? 1 : 0;
-  if (params.sky_shadow_map >= 0) ++maps;
   return maps;
 }
 
@@ -360,39 +361,58 @@ RenderResult render_clouds(const Camera& camera, const std::vector<regional::Clo
                            " needs a phase below it, the whole image and one frame");
   const glsl::MarchParams params =
       march_params(camera, layers, field, unix_seconds, settings, wind_towards, wind_speed, convective);
-  // The layers' shadow maps, only where a layer has layers above it.
+  // The layers' shadow maps, only where a layer has layers above it, and the sky's wherever
+  // there is cloud (crepuscular rays), a quarter of their size.
   const int maps = shadow_map_count(params);
+  const bool sky_map = params.sky_shadow_map >= 0;
   // A caller's cache (the viewer's bands of one frame) keeps them while nothing they depend on
   // changes; without one they are made for this render alone.
   const std::shared_ptr<ShadowMapCache> cache =
       settings.shadow_cache ? settings.shadow_cache : std::make_shared<ShadowMapCache>();
   gpu::Texture& shadow_maps = cache->maps;
-  const std::uint64_t key = maps > 0 ? shadow_map_key(params, settings.shadow_map_size, noise, field) : 0;
-  if (maps > 0 && shadow_maps.id() != 0 && cache->key == key) {
-    result.passes.push_back("layer_shadows (reused)");
-  } else if (maps > 0) {
-    const int size = settings.shadow_map_size;
-    timed("layer_shadows", [&] {
-      shadow_maps = gpu::Texture::layered(size, size, maps, GL_R32F);
-      gpu::ComputeProgram program("render/layer_shadows.comp");
-      glsl::set_uniform(program, "u_march", params);
-      shadow_maps.bind_image(0, GL_WRITE_ONLY);
-      glBindTextureUnit(1, noise != nullptr ? noise->texture() : 0);
-      glBindTextureUnit(2, weather);
-      glBindTextureUnit(4, terrain);
-      glBindTextureUnit(5, convective != nullptr ? convective->texture() : 0);
-      for (int layer = -1; layer < params.layer_count; ++layer)
-        if (layer >= 0 ? params.layers[layer].shadow_map >= 0 : params.sky_shadow_map >= 0) {
-          program.set("u_layer", layer);
-          program.dispatch_covering(size, size, 1);
-        }
-      gpu::image_barrier();
-    });
-    filter_linear_clamped(shadow_maps.id());
-    result.passes.push_back("layer_shadows (" + std::to_string(maps) + " of " + std::to_string(size) + "^2)");
+  gpu::Texture& sky_shadow = cache->sky;
+  const std::uint64_t key = maps > 0 || sky_map ? shadow_map_key(params, settings.shadow_map_size, noise, field) : 0;
+  const auto fill_maps = [&](gpu::Texture& target, int size, int first_layer, int last_layer) {
+    gpu::ComputeProgram program("render/layer_shadows.comp");
+    glsl::set_uniform(program, "u_march", params);
+    target.bind_image(0, GL_WRITE_ONLY);
+    glBindTextureUnit(1, noise != nullptr ? noise->texture() : 0);
+    glBindTextureUnit(2, weather);
+    glBindTextureUnit(4, terrain);
+    glBindTextureUnit(5, convective != nullptr ? convective->texture() : 0);
+    for (int layer = first_layer; layer <= last_layer; ++layer)
+      if (layer < 0 || params.layers[layer].shadow_map >= 0) {
+        program.set("u_layer", layer);
+        program.dispatch_covering(size, size, 1);
+      }
+    gpu::image_barrier();
+    filter_linear_clamped(target.id());
+  };
+  const bool cached = cache->key == key && (maps == 0 || shadow_maps.id() != 0) && (!sky_map || sky_shadow.id() != 0);
+  if ((maps > 0 || sky_map) && cached) {
+    if (maps > 0) result.passes.push_back("layer_shadows (reused)");
+    if (sky_map) result.passes.push_back("sky_shadow (reused)");
+  } else {
+    if (maps > 0) {
+      const int size = settings.shadow_map_size;
+      timed("layer_shadows", [&] {
+        shadow_maps = gpu::Texture::layered(size, size, maps, GL_R32F);
+        fill_maps(shadow_maps, size, 0, params.layer_count - 1);
+      });
+      result.passes.push_back("layer_shadows (" + std::to_string(maps) + " of " + std::to_string(size) + "^2)");
+    }
+    if (sky_map) {
+      const int size = sky_shadow_map_size(settings.shadow_map_size);
+      timed("sky_shadow", [&] {
+        sky_shadow = gpu::Texture::layered(size, size, 1, GL_R32F);
+        fill_maps(sky_shadow, size, -1, -1);
+      });
+      result.passes.push_back("sky_shadow (" + std::to_string(size) + "^2)");
+    }
     cache->key = key;
   }
   if (maps > 0 && settings.read_shadow_maps) result.shadow_maps = shadow_maps.read();
+  if (sky_map && settings.read_shadow_maps) result.sky_shadow_map = sky_shadow.read();
   gpu::Texture image = gpu::Texture::plane(camera.width, camera.height, GL_RGBA32F);
   // Frames of an accumulation, each with its own jitter of the march start, averaged.
   std::vector<double> sum;
@@ -408,6 +428,7 @@ RenderResult render_clouds(const Camera& camera, const std::vector<regional::Clo
     glBindTextureUnit(4, terrain);
     glBindTextureUnit(5, convective != nullptr ? convective->texture() : 0);
     glBindTextureUnit(6, maps > 0 ? shadow_maps.id() : 0);
+    glBindTextureUnit(7, sky_map ? sky_shadow.id() : 0);
     GLuint guard = 0;
     // The count, then a bit per pixel of the whole image.
     const std::vector<GLuint> zeros(1 + (static_cast<std::size_t>(camera.width) * camera.height + 31) / 32, 0u);

@@ -39,6 +39,7 @@ CameraFrame camera_frame(const Camera& camera);
 // viewer's bands of one frame): render_clouds makes them again only when their key changes.
 struct ShadowMapCache {
   gpu::Texture maps;
+  gpu::Texture sky;  // the sky's map (crepuscular rays)
   std::uint64_t key = 0;
 };
 
@@ -88,6 +89,7 @@ struct RenderResult {
   // With RenderSettings::read_shadow_maps: the maps, shadow_map_size^2 floats each in the order
   // of LayerParams::shadow_map, rows from v = 0 (south).
   std::vector<float> shadow_maps;
+  std::vector<float> sky_shadow_map;  // likewise the sky's, sky_shadow_map_size^2 floats
   std::vector<std::uint32_t> loop_limited_bits;
   // The march lattice this render used (RenderSettings::march_stride, march_phase): with a
   // stride above 1 only its pixels hold values (render/reprojection.hpp fills the others).
@@ -152,6 +154,10 @@ glsl::MarchParams march_params(const Camera& camera, const std::vector<regional:
 
 // How many shadow maps a render with these parameters makes (layers with layers above them).
 int shadow_map_count(const glsl::MarchParams& params);
+// Texels per side of the sky's shadow map (crepuscular rays; MarchParams::sky_shadow_map): a
+// quarter of the layers' maps, since the clear-sky integral's samples lie kilometres apart; 0
+// with shadow_map_size 0.
+int sky_shadow_map_size(int shadow_map_size);
 
 // Needs a current OpenGL 4.5 context. Layers whose coverage channel is zero everywhere in the
 // field are not marched (their absence is listed in passes). The noise volume is made when a

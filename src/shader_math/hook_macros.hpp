@@ -20,6 +20,7 @@
 #define MARCH_TERRAIN_ARG , sources.terrain
 #define CONVECTIVE_DENSITY(q, cloud) sources.convective.sample(q, cloud)
 #define LAYER_SHADOW(uv, map) sources.shadows.sample(uv, map)
+#define SKY_SHADOW(uv) sources.sky_shadow.sample(uv, 0)
 #define MODEL_SOURCE_PARAM , IN(DensitySource) density
 #define MODEL_SOURCE_ARG , density
 #define MODEL_DENSITY(uvw) density.sample(uvw)

@@ -85,6 +85,8 @@ struct MarchSources {
   ConvectiveSource convective;
   // The shadow maps (cloud_march.glsl's LAYER_SHADOW): one layer per map; none by default.
   LayeredSource shadows;
+  // The sky's shadow map (SKY_SHADOW): one layer; none by default.
+  LayeredSource sky_shadow;
 };
 
 // The velocity sources of the warp's stepping rules: the sampled cube map, the procedural curl,

@@ -141,8 +141,8 @@ vec4 probe_cloud_march(mat4 x MARCH_SOURCES_PARAM) {
     return vec4(uv, higher_layers_depth(p, centre, layer, m MARCH_SOURCES_ARG), 0.0f);
   }
   if (f == 20) {
-    // Crepuscular rays: map 0 as the sky's, from the shell at altitude x[0].z: where p's sun ray
-    // leaves it (uv) and the sun's share at p.
+    // Crepuscular rays: the sky's map (the test binds the cumulus's there too) from the shell at
+    // altitude x[0].z: where p's sun ray leaves it (uv) and the sun's share at p.
     m.sky_shadow_map = 0;
     m.sky_shadow_base = x[0].z;
     vec2 uv = shadow_map_uv(p, centre, x[0].z, m);
