@@ -59,6 +59,16 @@ glsl::MarchSources host_sources(const render::NoiseVolume& noise, const WeatherF
   return sources;
 }
 
+// The shadow tests' sheets: overcast stratus (sheet amount 1) 600 m thick at extinction 2e-2 /m,
+// texture >= 0.7, the profile's six midpoint samples averaging 0.753, so that a vertical path
+// through one has optical depth >= 2e-2 x 600 x 0.753 x 0.7 = 6.3 (more along a slanted sun ray).
+const double sheet_least_depth = 2e-2 * 600 * 0.753 * 0.7;
+CloudLayer overcast_sheet(CoverageChannel channel, float base_m, const char* name) {
+  return {CloudType::stratus, channel, base_m, base_m + 600, 2e-2f, 0, 0, 0, name};
+}
+// Their time: midsummer at 11:30 UTC, the sun about 66 degrees up at the camera.
+double shadow_test_time() { return core::parse_utc_time("2026-06-21T11:30Z"); }
+
 // A shadow map (layer -1: the sky's) made on the CPU, size x size texels.
 std::vector<float> cpu_shadow_map(int size, int layer, const glsl::MarchParams& params, const glsl::MarchSources& sources) {
   const glm::vec3 centre(0.0f, 0.0f, -(params.earth_radius + params.camera_altitude));
@@ -158,8 +168,8 @@ TEST_CASE("the marcher on the GPU agrees with its C++ twin pixel by pixel", "[re
 
 TEST_CASE("an overcast layer shades the ground below it and no layer shades what lies above it", "[render][shadow]") {
   test::test_context();
-  const double time = core::parse_utc_time("2026-06-21T11:30Z");  // sun about 66 degrees up
-  const std::vector<CloudLayer> layers = {{CloudType::stratus, CoverageChannel::low, 1500, 2100, 2e-2f, 0, 0, 0, "test"}};
+  const double time = shadow_test_time();
+  const std::vector<CloudLayer> layers = {overcast_sheet(CoverageChannel::low, 1500, "test")};
   const WeatherField field = overcast_field({CoverageChannel::low});
   render::RenderSettings settings;
   settings.noise_size = 16;
@@ -169,10 +179,8 @@ TEST_CASE("an overcast layer shades the ground below it and no layer shades what
   const glm::vec3 centre(0.0f, 0.0f, -(params.earth_radius + params.camera_altitude));
   const glm::vec3 ground(0.0f, 0.0f, -params.camera_altitude);
   int loops = 0;
-  // Overcast stratus (sheet amount 1) 600 m thick, extinction 2e-2 /m, texture >= 0.7, the
-  // profile's six midpoint samples averaging 0.753: optical depth >= 2e-2 x 600 x 0.753 x 0.7 =
-  // 6.3 straight up, more along the slanted sun ray.
-  CHECK(glsl::shadow_depth(ground, centre, -1, -1.0e30f, loops, params, sources) >= 2e-2 * 600 * 0.753 * 0.7);
+  // The sheet's depth straight up, more along the slanted sun ray.
+  CHECK(glsl::shadow_depth(ground, centre, -1, -1.0e30f, loops, params, sources) >= sheet_least_depth);
   CHECK(loops == params.layer_count + 2 + glsl::SHADOW_STEPS);  // the layer loop, the two intervals, the samples
   // Only layers with a base at or above 2100 m shade a point at the layer's top: none here.
   CHECK(glsl::shadow_depth(ground, centre, -1, 2100.0f, loops, params, sources) == 0.0f);
@@ -182,10 +190,10 @@ TEST_CASE("an overcast layer shades the ground below it and no layer shades what
 TEST_CASE("a layer under an overcast layer reads the depth through it from its shadow map and gets less sunlight",
           "[render][shadow]") {
   test::test_context();
-  const double time = core::parse_utc_time("2026-06-21T11:30Z");  // sun about 66 degrees up
+  const double time = shadow_test_time();
   // Overcast stratus at 1500-2100 m under an overcast sheet at 3000-3600 m (the mid channel).
-  const std::vector<CloudLayer> two = {{CloudType::stratus, CoverageChannel::low, 1500, 2100, 2e-2f, 0, 0, 0, "low"},
-                                       {CloudType::stratus, CoverageChannel::mid, 3000, 3600, 2e-2f, 0, 0, 0, "high"}};
+  const std::vector<CloudLayer> two = {overcast_sheet(CoverageChannel::low, 1500, "low"),
+                                       overcast_sheet(CoverageChannel::mid, 3000, "high")};
   const WeatherField field = overcast_field({CoverageChannel::low, CoverageChannel::mid});
   render::RenderSettings settings;
   settings.noise_size = 16;
@@ -204,8 +212,7 @@ TEST_CASE("a layer under an overcast layer reads the depth through it from its s
   const double tolerance = test::march_tolerance(600.0, 12000.0, sources.noise);
   // Points of the lower layer on the sun rays through texel centres of its top: the lookup is
   // the depth through the upper layer marched from the point itself (the same ray beyond the
-  // top), and that is at least the overcast sheet's vertical depth, 2e-2 x 600 x 0.753 x 0.7
-  // (the profile's six midpoint samples average 0.753, the texture is at least 0.7).
+  // top), and that is at least the overcast sheet's vertical depth (sheet_least_depth).
   for (int k = 0; k < 20; ++k) {
     const glm::vec2 uv((3 + k % 5 * 6 + 0.5f) / size, (4 + k / 5 * 6 + 0.5f) / size);
     const glm::vec3 top = glsl::shadow_map_origin((2.0f * uv - 1.0f) * params.shadow_extent, centre, params.layers[0].top, params);
@@ -215,7 +222,7 @@ TEST_CASE("a layer under an overcast layer reads the depth through it from its s
     const float looked_up = glsl::higher_layers_depth(p, centre, 0, params, sources);
     INFO("point " << k << ": marched " << marched << ", from the map " << looked_up);
     CHECK(looked_up == Approx(marched).epsilon(tolerance));
-    CHECK(marched >= 2e-2 * 600 * 0.753 * 0.7);
+    CHECK(marched >= sheet_least_depth);
   }
   // Marched along a ray rising through the lower layer, the layer sends less light with its
   // map than without (the same extinction: the transmittance is the same).
@@ -277,8 +284,8 @@ TEST_CASE("a layer under an overcast layer reads the depth through it from its s
 TEST_CASE("the air below an overcast layer scatters no direct sunlight: a pixel loses the clear sky's in-scattering",
           "[render][shadow][crepuscular]") {
   test::test_context();
-  const double time = core::parse_utc_time("2026-06-21T11:30Z");  // sun about 66 degrees up
-  const std::vector<CloudLayer> layers = {{CloudType::stratus, CoverageChannel::low, 1500, 2100, 2e-2f, 0, 0, 0, "test"}};
+  const double time = shadow_test_time();
+  const std::vector<CloudLayer> layers = {overcast_sheet(CoverageChannel::low, 1500, "test")};
   const WeatherField field = overcast_field({CoverageChannel::low});
   render::RenderSettings settings;
   settings.noise_size = 16;
@@ -296,9 +303,9 @@ TEST_CASE("the air below an overcast layer scatters no direct sunlight: a pixel 
   const int size = 16;
   const std::vector<float> map = cpu_shadow_map(size, -1, params, sources);
   sources.sky_shadow = {size, 1, map.data()};
-  // The overcast's optical depth, at least its vertical 2e-2 x 600 x 0.753 x 0.7 = 6.3 (the
-  // test above): the air below keeps at most e^-6.3 = 0.0018 of the direct sun.
-  const float least_depth = 2e-2f * 600 * 0.753f * 0.7f;
+  // The overcast's optical depth, at least the sheet's vertical 6.3: the air below keeps at
+  // most e^-6.3 = 0.0018 of the direct sun.
+  const float least_depth = static_cast<float>(sheet_least_depth);
   CHECK(*std::min_element(map.begin(), map.end()) >= least_depth);
   glsl::MarchParams unshaded = params;
   unshaded.sky_shadow_map = -1;

@@ -372,9 +372,14 @@ RenderResult render_clouds(const Camera& camera, const std::vector<regional::Clo
   gpu::Texture& shadow_maps = cache->maps;
   gpu::Texture& sky_shadow = cache->sky;
   const std::uint64_t key = maps > 0 || sky_map ? shadow_map_key(params, settings.shadow_map_size, noise, field) : 0;
+  // One program fills both kinds of map (made at the first that is not cached).
+  std::unique_ptr<gpu::ComputeProgram> shadow_program;
   const auto fill_maps = [&](gpu::Texture& target, int size, int first_layer, int last_layer) {
-    gpu::ComputeProgram program("render/layer_shadows.comp");
-    glsl::set_uniform(program, "u_march", params);
+    if (!shadow_program) {
+      shadow_program = std::make_unique<gpu::ComputeProgram>("render/layer_shadows.comp");
+      glsl::set_uniform(*shadow_program, "u_march", params);
+    }
+    gpu::ComputeProgram& program = *shadow_program;
     target.bind_image(0, GL_WRITE_ONLY);
     glBindTextureUnit(1, noise != nullptr ? noise->texture() : 0);
     glBindTextureUnit(2, weather);
