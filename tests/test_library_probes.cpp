@@ -358,14 +358,15 @@ TEST_CASE("worley.glsl on the GPU agrees with the CPU", "[probe]") {
   Random r(16);
   std::vector<Case> cases;
   const vec4 key = vec4(std::floor(r(0.0f, 16777215.0f)), std::floor(r(0.0f, 16777215.0f)), 12345.0f, 0.0f);
-  for (int k = 0; k < 80; ++k) {
-    const int f = k % 5;
+  for (int k = 0; k < 98; ++k) {
+    const int f = k % 7;
+    const bool integer = f < 2 || f == 3 || f == 5;
     const vec4 period = (k / 4) % 2 ? vec4(5.0f, 7.0f, 3.0f, 0.0f) : vec4(0.0f);
-    const vec4 p = f < 2 ? vec4(std::floor(r(-40.0f, 40.0f)), std::floor(r(-40.0f, 40.0f)), std::floor(r(-40.0f, 40.0f)), 0)
-                         : (f == 2 ? r.v(0.0f, 1.0f) : r.v(-20.0f, 20.0f));
+    const vec4 p = integer ? vec4(std::floor(r(-40.0f, 40.0f)), std::floor(r(-40.0f, 40.0f)), std::floor(r(-40.0f, 40.0f)), 0)
+                           : (f == 2 ? r.v(0.0f, 1.0f) : r.v(-20.0f, 20.0f));
     vec4 a(r(0.5f, 3.0f), float(k % 3 - 1), float((k / 3) % 3 - 1), 0.0f);
     if (f == 4) a.y = r(0.05f, 1.0f);  // smooth_worley's lambda
-    cases.push_back({arguments(f, a, p, period, key), f < 2 ? kExact : f == 4 ? kSmoothWorley : kWorley});
+    cases.push_back({arguments(f, a, p, period, key), integer ? kExact : f == 4 ? kSmoothWorley : kWorley});
   }
   compare("worley", probe_worley, cases);
 }

@@ -185,6 +185,19 @@ TEST_CASE("periodic Worley noise tiles exactly for negative coordinates too", "[
   CHECK(wrap_cell(ivec3(-1, -7, 12), period) == ivec3(3, 5, 2));
 }
 
+TEST_CASE("a neighbour's wrapped index stepped from the wrapped cell equals its own floor division", "[worley]") {
+  // wrap_step replaces wrap_axis's division in the 27-cell searches, so it must give the same
+  // integer for every index and period, negative indices, period 1 and 0 (unbounded) included.
+  for (int period = 0; period <= 7; ++period) {
+    for (int c = -50; c <= 50; ++c) {
+      INFO("period " << period << ", index " << c);
+      const ivec3 n = wrapped_neighbours(c, period);
+      REQUIRE(n == ivec3(wrap_axis(c - 1, period), wrap_axis(c, period), wrap_axis(c + 1, period)));
+      if (period > 0) REQUIRE((n.y >= 0 && n.y < period));
+    }
+  }
+}
+
 TEST_CASE("the Worley gradient matches finite differences away from cell borders", "[worley]") {
   const uvec3 key = noise_key(4u, 0u);
   std::mt19937 rng(5);

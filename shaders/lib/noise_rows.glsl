@@ -120,8 +120,8 @@ void worley_row(int t0, int count, int y, int z, float frequency, ivec3 period, 
   float fz = pz - bz;
   int cy = int(by);
   int cz = int(bz);
-  ivec3 ys = ivec3(wrap_axis(cy - 1, period.y), wrap_axis(cy, period.y), wrap_axis(cy + 1, period.y));
-  ivec3 zs = ivec3(wrap_axis(cz - 1, period.z), wrap_axis(cz, period.z), wrap_axis(cz + 1, period.z));
+  ivec3 ys = wrapped_neighbours(cy, period.y);
+  ivec3 zs = wrapped_neighbours(cz, period.z);
   int cx = int(floor((float(t0) + 0.5f) * frequency));
   int last = int(floor((float(t0 + count - 1) + 0.5f) * frequency));
   WorleySlab left = worley_slab(wrap_axis(cx - 1, period.x), ys, zs, fy, fz, key);
@@ -166,8 +166,8 @@ PerlinRowFrame perlin_row_frame(int y, int z, float frequency, ivec3 period) {
   r.fz = pz - bz;
   int cy = wrap_axis(int(by), period.y);
   int cz = wrap_axis(int(bz), period.z);
-  r.ys = ivec2(cy, wrap_axis(cy + 1, period.y));
-  r.zs = ivec2(cz, wrap_axis(cz + 1, period.z));
+  r.ys = ivec2(cy, wrap_step(cy, 1, period.y));
+  r.zs = ivec2(cz, wrap_step(cz, 1, period.z));
   r.w = perlin_yz_weights(r.fy, r.fz);
   return r;
 }

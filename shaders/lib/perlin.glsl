@@ -12,12 +12,6 @@
 // and local refinement, docs/noise.md); the bound leaves room for float rounding.
 const float PERLIN_BOUND = 1.03636f;
 
-// Wraps one lattice index into [0, period) like wrap_cell (same float floor division, so the
-// same integers); period 0 leaves it unbounded.
-int wrap_axis(int c, int period) {
-  return period > 0 ? c - period * int(floor(float(c) / float(period))) : c;
-}
-
 // Perlin's quintic 6t^5 - 15t^4 + 10t^3: C2 across lattice planes.
 float perlin_fade(float t) {
   return t * t * t * (t * (t * 6.0f - 15.0f) + 10.0f);
@@ -72,11 +66,11 @@ float perlin_noise(vec3 p, ivec3 period, uvec3 key) {
   vec3 base = floor(p);
   vec3 f = p - base;
   ivec3 cell = wrap_cell(ivec3(base), period);
-  ivec2 ys = ivec2(cell.y, wrap_axis(cell.y + 1, period.y));
-  ivec2 zs = ivec2(cell.z, wrap_axis(cell.z + 1, period.z));
+  ivec2 ys = ivec2(cell.y, wrap_step(cell.y, 1, period.y));
+  ivec2 zs = ivec2(cell.z, wrap_step(cell.z, 1, period.z));
   vec4 w = perlin_yz_weights(f.y, f.z);
   vec2 face0 = perlin_face(cell.x, ys, zs, f.y, f.z, w, key);
-  vec2 face1 = perlin_face(wrap_axis(cell.x + 1, period.x), ys, zs, f.y, f.z, w, key);
+  vec2 face1 = perlin_face(wrap_step(cell.x, 1, period.x), ys, zs, f.y, f.z, w, key);
   return perlin_along_row(face0, face1, f.x);
 }
 
