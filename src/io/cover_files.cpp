@@ -234,8 +234,11 @@ CoverExport write_cover_files(OutputSet& outputs, const cover::GlobalCover& cove
     if (options.preview) {
       // zlib level 1: the 4096 x 2048 preview encodes in about half the time of level 6 (the
       // longest single encoding of generate) for an 8 % larger file; the pixels are the same.
+      // The average filter on every row instead of libpng's trial of all five: 141 instead of
+      // 200 ms at 1024 per face, and a file 0.6 % smaller.
       ImageEncoding preview = png_encoding(8);
       preview.png_compression_level = 1;
+      preview.png_filters = png_filter_average;
       encode("cover_equirect.png", equirect, preview);
     }
   }

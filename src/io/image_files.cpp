@@ -36,6 +36,7 @@ std::vector<unsigned char> encode_image(const ImageData& image, const ImageEncod
   if (!encoding.channel_names.empty()) spec.channelnames = encoding.channel_names;
   if (!png) spec.attribute("compression", encoding.compression);
   if (png) spec.attribute("png:compressionLevel", encoding.png_compression_level);
+  if (png && encoding.png_filters != 0) spec.attribute("png:filter", encoding.png_filters);
   spec.attribute("Software", "nephele");
   for (const auto& [name, value] : encoding.attributes) spec.attribute(name, value);
   if (encoding.unassociated_alpha) spec.attribute("oiio:UnassociatedAlpha", 1);
