@@ -3,7 +3,8 @@
 // Per texel the same differences as cover::flow_rates and cover::folding_report
 // (src/cover/stability.cpp, the CPU reference), in double from the float fields:
 //   stage 0: each invocation walks a strip of u_strip texels of a column; integer figures
-//            (solid-angle units, counts) go to atomics, the others to its partial record;
+//            (solid-angle units, counts) are summed over the strip and go to atomics, the
+//            others to its partial record;
 //   stage 1: one workgroup folds the partial records in a fixed order into `totals`.
 // Integer atomics commute and the folding order is fixed, so the figures are the same on
 // every run.
@@ -50,7 +51,8 @@ void fold(double rho, double jmin, double jmax, double err2, double weight, doub
   acc[5] += attempts;
 }
 
-void texel_figures(int face, int i, int j, int size, inout uint capped, inout uint off, inout uint most) {
+void texel_figures(int face, int i, int j, int size, inout uint capped, inout uint off, inout uint most,
+                   inout uvec2 folded, inout uvec2 beyond) {
   uint units = texel_weight(i, j, size);
   vec4 w4 = imageLoad(warp_field, ivec3(i, j, face));
   if (w4.w < 0.0f) capped += 1u;
@@ -80,13 +82,13 @@ void texel_figures(int face, int i, int j, int size, inout uint capped, inout ui
   double discriminant = 0.25lf * trace * trace - det;
   double rho = discriminant >= 0.0lf ? 0.5lf * abs(trace) + sqrt(discriminant) : sqrt(det);
   // As stiffness_report: the rate as stored (float) times h against the limit.
-  if (u_step * double(float(rho)) > u_limit) ADD_UNITS64(counters, 1, units);
+  if (u_step * double(float(rho)) > u_limit) beyond = add_units(beyond, units);
   // Area Jacobian of the warp (cover::folding_report).
   double area = dot(cross(e1, e2), n);
   dvec3 w = normalize(dvec3(w4.xyz));
   double warped_area = dot(cross(warp_at(face, i1, j) - warp_at(face, i0, j), warp_at(face, i, j1) - warp_at(face, i, j0)), w);
   double jacobian = warped_area / area;
-  if (!(jacobian > 0.0lf)) ADD_UNITS64(counters, 0, units);
+  if (!(jacobian > 0.0lf)) folded = add_units(folded, units);
   double weight = double(units);
   fold(rho, jacobian, jacobian, weight * (jacobian - 1.0lf) * (jacobian - 1.0lf), weight, attempts);
 }
@@ -118,7 +120,11 @@ void main() {
   int i = int(gl_GlobalInvocationID.x), s = int(gl_GlobalInvocationID.y), face = int(gl_GlobalInvocationID.z);
   if (i >= size || s >= strips) return;
   uint capped = 0u, off = 0u, most = 0u;
-  for (int j = s * u_strip; j < min(size, (s + 1) * u_strip); ++j) texel_figures(face, i, j, size, capped, off, most);
+  uvec2 folded = uvec2(0u), beyond = uvec2(0u);  // the strip's units, added once below
+  for (int j = s * u_strip; j < min(size, (s + 1) * u_strip); ++j)
+    texel_figures(face, i, j, size, capped, off, most, folded, beyond);
+  if (folded != uvec2(0u)) ADD_WORDS64(counters, 0, folded);
+  if (beyond != uvec2(0u)) ADD_WORDS64(counters, 1, beyond);
   if (capped > 0u) atomicAdd(counters[4], capped);
   if (off > 0u) atomicAdd(counters[5], off);
   atomicMax(counters[6], most);
