@@ -65,6 +65,8 @@ int reduction_strip(int size) {
   return static_cast<int>(std::max<long>(32, (texels + (1L << 20) - 1) >> 20));
 }
 
+int diagnosis_strip(int size) { return 4 * reduction_strip(size); }
+
 double TexelWeightUnits::fraction(std::uint64_t units) const { return std::ldexp(static_cast<double>(units), -scale_bits); }
 
 double TexelWeightUnits::sum_error_bound() const { return 6.0 * size * size * std::ldexp(0.5, -scale_bits); }
@@ -98,6 +100,7 @@ double reduction_gpu_bytes(int size) {
   const double half = (size + 1) / 2;
   const double table = half * (half + 1) / 2 * 4.0;
   const int strip = reduction_strip(size);
+  // The diagnosis's partial records (its strips are longer, diagnosis_strip: fewer records).
   const double records = 6.0 * size * ((size + strip - 1) / strip) + 64;  // + stage 1's 64
   const double band_tables = profile_bands * (band_bins * 8.0 + 12.0);  // one histogram, crossings, thresholds
   return 2 * table + calibration_member_capacity * 8.0 + 2 * bins * 8.0 + records * 6 * 8.0 + band_tables;
@@ -354,7 +357,7 @@ WarpDiagnostics GpuDiagnosis::run(const gpu::Texture& curl, const gpu::Texture& 
   if (curl.width() != size_ || warp.width() != size_)
     throw std::invalid_argument("GpuDiagnosis: the maps are not of its size");
   constexpr int figures = 6, group = 64;
-  const int strip = reduction_strip(size_);
+  const int strip = diagnosis_strip(size_);
   const int strips = (size_ + strip - 1) / strip;
   const int partial_count = strips * size_ * 6;
   // Stage 1 writes its 64 intermediate records after the partials.
