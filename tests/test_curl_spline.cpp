@@ -255,6 +255,30 @@ TEST_CASE("the spline pass, the curl pass and the warp in curl mode spline agree
   CHECK(worst <= bound);
 }
 
+TEST_CASE("the warp's first velocity taken from the curl pass gives the bits of evaluating it", "[spline][gpu]") {
+  // run_warp starts RK4 from the curl pass's value at each identity texel (the same
+  // spline_velocity of the same point); warping a copy of the identity map evaluates it instead.
+  test::test_context();
+  cover::CoverParameters p;
+  p.size = 24;
+  p.curl_size = 16;
+  p.curl_mode = CurlMode::spline;
+  cover::GlobalCover cover(p);
+  cover.run_identity();
+  cover.run_spline();
+  cover.run_curl();
+  cover.run_warp();
+  const gpu::Texture starts = gpu::Texture::cube(p.size, GL_RGBA32F);
+  starts.write(cover.identity_field().read());
+  const gpu::Texture evaluated = gpu::Texture::cube(p.size, GL_RGBA32F);
+  cover.warp_points(starts, evaluated);
+  const std::vector<float> from_curl = cover.warp_field().read(), from_velocity = evaluated.read();
+  REQUIRE(from_curl.size() == from_velocity.size());
+  size_t differing = 0;
+  for (size_t k = 0; k < from_curl.size(); ++k) differing += from_curl[k] != from_velocity[k] ? 1 : 0;
+  CHECK(differing == 0);
+}
+
 TEST_CASE("the spline reproduces cubic polynomials of the face coordinates and not quartics", "[spline]") {
   // A field that is a bicubic polynomial of the face coordinates (s, t) on each face, sampled at
   // the nodes (in double): the quasi-interpolant reproduces it up to rounding. A quartic term

@@ -47,6 +47,9 @@ layout(rgba32f, binding = 4) uniform readonly image2DArray curl_spline;
 #include "../lib/warp_step.glsl"
 
 uniform int u_steps;        // fixed-step schemes: K, or the steps of this dispatch
+// 1: curl_field holds the warp's own velocity at the start points (curl mode spline, the
+// starts are the identity field, the first dispatch), which RK4 then takes as its first k1.
+uniform int u_start_velocity;
 uniform float u_step_size;  // h (adaptive: the first step)
 #if WARP_INTEGRATOR == 4
 // A long adaptive integration runs over several dispatches (see GlobalCover::dispatch_warp):
@@ -83,6 +86,8 @@ void main() {
   imageStore(warp_field, texel, vec4(w, done ? float(attempts) : -float(attempts)));
   if (!done && attempts < u_max_substeps) atomicAdd(unfinished, 1u);
 #else
-  imageStore(warp_field, texel, vec4(integrate_fixed(WARP_INTEGRATOR, start, u_steps, u_step_size), 0.0f));
+  vec3 start_velocity = imageLoad(curl_field, texel).xyz;
+  imageStore(warp_field, texel,
+             vec4(integrate_fixed_from(WARP_INTEGRATOR, start, start_velocity, u_start_velocity, u_steps, u_step_size), 0.0f));
 #endif
 }

@@ -76,17 +76,23 @@ vec3 heun_step(vec3 w, float h WARP_FIELD_PARAM) {
 // k4 = v(w + h k3), W <- normalize(w + h/6 (k1 + 2 k2 + 2 k3 + k4)). The stages run in a loop
 // so that the velocity's code is compiled once, not four times. Same operations in the same
 // order as the unrolled form.
+// With first_stage 1 the caller gives k1 = v(w) and stage 0 is skipped; with 0, k1 is unused.
 WARP_TEMPLATE
-vec3 rk4_step(vec3 w, float h WARP_FIELD_PARAM) {
-  vec3 k = vec3(0.0f);
-  vec3 sum = vec3(0.0f);
-  for (int stage = 0; stage < 4; ++stage) {
+vec3 rk4_step_from(vec3 w, vec3 k1, int first_stage, float h WARP_FIELD_PARAM) {
+  vec3 k = k1;
+  vec3 sum = k1;
+  for (int stage = first_stage; stage < 4; ++stage) {
     vec3 x = w;
     if (stage > 0) x = normalize(w + (stage == 3 ? h : 0.5f * h) * k);
     k = WARP_VELOCITY(x);
     sum = stage == 0 ? k : sum + (stage == 3 ? k : 2.0f * k);
   }
   return normalize(w + (h / 6.0f) * sum);
+}
+
+WARP_TEMPLATE
+vec3 rk4_step(vec3 w, float h WARP_FIELD_PARAM) {
+  return rk4_step_from(w, vec3(0.0f), 0, h WARP_FIELD_ARG);
 }
 
 // Geodesic Euler (Lie-Euler), order 1: along the great circle that starts in the direction of
@@ -117,6 +123,22 @@ vec3 integrate_fixed(int integrator, vec3 start, int steps, float h WARP_FIELD_P
   vec3 w = start;
   for (int k = 0; k < steps; ++k) {
     w = fixed_step(integrator, w, h WARP_FIELD_ARG);
+  }
+  return w;
+}
+
+// integrate_fixed, where with `known` 1 the velocity at `start` is given (the curl pass
+// computed it at every texel): RK4's first step takes it as its k1 instead of evaluating it
+// again, an eighth of the evaluations of the default two-step warp. It must be v(start) to the
+// bit for the same result. With `known` 0 this is integrate_fixed (one code path either way:
+// llvmpipe would run both sides of a choice between two calls).
+WARP_TEMPLATE
+vec3 integrate_fixed_from(int integrator, vec3 start, vec3 start_velocity, int known, int steps,
+                          float h WARP_FIELD_PARAM) {
+  if (integrator != INTEGRATOR_RK4) return integrate_fixed(integrator, start, steps, h WARP_FIELD_ARG);
+  vec3 w = start;
+  for (int k = 0; k < steps; ++k) {
+    w = rk4_step_from(w, start_velocity, k == 0 ? known : 0, h WARP_FIELD_ARG);
   }
   return w;
 }

@@ -148,7 +148,13 @@ void GlobalCover::dispatch_warp(const gpu::Texture& starts, const gpu::Texture& 
   if (!adaptive) {
     const int rounds = std::max(1, (p.iterations + per_dispatch - 1) / per_dispatch);
     const gpu::Texture* from = &starts;
+    // In curl mode spline the curl pass stored spline_velocity at each identity texel, the
+    // same function of the same point as the warp's first velocity: RK4 starts from it.
+    // (Only RK4 reads it; the other schemes' programs have no such uniform.)
+    const bool start_velocity = p.curl_mode == CurlMode::spline && &starts == &identity_field_;
+    const bool takes_start_velocity = warp_program_.has_uniform("u_start_velocity");
     for (int round = 0; round < rounds; ++round) {
+      if (takes_start_velocity) warp_program_.set("u_start_velocity", start_velocity && round == 0 ? 1 : 0);
       warp_program_.set("u_steps", std::min(per_dispatch, p.iterations - round * per_dispatch));
       const gpu::Texture& to = target((rounds - 1 - round) % 2 == 0);  // the last round writes `warped`
       dispatch(*from, to);

@@ -89,7 +89,11 @@ vec4 warp_probe_field(mat4 x WARP_FIELD_PARAM) {
   if (f == 4) {
     WARP_PROBE_SOURCE(false);
     if (integrator == INTEGRATOR_HEUN) return vec4(heun_step(w, h WARP_FIELD_ARG), 0.0f);
-    if (integrator == INTEGRATOR_RK4) return vec4(rk4_step(w, h WARP_FIELD_ARG), 0.0f);
+    if (integrator == INTEGRATOR_RK4) {
+      // With the flag: the first velocity given, as the warp pass takes it from the curl pass.
+      if (x[1].w != 0.0f) return vec4(rk4_step_from(w, velocity_at(w WARP_FIELD_ARG), 1, h WARP_FIELD_ARG), 0.0f);
+      return vec4(rk4_step(w, h WARP_FIELD_ARG), 0.0f);
+    }
     if (integrator == INTEGRATOR_GEODESIC) return vec4(geodesic_step(w, h WARP_FIELD_ARG), 0.0f);
     return vec4(euler_step(w, h WARP_FIELD_ARG), 0.0f);
   }
@@ -99,6 +103,10 @@ vec4 warp_probe_field(mat4 x WARP_FIELD_PARAM) {
   }
   if (f == 6) {
     WARP_PROBE_SOURCE(false);
+    if (x[1].w != 0.0f) {
+      vec3 v = velocity_at(w WARP_FIELD_ARG);
+      return vec4(integrate_fixed_from(INTEGRATOR_RK4, w, v, 1, int(x[0].w), h WARP_FIELD_ARG), 0.0f);
+    }
     return vec4(integrate_fixed(INTEGRATOR_HEUN, w, int(x[0].w), h WARP_FIELD_ARG), 0.0f);
   }
   if (f == 7) {
