@@ -19,7 +19,7 @@ ivec3 wrap_cell(ivec3 cell, ivec3 period) {
 
 // wrap_axis(c + step) from wrapped = wrap_axis(c), for |step| <= 1: the same integer without a
 // division. The 27-cell searches wrap three indices per axis this way instead of dividing for
-// each cell's three (a tenth of the density pass on llvmpipe).
+// each cell's three (12 % of the density pass on llvmpipe).
 int wrap_step(int wrapped, int step, int period) {
   int c = wrapped + step;
   return period > 0 ? (c < 0 ? c + period : (c >= period ? c - period : c)) : c;

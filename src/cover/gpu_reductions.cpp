@@ -99,8 +99,7 @@ TexelWeightUnits texel_weight_units(int size) {
 double reduction_gpu_bytes(int size) {
   const double half = (size + 1) / 2;
   const double table = half * (half + 1) / 2 * 4.0;
-  const int strip = reduction_strip(size);
-  // The diagnosis's partial records (its strips are longer, diagnosis_strip: fewer records).
+  const int strip = diagnosis_strip(size);  // the diagnosis's partial records
   const double records = 6.0 * size * ((size + strip - 1) / strip) + 64;  // + stage 1's 64
   const double band_tables = profile_bands * (band_bins * 8.0 + 12.0);  // one histogram, crossings, thresholds
   return 2 * table + calibration_member_capacity * 8.0 + 2 * bins * 8.0 + records * 6 * 8.0 + band_tables;
