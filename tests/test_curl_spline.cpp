@@ -256,7 +256,7 @@ TEST_CASE("the spline pass, the curl pass and the warp in curl mode spline agree
 }
 
 TEST_CASE("the warp's first velocity taken from the curl pass gives the bits of evaluating it", "[spline][gpu]") {
-  // run_warp starts RK4 from the curl pass's value at each identity texel (the same
+  // run() starts RK4 from the curl pass's value at each identity texel (the same
   // spline_velocity of the same point); warping a copy of the identity map evaluates it instead.
   test::test_context();
   cover::CoverParameters p;
@@ -264,10 +264,7 @@ TEST_CASE("the warp's first velocity taken from the curl pass gives the bits of 
   p.curl_size = 16;
   p.curl_mode = CurlMode::spline;
   cover::GlobalCover cover(p);
-  cover.run_identity();
-  cover.run_spline();
-  cover.run_curl();
-  cover.run_warp();
+  cover.run();
   const gpu::Texture starts = gpu::Texture::cube(p.size, GL_RGBA32F);
   starts.write(cover.identity_field().read());
   const gpu::Texture evaluated = gpu::Texture::cube(p.size, GL_RGBA32F);

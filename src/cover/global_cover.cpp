@@ -42,7 +42,7 @@ void GlobalCover::run() {
   run_identity();
   run_spline();
   run_curl();
-  run_warp();
+  run_warp(true);
   run_density();
   run_coverage();
 }
@@ -100,15 +100,15 @@ void GlobalCover::run_curl() {
   });
 }
 
-void GlobalCover::run_warp() {
-  timed("warp", [&] { dispatch_warp(identity_field_, warp_field_); });
+void GlobalCover::run_warp(bool after_curl) {
+  timed("warp", [&] { dispatch_warp(identity_field_, warp_field_, after_curl); });
 }
 
 void GlobalCover::warp_points(const gpu::Texture& starts, const gpu::Texture& warped) {
   dispatch_warp(starts, warped);
 }
 
-void GlobalCover::dispatch_warp(const gpu::Texture& starts, const gpu::Texture& warped) {
+void GlobalCover::dispatch_warp(const gpu::Texture& starts, const gpu::Texture& warped, bool start_velocity_in_curl) {
   const CoverParameters& p = parameters_;
   const bool adaptive = p.integrator == cover::Integrator::adaptive;
   warp_program_.set("u_step_size", p.step);
@@ -149,9 +149,9 @@ void GlobalCover::dispatch_warp(const gpu::Texture& starts, const gpu::Texture& 
     const int rounds = std::max(1, (p.iterations + per_dispatch - 1) / per_dispatch);
     const gpu::Texture* from = &starts;
     // In curl mode spline the curl pass stored spline_velocity at each identity texel, the
-    // same function of the same point as the warp's first velocity: RK4 starts from it.
+    // same function of the same point as the warp's first velocity: RK4 may start from it.
     // (Only RK4 reads it; the other schemes' programs have no such uniform.)
-    const bool start_velocity = p.curl_mode == CurlMode::spline && &starts == &identity_field_;
+    const bool start_velocity = start_velocity_in_curl && p.curl_mode == CurlMode::spline && &starts == &identity_field_;
     const bool takes_start_velocity = warp_program_.has_uniform("u_start_velocity");
     for (int round = 0; round < rounds; ++round) {
       if (takes_start_velocity) warp_program_.set("u_start_velocity", start_velocity && round == 0 ? 1 : 0);

@@ -38,7 +38,11 @@ class GlobalCover {
   // Curl mode spline: the procedural curl on the grid of curl_size nodes per face edge and its
   // prefiltered coefficients (pass "spline"); what the warp reads. Nothing in other modes.
   void run_spline();
-  void run_warp();
+  // The warp of the identity map. With `after_curl` (run() sets it, straight after run_curl)
+  // RK4 in curl mode spline takes its first velocity at each texel from the curl map, which
+  // holds that same spline velocity; without it (the default, and the report's timings) the
+  // warp evaluates every velocity itself. The results are the same bits.
+  void run_warp(bool after_curl = false);
   void run_density();
   CoverageCalibration run_coverage();  // calibrates and remaps on the GPU (scalars read back)
   // The warp pass's computation for other start points: `starts` and `warped` are RGBA32F cube
@@ -69,7 +73,7 @@ class GlobalCover {
  private:
   template <class Work>
   void timed(const std::string& pass, Work&& work);
-  void dispatch_warp(const gpu::Texture& starts, const gpu::Texture& warped);
+  void dispatch_warp(const gpu::Texture& starts, const gpu::Texture& warped, bool start_velocity_in_curl = false);
   // The density and remap passes: an invocation per strip of reduction_strip texels of a column.
   void dispatch_strips(const gpu::ComputeProgram& program) const;
   void upload_surface_bias();  // the land/ocean bias grid (surface_bias.hpp), once
