@@ -151,7 +151,7 @@ void GlobalCover::dispatch_warp(const gpu::Texture& starts, const gpu::Texture& 
     // In curl mode spline the curl pass stored spline_velocity at each identity texel, the
     // same function of the same point as the warp's first velocity: RK4 may start from it.
     // (Only RK4 reads it; the other schemes' programs have no such uniform.)
-    const bool start_velocity = start_velocity_in_curl && p.curl_mode == CurlMode::spline && &starts == &identity_field_;
+    const bool start_velocity = start_velocity_in_curl && p.curl_mode == CurlMode::spline;
     const bool takes_start_velocity = warp_program_.has_uniform("u_start_velocity");
     for (int round = 0; round < rounds; ++round) {
       if (takes_start_velocity) warp_program_.set("u_start_velocity", start_velocity && round == 0 ? 1 : 0);

@@ -73,6 +73,7 @@ class GlobalCover {
  private:
   template <class Work>
   void timed(const std::string& pass, Work&& work);
+  // start_velocity_in_curl: the curl map holds the velocity at `starts` (run_warp(true) only).
   void dispatch_warp(const gpu::Texture& starts, const gpu::Texture& warped, bool start_velocity_in_curl = false);
   // The density and remap passes: an invocation per strip of reduction_strip texels of a column.
   void dispatch_strips(const gpu::ComputeProgram& program) const;
