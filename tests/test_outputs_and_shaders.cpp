@@ -51,3 +51,26 @@ TEST_CASE("includes are expanded once and marked with line directives", "[shader
   CHECK(expanded.text.find("#include") == std::string::npos);
   CHECK(expanded.text.rfind("#version 450", 0) == 0);
 }
+
+TEST_CASE("a declared uniform that the compiler removed can be set, a misspelt one is an error", "[shaders]") {
+  // NVIDIA's compiler drops unused members of a uniform struct where Mesa keeps them, so the
+  // ground renderer's "u_march.forward" was inactive there: setting it must be a no-op, as GL
+  // makes location -1, while a name the shader does not declare still means host and shader disagree.
+  test::test_context();
+  const std::string source =
+      "#version 450\n"
+      "layout(local_size_x = 1) in;\n"
+      "struct Pair { float used; float unused; };\n"
+      "uniform Pair u_pair;\n"
+      "uniform float u_unused;\n"
+      "layout(std430, binding = 0) buffer Out { float v[]; };\n"
+      "void main() { v[0] = u_pair.used; }\n";
+  const auto program = gpu::ComputeProgram::from_text("tests/unused_uniforms.comp", source);
+  // Mesa removes the plain unused uniform, so the no-op path is taken on llvmpipe too.
+  CHECK_FALSE(program.has_uniform("u_unused"));
+  CHECK_NOTHROW(program.set("u_unused", 1.0f));
+  CHECK_NOTHROW(program.set("u_pair.unused", 1.0f));
+  CHECK_NOTHROW(program.set("u_pair.used", 2.0f));
+  CHECK_THROWS_WITH(program.set("u_misspelt", 1.0f), Catch::Contains("no uniform 'u_misspelt'"));
+  CHECK_THROWS_WITH(program.set("u_pair.usde", 1.0f), Catch::Contains("tests/unused_uniforms.comp"));
+}

@@ -2,7 +2,32 @@
 
 #include "gpu/shader_sources.hpp"
 
+#include <cctype>
+
 namespace nephele::gpu {
+namespace {
+
+bool is_identifier_start(char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; }
+bool is_identifier_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
+
+// The identifiers of `text` (numbers' digits and suffixes are skipped with the number).
+std::unordered_set<std::string> identifiers_of(const std::string& text) {
+  std::unordered_set<std::string> names;
+  for (std::size_t i = 0; i < text.size();) {
+    if (is_identifier_start(text[i])) {
+      const std::size_t start = i;
+      while (i < text.size() && is_identifier_char(text[i])) ++i;
+      names.emplace(text, start, i - start);
+    } else if (std::isdigit(static_cast<unsigned char>(text[i]))) {
+      while (i < text.size() && (is_identifier_char(text[i]) || text[i] == '.')) ++i;
+    } else {
+      ++i;
+    }
+  }
+  return names;
+}
+
+}  // namespace
 
 ComputeProgram::ComputeProgram(const std::string& path,
                                const std::vector<std::pair<std::string, std::string>>& defines)
@@ -13,7 +38,7 @@ ComputeProgram ComputeProgram::from_text(const std::string& path, const std::str
 }
 
 ComputeProgram::ComputeProgram(FromExpanded, const std::string& path, const ExpandedShader& source)
-    : path_(path) {
+    : path_(path), source_identifiers_(identifiers_of(source.text)) {
   const GLuint shader = glCreateShader(GL_COMPUTE_SHADER);
   const char* text = source.text.c_str();
   glShaderSource(shader, 1, &text, nullptr);
@@ -56,8 +81,20 @@ bool ComputeProgram::has_uniform(const std::string& name) const {
 
 GLint ComputeProgram::location(const std::string& name) const {
   const GLint where = glGetUniformLocation(program_, name.c_str());
-  if (where < 0) throw ShaderError(path_ + ": no active uniform '" + name + "'");
-  return where;
+  if (where >= 0) return where;
+  // Inactive: fine when every identifier of the name ("u_march", "forward" of
+  // "u_march.forward", "u_layers" and "base" of "u_layers[2].base") is in the source.
+  for (std::size_t i = 0; i < name.size();) {
+    if (!is_identifier_start(name[i])) {
+      ++i;
+      continue;
+    }
+    const std::size_t start = i;
+    while (i < name.size() && is_identifier_char(name[i])) ++i;
+    if (source_identifiers_.count(name.substr(start, i - start)) == 0)
+      throw ShaderError(path_ + ": no uniform '" + name + "' in the shader");
+  }
+  return -1;  // glProgramUniform* ignores location -1
 }
 
 void ComputeProgram::set(const std::string& name, float value) const {

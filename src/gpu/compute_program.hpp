@@ -7,6 +7,7 @@
 
 #include <stdexcept>
 #include <string>
+#include <unordered_set>
 #include <utility>
 #include <vector>
 
@@ -30,7 +31,10 @@ class ComputeProgram {
   ComputeProgram& operator=(const ComputeProgram&) = delete;
 
   void use() const;
-  // Setting a uniform the linker removed is an error: it means host and shader disagree.
+  // Setting a uniform that the shader does not declare is an error: host and shader disagree.
+  // A declared uniform that the compiler removed as unused is set as GL sets location -1: not
+  // at all. Drivers differ in what they remove (NVIDIA drops unused members of a uniform struct,
+  // Mesa keeps them), so the check is against the source's names, not the active list.
   void set(const std::string& name, float value) const;
   void set(const std::string& name, int value) const;
   void set(const std::string& name, unsigned value) const;
@@ -38,7 +42,7 @@ class ComputeProgram {
   void set(const std::string& name, glm::vec3 value) const;
   void set(const std::string& name, glm::ivec2 value) const;
   void set(const std::string& name, glm::ivec3 value) const;
-  bool has_uniform(const std::string& name) const;
+  bool has_uniform(const std::string& name) const;  // active in the linked program
   // Dispatches enough groups of the shader's local size to cover width x height x depth.
   void dispatch_covering(int width, int height, int depth) const;
   GLuint id() const { return program_; }
@@ -48,6 +52,7 @@ class ComputeProgram {
   ComputeProgram(FromExpanded, const std::string& path, const ExpandedShader& source);
   GLint location(const std::string& name) const;
   std::string path_;
+  std::unordered_set<std::string> source_identifiers_;  // every identifier of the expanded source
   GLuint program_ = 0;
   GLint local_size_[3] = {1, 1, 1};
 };
