@@ -18,7 +18,7 @@
 #include "apps/cli/options.hpp"
 #include "cli_support.hpp"
 #include "core/input_file.hpp"
-#include "core/integer_text.hpp"
+#include "core/number_text.hpp"
 #include "core/json.hpp"
 #include "core/memory.hpp"
 #include "cover/equirect.hpp"

@@ -9,7 +9,35 @@
 #include <cstring>
 #include <memory>
 
+#include "core/memory.hpp"
+
 namespace nephele::core {
+namespace {
+
+struct Descriptor {
+  int fd = -1;
+  ~Descriptor() {
+    if (fd >= 0) close(fd);
+  }
+};
+
+}  // namespace
+
+std::uint64_t regular_file_size(const std::string& path) {
+  Descriptor d;
+  d.fd = open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+  if (d.fd < 0) throw InputFileError(path + ": cannot be read (" + std::strerror(errno) + ")");
+  struct stat info {};
+  if (fstat(d.fd, &info) != 0) throw InputFileError(path + ": cannot be read (" + std::strerror(errno) + ")");
+  if (!S_ISREG(info.st_mode))
+    throw InputFileError(path + ": not a regular file (devices, pipes and directories are not read)");
+  return static_cast<std::uint64_t>(info.st_size);
+}
+
+std::uint64_t input_memory_budget_bytes() {
+  const double available = host_memory_available_bytes();
+  return available > 0 ? static_cast<std::uint64_t>(available / 2) : std::uint64_t(8) << 30;
+}
 
 std::string read_input_file(const std::string& path, std::uint64_t max_bytes) {
   const std::string limit = "at most " + std::to_string(max_bytes) + " bytes (" +

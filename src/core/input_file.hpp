@@ -1,5 +1,6 @@
 #pragma once
-// Reading a user's input file (scene, weather) whole, with a bound on its size.
+// Reading a user's input file: every file nephele reads goes through these checks (a regular
+// file, no FIFO or device, a size within its cap) before a byte is read or allocated.
 #include <cstdint>
 #include <stdexcept>
 #include <string>
@@ -21,5 +22,14 @@ class InputFileError : public std::runtime_error {
 // /dev/stdin) are refused before reading, as are larger files; the read itself stops one byte
 // past the bound, so a file that grows meanwhile cannot make it allocate more.
 std::string read_input_file(const std::string& path, std::uint64_t max_bytes = max_input_file_bytes);
+
+// The size of `path` when it is a regular file (checked on the opened descriptor, opened without
+// blocking, so a FIFO cannot make it wait); InputFileError naming the path otherwise. For
+// readers that do their own reading (images through OpenImageIO, raw volumes).
+std::uint64_t regular_file_size(const std::string& path);
+
+// Memory a reader may allocate for what a file's header declares: half the host memory
+// available now (MemAvailable), or 8 GiB when that is unknown.
+std::uint64_t input_memory_budget_bytes();
 
 }  // namespace nephele::core

@@ -160,19 +160,30 @@ CloudModel parse_cloud_model(const std::string& text, const std::string& source)
   if (!primitives) k.fail("primitives", "missing (an array of primitives)");
   if (!primitives->is_array()) k.fail("primitives", "must be an array of primitives");
   const auto& list = primitives->as_array();
-  for (size_t i = 0; i < list.size(); ++i)
-    for (const Primitive& p : r.primitives(list[i], "primitives[" + std::to_string(i) + "]", m.noise))
-      m.primitives.push_back(p);
+  // Counted as they are read, so a huge polyline is refused before the density pass sees it.
+  auto too_many = [&](std::size_t count) {
+    k.fail("primitives", std::to_string(count) + " or more primitives (allowed: at most " +
+                             std::to_string(model::max_primitives) + "; a polyline counts its segments)");
+  };
+  if (list.size() > model::max_primitives) too_many(list.size());
+  for (size_t i = 0; i < list.size(); ++i) {
+    const std::string path = "primitives[" + std::to_string(i) + "]";
+    if (const json::Value* points = list[i].is_object() ? list[i].find("points") : nullptr)
+      if (points->is_array() && m.primitives.size() + points->as_array().size() > model::max_primitives + 1)
+        too_many(m.primitives.size() + points->as_array().size() - 1);
+    for (const Primitive& p : r.primitives(list[i], path, m.noise)) m.primitives.push_back(p);
+    if (m.primitives.size() > model::max_primitives) too_many(m.primitives.size());
+  }
   validate(m, source);
   return m;
 }
 
-CloudModel read_cloud_model(const std::string& path) {
+CloudModel read_cloud_model(const std::string& path, const std::string& option) {
   std::string text;
   try {
     text = core::read_input_file(path);
   } catch (const core::InputFileError& e) {
-    throw ModelError(std::string("--scene: ") + e.what());  // bad input, as the scene files' (exit 2)
+    throw ModelError(option + ": " + e.what());  // bad input, as the scene files' (exit 2)
   }
   return parse_cloud_model(text, path);
 }

@@ -8,6 +8,7 @@
 #include <fstream>
 
 #include "core/error.hpp"
+#include "core/input_file.hpp"
 #include "render/cloud_renderer.hpp"
 
 namespace nephele::io {
@@ -29,11 +30,13 @@ float big_endian_float(const unsigned char* b) {
 regional::ElevationRaster read_etopo5(const std::string& path, double south_deg, double north_deg,
                                       const std::string& field) {
   const std::string allowed = "the ETOPO5 netCDF of ferret-datasets (" + std::string(etopo5_default_path) + ")";
-  std::error_code error;
   const std::uint64_t expected = etopo5_header_bytes + std::uint64_t(etopo5_rows) * etopo5_columns * 4;
-  const auto bytes = std::filesystem::file_size(path, error);
-  if (error || !std::filesystem::is_regular_file(path, error))
-    throw core::InputError(field, path, allowed, "cannot be read");
+  std::uint64_t bytes = 0;
+  try {
+    bytes = core::regular_file_size(path);
+  } catch (const core::InputFileError& e) {
+    throw core::InputError(field, path, allowed, std::string("cannot be read: ") + e.what());
+  }
   if (bytes != expected)
     throw core::InputError(field, path, allowed, "has " + std::to_string(bytes) + " bytes, not " + std::to_string(expected));
   std::ifstream in(path, std::ios::binary);

@@ -1,6 +1,7 @@
 #include "io/export_presets.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <regex>
 #include <sstream>
 
@@ -443,28 +444,70 @@ void write_blender(OutputSet& out, std::vector<std::string>& names, const Export
 
 }  // namespace
 
-CoverFaces read_cover_faces(const std::filesystem::path& directory) {
+namespace {
+
+std::filesystem::path face_path(const std::filesystem::path& directory, int f) {
+  return directory / (std::string("cover_") + face_suffixes[f] + ".exr");
+}
+
+}  // namespace
+
+int read_cover_face_size(const std::filesystem::path& directory) {
   if (!std::filesystem::is_directory(directory))
     throw core::InputError("COVER_DIR", directory.string(), "a directory written by nephele generate", "is not a directory");
-  CoverFaces faces;
+  int size = 0;
   for (int f = 0; f < 6; ++f) {
-    const std::filesystem::path path = directory / (std::string("cover_") + face_suffixes[f] + ".exr");
-    if (!std::filesystem::is_regular_file(path))
+    const std::filesystem::path path = face_path(directory, f);
+    std::error_code error;
+    if (!std::filesystem::exists(path, error))
       throw core::InputError("COVER_DIR", directory.string(),
                              "a directory with cover_px.exr ... cover_nz.exr (nephele generate --files faces)",
                              "has no " + path.filename().string());
+    ImageHeader header;
+    try {
+      header = read_image_header(path);
+    } catch (const std::exception& e) {
+      throw core::InputError("COVER_DIR", path.string(), "an OpenEXR cube face", std::string("cannot be read: ") + e.what());
+    }
+    if (header.width != header.height || (f > 0 && header.width != size))
+      throw core::InputError("COVER_DIR", path.string(), "six square faces of one size",
+                             "is " + std::to_string(header.width) + " x " + std::to_string(header.height));
+    // A face holds coverage alone; reading one channel of a colour image would be a guess.
+    if (header.channels != 1)
+      throw core::InputError("COVER_DIR", path.string(), "one channel (Y) of coverage per face",
+                             "has " + std::to_string(header.channels) + " channels");
+    size = header.width;
+  }
+  return size;
+}
+
+CoverFaces read_cover_faces(const std::filesystem::path& directory) {
+  CoverFaces faces;
+  faces.size = read_cover_face_size(directory);
+  const std::size_t texels = std::size_t(faces.size) * faces.size;
+  faces.texels.reserve(6 * texels);
+  for (int f = 0; f < 6; ++f) {
+    const std::filesystem::path path = face_path(directory, f);
     ImageData image;
     try {
       image = read_image(path);
     } catch (const std::exception& e) {
       throw core::InputError("COVER_DIR", path.string(), "an OpenEXR cube face", std::string("cannot be read: ") + e.what());
     }
-    if (image.width != image.height || image.width < 1 || (f > 0 && image.width != faces.size))
-      throw core::InputError("COVER_DIR", path.string(), "six square faces of one size",
-                             "is " + std::to_string(image.width) + " x " + std::to_string(image.height));
-    faces.size = image.width;
-    for (std::size_t i = 0; i < std::size_t(image.width) * image.height; ++i)
-      faces.texels.push_back(image.pixels[i * std::size_t(image.channels)]);
+    // The headers were checked; a file replaced meanwhile is caught here.
+    if (image.width != faces.size || image.height != faces.size || image.channels != 1)
+      throw core::InputError("COVER_DIR", path.string(), "six square one-channel faces of one size", "changed while read");
+    for (std::size_t i = 0; i < texels; ++i) {
+      const float v = image.pixels[i];
+      if (!(v >= 0.0f && v <= 1.0f)) {  // NaN fails both
+        char shown[32];
+        std::snprintf(shown, sizeof shown, "%g", double(v));
+        throw core::InputError("COVER_DIR", path.string(), "coverage values in [0, 1]",
+                               std::string("holds ") + shown + " at texel " + std::to_string(i % faces.size) + ", " +
+                                   std::to_string(i / faces.size));
+      }
+      faces.texels.push_back(v);
+    }
   }
   return faces;
 }
@@ -473,12 +516,12 @@ const std::vector<ExportPreset>& export_presets() {
   static const std::vector<ExportPreset> presets = {
       {"equirect", "2:1 lat-long map: float EXR, 16-bit PNG, 8-bit PNG", true},
       {"gl-faces", "six OpenEXR cube faces in the OpenGL order and orientation", false},
-      {"ktx2", "KTX 2.0 cube map (R16_SFLOAT, R32_SFLOAT or R8_UNORM; --format)", false},
+      {"ktx2", "KTX 2.0 cube map (R16_SFLOAT, R32_SFLOAT or R8_UNORM; --format)", false, false, true},
       {"dds", "DDS cube maps: legacy RGBA8 and DX10 R16_FLOAT / R32_FLOAT", false},
-      {"celestia", "Celestia add-on: RGBA cloud map (white, coverage in alpha) and .ssc", true},
+      {"celestia", "Celestia add-on: RGBA cloud map (white, coverage in alpha) and .ssc", true, false, false, true},
       {"exr-cube", "OpenEXR cube environment map (N x 6N strip, envmap = cube)", false},
       {"flightgear", "FlightGear Earthview: eight bordered tiles clouds_N1..S4, grey + alpha", true},
-      {"eve", "KSP EVE (LGhassen's fork): equirect and six faces as DDS, EVE_TEXTURE_CONFIG", true},
+      {"eve", "KSP EVE (LGhassen's fork): equirect and six faces as DDS, EVE_TEXTURE_CONFIG", true, false, false, true},
       {"unity", "Unity: lat-long map (HDRP cloud map in red) and a 6x1 face strip, reflected", true},
       {"godot", "Godot 4: 2x3 and 6x1 cubemap images and a panorama equirect", true},
       {"unreal", "Unreal: linear EXR and 16-bit PNG equirect for a cloud or planet material", true},

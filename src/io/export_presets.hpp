@@ -17,13 +17,19 @@ struct CoverFaces {
 
 // Reads cover_px.exr ... cover_nz.exr of `directory` (the first channel of each). Throws
 // core::InputError naming COVER_DIR when the directory, a face or its size is wrong.
+// Reads the six faces: square, of one size, one channel each (Y), every value finite in [0, 1];
+// anything else is core::InputError naming the file (and the texel). read_cover_face_size reads
+// only the headers, so that size limits are checked before the pixels are read.
 CoverFaces read_cover_faces(const std::filesystem::path& directory);
+int read_cover_face_size(const std::filesystem::path& directory);
 
 struct ExportPreset {
   std::string name;     // --preset word
   std::string summary;  // one line for --help and the README
   bool needs_equirect;  // resamples the cube map on the GPU (a context must be current)
   bool volume = false;  // reads a volume's sidecar (io/volume_export.hpp) instead of a cover
+  bool takes_format = false;  // reads --format (ExportOptions::ktx2_format)
+  bool takes_name = false;    // reads --name (ExportOptions::name)
 };
 // The presets in the order --help lists them.
 const std::vector<ExportPreset>& export_presets();

@@ -1,5 +1,9 @@
 #include "io/image_files.hpp"
 
+#include <memory>
+
+#include "core/input_file.hpp"
+
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
@@ -58,10 +62,42 @@ void write_image(const std::filesystem::path& path, const ImageData& image, cons
   write_file(path, bytes.data(), bytes.size());
 }
 
-ImageData read_image(const std::filesystem::path& path) {
+namespace {
+
+std::unique_ptr<OIIO::ImageInput> open_image(const std::filesystem::path& path, ImageHeader& header) {
+  core::regular_file_size(path.string());
   auto in = OIIO::ImageInput::open(path.string());
   if (!in) throw std::runtime_error("could not read " + path.string() + ": " + OIIO::geterror());
   const OIIO::ImageSpec& spec = in->spec();
+  const auto base = spec.format.basetype;
+  header = {spec.width, spec.height, spec.nchannels,
+            base == OIIO::TypeDesc::FLOAT || base == OIIO::TypeDesc::HALF || base == OIIO::TypeDesc::DOUBLE};
+  if (spec.width < 1 || spec.height < 1 || spec.nchannels < 1)
+    throw core::InputFileError(path.string() + ": declares an empty image (" + std::to_string(spec.width) + " x " +
+                               std::to_string(spec.height) + " x " + std::to_string(spec.nchannels) + ")");
+  return in;
+}
+
+}  // namespace
+
+ImageHeader read_image_header(const std::filesystem::path& path) {
+  ImageHeader header;
+  open_image(path, header)->close();
+  return header;
+}
+
+ImageData read_image(const std::filesystem::path& path, std::uint64_t max_bytes, ImageHeader* header_out) {
+  ImageHeader header;
+  auto in = open_image(path, header);
+  const OIIO::ImageSpec& spec = in->spec();
+  if (max_bytes == 0) max_bytes = core::input_memory_budget_bytes();
+  const double bytes = 4.0 * spec.width * double(spec.height) * spec.nchannels;
+  if (bytes > double(max_bytes))
+    throw core::InputFileError(path.string() + ": declares " + std::to_string(spec.width) + " x " +
+                               std::to_string(spec.height) + " x " + std::to_string(spec.nchannels) + " samples, " +
+                               std::to_string(static_cast<std::uint64_t>(bytes) >> 20) + " MiB as float; at most " +
+                               std::to_string(max_bytes >> 20) + " MiB (half the available memory) are read");
+  if (header_out) *header_out = header;
   ImageData image{spec.width, spec.height, spec.nchannels, {}};
   image.pixels.resize(static_cast<size_t>(spec.width) * spec.height * spec.nchannels);
   if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, image.pixels.data()))

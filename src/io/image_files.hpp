@@ -1,5 +1,6 @@
 #pragma once
 // Image files through OpenImageIO. Coverage is data, not colour: nothing is sRGB-encoded.
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <utility>
@@ -65,7 +66,20 @@ std::vector<unsigned char> encode_image(const ImageData& image, const ImageEncod
 // through OutputSet::write instead).
 void write_image(const std::filesystem::path& path, const ImageData& image, const ImageEncoding& encoding);
 
-ImageData read_image(const std::filesystem::path& path);
+// What a file's header declares, read without its pixels. float_samples: the file stores float
+// or half samples (linear values), else integers (display-encoded colour in JPEG and PNG).
+struct ImageHeader {
+  int width = 0, height = 0, channels = 0;
+  bool float_samples = false;
+};
+
+// The one image reader. The path must be a regular file (core::regular_file_size: a FIFO cannot
+// block it) and the header's width x height x channels as floats must fit `max_bytes`
+// (0: core::input_memory_budget_bytes()), checked before any pixel is allocated; a header that
+// declares 40000 x 40000 is refused, not attempted. Throws core::InputFileError (the caller names
+// the option) or std::runtime_error naming the path.
+ImageHeader read_image_header(const std::filesystem::path& path);
+ImageData read_image(const std::filesystem::path& path, std::uint64_t max_bytes = 0, ImageHeader* header = nullptr);
 
 // Draws `text` into an RGB image with its baseline's left end at (x, y), `size` pixels high,
 // in DejaVu Sans (fonts-dejavu-core) through OpenImageIO's FreeType text. Returns false and

@@ -4,17 +4,13 @@
 #include <cstring>
 #include <stdexcept>
 
+#include "core/file_names.hpp"
 #include "io/atomic_output.hpp"
 #include "io/image_files.hpp"
 #include "nephele/version.hpp"
 
 namespace nephele::io {
 namespace {
-
-std::string lower(std::string s) {
-  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return s;
-}
 
 const char* format_name(FileFormat f, int png_bits) {
   switch (f) {
@@ -39,7 +35,7 @@ json::Value fbm_json(const glsl::FbmParams& f, int width) {
 }  // namespace
 
 FileFormat format_for(const std::filesystem::path& out) {
-  const std::string ext = lower(out.extension().string());
+  const std::string ext = core::lowercase_extension(out);
   if (ext == ".png") return FileFormat::png;
   if (ext == ".exr") return FileFormat::exr;
   if (ext == ".raw") return FileFormat::raw;

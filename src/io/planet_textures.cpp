@@ -1,12 +1,11 @@
 #include "io/planet_textures.hpp"
 
-#include <OpenImageIO/imageio.h>
-
 #include <cmath>
 #include <system_error>
 
 #include "core/error.hpp"
 #include "io/export_presets.hpp"
+#include "io/image_files.hpp"
 
 namespace nephele::io {
 namespace {
@@ -16,24 +15,20 @@ float srgb_to_linear(float v) {
 }
 
 core::ImageData read_equirect(const std::string& path, const std::string& option) {
-  std::error_code error;
-  if (!std::filesystem::is_regular_file(path, error))
-    throw core::InputError(option, path, "an equirect image file (JPEG, PNG, EXR, ...)", "is not a readable file");
-  auto in = OIIO::ImageInput::open(path);
-  if (!in) throw core::InputError(option, path, "an image OpenImageIO reads", "could not be read: " + OIIO::geterror());
-  const OIIO::ImageSpec spec = in->spec();
-  if (spec.width < 2 || spec.height < 1 || spec.nchannels < 1)
-    throw core::InputError(option, path, "an image of at least 2 x 1 pixels", "is empty");
-  core::ImageData image{spec.width, spec.height, spec.nchannels, {}};
-  image.pixels.resize(static_cast<size_t>(spec.width) * spec.height * spec.nchannels);
-  if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, image.pixels.data()))
-    throw core::InputError(option, path, "an image OpenImageIO reads", "could not be read: " + in->geterror());
+  core::ImageData image;
+  ImageHeader header;
+  try {
+    image = read_image(path, 0, &header);
+  } catch (const std::exception& e) {
+    throw core::InputError(option, path, "an equirect image file OpenImageIO reads (JPEG, PNG, EXR, ...)",
+                           std::string("could not be read: ") + e.what());
+  }
+  if (image.width < 2)
+    throw core::InputError(option, path, "an image of at least 2 x 1 pixels", "is too small");
   // Integer formats hold display-encoded (sRGB) colour; float formats hold linear values.
-  const bool encoded = spec.format.basetype != OIIO::TypeDesc::FLOAT && spec.format.basetype != OIIO::TypeDesc::HALF &&
-                       spec.format.basetype != OIIO::TypeDesc::DOUBLE;
-  if (encoded)
+  if (!header.float_samples)
     for (size_t k = 0; k < image.pixels.size(); ++k)
-      if (k % spec.nchannels < 3) image.pixels[k] = srgb_to_linear(image.pixels[k]);
+      if (k % size_t(image.channels) < 3) image.pixels[k] = srgb_to_linear(image.pixels[k]);
   return image;
 }
 

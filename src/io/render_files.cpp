@@ -2,6 +2,7 @@
 
 #include <filesystem>
 
+#include "core/file_names.hpp"
 #include "io/atomic_output.hpp"
 #include "io/image_files.hpp"
 #include "nephele/version.hpp"
@@ -90,7 +91,7 @@ void write_scene_outputs(const SceneRender& result, const regional::Scene& scene
   if (names.empty()) return;
   io::OutputSet outputs(directory, scope);
   for (const auto& name : names) {
-    if (std::filesystem::path(name).extension() == ".png")
+    if (core::lowercase_extension(name) == ".png")
       outputs.write(name, io::encode_image(render::tone_map(result.render.radiance, scene.exposure), io::png_encoding(8), name));
     else
       outputs.write(name, io::encode_image(result.render.radiance, io::exr_encoding({"R", "G", "B", "A"}), name));

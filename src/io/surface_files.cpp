@@ -35,12 +35,13 @@ cover::SurfaceMask etopo5_mask(const std::string& path) {
 }
 
 cover::SurfaceMask image_mask(const std::string& path) {
-  if (!std::filesystem::is_regular_file(path))
+  std::error_code error;
+  if (!std::filesystem::exists(path, error))
     throw core::InputError(field, path, "an existing ETOPO5 netCDF or image file, or none or etopo5", "no such file");
   core::ImageData image;
   try {
-    image = read_image(path);
-  } catch (const std::runtime_error& e) {
+    image = read_image(path);  // refuses FIFOs, devices and headers beyond the memory budget
+  } catch (const std::exception& e) {
     throw core::InputError(field, path, "an image OpenImageIO reads (EXR, PNG, TIFF, ...), or an ETOPO5 netCDF", e.what());
   }
   cover::SurfaceMask mask{image.width, image.height, {}, path};

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "core/error.hpp"
+#include "core/input_file.hpp"
 #include "core/json.hpp"
 #include "io/export_presets.hpp"
 #include "io/image_files.hpp"
@@ -26,13 +27,16 @@ int positive_int(const json::Value& root, const std::string& key, const std::fil
 }  // namespace
 
 VolumeData read_volume(const std::filesystem::path& sidecar) {
-  std::ifstream in(sidecar, std::ios::binary);
-  if (!in) throw core::InputError("VOLUME", sidecar.string(), "the .json of a noise .raw or a model's density.json", "cannot be read");
-  std::stringstream text;
-  text << in.rdbuf();
+  std::string text;
+  try {
+    text = core::read_input_file(sidecar.string());  // regular files of at most 16 MiB
+  } catch (const core::InputFileError& e) {
+    throw core::InputError("VOLUME", sidecar.string(), "the .json of a noise .raw or a model's density.json",
+                           std::string("cannot be read: ") + e.what());
+  }
   json::Value root;
   try {
-    root = json::parse(text.str());
+    root = json::parse(text);
   } catch (const std::exception& e) {
     throw core::InputError("VOLUME", sidecar.string(), "a JSON sidecar", std::string("is not JSON: ") + e.what());
   }
@@ -71,10 +75,24 @@ VolumeData read_volume(const std::filesystem::path& sidecar) {
   if (raw.empty() || raw.find('/') != std::string::npos)
     throw core::InputError("VOLUME", sidecar.string(), "a sidecar naming its raw file beside it", "names none");
   const std::filesystem::path raw_path = sidecar.parent_path() / raw;
-  std::ifstream data(raw_path, std::ios::binary);
   const std::size_t count = std::size_t(v.width) * v.height * v.depth * v.channels;
-  std::string bytes((std::istreambuf_iterator<char>(data)), std::istreambuf_iterator<char>());
-  if (!data.good() && !data.eof()) bytes.clear();
+  // The sidecar's dimensions against the memory budget and the file's size before reading.
+  if (4.0 * double(count) > double(core::input_memory_budget_bytes()))
+    throw core::InputError("VOLUME", sidecar.string(),
+                           "a volume within half the available memory (" +
+                               std::to_string(core::input_memory_budget_bytes() >> 20) + " MiB)",
+                           "declares " + std::to_string(count) + " float32 values");
+  std::string bytes;
+  try {
+    const std::uint64_t size = core::regular_file_size(raw_path.string());
+    if (size != 4 * count)
+      throw core::InputError("VOLUME", raw_path.string(), std::to_string(4 * count) + " bytes of float32",
+                             "has " + std::to_string(size));
+    bytes = core::read_input_file(raw_path.string(), 4 * count);
+  } catch (const core::InputFileError& e) {
+    throw core::InputError("VOLUME", raw_path.string(), std::to_string(4 * count) + " bytes of float32",
+                           std::string("cannot be read: ") + e.what());
+  }
   if (bytes.size() != 4 * count)
     throw core::InputError("VOLUME", raw_path.string(), std::to_string(4 * count) + " bytes of float32",
                            "has " + std::to_string(bytes.size()));

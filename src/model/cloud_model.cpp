@@ -63,6 +63,9 @@ void validate(const CloudModel& m, const std::string& source) {
   check(cm::extent, m.extent_m, head + "extent");
   check_turbulence(m.noise, head);
   if (m.primitives.empty()) throw ModelError(head + "primitives", "[]", "at least one primitive");
+  if (m.primitives.size() > max_primitives)
+    throw ModelError(head + "primitives", std::to_string(m.primitives.size()) + " primitives",
+                     "at most " + std::to_string(max_primitives) + " (a polyline counts its segments)");
   for (size_t i = 0; i < m.primitives.size(); ++i) {
     const Primitive& p = m.primitives[i];
     const std::string where = head + "primitives[" + std::to_string(i) + "].";

@@ -1,19 +1,44 @@
 #include "params/values.hpp"
 
-#include <cerrno>
 #include <cmath>
 #include <cstdlib>
-#include <regex>
 #include <sstream>
 
 #include "core/error.hpp"
+#include "core/number_text.hpp"
 
 namespace nephele::params {
 
+namespace {
+
+core::NumberForm form_of(bool integer_only) { return integer_only ? core::NumberForm::integer : core::NumberForm::real; }
+
+// The value, shown as the user typed it when there is text (a value read back as a double may
+// print as another: 10.000000000000001 is 10 at 10 digits).
+void check_value(const Parameter& p, double value, const std::string& field, const std::string& text) {
+  std::string shown = text;
+  if (shown.empty()) {
+    std::ostringstream out;
+    out.precision(10);
+    out << value;
+    shown = out.str();
+  }
+  if (!std::isfinite(value)) throw core::InputError(field, shown, p.range_text(), text.empty() ? "is not finite" : "is out of range");
+  if (p.type == Type::integer && value != std::floor(value))
+    throw core::InputError(field, shown, p.range_text(), "is not an integer");
+  if (value < p.min || value > p.max) throw core::InputError(field, shown, p.range_text(), "is out of range");
+}
+
+}  // namespace
+
 bool is_decimal_number(const std::string& text, bool integer_only) {
-  static const std::regex integer_form(R"(^[+-]?[0-9]+$)");
-  static const std::regex real_form(R"(^[+-]?([0-9]+(\.[0-9]*)?|\.[0-9]+)([eE][+-]?[0-9]+)?$)");
-  return std::regex_match(text, integer_only ? integer_form : real_form);
+  return core::is_decimal_number(text, form_of(integer_only));
+}
+
+std::string number_problem(const std::string& text, bool integer_only) {
+  if (text.size() > core::max_number_text_length)
+    return "is longer than " + std::to_string(core::max_number_text_length) + " characters";
+  return integer_only ? "is not an integer" : "is not a number";
 }
 
 double parse_number(const std::string& field, const std::string& text, double min, double max, bool integer_only) {
@@ -23,24 +48,13 @@ double parse_number(const std::string& field, const std::string& text, double mi
 
 double parse_number(const Parameter& p, const std::string& text, const std::string& field) {
   const bool integer_only = p.type == Type::integer;
-  if (!is_decimal_number(text, integer_only))
-    throw core::InputError(field, text, p.range_text(), integer_only ? "is not an integer" : "is not a number");
-  errno = 0;
-  const double value = std::strtod(text.c_str(), nullptr);
-  if (errno == ERANGE || !std::isfinite(value)) throw core::InputError(field, text, p.range_text(), "is out of range");
-  check_number(p, value, field);
-  return value;
+  const auto value = core::parse_decimal(text, form_of(integer_only));
+  if (!value) throw core::InputError(field, text, p.range_text(), number_problem(text, integer_only));
+  check_value(p, *value, field, text);
+  return *value;
 }
 
-void check_number(const Parameter& p, double value, const std::string& field) {
-  std::ostringstream shown;
-  shown.precision(10);
-  shown << value;
-  if (!std::isfinite(value)) throw core::InputError(field, shown.str(), p.range_text(), "is not finite");
-  if (p.type == Type::integer && value != std::floor(value))
-    throw core::InputError(field, shown.str(), p.range_text(), "is not an integer");
-  if (value < p.min || value > p.max) throw core::InputError(field, shown.str(), p.range_text(), "is out of range");
-}
+void check_number(const Parameter& p, double value, const std::string& field) { check_value(p, value, field, ""); }
 
 void check_word(const Parameter& p, const std::string& word, const std::string& field) {
   const std::string allowed(p.allowed);

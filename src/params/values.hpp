@@ -18,7 +18,11 @@ void check_word(const Parameter& p, const std::string& word, const std::string& 
 // The same rule for values that are not table parameters (items of comma-separated lists,
 // key=value settings): `range` is shown in the message.
 double parse_number(const std::string& field, const std::string& text, double min, double max, bool integer_only);
-// Strict decimal text of a number (the rule of parse_number), for lists such as --sizes.
+// Strict decimal text of a number (the rule of parse_number, core/number_text.hpp), for lists
+// such as --sizes.
 bool is_decimal_number(const std::string& text, bool integer_only);
+// Why a text that is_decimal_number refuses is refused, for the message ("is not a number",
+// "is longer than 64 characters").
+std::string number_problem(const std::string& text, bool integer_only);
 
 }  // namespace nephele::params

@@ -5,8 +5,9 @@
 #include <filesystem>
 #include <sstream>
 
+#include "core/file_names.hpp"
 #include "regional/sites.hpp"
-#include "core/integer_text.hpp"
+#include "core/number_text.hpp"
 #include "core/time.hpp"
 
 namespace nephele::regional {
@@ -56,6 +57,9 @@ void validate_scene(const Scene& s, const std::string& source, const KeyOptions&
   if (!s.view.empty() && !find_viewpoint(s.view))
     throw SceneError(where("view") + ": '" + s.view + "' is not a known viewpoint (allowed: gurten, bantiger)");
   if (s.view.empty() && !s.latitude_deg) throw SceneError(source + ": give a view or a position (at)");
+  if (s.weather.size() > max_weather_files)
+    throw SceneError(where("weather") + ": " + std::to_string(s.weather.size()) + " files (allowed: at most " +
+                     std::to_string(max_weather_files) + ")");
   if (s.latitude_deg) check_range(where("at.latitude"), *s.latitude_deg, params::scene::latitude, "latitude ");
   if (s.longitude_deg) check_range(where("at.longitude"), *s.longitude_deg, params::scene::longitude, "longitude ");
   if (s.height_m) check_range(where("at.height"), *s.height_m, params::scene::height, "height ");
@@ -81,7 +85,7 @@ void validate_scene(const Scene& s, const std::string& source, const KeyOptions&
   }
   std::vector<std::string> seen;
   for (const auto& o : s.outputs) {
-    const std::string ext = std::filesystem::path(o).extension().string();
+    const std::string ext = core::lowercase_extension(o);
     if (ext != ".png" && ext != ".exr")
       throw SceneError(source + ": 'outputs': '" + o + "' must end in .png or .exr");
     // Outputs are one set inside --out (docs/formats.md): nothing may land outside it.

@@ -1,5 +1,6 @@
 #pragma once
 // A scene: everything `nephele render` needs, from flags or from a JSON scene file.
+#include <cstddef>
 #include <cstdint>
 #include <map>
 #include <optional>
@@ -59,5 +60,9 @@ void validate_scene(const Scene& scene, const std::string& source_name, const Ke
 // SceneError starting with `name` (an option or "FILE: 'size'").
 void parse_size(const std::string& text, int& width, int& height, const std::string& name);
 constexpr int max_image_side = 16384;
+// The most weather files of one scene (the key "weather" and --weather together): each is read
+// and interpolated for every pixel's column; a scene naming one file 200000 times ran for
+// minutes. Two stations bracket a view; 64 leave room for a region (docs/formats.md).
+constexpr std::size_t max_weather_files = 64;
 
 }  // namespace nephele::regional

@@ -13,6 +13,8 @@
 #include "cover/solid_angle.hpp"
 #include "io/export_presets.hpp"
 #include "io/image_files.hpp"
+#include "params/table.hpp"
+#include "params/values.hpp"
 #include "shader_math/shader_math.hpp"
 
 namespace nephele::studies {
@@ -268,10 +270,11 @@ CoverStatistics cover_statistics(const std::filesystem::path& cover_dir) {
   }
   const json::Value* parameters = stats.sidecar.find("parameters");
   const json::Value* size_value = parameters && parameters->is_object() ? parameters->find("size") : nullptr;
-  if (!size_value || !size_value->is_number() || size_value->as_number() < 1 ||
-      size_value->as_number() != std::floor(size_value->as_number()))
-    throw core::InputError(sidecar_path.string() + ": parameters.size", "", "a whole number of texels, 1 or more",
-                           "is missing or malformed");
+  if (!size_value || !size_value->is_number())
+    throw core::InputError(sidecar_path.string() + ": parameters.size", "", params::cover::size.range_text(),
+                           "is missing or not a number");
+  // The table's range before any use: 1e300 would not fit an int, 536870912 would overflow 4 size.
+  params::check_number(params::cover::size, size_value->as_number(), sidecar_path.string() + ": parameters.size");
   const int size = static_cast<int>(size_value->as_number());
 
   const bool has_faces = std::filesystem::exists(cover_dir / "cover_px.exr");

@@ -37,7 +37,7 @@ int bench_cover(const std::vector<std::string>& arguments) {
   validate_cover_parameters(parameters);
   const std::vector<int> sizes = parse_number_list<int>("--sizes", sizes_text, 1, 16384, true);
   gpu::EglContext context;
-  for (int s : sizes) cover::check_cover_fits(context, s);
+  for (int s : sizes) cover::check_cover_fits(context, s, "--sizes");
   std::printf("device: %s (%s)\n", context.info().renderer.c_str(), context.info().version.c_str());
   std::printf("K = %d steps, %s curl%s, potential %d octaves, density %d octaves; median of %d runs\n",
               parameters.iterations, cover::curl_mode_name(parameters.curl_mode),

@@ -43,6 +43,11 @@ int run_export(const std::vector<std::string>& arguments) {
     throw UsageError("--preset", "", std::string(run::export_preset.allowed), "is missing");
   if (!options.given(run::export_out)) throw UsageError("--out", "", "DIR", "is missing");
   const io::ExportPreset& preset = io::find_export_preset(preset_name);
+  // An option the preset does not read is refused rather than ignored.
+  if (options.given(run::export_format) && !preset.takes_format)
+    throw UsageError("--format", format, "only with --preset ktx2", "is not read by preset " + preset.name);
+  if (options.given(run::export_name) && !preset.takes_name)
+    throw UsageError("--name", name, "only with --preset celestia or eve", "is not read by preset " + preset.name);
   io::ExportOptions export_options;
   export_options.ktx2_format = format;
   export_options.name = name;
@@ -52,8 +57,8 @@ int run_export(const std::vector<std::string>& arguments) {
     volume = io::read_volume(cover_dir);
     if (preset.name == "atlas") io::atlas_grid(volume.width, volume.height, volume.depth);  // fits, before any work
   } else {
+    io::check_texture_limit(preset, io::read_cover_face_size(cover_dir));  // headers only: refused before reading
     faces = io::read_cover_faces(cover_dir);
-    io::check_texture_limit(preset, faces.size);
   }
 
   const std::filesystem::path directory(out);

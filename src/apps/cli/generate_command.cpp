@@ -64,6 +64,9 @@ int run_generate(const std::vector<std::string>& arguments) {
       const auto found = std::find_if(all.begin(), all.end(), [&](const io::ExportPreset& p) { return p.name == name; });
       if (found == all.end()) throw UsageError("--export", name, std::string(params::run::export_preset.allowed));
       if (found->volume) throw UsageError("--export", name, "a cover preset", "exports volumes, not covers");
+      if (std::find(presets.begin(), presets.end(), &*found) != presets.end())
+        throw UsageError("--export", exports, std::string(params::run::cover_exports.allowed),
+                         "names " + name + " twice (as --files refuses faces,faces)");
       presets.push_back(&*found);
       io::check_texture_limit(*presets.back(), parameters.size);
     }

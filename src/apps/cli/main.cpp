@@ -5,6 +5,7 @@
 
 #include "apps/cli/commands.hpp"
 #include "apps/cli/options.hpp"
+#include "core/printable_text.hpp"
 #include "gpu/compute_program.hpp"
 #include "gpu/egl_context.hpp"
 #include "nephele/version.hpp"
@@ -26,6 +27,10 @@ const char* const usage =
     "nephele COMMAND --help describes each command's options and their ranges.\n"
     "exit codes: 0 success, 1 runtime failure, 2 bad input (the option, key or field is named),\n"
     "            3 environment (no OpenGL 4.5 context; no display for a window)\n";
+
+// Messages quote inputs (paths, values, file fields): printed escaped and cut, so that a crafted
+// input cannot send escape sequences to the terminal (core/printable_text.hpp).
+std::string shown(const std::exception& e) { return nephele::core::printable(e.what(), 8192, true); }
 
 }  // namespace
 
@@ -58,13 +63,13 @@ int main(int argc, char** argv) {
     if (command == "stats") return run_stats(rest);
     throw UsageError("unknown command '" + command + "' (allowed: generate, render, noise, model, export, view, bench, report, stats)");
   } catch (const nephele::core::InputError& e) {
-    std::cerr << "nephele: " << e.what() << "\n";
+    std::cerr << "nephele: " << shown(e) << "\n";
     return exit_usage;
   } catch (const nephele::gpu::ContextError& e) {
-    std::cerr << "nephele: " << e.what() << "\n";
+    std::cerr << "nephele: " << shown(e) << "\n";
     return exit_no_context;
   } catch (const std::exception& e) {
-    std::cerr << "nephele: error: " << e.what() << "\n";
+    std::cerr << "nephele: error: " << shown(e) << "\n";
     return exit_failure;
   }
 }

@@ -18,26 +18,25 @@
 #include "io/noise_files.hpp"
 #include "noise/noise_texture.hpp"
 #include "params/table.hpp"
+#include "params/values.hpp"
 
 namespace nephele::cli {
 namespace {
 
-// Parses "type=worley,cells=8,octaves=3" into a channel (keys as the global options).
+// Parses "type=worley,cells=8,octaves=3" into a channel. Each key is the global option of the
+// same name and is checked against that option's row of the table (integers as integers).
 noise::ChannelSpec parse_channel(const std::string& option, const std::string& text, noise::ChannelSpec c) {
+  namespace n = params::noise_texture;
+  const char* keys = "keys: type, cells, octaves, lacunarity, gain, worley-cells, worley-octaves";
   std::stringstream stream(text);
   std::string item;
+  bool worley_cells_given = false;
   while (std::getline(stream, item, ',')) {
     const auto eq = item.find('=');
-    if (eq == std::string::npos)
-      throw UsageError(option + ": '" + item + "' is not key=value (keys: type, cells, octaves, lacunarity, gain, "
-                       "worley-cells, worley-octaves)");
+    if (eq == std::string::npos) throw UsageError(option + ": '" + item + "' is not key=value (" + keys + ")");
     const std::string key = item.substr(0, eq), value = item.substr(eq + 1);
     const std::string where = option + " " + key;
-    auto integer = [&](int min, int max) {
-      const double v = parse_number(where, value, min, max);
-      if (v != std::floor(v)) throw UsageError(where + ": '" + value + "' is not an integer");
-      return static_cast<int>(v);
-    };
+    auto number = [&](const params::Parameter& p) { return params::parse_number(p, value, where); };
     if (key == "type") {
       try {
         c.type = noise::parse_type(value);
@@ -45,22 +44,24 @@ noise::ChannelSpec parse_channel(const std::string& option, const std::string& t
         throw UsageError(option + " " + e.what());
       }
     } else if (key == "cells") {
-      c.cells = integer(1, 1 << 20);
+      c.cells = static_cast<int>(number(n::cells));
     } else if (key == "octaves") {
-      c.octaves = integer(1, noise::max_octaves);
+      c.octaves = static_cast<int>(number(n::octaves));
     } else if (key == "lacunarity") {
-      c.lacunarity = static_cast<float>(parse_number(where, value, 1.0, 8.0));
+      c.lacunarity = static_cast<float>(number(n::lacunarity));
     } else if (key == "gain") {
-      c.gain = static_cast<float>(parse_number(where, value, 0.0, 2.0));
+      c.gain = static_cast<float>(number(n::gain));
     } else if (key == "worley-cells") {
-      c.worley_cells = integer(1, 1 << 20);
+      c.worley_cells = static_cast<int>(number(n::worley_cells));
+      worley_cells_given = true;
     } else if (key == "worley-octaves") {
-      c.worley_octaves = integer(1, noise::max_octaves);
+      c.worley_octaves = static_cast<int>(number(n::worley_octaves));
     } else {
-      throw UsageError(option + ": unknown key '" + key +
-                       "' (keys: type, cells, octaves, lacunarity, gain, worley-cells, worley-octaves)");
+      throw UsageError(option + ": unknown key '" + key + "' (" + keys + ")");
     }
   }
+  // 0 means "as cells", as for --worley-cells, whichever key came first.
+  if (worley_cells_given && c.worley_cells == 0) c.worley_cells = c.cells;
   return c;
 }
 

@@ -8,6 +8,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "core/file_names.hpp"
 #include "apps/cli/commands.hpp"
 #include "core/json.hpp"
 #include "core/progress.hpp"
@@ -64,7 +65,7 @@ int run_orbit_render(const OrbitOptions& orbit) {
   }
   if (orbit.out.empty()) throw UsageError("--out: give an output file (.png or .exr)");
   const std::filesystem::path out(orbit.out);
-  const std::string extension = out.extension().string();
+  const std::string extension = core::lowercase_extension(out);
   if (extension != ".png" && extension != ".exr") throw UsageError("--out: '" + orbit.out + "' must end in .png or .exr");
   std::filesystem::path directory = out.parent_path();
   if (directory.empty()) directory = ".";

@@ -1,10 +1,12 @@
 // nephele render: cloud layers seen from the ground, from weather files or the global cover.
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
 #include <algorithm>
 #include <sstream>
 
+#include "core/file_names.hpp"
 #include "apps/cli/commands.hpp"
 #include "io/elevation_files.hpp"
 #include "io/noise_cache.hpp"
@@ -13,6 +15,7 @@
 #include "render/render_limits.hpp"
 #include "apps/cli/options.hpp"
 #include "apps/cli/scene_options.hpp"
+#include "core/number_text.hpp"
 #include "core/progress.hpp"
 #include "params/table.hpp"
 #include "params/values.hpp"
@@ -35,9 +38,10 @@ void parse_position(const std::string& text, regional::Scene& scene) {
   if (second == std::string::npos || text.find(',', second + 1) != std::string::npos)
     throw UsageError("--at", text, form, "is not three numbers");
   auto number = [&](const std::string& part, const char* name) {
-    if (!params::is_decimal_number(part, false))
-      throw UsageError(std::string("--at (") + name + ")", part, form, "is not a number");
-    return std::strtod(part.c_str(), nullptr);
+    const auto value = core::parse_decimal(part, core::NumberForm::real);
+    if (!value) throw UsageError(std::string("--at (") + name + ")", part, form, params::number_problem(part, false));
+    if (!std::isfinite(*value)) throw UsageError(std::string("--at (") + name + ")", part, form, "is out of range");
+    return *value;
   };
   scene.latitude_deg = number(text.substr(0, first), "latitude");
   scene.longitude_deg = number(text.substr(first + 1, second - first - 1), "longitude");
@@ -149,7 +153,7 @@ int run_render(const std::vector<std::string>& arguments) {
     for (const auto& name : outputs) shown.push_back((directory / name).string());
   } else {
     if (out.empty()) throw UsageError("--out: give an output file (.png or .exr)");
-    const std::string extension = std::filesystem::path(out).extension().string();
+    const std::string extension = core::lowercase_extension(out);
     if (extension != ".png" && extension != ".exr")
       throw UsageError("--out: '" + out + "' must end in .png or .exr");
     directory = std::filesystem::path(out).parent_path();

@@ -85,7 +85,7 @@ int run_report(const std::vector<std::string>& all_arguments) {
   gpu::EglContext context;
   if (render_only && no_render) throw UsageError("report render: --no-render leaves nothing to do");
   if (!render_only)
-    for (int size : sweep.sizes) cover::check_cover_fits(context, size);
+    for (int size : sweep.sizes) cover::check_cover_fits(context, size, "--sizes");
   if (!no_render) render::check_render_fits(context, render_sweep.width, render_sweep.height, "--render-size");
   std::error_code error;
   std::filesystem::create_directories(directory, error);

@@ -27,7 +27,7 @@ void load_view_model(const std::string& name, viewer::ViewerOptions& options) {
     options.model = model::example(name);
     options.model_file = name + ".cloud.json";
   } else {
-    options.model = io::read_cloud_model(name);
+    options.model = io::read_cloud_model(name, "--model");
     options.model_file = name;
   }
 }
