@@ -1,11 +1,22 @@
 // The disk cache of noise volumes (src/io/noise_cache.hpp) and its use by nephele render.
 #include <catch2/catch.hpp>
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <future>
+#include <limits>
 #include <thread>
 
 #include "cli_support.hpp"
+#include "core/hash.hpp"
 #include "io/noise_cache.hpp"
 
 namespace fs = std::filesystem;
@@ -41,8 +52,8 @@ TEST_CASE("the float cache returns what was stored and misses on another key, co
 
 TEST_CASE("the float cache removes the least recently used files beyond its cap", "[cache]") {
   TemporaryDirectory dir(true);
-  // Each file: 8 magic + 8 + 1 key + 8 count + 4000 values = 4025 bytes; the cap holds two.
-  const std::uintmax_t file_bytes = 8 + 8 + 1 + 8 + 1000 * 4;
+  // Each file: 8 magic + 8 + 1 key + 8 count + 8 hash + 4000 values = 4033 bytes; the cap holds two.
+  const std::uintmax_t file_bytes = 8 + 8 + 1 + 8 + 8 + 1000 * 4;
   const io::FloatCache cache(dir.path, 2 * file_bytes + 100);
   const std::vector<float> values(1000, 0.5f);
   REQUIRE(cache.store("a", values));
@@ -81,4 +92,267 @@ TEST_CASE("render reuses the cached noise volume with the same image, and --no-c
   CHECK_FALSE(fs::exists(unused_home.path / "nephele"));
   CHECK(read_file(out.path / "first.png") == read_file(out.path / "second.png"));
   CHECK(read_file(out.path / "first.png") == read_file(out.path / "uncached.png"));
+}
+
+namespace {
+
+// Bytes of a cache file for a one-letter key and n values (the layout in io/noise_cache.hpp).
+constexpr std::uintmax_t header_bytes_one_letter_key = 8 + 8 + 1 + 8 + 8;
+std::uintmax_t entry_bytes(std::size_t n) { return header_bytes_one_letter_key + n * sizeof(float); }
+
+// Overwrites `bytes` at `offset` in the file, in place.
+void patch(const fs::path& file, std::uintmax_t offset, const void* bytes, std::size_t size) {
+  std::fstream f(file, std::ios::in | std::ios::out | std::ios::binary);
+  f.seekp(static_cast<std::streamoff>(offset));
+  f.write(static_cast<const char*>(bytes), static_cast<std::streamsize>(size));
+  REQUIRE(f.good());
+}
+
+std::vector<float> ramp(std::size_t n) {
+  std::vector<float> values(n);
+  for (std::size_t i = 0; i < n; ++i) values[i] = 0.25f * static_cast<float>(i) - 7.0f;
+  return values;
+}
+
+void write_bytes(const fs::path& file, std::uintmax_t size) {
+  std::ofstream(file, std::ios::binary) << std::string(size, 'x');
+}
+
+// The only file named cache-*.bin in `directory` (empty when there is none or several).
+fs::path the_entry(const fs::path& directory) {
+  fs::path found;
+  int n = 0;
+  for (const auto& item : fs::directory_iterator(directory))
+    if (item.path().filename().string().rfind("cache-", 0) == 0) {
+      found = item.path();
+      ++n;
+    }
+  return n == 1 ? found : fs::path();
+}
+
+}  // namespace
+
+TEST_CASE("the payload hash changes with any one flipped bit and with the length or seed", "[cache]") {
+  std::vector<unsigned char> bytes(101);  // three 32-byte blocks and a tail of a word and 5 bytes
+  for (std::size_t i = 0; i < bytes.size(); ++i) bytes[i] = static_cast<unsigned char>(i * 37 + 11);
+  const std::uint64_t h = core::block_hash(bytes.data(), bytes.size(), 5);
+  CHECK(core::block_hash(bytes.data(), bytes.size(), 5) == h);
+  CHECK(core::block_hash(bytes.data(), bytes.size(), 6) != h);
+  int unchanged = 0;
+  for (std::size_t i = 0; i < bytes.size(); ++i)
+    for (int bit = 0; bit < 8; ++bit) {
+      bytes[i] ^= static_cast<unsigned char>(1 << bit);
+      unchanged += core::block_hash(bytes.data(), bytes.size(), 5) == h;
+      bytes[i] ^= static_cast<unsigned char>(1 << bit);
+    }
+  CHECK(unchanged == 0);
+  // Zero bytes of different lengths (the tail is zero-padded; the length tells them apart).
+  std::vector<std::uint64_t> of_length;
+  const std::vector<unsigned char> zeros(70, 0);
+  for (std::size_t n = 0; n <= zeros.size(); ++n) of_length.push_back(core::block_hash(zeros.data(), n));
+  std::sort(of_length.begin(), of_length.end());
+  CHECK(std::adjacent_find(of_length.begin(), of_length.end()) == of_length.end());
+}
+
+TEST_CASE("a cache entry whose payload was altered is rebuilt and not served", "[cache]") {
+  TemporaryDirectory dir(true);
+  const io::FloatCache cache(dir.path);
+  const std::vector<float> values = ramp(1000);
+  const fs::path file = cache.file_of("a");
+  REQUIRE(cache.store("a", values));
+  const std::string good = read_file(file);
+  // The values fill the end of the file; the hash precedes them.
+  const std::uintmax_t payload = good.size() - 4000;
+  SECTION("one flipped bit") {
+    const char flipped = static_cast<char>(good[payload + 2001] ^ 0x10);
+    patch(file, payload + 2001, &flipped, 1);
+  }
+  SECTION("a value overwritten with NaN") {
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    patch(file, payload + 4 * 500, &nan, sizeof nan);
+  }
+  SECTION("a value overwritten with infinity and the hash made to match") {
+    std::vector<float> bad = values;
+    bad[500] = std::numeric_limits<float>::infinity();
+    const std::uint64_t hash = core::block_hash(bad.data(), bad.size() * sizeof(float), core::fnv1a("a"));
+    patch(file, payload + 4 * 500, &bad[500], sizeof(float));
+    patch(file, payload - 8, &hash, sizeof hash);
+  }
+  SECTION("the hash overwritten") {
+    const std::uint64_t hash = 0x0123456789abcdefull;
+    patch(file, payload - 8, &hash, sizeof hash);
+  }
+  SECTION("a file of the previous version (no hash)") {
+    // NEPHCAC1: magic, key length, key, count, values.
+    std::string old = "NEPHCAC1";
+    const std::uint64_t key_length = 1, count = 1000;
+    old.append(reinterpret_cast<const char*>(&key_length), 8).append("a");
+    old.append(reinterpret_cast<const char*>(&count), 8);
+    old.append(reinterpret_cast<const char*>(values.data()), 4000);
+    std::ofstream(file, std::ios::binary | std::ios::trunc) << old;
+  }
+  SECTION("a payload zeroed at the same size (a torn write)") {
+    const std::string zeros(4000, '\0');
+    patch(file, payload, zeros.data(), zeros.size());
+  }
+  CHECK_FALSE(cache.load("a", 1000));
+  // The next store replaces the entry, which is then served again.
+  REQUIRE(cache.store("a", values));
+  CHECK(read_file(file) == good);
+  CHECK(cache.load("a", 1000) == values);
+}
+
+TEST_CASE("the float cache refuses to store values that are not finite", "[cache]") {
+  TemporaryDirectory dir(true);
+  const io::FloatCache cache(dir.path);
+  CHECK_FALSE(cache.store("a", {1.0f, std::numeric_limits<float>::quiet_NaN()}));
+  CHECK_FALSE(cache.store("b", {-std::numeric_limits<float>::infinity()}));
+  CHECK(dir.empty());
+}
+
+TEST_CASE("a FIFO named like a cache entry is a miss without blocking and a store replaces it", "[cache]") {
+  TemporaryDirectory dir(true);
+  const io::FloatCache cache(dir.path);
+  const fs::path file = cache.file_of("a");
+  REQUIRE(::mkfifo(file.c_str(), 0600) == 0);
+  // Opening a FIFO for reading waits for a writer: if the load has not returned after 20 s,
+  // open the FIFO's writing end to release it, so that the test fails instead of hanging.
+  auto load = std::async(std::launch::async, [&] { return cache.load("a", 4); });
+  const bool returned = load.wait_for(std::chrono::seconds(20)) == std::future_status::ready;
+  if (!returned) {
+    const int writer = ::open(file.c_str(), O_WRONLY | O_NONBLOCK);
+    if (writer >= 0) ::close(writer);
+  }
+  CHECK(returned);
+  CHECK_FALSE(load.get());
+  const std::vector<float> values = {1.0f, 2.0f, 3.0f, 4.0f};
+  REQUIRE(cache.store("a", values));
+  CHECK(fs::is_regular_file(fs::symlink_status(file)));
+  CHECK(cache.load("a", 4) == values);
+}
+
+TEST_CASE("a symbolic link or directory named like a cache entry is a miss and never written through",
+          "[cache]") {
+  TemporaryDirectory dir(true), elsewhere(true);
+  const io::FloatCache cache(dir.path), other(elsewhere.path);
+  const std::vector<float> values = ramp(8);
+  // A link to a valid entry of the same key: not followed (rename never makes a link).
+  REQUIRE(other.store("a", values));
+  fs::create_symlink(other.file_of("a"), cache.file_of("a"));
+  CHECK_FALSE(cache.load("a", 8));
+  REQUIRE(cache.store("a", ramp(8)));
+  CHECK(fs::is_regular_file(fs::symlink_status(cache.file_of("a"))));
+  CHECK(fs::file_size(other.file_of("a")) == entry_bytes(8));  // the target is untouched
+  // A directory: a miss; the store cannot replace it and skips the cache.
+  fs::create_directory(cache.file_of("b"));
+  CHECK_FALSE(cache.load("b", 8));
+  CHECK_FALSE(cache.store("b", values));
+  CHECK(fs::is_directory(cache.file_of("b")));
+  for (const auto& entry : fs::directory_iterator(cache.directory()))
+    CHECK(entry.path().filename().string().rfind(".tmp-", 0) != 0);
+}
+
+TEST_CASE("the cache trim removes temporary files of killed writers and counts those of live ones",
+          "[cache]") {
+  TemporaryDirectory dir(true);
+  const std::uintmax_t file_bytes = entry_bytes(1000);
+  const io::FloatCache cache(dir.path, 2 * file_bytes + 100);
+  const auto now = fs::file_time_type::clock::now();
+  const std::string pid = std::to_string(::getpid());
+  // 2^22 + 1 is above the kernel's largest PID (PID_MAX_LIMIT): no such process exists.
+  const fs::path dead = dir.path / ".tmp-4194305-1.bin", old = dir.path / (".tmp-" + pid + "-2.bin"),
+                 live = dir.path / (".tmp-" + pid + "-3.bin");
+  write_bytes(dead, 50);
+  write_bytes(old, 50);
+  fs::last_write_time(old, now - std::chrono::hours(2));  // this process's PID, but too old
+  write_bytes(live, file_bytes);
+  REQUIRE(cache.store("a", ramp(1000)));
+  CHECK_FALSE(fs::exists(dead));
+  CHECK_FALSE(fs::exists(old));
+  CHECK(fs::exists(live));
+  fs::last_write_time(cache.file_of("a"), now - std::chrono::hours(1));
+  // a, the live temporary file and b pass the cap: a, the oldest entry, goes.
+  REQUIRE(cache.store("b", ramp(1000)));
+  CHECK_FALSE(fs::exists(cache.file_of("a")));
+  CHECK(fs::exists(cache.file_of("b")));
+  CHECK(fs::exists(live));
+}
+
+TEST_CASE("the cache trim ignores what a symbolic link points to and never removes the entry just stored",
+          "[cache]") {
+  TemporaryDirectory dir(true), elsewhere(true);
+  const std::uintmax_t file_bytes = entry_bytes(1000);
+  const io::FloatCache cache(dir.path, 3 * file_bytes + 100);
+  REQUIRE(cache.store("a", ramp(1000)));
+  REQUIRE(cache.store("b", ramp(1000)));
+  // A large target dated in the future behind a name of the cache's: by its target it would
+  // pass the cap and be the most recently used, so that every real entry would go first.
+  const fs::path big = elsewhere.path / "big.bin";
+  write_bytes(big, 1);
+  fs::resize_file(big, 64 * file_bytes);
+  fs::last_write_time(big, fs::file_time_type::clock::now() + std::chrono::hours(24));
+  const fs::path link = dir.path / "cache-00000000000000ff.bin";
+  fs::create_symlink(big, link);
+  REQUIRE(cache.store("c", ramp(1000)));
+  CHECK(fs::exists(cache.file_of("a")));
+  CHECK(fs::exists(cache.file_of("b")));
+  CHECK(fs::exists(cache.file_of("c")));
+  CHECK_FALSE(fs::exists(fs::symlink_status(link)));  // the link is removed, its target kept
+  CHECK(fs::file_size(big) == 64 * file_bytes);
+  // An entry larger than the whole cap stays; the others go.
+  const io::FloatCache tiny(dir.path, 100);
+  REQUIRE(tiny.store("d", ramp(1000)));
+  CHECK(tiny.load("d", 1000) == ramp(1000));
+  CHECK_FALSE(fs::exists(cache.file_of("a")));
+  CHECK_FALSE(fs::exists(cache.file_of("b")));
+  CHECK_FALSE(fs::exists(cache.file_of("c")));
+}
+
+namespace {
+
+// nephele render with its cache under `home` (XDG_CACHE_HOME), stopped after 120 s so that a
+// render that blocks fails (exit code 124) instead of hanging the test.
+Run render_with_cache(const fs::path& home, const fs::path& png) {
+  return test::run_command("timeout 120 env XDG_CACHE_HOME=" + home.string() + " " + NEPHELE_EXECUTABLE +
+                           " render --view gurten --size 32x18 --view-steps 6 --light-steps 2 --verbose --quiet"
+                           " --out " +
+                           png.string());
+}
+
+}  // namespace
+
+TEST_CASE("render rebuilds a cached noise volume whose bytes were altered instead of reading it",
+          "[cache][cli]") {
+  TemporaryDirectory cache_home(true), out(true);
+  const Run first = render_with_cache(cache_home.path, out.path / "first.png");
+  INFO(first.output);
+  REQUIRE(first.exit_code == 0);
+  const fs::path entry = the_entry(cache_home.path / "nephele");
+  REQUIRE_FALSE(entry.empty());
+  const std::string good = read_file(entry);
+  const char flipped = static_cast<char>(good[good.size() - 4096] ^ 0x40);
+  patch(entry, good.size() - 4096, &flipped, 1);
+  const Run second = render_with_cache(cache_home.path, out.path / "second.png");
+  INFO(second.output);
+  REQUIRE(second.exit_code == 0);
+  CHECK(second.output.find("noise volume: made and cached") != std::string::npos);
+  CHECK(read_file(entry) == good);
+  CHECK(read_file(out.path / "first.png") == read_file(out.path / "second.png"));
+}
+
+TEST_CASE("render is not blocked by a FIFO in place of its cached noise volume", "[cache][cli]") {
+  TemporaryDirectory cache_home(true), out(true);
+  const Run first = render_with_cache(cache_home.path, out.path / "first.png");
+  INFO(first.output);
+  REQUIRE(first.exit_code == 0);
+  const fs::path entry = the_entry(cache_home.path / "nephele");
+  REQUIRE_FALSE(entry.empty());
+  fs::remove(entry);
+  REQUIRE(::mkfifo(entry.c_str(), 0600) == 0);
+  const Run second = render_with_cache(cache_home.path, out.path / "second.png");
+  INFO(second.output);
+  REQUIRE(second.exit_code == 0);  // 124: it blocked until the timeout
+  CHECK(second.output.find("noise volume: made and cached") != std::string::npos);
+  CHECK(fs::is_regular_file(fs::symlink_status(entry)));
+  CHECK(read_file(out.path / "first.png") == read_file(out.path / "second.png"));
 }
