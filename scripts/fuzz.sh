@@ -2,7 +2,7 @@
 # Builds the libFuzzer targets of tests/fuzz in build-fuzz/ (clang, -DNEPHELE_FUZZ=ON) and runs
 # each in turn on one core (docs/testing.md).
 #
-#   scripts/fuzz.sh [SECONDS] [TARGET...]   fuzz each TARGET (default: json time scene weather cloud_model)
+#   scripts/fuzz.sh [SECONDS] [TARGET...]   fuzz each TARGET (default: json time scene weather cloud_model profile text)
 #                                           for SECONDS (default 120)
 #
 # Needs clang++ and libFuzzer's runtime: on Debian bookworm the packages clang and
@@ -21,10 +21,10 @@ if [[ ! "$seconds" =~ ^[1-9][0-9]*$ ]]; then
 fi
 [[ $# -gt 0 ]] && shift
 targets=("$@")
-[[ ${#targets[@]} -gt 0 ]] || targets=(json time scene weather cloud_model)
+[[ ${#targets[@]} -gt 0 ]] || targets=(json time scene weather cloud_model profile text)
 for target in "${targets[@]}"; do
   if [[ ! -d "tests/fuzz/corpus/$target" ]]; then
-    printf 'fuzz.sh: unknown target %s (allowed: json, time, scene, weather, cloud_model)\n' "$target" >&2
+    printf 'fuzz.sh: unknown target %s (allowed: json, time, scene, weather, cloud_model, profile, text)\n' "$target" >&2
     exit 2
   fi
 done

@@ -45,6 +45,12 @@ inline Run run_with_environment(const std::string& environment, const std::strin
 
 inline Run run(const std::string& arguments) { return run_with_environment("", arguments); }
 
+// Without an OpenGL context (an EGL platform that does not exist): a refusal that comes before
+// any GL work exits 2, while anything that reaches GL exits 3.
+inline Run run_without_gl(const std::string& arguments) {
+  return run_with_environment("NEPHELE_EGL_PLATFORM=vulkan", arguments);
+}
+
 // A fresh path under the temporary directory, removed with everything in it at the end of the
 // scope; created at once with create = true (else left to the command under test).
 struct TemporaryDirectory {

@@ -31,14 +31,10 @@
 namespace fs = std::filesystem;
 using namespace nephele;
 using test::Run;
+using test::run_without_gl;
 using test::TemporaryDirectory;
 
 namespace {
-
-// Without an OpenGL context: a refusal that comes first exits 2, any GL work would exit 3.
-Run run_without_gl(const std::string& arguments) {
-  return test::run_with_environment("NEPHELE_EGL_PLATFORM=vulkan", arguments);
-}
 
 template <class Error, class Work>
 std::string error_of(Work work) {

@@ -26,14 +26,10 @@
 namespace fs = std::filesystem;
 using namespace nephele;
 using test::Run;
+using test::run_without_gl;
 using test::TemporaryDirectory;
 
 namespace {
-
-// Refusals come before any GL work: without a context any GL work would exit 3 instead of 2.
-Run run_without_gl(const std::string& arguments) {
-  return test::run_with_environment("NEPHELE_EGL_PLATFORM=vulkan", arguments);
-}
 
 const std::string many_digits(30000, '1');
 

@@ -44,7 +44,11 @@ class Reader {
 
   Turbulence turbulence(const json::Value& v, const std::string& path, Turbulence t) const {
     if (!v.is_object()) k_.fail(path, "must be an object");
-    for (const auto& [key, w] : v.as_object()) {
+    // Named references, not structured bindings: lambdas below capture them, which C++17
+    // (clang 14) does not allow for bindings.
+    for (const auto& entry : v.as_object()) {
+      const std::string& key = entry.first;
+      const json::Value& w = entry.second;
       const std::string name = path + "." + key;
       bool known = false;
       visit_turbulence(t, [&](const params::Parameter& p, auto& field) {
@@ -72,7 +76,11 @@ class Reader {
     const std::string skeleton = polyline ? "points" : p.segment ? "from, to" : "position";
     std::vector<glsl::vec3> points;
     bool has_from = false, has_to = false;
-    for (const auto& [key, w] : v.as_object()) {
+    // Named references, not structured bindings: lambdas below capture them, which C++17
+    // (clang 14) does not allow for bindings.
+    for (const auto& entry : v.as_object()) {
+      const std::string& key = entry.first;
+      const json::Value& w = entry.second;
       const std::string name = path + "." + key;
       if (key == "type") continue;
       if (!polyline && key == (p.segment ? "from" : "position")) {

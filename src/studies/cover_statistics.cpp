@@ -200,7 +200,8 @@ PowerLaw fit_power_law(const std::vector<double>& x, const std::vector<double>& 
 }
 
 std::vector<CloudObject> cloud_objects(const Equirect& map, double max_latitude_deg) {
-  const auto [first, last] = central_rows(map.height, max_latitude_deg);
+  const auto rows_range = central_rows(map.height, max_latitude_deg);
+  const int first = rows_range.first, last = rows_range.second;  // captured below: no bindings (C++17)
   std::vector<CloudObject> objects;
   if (last < first) return objects;
   const int rows = last - first + 1, w = map.width;

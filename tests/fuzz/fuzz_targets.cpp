@@ -1,11 +1,16 @@
 #include "io/cloud_model_files.hpp"
+#include "io/profile_files.hpp"
 #include "io/scene_files.hpp"
 #include "io/weather_files.hpp"
 #include "fuzz_targets.hpp"
 
 #include <cmath>
+#include <cstdlib>
 
+#include "core/error.hpp"
 #include "core/json.hpp"
+#include "core/number_text.hpp"
+#include "core/printable_text.hpp"
 #include "core/time.hpp"
 #include "model/cloud_model.hpp"
 #include "regional/scene.hpp"
@@ -123,10 +128,43 @@ void cloud_model_input(const std::uint8_t* data, std::size_t size) {
           "cloud model: the written model does not read back");
 }
 
+void profile_input(const std::uint8_t* data, std::size_t size) {
+  try {
+    const cover::LatitudeProfile profile = io::parse_profile_csv(text_of(data, size), "fuzz.csv");
+    (void)profile;
+  } catch (const core::InputError&) {
+  }
+}
+
+void text_input(const std::uint8_t* data, std::size_t size) {
+  const std::string text = text_of(data, size);
+  // The number scanner: a text it takes is a whole number strtod reads to its end, within the
+  // length bound; parse_decimal agrees with it.
+  for (const core::NumberForm form : {core::NumberForm::integer, core::NumberForm::real}) {
+    const bool taken = core::is_decimal_number(text, form);
+    require(taken == core::parse_decimal(text, form).has_value(), "parse_decimal disagrees with is_decimal_number");
+    if (!taken) continue;
+    require(text.size() <= core::max_number_text_length, "a number longer than the bound was taken");
+    char* end = nullptr;
+    std::strtod(text.c_str(), &end);
+    require(end == text.c_str() + text.size(), "strtod does not read the whole number '" + text + "'");
+  }
+  // Messages: no control byte survives, and escaping the result again changes nothing.
+  for (const bool keep_lines : {false, true}) {
+    const std::string shown = core::printable(text, core::max_shown_value_bytes, keep_lines);
+    for (const char c : shown) {
+      const auto byte = static_cast<unsigned char>(c);
+      require(byte >= 0x20 || (keep_lines && (c == '\n' || c == '\t')), "a control byte in a printable text");
+      require(byte != 0x7F, "DEL in a printable text");
+    }
+    require(core::printable(shown, shown.size() + 1, keep_lines) == shown, "printable is not idempotent");
+  }
+}
+
 const std::vector<Target>& targets() {
   static const std::vector<Target> all = {
-      {"json", json_input}, {"time", time_input}, {"scene", scene_input}, {"weather", weather_input},
-      {"cloud_model", cloud_model_input}};
+      {"json", json_input},   {"time", time_input}, {"scene", scene_input}, {"weather", weather_input},
+      {"cloud_model", cloud_model_input}, {"profile", profile_input}, {"text", text_input}};
   return all;
 }
 
