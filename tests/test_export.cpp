@@ -408,6 +408,18 @@ TEST_CASE("export celestia: an add-on folder with a white RGBA map, coverage in 
   CHECK_FALSE(std::filesystem::exists(bad.out.path / "README.txt"));  // the set appears whole or not at all
 }
 
+TEST_CASE("export celestia and eve refuse a bad --name with exit code 2 before creating --out", "[export][cli]") {
+  for (const char* preset : {"celestia", "eve"}) {
+    for (const char* name : {"../x", "a b", ""}) {
+      INFO(preset << " --name '" << name << "'");
+      Exported bad(preset, std::string(" --name '") + name + "'");
+      CHECK(bad.run.exit_code == 2);
+      CHECK_THAT(bad.run.output, Catch::Contains("--name"));
+      CHECK_FALSE(std::filesystem::exists(bad.out.path));
+    }
+  }
+}
+
 TEST_CASE("export exr-cube: an N x 6N envmap=cube strip with the +Y face flipped top-bottom, as OpenEXR's layout wants",
           "[export]") {
   Exported e("exr-cube");

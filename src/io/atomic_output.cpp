@@ -2,6 +2,7 @@
 
 #include <dirent.h>
 #include <fcntl.h>
+#include <sys/file.h>
 #include <sys/stat.h>
 #include <sys/syscall.h>
 #include <unistd.h>
@@ -11,7 +12,9 @@
 #include <climits>
 #include <csignal>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
+#include <ctime>
 #include <fstream>
 #include <iostream>
 #include <mutex>
@@ -20,6 +23,8 @@
 #include <stdexcept>
 #include <system_error>
 #include <utility>
+
+#include "core/error.hpp"
 
 namespace nephele::io {
 namespace fs = std::filesystem;
@@ -81,10 +86,14 @@ void remove_tree_at(int parent, const char* name) noexcept {
   }
 }
 
-// ---- SIGINT / SIGTERM: remove the open sets' temporary directories, then end as the signal
-// would have. A slot's state moves by compare-and-swap, so a signal on any thread either
-// removes a set's directory before its commit starts, or waits until the commit is done.
-enum SlotState : int { slot_free, slot_claimed, slot_open, slot_committing, slot_removing };
+// ---- Signals: while a set is open, every signal whose default action ends the process removes
+// the open sets' temporary directories, then ends the process as the signal would have. Only
+// signals at their default action are caught: one that the program ignores (nephele ignores
+// SIGXFSZ, so that a write beyond `ulimit -f` fails with a message) or handles itself does not
+// end the run. A slot's state moves by compare-and-swap, so a signal on any thread either
+// removes a set's directory before its commit starts, or, sent from outside, waits until the
+// commit is done.
+enum SlotState : int { slot_free, slot_claimed, slot_open, slot_committing, slot_removing, slot_removed };
 struct Slot {
   std::atomic<int> state{slot_free};
   char path[PATH_MAX];
@@ -92,30 +101,63 @@ struct Slot {
 constexpr int slot_count = 16;
 Slot slots[slot_count];
 std::atomic<int> pending_signal{0};
-const int handled_signals[2] = {SIGINT, SIGTERM};
-struct sigaction previous_actions[2];
-bool handler_installed[2] = {false, false};
+bool handler_installed[NSIG] = {};
 int open_sets = 0;
 std::mutex install_mutex;
+
+// The signals whose default action ends the process (signal(7)); SIGKILL and SIGSTOP cannot be
+// caught.
+std::vector<int> ending_signals() {
+  std::vector<int> list = {SIGHUP,  SIGINT,  SIGQUIT, SIGILL,  SIGTRAP,   SIGABRT, SIGBUS, SIGFPE,
+                           SIGUSR1, SIGSEGV, SIGUSR2, SIGPIPE, SIGALRM,   SIGTERM, SIGXCPU, SIGXFSZ,
+                           SIGVTALRM, SIGPROF, SIGIO, SIGSYS};
+#ifdef SIGSTKFLT
+  list.push_back(SIGSTKFLT);
+#endif
+#ifdef SIGPWR
+  list.push_back(SIGPWR);
+#endif
+  for (int s = SIGRTMIN; s <= SIGRTMAX; ++s) list.push_back(s);
+  return list;
+}
+
+// Raised by the instruction that faulted, or by abort(): these cannot wait for a commit, since
+// returning from the handler would repeat the fault (abort() ends the process regardless).
+bool raised_by_the_program(int signal_number) {
+  return signal_number == SIGSEGV || signal_number == SIGBUS || signal_number == SIGFPE || signal_number == SIGILL ||
+         signal_number == SIGSYS || signal_number == SIGTRAP || signal_number == SIGABRT;
+}
 
 void remove_open_sets_and_reraise(int signal_number) noexcept {
   for (Slot& slot : slots) {
     int expected = slot_open;
-    if (slot.state.compare_exchange_strong(expected, slot_removing)) remove_tree_at(AT_FDCWD, slot.path);
+    if (slot.state.compare_exchange_strong(expected, slot_removing)) {
+      remove_tree_at(AT_FDCWD, slot.path);
+      slot.state.store(slot_removed);
+    }
   }
-  for (int i = 0; i < 2; ++i)
-    if (handled_signals[i] == signal_number) ::sigaction(signal_number, &previous_actions[i], nullptr);
-  ::raise(signal_number);  // delivered when the handler returns: the default action ends the process
+  // A handler (or destructor) on another thread may be removing a set: the process ends after it.
+  for (Slot& slot : slots)
+    while (slot.state.load() == slot_removing) {
+      const timespec pause{0, 1000000};
+      ::nanosleep(&pause, nullptr);
+    }
+  struct sigaction action {};
+  action.sa_handler = SIG_DFL;
+  sigemptyset(&action.sa_mask);
+  ::sigaction(signal_number, &action, nullptr);
+  ::raise(signal_number);  // inside the handler: delivered when it returns; the default action ends the process
 }
 
 void on_signal(int signal_number) {
   const int saved_errno = errno;
-  for (Slot& slot : slots)
-    if (slot.state.load() == slot_committing) {
-      pending_signal.store(signal_number);  // the commit re-raises it when it is done
-      errno = saved_errno;
-      return;
-    }
+  if (!raised_by_the_program(signal_number))
+    for (Slot& slot : slots)
+      if (slot.state.load() == slot_committing) {
+        pending_signal.store(signal_number);  // the commit re-raises it when it is done
+        errno = saved_errno;
+        return;
+      }
   remove_open_sets_and_reraise(signal_number);
   errno = saved_errno;
 }
@@ -131,15 +173,16 @@ int claim_slot(const std::string& pattern) {
     std::memcpy(slots[i].path, pattern.c_str(), pattern.size() + 1);
     std::lock_guard<std::mutex> lock(install_mutex);
     if (open_sets++ == 0)
-      for (int k = 0; k < 2; ++k) {
+      for (const int s : ending_signals()) {
         struct sigaction current {};
-        ::sigaction(handled_signals[k], nullptr, &current);
-        handler_installed[k] = current.sa_handler != SIG_IGN;  // an ignored signal stays ignored
-        if (!handler_installed[k]) continue;
+        handler_installed[s] = ::sigaction(s, nullptr, &current) == 0 && !(current.sa_flags & SA_SIGINFO) &&
+                               current.sa_handler == SIG_DFL;
+        if (!handler_installed[s]) continue;
         struct sigaction action {};
         action.sa_handler = on_signal;
-        sigemptyset(&action.sa_mask);
-        ::sigaction(handled_signals[k], &action, &previous_actions[k]);
+        sigfillset(&action.sa_mask);   // no second signal cuts a removal short
+        action.sa_flags = SA_RESTART;  // a signal that waits for a commit does not fail its system calls
+        ::sigaction(s, &action, nullptr);
       }
     slots[i].state.store(slot_open);
     return i;
@@ -152,8 +195,16 @@ void release_slot(int slot) {
   slots[slot].state.store(slot_free);
   std::lock_guard<std::mutex> lock(install_mutex);
   if (--open_sets == 0)
-    for (int k = 0; k < 2; ++k)
-      if (handler_installed[k]) ::sigaction(handled_signals[k], &previous_actions[k], nullptr);
+    for (int s = 1; s < NSIG; ++s)
+      if (handler_installed[s]) {
+        handler_installed[s] = false;
+        struct sigaction current {};
+        if (::sigaction(s, nullptr, &current) != 0 || current.sa_handler != on_signal) continue;  // not ours now
+        struct sigaction action {};
+        action.sa_handler = SIG_DFL;
+        sigemptyset(&action.sa_mask);
+        ::sigaction(s, &action, nullptr);
+      }
 }
 
 // ---- files and directories
@@ -204,24 +255,103 @@ void write_all(int fd, const void* data, std::size_t size, const std::string& sh
   if (::close(file.release()) != 0) throw os_error("could not write " + shown + " (close)", errno);
 }
 
-void copy_file_at(int from, int to, const char* name, mode_t mode, const std::string& shown) {
-  Fd in(::openat(from, name, O_RDONLY | O_NOFOLLOW | O_CLOEXEC));
-  if (in.get() < 0) throw os_error("could not carry over " + shown, errno);
-  const int out = ::openat(to, name, O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, mode & 07777);
-  if (out < 0) throw os_error("could not carry over " + shown, errno);
+// The whole content of `fd`; `what` begins the error message.
+std::string read_all(int fd, const std::string& what) {
   std::string bytes;
   char buffer[65536];
   for (;;) {
-    const ssize_t n = ::read(in.get(), buffer, sizeof buffer);
+    const ssize_t n = ::read(fd, buffer, sizeof buffer);
     if (n < 0 && errno == EINTR) continue;
-    if (n < 0) {
-      ::close(out);
-      throw os_error("could not carry over " + shown, errno);
-    }
-    if (n == 0) break;
+    if (n < 0) throw os_error(what, errno);
+    if (n == 0) return bytes;
     bytes.append(buffer, static_cast<std::size_t>(n));
   }
+}
+
+void copy_file_at(int from, int to, const char* name, mode_t mode, const std::string& shown) {
+  Fd in(::openat(from, name, O_RDONLY | O_NOFOLLOW | O_CLOEXEC));
+  if (in.get() < 0) throw os_error("could not carry over " + shown, errno);
+  const std::string bytes = read_all(in.get(), "could not carry over " + shown);
+  const int out = ::openat(to, name, O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, mode & 07777);
+  if (out < 0) throw os_error("could not carry over " + shown, errno);
   write_all(out, bytes.data(), bytes.size(), shown);
+}
+
+// Copies the file `from` to the new file `to` (its parent directories created), checked and
+// synced like every write of a set.
+void copy_file(const fs::path& from, const fs::path& to, const std::string& shown) {
+  Fd in(::open(from.c_str(), O_RDONLY | O_NOFOLLOW | O_CLOEXEC));
+  struct stat st {};
+  if (in.get() < 0 || ::fstat(in.get(), &st) != 0) throw os_error("could not copy " + from.string(), errno);
+  const std::string bytes = read_all(in.get(), "could not copy " + from.string());
+  std::error_code error;
+  fs::create_directories(to.parent_path(), error);
+  const int out = ::open(to.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, st.st_mode & 07777);
+  if (out < 0) throw os_error("could not write " + shown, errno);
+  write_all(out, bytes.data(), bytes.size(), shown);
+}
+
+// Holds an exclusive flock on the directory `place` until the descriptor closes (the kernel
+// releases it when the process ends, however it ends): commits into one place take turns.
+// Where the directory cannot be opened for reading, or its file system has no flock (some
+// network file systems), the commit goes ahead unlocked.
+Fd lock_place(const fs::path& place) {
+  Fd fd(::open(place.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC));
+  if (fd.get() < 0) return fd;
+  while (::flock(fd.get(), LOCK_EX) != 0)
+    if (errno != EINTR) return Fd();
+  return fd;
+}
+
+// The process's umask, without changing it: /proc/self/status shows it (Linux 4.7 and later);
+// umask() reads it only by setting it, which a file created meanwhile by another thread would see.
+mode_t current_umask() {
+  std::ifstream status("/proc/self/status");
+  for (std::string line; std::getline(status, line);)
+    if (line.compare(0, 6, "Umask:") == 0) return static_cast<mode_t>(std::strtoul(line.c_str() + 6, nullptr, 8));
+  const mode_t mask = ::umask(022);
+  ::umask(mask);
+  return mask;
+}
+
+// Whether `path` is the root of a mount, which cannot be renamed. statx says so for bind mounts
+// of a directory of the same file system too (Linux 5.8 and later); the device number, the
+// fallback, only for another file system (a bind mount is then found when the exchange fails).
+bool is_mount_point(const fs::path& path, const fs::path& parent) {
+#ifdef STATX_ATTR_MOUNT_ROOT
+  struct statx sx {};
+  if (::statx(AT_FDCWD, path.c_str(), 0, STATX_BASIC_STATS, &sx) == 0 && (sx.stx_attributes_mask & STATX_ATTR_MOUNT_ROOT))
+    return (sx.stx_attributes & STATX_ATTR_MOUNT_ROOT) != 0;
+#endif
+  struct stat st {}, parent_st {};
+  return ::stat(path.c_str(), &st) == 0 && ::stat(parent.c_str(), &parent_st) == 0 && st.st_dev != parent_st.st_dev;
+}
+
+// Whether a component of the relative `name` starts with the temporary prefix.
+bool reserved(const fs::path& name) {
+  const std::string prefix = OutputSet::temporary_prefix;
+  for (const fs::path& part : name)
+    if (part.string().compare(0, prefix.size(), prefix) == 0) return true;
+  return false;
+}
+
+// What keeps the file `name` from being renamed into `directory`: a directory at its name, or
+// something other than a directory where one of its parent directories goes. Empty if nothing;
+// else the problem, with the path in `*at`.
+std::string target_problem(const fs::path& directory, const std::string& name, fs::path* at) {
+  const fs::path relative = fs::path(name).lexically_normal();
+  fs::path path = directory;
+  for (auto part = relative.begin(); part != relative.end(); ++part) {
+    path /= *part;
+    const bool last = std::next(part) == relative.end();
+    struct stat st {};
+    // The file itself is never followed (rename replaces a link); its parents may be links.
+    if ((last ? ::lstat(path.c_str(), &st) : ::stat(path.c_str(), &st)) != 0) return {};
+    *at = path;
+    if (last && S_ISDIR(st.st_mode)) return "is a directory, where a file of the output set goes";
+    if (!last && !S_ISDIR(st.st_mode)) return "is not a directory, but files of the output set go inside it";
+  }
+  return {};
 }
 
 // Carries the entries of `from` that the new set did not write over into `to`: files as hard
@@ -331,6 +461,8 @@ void clean_stale(const fs::path& place) {
     stale.push_back(name);
   }
   ::closedir(listing);
+  if (stale.empty()) return;
+  const Fd lock = lock_place(place);  // the roll forward renames into `place`, as a commit does
   for (const std::string& name : stale) {
     const fs::path path = place / name;
     if (name.compare(0, std::strlen(".nephele-aside-"), ".nephele-aside-") == 0) {
@@ -339,8 +471,17 @@ void clean_stale(const fs::path& place) {
       continue;
     }
     struct stat st {};
+    if (::lstat(path.c_str(), &st) != 0) continue;  // completed by another run meanwhile
     if (::lstat((path / manifest_name).c_str(), &st) == 0) {
-      move_into_place(path, place, read_manifest(path / manifest_name));
+      try {
+        move_into_place(path, place, read_manifest(path / manifest_name));
+      } catch (const std::exception& e) {
+        // Kept, since it holds the only copy of those files; this run goes on, so that one
+        // obstacle (such as a directory made at a file's name) does not stop every later run.
+        std::cerr << "nephele: warning: could not complete the output set of an interrupted run: " << e.what()
+                  << "\n";
+        continue;
+      }
       std::cerr << "nephele: completed the output set of an interrupted run from " << path.string() << "\n";
     }
     remove_tree_at(AT_FDCWD, path.c_str());
@@ -352,7 +493,9 @@ void clean_stale(const fs::path& place) {
 fs::path make_temporary(const fs::path& place, const std::string& label, int* error, int* slot = nullptr) {
   const std::string short_label = label.substr(0, 160);  // NAME_MAX is 255
   std::string pattern = fs::absolute(place / (OutputSet::temporary_prefix + short_label + "-" +
-                                              std::to_string(::getpid()) + "-XXXXXX")).string();
+                                              std::to_string(::getpid()) + "-XXXXXX"))
+                            .lexically_normal()
+                            .string();
   const int claimed = slot ? claim_slot(pattern) : -1;
   char* buffer = claimed >= 0 ? slots[claimed].path : pattern.data();
   if (!::mkdtemp(buffer)) {
@@ -385,10 +528,8 @@ OutputSet::OutputSet(fs::path directory, Scope scope) : scope_(scope) {
   const fs::path parent = target.has_parent_path() ? target.parent_path() : fs::path(".");
   if (scope_ == Scope::directory) {
     const std::string name = target.filename().string();
-    struct stat parent_st {};
     if (name == "." || name == ".." || target == target.root_path()) scope_ = Scope::files;
-    if (::stat(target.c_str(), &st) == 0 && ::stat(parent.c_str(), &parent_st) == 0 && st.st_dev != parent_st.st_dev)
-      scope_ = Scope::files;  // a mount point cannot be renamed
+    if (is_mount_point(target, parent)) scope_ = Scope::files;
   }
   int error = 0;
   if (scope_ == Scope::directory) {
@@ -410,15 +551,18 @@ OutputSet::OutputSet(fs::path directory, Scope scope) : scope_(scope) {
     if (temporary_.empty()) throw os_error("could not create a temporary directory in " + directory_.string(), error);
   }
   target_ = target;
-  if (scope_ == Scope::directory && ::stat(target_.c_str(), &st) == 0 && S_ISDIR(st.st_mode)) {
-    ::chmod(temporary_.c_str(), st.st_mode & 07777);  // the new directory keeps the old one's permissions
+  if (scope_ == Scope::directory) {
+    // The new directory keeps the old one's permissions, or gets those of mkdir (mkdtemp's are 0700).
+    const bool exists = ::stat(target_.c_str(), &st) == 0 && S_ISDIR(st.st_mode);
+    ::chmod(temporary_.c_str(), exists ? st.st_mode & 07777 : 0777 & ~current_umask());
   }
 }
 
 OutputSet::~OutputSet() {
   if (!done_ && slot_ >= 0) {
     int expected = slot_open;
-    if (!slots[slot_].state.compare_exchange_strong(expected, slot_removing)) return;  // a signal handler has it
+    if (!slots[slot_].state.compare_exchange_strong(expected, slot_removing))
+      for (;;) ::pause();  // a signal handler on another thread removes the set and ends the process
   }
   if (!done_) remove_tree_at(AT_FDCWD, temporary_.c_str());
   release_slot(slot_);
@@ -428,10 +572,10 @@ void OutputSet::write(const std::string& name, const void* data, std::size_t siz
   const fs::path relative = fs::path(name).lexically_normal();
   const std::string first = relative.empty() ? std::string() : relative.begin()->string();
   if (done_) throw std::logic_error("output set " + directory_.string() + " is already committed");
-  if (name.empty() || relative.is_absolute() || first == ".." || first == "." ||
-      first.compare(0, std::strlen(temporary_prefix), temporary_prefix) == 0 || name.find('\n') != std::string::npos)
+  if (name.empty() || relative.is_absolute() || first == ".." || first == "." || reserved(relative) ||
+      name.find('\n') != std::string::npos)
     throw std::invalid_argument("output name '" + name + "' must be a relative path inside " + directory_.string() +
-                                " (no '..', not starting with " + temporary_prefix + ")");
+                                " (no '..', no part starting with " + temporary_prefix + ")");
   for (const std::string& existing : names_)
     if (existing == relative.string())
       throw std::invalid_argument("output " + final_path(name).string() + " is written twice");
@@ -452,6 +596,9 @@ void OutputSet::write(const std::string& name, const void* data, std::size_t siz
 
 void OutputSet::commit() {
   if (done_) throw std::logic_error("output set " + directory_.string() + " is already committed");
+  // Taken while a signal may still remove the set, so that a run waiting here can be stopped.
+  const fs::path place = scope_ == Scope::files ? directory_ : target_.has_parent_path() ? target_.parent_path() : ".";
+  const Fd lock = lock_place(place);
   if (slot_ >= 0) {
     int expected = slot_open;
     if (!slots[slot_].state.compare_exchange_strong(expected, slot_committing))
@@ -463,7 +610,8 @@ void OutputSet::commit() {
     else
       commit_files();
   } catch (...) {
-    if (slot_ >= 0 && !done_) slots[slot_].state.store(slot_open);
+    // Reopened for the handlers, or, once the manifest is committed, left to the next run.
+    if (slot_ >= 0) slots[slot_].state.store(done_ ? slot_claimed : slot_open);
     if (const int signal_number = pending_signal.exchange(0)) remove_open_sets_and_reraise(signal_number);
     throw;
   }
@@ -492,6 +640,9 @@ void OutputSet::commit_directory() {
       throw os_error("could not rename " + temporary_.string() + " to " + directory_.string(), errno);
   } else if (exchange(temporary_, target_) == 0) {
     old_set = temporary_;
+  } else if (falls_back_to_files(errno)) {
+    commit_directory_as_files();
+    return;
   } else if (errno == EINVAL || errno == ENOSYS || errno == ENOTSUP) {
     // No RENAME_EXCHANGE on this file system: the old directory is renamed aside, then the new
     // one in; between the two renames the directory does not exist (docs/formats.md).
@@ -501,6 +652,10 @@ void OutputSet::commit_directory() {
     if (::rename(target_.c_str(), aside.c_str()) != 0) {
       const int rename_error = errno;
       ::rmdir(aside.c_str());
+      if (falls_back_to_files(rename_error)) {
+        commit_directory_as_files();
+        return;
+      }
       throw os_error("could not rename " + directory_.string() + " aside", rename_error);
     }
     if (::rename(temporary_.c_str(), target_.c_str()) != 0) {
@@ -517,7 +672,40 @@ void OutputSet::commit_directory() {
   if (!old_set.empty()) remove_tree_at(AT_FDCWD, old_set.c_str());
 }
 
+// The directory is a mount point found only now (a bind mount where statx cannot tell, or one
+// mounted while the set was written): the set's files are committed one by one as a file set,
+// from a temporary directory inside the mount, since no rename crosses into it. The caller holds
+// the lock of the directory's parent; the file set takes the directory's own, as file sets do.
+void OutputSet::commit_directory_as_files() {
+  const Fd lock = lock_place(directory_);
+  int error = 0;
+  const fs::path files = make_temporary(directory_, "files", &error);
+  if (files.empty()) throw os_error("could not create a temporary directory in " + directory_.string(), error);
+  try {
+    for (const std::string& name : names_)
+      copy_file(temporary_ / name, files / name, final_path(name).string() + " (temporary " + (files / name).string() + ")");
+  } catch (...) {
+    remove_tree_at(AT_FDCWD, files.c_str());
+    throw;
+  }
+  remove_tree_at(AT_FDCWD, temporary_.c_str());
+  temporary_ = files;
+  // While committing, no handler reads the slot; a failure before the manifest reopens it.
+  if (slot_ >= 0 && temporary_.string().size() < PATH_MAX)
+    std::memcpy(slots[slot_].path, temporary_.c_str(), temporary_.string().size() + 1);
+  scope_ = Scope::files;
+  commit_files();
+}
+
 void OutputSet::commit_files() {
+  // A rename that fails half-way would leave a mix of old and new files: what would make one
+  // fail is looked for first (other nephele runs wait for the lock meanwhile).
+  for (const std::string& name : names_) {
+    fs::path at;
+    const std::string problem = target_problem(directory_, name, &at);
+    if (!problem.empty())
+      throw std::runtime_error(at.string() + " " + problem + "; nothing was replaced (remove or rename it)");
+  }
   // The manifest, complete and durable before the first rename, lets the next run finish the
   // renames of a run that was killed half-way.
   std::string manifest;
@@ -532,6 +720,32 @@ void OutputSet::commit_files() {
   done_ = true;  // from here on the set is completed, by this run or the next
   move_into_place(temporary_, directory_, names_);
   remove_tree_at(AT_FDCWD, temporary_.c_str());
+}
+
+bool falls_back_to_files(int error) { return error == EBUSY || error == EXDEV; }
+
+void check_output_files(const fs::path& directory, const std::vector<std::string>& names, const std::string& field) {
+  for (const std::string& name : names) {
+    if (reserved(fs::path(name)))
+      throw core::InputError(field, name, "",
+                             std::string("starts with ") + OutputSet::temporary_prefix +
+                                 ", which names the temporary directories of output sets (clean-ups remove them)");
+    fs::path at;
+    const std::string problem = target_problem(directory, name, &at);
+    if (!problem.empty()) throw core::InputError(field, at.string(), "", problem + " (remove or rename it)");
+  }
+}
+
+void check_output_directory(const fs::path& directory, const std::string& field) {
+  fs::path normal = directory.lexically_normal();
+  if (normal.filename().empty()) normal = normal.parent_path();  // "out/" is "out"
+  if (reserved(normal.filename()))
+    throw core::InputError(field, directory.string(), "",
+                           std::string("starts with ") + OutputSet::temporary_prefix +
+                               ", which names the temporary directories of output sets (clean-ups remove them)");
+  std::error_code error;
+  if (fs::exists(directory, error) && !fs::is_directory(directory, error))
+    throw core::InputError(field, directory.string(), "DIR", "exists and is not a directory");
 }
 
 void write_file(const fs::path& path, const void* data, std::size_t size) {

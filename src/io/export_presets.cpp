@@ -154,7 +154,6 @@ void write_dds(OutputSet& out, std::vector<std::string>& names, const ExportPres
 
 void write_celestia(OutputSet& out, std::vector<std::string>& names, const ExportPreset& preset,
                     const CoverFaces& faces, const ExportOptions& options) {
-  check_addon_name(options.name);
   const ImageData map = equirect_image(faces);
   // White cloud colour, coverage in alpha; the equirect already has the prime meridian at the centre.
   ImageData rgba{map.width, map.height, 4, std::vector<float>(std::size_t(4) * map.pixels.size(), 1.0f)};
@@ -267,7 +266,6 @@ Direction eve_face_direction(int face, double u, double v) {
 
 void write_eve(OutputSet& out, std::vector<std::string>& names, const ExportPreset& preset, const CoverFaces& faces,
                const ExportOptions& options) {
-  check_addon_name(options.name);
   const std::string folder = "GameData/" + options.name + "/";
   const ImageData map = equirect_image(faces);  // EVE's equirect: u as nephele's, v = 0 in row 0 (north)
   const std::string equirect = folder + "clouds_equirect.dds";
@@ -565,9 +563,15 @@ void check_texture_limit(const ExportPreset& preset, int face_size) {
                              "gl-faces, ktx2, dds (cube faces), or generate a smaller --size");
 }
 
+void check_export_options(const ExportPreset& preset, const ExportOptions& options) {
+  if (preset.name == "celestia" || preset.name == "eve") check_addon_name(options.name);
+  if (preset.name == "ktx2") parse_texture_sample(options.ktx2_format);
+}
+
 std::vector<std::string> write_export(OutputSet& outputs, const ExportPreset& preset, const CoverFaces& faces,
                                       const ExportOptions& options) {
   check_texture_limit(preset, faces.size);
+  check_export_options(preset, options);
   std::vector<std::string> names;
   if (preset.name == "equirect") write_equirect(outputs, names, preset, faces);
   else if (preset.name == "gl-faces") write_gl_faces(outputs, names, preset, faces);

@@ -53,6 +53,10 @@ struct ExportOptions {
   std::string name = "nephele_clouds";  // celestia: the add-on's folder and file names
 };
 
+// Throws core::InputError for an option the preset would refuse (celestia's and eve's --name,
+// ktx2's --format), so that it is refused before --out is created and before any work.
+void check_export_options(const ExportPreset& preset, const ExportOptions& options);
+
 // Writes the preset's files (README.txt included) into `outputs` without committing it, and
 // returns their names in the order written. Equirect presets need a current GL context.
 std::vector<std::string> write_export(OutputSet& outputs, const ExportPreset& preset, const CoverFaces& faces,

@@ -51,6 +51,7 @@ int run_export(const std::vector<std::string>& arguments) {
   io::ExportOptions export_options;
   export_options.ktx2_format = format;
   export_options.name = name;
+  io::check_export_options(preset, export_options);  // before --out is created
   io::CoverFaces faces;
   io::VolumeData volume;
   if (preset.volume) {
@@ -62,8 +63,7 @@ int run_export(const std::vector<std::string>& arguments) {
   }
 
   const std::filesystem::path directory(out);
-  if (std::filesystem::exists(directory) && !std::filesystem::is_directory(directory))
-    throw UsageError("--out", out, "DIR", "exists and is not a directory");
+  io::check_output_directory(directory, "--out");
   std::unique_ptr<gpu::EglContext> context;
   if (preset.needs_equirect) context = std::make_unique<gpu::EglContext>();
   std::error_code error;

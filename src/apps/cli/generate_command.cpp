@@ -10,6 +10,7 @@
 #include "apps/cli/cover_options.hpp"
 #include "cover/cover_limits.hpp"
 #include "render/render_limits.hpp"
+#include "io/atomic_output.hpp"
 #include "io/cover_files.hpp"
 #include "io/export_presets.hpp"
 #include "params/values.hpp"
@@ -74,8 +75,7 @@ int run_generate(const std::vector<std::string>& arguments) {
       throw UsageError("--export", exports, std::string(params::run::cover_exports.allowed), "names no preset or ends with a comma");
   }
   const std::filesystem::path directory(out);
-  if (std::filesystem::exists(directory) && !std::filesystem::is_directory(directory))
-    throw UsageError("--out: '" + out + "' exists and is not a directory");
+  io::check_output_directory(directory, "--out");
 
   gpu::EglContext context;
   if (verbose)

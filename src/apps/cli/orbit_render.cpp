@@ -71,6 +71,7 @@ int run_orbit_render(const OrbitOptions& orbit) {
   if (directory.empty()) directory = ".";
   if (std::filesystem::exists(directory) && !std::filesystem::is_directory(directory))
     throw UsageError("--out: '" + directory.string() + "' is not a directory");
+  io::check_output_files(directory, {out.filename().string(), out.stem().string() + ".json"}, "--out");
 
   render::OrbitCamera camera;
   camera.latitude_deg = orbit.lat;

@@ -143,13 +143,18 @@ int run_render(const std::vector<std::string>& arguments) {
   // The outputs are names inside `directory`; with --scene and --out DIR the set owns DIR, else
   // it is only its own files in a directory shared with others.
   std::vector<std::string> outputs, shown;
+  std::string outputs_field = "--out";  // where the names come from, for errors
   std::filesystem::path directory;
   io::OutputSet::Scope scope = io::OutputSet::Scope::files;
   if (!scene_file.empty() && (out.empty() || std::filesystem::is_directory(out) || std::filesystem::path(out).extension().empty())) {
     if (scene.outputs.empty()) throw UsageError(scene_file + ": 'outputs': give at least one file name, or --out FILE");
     directory = out.empty() ? std::filesystem::path(".") : std::filesystem::path(out);
-    if (!out.empty()) scope = io::OutputSet::Scope::directory;
+    if (!out.empty()) {
+      scope = io::OutputSet::Scope::directory;
+      io::check_output_directory(directory, "--out");
+    }
     outputs = scene.outputs;
+    outputs_field = scene_file + ": 'outputs'";
     for (const auto& name : outputs) shown.push_back((directory / name).string());
   } else {
     if (out.empty()) throw UsageError("--out: give an output file (.png or .exr)");
@@ -166,6 +171,11 @@ int run_render(const std::vector<std::string>& arguments) {
     if (!parent.empty() && std::filesystem::exists(parent) && !std::filesystem::is_directory(parent))
       throw UsageError("--out: '" + parent.string() + "' is not a directory");
   }
+  // Checked before any work: a reserved name, or a directory where an output or the sidecar goes.
+  std::vector<std::string> written = outputs;
+  const std::filesystem::path first(outputs.front());
+  written.push_back((first.parent_path() / (first.stem().string() + ".json")).string());
+  io::check_output_files(directory, written, outputs_field);
 
   gpu::EglContext context;
   if (verbose) std::cerr << "renderer: " << context.info().renderer << "\n";

@@ -79,8 +79,7 @@ int run_report(const std::vector<std::string>& all_arguments) {
   check.height = render_sweep.height;
   regional::validate_scene(check, "--render-size", {{"size", "--render-size"}});
   const std::filesystem::path directory(out);
-  if (std::filesystem::exists(directory) && !std::filesystem::is_directory(directory))
-    throw UsageError("--out: '" + out + "' exists and is not a directory");
+  io::check_output_directory(directory, "--out");
 
   gpu::EglContext context;
   if (render_only && no_render) throw UsageError("report render: --no-render leaves nothing to do");

@@ -6,6 +6,7 @@
 
 #include "apps/cli/commands.hpp"
 #include "apps/cli/options.hpp"
+#include "io/atomic_output.hpp"
 #include "params/table.hpp"
 #include "studies/cover_statistics.hpp"
 
@@ -28,10 +29,9 @@ int run_stats(const std::vector<std::string>& arguments) {
     return exit_ok;
   }
   if (cover_dir.empty()) throw UsageError("COVER_DIR", "", "a directory written by nephele generate", "is missing");
-  const studies::CoverStatistics stats = studies::cover_statistics(cover_dir);
   const std::filesystem::path directory = out.empty() ? std::filesystem::path(cover_dir) / "stats" : std::filesystem::path(out);
-  if (std::filesystem::exists(directory) && !std::filesystem::is_directory(directory))
-    throw UsageError("--out: '" + directory.string() + "' exists and is not a directory");
+  io::check_output_directory(directory, "--out");
+  const studies::CoverStatistics stats = studies::cover_statistics(cover_dir);
   io::OutputSet outputs(directory, io::OutputSet::Scope::directory);
   studies::write_statistics(outputs, stats);
 
