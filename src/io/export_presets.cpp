@@ -564,8 +564,8 @@ void check_texture_limit(const ExportPreset& preset, int face_size) {
 }
 
 void check_export_options(const ExportPreset& preset, const ExportOptions& options) {
-  if (preset.name == "celestia" || preset.name == "eve") check_addon_name(options.name);
-  if (preset.name == "ktx2") parse_texture_sample(options.ktx2_format);
+  if (preset.takes_name) check_addon_name(options.name);
+  if (preset.takes_format) parse_texture_sample(options.ktx2_format);
 }
 
 std::vector<std::string> write_export(OutputSet& outputs, const ExportPreset& preset, const CoverFaces& faces,
