@@ -45,7 +45,7 @@ constexpr double kCompassHalfSectorDeg = 11.25;
 // accuracy (nanometres): +- 1500 m is a choice (empirical), not derived.
 constexpr double kGurtenSolothurnM = 33000;
 constexpr double kDistanceCheckM = 1500;
-// Built-in site coordinates against the reference table (tests/../shared/data/sites.csv): both
+// Built-in site coordinates against the reference table (tests/data/sites.csv, with its sources): both
 // are written with 5 decimals and the same decimal text gives the same double, so equal values
 // agree exactly; 1e-5 deg (one unit of the last decimal, 1.1 m north-south) is the table's
 // precision, not a rounding bound.
@@ -121,12 +121,9 @@ TEST_CASE("the views run from Gurten north-north-east and from Bantiger south-we
         Approx(kGurtenSolothurnM).epsilon(0).margin(kDistanceCheckM));
 }
 
-TEST_CASE("the built-in coordinates match the reference table when it is present", "[sites]") {
-  std::ifstream csv(std::string(NEPHELE_SOURCE_DIR) + "/../shared/data/sites.csv");
-  if (!csv) {
-    WARN("../shared/data/sites.csv not present; skipped");
-    return;
-  }
+TEST_CASE("the built-in coordinates match the reference table of tests/data/sites.csv", "[sites]") {
+  std::ifstream csv(std::string(NEPHELE_SOURCE_DIR) + "/tests/data/sites.csv");
+  REQUIRE(csv);
   std::string line;
   int matched = 0;
   while (std::getline(csv, line)) {

@@ -185,7 +185,7 @@ void write_celestia(OutputSet& out, std::vector<std::string>& names, const Expor
 
 // OpenEXR's cube environment layout (OpenEXR "envmap" attribute, ENVMAP_CUBE): an N x 6N
 // vertical strip +X, -X, +Y, -Y, +Z, -Z with every face mirrored relative to the GL face: the
-// X and Z faces left-right, the Y faces top-bottom (/work/shared/REFERENCE.md, "Cubemap faces").
+// X and Z faces left-right, the Y faces top-bottom (docs/conventions.md, "Other programs"; docs/export.md, "exr-cube").
 void write_exr_cube(OutputSet& out, std::vector<std::string>& names, const ExportPreset& preset,
                     const CoverFaces& faces) {
   const int n = faces.size;
@@ -213,7 +213,7 @@ void write_exr_cube(OutputSet& out, std::vector<std::string>& names, const Expor
 
 // FlightGear Earthview: eight tiles of 90 x 90 degrees whose shipped models (Models/Astro/
 // clouds_*.ac) map UVs 1/128 .. 127/128, so the content fills the inner 126/128 of a tile and
-// the border repeats the edge pixels (/work/shared/REFERENCE.md, "Export conventions").
+// the border repeats the edge pixels (docs/export.md, "flightgear").
 void write_flightgear(OutputSet& out, std::vector<std::string>& names, const ExportPreset& preset,
                       const CoverFaces& faces) {
   const int tile = flightgear_tile_size(faces.size), border = tile / 128, content = tile - 2 * border;

@@ -37,7 +37,7 @@ const std::vector<ExportPreset>& export_presets();
 const ExportPreset& find_export_preset(const std::string& name);
 
 // The widest texture an export writes: OpenGL 4.5's guaranteed GL_MAX_TEXTURE_SIZE, the limit of
-// llvmpipe, most GPUs and Unity (/work/shared/REFERENCE.md).
+// llvmpipe, most GPUs and Unity (docs/export.md).
 constexpr int max_texture_edge = 16384;
 // FlightGear's tile edge for face size n: the smallest power of two >= n, at least 128 (the
 // border is tile/128 pixels).
