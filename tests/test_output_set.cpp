@@ -393,6 +393,34 @@ TEST_CASE("a directory at a file's name stops the file set's commit before anyth
   CHECK(read_file(place.path / "y.png") == "next");
 }
 
+TEST_CASE("a directory at a file's name stops a directory set's exchange and keeps what is inside it", "[output]") {
+  // The exchange would otherwise take the user's directory away with the old set.
+  TemporaryDirectory place(true);
+  put(place.path / "a.txt", "old");
+  fs::create_directory(place.path / "b.txt");
+  put(place.path / "b.txt" / "notes", "the user's");
+  {
+    io::OutputSet set(place.path, io::OutputSet::Scope::directory);
+    set.write("a.txt", "new");
+    set.write("b.txt", "new");
+    CHECK_THROWS_WITH(set.commit(), Catch::Contains((place.path / "b.txt").string()) &&
+                                        Catch::Contains("is a directory"));
+  }
+  CHECK(read_file(place.path / "a.txt") == "old");
+  CHECK(read_file(place.path / "b.txt" / "notes") == "the user's");
+  CHECK(entries_starting(place.path.parent_path(), ".nephele-" + place.path.filename().string()).empty());
+}
+
+TEST_CASE("generate refuses a directory at one of its files' names with exit 2 before the run", "[output][cli]") {
+  TemporaryDirectory out(true);
+  fs::create_directory(out.path / "cover.json");
+  put(out.path / "cover.json" / "notes", "the user's");
+  const test::Run r = test::run_without_gl("generate --size 8 --out " + out.path.string());
+  CHECK(r.exit_code == 2);
+  CHECK_THAT(r.output, Catch::Contains("cover.json") && Catch::Contains("is a directory"));
+  CHECK(read_file(out.path / "cover.json" / "notes") == "the user's");
+}
+
 TEST_CASE("a killed run's file set that cannot be completed is kept and reported, and does not stop later runs",
           "[output]") {
   TemporaryDirectory place(true);

@@ -626,6 +626,8 @@ void OutputSet::commit_directory() {
   const bool exists = ::lstat(target_.c_str(), &st) == 0;
   if (exists && !S_ISDIR(st.st_mode)) throw std::runtime_error(directory_.string() + " is no longer a directory");
   if (exists) {
+    // A directory of the user's at a file's name would go with the old set: refused instead.
+    check_targets();
     Fd from = open_directory(target_), to = open_directory(temporary_);
     carry_over(from.get(), to.get(), directory_);
   }
@@ -697,15 +699,19 @@ void OutputSet::commit_directory_as_files() {
   commit_files();
 }
 
-void OutputSet::commit_files() {
-  // A rename that fails half-way would leave a mix of old and new files: what would make one
-  // fail is looked for first (other nephele runs wait for the lock meanwhile).
+void OutputSet::check_targets() const {
   for (const std::string& name : names_) {
     fs::path at;
     const std::string problem = target_problem(directory_, name, &at);
     if (!problem.empty())
       throw std::runtime_error(at.string() + " " + problem + "; nothing was replaced (remove or rename it)");
   }
+}
+
+void OutputSet::commit_files() {
+  // A rename that fails half-way would leave a mix of old and new files: what would make one
+  // fail is looked for first (other nephele runs wait for the lock meanwhile).
+  check_targets();
   // The manifest, complete and durable before the first rename, lets the next run finish the
   // renames of a run that was killed half-way.
   std::string manifest;

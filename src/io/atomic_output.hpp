@@ -60,6 +60,9 @@ class OutputSet {
  private:
   void commit_directory();
   void commit_files();
+  // Throws when something in the final place keeps a file of the set from going there (a
+  // directory at its name); nothing is replaced then.
+  void check_targets() const;
   void commit_directory_as_files();
 
   std::filesystem::path directory_;  // where the set appears, as the caller named it

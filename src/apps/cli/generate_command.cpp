@@ -76,6 +76,8 @@ int run_generate(const std::vector<std::string>& arguments) {
   }
   const std::filesystem::path directory(out);
   io::check_output_directory(directory, "--out");
+  // A directory of the user's at one of the set's names is refused before the run, not after.
+  io::check_output_files(directory, io::cover_file_names(file_options), "--out");
 
   gpu::EglContext context;
   if (verbose)
