@@ -10,6 +10,9 @@
 #include <sstream>
 
 #include "cli_support.hpp"
+#include "core/error.hpp"
+#include "cover/cover_limits.hpp"
+#include "gl_support.hpp"
 #include "io/image_files.hpp"
 #include "params/table.hpp"
 #include "core/json.hpp"
@@ -130,7 +133,6 @@ TEST_CASE("bad input exits with code 2 naming the option and writes nothing", "[
   const std::pair<std::string, std::string> cases[] = {
       {"generate --size 0" + dir, "--size"},
       {"generate --size 100000" + dir, "--size"},
-      {"generate --size 16384" + dir, "--size"},  // within range, beyond memory or driver limit
       {"generate --step nan" + dir, "--step"},
       {"generate --coverage 1.5" + dir, "--coverage"},
       {"generate --seed -1" + dir, "--seed"},
@@ -139,7 +141,15 @@ TEST_CASE("bad input exits with code 2 naming the option and writes nothing", "[
       {"generate --colour red" + dir, "--colour"},
       {"frobnicate", "frobnicate"},
   };
-  for (const auto& [arguments, option] : cases) {
+  std::vector<std::pair<std::string, std::string>> all(std::begin(cases), std::end(cases));
+  // Within the table's range but beyond this driver's or this machine's memory: llvmpipe refuses
+  // 16384; a GPU with room for it (an H200 has) makes the cover, so the case is not asked there.
+  try {
+    cover::check_cover_fits(test::test_context(), 16384);
+  } catch (const core::InputError&) {
+    all.push_back({"generate --size 16384" + dir, "--size"});
+  }
+  for (const auto& [arguments, option] : all) {
     const Run r = run(arguments);
     INFO(arguments << "\n" << r.output);
     CHECK(r.exit_code == 2);

@@ -185,6 +185,23 @@ TEST_CASE("periodic Worley noise tiles exactly for negative coordinates too", "[
   CHECK(wrap_cell(ivec3(-1, -7, 12), period) == ivec3(3, 5, 2));
 }
 
+TEST_CASE("a wrapped index is exact when the division's floored quotient is one off, as a GPU's may be", "[worley]") {
+  // GLSL lets float division err by 2.5 ulp (NVIDIA's does: 21.0 / 7.0 may floor to 2), so
+  // wrap_axis's quotient can miss by one either way; wrap_remainder must still give the true
+  // remainder in [0, period), which integer arithmetic gives here for comparison.
+  for (int period = 1; period <= 20; ++period) {
+    for (int c = -2000; c <= 2000; ++c) {
+      const int exact = ((c % period) + period) % period;
+      const int quotient = (c - exact) / period;
+      for (int miss = -1; miss <= 1; ++miss) {
+        INFO("period " << period << ", index " << c << ", quotient off by " << miss);
+        REQUIRE(wrap_remainder(c, period, quotient + miss) == exact);
+      }
+      REQUIRE(wrap_axis(c, period) == exact);
+    }
+  }
+}
+
 TEST_CASE("a neighbour's wrapped index stepped from the wrapped cell equals its own floor division", "[worley]") {
   // wrap_step replaces wrap_axis's division in the 27-cell searches, so it must give the same
   // integer for every index and period, negative indices, period 1 and 0 (unbounded) included.

@@ -5,11 +5,19 @@
 #include "prelude.glsl"
 #include "hash.glsl"
 
-// Wraps one lattice index into [0, period); period 0 leaves it unbounded. Uses floor division
-// so that negative indices wrap correctly (GLSL % is undefined for negative operands); exact
-// for |c| < 2^24.
+// c - period * quotient, moved into [0, period) when the quotient is off by one: GLSL's float
+// division may be 2.5 ulp off (NVIDIA's is; 21.0 / 7.0 can floor to 2), so the floored quotient
+// of wrap_axis can miss by one either way. Exact for |c| < 2^23 and any quotient within one.
+int wrap_remainder(int c, int period, int quotient) {
+  int r = c - period * quotient;
+  return r < 0 ? r + period : (r >= period ? r - period : r);
+}
+
+// Wraps one lattice index into [0, period); period 0 leaves it unbounded. Floor division, so
+// that negative indices wrap correctly (GLSL % is undefined for negative operands), with the
+// remainder corrected: exact on every driver for |c| < 2^23.
 int wrap_axis(int c, int period) {
-  return period > 0 ? c - period * int(floor(float(c) / float(period))) : c;
+  return period > 0 ? wrap_remainder(c, period, int(floor(float(c) / float(period)))) : c;
 }
 
 // The same for each axis of a cell index.

@@ -6,7 +6,8 @@ vec4 probe_worley(mat4 x) {
   int f = int(x[0].x);
   ivec3 period = ivec3(vec3(x[2]));
   uvec3 key = uvec3(vec3(x[3]));
-  if (f == 0) return vec4(vec3(wrap_cell(ivec3(vec3(x[1])), period)), 0.0f);
+  // w: the remainder of index x[1].x by 7 from the given quotient x[1].y (integer arithmetic).
+  if (f == 0) return vec4(vec3(wrap_cell(ivec3(vec3(x[1])), period)), float(wrap_remainder(int(x[1].x), 7, int(x[1].y))));
   if (f == 1) return vec4(feature_offset(ivec3(vec3(x[1])), period, key), 0.0f);
   if (f == 2) {
     float best = x[0].y;
