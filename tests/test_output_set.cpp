@@ -348,8 +348,14 @@ TEST_CASE("every signal that ends a run removes its temporary directory, and the
   getrlimit(RLIMIT_CORE, &core_limit);
   const rlimit no_core{0, core_limit.rlim_max};
   setrlimit(RLIMIT_CORE, &no_core);
-  const int signals[] = {SIGHUP,  SIGINT,  SIGQUIT,   SIGTERM, SIGPIPE, SIGALRM, SIGUSR1,  SIGUSR2,
-                         SIGXCPU, SIGXFSZ, SIGVTALRM, SIGPROF, SIGABRT, SIGSEGV, SIGRTMIN, SIGRTMAX};
+  std::vector<int> signals = {SIGHUP,  SIGINT,  SIGQUIT,   SIGTERM, SIGPIPE, SIGALRM,  SIGUSR1, SIGUSR2,
+                              SIGXCPU, SIGXFSZ, SIGVTALRM, SIGPROF, SIGABRT, SIGRTMIN, SIGRTMAX};
+  // In an AddressSanitizer build (scripts/sanitize.sh) SIGSEGV is the sanitizer's (handle_segv):
+  // it reports and exits 1, so nephele, which catches only signals at their default action,
+  // leaves it alone there.
+#if !defined(__SANITIZE_ADDRESS__)
+  signals.push_back(SIGSEGV);
+#endif
   for (const int signal_number : signals) {
     INFO("signal " << signal_number << " (" << strsignal(signal_number) << ")");
     TemporaryDirectory place(true);
