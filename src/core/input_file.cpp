@@ -9,26 +9,16 @@
 #include <cstring>
 #include <memory>
 
+#include "core/file_descriptor.hpp"
 #include "core/memory.hpp"
 
 namespace nephele::core {
-namespace {
-
-struct Descriptor {
-  int fd = -1;
-  ~Descriptor() {
-    if (fd >= 0) close(fd);
-  }
-};
-
-}  // namespace
 
 std::uint64_t regular_file_size(const std::string& path) {
-  Descriptor d;
-  d.fd = open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
-  if (d.fd < 0) throw InputFileError(path + ": cannot be read (" + std::strerror(errno) + ")");
+  const FileDescriptor d(open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC));
+  if (d.get() < 0) throw InputFileError(path + ": cannot be read (" + std::strerror(errno) + ")");
   struct stat info {};
-  if (fstat(d.fd, &info) != 0) throw InputFileError(path + ": cannot be read (" + std::strerror(errno) + ")");
+  if (fstat(d.get(), &info) != 0) throw InputFileError(path + ": cannot be read (" + std::strerror(errno) + ")");
   if (!S_ISREG(info.st_mode))
     throw InputFileError(path + ": not a regular file (devices, pipes and directories are not read)");
   return static_cast<std::uint64_t>(info.st_size);

@@ -1,3 +1,4 @@
+#include "core/file_descriptor.hpp"
 #include "io/atomic_output.hpp"
 
 #include <dirent.h>
@@ -209,21 +210,7 @@ void release_slot(int slot) {
 
 // ---- files and directories
 
-class Fd {
- public:
-  explicit Fd(int fd = -1) : fd_(fd) {}
-  ~Fd() {
-    if (fd_ >= 0) ::close(fd_);
-  }
-  Fd(Fd&& other) noexcept : fd_(other.release()) {}
-  Fd(const Fd&) = delete;
-  Fd& operator=(const Fd&) = delete;
-  int get() const { return fd_; }
-  int release() { return std::exchange(fd_, -1); }
-
- private:
-  int fd_;
-};
+using Fd = core::FileDescriptor;
 
 Fd open_directory(const fs::path& path) {
   Fd fd(::open(path.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC));
@@ -241,18 +228,9 @@ void sync_directory(const fs::path& path) {
 // Writes, fsyncs and closes `fd`; `shown` names the file in errors.
 void write_all(int fd, const void* data, std::size_t size, const std::string& shown) {
   Fd file(fd);
-  const char* bytes = static_cast<const char*>(data);
-  while (size > 0) {
-    const ssize_t written = ::write(file.get(), bytes, size);
-    if (written < 0) {
-      if (errno == EINTR) continue;
-      throw os_error("could not write " + shown, errno);
-    }
-    bytes += written;
-    size -= static_cast<std::size_t>(written);
-  }
+  if (!core::write_exactly(file.get(), data, size)) throw os_error("could not write " + shown, errno);
   if (::fsync(file.get()) != 0) throw os_error("could not write " + shown + " (fsync)", errno);
-  if (::close(file.release()) != 0) throw os_error("could not write " + shown + " (close)", errno);
+  if (!file.close()) throw os_error("could not write " + shown + " (close)", errno);
 }
 
 // The whole content of `fd`; `what` begins the error message.

@@ -15,6 +15,7 @@
 #include <ctime>
 #include <random>
 
+#include "core/file_descriptor.hpp"
 #include "core/hash.hpp"
 #include "gpu/pass_timer.hpp"
 #include "render/cloud_renderer.hpp"
@@ -44,49 +45,7 @@ std::uint64_t content_hash(const std::string& key, const float* values, std::siz
 // Bytes before the values: magic, key length, key, value count, content hash.
 std::size_t header_bytes(const std::string& key) { return sizeof magic + 8 + key.size() + 8 + 8; }
 
-class Descriptor {
- public:
-  explicit Descriptor(int fd) : fd_(fd) {}
-  ~Descriptor() {
-    if (fd_ >= 0) ::close(fd_);
-  }
-  Descriptor(const Descriptor&) = delete;
-  Descriptor& operator=(const Descriptor&) = delete;
-  int get() const { return fd_; }
-  // Closes now, for the error of close() itself (a write that failed late).
-  bool close() {
-    const int fd = fd_;
-    fd_ = -1;
-    return ::close(fd) == 0;
-  }
-
- private:
-  int fd_;
-};
-
-bool read_all(int fd, void* data, std::size_t bytes) {
-  auto* p = static_cast<char*>(data);
-  while (bytes > 0) {
-    const ssize_t n = ::read(fd, p, bytes);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) return false;
-    p += n;
-    bytes -= static_cast<std::size_t>(n);
-  }
-  return true;
-}
-
-bool write_all(int fd, const void* data, std::size_t bytes) {
-  const auto* p = static_cast<const char*>(data);
-  while (bytes > 0) {
-    const ssize_t n = ::write(fd, p, bytes);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) return false;
-    p += n;
-    bytes -= static_cast<std::size_t>(n);
-  }
-  return true;
-}
+using Descriptor = core::FileDescriptor;
 
 bool all_finite(const std::vector<float>& values) {
   return std::all_of(values.begin(), values.end(), [](float v) { return std::isfinite(v); });
@@ -143,7 +102,7 @@ std::optional<std::vector<float>> FloatCache::load(const std::string& key, std::
       static_cast<std::uintmax_t>(status.st_size) != header + count * sizeof(float))
     return std::nullopt;
   std::string head(header, '\0');
-  if (!read_all(fd.get(), head.data(), header)) return std::nullopt;
+  if (!core::read_exactly(fd.get(), head.data(), header)) return std::nullopt;
   std::uint64_t key_length = 0, stored_count = 0, stored_hash = 0;
   const char* p = head.data();
   if (std::memcmp(p, magic, sizeof magic) != 0) return std::nullopt;
@@ -153,7 +112,7 @@ std::optional<std::vector<float>> FloatCache::load(const std::string& key, std::
   std::memcpy(&stored_hash, p + sizeof magic + 16 + key.size(), 8);
   if (stored_count != count) return std::nullopt;
   std::vector<float> values(count);
-  if (!read_all(fd.get(), values.data(), count * sizeof(float))) return std::nullopt;
+  if (!core::read_exactly(fd.get(), values.data(), count * sizeof(float))) return std::nullopt;
   // Damaged bytes (a flipped bit, a torn write after a crash) or values that are not numbers:
   // a miss, which the caller's store replaces.
   if (content_hash(key, values.data(), count) != stored_hash) return std::nullopt;
@@ -187,8 +146,8 @@ bool FloatCache::store(const std::string& key, const std::vector<float>& values)
     std::memcpy(p + sizeof magic + 8, key.data(), key.size());
     std::memcpy(p + sizeof magic + 8 + key.size(), &count, 8);
     std::memcpy(p + sizeof magic + 16 + key.size(), &hash, 8);
-    const bool written = write_all(fd.get(), head.data(), head.size()) &&
-                         write_all(fd.get(), values.data(), values.size() * sizeof(float));
+    const bool written = core::write_exactly(fd.get(), head.data(), head.size()) &&
+                         core::write_exactly(fd.get(), values.data(), values.size() * sizeof(float));
     if (!fd.close() || !written) {
       fs::remove(temporary, error);
       return false;
