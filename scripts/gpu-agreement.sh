@@ -21,7 +21,7 @@ produce() {
   "$nephele" noise --type perlin-worley --size 64 --octaves 3 --seed 3 --out "$dir/perlin_worley.exr" --quiet
   "$nephele" noise --type worley --size 64 --octaves 4 --seed 3 --out "$dir/worley.exr" --quiet
   "$nephele" model --example towering --size 64 --no-preview --out "$dir/model" --quiet
-  "$nephele" render --view gurten --size 320x180 --terrain flat --no-cache --out "$dir/gurten.exr" --quiet
+  "$nephele" render --view gurten --size 320x180 --quality final --terrain flat --no-cache --out "$dir/gurten.exr" --quiet
   "$nephele" render --view orbit --size 320x180 --earth-texture "$repo_root/docs/images/cover_equirect.png" \
     --out "$dir/orbit.exr" --quiet
   # Only the images are compared; sidecars hold timings and the device's name.

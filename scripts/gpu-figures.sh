@@ -65,9 +65,9 @@ for run in 1 2; do
 done
 timed "$nephele" bench render --size 1920x1080 --repeat 3 --no-sweep
 for view in gurten bantiger; do
-  timed "$nephele" render --view "$view" --size 1920x1080 --out "$work/$view.png" --verbose --quiet
+  timed "$nephele" render --view "$view" --size 1920x1080 --quality final --out "$work/$view.png" --verbose --quiet
 done
-timed "$nephele" render --scene "$repo_root/scenes/gurten-thunderstorm.json" --size 1920x1080 \
+timed "$nephele" render --scene "$repo_root/scenes/gurten-thunderstorm.json" --size 1920x1080 --quality final \
   --out "$work/storm.png" --verbose --quiet
 
 # Agreement across drivers: small outputs of fixed seeds, the same commands as

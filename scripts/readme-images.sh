@@ -3,9 +3,9 @@
 #   docs/images/cover_equirect.png           nephele generate (defaults), the equirect preview
 #   docs/images/cover_stats.png              nephele stats of that cover (coverage by latitude, spectrum, D)
 #   docs/images/cover_equirect_surface.png   nephele generate --surface etopo5 (the land/ocean mask)
-#   docs/images/render_gurten.png/.json      nephele render --view gurten (defaults)
+#   docs/images/render_gurten.png/.json      nephele render --view gurten (--quality final)
 #   docs/images/render_gurten_panorama.*     the same scene as a panorama
-#   docs/images/render_bantiger.png/.json    nephele render --view bantiger (defaults)
+#   docs/images/render_bantiger.png/.json    nephele render --view bantiger (--quality final)
 #   docs/images/model_examples.png           nephele model previews of the four built-in clouds
 #   docs/images/render_orbit.png/.json       nephele render --view orbit of the default cover
 #   docs/images/gurten-thunderstorm.png      scenes/gurten-thunderstorm.json (convective clouds)
@@ -26,18 +26,18 @@ cp "$work/cover/cover_equirect.png" docs/images/cover_equirect.png
 cp "$work/stats/stats.png" docs/images/cover_stats.png
 "$nephele" generate --surface etopo5 --files png --quiet --out "$work/cover-surface"
 cp "$work/cover-surface/cover_equirect.png" docs/images/cover_equirect_surface.png
-"$nephele" render --view gurten --no-cache --out "$work/render_gurten.png"
+"$nephele" render --view gurten --quality final --no-cache --out "$work/render_gurten.png"
 cp "$work/render_gurten.png" "$work/render_gurten.json" docs/images/
-"$nephele" render --view gurten --panorama --no-cache --out "$work/render_gurten_panorama.png"
+"$nephele" render --view gurten --panorama --quality final --no-cache --out "$work/render_gurten_panorama.png"
 cp "$work/render_gurten_panorama.png" "$work/render_gurten_panorama.json" docs/images/
-"$nephele" render --view bantiger --no-cache --quiet --out "$work/render_bantiger.png"
+"$nephele" render --view bantiger --quality final --no-cache --quiet --out "$work/render_bantiger.png"
 cp "$work/render_bantiger.png" "$work/render_bantiger.json" docs/images/
 "$nephele" render --view orbit --cover "$work/cover" --altitude-km 12000 --time 2026-06-21T17:00Z --quiet \
   --out "$work/render_orbit.png"
 cp "$work/render_orbit.png" "$work/render_orbit.json" docs/images/
-"$nephele" render --scene scenes/gurten-thunderstorm.json --no-cache --quiet --out "$work/storm"
+"$nephele" render --scene scenes/gurten-thunderstorm.json --quality final --no-cache --quiet --out "$work/storm"
 cp "$work/storm/gurten-thunderstorm.png" docs/images/gurten-thunderstorm.png
-"$nephele" render --scene scenes/bantiger-fog.json --no-cache --quiet --out "$work/fog"
+"$nephele" render --scene scenes/bantiger-fog.json --quality final --no-cache --quiet --out "$work/fog"
 cp "$work/fog/bantiger-fog.png" docs/images/bantiger-fog.png
 examples=(fair-weather towering cumulonimbus stratocumulus)
 for example in "${examples[@]}"; do

@@ -1,6 +1,8 @@
 // The nephele executable end to end.
 #include <catch2/catch.hpp>
 
+#include "params/render_quality.hpp"
+
 #include <sys/wait.h>
 
 #include <cstdlib>
@@ -219,6 +221,35 @@ TEST_CASE("render writes a tone-mapped PNG and a sidecar listing the passes", "[
   const json::Value sidecar = json::parse(read_file(out.path / "view.json"));
   CHECK(sidecar.at("weather_source").as_string() == "stations");
   CHECK(sidecar.at("passes").as_array().size() >= 2);
+  // The default quality chose the frames and the divisor; the steps typed override it.
+  const params::RenderQuality& quality = params::default_render_quality();
+  const json::Value& chosen = sidecar.at("quality");
+  CHECK(chosen.at("name").as_string() == "default");
+  CHECK(chosen.at("target_display_rms").as_number() == quality.target_display_rms);
+  const auto names = [](const json::Value& list) {
+    std::vector<std::string> out;
+    for (const auto& v : list.as_array()) out.push_back(v.as_string());
+    return out;
+  };
+  CHECK(names(chosen.at("given")) == std::vector<std::string>{"view_steps", "light_steps"});
+  CHECK(names(chosen.at("from_quality")) == std::vector<std::string>{"frames", "resolution_divisor"});
+  CHECK(sidecar.at("steps").at("view").as_number() == 6);
+  CHECK(sidecar.at("steps").at("light").as_number() == 2);
+  CHECK(sidecar.at("steps").at("resolution_divisor").as_number() == quality.resolution_divisor);
+}
+
+TEST_CASE("render --quality final renders at full resolution with the final steps unless a step is given", "[cli][render]") {
+  TemporaryDirectory out;
+  const std::string png = (out.path / "view.png").string();
+  const Run r = run("render --view gurten --size 16x8 --quality final --light-steps 3 --terrain flat --out " + png);
+  INFO(r.output);
+  REQUIRE(r.exit_code == 0);
+  const json::Value sidecar = json::parse(read_file(out.path / "view.json"));
+  const params::RenderQuality& final_quality = params::final_render_quality();
+  CHECK(sidecar.at("quality").at("name").as_string() == "final");
+  CHECK(sidecar.at("steps").at("view").as_number() == final_quality.view_steps);
+  CHECK(sidecar.at("steps").at("light").as_number() == 3);
+  CHECK(sidecar.at("steps").at("resolution_divisor").as_number() == 1);
 }
 
 TEST_CASE("render rejects bad input with code 2 naming the key or option", "[cli][render]") {
@@ -246,7 +277,10 @@ TEST_CASE("render rejects bad input with code 2 naming the key or option", "[cli
       {"render --view gurten --weather " + bad_cape.string() + png, "hourly.cape[0]: -5 is outside the allowed range 0 to 10000"},
       {"render --view gurten --out " + (out.path / "x.jpg").string(), ".png or .exr"},
       {"render --view gurten --fov 200" + png, "--fov"},
+      {"render --view gurten --quality best" + png, "--quality"},
+      {"render --scene " + (out.path / "quality.json").string() + " --out " + out.path.string(), "'quality': 'best' is not a quality (allowed: draft|default|final)"},
   };
+  std::ofstream(out.path / "quality.json") << R"({"view": "gurten", "quality": "best", "outputs": ["a.png"]})";
   for (const auto& [arguments, expected] : cases) {
     const Run r = run(arguments);
     INFO(arguments << "\n" << r.output);

@@ -144,7 +144,8 @@ TEST_CASE("the marcher on the GPU agrees with its C++ twin pixel by pixel", "[re
     for (int y = 0; y < cam.height; ++y)
       for (int x = 0; x < cam.width; ++x) {
         int loops = 0;
-        const glm::vec4 cpu = glsl::render_pixel(glm::ivec2(x, y), glm::ivec2(cam.width, cam.height), params, loops, sources);
+        float ground_distance = 0;
+        const glm::vec4 cpu = glsl::render_pixel(glm::ivec2(x, y), glm::ivec2(cam.width, cam.height), params, loops, ground_distance, sources);
         if (glsl::loop_limited(loops)) ++limited;
         const float* g = &gpu.radiance.pixels[(static_cast<size_t>(y) * cam.width + x) * 4];
         if (cpu.w > 0.5f) ++cloudy;
@@ -312,8 +313,9 @@ TEST_CASE("the air below an overcast layer scatters no direct sunlight: a pixel 
   for (int k = 0; k < 4; ++k) {
     const glm::ivec2 pixel(2 * k + 1, k);
     int n = 0;
-    const glm::vec4 with = glsl::render_pixel(pixel, glm::ivec2(down.width, down.height), params, n, sources);
-    const glm::vec4 without = glsl::render_pixel(pixel, glm::ivec2(down.width, down.height), unshaded, n, sources);
+    float ground_distance = 0;
+    const glm::vec4 with = glsl::render_pixel(pixel, glm::ivec2(down.width, down.height), params, n, ground_distance, sources);
+    const glm::vec4 without = glsl::render_pixel(pixel, glm::ivec2(down.width, down.height), unshaded, n, ground_distance, sources);
     // The ray's clear-sky in-scattering to the ground (no cloud on it: opacity 0).
     const glm::vec3 d = glsl::view_direction(pixel, glm::ivec2(down.width, down.height), params);
     const glm::vec2 ground = glsl::ray_sphere(glm::vec3(0.0f), d, centre, params.earth_radius);

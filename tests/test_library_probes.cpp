@@ -875,6 +875,11 @@ TEST_CASE("cloud_march.glsl on the GPU agrees with the CPU", "[probe][march]") {
     cases.push_back({arguments(5, vec4(0, r(5000.0f, 150000.0f), 0, 0), vec4(0), d), crossing});
     cases.push_back(relative(arguments(6, vec4(0, 150000.0f, r(0.0f, 1.0f), 0), vec4(0), d), march));
     cases.push_back(relative(arguments(7, vec4(0), vec4(0), vec4(0), pixel), march));
+    // View rays ending at the bare sphere (falling 0.2 to 1.2 rad: the crossing's tolerance) or
+    // rising to the atmosphere's top (-1 and its distance, whose rounding is the same).
+    const vec4 down(d.x, d.y, -d.z, 0);
+    cases.push_back({arguments(21, vec4(0), vec4(0), down), crossing});
+    cases.push_back({arguments(21, vec4(0), vec4(0), d), crossing});
     cases.push_back({arguments(8, vec4(float(65535 + k - 6), 0, 0, 0)), kExact});
     // Baked Webanck fields at p_n within 0.2 (frequencies up to 400: texel coordinates below
     // 0.2 x 400 / 4 x 16 = 320, whose rounding moves a lookup by kPosition-like amounts).
@@ -886,6 +891,18 @@ TEST_CASE("cloud_march.glsl on the GPU agrees with the CPU", "[probe][march]") {
     cases.push_back(relative(arguments(11, vec4(k % 2 ? -1.0f : 0.0f, k % 2 ? -1.0e30f : 3000.0f, 0, 0),
                                        vec4(p.x, p.y, k % 2 ? -860.0f : altitude - 860.0f, 0), vec4(0), pixel + vec4(0, 0, float(k), 0)),
                              march));
+  }
+  // view_ray_end on the CPU: a falling ray meets the bare sphere where ray_sphere says (the
+  // terrain is off), a rising one meets no ground.
+  for (int k = 0; k < 8; ++k) {
+    const float elevation = r(0.2f, 1.2f), azimuth = r(-3.0f, 3.0f);
+    const vec3 up(std::cos(elevation) * std::sin(azimuth), std::cos(elevation) * std::cos(azimuth), std::sin(elevation));
+    const vec3 down(up.x, up.y, -up.z);
+    const MarchParams m = probe_march_params();
+    const vec3 centre(0.0f, 0.0f, -(m.earth_radius + m.camera_altitude));
+    const vec4 falls = cpu(arguments(21, vec4(0), vec4(0), vec4(down, 0)));
+    CHECK(falls.x == Approx(ray_sphere(vec3(0.0f), down, centre, m.earth_radius).x).epsilon(0).margin(crossing));
+    CHECK(cpu(arguments(21, vec4(0), vec4(0), vec4(up, 0))).x == -1.0f);
   }
   // Shadow maps: points of the cumulus within 25 km, texels anywhere in the map; the depth
   // through the alto from the cumulus's top (relative, a march).

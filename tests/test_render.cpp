@@ -186,7 +186,7 @@ TEST_CASE("a resolution divisor renders the smaller image and upsamples it to th
   const auto stations = io::read_scene_weather(scene);
   scene.resolution_divisor = 2;
   const auto divided = render::render_scene(scene, stations);
-  CHECK(contains(divided.passes, "upsample 1/2"));
+  CHECK(contains(divided.passes, "upsample 1/2 guided by the ground distance"));
   CHECK(divided.render.radiance.width == 16);
   CHECK(divided.render.radiance.height == 8);
   // The same as rendering 8 x 4 pixels with the same field of view and upsampling that (bit for
@@ -196,8 +196,24 @@ TEST_CASE("a resolution divisor renders the smaller image and upsamples it to th
   half.width = 8;
   half.height = 4;
   const auto small = render::render_scene(half, stations);
-  CHECK_FALSE(contains(small.passes, "upsample 1/2"));
-  CHECK(render::upsample_bilinear(small.render.radiance, 16, 8).pixels == divided.render.radiance.pixels);
+  CHECK_FALSE(contains(small.passes, "upsample 1/2 guided by the ground distance"));
+  // The guides: the marched image's ground distance at every pixel, the full size's only near an
+  // edge of it (NaN elsewhere), each -1 (sky) or a distance.
+  const core::ImageData& guide = divided.render.ground_distance;
+  const core::ImageData& full = divided.render.upsampled_ground_distance;
+  REQUIRE(guide.width == 8);
+  REQUIRE(guide.height == 4);
+  REQUIRE(full.width == 16);
+  REQUIRE(full.height == 8);
+  const auto needed = render::guide_pixels(guide, 16, 8);
+  size_t found = 0;
+  for (float g : full.pixels) found += std::isnan(g) ? 0 : 1;
+  CHECK(found == needed.size());
+  for (const auto& p : needed) CHECK((full.pixels[p.y * 16 + p.x] == -1.0f || full.pixels[p.y * 16 + p.x] > 0.0f));
+  for (float g : guide.pixels) CHECK((g == -1.0f || g > 0.0f));
+  // The image: the 8 x 4 render upsampled with those guides (bit for bit: the same marcher on
+  // the same pixels, the same interpolation).
+  CHECK(render::upsample_guided(small.render.radiance, guide, full).pixels == divided.render.radiance.pixels);
 }
 
 TEST_CASE("a scene with weather files does not generate the global cover and one without does", "[render]") {

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "gl_support.hpp"
+#include "params/render_quality.hpp"
 #include "regional/scene.hpp"
 #include "render/upsample.hpp"
 #include "shader_math/shader_math.hpp"
@@ -112,6 +113,154 @@ TEST_CASE("bilinear upsampling lines up pixel centres and clamps at the edges", 
   const auto down_the_middle = render::upsample_bilinear(rgba, 4, 4);
   // Pixel (1, 1) of 4x4 sits at source (0.25, 0.25): 0.75^2 p00 + 0.75 0.25 (p10 + p01) + 0.25^2 p11.
   CHECK(down_the_middle.pixels[(1 * 4 + 1) * 4 + 0] == Approx(0.5625 * 1 + 0.1875 * (5 + 9) + 0.0625 * 13));
+}
+
+TEST_CASE("guided likeness is 1 within the sky, 0 across the horizon and falls with the log of the distance ratio",
+          "[render][report]") {
+  CHECK(render::guided_likeness(-1.0f, -1.0f) == 1.0);
+  CHECK(render::guided_likeness(-1.0f, 500.0f) == 0.0);
+  CHECK(render::guided_likeness(500.0f, -1.0f) == 0.0);
+  CHECK(render::guided_likeness(NAN, 500.0f) == 0.0);  // no distance counts as sky
+  CHECK(render::guided_likeness(2000.0f, 2000.0f) == 1.0);
+  // exp(-(ln r)^2 / (2 0.3^2)): symmetric in a and b.
+  const double r135 = std::exp(-0.5 * std::pow(std::log(1.35) / 0.3, 2));
+  CHECK(render::guided_likeness(1000.0f, 1350.0f) == Approx(r135).epsilon(1e-6));
+  CHECK(render::guided_likeness(1350.0f, 1000.0f) == Approx(r135).epsilon(1e-6));
+  CHECK(render::guided_likeness(1000.0f, 2000.0f) == Approx(std::exp(-0.5 * std::pow(std::log(2.0) / 0.3, 2))).epsilon(1e-6));
+}
+
+namespace {
+
+// A 4 x 4 image upsampled to 16 x 16 whose lower rows are ground: sky value 1 above, ground
+// value 0 below, the low rows' guide -1 (sky) or 1000 m; the full-size guide says sky above row
+// `horizon`, ground (1000 m) from it on.
+struct Horizon {
+  core::ImageData image{4, 4, 1, {}}, guide{4, 4, 1, {}}, full{16, 16, 1, {}};
+  explicit Horizon(int low_horizon, int horizon) {
+    for (int y = 0; y < 4; ++y)
+      for (int x = 0; x < 4; ++x) {
+        image.pixels.push_back(y < low_horizon ? 1.0f : 0.0f);
+        guide.pixels.push_back(y < low_horizon ? -1.0f : 1000.0f);
+      }
+    for (int y = 0; y < 16; ++y)
+      for (int x = 0; x < 16; ++x) full.pixels.push_back(y < horizon ? -1.0f : 1000.0f);
+  }
+};
+
+}  // namespace
+
+TEST_CASE("guided upsampling keeps the horizon where the full-size guide has it, with no blend across it",
+          "[render][report]") {
+  // Low rows 0, 1 sky and 2, 3 ground; the full-size horizon at row 7, inside the source cell
+  // between low rows 1 and 2 (source y = (y + 1/2) / 4 - 1/2 in [1, 2) for rows 6 to 9).
+  const Horizon h(2, 7);
+  const auto out = render::upsample_guided(h.image, h.guide, h.full);
+  REQUIRE(out.width == 16);
+  REQUIRE(out.height == 16);
+  for (int y = 0; y < 16; ++y)
+    for (int x = 0; x < 16; ++x) {
+      INFO("pixel " << x << ", " << y);
+      CHECK(out.pixels[y * 16 + x] == (y < 7 ? 1.0f : 0.0f));
+    }
+  // Bilinear blends rows 6 to 9 (the source cell): what the guide removes.
+  const auto blurred = render::upsample_bilinear(h.image, 16, 16);
+  CHECK(blurred.pixels[7 * 16] == Approx(0.625f));
+  // A full-size sky pixel below the reduced image's horizon (the low rows call it ground) takes
+  // the nearest sky pixel of the 4 x 4 about it: row 10 (source y 2.125) finds row 1's sky.
+  const Horizon lower(2, 11);
+  const auto found = render::upsample_guided(lower.image, lower.guide, lower.full);
+  CHECK(found.pixels[10 * 16 + 3] == 1.0f);
+}
+
+TEST_CASE("guided upsampling is bilinear where the guide is uniform or missing", "[render][report]") {
+  const core::ImageData rgba{2, 2, 4, {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16}};
+  const auto bilinear = render::upsample_bilinear(rgba, 4, 4);
+  // All sky: every weight is bilinear's.
+  const core::ImageData sky_low{2, 2, 1, std::vector<float>(4, -1.0f)};
+  const core::ImageData sky_full{4, 4, 1, std::vector<float>(16, -1.0f)};
+  const auto sky = render::upsample_guided(rgba, sky_low, sky_full);
+  for (size_t k = 0; k < bilinear.pixels.size(); ++k) CHECK(sky.pixels[k] == Approx(bilinear.pixels[k]).epsilon(1e-6));
+  // No full-size guide (NaN, as render_clouds leaves pixels away from edges): bilinear even
+  // where the reduced image's guide has an edge.
+  const core::ImageData edge_low{2, 2, 1, {-1.0f, -1.0f, 800.0f, 800.0f}};
+  const core::ImageData none{4, 4, 1, std::vector<float>(16, NAN)};
+  const auto plain = render::upsample_guided(rgba, edge_low, none);
+  for (size_t k = 0; k < bilinear.pixels.size(); ++k) CHECK(plain.pixels[k] == bilinear.pixels[k]);
+  // Guides of the wrong size or channels are refused.
+  CHECK_THROWS_AS(render::upsample_guided(rgba, sky_full, sky_full), std::invalid_argument);
+}
+
+TEST_CASE("the guide is needed exactly at the full-size pixels whose source cell crosses an edge", "[render][report]") {
+  // Sky in low rows 0, 1, ground from row 2: only the cells between rows 1 and 2 are edges; the
+  // full-size rows whose source y lies in [1, 2) are 6 to 9 (16 / 4 = 4 rows a source row).
+  const Horizon h(2, 7);
+  const auto pixels = render::guide_pixels(h.guide, 16, 16);
+  CHECK(pixels.size() == 4u * 16u);
+  for (const auto& p : pixels) CHECK((p.y >= 6 && p.y <= 9));
+  // Ground at distances within 35 % (likeness above 1/2) is no edge; at twice the distance it is.
+  core::ImageData near_far{2, 2, 1, {1000.0f, 1000.0f, 1300.0f, 1300.0f}};
+  CHECK(render::guide_pixels(near_far, 8, 8).empty());
+  // Twice as far: the cell between the two rows is an edge; the full-size rows whose source y
+  // = (y + 1/2) / 4 - 1/2 (clamped at 0) lies below 1 are 0 to 5.
+  near_far.pixels = {1000.0f, 1000.0f, 2000.0f, 2000.0f};
+  CHECK(render::guide_pixels(near_far, 8, 8).size() == 6u * 8u);
+}
+
+TEST_CASE("the qualities' sweep renders every quality against a reference beyond them at 1280 x 720",
+          "[render][report]") {
+  for (const bool quick : {false, true}) {
+    const auto o = studies::RenderSweepOptions::qualities(quick);
+    const auto variants = o.variants();
+    REQUIRE(variants.size() == std::size(params::render_qualities));
+    for (size_t k = 0; k < variants.size(); ++k) {
+      const params::RenderQuality& q = params::render_qualities[k];
+      CHECK(variants[k].view_steps == q.view_steps);
+      CHECK(variants[k].light_steps == q.light_steps);
+      CHECK(variants[k].frames == q.frames);
+      CHECK(variants[k].divisor == q.resolution_divisor);
+      CHECK(variants[k].view_steps < o.reference_view);
+      CHECK(variants[k].light_steps <= o.reference_light);
+      CHECK(o.width / variants[k].divisor >= 1);
+    }
+    CHECK(o.reference_frames == 1);
+    CHECK(o.width == (quick ? 64 : 1280));
+    CHECK(o.height == (quick ? 36 : 720));
+  }
+  // Each quality is cheaper and coarser than the next, and final is the library's default.
+  for (size_t k = 1; k < std::size(params::render_qualities); ++k) {
+    CHECK(params::render_qualities[k].target_display_rms < params::render_qualities[k - 1].target_display_rms);
+    CHECK(params::render_qualities[k].resolution_divisor <= params::render_qualities[k - 1].resolution_divisor);
+  }
+  const regional::Scene library;
+  CHECK(library.view_steps == params::final_render_quality().view_steps);
+  CHECK(library.resolution_divisor == 1);
+}
+
+TEST_CASE("the qualities' CSV and summary name each quality, its target and whether it meets it", "[render][report]") {
+  const auto o = studies::RenderSweepOptions::qualities(true);
+  std::vector<RenderErrorRow> rows;
+  for (const auto& v : o.variants()) rows.push_back(row(v.view_steps, v.light_steps, 10.0, 0.001, v.frames, v.divisor));
+  rows[0].display_rms = 0.03;  // draft misses its 0.02
+  const std::string csv = studies::render_quality_csv(rows, o);
+  std::stringstream lines(csv);
+  std::string line;
+  std::getline(lines, line);
+  CHECK(line == "quality,target_display_rms,view_steps,light_steps,frames,divisor,display_rms,rel_rms,render_ms,clouds_ms,"
+                "reference_view_steps,reference_light_steps,reference_frames,width,height");
+  int n = 0;
+  while (std::getline(lines, line)) {
+    const auto fields = fields_of(line);
+    REQUIRE(fields.size() == 15u);
+    CHECK(fields[0] == std::string(params::render_qualities[n].name));
+    ++n;
+  }
+  CHECK(n == static_cast<int>(rows.size()));
+  const std::string md = studies::render_quality_markdown(rows, o);
+  CHECK(md.find("| draft |") != std::string::npos);
+  CHECK(count_of(md, "| no |") == 1);
+  CHECK(count_of(md, "| yes |") == rows.size() - 1);
+  rows.pop_back();
+  CHECK_THROWS_AS(studies::render_quality_csv(rows, o), std::invalid_argument);
 }
 
 TEST_CASE("the render error of an image is measured in display values and relative radiance", "[render][report]") {
@@ -241,7 +390,7 @@ TEST_CASE("the render summary section names the defaults their error and the two
   CHECK(md.find("## Render: image error against run time") == 0);
   CHECK(md.find("160 x 90") != std::string::npos);
   CHECK(md.find("192 view x 24 light steps over 4 frames") != std::string::npos);
-  CHECK(md.find("Defaults (of `nephele render` and scene files): 48 view x 6 light steps, display rms 0.2000") !=
+  CHECK(md.find("Defaults (the final quality, `--quality final`, and the library's): 48 view x 6 light steps, display rms 0.2000") !=
         std::string::npos);
   CHECK(md.find("Cheapest within 1.5x the default's error (display rms <= 0.3000): 48 view x 6 light steps, 1/2 "
                 "resolution, display rms 0.4000") == std::string::npos);  // half resolution is too inaccurate here

@@ -216,7 +216,7 @@ TEST_CASE("report --quick writes the render error CSV and diagram and a render s
   const std::string summary = read_file(out.path / "summary.md");
   CHECK(summary.find("Best speed-up at equal error") != std::string::npos);  // the warp part is still there
   CHECK(summary.find("## Render: image error against run time") != std::string::npos);
-  CHECK(summary.find("Defaults (of `nephele render` and scene files): 48 view x 12 light steps, display rms") !=
+  CHECK(summary.find("Defaults (the final quality, `--quality final`, and the library's): 48 view x 12 light steps, display rms") !=
         std::string::npos);
   CHECK(summary.find("Cheapest within 1.5x the default's error") != std::string::npos);
   CHECK(summary.find("Most accurate within the default's time") != std::string::npos);
@@ -229,9 +229,19 @@ TEST_CASE("report --quick writes the render error CSV and diagram and a render s
   CHECK(fs::exists(render_only.path / "render_error.csv"));
   CHECK(fs::exists(render_only.path / "render_error_vs_runtime.svg"));
   CHECK_FALSE(fs::exists(render_only.path / "error_vs_runtime.csv"));
+  // The qualities of render --quality, each with its target and whether it meets it.
+  std::stringstream quality_lines(read_file(render_only.path / "render_quality.csv"));
+  std::string quality_line;
+  std::getline(quality_lines, quality_line);
+  CHECK(quality_line.rfind("quality,target_display_rms,", 0) == 0);
+  int qualities = 0;
+  while (std::getline(quality_lines, quality_line)) ++qualities;
+  CHECK(qualities == 3);
   const std::string only_summary = read_file(render_only.path / "summary.md");
   CHECK(only_summary.find("## Render: image error against run time") == 0);
   CHECK(only_summary.find("speed-up") == std::string::npos);
+  CHECK(only_summary.find("## Render: qualities") != std::string::npos);
+  CHECK(only_summary.find("| default | 16 view x 4 light steps, 1/4 resolution | 0.01 |") != std::string::npos);
 
   // --no-render writes neither render file.
   TemporaryDirectory skipped;

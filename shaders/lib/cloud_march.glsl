@@ -606,19 +606,31 @@ CloudMarch march_clouds(vec3 d, vec3 centre, float cloud_limit, float jitter, IN
   return result;
 }
 
+// Where the view ray in direction d ends: x, the distance to the ground (terrain.glsl), or -1
+// where it meets no ground before y, the distance to the top of the atmosphere. loops: the
+// terrain march's iterations. render_pixel ends its march there, and the upsampling of a render
+// at reduced resolution takes x at every full-size pixel as its guide (render/view_depth.comp).
+vec2 view_ray_end(vec3 d, IN(MarchParams) m, OUT(int) loops MARCH_SOURCES_PARAM) {
+  vec3 centre = vec3(0.0f, 0.0f, -(m.earth_radius + m.camera_altitude));
+  vec2 top = ray_sphere(vec3(0.0f), d, centre, m.earth_radius + ATMOSPHERE_THICKNESS);
+  float ground = terrain_hit(-centre, d, m.earth_radius, max(top.y, 0.0f), m.terrain, loops MARCH_TERRAIN_ARG);
+  return vec2(ground > 0.0f ? ground : -1.0f, max(top.y, 0.0f));
+}
+
 // The pixel's radiance (RGB, linear) and cloud opacity (A): the clouds composited into the
-// clear sky and the ground. loop_count: the iterations its loops took, sky and ground included.
-vec4 render_pixel(ivec2 pixel, ivec2 size, IN(MarchParams) m, OUT(int) loop_count MARCH_SOURCES_PARAM) {
+// clear sky and the ground. loop_count: the iterations its loops took, sky and ground included;
+// ground_distance: view_ray_end's x (the guide of the upsampling, render/upsample.hpp).
+vec4 render_pixel(ivec2 pixel, ivec2 size, IN(MarchParams) m, OUT(int) loop_count, OUT(float) ground_distance MARCH_SOURCES_PARAM) {
   vec3 d = view_direction(pixel, size, m);
   vec3 centre = vec3(0.0f, 0.0f, -(m.earth_radius + m.camera_altitude));
   vec3 origin_from_centre = -centre;
 
   // The ray ends at the ground (terrain.glsl) or at the top of the atmosphere.
-  vec2 top = ray_sphere(vec3(0.0f), d, centre, m.earth_radius + ATMOSPHERE_THICKNESS);
   int ground_loops = 0;
-  float ground = terrain_hit(origin_from_centre, d, m.earth_radius, max(top.y, 0.0f), m.terrain, ground_loops MARCH_TERRAIN_ARG);
-  bool hits_ground = ground > 0.0f;
-  float ray_end = hits_ground ? ground : max(top.y, 0.0f);
+  vec2 end = view_ray_end(d, m, ground_loops MARCH_SOURCES_ARG);
+  bool hits_ground = end.x > 0.0f;
+  ground_distance = end.x;
+  float ray_end = hits_ground ? end.x : end.y;
   float cloud_limit = min(ray_end, m.max_distance);
 
   // A per-pixel offset of the samples trades banding for noise; each frame of an accumulation

@@ -81,6 +81,19 @@ json::Value scene_sidecar(const SceneRender& r, const regional::Scene& scene) {
   steps.set("powder", scene.powder);
   steps.set("shadow_map", scene.shadow_map_size);
   root.set("steps", steps);
+  // What chose the steps: the quality and its target, and which settings were given by name.
+  json::Value quality;
+  quality.set("name", scene.quality);
+  if (const params::RenderQuality* q = params::find_render_quality(scene.quality)) {
+    quality.set("target_display_rms", q->target_display_rms);
+    quality.set("why", std::string(q->why));
+  }
+  json::Value::Array from_quality, given;
+  for (const std::string& key : regional::quality_step_keys())
+    (scene.steps_given.count(key) ? given : from_quality).emplace_back(key);
+  quality.set("from_quality", from_quality);
+  quality.set("given", given);
+  root.set(std::string(params::scene::quality.key), quality);
   root.set("exposure", scene.exposure);
   root.set(std::string(params::scene::terrain.key), scene.terrain);
   return root;

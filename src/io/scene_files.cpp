@@ -79,14 +79,20 @@ Scene parse_scene(const std::string& text, const std::string& source, const std:
       }
       if (d != std::floor(d)) k.fail(key, "must be an integer");
       s.seed = static_cast<std::uint32_t>(d);
+    } else if (key == "quality") {
+      s.quality = k.string(v, key);
     } else if (key == "view_steps") {
       s.view_steps = k.integer(v, key);
+      s.steps_given.insert(key);
     } else if (key == "light_steps") {
       s.light_steps = k.integer(v, key);
+      s.steps_given.insert(key);
     } else if (key == "frames") {
       s.frames = k.integer(v, key);
+      s.steps_given.insert(key);
     } else if (key == "resolution_divisor") {
       s.resolution_divisor = k.integer(v, key);
+      s.steps_given.insert(key);
     } else if (key == "sky_steps") {
       s.sky_steps = k.integer(v, key);
     } else if (key == "shadow_map_size") {
@@ -111,6 +117,7 @@ Scene parse_scene(const std::string& text, const std::string& source, const std:
       k.fail(key, "unknown key (allowed: " + scene_keys() + ")");
     }
   }
+  regional::apply_render_quality(s, source);
   regional::validate_scene(s, source);
   return s;
 }

@@ -12,7 +12,7 @@ const std::vector<const Parameter*>& all() {
       &cover::curl_mode, &cover::tolerance, &cover::max_substeps, &cover::noise_offset,
       &scene::view, &scene::at, &scene::latitude, &scene::longitude, &scene::height, &scene::heading,
       &scene::pitch, &scene::fov, &scene::time, &scene::size, &scene::panorama, &scene::weather,
-      &scene::view_steps, &scene::light_steps, &scene::frames, &scene::resolution_divisor, &scene::sky_steps, &scene::powder, &scene::shadow_map_size, &scene::exposure, &scene::seed,
+      &scene::quality, &scene::view_steps, &scene::light_steps, &scene::frames, &scene::resolution_divisor, &scene::sky_steps, &scene::powder, &scene::shadow_map_size, &scene::exposure, &scene::seed,
       &scene::cover_size, &scene::outputs, &scene::description, &scene::scene_path, &scene::out,
       &scene::lat, &scene::lon, &scene::altitude_km, &scene::cover, &scene::earth_texture, &scene::night_texture,
       &scene::planet_radius_km, &scene::cloud_base_km, &scene::cloud_thickness_km,

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "params/parameter.hpp"
+#include "params/render_quality.hpp"
 
 namespace nephele::params {
 
@@ -59,10 +60,15 @@ inline constexpr Parameter time = text("time", "2026-06-21T16:00Z", "YYYY-MM-DDT
 inline constexpr Parameter size = text("size", "1280x720", "WIDTHxHEIGHT", "image size (panorama: 2048x1024 unless given)", render_scene_view);
 inline constexpr Parameter panorama = flag("panorama", "render the full 360 x 180 view sphere (equirectangular)", render_and_scene);
 inline constexpr Parameter weather = list("weather", "FILE", "Open-Meteo or meteoblue JSON of a station", render_and_scene);
-inline constexpr Parameter view_steps = integer("view_steps", 48, 1, 4096, "samples", "samples per layer along each view ray", render_scene_view);
-inline constexpr Parameter light_steps = integer("light_steps", 12, 0, 256, "samples", "samples towards the sun per cloud sample", render_scene_view);
-inline constexpr Parameter frames = integer("frames", 1, 1, 1024, "frames", "frames averaged, each with its own jitter of the march start (temporal accumulation)", render_and_scene);
-inline constexpr Parameter resolution_divisor = integer("resolution_divisor", 1, 1, 8, "", "render at 1/N of the width and height and upsample bilinearly: about N^2 times cheaper, blurred (docs/rendering.md)", render_and_scene);
+// The step settings: their numbers are those of the final quality (what regional::Scene{} and
+// the library render); the command line, scene files and the viewer take them from --quality
+// unless they are given (regional::apply_render_quality).
+inline constexpr Parameter quality = text("quality", "default", "draft|default|final", "view steps, light steps, frames and resolution divisor from a measured display error target: draft about 0.02, default 0.01 (seconds on two CPU cores), final 0.003 (full resolution); those given by name override it (docs/rendering.md, Qualities)", render_scene_view);
+inline constexpr std::string_view from_quality = "from --quality";
+inline constexpr Parameter view_steps = {"view_steps", Type::integer, "samples", render_qualities[2].view_steps, from_quality, 1, 4096, "", "samples per layer along each view ray", render_scene_view};
+inline constexpr Parameter light_steps = {"light_steps", Type::integer, "samples", render_qualities[2].light_steps, from_quality, 0, 256, "", "samples towards the sun per cloud sample", render_scene_view};
+inline constexpr Parameter frames = {"frames", Type::integer, "frames", render_qualities[2].frames, from_quality, 1, 1024, "", "frames averaged, each with its own jitter of the march start (temporal accumulation)", render_and_scene};
+inline constexpr Parameter resolution_divisor = {"resolution_divisor", Type::integer, "", render_qualities[2].resolution_divisor, from_quality, 1, 8, "", "render at 1/N of the width and height and upsample, guided by where the full-size rays meet the ground (sharp horizon and hills): about N^2 times cheaper, clouds blurred (docs/rendering.md)", render_and_scene};
 inline constexpr Parameter sky_steps = integer("sky_steps", 16, 1, 1024, "samples", "samples of the clear-sky integral", scene_file);
 inline constexpr Parameter powder = real("powder", 0, 0, 1, "", "strength k of the powder term P = 1 - k (1 - nu)/2 exp(-2 tau), which darkens the sun-facing surfaces of clouds seen with the sun behind (Schneider 2015; art-directed, 0: off; docs/rendering.md)", render_and_scene);
 inline constexpr Parameter shadow_map_size = integer("shadow_map_size", 512, 0, 4096, "texels", "texels per side of the shadow maps that let higher layers shade lower ones (0: no such shadows; docs/rendering.md)", scene_file);

@@ -9,6 +9,7 @@
 #include "regional/sites.hpp"
 #include "core/number_text.hpp"
 #include "core/time.hpp"
+#include "params/render_quality.hpp"
 
 namespace nephele::regional {
 namespace {
@@ -34,6 +35,28 @@ void check_range(const std::string& where, double value, const params::Parameter
 }
 
 }  // namespace
+
+const std::vector<std::string>& quality_step_keys() {
+  static const std::vector<std::string> keys = {std::string(params::scene::view_steps.key),
+                                                std::string(params::scene::light_steps.key),
+                                                std::string(params::scene::frames.key),
+                                                std::string(params::scene::resolution_divisor.key)};
+  return keys;
+}
+
+void apply_render_quality(Scene& s, const std::string& source, const KeyOptions& options) {
+  const params::RenderQuality* q = params::find_render_quality(s.quality);
+  if (q == nullptr)
+    throw SceneError(label(source, options, "quality") + ": '" + s.quality + "' is not a quality (allowed: " +
+                     params::render_quality_names() + ")");
+  const auto set = [&](const params::Parameter& p, int& field, int value) {
+    if (!s.steps_given.count(std::string(p.key))) field = value;
+  };
+  set(params::scene::view_steps, s.view_steps, q->view_steps);
+  set(params::scene::light_steps, s.light_steps, q->light_steps);
+  set(params::scene::frames, s.frames, q->frames);
+  set(params::scene::resolution_divisor, s.resolution_divisor, q->resolution_divisor);
+}
 
 void parse_size(const std::string& text, int& width, int& height, const std::string& name) {
   const std::string form = "is not WIDTHxHEIGHT, e.g. 1280x720 (each 1 to " + std::to_string(max_image_side) + ")";

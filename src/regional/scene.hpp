@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <map>
 #include <optional>
+#include <set>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -32,6 +33,13 @@ struct Scene {
   bool panorama = false;
   std::vector<std::string> weather;          // weather files (paths resolved against the scene file)
   std::uint32_t seed = params::scene::seed.default_uint32();
+  // The render quality (params/render_quality.hpp) and the step settings given by name (scene
+  // keys or options: "view_steps", "light_steps", "frames", "resolution_divisor"), which it
+  // leaves alone. The four fields below start as the final quality's (the library's exact
+  // render); apply_render_quality sets the others from `quality`, as `render`, scene files and
+  // the viewer do.
+  std::string quality{params::scene::quality.default_text};
+  std::set<std::string> steps_given;
   // Step counts from the image-error sweep (docs/rendering.md).
   int view_steps = params::scene::view_steps.default_int();
   int light_steps = params::scene::light_steps.default_int();
@@ -56,6 +64,12 @@ using KeyOptions = std::map<std::string, std::string>;
 // Checks ranges; throws SceneError naming the key ("SOURCE: 'key': ...") or, for the keys in
 // `options`, the option ("--view: ...").
 void validate_scene(const Scene& scene, const std::string& source_name, const KeyOptions& options = {});
+// Sets the step settings that `steps_given` does not name from the quality `scene.quality`
+// (params::render_qualities); throws SceneError naming `source_name` (or --quality when the
+// option chose it) for an unknown quality.
+void apply_render_quality(Scene& scene, const std::string& source_name, const KeyOptions& options = {});
+// The four step keys that a quality sets, in the order sidecars list them.
+const std::vector<std::string>& quality_step_keys();
 // Parses "1280x720": decimal digits only on both sides, each 1 to max_image_side; throws
 // SceneError starting with `name` (an option or "FILE: 'size'").
 void parse_size(const std::string& text, int& width, int& height, const std::string& name);

@@ -1,5 +1,7 @@
 #include "render/cloud_renderer.hpp"
 
+#include "render/upsample.hpp"
+
 #include <GeographicLib/Constants.hpp>
 #include <GeographicLib/Ellipsoid.hpp>
 #include <epoxy/gl.h>
@@ -419,6 +421,7 @@ RenderResult render_clouds(const Camera& camera, const std::vector<regional::Clo
   if (maps > 0 && settings.read_shadow_maps) result.shadow_maps = shadow_maps.read();
   if (sky_map && settings.read_shadow_maps) result.sky_shadow_map = sky_shadow.read();
   gpu::Texture image = gpu::Texture::plane(camera.width, camera.height, GL_RGBA32F);
+  gpu::Texture ground_distance = gpu::Texture::plane(camera.width, camera.height, GL_R32F);
   // Frames of an accumulation, each with its own jitter of the march start, averaged.
   std::vector<double> sum;
   timed("clouds", [&] {
@@ -428,6 +431,7 @@ RenderResult render_clouds(const Camera& camera, const std::vector<regional::Clo
     for (int c = 0; c < params.convective_count; ++c)
       result.passes.push_back(std::string("march convective ") + regional::convective_kind_name(convective->clouds()[c].kind));
     image.bind_image(0, GL_WRITE_ONLY);
+    ground_distance.bind_image(1, GL_WRITE_ONLY);
     glBindTextureUnit(1, noise != nullptr ? noise->texture() : 0);
     glBindTextureUnit(2, weather);
     glBindTextureUnit(4, terrain);
@@ -462,6 +466,46 @@ RenderResult render_clouds(const Camera& camera, const std::vector<regional::Clo
     glDeleteBuffers(1, &guard);
   });
   result.passes.push_back("sky");
+  if (settings.upsample_size.x > 0 && settings.upsample_size.y > 0) {
+    result.ground_distance = {camera.width, camera.height, 1, ground_distance.read()};
+    const glm::ivec2 full = settings.upsample_size;
+    std::size_t guided = 0;
+    timed("view_depth", [&] {
+      gpu::ComputeProgram program("render/view_depth.comp");
+      glsl::set_uniform(program, "u_march", params);
+      glBindTextureUnit(4, terrain);
+      // The ground distance of each listed pixel of an image of `size`.
+      const auto distances = [&](const std::vector<glm::ivec2>& pixels, glm::ivec2 size) {
+        std::vector<float> out(pixels.size());
+        if (pixels.empty()) return out;
+        GLuint buffers[2] = {0, 0};
+        glCreateBuffers(2, buffers);
+        glNamedBufferStorage(buffers[0], static_cast<GLsizeiptr>(pixels.size() * sizeof(glm::ivec2)), pixels.data(), 0);
+        glNamedBufferStorage(buffers[1], static_cast<GLsizeiptr>(out.size() * sizeof(float)), nullptr, GL_MAP_READ_BIT);
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, buffers[0]);
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, buffers[1]);
+        program.set("u_image_size", size);
+        program.set("u_pixel_count", static_cast<int>(pixels.size()));
+        program.dispatch_covering(static_cast<int>(pixels.size()), 1, 1);
+        glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+        glGetNamedBufferSubData(buffers[1], 0, static_cast<GLsizeiptr>(out.size() * sizeof(float)), out.data());
+        glDeleteBuffers(2, buffers);
+        return out;
+      };
+      // The marcher found the marched image's (clouds.comp); of the full size only the pixels
+      // near an edge of that guide need theirs, the others have none (NaN: bilinear).
+      const std::vector<glm::ivec2> near_edges = guide_pixels(result.ground_distance, full.x, full.y);
+      const std::vector<float> found = distances(near_edges, full);
+      result.upsampled_ground_distance = {full.x, full.y, 1,
+                                          std::vector<float>(static_cast<std::size_t>(full.x) * full.y, NAN)};
+      for (std::size_t k = 0; k < near_edges.size(); ++k)
+        result.upsampled_ground_distance.pixels[static_cast<std::size_t>(near_edges[k].y) * full.x + near_edges[k].x] = found[k];
+      guided = near_edges.size();
+    });
+    result.passes.push_back("view_depth " + std::to_string(camera.width) + "x" + std::to_string(camera.height) +
+                            " and " + std::to_string(guided) + " pixels of " + std::to_string(full.x) + "x" +
+                            std::to_string(full.y));
+  }
   if (stride > 1) result.passes.push_back("march 1 of " + std::to_string(stride * stride) + " pixels");
   result.march_stride = stride;
   result.march_phase = phase;

@@ -74,6 +74,10 @@ struct RenderSettings {
   glm::ivec2 march_phase{0, 0};
   // The ground's height field about the camera (io::load_terrain); none: the bare sphere.
   std::shared_ptr<const regional::TerrainGrid> terrain;
+  // The size the image will be upsampled to (render_prepared sets it when a divisor is above 1;
+  // 0 x 0: none). render_clouds then also finds where every pixel's view ray meets the ground, at
+  // the camera's size and at this one: the guide of render::upsample_guided.
+  glm::ivec2 upsample_size{0, 0};
 };
 
 struct RenderResult {
@@ -90,6 +94,10 @@ struct RenderResult {
   // of LayerParams::shadow_map, rows from v = 0 (south).
   std::vector<float> shadow_maps;
   std::vector<float> sky_shadow_map;  // likewise the sky's, sky_shadow_map_size^2 floats
+  // With RenderSettings::upsample_size: the distance (m) along each pixel's view ray to the
+  // ground, -1 where the ray meets none (one channel), at the camera's size and at that size
+  // (render/view_depth.comp).
+  core::ImageData ground_distance, upsampled_ground_distance;
   std::vector<std::uint32_t> loop_limited_bits;
   // The march lattice this render used (RenderSettings::march_stride, march_phase): with a
   // stride above 1 only its pixels hold values (render/reprojection.hpp fills the others).

@@ -190,12 +190,16 @@ SceneRender render_prepared(const PreparedScene& prepared, const RenderSettings&
   Camera marched = out.camera;
   marched.width = std::max(1, out.camera.width / divisor);
   marched.height = std::max(1, out.camera.height / divisor);
+  const bool upsampled = marched.width != out.camera.width || marched.height != out.camera.height;
+  if (upsampled) with_terrain.upsample_size = {out.camera.width, out.camera.height};
   out.render = render_clouds(marched, out.layers, prepared.field, prepared.time, with_terrain, prepared.wind,
                              prepared.wind_speed, noise, prepared.convective.get());
-  if (divisor > 1) {
-    out.render.radiance = upsample_bilinear(out.render.radiance, out.camera.width, out.camera.height);
+  if (upsampled) {
+    // Edge-aware, guided by where the full-size rays meet the ground (render/upsample.hpp).
+    out.render.radiance =
+        upsample_guided(out.render.radiance, out.render.ground_distance, out.render.upsampled_ground_distance);
     out.render.loop_limited_bits.clear();  // they name the marched pixels; the count stays
-    out.render.passes.push_back("upsample 1/" + std::to_string(divisor));
+    out.render.passes.push_back("upsample 1/" + std::to_string(divisor) + " guided by the ground distance");
   }
   out.passes.insert(out.passes.end(), out.render.passes.begin(), out.render.passes.end());
   return out;

@@ -1,11 +1,13 @@
 #include "studies/render_error.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <iostream>
 #include <stdexcept>
 
 #include "io/weather_files.hpp"
+#include "params/render_quality.hpp"
 #include "render/scene_renderer.hpp"
 
 namespace nephele::studies {
@@ -41,6 +43,18 @@ RenderSweepOptions RenderSweepOptions::full() {
   o.reference_frames = 4;
   o.width = 160;
   o.height = 90;
+  return o;
+}
+
+RenderSweepOptions RenderSweepOptions::qualities(bool quick) {
+  RenderSweepOptions o;
+  for (const params::RenderQuality& q : params::render_qualities)
+    o.extra.push_back({q.view_steps, q.light_steps, q.frames, q.resolution_divisor});
+  o.reference_view = 96;
+  o.reference_light = 12;
+  o.reference_frames = 1;
+  o.width = quick ? 64 : 1280;
+  o.height = quick ? 36 : 720;
   return o;
 }
 
@@ -112,20 +126,22 @@ std::vector<RenderErrorRow> render_error_sweep(const regional::Scene& scene, con
   // made once, shared by every render of the sweep (the camera is made again per size).
   const PreparedScene prepared = render::prepare_scene(base, io::read_scene_weather(base));
   const NoiseVolume noise(render::render_settings(base).noise_size, render::render_settings(base).seed);
-  const auto render_variant = [&](const RenderVariant& v, double* time_ms) {
+  const auto render_variant = [&](const RenderVariant& v, double* time_ms, double* render_ms) {
     regional::Scene s = base;
     s.view_steps = v.view_steps;
     s.light_steps = v.light_steps;
     s.frames = v.frames;
     s.resolution_divisor = v.divisor;  // render_prepared marches fewer pixels and upsamples
+    const auto start = std::chrono::steady_clock::now();
     const SceneRender r = render::render_prepared(prepared, s, &noise);
+    if (render_ms != nullptr) *render_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     if (time_ms != nullptr)
       for (const auto& [name, ms] : r.render.timings_ms)
         if (name == "clouds") *time_ms = ms;
     return r;
   };
   const SceneRender reference =
-      render_variant({options.reference_view, options.reference_light, options.reference_frames, 1}, nullptr);
+      render_variant({options.reference_view, options.reference_light, options.reference_frames, 1}, nullptr, nullptr);
   // llvmpipe cuts a whole SIMD vector of invocations once the loops of one reach the limit, so
   // the pixels of a flagged pixel's workgroup (8 x 8, clouds.comp) go too.
   constexpr int tile = 8;
@@ -142,13 +158,13 @@ std::vector<RenderErrorRow> render_error_sweep(const regional::Scene& scene, con
                              options.reference_frames, 1};
     RenderErrorRow& row = reference_check->half_steps;
     row = {half.view_steps, half.light_steps, half.frames, 1};
-    measure_render_error(render_variant(half, &row.time_ms).render.radiance, reference.render.radiance, base.exposure,
+    measure_render_error(render_variant(half, &row.time_ms, &row.render_ms).render.radiance, reference.render.radiance, base.exposure,
                          excluded, row);
   }
   std::vector<RenderErrorRow> rows;
   for (const RenderVariant& v : options.variants()) {
     RenderErrorRow row{v.view_steps, v.light_steps, v.frames, v.divisor};
-    const SceneRender r = render_variant(v, &row.time_ms);
+    const SceneRender r = render_variant(v, &row.time_ms, &row.render_ms);
     const core::ImageData& image = r.render.radiance;
     measure_render_error(image, reference.render.radiance, base.exposure, excluded, row);
     rows.push_back(row);

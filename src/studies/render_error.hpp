@@ -25,6 +25,9 @@ struct RenderErrorRow {
   double display_rms = 0;  // RMS over pixels and RGB of the display values in [0, 1] (the PNG's)
   double rms_error = 0;    // RMS over pixels and RGB of the radiance, relative to the reference's mean
   double max_error = 0;    // largest absolute radiance difference, relative to the reference's mean
+  // Wall-clock time of the whole render (render::render_prepared): shadow maps, the clouds pass,
+  // the upsampling's guide and the upsampling; not the scene's preparation (weather, noise).
+  double render_ms = 0;
 };
 
 // What a sweep renders, its reference and its frame size: the one place that defines the sweeps
@@ -49,6 +52,11 @@ struct RenderSweepOptions {
   // View 8, 16, 48 x light 2, 12, the defaults over 2 frames and at 1/2 resolution, against
   // 96 x 12 steps over 2 frames, 32 x 18 pixels (seconds, for CI).
   static RenderSweepOptions quick();
+  // The qualities of params::render_qualities, each as a variant, against 96 x 12 steps in one
+  // frame at full resolution, at 1280 x 720: the size their targets are set for, where the
+  // resolution's error is the one a user sees (about 3 minutes on two CPU cores). quick: the
+  // same at 64 x 36.
+  static RenderSweepOptions qualities(bool quick);
 };
 
 // The errors of `image` against `reference` (both linear radiance, the same size and channels,

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <sstream>
+#include <stdexcept>
 
 #include "studies/svg_plot.hpp"
 
@@ -195,7 +196,7 @@ std::string render_summary_markdown(const std::vector<RenderErrorRow>& rows, con
   }
   const RenderErrorRow& d = choice.default_row;
   std::snprintf(line, sizeof line,
-                "- Defaults (of `nephele render` and scene files): %s, display rms %.4f, rel rms %.4f, clouds %.1f ms.\n",
+                "- Defaults (the final quality, `--quality final`, and the library's): %s, display rms %.4f, rel rms %.4f, clouds %.1f ms.\n",
                 render_variant_name(d).c_str(), d.display_rms, d.rms_error, d.time_ms);
   s << line;
   if (choice.has_cheapest) {
@@ -220,6 +221,58 @@ std::string render_summary_markdown(const std::vector<RenderErrorRow>& rows, con
   }
   s << "\nTimes of one sweep each; on a shared machine they vary by tens of percent, so read close calls "
        "with care.\n";
+  return s.str();
+}
+
+namespace {
+
+// The quality of row k of a qualities sweep; throws when the rows are not that sweep's.
+const params::RenderQuality& quality_of_row(const std::vector<RenderErrorRow>& rows, std::size_t k) {
+  constexpr std::size_t count = sizeof params::render_qualities / sizeof params::render_qualities[0];
+  if (rows.size() != count) throw std::invalid_argument("render quality rows: one row per quality expected");
+  return params::render_qualities[k];
+}
+
+}  // namespace
+
+std::string render_quality_csv(const std::vector<RenderErrorRow>& rows, const RenderSweepOptions& options) {
+  std::ostringstream s;
+  s << "quality,target_display_rms,view_steps,light_steps,frames,divisor,display_rms,rel_rms,render_ms,clouds_ms,"
+       "reference_view_steps,reference_light_steps,reference_frames,width,height\n";
+  char line[400];
+  for (std::size_t k = 0; k < rows.size(); ++k) {
+    const RenderErrorRow& r = rows[k];
+    const params::RenderQuality& q = quality_of_row(rows, k);
+    std::snprintf(line, sizeof line, "%s,%.4g,%d,%d,%d,%d,%.6e,%.6e,%.1f,%.1f,%d,%d,%d,%d,%d\n",
+                  std::string(q.name).c_str(), q.target_display_rms, r.view_steps, r.light_steps, r.frames, r.divisor,
+                  r.display_rms, r.rms_error, r.render_ms, r.time_ms, options.reference_view, options.reference_light,
+                  options.reference_frames, options.width, options.height);
+    s << line;
+  }
+  return s.str();
+}
+
+std::string render_quality_markdown(const std::vector<RenderErrorRow>& rows, const RenderSweepOptions& options) {
+  std::ostringstream s;
+  char line[768];
+  s << "## Render: qualities\n\n";
+  std::snprintf(line, sizeof line,
+                "`nephele render --quality` (params/render_quality.hpp) on the built-in default scene at %d x %d "
+                "pixels, against %d view x %d light steps over %d frame(s) at full resolution. Display rms as above; "
+                "render ms: the whole render (shadow maps, clouds, the upsampling and its guide), not the process "
+                "around it (render_quality.csv).\n\n",
+                options.width, options.height, options.reference_view, options.reference_light, options.reference_frames);
+  s << line;
+  s << "| quality | settings | target | display rms | meets it | render ms |\n|---|---|---|---|---|---|\n";
+  for (std::size_t k = 0; k < rows.size(); ++k) {
+    const RenderErrorRow& r = rows[k];
+    const params::RenderQuality& q = quality_of_row(rows, k);
+    std::snprintf(line, sizeof line, "| %s | %s | %.3g | %.4f | %s | %.0f |\n", std::string(q.name).c_str(),
+                  render_variant_name(r).c_str(), q.target_display_rms, r.display_rms,
+                  r.display_rms <= q.target_display_rms ? "yes" : "no", r.render_ms);
+    s << line;
+  }
+  s << "\n";
   return s.str();
 }
 

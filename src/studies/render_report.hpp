@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "params/render_quality.hpp"
 #include "studies/render_error.hpp"
 
 namespace nephele::studies {
@@ -54,6 +55,13 @@ std::string render_error_svg(const std::vector<RenderErrorRow>& rows, const std:
 std::string render_summary_markdown(const std::vector<RenderErrorRow>& rows, const RenderSweepOptions& options,
                                     const RenderStepChoice& choice, int default_view, int default_light,
                                     const ReferenceCheck& reference = {});
+
+// The qualities (params::render_qualities), rows of RenderSweepOptions::qualities in their order:
+// render_quality.csv (quality, target_display_rms, view_steps, light_steps, frames, divisor,
+// display_rms, rel_rms, render_ms, clouds_ms, then the reference's steps and the frame size) and
+// the "Render: qualities" section of summary.md, which says whether each meets its target.
+std::string render_quality_csv(const std::vector<RenderErrorRow>& rows, const RenderSweepOptions& options);
+std::string render_quality_markdown(const std::vector<RenderErrorRow>& rows, const RenderSweepOptions& options);
 
 // "48 view x 12 light steps", with ", 4 frames" and ", 1/2 resolution" where they apply.
 std::string render_variant_name(const RenderErrorRow& row);

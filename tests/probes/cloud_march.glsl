@@ -109,8 +109,15 @@ vec4 probe_cloud_march(mat4 x MARCH_SOURCES_PARAM) {
   }
   if (f == 7) {
     int loops = 0;
-    vec4 pixel = render_pixel(ivec2(int(x[3].x), int(x[3].y)), ivec2(16, 9), m, loops MARCH_SOURCES_ARG);
+    float ground = 0.0f;
+    vec4 pixel = render_pixel(ivec2(int(x[3].x), int(x[3].y)), ivec2(16, 9), m, loops, ground MARCH_SOURCES_ARG);
     return loop_limited(loops) ? vec4(-1.0f) : pixel;
+  }
+  if (f == 21) {
+    // Where the view ray d ends: the ground's distance (or -1) and the atmosphere's top.
+    int loops = 0;
+    vec2 end = view_ray_end(d, m, loops MARCH_SOURCES_ARG);
+    return vec4(end, float(loops), 0.0f);
   }
   if (f == 9) {
     // The baked Webanck fields at p_n = x[1] (frequency x[0].z, level of detail x[0].w).

@@ -83,7 +83,7 @@ TEST_CASE("the window shows the image nephele render makes headless of the same 
   test::TemporaryDirectory out(true);
   const auto exr = out.path / "view.exr";
   const auto r = test::run(std::string("render --at ") + kAt + " --heading 300 --pitch 8 --fov 70 --time 2026-06-21T16:00Z " +
-                           "--size 64x36 --view-steps 8 --light-steps 2 --quiet --out " + exr.string());
+                           "--size 64x36 --quality final --view-steps 8 --light-steps 2 --quiet --out " + exr.string());
   REQUIRE(r.exit_code == 0);
   const core::ImageData radiance = io::read_image(exr);
   // The same passes on the same driver in the window's context and the headless one, the full

@@ -97,7 +97,7 @@ int run_render(const std::vector<std::string>& arguments) {
     if (options.given(s::heading)) orbit.heading = scene_options.heading();
     if (options.given(s::pitch)) orbit.pitch = scene_options.pitch();
     if (options.given(s::fov)) orbit.fov = scene_options.fov();
-    for (const auto* ground_only : {&s::at, &s::scene_path, &s::panorama, &s::weather, &s::terrain, &s::fog_top, &s::powder, &s::view_steps, &s::light_steps, &s::frames, &s::resolution_divisor})
+    for (const auto* ground_only : {&s::at, &s::scene_path, &s::panorama, &s::weather, &s::terrain, &s::fog_top, &s::powder, &s::quality, &s::view_steps, &s::light_steps, &s::frames, &s::resolution_divisor})
       if (options.given(*ground_only))
         throw UsageError(ground_only->option() + ": not taken by --view orbit (it belongs to the ground views)");
     return run_orbit_render(orbit);
@@ -113,9 +113,13 @@ int run_render(const std::vector<std::string>& arguments) {
     parse_position(at, scene);
     typed["at"] = "--at";
   }
-  if (options.given(s::frames)) scene.frames = frames;
+  if (options.given(s::frames)) {
+    scene.frames = frames;
+    scene.steps_given.insert(std::string(s::frames.key));
+  }
   if (options.given(s::resolution_divisor)) {
     scene.resolution_divisor = divisor;
+    scene.steps_given.insert(std::string(s::resolution_divisor.key));
     typed["resolution_divisor"] = "--resolution-divisor";
   }
   if (options.given(s::terrain)) scene.terrain = terrain;
@@ -138,6 +142,7 @@ int run_render(const std::vector<std::string>& arguments) {
     scene.weather = weather;
     typed["weather"] = "--weather";
   }
+  regional::apply_render_quality(scene, scene_file.empty() ? "flags" : scene_file, typed);
   regional::validate_scene(scene, scene_file.empty() ? "flags" : scene_file, typed);
 
   // The outputs are names inside `directory`; with --scene and --out DIR the set owns DIR, else

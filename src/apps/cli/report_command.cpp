@@ -37,7 +37,9 @@ int run_report(const std::vector<std::string>& all_arguments) {
                   "frames and at 1/2 and 1/4 resolution, against " + studies::RenderSweepOptions::full().reference_name() +
                       "\n(quick: 8,16,48 x 2,12 against " + studies::RenderSweepOptions::quick().reference_name() +
                       ")\ninto render_error.csv, render_error_vs_runtime.svg and a section of summary.md; the error\n"
-                  "is the RMS of the display values in [0, 1].\n"
+                  "is the RMS of the display values in [0, 1]. Then renders each quality of render --quality\n"
+                  "at 1280x720 against " + studies::RenderSweepOptions::qualities(false).reference_name() +
+                      " (quick: 64x36) into render_quality.csv and a section of summary.md.\n"
                   "`nephele report render [options]` runs only the render sweep.", params::report);
   options.bind(params::run::report_out, &out);
   options.bind(params::run::report_quick, &quick);
@@ -86,6 +88,9 @@ int run_report(const std::vector<std::string>& all_arguments) {
   if (!render_only)
     for (int size : sweep.sizes) cover::check_cover_fits(context, size, "--sizes");
   if (!no_render) render::check_render_fits(context, render_sweep.width, render_sweep.height, "--render-size");
+  if (!no_render)
+    render::check_render_fits(context, studies::RenderSweepOptions::qualities(quick).width,
+                              studies::RenderSweepOptions::qualities(quick).height, "the qualities' sweep");
   std::error_code error;
   std::filesystem::create_directories(directory, error);
   if (error) throw UsageError("--out: cannot create directory '" + out + "': " + error.message());
@@ -102,28 +107,36 @@ int run_report(const std::vector<std::string>& all_arguments) {
   }
   result.device = context.info().renderer + " (" + context.info().version + ")";
 
-  std::vector<studies::RenderErrorRow> render_rows;
+  std::vector<studies::RenderErrorRow> render_rows, quality_rows;
   studies::ReferenceCheck reference_check;
-  if (!no_render) {
-    std::cout << "render sweep: default scene at " << render_sweep.width << "x" << render_sweep.height
-              << ", reference " << render_sweep.reference_name() << "\n"
+  const studies::RenderSweepOptions quality_sweep = studies::RenderSweepOptions::qualities(quick);
+  // One render sweep with its table on stdout and its progress on stderr.
+  const auto render_sweep_rows = [&](const studies::RenderSweepOptions& o, const std::string& what,
+                                     studies::ReferenceCheck* check) {
+    std::cout << what << ": default scene at " << o.width << "x" << o.height << ", reference " << o.reference_name()
+              << "\n"
               << studies::render_error_table_header() << std::flush;
-    core::Progress render_progress("report", static_cast<double>(render_sweep.variants().size()),
-                                   core::Progress::for_stderr(quiet));
-    render_progress.update(0, "rendering the reference");
-    int renders_done = 0;
-    render_rows = studies::render_error_sweep(
-        render_scene, render_sweep,
+    core::Progress progress("report", static_cast<double>(o.variants().size()), core::Progress::for_stderr(quiet));
+    progress.update(0, "rendering the reference of the " + what);
+    int done = 0;
+    auto rows = studies::render_error_sweep(
+        render_scene, o,
         [&](const studies::RenderErrorRow& row) {
           std::cout << studies::render_error_table_line(row) << std::flush;
-          render_progress.update(++renders_done, "renders");
+          progress.update(++done, what);
         },
-        &reference_check);
-    render_progress.finish();
+        check);
+    progress.finish();
+    return rows;
+  };
+  if (!no_render) {
+    render_rows = render_sweep_rows(render_sweep, "render sweep", &reference_check);
     std::cout << "reference check: " << reference_check.half_steps.view_steps << " view x "
               << reference_check.half_steps.light_steps << " light steps against the reference: display rms "
               << reference_check.half_steps.display_rms << "; " << reference_check.limited
               << " reference pixels left out (llvmpipe's loop limit)\n";
+    // The qualities of `render --quality`, at the size their targets are set for.
+    quality_rows = render_sweep_rows(quality_sweep, "render qualities", nullptr);
   }
   const studies::RenderStepChoice render_choice =
       studies::choose_render_steps(render_rows, render_scene.view_steps, render_scene.light_steps);
@@ -153,6 +166,8 @@ int run_report(const std::vector<std::string>& all_arguments) {
                                  render_scene.view_steps, render_scene.light_steps));
     summary += studies::render_summary_markdown(render_rows, render_sweep, render_choice, render_scene.view_steps,
                                                 render_scene.light_steps, reference_check);
+    outputs.write("render_quality.csv", studies::render_quality_csv(quality_rows, quality_sweep));
+    summary += "\n" + studies::render_quality_markdown(quality_rows, quality_sweep);
   }
   outputs.write("summary.md", summary);
   outputs.commit();
@@ -172,7 +187,7 @@ int run_report(const std::vector<std::string>& all_arguments) {
               << render_choice.most_accurate.display_rms << ")\n";
   std::cout << "wrote " << directory.string() << "/: "
             << (render_only ? "" : "error_vs_runtime.csv, error_vs_runtime.svg, stability.csv, ")
-            << (no_render ? "" : "render_error.csv, render_error_vs_runtime.svg, ") << "summary.md\n";
+            << (no_render ? "" : "render_error.csv, render_error_vs_runtime.svg, render_quality.csv, ") << "summary.md\n";
   return exit_ok;
 }
 

@@ -16,6 +16,7 @@ SceneOptions::SceneOptions(Options& options)
   options.bind(s::fov, &fov_);
   options.bind(s::time, &time_);
   options.bind(s::size, &size_);
+  options.bind(s::quality, &quality_);
   options.bind(s::view_steps, &view_steps_);
   options.bind(s::light_steps, &light_steps_);
   options.bind(s::exposure, &exposure_);
@@ -37,8 +38,18 @@ regional::Scene SceneOptions::scene(regional::KeyOptions& typed) const {
   if (options_.given(s::pitch)) scene.pitch_deg = pitch_;
   if (options_.given(s::fov)) scene.fov_deg = fov_;
   if (options_.given(s::exposure)) scene.exposure = exposure_;
-  if (options_.given(s::view_steps)) scene.view_steps = view_steps_;
-  if (options_.given(s::light_steps)) scene.light_steps = light_steps_;
+  if (options_.given(s::quality)) {
+    scene.quality = quality_;
+    typed["quality"] = "--quality";
+  }
+  if (options_.given(s::view_steps)) {
+    scene.view_steps = view_steps_;
+    scene.steps_given.insert(std::string(s::view_steps.key));
+  }
+  if (options_.given(s::light_steps)) {
+    scene.light_steps = light_steps_;
+    scene.steps_given.insert(std::string(s::light_steps.key));
+  }
   if (options_.given(s::seed)) scene.seed = seed_;
   if (!time_.empty()) {
     scene.time = time_;
@@ -48,6 +59,7 @@ regional::Scene SceneOptions::scene(regional::KeyOptions& typed) const {
     regional::parse_size(size_, scene.width, scene.height, "--size");
     typed["size"] = "--size";
   }
+  regional::apply_render_quality(scene, scene_file_.empty() ? "flags" : scene_file_, typed);
   return scene;
 }
 

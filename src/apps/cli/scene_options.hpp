@@ -11,11 +11,12 @@ namespace nephele::cli {
 
 class SceneOptions {
  public:
-  // Binds --scene, --view, --heading, --pitch, --fov, --time, --size, --view-steps,
+  // Binds --scene, --view, --heading, --pitch, --fov, --time, --size, --quality, --view-steps,
   // --light-steps, --exposure and --seed to `options` (whose command must take them).
   explicit SceneOptions(Options& options);
   // After options.parse: the scene file's scene (or the defaults) with each given option over
-  // it. `typed` records the keys an option set, so that their errors name the option.
+  // it, the step settings not given by name from the quality (regional::apply_render_quality).
+  // `typed` records the keys an option set, so that their errors name the option.
   regional::Scene scene(regional::KeyOptions& typed) const;
   const std::string& scene_file() const { return scene_file_; }
   bool size_given() const { return !size_.empty(); }
@@ -32,7 +33,7 @@ class SceneOptions {
  private:
   const Options& options_;
   regional::Scene defaults_;
-  std::string scene_file_, view_, time_, size_;
+  std::string scene_file_, view_, time_, size_, quality_;
   double heading_ = 0, pitch_, fov_, exposure_;
   int view_steps_, light_steps_;
   std::uint32_t seed_;

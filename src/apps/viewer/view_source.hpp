@@ -1,6 +1,7 @@
 #pragma once
 // What the window shows, behind one interface: the ground renderer and the orbit renderer,
 // chosen per frame by ViewSwitch (make_view_source).
+#include "params/render_quality.hpp"
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -35,13 +36,14 @@ class ViewSource {
   virtual void set_march_lattice(int /*stride*/, glm::ivec2 /*phase*/) {}
 };
 
-// The ground view's steps for coarse (preview) frames: 8 view x 2 light. Measured by `nephele
-// report render` on the default scene at 160 x 90 (docs/rendering.md): display rms 0.008
-// against the converged image, in a seventh of the defaults' time; the full-size bands keep the
-// scene's steps, so the finished image is `nephele render`'s.
+// The ground view's steps for coarse (preview) frames: the draft quality's (8 view x 2 light,
+// params/render_quality.hpp; display rms about 0.01 at 1280 x 720 with its 1/8 resolution,
+// docs/rendering.md); the full-size bands keep the scene's steps, so the finished image is
+// `nephele render`'s at full resolution.
 struct PreviewSteps {
-  int view = 8, light = 2;
+  int view = params::render_qualities[0].view_steps, light = params::render_qualities[0].light_steps;
 };
+static_assert(params::render_qualities[0].name == std::string_view("draft"));
 constexpr PreviewSteps preview_steps{};
 // While the camera moves, the quarter-size preview marches one pixel of each 2 x 2 block and
 // reprojects the other three from the last preview (render/reprojection.hpp): a quarter of the

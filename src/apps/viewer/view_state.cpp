@@ -23,7 +23,8 @@ std::vector<Binding> bindings(ViewState& s) {
 }
 
 bool option_only(const params::Parameter& p) {
-  return &p == &params::scene::size || &p == &params::scene::scene_path || &p == &params::run::view_record ||
+  // --quality sets the steps the panels then show (regional::apply_render_quality).
+  return &p == &params::scene::size || &p == &params::scene::scene_path || &p == &params::scene::quality || &p == &params::run::view_record ||
          &p == &params::run::view_frames || &p == &params::run::no_cache || &p == &params::cloud_model::view_model ||
          &p == &params::cloud_model::view_model_size;
 }
