@@ -10,6 +10,8 @@
 #include <sstream>
 #include <string>
 
+#include "fast_tag.hpp"
+
 namespace nephele::test {
 
 struct Run {
@@ -26,6 +28,7 @@ inline std::string read_file(const std::filesystem::path& path) {
 
 // Runs a shell command line with stdout and stderr captured in a temporary log.
 inline Run run_command(const std::string& command) {
+  starting_slow_work("a subprocess");
   const std::filesystem::path log =
       std::filesystem::temp_directory_path() / ("nephele_run_" + std::to_string(std::random_device{}()) + ".log");
   const int status = std::system((command + " > " + log.string() + " 2>&1").c_str());

@@ -1,8 +1,11 @@
 #include "gl_support.hpp"
 
+#include "fast_tag.hpp"
+
 namespace nephele::test {
 
 gpu::EglContext& test_context() {
+  starting_slow_work("an OpenGL context");
   static gpu::EglContext context;
   return context;
 }

@@ -65,7 +65,7 @@ TEST_CASE("render refuses an impossible --time naming --time before any GL work"
   CHECK_FALSE(fs::exists(out.path));
 }
 
-TEST_CASE("a bad or empty time in a weather file names the file and the field", "[bad-input][weather]") {
+TEST_CASE("a bad or empty time in a weather file names the file and the field", "[fast][bad-input][weather]") {
   for (const char* times : {R"(["2024-02-31T12:00"])", R"([""])", R"(["2024-06-01T12:00+01:00"])"}) {
     INFO(times);
     const std::string message = error_of<regional::WeatherError>(
@@ -74,7 +74,7 @@ TEST_CASE("a bad or empty time in a weather file names the file and the field", 
   }
 }
 
-TEST_CASE("equirect tiles cover the map exactly once and stay within the tile edge", "[bad-input][equirect]") {
+TEST_CASE("equirect tiles cover the map exactly once and stay within the tile edge", "[fast][bad-input][equirect]") {
   const int width = 4 * 4097, height = 2 * 4097, edge = 4096;  // a cover size past 4096: the map is 16388 wide
   std::vector<std::uint8_t> covered(static_cast<size_t>(width) * height, 0);
   for (const auto& t : cover::equirect_tiles(width, height, edge)) {
@@ -115,7 +115,7 @@ TEST_CASE("an equirect map wider than the driver's texture limit is exported", "
   CHECK(std::all_of(map.begin(), map.end(), [](float v) { return v == 0.25f; }));
 }
 
-TEST_CASE("the host memory probe reads MemAvailable from /proc/meminfo", "[bad-input]") {
+TEST_CASE("the host memory probe reads MemAvailable from /proc/meminfo", "[fast][bad-input]") {
   if (!fs::exists("/proc/meminfo")) {
     WARN("no /proc/meminfo; skipped");
     return;
@@ -137,7 +137,7 @@ TEST_CASE("a cover size the driver cannot allocate is refused naming --size befo
   CHECK_FALSE(fs::exists(out.path));
 }
 
-TEST_CASE("image sizes are strict WIDTHxHEIGHT integers within 1 to 16384", "[bad-input][scene]") {
+TEST_CASE("image sizes are strict WIDTHxHEIGHT integers within 1 to 16384", "[fast][bad-input][scene]") {
   int w = 0, h = 0;
   regional::parse_size("1280x720", w, h, "--size");
   CHECK(w == 1280);
@@ -170,7 +170,7 @@ TEST_CASE("render sizes beyond the driver's image limit are refused naming the o
   }
 }
 
-TEST_CASE("a scene file that is not a regular file or is too large is refused naming it", "[bad-input][scene]") {
+TEST_CASE("a scene file that is not a regular file or is too large is refused naming it", "[fast][bad-input][scene]") {
   CHECK_THAT(error_of<regional::SceneError>([] { io::read_scene_file("/dev/zero"); }),
              Catch::StartsWith("/dev/zero: not a regular file"));
   TemporaryDirectory dir(true);
@@ -187,7 +187,7 @@ TEST_CASE("a scene file that is not a regular file or is too large is refused na
              Catch::StartsWith(fifo.string() + ": not a regular file"));
 }
 
-TEST_CASE("invalid UTF-8 in scene and weather files is refused naming the file and byte offset", "[bad-input][json]") {
+TEST_CASE("invalid UTF-8 in scene and weather files is refused naming the file and byte offset", "[fast][bad-input][json]") {
   // The prefix {"description": " is 17 bytes: the value's bytes start at offset 17.
   const std::pair<std::string, size_t> cases[] = {
       {"\xff", 17},              // never a UTF-8 byte
@@ -209,7 +209,7 @@ TEST_CASE("invalid UTF-8 in scene and weather files is refused naming the file a
   CHECK(json::parse("\"\xc3\xa9\xe2\x82\xac\xf0\x9f\x98\x80\"").as_string() == "\xc3\xa9\xe2\x82\xac\xf0\x9f\x98\x80");
 }
 
-TEST_CASE("a duplicate key among many is found and named", "[bad-input][json]") {
+TEST_CASE("a duplicate key among many is found and named", "[fast][bad-input][json]") {
   // 100000 keys: the hash set finds the repeat of the first at the end (the speed is in the
   // commit message: a per-key scan took 23.5 s for 160k keys).
   std::string text = "{";
@@ -220,7 +220,7 @@ TEST_CASE("a duplicate key among many is found and named", "[bad-input][json]") 
              Catch::Contains("duplicate key 'k0'"));
 }
 
-TEST_CASE("noise cell counts along long axes do not overflow", "[bad-input][noise]") {
+TEST_CASE("noise cell counts along long axes do not overflow", "[fast][bad-input][noise]") {
   // 65536 cells along a 65536 wide texture give 65536 * 65536 / 65536 cells along the height:
   // the product 2^32 wrapped to 0 in int.
   noise::TextureSpec spec;

@@ -72,7 +72,7 @@ double rms_speed(const CurlParams& c, double low, double high, std::mt19937& rng
 
 }  // namespace
 
-TEST_CASE("the flow's vortices are concentrated in the storm tracks by the envelope's ratio", "[curl][climate]") {
+TEST_CASE("the flow's vortices are concentrated in the storm tracks by the envelope's ratio", "[fast][curl][climate]") {
   // Without the zonal bands the speed scales with the envelope A where dA/dlat = 0: A = 1 at
   // 50 degrees, 1 - 0.6 (1 - 0.004) = 0.402 at the equator. The band mix of the potentials
   // differs between 45-55 and 0-10 degrees, so the ratio with the focus is compared with the
@@ -97,7 +97,7 @@ TEST_CASE("the flow's vortices are concentrated in the storm tracks by the envel
   }
 }
 
-TEST_CASE("the cyclonic depth marks cyclonic vorticity in both hemispheres", "[curl][climate]") {
+TEST_CASE("the cyclonic depth marks cyclonic vorticity in both hemispheres", "[fast][curl][climate]") {
   // Around a feature point of w1 (north) or w2 (south) the flow turns with the Coriolis
   // parameter's sign, so the cyclonic vorticity zeta sign(lat) is high where the depth c is.
   // The relation is not one to one (zeta is the Laplacian of the stream function, c the
@@ -148,7 +148,7 @@ TEST_CASE("cyclones are cloudier than anticyclones, and the cyclone cloudiness m
   CHECK(with > without + 0.08);
 }
 
-TEST_CASE("the storm tracks follow the season of --month, as the latitude profile does", "[curl][climate]") {
+TEST_CASE("the storm tracks follow the season of --month, as the latitude profile does", "[fast][curl][climate]") {
   // The annual mean keeps its envelope to the bit.
   CHECK(cover::storm_track_shift(0) == 0.0);
   cover::CoverParameters p;

@@ -45,7 +45,7 @@ constexpr double kChiSquareSigmas = 6.0;
 
 }  // namespace
 
-TEST_CASE("cloud densities vanish without coverage or outside their layer and stay within 0 and 1", "[density]") {
+TEST_CASE("cloud densities vanish without coverage or outside their layer and stay within 0 and 1", "[fast][density]") {
   std::mt19937 rng(1);
   std::uniform_real_distribution<float> u(0.0f, 1.0f);
   for (int type = CLOUD_CIRRUS; type <= CLOUD_FOG; ++type) {
@@ -62,7 +62,7 @@ TEST_CASE("cloud densities vanish without coverage or outside their layer and st
   }
 }
 
-TEST_CASE("more coverage never thins a heaped cloud", "[density]") {
+TEST_CASE("more coverage never thins a heaped cloud", "[fast][density]") {
   std::mt19937 rng(2);
   std::uniform_real_distribution<float> u(0.0f, 1.0f);
   for (int k = 0; k < 5000; ++k) {
@@ -73,7 +73,7 @@ TEST_CASE("more coverage never thins a heaped cloud", "[density]") {
   }
 }
 
-TEST_CASE("the sea of fog is full below its undulating top and ends within the edge above it", "[density]") {
+TEST_CASE("the sea of fog is full below its undulating top and ends within the edge above it", "[fast][density]") {
   // Its top lies at 1 - 0.15 shape of the layer; the edge, 0.05 thick, ends there.
   for (float shape : {0.0f, 0.3f, 1.0f}) {
     INFO("shape " << shape);
@@ -96,13 +96,13 @@ TEST_CASE("the sea of fog is full below its undulating top and ends within the e
   }
 }
 
-TEST_CASE("the Hermite step is the cubic smoothstep", "[density]") {
+TEST_CASE("the Hermite step is the cubic smoothstep", "[fast][density]") {
   CHECK(hermite_step(0.0f, 1.0f, 0.5f) == 0.5f);
   CHECK(hermite_step(0.0f, 1.0f, 0.25f) == Approx(0.15625f));
   CHECK(hermite_step(2.0f, 3.0f, 1.0f) == 0.0f);
 }
 
-TEST_CASE("phase functions integrate to one over the sphere", "[atmosphere]") {
+TEST_CASE("phase functions integrate to one over the sphere", "[fast][atmosphere]") {
   // Midpoint rule in nu = cos(angle): integral of p over the sphere = 2 pi int p dnu.
   const int n = 200000;
   double hg = 0, rayleigh = 0, cloud = 0;
@@ -118,7 +118,7 @@ TEST_CASE("phase functions integrate to one over the sphere", "[atmosphere]") {
   CHECK(cloud == Approx(1.0).epsilon(kPhaseIntegral));
 }
 
-TEST_CASE("vertical transmittance matches the scale-height integral and vanishes below the horizon", "[atmosphere]") {
+TEST_CASE("vertical transmittance matches the scale-height integral and vanishes below the horizon", "[fast][atmosphere]") {
   const float radius = 6371000.0f;
   const vec3 sea_level(0.0f, 0.0f, radius);
   // Straight up, the optical depth is beta_R H_R + beta_M H_M (to within e^{-100 km/H}). The
@@ -135,7 +135,7 @@ TEST_CASE("vertical transmittance matches the scale-height integral and vanishes
   CHECK(low_sun.z < low_sun.x);
 }
 
-TEST_CASE("ray-shell intervals cover exactly the part of the ray inside the layer", "[atmosphere]") {
+TEST_CASE("ray-shell intervals cover exactly the part of the ray inside the layer", "[fast][atmosphere]") {
   const vec3 centre(0.0f, 0.0f, -1000.0f);
   // The non-empty intervals of a result, in order.
   auto pieces = [](vec4 r) {
@@ -162,7 +162,7 @@ TEST_CASE("ray-shell intervals cover exactly the part of the ray inside the laye
   CHECK(cut[0].y == Approx(700.0f));
 }
 
-TEST_CASE("every density grows with the detail noise so its value at detail 1 bounds it", "[density]") {
+TEST_CASE("every density grows with the detail noise so its value at detail 1 bounds it", "[fast][density]") {
   // The renderer skips the detail lookup where the bound is zero; this is what makes it exact.
   std::mt19937 rng(3);
   std::uniform_real_distribution<float> u(0.0f, 1.0f);
@@ -174,7 +174,7 @@ TEST_CASE("every density grows with the detail noise so its value at detail 1 bo
   }
 }
 
-TEST_CASE("mixing two uniform noises and applying uniform_from_mix gives a uniform value", "[density]") {
+TEST_CASE("mixing two uniform noises and applying uniform_from_mix gives a uniform value", "[fast][density]") {
   // Chi-square over 32 bins of 100000 samples: mean 31, standard deviation 7.9; kChiSquareSigmas
   // of them bound it.
   std::mt19937 rng(4);

@@ -59,7 +59,7 @@ std::string open_meteo(const std::string& extra) {
 
 }  // namespace
 
-TEST_CASE("CAPE, lifted index and thunderstorm codes call for cumulonimbus or towering cumulus on their thresholds", "[convection]") {
+TEST_CASE("CAPE, lifted index and thunderstorm codes call for cumulonimbus or towering cumulus on their thresholds", "[fast][convection]") {
   // Cumulonimbus: CAPE >= 1000 J/kg, LI <= -2 K, codes 95-99; just below each: towering or none.
   CHECK(kind(unstable(1000)) == ConvectiveKind::cumulonimbus);
   CHECK(kind(unstable(999.9)) == ConvectiveKind::towering);
@@ -79,7 +79,7 @@ TEST_CASE("CAPE, lifted index and thunderstorm codes call for cumulonimbus or to
   CHECK(convection_from_weather(unstable(1500), {}).reason.find("cape") != std::string::npos);
 }
 
-TEST_CASE("without weather, convection comes from the low cover in the afternoon of local solar time only", "[convection]") {
+TEST_CASE("without weather, convection comes from the low cover in the afternoon of local solar time only", "[fast][convection]") {
   // 7.5 degrees east: solar time = UTC + 30 min. 11:29 UTC is 11:59 solar, 11:30 UTC 12:00.
   const double day = core::parse_utc_time("2026-06-21T00:00Z");
   auto at = [&](double low, double utc_hours) { return convection_from_cover(low, day + utc_hours * 3600, 7.5).kind; };
@@ -101,7 +101,7 @@ TEST_CASE("without weather, convection comes from the low cover in the afternoon
   CHECK(f.max_of(int(CoverageChannel::convective)) == 0.0f);
 }
 
-TEST_CASE("blended convective strengths place cumulonimbus from 0.75 and towering cumulus from 0.25", "[convection]") {
+TEST_CASE("blended convective strengths place cumulonimbus from 0.75 and towering cumulus from 0.25", "[fast][convection]") {
   CHECK(kind_of_strength(convective_strength(ConvectiveKind::cumulonimbus)) == ConvectiveKind::cumulonimbus);
   CHECK(kind_of_strength(convective_strength(ConvectiveKind::towering)) == ConvectiveKind::towering);
   CHECK(kind_of_strength(0.75) == ConvectiveKind::cumulonimbus);
@@ -112,7 +112,7 @@ TEST_CASE("blended convective strengths place cumulonimbus from 0.75 and towerin
   CHECK(kind_of_strength(0.5 * (convective_strength(ConvectiveKind::cumulonimbus) + 0.0)) == ConvectiveKind::towering);
 }
 
-TEST_CASE("placement is deterministic from the seed, in the sector of the anchor, clear of each other, and empty without convection", "[convection]") {
+TEST_CASE("placement is deterministic from the seed, in the sector of the anchor, clear of each other, and empty without convection", "[fast][convection]") {
   CHECK(place_convective_clouds(uniform_convective_field(0.0f), 12, 60, 1, 540).empty());
   CHECK(place_convective_clouds(uniform_convective_field(0.2f), 12, 60, 1, 540).empty());
   const auto a = place_convective_clouds(uniform_convective_field(1.0f), 12, 60, 7, 540);
@@ -157,7 +157,7 @@ TEST_CASE("placement is deterministic from the seed, in the sector of the anchor
   }
 }
 
-TEST_CASE("weather files give cape, lifted_index and weather_code when present and refuse bad values naming the field", "[convection][weather][bad-input]") {
+TEST_CASE("weather files give cape, lifted_index and weather_code when present and refuse bad values naming the field", "[fast][convection][weather][bad-input]") {
   const WeatherSeries w = io::parse_weather(
       open_meteo(R"(, "cape": [400, 1600], "lifted_index": [1, -3], "weather_code": [3, 95])"), "bern.json");
   const double t = core::parse_utc_time("2026-06-21T14:30Z");

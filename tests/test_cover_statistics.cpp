@@ -30,7 +30,7 @@ void fill_rectangle(studies::Equirect& m, int x0, int y0, int w, int h) {
 
 }  // namespace
 
-TEST_CASE("coverage by band counts the cloudy solid angle of each band", "[stats]") {
+TEST_CASE("coverage by band counts the cloudy solid angle of each band", "[fast][stats]") {
   // Equirect: the southern rows all cloudy, the northern ones in every other column.
   studies::Equirect m = blank(64, 32);
   for (int y = 0; y < 32; ++y)
@@ -54,7 +54,7 @@ TEST_CASE("coverage by band counts the cloudy solid angle of each band", "[stats
   for (int b = 0; b < 18; ++b) CHECK(c[b] == (b < 9 ? 1.0 : 0.0));
 }
 
-TEST_CASE("squares of many sizes have perimeter dimension 1", "[stats]") {
+TEST_CASE("squares of many sizes have perimeter dimension 1", "[fast][stats]") {
   // A square of side s: A = s^2 pixels, P = 4 s edges = 4 sqrt(A): log P = log 4 + log A / 2
   // exactly, so D = 2 x 1/2 = 1 up to the fit's rounding.
   studies::Equirect m = blank(1024, 512);
@@ -75,7 +75,7 @@ TEST_CASE("squares of many sizes have perimeter dimension 1", "[stats]") {
   CHECK(d.dimension == Approx(1.0).margin(1e-9));
 }
 
-TEST_CASE("discs of many sizes have perimeter dimension close to 1", "[stats]") {
+TEST_CASE("discs of many sizes have perimeter dimension close to 1", "[fast][stats]") {
   // A digital disc of radius r has a staircase perimeter of about 8 r (each quadrant's edges
   // sum to 2 r along x and y) and area pi r^2: P ~ sqrt(A), D = 1, up to the digitisation of
   // small discs (a few percent in P from r = 3 on, which tilts the fit by less than 0.05).
@@ -92,7 +92,7 @@ TEST_CASE("discs of many sizes have perimeter dimension close to 1", "[stats]") 
   CHECK(d.dimension == Approx(1.0).margin(0.05));
 }
 
-TEST_CASE("the zonal spectrum of a power-law signal has its slope", "[stats]") {
+TEST_CASE("the zonal spectrum of a power-law signal has its slope", "[fast][stats]") {
   // Each row sum_k a_k cos(2 pi k x / W + phase_k) with a_k = k^(-beta/2): its DFT has
   // |X_k| = W a_k / 2, so P(k) = a_k^2 / 4 = k^-beta / 4 exactly, with the FFT (W = 512) and
   // the direct sum (W = 192) alike; the fit's slope is -beta to rounding.

@@ -22,7 +22,7 @@ std::vector<float> random_densities(int size, unsigned seed) {
 
 }  // namespace
 
-TEST_CASE("the calibrated cloudy fraction is within one texel's share of the target", "[coverage]") {
+TEST_CASE("the calibrated cloudy fraction is within one texel's share of the target", "[fast][coverage]") {
   for (int size : {1, 2, 3, 17, 64}) {
     const auto densities = random_densities(size, size);
     for (double target : {0.0, 0.01, 0.25, 0.5, 0.67, 0.99, 1.0}) {
@@ -40,7 +40,7 @@ TEST_CASE("the calibrated cloudy fraction is within one texel's share of the tar
   }
 }
 
-TEST_CASE("coverage 0 leaves every texel clear and coverage 1 makes every texel cloudy", "[coverage][extreme]") {
+TEST_CASE("coverage 0 leaves every texel clear and coverage 1 makes every texel cloudy", "[fast][coverage][extreme]") {
   const int size = 9;
   const auto densities = random_densities(size, 1);
   const auto none = calibrate_coverage(densities, size, 0.0);
@@ -55,7 +55,7 @@ TEST_CASE("coverage 0 leaves every texel clear and coverage 1 makes every texel 
   }
 }
 
-TEST_CASE("a constant density field cannot be split and reports what it achieves", "[coverage][extreme]") {
+TEST_CASE("a constant density field cannot be split and reports what it achieves", "[fast][coverage][extreme]") {
   const int size = 4;
   const std::vector<float> flat(6 * size * size, 0.25f);
   const auto half = calibrate_coverage(flat, size, 0.5);
@@ -63,7 +63,7 @@ TEST_CASE("a constant density field cannot be split and reports what it achieves
   CHECK((half.achieved_fraction == 0.0 || half.achieved_fraction == Approx(1.0)));
 }
 
-TEST_CASE("the remap is a ramp from the threshold to the largest density", "[coverage]") {
+TEST_CASE("the remap is a ramp from the threshold to the largest density", "[fast][coverage]") {
   using nephele::glsl::cover_from_density;
   CHECK(cover_from_density(0.2f, 0.2f, 0.8f) == 0.0f);
   CHECK(cover_from_density(0.5f, 0.2f, 0.8f) == Approx(0.5f));

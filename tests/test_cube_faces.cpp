@@ -55,7 +55,7 @@ TableEntry table_8_19(int face, vec3 r) {
 
 }  // namespace
 
-TEST_CASE("texel directions follow table 8.19 with texel centres at (i + 0.5) / N", "[cube]") {
+TEST_CASE("texel directions follow table 8.19 with texel centres at (i + 0.5) / N", "[fast][cube]") {
   const int size = 8;
   for (int face = 0; face < 6; ++face) {
     for (int j = 0; j < size; ++j) {
@@ -74,7 +74,7 @@ TEST_CASE("texel directions follow table 8.19 with texel centres at (i + 0.5) / 
   }
 }
 
-TEST_CASE("face +Z is the north pole face and its row 0 lies towards +Y", "[cube]") {
+TEST_CASE("face +Z is the north pole face and its row 0 lies towards +Y", "[fast][cube]") {
   // +Z: tc = -ry, so t = 0 (row 0, the top of the stored image) is at ry = +1.
   const vec3 top_left = texel_direction(4, 0, 0, 2);
   CHECK(top_left.z > 0.0f);
@@ -84,7 +84,7 @@ TEST_CASE("face +Z is the north pole face and its row 0 lies towards +Y", "[cube
   CHECK(texel_direction(2, 0, 0, 1).y == Approx(1.0f));  // +Y centre is longitude 90 E
 }
 
-TEST_CASE("cube_face_coords inverts cube_face_point", "[cube]") {
+TEST_CASE("cube_face_coords inverts cube_face_point", "[fast][cube]") {
   for (int face = 0; face < 6; ++face) {
     for (float sc : {-0.9f, -0.3f, 0.0f, 0.55f, 0.99f}) {
       for (float tc : {-0.99f, -0.1f, 0.4f, 0.8f}) {
@@ -98,7 +98,7 @@ TEST_CASE("cube_face_coords inverts cube_face_point", "[cube]") {
   }
 }
 
-TEST_CASE("texel solid angles sum to the sphere and shrink towards the corners", "[cube]") {
+TEST_CASE("texel solid angles sum to the sphere and shrink towards the corners", "[fast][cube]") {
   for (int size : {1, 2, 3, 16, 255}) {
     const auto angles = nephele::cover::face_texel_solid_angles(size);
     double sum = 0;

@@ -48,7 +48,7 @@ std::vector<vec4> random_cube(int size, unsigned seed) {
 
 }  // namespace
 
-TEST_CASE("sampling at a texel centre returns the texel", "[sampling]") {
+TEST_CASE("sampling at a texel centre returns the texel", "[fast][sampling]") {
   const int size = 8;
   const auto texels = random_cube(size, 1);
   const CubeSource source{size, texels.data()};
@@ -61,7 +61,7 @@ TEST_CASE("sampling at a texel centre returns the texel", "[sampling]") {
       }
 }
 
-TEST_CASE("sampling is continuous across face edges", "[sampling]") {
+TEST_CASE("sampling is continuous across face edges", "[fast][sampling]") {
   // Points just either side of an edge interpolate between the same texels; with texel values
   // in [0, 1] the sample changes by at most (2 texels^-1 per face unit) x distance.
   const int size = 8;
@@ -85,7 +85,7 @@ TEST_CASE("sampling is continuous across face edges", "[sampling]") {
   CHECK(checked > 100);
 }
 
-TEST_CASE("a warp step stays on the unit sphere and zero flow leaves points in place", "[warp]") {
+TEST_CASE("a warp step stays on the unit sphere and zero flow leaves points in place", "[fast][warp]") {
   const int size = 4;
   auto texels = random_cube(size, 3);
   for (auto& t : texels) t = 10.0f * (t - 0.5f);  // large arbitrary velocities

@@ -86,7 +86,7 @@ double stream_function(vec3 p, const CurlParams& c) {
 
 }  // namespace
 
-TEST_CASE("curl vectors are tangent to the sphere", "[curl]") {
+TEST_CASE("curl vectors are tangent to the sphere", "[fast][curl]") {
   const CurlParams c = default_curl();
   std::mt19937 rng(1);
   for (int k = 0; k < 5000; ++k) {
@@ -97,7 +97,7 @@ TEST_CASE("curl vectors are tangent to the sphere", "[curl]") {
   }
 }
 
-TEST_CASE("the curl field is divergence-free: its flux through closed loops vanishes", "[curl]") {
+TEST_CASE("the curl field is divergence-free: its flux through closed loops vanishes", "[fast][curl]") {
   // Flux of n x grad phi through a loop = the change of phi around it = 0 (phi is continuous,
   // though its gradient jumps at Voronoi borders). The midpoint rule errs by O(ds) per border
   // crossed, so the relative flux falls like 1/M with M samples.
@@ -130,7 +130,7 @@ TEST_CASE("the curl field is divergence-free: its flux through closed loops vani
   }
 }
 
-TEST_CASE("curl_velocity equals s n x grad phi of the documented stream function", "[curl]") {
+TEST_CASE("curl_velocity equals s n x grad phi of the documented stream function", "[fast][curl]") {
   // grad phi by central differences of the stream function written out in the test; points
   // whose stencil straddles a Voronoi border (one-sided differences disagree) are skipped.
   const CurlParams c = default_curl(5);
@@ -164,7 +164,7 @@ TEST_CASE("curl_velocity equals s n x grad phi of the documented stream function
   CHECK(compared > 1000);
 }
 
-TEST_CASE("the storm-track envelope is 1 at 50 degrees, 1 - f at the equator, and its derivative is dA/dz", "[curl]") {
+TEST_CASE("the storm-track envelope is 1 at 50 degrees, 1 - f at the equator, and its derivative is dA/dz", "[fast][curl]") {
   // Values: float exp and products, a few ulp of 1. Derivative: the central difference with
   // h = 1e-3 errs by h^2 |A^(3)| / 6, below 3.3e-4 (|A^(3)| < 2000 for f = 1: three factors
   // 4 z u / sigma of at most 16 each), plus rounding 2 ulp / 2h = 1.2e-4: 1e-3 bounds both.
@@ -185,7 +185,7 @@ TEST_CASE("the storm-track envelope is 1 at 50 degrees, 1 - f at the equator, an
   }
 }
 
-TEST_CASE("the cyclonic depth is the vortex part of the stream function with the sign of the Coriolis parameter", "[curl]") {
+TEST_CASE("the cyclonic depth is the vortex part of the stream function with the sign of the Coriolis parameter", "[fast][curl]") {
   // c = A (w1 (1 + m)/2 + w2 (1 - m)/2), written out here from the fBm values.
   const CurlParams c = default_curl(4);
   std::mt19937 rng(8);
@@ -200,7 +200,7 @@ TEST_CASE("the cyclonic depth is the vortex part of the stream function with the
   }
 }
 
-TEST_CASE("without noise the flow is the zonal wind u = -s P Z'(lat) of its cells", "[curl]") {
+TEST_CASE("without noise the flow is the zonal wind u = -s P Z'(lat) of its cells", "[fast][curl]") {
   CurlParams c = default_curl();
   c.potential_north.octaves = 0;
   c.potential_south.octaves = 0;
@@ -231,7 +231,7 @@ TEST_CASE("without noise the flow is the zonal wind u = -s P Z'(lat) of its cell
     }
 }
 
-TEST_CASE("the curl field is finite at the poles", "[curl][extreme]") {
+TEST_CASE("the curl field is finite at the poles", "[fast][curl][extreme]") {
   const CurlParams c = default_curl();
   for (const vec3 pole : {vec3(0, 0, 1), vec3(0, 0, -1)}) {
     const vec3 v = curl_velocity(pole, c);
@@ -242,7 +242,7 @@ TEST_CASE("the curl field is finite at the poles", "[curl][extreme]") {
   }
 }
 
-TEST_CASE("the default flow is continuous through the poles where a = 2.5 whirls", "[curl][poles]") {
+TEST_CASE("the default flow is continuous through the poles where a = 2.5 whirls", "[fast][curl][poles]") {
   // Points at angular distance rho from a pole on opposite sides (longitudes 0 and 180 deg).
   // A continuous field gives velocities that agree as rho -> 0, within rho times its Lipschitz
   // bound; with a = 2.5 the zonal term keeps the speed s (P - w) a |cos(2.5 x 90 deg)| right

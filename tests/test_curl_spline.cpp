@@ -276,7 +276,7 @@ TEST_CASE("the warp's first velocity taken from the curl pass gives the bits of 
   CHECK(differing == 0);
 }
 
-TEST_CASE("the spline reproduces cubic polynomials of the face coordinates and not quartics", "[spline]") {
+TEST_CASE("the spline reproduces cubic polynomials of the face coordinates and not quartics", "[fast][spline]") {
   // A field that is a bicubic polynomial of the face coordinates (s, t) on each face, sampled at
   // the nodes (in double): the quasi-interpolant reproduces it up to rounding. A quartic term
   // is not reproduced: the check has teeth.
@@ -335,7 +335,7 @@ TEST_CASE("a curl size outside 4 to 1024 exits 2 naming --curl-size and its rang
   }
 }
 
-TEST_CASE("the spline converges to the procedural curl at fourth order in the node spacing", "[spline]") {
+TEST_CASE("the spline converges to the procedural curl at fourth order in the node spacing", "[fast][spline]") {
   // A one-octave potential of frequency 1 (the default's shape at half its lowest frequency),
   // so that 16 to 64 nodes per face edge reach the asymptotic range; the default flow needs 4
   // times the nodes for the same (docs/numerics.md, "The spline velocity"). The errors stay

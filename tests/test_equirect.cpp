@@ -21,7 +21,7 @@ static_assert(kRowDirection >= nephele::test::kUlp);
 
 }  // namespace
 
-TEST_CASE("equirect rows are geodetic latitudes turned into geocentric directions", "[equirect]") {
+TEST_CASE("equirect rows are geodetic latitudes turned into geocentric directions", "[fast][equirect]") {
   const int height = 180;
   const auto rows = cover::geodetic_row_directions(height);
   // WGS84: tan(geocentric) = (1 - f)^2 tan(geodetic) on the surface, f = 1/298.257223563.

@@ -147,7 +147,7 @@ io::ImageData read_png_as_stored(const std::filesystem::path& png) {
 
 }  // namespace
 
-TEST_CASE("export's preset registry and the parameter table name the same presets", "[export]") {
+TEST_CASE("export's preset registry and the parameter table name the same presets", "[fast][export]") {
   std::string words;
   for (const auto& p : io::export_presets()) words += (words.empty() ? "" : "|") + p.name;
   CHECK(words == std::string(params::run::export_preset.allowed));
@@ -465,7 +465,7 @@ TEST_CASE("every cover export preset writes a README.txt naming the preset besid
   }
 }
 
-TEST_CASE("half_from_float rounds to the nearest binary16, ties to even, through subnormals and overflow", "[export]") {
+TEST_CASE("half_from_float rounds to the nearest binary16, ties to even, through subnormals and overflow", "[fast][export]") {
   // Exact values and their bit patterns (IEEE 754-2008, binary16).
   CHECK(io::half_from_float(0.0f) == 0x0000);
   CHECK(io::half_from_float(-0.0f) == 0x8000);
@@ -701,7 +701,7 @@ TEST_CASE("export blender: the equirect with the marker and a World script whose
 }
 
 TEST_CASE("export refuses up front a preset whose image would exceed 16384 pixels, naming the largest face size",
-          "[export]") {
+          "[fast][export]") {
   const auto& equirect = io::find_export_preset("equirect");
   CHECK_NOTHROW(io::check_texture_limit(equirect, 4096));
   try {
@@ -723,7 +723,7 @@ TEST_CASE("export refuses up front a preset whose image would exceed 16384 pixel
 // marker and at its mirror images (scripts/blender_probe.py). Blender is not a CI package (see
 // docs/export.md, "blender"): without it on PATH the test says so and passes.
 TEST_CASE("export blender: Blender renders the marker at 30 N 60 E through the preset's World, and at 60 W without Y = -1",
-          "[export][blender]") {
+          "[fast][export][blender]") {
   if (std::system("command -v blender > /dev/null 2>&1") != 0) {
     WARN("skipped: blender is not installed (apt-get install --no-install-recommends blender)");
     return;
@@ -788,7 +788,7 @@ TEST_CASE("generate --export runs the presets into export/NAME of the same set, 
 // FlightGear draws every Earthview texture, the shipped ones included, with latitudes scaled
 // by 87.23/90. The bright vertices must sit at 60 E and 30 N times that scale.
 TEST_CASE("export flightgear: through the UVs of FlightGear's shipped cloud models the marker lands at 60 E, 30 N",
-          "[export][flightgear]") {
+          "[fast][export][flightgear]") {
   const std::filesystem::path astro = "/usr/share/games/flightgear/Models/Astro";
   if (!std::filesystem::exists(astro / "clouds_N1.ac")) {
     WARN("skipped: FlightGear's models are not installed (apt-get install flightgear-data-models)");
@@ -851,7 +851,7 @@ TEST_CASE("export flightgear: through the UVs of FlightGear's shipped cloud mode
 // axis: the towering example is taller than wide, so a swapped axis (z up) or a wrong voxel
 // size fails.
 TEST_CASE("model's density.vdb opens in Blender as a Volume with the grid density where the raw volume has density",
-          "[export][blender]") {
+          "[fast][export][blender]") {
   if (std::system("command -v blender > /dev/null 2>&1") != 0) {
     WARN("skipped: blender is not installed (apt-get install --no-install-recommends blender)");
     return;
@@ -927,7 +927,7 @@ TEST_CASE("export atlas: a noise volume's slices in rows and columns, every texe
              Catch::Contains("preset atlas") && Catch::Contains("Columns 4, Rows 3") && Catch::Contains("data"));
 }
 
-TEST_CASE("export atlas keeps every side within 16384 pixels: 160^3 in 13 x 13, and refuses what cannot fit", "[export]") {
+TEST_CASE("export atlas keeps every side within 16384 pixels: 160^3 in 13 x 13, and refuses what cannot fit", "[fast][export]") {
   const auto g = io::atlas_grid(160, 160, 160);
   CHECK(g.columns == 13);
   CHECK(g.rows == 13);

@@ -25,7 +25,7 @@ std::vector<std::uint8_t> read_bytes(const fs::path& path) {
 
 }  // namespace
 
-TEST_CASE("Every fuzz corpus input is parsed or refused with the parser's own error", "[fuzz]") {
+TEST_CASE("Every fuzz corpus input is parsed or refused with the parser's own error", "[fast][fuzz]") {
   for (const auto& target : nephele::fuzz::targets()) {
     const fs::path folder = corpus_root / target.name;
     size_t inputs = 0;
@@ -41,7 +41,7 @@ TEST_CASE("Every fuzz corpus input is parsed or refused with the parser's own er
   }
 }
 
-TEST_CASE("Every fuzz corpus folder belongs to a fuzz target", "[fuzz]") {
+TEST_CASE("Every fuzz corpus folder belongs to a fuzz target", "[fast][fuzz]") {
   std::set<std::string> names;
   for (const auto& target : nephele::fuzz::targets()) names.insert(target.name);
   for (const auto& entry : fs::directory_iterator(corpus_root)) {

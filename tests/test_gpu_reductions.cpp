@@ -43,7 +43,7 @@ void check_calibration_matches_cpu(const std::vector<float>& densities, int size
 
 }  // namespace
 
-TEST_CASE("texel weight units sum to the sphere within half a unit per texel", "[gpu-reduce]") {
+TEST_CASE("texel weight units sum to the sphere within half a unit per texel", "[fast][gpu-reduce]") {
   for (int size : {1, 2, 3, 16, 33, 256}) {
     const cover::TexelWeightUnits units = cover::texel_weight_units(size);
     const std::vector<double> exact = cover::face_texel_solid_angles(size);

@@ -21,14 +21,14 @@ constexpr double kSigmas = 6.0;
 
 }  // namespace
 
-TEST_CASE("pcg3d is a pure function of its input", "[hash]") {
+TEST_CASE("pcg3d is a pure function of its input", "[fast][hash]") {
   const uvec3 a = pcg3d(uvec3(1u, 2u, 3u));
   const uvec3 b = pcg3d(uvec3(1u, 2u, 3u));
   CHECK(a == b);
   CHECK(pcg3d(uvec3(1u, 2u, 4u)) != a);
 }
 
-TEST_CASE("hash_to_unit3 gives values below 1 with 24-bit resolution", "[hash]") {
+TEST_CASE("hash_to_unit3 gives values below 1 with 24-bit resolution", "[fast][hash]") {
   CHECK(hash_to_unit3(uvec3(0u)).x == 0.0f);
   const vec3 top = hash_to_unit3(uvec3(0xFFFFFFFFu));
   CHECK(top.x < 1.0f);
@@ -39,7 +39,7 @@ TEST_CASE("hash_to_unit3 gives values below 1 with 24-bit resolution", "[hash]")
 // standard deviation sqrt(2 (B - 1)); kSigmas of them (a false failure 1.3e-6 for B = 64).
 static double chi_square_bound(int bins) { return (bins - 1) + kSigmas * std::sqrt(2.0 * (bins - 1)); }
 
-TEST_CASE("hashed unit numbers of consecutive cells are uniform in each component", "[hash]") {
+TEST_CASE("hashed unit numbers of consecutive cells are uniform in each component", "[fast][hash]") {
   const int bins = 64, n = 200000;
   std::vector<int> counts[3] = {std::vector<int>(bins), std::vector<int>(bins), std::vector<int>(bins)};
   for (int k = 0; k < n; ++k) {
@@ -55,7 +55,7 @@ TEST_CASE("hashed unit numbers of consecutive cells are uniform in each componen
   }
 }
 
-TEST_CASE("hashed components are uncorrelated with each other and with neighbour cells", "[hash]") {
+TEST_CASE("hashed components are uncorrelated with each other and with neighbour cells", "[fast][hash]") {
   // Sample correlation of independent uniforms has standard deviation 1/sqrt(n).
   const int n = 100000;
   double sxy = 0, sxz = 0, sxn = 0, sx = 0;
@@ -75,7 +75,7 @@ TEST_CASE("hashed components are uncorrelated with each other and with neighbour
   CHECK(std::abs(sxn / n / variance) < bound);
 }
 
-TEST_CASE("noise keys of different seeds and layers differ", "[hash]") {
+TEST_CASE("noise keys of different seeds and layers differ", "[fast][hash]") {
   CHECK(noise_key(1u, 0u) != noise_key(2u, 0u));
   CHECK(noise_key(1u, 0u) != noise_key(1u, 1u));
   CHECK(noise_key(0xFFFFFFFFu, 0u) != noise_key(0u, 0u));

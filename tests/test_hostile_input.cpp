@@ -35,7 +35,7 @@ const std::string many_digits(30000, '1');
 
 }  // namespace
 
-TEST_CASE("the number scanner takes whole decimal texts of at most 64 characters", "[bad-input][numbers]") {
+TEST_CASE("the number scanner takes whole decimal texts of at most 64 characters", "[fast][bad-input][numbers]") {
   using core::NumberForm;
   for (const char* text : {"0", "-7", "+7", "123456789"}) {
     INFO(text);

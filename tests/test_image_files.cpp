@@ -69,7 +69,7 @@ io::ImageData test_image(int width, int height) {
 
 }  // namespace
 
-TEST_CASE("a PNG with png_filters set filters every row with that one filter and keeps the pixels", "[io][png]") {
+TEST_CASE("a PNG with png_filters set filters every row with that one filter and keeps the pixels", "[fast][io][png]") {
   const int width = 64, height = 24;
   const io::ImageData image = test_image(width, height);
   io::ImageEncoding encoding = io::png_encoding(8);

@@ -143,31 +143,31 @@ double observed_order(int integrator, double flow_time, const std::vector<int>& 
 
 }  // namespace
 
-TEST_CASE("forward Euler converges at first order on the smooth zonal flow", "[integrators]") {
+TEST_CASE("forward Euler converges at first order on the smooth zonal flow", "[fast][integrators]") {
   const double order = observed_order(INTEGRATOR_EULER, 3.0, {100, 200, 400, 800});
   INFO("observed order " << order);
   CHECK(std::abs(order - 1.0) < kFirstOrderSlack);
 }
 
-TEST_CASE("Heun converges at second order on the smooth zonal flow", "[integrators]") {
+TEST_CASE("Heun converges at second order on the smooth zonal flow", "[fast][integrators]") {
   const double order = observed_order(INTEGRATOR_HEUN, 3.0, {30, 60, 120});
   INFO("observed order " << order);
   CHECK(std::abs(order - 2.0) < kHeunOrderSlack);
 }
 
-TEST_CASE("classical RK4 converges at fourth order on the smooth zonal flow", "[integrators]") {
+TEST_CASE("classical RK4 converges at fourth order on the smooth zonal flow", "[fast][integrators]") {
   const double order = observed_order(INTEGRATOR_RK4, 3.0, {12, 24, 48});
   INFO("observed order " << order);
   CHECK(std::abs(order - 4.0) < kRk4OrderSlack);
 }
 
-TEST_CASE("geodesic Euler converges at first order on the smooth zonal flow", "[integrators]") {
+TEST_CASE("geodesic Euler converges at first order on the smooth zonal flow", "[fast][integrators]") {
   const double order = observed_order(INTEGRATOR_GEODESIC, 3.0, {100, 200, 400, 800});
   INFO("observed order " << order);
   CHECK(std::abs(order - 1.0) < kFirstOrderSlack);
 }
 
-TEST_CASE("the geodesic step is exact along a great circle and stays on the sphere", "[integrators]") {
+TEST_CASE("the geodesic step is exact along a great circle and stays on the sphere", "[fast][integrators]") {
   // A rotation about the axis k moves a point of the great circle orthogonal to k along that
   // circle at the constant speed omega: the geodesic step follows it exactly for any h.
   const vec3 axis = normalize(vec3(0.3f, -0.5f, 0.8f));
@@ -187,7 +187,7 @@ TEST_CASE("the geodesic step is exact along a great circle and stays on the sphe
   }
 }
 
-TEST_CASE("the adaptive error is proportional to the tolerance on the smooth zonal flow", "[integrators]") {
+TEST_CASE("the adaptive error is proportional to the tolerance on the smooth zonal flow", "[fast][integrators]") {
   // Bogacki-Shampine with local extrapolation and error per step: h ~ tol^(1/3), so the
   // third-order global error ~ (T / h) h^4 ~ tol, and the work grows like tol^(-1/3).
   const ZonalFlow flow(1.0);
@@ -210,7 +210,7 @@ TEST_CASE("the adaptive error is proportional to the tolerance on the smooth zon
   CHECK(std::abs(slope(tolerances, work) + 1.0 / 3.0) < kAdaptiveWorkSlopeSlack);
 }
 
-TEST_CASE("beyond the stable step Euler goes wrong while the adaptive scheme sub-steps", "[integrators][stiff]") {
+TEST_CASE("beyond the stable step Euler goes wrong while the adaptive scheme sub-steps", "[fast][integrators][stiff]") {
   // A fast solid-body rotation: the velocity gradient has eigenvalues +-i omega, the
   // stiffness number is h omega. At h omega = 5 the fixed-step schemes are far beyond their
   // limits; the adaptive scheme's error estimate sees it and takes smaller steps itself.
@@ -234,7 +234,7 @@ TEST_CASE("beyond the stable step Euler goes wrong while the adaptive scheme sub
   CHECK(distance(dvec3(vec3(adaptive)), exact) < kStiffAdaptive);
 }
 
-TEST_CASE("the adaptive scheme reports the texels that ran out of sub-steps", "[integrators]") {
+TEST_CASE("the adaptive scheme reports the texels that ran out of sub-steps", "[fast][integrators]") {
   const ZonalFlow flow(1.0);
   const vec3 start = starts()[3];
   const vec4 capped = integrate_adaptive(start, 1000.0f, 0.1f, 1000.0f, 1e-6f, 50, flow.curl);
@@ -244,7 +244,7 @@ TEST_CASE("the adaptive scheme reports the texels that ran out of sub-steps", "[
   CHECK(done.w > 0.0f);
 }
 
-TEST_CASE("the stable limits are the stability intervals of each scheme", "[integrators]") {
+TEST_CASE("the stable limits are the stability intervals of each scheme", "[fast][integrators]") {
   // |R(z)| <= 1 at the limit on the real or imaginary axis, > 1 just beyond it.
   auto euler = [](std::complex<double> z) { return 1.0 + z; };
   auto heun = [](std::complex<double> z) { return 1.0 + z + z * z / 2.0; };

@@ -4,7 +4,7 @@
 
 using namespace nephele;
 
-TEST_CASE("JSON values round-trip through write and parse", "[json]") {
+TEST_CASE("JSON values round-trip through write and parse", "[fast][json]") {
   json::Value v;
   v.set("name", "cover \"quoted\"\n");
   v.set("pi", 3.141592653589793);
@@ -24,7 +24,7 @@ TEST_CASE("JSON values round-trip through write and parse", "[json]") {
   CHECK(json::write(json::Value(std::nan(""))) == "null\n");
 }
 
-TEST_CASE("malformed JSON is rejected with its line and column", "[json]") {
+TEST_CASE("malformed JSON is rejected with its line and column", "[fast][json]") {
   CHECK_THROWS_AS(json::parse("{\"a\": 1,}"), json::ParseError);
   CHECK_THROWS_AS(json::parse("[1, 2"), json::ParseError);
   CHECK_THROWS_AS(json::parse("{\"a\": 1, \"a\": 2}"), json::ParseError);

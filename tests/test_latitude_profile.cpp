@@ -65,7 +65,7 @@ std::string message_of(const std::string& csv) {
 
 }  // namespace
 
-TEST_CASE("the Earth profile has the climatology's mean and features", "[profile]") {
+TEST_CASE("the Earth profile has the climatology's mean and features", "[fast][profile]") {
   const std::vector<double> t = cover::band_targets(cover::earth_profile(), 0, 0.67);
   REQUIRE(t.size() == 90);
   CHECK(std::abs(area_mean(t) - 0.67) <= kMeanRounding);
@@ -92,7 +92,7 @@ TEST_CASE("the Earth profile has the climatology's mean and features", "[profile
   CHECK(t[89] == Approx(0.64).margin(0.03));
 }
 
-TEST_CASE("the profile is rescaled to any coverage keeping its order and [0, 1]", "[profile]") {
+TEST_CASE("the profile is rescaled to any coverage keeping its order and [0, 1]", "[fast][profile]") {
   const std::vector<double> base = cover::band_targets(cover::earth_profile(), 0, 0.67);
   for (double coverage : {0.0, 0.1, 0.5, 0.67, 0.9, 1.0}) {
     const std::vector<double> t = cover::band_targets(cover::earth_profile(), 0, coverage);
@@ -107,7 +107,7 @@ TEST_CASE("the profile is rescaled to any coverage keeping its order and [0, 1]"
   }
 }
 
-TEST_CASE("the month option moves the ITCZ north in August and south in February", "[profile]") {
+TEST_CASE("the month option moves the ITCZ north in August and south in February", "[fast][profile]") {
   const auto itcz = [](int month) {
     return centre_deg(argmax_in(cover::band_targets(cover::earth_profile(), month, 0.67), -20, 20));
   };
@@ -125,7 +125,7 @@ TEST_CASE("the month option moves the ITCZ north in August and south in February
   }
 }
 
-TEST_CASE("the profile curve passes through its knots without overshoot", "[profile]") {
+TEST_CASE("the profile curve passes through its knots without overshoot", "[fast][profile]") {
   const cover::LatitudeProfile p = cover::earth_profile();
   for (size_t k = 0; k < p.latitude_deg.size(); ++k)
     CHECK(cover::profile_fraction(p, p.latitude_deg[k]) == Approx(p.fraction[k]).margin(1e-12));
@@ -138,7 +138,7 @@ TEST_CASE("the profile curve passes through its knots without overshoot", "[prof
     }
 }
 
-TEST_CASE("a profile CSV takes a header, comments and rows, constant beyond its ends", "[profile][io]") {
+TEST_CASE("a profile CSV takes a header, comments and rows, constant beyond its ends", "[fast][profile][io]") {
   const cover::LatitudeProfile p =
       io::parse_profile_csv("# zonal cover\nlatitude_deg,fraction\n\n-60, 0.8\n0,0.5\n# north\n60,0.2\n", "p.csv");
   REQUIRE(p.latitude_deg == std::vector<double>{-60, 0, 60});
@@ -148,7 +148,7 @@ TEST_CASE("a profile CSV takes a header, comments and rows, constant beyond its 
   CHECK(io::parse_profile_csv("10,0.3\n", "one.csv").fraction == std::vector<double>{0.3});
 }
 
-TEST_CASE("every bad profile row is refused naming the file, line, field and range", "[profile][io]") {
+TEST_CASE("every bad profile row is refused naming the file, line, field and range", "[fast][profile][io]") {
   CHECK(message_of("latitude_deg,fraction\n0,0.5\n-10,0.5\n").find("p.csv: line 3: latitude_deg") != std::string::npos);
   CHECK(message_of("0,1.5\n").find("p.csv: line 1: fraction") != std::string::npos);
   CHECK(message_of("0,1.5\n").find("0 to 1") != std::string::npos);
@@ -162,7 +162,7 @@ TEST_CASE("every bad profile row is refused naming the file, line, field and ran
   CHECK_THROWS_AS(io::read_profile_csv("/nonexistent/profile.csv"), core::InputError);
 }
 
-TEST_CASE("a band's threshold reaches its target within the texels of its crossing fine bin", "[profile]") {
+TEST_CASE("a band's threshold reaches its target within the texels of its crossing fine bin", "[fast][profile]") {
   const int size = 48;
   const std::vector<float> d = random_densities(size, 5);
   const std::vector<double> targets = cover::band_targets(cover::earth_profile(), 0, 0.67);
@@ -222,7 +222,7 @@ TEST_CASE("the GPU's band thresholds are the CPU's within one fine bin", "[profi
   }
 }
 
-TEST_CASE("the smooth threshold has no steps at band edges and a continuous slope", "[profile]") {
+TEST_CASE("the smooth threshold has no steps at band edges and a continuous slope", "[fast][profile]") {
   std::vector<float> thresholds(90);
   std::mt19937 rng(3);
   for (float& t : thresholds) t = std::uniform_real_distribution<float>(0.2f, 0.6f)(rng);

@@ -154,7 +154,7 @@ std::string join(const std::vector<std::string>& lines) {
 
 }  // namespace
 
-TEST_CASE("the layer checks find a link, a C++ include and a GLSL include that go upward") {
+TEST_CASE("the layer checks find a link, a C++ include and a GLSL include that go upward", "[fast]") {
   const LayerGraph graph = parse_layer_graph("order core gpu cover render\nlinks gpu core\nlinks cover gpu render\n");
   CHECK(upward_links(graph) == std::vector<std::string>{"cover -> render"});
 
@@ -175,7 +175,7 @@ TEST_CASE("the layer checks find a link, a C++ include and a GLSL include that g
   fs::remove_all(root);
 }
 
-TEST_CASE("every layer links only layers below it") {
+TEST_CASE("every layer links only layers below it", "[fast]") {
   const LayerGraph graph = parse_layer_graph(read_text(NEPHELE_LAYER_LINKS_FILE));
   REQUIRE(graph.order.size() >= 10);
   REQUIRE(graph.links.size() == graph.order.size());
@@ -183,7 +183,7 @@ TEST_CASE("every layer links only layers below it") {
   CHECK(upward_links(graph).empty());
 }
 
-TEST_CASE("every C++ include of src/ stays within the layers its folder links") {
+TEST_CASE("every C++ include of src/ stays within the layers its folder links", "[fast]") {
   const LayerGraph graph = parse_layer_graph(read_text(NEPHELE_LAYER_LINKS_FILE));
   const auto bad = upward_includes(graph, fs::path(NEPHELE_SOURCE_DIR) / "src");
   INFO(join(bad));
@@ -196,7 +196,7 @@ TEST_CASE("every C++ include of src/ stays within the layers its folder links") 
     if (entry.is_directory()) CHECK(rank_of(graph, "apps/" + entry.path().filename().string()) >= 0);
 }
 
-TEST_CASE("GLSL includes stay within the library and the shader's own folder") {
+TEST_CASE("GLSL includes stay within the library and the shader's own folder", "[fast]") {
   const auto bad = stray_shader_includes(fs::path(NEPHELE_SOURCE_DIR) / "shaders");
   INFO(join(bad));
   CHECK(bad.empty());

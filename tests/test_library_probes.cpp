@@ -191,7 +191,7 @@ struct Random {
 
 }  // namespace
 
-TEST_CASE("every function of each GLSL library file appears in that file's probe", "[probe][coverage]") {
+TEST_CASE("every function of each GLSL library file appears in that file's probe", "[fast][probe][coverage]") {
   // Every file with functions has a probe. A file added to shaders/lib needs one too (the ray
   // marcher's cloud_march.glsl, moved there on another branch, may be listed here until then).
   const std::set<std::string> not_probed = {};

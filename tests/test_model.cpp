@@ -29,7 +29,7 @@ model::CloudModel with_blend(model::CloudModel m, model::Blend blend) {
 
 }  // namespace
 
-TEST_CASE("Wyvill-1 is 1 within the radius, 1/2 half-way, 0 at and beyond the influence edge", "[model]") {
+TEST_CASE("Wyvill-1 is 1 within the radius, 1/2 half-way, 0 at and beyond the influence edge", "[fast][model]") {
   CHECK(wyvill1(-0.5f) == 1.0f);
   CHECK(wyvill1(0.0f) == 1.0f);
   // -4/9 / 64 + 17/9 / 16 - 22/9 / 4 + 1 = (-4 + 68 - 352 + 576) / 576 = 1/2 exactly; the
@@ -45,7 +45,7 @@ TEST_CASE("Wyvill-1 is 1 within the radius, 1/2 half-way, 0 at and beyond the in
   CHECK(primitive_field(vec3(0.5f, 0.5f, 0.81f), p) == 0.0f);  // beyond R + I
 }
 
-TEST_CASE("Wyvill-1's first derivative is continuous (zero) at the skeleton radius and the influence edge", "[model]") {
+TEST_CASE("Wyvill-1's first derivative is continuous (zero) at the skeleton radius and the influence edge", "[fast][model]") {
   // One-sided difference quotients over h: b'(0) = b'(1) = 0, so they are bounded by
   // max|b''| h / 2 (|b''| <= 44/9 near 0 and 40/9 near 1) plus two roundings of values below
   // 1 divided by h. Outside [0, 1] b is constant, so the quotients there are exactly 0.
@@ -59,7 +59,7 @@ TEST_CASE("Wyvill-1's first derivative is continuous (zero) at the skeleton radi
   CHECK((wyvill1(0.5f + h) - wyvill1(0.5f - h)) / (2 * h) < -1.5f);
 }
 
-TEST_CASE("Lipus's blend stays within the weight and does not depend on the order of primitives", "[model]") {
+TEST_CASE("Lipus's blend stays within the weight and does not depend on the order of primitives", "[fast][model]") {
   std::mt19937 rng(5);
   std::uniform_real_distribution<float> unit(0.0f, 1.0f);
   for (int trial = 0; trial < 200; ++trial) {
@@ -83,7 +83,7 @@ TEST_CASE("Lipus's blend stays within the weight and does not depend on the orde
   }
 }
 
-TEST_CASE("with one primitive, turbulence per primitive (eq. 6) equals global turbulence (eq. 5)", "[model]") {
+TEST_CASE("with one primitive, turbulence per primitive (eq. 6) equals global turbulence (eq. 5)", "[fast][model]") {
   model::CloudModel m = model::example("fair-weather");
   m.primitives.resize(1);
   m.primitives[0].noise = m.noise;
@@ -101,7 +101,7 @@ TEST_CASE("with one primitive, turbulence per primitive (eq. 6) equals global tu
   CHECK(inside > 100);  // the points probe the cloud, not only empty space
 }
 
-TEST_CASE("a primitive's footprint holds every brick where its field is non-zero", "[model]") {
+TEST_CASE("a primitive's footprint holds every brick where its field is non-zero", "[fast][model]") {
   const model::BrickGrid grid{40};
   for (const auto& name : model::example_names()) {
     const model::CloudModel m = model::example(name);
@@ -189,7 +189,7 @@ TEST_CASE("the GPU density volume agrees with its CPU twin", "[model][gpu]") {
   }
 }
 
-TEST_CASE("each scenes/*.cloud.json holds its built-in example", "[model]") {
+TEST_CASE("each scenes/*.cloud.json holds its built-in example", "[fast][model]") {
   for (const auto& name : model::example_names()) {
     const std::string path = std::string(NEPHELE_SOURCE_DIR) + "/scenes/" + name + ".cloud.json";
     INFO(path);
@@ -198,7 +198,7 @@ TEST_CASE("each scenes/*.cloud.json holds its built-in example", "[model]") {
   }
 }
 
-TEST_CASE("unequal weights are refused in the Lipus blends and allowed in the plain sum", "[model]") {
+TEST_CASE("unequal weights are refused in the Lipus blends and allowed in the plain sum", "[fast][model]") {
   model::CloudModel m = model::example("towering");
   m.primitives[2].weight = 0.5f;
   CHECK_THROWS_WITH(model::validate(m, "t"), Catch::Contains("primitives[2].weight") && Catch::Contains("one weight"));

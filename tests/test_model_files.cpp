@@ -57,11 +57,11 @@ std::string refused(const std::string& text) {
 
 }  // namespace
 
-TEST_CASE("the test's base cloud file is accepted", "[model]") {
+TEST_CASE("the test's base cloud file is accepted", "[fast][model]") {
   CHECK_NOTHROW(io::parse_cloud_model(cloud_file(), "c.cloud.json"));
 }
 
-TEST_CASE("cloud model files refuse every numeric key just outside the range the table declares, naming the key", "[model][params]") {
+TEST_CASE("cloud model files refuse every numeric key just outside the range the table declares, naming the key", "[fast][model][params]") {
   namespace cm = params::cloud_model;
   for (const params::Parameter* p : params::all()) {
     if (!p->used_by(params::model_file) || (p->type != params::Type::integer && p->type != params::Type::real)) continue;
@@ -82,7 +82,7 @@ TEST_CASE("cloud model files refuse every numeric key just outside the range the
   }
 }
 
-TEST_CASE("cloud model files refuse unknown and duplicate keys, wrong types, missing skeletons and unequal weights", "[model]") {
+TEST_CASE("cloud model files refuse unknown and duplicate keys, wrong types, missing skeletons and unequal weights", "[fast][model]") {
   const std::map<std::string, std::string> cases = {
       {cloud_file("\"colour\": 1, "), "colour"},
       {cloud_file("\"scale\": 0.1, \"scale\": 0.2, "), "scale"},
@@ -108,7 +108,7 @@ TEST_CASE("cloud model files refuse unknown and duplicate keys, wrong types, mis
   }
 }
 
-TEST_CASE("a polyline in a model file is its consecutive segments, with its radius, influence and noise", "[model]") {
+TEST_CASE("a polyline in a model file is its consecutive segments, with its radius, influence and noise", "[fast][model]") {
   const std::string common = R"("radius": 0.05, "influence": 0.08, "noise": {"seed": 9}})";
   const model::CloudModel polyline = io::parse_cloud_model(
       R"({"primitives": [{"type": "polyline", "points": [[0.2, 0.5, 0.8], [0.5, 0.5, 0.82], [0.8, 0.6, 0.8]], )" +

@@ -103,7 +103,7 @@ noise::TextureSpec spec_of(int w, int h, int d, noise::NoiseType type, int cells
 
 }  // namespace
 
-TEST_CASE("perlin noise equals the textbook trilinear evaluation", "[noise]") {
+TEST_CASE("perlin noise equals the textbook trilinear evaluation", "[fast][noise]") {
   std::mt19937 rng(21);
   const uvec3 key = noise_key(3u, 0u);
   for (int n = 0; n < 20000; ++n) {
@@ -114,7 +114,7 @@ TEST_CASE("perlin noise equals the textbook trilinear evaluation", "[noise]") {
   }
 }
 
-TEST_CASE("perlin noise vanishes on lattice points and stays inside its bound", "[noise]") {
+TEST_CASE("perlin noise vanishes on lattice points and stays inside its bound", "[fast][noise]") {
   const uvec3 key = noise_key(8u, 1u);
   for (int k = -3; k <= 3; ++k)
     for (int j = -3; j <= 3; ++j)
@@ -129,7 +129,7 @@ TEST_CASE("perlin noise vanishes on lattice points and stays inside its bound", 
   WARN("largest |perlin| in 200000 samples: " << largest);
 }
 
-TEST_CASE("the perlin bound is the supremum over all gradient choices", "[noise]") {
+TEST_CASE("the perlin bound is the supremum over all gradient choices", "[fast][noise]") {
   // S(f) = sum_c w_c(f) max_g g.(f - c) bounds |noise| and is reached when every corner's gradient
   // points its way; the max over g of g.d is the sum of the two largest |d_i|.
   const int n = 48;
@@ -156,7 +156,7 @@ TEST_CASE("the perlin bound is the supremum over all gradient choices", "[noise]
   CHECK(best >= PERLIN_BOUND - kPerlinBoundGrid);
 }
 
-TEST_CASE("perlin gradients are uniform over the twelve edge directions", "[noise]") {
+TEST_CASE("perlin gradients are uniform over the twelve edge directions", "[fast][noise]") {
   const uvec3 key = noise_key(11u, 0u);
   std::vector<int> counts(12, 0);
   const int n = 120000;
@@ -173,7 +173,7 @@ TEST_CASE("perlin gradients are uniform over the twelve edge directions", "[nois
   CHECK(chi2 < 11 + kSigmas * std::sqrt(22.0));
 }
 
-TEST_CASE("the texture's feature points are jittered uniformly and independently in their cells", "[noise]") {
+TEST_CASE("the texture's feature points are jittered uniformly and independently in their cells", "[fast][noise]") {
   // Through the keys a texture uses (channel seed, octave): joint 4^3 bins, and no correlation
   // between the axes (TileableVolumeNoise's points all lie on their cell's diagonal).
   const noise::TextureSpec spec = noise::preset("erosion", 9);
@@ -199,7 +199,7 @@ TEST_CASE("the texture's feature points are jittered uniformly and independently
   CHECK(std::abs(zx / n) < limit);
 }
 
-TEST_CASE("periodic perlin noise tiles exactly for negative coordinates too", "[noise]") {
+TEST_CASE("periodic perlin noise tiles exactly for negative coordinates too", "[fast][noise]") {
   const ivec3 period(4, 6, 5);
   const uvec3 key = noise_key(2u, 0u);
   std::mt19937 rng(13);
@@ -217,7 +217,7 @@ TEST_CASE("periodic perlin noise tiles exactly for negative coordinates too", "[
   }
 }
 
-TEST_CASE("every channel type tiles across the texture's edges", "[noise]") {
+TEST_CASE("every channel type tiles across the texture's edges", "[fast][noise]") {
   // The value one period further along each axis, negative included, is the same up to the
   // rounding of the position (texel units < 100, ulp 8e-6, times a slope below 10 per texel).
   noise::TextureSpec spec = spec_of(24, 16, 8, noise::NoiseType::perlin_worley, 3, 2);
@@ -244,7 +244,7 @@ TEST_CASE("every channel type tiles across the texture's edges", "[noise]") {
   }
 }
 
-TEST_CASE("the row walk computes the point functions' values", "[noise]") {
+TEST_CASE("the row walk computes the point functions' values", "[fast][noise]") {
   using noise::NoiseType;
   // Widths above 64 take two row segments; non-cubic sizes keep cubic cells.
   const noise::TextureSpec specs[] = {
@@ -276,7 +276,7 @@ TEST_CASE("the row walk computes the point functions' values", "[noise]") {
   }
 }
 
-TEST_CASE("inverted worley channels are the cover library's inverted worley fbm rescaled", "[noise]") {
+TEST_CASE("inverted worley channels are the cover library's inverted worley fbm rescaled", "[fast][noise]") {
   const noise::TextureSpec spec = spec_of(16, 16, 16, noise::NoiseType::inverted_worley, 2, 3);
   const noise::Volume volume = noise::generate_cpu(spec);
   const FbmParams fbm = noise::channel_params(spec, 0).fbm;
@@ -288,7 +288,7 @@ TEST_CASE("inverted worley channels are the cover library's inverted worley fbm 
       }
 }
 
-TEST_CASE("channel values stay inside 0 to 1 without clipping", "[noise]") {
+TEST_CASE("channel values stay inside 0 to 1 without clipping", "[fast][noise]") {
   using noise::NoiseType;
   for (NoiseType type : {NoiseType::worley, NoiseType::inverted_worley, NoiseType::perlin, NoiseType::perlin_worley}) {
     const noise::Volume volume = noise::generate_cpu(spec_of(16, 16, 16, type, 2, 2));
@@ -307,7 +307,7 @@ TEST_CASE("channel values stay inside 0 to 1 without clipping", "[noise]") {
   }
 }
 
-TEST_CASE("seeds select the noise and the same seed gives the same texture", "[noise]") {
+TEST_CASE("seeds select the noise and the same seed gives the same texture", "[fast][noise]") {
   noise::TextureSpec spec = spec_of(16, 8, 8, noise::NoiseType::perlin_worley, 2, 2, 7);
   const noise::Volume a = noise::generate_cpu(spec);
   CHECK(noise::generate_cpu(spec).values == a.values);
@@ -318,7 +318,7 @@ TEST_CASE("seeds select the noise and the same seed gives the same texture", "[n
   CHECK(same < int(a.values.size() / kSameAtMostOneIn));
 }
 
-TEST_CASE("channels default to one detail level each with their own seeds", "[noise]") {
+TEST_CASE("channels default to one detail level each with their own seeds", "[fast][noise]") {
   const noise::TextureSpec shape = noise::preset("shape", 1);
   REQUIRE(shape.channels.size() == 4);
   CHECK(shape.width == 128);
@@ -336,7 +336,7 @@ TEST_CASE("channels default to one detail level each with their own seeds", "[no
   CHECK_NOTHROW(noise::validate(erosion));
 }
 
-TEST_CASE("texture specifications that cannot tile are refused with the option named", "[noise]") {
+TEST_CASE("texture specifications that cannot tile are refused with the option named", "[fast][noise]") {
   auto message = [](const noise::TextureSpec& spec) {
     try {
       noise::validate(spec);
@@ -366,7 +366,7 @@ TEST_CASE("texture specifications that cannot tile are refused with the option n
   CHECK_THROWS_AS(noise::preset("cumulus", 1), noise::SpecError);
 }
 
-TEST_CASE("texels_below finds the first texel of every cell with the texels' own rounding", "[noise]") {
+TEST_CASE("texels_below finds the first texel of every cell with the texels' own rounding", "[fast][noise]") {
   for (int size : {7, 12, 30, 64, 100, 128, 333, 2048})
     for (int cells : {1, 3, 7, 10, 16, 29, 64}) {
       if (cells > size) continue;

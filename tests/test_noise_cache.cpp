@@ -26,7 +26,7 @@ using test::Run;
 using test::TemporaryDirectory;
 
 TEST_CASE("the float cache returns what was stored and misses on another key, count or a damaged file",
-          "[cache]") {
+          "[fast][cache]") {
   TemporaryDirectory dir(true);
   const io::FloatCache cache(dir.path / "nephele");
   const std::vector<float> values = {1.0f, -2.5f, 3.25f, 0.0f};
@@ -50,7 +50,7 @@ TEST_CASE("the float cache returns what was stored and misses on another key, co
     CHECK(entry.path().filename().string().rfind(".tmp-", 0) != 0);
 }
 
-TEST_CASE("the float cache removes the least recently used files beyond its cap", "[cache]") {
+TEST_CASE("the float cache removes the least recently used files beyond its cap", "[fast][cache]") {
   TemporaryDirectory dir(true);
   // Each file: 8 magic + 8 + 1 key + 8 count + 8 hash + 4000 values = 4033 bytes; the cap holds two.
   const std::uintmax_t file_bytes = 8 + 8 + 1 + 8 + 8 + 1000 * 4;
@@ -132,7 +132,7 @@ fs::path the_entry(const fs::path& directory) {
 
 }  // namespace
 
-TEST_CASE("the payload hash changes with any one flipped bit and with the length or seed", "[cache]") {
+TEST_CASE("the payload hash changes with any one flipped bit and with the length or seed", "[fast][cache]") {
   std::vector<unsigned char> bytes(101);  // three 32-byte blocks and a tail of a word and 5 bytes
   for (std::size_t i = 0; i < bytes.size(); ++i) bytes[i] = static_cast<unsigned char>(i * 37 + 11);
   const std::uint64_t h = core::block_hash(bytes.data(), bytes.size(), 5);
@@ -154,7 +154,7 @@ TEST_CASE("the payload hash changes with any one flipped bit and with the length
   CHECK(std::adjacent_find(of_length.begin(), of_length.end()) == of_length.end());
 }
 
-TEST_CASE("a cache entry whose payload was altered is rebuilt and not served", "[cache]") {
+TEST_CASE("a cache entry whose payload was altered is rebuilt and not served", "[fast][cache]") {
   TemporaryDirectory dir(true);
   const io::FloatCache cache(dir.path);
   const std::vector<float> values = ramp(1000);
@@ -202,7 +202,7 @@ TEST_CASE("a cache entry whose payload was altered is rebuilt and not served", "
   CHECK(cache.load("a", 1000) == values);
 }
 
-TEST_CASE("the float cache refuses to store values that are not finite", "[cache]") {
+TEST_CASE("the float cache refuses to store values that are not finite", "[fast][cache]") {
   TemporaryDirectory dir(true);
   const io::FloatCache cache(dir.path);
   CHECK_FALSE(cache.store("a", {1.0f, std::numeric_limits<float>::quiet_NaN()}));
@@ -210,7 +210,7 @@ TEST_CASE("the float cache refuses to store values that are not finite", "[cache
   CHECK(dir.empty());
 }
 
-TEST_CASE("a FIFO named like a cache entry is a miss without blocking and a store replaces it", "[cache]") {
+TEST_CASE("a FIFO named like a cache entry is a miss without blocking and a store replaces it", "[fast][cache]") {
   TemporaryDirectory dir(true);
   const io::FloatCache cache(dir.path);
   const fs::path file = cache.file_of("a");
@@ -232,7 +232,7 @@ TEST_CASE("a FIFO named like a cache entry is a miss without blocking and a stor
 }
 
 TEST_CASE("a symbolic link or directory named like a cache entry is a miss and never written through",
-          "[cache]") {
+          "[fast][cache]") {
   TemporaryDirectory dir(true), elsewhere(true);
   const io::FloatCache cache(dir.path), other(elsewhere.path);
   const std::vector<float> values = ramp(8);
@@ -253,7 +253,7 @@ TEST_CASE("a symbolic link or directory named like a cache entry is a miss and n
 }
 
 TEST_CASE("the cache trim removes temporary files of killed writers and counts those of live ones",
-          "[cache]") {
+          "[fast][cache]") {
   TemporaryDirectory dir(true);
   const std::uintmax_t file_bytes = entry_bytes(1000);
   const io::FloatCache cache(dir.path, 2 * file_bytes + 100);
@@ -279,7 +279,7 @@ TEST_CASE("the cache trim removes temporary files of killed writers and counts t
 }
 
 TEST_CASE("the cache trim ignores what a symbolic link points to and never removes the entry just stored",
-          "[cache]") {
+          "[fast][cache]") {
   TemporaryDirectory dir(true), elsewhere(true);
   const std::uintmax_t file_bytes = entry_bytes(1000);
   const io::FloatCache cache(dir.path, 3 * file_bytes + 100);

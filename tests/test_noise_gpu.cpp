@@ -142,7 +142,7 @@ TEST_CASE("textures split into slabs equal textures made in one dispatch", "[gpu
   CHECK(a.values == b.values);
 }
 
-TEST_CASE("the slice atlas puts slice z at columns z times width", "[noise]") {
+TEST_CASE("the slice atlas puts slice z at columns z times width", "[fast][noise]") {
   noise::Volume v{3, 2, 4, 2, {}};
   for (int z = 0; z < 4; ++z)
     for (int y = 0; y < 2; ++y)
@@ -156,7 +156,7 @@ TEST_CASE("the slice atlas puts slice z at columns z times width", "[noise]") {
         for (int c = 0; c < 2; ++c) REQUIRE(atlas[(y * atlas_width + z * 3 + x) * 2 + c] == v.at(x, y, z, c));
 }
 
-TEST_CASE("noise options refuse bad values naming the option and its range", "[cli][noise]") {
+TEST_CASE("noise options refuse bad values naming the option and its range", "[fast][cli][noise]") {
   auto message = [](const std::vector<std::string>& arguments) {
     try {
       cli::parse_noise_request(arguments);

@@ -71,7 +71,7 @@ std::vector<float> cube_of(int size, Field field) {
 
 }  // namespace
 
-TEST_CASE("the flow rate of a solid-body rotation is omega times the sine of the latitude", "[stability]") {
+TEST_CASE("the flow rate of a solid-body rotation is omega times the sine of the latitude", "[fast][stability]") {
   // v = omega k x n is a Killing field: its covariant derivative on the tangent plane is
   // omega n_z times a quarter turn, with eigenvalues +-i omega n_z.
   const float omega = 3.0f;
@@ -98,7 +98,7 @@ TEST_CASE("the flow rate of a solid-body rotation is omega times the sine of the
   CHECK(stiff.beyond_fraction == Approx(1.0 - 1.732 / 3.0).epsilon(0).margin(kBeyondFraction));
 }
 
-TEST_CASE("shear does not count as a rate of change: a jet across the equator has rate zero there", "[stability]") {
+TEST_CASE("shear does not count as a rate of change: a jet across the equator has rate zero there", "[fast][stability]") {
   // u = c tanh(k lat) e_east: at the equator a pure shear du/dlat = c k, whose velocity
   // gradient is nilpotent (eigenvalues 0), however large c k is.
   const float c = 1.0f, k = 40.0f;
@@ -118,7 +118,7 @@ TEST_CASE("shear does not count as a rate of change: a jet across the equator ha
   }
 }
 
-TEST_CASE("folding is zero for rotations and total for a mirror image", "[stability]") {
+TEST_CASE("folding is zero for rotations and total for a mirror image", "[fast][stability]") {
   const int size = 24;
   const auto identity = cube_of(size, [](vec3 n) { return n; });
   const auto id = cover::folding_report(identity, size);
@@ -142,7 +142,7 @@ TEST_CASE("folding is zero for rotations and total for a mirror image", "[stabil
   CHECK(folded.folded_fraction == Approx(0.5).epsilon(0).margin(kFoldedHalf));
 }
 
-TEST_CASE("the sub-step report counts attempts and the texels that ran out", "[stability]") {
+TEST_CASE("the sub-step report counts attempts and the texels that ran out", "[fast][stability]") {
   const std::vector<float> warp{1, 0, 0, 10, 0, 1, 0, 20, 0, 0, 1, -30, 1, 0, 0, 0};
   const auto r = cover::substep_report(warp);
   CHECK(r.mean_attempts == Approx(15.0));
@@ -151,7 +151,7 @@ TEST_CASE("the sub-step report counts attempts and the texels that ran out", "[s
 }
 
 TEST_CASE("the diagnostics warn beyond the stable step and about capped texels but not for adaptive steps",
-          "[stability]") {
+          "[fast][stability]") {
   const int size = 16;
   const float omega = 10.0f;
   const auto curl = cube_of(size, [&](vec3 n) { return omega * cross(vec3(0, 0, 1), n); });
@@ -177,7 +177,7 @@ TEST_CASE("the diagnostics warn beyond the stable step and about capped texels b
   CHECK(nan_warnings[1].find("not finite") != std::string::npos);
 }
 
-TEST_CASE("long warps are split so that no dispatch exceeds the shader loop budget", "[stability]") {
+TEST_CASE("long warps are split so that no dispatch exceeds the shader loop budget", "[fast][stability]") {
   using cover::CurlMode;
   using cover::Integrator;
   for (Integrator integrator : cover::all_integrators())
@@ -195,7 +195,7 @@ TEST_CASE("long warps are split so that no dispatch exceeds the shader loop budg
   CHECK(cover::loop_iterations_per_step(Integrator::rk4, CurlMode::procedural, 3) == 317);
 }
 
-TEST_CASE("noise offsets are reduced modulo a lattice period larger than the sphere", "[stability]") {
+TEST_CASE("noise offsets are reduced modulo a lattice period larger than the sphere", "[fast][stability]") {
   cover::NoiseOctaves o{2.0f, 3, 2.0f, 0.3f};
   CHECK(cover::offset_period_cells(o, 0.0) == 0);  // the default: not periodic, as before
   CHECK(cover::reduced_noise_offset(o, 0.0) == vec3(0.0f));

@@ -38,7 +38,7 @@ std::string message_of(Options& o, const std::vector<std::string>& args) {
 
 }  // namespace
 
-TEST_CASE("options reject bad values with the option's name and allowed range", "[cli]") {
+TEST_CASE("options reject bad values with the option's name and allowed range", "[fast][cli]") {
   int size = 512;
   float step = 0.006f;
   Options o("generate", "test", params::generate);
@@ -54,7 +54,7 @@ TEST_CASE("options reject bad values with the option's name and allowed range", 
   CHECK_THAT(message_of(o, {"--colour", "red"}), Catch::Contains("--colour"));
 }
 
-TEST_CASE("numbers are decimal text only: no hex, no spaces, no trailing characters", "[cli]") {
+TEST_CASE("numbers are decimal text only: no hex, no spaces, no trailing characters", "[fast][cli]") {
   int size = 512;
   float step = 0.006f;
   Options o("generate", "test", params::generate);
@@ -68,7 +68,7 @@ TEST_CASE("numbers are decimal text only: no hex, no spaces, no trailing charact
   CHECK(step == 0.006f);
 }
 
-TEST_CASE("both --name VALUE and --name=VALUE set an option, and given() tells which were set", "[cli]") {
+TEST_CASE("both --name VALUE and --name=VALUE set an option, and given() tells which were set", "[fast][cli]") {
   int size = 512;
   float step = 0.006f;
   std::uint32_t seed = 1;
@@ -84,7 +84,7 @@ TEST_CASE("both --name VALUE and --name=VALUE set an option, and given() tells w
   CHECK_FALSE(o.given(params::cover::seed));
 }
 
-TEST_CASE("an option given twice is refused, and a list option takes one value per occurrence", "[cli]") {
+TEST_CASE("an option given twice is refused, and a list option takes one value per occurrence", "[fast][cli]") {
   int size = 512;
   Options o("generate", "test", params::generate);
   o.bind(params::cover::size, &size);
@@ -97,7 +97,7 @@ TEST_CASE("an option given twice is refused, and a list option takes one value p
   CHECK(weather == std::vector<std::string>{"a.json", "b.json"});
 }
 
-TEST_CASE("text options with listed words refuse other words, naming the option and the words", "[cli]") {
+TEST_CASE("text options with listed words refuse other words, naming the option and the words", "[fast][cli]") {
   std::string integrator;
   Options o("generate", "test", params::generate);
   o.bind(params::cover::integrator, &integrator);
@@ -105,13 +105,13 @@ TEST_CASE("text options with listed words refuse other words, naming the option 
              Catch::Contains("--integrator") && Catch::Contains("euler, heun, rk4, geodesic, adaptive"));
 }
 
-TEST_CASE("a command cannot bind a parameter that the table does not give it", "[cli]") {
+TEST_CASE("a command cannot bind a parameter that the table does not give it", "[fast][cli]") {
   int view_steps = 0;
   Options o("generate", "test", params::generate);
   CHECK_THROWS_AS(o.bind(params::scene::view_steps, &view_steps), std::logic_error);
 }
 
-TEST_CASE("help lists every option with its range, unit and default from the table", "[cli]") {
+TEST_CASE("help lists every option with its range, unit and default from the table", "[fast][cli]") {
   int size = 512;
   Options o("generate", "summary", params::generate);
   o.bind(params::cover::size, &size);
@@ -120,7 +120,7 @@ TEST_CASE("help lists every option with its range, unit and default from the tab
                            Catch::Contains("default 512"));
 }
 
-TEST_CASE("the parameter table: defaults inside their ranges, one key per command, options from keys", "[params]") {
+TEST_CASE("the parameter table: defaults inside their ranges, one key per command, options from keys", "[fast][params]") {
   const std::vector<unsigned> uses = {params::generate, params::bench_cover, params::report, params::render,
                                       params::scene_file, params::bench_render, params::noise, params::bench_noise,
                                       params::model, params::model_file, params::bench_model, params::export_cover,
@@ -201,7 +201,7 @@ TEST_CASE("render takes --pitch=X, --fov=X and --exposure=X like the spaced form
   CHECK(sidecar.at("steps").at("view").as_number() == 2);
 }
 
-TEST_CASE("scene files refuse every numeric key just outside the range the table declares, naming the key", "[params]") {
+TEST_CASE("scene files refuse every numeric key just outside the range the table declares, naming the key", "[fast][params]") {
   for (const params::Parameter* p : params::all()) {
     if (!p->used_by(params::scene_file) || (p->type != params::Type::integer && p->type != params::Type::real)) continue;
     const std::string key(p->key);

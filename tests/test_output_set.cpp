@@ -57,6 +57,7 @@ std::vector<fs::path> temporaries_of(const fs::path& out) {
 
 // Starts nephele with `arguments`, output discarded; returns its process id.
 pid_t spawn_nephele(const std::vector<std::string>& arguments) {
+  test::starting_slow_work("a subprocess");
   std::vector<std::string> words{NEPHELE_EXECUTABLE};
   words.insert(words.end(), arguments.begin(), arguments.end());
   std::vector<char*> argv;
@@ -102,7 +103,7 @@ void write_generate_like_set(io::OutputSet& set, const std::string& text) {
 
 }  // namespace
 
-TEST_CASE("a set that fails before its commit leaves the complete old set and no temporary", "[output]") {
+TEST_CASE("a set that fails before its commit leaves the complete old set and no temporary", "[fast][output]") {
   TemporaryDirectory place(true);
   const fs::path out = place.path / "cubemaps";
   {
@@ -121,7 +122,7 @@ TEST_CASE("a set that fails before its commit leaves the complete old set and no
   CHECK(temporaries_of(out).empty());
 }
 
-TEST_CASE("a write the set cannot make throws naming the final path and keeps the old set", "[output]") {
+TEST_CASE("a write the set cannot make throws naming the final path and keeps the old set", "[fast][output]") {
   TemporaryDirectory place(true);
   const fs::path out = place.path / "cubemaps";
   {
@@ -144,7 +145,7 @@ TEST_CASE("a write the set cannot make throws naming the final path and keeps th
   CHECK(temporaries_of(out).empty());
 }
 
-TEST_CASE("files in the output directory that are not part of the set survive its commit", "[output]") {
+TEST_CASE("files in the output directory that are not part of the set survive its commit", "[fast][output]") {
   TemporaryDirectory place(true);
   const fs::path out = place.path / "cubemaps";
   put(out / "README.md", "readme");
@@ -171,7 +172,7 @@ TEST_CASE("files in the output directory that are not part of the set survive it
   CHECK(temporaries_of(out).empty());
 }
 
-TEST_CASE("a set of files in a shared directory replaces only its files", "[output]") {
+TEST_CASE("a set of files in a shared directory replaces only its files", "[fast][output]") {
   TemporaryDirectory place(true);
   put(place.path / "unrelated.txt", "mine");
   put(place.path / "noise.png", "old");
@@ -189,7 +190,7 @@ TEST_CASE("a set of files in a shared directory replaces only its files", "[outp
   CHECK(entries_starting(place.path, ".nephele-").empty());
 }
 
-TEST_CASE("a symbolic link at a temporary name is not written through", "[output]") {
+TEST_CASE("a symbolic link at a temporary name is not written through", "[fast][output]") {
   TemporaryDirectory place(true);
   put(place.path / "victim.txt", "victim");
   io::OutputSet set(place.path / "out", io::OutputSet::Scope::directory);
@@ -198,7 +199,7 @@ TEST_CASE("a symbolic link at a temporary name is not written through", "[output
   CHECK(read_file(place.path / "victim.txt") == "victim");
 }
 
-TEST_CASE("names outside the set's directory are refused", "[output]") {
+TEST_CASE("names outside the set's directory are refused", "[fast][output]") {
   TemporaryDirectory place(true);
   io::OutputSet set(place.path / "out", io::OutputSet::Scope::directory);
   CHECK_THROWS_AS(set.write("../x.png", "x"), std::invalid_argument);
@@ -208,7 +209,7 @@ TEST_CASE("names outside the set's directory are refused", "[output]") {
 }
 
 TEST_CASE("stale temporary directories of dead runs are removed, links with their names are not followed",
-          "[output]") {
+          "[fast][output]") {
   TemporaryDirectory place(true);
   const fs::path out = place.path / "cubemaps";
   const fs::path stale = place.path / (std::string(".nephele-cubemaps-") + dead_pid + "-abcdef");
@@ -224,7 +225,7 @@ TEST_CASE("stale temporary directories of dead runs are removed, links with thei
   CHECK(fs::is_symlink(link));
 }
 
-TEST_CASE("the next run completes a file set whose renames a killed run left half done", "[output]") {
+TEST_CASE("the next run completes a file set whose renames a killed run left half done", "[fast][output]") {
   TemporaryDirectory place(true);
   put(place.path / "noise.png", "new");  // renamed before the run was killed
   put(place.path / "noise.json", "old");
@@ -378,7 +379,7 @@ TEST_CASE("every signal that ends a run removes its temporary directory, and the
   setrlimit(RLIMIT_CORE, &core_limit);
 }
 
-TEST_CASE("a directory at a file's name stops the file set's commit before anything is replaced", "[output]") {
+TEST_CASE("a directory at a file's name stops the file set's commit before anything is replaced", "[fast][output]") {
   TemporaryDirectory place(true);
   put(place.path / "x.png", "old");
   fs::create_directory(place.path / "x.json");
@@ -399,7 +400,7 @@ TEST_CASE("a directory at a file's name stops the file set's commit before anyth
   CHECK(read_file(place.path / "y.png") == "next");
 }
 
-TEST_CASE("a directory at a file's name stops a directory set's exchange and keeps what is inside it", "[output]") {
+TEST_CASE("a directory at a file's name stops a directory set's exchange and keeps what is inside it", "[fast][output]") {
   // The exchange would otherwise take the user's directory away with the old set.
   TemporaryDirectory place(true);
   put(place.path / "a.txt", "old");
@@ -428,7 +429,7 @@ TEST_CASE("generate refuses a directory at one of its files' names with exit 2 b
 }
 
 TEST_CASE("a killed run's file set that cannot be completed is kept and reported, and does not stop later runs",
-          "[output]") {
+          "[fast][output]") {
   TemporaryDirectory place(true);
   const fs::path stale = place.path / (std::string(".nephele-files-") + dead_pid + "-abcdef");
   put(stale / "x.json", "new");
@@ -453,7 +454,7 @@ TEST_CASE("noise refuses a directory at its sidecar's name with exit 2 before wr
   CHECK(run("noise --size 8 --out " + (place.path / "y.png").string()).exit_code == 0);
 }
 
-TEST_CASE("two commits of one file set at once never end with files of both", "[output]") {
+TEST_CASE("two commits of one file set at once never end with files of both", "[fast][output]") {
   TemporaryDirectory place(true);
   const char* const names[] = {"c.png", "c.json", "c_2.png", "c_3.png"};
   for (int round = 0; round < 60; ++round) {  // unlocked, about one round in eight mixes
@@ -482,7 +483,7 @@ TEST_CASE("two commits of one file set at once never end with files of both", "[
   CHECK(entries_starting(place.path, ".nephele-").empty());
 }
 
-TEST_CASE("the exchange of a directory set falls back to per-file renames on EBUSY and EXDEV only", "[output]") {
+TEST_CASE("the exchange of a directory set falls back to per-file renames on EBUSY and EXDEV only", "[fast][output]") {
   CHECK(io::falls_back_to_files(EBUSY));  // the directory is a mount point
   CHECK(io::falls_back_to_files(EXDEV));  // a rename would cross into another mount
   CHECK_FALSE(io::falls_back_to_files(EINVAL));  // no RENAME_EXCHANGE: the rename-aside fallback
@@ -506,7 +507,7 @@ struct BindMount {
 
 }  // namespace
 
-TEST_CASE("a directory set into a bind mount is committed by per-file renames inside the mount", "[output]") {
+TEST_CASE("a directory set into a bind mount is committed by per-file renames inside the mount", "[fast][output]") {
   TemporaryDirectory place(true);
   const fs::path disk = place.path / "disk", out = place.path / "out";
   put(disk / "cover.json", "old");
@@ -536,7 +537,7 @@ TEST_CASE("a directory set into a bind mount is committed by per-file renames in
   CHECK(entries_starting(out, ".nephele-").empty());
 }
 
-TEST_CASE("a directory that a set creates gets the mode mkdir gives under the umask", "[output]") {
+TEST_CASE("a directory that a set creates gets the mode mkdir gives under the umask", "[fast][output]") {
   TemporaryDirectory place(true);
   for (const mode_t mask : {mode_t(022), mode_t(027), mode_t(077), mode_t(002)}) {
     INFO("umask " << std::oct << mask);

@@ -44,7 +44,7 @@ TEST_CASE("shader compile errors name the file and line", "[shaders]") {
   }
 }
 
-TEST_CASE("includes are expanded once and marked with line directives", "[shaders]") {
+TEST_CASE("includes are expanded once and marked with line directives", "[fast][shaders]") {
   const auto expanded = gpu::expand_shader("cover/curl.comp");
   CHECK(expanded.files.front() == "cover/curl.comp");
   CHECK(std::count(expanded.files.begin(), expanded.files.end(), "lib/hash.glsl") == 1);

@@ -20,7 +20,7 @@ static_assert(kAsinAtOne >= kUlp);
 
 }  // namespace
 
-TEST_CASE("portable_asin is within 2e-8 of arcsin plus float rounding", "[math]") {
+TEST_CASE("portable_asin is within 2e-8 of arcsin plus float rounding", "[fast][math]") {
   // kPortableAsin: Abramowitz and Stegun's 2e-8 and the float evaluation (tests/tolerances.hpp).
   double worst = 0;
   for (int k = -100000; k <= 100000; ++k) {

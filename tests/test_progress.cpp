@@ -37,7 +37,7 @@ Progress::Settings immediate(std::FILE* stream, bool terminal) {
 
 }  // namespace
 
-TEST_CASE("a progress report states the fraction, the time so far and the time left at the average rate", "[progress]") {
+TEST_CASE("a progress report states the fraction, the time so far and the time left at the average rate", "[fast][progress]") {
   // Half done after 10 s at a constant rate leaves 10 s.
   CHECK(Progress::format("generate", "warp", 0.5, 10.0, false) == "generate:  50% (10.0 s, about 10 s left) warp");
   // Before 1% nothing can be estimated; at the end nothing is left.
@@ -47,7 +47,7 @@ TEST_CASE("a progress report states the fraction, the time so far and the time l
   CHECK_THAT(Progress::format("render", "", 0.25, 1.0, true), Catch::Contains("[######                  ]"));
 }
 
-TEST_CASE("progress goes to plain lines off a terminal and to one redrawn line on a terminal", "[progress]") {
+TEST_CASE("progress goes to plain lines off a terminal and to one redrawn line on a terminal", "[fast][progress]") {
   std::FILE* lines = std::tmpfile();
   {
     Progress p("generate", 4, immediate(lines, false));
@@ -70,7 +70,7 @@ TEST_CASE("progress goes to plain lines off a terminal and to one redrawn line o
   std::fclose(terminal);
 }
 
-TEST_CASE("the heartbeat reports a step that runs long without updates of its own", "[progress]") {
+TEST_CASE("the heartbeat reports a step that runs long without updates of its own", "[fast][progress]") {
   std::FILE* stream = std::tmpfile();
   {
     Progress::Settings s;
@@ -91,7 +91,7 @@ TEST_CASE("the heartbeat reports a step that runs long without updates of its ow
   std::fclose(stream);
 }
 
-TEST_CASE("quiet progress and work shorter than the threshold print nothing", "[progress]") {
+TEST_CASE("quiet progress and work shorter than the threshold print nothing", "[fast][progress]") {
   std::FILE* stream = std::tmpfile();
   {
     Progress::Settings quiet = immediate(stream, false);

@@ -19,7 +19,7 @@ struct DefaultFlow {
 
 }  // namespace
 
-TEST_CASE("the reference's error estimate is positive and within its tolerance per accepted step", "[report]") {
+TEST_CASE("the reference's error estimate is positive and within its tolerance per accepted step", "[fast][report]") {
   const DefaultFlow flow;
   studies::ReferenceOptions options;
   options.tolerance = 1e-9;
@@ -31,7 +31,7 @@ TEST_CASE("the reference's error estimate is positive and within its tolerance p
   CHECK(point.error_estimate <= options.tolerance * static_cast<double>(point.steps));
 }
 
-TEST_CASE("a reference past its deadline leaves its points unconverged and marked cut", "[report]") {
+TEST_CASE("a reference past its deadline leaves its points unconverged and marked cut", "[fast][report]") {
   const DefaultFlow flow;
   studies::ReferenceOptions options;
   options.deadline = std::chrono::steady_clock::now() - std::chrono::seconds(1);

@@ -230,7 +230,7 @@ TEST_CASE("a scene with weather files does not generate the global cover and one
   CHECK(contains(from_cover.passes, "weather_field (global cover)"));
 }
 
-TEST_CASE("tone mapping encodes black as 0 and saturates to 1 without exceeding it", "[render]") {
+TEST_CASE("tone mapping encodes black as 0 and saturates to 1 without exceeding it", "[fast][render]") {
   core::ImageData hdr{3, 1, 4, {0, 0, 0, 0, 0.1f, 0.1f, 0.1f, 0, 1e6f, 1e6f, 1e6f, 1}};
   const auto ldr = render::tone_map(hdr, 4.0);
   CHECK(ldr.channels == 3);

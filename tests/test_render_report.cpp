@@ -57,7 +57,7 @@ const std::vector<RenderErrorRow> table{
 
 }  // namespace
 
-TEST_CASE("both render sweeps contain the default settings and a reference beyond every swept setting", "[render][report]") {
+TEST_CASE("both render sweeps contain the default settings and a reference beyond every swept setting", "[fast][render][report]") {
   // The report states the default's error, so the default must be among the rows; and a
   // reference is only one if it takes at least as many steps and frames as any row it judges.
   const regional::Scene defaults;
@@ -96,7 +96,7 @@ TEST_CASE("both render sweeps contain the default settings and a reference beyon
             ->frames);
 }
 
-TEST_CASE("bilinear upsampling lines up pixel centres and clamps at the edges", "[render][report]") {
+TEST_CASE("bilinear upsampling lines up pixel centres and clamps at the edges", "[fast][render][report]") {
   const core::ImageData two{2, 1, 1, {0.0f, 1.0f}};
   // Output centres at source x = (i + 1/2) 2/4 - 1/2 = -0.25, 0.25, 0.75, 1.25; clamped to [0, 1].
   const auto four = render::upsample_bilinear(two, 4, 1);
@@ -116,7 +116,7 @@ TEST_CASE("bilinear upsampling lines up pixel centres and clamps at the edges", 
 }
 
 TEST_CASE("guided likeness is 1 within the sky, 0 across the horizon and falls with the log of the distance ratio",
-          "[render][report]") {
+          "[fast][render][report]") {
   CHECK(render::guided_likeness(-1.0f, -1.0f) == 1.0);
   CHECK(render::guided_likeness(-1.0f, 500.0f) == 0.0);
   CHECK(render::guided_likeness(500.0f, -1.0f) == 0.0);
@@ -150,7 +150,7 @@ struct Horizon {
 }  // namespace
 
 TEST_CASE("guided upsampling keeps the horizon where the full-size guide has it, with no blend across it",
-          "[render][report]") {
+          "[fast][render][report]") {
   // Low rows 0, 1 sky and 2, 3 ground; the full-size horizon at row 7, inside the source cell
   // between low rows 1 and 2 (source y = (y + 1/2) / 4 - 1/2 in [1, 2) for rows 6 to 9).
   const Horizon h(2, 7);
@@ -172,7 +172,7 @@ TEST_CASE("guided upsampling keeps the horizon where the full-size guide has it,
   CHECK(found.pixels[10 * 16 + 3] == 1.0f);
 }
 
-TEST_CASE("guided upsampling is bilinear where the guide is uniform or missing", "[render][report]") {
+TEST_CASE("guided upsampling is bilinear where the guide is uniform or missing", "[fast][render][report]") {
   const core::ImageData rgba{2, 2, 4, {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16}};
   const auto bilinear = render::upsample_bilinear(rgba, 4, 4);
   // All sky: every weight is bilinear's.
@@ -190,7 +190,7 @@ TEST_CASE("guided upsampling is bilinear where the guide is uniform or missing",
   CHECK_THROWS_AS(render::upsample_guided(rgba, sky_full, sky_full), std::invalid_argument);
 }
 
-TEST_CASE("the guide is needed exactly at the full-size pixels whose source cell crosses an edge", "[render][report]") {
+TEST_CASE("the guide is needed exactly at the full-size pixels whose source cell crosses an edge", "[fast][render][report]") {
   // Sky in low rows 0, 1, ground from row 2: only the cells between rows 1 and 2 are edges; the
   // full-size rows whose source y lies in [1, 2) are 6 to 9 (16 / 4 = 4 rows a source row).
   const Horizon h(2, 7);
@@ -207,7 +207,7 @@ TEST_CASE("the guide is needed exactly at the full-size pixels whose source cell
 }
 
 TEST_CASE("the qualities' sweep renders every quality against a reference beyond them at 1280 x 720",
-          "[render][report]") {
+          "[fast][render][report]") {
   for (const bool quick : {false, true}) {
     const auto o = studies::RenderSweepOptions::qualities(quick);
     const auto variants = o.variants();
@@ -236,7 +236,7 @@ TEST_CASE("the qualities' sweep renders every quality against a reference beyond
   CHECK(library.resolution_divisor == 1);
 }
 
-TEST_CASE("the qualities' CSV and summary name each quality, its target and whether it meets it", "[render][report]") {
+TEST_CASE("the qualities' CSV and summary name each quality, its target and whether it meets it", "[fast][render][report]") {
   const auto o = studies::RenderSweepOptions::qualities(true);
   std::vector<RenderErrorRow> rows;
   for (const auto& v : o.variants()) rows.push_back(row(v.view_steps, v.light_steps, 10.0, 0.001, v.frames, v.divisor));
@@ -263,7 +263,7 @@ TEST_CASE("the qualities' CSV and summary name each quality, its target and whet
   CHECK_THROWS_AS(studies::render_quality_csv(rows, o), std::invalid_argument);
 }
 
-TEST_CASE("the render error of an image is measured in display values and relative radiance", "[render][report]") {
+TEST_CASE("the render error of an image is measured in display values and relative radiance", "[fast][render][report]") {
   // Two pixels: the reference is grey 0.1 and 0.3; the image is off by 0.02 in one channel of one pixel.
   const double exposure = 4.0;
   const core::ImageData reference{2, 1, 4, {0.1f, 0.1f, 0.1f, 1.0f, 0.3f, 0.3f, 0.3f, 0.0f}};
@@ -297,7 +297,7 @@ TEST_CASE("the render error of an image is measured in display values and relati
   CHECK(without_first.rms_error == Approx(std::sqrt(0.0004 / 3.0) / 0.3).epsilon(1e-5));
 }
 
-TEST_CASE("the render error CSV has the documented columns and one line per row", "[render][report]") {
+TEST_CASE("the render error CSV has the documented columns and one line per row", "[fast][render][report]") {
   auto options = studies::RenderSweepOptions::quick();
   const std::string csv = studies::render_error_csv({row(8, 2, 12.5, 0.25, 4, 2), row(48, 6, 80.0, 0.0625)}, options);
   std::stringstream lines(csv);
@@ -329,7 +329,7 @@ TEST_CASE("the render error CSV has the documented columns and one line per row"
 }
 
 TEST_CASE("the render diagram draws one polyline per light-step count labels view steps and rings the default",
-          "[render][report]") {
+          "[fast][render][report]") {
   const std::string svg = studies::render_error_svg(table, "title & <device>", "subtitle", 48, 6);
   CHECK(count_of(svg, "<polyline") == 4);  // light 2, 4, 6, 12: the one-frame full-resolution rows
   CHECK(count_of(svg, "r='8'") == 1);      // the ring around the default, not around its 4-frame twin
@@ -349,7 +349,7 @@ TEST_CASE("the render diagram draws one polyline per light-step count labels vie
 }
 
 TEST_CASE("the render step choice finds the cheapest within 1.5x the default's error and the most accurate within its time",
-          "[render][report]") {
+          "[fast][render][report]") {
   const auto c = studies::choose_render_steps(table, 48, 6);
   REQUIRE(c.has_default);
   CHECK(c.default_row.view_steps == 48);
@@ -384,7 +384,7 @@ TEST_CASE("the render step choice finds the cheapest within 1.5x the default's e
   CHECK_FALSE(none.has_most_accurate);
 }
 
-TEST_CASE("the render summary section names the defaults their error and the two choices", "[render][report]") {
+TEST_CASE("the render summary section names the defaults their error and the two choices", "[fast][render][report]") {
   const auto options = studies::RenderSweepOptions::full();
   const std::string md = studies::render_summary_markdown(table, options, studies::choose_render_steps(table, 48, 6), 48, 6);
   CHECK(md.find("## Render: image error against run time") == 0);

@@ -57,7 +57,7 @@ const char* const header = "integrator,curl_mode,size,steps,time_ms,warp_err_rms
 
 }  // namespace
 
-TEST_CASE("the error CSV has the documented columns and one line per run", "[report]") {
+TEST_CASE("the error CSV has the documented columns and one line per run", "[fast][report]") {
   const std::string csv = studies::error_csv({row(Integrator::euler, CurlMode::sampled, 50, 12.5, 0.01),
                                                row(Integrator::adaptive, CurlMode::procedural, 17, 80.0, 1e-4)});
   std::stringstream lines(csv);
@@ -80,7 +80,7 @@ TEST_CASE("the error CSV has the documented columns and one line per run", "[rep
 }
 
 TEST_CASE("the comparison finds the fastest run at the default's error and the most accurate within its time",
-          "[report]") {
+          "[fast][report]") {
   const std::vector<studies::SweepRow> rows{
       row(Integrator::euler, CurlMode::sampled, 50, 100.0, 0.010),     // the default
       row(Integrator::euler, CurlMode::sampled, 100, 190.0, 0.006),
@@ -101,7 +101,7 @@ TEST_CASE("the comparison finds the fastest run at the default's error and the m
   CHECK(c.error_ratio == Approx(0.010 / 0.004));
 }
 
-TEST_CASE("the work-precision diagram draws one line per integrator curl mode and size", "[report]") {
+TEST_CASE("the work-precision diagram draws one line per integrator curl mode and size", "[fast][report]") {
   const std::string svg = studies::work_precision_svg({row(Integrator::euler, CurlMode::sampled, 10, 20.0, 0.05),
                                                         row(Integrator::euler, CurlMode::sampled, 50, 100.0, 0.01),
                                                         row(Integrator::rk4, CurlMode::procedural, 10, 500.0, 1e-3)},
@@ -350,7 +350,7 @@ TEST_CASE("generate warns with the figure where the warp folds and not on the de
   }
 }
 
-TEST_CASE("the observed order is minus the slope of log error against log steps above the floor", "[report]") {
+TEST_CASE("the observed order is minus the slope of log error against log steps above the floor", "[fast][report]") {
   // err = 0.3 K^-3 exactly, plus one run below the floor that the fit must leave out.
   std::vector<studies::SweepRow> rows;
   for (int k : {2, 4, 8}) rows.push_back(row(Integrator::rk4, CurlMode::procedural, k, 1.0, 0.3 * std::pow(k, -3.0)));

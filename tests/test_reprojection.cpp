@@ -42,7 +42,7 @@ core::ImageData drawn(const render::Camera& camera) {
 
 }  // namespace
 
-TEST_CASE("the march phases visit every pixel of a block once per cycle", "[reprojection]") {
+TEST_CASE("the march phases visit every pixel of a block once per cycle", "[fast][reprojection]") {
   for (int stride : {2, 3, 4}) {
     std::set<std::pair<int, int>> seen;
     for (long frame = 0; frame < stride * stride; ++frame) {
@@ -59,7 +59,7 @@ TEST_CASE("the march phases visit every pixel of a block once per cycle", "[repr
   CHECK(render::march_phase(1, 2) == glm::ivec2(1, 1));  // the diagonal next: far from the last
 }
 
-TEST_CASE("pixel_direction is the marcher's view direction", "[reprojection]") {
+TEST_CASE("pixel_direction is the marcher's view direction", "[fast][reprojection]") {
   // The centre pixel of an odd image looks along the heading and pitch.
   render::Camera camera = camera_of(33, 19, 30, 10, 70);
   const glm::dvec3 d = render::pixel_direction(camera, 16, 9);
@@ -71,7 +71,7 @@ TEST_CASE("pixel_direction is the marcher's view direction", "[reprojection]") {
   CHECK(std::acos(glm::dot(left, right)) == Approx(70 * M_PI / 180).epsilon(1e-12));
 }
 
-TEST_CASE("reprojecting a turned camera's previous frame finds each direction's value", "[reprojection]") {
+TEST_CASE("reprojecting a turned camera's previous frame finds each direction's value", "[fast][reprojection]") {
   // The previous frame draws a smooth field of the direction; the camera turns by 2 degrees
   // and marches (draws) a quarter of its pixels. Every other pixel inside the old view comes
   // from bilinear interpolation of the old one: the field changes by at most 0.5 per radian and

@@ -44,7 +44,7 @@ constexpr double kJumpGrowth = 5.0;
 }  // namespace
 
 TEST_CASE("the smooth Worley gradient has bounded difference quotients where the F1 gradient jumps",
-          "[worley][smooth]") {
+          "[fast][worley][smooth]") {
   auto smooth = [](vec3 p) { return vec3(smooth_worley(p, ivec3(0), kKey, 0.3f)); };
   auto classic = [](vec3 p) { return vec3(worley_f1(p, ivec3(0), kKey)); };
   const double smooth_coarse = largest_quotient(smooth, kStart, kDirection, kWalk, 1e-2f);
@@ -56,7 +56,7 @@ TEST_CASE("the smooth Worley gradient has bounded difference quotients where the
   CHECK(classic_fine >= kJumpGrowth * classic_coarse);
 }
 
-TEST_CASE("the smooth Worley value has bounded difference quotients at every lambda", "[worley][smooth]") {
+TEST_CASE("the smooth Worley value has bounded difference quotients at every lambda", "[fast][worley][smooth]") {
   for (float lambda : {0.02f, 0.1f, 1.0f, 10.0f}) {
     auto value = [lambda](vec3 p) { return vec3(smooth_worley(p, ivec3(0), kKey, lambda).w); };
     const double coarse = largest_quotient(value, kStart, kDirection, kWalk, 1e-2f);
@@ -66,7 +66,7 @@ TEST_CASE("the smooth Worley value has bounded difference quotients at every lam
   }
 }
 
-TEST_CASE("the smooth Worley gradient matches central differences at every point", "[worley][smooth]") {
+TEST_CASE("the smooth Worley gradient matches central differences at every point", "[fast][worley][smooth]") {
   // No kink to skip, unlike F1. Truncation h^2 |W'''| / 6 with |W'''| below about 1e3 for
   // lambda = 0.3 (K''' <= 120, the smooth maximum's |grad K|^3 / lambda^2 <= 9.3 / 0.09 times a
   // few): 2e-4 at h = 1e-3; rounding 2 ulp of values below 2 / (2h): 2.4e-4; 1e-3 covers both.
@@ -88,7 +88,7 @@ TEST_CASE("the smooth Worley gradient matches central differences at every point
   }
 }
 
-TEST_CASE("smooth Worley equals the bump of a lone feature point and stays within its range", "[worley][smooth]") {
+TEST_CASE("smooth Worley equals the bump of a lone feature point and stays within its range", "[fast][worley][smooth]") {
   const vec3 feature = feature_offset(ivec3(0), ivec3(0), kKey);
   // On a feature point its bump is 1 and the others add lambda ln(1 + sum) >= 0.
   CHECK(smooth_worley(feature, ivec3(0), kKey, 0.3f).w >= 1.0f - 1e-6f);

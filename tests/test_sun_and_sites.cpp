@@ -53,7 +53,7 @@ constexpr double kSiteCoordinateDeg = 1e-5;
 
 }  // namespace
 
-TEST_CASE("ISO 8601 UTC times parse to Unix seconds and bad ones are refused", "[sun]") {
+TEST_CASE("ISO 8601 UTC times parse to Unix seconds and bad ones are refused", "[fast][sun]") {
   CHECK(core::parse_utc_time("1970-01-01T00:00Z") == 0.0);
   CHECK(core::parse_utc_time("2000-01-01T12:00:00Z") == 946728000.0);
   CHECK(core::parse_utc_time("2026-06-21T16:00Z") == 1782057600.0);
@@ -63,7 +63,7 @@ TEST_CASE("ISO 8601 UTC times parse to Unix seconds and bad ones are refused", "
   CHECK_THROWS(core::parse_utc_time("tomorrow"));
 }
 
-TEST_CASE("ISO 8601 UTC times of the years 0000 to 9999 parse without 64-bit nanosecond overflow", "[sun]") {
+TEST_CASE("ISO 8601 UTC times of the years 0000 to 9999 parse without 64-bit nanosecond overflow", "[fast][sun]") {
   // Year 0 to 1970: 719528 days of the proleptic Gregorian calendar, times 86400 s.
   CHECK(core::parse_utc_time("0000-01-01T00:00Z") == -719528.0 * 86400);
   // The last second of 9999: one second before 10000-01-01, 2932897 days after 1970.
@@ -74,7 +74,7 @@ TEST_CASE("ISO 8601 UTC times of the years 0000 to 9999 parse without 64-bit nan
   CHECK(core::parse_utc_time("0901-12-31T23:59:59.5Z") == -33702825600.5);
 }
 
-TEST_CASE("the sun stands over the tropic at the June solstice and over the equator at the equinox", "[sun]") {
+TEST_CASE("the sun stands over the tropic at the June solstice and over the equator at the equinox", "[fast][sun]") {
   // June solstice 2026: June 21 08:24 UTC; March equinox 2026: March 20 14:46 UTC (published
   // times). The Almanac formulas are good to about 0.01 deg; the obliquity is 23.436 deg.
   const auto solstice = render::sun_position(core::parse_utc_time("2026-06-21T08:24Z"), 0, 0);
@@ -83,7 +83,7 @@ TEST_CASE("the sun stands over the tropic at the June solstice and over the equa
   CHECK(equinox.declination_deg == Approx(0.0).epsilon(0).margin(kEquinoxDeg));  // 0.017 deg per hour near the equinox
 }
 
-TEST_CASE("at Bern the midsummer sun culminates at 90 - latitude + 23.44 deg due south", "[sun]") {
+TEST_CASE("at Bern the midsummer sun culminates at 90 - latitude + 23.44 deg due south", "[fast][sun]") {
   const double lat = 46.94806, lon = 7.44750;
   double best = -90, best_azimuth = 0;
   const double day = core::parse_utc_time("2026-06-21T00:00Z");
@@ -101,7 +101,7 @@ TEST_CASE("at Bern the midsummer sun culminates at 90 - latitude + 23.44 deg due
   CHECK(night.elevation_deg < 0);
 }
 
-TEST_CASE("the views run from Gurten north-north-east and from Bantiger south-west", "[sites]") {
+TEST_CASE("the views run from Gurten north-north-east and from Bantiger south-west", "[fast][sites]") {
   const auto gurten = regional::find_viewpoint("gurten");
   const auto bantiger = regional::find_viewpoint("bantiger");
   REQUIRE(gurten);
@@ -121,7 +121,7 @@ TEST_CASE("the views run from Gurten north-north-east and from Bantiger south-we
         Approx(kGurtenSolothurnM).epsilon(0).margin(kDistanceCheckM));
 }
 
-TEST_CASE("the built-in coordinates match the reference table of tests/data/sites.csv", "[sites]") {
+TEST_CASE("the built-in coordinates match the reference table of tests/data/sites.csv", "[fast][sites]") {
   std::ifstream csv(std::string(NEPHELE_SOURCE_DIR) + "/tests/data/sites.csv");
   REQUIRE(csv);
   std::string line;

@@ -43,7 +43,7 @@ bool continent(double latitude, double longitude) { return longitude >= 0 && lon
 
 }  // namespace
 
-TEST_CASE("the surface bias is zero over open ocean and the desert weight over wide land", "[surface]") {
+TEST_CASE("the surface bias is zero over open ocean and the desert weight over wide land", "[fast][surface]") {
   // The filters (weights summing to 1) keep a constant field: 0 for all ocean. All land gives
   // -S(lat) blurred along latitude by a 2.2-degree kernel: at the peak (24 degrees) S'' =
   // -2/64 per degree^2 lowers it by about |S''| sigma^2 / 2 = 0.08 (0.1 allowed); at 60
@@ -58,7 +58,7 @@ TEST_CASE("the surface bias is zero over open ocean and the desert weight over w
   CHECK(cover::deck_weight(-22.0) == 1.0);
 }
 
-TEST_CASE("a continent gets a desert inside and a deck off its west coast, none off its east coast", "[surface]") {
+TEST_CASE("a continent gets a desert inside and a deck off its west coast, none off its east coast", "[fast][surface]") {
   const auto bias = cover::surface_bias(synthetic(continent));
   // Inside, at 24 N 30 E: the desert term, -1 but for the blur (> 20 degrees from any coast).
   CHECK(bias_at(bias, 24.0, 30.0) < -0.8);
@@ -76,7 +76,7 @@ TEST_CASE("a continent gets a desert inside and a deck off its west coast, none 
   CHECK(std::abs(bias_at(bias, 40.0, 30.0)) < 0.04);
 }
 
-TEST_CASE("ETOPO5's bias clears the Sahara and puts decks off California, Peru and Namibia", "[surface][terrain]") {
+TEST_CASE("ETOPO5's bias clears the Sahara and puts decks off California, Peru and Namibia", "[fast][surface][terrain]") {
   if (!std::filesystem::exists(io::etopo5_default_path)) FAIL("ferret-datasets is not installed (scripts/debian-packages.txt)");
   const auto mask = io::surface_from_option("etopo5");
   REQUIRE(mask != nullptr);

@@ -106,7 +106,7 @@ double horizon_tolerance_deg(const regional::TerrainGrid& g, double distance_m, 
 
 }  // namespace
 
-TEST_CASE("ETOPO5 reads Bern's plateau, the Bernese Alps and the Atlantic where they are", "[terrain]") {
+TEST_CASE("ETOPO5 reads Bern's plateau, the Bernese Alps and the Atlantic where they are", "[fast][terrain]") {
   if (!have_etopo5()) FAIL("ferret-datasets is not installed (scripts/debian-packages.txt)");
   const auto& r = raster();
   // The samples next to Bern as the file holds them (row 1643 is 46.91667 N, column 89 is
@@ -125,7 +125,7 @@ TEST_CASE("ETOPO5 reads Bern's plateau, the Bernese Alps and the Atlantic where 
   CHECK(*ocean.at(0.0, -30.0) < -2000.0);
 }
 
-TEST_CASE("an elevation file that is not ETOPO5 is bad input naming the option and the file", "[terrain]") {
+TEST_CASE("an elevation file that is not ETOPO5 is bad input naming the option and the file", "[fast][terrain]") {
   const std::filesystem::path path = std::filesystem::temp_directory_path() / "nephele_not_etopo5.cdf";
   std::ofstream(path) << "CDF\x01 not the data";
   try {
@@ -141,7 +141,7 @@ TEST_CASE("an elevation file that is not ETOPO5 is bad input naming the option a
   CHECK(io::load_terrain("flat", gurten_lat, gurten_lon, eye_height) == nullptr);
 }
 
-TEST_CASE("a camera below the smoothed ground is warned about, one on Gurten is not", "[terrain]") {
+TEST_CASE("a camera below the smoothed ground is warned about, one on Gurten is not", "[fast][terrain]") {
   if (!have_etopo5()) FAIL("ferret-datasets is not installed (scripts/debian-packages.txt)");
   std::string warning;
   // Bern's old town (540 m) lies under ETOPO5's 700 m there.
@@ -152,7 +152,7 @@ TEST_CASE("a camera below the smoothed ground is warned about, one on Gurten is 
   CHECK(warning.empty());
 }
 
-TEST_CASE("the substitute hills bring Gurten and Bantiger up to their summits", "[terrain]") {
+TEST_CASE("the substitute hills bring Gurten and Bantiger up to their summits", "[fast][terrain]") {
   if (!have_etopo5()) FAIL("ferret-datasets is not installed (scripts/debian-packages.txt)");
   const auto& g = gurten_grid();
   const glsl::TerrainSource source = regional::terrain_source(g);
@@ -175,7 +175,7 @@ TEST_CASE("the substitute hills bring Gurten and Bantiger up to their summits", 
   }
 }
 
-TEST_CASE("from Gurten the ray-cast horizon towards the Eiger and the Jura matches the elevation data", "[terrain]") {
+TEST_CASE("from Gurten the ray-cast horizon towards the Eiger and the Jura matches the elevation data", "[fast][terrain]") {
   if (!have_etopo5()) FAIL("ferret-datasets is not installed (scripts/debian-packages.txt)");
   const auto& g = gurten_grid();
   const double step = 100.0;
@@ -256,7 +256,7 @@ TEST_CASE("rendered from Gurten, the ground meets the sky where the elevation da
 }
 
 TEST_CASE("the terrain ceiling is the highest altitude of its window and bounds the bilinear ground within reach",
-          "[terrain]") {
+          "[fast][terrain]") {
   // A random field: the running maxima against brute force.
   const int size = 23, window = 3;
   std::vector<float> heights;
@@ -304,7 +304,7 @@ TEST_CASE("the terrain ceiling is the highest altitude of its window and bounds 
 }
 
 TEST_CASE("the terrain march steps over ground it is well above and meets the ground as well as without the ceiling",
-          "[terrain]") {
+          "[fast][terrain]") {
   if (!have_etopo5()) FAIL("ferret-datasets is not installed (scripts/debian-packages.txt)");
   using namespace glsl;
   const auto& g = gurten_grid();

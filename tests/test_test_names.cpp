@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-TEST_CASE("every test name is one ctest filter that can match: no semicolon and no leading dash", "[tests]") {
+TEST_CASE("every test name is one ctest filter that can match: no semicolon and no leading dash", "[fast][tests]") {
   namespace fs = std::filesystem;
   const std::regex test_case(R"re(TEST_CASE\s*\(\s*"([^"]*)")re");
   std::vector<std::string> bad;

@@ -7,7 +7,7 @@
 
 using namespace nephele;
 
-TEST_CASE("times that do not exist or are not UTC are refused", "[time]") {
+TEST_CASE("times that do not exist or are not UTC are refused", "[fast][time]") {
   const char* refused[] = {
       "2024-02-31T12:00Z",        // February has no 31st
       "2023-02-29T12:00Z",        // 2023 is no leap year
@@ -32,7 +32,7 @@ TEST_CASE("times that do not exist or are not UTC are refused", "[time]") {
   }
 }
 
-TEST_CASE("fractional seconds, a leap day and +00:00 are accepted", "[time]") {
+TEST_CASE("fractional seconds, a leap day and +00:00 are accepted", "[fast][time]") {
   const double noon = core::parse_utc_time("2024-02-29T12:00Z");  // a leap day
   CHECK(noon == 1709208000.0);
   CHECK(core::parse_utc_time("2024-02-29T12:00+00:00") == noon);

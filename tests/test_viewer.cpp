@@ -15,7 +15,7 @@
 
 namespace nephele {
 
-TEST_CASE("the viewer's panels offer every viewer parameter of the table that is not an option only, in table order", "[viewer]") {
+TEST_CASE("the viewer's panels offer every viewer parameter of the table that is not an option only, in table order", "[fast][viewer]") {
   viewer::ViewState state;
   const auto panel = viewer::panel_parameters();
   std::set<const params::Parameter*> bound;
@@ -44,7 +44,7 @@ TEST_CASE("the viewer's panels offer every viewer parameter of the table that is
   CHECK(params::scene::time.words().empty());
 }
 
-TEST_CASE("a panel value is checked as the command line checks it", "[viewer]") {
+TEST_CASE("a panel value is checked as the command line checks it", "[fast][viewer]") {
   viewer::ViewState state;
   viewer::set_value(state, params::cover::coverage, "0.25");
   CHECK(state.coverage == 0.25f);
@@ -57,7 +57,7 @@ TEST_CASE("a panel value is checked as the command line checks it", "[viewer]") 
   CHECK(state.viewpoint == "bantiger");
 }
 
-TEST_CASE("a drag turns by the field of view per window width, and the wheel zooms within the table's range", "[viewer]") {
+TEST_CASE("a drag turns by the field of view per window width, and the wheel zooms within the table's range", "[fast][viewer]") {
   viewer::ViewState state;
   state.camera.heading_deg = 10;
   state.camera.pitch_deg = 0;
@@ -75,7 +75,7 @@ TEST_CASE("a drag turns by the field of view per window width, and the wheel zoo
   CHECK(state.camera.fov_deg == params::scene::fov.max);
 }
 
-TEST_CASE("flight keeps the camera in double: a 50 m step at 46.9 degrees north moves the latitude by 4.5e-4 degrees", "[viewer]") {
+TEST_CASE("flight keeps the camera in double: a 50 m step at 46.9 degrees north moves the latitude by 4.5e-4 degrees", "[fast][viewer]") {
   viewer::ViewState state;
   state.camera.latitude_deg = 46.9;
   state.camera.longitude_deg = 7.44;
@@ -123,7 +123,7 @@ TEST_CASE("nephele view --help lists the modeller's keys and options, and a bad 
 }
 
 TEST_CASE("modeller picking: a ray enters spheres and capsules where the geometry says, and the nearest is picked",
-          "[viewer][modeller]") {
+          "[fast][viewer][modeller]") {
   using viewer::entry_distance;
   // Inputs are floats (relative rounding 6e-8), the geometry double: 1e-7 on distances near 1.
   constexpr double kFloatInputs = 1e-7;
@@ -163,7 +163,7 @@ TEST_CASE("modeller picking: a ray enters spheres and capsules where the geometr
   CHECK(viewer::pick_primitive(m, {glsl::vec3(0, 1, 0), glsl::vec3(1, 0, 0)}) == -1);
 }
 
-TEST_CASE("modeller picking: project() puts a point where cursor_ray() looks back through it", "[viewer][modeller]") {
+TEST_CASE("modeller picking: project() puts a point where cursor_ray() looks back through it", "[fast][viewer][modeller]") {
   viewer::ViewState state = viewer::modeller_state(model::example("fair-weather"));
   state.camera.heading_deg = 30;
   state.camera.pitch_deg = 20;
@@ -179,7 +179,7 @@ TEST_CASE("modeller picking: project() puts a point where cursor_ray() looks bac
 }
 
 
-TEST_CASE("the orbit viewpoint lifts the camera to the orbit view's altitude over the same point, and above the ground views' ceiling the orbit renderer shows", "[viewer]") {
+TEST_CASE("the orbit viewpoint lifts the camera to the orbit view's altitude over the same point, and above the ground views' ceiling the orbit renderer shows", "[fast][viewer]") {
   viewer::ViewState state;
   viewer::go_to_viewpoint(state, "gurten");
   const double latitude = state.camera.latitude_deg, longitude = state.camera.longitude_deg;

@@ -68,7 +68,7 @@ bool has(const std::vector<CloudLayer>& layers, CloudType type) {
 
 }  // namespace
 
-TEST_CASE("Open-Meteo hourly data are read with units converted and interpolated in time", "[weather]") {
+TEST_CASE("Open-Meteo hourly data are read with units converted and interpolated in time", "[fast][weather]") {
   const WeatherSeries w = io::parse_weather(open_meteo(), "bern.json");
   CHECK(w.format == "open-meteo");
   REQUIRE(w.hours.size() == 3);
@@ -81,7 +81,7 @@ TEST_CASE("Open-Meteo hourly data are read with units converted and interpolated
   CHECK(std::min(half.wind_direction_deg, 360 - half.wind_direction_deg) < kWindDirectionDeg);
 }
 
-TEST_CASE("meteoblue data are read from data_1h with the metadata position", "[weather]") {
+TEST_CASE("meteoblue data are read from data_1h with the metadata position", "[fast][weather]") {
   const WeatherSeries w = io::read_weather_file(std::string(NEPHELE_SOURCE_DIR) + "/scenes/weather/fribourg-meteoblue.json");
   CHECK(w.format == "meteoblue");
   CHECK(w.latitude_deg == Approx(46.8));
@@ -89,7 +89,7 @@ TEST_CASE("meteoblue data are read from data_1h with the metadata position", "[w
   CHECK(w.hours.front().wind_speed == Approx(4.0));
 }
 
-TEST_CASE("bad weather input names the file and the field", "[weather]") {
+TEST_CASE("bad weather input names the file and the field", "[fast][weather]") {
   CHECK_THAT(error_of(open_meteo("[10, null, 30]")), Catch::Contains("test.json") && Catch::Contains("cloud_cover_low[1]"));
   CHECK_THAT(error_of(open_meteo("[10, 120, 30]")), Catch::Contains("cloud_cover_low[1]") && Catch::Contains("0 to 100"));
   CHECK_THAT(error_of(open_meteo("[10, 20]")), Catch::Contains("cloud_cover_low") && Catch::Contains("'time' has 3"));
@@ -106,7 +106,7 @@ TEST_CASE("bad weather input names the file and the field", "[weather]") {
   }
 }
 
-TEST_CASE("UTC offsets beyond 18 hours are refused naming the key, the value and the range", "[weather]") {
+TEST_CASE("UTC offsets beyond 18 hours are refused naming the key, the value and the range", "[fast][weather]") {
   std::string text = open_meteo();
   text.replace(text.find("\"utc_offset_seconds\": 0"), 23, "\"utc_offset_seconds\": 1e300");
   CHECK_THAT(error_of(text), Catch::Contains("utc_offset_seconds") && Catch::Contains("1e+300") &&
@@ -118,7 +118,7 @@ TEST_CASE("UTC offsets beyond 18 hours are refused naming the key, the value and
                                       Catch::Contains("-18 to 18"));
 }
 
-TEST_CASE("station weights give a station's own data there and the linear blend between two", "[weather]") {
+TEST_CASE("station weights give a station's own data there and the linear blend between two", "[fast][weather]") {
   const std::vector<Station> stations = {{46.94806, 7.44750, {}}, {47.20833, 7.53722, {}}};
   const auto at_first = station_weights(stations, 46.94806, 7.44750);
   CHECK(at_first[0] == 1.0);
@@ -134,7 +134,7 @@ TEST_CASE("station weights give a station's own data there and the linear blend 
   }
 }
 
-TEST_CASE("the layer rules pick types from the current and coming weather", "[layers]") {
+TEST_CASE("the layer rules pick types from the current and coming weather", "[fast][layers]") {
   CHECK(choose_layers(sample(0, 0, 0), {}).empty());  // clear sky: nothing to march
   CHECK(has(choose_layers(sample(0.3, 0, 0), {}), CloudType::cumulus));
   CHECK(has(choose_layers(sample(0.7, 0, 0), {}), CloudType::stratocumulus));
@@ -163,7 +163,7 @@ TEST_CASE("the layer rules pick types from the current and coming weather", "[la
   CHECK(choose_layers(sample(0, 0.3, 0), {rain_soon})[0].morph == Approx(0.5));
 }
 
-TEST_CASE("rain under thick mid cloud gives the nimbostratus substitute, and showers convection but no layer", "[layers]") {
+TEST_CASE("rain under thick mid cloud gives the nimbostratus substitute, and showers convection but no layer", "[fast][layers]") {
   const auto ns = choose_layers(sample(0.3, 0.9, 0, 2.0), {});
   const CloudLayer* alto = nullptr;
   for (const auto& l : ns)

@@ -70,7 +70,7 @@ std::vector<vec3> sample_points(int n, float frequency, unsigned seed) {
 
 }  // namespace
 
-TEST_CASE("cumulus phi, delta and density follow Webanck's formulas (hand-computed values)", "[webanck]") {
+TEST_CASE("cumulus phi, delta and density follow Webanck's formulas (hand-computed values)", "[fast][webanck]") {
   // H(0.45, 0.65, 0.55) = 0.5; k1 = H(0.1, 0.9, 0.5)^2 = 0.25; k2 = 0.75 + 0.25 x 0.4 = 0.85;
   // phi = 2 x 0.85 x 0.5 x 0.5 = 0.425.
   CHECK(cumulus_phi(0.55f, 0.5f, 0.5f, 0.4f, 0.0f) == Approx(0.425).epsilon(0).margin(kFormRounding));
@@ -89,7 +89,7 @@ TEST_CASE("cumulus phi, delta and density follow Webanck's formulas (hand-comput
   CHECK(cumulus_form(vec4(0.55f, 0.5f, 0.5f, 0.4f), vec4(0.7f, 0.6f, 0.4f, 0.2f), 0.0f) == 0.0f);
 }
 
-TEST_CASE("alto phi, delta and density follow Webanck's formulas, k = 1 a uniform sheet", "[webanck]") {
+TEST_CASE("alto phi, delta and density follow Webanck's formulas, k = 1 a uniform sheet", "[fast][webanck]") {
   // H(0.43, 1, 0.715) = 0.5: phi = 0.25 + 0.75 x 0.5 = 0.625; delta = 0.75 (0.3 + 0.25 x 0.2)
   // = 0.2625; density 0.3625.
   CHECK(alto_phi(0.25f, 0.715f) == Approx(0.625).epsilon(0).margin(kFormRounding));
@@ -102,7 +102,7 @@ TEST_CASE("alto phi, delta and density follow Webanck's formulas, k = 1 a unifor
   CHECK(alto_form(0.0f, vec3(1.0f, 0.2f, 0.5f)) == Approx(0.725).epsilon(0).margin(kFormRounding));
 }
 
-TEST_CASE("the normal CDF behind G3 matches tabulated values", "[webanck]") {
+TEST_CASE("the normal CDF behind G3 matches tabulated values", "[fast][webanck]") {
   CHECK(normal_cdf(0.0f) == Approx(0.5).epsilon(0).margin(kNormalCdf));
   CHECK(normal_cdf(1.0f) == Approx(0.8413447461).epsilon(0).margin(kNormalCdf));
   CHECK(normal_cdf(-1.0f) == Approx(0.1586552539).epsilon(0).margin(kNormalCdf));
@@ -110,7 +110,7 @@ TEST_CASE("the normal CDF behind G3 matches tabulated values", "[webanck]") {
   CHECK(normal_cdf(-3.0f) == Approx(0.0013498980).epsilon(0).margin(kNormalCdf));
 }
 
-TEST_CASE("p_n is metres over 108 km in the frame whose x runs along the wind", "[webanck]") {
+TEST_CASE("p_n is metres over 108 km in the frame whose x runs along the wind", "[fast][webanck]") {
   // Wind towards the north: x = north, y = west (left of the wind), z up.
   const vec3 pn = webanck_position(vec3(108000.0f, 216000.0f, 1080.0f), vec2(0.0f, 1.0f));
   CHECK(pn.x == Approx(2.0).epsilon(0).margin(4 * kUlp));
@@ -118,7 +118,7 @@ TEST_CASE("p_n is metres over 108 km in the frame whose x runs along the wind", 
   CHECK(pn.z == Approx(0.01).epsilon(0).margin(4 * kUlp));
 }
 
-TEST_CASE("G3 and W3 of one octave are the mapped gradient and complemented Worley noise", "[webanck]") {
+TEST_CASE("G3 and W3 of one octave are the mapped gradient and complemented Worley noise", "[fast][webanck]") {
   const vec3 x(0.0123f, 0.0456f, 0.0078f);
   const float f = 37.0f;
   const uint seed = 5u;
@@ -131,7 +131,7 @@ TEST_CASE("G3 and W3 of one octave are the mapped gradient and complemented Worl
   CHECK(webanck_g3(8, 0.52f, 2.02f, 15.0f, vec3(0.0f), seed) == Approx(0.5).epsilon(0).margin(kNormalCdf));
 }
 
-TEST_CASE("the derived deviation of one octave of gradient noise matches its samples", "[webanck]") {
+TEST_CASE("the derived deviation of one octave of gradient noise matches its samples", "[fast][webanck]") {
   // 2 A B^2 with A = 535/9009, B = 181/231 (docs/layers.md): 35054270/480729249.
   const double derived = 2.0 * (535.0 / 9009.0) * (181.0 / 231.0) * (181.0 / 231.0);
   CHECK(derived == Approx(35054270.0 / 480729249.0).epsilon(0).margin(1e-15));
@@ -145,7 +145,7 @@ TEST_CASE("the derived deviation of one octave of gradient noise matches its sam
   CHECK(m.variance == Approx(derived).epsilon(0).margin(5 * derived * std::sqrt(4.0 / 40000)));
 }
 
-TEST_CASE("G3 histogram: values within 0..1, mean 1/2, standardised octave mean of unit variance, near uniform", "[webanck]") {
+TEST_CASE("G3 histogram: values within 0..1, mean 1/2, standardised octave mean of unit variance, near uniform", "[fast][webanck]") {
   const int n = 20000;
   const auto points = sample_points(n, 15.0f, 4);
   std::vector<double> g3, standardised;
@@ -176,7 +176,7 @@ TEST_CASE("G3 histogram: values within 0..1, mean 1/2, standardised octave mean 
   }
 }
 
-TEST_CASE("W3 histogram: values within 0..1, mean and variance as the complemented Worley octaves predict", "[webanck]") {
+TEST_CASE("W3 histogram: values within 0..1, mean and variance as the complemented Worley octaves predict", "[fast][webanck]") {
   const std::vector<double> f1 = monte_carlo_f1(40000);
   const Moments f = moments(f1);
   // W3 = 1 - sum a_k F1_k / (sqrt 3 sum a): mean 1 - E[F1] / sqrt 3, variance

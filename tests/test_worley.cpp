@@ -103,7 +103,7 @@ void differences(F f, vec3 p, float h, vec3& central, float& one_sided_gap) {
 
 }  // namespace
 
-TEST_CASE("worley_f1 finds the nearest feature point exactly also when F1 exceeds 1", "[worley]") {
+TEST_CASE("worley_f1 finds the nearest feature point exactly also when F1 exceeds 1", "[fast][worley]") {
   std::mt19937 rng(7);
   const uvec3 key = noise_key(3u, 0u);
   int beyond_one = 0;
@@ -120,7 +120,7 @@ TEST_CASE("worley_f1 finds the nearest feature point exactly also when F1 exceed
   WARN("points with F1 > 1: " << beyond_one << " of 20000");
 }
 
-TEST_CASE("the fallback search is exact where the 27-cell search is not", "[worley]") {
+TEST_CASE("the fallback search is exact where the 27-cell search is not", "[fast][worley]") {
   // Search for points whose nearest feature point lies outside the 27 neighbours (only possible
   // when F1 > 1) and check worley_f1 against brute force there.
   std::mt19937 rng(11);
@@ -147,7 +147,7 @@ TEST_CASE("the fallback search is exact where the 27-cell search is not", "[worl
   WARN("points where 27 cells are not enough: " << found);
 }
 
-TEST_CASE("feature points are jittered uniformly and independently inside their cells", "[worley]") {
+TEST_CASE("feature points are jittered uniformly and independently inside their cells", "[fast][worley]") {
   // Chi-square over 4^3 = 64 joint bins tests the three offsets together: a diagonal layout
   // (all offsets equal) would leave 60 of the 64 bins empty.
   const int n = 128000;
@@ -165,7 +165,7 @@ TEST_CASE("feature points are jittered uniformly and independently inside their 
   CHECK(chi2 < 63 + kChiSquareSigmas * std::sqrt(2.0 * 63));
 }
 
-TEST_CASE("periodic Worley noise tiles exactly for negative coordinates too", "[worley]") {
+TEST_CASE("periodic Worley noise tiles exactly for negative coordinates too", "[fast][worley]") {
   const ivec3 period(4, 6, 5);
   const uvec3 key = noise_key(2u, 0u);
   std::mt19937 rng(3);
@@ -185,7 +185,7 @@ TEST_CASE("periodic Worley noise tiles exactly for negative coordinates too", "[
   CHECK(wrap_cell(ivec3(-1, -7, 12), period) == ivec3(3, 5, 2));
 }
 
-TEST_CASE("a wrapped index is exact when the division's floored quotient is one off, as a GPU's may be", "[worley]") {
+TEST_CASE("a wrapped index is exact when the division's floored quotient is one off, as a GPU's may be", "[fast][worley]") {
   // GLSL lets float division err by 2.5 ulp (NVIDIA's does: 21.0 / 7.0 may floor to 2), so
   // wrap_axis's quotient can miss by one either way; wrap_remainder must still give the true
   // remainder in [0, period), which integer arithmetic gives here for comparison.
@@ -202,7 +202,7 @@ TEST_CASE("a wrapped index is exact when the division's floored quotient is one 
   }
 }
 
-TEST_CASE("a neighbour's wrapped index stepped from the wrapped cell equals its own floor division", "[worley]") {
+TEST_CASE("a neighbour's wrapped index stepped from the wrapped cell equals its own floor division", "[fast][worley]") {
   // wrap_step replaces wrap_axis's division in the 27-cell searches, so it must give the same
   // integer for every index and period, negative indices, period 1 and 0 (unbounded) included.
   for (int period = 0; period <= 7; ++period) {
@@ -215,7 +215,7 @@ TEST_CASE("a neighbour's wrapped index stepped from the wrapped cell equals its 
   }
 }
 
-TEST_CASE("the Worley gradient matches finite differences away from cell borders", "[worley]") {
+TEST_CASE("the Worley gradient matches finite differences away from cell borders", "[fast][worley]") {
   const uvec3 key = noise_key(4u, 0u);
   std::mt19937 rng(5);
   const float h = kWorleyStep;
@@ -238,7 +238,7 @@ TEST_CASE("the Worley gradient matches finite differences away from cell borders
   CHECK(compared > 4000);
 }
 
-TEST_CASE("the gradient is the unit vector away from the nearest feature point", "[worley]") {
+TEST_CASE("the gradient is the unit vector away from the nearest feature point", "[fast][worley]") {
   const uvec3 key = noise_key(4u, 0u);
   // In cell (0, 0, 0) the feature point is exactly representable (24-bit offsets below 1).
   const vec3 feature = feature_offset(ivec3(0), ivec3(0), key);
@@ -250,7 +250,7 @@ TEST_CASE("the gradient is the unit vector away from the nearest feature point",
   CHECK(length(vec3(near)) == Approx(1.0f).epsilon(0).margin(kNearFeatureLength));
 }
 
-TEST_CASE("inverted Worley fBm is normalised and its gradient matches finite differences", "[worley]") {
+TEST_CASE("inverted Worley fBm is normalised and its gradient matches finite differences", "[fast][worley]") {
   const FbmParams params{3.0f, 4, 2.0f, 0.5f, 17u, ivec3(0)};
   std::mt19937 rng(8);
   const float h = 2e-4f;
