@@ -10,7 +10,7 @@
 #include <sstream>
 #include <string>
 
-#include "fast_tag.hpp"
+#include "case_tags.hpp"
 
 namespace nephele::test {
 

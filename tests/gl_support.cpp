@@ -1,6 +1,6 @@
 #include "gl_support.hpp"
 
-#include "fast_tag.hpp"
+#include "case_tags.hpp"
 
 namespace nephele::test {
 

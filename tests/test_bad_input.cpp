@@ -11,6 +11,7 @@
 #include <fstream>
 #include <string>
 
+#include "case_tags.hpp"
 #include "io/scene_files.hpp"
 #include "io/weather_files.hpp"
 #include "cover/cover_limits.hpp"
@@ -117,7 +118,7 @@ TEST_CASE("an equirect map wider than the driver's texture limit is exported", "
 
 TEST_CASE("the host memory probe reads MemAvailable from /proc/meminfo", "[fast][bad-input]") {
   if (!fs::exists("/proc/meminfo")) {
-    WARN("no /proc/meminfo; skipped");
+    test::skip_case("no /proc/meminfo");
     return;
   }
   CHECK(core::host_memory_available_bytes() > 0.0);
@@ -125,7 +126,7 @@ TEST_CASE("the host memory probe reads MemAvailable from /proc/meminfo", "[fast]
 
 TEST_CASE("a cover size the driver cannot allocate is refused naming --size before any work", "[bad-input][cli]") {
   if (!test::test_context().is_software()) {
-    WARN("not a software rasteriser; 4096 may fit this device, skipped");
+    test::skip_case("not a software rasteriser; 4096 may fit this device");
     return;
   }
   // llvmpipe refuses textures over about 1.5 GiB: a 4096^2 RGBA32F cube map is 1.5 GiB.

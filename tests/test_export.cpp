@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "case_tags.hpp"
 #include "cli_support.hpp"
 #include "io/atomic_output.hpp"
 #include "io/cube_frames.hpp"
@@ -723,9 +724,9 @@ TEST_CASE("export refuses up front a preset whose image would exceed 16384 pixel
 // marker and at its mirror images (scripts/blender_probe.py). Blender is not a CI package (see
 // docs/export.md, "blender"): without it on PATH the test says so and passes.
 TEST_CASE("export blender: Blender renders the marker at 30 N 60 E through the preset's World, and at 60 W without Y = -1",
-          "[fast][export][blender]") {
+          "[optional][export][blender]") {
   if (std::system("command -v blender > /dev/null 2>&1") != 0) {
-    WARN("skipped: blender is not installed (apt-get install --no-install-recommends blender)");
+    test::skip_case("blender is not installed (apt-get install --no-install-recommends blender)");
     return;
   }
   Exported e("blender");
@@ -788,10 +789,10 @@ TEST_CASE("generate --export runs the presets into export/NAME of the same set, 
 // FlightGear draws every Earthview texture, the shipped ones included, with latitudes scaled
 // by 87.23/90. The bright vertices must sit at 60 E and 30 N times that scale.
 TEST_CASE("export flightgear: through the UVs of FlightGear's shipped cloud models the marker lands at 60 E, 30 N",
-          "[fast][export][flightgear]") {
+          "[optional][export][flightgear]") {
   const std::filesystem::path astro = "/usr/share/games/flightgear/Models/Astro";
   if (!std::filesystem::exists(astro / "clouds_N1.ac")) {
-    WARN("skipped: FlightGear's models are not installed (apt-get install flightgear-data-models)");
+    test::skip_case("FlightGear's models are not installed (apt-get install flightgear-data-models)");
     return;
   }
   Exported e("flightgear");
@@ -851,13 +852,13 @@ TEST_CASE("export flightgear: through the UVs of FlightGear's shipped cloud mode
 // axis: the towering example is taller than wide, so a swapped axis (z up) or a wrong voxel
 // size fails.
 TEST_CASE("model's density.vdb opens in Blender as a Volume with the grid density where the raw volume has density",
-          "[fast][export][blender]") {
+          "[optional][export][blender]") {
   if (std::system("command -v blender > /dev/null 2>&1") != 0) {
-    WARN("skipped: blender is not installed (apt-get install --no-install-recommends blender)");
+    test::skip_case("blender is not installed (apt-get install --no-install-recommends blender)");
     return;
   }
   if (!io::vdb_available()) {
-    WARN("skipped: nephele was built without OpenVDB (libopenvdb-dev)");
+    test::skip_case("nephele was built without OpenVDB (libopenvdb-dev)");
     return;
   }
   test::TemporaryDirectory out;
@@ -941,7 +942,7 @@ TEST_CASE("export atlas keeps every side within 16384 pixels: 160^3 in 13 x 13, 
 TEST_CASE("export openvdb: a model's density.json becomes a FOG grid density with its voxel size and every voxel",
           "[export]") {
   if (!io::vdb_available()) {
-    WARN("skipped: nephele was built without OpenVDB (libopenvdb-dev)");
+    test::skip_case("nephele was built without OpenVDB (libopenvdb-dev)");
     return;
   }
   test::TemporaryDirectory model, out;

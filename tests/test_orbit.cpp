@@ -9,6 +9,7 @@
 #include <cmath>
 #include <vector>
 
+#include "case_tags.hpp"
 #include "cli_support.hpp"
 #include "core/time.hpp"
 #include "cover/global_cover.hpp"
@@ -141,7 +142,7 @@ TEST_CASE("orbit: with the xplanet map, 23 N 12 E is desert and 10 N 30 W is oce
   test::test_context();
   const io::PlanetTextures textures = io::read_planet_textures("");
   if (textures.day_source == "procedural") {
-    WARN("xplanet-images is not installed: skipped");
+    test::skip_case("xplanet-images is not installed");
     return;
   }
   // The map's conventions (longitude -180 at the left edge, north up) as the renderer reads them:

@@ -20,6 +20,7 @@
 #include <thread>
 #include <vector>
 
+#include "case_tags.hpp"
 #include "cli_support.hpp"
 #include "io/atomic_output.hpp"
 
@@ -507,7 +508,7 @@ struct BindMount {
 
 }  // namespace
 
-TEST_CASE("a directory set into a bind mount is committed by per-file renames inside the mount", "[fast][output]") {
+TEST_CASE("a directory set into a bind mount is committed by per-file renames inside the mount", "[optional][output]") {
   TemporaryDirectory place(true);
   const fs::path disk = place.path / "disk", out = place.path / "out";
   put(disk / "cover.json", "old");
@@ -522,7 +523,7 @@ TEST_CASE("a directory set into a bind mount is committed by per-file renames in
     if (!before_open) mount = std::make_unique<BindMount>(disk, out);
     if (!mount->mounted) {
       // Mounting needs root (CAP_SYS_ADMIN); the fallback's decision is tested above without one.
-      WARN("skipped: cannot bind-mount here (" << std::strerror(mount->error) << "); run the tests as root");
+      test::skip_case(std::string("cannot bind-mount here (") + std::strerror(mount->error) + "); run the tests as root");
       return;
     }
     if (before_open) CHECK(set.scope() == io::OutputSet::Scope::files);
