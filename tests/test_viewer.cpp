@@ -90,6 +90,33 @@ TEST_CASE("flight keeps the camera in double: a 50 m step at 46.9 degrees north 
   CHECK(state.viewpoint.empty());
 }
 
+TEST_CASE("the key table gives each key one action per mode and the help lists every row it names", "[fast][viewer]") {
+  using Mode = viewer::Viewer::KeyMode;
+  const auto& table = viewer::Viewer::key_table();
+  const std::string& help = viewer::key_help();
+  for (const Mode mode : {Mode::view, Mode::modeller})
+    for (const bool control : {false, true}) {
+      std::set<int> seen;
+      for (const auto& row : table) {
+        if (row.control != control || (row.mode != mode && row.mode != Mode::both)) continue;
+        for (int key : row.keys) {
+          INFO("key " << key << " in mode " << int(mode));
+          CHECK(seen.insert(key).second);  // one row answers it: dispatch is unambiguous
+        }
+      }
+    }
+  for (const auto& row : table) {
+    // A row with keys acts; a row without is a gesture of the mouse callbacks, help only.
+    CHECK((row.keys.empty() ? row.act == nullptr : row.act != nullptr));
+    if (*row.label != '\0') {
+      INFO(row.label);
+      CHECK_THAT(help, Catch::Contains(std::string(row.label)) && Catch::Contains(std::string(row.help)));
+    } else {
+      CHECK_FALSE(row.keys.empty());  // the second half of the pair the row before names
+    }
+  }
+}
+
 TEST_CASE("nephele view without a display exits 3 and names xvfb-run and nephele render", "[viewer][cli]") {
   const auto r = test::run_with_environment("env -u DISPLAY -u WAYLAND_DISPLAY", "view --size 32x18");
   CHECK(r.exit_code == core::exit_environment);

@@ -1,6 +1,7 @@
 #version 450
-// Pass 4a: the coverage threshold's statistics on the GPU (src/cover/gpu_reductions.cpp
-// drives the stages; docs/performance.md explains the two-level histogram).
+// The calibration between passes 4a and 4b (docs/algorithm.md): the coverage threshold's
+// statistics on the GPU (src/cover/gpu_reductions.cpp drives the stages; docs/performance.md
+// explains the two-level histogram).
 //   stage 0: smallest and largest density;
 //   stage 1: solid-angle weighted histogram of 4096 bins over [min, max];
 //   stage 2: the texels of coarse bin u_coarse listed with their weights;

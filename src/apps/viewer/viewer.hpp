@@ -38,8 +38,9 @@ struct ViewerOptions {
   int model_size = params::cloud_model::view_model_size.default_int();
 };
 
-// The keys, for --help and docs/viewer.md.
-const char* key_help();
+// The keys and mouse gestures, made from the key table that on_key dispatches through, for
+// --help and docs/viewer.md.
+const std::string& key_help();
 
 // One step of the refinement: the image at 1/divisor of the window's size each way, or band
 // `band` of `bands` (of equal rows, the last one shorter) of it.
@@ -96,6 +97,20 @@ class Viewer {
   static void on_mouse_button(GLFWwindow* window, int button, int action, int mods);
   static void on_cursor(GLFWwindow* window, double x, double y);
   static void on_scroll(GLFWwindow* window, double dx, double dy);
+
+  // One row of the key table: the keys, when they act, and what they do; rows without keys are
+  // mouse gestures, listed in the help only (the mouse callbacks handle them).
+  enum class KeyMode { view, modeller, both };  // the ground and orbit views, the modeller
+  struct KeyBinding {
+    std::vector<int> keys;  // GLFW key codes
+    bool control;           // needs Ctrl (checked before the rows without)
+    KeyMode mode;
+    bool repeats;           // acts on a key's repeats too (flying), else on its press only
+    const char* label;      // as the help shows it
+    const char* help;
+    void (*act)(Viewer&, GLFWwindow*);
+  };
+  static const std::vector<KeyBinding>& key_table();
 
  private:
   bool changed() const;
