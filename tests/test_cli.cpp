@@ -1,6 +1,8 @@
 // The nephele executable end to end.
 #include <catch2/catch.hpp>
 
+#include "apps/cli/command_table.hpp"
+#include "io/export_presets.hpp"
 #include "params/render_quality.hpp"
 
 #include <sys/wait.h>
@@ -288,4 +290,16 @@ TEST_CASE("render rejects bad input with code 2 naming the key or option", "[cli
     CHECK_THAT(r.output, Catch::Contains(expected));
     CHECK_FALSE(fs::exists(out.path / "x.png"));
   }
+}
+
+TEST_CASE("nephele's usage lists every command of the table and every export preset, and dispatch finds each",
+          "[fast][cli]") {
+  const std::string text = cli::usage();
+  for (const cli::Command& c : cli::commands()) {
+    CHECK_THAT(text, Catch::Contains(std::string("  ") + c.name + " "));
+    CHECK(cli::find_command(c.name) == &c);
+    CHECK(c.run != nullptr);
+  }
+  for (const io::ExportPreset& p : io::export_presets()) CHECK_THAT(text, Catch::Contains(p.name));
+  CHECK(cli::find_command("frobnicate") == nullptr);
 }
