@@ -75,7 +75,7 @@ void add_readme(OutputSet& out, std::vector<std::string>& names, const ExportPre
 }
 
 void write_equirect(OutputSet& out, std::vector<std::string>& names, const ExportPreset& preset,
-                    const CoverFaces& faces) {
+                    const CoverFaces& faces, const ExportOptions&) {
   const ImageData map = equirect_image(faces);
   const std::pair<std::string, ImageEncoding> files[] = {{"cover_equirect.exr", exr_encoding({"Y"})},
                                                          {"cover_equirect_16.png", png_encoding(16)},
@@ -97,7 +97,7 @@ void write_equirect(OutputSet& out, std::vector<std::string>& names, const Expor
 }
 
 void write_gl_faces(OutputSet& out, std::vector<std::string>& names, const ExportPreset& preset,
-                    const CoverFaces& faces) {
+                    const CoverFaces& faces, const ExportOptions&) {
   for (int f = 0; f < 6; ++f) {
     const std::string name = std::string("cover_") + face_suffixes[f] + ".exr";
     out.write(name, encode_image(face_image(faces, f), exr_encoding({"Y"}), name));
@@ -130,7 +130,7 @@ void write_ktx2(OutputSet& out, std::vector<std::string>& names, const ExportPre
                                  "World axes as for gl-faces: +Z is the North Pole.\n");
 }
 
-void write_dds(OutputSet& out, std::vector<std::string>& names, const ExportPreset& preset, const CoverFaces& faces) {
+void write_dds(OutputSet& out, std::vector<std::string>& names, const ExportPreset& preset, const CoverFaces& faces, const ExportOptions&) {
   const std::pair<std::string, DdsVariant> files[] = {{"cover_cube_rgba8.dds", DdsVariant::rgba8},
                                                       {"cover_cube_r16f.dds", DdsVariant::dx10_r16f},
                                                       {"cover_cube_r32f.dds", DdsVariant::dx10_r32f}};
@@ -187,7 +187,7 @@ void write_celestia(OutputSet& out, std::vector<std::string>& names, const Expor
 // vertical strip +X, -X, +Y, -Y, +Z, -Z with every face mirrored relative to the GL face: the
 // X and Z faces left-right, the Y faces top-bottom (docs/conventions.md, "Other programs"; docs/export.md, "exr-cube").
 void write_exr_cube(OutputSet& out, std::vector<std::string>& names, const ExportPreset& preset,
-                    const CoverFaces& faces) {
+                    const CoverFaces& faces, const ExportOptions&) {
   const int n = faces.size;
   ImageData strip{n, 6 * n, 1, std::vector<float>(std::size_t(6) * n * n)};
   for (int f = 0; f < 6; ++f) {
@@ -215,7 +215,7 @@ void write_exr_cube(OutputSet& out, std::vector<std::string>& names, const Expor
 // clouds_*.ac) map UVs 1/128 .. 127/128, so the content fills the inner 126/128 of a tile and
 // the border repeats the edge pixels (docs/export.md, "flightgear").
 void write_flightgear(OutputSet& out, std::vector<std::string>& names, const ExportPreset& preset,
-                      const CoverFaces& faces) {
+                      const CoverFaces& faces, const ExportOptions&) {
   const int tile = flightgear_tile_size(faces.size), border = tile / 128, content = tile - 2 * border;
   const ImageData map = equirect_image(faces, content);
   ImageEncoding encoding = png_encoding(8);
@@ -335,7 +335,7 @@ const char* const map_orientation =
 // Unity: left-handed, Y up. Its frame for the cover: +Y north, +X longitude 0, +Z 90 E (so
 // that the planet is seen unmirrored from outside): nephele X, Y, Z = Unity x, z, y, a
 // reflection (the same swap as KSP's planetarium frame).
-void write_unity(OutputSet& out, std::vector<std::string>& names, const ExportPreset& preset, const CoverFaces& faces) {
+void write_unity(OutputSet& out, std::vector<std::string>& names, const ExportPreset& preset, const CoverFaces& faces, const ExportOptions&) {
   const ImageData map = equirect_image(faces);
   write_map_files(out, names, map, "cover_latlong");
   ImageData hdrp{map.width, map.height, 3, std::vector<float>(3 * map.pixels.size(), 0.0f)};
@@ -361,7 +361,7 @@ void write_unity(OutputSet& out, std::vector<std::string>& names, const ExportPr
 
 // Godot 4: right-handed, Y up, -Z forward. Frame for the cover: +Y north, +Z longitude 0,
 // +X 90 E: nephele X, Y, Z = Godot z, x, y, a rotation.
-void write_godot(OutputSet& out, std::vector<std::string>& names, const ExportPreset& preset, const CoverFaces& faces) {
+void write_godot(OutputSet& out, std::vector<std::string>& names, const ExportPreset& preset, const CoverFaces& faces, const ExportOptions&) {
   const std::vector<float> godot_faces = faces_for_axes(faces, AxisMap{{2, 0, 1}, {1, 1, 1}});
   write_cube_layout(out, names, godot_faces, faces.size, 2, "cover_cube_2x3.png");
   write_cube_layout(out, names, godot_faces, faces.size, 6, "cover_cube_6x1.png");
@@ -380,7 +380,7 @@ void write_godot(OutputSet& out, std::vector<std::string>& names, const ExportPr
 }
 
 void write_unreal(OutputSet& out, std::vector<std::string>& names, const ExportPreset& preset,
-                  const CoverFaces& faces) {
+                  const CoverFaces& faces, const ExportOptions&) {
   write_map_files(out, names, equirect_image(faces), "cover_equirect");
   add_readme(out, names, preset, faces,
                    "Files: cover_equirect.exr (float) and cover_equirect_16.png (16-bit grey), linear 2D\n"
@@ -397,7 +397,7 @@ void write_unreal(OutputSet& out, std::vector<std::string>& names, const ExportP
 // Blender (right-handed, Z up) maps an equirect with u = 0.5 - atan2(y, x)/2pi: a north-up,
 // east-right map appears mirrored unless the Mapping node scales Y by -1.
 void write_blender(OutputSet& out, std::vector<std::string>& names, const ExportPreset& preset,
-                   const CoverFaces& faces) {
+                   const CoverFaces& faces, const ExportOptions&) {
   const ImageData map = equirect_image(faces);
   out.write("cover_equirect.exr", encode_image(map, exr_encoding({"Y"}), "cover_equirect.exr"));
   names.push_back("cover_equirect.exr");
@@ -510,22 +510,35 @@ CoverFaces read_cover_faces(const std::filesystem::path& directory) {
   return faces;
 }
 
+namespace {
+
+// The widest image edge of each kind of preset for face size n: the faces themselves (exr-cube's
+// N x 6N strip is an environment file, not one GPU texture), a 4n x 2n equirect, a 6n x n strip,
+// FlightGear's tiles.
+long long faces_edge(int n) { return n; }
+long long equirect_edge(int n) { return 4LL * n; }
+long long strip_edge(int n) { return 6LL * n; }
+long long tile_edge(int n) { return flightgear_tile_size(n); }
+
+}  // namespace
+
 const std::vector<ExportPreset>& export_presets() {
+  // name, summary, needs_equirect, volume, takes_format, takes_name, writer, widest edge.
   static const std::vector<ExportPreset> presets = {
-      {"equirect", "2:1 lat-long map: float EXR, 16-bit PNG, 8-bit PNG", true},
-      {"gl-faces", "six OpenEXR cube faces in the OpenGL order and orientation", false},
-      {"ktx2", "KTX 2.0 cube map (R16_SFLOAT, R32_SFLOAT or R8_UNORM; --format)", false, false, true},
-      {"dds", "DDS cube maps: legacy RGBA8 and DX10 R16_FLOAT / R32_FLOAT", false},
-      {"celestia", "Celestia add-on: RGBA cloud map (white, coverage in alpha) and .ssc", true, false, false, true},
-      {"exr-cube", "OpenEXR cube environment map (N x 6N strip, envmap = cube)", false},
-      {"flightgear", "FlightGear Earthview: eight bordered tiles clouds_N1..S4, grey + alpha", true},
-      {"eve", "KSP EVE (LGhassen's fork): equirect and six faces as DDS, EVE_TEXTURE_CONFIG", true, false, false, true},
-      {"unity", "Unity: lat-long map (HDRP cloud map in red) and a 6x1 face strip, reflected", true},
-      {"godot", "Godot 4: 2x3 and 6x1 cubemap images and a panorama equirect", true},
-      {"unreal", "Unreal: linear EXR and 16-bit PNG equirect for a cloud or planet material", true},
-      {"blender", "Blender: equirect EXR and a script for an unmirrored World (Mapping Y = -1)", true},
-      {"atlas", "volume (noise .raw or model density.json): slice atlas in rows and columns", false, true},
-      {"openvdb", "volume (noise .raw or model density.json): OpenVDB FOG_VOLUME grids", false, true},
+      {"equirect", "2:1 lat-long map: float EXR, 16-bit PNG, 8-bit PNG", true, false, false, false, write_equirect, equirect_edge},
+      {"gl-faces", "six OpenEXR cube faces in the OpenGL order and orientation", false, false, false, false, write_gl_faces, faces_edge},
+      {"ktx2", "KTX 2.0 cube map (R16_SFLOAT, R32_SFLOAT or R8_UNORM; --format)", false, false, true, false, write_ktx2, faces_edge},
+      {"dds", "DDS cube maps: legacy RGBA8 and DX10 R16_FLOAT / R32_FLOAT", false, false, false, false, write_dds, faces_edge},
+      {"celestia", "Celestia add-on: RGBA cloud map (white, coverage in alpha) and .ssc", true, false, false, true, write_celestia, equirect_edge},
+      {"exr-cube", "OpenEXR cube environment map (N x 6N strip, envmap = cube)", false, false, false, false, write_exr_cube, faces_edge},
+      {"flightgear", "FlightGear Earthview: eight bordered tiles clouds_N1..S4, grey + alpha", true, false, false, false, write_flightgear, tile_edge},
+      {"eve", "KSP EVE (LGhassen's fork): equirect and six faces as DDS, EVE_TEXTURE_CONFIG", true, false, false, true, write_eve, equirect_edge},
+      {"unity", "Unity: lat-long map (HDRP cloud map in red) and a 6x1 face strip, reflected", true, false, false, false, write_unity, strip_edge},
+      {"godot", "Godot 4: 2x3 and 6x1 cubemap images and a panorama equirect", true, false, false, false, write_godot, strip_edge},
+      {"unreal", "Unreal: linear EXR and 16-bit PNG equirect for a cloud or planet material", true, false, false, false, write_unreal, equirect_edge},
+      {"blender", "Blender: equirect EXR and a script for an unmirrored World (Mapping Y = -1)", true, false, false, false, write_blender, equirect_edge},
+      {"atlas", "volume (noise .raw or model density.json): slice atlas in rows and columns", false, true, false, false, nullptr, nullptr},
+      {"openvdb", "volume (noise .raw or model density.json): OpenVDB FOG_VOLUME grids", false, true, false, false, nullptr, nullptr},
   };
   return presets;
 }
@@ -543,18 +556,15 @@ int flightgear_tile_size(int face_size) {
 }
 
 long long widest_image_edge(const ExportPreset& preset, int face_size) {
-  const long long n = face_size;
-  if (preset.volume) return 0;  // not a cover: volume_export.cpp checks its atlas
-  if (preset.name == "flightgear") return flightgear_tile_size(face_size);
-  if (preset.name == "unity" || preset.name == "godot") return 6 * n;  // the 6x1 strip
-  if (preset.needs_equirect) return 4 * n;
-  return n;  // faces; exr-cube's N x 6N strip is an environment file, not one GPU texture
+  return preset.widest_edge != nullptr ? preset.widest_edge(face_size) : 0;  // volumes check their atlas
 }
 
 void check_texture_limit(const ExportPreset& preset, int face_size) {
   const long long edge = widest_image_edge(preset, face_size);
   if (edge <= max_texture_edge) return;
-  const long long largest = preset.name == "unity" || preset.name == "godot" ? max_texture_edge / 6 : max_texture_edge / 4;
+  // The largest face size whose widest image fits (the edges grow with n).
+  long long largest = 1;
+  while (widest_image_edge(preset, static_cast<int>(largest + 1)) <= max_texture_edge) ++largest;
   throw core::InputError("COVER_DIR", "face size " + std::to_string(face_size),
                          "face size at most " + std::to_string(largest) + " for preset " + preset.name,
                          "would make an image " + std::to_string(edge) + " pixels wide, over the " +
@@ -573,19 +583,8 @@ std::vector<std::string> write_export(OutputSet& outputs, const ExportPreset& pr
   check_texture_limit(preset, faces.size);
   check_export_options(preset, options);
   std::vector<std::string> names;
-  if (preset.name == "equirect") write_equirect(outputs, names, preset, faces);
-  else if (preset.name == "gl-faces") write_gl_faces(outputs, names, preset, faces);
-  else if (preset.name == "ktx2") write_ktx2(outputs, names, preset, faces, options);
-  else if (preset.name == "dds") write_dds(outputs, names, preset, faces);
-  else if (preset.name == "celestia") write_celestia(outputs, names, preset, faces, options);
-  else if (preset.name == "exr-cube") write_exr_cube(outputs, names, preset, faces);
-  else if (preset.name == "flightgear") write_flightgear(outputs, names, preset, faces);
-  else if (preset.name == "eve") write_eve(outputs, names, preset, faces, options);
-  else if (preset.name == "unity") write_unity(outputs, names, preset, faces);
-  else if (preset.name == "godot") write_godot(outputs, names, preset, faces);
-  else if (preset.name == "unreal") write_unreal(outputs, names, preset, faces);
-  else if (preset.name == "blender") write_blender(outputs, names, preset, faces);
-  else throw core::InputError("--preset", preset.name, preset_words());
+  if (preset.write == nullptr) throw core::InputError("--preset", preset.name, "a cover preset", "exports a volume (nephele export VOLUME)");
+  preset.write(outputs, names, preset, faces, options);
   return names;
 }
 

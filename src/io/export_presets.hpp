@@ -23,6 +23,12 @@ struct CoverFaces {
 CoverFaces read_cover_faces(const std::filesystem::path& directory);
 int read_cover_face_size(const std::filesystem::path& directory);
 
+struct ExportOptions {
+  std::string ktx2_format = "r16f";    // ktx2: r16f, r32f, r8
+  std::string name = "nephele_clouds";  // celestia: the add-on's folder and file names
+};
+
+// One row of the preset registry: everything about a preset is here, its writer included.
 struct ExportPreset {
   std::string name;     // --preset word
   std::string summary;  // one line for --help and the README
@@ -30,6 +36,11 @@ struct ExportPreset {
   bool volume = false;  // reads a volume's sidecar (io/volume_export.hpp) instead of a cover
   bool takes_format = false;  // reads --format (ExportOptions::ktx2_format)
   bool takes_name = false;    // reads --name (ExportOptions::name)
+  // Writes the preset's files (README.txt included) into the set; nullptr for a volume preset.
+  void (*write)(OutputSet& outputs, std::vector<std::string>& names, const ExportPreset& preset,
+                const CoverFaces& faces, const ExportOptions& options) = nullptr;
+  // The longest image edge it writes for face size n; nullptr for a volume preset.
+  long long (*widest_edge)(int face_size) = nullptr;
 };
 // The presets in the order --help lists them.
 const std::vector<ExportPreset>& export_presets();
@@ -47,11 +58,6 @@ long long widest_image_edge(const ExportPreset& preset, int face_size);
 // Throws core::InputError naming COVER_DIR, the preset, the edge and the limit when the preset
 // would write an image over max_texture_edge: checked before any work, never a late failure.
 void check_texture_limit(const ExportPreset& preset, int face_size);
-
-struct ExportOptions {
-  std::string ktx2_format = "r16f";    // ktx2: r16f, r32f, r8
-  std::string name = "nephele_clouds";  // celestia: the add-on's folder and file names
-};
 
 // Throws core::InputError for an option the preset would refuse (celestia's and eve's --name,
 // ktx2's --format), so that it is refused before --out is created and before any work.
