@@ -12,12 +12,14 @@
 #include "gpu/pass_timer.hpp"
 #include "gpu/textures.hpp"
 #include "render/sun_position.hpp"
+#include "shader_math/shader_math.hpp"
 
 namespace nephele::render {
 namespace {
 
 constexpr double degree = M_PI / 180.0;
-constexpr double atmosphere_thickness_m = 100000.0;  // ATMOSPHERE_THICKNESS of atmosphere.glsl
+// The atmosphere's top above the sphere: atmosphere.glsl's constant, through its C++ twin.
+const double atmosphere_thickness_m = glsl::ATMOSPHERE_THICKNESS;
 
 struct Enu {
   glm::dvec3 east, north, up;
@@ -43,14 +45,21 @@ void check_camera(const OrbitCamera& c) {
 void check_settings(const OrbitSettings& s) {
   auto bad = [](const std::string& what) { throw std::invalid_argument("orbit settings: " + what); };
   if (!(s.planet_radius_m >= 1000 && s.planet_radius_m <= 1.0e9)) bad("planet radius outside 1 km..1e6 km");
-  if (!(s.cloud_base_m >= 0) || !(s.cloud_thickness_m > 0) ||
-      !(s.cloud_base_m + s.cloud_thickness_m < atmosphere_thickness_m))
-    bad("the cloud shell must lie within the 100 km atmosphere and have a thickness above 0");
+  if (!(s.cloud_base_m >= 0) || !(s.cloud_thickness_m > 0) || !cloud_shell_fits(s.cloud_base_m, s.cloud_thickness_m))
+    bad("the cloud shell must lie within the atmosphere (" + std::to_string(atmosphere_top_km()) +
+        " km) and have a thickness above 0");
   if (!(s.cloud_extinction >= 0) || !(s.night_lights >= 0)) bad("negative extinction or night lights");
   if (s.cloud_steps < 1 || s.cloud_steps > 1024 || s.shadow_steps < 0 || s.shadow_steps > 256 || s.sky_steps < 1 ||
       s.sky_steps > 256)
     bad("step counts out of range");
 }
+
+}  // namespace
+
+double atmosphere_top_km() { return atmosphere_thickness_m / 1000.0; }
+bool cloud_shell_fits(double base_m, double thickness_m) { return base_m + thickness_m < atmosphere_thickness_m; }
+
+namespace {
 
 void check_cover(const CoverCube& cover) {
   if (cover.size < 1 || cover.texels.size() != 6 * static_cast<size_t>(cover.size) * cover.size)

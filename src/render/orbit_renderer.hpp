@@ -24,6 +24,12 @@ struct OrbitCamera {
   int width = 1280, height = 720;
 };
 
+// The top of the atmosphere above the planet's sphere (atmosphere.glsl's ATMOSPHERE_THICKNESS),
+// and whether a cloud shell from base_m, thickness_m thick, ends below it: the rule the
+// renderer and `render --view orbit`'s options share.
+double atmosphere_top_km();
+bool cloud_shell_fits(double base_m, double thickness_m);
+
 struct OrbitSettings {
   double planet_radius_m = 6371000;     // mean Earth radius (IUGG)
   double cloud_base_m = 2000;           // altitude of the cloud shell's bottom

@@ -56,12 +56,11 @@ const std::vector<const params::Parameter*>& orbit_only_parameters() {
 
 int run_orbit_render(const OrbitOptions& orbit) {
   // Everything is checked before the context is made: bad input exits 2 at once.
-  if (orbit.cloud_base_km + orbit.cloud_thickness_km >= 100)
-  {
+  if (!render::cloud_shell_fits(orbit.cloud_base_km * 1000.0, orbit.cloud_thickness_km * 1000.0)) {
     std::ostringstream top;
-    top << orbit.cloud_base_km + orbit.cloud_thickness_km;
-    throw UsageError("--cloud-base-km + --cloud-thickness-km: " + top.str() +
-                     " km; the cloud shell must end below the atmosphere's top at 100 km");
+    top << orbit.cloud_base_km + orbit.cloud_thickness_km << " km; the cloud shell must end below the atmosphere's top at "
+        << render::atmosphere_top_km() << " km";
+    throw UsageError("--cloud-base-km + --cloud-thickness-km: " + top.str());
   }
   if (orbit.out.empty()) throw UsageError("--out: give an output file (.png or .exr)");
   const std::filesystem::path out(orbit.out);
