@@ -30,10 +30,10 @@ inline double velocity_lipschitz(const std::vector<glsl::vec4>& curl, int size) 
         for (const glsl::ivec2 step : {glsl::ivec2(1, 0), glsl::ivec2(0, 1)}) {
           const int i2 = i + step.x, j2 = j + step.y;
           if (i2 >= size || j2 >= size) continue;
-          const double angle = std::acos(std::clamp(static_cast<double>(glsl::dot(
-                                                        glsl::texel_direction(face, i, j, size),
-                                                        glsl::texel_direction(face, i2, j2, size))),
-                                                    -1.0, 1.0));
+          const double angle =
+              std::acos(std::clamp(static_cast<double>(glsl::dot(glsl::texel_direction(face, i, j, size),
+                                                                 glsl::texel_direction(face, i2, j2, size))),
+                                   -1.0, 1.0));
           const double change =
               glsl::length(glsl::vec3(curl[index(size, face, i, j)]) - glsl::vec3(curl[index(size, face, i2, j2)]));
           worst = std::max(worst, change / angle);

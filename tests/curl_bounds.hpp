@@ -53,8 +53,7 @@ float curl_octave_bound(glsl::vec3 n, const glsl::CurlParams& c, Term term) {
 // GPU and CPU differ by rounding of n * f_k (kLatticeRelative f_k, which turns octave k's unit
 // gradient by that over F1) and by sin/cos in the latitude mix (kLatitudeMixAbsolute).
 inline float curl_rounding_bound(glsl::vec3 n, const glsl::CurlParams& c) {
-  return kLatitudeMixAbsolute +
-         curl_octave_bound(n, c, [](float f, float f1) { return kLatticeRelative * f / f1; });
+  return kLatitudeMixAbsolute + curl_octave_bound(n, c, [](float f, float f1) { return kLatticeRelative * f / f1; });
 }
 
 }  // namespace nephele::test

@@ -43,7 +43,8 @@ inline float max_texel_step_of(const glsl::VolumeSource& volume, int channel) {
   for (int k = 0; k < n; ++k)
     for (int j = 0; j < n; ++j)
       for (int i = 0; i < n; ++i)
-        for (float next : {at(i + 1, j, k), at(i, j + 1, k), at(i, j, k + 1)}) step = std::max(step, std::abs(next - at(i, j, k)));
+        for (float next : {at(i + 1, j, k), at(i, j + 1, k), at(i, j, k + 1)})
+          step = std::max(step, std::abs(next - at(i, j, k)));
   return step;
 }
 

@@ -57,8 +57,8 @@ std::string weather_with_times(const std::string& times) {
 TEST_CASE("render refuses an impossible --time naming --time before any GL work", "[bad-input][cli]") {
   TemporaryDirectory out;
   for (const char* time : {"2024-02-31T12:00Z", "2024-06-01T12:nanZ"}) {
-    const Run r = run_without_gl(std::string("render --view gurten --time ") + time + " --out " +
-                                 (out.path / "x.png").string());
+    const Run r =
+        run_without_gl(std::string("render --view gurten --time ") + time + " --out " + (out.path / "x.png").string());
     INFO(r.output);
     CHECK(r.exit_code == 2);
     CHECK_THAT(r.output, Catch::StartsWith("nephele: --time: ") && Catch::Contains(time));
@@ -69,8 +69,8 @@ TEST_CASE("render refuses an impossible --time naming --time before any GL work"
 TEST_CASE("a bad or empty time in a weather file names the file and the field", "[fast][bad-input][weather]") {
   for (const char* times : {R"(["2024-02-31T12:00"])", R"([""])", R"(["2024-06-01T12:00+01:00"])"}) {
     INFO(times);
-    const std::string message = error_of<regional::WeatherError>(
-        [&] { io::parse_weather(weather_with_times(times), "station.json"); });
+    const std::string message =
+        error_of<regional::WeatherError>([&] { io::parse_weather(weather_with_times(times), "station.json"); });
     CHECK_THAT(message, Catch::StartsWith("station.json: hourly.time[0]: "));
   }
 }
@@ -143,8 +143,8 @@ TEST_CASE("image sizes are strict WIDTHxHEIGHT integers within 1 to 16384", "[fa
   regional::parse_size("1280x720", w, h, "--size");
   CHECK(w == 1280);
   CHECK(h == 720);
-  for (const char* text : {"4294967297x1", "1x4294967297", "99999999999999999999x1", " 12x7", "+12x7", "12x 7",
-                           "12x7 ", "-12x7", "12x-7", "1.5x2", "0x10", "12x0", "16385x1", "x7", "12x", "12by7"}) {
+  for (const char* text : {"4294967297x1", "1x4294967297", "99999999999999999999x1", " 12x7", "+12x7", "12x 7", "12x7 ",
+                           "-12x7", "12x-7", "1.5x2", "0x10", "12x0", "16385x1", "x7", "12x", "12by7"}) {
     INFO("'" << text << "'");
     CHECK_THAT(error_of<regional::SceneError>([&] { regional::parse_size(text, w, h, "--size"); }),
                Catch::StartsWith("--size: "));
@@ -188,7 +188,8 @@ TEST_CASE("a scene file that is not a regular file or is too large is refused na
              Catch::StartsWith(fifo.string() + ": not a regular file"));
 }
 
-TEST_CASE("invalid UTF-8 in scene and weather files is refused naming the file and byte offset", "[fast][bad-input][json]") {
+TEST_CASE("invalid UTF-8 in scene and weather files is refused naming the file and byte offset",
+          "[fast][bad-input][json]") {
   // The prefix {"description": " is 17 bytes: the value's bytes start at offset 17.
   const std::pair<std::string, size_t> cases[] = {
       {"\xff", 17},              // never a UTF-8 byte
@@ -246,7 +247,8 @@ TEST_CASE("render messages name the option typed or the scene file's key", "[bad
   const std::string png = " --out " + (dir.path / "x.png").string();
   const std::pair<std::string, std::string> cases[] = {
       {"render --view nowhere" + png, "nephele: --view: 'nowhere'"},
-      {"render --scene " + scene.string() + " --out " + dir.path.string(), "nephele: " + scene.string() + ": 'view': 'nowhere'"},
+      {"render --scene " + scene.string() + " --out " + dir.path.string(),
+       "nephele: " + scene.string() + ": 'view': 'nowhere'"},
       {"render --scene " + good.string() + " --out " + dir.path.string(), "nephele: " + good.string() + ": 'time': "},
       // A bad value of an option that overrides a good file is named as the option.
       {"render --scene " + fine.string() + " --time 2023-02-29T00:00Z --out " + dir.path.string(), "nephele: --time: "},
@@ -277,11 +279,13 @@ TEST_CASE("report's lists refuse an empty item like bench's do", "[bad-input][cl
     const Run r = run_without_gl(std::string("report --quick --no-render --out /tmp/nephele_never ") + option);
     INFO(option << "\n" << r.output);
     CHECK(r.exit_code == 2);
-    CHECK_THAT(r.output, Catch::StartsWith(std::string("nephele: ") + std::string(option).substr(0, std::string(option).find(' ')) + ": "));
+    CHECK_THAT(r.output, Catch::StartsWith(std::string("nephele: ") +
+                                           std::string(option).substr(0, std::string(option).find(' ')) + ": "));
   }
 }
 
-TEST_CASE("a noise texture over the driver's 3D limit is refused naming the option the user typed", "[bad-input][cli]") {
+TEST_CASE("a noise texture over the driver's 3D limit is refused naming the option the user typed",
+          "[bad-input][cli]") {
   test::test_context();
   const int max_3d = gpu::max_3d_texture_size();
   if (max_3d >= 65536) return;  // no size the options allow exceeds this driver's limit

@@ -143,7 +143,8 @@ TEST_CASE("cyclones are cloudier than anticyclones, and the cyclone cloudiness m
     return (high - low) / third;
   };
   const double with = gap(cover::CoverParameters{}.cyclone_cloudiness), without = gap(0.0f);
-  INFO("cloudy fraction of cyclones minus anticyclones: " << with << " with the default cloudiness, " << without << " without");
+  INFO("cloudy fraction of cyclones minus anticyclones: " << with << " with the default cloudiness, " << without
+                                                          << " without");
   CHECK(with > 0.12);
   CHECK(with > without + 0.08);
 }

@@ -43,7 +43,8 @@ static_assert(kQuantisationRounding >= 4 * test::kUlp);
 
 TEST_CASE("generate writes every output readable with the right sizes and a valid sidecar", "[cli]") {
   TemporaryDirectory out;
-  const Run r = run("generate --size 8 --iterations 5 --seed 42 --coverage 0.5 --profile flat --out " + out.path.string());
+  const Run r =
+      run("generate --size 8 --iterations 5 --seed 42 --coverage 0.5 --profile flat --out " + out.path.string());
   INFO(r.output);
   REQUIRE(r.exit_code == 0);
   for (const char* face : {"px", "nx", "py", "ny", "pz", "nz"}) {
@@ -64,7 +65,8 @@ TEST_CASE("generate writes every output readable with the right sizes and a vali
   CHECK(preview.height == 16);
   // The preview is the equirect quantised linearly: round(255 v) / 255.
   for (size_t k = 0; k < preview.pixels.size(); ++k)
-    REQUIRE(preview.pixels[k] == Approx(equirect.pixels[k]).epsilon(0).margin(kQuantisationStep + kQuantisationRounding));
+    REQUIRE(preview.pixels[k] ==
+            Approx(equirect.pixels[k]).epsilon(0).margin(kQuantisationStep + kQuantisationRounding));
 
   const json::Value sidecar = json::parse(read_file(out.path / "cover.json"));
   CHECK(sidecar.at("parameters").at("seed").as_number() == 42);
@@ -106,8 +108,9 @@ TEST_CASE("generate writes only the images --files names and does not resample w
 TEST_CASE("generate --precision half writes the float faces rounded to half, with any compression", "[cli]") {
   TemporaryDirectory full, half;
   REQUIRE(run("generate --size 16 --iterations 5 --files faces,equirect --out " + full.path.string()).exit_code == 0);
-  const Run r = run("generate --size 16 --iterations 5 --files faces,equirect --precision half --exr-compression piz --out " +
-                    half.path.string());
+  const Run r =
+      run("generate --size 16 --iterations 5 --files faces,equirect --precision half --exr-compression piz --out " +
+          half.path.string());
   INFO(r.output);
   REQUIRE(r.exit_code == 0);
   // Half keeps 11 significant bits: relative rounding error at most 2^-11 (values in [0, 1]
@@ -123,8 +126,8 @@ TEST_CASE("generate --precision half writes the float faces rounded to half, wit
   const json::Value sidecar = json::parse(read_file(half.path / "cover.json"));
   CHECK(sidecar.at("files").at("exr_precision").as_string() == "half");
   CHECK(sidecar.at("files").at("exr_compression").as_string() == "piz");
-  for (const auto* arguments : {"--files faces,faces", "--files", "--files maps", "--precision double",
-                                "--exr-compression lzma"}) {
+  for (const auto* arguments :
+       {"--files faces,faces", "--files", "--files maps", "--precision double", "--exr-compression lzma"}) {
     const Run bad = run(std::string("generate --size 8 ") + arguments + " --out " + half.path.string() + "/x");
     INFO(arguments << ": " << bad.output);
     CHECK(bad.exit_code == 2);
@@ -212,8 +215,10 @@ TEST_CASE("without an OpenGL 4.5 context generate exits with code 3 naming what 
 TEST_CASE("render writes a tone-mapped PNG and a sidecar listing the passes", "[cli][render]") {
   TemporaryDirectory out;
   const std::string png = (out.path / "view.png").string();
-  const Run r = run("render --view bantiger --size 24x12 --view-steps 6 --light-steps 2 --time 2026-06-21T15:00Z "
-                    "--weather " + std::string(NEPHELE_SOURCE_DIR) + "/scenes/weather/bern-summer.json --out " + png);
+  const Run r =
+      run("render --view bantiger --size 24x12 --view-steps 6 --light-steps 2 --time 2026-06-21T15:00Z "
+          "--weather " +
+          std::string(NEPHELE_SOURCE_DIR) + "/scenes/weather/bern-summer.json --out " + png);
   INFO(r.output);
   REQUIRE(r.exit_code == 0);
   const auto image = io::read_image(png);
@@ -240,7 +245,8 @@ TEST_CASE("render writes a tone-mapped PNG and a sidecar listing the passes", "[
   CHECK(sidecar.at("steps").at("resolution_divisor").as_number() == quality.resolution_divisor);
 }
 
-TEST_CASE("render --quality final renders at full resolution with the final steps unless a step is given", "[cli][render]") {
+TEST_CASE("render --quality final renders at full resolution with the final steps unless a step is given",
+          "[cli][render]") {
   TemporaryDirectory out;
   const std::string png = (out.path / "view.png").string();
   const Run r = run("render --view gurten --size 16x8 --quality final --light-steps 3 --terrain flat --out " + png);
@@ -262,9 +268,11 @@ TEST_CASE("render rejects bad input with code 2 naming the key or option", "[cli
   const fs::path typed = out.path / "typed.json";
   std::ofstream(typed) << R"({"view": "gurten", "fov": "wide", "outputs": ["a.png"]})";
   const fs::path broken_weather = out.path / "weather.json";
-  std::ofstream(broken_weather) << R"({"latitude": 47, "longitude": 7, "hourly": {"time": ["2026-06-21T00:00"], "cloud_cover": [50]}})";
+  std::ofstream(broken_weather)
+      << R"({"latitude": 47, "longitude": 7, "hourly": {"time": ["2026-06-21T00:00"], "cloud_cover": [50]}})";
   const fs::path bad_cape = out.path / "cape.json";
-  std::ofstream(bad_cape) << R"({"latitude": 47, "longitude": 7, "hourly": {"time": ["2026-06-21T00:00"], "cloud_cover": [50],
+  std::ofstream(bad_cape)
+      << R"({"latitude": 47, "longitude": 7, "hourly": {"time": ["2026-06-21T00:00"], "cloud_cover": [50],
     "cloud_cover_low": [50], "cloud_cover_mid": [0], "cloud_cover_high": [0], "cape": [-5]}})";
   const std::string weather = std::string(NEPHELE_SOURCE_DIR) + "/scenes/weather/bern-summer.json";
   const std::string png = " --out " + (out.path / "x.png").string();
@@ -276,11 +284,13 @@ TEST_CASE("render rejects bad input with code 2 naming the key or option", "[cli
       {"render --view gurten --time yesterday" + png, "time"},
       {"render --view gurten --weather " + weather + " --time 2027-01-01T00:00Z" + png, "outside the file's range"},
       {"render --view gurten --weather " + broken_weather.string() + png, "hourly.cloud_cover_low"},
-      {"render --view gurten --weather " + bad_cape.string() + png, "hourly.cape[0]: -5 is outside the allowed range 0 to 10000"},
+      {"render --view gurten --weather " + bad_cape.string() + png,
+       "hourly.cape[0]: -5 is outside the allowed range 0 to 10000"},
       {"render --view gurten --out " + (out.path / "x.jpg").string(), ".png or .exr"},
       {"render --view gurten --fov 200" + png, "--fov"},
       {"render --view gurten --quality best" + png, "--quality"},
-      {"render --scene " + (out.path / "quality.json").string() + " --out " + out.path.string(), "'quality': 'best' is not a quality (allowed: draft|default|final)"},
+      {"render --scene " + (out.path / "quality.json").string() + " --out " + out.path.string(),
+       "'quality': 'best' is not a quality (allowed: draft|default|final)"},
   };
   std::ofstream(out.path / "quality.json") << R"({"view": "gurten", "quality": "best", "outputs": ["a.png"]})";
   for (const auto& [arguments, expected] : cases) {

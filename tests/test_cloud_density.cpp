@@ -23,9 +23,9 @@ static_assert(kDensityRounding >= 8 * kUlp);
 // Phase functions integrated by the midpoint rule over 200000 float nu. The midpoint rule errs by
 // h^2/24 x 2 pi (p'(1) - p'(-1)), 5.6e-9 for Henyey-Greenstein g = 0.8 (p'(1) = 215), far less
 // for Rayleigh. The float nu = -1 + 2 (i + 0.5) / n is off by the division's rounding of a value
-// up to 2 (2^-23 = 1.2e-7; the subtraction is exact or rounds below that), which moves the integral by up to 2 pi (p(1) - p(-1)) x that, 2.7e-6 for g = 0.8
-// (p(1) = 3.58), and evaluating p in float adds a few roundings (5 x 2^-24 relative): 3e-6 in all
-// (1.3e-6 measured). 2e-3 is about 700x looser (kept as set), for HG and the cloud phase (0.7 HG
+// up to 2 (2^-23 = 1.2e-7; the subtraction is exact or rounds below that), which moves the integral by up to 2 pi (p(1)
+// - p(-1)) x that, 2.7e-6 for g = 0.8 (p(1) = 3.58), and evaluating p in float adds a few roundings (5 x 2^-24
+// relative): 3e-6 in all (1.3e-6 measured). 2e-3 is about 700x looser (kept as set), for HG and the cloud phase (0.7 HG
 // 0.8 + 0.3 HG -0.3, smaller).
 constexpr double kPhaseIntegral = 2e-3;
 static_assert(kPhaseIntegral >= 2 * M_PI * 3.58 * 2 * kUlp + 5 * kUlp);
@@ -69,7 +69,8 @@ TEST_CASE("more coverage never thins a heaped cloud", "[fast][density]") {
     const float h = u(rng), shape = u(rng), detail = u(rng), c = u(rng);
     const float more = std::min(1.0f, c + 0.1f);
     for (int type : {CLOUD_CIRROCUMULUS, CLOUD_STRATOCUMULUS})
-      REQUIRE(cloud_density(type, h, more, shape, detail) >= cloud_density(type, h, c, shape, detail) - kDensityRounding);
+      REQUIRE(cloud_density(type, h, more, shape, detail) >=
+              cloud_density(type, h, c, shape, detail) - kDensityRounding);
   }
 }
 
@@ -80,7 +81,8 @@ TEST_CASE("the sea of fog is full below its undulating top and ends within the e
     const float top = 1.0f - FOG_TOP_UNDULATION * shape;
     // Below the edge: c (0.85 + 0.15 detail), whatever the height.
     for (float h : {0.0f, 0.4f, top - FOG_TOP_EDGE})
-      CHECK(cloud_density(CLOUD_FOG, h, 0.8f, shape, 0.5f) == Approx(0.8f * 0.925f).epsilon(0).margin(kDensityRounding));
+      CHECK(cloud_density(CLOUD_FOG, h, 0.8f, shape, 0.5f) ==
+            Approx(0.8f * 0.925f).epsilon(0).margin(kDensityRounding));
     // Halfway up the edge the smoothstep is 1/2; at and above the top nothing.
     CHECK(cloud_density(CLOUD_FOG, top - 0.5f * FOG_TOP_EDGE, 1.0f, shape, 1.0f) ==
           Approx(0.5f).epsilon(0).margin(kDensityRounding));
@@ -92,7 +94,8 @@ TEST_CASE("the sea of fog is full below its undulating top and ends within the e
   std::uniform_real_distribution<float> u(0.0f, 1.0f);
   for (int k = 0; k < 2000; ++k) {
     const float h = u(rng), shape = u(rng), more = std::min(1.0f, shape + 0.1f);
-    REQUIRE(cloud_density(CLOUD_FOG, h, 1.0f, more, 0.5f) <= cloud_density(CLOUD_FOG, h, 1.0f, shape, 0.5f) + kDensityRounding);
+    REQUIRE(cloud_density(CLOUD_FOG, h, 1.0f, more, 0.5f) <=
+            cloud_density(CLOUD_FOG, h, 1.0f, shape, 0.5f) + kDensityRounding);
   }
 }
 
@@ -118,7 +121,8 @@ TEST_CASE("phase functions integrate to one over the sphere", "[fast][atmosphere
   CHECK(cloud == Approx(1.0).epsilon(kPhaseIntegral));
 }
 
-TEST_CASE("vertical transmittance matches the scale-height integral and vanishes below the horizon", "[fast][atmosphere]") {
+TEST_CASE("vertical transmittance matches the scale-height integral and vanishes below the horizon",
+          "[fast][atmosphere]") {
   const float radius = 6371000.0f;
   const vec3 sea_level(0.0f, 0.0f, radius);
   // Straight up, the optical depth is beta_R H_R + beta_M H_M (to within e^{-100 km/H}). The

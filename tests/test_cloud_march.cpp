@@ -70,13 +70,15 @@ CloudLayer overcast_sheet(CoverageChannel channel, float base_m, const char* nam
 double shadow_test_time() { return core::parse_utc_time("2026-06-21T11:30Z"); }
 
 // A shadow map (layer -1: the sky's) made on the CPU, size x size texels.
-std::vector<float> cpu_shadow_map(int size, int layer, const glsl::MarchParams& params, const glsl::MarchSources& sources) {
+std::vector<float> cpu_shadow_map(int size, int layer, const glsl::MarchParams& params,
+                                  const glsl::MarchSources& sources) {
   const glm::vec3 centre(0.0f, 0.0f, -(params.earth_radius + params.camera_altitude));
   std::vector<float> map;
   int loops = 0;
   for (int j = 0; j < size; ++j)
     for (int i = 0; i < size; ++i)
-      map.push_back(glsl::shadow_map_texel(glm::vec2((i + 0.5f) / size, (j + 0.5f) / size), centre, layer, loops, params, sources));
+      map.push_back(glsl::shadow_map_texel(glm::vec2((i + 0.5f) / size, (j + 0.5f) / size), centre, layer, loops,
+                                           params, sources));
   return map;
 }
 
@@ -130,10 +132,11 @@ TEST_CASE("the marcher on the GPU agrees with its C++ twin pixel by pixel", "[re
       for (int j = 0; j < size; ++j)
         for (int i = 0; i < size; ++i) {
           int loops = 0;
-          const float cpu = glsl::shadow_map_texel(glm::vec2((i + 0.5f) / size, (j + 0.5f) / size), centre, layer, loops,
-                                                   params, sources);
-          const float g = layer >= 0 ? gpu.shadow_maps[(static_cast<size_t>(params.layers[layer].shadow_map) * 16 + j) * 16 + i]
-                                     : gpu.sky_shadow_map[static_cast<size_t>(j) * 4 + i];
+          const float cpu = glsl::shadow_map_texel(glm::vec2((i + 0.5f) / size, (j + 0.5f) / size), centre, layer,
+                                                   loops, params, sources);
+          const float g =
+              layer >= 0 ? gpu.shadow_maps[(static_cast<size_t>(params.layers[layer].shadow_map) * 16 + j) * 16 + i]
+                         : gpu.sky_shadow_map[static_cast<size_t>(j) * 4 + i];
           INFO("map of layer " << layer << " texel " << i << ", " << j << ": GPU " << g << ", CPU " << cpu);
           CHECK(std::abs(g - cpu) <= tolerance * std::max(cpu, 1e-6f));
         }
@@ -145,7 +148,8 @@ TEST_CASE("the marcher on the GPU agrees with its C++ twin pixel by pixel", "[re
       for (int x = 0; x < cam.width; ++x) {
         int loops = 0;
         float ground_distance = 0;
-        const glm::vec4 cpu = glsl::render_pixel(glm::ivec2(x, y), glm::ivec2(cam.width, cam.height), params, loops, ground_distance, sources);
+        const glm::vec4 cpu = glsl::render_pixel(glm::ivec2(x, y), glm::ivec2(cam.width, cam.height), params, loops,
+                                                 ground_distance, sources);
         if (glsl::loop_limited(loops)) ++limited;
         const float* g = &gpu.radiance.pixels[(static_cast<size_t>(y) * cam.width + x) * 4];
         if (cpu.w > 0.5f) ++cloudy;
@@ -216,7 +220,8 @@ TEST_CASE("a layer under an overcast layer reads the depth through it from its s
   // top), and that is at least the overcast sheet's vertical depth (sheet_least_depth).
   for (int k = 0; k < 20; ++k) {
     const glm::vec2 uv((3 + k % 5 * 6 + 0.5f) / size, (4 + k / 5 * 6 + 0.5f) / size);
-    const glm::vec3 top = glsl::shadow_map_origin((2.0f * uv - 1.0f) * params.shadow_extent, centre, params.layers[0].top, params);
+    const glm::vec3 top =
+        glsl::shadow_map_origin((2.0f * uv - 1.0f) * params.shadow_extent, centre, params.layers[0].top, params);
     const glm::vec3 p = top - (100.0f + 25.0f * k) / params.sun.z * params.sun;  // 100 to 575 m below the top
     int n = 0;
     const float marched = glsl::layers_shadow_depth(p, centre, 0, 2100.0f, n, params, sources);
@@ -230,10 +235,12 @@ TEST_CASE("a layer under an overcast layer reads the depth through it from its s
   glsl::MarchParams unshaded = params;
   unshaded.layers[0].shadow_map = -1;
   const glm::vec3 d = glm::normalize(glm::vec3(0.2f, 0.5f, 1.0f));
-  const glm::vec4 b = glsl::ray_shell(glm::vec3(0.0f), d, centre, params.earth_radius + 1500.0f, params.earth_radius + 2100.0f, 1e6f);
+  const glm::vec4 b =
+      glsl::ray_shell(glm::vec3(0.0f), d, centre, params.earth_radius + 1500.0f, params.earth_radius + 2100.0f, 1e6f);
   const auto march = [&](const glsl::MarchParams& m) {
     glsl::CloudMarch c{glm::vec3(0.0f), 1.0f, 0.0f, 0.0f, 0};
-    glsl::march_interval(b.z, b.w, 0, false, d, centre, 0.5f, glm::dot(d, m.sun), c, m, sources);  // out of the inner sphere
+    glsl::march_interval(b.z, b.w, 0, false, d, centre, 0.5f, glm::dot(d, m.sun), c, m,
+                         sources);  // out of the inner sphere
     return c;
   };
   const glsl::CloudMarch shaded = march(params), open = march(unshaded);
@@ -314,21 +321,23 @@ TEST_CASE("the air below an overcast layer scatters no direct sunlight: a pixel 
     const glm::ivec2 pixel(2 * k + 1, k);
     int n = 0;
     float ground_distance = 0;
-    const glm::vec4 with = glsl::render_pixel(pixel, glm::ivec2(down.width, down.height), params, n, ground_distance, sources);
-    const glm::vec4 without = glsl::render_pixel(pixel, glm::ivec2(down.width, down.height), unshaded, n, ground_distance, sources);
+    const glm::vec4 with =
+        glsl::render_pixel(pixel, glm::ivec2(down.width, down.height), params, n, ground_distance, sources);
+    const glm::vec4 without =
+        glsl::render_pixel(pixel, glm::ivec2(down.width, down.height), unshaded, n, ground_distance, sources);
     // The ray's clear-sky in-scattering to the ground (no cloud on it: opacity 0).
     const glm::vec3 d = glsl::view_direction(pixel, glm::ivec2(down.width, down.height), params);
     const glm::vec2 ground = glsl::ray_sphere(glm::vec3(0.0f), d, centre, params.earth_radius);
     REQUIRE(ground.x > 0.0f);
     REQUIRE(with.w == 0.0f);
     glm::vec3 total, split, t_total, t_split;
-    glsl::sky_single_scattering(-centre, d, ground.x, 0.0f, params.sun, params.earth_radius, params.sky_steps, total, split,
-                                t_total, t_split);
+    glsl::sky_single_scattering(-centre, d, ground.x, 0.0f, params.sun, params.earth_radius, params.sky_steps, total,
+                                split, t_total, t_split);
     // The loss is that in-scattering times 1 - e^-tau, tau >= least_depth; float rounding of
     // the sums (16 steps) is far below the e^-6.3 margin.
     for (int c = 0; c < 3; ++c) {
-      INFO("pixel " << pixel.x << ", " << pixel.y << " channel " << c << ": with " << with[c] << ", without " << without[c]
-                    << ", clear-sky in-scattering " << total[c]);
+      INFO("pixel " << pixel.x << ", " << pixel.y << " channel " << c << ": with " << with[c] << ", without "
+                    << without[c] << ", clear-sky in-scattering " << total[c]);
       CHECK(total[c] > 0.0f);
       const float lost = without[c] - with[c];
       CHECK(lost <= total[c] * (1.0f + 1e-5f));

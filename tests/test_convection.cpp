@@ -45,8 +45,8 @@ ConvectiveKind kind(const WeatherSample& s) { return convection_from_weather(s, 
 
 WeatherField uniform_convective_field(float strength) {
   WeatherField f{8, 160000.0, std::vector<float>(static_cast<size_t>(coverage_channels) * 64, 0.0f)};
-  std::fill(f.values.begin() + int(CoverageChannel::convective) * 64, f.values.begin() + (int(CoverageChannel::convective) + 1) * 64,
-            strength);
+  std::fill(f.values.begin() + int(CoverageChannel::convective) * 64,
+            f.values.begin() + (int(CoverageChannel::convective) + 1) * 64, strength);
   return f;
 }
 
@@ -54,12 +54,14 @@ WeatherField uniform_convective_field(float strength) {
 std::string open_meteo(const std::string& extra) {
   return R"({"latitude": 46.948, "longitude": 7.4475, "hourly": {"time": ["2026-06-21T14:00", "2026-06-21T15:00"],
     "cloud_cover": [40, 40], "cloud_cover_low": [30, 30], "cloud_cover_mid": [0, 0], "cloud_cover_high": [0, 0],
-    "wind_speed_10m": [10, 10], "wind_direction_10m": [240, 240])" + extra + "}}";
+    "wind_speed_10m": [10, 10], "wind_direction_10m": [240, 240])" +
+         extra + "}}";
 }
 
 }  // namespace
 
-TEST_CASE("CAPE, lifted index and thunderstorm codes call for cumulonimbus or towering cumulus on their thresholds", "[fast][convection]") {
+TEST_CASE("CAPE, lifted index and thunderstorm codes call for cumulonimbus or towering cumulus on their thresholds",
+          "[fast][convection]") {
   // Cumulonimbus: CAPE >= 1000 J/kg, LI <= -2 K, codes 95-99; just below each: towering or none.
   CHECK(kind(unstable(1000)) == ConvectiveKind::cumulonimbus);
   CHECK(kind(unstable(999.9)) == ConvectiveKind::towering);
@@ -79,7 +81,8 @@ TEST_CASE("CAPE, lifted index and thunderstorm codes call for cumulonimbus or to
   CHECK(convection_from_weather(unstable(1500), {}).reason.find("cape") != std::string::npos);
 }
 
-TEST_CASE("without weather, convection comes from the low cover in the afternoon of local solar time only", "[fast][convection]") {
+TEST_CASE("without weather, convection comes from the low cover in the afternoon of local solar time only",
+          "[fast][convection]") {
   // 7.5 degrees east: solar time = UTC + 30 min. 11:29 UTC is 11:59 solar, 11:30 UTC 12:00.
   const double day = core::parse_utc_time("2026-06-21T00:00Z");
   auto at = [&](double low, double utc_hours) { return convection_from_cover(low, day + utc_hours * 3600, 7.5).kind; };
@@ -101,7 +104,8 @@ TEST_CASE("without weather, convection comes from the low cover in the afternoon
   CHECK(f.max_of(int(CoverageChannel::convective)) == 0.0f);
 }
 
-TEST_CASE("blended convective strengths place cumulonimbus from 0.75 and towering cumulus from 0.25", "[fast][convection]") {
+TEST_CASE("blended convective strengths place cumulonimbus from 0.75 and towering cumulus from 0.25",
+          "[fast][convection]") {
   CHECK(kind_of_strength(convective_strength(ConvectiveKind::cumulonimbus)) == ConvectiveKind::cumulonimbus);
   CHECK(kind_of_strength(convective_strength(ConvectiveKind::towering)) == ConvectiveKind::towering);
   CHECK(kind_of_strength(0.75) == ConvectiveKind::cumulonimbus);
@@ -112,7 +116,10 @@ TEST_CASE("blended convective strengths place cumulonimbus from 0.75 and towerin
   CHECK(kind_of_strength(0.5 * (convective_strength(ConvectiveKind::cumulonimbus) + 0.0)) == ConvectiveKind::towering);
 }
 
-TEST_CASE("placement is deterministic from the seed, in the sector of the anchor, clear of each other, and empty without convection", "[fast][convection]") {
+TEST_CASE(
+    "placement is deterministic from the seed, in the sector of the anchor, clear of each other, and empty without "
+    "convection",
+    "[fast][convection]") {
   CHECK(place_convective_clouds(uniform_convective_field(0.0f), 12, 60, 1, 540).empty());
   CHECK(place_convective_clouds(uniform_convective_field(0.2f), 12, 60, 1, 540).empty());
   const auto a = place_convective_clouds(uniform_convective_field(1.0f), 12, 60, 7, 540);
@@ -157,7 +164,8 @@ TEST_CASE("placement is deterministic from the seed, in the sector of the anchor
   }
 }
 
-TEST_CASE("weather files give cape, lifted_index and weather_code when present and refuse bad values naming the field", "[fast][convection][weather][bad-input]") {
+TEST_CASE("weather files give cape, lifted_index and weather_code when present and refuse bad values naming the field",
+          "[fast][convection][weather][bad-input]") {
   const WeatherSeries w = io::parse_weather(
       open_meteo(R"(, "cape": [400, 1600], "lifted_index": [1, -3], "weather_code": [3, 95])"), "bern.json");
   const double t = core::parse_utc_time("2026-06-21T14:30Z");
@@ -193,7 +201,8 @@ TEST_CASE("weather files give cape, lifted_index and weather_code when present a
   }
 }
 
-TEST_CASE("a scene without convection computes no convective volume and one with convection computes them", "[convection][render]") {
+TEST_CASE("a scene without convection computes no convective volume and one with convection computes them",
+          "[convection][render]") {
   test::test_context();
   Scene scene;
   scene.width = 16;
@@ -220,7 +229,8 @@ TEST_CASE("a scene without convection computes no convective volume and one with
   const auto [storm, storm_volumes] = passes_with("[2000, 2000]");
   CHECK(storm_volumes);
   REQUIRE(!storm.convective_clouds.empty());
-  CHECK(count(storm.passes, "convective_volume cumulonimbus 128^3") == static_cast<long>(storm.convective_clouds.size()));
+  CHECK(count(storm.passes, "convective_volume cumulonimbus 128^3") ==
+        static_cast<long>(storm.convective_clouds.size()));
   CHECK(count(storm.passes, "march convective cumulonimbus") == static_cast<long>(storm.convective_clouds.size()));
   CHECK(storm.convection_reason.find("cape >= 1000") != std::string::npos);
   // The render sidecar says why and where: one entry per placed cloud, none without convection.
@@ -233,7 +243,8 @@ TEST_CASE("a scene without convection computes no convective volume and one with
   CHECK(io::scene_sidecar(quiet, scene).at("convection").at("clouds").as_array().empty());
 }
 
-TEST_CASE("a pixel towards a placed cumulonimbus's column is opaque, and clear sky without it", "[convection][render]") {
+TEST_CASE("a pixel towards a placed cumulonimbus's column is opaque, and clear sky without it",
+          "[convection][render]") {
   test::test_context();
   // One cumulonimbus (the scaled example) 25 km north of a camera at 860 m, its x axis north.
   auto clouds = place_convective_clouds(uniform_convective_field(1.0f), 0, 0, 3, 540);

@@ -61,7 +61,7 @@ cover::CoverParameters small(int size, int iterations = 50) {
   p.curl_mode = cover::CurlMode::sampled;
   p.step = 0.006f;
   p.profile = cover::flat_profile();  // one threshold for the sphere (test_latitude_profile.cpp: the bands)
-  p.density = {3.0f, 6, 2.0f, 0.5f};   // the octaves kDensity is derived for (the default before climate.md)
+  p.density = {3.0f, 6, 2.0f, 0.5f};  // the octaves kDensity is derived for (the default before climate.md)
   return p;
 }
 
@@ -98,7 +98,8 @@ TEST_CASE("curl pass agrees with the CPU twin and its vectors are tangent", "[pa
     REQUIRE(std::abs(dot(gpu, n)) < kTangentRelative * (1.0f + length(gpu)));
     // The cyclonic depth: fBm values (below 1) mixed by weights below 1; its rounding is that
     // of the fBm values, kFbmValueRounding, plus m's (portable_asin, kPortableAsin x a = 3).
-    REQUIRE(std::abs(curl[k].w - curl_flow_shifted(n, c, vec3(0.0f)).w) < test::kFbmValueRounding + 3 * test::kPortableAsin);
+    REQUIRE(std::abs(curl[k].w - curl_flow_shifted(n, c, vec3(0.0f)).w) <
+            test::kFbmValueRounding + 3 * test::kPortableAsin);
   }
 }
 
@@ -148,9 +149,11 @@ TEST_CASE("density and coverage passes agree with the CPU twin", "[pass]") {
     // The cyclonic factor 1 + k c (c from the GPU's curl field on both sides) scales the
     // density's error and adds two roundings of the product.
     const float factor = 1.0f + p.cyclone_cloudiness * curl[k].w;
-    const float expected = shaped_density(cover_density(vec3(warp[k]), params), curl[k].w, p.cyclone_cloudiness, 0.0f, 0.0f);
+    const float expected =
+        shaped_density(cover_density(vec3(warp[k]), params), curl[k].w, p.cyclone_cloudiness, 0.0f, 0.0f);
     REQUIRE(density[k] == Approx(expected).epsilon(0).margin(kDensity * factor + 4 * kUlp * expected));
-    REQUIRE(covered[k] == Approx(cover_from_density(density[k], c.threshold, c.density_max)).epsilon(0).margin(kCoverRemap));
+    REQUIRE(covered[k] ==
+            Approx(cover_from_density(density[k], c.threshold, c.density_max)).epsilon(0).margin(kCoverRemap));
   }
 }
 

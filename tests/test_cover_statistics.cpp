@@ -49,7 +49,8 @@ TEST_CASE("coverage by band counts the cloudy solid angle of each band", "[fast]
   std::vector<float> faces(6 * size * size);
   for (int f = 0; f < 6; ++f)
     for (int j = 0; j < size; ++j)
-      for (int i = 0; i < size; ++i) faces[(f * size + j) * size + i] = glsl::texel_direction(f, i, j, size).z < 0.0f ? 1.0f : 0.0f;
+      for (int i = 0; i < size; ++i)
+        faces[(f * size + j) * size + i] = glsl::texel_direction(f, i, j, size).z < 0.0f ? 1.0f : 0.0f;
   const std::vector<double> c = studies::band_coverage_faces(faces, size, 18);
   for (int b = 0; b < 18; ++b) CHECK(c[b] == (b < 9 ? 1.0 : 0.0));
 }
@@ -166,10 +167,10 @@ TEST_CASE("the climatology notebook runs headless on a small cover and draws its
       std::filesystem::path(__FILE__).parent_path().parent_path() / "notebooks" / "climatology.ipynb";
   REQUIRE(std::filesystem::exists(notebook));
   const std::filesystem::path figure = out.path / "climatology.png";
-  const test::Run nb = test::run_command(
-      "NEPHELE_EXECUTABLE=" + std::string(NEPHELE_EXECUTABLE) + " NEPHELE_FIGURE=" + figure.string() +
-      " jupyter nbconvert --to notebook --execute --ExecutePreprocessor.timeout=300 " + notebook.string() +
-      " --output-dir " + out.path.string() + " --output executed.ipynb");
+  const test::Run nb =
+      test::run_command("NEPHELE_EXECUTABLE=" + std::string(NEPHELE_EXECUTABLE) + " NEPHELE_FIGURE=" + figure.string() +
+                        " jupyter nbconvert --to notebook --execute --ExecutePreprocessor.timeout=300 " +
+                        notebook.string() + " --output-dir " + out.path.string() + " --output executed.ipynb");
   INFO(nb.output);
   REQUIRE(nb.exit_code == 0);
   CHECK(std::filesystem::file_size(figure) > 10000);

@@ -41,7 +41,9 @@ constexpr double kSmallTexelRelative = 1e-3;
 static_assert(kSmallTexelRelative >= 3.0 / (1024.0 * 1024.0) + (2.0 / 1024) * (2.0 / 1024) / 4);
 
 // Table 8.19 as written in the specification: (sc, tc, ma) for each face.
-struct TableEntry { float sc, tc, ma; };
+struct TableEntry {
+  float sc, tc, ma;
+};
 TableEntry table_8_19(int face, vec3 r) {
   switch (face) {
     case 0: return {-r.z, -r.y, r.x};

@@ -56,7 +56,8 @@ void tangent_basis(vec3 n, vec3& e1, vec3& e2) {
 double zonal_derivative(double lat, int cells, double a) {
   if (cells == 0) return a * std::cos(a * lat);
   double product = 3.0 * std::cos(lat);
-  for (int k = 1; k < cells; ++k) product *= 1.0 - std::pow(std::sin(lat), 2) / std::pow(std::sin(M_PI / 2 * k / cells), 2);
+  for (int k = 1; k < cells; ++k)
+    product *= 1.0 - std::pow(std::sin(lat), 2) / std::pow(std::sin(M_PI / 2 * k / cells), 2);
   return product;
 }
 
@@ -116,7 +117,8 @@ TEST_CASE("the curl field is divergence-free: its flux through closed loops vani
         const double theta = 2 * M_PI * (k + 0.5) / samples;
         const vec3 radial = static_cast<float>(std::cos(theta)) * e1 + static_cast<float>(std::sin(theta)) * e2;
         const vec3 q = static_cast<float>(std::cos(radius)) * centre + static_cast<float>(std::sin(radius)) * radial;
-        const vec3 outward = -static_cast<float>(std::sin(radius)) * centre + static_cast<float>(std::cos(radius)) * radial;
+        const vec3 outward =
+            -static_cast<float>(std::sin(radius)) * centre + static_cast<float>(std::cos(radius)) * radial;
         const vec3 v = curl_velocity(q, c);
         flux += dot(v, outward) * ds;
         magnitude += length(v) * ds;
@@ -156,15 +158,16 @@ TEST_CASE("curl_velocity equals s n x grad phi of the documented stream function
     const vec3 actual = curl_velocity(n, c);
     // Truncation: central differences of |p - feature| err by (h f_k / F1_k)^2 per octave;
     // rounding: phi is evaluated to ~1e-7 (kFbmValueRounding), twice, divided by 2h.
-    const float tolerance = kFbmValueRounding / h + static_cast<float>(gap) + nephele::test::curl_octave_bound(n, c, [&](float f, float f1) {
-      return 2.0f * (h * f / f1) * (h * f / f1);
-    });
+    const float tolerance =
+        kFbmValueRounding / h + static_cast<float>(gap) +
+        nephele::test::curl_octave_bound(n, c, [&](float f, float f1) { return 2.0f * (h * f / f1) * (h * f / f1); });
     REQUIRE(length(actual - expected) < tolerance);
   }
   CHECK(compared > 1000);
 }
 
-TEST_CASE("the storm-track envelope is 1 at 50 degrees, 1 - f at the equator, and its derivative is dA/dz", "[fast][curl]") {
+TEST_CASE("the storm-track envelope is 1 at 50 degrees, 1 - f at the equator, and its derivative is dA/dz",
+          "[fast][curl]") {
   // Values: float exp and products, a few ulp of 1. Derivative: the central difference with
   // h = 1e-3 errs by h^2 |A^(3)| / 6, below 3.3e-4 (|A^(3)| < 2000 for f = 1: three factors
   // 4 z u / sigma of at most 16 each), plus rounding 2 ulp / 2h = 1.2e-4: 1e-3 bounds both.
@@ -185,7 +188,8 @@ TEST_CASE("the storm-track envelope is 1 at 50 degrees, 1 - f at the equator, an
   }
 }
 
-TEST_CASE("the cyclonic depth is the vortex part of the stream function with the sign of the Coriolis parameter", "[fast][curl]") {
+TEST_CASE("the cyclonic depth is the vortex part of the stream function with the sign of the Coriolis parameter",
+          "[fast][curl]") {
   // c = A (w1 (1 + m)/2 + w2 (1 - m)/2), written out here from the fBm values.
   const CurlParams c = default_curl(4);
   std::mt19937 rng(8);
@@ -256,7 +260,7 @@ TEST_CASE("the default flow is continuous through the poles where a = 2.5 whirls
   REQUIRE(smooth.mix_frequency == 3.0f);
   CurlParams whirl = smooth;
   whirl.mix_frequency = 2.5f;
-  whirl.zonal_cells = 0;  // the zonal winds follow m: P m' stays finite at the pole
+  whirl.zonal_cells = 0;    // the zonal winds follow m: P m' stays finite at the pole
   whirl.prevailing = 3.0f;  // P - w >= 3 - (1 + 0.3 ln 27) = 1.0: the whirl cannot cancel
   for (float pole : {1.0f, -1.0f}) {
     const float coarse = gap(smooth, pole, 1e-2f), fine = gap(smooth, pole, 1e-4f);

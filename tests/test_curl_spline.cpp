@@ -166,8 +166,12 @@ ModeComparison compare_modes(int size, int curl_size = cover::CoverParameters().
 
 TEST_CASE("explore: spline error against the procedural curl by curl size", "[.explore]") {
   const auto points = random_directions(20000, 7);
-  struct Variant { int octaves; float frequency, smoothing; };
-  for (const Variant v : {Variant{2, 2.0f, 0.3f}, Variant{1, 1.0f, 0.3f}, Variant{1, 0.5f, 0.3f}, Variant{2, 1.0f, 1.0f}}) {
+  struct Variant {
+    int octaves;
+    float frequency, smoothing;
+  };
+  for (const Variant v :
+       {Variant{2, 2.0f, 0.3f}, Variant{1, 1.0f, 0.3f}, Variant{1, 0.5f, 0.3f}, Variant{2, 1.0f, 1.0f}}) {
     const int octaves = v.octaves;
     cover::CoverParameters p;
     p.potential.octaves = octaves;
@@ -179,14 +183,16 @@ TEST_CASE("explore: spline error against the procedural curl by curl size", "[.e
       const auto start = std::chrono::steady_clock::now();
       const VelocityError e = spline_error(p, points);
       const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-      WARN("octaves " << octaves << " f " << v.frequency << " lambda " << v.smoothing << " cells " << cells << ": max " << e.max << " away " << e.max_away << " rms " << e.rms << " speed " << e.speed
-                      << " order(max) " << (last > 0 ? std::log2(last / e.max) : 0.0) << " (" << ms << " ms)");
+      WARN("octaves " << octaves << " f " << v.frequency << " lambda " << v.smoothing << " cells " << cells << ": max "
+                      << e.max << " away " << e.max_away << " rms " << e.rms << " speed " << e.speed << " order(max) "
+                      << (last > 0 ? std::log2(last / e.max) : 0.0) << " (" << ms << " ms)");
       last = e.max;
     }
   }
 }
 
-TEST_CASE("the spline pass, the curl pass and the warp in curl mode spline agree with their CPU twins", "[spline][gpu]") {
+TEST_CASE("the spline pass, the curl pass and the warp in curl mode spline agree with their CPU twins",
+          "[spline][gpu]") {
   test::test_context();
   cover::CoverParameters p;
   p.size = 16;
@@ -232,7 +238,8 @@ TEST_CASE("the spline pass, the curl pass and the warp in curl mode spline agree
       kComponentsToLength * spline_rounding(largest, largest_spread(gpu_coefficients, p.curl_size), p.curl_size);
   worst = 0;
   for (size_t k = 0; k < curl_field.size(); ++k)
-    worst = std::max(worst, static_cast<double>(length(vec3(curl_field[k]) - spline_velocity(vec3(identity[k]), spline))));
+    worst =
+        std::max(worst, static_cast<double>(length(vec3(curl_field[k]) - spline_velocity(vec3(identity[k]), spline))));
   INFO("curl pass: largest difference " << worst << ", bound " << value_bound);
   CHECK(worst <= value_bound);
 
@@ -287,9 +294,9 @@ TEST_CASE("the spline reproduces cubic polynomials of the face coordinates and n
     auto field = [&](int face, double s, double t) {
       const double f = 0.1 * face;
       return glm::dvec4(1.0 + f + 0.5 * s - 0.3 * t + 0.2 * s * s - 0.1 * s * t + 0.4 * t * t,
-                   0.3 * s * s * s - 0.2 * s * s * t + 0.1 * s * t * t - 0.25 * t * t * t - f * s,
-                   0.2 * s * s * s * t * t * t - 0.3 * s * s * t * t + f * t * t * t + quartic * s * s * s * s,
-                   -0.5 + 0.15 * s * t * t * t);
+                        0.3 * s * s * s - 0.2 * s * s * t + 0.1 * s * t * t - 0.25 * t * t * t - f * s,
+                        0.2 * s * s * s * t * t * t - 0.3 * s * s * t * t + f * t * t * t + quartic * s * s * s * s,
+                        -0.5 + 0.15 * s * t * t * t);
     };
     double largest_sample = 0;
     const auto coefficients = cover::spline_coefficients(cells, [&](int face, int i, int j) {
@@ -302,7 +309,8 @@ TEST_CASE("the spline reproduces cubic polynomials of the face coordinates and n
     // prefilter), the prefilter's and one spline value's (which includes the rounding of x, the only way the float face
     // coordinates given to both the spline and the expected value can differ).
     const double largest = largest_component(coefficients);
-    const double tolerance = kPrefilterGain * kCpuAlone * kUlp * largest_sample + prefilter_rounding(largest_sample, kCpuAlone) +
+    const double tolerance = kPrefilterGain * kCpuAlone * kUlp * largest_sample +
+                             prefilter_rounding(largest_sample, kCpuAlone) +
                              spline_rounding(largest, largest_spread(coefficients, cells), cells, kCpuAlone);
     double worst = 0;
     auto check = [&](vec3 w) {
@@ -317,8 +325,10 @@ TEST_CASE("the spline reproduces cubic polynomials of the face coordinates and n
       for (float s : {-1.0f, -0.999f, 0.0f, 0.999f, 1.0f})
         for (float t : {-1.0f, 0.37f, 1.0f}) check(normalize(cube_face_point(face, s, t)));
     INFO("quartic " << quartic << ": largest error " << worst << ", tolerance " << tolerance);
-    if (quartic == 0.0) CHECK(worst <= tolerance);
-    else CHECK(worst > 20 * tolerance);
+    if (quartic == 0.0)
+      CHECK(worst <= tolerance);
+    else
+      CHECK(worst > 20 * tolerance);
   }
 }
 
@@ -326,8 +336,9 @@ TEST_CASE("a curl size outside 4 to 1024 exits 2 naming --curl-size and its rang
   // Refused before any GL work: with an EGL platform that does not exist, GL work would exit 3.
   for (const char* value : {"3", "1025", "16.5"}) {
     test::TemporaryDirectory out;
-    const test::Run r = test::run_with_environment(
-        "NEPHELE_EGL_PLATFORM=vulkan", std::string("generate --size 8 --curl-size ") + value + " --out " + out.path.string());
+    const test::Run r =
+        test::run_with_environment("NEPHELE_EGL_PLATFORM=vulkan", std::string("generate --size 8 --curl-size ") +
+                                                                      value + " --out " + out.path.string());
     INFO(value << ": " << r.output);
     CHECK(r.exit_code == 2);
     CHECK_THAT(r.output, Catch::Contains("--curl-size") && Catch::Contains("4 to 1024"));
@@ -379,7 +390,8 @@ TEST_CASE("the spline warp at the default curl size agrees with the procedural w
   const CurlParams curl = cover::curl_params(defaults);
   double velocity_error = 0;
   for (const vec3& w : random_directions(20000, 5))
-    velocity_error = std::max(velocity_error, static_cast<double>(length(spline_velocity(w, spline) - curl_velocity(w, curl))));
+    velocity_error =
+        std::max(velocity_error, static_cast<double>(length(spline_velocity(w, spline) - curl_velocity(w, curl))));
   // The same RK4 steps on two velocity fields that differ by at most dv, one of them
   // L-Lipschitz: each stage's velocity differs by at most dv plus L times the stage points'
   // difference, so one step moves two points that were d apart to at most d e^(hL) + h dv e^(hL)
@@ -392,7 +404,8 @@ TEST_CASE("the spline warp at the default curl size agrees with the procedural w
   const double T = defaults.iterations * double(defaults.step);
   const double L = 2 * c.lipschitz;
   const double growth = std::exp(L * T);
-  const double rounding = 2 * test::kOperationsPerEvaluation * test::kOperationRounding * 4 * defaults.iterations * growth;
+  const double rounding =
+      2 * test::kOperationsPerEvaluation * test::kOperationRounding * 4 * defaults.iterations * growth;
   const double bound = 2 * velocity_error * T * growth + rounding;
   INFO("velocity error " << velocity_error << "; warp difference largest " << c.warp_max << " rms " << c.warp_rms
                          << " rad, bound " << bound << " (L = " << L << "); cover difference largest " << c.cover_max

@@ -43,8 +43,7 @@ TEST_CASE("equirect export puts longitude -180 at the left edge and north at the
     std::vector<float> texels(6 * size * size);
     for (int face = 0; face < 6; ++face)
       for (int j = 0; j < size; ++j)
-        for (int i = 0; i < size; ++i)
-          texels[(face * size + j) * size + i] = texel_direction(face, i, j, size)[axis];
+        for (int i = 0; i < size; ++i) texels[(face * size + j) * size + i] = texel_direction(face, i, j, size)[axis];
     gpu::Texture cube = gpu::Texture::cube(size, GL_R32F);
     cube.write(texels);
     const auto map = cover::equirect_from_cube(cube, width, height);

@@ -128,8 +128,8 @@ std::vector<std::string> png_chunks(const std::string& bytes) {
 // IEEE 754 binary16 to float, for the readers below.
 float from_half(std::uint16_t h) {
   const int exponent = (h >> 10) & 31, mantissa = h & 1023;
-  const float magnitude = exponent == 0 ? std::ldexp(float(mantissa), -24)
-                                        : std::ldexp(float(mantissa + 1024), exponent - 25);
+  const float magnitude =
+      exponent == 0 ? std::ldexp(float(mantissa), -24) : std::ldexp(float(mantissa + 1024), exponent - 25);
   return (h & 0x8000) ? -magnitude : magnitude;
 }
 
@@ -234,7 +234,7 @@ Ktx2 read_ktx2(const std::string& b) {
   REQUIRE(b.size() > 80);
   REQUIRE(std::memcmp(b.data(), identifier, 12) == 0);
   Ktx2 k;
-  std::uint32_t* header[] = {&k.vk_format, &k.type_size, &k.width, &k.height, &k.depth,
+  std::uint32_t* header[] = {&k.vk_format, &k.type_size, &k.width,  &k.height,          &k.depth,
                              &k.layers,    &k.faces,     &k.levels, &k.supercompression};
   for (int i = 0; i < 9; ++i) *header[i] = u32(b, 12 + 4 * i);
   k.dfd_offset = u32(b, 48), k.dfd_length = u32(b, 52), k.kvd_offset = u32(b, 56), k.kvd_length = u32(b, 60);
@@ -243,8 +243,8 @@ Ktx2 read_ktx2(const std::string& b) {
   CHECK(u64(b, 96) == k.level_length);  // uncompressedByteLength
   const std::size_t d = k.dfd_offset;
   CHECK(u32(b, d) == k.dfd_length);                  // dfdTotalSize
-  CHECK(u32(b, d + 4) == 0);                          // Khronos vendor, basic descriptor type
-  CHECK((u32(b, d + 8) & 0xffff) == 2);               // version 2 (KDF 1.3)
+  CHECK(u32(b, d + 4) == 0);                         // Khronos vendor, basic descriptor type
+  CHECK((u32(b, d + 8) & 0xffff) == 2);              // version 2 (KDF 1.3)
   CHECK((u32(b, d + 8) >> 16) == k.dfd_length - 4);  // descriptorBlockSize: one block
   k.color_model = u32(b, d + 12) & 0xff, k.primaries = (u32(b, d + 12) >> 8) & 0xff;
   k.transfer = (u32(b, d + 12) >> 16) & 0xff;
@@ -262,8 +262,9 @@ Ktx2 read_ktx2(const std::string& b) {
   return k;
 }
 
-TEST_CASE("export ktx2: an independent reader finds the spec's header, descriptor and orientation, and the marker on +Y",
-          "[export]") {
+TEST_CASE(
+    "export ktx2: an independent reader finds the spec's header, descriptor and orientation, and the marker on +Y",
+    "[export]") {
   const struct {
     const char* format;
     std::uint32_t vk_format, bytes;
@@ -297,8 +298,10 @@ TEST_CASE("export ktx2: an independent reader finds the spec's header, descripto
     std::vector<float> texels(6 * kSize * kSize);
     for (std::size_t i = 0; i < texels.size(); ++i) {
       const std::size_t at = k.level_offset + i * c.bytes;
-      if (c.bytes == 1) texels[i] = (unsigned char)b[at] / 255.0f;
-      else if (c.bytes == 2) texels[i] = from_half(std::uint16_t((unsigned char)b[at] | ((unsigned char)b[at + 1] << 8)));
+      if (c.bytes == 1)
+        texels[i] = (unsigned char)b[at] / 255.0f;
+      else if (c.bytes == 2)
+        texels[i] = from_half(std::uint16_t((unsigned char)b[at] | ((unsigned char)b[at + 1] << 8)));
       else {
         const std::uint32_t bits = u32(b, at);
         std::memcpy(&texels[i], &bits, 4);
@@ -325,8 +328,10 @@ TEST_CASE("export refuses a ktx2 format outside r16f, r32f, r8", "[export][cli]"
 
 // The fields of a DDS file that place its texels (Microsoft's "DDS_HEADER", "DDS_PIXELFORMAT"
 // and "DDS_HEADER_DXT10" reference pages), read at their documented byte offsets.
-TEST_CASE("export dds: legacy RGBA8 and DX10 float cube headers as documented, and OpenImageIO finds the marker in the RGBA8 cube",
-          "[export]") {
+TEST_CASE(
+    "export dds: legacy RGBA8 and DX10 float cube headers as documented, and OpenImageIO finds the marker in the RGBA8 "
+    "cube",
+    "[export]") {
   Exported e("dds");
   REQUIRE(e.run.exit_code == 0);
   const struct {
@@ -338,13 +343,13 @@ TEST_CASE("export dds: legacy RGBA8 and DX10 float cube headers as documented, a
     const std::string b = test::read_file(e.out.path / c.name);
     REQUIRE(b.size() > 128);
     CHECK(b.compare(0, 4, "DDS ") == 0);
-    CHECK(u32(b, 4) == 124);                      // dwSize
-    CHECK(u32(b, 12) == std::uint32_t(kSize));    // dwHeight
-    CHECK(u32(b, 16) == std::uint32_t(kSize));    // dwWidth
-    CHECK(u32(b, 20) == kSize * c.bytes);         // dwPitchOrLinearSize: bytes per row
-    CHECK(u32(b, 76) == 32);                      // ddspf.dwSize
-    CHECK((u32(b, 108) & 0x1008u) == 0x1008u);    // dwCaps: TEXTURE | COMPLEX
-    CHECK(u32(b, 112) == 0xFE00u);                // dwCaps2: CUBEMAP and all six faces
+    CHECK(u32(b, 4) == 124);                    // dwSize
+    CHECK(u32(b, 12) == std::uint32_t(kSize));  // dwHeight
+    CHECK(u32(b, 16) == std::uint32_t(kSize));  // dwWidth
+    CHECK(u32(b, 20) == kSize * c.bytes);       // dwPitchOrLinearSize: bytes per row
+    CHECK(u32(b, 76) == 32);                    // ddspf.dwSize
+    CHECK((u32(b, 108) & 0x1008u) == 0x1008u);  // dwCaps: TEXTURE | COMPLEX
+    CHECK(u32(b, 112) == 0xFE00u);              // dwCaps2: CUBEMAP and all six faces
     std::size_t data = 128;
     if (c.dxgi == 0) {
       CHECK(u32(b, 80) == 0x41u);  // DDPF_RGB | DDPF_ALPHAPIXELS
@@ -381,8 +386,9 @@ TEST_CASE("export dds: legacy RGBA8 and DX10 float cube headers as documented, a
     }
 }
 
-TEST_CASE("export celestia: an add-on folder with a white RGBA map, coverage in alpha, prime meridian centred, and CloudMap",
-          "[export]") {
+TEST_CASE(
+    "export celestia: an add-on folder with a white RGBA map, coverage in alpha, prime meridian centred, and CloudMap",
+    "[export]") {
   Exported e("celestia", " --name marker_test");
   REQUIRE(e.run.exit_code == 0);
   const auto folder = e.out.path / "extras" / "marker_test";
@@ -394,7 +400,8 @@ TEST_CASE("export celestia: an add-on folder with a white RGBA map, coverage in 
   REQUIRE(image.width == 4 * kSize);
   REQUIRE(image.height == 2 * kSize);
   for (std::size_t i = 0; i < image.pixels.size(); i += 4) {
-    if (image.pixels[i] != 1.0f || image.pixels[i + 1] != 1.0f || image.pixels[i + 2] != 1.0f) FAIL("not white at " << i / 4);
+    if (image.pixels[i] != 1.0f || image.pixels[i + 1] != 1.0f || image.pixels[i + 2] != 1.0f)
+      FAIL("not white at " << i / 4);
   }
   // Celestia's cloud maps have longitude 0 at the centre column and -180 at the left edge.
   const auto c = bright_centroid(image.pixels, image.width, 4, 3, 0, 0, image.width, image.height);
@@ -466,22 +473,23 @@ TEST_CASE("every cover export preset writes a README.txt naming the preset besid
   }
 }
 
-TEST_CASE("half_from_float rounds to the nearest binary16, ties to even, through subnormals and overflow", "[fast][export]") {
+TEST_CASE("half_from_float rounds to the nearest binary16, ties to even, through subnormals and overflow",
+          "[fast][export]") {
   // Exact values and their bit patterns (IEEE 754-2008, binary16).
   CHECK(io::half_from_float(0.0f) == 0x0000);
   CHECK(io::half_from_float(-0.0f) == 0x8000);
   CHECK(io::half_from_float(1.0f) == 0x3C00);
   CHECK(io::half_from_float(0.5f) == 0x3800);
-  CHECK(io::half_from_float(65504.0f) == 0x7BFF);                 // largest finite half
-  CHECK(io::half_from_float(std::ldexp(1.0f, -24)) == 0x0001);    // smallest subnormal
-  CHECK(io::half_from_float(std::ldexp(1.0f, -14)) == 0x0400);    // smallest normal
+  CHECK(io::half_from_float(65504.0f) == 0x7BFF);               // largest finite half
+  CHECK(io::half_from_float(std::ldexp(1.0f, -24)) == 0x0001);  // smallest subnormal
+  CHECK(io::half_from_float(std::ldexp(1.0f, -14)) == 0x0400);  // smallest normal
   // Between 1 and the next half (1 + 2^-10): below, at and above the midpoint.
   CHECK(io::half_from_float(1.0f + std::ldexp(1.0f, -12)) == 0x3C00);
-  CHECK(io::half_from_float(1.0f + std::ldexp(1.0f, -11)) == 0x3C00);  // tie to even (mantissa 0)
+  CHECK(io::half_from_float(1.0f + std::ldexp(1.0f, -11)) == 0x3C00);      // tie to even (mantissa 0)
   CHECK(io::half_from_float(1.0f + 3 * std::ldexp(1.0f, -11)) == 0x3C02);  // tie to even (mantissa 2)
   CHECK(io::half_from_float(1.0f + std::ldexp(1.0f, -11) + std::ldexp(1.0f, -20)) == 0x3C01);
   CHECK(io::half_from_float(std::ldexp(1.0f, -25)) == 0x0000);  // half the smallest subnormal: tie to even 0
-  CHECK(io::half_from_float(1e6f) == 0x7C00);                    // overflow to infinity
+  CHECK(io::half_from_float(1e6f) == 0x7C00);                   // overflow to infinity
   // Every value the reader decodes maps back to itself.
   for (std::uint32_t h = 0; h < 0x7C00; ++h) {
     if (io::half_from_float(from_half(std::uint16_t(h))) != h) FAIL("round trip of " << h);
@@ -499,10 +507,13 @@ struct FaceHit {
 FaceHit gl_face_of(const std::array<double, 3>& d) {
   const double ax = std::abs(d[0]), ay = std::abs(d[1]), az = std::abs(d[2]);
   if (ax >= ay && ax >= az)
-    return d[0] > 0 ? FaceHit{0, (-d[2] / ax + 1) / 2, (-d[1] / ax + 1) / 2} : FaceHit{1, (d[2] / ax + 1) / 2, (-d[1] / ax + 1) / 2};
+    return d[0] > 0 ? FaceHit{0, (-d[2] / ax + 1) / 2, (-d[1] / ax + 1) / 2}
+                    : FaceHit{1, (d[2] / ax + 1) / 2, (-d[1] / ax + 1) / 2};
   if (ay >= az)
-    return d[1] > 0 ? FaceHit{2, (d[0] / ay + 1) / 2, (d[2] / ay + 1) / 2} : FaceHit{3, (d[0] / ay + 1) / 2, (-d[2] / ay + 1) / 2};
-  return d[2] > 0 ? FaceHit{4, (d[0] / az + 1) / 2, (-d[1] / az + 1) / 2} : FaceHit{5, (-d[0] / az + 1) / 2, (-d[1] / az + 1) / 2};
+    return d[1] > 0 ? FaceHit{2, (d[0] / ay + 1) / 2, (d[2] / ay + 1) / 2}
+                    : FaceHit{3, (d[0] / ay + 1) / 2, (-d[2] / ay + 1) / 2};
+  return d[2] > 0 ? FaceHit{4, (d[0] / az + 1) / 2, (-d[1] / az + 1) / 2}
+                  : FaceHit{5, (-d[0] / az + 1) / 2, (-d[1] / az + 1) / 2};
 }
 
 // Checks the marker in face `hit.face` of a layout `columns` faces wide, and nothing bright in
@@ -607,15 +618,15 @@ TEST_CASE("export eve: the marker where EVE's equirect and GetCubeCubeUV rules l
     REQUIRE(c.count > 0);
     CHECK(c.x == Approx(u * image.width - 0.5).epsilon(0).margin(kMarkerPixels));
     CHECK(c.y == Approx(vv * image.height - 0.5).epsilon(0).margin(kMarkerPixels));  // v = 0 is the first row
-    CHECK(image.pixels[0] == 1.0f);  // RGB white
+    CHECK(image.pixels[0] == 1.0f);                                                  // RGB white
   }
   // GetCubeCubeUV (cubeMap.cginc), transcribed: the face and its uv.
   const double ax = std::abs(v[0]), ay = std::abs(v[1]), az = std::abs(v[2]);
   const bool zx = az >= ax, ny = ay <= std::max(ax, az);
   const double s = (ny ? (zx ? v[2] : v[0]) : v[1]) > 0 ? 1 : -1;
-  std::array<double, 3> dc = !ny ? std::array<double, 3>{v[1], v[0], s * v[2]}
-                                 : zx ? std::array<double, 3>{v[2], s * v[0], -v[1]}
-                                      : std::array<double, 3>{v[0], -s * v[2], -v[1]};
+  std::array<double, 3> dc = !ny  ? std::array<double, 3>{v[1], v[0], s * v[2]}
+                             : zx ? std::array<double, 3>{v[2], s * v[0], -v[1]}
+                                  : std::array<double, 3>{v[0], -s * v[2], -v[1]};
   const double u = 0.5 * dc[1] / std::abs(dc[0]) + 0.5, vv = 0.5 * dc[2] / std::abs(dc[0]) + 0.5;
   const std::string hit = std::string(ny ? (zx ? "z" : "x") : "y") + (s > 0 ? "p" : "n");
   const std::string config = test::read_file(dir / "nephele_clouds_textures.cfg");
@@ -623,7 +634,8 @@ TEST_CASE("export eve: the marker where EVE's equirect and GetCubeCubeUV rules l
   for (const char* key : {"xn", "xp", "yn", "yp", "zn", "zp"}) {
     INFO(key);
     const std::string file = std::string("clouds_") + key;
-    CHECK_THAT(config, Catch::Contains(std::string("tex") + char(std::toupper(key[0])) + key[1] + " = nephele_clouds/" + file));
+    CHECK_THAT(config,
+               Catch::Contains(std::string("tex") + char(std::toupper(key[0])) + key[1] + " = nephele_clouds/" + file));
     const auto image = read_dds_2d_rgba8(dir / (file + ".dds"));
     REQUIRE(image.width == kSize);
     const auto c = bright_centroid(image.pixels, kSize, 4, 3, 0, 0, kSize, kSize);
@@ -653,7 +665,7 @@ TEST_CASE("export unity: the lat-long maps carry the marker, HDRP's in red, and 
   // Unity's frame: +X longitude 0, +Y north, +Z 90 E (left-handed); its sampler uses the GL table.
   const auto m = marker_direction();
   const auto hit = gl_face_of({m[0], m[2], m[1]});
-  CHECK(hit.face == 4);  // Unity +Z: 90 E is nearest to 60 E
+  CHECK(hit.face == 4);                                          // Unity +Z: 90 E is nearest to 60 E
   CHECK(io::AxisMap{{0, 2, 1}, {1, 1, 1}}.determinant() == -1);  // the writer's Unity axes: a reflection
   check_marker_in_layout(io::read_image(e.out.path / "cover_cube_6x1.png"), 6, hit);
 }
@@ -665,7 +677,7 @@ TEST_CASE("export godot: 2x3 and 6x1 cubes rotated into Godot's Y-up frame and a
   // Godot's frame: +Z longitude 0, +X 90 E, +Y north (right-handed, a rotation of nephele's).
   const auto m = marker_direction();
   const auto hit = gl_face_of({m[1], m[2], m[0]});
-  CHECK(hit.face == 0);  // Godot +X
+  CHECK(hit.face == 0);                                         // Godot +X
   CHECK(io::AxisMap{{2, 0, 1}, {1, 1, 1}}.determinant() == 1);  // the writer's Godot axes: a rotation
   check_marker_in_layout(io::read_image(e.out.path / "cover_cube_2x3.png"), 2, hit);
   check_marker_in_layout(io::read_image(e.out.path / "cover_cube_6x1.png"), 6, hit);
@@ -723,18 +735,19 @@ TEST_CASE("export refuses up front a preset whose image would exceed 16384 pixel
 // A real client: Blender renders the World that the preset's own script sets up, looking at the
 // marker and at its mirror images (scripts/blender_probe.py). Blender is not a CI package (see
 // docs/export.md, "blender"): without it on PATH the test says so and passes.
-TEST_CASE("export blender: Blender renders the marker at 30 N 60 E through the preset's World, and at 60 W without Y = -1",
-          "[optional][export][blender]") {
+TEST_CASE(
+    "export blender: Blender renders the marker at 30 N 60 E through the preset's World, and at 60 W without Y = -1",
+    "[optional][export][blender]") {
   if (std::system("command -v blender > /dev/null 2>&1") != 0) {
     test::skip_case("blender is not installed (apt-get install --no-install-recommends blender)");
     return;
   }
   Exported e("blender");
   REQUIRE(e.run.exit_code == 0);
-  const auto run = test::run_command(
-      "blender -b --factory-startup --python-exit-code 1 --python " + std::string(NEPHELE_SOURCE_DIR) +
-      "/scripts/blender_probe.py -- " + (e.out.path / "nephele_world.py").string() + " " +
-      (e.out.path / "cover_equirect.exr").string() + " 30 60 30 -60 -30 60 -30 -60");
+  const auto run = test::run_command("blender -b --factory-startup --python-exit-code 1 --python " +
+                                     std::string(NEPHELE_SOURCE_DIR) + "/scripts/blender_probe.py -- " +
+                                     (e.out.path / "nephele_world.py").string() + " " +
+                                     (e.out.path / "cover_equirect.exr").string() + " 30 60 30 -60 -30 60 -30 -60");
   INFO(run.output);
   REQUIRE(run.exit_code == 0);
   std::istringstream lines(run.output);
@@ -762,12 +775,13 @@ TEST_CASE("export blender: Blender renders the marker at 30 N 60 E through the p
 TEST_CASE("generate --export runs the presets into export/NAME of the same set, and refuses an unknown one before work",
           "[export][cli]") {
   test::TemporaryDirectory out;
-  const auto r = test::run("generate --size 16 --iterations 5 --files faces --export flightgear,godot --out " +
-                           out.path.string());
+  const auto r =
+      test::run("generate --size 16 --iterations 5 --files faces --export flightgear,godot --out " + out.path.string());
   REQUIRE(r.exit_code == 0);
   CHECK(std::filesystem::is_regular_file(out.path / "cover_px.exr"));
-  for (const char* file : {"export/flightgear/clouds_N1.png", "export/flightgear/clouds_S4.png",
-                           "export/flightgear/README.txt", "export/godot/cover_cube_2x3.png", "export/godot/README.txt"})
+  for (const char* file :
+       {"export/flightgear/clouds_N1.png", "export/flightgear/clouds_S4.png", "export/flightgear/README.txt",
+        "export/godot/cover_cube_2x3.png", "export/godot/README.txt"})
     CHECK(std::filesystem::is_regular_file(out.path / file));
   const auto strip = io::read_image(out.path / "export/godot/cover_cube_6x1.png");
   CHECK(strip.width == 6 * 16);  // made from the generated 16^2 faces
@@ -899,7 +913,9 @@ TEST_CASE("model's density.vdb opens in Blender as a Volume with the grid densit
 
 TEST_CASE("export atlas: a noise volume's slices in rows and columns, every texel where the layout says", "[export]") {
   test::TemporaryDirectory dir(true);
-  REQUIRE(test::run("noise --width 16 --height 16 --depth 10 --cells 8 --channels rg --quiet --out " + (dir.path / "n.raw").string()).exit_code == 0);
+  REQUIRE(test::run("noise --width 16 --height 16 --depth 10 --cells 8 --channels rg --quiet --out " +
+                    (dir.path / "n.raw").string())
+              .exit_code == 0);
   test::TemporaryDirectory out;
   const auto r = test::run("export " + (dir.path / "n.json").string() + " --preset atlas --out " + out.path.string());
   REQUIRE(r.exit_code == 0);
@@ -928,7 +944,8 @@ TEST_CASE("export atlas: a noise volume's slices in rows and columns, every texe
              Catch::Contains("preset atlas") && Catch::Contains("Columns 4, Rows 3") && Catch::Contains("data"));
 }
 
-TEST_CASE("export atlas keeps every side within 16384 pixels: 160^3 in 13 x 13, and refuses what cannot fit", "[fast][export]") {
+TEST_CASE("export atlas keeps every side within 16384 pixels: 160^3 in 13 x 13, and refuses what cannot fit",
+          "[fast][export]") {
   const auto g = io::atlas_grid(160, 160, 160);
   CHECK(g.columns == 13);
   CHECK(g.rows == 13);
@@ -947,9 +964,10 @@ TEST_CASE("export openvdb: a model's density.json becomes a FOG grid density wit
   }
   test::TemporaryDirectory model, out;
   REQUIRE(test::run("model --example fair-weather --size 16 --extent 3200 --no-preview --quiet --out " +
-                    model.path.string()).exit_code == 0);
-  const auto r = test::run("export " + (model.path / "density.json").string() + " --preset openvdb --out " +
-                           out.path.string());
+                    model.path.string())
+              .exit_code == 0);
+  const auto r =
+      test::run("export " + (model.path / "density.json").string() + " --preset openvdb --out " + out.path.string());
   REQUIRE(r.exit_code == 0);
   const auto vdb = io::read_vdb((out.path / "volume.vdb").string());
   CHECK(vdb.grids == std::vector<std::string>{"density"});

@@ -37,7 +37,8 @@ void check_calibration_matches_cpu(const std::vector<float>& densities, int size
     const auto gpu = gpu_calibration.run(field, target);
     INFO("target " << target);
     CHECK(gpu.threshold == cpu.threshold);
-    CHECK(std::abs(gpu.achieved_fraction - cpu.achieved_fraction) <= gpu_calibration.weights().units().sum_error_bound());
+    CHECK(std::abs(gpu.achieved_fraction - cpu.achieved_fraction) <=
+          gpu_calibration.weights().units().sum_error_bound());
   }
 }
 
@@ -65,8 +66,7 @@ TEST_CASE("texel weight units sum to the sphere within half a unit per texel", "
   }
 }
 
-TEST_CASE("the GPU calibration gives the CPU's threshold and its fraction within the unit rounding",
-          "[gpu-reduce]") {
+TEST_CASE("the GPU calibration gives the CPU's threshold and its fraction within the unit rounding", "[gpu-reduce]") {
   test::test_context();
   for (int size : {1, 2, 3, 17, 64}) {
     const auto densities = random_densities(size, 7 + size);
@@ -79,8 +79,8 @@ TEST_CASE("the GPU calibration gives the CPU's threshold and its fraction within
       const double bound = gpu_calibration.weights().units().sum_error_bound();
       // Two cuts equally near the target (size 1, target 0.25: 1/6 and 2/6) may go either way
       // with fixed-point sums; otherwise the cut is the same.
-      const bool tie = std::abs(std::abs(gpu.achieved_fraction - target) - std::abs(cpu.achieved_fraction - target)) <=
-                       2 * bound;
+      const bool tie =
+          std::abs(std::abs(gpu.achieved_fraction - target) - std::abs(cpu.achieved_fraction - target)) <= 2 * bound;
       if (gpu.threshold != cpu.threshold) {
         CHECK(tie);
         continue;
@@ -139,7 +139,8 @@ TEST_CASE("the density and remap passes reduce the range and band fractions the 
   const std::vector<double> solid = cover::face_texel_solid_angles(p.size);
   for (size_t k = 0; k < texels.size(); ++k)
     if (texels[k] > 0.0f) cloudy += solid[k % solid.size()];
-  CHECK(std::abs(cloudy / (4.0 * M_PI) - fused.achieved_fraction) <= 1e-9 + separate.weights().units().sum_error_bound());
+  CHECK(std::abs(cloudy / (4.0 * M_PI) - fused.achieved_fraction) <=
+        1e-9 + separate.weights().units().sum_error_bound());
 }
 
 TEST_CASE("fields with many equal densities are calibrated like the CPU", "[gpu-reduce]") {
@@ -150,7 +151,8 @@ TEST_CASE("fields with many equal densities are calibrated like the CPU", "[gpu-
   check_calibration_matches_cpu(densities, size);
 }
 
-TEST_CASE("a flat field too large to list is all cloudy or all clear, whichever is nearer the target", "[gpu-reduce][extreme]") {
+TEST_CASE("a flat field too large to list is all cloudy or all clear, whichever is nearer the target",
+          "[gpu-reduce][extreme]") {
   test::test_context();
   // 6 * 105^2 > calibration_member_capacity texels of one density: only 0 or 1 is possible.
   const int size = 105;
@@ -241,7 +243,8 @@ TEST_CASE("the GPU diagnosis finds the folds of a mirror image", "[gpu-reduce]")
   cover.warp_field().write(mirrored);
   const auto cpu = cover::diagnose_warp(cover.curl_field().read(), mirrored, size, p.integrator, p.step);
   const auto gpu = cover.diagnose();
-  CHECK(gpu.folding.folded_fraction == Approx(1.0).epsilon(0).margin(cover::texel_weight_units(size).sum_error_bound()));
+  CHECK(gpu.folding.folded_fraction ==
+        Approx(1.0).epsilon(0).margin(cover::texel_weight_units(size).sum_error_bound()));
   check_same_diagnosis(gpu, cpu, size);
 }
 

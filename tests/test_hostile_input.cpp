@@ -59,7 +59,8 @@ TEST_CASE("the number scanner takes whole decimal texts of at most 64 characters
   CHECK(std::isinf(*core::parse_decimal("1e999", NumberForm::real)));
 }
 
-TEST_CASE("a number of 30000 digits is refused naming the option wherever numbers are read", "[bad-input][numbers][cli]") {
+TEST_CASE("a number of 30000 digits is refused naming the option wherever numbers are read",
+          "[bad-input][numbers][cli]") {
   TemporaryDirectory out;
   const std::string profile = (out.path.parent_path() / (out.path.filename().string() + "_profile.csv")).string();
   std::ofstream(profile) << "latitude_deg,fraction\n-90,0.5\n0," << many_digits << "\n90,0.5\n";
@@ -76,7 +77,8 @@ TEST_CASE("a number of 30000 digits is refused naming the option wherever number
   for (const auto& c : cases) {
     INFO(c.arguments.substr(0, 60));
     std::string arguments = c.arguments;
-    if (const auto at = arguments.find("OUT"); at != std::string::npos) arguments.replace(at, 3, (out.path / "x").string());
+    if (const auto at = arguments.find("OUT"); at != std::string::npos)
+      arguments.replace(at, 3, (out.path / "x").string());
     const Run r = run_without_gl(arguments);
     INFO(r.output.substr(0, 600));
     CHECK(r.exit_code == 2);
@@ -111,8 +113,8 @@ TEST_CASE("messages show control characters, invalid UTF-8 and NUL from inputs e
   CHECK(core::printable("plain text, caf\xC3\xA9") == "plain text, caf\xC3\xA9");
   CHECK(core::printable("\x1B[31mred") == "\\x1B[31mred");
   CHECK(core::printable(std::string("a\0b", 3)) == "a\\x00b");
-  CHECK(core::printable("\xFF\xC3") == "\\xFF\\xC3");          // a stray byte, a cut sequence
-  CHECK(core::printable("\xC0\xAF") == "\\xC0\\xAF");          // an overlong '/'
+  CHECK(core::printable("\xFF\xC3") == "\\xFF\\xC3");           // a stray byte, a cut sequence
+  CHECK(core::printable("\xC0\xAF") == "\\xC0\\xAF");           // an overlong '/'
   CHECK(core::printable("\xED\xA0\x80") == "\\xED\\xA0\\x80");  // a UTF-16 surrogate
   CHECK(core::printable("line\nnext", 200, true) == "line\nnext");
   CHECK(core::printable("line\nnext") == "line\\x0Anext");
@@ -135,7 +137,8 @@ TEST_CASE("messages show control characters, invalid UTF-8 and NUL from inputs e
 TEST_CASE("bench and report name --sizes when a size does not fit the driver", "[bad-input][cli]") {
   // llvmpipe cannot allocate 16384^2 RGBA32F cube maps; a GPU with room for them would run it.
   const Run r = test::run("bench cover --sizes 16384 --repeat 1");
-  if (r.exit_code == 0) SUCCEED("this driver holds 16384 per face");
+  if (r.exit_code == 0)
+    SUCCEED("this driver holds 16384 per face");
   else {
     CHECK(r.exit_code == 2);
     CHECK_THAT(r.output, Catch::StartsWith("nephele: --sizes: 16384"));
@@ -174,10 +177,12 @@ const fs::path& small_cover() {
 // A copy of the small cover with face +Z replaced by `channels` channels of `value` at texel (3, 2).
 void copy_cover_with_face(const fs::path& to, int channels, float value) {
   fs::create_directories(to);
-  for (const auto& entry : fs::directory_iterator(small_cover())) fs::copy_file(entry.path(), to / entry.path().filename());
+  for (const auto& entry : fs::directory_iterator(small_cover()))
+    fs::copy_file(entry.path(), to / entry.path().filename());
   core::ImageData face{8, 8, channels, std::vector<float>(64 * std::size_t(channels), 0.5f)};
   face.pixels[(2 * 8 + 3) * std::size_t(channels)] = value;
-  std::vector<std::string> names = channels == 1 ? std::vector<std::string>{"Y"} : std::vector<std::string>{"R", "G", "B"};
+  std::vector<std::string> names =
+      channels == 1 ? std::vector<std::string>{"Y"} : std::vector<std::string>{"R", "G", "B"};
   io::write_image(to / "cover_pz.exr", face, io::exr_encoding(names));
 }
 
@@ -192,19 +197,19 @@ std::uint32_t crc32_of(const std::string& bytes) {  // PNG's CRC (ISO 3309), bit
 
 // A PNG whose IHDR declares width x height RGBA 8-bit and which holds no pixel data at all.
 void write_png_header_only(const fs::path& path, std::uint32_t width, std::uint32_t height) {
-  auto be32 = [](std::uint32_t v) {
-    return std::string{char(v >> 24), char(v >> 16), char(v >> 8), char(v)};
-  };
+  auto be32 = [](std::uint32_t v) { return std::string{char(v >> 24), char(v >> 16), char(v >> 8), char(v)}; };
   const std::string ihdr = "IHDR" + be32(width) + be32(height) + std::string{8, 6, 0, 0, 0};
   const std::string idat = "IDAT\x78\x9c";  // the start of a zlib stream, no more
   std::ofstream out(path, std::ios::binary);
-  out << "\x89PNG\r\n\x1a\n" << be32(13) << ihdr << be32(crc32_of(ihdr)) << be32(2) << idat << be32(crc32_of(idat))
-      << be32(0) << "IEND" << be32(crc32_of("IEND"));
+  out << "\x89PNG\r\n\x1a\n"
+      << be32(13) << ihdr << be32(crc32_of(ihdr)) << be32(2) << idat << be32(crc32_of(idat)) << be32(0) << "IEND"
+      << be32(crc32_of("IEND"));
 }
 
 }  // namespace
 
-TEST_CASE("cover faces holding NaN or values outside [0, 1] are refused by export, render and stats", "[bad-input][files]") {
+TEST_CASE("cover faces holding NaN or values outside [0, 1] are refused by export, render and stats",
+          "[bad-input][files]") {
   const float nan = std::numeric_limits<float>::quiet_NaN();
   for (const float value : {nan, -5.0f, 1e30f}) {
     TemporaryDirectory cover, out;
@@ -269,7 +274,8 @@ TEST_CASE("a too-large export is refused from the faces' headers before their pi
   CHECK_FALSE(fs::exists(out.path));
 }
 
-TEST_CASE("volume sidecars and raw files that are devices, FIFOs or too large are refused with code 2", "[bad-input][files]") {
+TEST_CASE("volume sidecars and raw files that are devices, FIFOs or too large are refused with code 2",
+          "[bad-input][files]") {
   TemporaryDirectory directory(true), out;
   // A device as the sidecar: refused before reading (it was read until memory ran out).
   const Run zero = run_without_gl("export /dev/zero --preset atlas --out " + out.path.string());
@@ -286,8 +292,9 @@ TEST_CASE("volume sidecars and raw files that are devices, FIFOs or too large ar
   const std::string sidecar = R"({"program": "nephele noise", "format": "raw-float32-little-endian", "width": 2, )"
                               R"("height": 2, "depth": 2, "channels": "r", "file": "data.raw"})";
   std::ofstream(directory.path / "noise.json") << sidecar;
-  const Run raw = test::run_command("timeout 20 " + std::string(NEPHELE_EXECUTABLE) + " export " +
-                                    (directory.path / "noise.json").string() + " --preset atlas --out " + out.path.string());
+  const Run raw =
+      test::run_command("timeout 20 " + std::string(NEPHELE_EXECUTABLE) + " export " +
+                        (directory.path / "noise.json").string() + " --preset atlas --out " + out.path.string());
   CHECK(raw.exit_code == 2);
   CHECK_THAT(raw.output, Catch::Contains("data.raw"));
   // Dimensions past the memory budget: refused from the sidecar, before the raw file is opened.
@@ -302,11 +309,13 @@ TEST_CASE("volume sidecars and raw files that are devices, FIFOs or too large ar
   CHECK_FALSE(fs::exists(out.path));
 }
 
-TEST_CASE("an image header declaring 100000 x 100000 pixels is refused naming the option before allocation", "[bad-input][files]") {
+TEST_CASE("an image header declaring 100000 x 100000 pixels is refused naming the option before allocation",
+          "[bad-input][files]") {
   TemporaryDirectory directory(true);
   const fs::path big = directory.path / "big.png";
   write_png_header_only(big, 100000, 100000);  // 160 GB as float RGBA
-  const Run surface = run_without_gl("generate --size 8 --surface " + big.string() + " --out " + (directory.path / "c").string());
+  const Run surface =
+      run_without_gl("generate --size 8 --surface " + big.string() + " --out " + (directory.path / "c").string());
   INFO(surface.output);
   CHECK(surface.exit_code == 2);
   CHECK_THAT(surface.output, Catch::StartsWith("nephele: --surface: ") && Catch::Contains("available memory"));
@@ -322,7 +331,8 @@ TEST_CASE("a FIFO given as --surface is named as not a regular file, not as miss
   TemporaryDirectory directory(true);
   const fs::path fifo = directory.path / "mask.png";
   REQUIRE(mkfifo(fifo.c_str(), 0600) == 0);
-  const Run r = run_without_gl("generate --size 8 --surface " + fifo.string() + " --out " + (directory.path / "c").string());
+  const Run r =
+      run_without_gl("generate --size 8 --surface " + fifo.string() + " --out " + (directory.path / "c").string());
   CHECK(r.exit_code == 2);
   CHECK_THAT(r.output, Catch::Contains("--surface") && Catch::Contains("not a regular file"));
 }
@@ -338,7 +348,8 @@ TEST_CASE("lists are capped: 64 weather files a scene, 4096 primitives a model",
   CHECK_THAT(scene.output, Catch::Contains("weather") && Catch::Contains("65 files (allowed: at most 64)"));
 
   std::string points = "[";
-  for (std::size_t i = 0; i < model::max_primitives + 2; ++i) points += (i ? ", " : "") + std::string("[0.5, 0.5, 0.5]");
+  for (std::size_t i = 0; i < model::max_primitives + 2; ++i)
+    points += (i ? ", " : "") + std::string("[0.5, 0.5, 0.5]");
   std::ofstream(directory.path / "m.cloud.json")
       << R"({"primitives": [{"type": "polyline", "points": )" << points << R"(], "radius": 0.05}]})";
   const Run model = run_without_gl("model --scene " + (directory.path / "m.cloud.json").string() + " --size 8 --out " +
@@ -348,7 +359,8 @@ TEST_CASE("lists are capped: 64 weather files a scene, 4096 primitives a model",
   CHECK_FALSE(fs::exists(directory.path / "m"));
 }
 
-TEST_CASE("one rule everywhere: upper-case extensions, repeated list items, the option that was typed", "[bad-input][cli]") {
+TEST_CASE("one rule everywhere: upper-case extensions, repeated list items, the option that was typed",
+          "[bad-input][cli]") {
   TemporaryDirectory directory(true);
   // x.PNG is a PNG for render as for noise (render refused it, noise took it).
   const Run render = run_without_gl("render --view gurten --size 8x8 --out " + (directory.path / "x.PNG").string());
@@ -358,7 +370,8 @@ TEST_CASE("one rule everywhere: upper-case extensions, repeated list items, the 
   const Run noise = run_without_gl("noise --size 8 --out " + (directory.path / "a.PNG").string());
   CHECK(noise.exit_code == 3);
   // A preset named twice is refused as --files refuses faces,faces.
-  const Run exports = run_without_gl("generate --size 8 --export equirect,equirect --out " + (directory.path / "c").string());
+  const Run exports =
+      run_without_gl("generate --size 8 --export equirect,equirect --out " + (directory.path / "c").string());
   CHECK(exports.exit_code == 2);
   CHECK_THAT(exports.output, Catch::StartsWith("nephele: --export: ") && Catch::Contains("twice"));
   // The viewer's --model names --model, not --scene.

@@ -26,10 +26,12 @@ std::vector<unsigned char> idat_stream(const std::vector<unsigned char>& png) {
   std::vector<unsigned char> stream;
   for (size_t at = 8; at + 12 <= png.size();) {
     const std::uint32_t length = big_endian32(&png[at]);
-    const std::string type(png.begin() + static_cast<std::ptrdiff_t>(at + 4), png.begin() + static_cast<std::ptrdiff_t>(at + 8));
+    const std::string type(png.begin() + static_cast<std::ptrdiff_t>(at + 4),
+                           png.begin() + static_cast<std::ptrdiff_t>(at + 8));
     REQUIRE(at + 12 + length <= png.size());
-    if (type == "IDAT") stream.insert(stream.end(), png.begin() + static_cast<std::ptrdiff_t>(at + 8),
-                                      png.begin() + static_cast<std::ptrdiff_t>(at + 8 + length));
+    if (type == "IDAT")
+      stream.insert(stream.end(), png.begin() + static_cast<std::ptrdiff_t>(at + 8),
+                    png.begin() + static_cast<std::ptrdiff_t>(at + 8 + length));
     at += 12 + length;
   }
   return stream;
@@ -85,7 +87,8 @@ TEST_CASE("a PNG with png_filters set filters every row with that one filter and
 
   // libpng's default tries every filter per row and picks different ones here.
   encoding.png_filters = 0;
-  const std::vector<unsigned char> adaptive = stored_payload(idat_stream(io::encode_image(image, encoding, "adaptive.png")));
+  const std::vector<unsigned char> adaptive =
+      stored_payload(idat_stream(io::encode_image(image, encoding, "adaptive.png")));
   REQUIRE(adaptive.size() == rows.size());
   bool other_filter = false;
   for (int j = 0; j < height; ++j) other_filter = other_filter || adaptive[static_cast<size_t>(j) * (width + 1)] != 3;

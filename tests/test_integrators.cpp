@@ -98,7 +98,8 @@ std::vector<vec3> starts() {
   for (double lat_deg : {-55.0, -32.0, -8.0, 4.0, 21.0, 47.0, 58.0})
     for (double lon_deg : {-150.0, 20.0, 95.0}) {
       const double lat = lat_deg * M_PI / 180, lon = lon_deg * M_PI / 180;
-      points.push_back(normalize(vec3(dvec3(std::cos(lat) * std::cos(lon), std::cos(lat) * std::sin(lon), std::sin(lat)))));
+      points.push_back(
+          normalize(vec3(dvec3(std::cos(lat) * std::cos(lon), std::cos(lat) * std::sin(lon), std::sin(lat)))));
     }
   return points;
 }

@@ -268,7 +268,8 @@ TEST_CASE("the profile's remap pass gives the CPU's cover at the smooth threshol
   const double threshold_error = 2.2e-4 * 1.5 * step + 1e-6;
   const size_t per_face = 32 * 32;
   for (size_t k = 0; k < density.size(); ++k) {
-    const int face = static_cast<int>(k / per_face), j = static_cast<int>(k % per_face / 32), i = static_cast<int>(k % 32);
+    const int face = static_cast<int>(k / per_face), j = static_cast<int>(k % per_face / 32),
+              i = static_cast<int>(k % 32);
     const float t = cover::smooth_band_threshold(c.thresholds, glsl::texel_direction(face, i, j, 32));
     const float expected = glsl::cover_from_density(density[k], t, c.density_max);
     REQUIRE(std::abs(covered[k] - expected) <= threshold_error / (c.density_max - t) + 1e-6);
@@ -282,8 +283,8 @@ TEST_CASE("generate takes --profile and --month, records them, and refuses bad o
   test::TemporaryDirectory out, files(true);
   const std::filesystem::path csv = files.path / "zonal.csv";
   std::ofstream(csv) << "latitude_deg,fraction\n-90,0.2\n0,0.9\n90,0.2\n";
-  const test::Run ok = test::run("generate --size 16 --files faces --profile " + csv.string() + " --month 7 --out " +
-                                 out.path.string());
+  const test::Run ok =
+      test::run("generate --size 16 --files faces --profile " + csv.string() + " --month 7 --out " + out.path.string());
   INFO(ok.output);
   REQUIRE(ok.exit_code == 0);
   const std::string sidecar = test::read_file(out.path / "cover.json");

@@ -20,7 +20,7 @@ namespace {
 namespace fs = std::filesystem;
 
 struct LayerGraph {
-  std::vector<std::string> order;                       // lowest first
+  std::vector<std::string> order;                         // lowest first
   std::map<std::string, std::vector<std::string>> links;  // layer -> layers it links
 };
 
@@ -191,7 +191,8 @@ TEST_CASE("every C++ include of src/ stays within the layers its folder links", 
   // Every folder of src/ (of src/apps: every app's folder) is a declared layer.
   const fs::path src = fs::path(NEPHELE_SOURCE_DIR) / "src";
   for (const auto& entry : fs::directory_iterator(src))
-    if (entry.is_directory() && entry.path().filename() != "apps") CHECK(rank_of(graph, entry.path().filename().string()) >= 0);
+    if (entry.is_directory() && entry.path().filename() != "apps")
+      CHECK(rank_of(graph, entry.path().filename().string()) >= 0);
   for (const auto& entry : fs::directory_iterator(src / "apps"))
     if (entry.is_directory()) CHECK(rank_of(graph, "apps/" + entry.path().filename().string()) >= 0);
 }

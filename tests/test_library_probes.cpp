@@ -123,8 +123,8 @@ float curl_tolerance(float strength, float f_max, float prevailing, float a) {
 constexpr float kWarpSpeed = 0.5f * (2.0f + 2.5f * 1.5f);
 // A velocity of either source: the curl's (curl_tolerance) or the sampled one's, whose
 // fractions (below 8: 2 kArithmetic) multiply steps between texels of at most 2 kWarpSpeed.
-const float kVelocity = std::max(curl_tolerance(0.5f, 2.0f, 0.5f, 2.5f),
-                                 2 * kArithmetic * 2 * kWarpSpeed + 2 * kArithmetic * kWarpSpeed);
+const float kVelocity =
+    std::max(curl_tolerance(0.5f, 2.0f, 0.5f, 2.5f), 2 * kArithmetic * 2 * kWarpSpeed + 2 * kArithmetic * kWarpSpeed);
 // After `steps` steps of size h: each step errs by h times the velocity's error (a scheme's
 // weights sum to 1), its normalisation by kArithmetic and the geodesic step's sin and cos by
 // kTranscendental; errors grow by at most e^(L T) over T = steps h, L = kWarpSpeed x 8 (a
@@ -167,8 +167,7 @@ mat4 arguments(int function, vec4 a, vec4 b = vec4(0.0f), vec4 c = vec4(0.0f), v
 
 // `data`: the probe's buffer at binding 2 (a cube map), which `cpu` reads as a CubeSource.
 template <class Cpu>
-void compare(const std::string& name, Cpu cpu, const std::vector<Case>& cases,
-             const std::vector<vec4>& data = {}) {
+void compare(const std::string& name, Cpu cpu, const std::vector<Case>& cases, const std::vector<vec4>& data = {}) {
   std::vector<mat4> inputs;
   for (const auto& c : cases) inputs.push_back(c.input);
   const auto gpu = test::probe<vec4>(probe_text(name), "probe_" + name + "(input_value)", inputs, "", data);
@@ -221,8 +220,7 @@ TEST_CASE("every function of each GLSL library file appears in that file's probe
 
 TEST_CASE("portable_math.glsl on the GPU agrees with the CPU", "[probe]") {
   std::vector<Case> cases;
-  for (int k = 0; k <= 64; ++k)
-    cases.push_back({arguments(0, vec4(-1.0f + k / 32.0f, 0, 0, 0)), kArithmetic});
+  for (int k = 0; k <= 64; ++k) cases.push_back({arguments(0, vec4(-1.0f + k / 32.0f, 0, 0, 0)), kArithmetic});
   compare("portable_math", probe_portable_math, cases);
 }
 
@@ -236,8 +234,8 @@ TEST_CASE("ray_sphere.glsl on the GPU agrees with the CPU", "[probe]") {
     const vec3 target = vec3(r.v(-0.25f, 0.25f));
     const vec3 d = normalize(target - o);
     const float r_in = r(1.0f, 1.2f), r_out = r(1.3f, 1.6f), limit = r(0.5f, 4.0f);
-    cases.push_back({arguments(k % 2, vec4(k % 2 ? r_in : r_out, r_out, limit, 0), vec4(o, 0), vec4(d, 0)),
-                     kArithmetic});
+    cases.push_back(
+        {arguments(k % 2, vec4(k % 2 ? r_in : r_out, r_out, limit, 0), vec4(o, 0), vec4(d, 0)), kArithmetic});
   }
   compare("ray_sphere", probe_ray_sphere, cases);
 }
@@ -247,15 +245,17 @@ TEST_CASE("equirect_mapping.glsl on the GPU agrees with the CPU", "[probe]") {
   for (int column = 0; column < 64; column += 3)
     for (int f = 0; f < 2; ++f) {
       const float latitude = 0.05f * column - 1.5f;
-      cases.push_back({arguments(f, vec4(float(column), 64.0f, 0, 0), vec4(std::cos(latitude), std::sin(latitude), 0, 0)),
-                       kTranscendental});
+      cases.push_back(
+          {arguments(f, vec4(float(column), 64.0f, 0, 0), vec4(std::cos(latitude), std::sin(latitude), 0, 0)),
+           kTranscendental});
     }
   // equirect_uv of a column's direction: the column's centre and the row's latitude, within the
   // transcendental functions' error (atan, asin of values below 1: kTranscendental).
   for (int column = 0; column < 64; column += 5) {
     const float latitude = 0.045f * column - 1.4f;
     const float longitude = equirect_longitude(column, 64);
-    const vec3 n(std::cos(latitude) * std::cos(longitude), std::cos(latitude) * std::sin(longitude), std::sin(latitude));
+    const vec3 n(std::cos(latitude) * std::cos(longitude), std::cos(latitude) * std::sin(longitude),
+                 std::sin(latitude));
     cases.push_back({arguments(2, vec4(0.0f), vec4(n, 0.0f)), kTranscendental});
     const vec2 uv = equirect_uv(n);
     CHECK(uv.x == Approx((column + 0.5) / 64).margin(1e-6));
@@ -341,11 +341,11 @@ TEST_CASE("cloud_density.glsl on the GPU agrees with the CPU", "[probe]") {
   for (int f = 0; f < 13; ++f)
     for (int k = 0; k < 12; ++k) {
       vec4 a(r(0.0f, 1.0f), r(0.0f, 1.0f), r(0.0f, 1.0f), 0.0f);
-      if (f == 10) a = vec4(float(k), 12.0f, r(100.0f, 4000.0f), 0.0f);  // light_sample(i, n, length)
-      if (f == 0) a.y = a.x + r(0.05f, 1.0f);  // hermite_step needs a < b
-      if (f == 7) a.x = float(k % 9);          // noise_period's cloud type
-      if (f == 8) a = vec4(r(-1.0f, 1.0f), r(0.25f, 1.0f), 0, 0);  // cloud_phase(nu, scale)
-      if (f == 9) a = vec4(r(0.0f, 8.0f), r(-1.0f, 1.0f), 0, 0);   // sun_scattering(tau, nu)
+      if (f == 10) a = vec4(float(k), 12.0f, r(100.0f, 4000.0f), 0.0f);        // light_sample(i, n, length)
+      if (f == 0) a.y = a.x + r(0.05f, 1.0f);                                  // hermite_step needs a < b
+      if (f == 7) a.x = float(k % 9);                                          // noise_period's cloud type
+      if (f == 8) a = vec4(r(-1.0f, 1.0f), r(0.25f, 1.0f), 0, 0);              // cloud_phase(nu, scale)
+      if (f == 9) a = vec4(r(0.0f, 8.0f), r(-1.0f, 1.0f), 0, 0);               // sun_scattering(tau, nu)
       if (f == 12) a = vec4(r(0.0f, 4.0f), r(-1.0f, 1.0f), r(0.0f, 1.0f), 0);  // powder_factor(tau, nu, k)
       const vec4 b(r(0.0f, 1.0f), r(0.0f, 1.0f), float(k % 9), 0.0f);
       const bool transcendental = f == 5 || f == 8 || f == 9 || f == 12;
@@ -362,8 +362,9 @@ TEST_CASE("worley.glsl on the GPU agrees with the CPU", "[probe]") {
     const int f = k % 7;
     const bool integer = f < 2 || f == 3 || f == 5;
     const vec4 period = (k / 4) % 2 ? vec4(5.0f, 7.0f, 3.0f, 0.0f) : vec4(0.0f);
-    const vec4 p = integer ? vec4(std::floor(r(-40.0f, 40.0f)), std::floor(r(-40.0f, 40.0f)), std::floor(r(-40.0f, 40.0f)), 0)
-                           : (f == 2 ? r.v(0.0f, 1.0f) : r.v(-20.0f, 20.0f));
+    const vec4 p =
+        integer ? vec4(std::floor(r(-40.0f, 40.0f)), std::floor(r(-40.0f, 40.0f)), std::floor(r(-40.0f, 40.0f)), 0)
+                : (f == 2 ? r.v(0.0f, 1.0f) : r.v(-20.0f, 20.0f));
     vec4 a(r(0.5f, 3.0f), float(k % 3 - 1), float((k / 3) % 3 - 1), 0.0f);
     if (f == 4) a.y = r(0.05f, 1.0f);  // smooth_worley's lambda
     cases.push_back({arguments(f, a, p, period, key), integer ? kExact : f == 4 ? kSmoothWorley : kWorley});
@@ -378,9 +379,10 @@ TEST_CASE("worley_fbm.glsl on the GPU agrees with the CPU", "[probe]") {
   for (int k = 0; k < 48; ++k) {
     const vec4 period = k % 2 ? vec4(4.0f, 4.0f, 4.0f, 0.0f) : vec4(0.0f);
     const bool smooth = k % 3 == 2;  // smooth_worley_fbm with lambda in [0.05, 1]
-    cases.push_back({arguments(0, vec4(smooth ? 1.0f : 0.0f, smooth ? r(0.05f, 1.0f) : 0.0f, 0.0f, 0.0f),
-                               r.v(0.0f, 1.0f), vec4(3.0f, 5.0f, 2.0f, 0.5f), vec4(99.0f, period.x, period.y, period.z)),
-                     (smooth ? kSmoothFbm : kFbm) * highest_frequency});
+    cases.push_back(
+        {arguments(0, vec4(smooth ? 1.0f : 0.0f, smooth ? r(0.05f, 1.0f) : 0.0f, 0.0f, 0.0f), r.v(0.0f, 1.0f),
+                   vec4(3.0f, 5.0f, 2.0f, 0.5f), vec4(99.0f, period.x, period.y, period.z)),
+         (smooth ? kSmoothFbm : kFbm) * highest_frequency});
   }
   compare("worley_fbm", probe_worley_fbm, cases);
 }
@@ -421,7 +423,8 @@ TEST_CASE("implicit_field.glsl on the GPU agrees with the CPU", "[probe][model]"
     const vec4 kind = vec4(r(0.5f, 1.0f), float(k / 4 % 2), r(0.5f, 4.0f), r(0.0f, 1.0f));
     if (f == 0)
       cases.push_back({arguments(0, vec4(r(-0.2f, 1.2f), r(0.0f, 1.0f), r(0.0f, 1.0f), 0.0f),
-                                 vec4(1.0f, r(0.0f, 1.0f), r(0.0f, 2.0f), r(0.0f, 1.0f))), kArithmetic});
+                                 vec4(1.0f, r(0.0f, 1.0f), r(0.0f, 2.0f), r(0.0f, 1.0f))),
+                       kArithmetic});
     if (f == 1) cases.push_back({arguments(1, r.v(-1.0f, 1.0f), a, b, kind), kField});
     if (f == 2) cases.push_back({arguments(2, r.v(-2.0f, 2.0f), a, b, kind), kTurbulence});
     if (f == 3) cases.push_back({arguments(3, r.v(-2.0f, 2.0f), a, b, kind), kBlended});
@@ -487,7 +490,9 @@ TEST_CASE("tileable_noise.glsl on the GPU agrees with the CPU", "[probe]") {
     const vec4 seed_and_period(float(40 + k), period, period, period);
     const vec4 p = r.v(0.0f, 32.0f);
     const float type = float(k % 4);
-    if (f == 0) cases.push_back({arguments(0, vec4(type, r(0.0f, 1.0f), r(0.0f, 1.0f), 0), p, fbm, seed_and_period), kArithmetic});
+    if (f == 0)
+      cases.push_back(
+          {arguments(0, vec4(type, r(0.0f, 1.0f), r(0.0f, 1.0f), 0), p, fbm, seed_and_period), kArithmetic});
     if (f == 1) cases.push_back({arguments(1, vec4(type, 0, 0, 0), p, fbm, seed_and_period), kNoiseMean});
     if (f == 2) cases.push_back({arguments(2, vec4(type, r(0.0f, 1.0f), r(-1.0f, 1.0f), 0)), kArithmetic});
     if (f == 3) cases.push_back({arguments(3, vec4(type, 0, 0, 0), p, fbm, seed_and_period), kNoiseChannel});
@@ -511,9 +516,11 @@ TEST_CASE("webanck_forms.glsl on the GPU agrees with the CPU", "[probe]") {
   std::vector<Case> cases;
   for (int k = 0; k < 12; ++k) {
     const float z = r(-4.0f, 4.0f);
-    cases.push_back({arguments(0, vec4(z, float(1 + k % 8), r(0.3f, 0.7f), 0), vec4(r(0.1f, 1.0f), 0, 0, 0)), kTranscendental});
-    cases.push_back({arguments(1, vec4(float(1 + k % 8), 0.52f, 2.02f, 0), vec4(r(1.0f, 400.0f), 0, 0, 0), vec4(0, 0, 0, float(k))),
-                     kArithmetic * 400.0f});
+    cases.push_back(
+        {arguments(0, vec4(z, float(1 + k % 8), r(0.3f, 0.7f), 0), vec4(r(0.1f, 1.0f), 0, 0, 0)), kTranscendental});
+    cases.push_back(
+        {arguments(1, vec4(float(1 + k % 8), 0.52f, 2.02f, 0), vec4(r(1.0f, 400.0f), 0, 0, 0), vec4(0, 0, 0, float(k))),
+         kArithmetic * 400.0f});
     // G3 and W3 of up to 8 octaves at frequency f on points in [0, 0.05]^3: x0 = 0.05 f.
     const float frequency = r(10.0f, 400.0f);
     const vec4 point(r.v(0.0f, 0.05f).x, r.v(0.0f, 0.05f).y, r(0.0f, 0.05f), frequency);
@@ -521,8 +528,9 @@ TEST_CASE("webanck_forms.glsl on the GPU agrees with the CPU", "[probe]") {
                      webanck_field_tolerance(0.05f * frequency)});
     const vec2 wind = normalize(vec2(r(-1.0f, 1.0f), r(-1.0f, 1.0f)) + vec2(1e-3f));
     cases.push_back({arguments(3, vec4(0.0f), vec4(r.v(-5.0e4f, 5.0e4f)), vec4(wind, 0, 0)), kArithmetic});
-    cases.push_back({arguments(4, vec4(r(0.0f, 1.0f), r(0.0f, 1.0f), r(0.0f, 1.0f), 0), vec4(r(0.0f, 1.0f), r(-0.2f, 0.2f), 0, 0)),
-                     kArithmetic});
+    cases.push_back(
+        {arguments(4, vec4(r(0.0f, 1.0f), r(0.0f, 1.0f), r(0.0f, 1.0f), 0), vec4(r(0.0f, 1.0f), r(-0.2f, 0.2f), 0, 0)),
+         kArithmetic});
     cases.push_back({arguments(5, vec4(r(-0.2f, 0.2f), 0, 0, 0), r.v(0.0f, 1.0f), r.v(0.0f, 1.0f)), kArithmetic});
     // The exact fields: points in [0, 0.05]^3 and tau <= 0.01 keep p_n + 8 q below 0.13, so
     // x0 <= 0.13 x 400 (the highest base frequency).
@@ -558,13 +566,15 @@ TEST_CASE("curl_flow.glsl on the GPU agrees with the CPU", "[probe]") {
   // The zonal profile's derivative: products of values below 3 (kArithmetic), cells 0 .. 3.
   for (int k = 0; k < 8; ++k) {
     const float z = r(-1.0f, 1.0f);
-    cases.push_back({arguments(4, vec4(0.0f), vec4(z, std::sqrt(1.0f - z * z), float(k % 4), r(-3.0f, 3.0f)), vec4(0.0f), vec4(0.0f)),
+    cases.push_back({arguments(4, vec4(0.0f), vec4(z, std::sqrt(1.0f - z * z), float(k % 4), r(-3.0f, 3.0f)),
+                               vec4(0.0f), vec4(0.0f)),
                      kArithmetic});
   }
   // The envelope alone: one exp and a few products of values below 16 (kTranscendental x 16).
   for (int k = 0; k < 8; ++k)
-    cases.push_back({arguments(3, vec4(0.0f), vec4(r(-1.0f, 1.0f), k % 2 == 0 ? 0.6f : 1.0f, 0, 0), vec4(0.0f), vec4(0.0f)),
-                     16.0f * kTranscendental});
+    cases.push_back(
+        {arguments(3, vec4(0.0f), vec4(r(-1.0f, 1.0f), k % 2 == 0 ? 0.6f : 1.0f, 0, 0), vec4(0.0f), vec4(0.0f)),
+         16.0f * kTranscendental});
   compare("curl_flow", probe_curl_flow, cases);
 }
 
@@ -645,7 +655,8 @@ TEST_CASE("cube_sampling.glsl on the GPU agrees with the CPU", "[probe]") {
         cases.push_back({arguments(0, vec4(float(face), float(i), float(j), 0)), kExact});
   for (int k = 0; k < 64; ++k)
     cases.push_back({arguments(1, vec4(0.0f), vec4(normalize(vec3(r.v(-1.0f, 1.0f)) + vec3(1e-3f)), 0)), kBilinear});
-  compare("cube_sampling", [&](const mat4& x) { return probe_cube_sampling(x, source); }, cases, texels);
+  compare(
+      "cube_sampling", [&](const mat4& x) { return probe_cube_sampling(x, source); }, cases, texels);
 }
 
 TEST_CASE("curl_spline.glsl on the GPU agrees with the CPU", "[probe][spline]") {
@@ -677,12 +688,14 @@ TEST_CASE("curl_spline.glsl on the GPU agrees with the CPU", "[probe][spline]") 
     const int f = k % 6;
     const vec3 w = normalize(vec3(r.v(-1.0f, 1.0f)) + vec3(1e-3f));
     if (f == 0) cases.push_back({arguments(0, vec4(r(0.0f, 1.0f), 0, 0, 0)), kArithmetic});
-    if (f == 1) cases.push_back({arguments(1, vec4(0.0f), r.v(-1.0f, 1.0f) + vec4(0, 0, 0, r(-1.0f, 1.0f)),
-                                           r.v(-1.0f, 1.0f), r.v(-1.0f, 1.0f)), kPrefilter});
+    if (f == 1)
+      cases.push_back({arguments(1, vec4(0.0f), r.v(-1.0f, 1.0f) + vec4(0, 0, 0, r(-1.0f, 1.0f)), r.v(-1.0f, 1.0f),
+                                 r.v(-1.0f, 1.0f)),
+                       kPrefilter});
     if (f == 2) {
       const int i = int(r(0.0f, float(extent - 4) + 0.999f)), j = int(r(0.0f, float(extent) - 0.001f));
-      cases.push_back({arguments(2, vec4(float((k / 6) % 6), float(i), float(j), 0),
-                                 cubic_bspline_weights(r(0.0f, 1.0f))), kRow});
+      cases.push_back(
+          {arguments(2, vec4(float((k / 6) % 6), float(i), float(j), 0), cubic_bspline_weights(r(0.0f, 1.0f))), kRow});
     }
     if (f == 3) cases.push_back({arguments(3, vec4(0.0f), vec4(w, 0)), kSample});
     if (f == 4) cases.push_back({arguments(4, vec4(0.0f), vec4(w, 0)), kProjected});
@@ -690,7 +703,8 @@ TEST_CASE("curl_spline.glsl on the GPU agrees with the CPU", "[probe][spline]") 
       // Nodes inside, on and beyond the face's edges, with margins 2 and 3.
       const int margin = 2 + (k / 6) % 2;
       cases.push_back({arguments(5, vec4(float((k / 6) % 6), float(k % 9), float((k / 3) % 9), 0),
-                                 vec4(float(margin), float(SPLINE_PROBE_CELLS), 0, 0)), kArithmetic});
+                                 vec4(float(margin), float(SPLINE_PROBE_CELLS), 0, 0)),
+                       kArithmetic});
     }
   }
   // The faces' edges and corners, where the nodes read reach into the margin.
@@ -700,7 +714,8 @@ TEST_CASE("curl_spline.glsl on the GPU agrees with the CPU", "[probe][spline]") 
         const vec3 w = normalize(cube_face_point(face, s, t));
         cases.push_back({arguments(3, vec4(0.0f), vec4(w, 0)), kSample});
       }
-  compare("curl_spline", [&](const mat4& x) { return probe_curl_spline(x, source); }, cases, nodes);
+  compare(
+      "curl_spline", [&](const mat4& x) { return probe_curl_spline(x, source); }, cases, nodes);
 }
 
 TEST_CASE("warp_step.glsl on the GPU agrees with the CPU, sampled and procedural", "[probe]") {
@@ -722,13 +737,14 @@ TEST_CASE("warp_step.glsl on the GPU agrees with the CPU, sampled and procedural
     // flow time, first step, max step, tolerance (radians); attempt limit, part, t, attempts
     const vec4 adaptive(4.0f * h, h, 2.0f * h, 1.0e-4f);
     const vec4 state(64.0f, float((k / 10) % 2), 0.0f, 0.0f);
-    const float tolerance = f == 0 || f == 3 ? kVelocity
-                          : f == 2 || f == 6 ? warp_tolerance(steps, h)
-                          : f >= 8          ? warp_tolerance(64, h)
-                                            : warp_tolerance(1, h);
+    const float tolerance = f == 0 || f == 3   ? kVelocity
+                            : f == 2 || f == 6 ? warp_tolerance(steps, h)
+                            : f >= 8           ? warp_tolerance(64, h)
+                                               : warp_tolerance(1, h);
     cases.push_back({arguments(f, vec4(float(integrator), h, float(steps), 0), w, adaptive, state), tolerance});
   }
-  compare("warp_step", [&](const mat4& x) { return probe_warp_step(x, source); }, cases, texels);
+  compare(
+      "warp_step", [&](const mat4& x) { return probe_warp_step(x, source); }, cases, texels);
 }
 
 TEST_CASE("noise_rows.glsl on the GPU agrees with the CPU and with the point functions", "[probe]") {
@@ -755,17 +771,17 @@ TEST_CASE("noise_rows.glsl on the GPU agrees with the CPU and with the point fun
       // One octave through each walk directly: worley_row, perlin_row, perlin_row_wide (cells of
       // 8 texels or more), perlin_row_finish; the Perlin ones finish as a Perlin channel.
       const vec4 single(type == 2 ? std::min(frequency, 0.125f) : frequency, 1.0f, 2.0f, 0.5f);
-      cases.push_back({arguments(4 + type, vec4(type == 0 ? 0.0f : 2.0f, t0, 5.0f, 0), segment, single,
-                                 seed_and_period),
-                       kRowWalk});
-      cases.push_back({arguments(2, vec4(float(type), float(3 * k), 1.0f, 0), vec4(0, 0, 0.4f, -0.3f), fbm,
-                                 seed_and_period),
-                       kArithmetic});
+      cases.push_back(
+          {arguments(4 + type, vec4(type == 0 ? 0.0f : 2.0f, t0, 5.0f, 0), segment, single, seed_and_period),
+           kRowWalk});
+      cases.push_back(
+          {arguments(2, vec4(float(type), float(3 * k), 1.0f, 0), vec4(0, 0, 0.4f, -0.3f), fbm, seed_and_period),
+           kArithmetic});
       cases.push_back({arguments(3, vec4(float(type), float(k), float(k + 1), 0), vec4(float(k + 2), 0, float(k), 0.3f),
                                  fbm, seed_and_period),
                        kArithmetic});
-      cases.push_back({arguments(8, vec4(float(type), 0, 0, 0), vec4(0, 0, 0.7f, 0.2f), fbm, seed_and_period),
-                       kArithmetic});
+      cases.push_back(
+          {arguments(8, vec4(float(type), 0, 0, 0), vec4(0, 0, 0.7f, 0.2f), fbm, seed_and_period), kArithmetic});
     }
   compare("noise_rows", probe_noise_rows, cases);
 
@@ -871,7 +887,8 @@ TEST_CASE("cloud_march.glsl on the GPU agrees with the CPU", "[probe][march]") {
     cases.push_back(relative(arguments(4, vec4(float(layer), 0, 0, 0), p), march));
     // View rays rising 0.2 to 1.2 rad.
     const float elevation = r(0.2f, 1.2f), azimuth = r(-3.0f, 3.0f);
-    const vec4 d(std::cos(elevation) * std::sin(azimuth), std::cos(elevation) * std::cos(azimuth), std::sin(elevation), 0);
+    const vec4 d(std::cos(elevation) * std::sin(azimuth), std::cos(elevation) * std::cos(azimuth), std::sin(elevation),
+                 0);
     cases.push_back({arguments(5, vec4(0, r(5000.0f, 150000.0f), 0, 0), vec4(0), d), crossing});
     cases.push_back(relative(arguments(6, vec4(0, 150000.0f, r(0.0f, 1.0f), 0), vec4(0), d), march));
     cases.push_back(relative(arguments(7, vec4(0), vec4(0), vec4(0), pixel), march));
@@ -885,18 +902,21 @@ TEST_CASE("cloud_march.glsl on the GPU agrees with the CPU", "[probe][march]") {
     // 0.2 x 400 / 4 x 16 = 320, whose rounding moves a lookup by kPosition-like amounts).
     const vec4 pn(r(0.0f, 0.2f), r(0.0f, 0.2f), r(0.0f, 0.03f), 0.0f);
     cases.push_back({arguments(9, vec4(float(k % 14), r(10.0f, 400.0f), r(-1.0f, 3.0f), 0), pn), baked});
-    cases.push_back({arguments(10, vec4(float(layer), 0, float(k % 3), 0), pn, vec4(0), vec4(r(0.0f, 1.0f), r(0.2f, 0.9f), r(-2.0f, 2.0f), 0)),
+    cases.push_back({arguments(10, vec4(float(layer), 0, float(k % 3), 0), pn, vec4(0),
+                               vec4(r(0.0f, 1.0f), r(0.2f, 0.9f), r(-2.0f, 2.0f), 0)),
                      webanck});
     // Shadows from the ground (all layers) or from the cumulus (the alto above), and jitters.
-    cases.push_back(relative(arguments(11, vec4(k % 2 ? -1.0f : 0.0f, k % 2 ? -1.0e30f : 3000.0f, 0, 0),
-                                       vec4(p.x, p.y, k % 2 ? -860.0f : altitude - 860.0f, 0), vec4(0), pixel + vec4(0, 0, float(k), 0)),
-                             march));
+    cases.push_back(relative(
+        arguments(11, vec4(k % 2 ? -1.0f : 0.0f, k % 2 ? -1.0e30f : 3000.0f, 0, 0),
+                  vec4(p.x, p.y, k % 2 ? -860.0f : altitude - 860.0f, 0), vec4(0), pixel + vec4(0, 0, float(k), 0)),
+        march));
   }
   // view_ray_end on the CPU: a falling ray meets the bare sphere where ray_sphere says (the
   // terrain is off), a rising one meets no ground.
   for (int k = 0; k < 8; ++k) {
     const float elevation = r(0.2f, 1.2f), azimuth = r(-3.0f, 3.0f);
-    const vec3 up(std::cos(elevation) * std::sin(azimuth), std::cos(elevation) * std::cos(azimuth), std::sin(elevation));
+    const vec3 up(std::cos(elevation) * std::sin(azimuth), std::cos(elevation) * std::cos(azimuth),
+                  std::sin(elevation));
     const vec3 down(up.x, up.y, -up.z);
     const MarchParams m = probe_march_params();
     const vec3 centre(0.0f, 0.0f, -(m.earth_radius + m.camera_altitude));
@@ -1003,7 +1023,8 @@ TEST_CASE("terrain.glsl on the GPU agrees with the CPU", "[probe][terrain]") {
                    std::sin(sun_elevation), 0);
     // Points well inside the square (outside it the ground drops to sea level at its edge).
     const vec4 inner(0.6f * xy.x, 0.6f * xy.y, 0, 0);
-    const vec4 on_ground(inner.x, inner.y, R + cpu(arguments(1, vec4(0, 0, float(enabled), 0), q, vec4(0), inner)).x, 0);
+    const vec4 on_ground(inner.x, inner.y, R + cpu(arguments(1, vec4(0, 0, float(enabled), 0), q, vec4(0), inner)).x,
+                         0);
     cases.push_back({arguments(5, vec4(0, 0, float(enabled), 0), on_ground, sun), 4.0f});
     if (enabled == 1) CHECK(cpu(arguments(5, vec4(0, 0, 1, 0), on_ground, sun)).x == (sun_elevation > 0 ? 1.0f : 0.0f));
     const vec4 n = normalize(vec4(r(-0.5f, 0.5f), r(-0.5f, 0.5f), 1.0f, 0.0f));
@@ -1018,7 +1039,8 @@ TEST_CASE("terrain.glsl on the GPU agrees with the CPU", "[probe][terrain]") {
         for (int a = std::max(i - 3, 0); a <= std::min(i + 3, size - 1); ++a)
           highest = std::max(highest, heights[size_t(b) * size + a]);
       const vec4 centre(((i + 0.5f) / size - 0.5f) * 40000.0f, ((j + 0.5f) / size - 0.5f) * 40000.0f, 0, 0);
-      CHECK(cpu(arguments(1, vec4(0, 0, 1, 0), vec4(0), vec4(0), centre)).z == Approx(highest).epsilon(0).margin(altitude));
+      CHECK(cpu(arguments(1, vec4(0, 0, 1, 0), vec4(0), vec4(0), centre)).z ==
+            Approx(highest).epsilon(0).margin(altitude));
     }
   compare("terrain", cpu, cases);
   glDeleteTextures(1, &texture);

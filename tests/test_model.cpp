@@ -45,7 +45,8 @@ TEST_CASE("Wyvill-1 is 1 within the radius, 1/2 half-way, 0 at and beyond the in
   CHECK(primitive_field(vec3(0.5f, 0.5f, 0.81f), p) == 0.0f);  // beyond R + I
 }
 
-TEST_CASE("Wyvill-1's first derivative is continuous (zero) at the skeleton radius and the influence edge", "[fast][model]") {
+TEST_CASE("Wyvill-1's first derivative is continuous (zero) at the skeleton radius and the influence edge",
+          "[fast][model]") {
   // One-sided difference quotients over h: b'(0) = b'(1) = 0, so they are bounded by
   // max|b''| h / 2 (|b''| <= 44/9 near 0 and 40/9 near 1) plus two roundings of values below
   // 1 divided by h. Outside [0, 1] b is constant, so the quotients there are exactly 0.
@@ -138,7 +139,8 @@ TEST_CASE("brick culling gives the same volume as brute force, bit for bit, in e
     }
 }
 
-TEST_CASE("editing one primitive recomputes only its old and new footprints and equals a full recompute", "[model][gpu]") {
+TEST_CASE("editing one primitive recomputes only its old and new footprints and equals a full recompute",
+          "[model][gpu]") {
   test::test_context();
   const int size = 48;
   const model::BrickGrid grid{size};

@@ -42,7 +42,8 @@ std::string with_member(std::vector<std::pair<std::string, std::string>> members
 
 std::string cloud_file(const std::string& top = "", const std::string& noise = "", const std::string& primitive = "") {
   const std::string n = with_member({{"octaves", "2"}}, noise);
-  const std::string p = with_member({{"type", "\"point\""}, {"position", "[0.5, 0.5, 0.5]"}, {"radius", "0.1"}}, primitive);
+  const std::string p =
+      with_member({{"type", "\"point\""}, {"position", "[0.5, 0.5, 0.5]"}, {"radius", "0.1"}}, primitive);
   return "{" + top + "\"blend\": \"lipus\", \"noise\": " + n + ", \"primitives\": [" + p + "]}";
 }
 
@@ -61,28 +62,34 @@ TEST_CASE("the test's base cloud file is accepted", "[fast][model]") {
   CHECK_NOTHROW(io::parse_cloud_model(cloud_file(), "c.cloud.json"));
 }
 
-TEST_CASE("cloud model files refuse every numeric key just outside the range the table declares, naming the key", "[fast][model][params]") {
+TEST_CASE("cloud model files refuse every numeric key just outside the range the table declares, naming the key",
+          "[fast][model][params]") {
   namespace cm = params::cloud_model;
   for (const params::Parameter* p : params::all()) {
-    if (!p->used_by(params::model_file) || (p->type != params::Type::integer && p->type != params::Type::real)) continue;
+    if (!p->used_by(params::model_file) || (p->type != params::Type::integer && p->type != params::Type::real))
+      continue;
     const std::string key(p->key);
     for (const double value : {p->min - 1.0, p->max + 1.0}) {
       std::ostringstream v;
       v.precision(10);  // as the message shows it (params::check_number)
       v << value;
       std::string text;
-      if (p == &cm::scale || p == &cm::extent) text = cloud_file("\"" + key + "\": " + v.str() + ", ");
-      else if (p == &cm::coordinate) text = cloud_file("", "", "\"position\": [0.5, " + v.str() + ", 0.5], ");
+      if (p == &cm::scale || p == &cm::extent)
+        text = cloud_file("\"" + key + "\": " + v.str() + ", ");
+      else if (p == &cm::coordinate)
+        text = cloud_file("", "", "\"position\": [0.5, " + v.str() + ", 0.5], ");
       else if (p == &cm::radius || p == &cm::influence || p == &cm::weight)
         text = cloud_file("", "", "\"" + key + "\": " + v.str() + ", ");
-      else text = cloud_file("", "\"" + key + "\": " + v.str() + ", ");
+      else
+        text = cloud_file("", "\"" + key + "\": " + v.str() + ", ");
       INFO(text);
       CHECK_THAT(refused(text), Catch::Contains(key) && Catch::Contains(v.str()));
     }
   }
 }
 
-TEST_CASE("cloud model files refuse unknown and duplicate keys, wrong types, missing skeletons and unequal weights", "[fast][model]") {
+TEST_CASE("cloud model files refuse unknown and duplicate keys, wrong types, missing skeletons and unequal weights",
+          "[fast][model]") {
   const std::map<std::string, std::string> cases = {
       {cloud_file("\"colour\": 1, "), "colour"},
       {cloud_file("\"scale\": 0.1, \"scale\": 0.2, "), "scale"},
@@ -98,7 +105,8 @@ TEST_CASE("cloud model files refuse unknown and duplicate keys, wrong types, mis
       {R"({"primitives": []})", "primitives"},
       {R"({"blend": "lipus"})", "primitives"},
       {R"({"primitives": [{"type": "point", "position": [0.4, 0.5, 0.5], "weight": 1},
-                          {"type": "point", "position": [0.6, 0.5, 0.5], "weight": 0.5}]})", "primitives[1].weight"},
+                          {"type": "point", "position": [0.6, 0.5, 0.5], "weight": 0.5}]})",
+       "primitives[1].weight"},
       {"[1, 2]", "top level"},
       {"{\"scale\": 0.02", "not valid JSON"},
   };
@@ -108,7 +116,8 @@ TEST_CASE("cloud model files refuse unknown and duplicate keys, wrong types, mis
   }
 }
 
-TEST_CASE("a polyline in a model file is its consecutive segments, with its radius, influence and noise", "[fast][model]") {
+TEST_CASE("a polyline in a model file is its consecutive segments, with its radius, influence and noise",
+          "[fast][model]") {
   const std::string common = R"("radius": 0.05, "influence": 0.08, "noise": {"seed": 9}})";
   const model::CloudModel polyline = io::parse_cloud_model(
       R"({"primitives": [{"type": "polyline", "points": [[0.2, 0.5, 0.8], [0.5, 0.5, 0.82], [0.8, 0.6, 0.8]], )" +
@@ -145,7 +154,8 @@ TEST_CASE("nephele model refuses bad options and files with exit code 2", "[mode
   CHECK_FALSE(std::filesystem::exists(dir.path / "out"));
 }
 
-TEST_CASE("nephele model writes the raw volume, its sidecar, the EXR atlas and the model as one set", "[model][cli][gpu]") {
+TEST_CASE("nephele model writes the raw volume, its sidecar, the EXR atlas and the model as one set",
+          "[model][cli][gpu]") {
   test::TemporaryDirectory out;
   const auto r = test::run("model --example towering --size 20 --preview 32x24 --quiet --out " + out.path.string());
   INFO(r.output);
@@ -164,7 +174,8 @@ TEST_CASE("nephele model writes the raw volume, its sidecar, the EXR atlas and t
         io::write_cloud_model(model::example("towering")));
 }
 
-TEST_CASE("density.vdb reads back through OpenVDB with its voxels, grid class, voxel size and orientation", "[model][vdb][gpu]") {
+TEST_CASE("density.vdb reads back through OpenVDB with its voxels, grid class, voxel size and orientation",
+          "[model][vdb][gpu]") {
   if (!io::vdb_available()) {
     WARN("built without OpenVDB: no .vdb to read back");
     return;

@@ -110,7 +110,8 @@ TEST_CASE("perlin noise equals the textbook trilinear evaluation", "[fast][noise
     const vec3 p = random_point(rng, 40.0f);
     const ivec3 period = n % 2 ? ivec3(0) : ivec3(7, 5, 9);
     // The float operations of the evaluation (f itself is exact): kPerlinVsTextbook.
-    REQUIRE(perlin_noise(p, period, key) == Approx(textbook_perlin(p, period, key)).epsilon(0).margin(kPerlinVsTextbook));
+    REQUIRE(perlin_noise(p, period, key) ==
+            Approx(textbook_perlin(p, period, key)).epsilon(0).margin(kPerlinVsTextbook));
   }
 }
 
@@ -270,7 +271,8 @@ TEST_CASE("the row walk computes the point functions' values", "[fast][noise]") 
           } else {
             // The row walk sums dy^2 + dz^2 first: one rounding of a squared distance below 3
             // (2^-24 relative, halved by the square root), then averaged and scaled by <= 1.
-            REQUIRE(volume.at(x, y, z, 0) == Approx(noise::reference_value(channel, x, y, z)).epsilon(0).margin(kRowWalk));
+            REQUIRE(volume.at(x, y, z, 0) ==
+                    Approx(noise::reference_value(channel, x, y, z)).epsilon(0).margin(kRowWalk));
           }
         }
   }
@@ -284,7 +286,8 @@ TEST_CASE("inverted worley channels are the cover library's inverted worley fbm 
     for (int y = 0; y < 16; y += 2)
       for (int x = 0; x < 16; ++x) {
         const float w = inverted_worley_fbm(vec3(x, y, z) + 0.5f, fbm).w;  // mean of 1 - F1
-        REQUIRE(volume.at(x, y, z, 0) == Approx(1.0f - (1.0f - w) / std::sqrt(3.0f)).epsilon(0).margin(kInvertedWorleyRescaled));
+        REQUIRE(volume.at(x, y, z, 0) ==
+                Approx(1.0f - (1.0f - w) / std::sqrt(3.0f)).epsilon(0).margin(kInvertedWorleyRescaled));
       }
 }
 
@@ -347,7 +350,8 @@ TEST_CASE("texture specifications that cannot tile are refused with the option n
   };
   using noise::NoiseType;
   // 10 cells along 32 texels give 10 * 20 / 32 cells along the height 20.
-  CHECK_THAT(message(spec_of(32, 20, 32, NoiseType::worley, 10, 1)), Catch::Contains("--cells") && Catch::Contains("multiple of 8"));
+  CHECK_THAT(message(spec_of(32, 20, 32, NoiseType::worley, 10, 1)),
+             Catch::Contains("--cells") && Catch::Contains("multiple of 8"));
   CHECK(message(spec_of(32, 20, 32, NoiseType::worley, 8, 1)).empty());
   // Cells narrower than a texel.
   CHECK_THAT(message(spec_of(16, 16, 16, NoiseType::worley, 17, 1)), Catch::Contains("--cells"));

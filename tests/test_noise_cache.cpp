@@ -70,10 +70,10 @@ TEST_CASE("the float cache removes the least recently used files beyond its cap"
   CHECK(fs::exists(cache.file_of("c")));
 }
 
-TEST_CASE("render reuses the cached noise volume with the same image, and --no-cache leaves no cache",
-          "[cache][cli]") {
+TEST_CASE("render reuses the cached noise volume with the same image, and --no-cache leaves no cache", "[cache][cli]") {
   TemporaryDirectory cache_home(true), out(true), unused_home(true);
-  const std::string arguments = " render --view gurten --size 32x18 --view-steps 6 --light-steps 2 --verbose --quiet --out ";
+  const std::string arguments =
+      " render --view gurten --size 32x18 --view-steps 6 --light-steps 2 --verbose --quiet --out ";
   auto render = [&](const fs::path& home, const std::string& name, const std::string& extra = "") {
     return test::run_command("XDG_CACHE_HOME=" + home.string() + " " + NEPHELE_EXECUTABLE + arguments +
                              (out.path / name).string() + extra);
@@ -252,8 +252,7 @@ TEST_CASE("a symbolic link or directory named like a cache entry is a miss and n
     CHECK(entry.path().filename().string().rfind(".tmp-", 0) != 0);
 }
 
-TEST_CASE("the cache trim removes temporary files of killed writers and counts those of live ones",
-          "[fast][cache]") {
+TEST_CASE("the cache trim removes temporary files of killed writers and counts those of live ones", "[fast][cache]") {
   TemporaryDirectory dir(true);
   const std::uintmax_t file_bytes = entry_bytes(1000);
   const io::FloatCache cache(dir.path, 2 * file_bytes + 100);
@@ -321,8 +320,7 @@ Run render_with_cache(const fs::path& home, const fs::path& png) {
 
 }  // namespace
 
-TEST_CASE("render rebuilds a cached noise volume whose bytes were altered instead of reading it",
-          "[cache][cli]") {
+TEST_CASE("render rebuilds a cached noise volume whose bytes were altered instead of reading it", "[cache][cli]") {
   TemporaryDirectory cache_home(true), out(true);
   const Run first = render_with_cache(cache_home.path, out.path / "first.png");
   INFO(first.output);

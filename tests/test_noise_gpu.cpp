@@ -109,9 +109,10 @@ TEST_CASE("the GPU texture generator agrees with its CPU twin for every channel 
       spec_of(16, 16, 8, NoiseType::perlin, 2, 4),
       spec_of(20, 10, 5, NoiseType::perlin, 4, 1),
       spec_of(100, 20, 20, NoiseType::perlin, 5, 1),  // cells of 20 texels: perlin_row_wide, a partial segment
-      spec_of(128, 16, 16, NoiseType::perlin, 8, 2),  // the finishing octave walked wide           // rows not a multiple of 8
+      spec_of(128, 16, 16, NoiseType::perlin, 8,
+              2),  // the finishing octave walked wide           // rows not a multiple of 8
       spec_of(16, 8, 8, NoiseType::perlin_worley, 2, 3),
-      spec_of(12, 12, 12, NoiseType::worley, 6, 2),          // cells of one texel at octave 2
+      spec_of(12, 12, 12, NoiseType::worley, 6, 2),  // cells of one texel at octave 2
   };
   long patched = 0;
   for (const auto& spec : specs) {
@@ -170,7 +171,8 @@ TEST_CASE("noise options refuse bad values naming the option and its range", "[f
   CHECK_THAT(message({"--size", "-4", "--out", out}), Catch::Contains("--size"));
   CHECK_THAT(message({"--width", "32", "--height", "20", "--cells", "10", "--out", out}),
              Catch::Contains("--cells") && Catch::Contains("multiple of 8"));
-  CHECK_THAT(message({"--type", "simplex", "--out", out}), Catch::Contains("--type") && Catch::Contains("perlin-worley"));
+  CHECK_THAT(message({"--type", "simplex", "--out", out}),
+             Catch::Contains("--type") && Catch::Contains("perlin-worley"));
   CHECK_THAT(message({"--channels", "rgbx", "--out", out}), Catch::Contains("--channels"));
   CHECK_THAT(message({"--size", "16", "--channels", "rgba", "--a", "cells=32", "--out", out}),
              Catch::Contains("cells") && Catch::Contains("channel a") && Catch::Contains("1 to 16"));
@@ -184,8 +186,8 @@ TEST_CASE("noise options refuse bad values naming the option and its range", "[f
   CHECK_THAT(message({"--bits", "12", "--out", out}), Catch::Contains("--bits"));
   CHECK(message({"--width", "32", "--height", "32", "--depth", "32", "--cells", "10", "--out", out}).empty());
   const cli::NoiseRequest rgba =
-      cli::parse_noise_request({"--type", "perlin-worley", "--size", "128", "--channels", "rgba", "--seed", "3",
-                                "--b", "type=worley,octaves=2", "--out", out});
+      cli::parse_noise_request({"--type", "perlin-worley", "--size", "128", "--channels", "rgba", "--seed", "3", "--b",
+                                "type=worley,octaves=2", "--out", out});
   REQUIRE(rgba.spec.channels.size() == 4);
   CHECK(rgba.spec.channels[3].cells == 32);
   CHECK(rgba.spec.channels[2].type == noise::NoiseType::worley);
@@ -206,14 +208,14 @@ TEST_CASE("sizes beyond the driver's 3D texture limit give exit code 2 and write
   TemporaryDirectory out(true);
   // Twice the limit along x with whole cells on every axis (one along y and z).
   const Run r = run("noise --width " + std::to_string(2 * limit) + " --height 8 --depth 8 --cells " +
-                            std::to_string(2 * limit / 8) + " --out " + (out.path / "big.raw").string());
+                    std::to_string(2 * limit / 8) + " --out " + (out.path / "big.raw").string());
   INFO(r.output);
   CHECK(r.exit_code == 2);
   CHECK_THAT(r.output, Catch::Contains("--width") && Catch::Contains("3D texture limit"));
   CHECK(out.empty());
   // More than the memory available (and not more than the texture limit).
-  const Run memory = run("noise --size " + std::to_string(limit) + " --channels rgba --out " +
-                                 (out.path / "huge.raw").string());
+  const Run memory =
+      run("noise --size " + std::to_string(limit) + " --channels rgba --out " + (out.path / "huge.raw").string());
   INFO(memory.output);
   CHECK(memory.exit_code == 2);
   CHECK_THAT(memory.output, Catch::Contains("MiB") && Catch::Contains("available"));
@@ -249,7 +251,8 @@ TEST_CASE("nephele noise writes the slice atlas and a sidecar that describes it"
   const float lo = static_cast<float>(channel.at("range").at("min").as_number());
   for (int z = 0; z < 4; ++z)
     for (int y = 0; y < 8; ++y)
-      for (int x = 0; x < 16; ++x) REQUIRE(image.pixels[y * 64 + z * 16 + x] == Approx(cpu.at(x, y, z, 0)).epsilon(0).margin(kPng8));
+      for (int x = 0; x < 16; ++x)
+        REQUIRE(image.pixels[y * 64 + z * 16 + x] == Approx(cpu.at(x, y, z, 0)).epsilon(0).margin(kPng8));
   CHECK(lo == Approx(*std::min_element(cpu.values.begin(), cpu.values.end())).epsilon(0).margin(kRangeMinimum));
 }
 
@@ -281,13 +284,14 @@ TEST_CASE("nephele noise writes float EXR atlases 16 bit PNGs and raw volumes", 
   const Run png16 = run("noise" + common + " --bits 16 --out " + (out.path / "t16.png").string());
   REQUIRE(png16.exit_code == 0);
   const auto deep = io::read_image(out.path / "t16.png");
-  for (size_t k = 0; k < deep.pixels.size(); ++k) REQUIRE(deep.pixels[k] == Approx(image.pixels[k]).epsilon(0).margin(kPng16));
+  for (size_t k = 0; k < deep.pixels.size(); ++k)
+    REQUIRE(deep.pixels[k] == Approx(image.pixels[k]).epsilon(0).margin(kPng16));
 }
 
 TEST_CASE("stretch maps each channel's range onto 0 to 1 and records the range before", "[cli][noise]") {
   TemporaryDirectory out(true);
-  const Run r = run("noise --size 16 --cells 2 --channels rg --type perlin --stretch --out " +
-                            (out.path / "s.exr").string());
+  const Run r =
+      run("noise --size 16 --cells 2 --channels rg --type perlin --stretch --out " + (out.path / "s.exr").string());
   INFO(r.output);
   REQUIRE(r.exit_code == 0);
   const auto image = io::read_image(out.path / "s.exr");

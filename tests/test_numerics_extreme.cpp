@@ -109,7 +109,8 @@ struct VariantResult {
 
 // Runs the whole cover for every integrator and curl mode, warps `points` on the GPU and the
 // CPU, and checks what holds in every extreme case.
-std::vector<VariantResult> check_every_variant(const cover::CoverParameters& base, const std::vector<vec3>& points = {}) {
+std::vector<VariantResult> check_every_variant(const cover::CoverParameters& base,
+                                               const std::vector<vec3>& points = {}) {
   test::test_context();
   std::vector<VariantResult> results;
   for (Integrator integrator : cover::all_integrators())
@@ -123,8 +124,9 @@ std::vector<VariantResult> check_every_variant(const cover::CoverParameters& bas
       const auto& diagnostics = cover.diagnose();
       CHECK(std::isfinite(diagnostics.stiffness.stiffness));
       CHECK(std::isfinite(diagnostics.folding.folded_fraction));
-      VariantResult r{p, as_vec4(cover.identity_field().read()), as_vec4(cover.warp_field().read()),
-                      cover.cover_field().read(), {}, {}};
+      VariantResult r{
+          p, as_vec4(cover.identity_field().read()), as_vec4(cover.warp_field().read()), cover.cover_field().read(), {},
+          {}};
       for (const vec4& w : r.warp) REQUIRE(on_sphere(vec3(w)));
       for (float c : r.cover) {
         REQUIRE(c >= 0.0f);
@@ -200,7 +202,8 @@ TEST_CASE("extreme: warps starting at cube corners and on face edges stay finite
       for (int j = 0; j < n; ++j)
         for (int i = 0; i < n; ++i)
           if (std::acos(std::min(1.0f, dot(texel_direction(face, i, j, n), corner))) < 2.0f * 1.6f / n)
-            worst_texel = std::max(worst_texel, length(vec3(curl[(static_cast<size_t>(face) * n + j) * n + i]) - exact));
+            worst_texel =
+                std::max(worst_texel, length(vec3(curl[(static_cast<size_t>(face) * n + j) * n + i]) - exact));
     const vec3 sampled = flow_velocity(corner, CubeSource{n, curl.data()});
     INFO("corner " << k);
     CHECK(length(sampled - exact) <= worst_texel + kConvexCombination);
@@ -325,7 +328,8 @@ TEST_CASE("extreme: far-away noise offsets keep float precision through the peri
 
   // As documented: the lattice is periodic with (floor(2 f) + 2) / f radii, and the offset is
   // reduced modulo that in double, so the reduced offset is small and exact.
-  const double period = cover::offset_period_cells(far.potential, far.noise_offset) / static_cast<double>(far.potential.frequency);
+  const double period =
+      cover::offset_period_cells(far.potential, far.noise_offset) / static_cast<double>(far.potential.frequency);
   CHECK(period > 2.0);
   const vec3 reduced = cover::potential_offset(far);
   CHECK(reduced.x >= 0.0f);

@@ -82,7 +82,8 @@ Warped run_warp(const cover::CoverParameters& p) {
   cover.run_identity();
   cover.run_curl();
   cover.run_warp();
-  return {as_vec4(cover.identity_field().read()), as_vec4(cover.curl_field().read()), as_vec4(cover.warp_field().read())};
+  return {as_vec4(cover.identity_field().read()), as_vec4(cover.curl_field().read()),
+          as_vec4(cover.warp_field().read())};
 }
 
 const Integrator fixed_steps[] = {Integrator::euler, Integrator::heun, Integrator::rk4, Integrator::geodesic};
@@ -291,8 +292,9 @@ TEST_CASE("a stiff flow with large steps is reported for fixed-step schemes and 
   const auto reference = sample_warp(fine);
   auto rms_error = [&](const std::vector<vec4>& w) {
     double sum = 0;
-    for (size_t k = 0; k < w.size(); ++k) sum += studies::great_circle_distance(glm::dvec3(vec3(w[k])), glm::dvec3(vec3(reference[k]))) *
-                                                studies::great_circle_distance(glm::dvec3(vec3(w[k])), glm::dvec3(vec3(reference[k])));
+    for (size_t k = 0; k < w.size(); ++k)
+      sum += studies::great_circle_distance(glm::dvec3(vec3(w[k])), glm::dvec3(vec3(reference[k]))) *
+             studies::great_circle_distance(glm::dvec3(vec3(w[k])), glm::dvec3(vec3(reference[k])));
     return std::sqrt(sum / w.size());
   };
   double euler_error = 0;
@@ -303,9 +305,8 @@ TEST_CASE("a stiff flow with large steps is reported for fixed-step schemes and 
     cover.run_warp();
     const auto& d = cover.diagnose();
     const double error = rms_error(sample_warp(cover));
-    INFO(cover::integrator_name(integrator) << ": stiffness " << d.stiffness.stiffness << " limit "
-                                               << d.stiffness.limit << " beyond on " << d.stiffness.beyond_fraction
-                                               << ", rms error " << error);
+    INFO(cover::integrator_name(integrator) << ": stiffness " << d.stiffness.stiffness << " limit " << d.stiffness.limit
+                                            << " beyond on " << d.stiffness.beyond_fraction << ", rms error " << error);
     CHECK(d.stiffness.stiffness > d.stiffness.limit);
     for (float v : cover.warp_field().read()) REQUIRE(std::isfinite(v));
     if (integrator == Integrator::adaptive) {
@@ -324,7 +325,8 @@ TEST_CASE("a stiff flow with large steps is reported for fixed-step schemes and 
   }
 }
 
-TEST_CASE("the default cover is within the stable step and neither reported as stiff nor folded", "[numerics][gpu][stiff]") {
+TEST_CASE("the default cover is within the stable step and neither reported as stiff nor folded",
+          "[numerics][gpu][stiff]") {
   test::test_context();
   cover::CoverParameters p;
   p.size = 64;

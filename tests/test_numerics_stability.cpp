@@ -98,15 +98,18 @@ TEST_CASE("the flow rate of a solid-body rotation is omega times the sine of the
   CHECK(stiff.beyond_fraction == Approx(1.0 - 1.732 / 3.0).epsilon(0).margin(kBeyondFraction));
 }
 
-TEST_CASE("shear does not count as a rate of change: a jet across the equator has rate zero there", "[fast][stability]") {
+TEST_CASE("shear does not count as a rate of change: a jet across the equator has rate zero there",
+          "[fast][stability]") {
   // u = c tanh(k lat) e_east: at the equator a pure shear du/dlat = c k, whose velocity
   // gradient is nilpotent (eigenvalues 0), however large c k is.
   const float c = 1.0f, k = 40.0f;
   const int size = 64;
-  const auto rates = cover::flow_rates(cube_of(size, [&](vec3 n) {
-                                            const float lat = std::asin(n.z);
-                                            return c * std::tanh(k * lat) * normalize(cross(vec3(0, 0, 1), n));
-                                          }), size);
+  const auto rates = cover::flow_rates(cube_of(size,
+                                               [&](vec3 n) {
+                                                 const float lat = std::asin(n.z);
+                                                 return c * std::tanh(k * lat) * normalize(cross(vec3(0, 0, 1), n));
+                                               }),
+                                       size);
   // The texel at each side face's centre lies half a texel from the equator.
   for (int face : {0, 1, 2, 3}) {
     const int i = size / 2, j = size / 2;
@@ -127,10 +130,13 @@ TEST_CASE("folding is zero for rotations and total for a mirror image", "[fast][
   CHECK(id.jacobian_max == Approx(1.0).epsilon(0).margin(kJacobian));
   CHECK(id.area_error_rms < kIdentityAreaRms);
   // A rotation preserves area and orientation: J = 1 (the exact flow map has J = 1 too).
-  const auto rotated = cover::folding_report(cube_of(size, [](vec3 n) {
-    const float a = 0.7f;
-    return vec3(std::cos(a) * n.x - std::sin(a) * n.y, std::sin(a) * n.x + std::cos(a) * n.y, n.z);
-  }), size);
+  const auto rotated = cover::folding_report(cube_of(size,
+                                                     [](vec3 n) {
+                                                       const float a = 0.7f;
+                                                       return vec3(std::cos(a) * n.x - std::sin(a) * n.y,
+                                                                   std::sin(a) * n.x + std::cos(a) * n.y, n.z);
+                                                     }),
+                                             size);
   CHECK(rotated.folded_fraction == 0.0);
   CHECK(rotated.area_error_rms < kRotatedAreaRms);
   // A mirror image reverses orientation everywhere: J = -1.

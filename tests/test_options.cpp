@@ -116,15 +116,16 @@ TEST_CASE("help lists every option with its range, unit and default from the tab
   Options o("generate", "summary", params::generate);
   o.bind(params::cover::size, &size);
   CHECK_FALSE(o.parse({"--help"}));
-  CHECK_THAT(o.help(), Catch::Contains("--size") && Catch::Contains("[1 to 16384, texels]") &&
-                           Catch::Contains("default 512"));
+  CHECK_THAT(o.help(),
+             Catch::Contains("--size") && Catch::Contains("[1 to 16384, texels]") && Catch::Contains("default 512"));
 }
 
-TEST_CASE("the parameter table: defaults inside their ranges, one key per command, options from keys", "[fast][params]") {
-  const std::vector<unsigned> uses = {params::generate, params::bench_cover, params::report, params::render,
-                                      params::scene_file, params::bench_render, params::noise, params::bench_noise,
-                                      params::model, params::model_file, params::bench_model, params::export_cover,
-                                      params::viewer, params::bench_view, params::stats};
+TEST_CASE("the parameter table: defaults inside their ranges, one key per command, options from keys",
+          "[fast][params]") {
+  const std::vector<unsigned> uses = {
+      params::generate,     params::bench_cover,  params::report,      params::render,     params::scene_file,
+      params::bench_render, params::noise,        params::bench_noise, params::model,      params::model_file,
+      params::bench_model,  params::export_cover, params::viewer,      params::bench_view, params::stats};
   for (const params::Parameter* p : params::all()) {
     INFO(p->key);
     CHECK_FALSE(p->help.empty());
@@ -144,13 +145,19 @@ TEST_CASE("the parameter table: defaults inside their ranges, one key per comman
 }
 
 TEST_CASE("every command's --help lists each option the table gives that command", "[cli]") {
-  const std::map<std::vector<std::string>, unsigned> commands = {
-      {{"generate"}, params::generate},        {{"bench", "cover"}, params::bench_cover},
-      {{"report"}, params::report},            {{"render"}, params::render},
-      {{"bench", "render"}, params::bench_render}, {{"noise"}, params::noise},
-      {{"bench", "noise"}, params::bench_noise}, {{"model"}, params::model},
-      {{"bench", "model"}, params::bench_model}, {{"export"}, params::export_cover},
-      {{"view"}, params::viewer}, {{"bench", "view"}, params::bench_view}, {{"stats"}, params::stats}};
+  const std::map<std::vector<std::string>, unsigned> commands = {{{"generate"}, params::generate},
+                                                                 {{"bench", "cover"}, params::bench_cover},
+                                                                 {{"report"}, params::report},
+                                                                 {{"render"}, params::render},
+                                                                 {{"bench", "render"}, params::bench_render},
+                                                                 {{"noise"}, params::noise},
+                                                                 {{"bench", "noise"}, params::bench_noise},
+                                                                 {{"model"}, params::model},
+                                                                 {{"bench", "model"}, params::bench_model},
+                                                                 {{"export"}, params::export_cover},
+                                                                 {{"view"}, params::viewer},
+                                                                 {{"bench", "view"}, params::bench_view},
+                                                                 {{"stats"}, params::stats}};
   for (const auto& [words, use] : commands) {
     std::string arguments;
     for (const auto& w : words) arguments += w + " ";
@@ -182,17 +189,24 @@ TEST_CASE("cover.json records every cover parameter of the table under its sidec
     REQUIRE(value != nullptr);
     // Float fields are written as the shortest decimal that reads back as the same float, so
     // they differ from the table's double default by at most half a float ulp (kFloatField).
-    if (p->type == params::Type::text) CHECK(value->as_string() == std::string(p == &params::cover::integrator ? "adaptive" : p->default_text));
-    else CHECK(value->as_number() == Approx(p == &params::cover::size ? 8 : p == &params::cover::iterations ? 2 : p->default_number).epsilon(kFloatField));
+    if (p->type == params::Type::text)
+      CHECK(value->as_string() == std::string(p == &params::cover::integrator ? "adaptive" : p->default_text));
+    else
+      CHECK(value->as_number() == Approx(p == &params::cover::size         ? 8
+                                         : p == &params::cover::iterations ? 2
+                                                                           : p->default_number)
+                                      .epsilon(kFloatField));
   }
 }
 
-TEST_CASE("render takes --pitch=X, --fov=X and --exposure=X like the spaced form, and options override the scene file", "[cli]") {
+TEST_CASE("render takes --pitch=X, --fov=X and --exposure=X like the spaced form, and options override the scene file",
+          "[cli]") {
   test::TemporaryDirectory out(true);
   const std::string scene = (out.path / "scene.json").string();
   std::ofstream(scene) << R"({"view": "gurten", "pitch": 5, "fov": 70, "view_steps": 48, "size": "16x8"})";
-  const auto r = test::run("render --scene " + scene + " --pitch=30 --fov=40 --exposure=2 --view-steps=2 --light-steps 1 " +
-                           "--quiet --out " + (out.path / "a.png").string());
+  const auto r =
+      test::run("render --scene " + scene + " --pitch=30 --fov=40 --exposure=2 --view-steps=2 --light-steps 1 " +
+                "--quiet --out " + (out.path / "a.png").string());
   REQUIRE(r.exit_code == 0);
   const json::Value sidecar = json::parse(test::read_file(out.path / "a.json"));
   CHECK(sidecar.at("camera").at("pitch_deg").as_number() == 30);
@@ -201,9 +215,11 @@ TEST_CASE("render takes --pitch=X, --fov=X and --exposure=X like the spaced form
   CHECK(sidecar.at("steps").at("view").as_number() == 2);
 }
 
-TEST_CASE("scene files refuse every numeric key just outside the range the table declares, naming the key", "[fast][params]") {
+TEST_CASE("scene files refuse every numeric key just outside the range the table declares, naming the key",
+          "[fast][params]") {
   for (const params::Parameter* p : params::all()) {
-    if (!p->used_by(params::scene_file) || (p->type != params::Type::integer && p->type != params::Type::real)) continue;
+    if (!p->used_by(params::scene_file) || (p->type != params::Type::integer && p->type != params::Type::real))
+      continue;
     const std::string key(p->key);
     const bool nested = p == &params::scene::latitude || p == &params::scene::longitude || p == &params::scene::height;
     for (const double value : {p->min - 1.0, p->max + 1.0}) {

@@ -47,7 +47,8 @@ core::ImageData equirect(int width, F f) {
 // mirrored or shifted map gives other colours.
 glm::dvec3 pattern(double latitude_deg, double longitude_deg) {
   const double lat = latitude_deg * degree, lon = longitude_deg * degree;
-  return {0.5 + 0.4 * std::sin(lon) * std::cos(lat), 0.5 + 0.4 * std::sin(lat), 0.5 + 0.4 * std::cos(lon) * std::cos(lat)};
+  return {0.5 + 0.4 * std::sin(lon) * std::cos(lat), 0.5 + 0.4 * std::sin(lat),
+          0.5 + 0.4 * std::cos(lon) * std::cos(lat)};
 }
 
 render::CoverCube clear_cover(int size = 8) { return {size, std::vector<float>(6 * size * size, 0.0f)}; }
@@ -61,7 +62,8 @@ render::CoverCube patch_cover(int size, double latitude_deg, double longitude_de
       for (int i = 0; i < size; ++i) {
         const double sc = 2 * (i + 0.5) / size - 1, tc = 2 * (j + 0.5) / size - 1;
         // OpenGL table 8.19 inverted (shaders/lib/cube_faces.glsl).
-        const glm::dvec3 faces[6] = {{1, -tc, -sc}, {-1, -tc, sc}, {sc, 1, tc}, {sc, -1, -tc}, {sc, -tc, 1}, {-sc, -tc, -1}};
+        const glm::dvec3 faces[6] = {{1, -tc, -sc}, {-1, -tc, sc}, {sc, 1, tc},
+                                     {sc, -1, -tc}, {sc, -tc, 1},  {-sc, -tc, -1}};
         const double angle = std::acos(std::clamp(glm::dot(glm::normalize(faces[face]), centre), -1.0, 1.0));
         cover.texels.push_back(angle < radius_deg * degree ? 1.0f : 0.0f);
       }
@@ -216,7 +218,8 @@ TEST_CASE("orbit: a cloud patch of the cover appears at its pixel and nowhere el
   double alpha_elsewhere = 0;
   for (int y = 0; y < 48; ++y)
     for (int x = 0; x < 64; ++x)
-      if (std::hypot(x + 0.5 - at.x, y + 0.5 - at.y) > 20) alpha_elsewhere = std::max<double>(alpha_elsewhere, pixel(r, x, y).a);
+      if (std::hypot(x + 0.5 - at.x, y + 0.5 - at.y) > 20)
+        alpha_elsewhere = std::max<double>(alpha_elsewhere, pixel(r, x, y).a);
   // 20 px at 3000 km with a 60 deg view is about 1200 km on the ground: well outside the 440 km patch.
   CHECK(alpha_elsewhere == 0.0);
   if (mirrored.x >= 0 && mirrored.x < 64 && mirrored.y >= 0 && mirrored.y < 48)
@@ -273,7 +276,8 @@ TEST_CASE("orbit: a descent from 2000 km to 1 km changes luminance and cloud fra
     for (int j = 0; j < n; ++j)
       for (int i = 0; i < n; ++i) {
         const double sc = 2 * (i + 0.5) / n - 1, tc = 2 * (j + 0.5) / n - 1;
-        const glm::dvec3 faces[6] = {{1, -tc, -sc}, {-1, -tc, sc}, {sc, 1, tc}, {sc, -1, -tc}, {sc, -tc, 1}, {-sc, -tc, -1}};
+        const glm::dvec3 faces[6] = {{1, -tc, -sc}, {-1, -tc, sc}, {sc, 1, tc},
+                                     {sc, -1, -tc}, {sc, -tc, 1},  {-sc, -tc, -1}};
         directions.push_back(glm::normalize(faces[face]));
       }
   glm::dvec3 clearest(1, 0, 0);
@@ -282,7 +286,8 @@ TEST_CASE("orbit: a descent from 2000 km to 1 km changes luminance and cloud fra
     if (cover.texels[a] > 0) continue;
     double nearest = 1;  // cosine of the angle to the nearest cloudy texel
     for (size_t b = 0; b < directions.size(); ++b)
-      if (cover.texels[b] > 0) nearest = std::max(nearest == 1 ? -1.0 : nearest, glm::dot(directions[a], directions[b]));
+      if (cover.texels[b] > 0)
+        nearest = std::max(nearest == 1 ? -1.0 : nearest, glm::dot(directions[a], directions[b]));
     if (-nearest > best) best = -nearest, clearest = directions[a];
   }
   const double descent_lat = std::asin(clearest.z) / degree, descent_lon = std::atan2(clearest.y, clearest.x) / degree;
@@ -364,7 +369,8 @@ TEST_CASE("orbit: 1 m and 40000 km are both exact: the horizon's dip and the dis
 TEST_CASE("render --view orbit writes the image and refuses bad values naming the option", "[orbit][cli]") {
   test::TemporaryDirectory out(true);
   const std::string file = (out.path / "orbit.png").string();
-  const auto ok = test::run("render --view orbit --lat 10 --lon 20 --altitude-km 5000 --size 32x18 --quiet --out " + file);
+  const auto ok =
+      test::run("render --view orbit --lat 10 --lon 20 --altitude-km 5000 --size 32x18 --quiet --out " + file);
   INFO(ok.output);
   CHECK(ok.exit_code == 0);
   CHECK(std::filesystem::exists(file));

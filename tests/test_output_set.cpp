@@ -278,7 +278,8 @@ TEST_CASE("a write that runs out of space exits non-zero naming the file and kee
     put(place.path / "unrelated.txt", "not part of the set");
     const auto old = snapshot(place.path);
     // 16 blocks = 16 KiB: above the sidecar (~1 KB), below the 4096 x 64 8-bit atlas (~100 KB).
-    const auto result = run_with_file_limit(16, "noise --width 64 --height 64 --depth 64 --seed 2 --out " + out.string());
+    const auto result =
+        run_with_file_limit(16, "noise --width 64 --height 64 --depth 64 --seed 2 --out " + out.string());
     CHECK(result.exit_code != 0);
     CHECK_THAT(result.output, Catch::Contains(out.string()));
     for (const auto& [path, bytes] : old) CHECK(read_file(path) == bytes);
@@ -346,7 +347,7 @@ TEST_CASE("a write beyond ulimit -f exits 1 naming the file and 'File too large'
 TEST_CASE("every signal that ends a run removes its temporary directory, and the run ends by that signal",
           "[output][cli]") {
   // SIGQUIT, SIGABRT, SIGSEGV and SIGXCPU dump core by default: no core files from the children.
-  rlimit core_limit {};
+  rlimit core_limit{};
   getrlimit(RLIMIT_CORE, &core_limit);
   const rlimit no_core{0, core_limit.rlim_max};
   setrlimit(RLIMIT_CORE, &no_core);
@@ -388,8 +389,8 @@ TEST_CASE("a directory at a file's name stops the file set's commit before anyth
     io::OutputSet set(place.path, io::OutputSet::Scope::files);
     set.write("x.png", "new");
     set.write("x.json", "new");
-    CHECK_THROWS_WITH(set.commit(), Catch::Contains((place.path / "x.json").string()) &&
-                                        Catch::Contains("is a directory"));
+    CHECK_THROWS_WITH(set.commit(),
+                      Catch::Contains((place.path / "x.json").string()) && Catch::Contains("is a directory"));
   }
   CHECK(read_file(place.path / "x.png") == "old");
   CHECK(fs::is_directory(place.path / "x.json"));
@@ -401,7 +402,8 @@ TEST_CASE("a directory at a file's name stops the file set's commit before anyth
   CHECK(read_file(place.path / "y.png") == "next");
 }
 
-TEST_CASE("a directory at a file's name stops a directory set's exchange and keeps what is inside it", "[fast][output]") {
+TEST_CASE("a directory at a file's name stops a directory set's exchange and keeps what is inside it",
+          "[fast][output]") {
   // The exchange would otherwise take the user's directory away with the old set.
   TemporaryDirectory place(true);
   put(place.path / "a.txt", "old");
@@ -411,8 +413,8 @@ TEST_CASE("a directory at a file's name stops a directory set's exchange and kee
     io::OutputSet set(place.path, io::OutputSet::Scope::directory);
     set.write("a.txt", "new");
     set.write("b.txt", "new");
-    CHECK_THROWS_WITH(set.commit(), Catch::Contains((place.path / "b.txt").string()) &&
-                                        Catch::Contains("is a directory"));
+    CHECK_THROWS_WITH(set.commit(),
+                      Catch::Contains((place.path / "b.txt").string()) && Catch::Contains("is a directory"));
   }
   CHECK(read_file(place.path / "a.txt") == "old");
   CHECK(read_file(place.path / "b.txt" / "notes") == "the user's");
@@ -485,8 +487,8 @@ TEST_CASE("two commits of one file set at once never end with files of both", "[
 }
 
 TEST_CASE("the exchange of a directory set falls back to per-file renames on EBUSY and EXDEV only", "[fast][output]") {
-  CHECK(io::falls_back_to_files(EBUSY));  // the directory is a mount point
-  CHECK(io::falls_back_to_files(EXDEV));  // a rename would cross into another mount
+  CHECK(io::falls_back_to_files(EBUSY));         // the directory is a mount point
+  CHECK(io::falls_back_to_files(EXDEV));         // a rename would cross into another mount
   CHECK_FALSE(io::falls_back_to_files(EINVAL));  // no RENAME_EXCHANGE: the rename-aside fallback
   CHECK_FALSE(io::falls_back_to_files(EACCES));
   CHECK_FALSE(io::falls_back_to_files(ENOENT));
@@ -523,7 +525,8 @@ TEST_CASE("a directory set into a bind mount is committed by per-file renames in
     if (!before_open) mount = std::make_unique<BindMount>(disk, out);
     if (!mount->mounted) {
       // Mounting needs root (CAP_SYS_ADMIN); the fallback's decision is tested above without one.
-      test::skip_case(std::string("cannot bind-mount here (") + std::strerror(mount->error) + "); run the tests as root");
+      test::skip_case(std::string("cannot bind-mount here (") + std::strerror(mount->error) +
+                      "); run the tests as root");
       return;
     }
     if (before_open) CHECK(set.scope() == io::OutputSet::Scope::files);

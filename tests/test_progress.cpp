@@ -37,7 +37,8 @@ Progress::Settings immediate(std::FILE* stream, bool terminal) {
 
 }  // namespace
 
-TEST_CASE("a progress report states the fraction, the time so far and the time left at the average rate", "[fast][progress]") {
+TEST_CASE("a progress report states the fraction, the time so far and the time left at the average rate",
+          "[fast][progress]") {
   // Half done after 10 s at a constant rate leaves 10 s.
   CHECK(Progress::format("generate", "warp", 0.5, 10.0, false) == "generate:  50% (10.0 s, about 10 s left) warp");
   // Before 1% nothing can be estimated; at the end nothing is left.

@@ -23,7 +23,8 @@ TEST_CASE("the reference's error estimate is positive and within its tolerance p
   const DefaultFlow flow;
   studies::ReferenceOptions options;
   options.tolerance = 1e-9;
-  const auto point = studies::reference_warp(glm::dvec3(0.3, -0.5, 0.8), flow.curl, flow.offset, flow.flow_time, options);
+  const auto point =
+      studies::reference_warp(glm::dvec3(0.3, -0.5, 0.8), flow.curl, flow.offset, flow.flow_time, options);
   REQUIRE(point.converged);
   CHECK_FALSE(point.cut);
   CHECK(point.error_estimate > 0.0);

@@ -122,12 +122,14 @@ TEST_CASE("a layer whose coverage is zero everywhere is skipped", "[render]") {
 
 TEST_CASE("a fully overcast stratus hides the sky overhead", "[render]") {
   test::test_context();
-  const auto layers = choose_layers([] {
-    WeatherSample s;
-    s.cloud_low = 1.0;
-    s.precipitation = 0.5;  // drizzle: stratus, not fog
-    return s;
-  }(), {});
+  const auto layers = choose_layers(
+      [] {
+        WeatherSample s;
+        s.cloud_low = 1.0;
+        s.precipitation = 0.5;  // drizzle: stratus, not fog
+        return s;
+      }(),
+      {});
   const auto r = render::render_clouds(small_camera(80), layers, uniform_field(1.0f, 0, 0), noon, quick());
   const Stats s = stats(r);
   CHECK(s.finite);
@@ -136,11 +138,11 @@ TEST_CASE("a fully overcast stratus hides the sky overhead", "[render]") {
 
 TEST_CASE("extreme views and lights render without NaN or Inf", "[render][extreme]") {
   test::test_context();
-  std::vector<CloudLayer> layers = {
-      {CloudType::fog, CoverageChannel::fog, 500, 1200, 2e-3f, 0, 0, 0, "camera inside"},
-      {CloudType::cumulus, CoverageChannel::low, 1500, 3000, 1e-2f, 0, 0, 0, "test"},
-      {CloudType::alto, CoverageChannel::mid, 3500, 5000, 2e-3f, 0.5f, 0, 0, "test"},
-      {CloudType::stratocumulus, CoverageChannel::convective, 1300, 11000, 1.5e-2f, 0, 0.3f, 15000, "tall, from 15 km"}};
+  std::vector<CloudLayer> layers = {{CloudType::fog, CoverageChannel::fog, 500, 1200, 2e-3f, 0, 0, 0, "camera inside"},
+                                    {CloudType::cumulus, CoverageChannel::low, 1500, 3000, 1e-2f, 0, 0, 0, "test"},
+                                    {CloudType::alto, CoverageChannel::mid, 3500, 5000, 2e-3f, 0.5f, 0, 0, "test"},
+                                    {CloudType::stratocumulus, CoverageChannel::convective, 1300, 11000, 1.5e-2f, 0,
+                                     0.3f, 15000, "tall, from 15 km"}};
   const WeatherField field = uniform_field(0.6f, 0.5f, 0.3f, 1.0f, 0.8f);
   for (double pitch : {-90.0, -30.0, 0.0, 45.0, 90.0}) {
     for (double time : {noon, midnight}) {
@@ -156,8 +158,10 @@ TEST_CASE("extreme views and lights render without NaN or Inf", "[render][extrem
     const auto r = render::render_clouds(small_camera(30), thick, field, noon, quick());
     const Stats s = stats(r);
     CHECK(s.finite);
-    if (extinction == 0.0f) CHECK(s.alpha_max == 0.0);
-    else CHECK(s.alpha_min > kOpaqueAlpha);
+    if (extinction == 0.0f)
+      CHECK(s.alpha_max == 0.0);
+    else
+      CHECK(s.alpha_min > kOpaqueAlpha);
   }
   auto panorama = small_camera();
   panorama.panorama = true;
@@ -166,11 +170,13 @@ TEST_CASE("extreme views and lights render without NaN or Inf", "[render][extrem
 
 TEST_CASE("with the sun below the horizon the scene is far darker than at noon", "[render]") {
   test::test_context();
-  const auto layers = choose_layers([] {
-    WeatherSample s;
-    s.cloud_low = 0.4;
-    return s;
-  }(), {});
+  const auto layers = choose_layers(
+      [] {
+        WeatherSample s;
+        s.cloud_low = 0.4;
+        return s;
+      }(),
+      {});
   const WeatherField field = uniform_field(0.4f, 0, 0);
   const double day = stats(render::render_clouds(small_camera(), layers, field, noon, quick())).mean;
   const double night = stats(render::render_clouds(small_camera(), layers, field, midnight, quick())).mean;
@@ -241,7 +247,8 @@ TEST_CASE("tone mapping encodes black as 0 and saturates to 1 without exceeding 
   CHECK(ldr.pixels[6] <= 1.0f);
 }
 
-TEST_CASE("pixels whose loops reach llvmpipe's iteration limit are counted and ordinary settings stay below it", "[render][extreme]") {
+TEST_CASE("pixels whose loops reach llvmpipe's iteration limit are counted and ordinary settings stay below it",
+          "[render][extreme]") {
   test::test_context();
   // A thin veil overhead everywhere keeps the transmittance near 1, so no ray ends early.
   std::vector<CloudLayer> veil = {{CloudType::cirrostratus, CoverageChannel::high, 8500, 9500, 1e-7f, 0, 0, 0, "test"}};
@@ -289,7 +296,8 @@ TEST_CASE("renders that share a noise volume give the image of their own volume 
                   std::logic_error);
 }
 
-TEST_CASE("averaging frames with shifted march jitter brings the image closer to the converged one", "[render][frames]") {
+TEST_CASE("averaging frames with shifted march jitter brings the image closer to the converged one",
+          "[render][frames]") {
   test::test_context();
   std::vector<CloudLayer> layers = {{CloudType::cumulus, CoverageChannel::low, 1500, 3000, 1e-2f, 0, 0, 0, "test"}};
   render::Camera camera = small_camera(20);
@@ -302,7 +310,8 @@ TEST_CASE("averaging frames with shifted march jitter brings the image closer to
   reference.view_steps = 96;
   reference.light_steps = 3;
   const render::NoiseVolume noise(coarse.noise_size, coarse.seed);
-  const auto converged = render::render_clouds(camera, layers, field, noon, reference, {0, 1}, 0, &noise).radiance.pixels;
+  const auto converged =
+      render::render_clouds(camera, layers, field, noon, reference, {0, 1}, 0, &noise).radiance.pixels;
   auto rms = [&](int frames) {
     render::RenderSettings s = coarse;
     s.frames = frames;

@@ -43,21 +43,22 @@ RenderErrorRow row(int view, int light, double ms, double display, int frames = 
 
 // A hand-made sweep: the default is 48 x 6 (display rms 0.20, 100 ms).
 const std::vector<RenderErrorRow> table{
-    row(8, 2, 20.0, 0.50),    // cheap, far too inaccurate
-    row(16, 4, 40.0, 0.31),   // just over 1.5 x the default's error
-    row(32, 4, 60.0, 0.29),   // within 1.5 x: the cheapest such
-    row(32, 6, 70.0, 0.25),   // within 1.5 x but dearer
-    row(48, 6, 100.0, 0.20),  // the default
-    row(96, 2, 95.0, 0.18),   // within the default's time, less accurate than the next
-    row(48, 12, 99.0, 0.15),  // within the default's time: the most accurate such
-    row(96, 12, 200.0, 0.05), // more accurate still, but twice the time
-    row(48, 6, 400.0, 0.10, 4),     // the default's steps over 4 frames: not the default
-    row(48, 6, 30.0, 0.40, 1, 2),   // at half resolution: not the default either
+    row(8, 2, 20.0, 0.50),         // cheap, far too inaccurate
+    row(16, 4, 40.0, 0.31),        // just over 1.5 x the default's error
+    row(32, 4, 60.0, 0.29),        // within 1.5 x: the cheapest such
+    row(32, 6, 70.0, 0.25),        // within 1.5 x but dearer
+    row(48, 6, 100.0, 0.20),       // the default
+    row(96, 2, 95.0, 0.18),        // within the default's time, less accurate than the next
+    row(48, 12, 99.0, 0.15),       // within the default's time: the most accurate such
+    row(96, 12, 200.0, 0.05),      // more accurate still, but twice the time
+    row(48, 6, 400.0, 0.10, 4),    // the default's steps over 4 frames: not the default
+    row(48, 6, 30.0, 0.40, 1, 2),  // at half resolution: not the default either
 };
 
 }  // namespace
 
-TEST_CASE("both render sweeps contain the default settings and a reference beyond every swept setting", "[fast][render][report]") {
+TEST_CASE("both render sweeps contain the default settings and a reference beyond every swept setting",
+          "[fast][render][report]") {
   // The report states the default's error, so the default must be among the rows; and a
   // reference is only one if it takes at least as many steps and frames as any row it judges.
   const regional::Scene defaults;
@@ -89,11 +90,12 @@ TEST_CASE("both render sweeps contain the default settings and a reference beyon
     CHECK(full.reference_view > v.view_steps);
     CHECK(full.reference_light > v.light_steps);
   }
-  const int loops = full.reference_view * 4 * glsl::VIEW_REFINE * (full.reference_light + 3) + 17 * regional::Scene{}.sky_steps;
+  const int loops =
+      full.reference_view * 4 * glsl::VIEW_REFINE * (full.reference_light + 3) + 17 * regional::Scene{}.sky_steps;
   CHECK(loops < glsl::LOOP_LIMIT);
-  CHECK(full.reference_frames ==
-        std::max_element(variants.begin(), variants.end(), [](const auto& a, const auto& b) { return a.frames < b.frames; })
-            ->frames);
+  CHECK(full.reference_frames == std::max_element(variants.begin(), variants.end(), [](const auto& a, const auto& b) {
+                                   return a.frames < b.frames;
+                                 })->frames);
 }
 
 TEST_CASE("bilinear upsampling lines up pixel centres and clamps at the edges", "[fast][render][report]") {
@@ -126,7 +128,8 @@ TEST_CASE("guided likeness is 1 within the sky, 0 across the horizon and falls w
   const double r135 = std::exp(-0.5 * std::pow(std::log(1.35) / 0.3, 2));
   CHECK(render::guided_likeness(1000.0f, 1350.0f) == Approx(r135).epsilon(1e-6));
   CHECK(render::guided_likeness(1350.0f, 1000.0f) == Approx(r135).epsilon(1e-6));
-  CHECK(render::guided_likeness(1000.0f, 2000.0f) == Approx(std::exp(-0.5 * std::pow(std::log(2.0) / 0.3, 2))).epsilon(1e-6));
+  CHECK(render::guided_likeness(1000.0f, 2000.0f) ==
+        Approx(std::exp(-0.5 * std::pow(std::log(2.0) / 0.3, 2))).epsilon(1e-6));
 }
 
 namespace {
@@ -190,7 +193,8 @@ TEST_CASE("guided upsampling is bilinear where the guide is uniform or missing",
   CHECK_THROWS_AS(render::upsample_guided(rgba, sky_full, sky_full), std::invalid_argument);
 }
 
-TEST_CASE("the guide is needed exactly at the full-size pixels whose source cell crosses an edge", "[fast][render][report]") {
+TEST_CASE("the guide is needed exactly at the full-size pixels whose source cell crosses an edge",
+          "[fast][render][report]") {
   // Sky in low rows 0, 1, ground from row 2: only the cells between rows 1 and 2 are edges; the
   // full-size rows whose source y lies in [1, 2) are 6 to 9 (16 / 4 = 4 rows a source row).
   const Horizon h(2, 7);
@@ -236,7 +240,8 @@ TEST_CASE("the qualities' sweep renders every quality against a reference beyond
   CHECK(library.resolution_divisor == 1);
 }
 
-TEST_CASE("the qualities' CSV and summary name each quality, its target and whether it meets it", "[fast][render][report]") {
+TEST_CASE("the qualities' CSV and summary name each quality, its target and whether it meets it",
+          "[fast][render][report]") {
   const auto o = studies::RenderSweepOptions::qualities(true);
   std::vector<RenderErrorRow> rows;
   for (const auto& v : o.variants()) rows.push_back(row(v.view_steps, v.light_steps, 10.0, 0.001, v.frames, v.divisor));
@@ -245,8 +250,9 @@ TEST_CASE("the qualities' CSV and summary name each quality, its target and whet
   std::stringstream lines(csv);
   std::string line;
   std::getline(lines, line);
-  CHECK(line == "quality,target_display_rms,view_steps,light_steps,frames,divisor,display_rms,rel_rms,render_ms,clouds_ms,"
-                "reference_view_steps,reference_light_steps,reference_frames,width,height");
+  CHECK(line ==
+        "quality,target_display_rms,view_steps,light_steps,frames,divisor,display_rms,rel_rms,render_ms,clouds_ms,"
+        "reference_view_steps,reference_light_steps,reference_frames,width,height");
   int n = 0;
   while (std::getline(lines, line)) {
     const auto fields = fields_of(line);
@@ -263,7 +269,8 @@ TEST_CASE("the qualities' CSV and summary name each quality, its target and whet
   CHECK_THROWS_AS(studies::render_quality_csv(rows, o), std::invalid_argument);
 }
 
-TEST_CASE("the render error of an image is measured in display values and relative radiance", "[fast][render][report]") {
+TEST_CASE("the render error of an image is measured in display values and relative radiance",
+          "[fast][render][report]") {
   // Two pixels: the reference is grey 0.1 and 0.3; the image is off by 0.02 in one channel of one pixel.
   const double exposure = 4.0;
   const core::ImageData reference{2, 1, 4, {0.1f, 0.1f, 0.1f, 1.0f, 0.3f, 0.3f, 0.3f, 0.0f}};
@@ -284,7 +291,8 @@ TEST_CASE("the render error of an image is measured in display values and relati
   studies::measure_render_error(reference, reference, exposure, {}, same);
   CHECK(same.display_rms == 0.0);
   CHECK(same.rms_error == 0.0);
-  CHECK_THROWS(studies::measure_render_error(render::upsample_bilinear(reference, 4, 2), reference, exposure, {}, same));
+  CHECK_THROWS(
+      studies::measure_render_error(render::upsample_bilinear(reference, 4, 2), reference, exposure, {}, same));
   // The differing pixel left out (a reference pixel cut short): no error; the other left out:
   // the same difference over 3 values, relative to the mean 0.3.
   RenderErrorRow without_second;
@@ -303,8 +311,9 @@ TEST_CASE("the render error CSV has the documented columns and one line per row"
   std::stringstream lines(csv);
   std::string line;
   REQUIRE(std::getline(lines, line));
-  CHECK(line == "view_steps,light_steps,frames,divisor,clouds_ms,display_rms,rel_rms,rel_max,reference_view_steps,"
-                "reference_light_steps,reference_frames,width,height");
+  CHECK(line ==
+        "view_steps,light_steps,frames,divisor,clouds_ms,display_rms,rel_rms,rel_max,reference_view_steps,"
+        "reference_light_steps,reference_frames,width,height");
   REQUIRE(std::getline(lines, line));
   const auto first = fields_of(line);
   REQUIRE(first.size() == 13);
@@ -348,8 +357,9 @@ TEST_CASE("the render diagram draws one polyline per light-step count labels vie
   CHECK(svg_zero.find("zero-error rows not drawn") != std::string::npos);
 }
 
-TEST_CASE("the render step choice finds the cheapest within 1.5x the default's error and the most accurate within its time",
-          "[fast][render][report]") {
+TEST_CASE(
+    "the render step choice finds the cheapest within 1.5x the default's error and the most accurate within its time",
+    "[fast][render][report]") {
   const auto c = studies::choose_render_steps(table, 48, 6);
   REQUIRE(c.has_default);
   CHECK(c.default_row.view_steps == 48);
@@ -386,12 +396,13 @@ TEST_CASE("the render step choice finds the cheapest within 1.5x the default's e
 
 TEST_CASE("the render summary section names the defaults their error and the two choices", "[fast][render][report]") {
   const auto options = studies::RenderSweepOptions::full();
-  const std::string md = studies::render_summary_markdown(table, options, studies::choose_render_steps(table, 48, 6), 48, 6);
+  const std::string md =
+      studies::render_summary_markdown(table, options, studies::choose_render_steps(table, 48, 6), 48, 6);
   CHECK(md.find("## Render: image error against run time") == 0);
   CHECK(md.find("160 x 90") != std::string::npos);
   CHECK(md.find("192 view x 24 light steps over 4 frames") != std::string::npos);
-  CHECK(md.find("Defaults (the final quality, `--quality final`, and the library's): 48 view x 6 light steps, display rms 0.2000") !=
-        std::string::npos);
+  CHECK(md.find("Defaults (the final quality, `--quality final`, and the library's): 48 view x 6 light steps, display "
+                "rms 0.2000") != std::string::npos);
   CHECK(md.find("Cheapest within 1.5x the default's error (display rms <= 0.3000): 48 view x 6 light steps, 1/2 "
                 "resolution, display rms 0.4000") == std::string::npos);  // half resolution is too inaccurate here
   CHECK(md.find("Cheapest within 1.5x the default's error (display rms <= 0.3000): 32 view x 4 light steps, display "
@@ -434,7 +445,8 @@ TEST_CASE("the render error sweep is exactly zero at the reference's own step co
   int reported = 0;
   studies::ReferenceCheck check;
   check.limited = 99;
-  const auto rows = studies::render_error_sweep(scene, options, [&](const RenderErrorRow&) { ++reported; }, &check);
+  const auto rows = studies::render_error_sweep(
+      scene, options, [&](const RenderErrorRow&) { ++reported; }, &check);
   const unsigned limited = check.limited;
   // The reference's own error: rendered at half its steps (6 x 1), it differs, like the 6-step row.
   CHECK(check.half_steps.view_steps == 6);

@@ -21,13 +21,13 @@
 
 namespace fs = std::filesystem;
 using namespace nephele;
+using cover::CurlMode;
+using cover::Integrator;
 using test::read_file;
 using test::Run;
 using test::run;
 using test::run_command;
 using test::TemporaryDirectory;
-using cover::CurlMode;
-using cover::Integrator;
 
 namespace {
 
@@ -53,13 +53,14 @@ studies::SweepRow row(Integrator integrator, CurlMode mode, int steps, double ti
   return r;
 }
 
-const char* const header = "integrator,curl_mode,size,steps,time_ms,warp_err_rms,warp_err_max,cover_err_rms,cover_err_max";
+const char* const header =
+    "integrator,curl_mode,size,steps,time_ms,warp_err_rms,warp_err_max,cover_err_rms,cover_err_max";
 
 }  // namespace
 
 TEST_CASE("the error CSV has the documented columns and one line per run", "[fast][report]") {
   const std::string csv = studies::error_csv({row(Integrator::euler, CurlMode::sampled, 50, 12.5, 0.01),
-                                               row(Integrator::adaptive, CurlMode::procedural, 17, 80.0, 1e-4)});
+                                              row(Integrator::adaptive, CurlMode::procedural, 17, 80.0, 1e-4)});
   std::stringstream lines(csv);
   std::string line;
   std::getline(lines, line);
@@ -82,11 +83,11 @@ TEST_CASE("the error CSV has the documented columns and one line per run", "[fas
 TEST_CASE("the comparison finds the fastest run at the default's error and the most accurate within its time",
           "[fast][report]") {
   const std::vector<studies::SweepRow> rows{
-      row(Integrator::euler, CurlMode::sampled, 50, 100.0, 0.010),     // the default
+      row(Integrator::euler, CurlMode::sampled, 50, 100.0, 0.010),  // the default
       row(Integrator::euler, CurlMode::sampled, 100, 190.0, 0.006),
-      row(Integrator::heun, CurlMode::sampled, 10, 40.0, 0.012),       // cheaper, less accurate
-      row(Integrator::heun, CurlMode::sampled, 20, 60.0, 0.009),       // equal error, fastest
-      row(Integrator::rk4, CurlMode::sampled, 20, 95.0, 0.004),        // equal time, most accurate
+      row(Integrator::heun, CurlMode::sampled, 10, 40.0, 0.012),  // cheaper, less accurate
+      row(Integrator::heun, CurlMode::sampled, 20, 60.0, 0.009),  // equal error, fastest
+      row(Integrator::rk4, CurlMode::sampled, 20, 95.0, 0.004),   // equal time, most accurate
       row(Integrator::rk4, CurlMode::procedural, 20, 900.0, 0.001)};
   const auto comparisons = studies::compare_with_default(rows);
   REQUIRE(comparisons.size() == 1);
@@ -103,12 +104,12 @@ TEST_CASE("the comparison finds the fastest run at the default's error and the m
 
 TEST_CASE("the work-precision diagram draws one line per integrator curl mode and size", "[fast][report]") {
   const std::string svg = studies::work_precision_svg({row(Integrator::euler, CurlMode::sampled, 10, 20.0, 0.05),
-                                                        row(Integrator::euler, CurlMode::sampled, 50, 100.0, 0.01),
-                                                        row(Integrator::rk4, CurlMode::procedural, 10, 500.0, 1e-3)},
-                                                       "test");
+                                                       row(Integrator::euler, CurlMode::sampled, 50, 100.0, 0.01),
+                                                       row(Integrator::rk4, CurlMode::procedural, 10, 500.0, 1e-3)},
+                                                      "test");
   size_t lines = 0;
   for (size_t at = svg.find("<polyline"); at != std::string::npos; at = svg.find("<polyline", at + 1)) ++lines;
-  CHECK(lines == 4);  // two series in each of the two panels
+  CHECK(lines == 4);                                         // two series in each of the two panels
   CHECK(svg.find("stroke-dasharray") != std::string::npos);  // the procedural series
   CHECK(svg.rfind("</svg>") != std::string::npos);
 }
@@ -175,8 +176,9 @@ TEST_CASE("report --quick writes the render error CSV and diagram and a render s
   std::stringstream lines(read_file(out.path / "render_error.csv"));
   std::string line;
   std::getline(lines, line);
-  CHECK(line == "view_steps,light_steps,frames,divisor,clouds_ms,display_rms,rel_rms,rel_max,reference_view_steps,"
-                "reference_light_steps,reference_frames,width,height");
+  CHECK(line ==
+        "view_steps,light_steps,frames,divisor,clouds_ms,display_rms,rel_rms,rel_max,reference_view_steps,"
+        "reference_light_steps,reference_frames,width,height");
   std::set<std::tuple<int, int, int, int>> variants;
   int rows = 0;
   while (std::getline(lines, line)) {
@@ -216,8 +218,8 @@ TEST_CASE("report --quick writes the render error CSV and diagram and a render s
   const std::string summary = read_file(out.path / "summary.md");
   CHECK(summary.find("Best speed-up at equal error") != std::string::npos);  // the warp part is still there
   CHECK(summary.find("## Render: image error against run time") != std::string::npos);
-  CHECK(summary.find("Defaults (the final quality, `--quality final`, and the library's): 48 view x 12 light steps, display rms") !=
-        std::string::npos);
+  CHECK(summary.find("Defaults (the final quality, `--quality final`, and the library's): 48 view x 12 light steps, "
+                     "display rms") != std::string::npos);
   CHECK(summary.find("Cheapest within 1.5x the default's error") != std::string::npos);
   CHECK(summary.find("Most accurate within the default's time") != std::string::npos);
 
@@ -288,7 +290,8 @@ TEST_CASE("report and generate reject bad numerics options with exit code 2 and 
 
 TEST_CASE("generate warns about a stiff warp and records it in cover.json while adaptive sub-steps", "[report][cli]") {
   const std::string stiff =
-      "--size 32 --curl-frequency 64 --curl-octaves 1 --curl-strength 0.1 --iterations 6 --step 0.05 --curl-mode sampled";
+      "--size 32 --curl-frequency 64 --curl-octaves 1 --curl-strength 0.1 --iterations 6 --step 0.05 --curl-mode "
+      "sampled";
   // Warnings other than the stiffness one: the texels of size 32 cannot resolve this flow's
   // stretching, so the fold warning stands beside it.
   auto stiffness_warnings = [](const json::Value& numerics) {
@@ -374,7 +377,8 @@ constexpr double kHeunOrderSlack = 0.3;
 constexpr double kRk4OrderSlack = 0.6;
 }  // namespace
 
-TEST_CASE("the report observes order 1 for Euler 2 for Heun and 4 for RK4 on the default smooth flow", "[report][gpu]") {
+TEST_CASE("the report observes order 1 for Euler 2 for Heun and 4 for RK4 on the default smooth flow",
+          "[report][gpu]") {
   // Both smooth velocities: the analytic curl, and its spline at the default grid (the default
   // curl mode), whose warp differs from the procedural one by about 1e-6 rms (docs/numerics.md,
   // "The spline velocity"), below the errors the fit uses (order_error_floor and up).

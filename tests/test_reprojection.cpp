@@ -101,8 +101,8 @@ TEST_CASE("reprojecting a turned camera's previous frame finds each direction's 
       for (int c = 0; c < 4; ++c) {
         REQUIRE(std::isfinite(image.pixels[k + c]));
         const double error = std::abs(image.pixels[k + c] - truth.pixels[k + c]);
-        (x >= 4 && x < after.width - 4 && y >= 4 && y < after.height - 4 ? worst_inside : worst_outside) =
-            std::max(x >= 4 && x < after.width - 4 && y >= 4 && y < after.height - 4 ? worst_inside : worst_outside, error);
+        (x >= 4 && x < after.width - 4 && y >= 4 && y < after.height - 4 ? worst_inside : worst_outside) = std::max(
+            x >= 4 && x < after.width - 4 && y >= 4 && y < after.height - 4 ? worst_inside : worst_outside, error);
       }
     }
   INFO("largest error inside " << worst_inside << ", near the edges " << worst_outside);
@@ -115,7 +115,10 @@ TEST_CASE("reprojecting a turned camera's previous frame finds each direction's 
   CHECK(alone.pixels[(0 * 64 + 0) * 4] == truth.pixels[(0 * 64 + 1) * 4]);
 }
 
-TEST_CASE("a strided march gives the whole render's values at its pixels, and the same camera's previous frame fills the rest", "[reprojection][render]") {
+TEST_CASE(
+    "a strided march gives the whole render's values at its pixels, and the same camera's previous frame fills the "
+    "rest",
+    "[reprojection][render]") {
   test::test_context();
   const regional::Scene scene = test::small_summer_scene(32, 18);
   const auto stations = io::read_scene_weather(scene);
@@ -141,7 +144,8 @@ TEST_CASE("a strided march gives the whole render's values at its pixels, and th
   const render::FrameHistory same{whole, strided.camera};
   render::fill_unmarched(filled, strided.camera, 2, settings.march_phase, &same);
   double worst = 0;
-  for (std::size_t k = 0; k < filled.pixels.size(); ++k) worst = std::max(worst, double(std::abs(filled.pixels[k] - whole.pixels[k])));
+  for (std::size_t k = 0; k < filled.pixels.size(); ++k)
+    worst = std::max(worst, double(std::abs(filled.pixels[k] - whole.pixels[k])));
   // Bilinear at exactly the pixel centres: the centre itself, to float rounding of 1 x v.
   CHECK(worst <= 1e-6 * 10);
   // A band or a divisor with a stride is refused.

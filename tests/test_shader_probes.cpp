@@ -24,16 +24,14 @@ std::string literal(float f) {
 }
 std::string literal(uint32_t u) { return std::to_string(u) + "u"; }
 std::string literal(const FbmParams& p) {
-  return "FbmParams(" + literal(p.frequency) + ", " + std::to_string(p.octaves) + ", " +
-         literal(p.lacunarity) + ", " + literal(p.gain) + ", " + literal(p.seed) + ", ivec3(" +
-         std::to_string(p.period.x) + ", " + std::to_string(p.period.y) + ", " +
-         std::to_string(p.period.z) + "))";
+  return "FbmParams(" + literal(p.frequency) + ", " + std::to_string(p.octaves) + ", " + literal(p.lacunarity) + ", " +
+         literal(p.gain) + ", " + literal(p.seed) + ", ivec3(" + std::to_string(p.period.x) + ", " +
+         std::to_string(p.period.y) + ", " + std::to_string(p.period.z) + "))";
 }
 std::string literal(const CurlParams& c) {
-  return "CurlParams(" + literal(c.potential_north) + ", " + literal(c.potential_south) + ", " +
-         literal(c.prevailing) + ", " + literal(c.mix_frequency) + ", " + literal(c.strength) + ", " +
-         literal(c.smoothing) + ", " + literal(c.storm_tracks) + ", " + std::to_string(c.zonal_cells) + ", " +
-         literal(c.storm_track_shift) + ")";
+  return "CurlParams(" + literal(c.potential_north) + ", " + literal(c.potential_south) + ", " + literal(c.prevailing) +
+         ", " + literal(c.mix_frequency) + ", " + literal(c.strength) + ", " + literal(c.smoothing) + ", " +
+         literal(c.storm_tracks) + ", " + std::to_string(c.zonal_cells) + ", " + literal(c.storm_track_shift) + ")";
 }
 
 // One float rounding, relative: 2^-24.
@@ -94,10 +92,11 @@ TEST_CASE("cube face directions on the GPU agree with the CPU", "[probe][cube]")
   for (int face = 0; face < 6; ++face)
     for (int j = 0; j < size; ++j)
       for (int i = 0; i < size; ++i) inputs.emplace_back(float(face), float(i), float(j), 0.0f);
-  const auto gpu = probe<vec4>("#include \"../lib/cube_faces.glsl\"",
-                               "texel_direction(int(input_value.x), int(input_value.y), int(input_value.z), 7), "
-                               "float(cube_face_of(texel_direction(int(input_value.x), int(input_value.y), int(input_value.z), 7)))",
-                               inputs);
+  const auto gpu =
+      probe<vec4>("#include \"../lib/cube_faces.glsl\"",
+                  "texel_direction(int(input_value.x), int(input_value.y), int(input_value.z), 7), "
+                  "float(cube_face_of(texel_direction(int(input_value.x), int(input_value.y), int(input_value.z), 7)))",
+                  inputs);
   for (size_t k = 0; k < inputs.size(); ++k) {
     const vec3 cpu = texel_direction(int(inputs[k].x), int(inputs[k].y), int(inputs[k].z), size);
     REQUIRE(length(vec3(gpu[k]) - cpu) < kDirection);

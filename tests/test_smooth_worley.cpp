@@ -82,13 +82,15 @@ TEST_CASE("the smooth Worley gradient matches central differences at every point
       vec3 e(0.0f);
       e[a] = h;
       central[a] = static_cast<float>((static_cast<double>(smooth_worley(p + e, ivec3(0), kKey, 0.3f).w) -
-                                       smooth_worley(p - e, ivec3(0), kKey, 0.3f).w) / (2.0 * h));
+                                       smooth_worley(p - e, ivec3(0), kKey, 0.3f).w) /
+                                      (2.0 * h));
     }
     REQUIRE(glm::length(vec3(g) - central) < tolerance);
   }
 }
 
-TEST_CASE("smooth Worley equals the bump of a lone feature point and stays within its range", "[fast][worley][smooth]") {
+TEST_CASE("smooth Worley equals the bump of a lone feature point and stays within its range",
+          "[fast][worley][smooth]") {
   const vec3 feature = feature_offset(ivec3(0), ivec3(0), kKey);
   // On a feature point its bump is 1 and the others add lambda ln(1 + sum) >= 0.
   CHECK(smooth_worley(feature, ivec3(0), kKey, 0.3f).w >= 1.0f - 1e-6f);

@@ -139,8 +139,10 @@ TEST_CASE("the built-in coordinates match the reference table of tests/data/site
       CHECK(std::stod(lon) == Approx(lo).epsilon(0).margin(kSiteCoordinateDeg));
       ++matched;
     };
-    check("Gurten", regional::find_viewpoint("gurten")->site.latitude_deg, regional::find_viewpoint("gurten")->site.longitude_deg);
-    check("Bantiger summit", regional::find_viewpoint("bantiger")->site.latitude_deg, regional::find_viewpoint("bantiger")->site.longitude_deg);
+    check("Gurten", regional::find_viewpoint("gurten")->site.latitude_deg,
+          regional::find_viewpoint("gurten")->site.longitude_deg);
+    check("Bantiger summit", regional::find_viewpoint("bantiger")->site.latitude_deg,
+          regional::find_viewpoint("bantiger")->site.longitude_deg);
     check("Solothurn", regional::find_city("solothurn")->latitude_deg, regional::find_city("solothurn")->longitude_deg);
     check("Fribourg", regional::find_city("fribourg")->latitude_deg, regional::find_city("fribourg")->longitude_deg);
     check("Bern (city", regional::find_city("bern")->latitude_deg, regional::find_city("bern")->longitude_deg);

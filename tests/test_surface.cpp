@@ -39,7 +39,9 @@ float bias_at(const std::vector<float>& bias, double latitude, double longitude)
 }
 
 // A continent from 0 to 60 degrees east, 45 S to 45 N.
-bool continent(double latitude, double longitude) { return longitude >= 0 && longitude <= 60 && std::abs(latitude) <= 45; }
+bool continent(double latitude, double longitude) {
+  return longitude >= 0 && longitude <= 60 && std::abs(latitude) <= 45;
+}
 
 }  // namespace
 
@@ -58,7 +60,8 @@ TEST_CASE("the surface bias is zero over open ocean and the desert weight over w
   CHECK(cover::deck_weight(-22.0) == 1.0);
 }
 
-TEST_CASE("a continent gets a desert inside and a deck off its west coast, none off its east coast", "[fast][surface]") {
+TEST_CASE("a continent gets a desert inside and a deck off its west coast, none off its east coast",
+          "[fast][surface]") {
   const auto bias = cover::surface_bias(synthetic(continent));
   // Inside, at 24 N 30 E: the desert term, -1 but for the blur (> 20 degrees from any coast).
   CHECK(bias_at(bias, 24.0, 30.0) < -0.8);
@@ -76,16 +79,18 @@ TEST_CASE("a continent gets a desert inside and a deck off its west coast, none 
   CHECK(std::abs(bias_at(bias, 40.0, 30.0)) < 0.04);
 }
 
-TEST_CASE("ETOPO5's bias clears the Sahara and puts decks off California, Peru and Namibia", "[fast][surface][terrain]") {
-  if (!std::filesystem::exists(io::etopo5_default_path)) FAIL("ferret-datasets is not installed (scripts/debian-packages.txt)");
+TEST_CASE("ETOPO5's bias clears the Sahara and puts decks off California, Peru and Namibia",
+          "[fast][surface][terrain]") {
+  if (!std::filesystem::exists(io::etopo5_default_path))
+    FAIL("ferret-datasets is not installed (scripts/debian-packages.txt)");
   const auto mask = io::surface_from_option("etopo5");
   REQUIRE(mask != nullptr);
   const auto bias = cover::surface_bias(*mask);
-  CHECK(bias_at(bias, 23.0, 10.0) < -0.7);    // central Sahara
-  CHECK(bias_at(bias, -25.0, 135.0) < -0.7);  // central Australia
-  CHECK(bias_at(bias, 28.0, -120.0) > 0.2);   // off Baja California
-  CHECK(bias_at(bias, -18.0, -78.0) > 0.2);   // off Peru
-  CHECK(bias_at(bias, -20.0, 9.0) > 0.2);     // off Namibia
+  CHECK(bias_at(bias, 23.0, 10.0) < -0.7);             // central Sahara
+  CHECK(bias_at(bias, -25.0, 135.0) < -0.7);           // central Australia
+  CHECK(bias_at(bias, 28.0, -120.0) > 0.2);            // off Baja California
+  CHECK(bias_at(bias, -18.0, -78.0) > 0.2);            // off Peru
+  CHECK(bias_at(bias, -20.0, 9.0) > 0.2);              // off Namibia
   CHECK(std::abs(bias_at(bias, 0.0, -150.0)) < 0.05);  // mid-Pacific
   CHECK(std::abs(bias_at(bias, 50.0, 10.0)) < 0.05);   // central Europe: beyond the subtropics
 }
@@ -103,7 +108,8 @@ TEST_CASE("the density pass moves clouds from a continent's desert to the deck o
     for (const test::CoverTexel& t : test::cover_texels(p)) {
       const double latitude = std::asin(t.direction.z) * 180 / M_PI;
       const double longitude = std::atan2(t.direction.y, t.direction.x) * 180 / M_PI;
-      if (std::abs(std::abs(latitude) - 24) < 6 && longitude > 15 && longitude < 45) desert += t.cover > 0, ++desert_texels;
+      if (std::abs(std::abs(latitude) - 24) < 6 && longitude > 15 && longitude < 45)
+        desert += t.cover > 0, ++desert_texels;
       if (std::abs(std::abs(latitude) - 22) < 6 && longitude > -6 && longitude < -1) deck += t.cover > 0, ++deck_texels;
     }
     return std::pair{desert / desert_texels, deck / deck_texels};
@@ -118,7 +124,8 @@ TEST_CASE("the density pass moves clouds from a continent's desert to the deck o
   CHECK(deck_with > deck_without + 0.1);
 }
 
-TEST_CASE("generate records the surface in cover.json and refuses a bad mask naming --surface", "[surface][cli][bad-input]") {
+TEST_CASE("generate records the surface in cover.json and refuses a bad mask naming --surface",
+          "[surface][cli][bad-input]") {
   test::TemporaryDirectory directory(true);
   const auto out = directory.path / "cover";
   const auto none = test::run("generate --size 8 --curl-size 8 --files png --out " + out.string());
@@ -132,7 +139,8 @@ TEST_CASE("generate records the surface in cover.json and refuses a bad mask nam
   // A file that is no image names --surface too.
   const auto text = directory.path / "mask.png";
   { std::ofstream(text) << "not an image"; }
-  const auto unreadable = test::run("generate --size 8 --surface " + text.string() + " --out " + (directory.path / "w").string());
+  const auto unreadable =
+      test::run("generate --size 8 --surface " + text.string() + " --out " + (directory.path / "w").string());
   CHECK(unreadable.exit_code == 2);
   CHECK(unreadable.output.find("--surface") != std::string::npos);
   // Values above 1 in the first channel are no land fractions.
@@ -140,7 +148,8 @@ TEST_CASE("generate records the surface in cover.json and refuses a bad mask nam
   image.pixels[5] = 2.0f;
   const auto mask = directory.path / "mask.exr";
   io::write_image(mask, image, io::exr_encoding({"Y"}));
-  const auto bad = test::run("generate --size 8 --surface " + mask.string() + " --out " + (directory.path / "y").string());
+  const auto bad =
+      test::run("generate --size 8 --surface " + mask.string() + " --out " + (directory.path / "y").string());
   CHECK(bad.exit_code == 2);
   CHECK(bad.output.find("--surface") != std::string::npos);
   CHECK(bad.output.find("[0, 1]") != std::string::npos);

@@ -26,8 +26,8 @@ using namespace nephele;
 namespace {
 
 constexpr double gurten_lat = 46.91722, gurten_lon = 7.44361, eye_height = 860.0;  // 2 m above the summit
-constexpr double eiger_lat = 46.5776, eiger_lon = 7.9974;         // 3967 m
-constexpr double chasseral_lat = 47.1328, chasseral_lon = 7.0586;  // 1607 m, the Jura
+constexpr double eiger_lat = 46.5776, eiger_lon = 7.9974;                          // 3967 m
+constexpr double chasseral_lat = 47.1328, chasseral_lon = 7.0586;                  // 1607 m, the Jura
 
 bool have_etopo5() { return std::filesystem::exists(io::etopo5_default_path); }
 
@@ -175,7 +175,8 @@ TEST_CASE("the substitute hills bring Gurten and Bantiger up to their summits", 
   }
 }
 
-TEST_CASE("from Gurten the ray-cast horizon towards the Eiger and the Jura matches the elevation data", "[fast][terrain]") {
+TEST_CASE("from Gurten the ray-cast horizon towards the Eiger and the Jura matches the elevation data",
+          "[fast][terrain]") {
   if (!have_etopo5()) FAIL("ferret-datasets is not installed (scripts/debian-packages.txt)");
   const auto& g = gurten_grid();
   const double step = 100.0;
@@ -200,7 +201,8 @@ TEST_CASE("from Gurten the ray-cast horizon towards the Eiger and the Jura match
         cast_horizon_deg(g, azimuth_deg(chasseral_lat, chasseral_lon)) + 0.5);
 }
 
-TEST_CASE("rendered from Gurten, the ground meets the sky where the elevation data put the horizon", "[terrain][render]") {
+TEST_CASE("rendered from Gurten, the ground meets the sky where the elevation data put the horizon",
+          "[terrain][render]") {
   if (!have_etopo5()) FAIL("ferret-datasets is not installed (scripts/debian-packages.txt)");
   test::test_context();
   const auto grid = io::load_terrain("etopo5", gurten_lat, gurten_lon, eye_height);
@@ -219,7 +221,7 @@ TEST_CASE("rendered from Gurten, the ground meets the sky where the elevation da
     camera.pitch_deg = 0.5;
     camera.fov_deg = 1.5;
     camera.width = 8;
-    camera.height = 48;  // 0.19 degrees a pixel, 9 degrees tall
+    camera.height = 48;              // 0.19 degrees a pixel, 9 degrees tall
     const double time = 1782036000;  // 2026-06-21 10:00 UTC
     settings.terrain = grid;
     const render::RenderResult with = render::render_clouds(camera, {}, field, time, settings);
@@ -227,9 +229,9 @@ TEST_CASE("rendered from Gurten, the ground meets the sky where the elevation da
     const render::RenderResult bare = render::render_clouds(camera, {}, field, time, settings);
     const glsl::MarchParams m = render::march_params(camera, {}, field, time, settings);
     double distance = 0;
-    const double reference = regional::horizon_elevation_deg(gurten_lat, gurten_lon, eye_height, camera.heading_deg,
-                                                             raster(), regional::substitute_hills(), 140000.0, 100.0,
-                                                             &distance);
+    const double reference =
+        regional::horizon_elevation_deg(gurten_lat, gurten_lon, eye_height, camera.heading_deg, raster(),
+                                        regional::substitute_hills(), 140000.0, 100.0, &distance);
     const double tolerance = horizon_tolerance_deg(*grid, distance, 100.0);
     // The first row from the top where the ground shows: its ray meets the ground, the row
     // above it does not, so the horizon lies between their elevations (within the height

@@ -9,16 +9,16 @@ using namespace nephele;
 
 TEST_CASE("times that do not exist or are not UTC are refused", "[fast][time]") {
   const char* refused[] = {
-      "2024-02-31T12:00Z",        // February has no 31st
-      "2023-02-29T12:00Z",        // 2023 is no leap year
-      "2024-06-01T24:00Z",        // hours run 0 to 23
-      "2024-06-01T12:60Z",        // minutes run 0 to 59
-      "2024-06-01T12:nanZ",       // strtod would have read NaN
-      "2024-06-01T12:00+01:00",   // another zone
-      "2024-06-01T12:00Zextra",   // trailing text
-      "2024-06-01T12:00Z ",       // trailing space
-      " 2024-06-01T12:00Z",       // leading space
-      "",                          // nothing
+      "2024-02-31T12:00Z",       // February has no 31st
+      "2023-02-29T12:00Z",       // 2023 is no leap year
+      "2024-06-01T24:00Z",       // hours run 0 to 23
+      "2024-06-01T12:60Z",       // minutes run 0 to 59
+      "2024-06-01T12:nanZ",      // strtod would have read NaN
+      "2024-06-01T12:00+01:00",  // another zone
+      "2024-06-01T12:00Zextra",  // trailing text
+      "2024-06-01T12:00Z ",      // trailing space
+      " 2024-06-01T12:00Z",      // leading space
+      "",                        // nothing
   };
   for (const char* text : refused) {
     INFO("'" << text << "'");

@@ -15,7 +15,8 @@
 
 namespace nephele {
 
-TEST_CASE("the viewer's panels offer every viewer parameter of the table that is not an option only, in table order", "[fast][viewer]") {
+TEST_CASE("the viewer's panels offer every viewer parameter of the table that is not an option only, in table order",
+          "[fast][viewer]") {
   viewer::ViewState state;
   const auto panel = viewer::panel_parameters();
   std::set<const params::Parameter*> bound;
@@ -49,7 +50,8 @@ TEST_CASE("a panel value is checked as the command line checks it", "[fast][view
   viewer::set_value(state, params::cover::coverage, "0.25");
   CHECK(state.coverage == 0.25f);
   CHECK(viewer::value_text(state, params::cover::coverage) == "0.25");
-  CHECK_THROWS_WITH(viewer::set_value(state, params::cover::coverage, "1.5"), Catch::Contains("--coverage") && Catch::Contains("0 to 1"));
+  CHECK_THROWS_WITH(viewer::set_value(state, params::cover::coverage, "1.5"),
+                    Catch::Contains("--coverage") && Catch::Contains("0 to 1"));
   CHECK_THROWS_AS(viewer::set_value(state, params::cover::integrator, "midpoint"), core::InputError);
   CHECK_THROWS_AS(viewer::set_value(state, params::scene::time, "2026-02-30T00:00Z"), core::InputError);
   CHECK(state.coverage == 0.25f);
@@ -57,7 +59,8 @@ TEST_CASE("a panel value is checked as the command line checks it", "[fast][view
   CHECK(state.viewpoint == "bantiger");
 }
 
-TEST_CASE("a drag turns by the field of view per window width, and the wheel zooms within the table's range", "[fast][viewer]") {
+TEST_CASE("a drag turns by the field of view per window width, and the wheel zooms within the table's range",
+          "[fast][viewer]") {
   viewer::ViewState state;
   state.camera.heading_deg = 10;
   state.camera.pitch_deg = 0;
@@ -75,7 +78,8 @@ TEST_CASE("a drag turns by the field of view per window width, and the wheel zoo
   CHECK(state.camera.fov_deg == params::scene::fov.max);
 }
 
-TEST_CASE("flight keeps the camera in double: a 50 m step at 46.9 degrees north moves the latitude by 4.5e-4 degrees", "[fast][viewer]") {
+TEST_CASE("flight keeps the camera in double: a 50 m step at 46.9 degrees north moves the latitude by 4.5e-4 degrees",
+          "[fast][viewer]") {
   viewer::ViewState state;
   state.camera.latitude_deg = 46.9;
   state.camera.longitude_deg = 7.44;
@@ -123,7 +127,8 @@ TEST_CASE("nephele view without a display exits 3 and names xvfb-run and nephele
   CHECK_THAT(r.output, Catch::Contains("xvfb-run -a nephele view") && Catch::Contains("nephele render"));
 }
 
-TEST_CASE("nephele view --help lists the keys and the table's options, and bad options exit 2 before a window opens", "[viewer][cli]") {
+TEST_CASE("nephele view --help lists the keys and the table's options, and bad options exit 2 before a window opens",
+          "[viewer][cli]") {
   const auto help = test::run("view --help");
   CHECK(help.exit_code == 0);
   CHECK_THAT(help.output, Catch::Contains("F12") && Catch::Contains("PageUp") && Catch::Contains("--record"));
@@ -141,7 +146,9 @@ TEST_CASE("nephele view --help lists the modeller's keys and options, and a bad 
   const auto missing = test::run_with_environment("env -u DISPLAY", "view --model /nonexistent/m.cloud.json");
   CHECK(missing.exit_code == core::exit_bad_input);
   CHECK_THAT(missing.output, Catch::Contains("/nonexistent/m.cloud.json"));
-  const auto both = test::run_with_environment("env -u DISPLAY", "view --model fair-weather --scene " + std::string(NEPHELE_SOURCE_DIR) + "/scenes/bern-gurten.json");
+  const auto both =
+      test::run_with_environment("env -u DISPLAY", "view --model fair-weather --scene " +
+                                                       std::string(NEPHELE_SOURCE_DIR) + "/scenes/bern-gurten.json");
   CHECK(both.exit_code == core::exit_bad_input);
   CHECK_THAT(both.output, Catch::Contains("--model"));
   const auto alone = test::run_with_environment("env -u DISPLAY", "view --model-size 64");
@@ -190,11 +197,13 @@ TEST_CASE("modeller picking: a ray enters spheres and capsules where the geometr
   CHECK(viewer::pick_primitive(m, {glsl::vec3(0, 1, 0), glsl::vec3(1, 0, 0)}) == -1);
 }
 
-TEST_CASE("modeller picking: project() puts a point where cursor_ray() looks back through it", "[fast][viewer][modeller]") {
+TEST_CASE("modeller picking: project() puts a point where cursor_ray() looks back through it",
+          "[fast][viewer][modeller]") {
   viewer::ViewState state = viewer::modeller_state(model::example("fair-weather"));
   state.camera.heading_deg = 30;
   state.camera.pitch_deg = 20;
-  for (const glsl::vec3 point : {glsl::vec3(0.5f, 0.5f, 0.45f), glsl::vec3(0.1f, 0.8f, 0.9f), glsl::vec3(0.9f, 0.2f, 0.1f)}) {
+  for (const glsl::vec3 point :
+       {glsl::vec3(0.5f, 0.5f, 0.45f), glsl::vec3(0.1f, 0.8f, 0.9f), glsl::vec3(0.9f, 0.2f, 0.1f)}) {
     const glsl::vec3 at = viewer::project(state, point, 160, 90);
     REQUIRE(at.z > 0);
     const viewer::Ray ray = viewer::cursor_ray(state, at.x, at.y, 160, 90);
@@ -205,8 +214,10 @@ TEST_CASE("modeller picking: project() puts a point where cursor_ray() looks bac
   }
 }
 
-
-TEST_CASE("the orbit viewpoint lifts the camera to the orbit view's altitude over the same point, and above the ground views' ceiling the orbit renderer shows", "[fast][viewer]") {
+TEST_CASE(
+    "the orbit viewpoint lifts the camera to the orbit view's altitude over the same point, and above the ground "
+    "views' ceiling the orbit renderer shows",
+    "[fast][viewer]") {
   viewer::ViewState state;
   viewer::go_to_viewpoint(state, "gurten");
   const double latitude = state.camera.latitude_deg, longitude = state.camera.longitude_deg;

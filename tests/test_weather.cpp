@@ -35,9 +35,11 @@ std::string open_meteo(const std::string& low = "[10, 20, 30]", const std::strin
   return R"({"latitude": 46.95, "longitude": 7.45, "utc_offset_seconds": 0,
     "hourly_units": {"wind_speed_10m": "km/h"},
     "hourly": {"time": ["2026-06-21T00:00", "2026-06-21T01:00", "2026-06-21T02:00"],
-      "cloud_cover": [50, 60, 70], "cloud_cover_low": )" + low + R"(,
+      "cloud_cover": [50, 60, 70], "cloud_cover_low": )" +
+         low + R"(,
       "cloud_cover_mid": [0, 0, 0], "cloud_cover_high": [5, 5, 5], "precipitation": [0, 0.5, 1],
-      "wind_speed_10m": [36, 36, 36], "wind_direction_10m": [350, 10, 30])" + extra + "}}";
+      "wind_speed_10m": [36, 36, 36], "wind_direction_10m": [350, 10, 30])" +
+         extra + "}}";
 }
 
 std::string error_of(const std::string& text) {
@@ -82,7 +84,8 @@ TEST_CASE("Open-Meteo hourly data are read with units converted and interpolated
 }
 
 TEST_CASE("meteoblue data are read from data_1h with the metadata position", "[fast][weather]") {
-  const WeatherSeries w = io::read_weather_file(std::string(NEPHELE_SOURCE_DIR) + "/scenes/weather/fribourg-meteoblue.json");
+  const WeatherSeries w =
+      io::read_weather_file(std::string(NEPHELE_SOURCE_DIR) + "/scenes/weather/fribourg-meteoblue.json");
   CHECK(w.format == "meteoblue");
   CHECK(w.latitude_deg == Approx(46.8));
   CHECK(w.hours.front().cloud_mid == Approx(0.7));
@@ -90,8 +93,10 @@ TEST_CASE("meteoblue data are read from data_1h with the metadata position", "[f
 }
 
 TEST_CASE("bad weather input names the file and the field", "[fast][weather]") {
-  CHECK_THAT(error_of(open_meteo("[10, null, 30]")), Catch::Contains("test.json") && Catch::Contains("cloud_cover_low[1]"));
-  CHECK_THAT(error_of(open_meteo("[10, 120, 30]")), Catch::Contains("cloud_cover_low[1]") && Catch::Contains("0 to 100"));
+  CHECK_THAT(error_of(open_meteo("[10, null, 30]")),
+             Catch::Contains("test.json") && Catch::Contains("cloud_cover_low[1]"));
+  CHECK_THAT(error_of(open_meteo("[10, 120, 30]")),
+             Catch::Contains("cloud_cover_low[1]") && Catch::Contains("0 to 100"));
   CHECK_THAT(error_of(open_meteo("[10, 20]")), Catch::Contains("cloud_cover_low") && Catch::Contains("'time' has 3"));
   CHECK_THAT(error_of(R"({"latitude": 1, "longitude": 2, "hourly": {"time": ["2026-06-21T00:00"]}})"),
              Catch::Contains("hourly.cloud_cover") && Catch::Contains("missing"));
@@ -109,13 +114,13 @@ TEST_CASE("bad weather input names the file and the field", "[fast][weather]") {
 TEST_CASE("UTC offsets beyond 18 hours are refused naming the key, the value and the range", "[fast][weather]") {
   std::string text = open_meteo();
   text.replace(text.find("\"utc_offset_seconds\": 0"), 23, "\"utc_offset_seconds\": 1e300");
-  CHECK_THAT(error_of(text), Catch::Contains("utc_offset_seconds") && Catch::Contains("1e+300") &&
-                                 Catch::Contains("-64800 to 64800"));
+  CHECK_THAT(error_of(text),
+             Catch::Contains("utc_offset_seconds") && Catch::Contains("1e+300") && Catch::Contains("-64800 to 64800"));
   const std::string meteoblue = R"({"metadata": {"latitude": 0, "longitude": 0, "utc_timeoffset": -19},
     "data_1h": {"time": ["2026-06-21 00:00"], "totalcloudcover": [1], "lowclouds": [1], "midclouds": [1],
     "highclouds": [1]}})";
-  CHECK_THAT(error_of(meteoblue), Catch::Contains("metadata.utc_timeoffset") && Catch::Contains("-19") &&
-                                      Catch::Contains("-18 to 18"));
+  CHECK_THAT(error_of(meteoblue),
+             Catch::Contains("metadata.utc_timeoffset") && Catch::Contains("-19") && Catch::Contains("-18 to 18"));
 }
 
 TEST_CASE("station weights give a station's own data there and the linear blend between two", "[fast][weather]") {
@@ -124,7 +129,8 @@ TEST_CASE("station weights give a station's own data there and the linear blend 
   CHECK(at_first[0] == 1.0);
   CHECK(at_first[1] == 0.0);
   // Points a quarter and a half of the way along the geodesic from Bern to Solothurn.
-  const GeographicLib::GeodesicLine line = GeographicLib::Geodesic::WGS84().InverseLine(46.94806, 7.44750, 47.20833, 7.53722);
+  const GeographicLib::GeodesicLine line =
+      GeographicLib::Geodesic::WGS84().InverseLine(46.94806, 7.44750, 47.20833, 7.53722);
   for (double fraction : {0.25, 0.5, 0.8}) {
     double lat = 0, lon = 0;
     line.Position(fraction * line.Distance(), lat, lon);
@@ -163,7 +169,8 @@ TEST_CASE("the layer rules pick types from the current and coming weather", "[fa
   CHECK(choose_layers(sample(0, 0.3, 0), {rain_soon})[0].morph == Approx(0.5));
 }
 
-TEST_CASE("rain under thick mid cloud gives the nimbostratus substitute, and showers convection but no layer", "[fast][layers]") {
+TEST_CASE("rain under thick mid cloud gives the nimbostratus substitute, and showers convection but no layer",
+          "[fast][layers]") {
   const auto ns = choose_layers(sample(0.3, 0.9, 0, 2.0), {});
   const CloudLayer* alto = nullptr;
   for (const auto& l : ns)

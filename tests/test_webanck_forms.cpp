@@ -145,7 +145,8 @@ TEST_CASE("the derived deviation of one octave of gradient noise matches its sam
   CHECK(m.variance == Approx(derived).epsilon(0).margin(5 * derived * std::sqrt(4.0 / 40000)));
 }
 
-TEST_CASE("G3 histogram: values within 0..1, mean 1/2, standardised octave mean of unit variance, near uniform", "[fast][webanck]") {
+TEST_CASE("G3 histogram: values within 0..1, mean 1/2, standardised octave mean of unit variance, near uniform",
+          "[fast][webanck]") {
   const int n = 20000;
   const auto points = sample_points(n, 15.0f, 4);
   std::vector<double> g3, standardised;
@@ -176,7 +177,8 @@ TEST_CASE("G3 histogram: values within 0..1, mean 1/2, standardised octave mean 
   }
 }
 
-TEST_CASE("W3 histogram: values within 0..1, mean and variance as the complemented Worley octaves predict", "[fast][webanck]") {
+TEST_CASE("W3 histogram: values within 0..1, mean and variance as the complemented Worley octaves predict",
+          "[fast][webanck]") {
   const std::vector<double> f1 = monte_carlo_f1(40000);
   const Moments f = moments(f1);
   // W3 = 1 - sum a_k F1_k / (sqrt 3 sum a): mean 1 - E[F1] / sqrt 3, variance

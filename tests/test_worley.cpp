@@ -185,7 +185,8 @@ TEST_CASE("periodic Worley noise tiles exactly for negative coordinates too", "[
   CHECK(wrap_cell(ivec3(-1, -7, 12), period) == ivec3(3, 5, 2));
 }
 
-TEST_CASE("a wrapped index is exact when the division's floored quotient is one off, as a GPU's may be", "[fast][worley]") {
+TEST_CASE("a wrapped index is exact when the division's floored quotient is one off, as a GPU's may be",
+          "[fast][worley]") {
   // GLSL lets float division err by 2.5 ulp (NVIDIA's does: 21.0 / 7.0 may floor to 2), so
   // wrap_axis's quotient can miss by one either way; wrap_remainder must still give the true
   // remainder in [0, period), which integer arithmetic gives here for comparison.

@@ -30,8 +30,8 @@ std::uint64_t input_memory_budget_bytes() {
 }
 
 std::string read_input_file(const std::string& path, std::uint64_t max_bytes) {
-  const std::string limit = "at most " + std::to_string(max_bytes) + " bytes (" +
-                            std::to_string(max_bytes >> 20) + " MiB) are read";
+  const std::string limit =
+      "at most " + std::to_string(max_bytes) + " bytes (" + std::to_string(max_bytes >> 20) + " MiB) are read";
   // Non-blocking open: opening a FIFO for reading would otherwise wait for a writer.
   const int descriptor = open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
   if (descriptor < 0) throw InputFileError(path + ": cannot be read (" + std::strerror(errno) + ")");

@@ -8,8 +8,7 @@
 namespace nephele::json {
 
 ParseError::ParseError(const std::string& message, size_t line_, size_t column_)
-    : std::runtime_error("line " + std::to_string(line_) + ", column " + std::to_string(column_) +
-                         ": " + message),
+    : std::runtime_error("line " + std::to_string(line_) + ", column " + std::to_string(column_) + ": " + message),
       line(line_),
       column(column_) {}
 
@@ -84,20 +83,29 @@ class Parser {
       const unsigned char b = static_cast<unsigned char>(s_[i]);
       size_t length = 0;
       unsigned char low = 0x80, high = 0xBF;  // allowed range of the second byte
-      if (b < 0x80) length = 1;
-      else if (b >= 0xC2 && b <= 0xDF) length = 2;
-      else if (b == 0xE0) length = 3, low = 0xA0;
-      else if (b == 0xED) length = 3, high = 0x9F;  // no UTF-16 surrogates
-      else if (b >= 0xE1 && b <= 0xEF) length = 3;
-      else if (b == 0xF0) length = 4, low = 0x90;
-      else if (b == 0xF4) length = 4, high = 0x8F;  // nothing past U+10FFFF
-      else if (b >= 0xF1 && b <= 0xF3) length = 4;
+      if (b < 0x80)
+        length = 1;
+      else if (b >= 0xC2 && b <= 0xDF)
+        length = 2;
+      else if (b == 0xE0)
+        length = 3, low = 0xA0;
+      else if (b == 0xED)
+        length = 3, high = 0x9F;  // no UTF-16 surrogates
+      else if (b >= 0xE1 && b <= 0xEF)
+        length = 3;
+      else if (b == 0xF0)
+        length = 4, low = 0x90;
+      else if (b == 0xF4)
+        length = 4, high = 0x8F;  // nothing past U+10FFFF
+      else if (b >= 0xF1 && b <= 0xF3)
+        length = 4;
       // The offset of the first bad byte: the lead byte, a continuation byte, or the end of the text.
       bool valid = length != 0;
       size_t bad = i;
       for (size_t k = 1; k < length && valid; ++k) {
         bad = i + k;
-        if (bad >= n) valid = false;
+        if (bad >= n)
+          valid = false;
         else {
           const unsigned char c = static_cast<unsigned char>(s_[bad]);
           valid = c >= (k == 1 ? low : 0x80) && c <= (k == 1 ? high : 0xBF);
@@ -113,8 +121,7 @@ class Parser {
     }
   }
   void whitespace() {
-    while (pos_ < s_.size() && (s_[pos_] == ' ' || s_[pos_] == '\t' || s_[pos_] == '\n' || s_[pos_] == '\r'))
-      ++pos_;
+    while (pos_ < s_.size() && (s_[pos_] == ' ' || s_[pos_] == '\t' || s_[pos_] == '\n' || s_[pos_] == '\r')) ++pos_;
   }
   bool consume(char c) {
     whitespace();
@@ -204,10 +211,14 @@ class Parser {
     for (int i = 0; i < 4; ++i) {
       const char h = s_[pos_++];
       code <<= 4;
-      if (h >= '0' && h <= '9') code |= h - '0';
-      else if (h >= 'a' && h <= 'f') code |= h - 'a' + 10;
-      else if (h >= 'A' && h <= 'F') code |= h - 'A' + 10;
-      else fail("bad hex digit in \\u escape");
+      if (h >= '0' && h <= '9')
+        code |= h - '0';
+      else if (h >= 'a' && h <= 'f')
+        code |= h - 'a' + 10;
+      else if (h >= 'A' && h <= 'F')
+        code |= h - 'A' + 10;
+      else
+        fail("bad hex digit in \\u escape");
     }
     return code;
   }
@@ -261,8 +272,10 @@ class Parser {
       return pos_ - from;
     };
     if (s_[pos_] == '-') ++pos_;
-    if (pos_ < s_.size() && s_[pos_] == '0') ++pos_;
-    else if (digits() == 0) fail("bad number");
+    if (pos_ < s_.size() && s_[pos_] == '0')
+      ++pos_;
+    else if (digits() == 0)
+      fail("bad number");
     if (pos_ < s_.size() && s_[pos_] == '.') {
       ++pos_;
       if (digits() == 0) fail("bad number: digits expected after '.'");

@@ -26,8 +26,7 @@ void Progress::heartbeat() {
   while (!finished_) {
     const double t = elapsed();
     // A step that runs long repeats its line no faster than every half second.
-    const double interval =
-        std::max(0.5, settings_.terminal ? settings_.redraw_interval_s : settings_.line_interval_s);
+    const double interval = std::max(0.5, settings_.terminal ? settings_.redraw_interval_s : settings_.line_interval_s);
     const double next = std::max(settings_.quiet_below_s, drawn_ ? last_shown_ + interval : 0.0);
     if (t >= next) {
       show(t);

@@ -16,12 +16,12 @@ namespace nephele::core {
 class Progress {
  public:
   struct Settings {
-    bool enabled = true;          // false for --quiet
-    bool terminal = false;        // redraw one line with \r; else print lines
-    double quiet_below_s = 1.0;   // nothing is shown before this much time has passed
-    double line_interval_s = 5.0; // between plain lines
+    bool enabled = true;           // false for --quiet
+    bool terminal = false;         // redraw one line with \r; else print lines
+    double quiet_below_s = 1.0;    // nothing is shown before this much time has passed
+    double line_interval_s = 5.0;  // between plain lines
     double redraw_interval_s = 0.1;
-    bool heartbeat = true;        // repeat the report from a background thread while a step runs
+    bool heartbeat = true;  // repeat the report from a background thread while a step runs
     std::FILE* stream = stderr;
   };
   // Settings for stderr: enabled unless quiet, terminal when stderr is a TTY.
@@ -37,8 +37,8 @@ class Progress {
   void finish();
 
   // The text of one report, e.g. "generate: warp 40% (12.0 s, about 18 s left)"; exposed for tests.
-  static std::string format(const std::string& label, const std::string& stage, double fraction,
-                            double elapsed_s, bool with_bar);
+  static std::string format(const std::string& label, const std::string& stage, double fraction, double elapsed_s,
+                            bool with_bar);
 
  private:
   using Clock = std::chrono::steady_clock;

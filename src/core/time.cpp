@@ -28,7 +28,9 @@ double parse_utc_time(const std::string& text) {
   day_in >> date::parse("%F", day);
   time_in >> date::parse("%FT%T", time_of_day);
   if (day_in.fail() || time_in.fail())
-    throw std::invalid_argument("'" + text + "' is not a valid date and time (month 1-12, a day that exists in that month, hour 0-23, minute 0-59, second 0-59)");
+    throw std::invalid_argument("'" + text +
+                                "' is not a valid date and time (month 1-12, a day that exists in that month, hour "
+                                "0-23, minute 0-59, second 0-59)");
   // Whole seconds and the fraction apart, each exact in a double: a count of nanoseconds since
   // 1970 (about 1.7e18, past 2^53) rounded .250 s to .2499998 s and could move a whole minute
   // off by an ulp outside the common years (found by tests/fuzz).

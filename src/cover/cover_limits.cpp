@@ -23,14 +23,15 @@ void check_cover_fits(const gpu::Context& context, int size, const std::string& 
   const int max_cube = gpu::max_cube_map_size();
   if (size > max_cube)
     throw core::InputError(option + ": " + std::to_string(size) + " exceeds this driver's cube map limit (" +
-                     context.info().renderer + "); allowed range 1 to " + std::to_string(max_cube));
+                           context.info().renderer + "); allowed range 1 to " + std::to_string(max_cube));
 
   // Every pass allocates RGBA32F cube maps of this size.
   auto cube_fits = [](int s) { return gpu::driver_accepts(GL_PROXY_TEXTURE_CUBE_MAP, GL_RGBA32F, s, s); };
   if (!cube_fits(size))
-    throw core::InputError(option + ": " + std::to_string(size) + " needs " + std::to_string(size) + "^2 RGBA32F cube maps, " +
-                     "which this driver (" + context.info().renderer + ") cannot allocate; allowed range 1 to " +
-                     std::to_string(gpu::largest_fitting(max_cube, cube_fits)));
+    throw core::InputError(option + ": " + std::to_string(size) + " needs " + std::to_string(size) +
+                           "^2 RGBA32F cube maps, " + "which this driver (" + context.info().renderer +
+                           ") cannot allocate; allowed range 1 to " +
+                           std::to_string(gpu::largest_fitting(max_cube, cube_fits)));
 
   const double host_available = core::host_memory_available_bytes();
   if (context.is_software()) {
@@ -38,8 +39,8 @@ void check_cover_fits(const gpu::Context& context, int size, const std::string& 
     auto total = [](int s) { return cover_gpu_bytes(s) + host_bytes(s); };
     if (host_available > 0 && total(size) > host_available) {
       std::ostringstream m;
-      m << option << ": " << size << " needs about " << std::ceil(total(size) / 1048576.0)
-        << " MiB but " << std::floor(host_available / 1048576.0) << " MiB are available; allowed range 1 to "
+      m << option << ": " << size << " needs about " << std::ceil(total(size) / 1048576.0) << " MiB but "
+        << std::floor(host_available / 1048576.0) << " MiB are available; allowed range 1 to "
         << gpu::largest_fitting(max_cube, [&](int s) { return total(s) <= host_available; });
       throw core::InputError(m.str());
     }
@@ -57,8 +58,7 @@ void check_cover_fits(const gpu::Context& context, int size, const std::string& 
   if (gpu_available > 0 && cover_gpu_bytes(size) > gpu_available) {
     std::ostringstream m;
     m << option << ": " << size << " needs about " << std::ceil(cover_gpu_bytes(size) / 1048576.0)
-      << " MiB of GPU memory but " << std::floor(gpu_available / 1048576.0)
-      << " MiB are available; allowed range 1 to "
+      << " MiB of GPU memory but " << std::floor(gpu_available / 1048576.0) << " MiB are available; allowed range 1 to "
       << gpu::largest_fitting(max_cube, [&](int s) { return cover_gpu_bytes(s) <= gpu_available; });
     throw core::InputError(m.str());
   }

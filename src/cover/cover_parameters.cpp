@@ -12,15 +12,19 @@ std::uint32_t layer_seed(std::uint32_t seed, NoiseLayer layer) {
 }
 
 glsl::FbmParams fbm_params(const NoiseOctaves& o, std::uint32_t seed, NoiseLayer layer) {
-  return glsl::FbmParams{o.frequency, o.octaves, o.lacunarity, o.gain, layer_seed(seed, layer),
-                         glsl::ivec3(0)};
+  return glsl::FbmParams{o.frequency, o.octaves, o.lacunarity, o.gain, layer_seed(seed, layer), glsl::ivec3(0)};
 }
 
 glsl::CurlParams curl_params(const CoverParameters& p) {
   glsl::CurlParams c{fbm_params(p.potential, p.seed, NoiseLayer::potential_north),
                      fbm_params(p.potential, p.seed, NoiseLayer::potential_south),
-                     p.prevailing, p.mix_frequency, p.curl_strength, p.curl_smoothing, p.storm_tracks,
-                     p.zonal_cells, static_cast<float>(storm_track_shift(p.month))};
+                     p.prevailing,
+                     p.mix_frequency,
+                     p.curl_strength,
+                     p.curl_smoothing,
+                     p.storm_tracks,
+                     p.zonal_cells,
+                     static_cast<float>(storm_track_shift(p.month))};
   c.potential_north.period = c.potential_south.period = glsl::ivec3(offset_period_cells(p.potential, p.noise_offset));
   return c;
 }

@@ -12,7 +12,7 @@
 namespace nephele::cover {
 
 struct NoiseOctaves {
-  float frequency;   // cells per unit length (the sphere has radius 1)
+  float frequency;  // cells per unit length (the sphere has radius 1)
   int octaves;
   float lacunarity;
   float gain;
@@ -20,24 +20,25 @@ struct NoiseOctaves {
 
 // Defaults come from the parameter table (src/params/table.hpp).
 struct CoverParameters {
-  int size = params::cover::size.default_int();                  // texels per cube face edge
+  int size = params::cover::size.default_int();  // texels per cube face edge
   std::uint32_t seed = params::cover::seed.default_uint32();
-  int iterations = params::cover::iterations.default_int();      // K, warp steps
-  float step = params::cover::step.default_float();              // h, warp step size; flow time T = K h
-  float coverage = params::cover::coverage.default_float();      // target solid-angle fraction of cloudy sky
+  int iterations = params::cover::iterations.default_int();  // K, warp steps
+  float step = params::cover::step.default_float();          // h, warp step size; flow time T = K h
+  float coverage = params::cover::coverage.default_float();  // target solid-angle fraction of cloudy sky
   // Target fraction by latitude, rescaled to `coverage` (docs/climate.md); flat: one threshold.
   LatitudeProfile profile = earth_profile();
-  int month = params::cover::month.default_int();                // seasonal shift; 0 annual mean
+  int month = params::cover::month.default_int();  // seasonal shift; 0 annual mean
   NoiseOctaves potential{params::cover::curl_frequency.default_float(), params::cover::curl_octaves.default_int(),
                          params::cover::curl_lacunarity.default_float(),
-                         params::cover::curl_gain.default_float()};  // Worley fBm of the stream function
-  float prevailing = params::cover::prevailing.default_float();  // strength of the zonal wind bands
-  float mix_frequency = params::cover::mix_frequency.default_float();  // m(lat) = sin(a lat); sfsim uses 3
-  float curl_strength = params::cover::curl_strength.default_float();  // scale of the stream function
+                         params::cover::curl_gain.default_float()};      // Worley fBm of the stream function
+  float prevailing = params::cover::prevailing.default_float();          // strength of the zonal wind bands
+  float mix_frequency = params::cover::mix_frequency.default_float();    // m(lat) = sin(a lat); sfsim uses 3
+  float curl_strength = params::cover::curl_strength.default_float();    // scale of the stream function
   float curl_smoothing = params::cover::curl_smoothing.default_float();  // lambda of the smooth potential
   int zonal_cells = params::cover::zonal_cells.default_int();            // zonal wind cells per hemisphere
   float storm_tracks = params::cover::storm_tracks.default_float();      // vortex focus on the storm tracks
-  float cyclone_cloudiness = params::cover::cyclone_cloudiness.default_float();  // weight of the cyclonic depth in the density
+  float cyclone_cloudiness =
+      params::cover::cyclone_cloudiness.default_float();  // weight of the cyclonic depth in the density
   NoiseOctaves density{params::cover::density_frequency.default_float(), params::cover::density_octaves.default_int(),
                        params::cover::density_lacunarity.default_float(),
                        params::cover::density_gain.default_float()};  // Worley fBm of the cloud density
@@ -48,7 +49,7 @@ struct CoverParameters {
   // smooth potential, smooth enough for order 4 (sfsim: Euler, sampled, 50 steps).
   cover::Integrator integrator = *cover::parse_integrator(std::string(params::cover::integrator.default_text));
   cover::CurlMode curl_mode = *cover::parse_curl_mode(std::string(params::cover::curl_mode.default_text));
-  float tolerance = params::cover::tolerance.default_float();   // adaptive: largest error estimate of a step, radians
+  float tolerance = params::cover::tolerance.default_float();    // adaptive: largest error estimate of a step, radians
   int max_substeps = params::cover::max_substeps.default_int();  // adaptive: attempted steps per texel at most
   int curl_size = params::cover::curl_size.default_int();        // spline: curl grid nodes per face edge
   // Shifts every noise layer by (d, d, d) sphere radii. Non-zero offsets make the lattices

@@ -41,8 +41,7 @@ CoverageCalibration calibrate_coverage(const std::vector<float>& densities, int 
   std::vector<std::pair<float, double>> members;  // (density, weight) of texels in the bin
   for (size_t k = 0; k < densities.size(); ++k)
     if (bin_of(densities[k]) == bin) members.emplace_back(densities[k], weight_of(k));
-  std::sort(members.begin(), members.end(),
-            [](const auto& a, const auto& b) { return a.first > b.first; });
+  std::sort(members.begin(), members.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
 
   // Candidate cut after `count` members: cloudy fraction above + their weights. Choose the
   // count whose fraction is nearest to the target.
@@ -151,8 +150,10 @@ std::vector<float> band_thresholds(const std::vector<BandCrossing>& crossings, c
   for (int b = 0; b < bands; ++b) {
     if (crossings[b].total > 0.0) continue;
     const auto next = std::lower_bound(filled.begin(), filled.end(), b);
-    if (next == filled.begin()) thresholds[b] = thresholds[*next];
-    else if (next == filled.end()) thresholds[b] = thresholds[filled.back()];
+    if (next == filled.begin())
+      thresholds[b] = thresholds[*next];
+    else if (next == filled.end())
+      thresholds[b] = thresholds[filled.back()];
     else {
       const int lo = *(next - 1), hi = *next;
       thresholds[b] = thresholds[lo] + (thresholds[hi] - thresholds[lo]) * static_cast<float>(b - lo) / (hi - lo);

@@ -7,11 +7,11 @@
 namespace nephele::cover {
 
 struct CoverageCalibration {
-  float threshold = 0.0f;          // texels with density > threshold are cloudy
+  float threshold = 0.0f;  // texels with density > threshold are cloudy
   float density_min = 0.0f;
   float density_max = 0.0f;
-  double achieved_fraction = 0.0;  // solid-angle fraction of texels with density > threshold
-  double max_texel_fraction = 0.0; // the largest single texel's share of the sphere
+  double achieved_fraction = 0.0;   // solid-angle fraction of texels with density > threshold
+  double max_texel_fraction = 0.0;  // the largest single texel's share of the sphere
 };
 
 // `densities`: a cube map, 6 faces of size x size texels in GL order.
@@ -30,11 +30,11 @@ constexpr int band_bins = 256;
 
 struct BandCalibration {
   float density_min = 0.0f, density_max = 0.0f;
-  std::vector<double> targets;     // per band, the fraction of the band's solid angle
-  std::vector<float> thresholds;   // per band (at its centre)
-  std::vector<double> achieved;    // per band: cloudy fraction at the smooth threshold
-  std::vector<double> band_weight; // per band: its texels' share of the sphere
-  double achieved_fraction = 0.0;  // the sphere's cloudy fraction at the smooth threshold
+  std::vector<double> targets;      // per band, the fraction of the band's solid angle
+  std::vector<float> thresholds;    // per band (at its centre)
+  std::vector<double> achieved;     // per band: cloudy fraction at the smooth threshold
+  std::vector<double> band_weight;  // per band: its texels' share of the sphere
+  double achieved_fraction = 0.0;   // the sphere's cloudy fraction at the smooth threshold
 };
 
 // Bins per unit density of the coarse level: band_bins / (max - min) in float, 0 when all

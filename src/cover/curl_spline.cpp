@@ -7,7 +7,8 @@ namespace nephele::cover {
 int spline_coefficient_extent(int cells) { return cells + 2 * glsl::SPLINE_MARGIN; }
 int spline_sample_extent(int cells) { return cells + 2 * (glsl::SPLINE_MARGIN + 1); }
 
-std::vector<glsl::vec4> spline_coefficients(int cells, const std::function<glsl::vec4(int face, int i, int j)>& sample) {
+std::vector<glsl::vec4> spline_coefficients(int cells,
+                                            const std::function<glsl::vec4(int face, int i, int j)>& sample) {
   const int m = spline_sample_extent(cells);
   const int n = spline_coefficient_extent(cells);
   std::vector<glsl::vec4> samples(static_cast<size_t>(6) * m * m);

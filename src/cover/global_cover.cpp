@@ -104,9 +104,7 @@ void GlobalCover::run_warp(bool after_curl) {
   timed("warp", [&] { dispatch_warp(identity_field_, warp_field_, after_curl); });
 }
 
-void GlobalCover::warp_points(const gpu::Texture& starts, const gpu::Texture& warped) {
-  dispatch_warp(starts, warped);
-}
+void GlobalCover::warp_points(const gpu::Texture& starts, const gpu::Texture& warped) { dispatch_warp(starts, warped); }
 
 void GlobalCover::dispatch_warp(const gpu::Texture& starts, const gpu::Texture& warped, bool start_velocity_in_curl) {
   const CoverParameters& p = parameters_;

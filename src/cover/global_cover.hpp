@@ -19,7 +19,7 @@ namespace nephele::cover {
 
 struct PassTiming {
   std::string pass;
-  double milliseconds;           // wall clock, between two glFinish
+  double milliseconds;             // wall clock, between two glFinish
   double device_milliseconds = 0;  // GPU time by a GL_TIME_ELAPSED query (GPU passes; else 0)
 };
 
@@ -93,7 +93,7 @@ class GlobalCover {
   CoverageCalibration calibration_;
   std::optional<BandCalibration> bands_;
   std::unique_ptr<GpuCalibration> gpu_calibration_;  // made at the first density pass or calibration
-  bool density_range_current_ = false;  // the density pass reduced the range into gpu_calibration_
+  bool density_range_current_ = false;               // the density pass reduced the range into gpu_calibration_
   std::unique_ptr<GpuDiagnosis> gpu_diagnosis_;      // made at the first diagnosis
   std::vector<PassTiming> timings_;
   std::optional<cover::WarpDiagnostics> diagnostics_;

@@ -52,7 +52,8 @@ float from_sortable(GLuint bits) {
 
 std::vector<std::uint64_t> sums64(const std::vector<GLuint>& words) {
   std::vector<std::uint64_t> sums(words.size() / 2);
-  for (size_t k = 0; k < sums.size(); ++k) sums[k] = words[2 * k] | (static_cast<std::uint64_t>(words[2 * k + 1]) << 32);
+  for (size_t k = 0; k < sums.size(); ++k)
+    sums[k] = words[2 * k] | (static_cast<std::uint64_t>(words[2 * k + 1]) << 32);
   return sums;
 }
 
@@ -67,7 +68,9 @@ int reduction_strip(int size) {
 
 int diagnosis_strip(int size) { return 4 * reduction_strip(size); }
 
-double TexelWeightUnits::fraction(std::uint64_t units) const { return std::ldexp(static_cast<double>(units), -scale_bits); }
+double TexelWeightUnits::fraction(std::uint64_t units) const {
+  return std::ldexp(static_cast<double>(units), -scale_bits);
+}
 
 double TexelWeightUnits::sum_error_bound() const { return 6.0 * size * size * std::ldexp(0.5, -scale_bits); }
 
@@ -81,8 +84,9 @@ TexelWeightUnits texel_weight_units(int size) {
   fractions.reserve(static_cast<size_t>(half) * (half + 1) / 2);
   for (int b = 0; b < half; ++b)
     for (int a = 0; a <= b; ++a)
-      fractions.push_back((area_antiderivative(edges[a + 1], edges[b + 1]) - area_antiderivative(edges[a], edges[b + 1]) -
-                           area_antiderivative(edges[a + 1], edges[b]) + area_antiderivative(edges[a], edges[b])) /
+      fractions.push_back((area_antiderivative(edges[a + 1], edges[b + 1]) -
+                           area_antiderivative(edges[a], edges[b + 1]) - area_antiderivative(edges[a + 1], edges[b]) +
+                           area_antiderivative(edges[a], edges[b])) /
                           (4.0 * M_PI));
   TexelWeightUnits units;
   units.size = size;
@@ -99,9 +103,9 @@ TexelWeightUnits texel_weight_units(int size) {
 double reduction_gpu_bytes(int size) {
   const double half = (size + 1) / 2;
   const double table = half * (half + 1) / 2 * 4.0;
-  const int strip = diagnosis_strip(size);  // the diagnosis's partial records
+  const int strip = diagnosis_strip(size);                                // the diagnosis's partial records
   const double records = 6.0 * size * ((size + strip - 1) / strip) + 64;  // + stage 1's 64
-  const double band_tables = profile_bands * (band_bins * 8.0 + 12.0);  // one histogram, crossings, thresholds
+  const double band_tables = profile_bands * (band_bins * 8.0 + 12.0);    // one histogram, crossings, thresholds
   return 2 * table + calibration_member_capacity * 8.0 + 2 * bins * 8.0 + records * 6 * 8.0 + band_tables;
 }
 
@@ -208,8 +212,8 @@ BandCalibration GpuCalibration::run_bands(const gpu::Texture& density, const std
     for (size_t k = 0; k < sums.size(); ++k) out[k] = units.fraction(sums[k]);
     return out;
   };
-  const std::vector<BandCrossing> crossings =
-      band_crossings(as_fractions(band_histogram(density, 6, bands, c.density_min, scale)), targets, c.density_min, scale);
+  const std::vector<BandCrossing> crossings = band_crossings(
+      as_fractions(band_histogram(density, 6, bands, c.density_min, scale)), targets, c.density_min, scale);
   std::vector<GLuint> crossing_words(2 * static_cast<size_t>(bands));
   for (int b = 0; b < bands; ++b) {
     crossing_words[2 * b] = static_cast<GLuint>(crossings[b].bin);
@@ -242,7 +246,8 @@ void GpuCalibration::set_achieved(const std::vector<std::uint64_t>& cloudy, Band
   c.achieved_fraction = units.fraction(total);
 }
 
-CoverageCalibration GpuCalibration::run(const gpu::Texture& density, double target, bool range_from_density_pass) const {
+CoverageCalibration GpuCalibration::run(const gpu::Texture& density, double target,
+                                        bool range_from_density_pass) const {
   if (density.width() != size_) throw std::invalid_argument("GpuCalibration: the density map is not of its size");
   const TexelWeightUnits& units = weights_.units();
   CoverageCalibration result;
@@ -385,7 +390,9 @@ WarpDiagnostics GpuDiagnosis::run(const gpu::Texture& curl, const gpu::Texture& 
   double total[figures];
   std::memcpy(total, total_words.data(), sizeof total);
   const TexelWeightUnits& units = weights_.units();
-  const auto units64 = [&](int slot) { return words[2 * slot] | (static_cast<std::uint64_t>(words[2 * slot + 1]) << 32); };
+  const auto units64 = [&](int slot) {
+    return words[2 * slot] | (static_cast<std::uint64_t>(words[2 * slot + 1]) << 32);
+  };
 
   WarpDiagnostics d;
   d.adaptive = integrator == Integrator::adaptive;

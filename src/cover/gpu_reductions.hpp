@@ -34,7 +34,7 @@ struct TexelWeightUnits {
   int size = 0;
   int scale_bits = 0;
   std::vector<std::uint32_t> octant;
-  double largest_fraction = 0.0;  // the largest texel's share of the sphere (exact, in double)
+  double largest_fraction = 0.0;               // the largest texel's share of the sphere (exact, in double)
   double fraction(std::uint64_t units) const;  // units as a fraction of the sphere
   // Largest error of a sum over the whole cube map against the exact solid angles: each
   // entry is rounded to the nearest unit, half a unit per texel.

@@ -38,8 +38,8 @@ const std::vector<CurlMode>& all_curl_modes() {
 }
 
 const std::vector<Integrator>& all_integrators() {
-  static const std::vector<Integrator> all{Integrator::euler, Integrator::heun, Integrator::rk4,
-                                           Integrator::geodesic, Integrator::adaptive};
+  static const std::vector<Integrator> all{Integrator::euler, Integrator::heun, Integrator::rk4, Integrator::geodesic,
+                                           Integrator::adaptive};
   return all;
 }
 

@@ -20,8 +20,7 @@ std::vector<double> monotone_slopes(const std::vector<double>& x, const std::vec
   for (size_t i = 0; i + 1 < n; ++i) secant[i] = (y[i + 1] - y[i]) / (x[i + 1] - x[i]);
   m[0] = secant[0];
   m[n - 1] = secant[n - 2];
-  for (size_t i = 1; i + 1 < n; ++i)
-    m[i] = secant[i - 1] * secant[i] <= 0.0 ? 0.0 : 0.5 * (secant[i - 1] + secant[i]);
+  for (size_t i = 1; i + 1 < n; ++i) m[i] = secant[i - 1] * secant[i] <= 0.0 ? 0.0 : 0.5 * (secant[i - 1] + secant[i]);
   for (size_t i = 0; i + 1 < n; ++i) {
     if (secant[i] == 0.0) {
       m[i] = m[i + 1] = 0.0;
@@ -109,7 +108,7 @@ double seasonal_shift_deg(double latitude_deg, int month) {
 
 double storm_track_shift(int month) {
   if (month == 0) return 0.0;  // exactly the annual mean's envelope
-  const double track = 50.0;    // curl_flow.glsl's storm_track_envelope
+  const double track = 50.0;   // curl_flow.glsl's storm_track_envelope
   return std::sin((track + seasonal_shift_deg(track, month)) * degree) - std::sin(track * degree);
 }
 

@@ -13,9 +13,9 @@ constexpr int profile_bands = 90;
 struct LatitudeProfile {
   enum class Kind { flat, earth, table };
   Kind kind = Kind::earth;
-  std::string name = "earth";           // "earth", "flat", or the CSV file as given
-  std::vector<double> latitude_deg;     // knots, strictly increasing, within [-90, 90]
-  std::vector<double> fraction;         // target fraction at each knot, in [0, 1]
+  std::string name = "earth";        // "earth", "flat", or the CSV file as given
+  std::vector<double> latitude_deg;  // knots, strictly increasing, within [-90, 90]
+  std::vector<double> fraction;      // target fraction at each knot, in [0, 1]
 };
 
 // Earth's annual-mean zonal cloud fraction (knots from the climatology in docs/climate.md,

@@ -5,9 +5,7 @@
 namespace nephele::cover {
 namespace {
 
-double area_antiderivative(double x, double y) {
-  return std::atan2(x * y, std::sqrt(1.0 + x * x + y * y));
-}
+double area_antiderivative(double x, double y) { return std::atan2(x * y, std::sqrt(1.0 + x * x + y * y)); }
 
 }  // namespace
 

@@ -44,8 +44,10 @@ FlowRates flow_rates(const std::vector<float>& curl, int size) {
         const dvec3 n = direction(size, face, i, j);
         const dvec3 e1 = direction(size, face, s.i1, j) - direction(size, face, s.i0, j);
         const dvec3 e2 = direction(size, face, i, s.j1) - direction(size, face, i, s.j0);
-        const dvec3 d1 = texel_vector(curl, index(size, face, s.i1, j)) - texel_vector(curl, index(size, face, s.i0, j));
-        const dvec3 d2 = texel_vector(curl, index(size, face, i, s.j1)) - texel_vector(curl, index(size, face, i, s.j0));
+        const dvec3 d1 =
+            texel_vector(curl, index(size, face, s.i1, j)) - texel_vector(curl, index(size, face, s.i0, j));
+        const dvec3 d2 =
+            texel_vector(curl, index(size, face, i, s.j1)) - texel_vector(curl, index(size, face, i, s.j0));
         // Everything in an orthonormal basis of the tangent plane at n: G E = D, G = D E^-1.
         const dvec3 t1 = glm::normalize(e1 - glm::dot(e1, n) * n);
         const dvec3 t2 = glm::cross(n, t1);
@@ -95,10 +97,10 @@ FoldingReport folding_report(const std::vector<float>& warp, int size) {
                                                 direction(size, face, i, s.j1) - direction(size, face, i, s.j0)),
                                      n);
         const dvec3 w = glm::normalize(texel_vector(warp, index(size, face, i, j)));
-        const double warped_area =
-            glm::dot(glm::cross(texel_vector(warp, index(size, face, s.i1, j)) - texel_vector(warp, index(size, face, s.i0, j)),
-                                texel_vector(warp, index(size, face, i, s.j1)) - texel_vector(warp, index(size, face, i, s.j0))),
-                     w);
+        const double warped_area = glm::dot(
+            glm::cross(texel_vector(warp, index(size, face, s.i1, j)) - texel_vector(warp, index(size, face, s.i0, j)),
+                       texel_vector(warp, index(size, face, i, s.j1)) - texel_vector(warp, index(size, face, i, s.j0))),
+            w);
         const double jacobian = warped_area / area;
         const double weight = omega[static_cast<size_t>(j) * size + i];
         if (!(jacobian > 0.0)) folded += weight;

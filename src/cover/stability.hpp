@@ -38,7 +38,7 @@ struct FoldingReport {
   double folded_fraction = 0.0;  // solid-angle fraction where J <= 0
   double jacobian_min = 1.0;
   double jacobian_max = 1.0;
-  double area_error_rms = 0.0;   // solid-angle weighted rms of J - 1
+  double area_error_rms = 0.0;  // solid-angle weighted rms of J - 1
 };
 FoldingReport folding_report(const std::vector<float>& warp_rgba, int size);
 

@@ -17,13 +17,15 @@ std::vector<float> box_filter(const std::vector<float>& values, int columns, int
   for (int j = 0; j < rows; ++j)
     for (int i = 0; i < columns; ++i) {
       double sum = 0;
-      for (int d = -radius; d <= radius; ++d) sum += values[static_cast<size_t>(j) * columns + (i + d + columns) % columns];
+      for (int d = -radius; d <= radius; ++d)
+        sum += values[static_cast<size_t>(j) * columns + (i + d + columns) % columns];
       along[static_cast<size_t>(j) * columns + i] = static_cast<float>(sum / width);
     }
   for (int j = 0; j < rows; ++j)
     for (int i = 0; i < columns; ++i) {
       double sum = 0;
-      for (int d = -radius; d <= radius; ++d) sum += along[static_cast<size_t>(std::clamp(j + d, 0, rows - 1)) * columns + i];
+      for (int d = -radius; d <= radius; ++d)
+        sum += along[static_cast<size_t>(std::clamp(j + d, 0, rows - 1)) * columns + i];
       out[static_cast<size_t>(j) * columns + i] = static_cast<float>(sum / width);
     }
   return out;
@@ -75,7 +77,8 @@ std::vector<float> surface_bias(const SurfaceMask& mask) {
         east = std::max(east, row[(i + d) % columns] * (1.0 - double(d) / reach));
         west += (1.0 - row[(i - d + columns) % columns]) / reach;
       }
-      bias[static_cast<size_t>(j) * columns + i] = static_cast<float>((1.0 - land) * deck * east * west - land * desert);
+      bias[static_cast<size_t>(j) * columns + i] =
+          static_cast<float>((1.0 - land) * deck * east * west - land * desert);
     }
   }
   // Three passes of a 9 x 9 box: close to a Gaussian of 4.5 cells (2.2 degrees), so that the

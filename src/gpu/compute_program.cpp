@@ -29,8 +29,7 @@ std::unordered_set<std::string> identifiers_of(const std::string& text) {
 
 }  // namespace
 
-ComputeProgram::ComputeProgram(const std::string& path,
-                               const std::vector<std::pair<std::string, std::string>>& defines)
+ComputeProgram::ComputeProgram(const std::string& path, const std::vector<std::pair<std::string, std::string>>& defines)
     : ComputeProgram(FromExpanded{}, path, expand_shader(path, defines)) {}
 
 ComputeProgram ComputeProgram::from_text(const std::string& path, const std::string& text) {
@@ -123,8 +122,7 @@ void ComputeProgram::set(const std::string& name, glm::ivec3 value) const {
 void ComputeProgram::dispatch_covering(int width, int height, int depth) const {
   use();
   auto groups = [](int n, int local) { return static_cast<GLuint>((n + local - 1) / local); };
-  glDispatchCompute(groups(width, local_size_[0]), groups(height, local_size_[1]),
-                    groups(depth, local_size_[2]));
+  glDispatchCompute(groups(width, local_size_[0]), groups(height, local_size_[1]), groups(depth, local_size_[2]));
 }
 
 }  // namespace nephele::gpu

@@ -7,7 +7,6 @@
 #include <cstdlib>
 #include <cstring>
 
-
 namespace nephele::gpu {
 namespace {
 
@@ -45,8 +44,7 @@ std::string gl_string(GLenum name) {
 
 }  // namespace
 
-bool EglContext::try_display(void* display_ptr, const std::string& platform,
-                             std::vector<std::string>& attempts) {
+bool EglContext::try_display(void* display_ptr, const std::string& platform, std::vector<std::string>& attempts) {
   auto display = static_cast<EGLDisplay>(display_ptr);
   if (display == EGL_NO_DISPLAY) {
     attempts.push_back(platform + ": no display (" + egl_error_name(eglGetError()) + ")");
@@ -71,13 +69,12 @@ bool EglContext::try_display(void* display_ptr, const std::string& platform,
     eglTerminate(display);
     return false;
   }
-  const EGLint attributes[] = {EGL_CONTEXT_MAJOR_VERSION, 4, EGL_CONTEXT_MINOR_VERSION, 5,
-                               EGL_CONTEXT_OPENGL_PROFILE_MASK,
-                               EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
+  const EGLint attributes[] = {
+      EGL_CONTEXT_MAJOR_VERSION,           4,       EGL_CONTEXT_MINOR_VERSION, 5, EGL_CONTEXT_OPENGL_PROFILE_MASK,
+      EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
   EGLContext context = eglCreateContext(display, EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT, attributes);
   if (context == EGL_NO_CONTEXT) {
-    attempts.push_back(platform + ": no OpenGL 4.5 core context (" +
-                       egl_error_name(eglGetError()) + ")");
+    attempts.push_back(platform + ": no OpenGL 4.5 core context (" + egl_error_name(eglGetError()) + ")");
     eglTerminate(display);
     return false;
   }
@@ -97,8 +94,7 @@ EglContext::EglContext() {
   const char* only = std::getenv("NEPHELE_EGL_PLATFORM");
   const std::string restrict_to = only ? only : "";
   if (!restrict_to.empty() && restrict_to != "device" && restrict_to != "surfaceless")
-    throw ContextError("NEPHELE_EGL_PLATFORM is '" + restrict_to +
-                       "'; allowed values: device, surfaceless");
+    throw ContextError("NEPHELE_EGL_PLATFORM is '" + restrict_to + "'; allowed values: device, surfaceless");
   std::vector<std::string> attempts;
   const char* client_extensions = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
 
@@ -113,8 +109,7 @@ EglContext::EglContext() {
         const char* device_extensions = eglQueryDeviceStringEXT(devices[i], EGL_EXTENSIONS);
         // Software devices are better reached through the surfaceless platform below.
         if (has_extension(device_extensions, "EGL_MESA_device_software")) {
-          attempts.push_back("device " + std::to_string(i) +
-                             ": a software renderer, left to the surfaceless platform");
+          attempts.push_back("device " + std::to_string(i) + ": a software renderer, left to the surfaceless platform");
           continue;
         }
         EGLDisplay display = eglGetPlatformDisplayEXT(EGL_PLATFORM_DEVICE_EXT, devices[i], nullptr);
@@ -131,8 +126,7 @@ EglContext::EglContext() {
   // 2. Mesa's surfaceless platform: llvmpipe on machines without a GPU.
   if (restrict_to.empty() || restrict_to == "surfaceless") {
     if (has_extension(client_extensions, "EGL_MESA_platform_surfaceless")) {
-      EGLDisplay display =
-          eglGetPlatformDisplayEXT(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
+      EGLDisplay display = eglGetPlatformDisplayEXT(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
       if (try_display(display, "surfaceless", attempts)) return;
     } else {
       attempts.push_back("surfaceless: EGL_MESA_platform_surfaceless not offered (install libegl-mesa0)");

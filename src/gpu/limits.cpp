@@ -15,8 +15,10 @@ int largest_fitting(int upper, const std::function<bool(int)>& fits) {
   int lo = 0, hi = upper;
   while (lo < hi) {
     const int mid = lo + (hi - lo + 1) / 2;
-    if (fits(mid)) lo = mid;
-    else hi = mid - 1;
+    if (fits(mid))
+      lo = mid;
+    else
+      hi = mid - 1;
   }
   return lo;
 }

@@ -4,25 +4,32 @@
 
 namespace nephele::gpu {
 
-std::string probe_source(const std::string& in_type, const std::string& out_type,
-                         const std::string& includes, const std::string& helpers,
-                         const std::string& expression) {
+std::string probe_source(const std::string& in_type, const std::string& out_type, const std::string& includes,
+                         const std::string& helpers, const std::string& expression) {
   return "#version 450\n"
          "layout(local_size_x = 64) in;\n"
-         "layout(std430, binding = 0) readonly buffer Inputs { " + in_type + " inputs[]; };\n"
-         "layout(std430, binding = 1) writeonly buffer Outputs { " + out_type + " outputs[]; };\n"
+         "layout(std430, binding = 0) readonly buffer Inputs { " +
+         in_type +
+         " inputs[]; };\n"
+         "layout(std430, binding = 1) writeonly buffer Outputs { " +
+         out_type +
+         " outputs[]; };\n"
          "uniform uint u_count;\n" +
          includes + "\n" + helpers + "\n" +
          "void main() {\n"
          "  uint k = gl_GlobalInvocationID.x;\n"
          "  if (k >= u_count) return;\n"
-         "  " + in_type + " input_value = inputs[k];\n"
-         "  outputs[k] = " + out_type + "(" + expression + ");\n"
+         "  " +
+         in_type +
+         " input_value = inputs[k];\n"
+         "  outputs[k] = " +
+         out_type + "(" + expression +
+         ");\n"
          "}\n";
 }
 
-void run_probe(const std::string& source, const void* inputs, size_t input_bytes, void* outputs,
-               size_t output_bytes, size_t count, const std::vector<glm::vec4>& data) {
+void run_probe(const std::string& source, const void* inputs, size_t input_bytes, void* outputs, size_t output_bytes,
+               size_t count, const std::vector<glm::vec4>& data) {
   auto program = ComputeProgram::from_text("tests/probe.comp", source);
   GLuint buffers[2];
   glCreateBuffers(2, buffers);

@@ -11,11 +11,21 @@
 
 namespace nephele::gpu {
 
-template <class T> struct GlslTypeName;
-template <> struct GlslTypeName<glm::vec4> { static constexpr const char* name = "vec4"; };
-template <> struct GlslTypeName<glm::uvec4> { static constexpr const char* name = "uvec4"; };
+template <class T>
+struct GlslTypeName;
+template <>
+struct GlslTypeName<glm::vec4> {
+  static constexpr const char* name = "vec4";
+};
+template <>
+struct GlslTypeName<glm::uvec4> {
+  static constexpr const char* name = "uvec4";
+};
 // Column-major 4x4 floats: the same 64 bytes in std430 and in glm (inputs of up to 16 numbers).
-template <> struct GlslTypeName<glm::mat4> { static constexpr const char* name = "mat4"; };
+template <>
+struct GlslTypeName<glm::mat4> {
+  static constexpr const char* name = "mat4";
+};
 
 // Source of a probe shader: `includes` (lines such as #include "../lib/hash.glsl"), optional
 // `helpers` (GLSL declarations), and `expression`, evaluated per input with `input_value`
@@ -32,9 +42,8 @@ template <class Out, class In>
 std::vector<Out> probe(const std::string& includes, const std::string& expression, const std::vector<In>& inputs,
                        const std::string& helpers = "", const std::vector<glm::vec4>& data = {}) {
   std::vector<Out> outputs(inputs.size());
-  run_probe(probe_source(GlslTypeName<In>::name, GlslTypeName<Out>::name, includes, helpers, expression),
-            inputs.data(), inputs.size() * sizeof(In), outputs.data(), outputs.size() * sizeof(Out), inputs.size(),
-            data);
+  run_probe(probe_source(GlslTypeName<In>::name, GlslTypeName<Out>::name, includes, helpers, expression), inputs.data(),
+            inputs.size() * sizeof(In), outputs.data(), outputs.size() * sizeof(Out), inputs.size(), data);
   return outputs;
 }
 

@@ -71,8 +71,7 @@ struct Expander {
       ++number;
       std::smatch match;
       if (std::regex_match(line, match, include_pattern)) {
-        expand(normalise_path(directory_of(path) + match[1].str()),
-               path + ":" + std::to_string(number), nullptr);
+        expand(normalise_path(directory_of(path) + match[1].str()), path + ":" + std::to_string(number), nullptr);
         out.text += "#line " + std::to_string(number + 1) + " " + std::to_string(index) + "\n";
         continue;
       }
@@ -96,8 +95,7 @@ struct Expander {
 
 }  // namespace
 
-ExpandedShader expand_shader(const std::string& path,
-                             const std::vector<std::pair<std::string, std::string>>& defines) {
+ExpandedShader expand_shader(const std::string& path, const std::vector<std::pair<std::string, std::string>>& defines) {
   Expander expander{embedded_shader_sources(), nullptr, {}, {}, {}};
   expander.expand(normalise_path(path), "", &defines);
   return expander.out;

@@ -10,8 +10,8 @@ namespace nephele::gpu {
 const std::map<std::string, std::string>& embedded_shader_sources();
 
 struct ExpandedShader {
-  std::string text;                 // one GLSL source string, #line directives inserted
-  std::vector<std::string> files;   // #line source-string number -> file path
+  std::string text;                // one GLSL source string, #line directives inserted
+  std::vector<std::string> files;  // #line source-string number -> file path
 };
 
 // Expands `#include "relative/path"` recursively (each file at most once, like #pragma once),

@@ -41,8 +41,8 @@ Texture Texture::plane(int width, int height, GLenum internal_format) {
   glCreateTextures(GL_TEXTURE_2D, 1, &t.id_);
   glTextureStorage2D(t.id_, 1, internal_format, width, height);
   if (glGetError() != GL_NO_ERROR)
-    throw std::runtime_error("could not allocate a " + std::to_string(width) + "x" +
-                             std::to_string(height) + " texture");
+    throw std::runtime_error("could not allocate a " + std::to_string(width) + "x" + std::to_string(height) +
+                             " texture");
   return t;
 }
 
@@ -95,8 +95,8 @@ void Texture::bind_image(GLuint unit, GLenum access) const {
 
 std::vector<float> Texture::read() const {
   std::vector<float> texels(static_cast<size_t>(width_) * height_ * layers_ * channels());
-  glGetTextureImage(id_, 0, pixel_format(channels()), GL_FLOAT,
-                    static_cast<GLsizei>(texels.size() * sizeof(float)), texels.data());
+  glGetTextureImage(id_, 0, pixel_format(channels()), GL_FLOAT, static_cast<GLsizei>(texels.size() * sizeof(float)),
+                    texels.data());
   return texels;
 }
 
@@ -104,16 +104,14 @@ void Texture::write(const std::vector<float>& texels) const {
   if (texels.size() != static_cast<size_t>(width_) * height_ * layers_ * channels())
     throw std::logic_error("Texture::write: wrong number of texels");
   if (target_ == GL_TEXTURE_2D)
-    glTextureSubImage2D(id_, 0, 0, 0, width_, height_, pixel_format(channels()), GL_FLOAT,
-                        texels.data());
+    glTextureSubImage2D(id_, 0, 0, 0, width_, height_, pixel_format(channels()), GL_FLOAT, texels.data());
   else
-    glTextureSubImage3D(id_, 0, 0, 0, 0, width_, height_, layers_, pixel_format(channels()),
-                        GL_FLOAT, texels.data());
+    glTextureSubImage3D(id_, 0, 0, 0, 0, width_, height_, layers_, pixel_format(channels()), GL_FLOAT, texels.data());
 }
 
 void image_barrier() {
-  glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT |
-                  GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
+  glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT |
+                  GL_SHADER_STORAGE_BARRIER_BIT);
 }
 
 }  // namespace nephele::gpu

@@ -109,9 +109,8 @@ std::mutex install_mutex;
 // The signals whose default action ends the process (signal(7)); SIGKILL and SIGSTOP cannot be
 // caught.
 std::vector<int> ending_signals() {
-  std::vector<int> list = {SIGHUP,  SIGINT,  SIGQUIT, SIGILL,  SIGTRAP,   SIGABRT, SIGBUS, SIGFPE,
-                           SIGUSR1, SIGSEGV, SIGUSR2, SIGPIPE, SIGALRM,   SIGTERM, SIGXCPU, SIGXFSZ,
-                           SIGVTALRM, SIGPROF, SIGIO, SIGSYS};
+  std::vector<int> list = {SIGHUP,  SIGINT,  SIGQUIT, SIGILL,  SIGTRAP, SIGABRT, SIGBUS,    SIGFPE,  SIGUSR1, SIGSEGV,
+                           SIGUSR2, SIGPIPE, SIGALRM, SIGTERM, SIGXCPU, SIGXFSZ, SIGVTALRM, SIGPROF, SIGIO,   SIGSYS};
 #ifdef SIGSTKFLT
   list.push_back(SIGSTKFLT);
 #endif
@@ -176,8 +175,8 @@ int claim_slot(const std::string& pattern) {
     if (open_sets++ == 0)
       for (const int s : ending_signals()) {
         struct sigaction current {};
-        handler_installed[s] = ::sigaction(s, nullptr, &current) == 0 && !(current.sa_flags & SA_SIGINFO) &&
-                               current.sa_handler == SIG_DFL;
+        handler_installed[s] =
+            ::sigaction(s, nullptr, &current) == 0 && !(current.sa_flags & SA_SIGINFO) && current.sa_handler == SIG_DFL;
         if (!handler_installed[s]) continue;
         struct sigaction action {};
         action.sa_handler = on_signal;
@@ -298,10 +297,12 @@ mode_t current_umask() {
 bool is_mount_point(const fs::path& path, const fs::path& parent) {
 #ifdef STATX_ATTR_MOUNT_ROOT
   struct statx sx {};
-  if (::statx(AT_FDCWD, path.c_str(), 0, STATX_BASIC_STATS, &sx) == 0 && (sx.stx_attributes_mask & STATX_ATTR_MOUNT_ROOT))
+  if (::statx(AT_FDCWD, path.c_str(), 0, STATX_BASIC_STATS, &sx) == 0 &&
+      (sx.stx_attributes_mask & STATX_ATTR_MOUNT_ROOT))
     return (sx.stx_attributes & STATX_ATTR_MOUNT_ROOT) != 0;
 #endif
-  struct stat st {}, parent_st {};
+  struct stat st {
+  }, parent_st{};
   return ::stat(path.c_str(), &st) == 0 && ::stat(parent.c_str(), &parent_st) == 0 && st.st_dev != parent_st.st_dev;
 }
 
@@ -346,7 +347,8 @@ void carry_over(int from, int to, const fs::path& shown) {
   ::closedir(listing);
   for (const std::string& name : names) {
     const std::string child = (shown / name).string();
-    struct stat old_entry {}, new_entry {};
+    struct stat old_entry {
+    }, new_entry{};
     if (::fstatat(from, name.c_str(), &old_entry, AT_SYMLINK_NOFOLLOW) != 0) continue;  // gone meanwhile
     const bool in_new_set = ::fstatat(to, name.c_str(), &new_entry, AT_SYMLINK_NOFOLLOW) == 0;
     if (S_ISDIR(old_entry.st_mode)) {
@@ -389,8 +391,10 @@ void move_into_place(const fs::path& temporary, const fs::path& directory, const
     fs::create_directories(target.parent_path().empty() ? fs::path(".") : target.parent_path(), ignored);
     if (::rename(source.c_str(), target.c_str()) != 0)
       throw os_error("could not rename " + source.string() + " to " + target.string() +
-                         "; the rest of the set stays in " + temporary.string() + " and is put in place by the "
-                         "next run into " + directory.string(),
+                         "; the rest of the set stays in " + temporary.string() +
+                         " and is put in place by the "
+                         "next run into " +
+                         directory.string(),
                      errno);
     touched.insert(target.parent_path().empty() ? fs::path(".") : target.parent_path());
   }
@@ -456,8 +460,7 @@ void clean_stale(const fs::path& place) {
       } catch (const std::exception& e) {
         // Kept, since it holds the only copy of those files; this run goes on, so that one
         // obstacle (such as a directory made at a file's name) does not stop every later run.
-        std::cerr << "nephele: warning: could not complete the output set of an interrupted run: " << e.what()
-                  << "\n";
+        std::cerr << "nephele: warning: could not complete the output set of an interrupted run: " << e.what() << "\n";
         continue;
       }
       std::cerr << "nephele: completed the output set of an interrupted run from " << path.string() << "\n";
@@ -470,10 +473,10 @@ void clean_stale(const fs::path& place) {
 // mkdtemp of PLACE/.nephele-LABEL-PID-XXXXXX; with `slot`, registered for the signal handler.
 fs::path make_temporary(const fs::path& place, const std::string& label, int* error, int* slot = nullptr) {
   const std::string short_label = label.substr(0, 160);  // NAME_MAX is 255
-  std::string pattern = fs::absolute(place / (OutputSet::temporary_prefix + short_label + "-" +
-                                              std::to_string(::getpid()) + "-XXXXXX"))
-                            .lexically_normal()
-                            .string();
+  std::string pattern =
+      fs::absolute(place / (OutputSet::temporary_prefix + short_label + "-" + std::to_string(::getpid()) + "-XXXXXX"))
+          .lexically_normal()
+          .string();
   const int claimed = slot ? claim_slot(pattern) : -1;
   char* buffer = claimed >= 0 ? slots[claimed].path : pattern.data();
   if (!::mkdtemp(buffer)) {
@@ -522,7 +525,8 @@ OutputSet::OutputSet(fs::path directory, Scope scope) : scope_(scope) {
   if (scope_ == Scope::files) {
     std::error_code create_error;
     fs::create_directories(directory_, create_error);
-    if (create_error) throw std::runtime_error("could not create " + directory_.string() + ": " + create_error.message());
+    if (create_error)
+      throw std::runtime_error("could not create " + directory_.string() + ": " + create_error.message());
     target = directory_;
     clean_stale(directory_);
     temporary_ = make_temporary(directory_, "files", &error, &slot_);
@@ -663,7 +667,8 @@ void OutputSet::commit_directory_as_files() {
   if (files.empty()) throw os_error("could not create a temporary directory in " + directory_.string(), error);
   try {
     for (const std::string& name : names_)
-      copy_file(temporary_ / name, files / name, final_path(name).string() + " (temporary " + (files / name).string() + ")");
+      copy_file(temporary_ / name, files / name,
+                final_path(name).string() + " (temporary " + (files / name).string() + ")");
   } catch (...) {
     remove_tree_at(AT_FDCWD, files.c_str());
     throw;

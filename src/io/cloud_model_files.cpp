@@ -56,7 +56,8 @@ class Reader {
         field = static_cast<std::decay_t<decltype(field)>>(number(p, w, name));
         known = true;
       });
-      if (!known) k_.fail(name, "unknown key (allowed: octaves, frequency, amplitude, gain, lacunarity, fraction, seed)");
+      if (!known)
+        k_.fail(name, "unknown key (allowed: octaves, frequency, amplitude, gain, lacunarity, fraction, seed)");
     }
     return t;
   }
@@ -104,7 +105,8 @@ class Reader {
           known = true;
         });
         if (!known)
-          k_.fail(name, "unknown key (allowed for a " + kind + ": type, " + skeleton + ", radius, influence, weight, noise)");
+          k_.fail(name,
+                  "unknown key (allowed for a " + kind + ": type, " + skeleton + ", radius, influence, weight, noise)");
       }
     }
     if (polyline) {
@@ -154,16 +156,22 @@ CloudModel parse_cloud_model(const std::string& text, const std::string& source)
   if (const json::Value* noise = root.find("noise")) m.noise = r.turbulence(*noise, "noise", m.noise);
   const json::Value* primitives = nullptr;
   for (const auto& [key, v] : root.as_object()) {
-    if (key == "description") m.description = k.string(v, key);
+    if (key == "description")
+      m.description = k.string(v, key);
     else if (key == "blend") {
       const std::string word = k.string(v, key);
       params::check_word(cm::blend, word, source + ": 'blend'");
       m.blend = parse_blend(word, source + ": 'blend'");
-    } else if (key == "scale") m.scale = float(r.number(cm::scale, v, key));
-    else if (key == "extent") m.extent_m = r.number(cm::extent, v, key);
-    else if (key == "noise") continue;
-    else if (key == "primitives") primitives = &v;
-    else k.fail(key, "unknown key (allowed: description, blend, scale, extent, noise, primitives)");
+    } else if (key == "scale")
+      m.scale = float(r.number(cm::scale, v, key));
+    else if (key == "extent")
+      m.extent_m = r.number(cm::extent, v, key);
+    else if (key == "noise")
+      continue;
+    else if (key == "primitives")
+      primitives = &v;
+    else
+      k.fail(key, "unknown key (allowed: description, blend, scale, extent, noise, primitives)");
   }
   if (!primitives) k.fail("primitives", "missing (an array of primitives)");
   if (!primitives->is_array()) k.fail("primitives", "must be an array of primitives");
@@ -209,7 +217,8 @@ std::string write_cloud_model(const CloudModel& m) {
     v.set("type", p.segment ? "segment" : "point");
     v.set(p.segment ? "from" : "position", point_json(p.from));
     if (p.segment) v.set("to", point_json(p.to));
-    visit_primitive(p, [&](const params::Parameter& parameter, auto value) { v.set(std::string(parameter.key), value); });
+    visit_primitive(p,
+                    [&](const params::Parameter& parameter, auto value) { v.set(std::string(parameter.key), value); });
     v.set("noise", noise_json(p.noise));
     list.push_back(std::move(v));
   }

@@ -60,8 +60,10 @@ void parse_cover_files(const std::string& list, CoverFileOptions& options) {
   while (true) {
     const size_t comma = list.find(',', start);
     const std::string item = list.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
-    bool* flag = item == "faces" ? &options.faces : item == "equirect" ? &options.equirect
-                 : item == "png" ? &options.preview : nullptr;
+    bool* flag = item == "faces"      ? &options.faces
+                 : item == "equirect" ? &options.equirect
+                 : item == "png"      ? &options.preview
+                                      : nullptr;
     if (!flag || *flag) throw core::InputError(params::run::cover_files.option(), list, allowed);
     *flag = true;
     if (comma == std::string::npos) break;
@@ -90,8 +92,7 @@ json::Value cover_sidecar(const cover::GlobalCover& cover, const gpu::ContextInf
     if (!adaptive && (&parameter == &params::cover::tolerance || &parameter == &params::cover::max_substeps)) return;
     if (p.curl_mode != cover::CurlMode::spline && &parameter == &params::cover::curl_size) return;
     set_path(parameters, std::string(parameter.sidecar_path()), json_number(value));
-    if (&parameter == &params::cover::coverage)
-      parameters.set(std::string(params::cover::profile.key), p.profile.name);
+    if (&parameter == &params::cover::coverage) parameters.set(std::string(params::cover::profile.key), p.profile.name);
     if (&parameter == &params::cover::surface_weight)
       parameters.set(std::string(params::cover::surface.key), p.surface ? p.surface->source : "none");
     if (&parameter == &params::cover::step) {
@@ -210,9 +211,8 @@ CoverExport write_cover_files(OutputSet& outputs, const cover::GlobalCover& cove
   };
   std::vector<Job> jobs;
   auto encode = [&](std::string name, std::shared_ptr<const ImageData> image, ImageEncoding encoding) {
-    jobs.push_back({name, std::async(std::launch::async, [name, image, encoding] {
-                      return encode_image(*image, encoding, name);
-                    })});
+    jobs.push_back({name, std::async(std::launch::async,
+                                     [name, image, encoding] { return encode_image(*image, encoding, name); })});
   };
   const auto encode_start = clock::now();
   if (options.faces) {
@@ -221,15 +221,16 @@ CoverExport write_cover_files(OutputSet& outputs, const cover::GlobalCover& cove
     const size_t per_face = static_cast<size_t>(size) * size;
     for (int face = 0; face < 6; ++face) {
       auto image = std::make_shared<ImageData>(ImageData{
-          size, size, 1,
-          std::vector<float>(texels.begin() + face * per_face, texels.begin() + (face + 1) * per_face)});
+          size, size, 1, std::vector<float>(texels.begin() + face * per_face, texels.begin() + (face + 1) * per_face)});
       encode(std::string("cover_") + face_suffixes[face] + ".exr", image, exr);
     }
   }
   if (options.equirect || options.preview) {
     // Resampled once on the GPU while the faces are encoded; both files come from this map.
     auto equirect = std::make_shared<ImageData>(ImageData{4 * size, 2 * size, 1, {}});
-    timed("equirect", [&] { equirect->pixels = cover::equirect_from_cube(cover.cover_field(), equirect->width, equirect->height); });
+    timed("equirect", [&] {
+      equirect->pixels = cover::equirect_from_cube(cover.cover_field(), equirect->width, equirect->height);
+    });
     if (options.equirect) encode("cover_equirect.exr", equirect, exr);
     if (options.preview) {
       // zlib level 1: the 4096 x 2048 preview encodes in about half the time of level 6 (the

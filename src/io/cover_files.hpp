@@ -34,8 +34,7 @@ std::vector<std::string> cover_file_names(const CoverFileOptions& options = {});
 
 // The sidecar's contents (parameters, conventions, result, timings).
 json::Value cover_sidecar(const cover::GlobalCover& cover, const gpu::ContextInfo& context,
-                          const std::vector<cover::PassTiming>& export_timings,
-                          const CoverFileOptions& options = {});
+                          const std::vector<cover::PassTiming>& export_timings, const CoverFileOptions& options = {});
 
 // What write_cover_files measured: the time of each step, and the bytes of the files.
 struct CoverExport {

@@ -70,8 +70,9 @@ std::vector<float> face_layout(const std::vector<float>& faces, int n, int colum
   std::vector<float> out(std::size_t(6) * n * n);
   for (int f = 0; f < 6; ++f)
     for (int j = 0; j < n; ++j)
-      std::copy_n(faces.begin() + std::ptrdiff_t((std::size_t(f) * n + j) * n), n,
-                  out.begin() + std::ptrdiff_t((std::size_t(f / columns) * n + j) * width + std::size_t(f % columns) * n));
+      std::copy_n(
+          faces.begin() + std::ptrdiff_t((std::size_t(f) * n + j) * n), n,
+          out.begin() + std::ptrdiff_t((std::size_t(f / columns) * n + j) * width + std::size_t(f % columns) * n));
   return out;
 }
 

@@ -19,7 +19,8 @@ constexpr int etopo5_rows = 2161, etopo5_columns = 4320;
 constexpr double etopo5_step_deg = 1.0 / 12.0;
 
 float big_endian_float(const unsigned char* b) {
-  const std::uint32_t bits = (std::uint32_t(b[0]) << 24) | (std::uint32_t(b[1]) << 16) | (std::uint32_t(b[2]) << 8) | b[3];
+  const std::uint32_t bits =
+      (std::uint32_t(b[0]) << 24) | (std::uint32_t(b[1]) << 16) | (std::uint32_t(b[2]) << 8) | b[3];
   float f;
   std::memcpy(&f, &bits, sizeof f);
   return f;
@@ -38,7 +39,8 @@ regional::ElevationRaster read_etopo5(const std::string& path, double south_deg,
     throw core::InputError(field, path, allowed, std::string("cannot be read: ") + e.what());
   }
   if (bytes != expected)
-    throw core::InputError(field, path, allowed, "has " + std::to_string(bytes) + " bytes, not " + std::to_string(expected));
+    throw core::InputError(field, path, allowed,
+                           "has " + std::to_string(bytes) + " bytes, not " + std::to_string(expected));
   std::ifstream in(path, std::ios::binary);
   std::string header(etopo5_header_bytes, '\0');
   if (!in.read(header.data(), header.size()) || header.compare(0, 4, std::string("CDF\x01", 4)) != 0 ||
@@ -105,13 +107,14 @@ std::shared_ptr<const regional::TerrainGrid> load_terrain(const std::string& set
   const double reach_deg = terrain_grid_extent_m * 1.5 / 111000.0;
   const regional::ElevationRaster raster = read_etopo5(path, latitude_deg - reach_deg, latitude_deg + reach_deg, field);
   auto grid = std::make_shared<const regional::TerrainGrid>(
-      regional::terrain_grid(latitude_deg, longitude_deg, height_m, render::osculating_earth_radius(latitude_deg), raster,
-                             regional::substitute_hills(), terrain_grid_size, terrain_grid_extent_m));
+      regional::terrain_grid(latitude_deg, longitude_deg, height_m, render::osculating_earth_radius(latitude_deg),
+                             raster, regional::substitute_hills(), terrain_grid_size, terrain_grid_extent_m));
   // The camera stands where the four middle texels meet; below their mean it looks out from
   // underground (ETOPO5 fills valleys: Bern's old town at 540 m lies under 700 m of it).
   const std::size_t n = grid->size, middle = n / 2;
   const double ground = (grid->altitudes[(middle - 1) * n + middle - 1] + grid->altitudes[(middle - 1) * n + middle] +
-                         grid->altitudes[middle * n + middle - 1] + grid->altitudes[middle * n + middle]) / 4;
+                         grid->altitudes[middle * n + middle - 1] + grid->altitudes[middle * n + middle]) /
+                        4;
   if (ground > height_m && warning)
     *warning = "the camera at " + std::to_string(int(std::lround(height_m))) + " m is below the terrain there (" +
                std::to_string(int(std::lround(ground))) + " m, " + raster.source +

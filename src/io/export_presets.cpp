@@ -29,7 +29,8 @@ std::string preset_words() {
 ImageData face_image(const CoverFaces& faces, int face) {
   const std::size_t n = std::size_t(faces.size) * std::size_t(faces.size);
   ImageData image{faces.size, faces.size, 1, {}};
-  image.pixels.assign(faces.texels.begin() + std::ptrdiff_t(face * n), faces.texels.begin() + std::ptrdiff_t((face + 1) * n));
+  image.pixels.assign(faces.texels.begin() + std::ptrdiff_t(face * n),
+                      faces.texels.begin() + std::ptrdiff_t((face + 1) * n));
   return image;
 }
 
@@ -63,7 +64,8 @@ std::string readme(const ExportPreset& preset, const CoverFaces& faces, const st
   std::ostringstream text;
   text << "nephele export, preset " << preset.name << ": " << preset.summary << "\n"
        << "Cover face size N = " << faces.size << ". Details and orientation: docs/export.md.\n\n"
-       << body << "\n" << coverage_note;
+       << body << "\n"
+       << coverage_note;
   return text.str();
 }
 
@@ -86,14 +88,15 @@ void write_equirect(OutputSet& out, std::vector<std::string>& names, const Expor
   }
   const std::string w = std::to_string(map.width), h = std::to_string(map.height);
   add_readme(out, names, preset, faces,
-                                 "Files (" + w + " x " + h + ", one grey channel, 2:1 plate carree):\n"
-                                 "  cover_equirect.exr     OpenEXR float32, channel Y\n"
-                                 "  cover_equirect_16.png  PNG 16-bit, value = round(65535 c)\n"
-                                 "  cover_equirect_8.png   PNG 8-bit, value = round(255 c), no gAMA/sRGB chunk\n"
-                                 "Orientation: north up, longitude -180 deg at the left edge, 0 at the centre;\n"
-                                 "column i at longitude -180 + 360 (i + 0.5)/W, row j at geodetic latitude\n"
-                                 "90 - 180 (j + 0.5)/H (WGS84). Use it wherever a lat-long / equirectangular\n"
-                                 "map is taken (NASA Blue Marble layout).\n");
+             "Files (" + w + " x " + h +
+                 ", one grey channel, 2:1 plate carree):\n"
+                 "  cover_equirect.exr     OpenEXR float32, channel Y\n"
+                 "  cover_equirect_16.png  PNG 16-bit, value = round(65535 c)\n"
+                 "  cover_equirect_8.png   PNG 8-bit, value = round(255 c), no gAMA/sRGB chunk\n"
+                 "Orientation: north up, longitude -180 deg at the left edge, 0 at the centre;\n"
+                 "column i at longitude -180 + 360 (i + 0.5)/W, row j at geodetic latitude\n"
+                 "90 - 180 (j + 0.5)/H (WGS84). Use it wherever a lat-long / equirectangular\n"
+                 "map is taken (NASA Blue Marble layout).\n");
 }
 
 void write_gl_faces(OutputSet& out, std::vector<std::string>& names, const ExportPreset& preset,
@@ -104,13 +107,13 @@ void write_gl_faces(OutputSet& out, std::vector<std::string>& names, const Expor
     names.push_back(name);
   }
   add_readme(out, names, preset, faces,
-                                 "Files: cover_px.exr, cover_nx.exr, cover_py.exr, cover_ny.exr, cover_pz.exr,\n"
-                                 "cover_nz.exr: N x N OpenEXR float32, channel Y, the cube faces +X, -X, +Y, -Y,\n"
-                                 "+Z (north), -Z (south) in the OpenGL convention (OpenGL 4.6 core, section 8.13,\n"
-                                 "table 8.19). Upload face i to GL_TEXTURE_CUBE_MAP_POSITIVE_X + i as stored, row 0\n"
-                                 "first, without flips. World axes: +X to 0 N 0 E, +Y to 0 N 90 E, +Z to the North\n"
-                                 "Pole; a renderer with Y up must rotate its direction into these axes (a rotation,\n"
-                                 "not an exchange of two axes, which would mirror the map).\n");
+             "Files: cover_px.exr, cover_nx.exr, cover_py.exr, cover_ny.exr, cover_pz.exr,\n"
+             "cover_nz.exr: N x N OpenEXR float32, channel Y, the cube faces +X, -X, +Y, -Y,\n"
+             "+Z (north), -Z (south) in the OpenGL convention (OpenGL 4.6 core, section 8.13,\n"
+             "table 8.19). Upload face i to GL_TEXTURE_CUBE_MAP_POSITIVE_X + i as stored, row 0\n"
+             "first, without flips. World axes: +X to 0 N 0 E, +Y to 0 N 90 E, +Z to the North\n"
+             "Pole; a renderer with Y up must rotate its direction into these axes (a rotation,\n"
+             "not an exchange of two axes, which would mirror the map).\n");
 }
 
 void write_ktx2(OutputSet& out, std::vector<std::string>& names, const ExportPreset& preset, const CoverFaces& faces,
@@ -122,15 +125,18 @@ void write_ktx2(OutputSet& out, std::vector<std::string>& names, const ExportPre
                              : sample == TextureSample::r16f ? "VK_FORMAT_R16_SFLOAT (76)"
                                                              : "VK_FORMAT_R32_SFLOAT (100)";
   add_readme(out, names, preset, faces,
-                                 "File: cover_cube.ktx2, a KTX 2.0 cube map (faceCount 6, one mip level, no\n"
-                                 "supercompression), " + format + ", faces in the order +X, -X, +Y, -Y, +Z, -Z\n"
-                                 "with the OpenGL/Vulkan face orientation, KTXorientation \"rd\". Load it with\n"
-                                 "libktx (ktxTexture2_CreateFromNamedFile, then ktxTexture_GLUpload or\n"
-                                 "ktxTexture_VkUpload) or any KTX2 loader as a cube texture; no flips are needed.\n"
-                                 "World axes as for gl-faces: +Z is the North Pole.\n");
+             "File: cover_cube.ktx2, a KTX 2.0 cube map (faceCount 6, one mip level, no\n"
+             "supercompression), " +
+                 format +
+                 ", faces in the order +X, -X, +Y, -Y, +Z, -Z\n"
+                 "with the OpenGL/Vulkan face orientation, KTXorientation \"rd\". Load it with\n"
+                 "libktx (ktxTexture2_CreateFromNamedFile, then ktxTexture_GLUpload or\n"
+                 "ktxTexture_VkUpload) or any KTX2 loader as a cube texture; no flips are needed.\n"
+                 "World axes as for gl-faces: +Z is the North Pole.\n");
 }
 
-void write_dds(OutputSet& out, std::vector<std::string>& names, const ExportPreset& preset, const CoverFaces& faces, const ExportOptions&) {
+void write_dds(OutputSet& out, std::vector<std::string>& names, const ExportPreset& preset, const CoverFaces& faces,
+               const ExportOptions&) {
   const std::pair<std::string, DdsVariant> files[] = {{"cover_cube_rgba8.dds", DdsVariant::rgba8},
                                                       {"cover_cube_r16f.dds", DdsVariant::dx10_r16f},
                                                       {"cover_cube_r32f.dds", DdsVariant::dx10_r32f}};
@@ -139,17 +145,17 @@ void write_dds(OutputSet& out, std::vector<std::string>& names, const ExportPres
     names.push_back(name);
   }
   add_readme(out, names, preset, faces,
-                   "Files (DDS cube maps, one mip level, faces +X, -X, +Y, -Y, +Z, -Z, rows top-down):\n"
-                   "  cover_cube_rgba8.dds  legacy header, uncompressed 32-bit RGBA, coverage in R, G, B\n"
-                   "                        and A: for loaders that read only legacy DDS (KSP's texture\n"
-                   "                        loader, Unity's DDS importer, OpenImageIO, GIMP)\n"
-                   "  cover_cube_r16f.dds   DX10 header, DXGI_FORMAT_R16_FLOAT (54)\n"
-                   "  cover_cube_r32f.dds   DX10 header, DXGI_FORMAT_R32_FLOAT (41): for Direct3D 10+\n"
-                   "                        engines and DirectXTex (texconv, texassemble); OpenImageIO\n"
-                   "                        2.4 does not read these\n"
-                   "Faces are addressed as in OpenGL (Direct3D's cube addressing is the same). In a\n"
-                   "left-handed engine (Unity, Unreal, KSP) the world must be reflected into nephele's\n"
-                   "right-handed axes (+Z north): an axis rename alone mirrors the map.\n");
+             "Files (DDS cube maps, one mip level, faces +X, -X, +Y, -Y, +Z, -Z, rows top-down):\n"
+             "  cover_cube_rgba8.dds  legacy header, uncompressed 32-bit RGBA, coverage in R, G, B\n"
+             "                        and A: for loaders that read only legacy DDS (KSP's texture\n"
+             "                        loader, Unity's DDS importer, OpenImageIO, GIMP)\n"
+             "  cover_cube_r16f.dds   DX10 header, DXGI_FORMAT_R16_FLOAT (54)\n"
+             "  cover_cube_r32f.dds   DX10 header, DXGI_FORMAT_R32_FLOAT (41): for Direct3D 10+\n"
+             "                        engines and DirectXTex (texconv, texassemble); OpenImageIO\n"
+             "                        2.4 does not read these\n"
+             "Faces are addressed as in OpenGL (Direct3D's cube addressing is the same). In a\n"
+             "left-handed engine (Unity, Unreal, KSP) the world must be reflected into nephele's\n"
+             "right-handed axes (+Z north): an axis rename alone mirrors the map.\n");
 }
 
 void write_celestia(OutputSet& out, std::vector<std::string>& names, const ExportPreset& preset,
@@ -167,20 +173,23 @@ void write_celestia(OutputSet& out, std::vector<std::string>& names, const Expor
   const std::string ssc = folder + options.name + ".ssc";
   out.write(ssc, "# nephele cloud cover for Celestia: copy extras/" + options.name +
                      " into Celestia's extras folder.\n"
-                     "Modify \"Earth\" \"Sol\"\n{\n\tAtmosphere\n\t{\n\t\tCloudMap \"" + options.name +
-                     ".png\"\n\t}\n}\n");
+                     "Modify \"Earth\" \"Sol\"\n{\n\tAtmosphere\n\t{\n\t\tCloudMap \"" +
+                     options.name + ".png\"\n\t}\n}\n");
   names.push_back(ssc);
   add_readme(out, names, preset, faces,
-                   "Files: " + texture + " (RGBA 8-bit PNG, " + std::to_string(map.width) + " x " +
-                       std::to_string(map.height) +
-                       ", white, coverage in alpha, 2:1 with the prime meridian at\n"
-                       "the centre and north up) and " + ssc + ".\n"
-                       "Install: copy the folder extras/" + options.name +
-                       " into Celestia's extras directory (or the add-on\n"
-                       "folder named by ExtrasDirectories in celestia.cfg) and restart Celestia. The .ssc\n"
-                       "modifies Earth's atmosphere so that its CloudMap is this texture; Celestia looks it\n"
-                       "up in textures/hires/ when the high-resolution texture setting is chosen (it falls\n"
-                       "back to the other resolutions' folders otherwise).\n");
+             "Files: " + texture + " (RGBA 8-bit PNG, " + std::to_string(map.width) + " x " +
+                 std::to_string(map.height) +
+                 ", white, coverage in alpha, 2:1 with the prime meridian at\n"
+                 "the centre and north up) and " +
+                 ssc +
+                 ".\n"
+                 "Install: copy the folder extras/" +
+                 options.name +
+                 " into Celestia's extras directory (or the add-on\n"
+                 "folder named by ExtrasDirectories in celestia.cfg) and restart Celestia. The .ssc\n"
+                 "modifies Earth's atmosphere so that its CloudMap is this texture; Celestia looks it\n"
+                 "up in textures/hires/ when the high-resolution texture setting is chosen (it falls\n"
+                 "back to the other resolutions' folders otherwise).\n");
 }
 
 // OpenEXR's cube environment layout (OpenEXR "envmap" attribute, ENVMAP_CUBE): an N x 6N
@@ -203,12 +212,12 @@ void write_exr_cube(OutputSet& out, std::vector<std::string>& names, const Expor
   out.write("cover_envcube.exr", encode_image(strip, encoding, "cover_envcube.exr"));
   names.push_back("cover_envcube.exr");
   add_readme(out, names, preset, faces,
-                   "File: cover_envcube.exr, an OpenEXR cube environment map (header envmap = cube):\n"
-                   "an N x 6N vertical strip of the faces +X, -X, +Y, -Y, +Z, -Z, each mirrored as\n"
-                   "OpenEXR's cube layout wants relative to the GL faces (X and Z faces left-right, Y\n"
-                   "faces top-bottom). For renderers that take OpenEXR environment cubes (RenderMan-\n"
-                   "style lookups, OpenEXR's envmap tools). OpenImageIO 2.4 reads the file but cannot\n"
-                   "sample it as a cube environment. Axes as for gl-faces: +Z is the North Pole.\n");
+             "File: cover_envcube.exr, an OpenEXR cube environment map (header envmap = cube):\n"
+             "an N x 6N vertical strip of the faces +X, -X, +Y, -Y, +Z, -Z, each mirrored as\n"
+             "OpenEXR's cube layout wants relative to the GL faces (X and Z faces left-right, Y\n"
+             "faces top-bottom). For renderers that take OpenEXR environment cubes (RenderMan-\n"
+             "style lookups, OpenEXR's envmap tools). OpenImageIO 2.4 reads the file but cannot\n"
+             "sample it as a cube environment. Axes as for gl-faces: +Z is the North Pole.\n");
 }
 
 // FlightGear Earthview: eight tiles of 90 x 90 degrees whose shipped models (Models/Astro/
@@ -235,16 +244,20 @@ void write_flightgear(OutputSet& out, std::vector<std::string>& names, const Exp
     }
   const std::string t = std::to_string(tile), b = std::to_string(border), c = std::to_string(content);
   add_readme(out, names, preset, faces,
-                   "Files: clouds_N1.png .. clouds_N4.png (latitude 90 N to 0) and clouds_S1.png ..\n"
-                   "clouds_S4.png (0 to 90 S); 1 to 4 are the longitudes 180 W-90 W, 90 W-0, 0-90 E,\n"
-                   "90 E-180 E. Each is " + t + " x " + t + " PNG grey + alpha, 8-bit: grey white, coverage in\n"
-                   "alpha (unassociated), as FlightGear's shipped cloud tiles. The 90 degrees fill the\n"
-                   "inner " + c + " x " + c + " pixels; the " + b + "-pixel border repeats the edge pixels, because the\n"
-                   "shipped models Models/Astro/clouds_*.ac map their UVs from 1/128 to 127/128 of a tile.\n"
-                   "Rows are geodetic latitudes, north up. Install: replace the files of the same names\n"
-                   "in $FG_ROOT/Models/Astro/Textures/ (keep a copy of the shipped ones) or put them in\n"
-                   "an aircraft's or a scenery overlay's Models/Astro/Textures/; Earthview shows them\n"
-                   "when started (Menu: View > Earthview, or --prop:/earthview/show-clouds=1).\n");
+             "Files: clouds_N1.png .. clouds_N4.png (latitude 90 N to 0) and clouds_S1.png ..\n"
+             "clouds_S4.png (0 to 90 S); 1 to 4 are the longitudes 180 W-90 W, 90 W-0, 0-90 E,\n"
+             "90 E-180 E. Each is " +
+                 t + " x " + t +
+                 " PNG grey + alpha, 8-bit: grey white, coverage in\n"
+                 "alpha (unassociated), as FlightGear's shipped cloud tiles. The 90 degrees fill the\n"
+                 "inner " +
+                 c + " x " + c + " pixels; the " + b +
+                 "-pixel border repeats the edge pixels, because the\n"
+                 "shipped models Models/Astro/clouds_*.ac map their UVs from 1/128 to 127/128 of a tile.\n"
+                 "Rows are geodetic latitudes, north up. Install: replace the files of the same names\n"
+                 "in $FG_ROOT/Models/Astro/Textures/ (keep a copy of the shipped ones) or put them in\n"
+                 "an aircraft's or a scenery overlay's Models/Astro/Textures/; Earthview shows them\n"
+                 "when started (Menu: View > Earthview, or --prop:/earthview/show-clouds=1).\n");
 }
 
 // KSP's Environmental Visual Enhancements, the fork LGhassen/EnvironmentalVisualEnhancements
@@ -273,9 +286,11 @@ void write_eve(OutputSet& out, std::vector<std::string>& names, const ExportPres
   names.push_back(equirect);
   const AxisMap eve_axes{{2, 0, 1}, {1, 1, 1}};  // nephele X = EVE z, Y = EVE x, Z = EVE y
   const char* const keys[6] = {"Xn", "Xp", "Yn", "Yp", "Zn", "Zp"};
-  std::string config = "// nephele cloud cover for EVE (LGhassen/EnvironmentalVisualEnhancements): the six\n"
-                       "// faces as one cube texture; name it as a layer's _MainTex.\n"
-                       "EVE_TEXTURE_CONFIG\n{\n\tname = " + options.name + "_cube\n\ttype = TEX_CUBE_6\n";
+  std::string config =
+      "// nephele cloud cover for EVE (LGhassen/EnvironmentalVisualEnhancements): the six\n"
+      "// faces as one cube texture; name it as a layer's _MainTex.\n"
+      "EVE_TEXTURE_CONFIG\n{\n\tname = " +
+      options.name + "_cube\n\ttype = TEX_CUBE_6\n";
   const int n = faces.size;
   for (int f = 0; f < 6; ++f) {
     const auto values = cover_by_direction(faces, n, n, [&](int i, int j) {
@@ -292,30 +307,39 @@ void write_eve(OutputSet& out, std::vector<std::string>& names, const ExportPres
   out.write(cfg, config);
   names.push_back(cfg);
   add_readme(out, names, preset, faces,
-                   "For Kerbal Space Program's Environmental Visual Enhancements, the fork\n"
-                   "LGhassen/EnvironmentalVisualEnhancements (its shader Assets/Shaders/cubeMap.cginc).\n"
-                   "Files (legacy RGBA8 DDS, RGB white, coverage in alpha, one mip level):\n"
-                   "  " + equirect + "  " + std::to_string(map.width) + " x " + std::to_string(map.height) +
-                       " equirect in EVE's mapping\n"
-                   "      u = 0.5 + atan2(x, z)/2pi, v = acos(y)/pi: column i at longitude -180 + 360 (i + 0.5)/W\n"
-                   "      (+Z of the body is longitude 0, +X 90 E), row j at v = (j + 0.5)/H (north first:\n"
-                   "      KSP's DDS loader puts a file's first row at v = 0)\n"
-                   "  " + folder + "clouds_xn.dds .. clouds_zp.dds  the six faces as EVE's GetCubeCubeUV samples\n"
-                   "      them (texXn .. texZp), same frame\n"
-                   "  " + cfg + "  an EVE_TEXTURE_CONFIG node (type TEX_CUBE_6) whose texXn .. texZp\n"
-                   "      keys name the faces (GameData paths without extension)\n"
-                   "KSP's Unity frame is left-handed: the faces are the cover reflected into it (nephele\n"
-                   "X, Y, Z = EVE z, x, y), not the GL faces renamed. Install: copy GameData/" + options.name +
-                       " into KSP's\n"
-                   "GameData; in a cloud layer's config set _MainTex to " + options.name +
-                       "/clouds_equirect (one texture) or\n"
-                   "to " + options.name + "_cube (the faces). Rows are geodetic latitudes (EVE's v is spherical: at most\n"
-                   "0.19 degrees apart). Not checked in KSP (not available here).\n");
+             "For Kerbal Space Program's Environmental Visual Enhancements, the fork\n"
+             "LGhassen/EnvironmentalVisualEnhancements (its shader Assets/Shaders/cubeMap.cginc).\n"
+             "Files (legacy RGBA8 DDS, RGB white, coverage in alpha, one mip level):\n"
+             "  " +
+                 equirect + "  " + std::to_string(map.width) + " x " + std::to_string(map.height) +
+                 " equirect in EVE's mapping\n"
+                 "      u = 0.5 + atan2(x, z)/2pi, v = acos(y)/pi: column i at longitude -180 + 360 (i + 0.5)/W\n"
+                 "      (+Z of the body is longitude 0, +X 90 E), row j at v = (j + 0.5)/H (north first:\n"
+                 "      KSP's DDS loader puts a file's first row at v = 0)\n"
+                 "  " +
+                 folder +
+                 "clouds_xn.dds .. clouds_zp.dds  the six faces as EVE's GetCubeCubeUV samples\n"
+                 "      them (texXn .. texZp), same frame\n"
+                 "  " +
+                 cfg +
+                 "  an EVE_TEXTURE_CONFIG node (type TEX_CUBE_6) whose texXn .. texZp\n"
+                 "      keys name the faces (GameData paths without extension)\n"
+                 "KSP's Unity frame is left-handed: the faces are the cover reflected into it (nephele\n"
+                 "X, Y, Z = EVE z, x, y), not the GL faces renamed. Install: copy GameData/" +
+                 options.name +
+                 " into KSP's\n"
+                 "GameData; in a cloud layer's config set _MainTex to " +
+                 options.name +
+                 "/clouds_equirect (one texture) or\n"
+                 "to " +
+                 options.name +
+                 "_cube (the faces). Rows are geodetic latitudes (EVE's v is spherical: at most\n"
+                 "0.19 degrees apart). Not checked in KSP (not available here).\n");
 }
 
 // A face strip or grid for an engine's cube importer, 16-bit grey PNG.
-void write_cube_layout(OutputSet& out, std::vector<std::string>& names, const std::vector<float>& engine_faces,
-                       int n, int columns, const std::string& name) {
+void write_cube_layout(OutputSet& out, std::vector<std::string>& names, const std::vector<float>& engine_faces, int n,
+                       int columns, const std::string& name) {
   const ImageData image{columns * n, 6 / columns * n, 1, face_layout(engine_faces, n, columns)};
   out.write(name, encode_image(image, png_encoding(16), name));
   names.push_back(name);
@@ -335,7 +359,8 @@ const char* const map_orientation =
 // Unity: left-handed, Y up. Its frame for the cover: +Y north, +X longitude 0, +Z 90 E (so
 // that the planet is seen unmirrored from outside): nephele X, Y, Z = Unity x, z, y, a
 // reflection (the same swap as KSP's planetarium frame).
-void write_unity(OutputSet& out, std::vector<std::string>& names, const ExportPreset& preset, const CoverFaces& faces, const ExportOptions&) {
+void write_unity(OutputSet& out, std::vector<std::string>& names, const ExportPreset& preset, const CoverFaces& faces,
+                 const ExportOptions&) {
   const ImageData map = equirect_image(faces);
   write_map_files(out, names, map, "cover_latlong");
   ImageData hdrp{map.width, map.height, 3, std::vector<float>(3 * map.pixels.size(), 0.0f)};
@@ -345,99 +370,108 @@ void write_unity(OutputSet& out, std::vector<std::string>& names, const ExportPr
   write_cube_layout(out, names, faces_for_axes(faces, AxisMap{{0, 2, 1}, {1, 1, 1}}), faces.size, 6,
                     "cover_cube_6x1.png");
   add_readme(out, names, preset, faces,
-                   "Files:\n"
-                   "  cover_latlong.exr, cover_latlong_16.png  the lat-long map (float, 16-bit grey): " +
-                       std::string(map_orientation) + "\n"
-                   "  cover_latlong_hdrp.png  the same map in red (16-bit RGB, G = B = 0): HDRP's Cloud Layer\n"
-                   "      reads opacity from the red channel of its Cloud Map\n"
-                   "  cover_cube_6x1.png  a horizontal strip of six faces +X, -X, +Y, -Y, +Z, -Z for\n"
-                   "      Unity's cubemap import (Texture Shape Cube, Mapping 6 Frames Layout)\n"
-                   "Unity is left-handed with +Y up; the faces hold the cover in the frame +Y north, +X\n"
-                   "longitude 0, +Z 90 E (nephele X, Y, Z = Unity x, z, y): a reflection of nephele's\n"
-                   "right-handed axes, which is what makes the planet unmirrored in Unity; renaming\n"
-                   "axes alone would mirror it. Import settings: sRGB (Color Texture) off, Single\n"
-                   "Channel Red or R16, no compression for data. Not checked in Unity (not available here).\n");
+             "Files:\n"
+             "  cover_latlong.exr, cover_latlong_16.png  the lat-long map (float, 16-bit grey): " +
+                 std::string(map_orientation) +
+                 "\n"
+                 "  cover_latlong_hdrp.png  the same map in red (16-bit RGB, G = B = 0): HDRP's Cloud Layer\n"
+                 "      reads opacity from the red channel of its Cloud Map\n"
+                 "  cover_cube_6x1.png  a horizontal strip of six faces +X, -X, +Y, -Y, +Z, -Z for\n"
+                 "      Unity's cubemap import (Texture Shape Cube, Mapping 6 Frames Layout)\n"
+                 "Unity is left-handed with +Y up; the faces hold the cover in the frame +Y north, +X\n"
+                 "longitude 0, +Z 90 E (nephele X, Y, Z = Unity x, z, y): a reflection of nephele's\n"
+                 "right-handed axes, which is what makes the planet unmirrored in Unity; renaming\n"
+                 "axes alone would mirror it. Import settings: sRGB (Color Texture) off, Single\n"
+                 "Channel Red or R16, no compression for data. Not checked in Unity (not available here).\n");
 }
 
 // Godot 4: right-handed, Y up, -Z forward. Frame for the cover: +Y north, +Z longitude 0,
 // +X 90 E: nephele X, Y, Z = Godot z, x, y, a rotation.
-void write_godot(OutputSet& out, std::vector<std::string>& names, const ExportPreset& preset, const CoverFaces& faces, const ExportOptions&) {
+void write_godot(OutputSet& out, std::vector<std::string>& names, const ExportPreset& preset, const CoverFaces& faces,
+                 const ExportOptions&) {
   const std::vector<float> godot_faces = faces_for_axes(faces, AxisMap{{2, 0, 1}, {1, 1, 1}});
   write_cube_layout(out, names, godot_faces, faces.size, 2, "cover_cube_2x3.png");
   write_cube_layout(out, names, godot_faces, faces.size, 6, "cover_cube_6x1.png");
   write_map_files(out, names, equirect_image(faces), "cover_panorama");
   add_readme(out, names, preset, faces,
-                   "Files:\n"
-                   "  cover_cube_2x3.png  six faces, 2 columns x 3 rows: +X -X / +Y -Y / +Z -Z (Godot's\n"
-                   "      default Cubemap import layout, 2x3), 16-bit grey\n"
-                   "  cover_cube_6x1.png  the same faces in one row (import layout 6x1)\n"
-                   "  cover_panorama.exr, cover_panorama_16.png  the equirect for a PanoramaSkyMaterial or\n"
-                   "      a sphere's material: " + std::string(map_orientation) + "\n"
-                   "Godot is right-handed like OpenGL (Y up, -Z forward): the faces hold the cover in the\n"
-                   "frame +Y north, +Z longitude 0, +X 90 E (nephele X, Y, Z = Godot z, x, y), a rotation,\n"
-                   "so nothing is mirrored. Import as Cubemap with Compress Mode Lossless and no sRGB\n"
-                   "(data). Not checked in Godot (not in Debian bookworm).\n");
+             "Files:\n"
+             "  cover_cube_2x3.png  six faces, 2 columns x 3 rows: +X -X / +Y -Y / +Z -Z (Godot's\n"
+             "      default Cubemap import layout, 2x3), 16-bit grey\n"
+             "  cover_cube_6x1.png  the same faces in one row (import layout 6x1)\n"
+             "  cover_panorama.exr, cover_panorama_16.png  the equirect for a PanoramaSkyMaterial or\n"
+             "      a sphere's material: " +
+                 std::string(map_orientation) +
+                 "\n"
+                 "Godot is right-handed like OpenGL (Y up, -Z forward): the faces hold the cover in the\n"
+                 "frame +Y north, +Z longitude 0, +X 90 E (nephele X, Y, Z = Godot z, x, y), a rotation,\n"
+                 "so nothing is mirrored. Import as Cubemap with Compress Mode Lossless and no sRGB\n"
+                 "(data). Not checked in Godot (not in Debian bookworm).\n");
 }
 
-void write_unreal(OutputSet& out, std::vector<std::string>& names, const ExportPreset& preset,
-                  const CoverFaces& faces, const ExportOptions&) {
+void write_unreal(OutputSet& out, std::vector<std::string>& names, const ExportPreset& preset, const CoverFaces& faces,
+                  const ExportOptions&) {
   write_map_files(out, names, equirect_image(faces), "cover_equirect");
   add_readme(out, names, preset, faces,
-                   "Files: cover_equirect.exr (float) and cover_equirect_16.png (16-bit grey), linear 2D\n"
-                   "maps for a Volumetric Cloud material or a planet material: " + std::string(map_orientation) + ".\n"
-                   "Import: sRGB off, Compression Settings HDR (EXR) or Grayscale / Alpha (16-bit PNG),\n"
-                   "Texture Group World, no mip-gen bias. Unreal is left-handed with Z up (X forward,\n"
-                   "Y right): for a unit direction (x, y, z) from the planet's centre in Unreal's frame,\n"
-                   "the map's UV is u = 0.5 + atan2(-y, x)/(2 pi), v = 0.5 - asin(z)/pi: the minus sign on\n"
-                   "y is the reflection between Unreal's left-handed axes and nephele's right-handed\n"
-                   "ones (+X longitude 0, -Y 90 E, +Z north). Not the HDRI Backdrop (a sky dome for\n"
-                   "product shots). Not checked in Unreal (not available here).\n");
+             "Files: cover_equirect.exr (float) and cover_equirect_16.png (16-bit grey), linear 2D\n"
+             "maps for a Volumetric Cloud material or a planet material: " +
+                 std::string(map_orientation) +
+                 ".\n"
+                 "Import: sRGB off, Compression Settings HDR (EXR) or Grayscale / Alpha (16-bit PNG),\n"
+                 "Texture Group World, no mip-gen bias. Unreal is left-handed with Z up (X forward,\n"
+                 "Y right): for a unit direction (x, y, z) from the planet's centre in Unreal's frame,\n"
+                 "the map's UV is u = 0.5 + atan2(-y, x)/(2 pi), v = 0.5 - asin(z)/pi: the minus sign on\n"
+                 "y is the reflection between Unreal's left-handed axes and nephele's right-handed\n"
+                 "ones (+X longitude 0, -Y 90 E, +Z north). Not the HDRI Backdrop (a sky dome for\n"
+                 "product shots). Not checked in Unreal (not available here).\n");
 }
 
 // Blender (right-handed, Z up) maps an equirect with u = 0.5 - atan2(y, x)/2pi: a north-up,
 // east-right map appears mirrored unless the Mapping node scales Y by -1.
-void write_blender(OutputSet& out, std::vector<std::string>& names, const ExportPreset& preset,
-                   const CoverFaces& faces, const ExportOptions&) {
+void write_blender(OutputSet& out, std::vector<std::string>& names, const ExportPreset& preset, const CoverFaces& faces,
+                   const ExportOptions&) {
   const ImageData map = equirect_image(faces);
   out.write("cover_equirect.exr", encode_image(map, exr_encoding({"Y"}), "cover_equirect.exr"));
   names.push_back("cover_equirect.exr");
-  out.write("nephele_world.py",
-            "# Sets cover_equirect.exr (next to this script, or the path after --) as the World of\n"
-            "# the current Blender scene, unmirrored: blender -b FILE.blend --python nephele_world.py\n"
-            "# or Scripting > Run Script. Blender maps an equirect with u = 0.5 - atan2(y, x)/2pi, so\n"
-            "# the Mapping node scales Y by -1 to put 90 E on +Y (nephele's axes: +X 0 N 0 E, +Z north).\n"
-            "import os, sys\nimport bpy\n\n"
-            "args = sys.argv[sys.argv.index('--') + 1:] if '--' in sys.argv else []\n"
-            "path = args[0] if args else os.path.join(os.path.dirname(os.path.abspath(__file__)), 'cover_equirect.exr')\n"
-            "world = bpy.context.scene.world or bpy.data.worlds.new('nephele')\n"
-            "bpy.context.scene.world = world\nworld.use_nodes = True\nnodes, links = world.node_tree.nodes, world.node_tree.links\n"
-            "nodes.clear()\n"
-            "coords = nodes.new('ShaderNodeTexCoord')\nmapping = nodes.new('ShaderNodeMapping')\n"
-            "mapping.inputs['Scale'].default_value = (1.0, -1.0, 1.0)\n"
-            "texture = nodes.new('ShaderNodeTexEnvironment')\ntexture.projection = 'EQUIRECTANGULAR'\n"
-            "texture.image = bpy.data.images.load(path, check_existing=True)\n"
-            "texture.image.colorspace_settings.name = 'Non-Color'  # coverage is data\n"
-            "background = nodes.new('ShaderNodeBackground')\noutput = nodes.new('ShaderNodeOutputWorld')\n"
-            "links.new(coords.outputs['Generated'], mapping.inputs['Vector'])\n"
-            "links.new(mapping.outputs['Vector'], texture.inputs['Vector'])\n"
-            "links.new(texture.outputs['Color'], background.inputs['Color'])\n"
-            "links.new(background.outputs['Background'], output.inputs['Surface'])\n");
+  out.write(
+      "nephele_world.py",
+      "# Sets cover_equirect.exr (next to this script, or the path after --) as the World of\n"
+      "# the current Blender scene, unmirrored: blender -b FILE.blend --python nephele_world.py\n"
+      "# or Scripting > Run Script. Blender maps an equirect with u = 0.5 - atan2(y, x)/2pi, so\n"
+      "# the Mapping node scales Y by -1 to put 90 E on +Y (nephele's axes: +X 0 N 0 E, +Z north).\n"
+      "import os, sys\nimport bpy\n\n"
+      "args = sys.argv[sys.argv.index('--') + 1:] if '--' in sys.argv else []\n"
+      "path = args[0] if args else os.path.join(os.path.dirname(os.path.abspath(__file__)), 'cover_equirect.exr')\n"
+      "world = bpy.context.scene.world or bpy.data.worlds.new('nephele')\n"
+      "bpy.context.scene.world = world\nworld.use_nodes = True\nnodes, links = world.node_tree.nodes, "
+      "world.node_tree.links\n"
+      "nodes.clear()\n"
+      "coords = nodes.new('ShaderNodeTexCoord')\nmapping = nodes.new('ShaderNodeMapping')\n"
+      "mapping.inputs['Scale'].default_value = (1.0, -1.0, 1.0)\n"
+      "texture = nodes.new('ShaderNodeTexEnvironment')\ntexture.projection = 'EQUIRECTANGULAR'\n"
+      "texture.image = bpy.data.images.load(path, check_existing=True)\n"
+      "texture.image.colorspace_settings.name = 'Non-Color'  # coverage is data\n"
+      "background = nodes.new('ShaderNodeBackground')\noutput = nodes.new('ShaderNodeOutputWorld')\n"
+      "links.new(coords.outputs['Generated'], mapping.inputs['Vector'])\n"
+      "links.new(mapping.outputs['Vector'], texture.inputs['Vector'])\n"
+      "links.new(texture.outputs['Color'], background.inputs['Color'])\n"
+      "links.new(background.outputs['Background'], output.inputs['Surface'])\n");
   names.push_back("nephele_world.py");
   add_readme(out, names, preset, faces,
-                   "Files: cover_equirect.exr (float, channel Y; " + std::string(map_orientation) + ")\n"
-                   "and nephele_world.py. Blender is right-handed with Z up like nephele, but its\n"
-                   "Environment Texture maps an equirect with u = 0.5 - atan2(y, x)/(2 pi): the map\n"
-                   "appears mirrored (90 E on -Y) unless the vector is reflected first. Steps (World):\n"
-                   "  1. Shading > World: add Texture Coordinate, Mapping, Environment Texture.\n"
-                   "  2. Texture Coordinate Generated -> Mapping Vector; Mapping Scale X 1, Y -1, Z 1\n"
-                   "     (scaling X instead would turn the map by 180 degrees of longitude).\n"
-                   "  3. Mapping -> Environment Texture Vector; open cover_equirect.exr, Color Space\n"
-                   "     Non-Color; Color -> Background.\n"
-                   "or run nephele_world.py (blender -b FILE.blend --python nephele_world.py). For a\n"
-                   "planet: the same chain in the sphere's material, fed by the object's direction\n"
-                   "(Texture Coordinate Object -> Mapping Y -1 -> Environment Texture, which takes\n"
-                   "any vector; see scripts/blender_planet.py). Checked in Blender 3.4.1:\n"
-                   "scripts/check-blender-export.sh (docs/export.md, \"blender\").\n");
+             "Files: cover_equirect.exr (float, channel Y; " + std::string(map_orientation) +
+                 ")\n"
+                 "and nephele_world.py. Blender is right-handed with Z up like nephele, but its\n"
+                 "Environment Texture maps an equirect with u = 0.5 - atan2(y, x)/(2 pi): the map\n"
+                 "appears mirrored (90 E on -Y) unless the vector is reflected first. Steps (World):\n"
+                 "  1. Shading > World: add Texture Coordinate, Mapping, Environment Texture.\n"
+                 "  2. Texture Coordinate Generated -> Mapping Vector; Mapping Scale X 1, Y -1, Z 1\n"
+                 "     (scaling X instead would turn the map by 180 degrees of longitude).\n"
+                 "  3. Mapping -> Environment Texture Vector; open cover_equirect.exr, Color Space\n"
+                 "     Non-Color; Color -> Background.\n"
+                 "or run nephele_world.py (blender -b FILE.blend --python nephele_world.py). For a\n"
+                 "planet: the same chain in the sphere's material, fed by the object's direction\n"
+                 "(Texture Coordinate Object -> Mapping Y -1 -> Environment Texture, which takes\n"
+                 "any vector; see scripts/blender_planet.py). Checked in Blender 3.4.1:\n"
+                 "scripts/check-blender-export.sh (docs/export.md, \"blender\").\n");
 }
 
 }  // namespace
@@ -452,7 +486,8 @@ std::filesystem::path face_path(const std::filesystem::path& directory, int f) {
 
 int read_cover_face_size(const std::filesystem::path& directory) {
   if (!std::filesystem::is_directory(directory))
-    throw core::InputError("COVER_DIR", directory.string(), "a directory written by nephele generate", "is not a directory");
+    throw core::InputError("COVER_DIR", directory.string(), "a directory written by nephele generate",
+                           "is not a directory");
   int size = 0;
   for (int f = 0; f < 6; ++f) {
     const std::filesystem::path path = face_path(directory, f);
@@ -465,7 +500,8 @@ int read_cover_face_size(const std::filesystem::path& directory) {
     try {
       header = read_image_header(path);
     } catch (const std::exception& e) {
-      throw core::InputError("COVER_DIR", path.string(), "an OpenEXR cube face", std::string("cannot be read: ") + e.what());
+      throw core::InputError("COVER_DIR", path.string(), "an OpenEXR cube face",
+                             std::string("cannot be read: ") + e.what());
     }
     if (header.width != header.height || (f > 0 && header.width != size))
       throw core::InputError("COVER_DIR", path.string(), "six square faces of one size",
@@ -490,11 +526,13 @@ CoverFaces read_cover_faces(const std::filesystem::path& directory) {
     try {
       image = read_image(path);
     } catch (const std::exception& e) {
-      throw core::InputError("COVER_DIR", path.string(), "an OpenEXR cube face", std::string("cannot be read: ") + e.what());
+      throw core::InputError("COVER_DIR", path.string(), "an OpenEXR cube face",
+                             std::string("cannot be read: ") + e.what());
     }
     // The headers were checked; a file replaced meanwhile is caught here.
     if (image.width != faces.size || image.height != faces.size || image.channels != 1)
-      throw core::InputError("COVER_DIR", path.string(), "six square one-channel faces of one size", "changed while read");
+      throw core::InputError("COVER_DIR", path.string(), "six square one-channel faces of one size",
+                             "changed while read");
     for (std::size_t i = 0; i < texels; ++i) {
       const float v = image.pixels[i];
       if (!(v >= 0.0f && v <= 1.0f)) {  // NaN fails both
@@ -525,20 +563,34 @@ long long tile_edge(int n) { return flightgear_tile_size(n); }
 const std::vector<ExportPreset>& export_presets() {
   // name, summary, needs_equirect, volume, takes_format, takes_name, writer, widest edge.
   static const std::vector<ExportPreset> presets = {
-      {"equirect", "2:1 lat-long map: float EXR, 16-bit PNG, 8-bit PNG", true, false, false, false, write_equirect, equirect_edge},
-      {"gl-faces", "six OpenEXR cube faces in the OpenGL order and orientation", false, false, false, false, write_gl_faces, faces_edge},
-      {"ktx2", "KTX 2.0 cube map (R16_SFLOAT, R32_SFLOAT or R8_UNORM; --format)", false, false, true, false, write_ktx2, faces_edge},
-      {"dds", "DDS cube maps: legacy RGBA8 and DX10 R16_FLOAT / R32_FLOAT", false, false, false, false, write_dds, faces_edge},
-      {"celestia", "Celestia add-on: RGBA cloud map (white, coverage in alpha) and .ssc", true, false, false, true, write_celestia, equirect_edge},
-      {"exr-cube", "OpenEXR cube environment map (N x 6N strip, envmap = cube)", false, false, false, false, write_exr_cube, faces_edge},
-      {"flightgear", "FlightGear Earthview: eight bordered tiles clouds_N1..S4, grey + alpha", true, false, false, false, write_flightgear, tile_edge},
-      {"eve", "KSP EVE (LGhassen's fork): equirect and six faces as DDS, EVE_TEXTURE_CONFIG", true, false, false, true, write_eve, equirect_edge},
-      {"unity", "Unity: lat-long map (HDRP cloud map in red) and a 6x1 face strip, reflected", true, false, false, false, write_unity, strip_edge},
-      {"godot", "Godot 4: 2x3 and 6x1 cubemap images and a panorama equirect", true, false, false, false, write_godot, strip_edge},
-      {"unreal", "Unreal: linear EXR and 16-bit PNG equirect for a cloud or planet material", true, false, false, false, write_unreal, equirect_edge},
-      {"blender", "Blender: equirect EXR and a script for an unmirrored World (Mapping Y = -1)", true, false, false, false, write_blender, equirect_edge},
-      {"atlas", "volume (noise .raw or model density.json): slice atlas in rows and columns", false, true, false, false, nullptr, nullptr},
-      {"openvdb", "volume (noise .raw or model density.json): OpenVDB FOG_VOLUME grids", false, true, false, false, nullptr, nullptr},
+      {"equirect", "2:1 lat-long map: float EXR, 16-bit PNG, 8-bit PNG", true, false, false, false, write_equirect,
+       equirect_edge},
+      {"gl-faces", "six OpenEXR cube faces in the OpenGL order and orientation", false, false, false, false,
+       write_gl_faces, faces_edge},
+      {"ktx2", "KTX 2.0 cube map (R16_SFLOAT, R32_SFLOAT or R8_UNORM; --format)", false, false, true, false, write_ktx2,
+       faces_edge},
+      {"dds", "DDS cube maps: legacy RGBA8 and DX10 R16_FLOAT / R32_FLOAT", false, false, false, false, write_dds,
+       faces_edge},
+      {"celestia", "Celestia add-on: RGBA cloud map (white, coverage in alpha) and .ssc", true, false, false, true,
+       write_celestia, equirect_edge},
+      {"exr-cube", "OpenEXR cube environment map (N x 6N strip, envmap = cube)", false, false, false, false,
+       write_exr_cube, faces_edge},
+      {"flightgear", "FlightGear Earthview: eight bordered tiles clouds_N1..S4, grey + alpha", true, false, false,
+       false, write_flightgear, tile_edge},
+      {"eve", "KSP EVE (LGhassen's fork): equirect and six faces as DDS, EVE_TEXTURE_CONFIG", true, false, false, true,
+       write_eve, equirect_edge},
+      {"unity", "Unity: lat-long map (HDRP cloud map in red) and a 6x1 face strip, reflected", true, false, false,
+       false, write_unity, strip_edge},
+      {"godot", "Godot 4: 2x3 and 6x1 cubemap images and a panorama equirect", true, false, false, false, write_godot,
+       strip_edge},
+      {"unreal", "Unreal: linear EXR and 16-bit PNG equirect for a cloud or planet material", true, false, false, false,
+       write_unreal, equirect_edge},
+      {"blender", "Blender: equirect EXR and a script for an unmirrored World (Mapping Y = -1)", true, false, false,
+       false, write_blender, equirect_edge},
+      {"atlas", "volume (noise .raw or model density.json): slice atlas in rows and columns", false, true, false, false,
+       nullptr, nullptr},
+      {"openvdb", "volume (noise .raw or model density.json): OpenVDB FOG_VOLUME grids", false, true, false, false,
+       nullptr, nullptr},
   };
   return presets;
 }
@@ -583,7 +635,8 @@ std::vector<std::string> write_export(OutputSet& outputs, const ExportPreset& pr
   check_texture_limit(preset, faces.size);
   check_export_options(preset, options);
   std::vector<std::string> names;
-  if (preset.write == nullptr) throw core::InputError("--preset", preset.name, "a cover preset", "exports a volume (nephele export VOLUME)");
+  if (preset.write == nullptr)
+    throw core::InputError("--preset", preset.name, "a cover preset", "exports a volume (nephele export VOLUME)");
   preset.write(outputs, names, preset, faces, options);
   return names;
 }

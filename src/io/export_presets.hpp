@@ -24,16 +24,16 @@ CoverFaces read_cover_faces(const std::filesystem::path& directory);
 int read_cover_face_size(const std::filesystem::path& directory);
 
 struct ExportOptions {
-  std::string ktx2_format = "r16f";    // ktx2: r16f, r32f, r8
+  std::string ktx2_format = "r16f";     // ktx2: r16f, r32f, r8
   std::string name = "nephele_clouds";  // celestia: the add-on's folder and file names
 };
 
 // One row of the preset registry: everything about a preset is here, its writer included.
 struct ExportPreset {
-  std::string name;     // --preset word
-  std::string summary;  // one line for --help and the README
-  bool needs_equirect;  // resamples the cube map on the GPU (a context must be current)
-  bool volume = false;  // reads a volume's sidecar (io/volume_export.hpp) instead of a cover
+  std::string name;           // --preset word
+  std::string summary;        // one line for --help and the README
+  bool needs_equirect;        // resamples the cube map on the GPU (a context must be current)
+  bool volume = false;        // reads a volume's sidecar (io/volume_export.hpp) instead of a cover
   bool takes_format = false;  // reads --format (ExportOptions::ktx2_format)
   bool takes_name = false;    // reads --name (ExportOptions::name)
   // Writes the preset's files (README.txt included) into the set; nullptr for a volume preset.

@@ -32,7 +32,8 @@ std::vector<unsigned char> encode_image(const ImageData& image, const ImageEncod
   const char* format = png ? "png" : "openexr";
   auto out = OIIO::ImageOutput::create(format);
   if (!out) throw std::runtime_error("no image writer for " + what + ": " + OIIO::geterror());
-  if (!out->supports("ioproxy")) throw std::runtime_error("the " + std::string(format) + " writer cannot write to memory");
+  if (!out->supports("ioproxy"))
+    throw std::runtime_error("the " + std::string(format) + " writer cannot write to memory");
   const OIIO::TypeDesc type = !png ? (encoding.bits == 16 ? OIIO::TypeDesc::HALF : OIIO::TypeDesc::FLOAT)
                               : encoding.bits == 16 ? OIIO::TypeDesc::UINT16
                                                     : OIIO::TypeDesc::UINT8;

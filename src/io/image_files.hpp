@@ -19,9 +19,9 @@ enum class ImageFormat { png, exr };
 // zip-compressed unless another of OpenEXR's compressions is named.
 struct ImageEncoding {
   ImageFormat format = ImageFormat::png;
-  int bits = 8;                            // png: 8 or 16; exr: 32 (float) or 16 (half)
-  std::vector<std::string> channel_names;  // empty: OpenImageIO's defaults (Y, RGB, RGBA ...)
-  std::string compression = "zip";        // exr: none, rle, zips, zip, piz, pxr24, b44, dwaa
+  int bits = 8;                                                 // png: 8 or 16; exr: 32 (float) or 16 (half)
+  std::vector<std::string> channel_names;                       // empty: OpenImageIO's defaults (Y, RGB, RGBA ...)
+  std::string compression = "zip";                              // exr: none, rle, zips, zip, piz, pxr24, b44, dwaa
   std::vector<std::pair<std::string, std::string>> attributes;  // extra string metadata (OpenImageIO names)
   // With 4 channels: the colour is not premultiplied by alpha (white clouds with coverage in
   // alpha are stored as given; OpenImageIO would otherwise divide the colour by alpha).
@@ -59,8 +59,7 @@ bool is_exr_compression(const std::string& name);
 // and close checked (OpenImageIO's PNG writer does not report a failed fwrite). Throws
 // std::runtime_error naming `what` (the file's name) when encoding fails. Safe to call from
 // several threads at once (each call has its own writer).
-std::vector<unsigned char> encode_image(const ImageData& image, const ImageEncoding& encoding,
-                                        const std::string& what);
+std::vector<unsigned char> encode_image(const ImageData& image, const ImageEncoding& encoding, const std::string& what);
 
 // The one image writer: encodes and writes `path` (replacing it in place; output sets write
 // through OutputSet::write instead).

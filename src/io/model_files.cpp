@@ -40,18 +40,20 @@ json::Value model_sidecar(const model::CloudModel& model, int size, const std::v
            "its centre at ((x, y, z) + 0.5) * voxel_size_m metres from the volume's corner");
   const int columns = atlas_columns(size);
   root.set("atlas", "density_atlas.exr");
-  root.set("atlas_layout", "single-channel float EXR, " + std::to_string(columns) + " slices per row: slice z at tile (z % " +
-                               std::to_string(columns) + ", z / " + std::to_string(columns) +
-                               "), tile row 0 is y = 0; unused tiles are 0");
+  root.set("atlas_layout", "single-channel float EXR, " + std::to_string(columns) +
+                               " slices per row: slice z at tile (z % " + std::to_string(columns) + ", z / " +
+                               std::to_string(columns) + "), tile row 0 is y = 0; unused tiles are 0");
   if (with_vdb) {
     root.set("vdb", "density.vdb");
-    root.set("vdb_layout", "FOG_VOLUME float grid 'density', background 0, voxels above 0 active, voxel size voxel_size_m, "
-                           "index (x, y, z) = the raw volume's voxel, z up");
+    root.set("vdb_layout",
+             "FOG_VOLUME float grid 'density', background 0, voxels above 0 active, voxel size voxel_size_m, "
+             "index (x, y, z) = the raw volume's voxel, z up");
   }
   root.set("value", "density in [0, 1] (the clamped blend of the model's primitives)");
   root.set("density_to_extinction_per_m", density_to_extinction_per_m);
-  root.set("extinction_note", "sigma_t = density * 0.075 / m (LWC 0.5 g/m^3, r_e 10 um); in Blender set the Principled "
-                              "Volume's Density to 0.075 for this extinction in metres");
+  root.set("extinction_note",
+           "sigma_t = density * 0.075 / m (LWC 0.5 g/m^3, r_e 10 um); in Blender set the Principled "
+           "Volume's Density to 0.075 for this extinction in metres");
   float lo = 0, hi = 0;
   size_t nonzero = 0;
   if (!values.empty()) {
@@ -85,7 +87,8 @@ std::vector<std::string> write_model_files(const std::filesystem::path& director
     names.push_back("density.vdb");
   }
   if (preview) {
-    outputs.write("preview.png", encode_image(render::tone_map(*preview, preview_exposure), png_encoding(8), "preview.png"));
+    outputs.write("preview.png",
+                  encode_image(render::tone_map(*preview, preview_exposure), png_encoding(8), "preview.png"));
     names.push_back("preview.png");
   }
   outputs.write("density.json", json::write(model_sidecar(model, size, values, run, vdb)));

@@ -179,7 +179,7 @@ void FloatCache::trim(const std::string& keep) const {
     // lstat, not stat: a symbolic link is judged as itself, never by its target's size or time.
     struct stat status {};
     if (::lstat(item.path().c_str(), &status) != 0) continue;  // gone meanwhile
-    if (S_ISDIR(status.st_mode)) continue;                      // not the cache's to remove
+    if (S_ISDIR(status.st_mode)) continue;                     // not the cache's to remove
     if (!S_ISREG(status.st_mode) || (temporary && stale_temporary(name, status))) {
       // A link, FIFO, socket or device under the cache's names (unlink removes only the name),
       // or a killed writer's temporary file.
@@ -221,9 +221,9 @@ std::unique_ptr<render::NoiseVolume> cached_noise_volume(int size, std::uint32_t
       what = "noise volume: from the cache " + cache.file_of(key).string();
     } else {
       noise = std::make_unique<render::NoiseVolume>(size, seed);
-      what = cache.store(key, noise->level0()) ? "noise volume: made and cached in " + cache.file_of(key).string()
-                                              : "noise volume: made (the cache " + directory.string() +
-                                                    " could not be written)";
+      what = cache.store(key, noise->level0())
+                 ? "noise volume: made and cached in " + cache.file_of(key).string()
+                 : "noise volume: made (the cache " + directory.string() + " could not be written)";
     }
   });
   if (note != nullptr) *note = what + " (" + std::to_string(ms) + " ms)";

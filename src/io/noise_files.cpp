@@ -88,11 +88,13 @@ json::Value sidecar(const noise::TextureSpec& spec, const noise::Volume& volume,
   for (size_t c = 0; c < spec.channels.size(); ++c) layout += noise::channel_letter(static_cast<int>(c));
   root.set("channels", layout);
   if (format == FileFormat::raw)
-    root.set("layout", "float32 little-endian, channels interleaved, x fastest, then y, then z: value (x, y, z, c) at "
-                       "index ((z * height + y) * width + x) * channels + c");
+    root.set("layout",
+             "float32 little-endian, channels interleaved, x fastest, then y, then z: value (x, y, z, c) at "
+             "index ((z * height + y) * width + x) * channels + c");
   else
     root.set("layout", "slice atlas of " + std::to_string(spec.depth * spec.width) + " x " +
-                           std::to_string(spec.height) + " pixels: slice z at columns z * width .. (z + 1) * width - 1, "
+                           std::to_string(spec.height) +
+                           " pixels: slice z at columns z * width .. (z + 1) * width - 1, "
                            "image row 0 is y = 0; texel (x, y, z) has its centre at (x + 0.5, y + 0.5, z + 0.5) / size "
                            "in texture coordinates, and the texture repeats exactly");
   if (format == FileFormat::png)
@@ -154,7 +156,8 @@ std::filesystem::path write_noise_files(const std::filesystem::path& out, const 
     }
     outputs.write(name, io::encode_image(image, encoding, name));
   }
-  outputs.write(sidecar_name, json::write(sidecar(spec, volume, format, png_bits, name, preset, extra, stretched_from)));
+  outputs.write(sidecar_name,
+                json::write(sidecar(spec, volume, format, png_bits, name, preset, extra, stretched_from)));
   outputs.commit();
   return directory / sidecar_name;
 }

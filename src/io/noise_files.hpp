@@ -39,7 +39,6 @@ json::Value sidecar(const noise::TextureSpec& spec, const noise::Volume& volume,
 // in out's directory (OutputSet::Scope::files). Returns the sidecar's path.
 std::filesystem::path write_noise_files(const std::filesystem::path& out, const noise::TextureSpec& spec,
                                         const noise::Volume& volume, int png_bits, const std::string& preset,
-                                        const json::Value& extra,
-                                        const std::vector<ValueRange>& stretched_from = {});
+                                        const json::Value& extra, const std::vector<ValueRange>& stretched_from = {});
 
 }  // namespace nephele::io

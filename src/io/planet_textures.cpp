@@ -10,9 +10,7 @@
 namespace nephele::io {
 namespace {
 
-float srgb_to_linear(float v) {
-  return v <= 0.04045f ? v / 12.92f : std::pow((v + 0.055f) / 1.055f, 2.4f);
-}
+float srgb_to_linear(float v) { return v <= 0.04045f ? v / 12.92f : std::pow((v + 0.055f) / 1.055f, 2.4f); }
 
 core::ImageData read_equirect(const std::string& path, const std::string& option) {
   core::ImageData image;
@@ -23,8 +21,7 @@ core::ImageData read_equirect(const std::string& path, const std::string& option
     throw core::InputError(option, path, "an equirect image file OpenImageIO reads (JPEG, PNG, EXR, ...)",
                            std::string("could not be read: ") + e.what());
   }
-  if (image.width < 2)
-    throw core::InputError(option, path, "an image of at least 2 x 1 pixels", "is too small");
+  if (image.width < 2) throw core::InputError(option, path, "an image of at least 2 x 1 pixels", "is too small");
   // Integer formats hold display-encoded (sRGB) colour; float formats hold linear values.
   if (!header.float_samples)
     for (size_t k = 0; k < image.pixels.size(); ++k)

@@ -16,8 +16,8 @@ inline const char* const default_night_texture = "/usr/share/xplanet/images/nigh
 
 struct PlanetTextures {
   render::PlanetImages images;
-  std::string day_source;    // the file, or "procedural"
-  std::string night_source;  // the file, or "none"
+  std::string day_source;             // the file, or "procedural"
+  std::string night_source;           // the file, or "none"
   std::vector<std::string> warnings;  // e.g. the default maps are missing: procedural fallback
 };
 

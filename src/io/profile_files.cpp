@@ -39,10 +39,10 @@ cover::LatitudeProfile parse_profile_csv(const std::string& text, const std::str
     const double latitude = params::parse_number(where + ": latitude_deg", latitude_text, -90.0, 90.0, false);
     const double fraction = params::parse_number(where + ": fraction", fraction_text, 0.0, 1.0, false);
     if (!latitudes.empty() && latitude <= latitudes.back())
-      throw core::InputError(where + ": latitude_deg", latitude_text,
-                             "above the previous row's " + std::to_string(latitudes.back()) +
-                                 " (latitudes strictly increasing)",
-                             "is not increasing");
+      throw core::InputError(
+          where + ": latitude_deg", latitude_text,
+          "above the previous row's " + std::to_string(latitudes.back()) + " (latitudes strictly increasing)",
+          "is not increasing");
     latitudes.push_back(latitude);
     fractions.push_back(fraction);
   }

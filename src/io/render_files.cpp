@@ -99,19 +99,22 @@ json::Value scene_sidecar(const SceneRender& r, const regional::Scene& scene) {
   return root;
 }
 
-void write_scene_outputs(const SceneRender& result, const regional::Scene& scene, const std::filesystem::path& directory,
-                         const std::vector<std::string>& names, io::OutputSet::Scope scope) {
+void write_scene_outputs(const SceneRender& result, const regional::Scene& scene,
+                         const std::filesystem::path& directory, const std::vector<std::string>& names,
+                         io::OutputSet::Scope scope) {
   if (names.empty()) return;
   io::OutputSet outputs(directory, scope);
   for (const auto& name : names) {
     if (core::lowercase_extension(name) == ".png")
-      outputs.write(name, io::encode_image(render::tone_map(result.render.radiance, scene.exposure), io::png_encoding(8), name));
+      outputs.write(
+          name, io::encode_image(render::tone_map(result.render.radiance, scene.exposure), io::png_encoding(8), name));
     else
       outputs.write(name, io::encode_image(result.render.radiance, io::exr_encoding({"R", "G", "B", "A"}), name));
   }
   // The sidecar sits beside the first output.
   const std::filesystem::path first(names.front());
-  outputs.write((first.parent_path() / (first.stem().string() + ".json")).string(), json::write(scene_sidecar(result, scene)));
+  outputs.write((first.parent_path() / (first.stem().string() + ".json")).string(),
+                json::write(scene_sidecar(result, scene)));
   outputs.commit();
 }
 

@@ -15,8 +15,9 @@ using render::SceneRender;
 
 // Writes each output `names` (relative to `directory`: .png tone-mapped sRGB, .exr linear
 // radiance with cloud opacity in A) and a JSON sidecar next to the first one, as one output set.
-void write_scene_outputs(const SceneRender& result, const regional::Scene& scene, const std::filesystem::path& directory,
-                         const std::vector<std::string>& names, OutputSet::Scope scope);
+void write_scene_outputs(const SceneRender& result, const regional::Scene& scene,
+                         const std::filesystem::path& directory, const std::vector<std::string>& names,
+                         OutputSet::Scope scope);
 
 json::Value scene_sidecar(const SceneRender& result, const regional::Scene& scene);
 

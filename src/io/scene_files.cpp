@@ -48,10 +48,14 @@ Scene parse_scene(const std::string& text, const std::string& source, const std:
     } else if (key == "at") {
       if (!v.is_object()) k.fail(key, "must be an object with latitude, longitude, height");
       for (const auto& [sub, w] : v.as_object()) {
-        if (sub == "latitude") s.latitude_deg = k.number(w, "at.latitude");
-        else if (sub == "longitude") s.longitude_deg = k.number(w, "at.longitude");
-        else if (sub == "height") s.height_m = k.number(w, "at.height");
-        else k.fail("at." + sub, "unknown key (allowed: latitude, longitude, height)");
+        if (sub == "latitude")
+          s.latitude_deg = k.number(w, "at.latitude");
+        else if (sub == "longitude")
+          s.longitude_deg = k.number(w, "at.longitude");
+        else if (sub == "height")
+          s.height_m = k.number(w, "at.height");
+        else
+          k.fail("at." + sub, "unknown key (allowed: latitude, longitude, height)");
       }
       if (!s.latitude_deg || !s.longitude_deg || !s.height_m) k.fail(key, "needs latitude, longitude and height");
       s.view.clear();
@@ -69,7 +73,8 @@ Scene parse_scene(const std::string& text, const std::string& source, const std:
       s.panorama = k.boolean(v, key);
     } else if (key == "weather") {
       for (const auto& f : k.strings(v, key))
-        s.weather.push_back(std::filesystem::path(f).is_absolute() ? f : (std::filesystem::path(base_directory) / f).string());
+        s.weather.push_back(
+            std::filesystem::path(f).is_absolute() ? f : (std::filesystem::path(base_directory) / f).string());
     } else if (key == "seed") {
       const double d = k.number(v, key);
       try {
@@ -104,7 +109,8 @@ Scene parse_scene(const std::string& text, const std::string& source, const std:
     } else if (key == "terrain") {
       const std::string t = k.string(v, key);
       const bool word = t == "etopo5" || t == "flat";
-      s.terrain = word || std::filesystem::path(t).is_absolute() ? t : (std::filesystem::path(base_directory) / t).string();
+      s.terrain =
+          word || std::filesystem::path(t).is_absolute() ? t : (std::filesystem::path(base_directory) / t).string();
     } else if (key == "exposure") {
       s.exposure = k.number(v, key);
     } else if (key == "cover_size") {

@@ -42,7 +42,8 @@ cover::SurfaceMask image_mask(const std::string& path) {
   try {
     image = read_image(path);  // refuses FIFOs, devices and headers beyond the memory budget
   } catch (const std::exception& e) {
-    throw core::InputError(field, path, "an image OpenImageIO reads (EXR, PNG, TIFF, ...), or an ETOPO5 netCDF", e.what());
+    throw core::InputError(field, path, "an image OpenImageIO reads (EXR, PNG, TIFF, ...), or an ETOPO5 netCDF",
+                           e.what());
   }
   cover::SurfaceMask mask{image.width, image.height, {}, path};
   mask.land.resize(static_cast<size_t>(image.width) * image.height);

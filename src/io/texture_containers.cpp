@@ -115,14 +115,14 @@ std::vector<unsigned char> encode_ktx2_cube(const std::vector<float>& texels, in
   // Section 3.5 and the Khronos Data Format Specification 1.3, section 5 (basic descriptor block).
   const std::size_t dfd_at = out.size();
   const std::uint32_t block_size = 24 + 16;  // header words + one sample
-  put32(out, 4 + block_size);                 // dfdTotalSize
-  put32(out, 0);                              // vendorId 0 (Khronos), descriptorType 0 (basic)
-  put32(out, 2u | (block_size << 16));        // versionNumber 2 (KDF 1.3), descriptorBlockSize
+  put32(out, 4 + block_size);                // dfdTotalSize
+  put32(out, 0);                             // vendorId 0 (Khronos), descriptorType 0 (basic)
+  put32(out, 2u | (block_size << 16));       // versionNumber 2 (KDF 1.3), descriptorBlockSize
   // colorModel 1 (KHR_DF_MODEL_RGBSDA), colorPrimaries 1 (BT709), transferFunction 1 (LINEAR), flags 0.
   put32(out, 1u | (1u << 8) | (1u << 16));
-  put32(out, 0);       // texelBlockDimension0..3 = 1 (stored as value - 1)
-  put32(out, bytes);   // bytesPlane0
-  put32(out, 0);       // bytesPlane4..7
+  put32(out, 0);      // texelBlockDimension0..3 = 1 (stored as value - 1)
+  put32(out, bytes);  // bytesPlane0
+  put32(out, 0);      // bytesPlane4..7
   // Sample: bitOffset 0, bitLength - 1, channelType RED (0) with qualifiers FLOAT (0x80) and
   // SIGNED (0x40) for the float formats; samplePosition 0; sampleLower, sampleUpper.
   const bool floating = sample != TextureSample::r8;
@@ -195,7 +195,7 @@ std::vector<unsigned char> encode_dds(const std::vector<float>& texels, int widt
     put32(out, 32);            // dwRGBBitCount
     put32(out, 0x000000ffu), put32(out, 0x0000ff00u), put32(out, 0x00ff0000u), put32(out, 0xff000000u);
   } else {
-    put32(out, 0x4u);  // DDPF_FOURCC
+    put32(out, 0x4u);         // DDPF_FOURCC
     put32(out, 0x30315844u);  // "DX10"
     for (int i = 0; i < 5; ++i) put32(out, 0);
   }
@@ -211,8 +211,10 @@ std::vector<unsigned char> encode_dds(const std::vector<float>& texels, int widt
   for (float v : texels) {
     if (legacy) {
       const auto byte = (unsigned char)std::lround(255.0f * clamp01(v));
-      if (variant == DdsVariant::rgba8_white) out.insert(out.end(), {255, 255, 255, byte});
-      else out.insert(out.end(), {byte, byte, byte, byte});
+      if (variant == DdsVariant::rgba8_white)
+        out.insert(out.end(), {255, 255, 255, byte});
+      else
+        out.insert(out.end(), {byte, byte, byte, byte});
     } else {
       put_sample(out, v, sample);
     }

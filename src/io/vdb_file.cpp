@@ -103,7 +103,9 @@ std::string vdb_grids_bytes(const std::vector<std::string>&, const std::vector<s
                             double) {
   return {};
 }
-VdbContents read_vdb(const std::string& path) { throw std::runtime_error(path + ": nephele was built without OpenVDB"); }
+VdbContents read_vdb(const std::string& path) {
+  throw std::runtime_error(path + ": nephele was built without OpenVDB");
+}
 
 #endif
 

@@ -18,7 +18,8 @@ namespace {
 
 int positive_int(const json::Value& root, const std::string& key, const std::filesystem::path& path) {
   const json::Value* v = root.find(key);
-  if (!v || !v->is_number() || v->as_number() < 1 || v->as_number() > 65536 || v->as_number() != std::floor(v->as_number()))
+  if (!v || !v->is_number() || v->as_number() < 1 || v->as_number() > 65536 ||
+      v->as_number() != std::floor(v->as_number()))
     throw core::InputError("VOLUME", path.string() + ": " + key, "a whole number from 1 to 65536",
                            v ? "is not" : "is missing");
   return int(v->as_number());
@@ -57,7 +58,8 @@ VolumeData read_volume(const std::filesystem::path& sidecar) {
   } else if (v.source == "nephele noise") {
     const json::Value* format = root.find("format");
     if (!format || !format->is_string() || format->as_string() != "raw-float32-little-endian")
-      throw core::InputError("VOLUME", sidecar.string() + ": format", "raw-float32-little-endian (nephele noise --out NAME.raw)");
+      throw core::InputError("VOLUME", sidecar.string() + ": format",
+                             "raw-float32-little-endian (nephele noise --out NAME.raw)");
     v.width = positive_int(root, "width", sidecar);
     v.height = positive_int(root, "height", sidecar);
     v.depth = positive_int(root, "depth", sidecar);
@@ -107,7 +109,8 @@ AtlasGrid atlas_grid(int width, int height, int depth) {
   g.columns = std::min({int(std::ceil(std::sqrt(double(depth)))), most_columns, depth});
   if (g.columns >= 1) g.rows = (depth + g.columns - 1) / g.columns;
   if (g.columns < 1 || long(g.rows) * height > max_texture_edge)
-    throw core::InputError("VOLUME", std::to_string(width) + " x " + std::to_string(height) + " x " + std::to_string(depth),
+    throw core::InputError("VOLUME",
+                           std::to_string(width) + " x " + std::to_string(height) + " x " + std::to_string(depth),
                            "a volume whose slices fit a 16384 x 16384 atlas");
   return g;
 }
@@ -125,10 +128,12 @@ std::vector<std::string> write_volume_export(OutputSet& outputs, const std::stri
     for (int z = 0; z < v.depth; ++z)
       for (int y = 0; y < v.height; ++y)
         std::memcpy(atlas.pixels.data() + ((std::size_t(z / g.columns) * v.height + y) * atlas.width +
-                                           std::size_t(z % g.columns) * v.width) * v.channels,
+                                           std::size_t(z % g.columns) * v.width) *
+                                              v.channels,
                     v.values.data() + (std::size_t(z) * v.height + y) * row, row * sizeof(float));
     static const char* const channel_names[4][4] = {{"Y"}, {"R", "G"}, {"R", "G", "B"}, {"R", "G", "B", "A"}};
-    const std::vector<std::string> exr_channels(channel_names[v.channels - 1], channel_names[v.channels - 1] + v.channels);
+    const std::vector<std::string> exr_channels(channel_names[v.channels - 1],
+                                                channel_names[v.channels - 1] + v.channels);
     outputs.write("volume_atlas.exr", encode_image(atlas, exr_encoding(exr_channels), "volume_atlas.exr"));
     ImageEncoding png = png_encoding(16);
     png.unassociated_alpha = true;  // a second or fourth channel is data, not alpha to divide by
@@ -136,18 +141,19 @@ std::vector<std::string> write_volume_export(OutputSet& outputs, const std::stri
     names = {"volume_atlas.exr", "volume_atlas_16.png"};
     readme += "Files: volume_atlas.exr (float) and volume_atlas_16.png (16-bit, no gamma chunk), " +
               std::to_string(atlas.width) + " x " + std::to_string(atlas.height) + ": " + std::to_string(g.columns) +
-              " columns x " + std::to_string(g.rows) +
-              " rows of slices;\nslice z at column z % " + std::to_string(g.columns) + ", row z / " +
-              std::to_string(g.columns) +
+              " columns x " + std::to_string(g.rows) + " rows of slices;\nslice z at column z % " +
+              std::to_string(g.columns) + ", row z / " + std::to_string(g.columns) +
               " (left to right, top to bottom), image row 0 of a\nslice is y = 0; unused tiles are 0. At most " +
               std::to_string(max_texture_edge) +
               " pixels on each side (a single-row atlas of 160^3 would be\n25600 wide). Unity: Texture Shape 3D, "
-              "Columns " + std::to_string(g.columns) + ", Rows " + std::to_string(g.rows) +
+              "Columns " +
+              std::to_string(g.columns) + ", Rows " + std::to_string(g.rows) +
               "; Unreal: Create Volume Texture with\nSource 2D Tile Size " + std::to_string(v.width) + " x " +
               std::to_string(v.height) + ". sRGB off: the values are data.\n";
   } else if (preset == "openvdb") {
     if (!vdb_available())
-      throw core::InputError("--preset", "openvdb", "a nephele built with OpenVDB (libopenvdb-dev)", "is not available");
+      throw core::InputError("--preset", "openvdb", "a nephele built with OpenVDB (libopenvdb-dev)",
+                             "is not available");
     std::vector<std::vector<float>> grids(std::size_t(v.channels));
     for (std::size_t i = 0; i < v.values.size(); ++i) grids[i % std::size_t(v.channels)].push_back(v.values[i]);
     std::vector<std::string> grid_names = v.channel_names;
@@ -158,8 +164,8 @@ std::vector<std::string> write_volume_export(OutputSet& outputs, const std::stri
     for (const auto& n : grid_names) list += (list.empty() ? "" : ", ") + n;
     readme += "File: volume.vdb, OpenVDB float grids (" + list +
               "), class FOG_VOLUME, background 0, voxels above 0\nactive; voxel (i, j, k) centred at voxel size x "
-              "((i, j, k) + 1/2), voxel size " + std::to_string(v.voxel_size) +
-              (v.source == "nephele model" ? " metres" : " (texel units)") +
+              "((i, j, k) + 1/2), voxel size " +
+              std::to_string(v.voxel_size) + (v.source == "nephele model" ? " metres" : " (texel units)") +
               ", z up. Blender: Add > Volume > Import OpenVDB;\nthe Principled Volume reads `density` by default.\n";
   } else {
     throw core::InputError("--preset", preset, "atlas|openvdb for a volume");

@@ -43,8 +43,8 @@ struct Reader {
     return keys.number(member(object, path, key), path + key);
   }
   // An hourly array of numbers; nulls (missing values, NaN in the source) are errors.
-  std::vector<double> series(const json::Value& block, const std::string& path, const std::string& key,
-                             size_t count, double lo, double hi, bool required = true) const {
+  std::vector<double> series(const json::Value& block, const std::string& path, const std::string& key, size_t count,
+                             double lo, double hi, bool required = true) const {
     const json::Value* v = block.find(key);
     if (!v) {
       if (required) fail(path + key, "missing");
@@ -103,8 +103,8 @@ regional::WeatherSeries parse_weather(const std::string& text, const std::string
   w.source = source;
   std::vector<double> times, total, low, mid, high, rain, speed, direction, cape, lifted, code;
   // The cloud fields and precipitation, named differently by each provider.
-  auto read_clouds = [&](const json::Value& block, const std::string& path, const char* total_key,
-                         const char* low_key, const char* mid_key, const char* high_key) {
+  auto read_clouds = [&](const json::Value& block, const std::string& path, const char* total_key, const char* low_key,
+                         const char* mid_key, const char* high_key) {
     const size_t n = times.size();
     total = r.series(block, path, total_key, n, 0, 100);
     low = r.series(block, path, low_key, n, 0, 100);
@@ -144,9 +144,13 @@ regional::WeatherSeries parse_weather(const std::string& text, const std::string
         std::string unit = "km/h";
         if (const json::Value* units = root.find("hourly_units"))
           if (const json::Value* u = units->find(speed_keys[k]); u && u->is_string()) unit = u->as_string();
-        const double scale = unit == "m/s" ? 1.0 : unit == "km/h" ? 1.0 / 3.6 : unit == "mp/h" ? 0.44704
-                           : unit == "kn" ? 0.514444 : -1.0;
-        if (scale < 0) r.fail(std::string("hourly_units.") + speed_keys[k], "unit '" + unit + "' not one of km/h, m/s, mp/h, kn");
+        const double scale = unit == "m/s"    ? 1.0
+                             : unit == "km/h" ? 1.0 / 3.6
+                             : unit == "mp/h" ? 0.44704
+                             : unit == "kn"   ? 0.514444
+                                              : -1.0;
+        if (scale < 0)
+          r.fail(std::string("hourly_units.") + speed_keys[k], "unit '" + unit + "' not one of km/h, m/s, mp/h, kn");
         for (double& s : speed) s *= scale;
       }
     }
@@ -156,7 +160,8 @@ regional::WeatherSeries parse_weather(const std::string& text, const std::string
     const json::Value& metadata = r.member(root, "", "metadata");
     w.latitude_deg = r.number(metadata, "metadata.", "latitude");
     w.longitude_deg = r.number(metadata, "metadata.", "longitude");
-    const double offset_hours = metadata.find("utc_timeoffset") ? r.number(metadata, "metadata.", "utc_timeoffset") : 0.0;
+    const double offset_hours =
+        metadata.find("utc_timeoffset") ? r.number(metadata, "metadata.", "utc_timeoffset") : 0.0;
     r.within("metadata.utc_timeoffset", offset_hours, -max_utc_offset_hours, max_utc_offset_hours);
     const double offset = offset_hours * 3600.0;
     const json::Value& hourly = root.at("data_1h");

@@ -33,7 +33,8 @@ DensityVolume::DensityVolume(int size) {
   GLint max_3d = 0;
   glGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &max_3d);
   if (size < 1 || size > max_3d)
-    throw ModelError("--size", std::to_string(size), "1 to " + std::to_string(max_3d) + " (this driver's 3D texture limit)");
+    throw ModelError("--size", std::to_string(size),
+                     "1 to " + std::to_string(max_3d) + " (this driver's 3D texture limit)");
   glCreateTextures(GL_TEXTURE_3D, 1, &texture_);
   glTextureStorage3D(texture_, 1, GL_R32F, size, size, size);
   if (glGetError() != GL_NO_ERROR) {

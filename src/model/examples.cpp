@@ -40,8 +40,10 @@ CloudModel towering() {
   m.description = "towering cumulus (congestus): a column taller than wide with bulging towers";
   m.extent_m = 6000;
   m.primitives = {segment({0.50f, 0.50f, 0.22f}, {0.50f, 0.52f, 0.62f}, 0.08f, 0.10f, 11),
-                  point({0.42f, 0.50f, 0.24f}, 0.07f, 0.09f, 12), point({0.58f, 0.49f, 0.25f}, 0.07f, 0.09f, 13),
-                  point({0.48f, 0.55f, 0.70f}, 0.06f, 0.08f, 14), point({0.56f, 0.48f, 0.55f}, 0.05f, 0.08f, 15),
+                  point({0.42f, 0.50f, 0.24f}, 0.07f, 0.09f, 12),
+                  point({0.58f, 0.49f, 0.25f}, 0.07f, 0.09f, 13),
+                  point({0.48f, 0.55f, 0.70f}, 0.06f, 0.08f, 14),
+                  point({0.56f, 0.48f, 0.55f}, 0.05f, 0.08f, 15),
                   point({0.44f, 0.46f, 0.45f}, 0.05f, 0.08f, 16)};
   return m;
 }
@@ -65,8 +67,8 @@ CloudModel stratocumulus() {
   m.description = "stratocumulus: a row of flat, merging cells along x";
   m.extent_m = 5000;
   for (int i = 0; i < 6; ++i)
-    m.primitives.push_back(point({0.18f + 0.13f * float(i), 0.50f + (i % 2 ? 0.03f : -0.03f), 0.30f}, 0.04f,
-                                 0.07f, std::uint32_t(31 + i), 0.6f));
+    m.primitives.push_back(point({0.18f + 0.13f * float(i), 0.50f + (i % 2 ? 0.03f : -0.03f), 0.30f}, 0.04f, 0.07f,
+                                 std::uint32_t(31 + i), 0.6f));
   return m;
 }
 

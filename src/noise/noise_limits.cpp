@@ -19,8 +19,9 @@ void check_noise_fits(const TextureSpec& spec, const gpu::Context& context, cons
                                                {size_option ? size_option : "--depth", spec.depth}};
   for (const auto& [option, value] : sizes)
     if (value > max_3d)
-      throw core::InputError(std::string(option) + ": " + std::to_string(value) + " exceeds this driver's 3D texture limit (" +
-                       context.info().renderer + "); allowed range 1 to " + std::to_string(max_3d));
+      throw core::InputError(std::string(option) + ": " + std::to_string(value) +
+                             " exceeds this driver's 3D texture limit (" + context.info().renderer +
+                             "); allowed range 1 to " + std::to_string(max_3d));
   const double available = core::host_memory_available_bytes();
   const double needed = host_bytes(spec);
   if (available > 0 && needed > available) {

@@ -26,17 +26,20 @@ int cells_along(int cells, int size, int width) {
   return static_cast<int>(static_cast<std::int64_t>(cells) * size / width);
 }
 
-glsl::FbmParams fbm_params(const TextureSpec& spec, int cells, int octaves, const ChannelSpec& c,
-                           std::uint32_t seed) {
-  return glsl::FbmParams{static_cast<float>(cells) / static_cast<float>(spec.width), octaves,
-                         c.lacunarity, c.gain, seed,
-                         glsl::ivec3(cells, cells_along(cells, spec.height, spec.width), cells_along(cells, spec.depth, spec.width))};
+glsl::FbmParams fbm_params(const TextureSpec& spec, int cells, int octaves, const ChannelSpec& c, std::uint32_t seed) {
+  return glsl::FbmParams{
+      static_cast<float>(cells) / static_cast<float>(spec.width),
+      octaves,
+      c.lacunarity,
+      c.gain,
+      seed,
+      glsl::ivec3(cells, cells_along(cells, spec.height, spec.width), cells_along(cells, spec.depth, spec.width))};
 }
 
 // Checks one fBm of a channel: whole cells on every axis at every octave, none narrower than
 // a texel, and octave frequencies that stay equal to period / size (so that it tiles).
-void validate_fbm(const TextureSpec& spec, const std::string& where, const std::string& cells_option,
-                  int cells, int octaves, const ChannelSpec& c) {
+void validate_fbm(const TextureSpec& spec, const std::string& where, const std::string& cells_option, int cells,
+                  int octaves, const ChannelSpec& c) {
   if (cells < 1 || cells > spec.width)
     throw SpecError(cells_option + ": " + where + " has " + std::to_string(cells) +
                     " cells along the width; allowed range 1 to " + std::to_string(spec.width) +
@@ -48,7 +51,8 @@ void validate_fbm(const TextureSpec& spec, const std::string& where, const std::
                     std::to_string(spec.width) + ", which gives " + number(double(cells) * spec.height / spec.width) +
                     " x " + number(double(cells) * spec.depth / spec.width) +
                     " cells along height and depth; the texture only tiles with whole cells on every axis: use a "
-                    "multiple of " + std::to_string(step));
+                    "multiple of " +
+                    std::to_string(step));
   if (octaves < 1 || octaves > max_octaves)
     throw SpecError("--octaves: " + where + " has " + std::to_string(octaves) + " octaves; allowed range 1 to " +
                     std::to_string(max_octaves));
@@ -102,11 +106,13 @@ const char* channel_letter(int channel) {
 }
 
 void validate(const TextureSpec& spec) {
-  const std::pair<const char*, int> sizes[] = {{"--width", spec.width}, {"--height", spec.height}, {"--depth", spec.depth}};
+  const std::pair<const char*, int> sizes[] = {
+      {"--width", spec.width}, {"--height", spec.height}, {"--depth", spec.depth}};
   for (const auto& [option, size] : sizes)
     if (size < 1) throw SpecError(std::string(option) + ": " + std::to_string(size) + " is not a positive size");
   if (spec.channels.empty() || spec.channels.size() > 4)
-    throw SpecError("--channels: " + std::to_string(spec.channels.size()) + " channels; allowed 1 to 4 (r, rg, rgb, rgba)");
+    throw SpecError("--channels: " + std::to_string(spec.channels.size()) +
+                    " channels; allowed 1 to 4 (r, rg, rgb, rgba)");
   for (size_t k = 0; k < spec.channels.size(); ++k) {
     const ChannelSpec& c = spec.channels[k];
     const std::string where = std::string("channel ") + channel_letter(static_cast<int>(k));

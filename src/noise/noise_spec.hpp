@@ -43,7 +43,7 @@ class SpecError : public core::InputError {
 
 const char* type_name(NoiseType type);
 NoiseType parse_type(const std::string& name);  // throws SpecError naming --type
-const char* channel_letter(int channel);          // "r", "g", "b", "a"
+const char* channel_letter(int channel);        // "r", "g", "b", "a"
 
 // Sizes, cell counts and octaves; not device limits (those need a context).
 void validate(const TextureSpec& spec);

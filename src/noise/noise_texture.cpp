@@ -19,8 +19,8 @@ void set_active(const gpu::ComputeProgram& program, const std::string& name, gls
   if (program.has_uniform(name)) program.set(name, v);
 }
 
-void set_channel(const gpu::ComputeProgram& program, const glsl::NoiseChannel& channel,
-                 const TextureSpec& spec, int stride) {
+void set_channel(const gpu::ComputeProgram& program, const glsl::NoiseChannel& channel, const TextureSpec& spec,
+                 int stride) {
   set_active(program, "u_channel.type", channel.type);
   glsl::set_uniform(program, "u_channel.fbm", channel.fbm, glsl::Members::active);
   glsl::set_uniform(program, "u_channel.worley", channel.worley, glsl::Members::active);

@@ -21,9 +21,9 @@ struct Volume {
 };
 
 struct GeneratorTimings {
-  double compute_ms = 0;   // row walks and patches, until the GPU finished
-  double device_ms = 0;    // their dispatches' GPU time (GL_TIME_ELAPSED; 0 where the driver gives none)
-  double readback_ms = 0;  // copies to host memory and channel interleaving
+  double compute_ms = 0;      // row walks and patches, until the GPU finished
+  double device_ms = 0;       // their dispatches' GPU time (GL_TIME_ELAPSED; 0 where the driver gives none)
+  double readback_ms = 0;     // copies to host memory and channel interleaving
   long patched_segments = 0;  // row segments with texels recomputed by noise_patch.comp
   int dispatches = 0;         // slabs times channels
 };

@@ -24,8 +24,7 @@ std::string Parameter::option() const {
 std::string Parameter::range_text() const {
   switch (type) {
     case Type::integer:
-    case Type::real:
-      return number_text(min) + " to " + number_text(max);
+    case Type::real: return number_text(min) + " to " + number_text(max);
     case Type::text:
     case Type::list: {
       std::string words(allowed);
@@ -33,8 +32,7 @@ std::string Parameter::range_text() const {
       for (char c : words) out += c == '|' ? std::string(", ") : std::string(1, c);
       return out;
     }
-    case Type::flag:
-      return "";
+    case Type::flag: return "";
   }
   return "";
 }
@@ -45,8 +43,10 @@ std::vector<std::string> Parameter::words() const {
     if (!((c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '-' || c == '|')) return {};
   std::vector<std::string> out(1);
   for (char c : allowed) {
-    if (c == '|') out.emplace_back();
-    else out.back() += c;
+    if (c == '|')
+      out.emplace_back();
+    else
+      out.back() += c;
   }
   return out;
 }

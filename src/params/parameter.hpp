@@ -18,7 +18,7 @@ enum Use : unsigned {
   bench_cover = 1u << 1,
   report = 1u << 2,
   render = 1u << 3,
-  scene_file = 1u << 4,   // a key of `nephele render --scene FILE`
+  scene_file = 1u << 4,  // a key of `nephele render --scene FILE`
   bench_render = 1u << 5,
   noise = 1u << 6,
   bench_noise = 1u << 7,
@@ -44,8 +44,8 @@ struct Parameter {
   unsigned uses;
   std::string_view sidecar = "";  // path in a sidecar when it differs from the key ("potential.octaves")
 
-  std::string option() const;        // "--view-steps" for key "view_steps"
-  std::string range_text() const;    // "1 to 4096", "euler, heun, rk4", "WIDTHxHEIGHT"
+  std::string option() const;           // "--view-steps" for key "view_steps"
+  std::string range_text() const;       // "1 to 4096", "euler, heun, rk4", "WIDTHxHEIGHT"
   std::string default_display() const;  // "48", "0.006", "gurten"; "" when there is none
   // Text: the allowed words when `allowed` lists lower-case words ("euler|heun"), else empty
   // (a form such as WIDTHxHEIGHT, or free text).
@@ -71,14 +71,12 @@ constexpr int size_part(std::string_view text, bool height) {
 }
 
 // Factories that keep the table readable (src/params/table.hpp).
-constexpr Parameter integer(std::string_view key, double default_value, double min, double max,
-                            std::string_view unit, std::string_view help, unsigned uses,
-                            std::string_view sidecar = "") {
+constexpr Parameter integer(std::string_view key, double default_value, double min, double max, std::string_view unit,
+                            std::string_view help, unsigned uses, std::string_view sidecar = "") {
   return {key, Type::integer, unit, default_value, "", min, max, "", help, uses, sidecar};
 }
-constexpr Parameter real(std::string_view key, double default_value, double min, double max,
-                         std::string_view unit, std::string_view help, unsigned uses,
-                         std::string_view sidecar = "") {
+constexpr Parameter real(std::string_view key, double default_value, double min, double max, std::string_view unit,
+                         std::string_view help, unsigned uses, std::string_view sidecar = "") {
   return {key, Type::real, unit, default_value, "", min, max, "", help, uses, sidecar};
 }
 constexpr Parameter text(std::string_view key, std::string_view default_value, std::string_view allowed,

@@ -11,7 +11,9 @@ namespace nephele::params {
 
 namespace {
 
-core::NumberForm form_of(bool integer_only) { return integer_only ? core::NumberForm::integer : core::NumberForm::real; }
+core::NumberForm form_of(bool integer_only) {
+  return integer_only ? core::NumberForm::integer : core::NumberForm::real;
+}
 
 // The value, shown as the user typed it when there is text (a value read back as a double may
 // print as another: 10.000000000000001 is 10 at 10 digits).
@@ -23,7 +25,8 @@ void check_value(const Parameter& p, double value, const std::string& field, con
     out << value;
     shown = out.str();
   }
-  if (!std::isfinite(value)) throw core::InputError(field, shown, p.range_text(), text.empty() ? "is not finite" : "is out of range");
+  if (!std::isfinite(value))
+    throw core::InputError(field, shown, p.range_text(), text.empty() ? "is not finite" : "is out of range");
   if (p.type == Type::integer && value != std::floor(value))
     throw core::InputError(field, shown, p.range_text(), "is not an integer");
   if (value < p.min || value > p.max) throw core::InputError(field, shown, p.range_text(), "is out of range");

@@ -57,8 +57,9 @@ std::vector<CloudLayer> choose_layers(const WeatherSample& now, const std::vecto
   if (now.cloud_high >= 0.05) {
     const double mid_rise = max_mid_cover(ahead, 12, now.time) - now.cloud_mid;
     if (now.cloud_high >= 0.7 || mid_rise >= 0.3)
-      layers.push_back({CloudType::cirrostratus, CoverageChannel::high, 8500, 9500, 5e-4f, 0, 0, 0,
-                        now.cloud_high >= 0.7 ? "high cover >= 70%: veil" : "mid cover rising within 12 h: warm front veil"});
+      layers.push_back(
+          {CloudType::cirrostratus, CoverageChannel::high, 8500, 9500, 5e-4f, 0, 0, 0,
+           now.cloud_high >= 0.7 ? "high cover >= 70%: veil" : "mid cover rising within 12 h: warm front veil"});
     else if (now.cloud_high >= 0.2 && now.cloud_high < 0.5 && now.cloud_mid < 0.2 && now.cloud_low < 0.3)
       layers.push_back({CloudType::cirrocumulus, CoverageChannel::high, 8000, 8600, 3e-3f, 0, 0, 0,
                         "high cover 20-50% with little below: small cells"});
@@ -84,8 +85,9 @@ std::vector<CloudLayer> choose_layers(const WeatherSample& now, const std::vecto
   if (low >= 0.05 && !is_foggy(now)) {
     const float ground = static_cast<float>(rules.ground_m);
     if (low >= 0.9 || nimbostratus || (now.precipitation > 0.1 && low > 0.7))
-      layers.push_back({CloudType::stratus, CoverageChannel::low, ground + 300, ground + 900, 2e-2f, 0,
-                        nimbostratus ? 0.4f : 0.0f, 0, nimbostratus ? "nimbostratus substitute: stratus below" : "low cover >= 90% or drizzle: stratus"});
+      layers.push_back(
+          {CloudType::stratus, CoverageChannel::low, ground + 300, ground + 900, 2e-2f, 0, nimbostratus ? 0.4f : 0.0f,
+           0, nimbostratus ? "nimbostratus substitute: stratus below" : "low cover >= 90% or drizzle: stratus"});
     else if (low >= 0.6)
       layers.push_back({CloudType::stratocumulus, CoverageChannel::low, ground + 700, ground + 1400, 3e-2f, 0, 0, 0,
                         "low cover 60-90%: stratocumulus"});
@@ -96,8 +98,8 @@ std::vector<CloudLayer> choose_layers(const WeatherSample& now, const std::vecto
   // Ground fog (and denser fog under nimbostratus).
   if (is_foggy(now) || nimbostratus)
     layers.push_back({CloudType::fog, CoverageChannel::fog, static_cast<float>(rules.ground_m) - 50,
-                      static_cast<float>(std::max(rules.fog_top_m, rules.ground_m + 50)), nimbostratus ? 3e-2f : 2e-2f, 0, 0, 0,
-                      nimbostratus ? "rain: denser fog" : "low cover >= 95%, calm, dry: ground fog"});
+                      static_cast<float>(std::max(rules.fog_top_m, rules.ground_m + 50)), nimbostratus ? 3e-2f : 2e-2f,
+                      0, 0, 0, nimbostratus ? "rain: denser fog" : "low cover >= 95%, calm, dry: ground fog"});
   // Towering cumulus and cumulonimbus are no layer: implicit models placed where the convective
   // channel calls for them (regional/convection.hpp).
   return layers;

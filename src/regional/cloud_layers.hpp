@@ -14,7 +14,7 @@ enum class CloudType : int {
   cirrus = 0,
   cirrostratus = 1,
   cirrocumulus = 2,
-  alto = 3,           // altostratus (morph 0) to altocumulus (morph 1), Webanck et al.'s k
+  alto = 3,  // altostratus (morph 0) to altocumulus (morph 1), Webanck et al.'s k
   cumulus = 4,
   stratocumulus = 5,
   stratus = 6,
@@ -30,16 +30,16 @@ inline constexpr int coverage_channels = 5;
 struct CloudLayer {
   CloudType type;
   CoverageChannel channel;
-  float base_m, top_m;     // altitude above the ellipsoid
-  float extinction;        // 1/m at density 1
-  float morph = 0;         // alto: 0 altostratus .. 1 altocumulus
-  float darkness = 0;      // 0 normal .. 1 black (nimbostratus substitute darkens)
+  float base_m, top_m;       // altitude above the ellipsoid
+  float extinction;          // 1/m at density 1
+  float morph = 0;           // alto: 0 altostratus .. 1 altocumulus
+  float darkness = 0;        // 0 normal .. 1 black (nimbostratus substitute darkens)
   float min_distance_m = 0;  // the layer starts this far from the camera (no rule uses it today)
-  std::string reason;      // the rule that chose it
+  std::string reason;        // the rule that chose it
 };
 
 struct LayerRules {
-  double ground_m = 540;   // terrain height for fog and the low layer (Bern)
+  double ground_m = 540;                                     // terrain height for fog and the low layer (Bern)
   double fog_top_m = params::scene::fog_top.default_number;  // top of the ground fog (sea of fog)
 };
 

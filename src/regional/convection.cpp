@@ -34,12 +34,14 @@ const char* convective_kind_name(ConvectiveKind kind) {
 ConvectiveVerdict convection_from_weather(const WeatherSample& now, const std::vector<WeatherSample>& ahead) {
   using namespace convection;
   if (now.has_weather_code && now.weather_code >= thunderstorm_code_first && now.weather_code <= thunderstorm_code_last)
-    return {ConvectiveKind::cumulonimbus, "weather_code " + std::to_string(now.weather_code) + " (95-99): thunderstorm"};
+    return {ConvectiveKind::cumulonimbus,
+            "weather_code " + std::to_string(now.weather_code) + " (95-99): thunderstorm"};
   if (now.has_cape && now.cape >= cumulonimbus_cape)
     return {ConvectiveKind::cumulonimbus, "cape >= 1000 J/kg: deep convection"};
   if (now.has_lifted_index && now.lifted_index <= cumulonimbus_lifted_index)
     return {ConvectiveKind::cumulonimbus, "lifted_index <= -2 K: deep convection"};
-  if (now.has_cape && now.cape >= towering_cape) return {ConvectiveKind::towering, "cape 250-1000 J/kg: towering cumulus"};
+  if (now.has_cape && now.cape >= towering_cape)
+    return {ConvectiveKind::towering, "cape 250-1000 J/kg: towering cumulus"};
   if (now.has_lifted_index && now.lifted_index <= towering_lifted_index)
     return {ConvectiveKind::towering, "lifted_index -2 to 0 K: towering cumulus"};
   if (now.has_cape || now.has_lifted_index || now.has_weather_code) return {};
@@ -125,7 +127,8 @@ std::vector<ConvectiveCloud> place_convective_clouds(const WeatherField& field, 
     // Boxes keep clear of each other: footprints (cubes turned alike) do not overlap.
     bool clear = true;
     for (const auto& other : clouds)
-      if (std::hypot(other.east_m - c.east_m, other.north_m - c.north_m) < 0.5 * (other.extent_m + c.extent_m) * std::sqrt(2.0))
+      if (std::hypot(other.east_m - c.east_m, other.north_m - c.north_m) <
+          0.5 * (other.extent_m + c.extent_m) * std::sqrt(2.0))
         clear = false;
     if (!clear) continue;
     c.reason = std::string(cb ? "cumulonimbus" : "towering cumulus") + " where the convective channel is " +

@@ -25,12 +25,12 @@ namespace convection {
 // usual lower bound of "moderate" instability), a lifted index <= -2 K, or a thunderstorm
 // code 95 to 99 of WMO table 4677; towering cumulus at CAPE >= 250 J/kg (assumption) or a
 // lifted index <= 0 K.
-constexpr double cumulonimbus_cape = 1000, towering_cape = 250;            // J/kg
+constexpr double cumulonimbus_cape = 1000, towering_cape = 250;              // J/kg
 constexpr double cumulonimbus_lifted_index = -2, towering_lifted_index = 0;  // K, at or below
 constexpr int thunderstorm_code_first = 95, thunderstorm_code_last = 99;
 // Weather without any of the three fields (meteoblue, older Open-Meteo requests): showers of
 // at least 2 mm/h now or within 6 h make a cumulonimbus (the rule of the former convective layer).
-constexpr double shower_rate = 2.0;   // mm/h
+constexpr double shower_rate = 2.0;  // mm/h
 constexpr double shower_hours = 6.0;
 // Without weather (assumptions): convection only between 12 and 19 h local mean solar time, the
 // diurnal maximum of convection over land, where the low cover is >= 0.5 (towering cumulus)

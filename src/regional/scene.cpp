@@ -37,18 +37,17 @@ void check_range(const std::string& where, double value, const params::Parameter
 }  // namespace
 
 const std::vector<std::string>& quality_step_keys() {
-  static const std::vector<std::string> keys = {std::string(params::scene::view_steps.key),
-                                                std::string(params::scene::light_steps.key),
-                                                std::string(params::scene::frames.key),
-                                                std::string(params::scene::resolution_divisor.key)};
+  static const std::vector<std::string> keys = {
+      std::string(params::scene::view_steps.key), std::string(params::scene::light_steps.key),
+      std::string(params::scene::frames.key), std::string(params::scene::resolution_divisor.key)};
   return keys;
 }
 
 void apply_render_quality(Scene& s, const std::string& source, const KeyOptions& options) {
   const params::RenderQuality* q = params::find_render_quality(s.quality);
   if (q == nullptr)
-    throw SceneError(label(source, options, "quality") + ": '" + s.quality + "' is not a quality (allowed: " +
-                     params::render_quality_names() + ")");
+    throw SceneError(label(source, options, "quality") + ": '" + s.quality +
+                     "' is not a quality (allowed: " + params::render_quality_names() + ")");
   const auto set = [&](const params::Parameter& p, int& field, int value) {
     if (!s.steps_given.count(std::string(p.key))) field = value;
   };
@@ -65,8 +64,7 @@ void parse_size(const std::string& text, int& width, int& height, const std::str
   // Digits only: sscanf's %d skipped spaces, took signs and wrapped 4294967297 to 1.
   const auto w = core::parse_integer(text.substr(0, x));
   const auto h = core::parse_integer(text.substr(x + 1));
-  if (!w || !h || *w < 0 || *h < 0)
-    throw SceneError(name + ": '" + text + "' " + form);
+  if (!w || !h || *w < 0 || *h < 0) throw SceneError(name + ": '" + text + "' " + form);
   for (const auto& [what, value] : {std::pair<const char*, long long>{"width", *w}, {"height", *h}})
     if (value < 1 || value > max_image_side)
       throw SceneError(name + ": " + what + " " + std::to_string(value) + " is outside the allowed range 1 to " +
@@ -109,8 +107,7 @@ void validate_scene(const Scene& s, const std::string& source, const KeyOptions&
   std::vector<std::string> seen;
   for (const auto& o : s.outputs) {
     const std::string ext = core::lowercase_extension(o);
-    if (ext != ".png" && ext != ".exr")
-      throw SceneError(source + ": 'outputs': '" + o + "' must end in .png or .exr");
+    if (ext != ".png" && ext != ".exr") throw SceneError(source + ": 'outputs': '" + o + "' must end in .png or .exr");
     // Outputs are one set inside --out (docs/formats.md): nothing may land outside it.
     const std::filesystem::path path(o);
     if (path.is_absolute() || path.has_root_name() || path.has_root_directory())

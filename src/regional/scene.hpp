@@ -22,16 +22,16 @@ class SceneError : public core::InputError {
 
 // Defaults and ranges come from the parameter table (src/params/table.hpp, namespace scene).
 struct Scene {
-  std::string view{params::scene::view.default_text};  // named viewpoint, or "" when `at` is given
+  std::string view{params::scene::view.default_text};           // named viewpoint, or "" when `at` is given
   std::optional<double> latitude_deg, longitude_deg, height_m;  // --at, overrides the viewpoint
-  std::optional<double> heading_deg;        // default: the viewpoint's heading
+  std::optional<double> heading_deg;                            // default: the viewpoint's heading
   double pitch_deg = params::scene::pitch.default_number;
   double fov_deg = params::scene::fov.default_number;
   std::string time{params::scene::time.default_text};
   int width = params::size_part(params::scene::size.default_text, false);
   int height = params::size_part(params::scene::size.default_text, true);
   bool panorama = false;
-  std::vector<std::string> weather;          // weather files (paths resolved against the scene file)
+  std::vector<std::string> weather;  // weather files (paths resolved against the scene file)
   std::uint32_t seed = params::scene::seed.default_uint32();
   // The render quality (params/render_quality.hpp) and the step settings given by name (scene
   // keys or options: "view_steps", "light_steps", "frames", "resolution_divisor"), which it
@@ -52,7 +52,7 @@ struct Scene {
   double fog_top_m = params::scene::fog_top.default_number;  // sea of fog's top, m above sea level
   double exposure = params::scene::exposure.default_number;
   int cover_size = params::scene::cover_size.default_int();  // global cover size when no weather is given
-  std::vector<std::string> outputs;          // file names (png, exr); --scene renders into --out DIR
+  std::vector<std::string> outputs;                          // file names (png, exr); --scene renders into --out DIR
 };
 
 // Scene files are read by src/io/scene_files.hpp.

@@ -21,8 +21,8 @@ std::optional<Site> find_city(const std::string& name) {
 
 double geodesic_azimuth_deg(const Site& from, const Site& to) {
   double distance = 0, azimuth1 = 0, azimuth2 = 0;
-  GeographicLib::Geodesic::WGS84().Inverse(from.latitude_deg, from.longitude_deg, to.latitude_deg,
-                                           to.longitude_deg, distance, azimuth1, azimuth2);
+  GeographicLib::Geodesic::WGS84().Inverse(from.latitude_deg, from.longitude_deg, to.latitude_deg, to.longitude_deg,
+                                           distance, azimuth1, azimuth2);
   return azimuth1 < 0 ? azimuth1 + 360.0 : azimuth1;
 }
 

@@ -15,8 +15,8 @@ struct Site {
 struct Viewpoint {
   std::string name;
   Site site;
-  std::string towards;    // the city the default view looks at
-  double heading_deg;     // default view heading, clockwise from north
+  std::string towards;  // the city the default view looks at
+  double heading_deg;   // default view heading, clockwise from north
 };
 
 // Coordinates from Wikipedia (see docs/layers.md for the sources): Gurten 46.91722 N 7.44361 E

@@ -42,7 +42,8 @@ struct Relief {
   const std::vector<Hill>& hills;
 
   Relief(const ElevationRaster& r, const std::vector<Hill>& h) : raster(r), hills(h) {
-    for (const Hill& hill : hills) bump.push_back(hill.summit_m - raster.at(hill.latitude_deg, hill.longitude_deg).value_or(0.0));
+    for (const Hill& hill : hills)
+      bump.push_back(hill.summit_m - raster.at(hill.latitude_deg, hill.longitude_deg).value_or(0.0));
   }
   // distance_m(k): the point's distance from hill k.
   template <class Distance>
@@ -90,7 +91,8 @@ TerrainGrid terrain_grid(double latitude_deg, double longitude_deg, double heigh
       const double z = std::sqrt(std::max(R * R - x * x - y * y, 0.0)) - R - height_m;
       double lat, lon, h_sphere;
       frame.Reverse(x, y, z, lat, lon, h_sphere);
-      const double h = relief.at(lat, lon, [&](size_t k) { return std::hypot(x - hill_xy[k].first, y - hill_xy[k].second); });
+      const double h =
+          relief.at(lat, lon, [&](size_t k) { return std::hypot(x - hill_xy[k].first, y - hill_xy[k].second); });
       const float altitude = static_cast<float>(h - h_sphere);
       grid.altitudes[static_cast<size_t>(j) * size + i] = altitude;
       top = std::max(top, altitude);
@@ -108,13 +110,15 @@ std::vector<float> terrain_ceilings(const std::vector<float>& altitudes, int siz
   for (int j = 0; j < size; ++j)
     for (int i = 0; i < size; ++i) {
       float m = altitudes[index(i, j)];
-      for (int k = std::max(i - window, 0); k <= std::min(i + window, size - 1); ++k) m = std::max(m, altitudes[index(k, j)]);
+      for (int k = std::max(i - window, 0); k <= std::min(i + window, size - 1); ++k)
+        m = std::max(m, altitudes[index(k, j)]);
       rows[index(i, j)] = m;
     }
   for (int j = 0; j < size; ++j)
     for (int i = 0; i < size; ++i) {
       float m = rows[index(i, j)];
-      for (int k = std::max(j - window, 0); k <= std::min(j + window, size - 1); ++k) m = std::max(m, rows[index(i, k)]);
+      for (int k = std::max(j - window, 0); k <= std::min(j + window, size - 1); ++k)
+        m = std::max(m, rows[index(i, k)]);
       out[index(i, j)] = m;
     }
   return out;

@@ -11,7 +11,8 @@ WeatherSample WeatherSeries::at(double time) const {
   if (hours.empty()) throw WeatherError(source + ": no hours");
   if (time < hours.front().time || time > hours.back().time)
     throw WeatherError(source + ": --time " + core::format_utc_minutes(time) + " is outside the file's range " +
-                       core::format_utc_minutes(hours.front().time) + " to " + core::format_utc_minutes(hours.back().time));
+                       core::format_utc_minutes(hours.front().time) + " to " +
+                       core::format_utc_minutes(hours.back().time));
   size_t i = 0;
   while (i + 1 < hours.size() && hours[i + 1].time < time) ++i;
   if (i + 1 >= hours.size() || hours[i].time == time) return hours[i];

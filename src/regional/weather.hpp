@@ -31,8 +31,8 @@ struct WeatherSample {
 };
 
 struct WeatherSeries {
-  std::string source;    // file name
-  std::string format;    // "open-meteo" or "meteoblue"
+  std::string source;  // file name
+  std::string format;  // "open-meteo" or "meteoblue"
   double latitude_deg = 0, longitude_deg = 0;
   std::vector<WeatherSample> hours;  // increasing time
 

@@ -11,8 +11,8 @@
 namespace nephele::regional {
 
 struct WeatherField {
-  int size = 0;            // texels per side
-  double extent_m = 0;     // half-size of the square, metres east and north of the camera
+  int size = 0;               // texels per side
+  double extent_m = 0;        // half-size of the square, metres east and north of the camera
   std::vector<float> values;  // [channel][row][column]; row 0 is the south edge
   float at(int channel, int column, int row) const {
     return values[(static_cast<size_t>(channel) * size + row) * size + column];

@@ -45,11 +45,9 @@ void equalise_histogram(GLuint volume, int size) {
   std::vector<unsigned> order(n);
   for (int channel = 0; channel < 2; ++channel) {
     for (size_t k = 0; k < n; ++k) order[k] = static_cast<unsigned>(k);
-    std::sort(order.begin(), order.end(), [&](unsigned a, unsigned b) {
-      return texels[4 * a + channel] < texels[4 * b + channel];
-    });
-    for (size_t rank = 0; rank < n; ++rank)
-      texels[4 * order[rank] + channel] = static_cast<float>((rank + 0.5) / n);
+    std::sort(order.begin(), order.end(),
+              [&](unsigned a, unsigned b) { return texels[4 * a + channel] < texels[4 * b + channel]; });
+    for (size_t rank = 0; rank < n; ++rank) texels[4 * order[rank] + channel] = static_cast<float>((rank + 0.5) / n);
   }
   double sum = 0, sum_squares = 0;
   for (size_t k = 0; k < n; ++k) sum += texels[4 * k + 2];
@@ -119,7 +117,8 @@ GLuint make_volume_texture(int size) {
   glTextureStorage3D(texture, levels, GL_RGBA32F, size, size, size);
   glTextureParameteri(texture, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
   glTextureParameteri(texture, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-  for (GLenum wrap : {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T, GL_TEXTURE_WRAP_R}) glTextureParameteri(texture, wrap, GL_REPEAT);
+  for (GLenum wrap : {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T, GL_TEXTURE_WRAP_R})
+    glTextureParameteri(texture, wrap, GL_REPEAT);
   return texture;
 }
 
@@ -207,17 +206,25 @@ CameraFrame camera_frame(const Camera& camera) {
 }
 
 glsl::MarchParams march_params(const Camera& camera, const std::vector<regional::CloudLayer>& layers,
-                               const regional::WeatherField& field, double unix_seconds,
-                               const RenderSettings& settings, glm::dvec2 wind_towards, double wind_speed,
-                               const ConvectiveVolumes* convective) {
+                               const regional::WeatherField& field, double unix_seconds, const RenderSettings& settings,
+                               glm::dvec2 wind_towards, double wind_speed, const ConvectiveVolumes* convective) {
   glsl::MarchParams m{};
   const auto active = marched_layers(layers, field);
   const glm::dvec2 wind = glm::length(wind_towards) > 0 ? glm::normalize(wind_towards) : glm::dvec2(0, 1);
   const double travelled = std::fmod(wind_speed * unix_seconds, offset_wrap_m);
   for (size_t i = 0; i < active.size(); ++i) {
     const auto& l = *active[i];
-    m.layers[i] = {static_cast<int>(l.type), static_cast<int>(l.channel), l.base_m, l.top_m, l.extinction, l.morph,
-                   l.darkness, l.min_distance_m, glm::vec2(wind), glm::vec2(static_cast<float>(travelled), 0.0f), -1};
+    m.layers[i] = {static_cast<int>(l.type),
+                   static_cast<int>(l.channel),
+                   l.base_m,
+                   l.top_m,
+                   l.extinction,
+                   l.morph,
+                   l.darkness,
+                   l.min_distance_m,
+                   glm::vec2(wind),
+                   glm::vec2(static_cast<float>(travelled), 0.0f),
+                   -1};
   }
   m.layer_count = static_cast<int>(active.size());
   // A layer with layers wholly above it (their base at or above its top) gets a shadow map of
@@ -226,7 +233,8 @@ glsl::MarchParams march_params(const Camera& camera, const std::vector<regional:
   for (int i = 0; i < glsl::MAX_LAYERS; ++i) {
     bool below_another = false;
     if (i < m.layer_count && settings.shadow_map_size > 0)
-      for (const auto* other : active) below_another = below_another || (other != active[i] && other->base_m >= active[i]->top_m);
+      for (const auto* other : active)
+        below_another = below_another || (other != active[i] && other->base_m >= active[i]->top_m);
     m.layers[i].shadow_map = below_another ? maps++ : -1;
   }
   m.shadow_extent = static_cast<float>(settings.max_distance_m);
@@ -249,7 +257,8 @@ glsl::MarchParams march_params(const Camera& camera, const std::vector<regional:
     // Lambertian ground of albedo 0.15 under the camera, lit by the sun and the sky.
     using namespace glsl;
     const vec3 ground(0.0f, 0.0f, static_cast<float>(earth_radius + camera.height_m));
-    const vec3 sunlight = solar_irradiance() * transmittance_to_space(ground, vec3(sun), static_cast<float>(earth_radius)) *
+    const vec3 sunlight = solar_irradiance() *
+                          transmittance_to_space(ground, vec3(sun), static_cast<float>(earth_radius)) *
                           std::max(static_cast<float>(sun.z), 0.0f);
     m.ground_radiance = (0.15f / PI_F) * (sunlight + ambient);
   }
@@ -259,8 +268,8 @@ glsl::MarchParams march_params(const Camera& camera, const std::vector<regional:
   m.powder = settings.powder;
   m.weather_extent = static_cast<float>(field.extent_m);
   m.max_distance = static_cast<float>(settings.max_distance_m);
-  const double pixel_angle = camera.panorama ? 2 * M_PI / camera.width
-                                             : 2 * std::tan(camera.fov_deg * M_PI / 360) / camera.width;
+  const double pixel_angle =
+      camera.panorama ? 2 * M_PI / camera.width : 2 * std::tan(camera.fov_deg * M_PI / 360) / camera.width;
   m.pixel_angle = static_cast<float>(pixel_angle);
   m.noise_texels = static_cast<float>(settings.noise_size);
   m.terrain = {0, 1.0f, 0.0f, 1.0f, 0.0f};
@@ -283,11 +292,12 @@ glsl::MarchParams march_params(const Camera& camera, const std::vector<regional:
 // What a render's shadow maps depend on: the layers, the camera's place, the sun, the maps'
 // extent and size, the noise volume and the weather field (not the view's direction, the steps
 // or the frame).
-std::uint64_t shadow_map_key(const glsl::MarchParams& p, int size, const NoiseVolume* noise, const regional::WeatherField& field) {
+std::uint64_t shadow_map_key(const glsl::MarchParams& p, int size, const NoiseVolume* noise,
+                             const regional::WeatherField& field) {
   std::uint64_t h = core::fnv1a(p.layers, sizeof(glsl::LayerParams) * static_cast<std::size_t>(p.layer_count));
-  const float numbers[] = {p.earth_radius,   p.camera_altitude, p.sun.x,       p.sun.y,          p.sun.z,
-                           p.shadow_extent,  p.noise_texels,    p.max_distance, p.weather_extent, float(size),
-                           p.sky_shadow_base, float(p.sky_shadow_map)};
+  const float numbers[] = {p.earth_radius,   p.camera_altitude, p.sun.x,           p.sun.y,
+                           p.sun.z,          p.shadow_extent,   p.noise_texels,    p.max_distance,
+                           p.weather_extent, float(size),       p.sky_shadow_base, float(p.sky_shadow_map)};
   h = core::fnv1a(numbers, sizeof numbers, h);
   h = core::fnv1a(p.convective, sizeof(glsl::ConvectiveParams) * static_cast<std::size_t>(p.convective_count), h);
   const std::uint64_t volume[] = {noise != nullptr ? noise->texture() : 0u, noise != nullptr ? noise->seed() : 0u};
@@ -308,7 +318,9 @@ RenderResult render_clouds(const Camera& camera, const std::vector<regional::Clo
                            glm::dvec2 wind_towards, double wind_speed, const NoiseVolume* noise,
                            const ConvectiveVolumes* convective) {
   RenderResult result;
-  auto timed = [&](const std::string& name, auto&& work) { result.timings_ms.emplace_back(name, gpu::time_pass(work)); };
+  auto timed = [&](const std::string& name, auto&& work) {
+    result.timings_ms.emplace_back(name, gpu::time_pass(work));
+  };
 
   for (const auto& layer : layers)
     if (field.max_of(int(layer.channel)) <= 0.0f)
@@ -349,7 +361,8 @@ RenderResult render_clouds(const Camera& camera, const std::vector<regional::Clo
     result.passes.push_back("terrain (" + t.source + ")");
   }
 
-  result.sun_direction = sun_direction_enu(unix_seconds, camera.latitude_deg, camera.longitude_deg, &result.sun_elevation_deg);
+  result.sun_direction =
+      sun_direction_enu(unix_seconds, camera.latitude_deg, camera.longitude_deg, &result.sun_elevation_deg);
 
   const int rows = settings.row_count > 0 ? settings.row_count : camera.height;
   if (settings.first_row < 0 || rows > camera.height - settings.first_row)
@@ -427,9 +440,11 @@ RenderResult render_clouds(const Camera& camera, const std::vector<regional::Clo
   timed("clouds", [&] {
     gpu::ComputeProgram program("render/clouds.comp");
     glsl::set_uniform(program, "u_march", params);
-    for (const auto* l : active) result.passes.push_back(std::string("march layer ") + regional::cloud_type_name(l->type));
+    for (const auto* l : active)
+      result.passes.push_back(std::string("march layer ") + regional::cloud_type_name(l->type));
     for (int c = 0; c < params.convective_count; ++c)
-      result.passes.push_back(std::string("march convective ") + regional::convective_kind_name(convective->clouds()[c].kind));
+      result.passes.push_back(std::string("march convective ") +
+                              regional::convective_kind_name(convective->clouds()[c].kind));
     image.bind_image(0, GL_WRITE_ONLY);
     ground_distance.bind_image(1, GL_WRITE_ONLY);
     glBindTextureUnit(1, noise != nullptr ? noise->texture() : 0);
@@ -450,7 +465,8 @@ RenderResult render_clouds(const Camera& camera, const std::vector<regional::Clo
     const int frames = std::max(settings.frames, 1);
     for (int frame = 0; frame < frames; ++frame) {
       program.set("u_march.frame", frame);
-      program.dispatch_covering((camera.width - phase.x + stride - 1) / stride, (rows - phase.y + stride - 1) / stride, 1);
+      program.dispatch_covering((camera.width - phase.x + stride - 1) / stride, (rows - phase.y + stride - 1) / stride,
+                                1);
       gpu::image_barrier();
       if (frames > 1) {
         const std::vector<float> pixels = image.read();
@@ -499,7 +515,8 @@ RenderResult render_clouds(const Camera& camera, const std::vector<regional::Clo
       result.upsampled_ground_distance = {full.x, full.y, 1,
                                           std::vector<float>(static_cast<std::size_t>(full.x) * full.y, NAN)};
       for (std::size_t k = 0; k < near_edges.size(); ++k)
-        result.upsampled_ground_distance.pixels[static_cast<std::size_t>(near_edges[k].y) * full.x + near_edges[k].x] = found[k];
+        result.upsampled_ground_distance.pixels[static_cast<std::size_t>(near_edges[k].y) * full.x + near_edges[k].x] =
+            found[k];
       guided = near_edges.size();
     });
     result.passes.push_back("view_depth " + std::to_string(camera.width) + "x" + std::to_string(camera.height) +

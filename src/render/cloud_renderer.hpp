@@ -20,10 +20,10 @@ class ConvectiveVolumes;  // render/convective_volumes.hpp
 
 struct Camera {
   double latitude_deg = 0, longitude_deg = 0, height_m = 0;  // WGS84, height above the ellipsoid
-  double heading_deg = 0;   // clockwise from north
-  double pitch_deg = 0;     // up from the horizon
-  double fov_deg = 60;      // horizontal field of view
-  bool panorama = false;    // full 360 x 180 view sphere instead of a perspective view
+  double heading_deg = 0;                                    // clockwise from north
+  double pitch_deg = 0;                                      // up from the horizon
+  double fov_deg = 60;                                       // horizontal field of view
+  bool panorama = false;                                     // full 360 x 180 view sphere instead of a perspective view
   int width = 1280, height = 720;
 };
 
@@ -44,21 +44,21 @@ struct ShadowMapCache {
 };
 
 struct RenderSettings {
-  int view_steps = 48;      // samples per layer interval along the view ray
-  int light_steps = 12;     // samples towards the sun per cloud sample
-  int sky_steps = 16;       // samples of the clear-sky integral
-  float powder = 0.0f;      // strength of the powder term (cloud_density.glsl), 0: none
-  int frames = 1;           // frames averaged, each with its own jitter of the march start
+  int view_steps = 48;   // samples per layer interval along the view ray
+  int light_steps = 12;  // samples towards the sun per cloud sample
+  int sky_steps = 16;    // samples of the clear-sky integral
+  float powder = 0.0f;   // strength of the powder term (cloud_density.glsl), 0: none
+  int frames = 1;        // frames averaged, each with its own jitter of the march start
   // render_prepared marches 1/N of the width and height and upsamples (render/upsample.hpp);
   // render_clouds itself always renders the camera's size.
   int resolution_divisor = 1;
   double max_distance_m = 150000;
   std::uint32_t seed = 1;
-  int noise_size = 64;      // texels per side of the noise volume
+  int noise_size = 64;  // texels per side of the noise volume
   // Texels per side of the shadow maps of layers with layers above them (docs/rendering.md,
   // "Shadows between layers"); they span max_distance_m each way from the camera. 0: none.
   int shadow_map_size = 512;
-  bool read_shadow_maps = false;  // RenderResult::shadow_maps gets their texels (tests)
+  bool read_shadow_maps = false;                 // RenderResult::shadow_maps gets their texels (tests)
   std::shared_ptr<ShadowMapCache> shadow_cache;  // none: the maps are made for each render
   // Only rows [first_row, first_row + row_count) of the image are marched (row_count 0: every
   // row); the others are left undefined. Each pixel is the same as in a whole render: the
@@ -81,10 +81,10 @@ struct RenderSettings {
 };
 
 struct RenderResult {
-  core::ImageData radiance;        // RGBA float, linear; A = cloud opacity
-  std::vector<std::string> passes;   // what ran, in order (for --verbose and tests)
+  core::ImageData radiance;         // RGBA float, linear; A = cloud opacity
+  std::vector<std::string> passes;  // what ran, in order (for --verbose and tests)
   std::vector<std::pair<std::string, double>> timings_ms;
-  glm::dvec3 sun_direction;          // east, north, up
+  glm::dvec3 sun_direction;  // east, north, up
   double sun_elevation_deg = 0;
   // Pixels whose shader loops needed 65535 iterations or more: llvmpipe cuts those short (in
   // any frame of an accumulation, counted per frame); and which: pixel y width + x is bit k % 32
@@ -113,7 +113,8 @@ struct RenderResult {
 // the ellipsoid best at the viewpoint.
 double osculating_earth_radius(double latitude_deg);
 // Sun direction in the local east-north-up frame.
-glm::dvec3 sun_direction_enu(double unix_seconds, double latitude_deg, double longitude_deg, double* elevation_deg = nullptr);
+glm::dvec3 sun_direction_enu(double unix_seconds, double latitude_deg, double longitude_deg,
+                             double* elevation_deg = nullptr);
 // Sky irradiance on a horizontal surface at an altitude (CPU twin of the shader's sky), used as
 // the clouds' ambient light.
 glm::vec3 sky_irradiance(glm::vec3 sun, double earth_radius, double altitude_m);
@@ -156,8 +157,8 @@ bool needs_noise_volume(const std::vector<regional::CloudLayer>& layers, const r
 // in the field (at most MAX_LAYERS), camera, sun, sky light and step counts. render_clouds
 // uploads it; the marcher's C++ twin takes it as it is.
 glsl::MarchParams march_params(const Camera& camera, const std::vector<regional::CloudLayer>& layers,
-                               const regional::WeatherField& field, double unix_seconds,
-                               const RenderSettings& settings, glm::dvec2 wind_towards = {0, 1}, double wind_speed = 0,
+                               const regional::WeatherField& field, double unix_seconds, const RenderSettings& settings,
+                               glm::dvec2 wind_towards = {0, 1}, double wind_speed = 0,
                                const ConvectiveVolumes* convective = nullptr);
 
 // How many shadow maps a render with these parameters makes (layers with layers above them).
@@ -173,9 +174,9 @@ int sky_shadow_map_size(int shadow_map_size);
 // of one scene with other step counts share it. `convective`: the convective clouds' volumes,
 // marched with the layers (docs/convection.md); none: no convective cloud.
 RenderResult render_clouds(const Camera& camera, const std::vector<regional::CloudLayer>& layers,
-                           const regional::WeatherField& field, double unix_seconds,
-                           const RenderSettings& settings, glm::dvec2 wind_towards = {0, 1}, double wind_speed = 0,
-                           const NoiseVolume* noise = nullptr, const ConvectiveVolumes* convective = nullptr);
+                           const regional::WeatherField& field, double unix_seconds, const RenderSettings& settings,
+                           glm::dvec2 wind_towards = {0, 1}, double wind_speed = 0, const NoiseVolume* noise = nullptr,
+                           const ConvectiveVolumes* convective = nullptr);
 
 // Display encoding for PNG: exposure, the ACES filmic curve fit of Narkowicz (2015), sRGB.
 core::ImageData tone_map(const core::ImageData& radiance, double exposure);

@@ -41,7 +41,8 @@ ConvectiveVolumes::~ConvectiveVolumes() {
 std::vector<float> ConvectiveVolumes::read() const {
   std::vector<float> values(static_cast<size_t>(size_) * size_ * size_ * count());
   if (texture_ != 0)
-    glGetTextureImage(texture_, 0, GL_RED, GL_FLOAT, static_cast<GLsizei>(values.size() * sizeof(float)), values.data());
+    glGetTextureImage(texture_, 0, GL_RED, GL_FLOAT, static_cast<GLsizei>(values.size() * sizeof(float)),
+                      values.data());
   return values;
 }
 

@@ -15,10 +15,10 @@ namespace nephele::render {
 
 struct PreviewSettings {
   int width = 384, height = 384;
-  int view_steps = 128;             // samples across the box's edge
-  int light_steps = 8;              // samples towards the sun
+  int view_steps = 128;  // samples across the box's edge
+  int light_steps = 8;   // samples towards the sun
   double sun_elevation_deg = 35;
-  double sun_azimuth_deg = 225;     // clockwise from north (+y): the south-west, behind the camera's left
+  double sun_azimuth_deg = 225;  // clockwise from north (+y): the south-west, behind the camera's left
   double fov_deg = 50;
   // The camera orbits `target` (model units) `distance` extents away, looking at it along
   // `heading_deg` (clockwise from north, +y) and `pitch_deg` (up from level). The defaults

@@ -73,8 +73,7 @@ GLuint equirect_texture(const core::ImageData& image) {
   glTextureStorage2D(id, levels, GL_RGBA16F, image.width, image.height);
   std::vector<float> rgba(static_cast<size_t>(image.width) * image.height * 4, 1.0f);
   for (size_t k = 0, n = static_cast<size_t>(image.width) * image.height; k < n; ++k)
-    for (int c = 0; c < 3; ++c)
-      rgba[4 * k + c] = image.pixels[k * image.channels + std::min(c, image.channels - 1)];
+    for (int c = 0; c < 3; ++c) rgba[4 * k + c] = image.pixels[k * image.channels + std::min(c, image.channels - 1)];
   glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
   glTextureSubImage2D(id, 0, 0, 0, image.width, image.height, GL_RGBA, GL_FLOAT, rgba.data());
   glGenerateTextureMipmap(id);
@@ -124,7 +123,8 @@ GLuint detail_texture() {
   glTextureSubImage3D(id, 0, 0, 0, 0, n, n, n, GL_RED, GL_FLOAT, values.data());
   glTextureParameteri(id, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
   glTextureParameteri(id, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-  for (GLenum wrap : {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T, GL_TEXTURE_WRAP_R}) glTextureParameteri(id, wrap, GL_REPEAT);
+  for (GLenum wrap : {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T, GL_TEXTURE_WRAP_R})
+    glTextureParameteri(id, wrap, GL_REPEAT);
   return id;
 }
 
@@ -235,7 +235,9 @@ double OrbitRenderer::render_into(const OrbitCamera& camera, double unix_seconds
   // q = |camera - centre|^2 - r^2 = (h - h_r)(2R + h + h_r) for a sphere at altitude h_r: exact
   // in double, and no cancellation at all when the camera is 1 m above the ground.
   const double h = camera.altitude_m;
-  auto q = [&](double sphere_altitude) { return static_cast<float>((h - sphere_altitude) * (2 * R + h + sphere_altitude)); };
+  auto q = [&](double sphere_altitude) {
+    return static_cast<float>((h - sphere_altitude) * (2 * R + h + sphere_altitude));
+  };
   const gpu::ComputeProgram& p = gl_->program;
   return gpu::time_pass([&] {
     p.use();
@@ -276,14 +278,15 @@ RenderResult OrbitRenderer::render(const OrbitCamera& camera, double unix_second
   check_camera(camera);
   RenderResult result;
   const OrbitSettings& s = settings_;
-  result.sun_direction = sun_direction_enu(unix_seconds, camera.latitude_deg, camera.longitude_deg, &result.sun_elevation_deg);
+  result.sun_direction =
+      sun_direction_enu(unix_seconds, camera.latitude_deg, camera.longitude_deg, &result.sun_elevation_deg);
   gpu::Texture image = gpu::Texture::plane(camera.width, camera.height, GL_RGBA32F);
   result.timings_ms.emplace_back("orbit", render_into(camera, unix_seconds, image.id()));
   result.passes = {"orbit: ground, cloud shell (" + std::to_string(s.cloud_steps) + " steps), shadows (" +
                    std::to_string(s.shadow_steps) + "), atmosphere (" + std::to_string(s.sky_steps) + ")"};
   result.timings_ms.emplace_back("read back", gpu::time_pass([&] {
-    result.radiance = {camera.width, camera.height, 4, image.read()};
-  }));
+                                   result.radiance = {camera.width, camera.height, 4, image.read()};
+                                 }));
   return result;
 }
 

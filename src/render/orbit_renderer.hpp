@@ -18,9 +18,9 @@ namespace nephele::render {
 struct OrbitCamera {
   double latitude_deg = 0, longitude_deg = 0;  // the point below the camera (spherical planet)
   double altitude_m = 2000000;                 // above the planet's sphere, 1 m to 4e7 m
-  double heading_deg = 0;   // clockwise from north
-  double pitch_deg = -90;   // up from the local horizon; -90 looks at the planet's centre
-  double fov_deg = 70;      // horizontal field of view
+  double heading_deg = 0;                      // clockwise from north
+  double pitch_deg = -90;                      // up from the local horizon; -90 looks at the planet's centre
+  double fov_deg = 70;                         // horizontal field of view
   int width = 1280, height = 720;
 };
 
@@ -31,14 +31,14 @@ double atmosphere_top_km();
 bool cloud_shell_fits(double base_m, double thickness_m);
 
 struct OrbitSettings {
-  double planet_radius_m = 6371000;     // mean Earth radius (IUGG)
-  double cloud_base_m = 2000;           // altitude of the cloud shell's bottom
-  double cloud_thickness_m = 8000;      // the shell's thickness
-  double cloud_extinction = 0.02;       // 1/m at density 1 (optical depth 20 per km)
-  double night_lights = 0.08;           // radiance (W m^-2 sr^-1 nm^-1) of a city-light texel of value 1
-  int cloud_steps = 32;                 // samples along a view ray through the shell
-  int shadow_steps = 6;                 // samples from the ground towards the sun
-  int sky_steps = 12;                   // samples of the atmosphere along a view ray
+  double planet_radius_m = 6371000;  // mean Earth radius (IUGG)
+  double cloud_base_m = 2000;        // altitude of the cloud shell's bottom
+  double cloud_thickness_m = 8000;   // the shell's thickness
+  double cloud_extinction = 0.02;    // 1/m at density 1 (optical depth 20 per km)
+  double night_lights = 0.08;        // radiance (W m^-2 sr^-1 nm^-1) of a city-light texel of value 1
+  int cloud_steps = 32;              // samples along a view ray through the shell
+  int shadow_steps = 6;              // samples from the ground towards the sun
+  int sky_steps = 12;                // samples of the atmosphere along a view ray
 };
 
 // The planet's surface: equirect images, longitude -180 at the left edge, north up, RGB or RGBA,
@@ -56,8 +56,8 @@ struct CoverCube {
 
 // Camera frame in Earth-centred, Earth-fixed axes (+Z north, +X latitude 0 longitude 0), double.
 struct OrbitFrame {
-  glm::dvec3 position;                // camera, m from the planet's centre
-  glm::dvec3 forward, right, up;      // unit vectors of the view
+  glm::dvec3 position;            // camera, m from the planet's centre
+  glm::dvec3 forward, right, up;  // unit vectors of the view
 };
 OrbitFrame orbit_frame(const OrbitCamera& camera, double planet_radius_m);
 // Unit direction towards the sun in Earth-centred, Earth-fixed axes at a UTC time.

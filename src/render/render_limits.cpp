@@ -14,13 +14,13 @@ void check_render_fits(const gpu::Context& context, int width, int height, const
   const int max_side = gpu::max_texture_size();
   if (width > max_side || height > max_side)
     throw core::InputError(option + ": " + size + " exceeds this driver's image limit (" + context.info().renderer +
-                     "); allowed range 1 to " + std::to_string(max_side) + " on each side");
+                           "); allowed range 1 to " + std::to_string(max_side) + " on each side");
   // The render target is one RGBA32F image.
   auto fits = [width](int h) { return gpu::driver_accepts(GL_PROXY_TEXTURE_2D, GL_RGBA32F, width, h); };
   if (!fits(height))
-    throw core::InputError(option + ": " + size + " is a larger RGBA32F image than this driver (" + context.info().renderer +
-                     ") can allocate; allowed at width " + std::to_string(width) + ": height 1 to " +
-                     std::to_string(gpu::largest_fitting(height, fits)));
+    throw core::InputError(option + ": " + size + " is a larger RGBA32F image than this driver (" +
+                           context.info().renderer + ") can allocate; allowed at width " + std::to_string(width) +
+                           ": height 1 to " + std::to_string(gpu::largest_fitting(height, fits)));
   // Host copies: the radiance read back (16 bytes per pixel), the tone-mapped image (12) and
   // the encoders' buffers (at most 16 more); a software rasteriser holds the image (16) too.
   const double pixels = static_cast<double>(width) * height;

@@ -51,11 +51,11 @@ long fill_unmarched(core::ImageData& image, const Camera& camera, int stride, gl
   if (image.channels != 4 || image.width != camera.width || image.height != camera.height || camera.panorama)
     throw std::logic_error("fill_unmarched: an RGBA image of a perspective camera's size");
   const int w = image.width, h = image.height;
-  const core::ImageData* previous =
-      history != nullptr && history->radiance.width == w && history->radiance.height == h &&
-              history->radiance.channels == 4 && !history->camera.panorama
-          ? &history->radiance
-          : nullptr;
+  const core::ImageData* previous = history != nullptr && history->radiance.width == w &&
+                                            history->radiance.height == h && history->radiance.channels == 4 &&
+                                            !history->camera.panorama
+                                        ? &history->radiance
+                                        : nullptr;
   const CameraFrame now = camera_frame(camera);
   CameraFrame before{};
   if (previous != nullptr) before = camera_frame(history->camera);

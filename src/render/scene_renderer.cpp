@@ -99,8 +99,8 @@ PreparedScene prepare_scene(const regional::Scene& scene, const std::vector<regi
     for (const regional::WeatherSeries& series : weather) {
       now.push_back(series.at(time));
       ahead.push_back(series.ahead(time, look_ahead_hours));
-      stations.push_back({series.latitude_deg, series.longitude_deg,
-                          regional::station_coverage(now.back(), ahead.back())});
+      stations.push_back(
+          {series.latitude_deg, series.longitude_deg, regional::station_coverage(now.back(), ahead.back())});
       const double d = regional::geodesic_distance_m(out.camera.latitude_deg, out.camera.longitude_deg,
                                                      series.latitude_deg, series.longitude_deg);
       if (d < nearest_distance) {
@@ -186,7 +186,8 @@ SceneRender render_prepared(const PreparedScene& prepared, const RenderSettings&
   // the noise's level of detail, grows with it), and the image is upsampled to the full size.
   const int divisor = std::max(settings.resolution_divisor, 1);
   if (divisor > 1 && settings.march_stride > 1)
-    throw std::logic_error("render_prepared: a march stride leaves pixels for reprojection, which upsampling would blur");
+    throw std::logic_error(
+        "render_prepared: a march stride leaves pixels for reprojection, which upsampling would blur");
   Camera marched = out.camera;
   marched.width = std::max(1, out.camera.width / divisor);
   marched.height = std::max(1, out.camera.height / divisor);

@@ -16,8 +16,8 @@ struct SceneRender {
   Camera camera;
   std::vector<regional::CloudLayer> layers;
   RenderResult render;
-  std::vector<std::string> passes;  // every pass that ran, in order
-  std::string weather_source;       // "stations" or "global cover"
+  std::vector<std::string> passes;            // every pass that ran, in order
+  std::string weather_source;                 // "stations" or "global cover"
   regional::WeatherSample weather_at_camera;  // what the layer rules read
   // The towering cumulus and cumulonimbus placed where the weather calls for convection
   // (docs/convection.md), and what called for it at the camera (empty: no convection there).
@@ -30,7 +30,7 @@ struct SceneRender {
 struct PreparedScene {
   SceneRender partial;  // camera, layers, weather source and sample, the passes so far
   regional::WeatherField field;
-  double time = 0;      // Unix seconds
+  double time = 0;            // Unix seconds
   glm::dvec2 wind{0.0, 1.0};  // direction the wind blows towards (east, north)
   double wind_speed = 0.0;    // m/s
   // The ground (io::load_terrain from the scene's `terrain`); none: the bare sphere.

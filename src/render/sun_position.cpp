@@ -28,12 +28,12 @@ SunPosition sun_position(double unix_seconds, double latitude_deg, double longit
   const double local_sidereal = wrap_degrees(gmst_hours * 15.0 + longitude_deg) * degree;
   const double hour_angle = local_sidereal - right_ascension;
   const double latitude = latitude_deg * degree;
-  const double sin_elevation = std::sin(latitude) * std::sin(declination) +
-                               std::cos(latitude) * std::cos(declination) * std::cos(hour_angle);
+  const double sin_elevation =
+      std::sin(latitude) * std::sin(declination) + std::cos(latitude) * std::cos(declination) * std::cos(hour_angle);
   const double elevation = std::asin(std::clamp(sin_elevation, -1.0, 1.0));
-  const double azimuth = std::atan2(-std::cos(declination) * std::sin(hour_angle),
-                                    std::sin(declination) * std::cos(latitude) -
-                                        std::cos(declination) * std::cos(hour_angle) * std::sin(latitude));
+  const double azimuth = std::atan2(
+      -std::cos(declination) * std::sin(hour_angle),
+      std::sin(declination) * std::cos(latitude) - std::cos(declination) * std::cos(hour_angle) * std::sin(latitude));
   return {elevation / degree, wrap_degrees(azimuth / degree), declination / degree};
 }
 

@@ -4,8 +4,8 @@
 namespace nephele::render {
 
 struct SunPosition {
-  double elevation_deg;   // above the astronomical horizon, no refraction
-  double azimuth_deg;     // clockwise from north
+  double elevation_deg;  // above the astronomical horizon, no refraction
+  double azimuth_deg;    // clockwise from north
   double declination_deg;
 };
 

@@ -76,7 +76,8 @@ std::vector<glm::ivec2> guide_pixels(const core::ImageData& guide, int width, in
   // Cell (i, j) spans source pixels i, i + 1 and j, j + 1: 1 where they are not all alike.
   std::vector<unsigned char> edge(static_cast<std::size_t>(guide.width) * guide.height, 0);
   const auto at = [&](int i, int j) {
-    return guide.pixels[static_cast<std::size_t>(std::min(j, guide.height - 1)) * guide.width + std::min(i, guide.width - 1)];
+    return guide
+        .pixels[static_cast<std::size_t>(std::min(j, guide.height - 1)) * guide.width + std::min(i, guide.width - 1)];
   };
   for (int j = 0; j < guide.height; ++j)
     for (int i = 0; i < guide.width; ++i) {
@@ -101,14 +102,17 @@ core::ImageData upsample_guided(const core::ImageData& image, const core::ImageD
                                 const core::ImageData& upsampled_guide) {
   if (image.width < 1 || image.height < 1 || upsampled_guide.width < 1 || upsampled_guide.height < 1)
     throw std::invalid_argument("upsample_guided: empty image");
-  if (guide.width != image.width || guide.height != image.height || guide.channels != 1 || upsampled_guide.channels != 1)
+  if (guide.width != image.width || guide.height != image.height || guide.channels != 1 ||
+      upsampled_guide.channels != 1)
     throw std::invalid_argument("upsample_guided: the guides must be one channel, the first at the image's size");
   const int width = upsampled_guide.width, height = upsampled_guide.height, channels = image.channels;
   core::ImageData out{width, height, channels, {}};
   out.pixels.resize(static_cast<size_t>(width) * height * channels);
   // Below this sum of weights none of the 2 x 2 is alike: a pixel across an edge from all four.
   constexpr double alike = 1e-3;
-  const auto source = [&](int xi, int yi) { return &image.pixels[(static_cast<size_t>(yi) * image.width + xi) * channels]; };
+  const auto source = [&](int xi, int yi) {
+    return &image.pixels[(static_cast<size_t>(yi) * image.width + xi) * channels];
+  };
   std::vector<double> sum(channels);
   for (int y = 0; y < height; ++y)
     for (int x = 0; x < width; ++x) {

@@ -16,9 +16,7 @@ namespace nephele::glsl {
 struct CubeSource {
   int size = 0;
   const vec4* texels = nullptr;
-  vec4 fetch(int face, int i, int j) const {
-    return texels[(static_cast<size_t>(face) * size + j) * size + i];
-  }
+  vec4 fetch(int face, int i, int j) const { return texels[(static_cast<size_t>(face) * size + j) * size + i]; }
 };
 
 // The curl spline's coefficient grid in host memory (curl_spline.glsl): vec4 per node, faces in GL
@@ -96,7 +94,9 @@ vec3 warp_velocity(vec3 w, IN(CubeSource) source);
 vec3 warp_velocity(vec3 w, IN(CurlParams) curl);
 vec3 warp_velocity(vec3 w, IN(SplineSource) spline);
 template <class F>
-vec3 warp_velocity(vec3 w, const F& velocity) { return velocity(w); }
+vec3 warp_velocity(vec3 w, const F& velocity) {
+  return velocity(w);
+}
 
 }  // namespace nephele::glsl
 

@@ -26,8 +26,8 @@ double encode_cover_images(const std::vector<float>& texels, const std::vector<f
   const size_t per_face = static_cast<size_t>(size) * size;
   for (int face = 0; face < 6; ++face)
     jobs.push_back(std::async(std::launch::async, [&, face] {
-      const io::ImageData image{size, size, 1,
-                                std::vector<float>(texels.begin() + face * per_face, texels.begin() + (face + 1) * per_face)};
+      const io::ImageData image{
+          size, size, 1, std::vector<float>(texels.begin() + face * per_face, texels.begin() + (face + 1) * per_face)};
       return io::encode_image(image, io::exr_encoding({"Y"}), "face").size();
     }));
   jobs.push_back(std::async(std::launch::async, [&] {
@@ -50,7 +50,7 @@ noise::TextureSpec single(int size, noise::NoiseType type, int cells, int octave
 }  // namespace
 
 const std::vector<std::string>& cover_bench_passes() {
-  static const std::vector<std::string> passes = {"identity", "spline",    "curl",     "warp",     "density",
+  static const std::vector<std::string> passes = {"identity",  "spline",   "curl",     "warp",    "density",
                                                   "calibrate", "coverage", "diagnose", "equirect"};
   return passes;
 }
@@ -75,9 +75,8 @@ CoverBenchRow bench_cover_size(cover::CoverParameters parameters, int size, int 
         }
     std::vector<float> equirect;
     gpu::DeviceTimer equirect_device;
-    const double equirect_wall = gpu::time_pass([&] {
-      equirect = cover::equirect_from_cube(cover.cover_field(), 4 * size, 2 * size, 0, &equirect_device);
-    });
+    const double equirect_wall = gpu::time_pass(
+        [&] { equirect = cover::equirect_from_cube(cover.cover_field(), 4 * size, 2 * size, 0, &equirect_device); });
     // Without device time, the wall clock of the resampling includes its read-back.
     const double equirect_ms = equirect_device.milliseconds();
     device.back().push_back(equirect_ms > 0 ? equirect_ms : equirect_wall);

@@ -29,10 +29,10 @@ CoverBenchRow bench_cover_size(cover::CoverParameters parameters, int size, int 
 
 // --- bench noise
 struct NoiseRun {
-  double first_ms = 0;     // first generate(): shader compilation (or cache lookup) included
-  double compute_ms = 0;   // median: until the values are in GPU memory (wall clock)
-  double device_ms = 0;    // median: the dispatches' GPU time (GL_TIME_ELAPSED; 0: none from the driver)
-  double total_ms = 0;     // median: until they are interleaved in host memory
+  double first_ms = 0;    // first generate(): shader compilation (or cache lookup) included
+  double compute_ms = 0;  // median: until the values are in GPU memory (wall clock)
+  double device_ms = 0;   // median: the dispatches' GPU time (GL_TIME_ELAPSED; 0: none from the driver)
+  double total_ms = 0;    // median: until they are interleaved in host memory
 };
 // Into one host array, as FastNoise's benchmarks fill a caller's array.
 NoiseRun measure_noise(noise::TextureGenerator& generator, const noise::TextureSpec& spec, int repeat);
@@ -50,7 +50,7 @@ model::CloudModel spiral_of_cumuli(int n, model::Blend blend);
 struct ModelBenchRow {
   int primitives = 0;
   model::Blend blend = model::Blend::per_primitive;
-  double full_ms = 0, edit_ms = 0;              // medians
+  double full_ms = 0, edit_ms = 0;                // medians
   double full_occupancy = 0, edit_occupancy = 0;  // fraction of bricks computed
 };
 // A full volume and one-primitive edits (the first primitive moved by a brick and back) of

@@ -21,7 +21,7 @@ namespace nephele::studies {
 namespace {
 
 constexpr double degree = M_PI / 180.0;
-constexpr int histogram_bins = 20;   // over (0, 1], after the clear bin
+constexpr int histogram_bins = 20;  // over (0, 1], after the clear bin
 constexpr double stats_max_latitude = 60.0;
 constexpr long min_object_area = 10;
 
@@ -259,7 +259,8 @@ PerimeterDimension perimeter_dimension(const std::vector<CloudObject>& objects, 
 
 CoverStatistics cover_statistics(const std::filesystem::path& cover_dir) {
   if (!std::filesystem::is_directory(cover_dir))
-    throw core::InputError("COVER_DIR", cover_dir.string(), "a directory written by nephele generate", "is not a directory");
+    throw core::InputError("COVER_DIR", cover_dir.string(), "a directory written by nephele generate",
+                           "is not a directory");
   CoverStatistics stats;
   const std::filesystem::path sidecar_path = cover_dir / "cover.json";
   std::string text;
@@ -267,7 +268,8 @@ CoverStatistics cover_statistics(const std::filesystem::path& cover_dir) {
     text = core::read_input_file(sidecar_path.string());
     stats.sidecar = json::parse(text);
   } catch (const std::exception& e) {
-    throw core::InputError(sidecar_path.string(), "", "the cover.json of nephele generate", std::string("cannot be read: ") + e.what());
+    throw core::InputError(sidecar_path.string(), "", "the cover.json of nephele generate",
+                           std::string("cannot be read: ") + e.what());
   }
   const json::Value* parameters = stats.sidecar.find("parameters");
   const json::Value* size_value = parameters && parameters->is_object() ? parameters->find("size") : nullptr;
@@ -286,12 +288,14 @@ CoverStatistics cover_statistics(const std::filesystem::path& cover_dir) {
     try {
       image = io::read_image(equirect_path);
     } catch (const std::exception& e) {
-      throw core::InputError(equirect_path.string(), "", "an OpenEXR equirect map", std::string("cannot be read: ") + e.what());
+      throw core::InputError(equirect_path.string(), "", "an OpenEXR equirect map",
+                             std::string("cannot be read: ") + e.what());
     }
     if (image.width != 4 * size || image.height != 2 * size)
-      throw core::InputError(equirect_path.string(), std::to_string(image.width) + " x " + std::to_string(image.height),
-                             std::to_string(4 * size) + " x " + std::to_string(2 * size) + " (4 size x 2 size of cover.json)",
-                             "has the wrong size");
+      throw core::InputError(
+          equirect_path.string(), std::to_string(image.width) + " x " + std::to_string(image.height),
+          std::to_string(4 * size) + " x " + std::to_string(2 * size) + " (4 size x 2 size of cover.json)",
+          "has the wrong size");
     Equirect m{image.width, image.height, {}};
     m.values.resize(static_cast<size_t>(m.width) * m.height);
     for (size_t k = 0; k < m.values.size(); ++k) m.values[k] = image.pixels[k * image.channels];
@@ -304,14 +308,15 @@ CoverStatistics cover_statistics(const std::filesystem::path& cover_dir) {
   // Histogram bins: clear, then 20 over (0, 1]; weighted by solid angle.
   stats.histogram.assign(histogram_bins + 1, 0.0);
   auto add = [&](float v, double weight) {
-    const int bin = v > 0.0f ? 1 + std::min(histogram_bins - 1, static_cast<int>(std::ceil(v * histogram_bins)) - 1) : 0;
+    const int bin =
+        v > 0.0f ? 1 + std::min(histogram_bins - 1, static_cast<int>(std::ceil(v * histogram_bins)) - 1) : 0;
     stats.histogram[std::max(bin, 0)] += weight;
   };
   if (has_faces) {
     const io::CoverFaces faces = io::read_cover_faces(cover_dir);
     if (faces.size != size)
-      throw core::InputError((cover_dir / "cover_px.exr").string(), std::to_string(faces.size), std::to_string(size) + " (parameters.size of cover.json)",
-                             "has the wrong face size");
+      throw core::InputError((cover_dir / "cover_px.exr").string(), std::to_string(faces.size),
+                             std::to_string(size) + " (parameters.size of cover.json)", "has the wrong face size");
     stats.coverage_source = "faces";
     stats.coverage_2deg = band_coverage_faces(faces.texels, size, 90);
     stats.coverage_10deg = band_coverage_faces(faces.texels, size, 18);
@@ -328,8 +333,10 @@ CoverStatistics cover_statistics(const std::filesystem::path& cover_dir) {
   if (const json::Value* result = stats.sidecar.find("result"))
     if (const json::Value* profile = result->is_object() ? result->find("profile") : nullptr) {
       stats.target_2deg = json_numbers(profile->find("targets"));
-      if (stats.target_2deg.size() == 90) stats.target_10deg = coarsen(stats.target_2deg, 5);
-      else stats.target_2deg.clear();
+      if (stats.target_2deg.size() == 90)
+        stats.target_10deg = coarsen(stats.target_2deg, 5);
+      else
+        stats.target_2deg.clear();
     }
   if (map) {
     stats.spectrum = zonal_power_spectrum(*map, stats_max_latitude);
@@ -351,7 +358,9 @@ json::Value statistics_json(const CoverStatistics& s) {
   root.set("program", "nephele stats");
   json::Value coverage;
   coverage.set("source", s.coverage_source);
-  coverage.set("definition", "solid-angle fraction of each band where cover > 0; a texel counts in the band of its centre's geocentric latitude");
+  coverage.set("definition",
+               "solid-angle fraction of each band where cover > 0; a texel counts in the band of its centre's "
+               "geocentric latitude");
   coverage.set("bands_south_to_north", "band b spans -90 + w b to -90 + w (b + 1) degrees");
   json::Value two, ten;
   two.set("width_deg", 2.0);
@@ -362,7 +371,8 @@ json::Value statistics_json(const CoverStatistics& s) {
     two.set("target", array_of(s.target_2deg));
     ten.set("target", array_of(s.target_10deg));
     double worst = 0.0;
-    for (size_t b = 0; b < s.target_10deg.size(); ++b) worst = std::max(worst, std::abs(s.coverage_10deg[b] - s.target_10deg[b]));
+    for (size_t b = 0; b < s.target_10deg.size(); ++b)
+      worst = std::max(worst, std::abs(s.coverage_10deg[b] - s.target_10deg[b]));
     ten.set("max_abs_error", worst);
   }
   coverage.set("bands_2deg", two);
@@ -370,7 +380,9 @@ json::Value statistics_json(const CoverStatistics& s) {
   root.set("coverage_by_latitude", coverage);
   if (!s.spectrum.empty()) {
     json::Value spectrum;
-    spectrum.set("definition", "mean over equirect rows within 60 deg of the equator of |X_k|^2 / W^2 (row mean removed); k: cycles around the latitude circle");
+    spectrum.set("definition",
+                 "mean over equirect rows within 60 deg of the equator of |X_k|^2 / W^2 (row mean removed); k: cycles "
+                 "around the latitude circle");
     spectrum.set("power", array_of(s.spectrum));
     spectrum.set("fit_k_low", s.fit_k_low);
     spectrum.set("fit_k_high", s.fit_k_high);
@@ -378,7 +390,10 @@ json::Value statistics_json(const CoverStatistics& s) {
     spectrum.set("fit_points", s.spectrum_fit.points);
     root.set("zonal_spectrum", spectrum);
     json::Value perimeter;
-    perimeter.set("definition", "objects: 4-connected cloudy pixels (cover > 0) of the equirect rows within 60 deg of the equator, periodic in longitude, not touching the first or last of those rows, at least 10 pixels; P: pixel edges to clear pixels; D = 2 x least-squares slope of log P against log A");
+    perimeter.set("definition",
+                  "objects: 4-connected cloudy pixels (cover > 0) of the equirect rows within 60 deg of the equator, "
+                  "periodic in longitude, not touching the first or last of those rows, at least 10 pixels; P: pixel "
+                  "edges to clear pixels; D = 2 x least-squares slope of log P against log A");
     perimeter.set("dimension", s.perimeter.dimension);
     perimeter.set("objects", s.perimeter.objects);
     perimeter.set("min_area_px", static_cast<double>(s.perimeter.min_area));
@@ -386,7 +401,8 @@ json::Value statistics_json(const CoverStatistics& s) {
     root.set("perimeter_dimension", perimeter);
   }
   json::Value histogram;
-  histogram.set("definition", "solid-angle fraction: [0] cover = 0 (clear), then 20 bins (k/20, (k+1)/20] for k = 0..19");
+  histogram.set("definition",
+                "solid-angle fraction: [0] cover = 0 (clear), then 20 bins (k/20, (k+1)/20] for k = 0..19");
   histogram.set("fractions", array_of(s.histogram));
   root.set("histogram", histogram);
   // The fold figures of the warp, as generate measured them.
@@ -415,12 +431,14 @@ struct Canvas {
       const double x = x0 + (x1 - x0) * s / steps, y = y0 + (y1 - y0) * s / steps;
       for (int a = 0; a < thickness; ++a)
         for (int b = 0; b < thickness; ++b)
-          dot(static_cast<int>(std::lround(x)) + a - thickness / 2, static_cast<int>(std::lround(y)) + b - thickness / 2, rgb);
+          dot(static_cast<int>(std::lround(x)) + a - thickness / 2,
+              static_cast<int>(std::lround(y)) + b - thickness / 2, rgb);
     }
   }
   void square(double x, double y, int half, const float rgb[3]) {
     for (int a = -half; a <= half; ++a)
-      for (int b = -half; b <= half; ++b) dot(static_cast<int>(std::lround(x)) + a, static_cast<int>(std::lround(y)) + b, rgb);
+      for (int b = -half; b <= half; ++b)
+        dot(static_cast<int>(std::lround(x)) + a, static_cast<int>(std::lround(y)) + b, rgb);
   }
   void text(double x, double y, const std::string& t, int size = 14) {
     const float black[3] = {0, 0, 0};
@@ -475,7 +493,8 @@ std::vector<unsigned char> plot_png(const CoverStatistics& s) {
   curve(cover_panel, s.coverage_2deg, 2.0, blue);
   for (size_t b = 0; b < s.coverage_10deg.size(); ++b)
     canvas.square(cover_panel.px(-85.0 + 10.0 * b), cover_panel.py(s.coverage_10deg[b]), 3, red);
-  canvas.text(70, 30, "Coverage by latitude (" + s.coverage_source + "): 2-deg bands blue, 10-deg red, target black", 15);
+  canvas.text(70, 30, "Coverage by latitude (" + s.coverage_source + "): 2-deg bands blue, 10-deg red, target black",
+              15);
   canvas.text(250, 472, "geocentric latitude (degrees)", 14);
 
   if (!s.spectrum.empty()) {
@@ -483,9 +502,10 @@ std::vector<unsigned char> plot_png(const CoverStatistics& s) {
     for (double p : s.spectrum)
       if (p > 0.0) low = std::min(low, std::log10(p)), high = std::max(high, std::log10(p));
     if (!(high > low)) low = -1, high = 0;
-    const Panel spectrum_panel{680, 50, 480, 380, 0.0, std::log10(double(s.spectrum.size())), std::floor(low),
-                               std::ceil(high)};
-    for (int d = 0; d <= static_cast<int>(spectrum_panel.x1); ++d) spectrum_panel.grid_x(canvas, d, "1e" + std::to_string(d));
+    const Panel spectrum_panel{
+        680, 50, 480, 380, 0.0, std::log10(double(s.spectrum.size())), std::floor(low), std::ceil(high)};
+    for (int d = 0; d <= static_cast<int>(spectrum_panel.x1); ++d)
+      spectrum_panel.grid_x(canvas, d, "1e" + std::to_string(d));
     for (int d = static_cast<int>(spectrum_panel.y0); d <= static_cast<int>(spectrum_panel.y1); d += 2)
       spectrum_panel.grid_y(canvas, d, "1e" + std::to_string(d));
     spectrum_panel.frame(canvas);
@@ -507,11 +527,15 @@ std::vector<unsigned char> plot_png(const CoverStatistics& s) {
       canvas.line(spectrum_panel.px(a), spectrum_panel.py(s.spectrum_fit.intercept + s.spectrum_fit.slope * a),
                   spectrum_panel.px(b), spectrum_panel.py(s.spectrum_fit.intercept + s.spectrum_fit.slope * b), red, 2);
     }
-    canvas.text(680, 30, "Zonal power spectrum, |lat| <= 60: slope " + fixed(s.spectrum_fit.slope, 2) + " (red fit, k " +
-                             fixed(s.fit_k_low, 0) + "-" + fixed(s.fit_k_high, 0) + ")", 15);
+    canvas.text(680, 30,
+                "Zonal power spectrum, |lat| <= 60: slope " + fixed(s.spectrum_fit.slope, 2) + " (red fit, k " +
+                    fixed(s.fit_k_low, 0) + "-" + fixed(s.fit_k_high, 0) + ")",
+                15);
     canvas.text(830, 472, "zonal wavenumber k (cycles per circle)", 14);
-    canvas.text(680, 505, "perimeter dimension D = " + fixed(s.perimeter.dimension, 3) + " (" +
-                              std::to_string(s.perimeter.objects) + " objects >= 10 px)", 15);
+    canvas.text(680, 505,
+                "perimeter dimension D = " + fixed(s.perimeter.dimension, 3) + " (" +
+                    std::to_string(s.perimeter.objects) + " objects >= 10 px)",
+                15);
   }
   return io::encode_image(canvas.image, io::png_encoding(8), "stats.png");
 }

@@ -61,15 +61,15 @@ PerimeterDimension perimeter_dimension(const std::vector<CloudObject>& objects, 
 
 // Everything `nephele stats` reports on a cover directory.
 struct CoverStatistics {
-  std::string coverage_source;               // "faces" or "equirect"
+  std::string coverage_source;  // "faces" or "equirect"
   std::vector<double> coverage_2deg, coverage_10deg;
   std::vector<double> target_2deg, target_10deg;  // from cover.json (empty without a profile)
-  std::vector<double> spectrum;              // k = 1 .. W/2 (empty without an equirect)
+  std::vector<double> spectrum;                   // k = 1 .. W/2 (empty without an equirect)
   PowerLaw spectrum_fit;
   double fit_k_low = 0, fit_k_high = 0;
   PerimeterDimension perimeter;
-  std::vector<double> histogram;             // [0] clear (cover 0), then 20 bins over (0, 1]
-  json::Value sidecar;                        // cover.json
+  std::vector<double> histogram;  // [0] clear (cover 0), then 20 bins over (0, 1]
+  json::Value sidecar;            // cover.json
 };
 
 // Reads COVER_DIR (cover.json, the faces and/or the equirect EXR) and computes the statistics.

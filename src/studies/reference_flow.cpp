@@ -94,8 +94,6 @@ std::vector<glm::vec3> sample_directions(int count, std::uint32_t seed) {
   return directions;
 }
 
-double great_circle_distance(dvec3 a, dvec3 b) {
-  return std::atan2(glm::length(glm::cross(a, b)), glm::dot(a, b));
-}
+double great_circle_distance(dvec3 a, dvec3 b) { return std::atan2(glm::length(glm::cross(a, b)), glm::dot(a, b)); }
 
 }  // namespace nephele::studies

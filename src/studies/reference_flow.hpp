@@ -20,9 +20,9 @@ struct ReferenceOptions {
 
 struct ReferencePoint {
   glm::dvec3 end{0.0};
-  long steps = 0;           // attempted steps
-  bool converged = false;   // false: max_steps or the deadline ran out (end is where it got to)
-  bool cut = false;         // the deadline ran out before this point was finished
+  long steps = 0;          // attempted steps
+  bool converged = false;  // false: max_steps or the deadline ran out (end is where it got to)
+  bool cut = false;        // the deadline ran out before this point was finished
   // The reference's own error: the sum of the accepted steps' local error estimates, radians
   // (a first-order bound of the global error that ignores the flow's stretching).
   double error_estimate = 0.0;

@@ -34,10 +34,14 @@ RenderSweepOptions RenderSweepOptions::full() {
   o.view_steps = {8, 16, 32, 48, 96};
   o.light_steps = {2, 4, 6, 12};
   const regional::Scene d;
-  o.extra = {{d.view_steps, d.light_steps, 2, 1}, {d.view_steps, d.light_steps, 4, 1},
-             {d.view_steps, d.light_steps, 1, 2}, {d.view_steps, d.light_steps, 1, 4},
-             {24, 6, 4, 1},                       {d.view_steps, d.light_steps, 4, 2},
-             {8, 2, 1, 2},                        {8, 2, 1, 4}};
+  o.extra = {{d.view_steps, d.light_steps, 2, 1},
+             {d.view_steps, d.light_steps, 4, 1},
+             {d.view_steps, d.light_steps, 1, 2},
+             {d.view_steps, d.light_steps, 1, 4},
+             {24, 6, 4, 1},
+             {d.view_steps, d.light_steps, 4, 2},
+             {8, 2, 1, 2},
+             {8, 2, 1, 4}};
   o.reference_view = 192;
   o.reference_light = 24;
   o.reference_frames = 4;
@@ -134,7 +138,8 @@ std::vector<RenderErrorRow> render_error_sweep(const regional::Scene& scene, con
     s.resolution_divisor = v.divisor;  // render_prepared marches fewer pixels and upsamples
     const auto start = std::chrono::steady_clock::now();
     const SceneRender r = render::render_prepared(prepared, s, &noise);
-    if (render_ms != nullptr) *render_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    if (render_ms != nullptr)
+      *render_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     if (time_ms != nullptr)
       for (const auto& [name, ms] : r.render.timings_ms)
         if (name == "clouds") *time_ms = ms;
@@ -158,8 +163,8 @@ std::vector<RenderErrorRow> render_error_sweep(const regional::Scene& scene, con
                              options.reference_frames, 1};
     RenderErrorRow& row = reference_check->half_steps;
     row = {half.view_steps, half.light_steps, half.frames, 1};
-    measure_render_error(render_variant(half, &row.time_ms, &row.render_ms).render.radiance, reference.render.radiance, base.exposure,
-                         excluded, row);
+    measure_render_error(render_variant(half, &row.time_ms, &row.render_ms).render.radiance, reference.render.radiance,
+                         base.exposure, excluded, row);
   }
   std::vector<RenderErrorRow> rows;
   for (const RenderVariant& v : options.variants()) {

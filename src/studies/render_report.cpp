@@ -103,7 +103,8 @@ std::string render_error_svg(const std::vector<RenderErrorRow>& rows, const std:
   studies::begin_document(s, 600, 490, title);
   s << "<text x='300' y='38' text-anchor='middle' font-size='11'>" << studies::escape(subtitle) << "</text>\n";
   const studies::LogLogPanel panel(30, 20, times, errors);
-  panel.draw_axes(s, "time of the clouds pass, all frames, wall-clock (ms)", "image error, rms of display values [0, 1]");
+  panel.draw_axes(s, "time of the clouds pass, all frames, wall-clock (ms)",
+                  "image error, rms of display values [0, 1]");
   // One polyline per light-step count, in order of view steps; each point labelled by them.
   for (size_t li = 0; li < lights.size(); ++li) {
     std::vector<RenderErrorRow> series;
@@ -153,16 +154,16 @@ std::string render_summary_markdown(const std::vector<RenderErrorRow>& rows, con
   std::ostringstream s;
   char line[768];
   s << "## Render: image error against run time\n\n";
-  std::snprintf(line, sizeof line,
-                "The built-in default scene (Gurten, global cover as the weather) at %d x %d pixels, rendered with each "
-                "pair of view and light steps, over several frames (each with its own jitter) and at lower "
-                "resolutions (upsampled bilinearly), and compared with a reference of %d view x %d light steps over "
-                "%d frames. The error is the RMS over pixels and RGB of the display values in [0, 1] (exposure, "
-                "filmic curve and sRGB as in the PNG); the RMS and the largest difference of the linear radiance, "
-                "relative to the reference's mean, are given beside it. Times are the wall-clock time of the clouds "
-                "pass, all frames together (render_error.csv, render_error_vs_runtime.svg).\n\n",
-                options.width, options.height, options.reference_view, options.reference_light,
-                options.reference_frames);
+  std::snprintf(
+      line, sizeof line,
+      "The built-in default scene (Gurten, global cover as the weather) at %d x %d pixels, rendered with each "
+      "pair of view and light steps, over several frames (each with its own jitter) and at lower "
+      "resolutions (upsampled bilinearly), and compared with a reference of %d view x %d light steps over "
+      "%d frames. The error is the RMS over pixels and RGB of the display values in [0, 1] (exposure, "
+      "filmic curve and sRGB as in the PNG); the RMS and the largest difference of the linear radiance, "
+      "relative to the reference's mean, are given beside it. Times are the wall-clock time of the clouds "
+      "pass, all frames together (render_error.csv, render_error_vs_runtime.svg).\n\n",
+      options.width, options.height, options.reference_view, options.reference_light, options.reference_frames);
   s << line;
   if (reference.limited > 0) {
     std::snprintf(line, sizeof line,
@@ -196,7 +197,8 @@ std::string render_summary_markdown(const std::vector<RenderErrorRow>& rows, con
   }
   const RenderErrorRow& d = choice.default_row;
   std::snprintf(line, sizeof line,
-                "- Defaults (the final quality, `--quality final`, and the library's): %s, display rms %.4f, rel rms %.4f, clouds %.1f ms.\n",
+                "- Defaults (the final quality, `--quality final`, and the library's): %s, display rms %.4f, rel rms "
+                "%.4f, clouds %.1f ms.\n",
                 render_variant_name(d).c_str(), d.display_rms, d.rms_error, d.time_ms);
   s << line;
   if (choice.has_cheapest) {
@@ -261,7 +263,8 @@ std::string render_quality_markdown(const std::vector<RenderErrorRow>& rows, con
                 "pixels, against %d view x %d light steps over %d frame(s) at full resolution. Display rms as above; "
                 "render ms: the whole render (shadow maps, clouds, the upsampling and its guide), not the process "
                 "around it (render_quality.csv).\n\n",
-                options.width, options.height, options.reference_view, options.reference_light, options.reference_frames);
+                options.width, options.height, options.reference_view, options.reference_light,
+                options.reference_frames);
   s << line;
   s << "| quality | settings | target | display rms | meets it | render ms |\n|---|---|---|---|---|---|\n";
   for (std::size_t k = 0; k < rows.size(); ++k) {

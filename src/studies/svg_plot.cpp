@@ -79,8 +79,8 @@ void LogLogPanel::draw_axes(std::ostream& s, const std::string& x_label, const s
   }
   s << "<text x='" << x0_ + left + pw / 2 << "' y='" << y0_ + height - 12 << "' text-anchor='middle'>"
     << escape(x_label) << "</text>\n";
-  s << "<text transform='translate(" << x0_ + 16 << "," << y0_ + top + ph / 2
-    << ") rotate(-90)' text-anchor='middle'>" << escape(y_label) << "</text>\n";
+  s << "<text transform='translate(" << x0_ + 16 << "," << y0_ + top + ph / 2 << ") rotate(-90)' text-anchor='middle'>"
+    << escape(y_label) << "</text>\n";
 }
 
 void polyline(std::ostream& s, const std::vector<std::pair<double, double>>& points, const std::string& colour,

@@ -22,8 +22,8 @@ class LogLogPanel {
  public:
   static constexpr double width = 520, height = 400, left = 70, bottom = 50, top = 30, right = 20;
 
-  LogLogPanel(double x0, double y0, const std::vector<double>& xs, const std::vector<double>& ys,
-              double x_floor = 1e-3, double y_floor = 1e-9);
+  LogLogPanel(double x0, double y0, const std::vector<double>& xs, const std::vector<double>& ys, double x_floor = 1e-3,
+              double y_floor = 1e-9);
 
   double x(double value) const;  // document coordinates of a data value
   double y(double value) const;

@@ -133,9 +133,9 @@ SweepResult run_sweep(const SweepOptions& o, const std::function<void(const std:
   if (o.budget_ms > 0.0)
     reference_options.deadline =
         reference_start + std::chrono::microseconds(static_cast<long long>(o.budget_ms * 1000.0));
-  const std::vector<ReferencePoint> reference = reference_warps(starts, curl, flow_offset, flow_time, reference_options);
-  result.reference_seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - reference_start).count();
+  const std::vector<ReferencePoint> reference =
+      reference_warps(starts, curl, flow_offset, flow_time, reference_options);
+  result.reference_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - reference_start).count();
   result.samples = static_cast<int>(starts.size());
   double steps_sum = 0.0;
   for (const auto& r : reference) {
@@ -175,8 +175,7 @@ SweepResult run_sweep(const SweepOptions& o, const std::function<void(const std:
         if (integrator == Integrator::adaptive) {
           for (float tolerance : o.tolerances) configs.push_back({o.base.iterations, o.base.step, tolerance});
         } else {
-          for (int steps : o.steps)
-            configs.push_back({steps, static_cast<float>(flow_time / steps), o.base.tolerance});
+          for (int steps : o.steps) configs.push_back({steps, static_cast<float>(flow_time / steps), o.base.tolerance});
         }
         for (const Config& config : configs) {
           cover::CoverParameters p = o.base;
@@ -222,8 +221,10 @@ SweepResult run_sweep(const SweepOptions& o, const std::function<void(const std:
           double spent_ms = 0.0;
           for (int r = 0; r < std::max(1, o.repeat) && (r == 0 || spent_ms < o.budget_ms / 3); ++r) {
             const double c0 = process_cpu_ms();
-            if (spline) cover.run_spline();
-            else cover.run_curl();
+            if (spline)
+              cover.run_spline();
+            else
+              cover.run_curl();
             const double c1 = process_cpu_ms();
             cover.run_warp();
             const double c2 = process_cpu_ms();
@@ -263,10 +264,11 @@ SweepResult run_sweep(const SweepOptions& o, const std::function<void(const std:
             if (!std::isfinite(length) || std::abs(length - 1.0f) > 1e-5f) row.off_sphere = true;
             if (!reference[k].converged) continue;
             warp_errors.push_back(great_circle_distance(dvec3(w), reference[k].end));
-            const float approximate = glsl::cover_from_density(glsl::cover_density_shifted(w, density, density_offset), calibration.threshold,
-                                                               calibration.density_max);
-            const float exact = glsl::cover_from_density(glsl::cover_density_shifted(glm::vec3(reference[k].end), density, density_offset),
-                                                         calibration.threshold, calibration.density_max);
+            const float approximate = glsl::cover_from_density(glsl::cover_density_shifted(w, density, density_offset),
+                                                               calibration.threshold, calibration.density_max);
+            const float exact = glsl::cover_from_density(
+                glsl::cover_density_shifted(glm::vec3(reference[k].end), density, density_offset),
+                calibration.threshold, calibration.density_max);
             cover_errors.push_back(std::abs(static_cast<double>(approximate) - exact));
           }
           row.warp_err_rms = rms_of(warp_errors);
@@ -318,7 +320,8 @@ std::vector<ObservedOrder> observed_orders(const std::vector<SweepRow>& rows, do
       }
     const double spread = n * sxx - sx * sx;
     if (n < 2 || !(spread > 0)) continue;
-    orders.push_back({first.integrator, first.curl_mode, first.size, -(n * sxy - sx * sy) / spread, static_cast<int>(n)});
+    orders.push_back(
+        {first.integrator, first.curl_mode, first.size, -(n * sxy - sx * sy) / spread, static_cast<int>(n)});
   }
   return orders;
 }
@@ -380,7 +383,8 @@ std::string stability_csv(const std::vector<SweepRow>& rows) {
   char line[1024];
   for (const auto& r : rows) {
     std::snprintf(line, sizeof line,
-                  "%s,%s,%d,%d,%.6g,%.3g,%.4f,%.4f,%.4f,%.4f,%.6e,%.6e,%.6g,%.6g,%.4g,%.6e,%.6e,%.6g,%.6g,%.6g,%.3f,%.0f,%ld,%d\n",
+                  "%s,%s,%d,%d,%.6g,%.3g,%.4f,%.4f,%.4f,%.4f,%.6e,%.6e,%.6g,%.6g,%.4g,%.6e,%.6e,%.6g,%.6g,%.6g,%.3f,%."
+                  "0f,%ld,%d\n",
                   integrator_name(r.integrator), curl_mode_name(r.curl_mode), r.size, r.steps, r.step, r.tolerance,
                   r.time_ms, r.curl_ms, r.warp_ms, r.wall_ms, r.warp_err_median, r.warp_err_p99, r.stiffness.max_rate,
                   r.stiffness.stiffness, r.stiffness.limit, r.stiffness.beyond_fraction, r.folding.folded_fraction,
@@ -494,10 +498,11 @@ std::string summary_markdown(const SweepResult& result, const SweepOptions& opti
                 "The reference's own error estimate (sum of its accepted local error estimates, largest over the "
                 "points) is %.1e rad: warp errors near it are not resolved.%s\n\n",
                 result.reference_error_estimate,
-                result.cut_samples > 0
-                    ? (" The budget (--budget-ms " + format("%.0f", options.budget_ms) + ") cut the reference short: " +
-                       std::to_string(result.cut_samples) + " of the points above were not finished.").c_str()
-                    : "");
+                result.cut_samples > 0 ? (" The budget (--budget-ms " + format("%.0f", options.budget_ms) +
+                                          ") cut the reference short: " + std::to_string(result.cut_samples) +
+                                          " of the points above were not finished.")
+                                             .c_str()
+                                       : "");
   s << line;
   s << "Times are the fastest of up to " << options.repeat
     << " runs of the curl pass (sampled curl) or the spline's grid (spline curl) plus the warp pass, "
@@ -535,8 +540,9 @@ std::string summary_markdown(const SweepResult& result, const SweepOptions& opti
       s << "| " << c.size << " | no default run in the sweep | | | | | | | |\n";
       continue;
     }
-    std::snprintf(line, sizeof line, "| %d %s | %.1f | %.3e | %s | %s | %s | %s | %s | %s |\n", c.size, curl_mode_name(c.baseline_mode),
-                  c.baseline.time_ms, c.baseline.warp_err_rms, c.has_equal_error ? name(c.equal_error).c_str() : "none",
+    std::snprintf(line, sizeof line, "| %d %s | %.1f | %.3e | %s | %s | %s | %s | %s | %s |\n", c.size,
+                  curl_mode_name(c.baseline_mode), c.baseline.time_ms, c.baseline.warp_err_rms,
+                  c.has_equal_error ? name(c.equal_error).c_str() : "none",
                   c.has_equal_error ? format("%.1f", c.equal_error.time_ms).c_str() : "-",
                   c.has_equal_error ? format("%.2fx", c.speedup).c_str() : "-",
                   c.has_equal_time ? name(c.equal_time).c_str() : "none",
@@ -559,7 +565,8 @@ std::string summary_markdown(const SweepResult& result, const SweepOptions& opti
   s << "| run | h | max rate | stiffness h rho | stable limit | beyond limit (sphere fraction) | folded fraction | "
        "rms(J - 1) | mean sub-steps | capped texels | off sphere |\n|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const auto& r : result.rows) {
-    std::snprintf(line, sizeof line, "| %s size %d | %.4g | %.1f | %.3g | %.3g | %.2e | %.2e | %.3g | %.1f | %ld | %s |\n",
+    std::snprintf(line, sizeof line,
+                  "| %s size %d | %.4g | %.1f | %.3g | %.3g | %.2e | %.2e | %.3g | %.1f | %ld | %s |\n",
                   name(r).c_str(), r.size, r.step, r.stiffness.max_rate, r.stiffness.stiffness, r.stiffness.limit,
                   r.stiffness.beyond_fraction, r.folding.folded_fraction, r.folding.area_error_rms,
                   r.substeps.mean_attempts, r.substeps.capped_texels, r.off_sphere ? "yes" : "no");
@@ -567,7 +574,8 @@ std::string summary_markdown(const SweepResult& result, const SweepOptions& opti
   }
   if (!result.skipped.empty()) {
     s << "\n## Skipped runs (predicted time over the budget of " << format("%.0f", options.budget_ms) << " ms)\n\n";
-    for (const auto& k : result.skipped) s << "- " << k.description << ": " << format("%.0f", k.predicted_ms) << " ms\n";
+    for (const auto& k : result.skipped)
+      s << "- " << k.description << ": " << format("%.0f", k.predicted_ms) << " ms\n";
   }
   return s.str();
 }

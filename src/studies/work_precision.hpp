@@ -13,26 +13,26 @@
 
 namespace nephele::studies {
 
+using cover::all_integrators;
+using cover::curl_mode_name;
 using cover::CurlMode;
 using cover::FlowRates;
 using cover::FoldingReport;
 using cover::Integrator;
+using cover::integrator_name;
 using cover::StiffnessReport;
 using cover::SubstepReport;
-using cover::all_integrators;
-using cover::curl_mode_name;
-using cover::integrator_name;
 
 struct SweepOptions {
-  cover::CoverParameters base;         // the flow and cover; T = base.iterations * base.step
+  cover::CoverParameters base;  // the flow and cover; T = base.iterations * base.step
   std::vector<int> sizes;
   std::vector<Integrator> integrators;  // fixed-step ones run `steps`, adaptive `tolerances`
   std::vector<CurlMode> curl_modes;
   std::vector<int> steps;
   std::vector<float> tolerances;
-  int sample_grid = 16;                 // 6 sample_grid^2 sample points
-  int repeat = 3;                       // timed runs per configuration; the fastest counts
-  double budget_ms = 30000.0;           // skip runs predicted to take longer than this
+  int sample_grid = 16;        // 6 sample_grid^2 sample points
+  int repeat = 3;              // timed runs per configuration; the fastest counts
+  double budget_ms = 30000.0;  // skip runs predicted to take longer than this
   ReferenceOptions reference;
 
   // Runs the sweep plans (some may be skipped by the budget), for progress reports.
@@ -46,9 +46,9 @@ struct SweepRow {
   Integrator integrator = Integrator::euler;
   CurlMode curl_mode = CurlMode::sampled;
   int size = 0;
-  int steps = 0;            // K; adaptive: mean attempted steps per texel, rounded
-  double step = 0.0;        // h; adaptive: the first step
-  double tolerance = 0.0;   // adaptive only
+  int steps = 0;           // K; adaptive: mean attempted steps per texel, rounded
+  double step = 0.0;       // h; adaptive: the first step
+  double tolerance = 0.0;  // adaptive only
   // Curl pass (sampled only) + warp pass, fastest of the repeats; on a CPU device (llvmpipe)
   // CPU time of all threads, else wall-clock time. wall_ms is always wall-clock.
   double time_ms = 0.0;
@@ -75,10 +75,10 @@ struct Comparison {
   SweepRow baseline;
   bool has_equal_error = false;  // the fastest run with warp_err_rms <= the baseline's
   SweepRow equal_error;
-  double speedup = 0.0;          // baseline time / its time
-  bool has_equal_time = false;   // the most accurate run with time_ms <= the baseline's
+  double speedup = 0.0;         // baseline time / its time
+  bool has_equal_time = false;  // the most accurate run with time_ms <= the baseline's
   SweepRow equal_time;
-  double error_ratio = 0.0;      // baseline warp_err_rms / its warp_err_rms
+  double error_ratio = 0.0;  // baseline warp_err_rms / its warp_err_rms
 };
 
 // The observed order of a fixed-step scheme: minus the least-squares slope of log(warp_err_rms)
@@ -101,14 +101,14 @@ struct SweepResult {
   std::vector<SkippedRun> skipped;
   std::vector<Comparison> comparisons;
   int samples = 0;
-  int unconverged_samples = 0;   // reference points dropped from the statistics (cut ones included)
-  int cut_samples = 0;           // of those, the points the budget cut short
+  int unconverged_samples = 0;            // reference points dropped from the statistics (cut ones included)
+  int cut_samples = 0;                    // of those, the points the budget cut short
   double reference_error_estimate = 0.0;  // largest error estimate of a converged reference point, radians
   double reference_seconds = 0.0;
   double mean_reference_steps = 0.0;
   double flow_time = 0.0;
   std::string device;
-  bool cpu_device = false;       // llvmpipe: times are CPU times
+  bool cpu_device = false;  // llvmpipe: times are CPU times
 };
 
 // Runs the sweep; needs a current OpenGL context. `progress` gets one line per run.
@@ -117,7 +117,8 @@ struct SweepResult {
 SweepResult run_sweep(const SweepOptions& options, const std::function<void(const std::string&)>& progress,
                       const std::function<void(int)>& advance = {});
 
-std::vector<Comparison> compare_with_default(const std::vector<SweepRow>& rows, CurlMode baseline_mode = CurlMode::sampled);
+std::vector<Comparison> compare_with_default(const std::vector<SweepRow>& rows,
+                                             CurlMode baseline_mode = CurlMode::sampled);
 
 // error_vs_runtime.csv: integrator, curl_mode, size, steps, time_ms, warp_err_rms, warp_err_max,
 // cover_err_rms, cover_err_max.

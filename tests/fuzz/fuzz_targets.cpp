@@ -162,9 +162,13 @@ void text_input(const std::uint8_t* data, std::size_t size) {
 }
 
 const std::vector<Target>& targets() {
-  static const std::vector<Target> all = {
-      {"json", json_input},   {"time", time_input}, {"scene", scene_input}, {"weather", weather_input},
-      {"cloud_model", cloud_model_input}, {"profile", profile_input}, {"text", text_input}};
+  static const std::vector<Target> all = {{"json", json_input},
+                                          {"time", time_input},
+                                          {"scene", scene_input},
+                                          {"weather", weather_input},
+                                          {"cloud_model", cloud_model_input},
+                                          {"profile", profile_input},
+                                          {"text", text_input}};
   return all;
 }
 

@@ -18,13 +18,13 @@ class Finding : public std::logic_error {
   using std::logic_error::logic_error;
 };
 
-void json_input(const std::uint8_t* data, std::size_t size);     // core::json parse/write
-void time_input(const std::uint8_t* data, std::size_t size);     // core::parse_utc_time
-void scene_input(const std::uint8_t* data, std::size_t size);    // io::parse_scene
-void weather_input(const std::uint8_t* data, std::size_t size);  // io::parse_weather
+void json_input(const std::uint8_t* data, std::size_t size);         // core::json parse/write
+void time_input(const std::uint8_t* data, std::size_t size);         // core::parse_utc_time
+void scene_input(const std::uint8_t* data, std::size_t size);        // io::parse_scene
+void weather_input(const std::uint8_t* data, std::size_t size);      // io::parse_weather
 void cloud_model_input(const std::uint8_t* data, std::size_t size);  // io::parse_cloud_model
-void profile_input(const std::uint8_t* data, std::size_t size);  // io::parse_profile_csv
-void text_input(const std::uint8_t* data, std::size_t size);     // core::parse_decimal, core::printable
+void profile_input(const std::uint8_t* data, std::size_t size);      // io::parse_profile_csv
+void text_input(const std::uint8_t* data, std::size_t size);         // core::parse_decimal, core::printable
 
 struct Target {
   const char* name;  // also the folder of its seed corpus, tests/fuzz/corpus/<name>/

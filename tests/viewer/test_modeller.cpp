@@ -114,7 +114,8 @@ double largest_difference(const core::ImageData& a, const core::ImageData& b) {
   REQUIRE(a.height == b.height);
   REQUIRE(a.channels == b.channels);
   double largest = 0;
-  for (std::size_t k = 0; k < a.pixels.size(); ++k) largest = std::max(largest, double(std::abs(a.pixels[k] - b.pixels[k])));
+  for (std::size_t k = 0; k < a.pixels.size(); ++k)
+    largest = std::max(largest, double(std::abs(a.pixels[k] - b.pixels[k])));
   return largest;
 }
 
@@ -141,8 +142,8 @@ TEST_CASE("modeller: a click at a primitive's projected centre selects it, a cli
     REQUIRE(at.x > 0);
     REQUIRE(at.x < kWidth);
     // The picking's projection is the pinhole's (to float rounding of a few 1e-5 pixels).
-    const glsl::vec3 projected = viewer::project(v.state(), viewer::centre(v.state().model.primitives[std::size_t(i)]),
-                                                 kWidth, kHeight);
+    const glsl::vec3 projected =
+        viewer::project(v.state(), viewer::centre(v.state().model.primitives[std::size_t(i)]), kWidth, kHeight);
     CHECK(projected.x == Approx(at.x).epsilon(0).margin(1e-3));
     CHECK(projected.y == Approx(at.y).epsilon(0).margin(1e-3));
     // What is picked is what the pixel shows: the cloud is opaque there.
@@ -240,7 +241,8 @@ TEST_CASE("modeller: Shift + scroll resizes the selected primitive by 1.1 per no
   CHECK(v.state().selected == -1);
   CHECK(v.state().camera.heading_deg == Approx(heading + 8 * 180.0 / kWidth).epsilon(0).margin(1e-12));
   CHECK(v.state().camera.pitch_deg == Approx(pitch - 2 * 180.0 / kWidth).epsilon(0).margin(1e-12));
-  for (std::size_t i = 0; i < edited.primitives.size(); ++i) CHECK(v.state().model.primitives[i] == edited.primitives[i]);
+  for (std::size_t i = 0; i < edited.primitives.size(); ++i)
+    CHECK(v.state().model.primitives[i] == edited.primitives[i]);
 }
 
 TEST_CASE("modeller: N adds a copy beside the selected primitive and Delete removes it, down to one primitive",
@@ -308,9 +310,10 @@ TEST_CASE("modeller: N adds a copy beside the selected primitive and Delete remo
   CHECK(v.model_status() == "a model keeps at least one primitive");
 }
 
-TEST_CASE("modeller: Ctrl+S saves the edited model whole, the file reads back to it exactly, and nephele model "
-          "makes the same volume and frame from it",
-          "[window][modeller]") {
+TEST_CASE(
+    "modeller: Ctrl+S saves the edited model whole, the file reads back to it exactly, and nephele model "
+    "makes the same volume and frame from it",
+    "[window][modeller]") {
   test::TemporaryDirectory out(true);
   const auto file = out.path / "edited.cloud.json";
   // The file opened: the model as nephele model reads it.

@@ -62,7 +62,8 @@ double largest_difference(const core::ImageData& a, const core::ImageData& b) {
   REQUIRE(a.height == b.height);
   REQUIRE(a.channels == b.channels);
   double largest = 0;
-  for (std::size_t k = 0; k < a.pixels.size(); ++k) largest = std::max(largest, double(std::abs(a.pixels[k] - b.pixels[k])));
+  for (std::size_t k = 0; k < a.pixels.size(); ++k)
+    largest = std::max(largest, double(std::abs(a.pixels[k] - b.pixels[k])));
   return largest;
 }
 
@@ -82,8 +83,9 @@ TEST_CASE("the window shows the image nephele render makes headless of the same 
 
   test::TemporaryDirectory out(true);
   const auto exr = out.path / "view.exr";
-  const auto r = test::run(std::string("render --at ") + kAt + " --heading 300 --pitch 8 --fov 70 --time 2026-06-21T16:00Z " +
-                           "--size 64x36 --quality final --view-steps 8 --light-steps 2 --quiet --out " + exr.string());
+  const auto r =
+      test::run(std::string("render --at ") + kAt + " --heading 300 --pitch 8 --fov 70 --time 2026-06-21T16:00Z " +
+                "--size 64x36 --quality final --view-steps 8 --light-steps 2 --quiet --out " + exr.string());
   REQUIRE(r.exit_code == 0);
   const core::ImageData radiance = io::read_image(exr);
   // The same passes on the same driver in the window's context and the headless one, the full
@@ -97,7 +99,8 @@ TEST_CASE("the window shows the image nephele render makes headless of the same 
   CHECK(sum / shown.pixels.size() > 0.1);
 }
 
-TEST_CASE("in orbit the window shows the image render --view orbit makes headless of the same camera", "[window][orbit]") {
+TEST_CASE("in orbit the window shows the image render --view orbit makes headless of the same camera",
+          "[window][orbit]") {
   Viewer v(small_view());
   v.set_panels_visible(false);
   viewer::go_to_viewpoint(v.state(), "orbit");
@@ -106,8 +109,10 @@ TEST_CASE("in orbit the window shows the image render --view orbit makes headles
   refine(v);
   test::TemporaryDirectory out(true);
   const auto exr = out.path / "orbit.exr";
-  const auto r = test::run("render --view orbit --lat 46.9191 --lon 7.4397 --altitude-km 2000 --heading 300 --pitch -90 "
-                           "--fov 60 --time 2026-06-21T16:00Z --size 64x36 --quiet --out " + exr.string());
+  const auto r = test::run(
+      "render --view orbit --lat 46.9191 --lon 7.4397 --altitude-km 2000 --heading 300 --pitch -90 "
+      "--fov 60 --time 2026-06-21T16:00Z --size 64x36 --quiet --out " +
+      exr.string());
   REQUIRE(r.exit_code == 0);
   const core::ImageData radiance = io::read_image(exr);
   // The same renderer, cover (made from the same default parameters and seed) and camera in the
@@ -119,7 +124,8 @@ TEST_CASE("in orbit the window shows the image render --view orbit makes headles
   CHECK(sum > 0);
 }
 
-TEST_CASE("between 12 and 20 km the view cross-fades from the ground renderer to the orbit's, without a step", "[window][orbit]") {
+TEST_CASE("between 12 and 20 km the view cross-fades from the ground renderer to the orbit's, without a step",
+          "[window][orbit]") {
   Viewer v(small_view());  // for its GL context and its state
   viewer::go_to_viewpoint(v.state(), "orbit");
   viewer::fly(v.state(), 0, 0, 0);  // flying clears the viewpoint: the height decides
@@ -147,9 +153,11 @@ TEST_CASE("between 12 and 20 km the view cross-fades from the ground renderer to
   CHECK(off == 0);
   // Outside the band one renderer alone.
   state.camera.height_m = 20000;
-  CHECK(largest_difference(view.render(state, kWidth, kHeight).radiance, orbit.render(state, kWidth, kHeight).radiance) == 0);
+  CHECK(largest_difference(view.render(state, kWidth, kHeight).radiance,
+                           orbit.render(state, kWidth, kHeight).radiance) == 0);
   state.camera.height_m = 12000;
-  CHECK(largest_difference(view.render(state, kWidth, kHeight).radiance, ground.render(state, kWidth, kHeight).radiance) == 0);
+  CHECK(largest_difference(view.render(state, kWidth, kHeight).radiance,
+                           ground.render(state, kWidth, kHeight).radiance) == 0);
   // A descent from 24 to 8 km in steps of 500 m: the mean luminance changes by no step larger
   // than three times the larger of its neighbours (issue 11's test of the descent), above a floor
   // of 0.2 % of the mean.
@@ -230,14 +238,16 @@ TEST_CASE("while the camera turns the preview marches a quarter of its pixels an
   // Against the whole preview of the same camera: the marched quarter is the same to the bit,
   // and the reprojected rest differs only by the turn's resampling and the uncovered strip.
   viewer::GroundSource ground("", "");
-  const render::RenderResult whole = ground.render(v.state(), moving.radiance.width, moving.radiance.height, 0, 0, true);
+  const render::RenderResult whole =
+      ground.render(v.state(), moving.radiance.width, moving.radiance.height, 0, 0, true);
   const render::Camera camera = [&] {
     render::Camera c = v.state().camera;
     c.width = moving.radiance.width;
     c.height = moving.radiance.height;
     return c;
   }();
-  const core::ImageData shown = render::tone_map(moving.radiance, 4.0), reference = render::tone_map(whole.radiance, 4.0);
+  const core::ImageData shown = render::tone_map(moving.radiance, 4.0),
+                        reference = render::tone_map(whole.radiance, 4.0);
   double sum = 0;
   int exact = 0, marched = 0;
   for (int y = 0; y < camera.height; ++y)
@@ -245,7 +255,8 @@ TEST_CASE("while the camera turns the preview marches a quarter of its pixels an
       const std::size_t k = (static_cast<std::size_t>(y) * camera.width + x);
       if (x % 2 == moving.march_phase.x && y % 2 == moving.march_phase.y) {
         ++marched;
-        exact += std::equal(&moving.radiance.pixels[4 * k], &moving.radiance.pixels[4 * k + 4], &whole.radiance.pixels[4 * k]);
+        exact += std::equal(&moving.radiance.pixels[4 * k], &moving.radiance.pixels[4 * k + 4],
+                            &whole.radiance.pixels[4 * k]);
       }
       for (int c = 0; c < 3; ++c) sum += std::pow(shown.pixels[3 * k + c] - reference.pixels[3 * k + c], 2);
     }
@@ -290,7 +301,8 @@ TEST_CASE("a mouse drag turns the heading by dx fov / width and the pitch by dy 
   int width = 0, height = 0;
   glfwGetWindowSize(window, &width, &height);
   REQUIRE(width == kWidth);
-  const double heading = v.state().camera.heading_deg, pitch = v.state().camera.pitch_deg, fov = v.state().camera.fov_deg;
+  const double heading = v.state().camera.heading_deg, pitch = v.state().camera.pitch_deg,
+               fov = v.state().camera.fov_deg;
   Viewer::on_cursor(window, 10, 10);
   Viewer::on_mouse_button(window, GLFW_MOUSE_BUTTON_LEFT, GLFW_PRESS, 0);
   Viewer::on_cursor(window, 18, 14);
@@ -321,15 +333,18 @@ TEST_CASE("W flies one flight step along the heading, PageUp climbs one, the scr
   earth.Forward(start.latitude_deg, start.longitude_deg, start.height_m, a.x, a.y, a.z);
   earth.Forward(moved.latitude_deg, moved.longitude_deg, moved.height_m, b.x, b.y, b.z);
   CHECK(glm::length(b - a) == Approx(step).epsilon(0).margin(test::kFlightStepMetres));
-  regional::Site from{"", start.latitude_deg, start.longitude_deg, 0}, to{"", moved.latitude_deg, moved.longitude_deg, 0};
+  regional::Site from{"", start.latitude_deg, start.longitude_deg, 0},
+      to{"", moved.latitude_deg, moved.longitude_deg, 0};
   // The azimuth of a 100 m move is the heading to the angle its end subtends at the sphere's
   // centre (1.6e-5 rad, about 1e-3 degrees).
-  CHECK(std::remainder(regional::geodesic_azimuth_deg(from, to) - start.heading_deg, 360.0) == Approx(0).epsilon(0).margin(1e-3));
+  CHECK(std::remainder(regional::geodesic_azimuth_deg(from, to) - start.heading_deg, 360.0) ==
+        Approx(0).epsilon(0).margin(1e-3));
   CHECK(moved.height_m == start.height_m);
   Viewer::on_key(window, GLFW_KEY_PAGE_UP, 0, GLFW_PRESS, 0);
   CHECK(v.state().camera.height_m == Approx(start.height_m + step).epsilon(0).margin(1e-9));
   Viewer::on_scroll(window, 0, 2);
-  CHECK(v.state().camera.fov_deg == Approx(start.fov_deg * viewer::zoom_per_notch * viewer::zoom_per_notch).epsilon(1e-15));
+  CHECK(v.state().camera.fov_deg ==
+        Approx(start.fov_deg * viewer::zoom_per_notch * viewer::zoom_per_notch).epsilon(1e-15));
 }
 
 TEST_CASE("changing a panel's cover value makes the cover again and shows a different image", "[window]") {
@@ -364,14 +379,16 @@ TEST_CASE("F12 writes the shown render as a PNG of its size, and --record writes
   CHECK(image.width == kWidth);
   CHECK(image.height == kHeight);
   int frames = 0;
-  for (const auto& entry : std::filesystem::directory_iterator(out.path / "frames")) frames += entry.path().extension() == ".png";
+  for (const auto& entry : std::filesystem::directory_iterator(out.path / "frames"))
+    frames += entry.path().extension() == ".png";
   CHECK(frames == int(viewer::refinement_levels().size()));
   CHECK(std::filesystem::exists(out.path / "frames" / "frame_000000.png"));
 }
 
 TEST_CASE("without xvfb-run the window tests are skipped", "[no-xvfb]") {
-  WARN("skipped: xvfb-run is missing, so nephele view's window cannot be tested "
-       "(install xvfb and xauth: scripts/debian-packages.txt)");
+  WARN(
+      "skipped: xvfb-run is missing, so nephele view's window cannot be tested "
+      "(install xvfb and xauth: scripts/debian-packages.txt)");
 }
 
 }  // namespace nephele
@@ -383,8 +400,9 @@ TEST_CASE("nephele view COVER_DIR --record DIR --frames N shows a generated cove
   const auto cover = out.path / "cover";
   REQUIRE(test::run("generate --size 16 --iterations 2 --files faces --quiet --out " + cover.string()).exit_code == 0);
   const auto frames = out.path / "frames";
-  const auto r = test::run("view " + cover.string() + " --size 48x27 --frames 3 --view-steps 4 --light-steps 1 --no-cache --record " +
-                           frames.string());
+  const auto r =
+      test::run("view " + cover.string() +
+                " --size 48x27 --frames 3 --view-steps 4 --light-steps 1 --no-cache --record " + frames.string());
   INFO(r.output);
   REQUIRE(r.exit_code == 0);
   for (const char* name : {"frame_000000.png", "frame_000001.png", "frame_000002.png"}) {

@@ -18,7 +18,8 @@ int bench_cover(const std::vector<std::string>& arguments) {
   Options options("bench cover",
                   "Prints the device time of each pass of the global cover (GL_TIME_ELAPSED queries, median\n"
                   "of the repeats) for each size, and separately the host's wall clock, read-back and image\n"
-                  "encoding. On a GPU use sizes that fill it, e.g. --sizes 1024,4096.", params::bench_cover);
+                  "encoding. On a GPU use sizes that fill it, e.g. --sizes 1024,4096.",
+                  params::bench_cover);
   options.bind(params::run::bench_cover_sizes, &sizes_text);
   options.bind(params::run::bench_cover_repeat, &repeat);
   add_cover_options(options, parameters, params::bench_cover);
@@ -41,12 +42,15 @@ int bench_cover(const std::vector<std::string>& arguments) {
   std::printf("device: %s (%s)\n", context.info().renderer.c_str(), context.info().version.c_str());
   std::printf("K = %d steps, %s curl%s, potential %d octaves, density %d octaves; median of %d runs\n",
               parameters.iterations, cover::curl_mode_name(parameters.curl_mode),
-              parameters.curl_mode == cover::CurlMode::spline ? (" of " + std::to_string(parameters.curl_size) + " nodes per face edge").c_str() : "",
+              parameters.curl_mode == cover::CurlMode::spline
+                  ? (" of " + std::to_string(parameters.curl_size) + " nodes per face edge").c_str()
+                  : "",
               parameters.potential.octaves, parameters.density.octaves, repeat);
-  std::printf("device ms: GPU time of each pass by GL_TIME_ELAPSED queries (equirect: its dispatches), or\n"
-              "the wall clock between glFinish calls where the driver reports none (llvmpipe);\n"
-              "host ms: wall clock of the whole cover, of reading the cube map back, and of encoding the six\n"
-              "faces and the equirect map as float32 ZIP EXR in memory (in parallel, as generate does)\n");
+  std::printf(
+      "device ms: GPU time of each pass by GL_TIME_ELAPSED queries (equirect: its dispatches), or\n"
+      "the wall clock between glFinish calls where the driver reports none (llvmpipe);\n"
+      "host ms: wall clock of the whole cover, of reading the cube map back, and of encoding the six\n"
+      "faces and the equirect map as float32 ZIP EXR in memory (in parallel, as generate does)\n");
   const auto& passes = studies::cover_bench_passes();
   std::printf("%6s", "size");
   for (const auto& p : passes) std::printf(" %9s", p.c_str());
@@ -86,7 +90,8 @@ int run_bench(const std::vector<std::string>& arguments) {
   if (arguments[0] == "model") return bench_model(rest);
   if (arguments[0] == "orbit") return bench_orbit(rest);
   if (arguments[0] == "view") return bench_view(rest);
-  throw UsageError("nephele bench: unknown benchmark '" + arguments[0] + "' (allowed: cover, render, noise, model, orbit, view)");
+  throw UsageError("nephele bench: unknown benchmark '" + arguments[0] +
+                   "' (allowed: cover, render, noise, model, orbit, view)");
 }
 
 }  // namespace nephele::cli

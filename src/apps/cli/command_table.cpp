@@ -13,7 +13,8 @@ const std::vector<Command>& commands() {
     for (const io::ExportPreset& p : io::export_presets()) presets += (presets.empty() ? "" : ", ") + p.name;
     return std::vector<Command>{
         {"generate", "make a global cloud cover (cube map faces, equirect map, cover.json)", run_generate},
-        {"render", "cloud layers seen from the ground (Gurten, Bantiger, anywhere) or the planet from orbit", run_render},
+        {"render", "cloud layers seen from the ground (Gurten, Bantiger, anywhere) or the planet from orbit",
+         run_render},
         {"noise", "tileable 3D noise textures (Worley, Perlin, Perlin-Worley, fBm)", run_noise},
         {"model", "one cloud from implicit primitives: density volume (raw, EXR atlas, OpenVDB)", run_model},
         {"export", "a generated cover as one target's files (" + presets + ")", run_export},

@@ -27,9 +27,8 @@ void validate_cover_parameters(const cover::CoverParameters& p) {
     if (highest > max_octave_frequency) {
       std::ostringstream message;
       message << "--" << prefix << "-frequency, --" << prefix << "-lacunarity and --" << prefix
-              << "-octaves: the highest octave has " << highest
-              << " cells per unit radius; allowed at most " << max_octave_frequency
-              << " (frequency * lacunarity^(octaves - 1))";
+              << "-octaves: the highest octave has " << highest << " cells per unit radius; allowed at most "
+              << max_octave_frequency << " (frequency * lacunarity^(octaves - 1))";
       throw UsageError(message.str());
     }
   };
@@ -55,7 +54,8 @@ void WarpOptions::add(Options& o, cover::CoverParameters& p, bool include_integr
 
 void WarpOptions::apply(cover::CoverParameters& p) const {
   const auto integrator = cover::parse_integrator(integrator_);
-  if (!integrator) throw UsageError(params::cover::integrator.option(), integrator_, params::cover::integrator.range_text());
+  if (!integrator)
+    throw UsageError(params::cover::integrator.option(), integrator_, params::cover::integrator.range_text());
   const auto mode = cover::parse_curl_mode(curl_mode_);
   if (!mode) throw UsageError(params::cover::curl_mode.option(), curl_mode_, params::cover::curl_mode.range_text());
   p.integrator = *integrator;

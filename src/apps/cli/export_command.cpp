@@ -18,7 +18,8 @@ int run_export(const std::vector<std::string>& arguments) {
   namespace run = params::run;
   std::string preset_name, out, format(run::export_format.default_text), name(run::export_name.default_text);
   std::string presets_text;
-  for (const auto& p : io::export_presets()) presets_text += (presets_text.empty() ? "  " : "\n  ") + p.name + ": " + p.summary;
+  for (const auto& p : io::export_presets())
+    presets_text += (presets_text.empty() ? "  " : "\n  ") + p.name + ": " + p.summary;
   Options options("export COVER_DIR|VOLUME.json",
                   "Turns a cover directory written by `nephele generate` (cover_px.exr ... cover_nz.exr), or for\n"
                   "atlas and openvdb the sidecar of a volume (nephele noise --out NAME.raw, or a model's\n"
@@ -38,7 +39,8 @@ int run_export(const std::vector<std::string>& arguments) {
     return exit_ok;
   }
   if (cover_dir.empty())
-    throw UsageError("COVER_DIR", "", "a directory written by nephele generate, given before the options", "is missing");
+    throw UsageError("COVER_DIR", "", "a directory written by nephele generate, given before the options",
+                     "is missing");
   if (!options.given(run::export_preset))
     throw UsageError("--preset", "", std::string(run::export_preset.allowed), "is missing");
   if (!options.given(run::export_out)) throw UsageError("--out", "", "DIR", "is missing");

@@ -24,7 +24,8 @@ int run_generate(const std::vector<std::string>& arguments) {
   Options options("generate",
                   "Generates a global cloud cover: curl-warped Worley noise on a cube map, written to\n"
                   "cover_{px,nx,py,ny,pz,nz}.exr, cover_equirect.exr, cover_equirect.png and cover.json\n"
-                  "(--files chooses the images; what none asks for is not computed).", params::generate);
+                  "(--files chooses the images; what none asks for is not computed).",
+                  params::generate);
   add_cover_options(options, parameters, params::generate);
   WarpOptions warp_options;
   ProfileOption profile_option;
@@ -62,7 +63,8 @@ int run_generate(const std::vector<std::string>& arguments) {
     std::stringstream list(exports);
     for (std::string name; std::getline(list, name, ',');) {
       const auto& all = io::export_presets();
-      const auto found = std::find_if(all.begin(), all.end(), [&](const io::ExportPreset& p) { return p.name == name; });
+      const auto found =
+          std::find_if(all.begin(), all.end(), [&](const io::ExportPreset& p) { return p.name == name; });
       if (found == all.end()) throw UsageError("--export", name, std::string(params::run::export_preset.allowed));
       if (found->volume) throw UsageError("--export", name, "a cover preset", "exports volumes, not covers");
       if (std::find(presets.begin(), presets.end(), &*found) != presets.end())
@@ -72,7 +74,8 @@ int run_generate(const std::vector<std::string>& arguments) {
       io::check_texture_limit(*presets.back(), parameters.size);
     }
     if (presets.empty() || exports.back() == ',')
-      throw UsageError("--export", exports, std::string(params::run::cover_exports.allowed), "names no preset or ends with a comma");
+      throw UsageError("--export", exports, std::string(params::run::cover_exports.allowed),
+                       "names no preset or ends with a comma");
   }
   const std::filesystem::path directory(out);
   io::check_output_directory(directory, "--out");
@@ -124,8 +127,8 @@ int run_generate(const std::vector<std::string>& arguments) {
       if (t.pass == "encode") encode_ms = t.milliseconds;
     }
     if (encode_ms > 0)
-      std::cerr << "export: " << exported.bytes / 1e6 << " MB of images, encoded at " << exported.bytes / 1e3 / encode_ms
-                << " MB/s\n";
+      std::cerr << "export: " << exported.bytes / 1e6 << " MB of images, encoded at "
+                << exported.bytes / 1e3 / encode_ms << " MB/s\n";
     std::cerr << "warp: " << cover::integrator_name(parameters.integrator) << ", "
               << cover::curl_mode_name(parameters.curl_mode) << " curl; stiffness h rho "
               << diagnostics.stiffness.stiffness << " (stable limit " << diagnostics.stiffness.limit << ", beyond on "

@@ -33,12 +33,13 @@ int run_model(const std::vector<std::string>& arguments) {
   double scale = cm::scale.default_number, extent = cm::extent.default_number;
   bool quiet = false, verbose = false, no_preview = false;
   std::string preview_size(cm::preview.default_text);
-  Options options("model",
-                  "Builds the density volume of a cloud made of implicit primitives (points and segments with Wyvill\n"
-                  "fields, Lipus blending and turbulence per primitive; Montenegro et al., docs/model.md) from a built-in\n"
-                  "--example or a --scene file (scenes/*.cloud.json), and writes into --out: density.raw (float32),\n"
-                  "density.json, density_atlas.exr, model.cloud.json, preview.png and, with OpenVDB, density.vdb.",
-                  params::model);
+  Options options(
+      "model",
+      "Builds the density volume of a cloud made of implicit primitives (points and segments with Wyvill\n"
+      "fields, Lipus blending and turbulence per primitive; Montenegro et al., docs/model.md) from a built-in\n"
+      "--example or a --scene file (scenes/*.cloud.json), and writes into --out: density.raw (float32),\n"
+      "density.json, density_atlas.exr, model.cloud.json, preview.png and, with OpenVDB, density.vdb.",
+      params::model);
   options.bind(cm::example, &example);
   options.bind(cm::scene_path, &scene_path);
   options.bind(cm::size, &size);
@@ -93,8 +94,8 @@ int run_model(const std::vector<std::string>& arguments) {
   const auto names = io::write_model_files(out, m, size, values, run, no_preview ? nullptr : &image);
   progress.finish();
   if (verbose) {
-    std::fprintf(stderr, "volume: %d^3 in %.1f ms, %d of %d bricks (%.1f%%), %ld brick-primitive pairs\n", size, stats.ms,
-                 stats.bricks_computed, stats.bricks, 100.0 * stats.occupancy(), stats.pairs);
+    std::fprintf(stderr, "volume: %d^3 in %.1f ms, %d of %d bricks (%.1f%%), %ld brick-primitive pairs\n", size,
+                 stats.ms, stats.bricks_computed, stats.bricks, 100.0 * stats.occupancy(), stats.pairs);
     if (!no_preview) std::fprintf(stderr, "preview: %d x %d in %.1f ms\n", preview.width, preview.height, preview_ms);
   }
   for (const auto& name : names) std::cout << (std::filesystem::path(out) / name).string() << "\n";
@@ -125,8 +126,8 @@ int bench_model(const std::vector<std::string>& arguments) {
     for (auto blend : {model::Blend::global, model::Blend::per_primitive}) {
       const studies::ModelBenchRow row = studies::bench_model_case(volume, n, blend, repeat);
       std::printf("%-10d  %-13s  %10.1f  %8.1f%%  %10.1f  %8.1f%%  %9.1f\n", n,
-                  blend == model::Blend::global ? "global (5)" : "per-prim (6)", row.full_ms, 100.0 * row.full_occupancy,
-                  row.edit_ms, 100.0 * row.edit_occupancy, 1000.0 / row.full_ms);
+                  blend == model::Blend::global ? "global (5)" : "per-prim (6)", row.full_ms,
+                  100.0 * row.full_occupancy, row.edit_ms, 100.0 * row.edit_occupancy, 1000.0 / row.full_ms);
       std::fflush(stdout);
     }
   return exit_ok;

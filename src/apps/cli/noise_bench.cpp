@@ -25,7 +25,8 @@ int bench_noise(const std::vector<std::string>& arguments) {
                   "grid (medians of the repeats; 'device' by GL_TIME_ELAPSED queries around the dispatches,\n"
                   "n/a where the driver gives none (llvmpipe); 'GPU mem' wall clock until the values are in\n"
                   "GPU memory; 'host' until they are in a host array), and the seconds of the shape and\n"
-                  "erosion presets. On a GPU use --size 512.", params::bench_noise);
+                  "erosion presets. On a GPU use --size 512.",
+                  params::bench_noise);
   options.bind(params::run::bench_noise_size, &size);
   options.bind(params::run::bench_noise_repeat, &repeat);
   if (!options.parse(arguments)) {
@@ -50,7 +51,8 @@ int bench_noise(const std::vector<std::string>& arguments) {
       std::printf("  %-42s %7.1f", c.name, points / (run.device_ms * 1e3));
     else
       std::printf("  %-42s %7s", c.name, "n/a");
-    std::printf(" %14.1f %11.1f %13.0f\n", points / (run.compute_ms * 1e3), points / (run.total_ms * 1e3), run.first_ms);
+    std::printf(" %14.1f %11.1f %13.0f\n", points / (run.compute_ms * 1e3), points / (run.total_ms * 1e3),
+                run.first_ms);
     std::fflush(stdout);
   }
 
@@ -62,17 +64,21 @@ int bench_noise(const std::vector<std::string>& arguments) {
     const noise::TextureSpec spec = noise::preset(name, 1);
     const studies::NoiseRun run = studies::measure_noise(generator, spec, repeat);
     const noise::Volume volume = generator.generate(spec);
-    const double write_s =
-        gpu::time_pass([&] { io::write_noise_files(directory / (name + ".png"), spec, volume, 8, name, json::Value()); }) / 1e3;
-    std::printf("  %-42s %10.3f %13.3f %15.3f\n",
-                (name + " " + std::to_string(spec.width) + "^3 " + std::to_string(spec.channels.size()) + " channels").c_str(),
-                run.total_ms / 1e3, run.first_ms / 1e3, write_s);
+    const double write_s = gpu::time_pass([&] {
+                             io::write_noise_files(directory / (name + ".png"), spec, volume, 8, name, json::Value());
+                           }) /
+                           1e3;
+    std::printf(
+        "  %-42s %10.3f %13.3f %15.3f\n",
+        (name + " " + std::to_string(spec.width) + "^3 " + std::to_string(spec.channels.size()) + " channels").c_str(),
+        run.total_ms / 1e3, run.first_ms / 1e3, write_s);
     std::fflush(stdout);
   }
   std::error_code ignored;
   std::filesystem::remove_all(directory, ignored);
-  std::printf("reference (docs/noise.md): FastNoise2 2 threads: cellular F1 ~64, Perlin ~391 Mpt/s;\n"
-              "TileableVolumeNoise: shape + erosion 24 s on two cores.\n");
+  std::printf(
+      "reference (docs/noise.md): FastNoise2 2 threads: cellular F1 ~64, Perlin ~391 Mpt/s;\n"
+      "TileableVolumeNoise: shape + erosion 24 s on two cores.\n");
   return exit_ok;
 }
 

@@ -77,12 +77,13 @@ NoiseRequest parse_noise_request(const std::vector<std::string>& arguments, bool
   std::string type(n::type.default_text), layout(n::channels.default_text), preset;
   int worley_cells = n::worley_cells.default_int();
   std::string channel_text[4];
-  Options options("noise",
-                  "Generates a tileable 3D noise texture: Worley (F1), Perlin and Perlin-Worley, each with fBm, in up\n"
-                  "to four channels. --out NAME.png or NAME.exr writes the slice atlas (depth slices of width x height\n"
-                  "side by side), NAME.raw the float32 volume; NAME.json describes it. Values lie in [0, 1].\n"
-                  "Channel k (r, g, b, a) has cells * 2^k cells (at most one per texel) unless --r, --g, --b or --a say otherwise.",
-                  params::noise);
+  Options options(
+      "noise",
+      "Generates a tileable 3D noise texture: Worley (F1), Perlin and Perlin-Worley, each with fBm, in up\n"
+      "to four channels. --out NAME.png or NAME.exr writes the slice atlas (depth slices of width x height\n"
+      "side by side), NAME.raw the float32 volume; NAME.json describes it. Values lie in [0, 1].\n"
+      "Channel k (r, g, b, a) has cells * 2^k cells (at most one per texel) unless --r, --g, --b or --a say otherwise.",
+      params::noise);
   options.bind(n::preset, &preset);
   options.bind(n::type, &type);
   options.bind(n::width, &width);
@@ -115,12 +116,13 @@ NoiseRequest parse_noise_request(const std::vector<std::string>& arguments, bool
   if (request.out.empty()) throw UsageError("--out: an output file is required (NAME.png, NAME.exr or NAME.raw)");
 
   if (!preset.empty()) {
-    for (const params::Parameter* o : {&n::type, &n::width, &n::height, &n::depth, &n::size, &n::cells, &n::octaves,
-                                       &n::lacunarity, &n::gain, &n::worley_cells, &n::worley_octaves, &n::channels,
-                                       &n::r, &n::g, &n::b, &n::a})
+    for (const params::Parameter* o :
+         {&n::type, &n::width, &n::height, &n::depth, &n::size, &n::cells, &n::octaves, &n::lacunarity, &n::gain,
+          &n::worley_cells, &n::worley_octaves, &n::channels, &n::r, &n::g, &n::b, &n::a})
       if (options.given(*o))
-        throw UsageError(std::string("--preset fixes the texture's layout; ") + o->option() +
-                         " cannot be combined with it (allowed with --preset: --seed, --out, --bits, --stretch, --verbose)");
+        throw UsageError(
+            std::string("--preset fixes the texture's layout; ") + o->option() +
+            " cannot be combined with it (allowed with --preset: --seed, --out, --bits, --stretch, --verbose)");
     const std::uint32_t seed = request.spec.seed;
     request.spec = noise::preset(preset, seed);
     request.preset = preset;
@@ -145,7 +147,8 @@ NoiseRequest parse_noise_request(const std::vector<std::string>& arguments, bool
     for (int k = 0; k < 4; ++k) {
       if (k >= channels) {
         if (!channel_text[k].empty())
-          throw UsageError(std::string(letters[k]) + ": channel " + (letters[k] + 2) + " is not in --channels " + layout);
+          throw UsageError(std::string(letters[k]) + ": channel " + (letters[k] + 2) + " is not in --channels " +
+                           layout);
         continue;
       }
       noise::ChannelSpec c = noise::default_channel(base, k, width);
@@ -172,15 +175,15 @@ int run_noise(const std::vector<std::string>& arguments) {
     return exit_ok;
   }
   gpu::EglContext context;
-  if (request.verbose)
-    std::cerr << "renderer: " << context.info().renderer << " (" << context.info().version << ")\n";
+  if (request.verbose) std::cerr << "renderer: " << context.info().renderer << " (" << context.info().version << ")\n";
   noise::check_noise_fits(request.spec, context, request.size_given ? "--size" : nullptr);
   core::Progress progress("noise", 2, core::Progress::for_stderr(request.quiet));
   progress.update(0, "generating");
   const auto start = std::chrono::steady_clock::now();
   noise::TextureGenerator generator;
   noise::Volume volume = generator.generate(request.spec);
-  const double generate_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  const double generate_ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   json::Value run;
   run.set("renderer", context.info().renderer);
   run.set("generate_ms", generate_ms);
@@ -192,11 +195,12 @@ int run_noise(const std::vector<std::string>& arguments) {
   if (request.stretch) stretched_from = io::stretch_channels(volume);
   const auto sidecar =
       io::write_noise_files(request.out, request.spec, volume, request.png_bits, request.preset, run, stretched_from);
-  const double write_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - write_start).count();
+  const double write_ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - write_start).count();
   progress.finish();
   if (request.verbose)
-    std::cerr << "generate: " << generate_ms << " ms (compute " << generator.timings().compute_ms << " ms), write: "
-              << write_ms << " ms\n";
+    std::cerr << "generate: " << generate_ms << " ms (compute " << generator.timings().compute_ms
+              << " ms), write: " << write_ms << " ms\n";
   std::cout << "wrote " << request.out << " and " << sidecar.string() << " (" << request.spec.width << " x "
             << request.spec.height << " x " << request.spec.depth << ", " << request.spec.channels.size()
             << (request.spec.channels.size() == 1 ? " channel)\n" : " channels)\n");

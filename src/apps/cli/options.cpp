@@ -23,7 +23,9 @@ std::string take_leading_operand(std::vector<std::string>& arguments) {
 }
 
 Options::Options(std::string command, std::string summary, unsigned use)
-    : command_(std::move(command)), summary_(std::move(summary)), use_(use),
+    : command_(std::move(command)),
+      summary_(std::move(summary)),
+      use_(use),
       app_(std::make_unique<CLI::App>(summary_, "nephele " + command_)) {
   app_->set_help_flag();  // --help is answered from the table (help()), before CLI11 parses
 }
@@ -36,7 +38,8 @@ void Options::add(const params::Parameter& p, bool takes_value, bool repeatable,
     throw std::logic_error("parameter '" + std::string(p.key) + "' is not declared for nephele " + command_);
   const std::string name = p.option();
   if (!takes_value) {
-    app_->add_flag_function(name, [apply](std::int64_t) { apply(""); }, std::string(p.help));
+    app_->add_flag_function(
+        name, [apply](std::int64_t) { apply(""); }, std::string(p.help));
   } else if (repeatable) {
     app_->add_option_function<std::vector<std::string>>(
             name,
@@ -54,9 +57,8 @@ void Options::add(const params::Parameter& p, bool takes_value, bool repeatable,
 }
 
 void Options::bind(const params::Parameter& p, int* target) {
-  add(p, true, false, [&p, target](const std::string& text) {
-    *target = static_cast<int>(params::parse_number(p, text, p.option()));
-  });
+  add(p, true, false,
+      [&p, target](const std::string& text) { *target = static_cast<int>(params::parse_number(p, text, p.option())); });
 }
 
 void Options::bind(const params::Parameter& p, std::uint32_t* target) {
@@ -72,9 +74,7 @@ void Options::bind(const params::Parameter& p, float* target) {
 }
 
 void Options::bind(const params::Parameter& p, double* target) {
-  add(p, true, false, [&p, target](const std::string& text) {
-    *target = params::parse_number(p, text, p.option());
-  });
+  add(p, true, false, [&p, target](const std::string& text) { *target = params::parse_number(p, text, p.option()); });
 }
 
 void Options::bind(const params::Parameter& p, std::string* target) {
@@ -109,9 +109,7 @@ bool Options::parse(const std::vector<std::string>& arguments) {
   return true;
 }
 
-bool Options::given(const params::Parameter& p) const {
-  return app_->count(p.option()) > 0;
-}
+bool Options::given(const params::Parameter& p) const { return app_->count(p.option()) > 0; }
 
 std::string Options::help() const {
   std::ostringstream out;
@@ -119,8 +117,7 @@ std::string Options::help() const {
   for (const auto& e : entries_) {
     const params::Parameter& p = *e.parameter;
     std::string head = "  " + p.option() + (e.takes_value ? " VALUE" : "");
-    out << head << (head.size() < 26 ? std::string(26 - head.size(), ' ') : "\n" + std::string(26, ' '))
-        << p.help;
+    out << head << (head.size() < 26 ? std::string(26 - head.size(), ' ') : "\n" + std::string(26, ' ')) << p.help;
     if (p.type == params::Type::list) out << " (repeatable)";
     const std::string range = p.range_text();
     if (!range.empty()) out << " [" << range << (p.unit.empty() ? "" : ", " + std::string(p.unit)) << "]";

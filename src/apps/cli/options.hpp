@@ -34,8 +34,8 @@ class Options {
   void bind(const params::Parameter& p, std::uint32_t* target);
   void bind(const params::Parameter& p, float* target);
   void bind(const params::Parameter& p, double* target);
-  void bind(const params::Parameter& p, std::string* target);  // text: words are checked
-  void bind(const params::Parameter& p, bool* target);         // flag
+  void bind(const params::Parameter& p, std::string* target);               // text: words are checked
+  void bind(const params::Parameter& p, bool* target);                      // flag
   void bind(const params::Parameter& p, std::vector<std::string>* target);  // list: repeatable
 
   // Parses arguments (without the command words). Returns false when --help was given (help()

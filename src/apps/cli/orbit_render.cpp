@@ -47,10 +47,15 @@ void bind_orbit_options(Options& options, OrbitOptions& orbit) {
 }
 
 const std::vector<const params::Parameter*>& orbit_only_parameters() {
-  static const std::vector<const params::Parameter*> list = {
-      &s::lat,           &s::lon,           &s::altitude_km,   &s::cover,
-      &s::earth_texture, &s::night_texture, &s::planet_radius_km, &s::cloud_base_km,
-      &s::cloud_thickness_km};
+  static const std::vector<const params::Parameter*> list = {&s::lat,
+                                                             &s::lon,
+                                                             &s::altitude_km,
+                                                             &s::cover,
+                                                             &s::earth_texture,
+                                                             &s::night_texture,
+                                                             &s::planet_radius_km,
+                                                             &s::cloud_base_km,
+                                                             &s::cloud_thickness_km};
   return list;
 }
 
@@ -58,14 +63,15 @@ int run_orbit_render(const OrbitOptions& orbit) {
   // Everything is checked before the context is made: bad input exits 2 at once.
   if (!render::cloud_shell_fits(orbit.cloud_base_km * 1000.0, orbit.cloud_thickness_km * 1000.0)) {
     std::ostringstream top;
-    top << orbit.cloud_base_km + orbit.cloud_thickness_km << " km; the cloud shell must end below the atmosphere's top at "
-        << render::atmosphere_top_km() << " km";
+    top << orbit.cloud_base_km + orbit.cloud_thickness_km
+        << " km; the cloud shell must end below the atmosphere's top at " << render::atmosphere_top_km() << " km";
     throw UsageError("--cloud-base-km + --cloud-thickness-km: " + top.str());
   }
   if (orbit.out.empty()) throw UsageError("--out: give an output file (.png or .exr)");
   const std::filesystem::path out(orbit.out);
   const std::string extension = core::lowercase_extension(out);
-  if (extension != ".png" && extension != ".exr") throw UsageError("--out: '" + orbit.out + "' must end in .png or .exr");
+  if (extension != ".png" && extension != ".exr")
+    throw UsageError("--out: '" + orbit.out + "' must end in .png or .exr");
   std::filesystem::path directory = out.parent_path();
   if (directory.empty()) directory = ".";
   if (std::filesystem::exists(directory) && !std::filesystem::is_directory(directory))
@@ -82,7 +88,8 @@ int run_orbit_render(const OrbitOptions& orbit) {
   camera.heading_deg = orbit.heading.value_or(0.0);
   camera.pitch_deg = orbit.pitch.value_or(-90.0);
   const double radius_m = orbit.planet_radius_km * 1000.0;
-  camera.fov_deg = orbit.fov ? *orbit.fov : render::framing_fov_deg(camera.altitude_m, radius_m, camera.width, camera.height);
+  camera.fov_deg =
+      orbit.fov ? *orbit.fov : render::framing_fov_deg(camera.altitude_m, radius_m, camera.width, camera.height);
   const std::string time_text = orbit.time.empty() ? std::string(s::time.default_text) : orbit.time;
   double unix_seconds = 0;
   try {
@@ -117,11 +124,12 @@ int run_orbit_render(const OrbitOptions& orbit) {
     parameters.size = s::cover_size.default_int();
     parameters.seed = orbit.seed;
     timings.emplace_back("global cover", gpu::time_pass([&] {
-      cover::GlobalCover generated(parameters);
-      generated.run();
-      cover = render::CoverCube{parameters.size, generated.cover_field().read()};
-    }));
-    cover_source = "generated (seed " + std::to_string(orbit.seed) + ", " + std::to_string(parameters.size) + " texels per face)";
+                           cover::GlobalCover generated(parameters);
+                           generated.run();
+                           cover = render::CoverCube{parameters.size, generated.cover_field().read()};
+                         }));
+    cover_source =
+        "generated (seed " + std::to_string(orbit.seed) + ", " + std::to_string(parameters.size) + " texels per face)";
   }
   progress.update(1, "orbit view");
   render::RenderResult result = render::render_orbit(camera, unix_seconds, textures.images, *cover, settings);
@@ -130,7 +138,8 @@ int run_orbit_render(const OrbitOptions& orbit) {
     io::OutputSet outputs(directory, io::OutputSet::Scope::files);
     const std::string name = out.filename().string();
     if (extension == ".png")
-      outputs.write(name, io::encode_image(render::tone_map(result.radiance, orbit.exposure), io::png_encoding(8), name));
+      outputs.write(name,
+                    io::encode_image(render::tone_map(result.radiance, orbit.exposure), io::png_encoding(8), name));
     else
       outputs.write(name, io::encode_image(result.radiance, io::exr_encoding({"R", "G", "B", "A"}), name));
     json::Value root, cam;
@@ -164,7 +173,8 @@ int run_orbit_render(const OrbitOptions& orbit) {
     for (const auto& [name, ms] : timings) std::cerr << "time " << name << ": " << ms << " ms\n";
     for (const auto& [name, ms] : result.timings_ms) std::cerr << "time " << name << ": " << ms << " ms\n";
   }
-  std::cout << "wrote " << orbit.out << " (sun elevation " << result.sun_elevation_deg << " deg at the point below the camera)\n";
+  std::cout << "wrote " << orbit.out << " (sun elevation " << result.sun_elevation_deg
+            << " deg at the point below the camera)\n";
   return exit_ok;
 }
 

@@ -24,8 +24,8 @@ int bench_render(const std::vector<std::string>& arguments) {
   Options options("bench render",
                   "Prints seconds per frame of the default scene, then the image error (RMS of the display\n"
                   "values; relative RMS and max of the radiance) against the numbers of view and light steps,\n"
-                  "frames and resolution, against " + studies::RenderSweepOptions::full().reference_name() +
-                      ": the sweep of `nephele report`.",
+                  "frames and resolution, against " +
+                      studies::RenderSweepOptions::full().reference_name() + ": the sweep of `nephele report`.",
                   params::bench_render);
   options.bind(params::run::bench_render_size, &size);
   options.bind(params::run::bench_render_sweep_size, &sweep_size);
@@ -58,9 +58,10 @@ int bench_render(const std::vector<std::string>& arguments) {
 
   studies::RenderSweepOptions sweep = studies::RenderSweepOptions::full();
   regional::parse_size(sweep_size, sweep.width, sweep.height, "--sweep-size");
-  std::printf("\nimage error against steps, frames and resolution at %dx%d (reference %d view x %d light steps, %d "
-              "frames)\n",
-              sweep.width, sweep.height, sweep.reference_view, sweep.reference_light, sweep.reference_frames);
+  std::printf(
+      "\nimage error against steps, frames and resolution at %dx%d (reference %d view x %d light steps, %d "
+      "frames)\n",
+      sweep.width, sweep.height, sweep.reference_view, sweep.reference_light, sweep.reference_frames);
   std::printf("%s", studies::render_error_table_header().c_str());
   std::fflush(stdout);
   studies::render_error_sweep(scene, sweep, [](const studies::RenderErrorRow& row) {

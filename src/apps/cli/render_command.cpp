@@ -97,14 +97,15 @@ int run_render(const std::vector<std::string>& arguments) {
     if (options.given(s::heading)) orbit.heading = scene_options.heading();
     if (options.given(s::pitch)) orbit.pitch = scene_options.pitch();
     if (options.given(s::fov)) orbit.fov = scene_options.fov();
-    for (const auto* ground_only : {&s::at, &s::scene_path, &s::panorama, &s::weather, &s::terrain, &s::fog_top, &s::powder, &s::quality, &s::view_steps, &s::light_steps, &s::frames, &s::resolution_divisor})
+    for (const auto* ground_only :
+         {&s::at, &s::scene_path, &s::panorama, &s::weather, &s::terrain, &s::fog_top, &s::powder, &s::quality,
+          &s::view_steps, &s::light_steps, &s::frames, &s::resolution_divisor})
       if (options.given(*ground_only))
         throw UsageError(ground_only->option() + ": not taken by --view orbit (it belongs to the ground views)");
     return run_orbit_render(orbit);
   }
   for (const auto* orbit_only : orbit_only_parameters())
-    if (options.given(*orbit_only))
-      throw UsageError(orbit_only->option() + ": only taken with --view orbit");
+    if (options.given(*orbit_only)) throw UsageError(orbit_only->option() + ": only taken with --view orbit");
   // The keys set by options: their errors name the option the user typed, not a scene key.
   regional::KeyOptions typed;
   regional::Scene scene = scene_options.scene(typed);
@@ -151,7 +152,8 @@ int run_render(const std::vector<std::string>& arguments) {
   std::string outputs_field = "--out";  // where the names come from, for errors
   std::filesystem::path directory;
   io::OutputSet::Scope scope = io::OutputSet::Scope::files;
-  if (!scene_file.empty() && (out.empty() || std::filesystem::is_directory(out) || std::filesystem::path(out).extension().empty())) {
+  if (!scene_file.empty() &&
+      (out.empty() || std::filesystem::is_directory(out) || std::filesystem::path(out).extension().empty())) {
     if (scene.outputs.empty()) throw UsageError(scene_file + ": 'outputs': give at least one file name, or --out FILE");
     directory = out.empty() ? std::filesystem::path(".") : std::filesystem::path(out);
     if (!out.empty()) {
@@ -164,8 +166,7 @@ int run_render(const std::vector<std::string>& arguments) {
   } else {
     if (out.empty()) throw UsageError("--out: give an output file (.png or .exr)");
     const std::string extension = core::lowercase_extension(out);
-    if (extension != ".png" && extension != ".exr")
-      throw UsageError("--out: '" + out + "' must end in .png or .exr");
+    if (extension != ".png" && extension != ".exr") throw UsageError("--out: '" + out + "' must end in .png or .exr");
     directory = std::filesystem::path(out).parent_path();
     if (directory.empty()) directory = ".";
     outputs.push_back(std::filesystem::path(out).filename().string());
@@ -184,7 +185,7 @@ int run_render(const std::vector<std::string>& arguments) {
 
   gpu::EglContext context;
   if (verbose) std::cerr << "renderer: " << context.info().renderer << "\n";
-  const std::string size_label = typed.count("size") ? typed.at("size")
+  const std::string size_label = typed.count("size")  ? typed.at("size")
                                  : scene_file.empty() ? std::string("--size")  // the default; --size changes it
                                                       : scene_file + ": 'size'";
   render::check_render_fits(context, scene.width, scene.height, size_label);
@@ -193,8 +194,8 @@ int run_render(const std::vector<std::string>& arguments) {
   progress.update(0, "weather");
   render::PreparedScene prepared = render::prepare_scene(scene, io::read_scene_weather(scene));
   std::string terrain_warning;
-  const std::string terrain_field = options.given(s::terrain) || scene_file.empty() ? s::terrain.option()
-                                                                                     : scene_file + ": 'terrain'";
+  const std::string terrain_field =
+      options.given(s::terrain) || scene_file.empty() ? s::terrain.option() : scene_file + ": 'terrain'";
   const render::Camera& camera = prepared.partial.camera;
   prepared.terrain = io::load_terrain(scene.terrain, camera.latitude_deg, camera.longitude_deg, camera.height_m,
                                       &terrain_warning, terrain_field);
@@ -222,7 +223,8 @@ int run_render(const std::vector<std::string>& arguments) {
     for (const auto& p : result.passes) std::cerr << "pass: " << p << "\n";
     for (const auto& [name, ms] : result.render.timings_ms) std::cerr << "time " << name << ": " << ms << " ms\n";
     for (const auto& l : result.layers)
-      std::cerr << "layer " << regional::cloud_type_name(l.type) << " " << l.base_m << "-" << l.top_m << " m: " << l.reason << "\n";
+      std::cerr << "layer " << regional::cloud_type_name(l.type) << " " << l.base_m << "-" << l.top_m
+                << " m: " << l.reason << "\n";
   }
   std::cout << "wrote";
   for (const auto& o : shown) std::cout << " " << o;

@@ -34,13 +34,16 @@ int run_report(const std::vector<std::string>& all_arguments) {
                   "error_vs_runtime.svg (work-precision diagram), stability.csv and summary.md into --out.\n"
                   "The flow time T = iterations * step stays fixed; fixed-step schemes use h = T / steps.\n"
                   "Then renders the default scene with view steps 8..96 x light steps 2..12, over 2 and 4\n"
-                  "frames and at 1/2 and 1/4 resolution, against " + studies::RenderSweepOptions::full().reference_name() +
-                      "\n(quick: 8,16,48 x 2,12 against " + studies::RenderSweepOptions::quick().reference_name() +
+                  "frames and at 1/2 and 1/4 resolution, against " +
+                      studies::RenderSweepOptions::full().reference_name() + "\n(quick: 8,16,48 x 2,12 against " +
+                      studies::RenderSweepOptions::quick().reference_name() +
                       ")\ninto render_error.csv, render_error_vs_runtime.svg and a section of summary.md; the error\n"
-                  "is the RMS of the display values in [0, 1]. Then renders each quality of render --quality\n"
-                  "at 1280x720 against " + studies::RenderSweepOptions::qualities(false).reference_name() +
+                      "is the RMS of the display values in [0, 1]. Then renders each quality of render --quality\n"
+                      "at 1280x720 against " +
+                      studies::RenderSweepOptions::qualities(false).reference_name() +
                       " (quick: 64x36) into render_quality.csv and a section of summary.md.\n"
-                  "`nephele report render [options]` runs only the render sweep.", params::report);
+                      "`nephele report render [options]` runs only the render sweep.",
+                  params::report);
   options.bind(params::run::report_out, &out);
   options.bind(params::run::report_quick, &quick);
   options.bind(params::run::quiet, &quiet);
@@ -101,8 +104,10 @@ int run_report(const std::vector<std::string>& all_arguments) {
   studies::SweepResult result;
   if (!render_only) {
     core::Progress sweep_progress("report", sweep.planned_runs(), core::Progress::for_stderr(quiet));
-    result = studies::run_sweep(sweep, [](const std::string& line) { std::cout << line << "\n" << std::flush; },
-                                [&](int done) { sweep_progress.update(done, "warp runs"); });
+    result = studies::run_sweep(
+        sweep, [](const std::string& line) { std::cout << line << "\n"
+                                                       << std::flush; },
+        [&](int done) { sweep_progress.update(done, "warp runs"); });
     sweep_progress.finish();
   }
   result.device = context.info().renderer + " (" + context.info().version + ")";
@@ -158,12 +163,12 @@ int run_report(const std::vector<std::string>& all_arguments) {
     outputs.write(
         "render_error_vs_runtime.svg",
         studies::render_error_svg(render_rows,
-                                 "Image error against run time, default scene, " + std::to_string(render_sweep.width) +
-                                     " x " + std::to_string(render_sweep.height) + " pixels",
-                                 "reference " + std::to_string(render_sweep.reference_view) + " view x " +
-                                     std::to_string(render_sweep.reference_light) + " light steps, " +
-                                     std::to_string(render_sweep.reference_frames) + " frames; " + result.device,
-                                 render_scene.view_steps, render_scene.light_steps));
+                                  "Image error against run time, default scene, " + std::to_string(render_sweep.width) +
+                                      " x " + std::to_string(render_sweep.height) + " pixels",
+                                  "reference " + std::to_string(render_sweep.reference_view) + " view x " +
+                                      std::to_string(render_sweep.reference_light) + " light steps, " +
+                                      std::to_string(render_sweep.reference_frames) + " frames; " + result.device,
+                                  render_scene.view_steps, render_scene.light_steps));
     summary += studies::render_summary_markdown(render_rows, render_sweep, render_choice, render_scene.view_steps,
                                                 render_scene.light_steps, reference_check);
     outputs.write("render_quality.csv", studies::render_quality_csv(quality_rows, quality_sweep));
@@ -176,8 +181,7 @@ int run_report(const std::vector<std::string>& all_arguments) {
       std::cout << "size " << c.size << ": at the default's error (" << c.baseline.warp_err_rms << " rad rms) "
                 << (c.has_equal_error ? std::to_string(c.speedup) + "x faster" : std::string("no faster run"))
                 << "; at its time (" << c.baseline.time_ms << " ms) "
-                << (c.has_equal_time ? std::to_string(c.error_ratio) + "x less error" : std::string("no run"))
-                << "\n";
+                << (c.has_equal_time ? std::to_string(c.error_ratio) + "x less error" : std::string("no run")) << "\n";
   if (render_choice.has_default)
     std::cout << "render: defaults " << studies::render_variant_name(render_choice.default_row) << ": display rms "
               << render_choice.default_row.display_rms << "; within " << render_choice.factor
@@ -185,9 +189,10 @@ int run_report(const std::vector<std::string>& all_arguments) {
               << render_choice.cheapest.time_ms << " ms); within its time the most accurate is "
               << studies::render_variant_name(render_choice.most_accurate) << " (display rms "
               << render_choice.most_accurate.display_rms << ")\n";
-  std::cout << "wrote " << directory.string() << "/: "
-            << (render_only ? "" : "error_vs_runtime.csv, error_vs_runtime.svg, stability.csv, ")
-            << (no_render ? "" : "render_error.csv, render_error_vs_runtime.svg, render_quality.csv, ") << "summary.md\n";
+  std::cout << "wrote " << directory.string()
+            << "/: " << (render_only ? "" : "error_vs_runtime.csv, error_vs_runtime.svg, stability.csv, ")
+            << (no_render ? "" : "render_error.csv, render_error_vs_runtime.svg, render_quality.csv, ")
+            << "summary.md\n";
   return exit_ok;
 }
 

@@ -6,8 +6,13 @@
 namespace nephele::cli {
 
 SceneOptions::SceneOptions(Options& options)
-    : options_(options), pitch_(defaults_.pitch_deg), fov_(defaults_.fov_deg), exposure_(defaults_.exposure),
-      view_steps_(defaults_.view_steps), light_steps_(defaults_.light_steps), seed_(defaults_.seed) {
+    : options_(options),
+      pitch_(defaults_.pitch_deg),
+      fov_(defaults_.fov_deg),
+      exposure_(defaults_.exposure),
+      view_steps_(defaults_.view_steps),
+      light_steps_(defaults_.light_steps),
+      seed_(defaults_.seed) {
   namespace s = params::scene;
   options.bind(s::scene_path, &scene_file_);
   options.bind(s::view, &view_);

@@ -29,7 +29,8 @@ int run_stats(const std::vector<std::string>& arguments) {
     return exit_ok;
   }
   if (cover_dir.empty()) throw UsageError("COVER_DIR", "", "a directory written by nephele generate", "is missing");
-  const std::filesystem::path directory = out.empty() ? std::filesystem::path(cover_dir) / "stats" : std::filesystem::path(out);
+  const std::filesystem::path directory =
+      out.empty() ? std::filesystem::path(cover_dir) / "stats" : std::filesystem::path(out);
   io::check_output_directory(directory, "--out");
   const studies::CoverStatistics stats = studies::cover_statistics(cover_dir);
   io::OutputSet outputs(directory, io::OutputSet::Scope::directory);

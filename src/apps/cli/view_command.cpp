@@ -108,7 +108,8 @@ namespace nephele::cli {
 
 int bench_view(const std::vector<std::string>& arguments) {
   std::string size(params::run::bench_view_size.default_text), model_name;
-  int repeat = params::run::bench_view_repeat.default_int(), model_size = params::cloud_model::view_model_size.default_int();
+  int repeat = params::run::bench_view_repeat.default_int(),
+      model_size = params::cloud_model::view_model_size.default_int();
   Options options("bench view",
                   "Prints the milliseconds of each pass of nephele view's frames for the default scene:\n"
                   "the first frame after a change (the preview) and the refinement frames after it, the\n"
@@ -205,8 +206,8 @@ int bench_view(const std::vector<std::string>& arguments) {
       return values[values.size() / 2];
     };
     const double frame = median(moving["frame"]);
-    std::printf("while turning a degree per frame (median of %zu frames): frame %.1f ms (%.1f fps)", moving["frame"].size(),
-                frame, 1000.0 / frame);
+    std::printf("while turning a degree per frame (median of %zu frames): frame %.1f ms (%.1f fps)",
+                moving["frame"].size(), frame, 1000.0 / frame);
     for (const char* pass : {"clouds", "reproject"})
       if (!moving[pass].empty()) std::printf(", %s %.1f ms", pass, median(moving[pass]));
     std::printf("\n");

@@ -132,14 +132,16 @@ bool model_widget(const params::Parameter& p, T& value, const char* scope) {
 // A skeleton point's three coordinates within the table's range.
 bool point_widget(const char* label, glsl::vec3& point) {
   const params::Parameter& p = params::cloud_model::coordinate;
-  const bool changed = ImGui::SliderFloat3(label, &point.x, float(p.min), float(p.max), "%.3f", ImGuiSliderFlags_AlwaysClamp);
+  const bool changed =
+      ImGui::SliderFloat3(label, &point.x, float(p.min), float(p.max), "%.3f", ImGuiSliderFlags_AlwaysClamp);
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tooltip(p).c_str());
   return changed;
 }
 
 bool turbulence_widgets(model::Turbulence& t, const char* scope) {
   bool changed = false;
-  model::visit_turbulence(t, [&](const params::Parameter& p, auto& field) { changed |= model_widget(p, field, scope); });
+  model::visit_turbulence(t,
+                          [&](const params::Parameter& p, auto& field) { changed |= model_widget(p, field, scope); });
   return changed;
 }
 
@@ -229,8 +231,10 @@ void set_value(ViewState& state, const params::Parameter& p, const std::string& 
       [&](auto* field) {
         using T = std::remove_pointer_t<decltype(field)>;
         if constexpr (std::is_same_v<T, std::string>) {
-          if (!p.words().empty()) params::check_word(p, text, p.option());
-          else if (&p == &params::scene::time) check_time(p, text);
+          if (!p.words().empty())
+            params::check_word(p, text, p.option());
+          else if (&p == &params::scene::time)
+            check_time(p, text);
           *field = text;
           if (&p == &params::scene::view) go_to_viewpoint(state, text);
         } else {

@@ -19,9 +19,8 @@ namespace {
 std::string cover_key(const cover::CoverParameters& p) {
   std::ostringstream key;
   key.precision(17);
-  cover::visit_numeric_parameters(p, [&](const params::Parameter& parameter, auto value) {
-    key << parameter.key << '=' << value << ' ';
-  });
+  cover::visit_numeric_parameters(
+      p, [&](const params::Parameter& parameter, auto value) { key << parameter.key << '=' << value << ' '; });
   key << cover::integrator_name(p.integrator);
   return key.str();
 }
@@ -37,8 +36,8 @@ GroundSource::GroundSource(const std::filesystem::path& cover_dir, const std::fi
   }
 }
 
-render::RenderResult GroundSource::render(const ViewState& state, int width, int height, int first_row,
-                                          int row_count, bool coarse) {
+render::RenderResult GroundSource::render(const ViewState& state, int width, int height, int first_row, int row_count,
+                                          bool coarse) {
   const regional::Scene scene = scene_of(state, width, height);
   std::vector<std::pair<std::string, double>> setup_ms;
   if (state.weather != station_files_) {
@@ -56,11 +55,12 @@ render::RenderResult GroundSource::render(const ViewState& state, int width, int
   // The weather field is centred on the camera: prepared again for every render (a CPU
   // resampling of the cover or the stations, no GPU pass).
   render::PreparedScene prepared;
-  setup_ms.emplace_back("weather_field", gpu::time_pass([&] { prepared = render::prepare_scene(scene, stations_, cover_); }));
+  setup_ms.emplace_back("weather_field",
+                        gpu::time_pass([&] { prepared = render::prepare_scene(scene, stations_, cover_); }));
   std::ostringstream terrain_key;
   terrain_key.precision(17);
-  terrain_key << scene.terrain << ' ' << prepared.partial.camera.latitude_deg << ' ' << prepared.partial.camera.longitude_deg
-              << ' ' << prepared.partial.camera.height_m;
+  terrain_key << scene.terrain << ' ' << prepared.partial.camera.latitude_deg << ' '
+              << prepared.partial.camera.longitude_deg << ' ' << prepared.partial.camera.height_m;
   if (terrain_key.str() != terrain_key_) {
     std::string warning;
     setup_ms.emplace_back("terrain", gpu::time_pass([&] {
@@ -152,7 +152,8 @@ render::RenderResult ViewSwitch::render(const ViewState& state, int width, int h
   const int first = row_count > 0 ? first_row : 0, rows = row_count > 0 ? row_count : height;
   const std::size_t row_floats = static_cast<std::size_t>(width) * 4;
   for (std::size_t k = first * row_floats; k < (first + rows) * row_floats; ++k)
-    ground.radiance.pixels[k] = static_cast<float>((1.0 - share) * ground.radiance.pixels[k] + share * orbit.radiance.pixels[k]);
+    ground.radiance.pixels[k] =
+        static_cast<float>((1.0 - share) * ground.radiance.pixels[k] + share * orbit.radiance.pixels[k]);
   for (const std::string& pass : orbit.passes) ground.passes.push_back("orbit " + pass);
   for (const auto& [pass, ms] : orbit.timings_ms) ground.timings_ms.emplace_back("orbit " + pass, ms);
   return ground;
@@ -191,7 +192,8 @@ render::RenderResult ModelSource::render(const ViewState& state, int width, int 
   render::PreviewSettings settings = preview_settings(state, width, height);
   settings.first_row = first_row;
   settings.row_count = row_count;
-  result.timings_ms.emplace_back("preview", gpu::time_pass([&] { result.radiance = preview_->render(*volume_, settings); }));
+  result.timings_ms.emplace_back("preview",
+                                 gpu::time_pass([&] { result.radiance = preview_->render(*volume_, settings); }));
   result.passes = {"model_preview"};
   return result;
 }

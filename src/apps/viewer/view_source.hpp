@@ -58,8 +58,8 @@ class GroundSource : public ViewSource {
  public:
   GroundSource(const std::filesystem::path& cover_dir, const std::filesystem::path& cache_directory);
   std::string name() const override { return "ground"; }
-  render::RenderResult render(const ViewState& state, int width, int height, int first_row = 0,
-                              int row_count = 0, bool coarse = false) override;
+  render::RenderResult render(const ViewState& state, int width, int height, int first_row = 0, int row_count = 0,
+                              bool coarse = false) override;
   void set_march_lattice(int stride, glm::ivec2 phase) override {
     march_stride_ = stride;
     march_phase_ = phase;
@@ -71,7 +71,7 @@ class GroundSource : public ViewSource {
   std::filesystem::path cache_directory_;
   bool cover_from_files_ = false;
   render::GlobalCoverFaces cover_;
-  std::string cover_key_;    // the parameters cover_ was made with
+  std::string cover_key_;  // the parameters cover_ was made with
   std::vector<regional::WeatherSeries> stations_;
   std::vector<std::string> station_files_;
   std::unique_ptr<render::NoiseVolume> noise_;
@@ -90,8 +90,8 @@ class OrbitSource : public ViewSource {
   ~OrbitSource() override;
   std::string name() const override { return "orbit"; }
   // Renders the whole image (the orbit view has no bands; `first_row`, `row_count` are ignored).
-  render::RenderResult render(const ViewState& state, int width, int height, int first_row = 0,
-                              int row_count = 0, bool coarse = false) override;
+  render::RenderResult render(const ViewState& state, int width, int height, int first_row = 0, int row_count = 0,
+                              bool coarse = false) override;
 
  private:
   std::filesystem::path cover_dir_;
@@ -106,8 +106,8 @@ class ViewSwitch : public ViewSource {
  public:
   ViewSwitch(const std::filesystem::path& cover_dir, const std::filesystem::path& cache_directory);
   std::string name() const override { return "ground or orbit"; }
-  render::RenderResult render(const ViewState& state, int width, int height, int first_row = 0,
-                              int row_count = 0, bool coarse = false) override;
+  render::RenderResult render(const ViewState& state, int width, int height, int first_row = 0, int row_count = 0,
+                              bool coarse = false) override;
   void set_march_lattice(int stride, glm::ivec2 phase) override { ground_.set_march_lattice(stride, phase); }
 
  private:
@@ -125,8 +125,8 @@ class ModelSource : public ViewSource {
   explicit ModelSource(int size);
   ~ModelSource() override;
   std::string name() const override { return "model"; }
-  render::RenderResult render(const ViewState& state, int width, int height, int first_row = 0,
-                              int row_count = 0, bool coarse = false) override;
+  render::RenderResult render(const ViewState& state, int width, int height, int first_row = 0, int row_count = 0,
+                              bool coarse = false) override;
   // The volume as of the last render (nullptr before the first).
   const model::DensityVolume* volume() const { return volume_.get(); }
 

@@ -14,19 +14,28 @@ namespace nephele::viewer {
 std::vector<Binding> bindings(ViewState& s) {
   namespace sc = params::scene;
   namespace co = params::cover;
-  return {{&sc::view, &s.viewpoint},        {&sc::heading, &s.camera.heading_deg}, {&sc::pitch, &s.camera.pitch_deg},
-          {&sc::fov, &s.camera.fov_deg},    {&sc::time, &s.time},                  {&sc::view_steps, &s.view_steps},
-          {&sc::light_steps, &s.light_steps}, {&sc::exposure, &s.exposure},         {&sc::seed, &s.seed},
-          {&sc::cover_size, &s.cover_size}, {&co::coverage, &s.coverage},          {&co::month, &s.month},
+  return {{&sc::view, &s.viewpoint},
+          {&sc::heading, &s.camera.heading_deg},
+          {&sc::pitch, &s.camera.pitch_deg},
+          {&sc::fov, &s.camera.fov_deg},
+          {&sc::time, &s.time},
+          {&sc::view_steps, &s.view_steps},
+          {&sc::light_steps, &s.light_steps},
+          {&sc::exposure, &s.exposure},
+          {&sc::seed, &s.seed},
+          {&sc::cover_size, &s.cover_size},
+          {&co::coverage, &s.coverage},
+          {&co::month, &s.month},
           {&co::iterations, &s.iterations},
-          {&co::step, &s.step},             {&co::integrator, &s.integrator}};
+          {&co::step, &s.step},
+          {&co::integrator, &s.integrator}};
 }
 
 bool option_only(const params::Parameter& p) {
   // --quality sets the steps the panels then show (regional::apply_render_quality).
-  return &p == &params::scene::size || &p == &params::scene::scene_path || &p == &params::scene::quality || &p == &params::run::view_record ||
-         &p == &params::run::view_frames || &p == &params::run::no_cache || &p == &params::cloud_model::view_model ||
-         &p == &params::cloud_model::view_model_size;
+  return &p == &params::scene::size || &p == &params::scene::scene_path || &p == &params::scene::quality ||
+         &p == &params::run::view_record || &p == &params::run::view_frames || &p == &params::run::no_cache ||
+         &p == &params::cloud_model::view_model || &p == &params::cloud_model::view_model_size;
 }
 
 void go_to_viewpoint(ViewState& state, const std::string& name) {

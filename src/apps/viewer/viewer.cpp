@@ -67,7 +67,8 @@ core::ImageData upsampled(const core::ImageData& image, int width, int height) {
   if (image.width == 0 || image.height == 0) return out;
   for (int y = 0; y < height; ++y)
     for (int x = 0; x < width; ++x) {
-      const int sx = std::min(image.width - 1, x * image.width / width), sy = std::min(image.height - 1, y * image.height / height);
+      const int sx = std::min(image.width - 1, x * image.width / width),
+                sy = std::min(image.height - 1, y * image.height / height);
       std::copy_n(&image.pixels[(std::size_t(sy) * image.width + sx) * image.channels], image.channels,
                   &out.pixels[(std::size_t(y) * width + x) * image.channels]);
     }
@@ -81,7 +82,8 @@ std::string frame_name(long index) {
 }
 
 // One file written whole or not at all (the frames, screenshots and saved models).
-void write_whole(const std::filesystem::path& directory, const std::string& name, const std::vector<unsigned char>& bytes) {
+void write_whole(const std::filesystem::path& directory, const std::string& name,
+                 const std::vector<unsigned char>& bytes) {
   io::OutputSet set(directory.empty() ? "." : directory, io::OutputSet::Scope::files);
   set.write(name, bytes);
   set.commit();
@@ -92,7 +94,8 @@ void write_png(const std::filesystem::path& directory, const std::string& name, 
 }
 
 bool shift_held(GLFWwindow* window) {
-  return glfwGetKey(window, GLFW_KEY_LEFT_SHIFT) == GLFW_PRESS || glfwGetKey(window, GLFW_KEY_RIGHT_SHIFT) == GLFW_PRESS;
+  return glfwGetKey(window, GLFW_KEY_LEFT_SHIFT) == GLFW_PRESS ||
+         glfwGetKey(window, GLFW_KEY_RIGHT_SHIFT) == GLFW_PRESS;
 }
 
 // The selected primitive's outline over the image: its sphere's circle, or the circles of a
@@ -118,8 +121,8 @@ void draw_selection(const ViewState& state, int width, int height) {
   const float dx = b.x - a.x, dy = b.y - a.y, length = std::max(1e-3f, std::hypot(dx, dy));
   const float nx = -dy / length, ny = dx / length;
   for (const float side : {1.0f, -1.0f})
-    list->AddLine(ImVec2(a.x + side * nx * a.z, a.y + side * ny * a.z), ImVec2(b.x + side * nx * b.z, b.y + side * ny * b.z),
-                  colour, 2.0f);
+    list->AddLine(ImVec2(a.x + side * nx * a.z, a.y + side * ny * a.z),
+                  ImVec2(b.x + side * nx * b.z, b.y + side * ny * b.z), colour, 2.0f);
 }
 
 }  // namespace
@@ -129,31 +132,96 @@ const std::vector<Viewer::KeyBinding>& Viewer::key_table() {
   static const std::vector<KeyBinding> table = {
       {{}, false, M::view, false, "drag (left button)", "turn the view: the scene follows the cursor", nullptr},
       {{}, false, M::view, false, "scroll", "zoom (field of view); with Shift: climb or descend", nullptr},
-      {{GLFW_KEY_W, GLFW_KEY_UP}, false, M::view, true, "W/S or Up/Down", "fly forward/back along the heading",
+      {{GLFW_KEY_W, GLFW_KEY_UP},
+       false,
+       M::view,
+       true,
+       "W/S or Up/Down",
+       "fly forward/back along the heading",
        [](Viewer& v, GLFWwindow*) { fly(v.state_, flight_step_m(v.state_), 0, 0); }},
-      {{GLFW_KEY_S, GLFW_KEY_DOWN}, false, M::view, true, "", "",
+      {{GLFW_KEY_S, GLFW_KEY_DOWN},
+       false,
+       M::view,
+       true,
+       "",
+       "",
        [](Viewer& v, GLFWwindow*) { fly(v.state_, -flight_step_m(v.state_), 0, 0); }},
-      {{GLFW_KEY_A, GLFW_KEY_LEFT}, false, M::view, true, "A/D or Left/Right", "fly left/right",
+      {{GLFW_KEY_A, GLFW_KEY_LEFT},
+       false,
+       M::view,
+       true,
+       "A/D or Left/Right",
+       "fly left/right",
        [](Viewer& v, GLFWwindow*) { fly(v.state_, 0, -flight_step_m(v.state_), 0); }},
-      {{GLFW_KEY_D, GLFW_KEY_RIGHT}, false, M::view, true, "", "",
+      {{GLFW_KEY_D, GLFW_KEY_RIGHT},
+       false,
+       M::view,
+       true,
+       "",
+       "",
        [](Viewer& v, GLFWwindow*) { fly(v.state_, 0, flight_step_m(v.state_), 0); }},
-      {{GLFW_KEY_PAGE_UP}, false, M::view, true, "PageUp/PageDown",
+      {{GLFW_KEY_PAGE_UP},
+       false,
+       M::view,
+       true,
+       "PageUp/PageDown",
        "climb/descend (a key press flies a tenth of the height, at least 50 m)",
        [](Viewer& v, GLFWwindow*) { fly(v.state_, 0, 0, flight_step_m(v.state_)); }},
-      {{GLFW_KEY_PAGE_DOWN}, false, M::view, true, "", "",
+      {{GLFW_KEY_PAGE_DOWN},
+       false,
+       M::view,
+       true,
+       "",
+       "",
        [](Viewer& v, GLFWwindow*) { fly(v.state_, 0, 0, -flight_step_m(v.state_)); }},
-      {{GLFW_KEY_F12, GLFW_KEY_P}, false, M::both, false, "F12 or P",
+      {{GLFW_KEY_F12, GLFW_KEY_P},
+       false,
+       M::both,
+       false,
+       "F12 or P",
        "screenshot: nephele_view_NNNN.png in the working directory",
        [](Viewer& v, GLFWwindow*) { std::cerr << "nephele view: wrote " << v.screenshot().string() << "\n"; }},
-      {{GLFW_KEY_TAB}, false, M::both, false, "Tab", "hide or show the panels and the times",
+      {{GLFW_KEY_TAB},
+       false,
+       M::both,
+       false,
+       "Tab",
+       "hide or show the panels and the times",
        [](Viewer& v, GLFWwindow*) { v.panels_ = !v.panels_; }},
-      {{GLFW_KEY_ESCAPE}, false, M::both, true, "Escape", "close the window",
+      {{GLFW_KEY_ESCAPE},
+       false,
+       M::both,
+       true,
+       "Escape",
+       "close the window",
        [](Viewer&, GLFWwindow* w) { glfwSetWindowShouldClose(w, GLFW_TRUE); }},
       {{}, false, M::modeller, false, "click", "select the primitive under the cursor (none: deselect)", nullptr},
-      {{}, false, M::modeller, false, "drag a primitive", "move it in the plane facing the camera through its centre", nullptr},
-      {{}, false, M::modeller, false, "drag elsewhere", "orbit the camera around the cloud (half a turn across the window)", nullptr},
-      {{}, false, M::modeller, false, "Shift + scroll", "resize the selected primitive (radius and influence x1.1 per notch)", nullptr},
-      {{GLFW_KEY_N, GLFW_KEY_INSERT}, false, M::modeller, false, "N or Insert",
+      {{},
+       false,
+       M::modeller,
+       false,
+       "drag a primitive",
+       "move it in the plane facing the camera through its centre",
+       nullptr},
+      {{},
+       false,
+       M::modeller,
+       false,
+       "drag elsewhere",
+       "orbit the camera around the cloud (half a turn across the window)",
+       nullptr},
+      {{},
+       false,
+       M::modeller,
+       false,
+       "Shift + scroll",
+       "resize the selected primitive (radius and influence x1.1 per notch)",
+       nullptr},
+      {{GLFW_KEY_N, GLFW_KEY_INSERT},
+       false,
+       M::modeller,
+       false,
+       "N or Insert",
        "add a primitive: a copy beside the selected one, else a point at the centre",
        [](Viewer& v, GLFWwindow* w) {
          int width = 0, height = 0;
@@ -161,16 +229,25 @@ const std::vector<Viewer::KeyBinding>& Viewer::key_table() {
          add_primitive(v.state_, std::max(width, 1), std::max(height, 1));
          v.model_status_ = "added primitive " + std::to_string(v.state_.selected);
        }},
-      {{GLFW_KEY_DELETE, GLFW_KEY_BACKSPACE}, false, M::modeller, false, "Delete or Backspace",
+      {{GLFW_KEY_DELETE, GLFW_KEY_BACKSPACE},
+       false,
+       M::modeller,
+       false,
+       "Delete or Backspace",
        "remove the selected primitive (a model keeps at least one)",
        [](Viewer& v, GLFWwindow*) {
          const int selected = v.state_.selected;
          v.model_status_ = remove_selected(v.state_) ? "removed primitive " + std::to_string(selected)
-                           : selected < 0           ? "select a primitive to remove"
-                                                    : "a model keeps at least one primitive";
+                           : selected < 0            ? "select a primitive to remove"
+                                                     : "a model keeps at least one primitive";
        }},
       {{}, false, M::modeller, false, "scroll", "zoom (field of view)", nullptr},
-      {{GLFW_KEY_S}, true, M::modeller, false, "Ctrl+S", "save the model to the --model file (an example: NAME.cloud.json here)",
+      {{GLFW_KEY_S},
+       true,
+       M::modeller,
+       false,
+       "Ctrl+S",
+       "save the model to the --model file (an example: NAME.cloud.json here)",
        [](Viewer& v, GLFWwindow*) {
          try {
            std::cerr << "nephele view: wrote " << v.save_model().string() << "\n";
@@ -317,15 +394,16 @@ void Viewer::refine(int width, int height) {
     const glm::ivec2 phase = render::march_phase(moving_frames_, preview_march_stride);
     if (reduced) source_->set_march_lattice(preview_march_stride, phase);
     // The reduced sizes are previews the full size replaces: the source may march fewer steps.
-    last_render_ = source_->render(state_, w, h, first, level.bands > 1 ? std::min(rows, h - first) : 0, level.divisor > 1);
+    last_render_ =
+        source_->render(state_, w, h, first, level.bands > 1 ? std::min(rows, h - first) : 0, level.divisor > 1);
     source_->set_march_lattice(1, {0, 0});
     if (last_render_.march_stride > 1) {
       ++moving_frames_;
       const auto start = std::chrono::steady_clock::now();
       const long reprojected = render::fill_unmarched(last_render_.radiance, camera, last_render_.march_stride,
                                                       last_render_.march_phase, &preview_history_);
-      last_render_.timings_ms.emplace_back("reproject", std::chrono::duration<double, std::milli>(
-                                                            std::chrono::steady_clock::now() - start).count());
+      last_render_.timings_ms.emplace_back(
+          "reproject", std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
       last_render_.passes.push_back("reproject " + std::to_string(reprojected) + " pixels");
     }
     if (next_level_ == 0) preview_history_ = {last_render_.radiance, camera};
@@ -337,7 +415,8 @@ void Viewer::refine(int width, int height) {
       if (level.band == 0) shown_ = upsampled(shown_, w, h);
       const std::size_t row = std::size_t(w) * shown_.channels;
       std::copy(last_render_.radiance.pixels.begin() + first * row,
-                last_render_.radiance.pixels.begin() + std::min(h, first + rows) * row, shown_.pixels.begin() + first * row);
+                last_render_.radiance.pixels.begin() + std::min(h, first + rows) * row,
+                shown_.pixels.begin() + first * row);
     }
     upload(render::tone_map(shown_, state_.exposure));
     shown_exposure_ = state_.exposure;
@@ -417,11 +496,12 @@ void Viewer::frame() {
         draw_panels(state_, panel_error_);
       }
       const RefinementLevel level = refinement_levels()[std::min(next_level_, refinement_levels().size()) - 1];
-      const std::string refinement =
-          next_level_ >= refinement_levels().size() ? "full size"
-          : level.bands > 1 ? "band " + std::to_string(level.band + 1) + "/" + std::to_string(level.bands)
-                            : "1/" + std::to_string(level.divisor);
-      draw_timings(last_render_.timings_ms, last_render_.radiance.width, last_render_.radiance.height, refinement, frame_ms_);
+      const std::string refinement = next_level_ >= refinement_levels().size() ? "full size"
+                                     : level.bands > 1
+                                         ? "band " + std::to_string(level.band + 1) + "/" + std::to_string(level.bands)
+                                         : "1/" + std::to_string(level.divisor);
+      draw_timings(last_render_.timings_ms, last_render_.radiance.width, last_render_.radiance.height, refinement,
+                   frame_ms_);
     }
     ImGui::Render();
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
@@ -449,9 +529,7 @@ std::filesystem::path Viewer::screenshot(const std::filesystem::path& directory)
   return directory / name;
 }
 
-const model::DensityVolume* Viewer::model_volume() const {
-  return model_source_ ? model_source_->volume() : nullptr;
-}
+const model::DensityVolume* Viewer::model_volume() const { return model_source_ ? model_source_->volume() : nullptr; }
 
 std::filesystem::path Viewer::save_model() {
   const std::filesystem::path& path = options_.model_file;
@@ -466,7 +544,8 @@ void Viewer::on_key(GLFWwindow* window, int key, int scancode, int action, int m
   Viewer* viewer = viewer_of(window);
   // Shift as the key events report it (the scroll callback has no modifiers; glfwGetKey below
   // covers a Shift pressed before the window had the focus).
-  if (viewer != nullptr && (key == GLFW_KEY_LEFT_SHIFT || key == GLFW_KEY_RIGHT_SHIFT)) viewer->shift_ = action != GLFW_RELEASE;
+  if (viewer != nullptr && (key == GLFW_KEY_LEFT_SHIFT || key == GLFW_KEY_RIGHT_SHIFT))
+    viewer->shift_ = action != GLFW_RELEASE;
   if (viewer == nullptr || panels_take_keyboard() || (action != GLFW_PRESS && action != GLFW_REPEAT)) return;
   const KeyMode mode = viewer->state_.modeller ? KeyMode::modeller : KeyMode::view;
   const bool control = (mods & GLFW_MOD_CONTROL) != 0;

@@ -105,8 +105,8 @@ class Viewer {
     std::vector<int> keys;  // GLFW key codes
     bool control;           // needs Ctrl (checked before the rows without)
     KeyMode mode;
-    bool repeats;           // acts on a key's repeats too (flying), else on its press only
-    const char* label;      // as the help shows it
+    bool repeats;       // acts on a key's repeats too (flying), else on its press only
+    const char* label;  // as the help shows it
     const char* help;
     void (*act)(Viewer&, GLFWwindow*);
   };
@@ -134,8 +134,8 @@ class Viewer {
   bool camera_moving_ = false;
   long moving_frames_ = 0;
   render::FrameHistory preview_history_;
-  double shown_exposure_ = 0;    // exposure of the texture shown
-  std::size_t next_level_ = 0;   // refinement level rendered next
+  double shown_exposure_ = 0;                 // exposure of the texture shown
+  std::size_t next_level_ = 0;                // refinement level rendered next
   int target_width_ = 0, target_height_ = 0;  // framebuffer size being refined
   render::RenderResult last_render_;
   core::ImageData shown_;

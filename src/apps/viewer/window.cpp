@@ -42,7 +42,7 @@ Window::Window(int width, int height, const std::string& title, bool visible) {
   }
   glfwMakeContextCurrent(window_);
   gpu::keep_drivers_loaded();  // sanitizer builds: see gpu/driver_lifetime.hpp
-  glfwSwapInterval(0);  // the refinement, not the monitor, paces the frames
+  glfwSwapInterval(0);         // the refinement, not the monitor, paces the frames
   info_.platform = "window";
   info_.vendor = reinterpret_cast<const char*>(glGetString(GL_VENDOR));
   info_.renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
