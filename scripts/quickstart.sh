@@ -124,6 +124,8 @@ install_missing_packages
 if [[ "$mode" == "test" ]]; then build; else build nephele; fi
 
 if [[ "$mode" == "test" ]]; then
+  say "format: scripts/check-format.sh"
+  scripts/check-format.sh
   say "test: ctest --test-dir build --output-on-failure -j2"
   ctest --test-dir build --output-on-failure -j2
 else
