@@ -11,7 +11,9 @@
 #include "apps/viewer/viewer.hpp"
 #include "cli_support.hpp"
 #include "core/error.hpp"
+#include "params/field_binding.hpp"
 #include "params/table.hpp"
+#include "render/scene_renderer.hpp"
 
 namespace nephele {
 
@@ -252,6 +254,46 @@ TEST_CASE(
   const viewer::ViewState from_scene = viewer::state_of_scene(scene);
   CHECK(viewer::shows_orbit(from_scene));
   CHECK(from_scene.camera.latitude_deg == Approx(params::scene::lat.default_number).epsilon(0).margin(1e-9));
+}
+
+TEST_CASE("a scene's parameters reach the viewer's state and the renderer's settings through the table's bindings",
+          "[fast][viewer]") {
+  regional::Scene scene;
+  scene.time = "2026-01-02T03:04Z";
+  scene.seed = 77;
+  scene.cover_size = 64;
+  scene.view_steps = 9;
+  scene.light_steps = 3;
+  scene.exposure = 2.5;
+  scene.pitch_deg = 12;
+  scene.fov_deg = 33;
+  scene.powder = 0.25;
+  scene.resolution_divisor = 3;
+  const viewer::ViewState state = viewer::state_of_scene(scene);
+  CHECK(state.time == scene.time);
+  CHECK(state.seed == 77u);
+  CHECK(state.cover_size == 64);
+  CHECK(state.view_steps == 9);
+  CHECK(state.light_steps == 3);
+  CHECK(state.exposure == 2.5);
+  const regional::Scene back = viewer::scene_of(state, 32, 18);
+  CHECK(back.time == scene.time);
+  CHECK(back.seed == 77u);
+  CHECK(back.view_steps == 9);
+  CHECK(back.pitch_deg == 12);
+  CHECK(back.fov_deg == 33);
+  // The renderer's settings: numbers converted to their fields' types.
+  const render::RenderSettings settings = render::render_settings(scene);
+  CHECK(settings.view_steps == 9);
+  CHECK(settings.powder == 0.25f);
+  CHECK(settings.resolution_divisor == 3);
+  CHECK(settings.seed == 77u);
+  // A parameter bound to a text on one side and a number on the other is a programming error.
+  std::string text = "x";
+  double number = 1;
+  CHECK_THROWS_AS(params::copy_bound_fields({{&params::scene::seed, &text}}, {{&params::scene::seed, &number}}),
+                  std::logic_error);
+  CHECK(params::copy_bound_fields({{&params::scene::fov, &number}}, {{&params::scene::pitch, &number}}) == 0);
 }
 
 }  // namespace nephele

@@ -36,6 +36,26 @@ void check_range(const std::string& where, double value, const params::Parameter
 
 }  // namespace
 
+std::vector<params::FieldBinding> field_bindings(Scene& s) {
+  namespace sc = params::scene;
+  return {{&sc::pitch, &s.pitch_deg},
+          {&sc::fov, &s.fov_deg},
+          {&sc::time, &s.time},
+          {&sc::seed, &s.seed},
+          {&sc::quality, &s.quality},
+          {&sc::view_steps, &s.view_steps},
+          {&sc::light_steps, &s.light_steps},
+          {&sc::sky_steps, &s.sky_steps},
+          {&sc::powder, &s.powder},
+          {&sc::shadow_map_size, &s.shadow_map_size},
+          {&sc::frames, &s.frames},
+          {&sc::resolution_divisor, &s.resolution_divisor},
+          {&sc::terrain, &s.terrain},
+          {&sc::fog_top, &s.fog_top_m},
+          {&sc::exposure, &s.exposure},
+          {&sc::cover_size, &s.cover_size}};
+}
+
 const std::vector<std::string>& quality_step_keys() {
   static const std::vector<std::string> keys = {
       std::string(params::scene::view_steps.key), std::string(params::scene::light_steps.key),

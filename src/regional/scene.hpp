@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/error.hpp"
+#include "params/field_binding.hpp"
 #include "params/table.hpp"
 
 namespace nephele::regional {
@@ -54,6 +55,11 @@ struct Scene {
   int cover_size = params::scene::cover_size.default_int();  // global cover size when no weather is given
   std::vector<std::string> outputs;                          // file names (png, exr); --scene renders into --out DIR
 };
+
+// The fields of `scene` that hold one parameter of the table each (not the view, whose meaning
+// depends on the optional position, nor the optional heading and position themselves): what
+// copies between a scene and the structs made from it go through (params::copy_bound_fields).
+std::vector<params::FieldBinding> field_bindings(Scene& scene);
 
 // Scene files are read by src/io/scene_files.hpp.
 // Which option set a scene key ("view" -> "--view"): errors about that key name the option the

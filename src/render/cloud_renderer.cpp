@@ -313,6 +313,18 @@ int shadow_map_count(const glsl::MarchParams& params) {
   return maps;
 }
 
+std::vector<params::FieldBinding> field_bindings(RenderSettings& s) {
+  namespace sc = params::scene;
+  return {{&sc::view_steps, &s.view_steps},
+          {&sc::light_steps, &s.light_steps},
+          {&sc::sky_steps, &s.sky_steps},
+          {&sc::powder, &s.powder},
+          {&sc::frames, &s.frames},
+          {&sc::resolution_divisor, &s.resolution_divisor},
+          {&sc::shadow_map_size, &s.shadow_map_size},
+          {&sc::seed, &s.seed}};
+}
+
 RenderResult render_clouds(const Camera& camera, const std::vector<regional::CloudLayer>& layers,
                            const regional::WeatherField& field, double unix_seconds, const RenderSettings& settings,
                            glm::dvec2 wind_towards, double wind_speed, const NoiseVolume* noise,

@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "params/field_binding.hpp"
+#include "params/table.hpp"
 #include "core/image.hpp"
 #include "gpu/textures.hpp"
 #include "regional/cloud_layers.hpp"
@@ -79,6 +81,9 @@ struct RenderSettings {
   // the camera's size and at this one: the guide of render::upsample_guided.
   glm::ivec2 upsample_size{0, 0};
 };
+
+// The fields of `settings` that a scene's parameters set (render_settings copies through them).
+std::vector<params::FieldBinding> field_bindings(RenderSettings& settings);
 
 struct RenderResult {
   core::ImageData radiance;         // RGBA float, linear; A = cloud opacity

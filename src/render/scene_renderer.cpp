@@ -163,14 +163,8 @@ PreparedScene prepare_scene(const regional::Scene& scene, const std::vector<regi
 
 RenderSettings render_settings(const regional::Scene& scene) {
   RenderSettings settings;
-  settings.view_steps = scene.view_steps;
-  settings.light_steps = scene.light_steps;
-  settings.frames = scene.frames;
-  settings.resolution_divisor = scene.resolution_divisor;
-  settings.sky_steps = scene.sky_steps;
-  settings.powder = static_cast<float>(scene.powder);
-  settings.shadow_map_size = scene.shadow_map_size;
-  settings.seed = scene.seed;
+  regional::Scene source = scene;  // bound through a copy: the bindings point into it
+  params::copy_bound_fields(regional::field_bindings(source), field_bindings(settings));
   return settings;
 }
 

@@ -58,6 +58,10 @@ void go_to_viewpoint(ViewState& state, const std::string& name) {
 
 ViewState state_of_scene(const regional::Scene& scene) {
   ViewState state;
+  // Time, seed, cover size, steps and exposure through the table's bindings of both structs;
+  // the camera below (scene_camera, or the orbit viewpoint's) replaces the pitch and fov.
+  regional::Scene source = scene;
+  params::copy_bound_fields(regional::field_bindings(source), bindings(state));
   if (!scene.latitude_deg && scene.view == "orbit") {
     // Above the orbit view's default point (render --view orbit without --lat, --lon).
     regional::Scene ground = scene;
@@ -70,12 +74,6 @@ ViewState state_of_scene(const regional::Scene& scene) {
     state.viewpoint = scene.latitude_deg ? "" : scene.view;
     state.camera = render::scene_camera(scene);
   }
-  state.time = scene.time;
-  state.seed = scene.seed;
-  state.cover_size = scene.cover_size;
-  state.view_steps = scene.view_steps;
-  state.light_steps = scene.light_steps;
-  state.exposure = scene.exposure;
   state.weather = scene.weather;
   return state;
 }
@@ -87,17 +85,12 @@ regional::Scene scene_of(const ViewState& state, int width, int height) {
   scene.longitude_deg = state.camera.longitude_deg;
   scene.height_m = state.camera.height_m;
   scene.heading_deg = state.camera.heading_deg;
-  scene.pitch_deg = state.camera.pitch_deg;
-  scene.fov_deg = state.camera.fov_deg;
-  scene.time = state.time;
   scene.width = width;
   scene.height = height;
   scene.weather = state.weather;
-  scene.seed = state.seed;
-  scene.view_steps = state.view_steps;
-  scene.light_steps = state.light_steps;
-  scene.exposure = state.exposure;
-  scene.cover_size = state.cover_size;
+  // Pitch, fov, time, seed, steps, exposure, cover size through the table's bindings.
+  ViewState source = state;
+  params::copy_bound_fields(bindings(source), regional::field_bindings(scene));
   return scene;
 }
 

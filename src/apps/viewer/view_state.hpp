@@ -10,6 +10,7 @@
 
 #include "cover/cover_parameters.hpp"
 #include "model/cloud_model.hpp"
+#include "params/field_binding.hpp"
 #include "params/table.hpp"
 #include "regional/scene.hpp"
 #include "render/cloud_renderer.hpp"
@@ -38,12 +39,9 @@ struct ViewState {
   int selected = -1;  // the primitive selected in the modeller, -1 for none
 };
 
-// A field of ViewState and the parameter that declares it.
-using FieldPointer = std::variant<double*, float*, int*, std::uint32_t*, std::string*>;
-struct Binding {
-  const params::Parameter* parameter;
-  FieldPointer field;
-};
+// A field of ViewState and the parameter that declares it (params/field_binding.hpp).
+using FieldPointer = params::FieldPointer;
+using Binding = params::FieldBinding;
 // The fields of `state` that panels edit, by parameter.
 std::vector<Binding> bindings(ViewState& state);
 // The parameters of the table that nephele view takes only as options, not in a panel.

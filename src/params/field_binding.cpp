@@ -1,0 +1,33 @@
+#include "params/field_binding.hpp"
+
+#include <stdexcept>
+#include <type_traits>
+
+namespace nephele::params {
+
+int copy_bound_fields(const std::vector<FieldBinding>& from, const std::vector<FieldBinding>& to) {
+  int copied = 0;
+  for (const FieldBinding& source : from)
+    for (const FieldBinding& target : to) {
+      if (source.parameter != target.parameter) continue;
+      std::visit(
+          [&](auto* in, auto* out) {
+            using In = std::remove_pointer_t<decltype(in)>;
+            using Out = std::remove_pointer_t<decltype(out)>;
+            constexpr bool in_text = std::is_same_v<In, std::string>, out_text = std::is_same_v<Out, std::string>;
+            if constexpr (in_text && out_text) {
+              *out = *in;
+            } else if constexpr (!in_text && !out_text) {
+              *out = static_cast<Out>(*in);
+            } else {
+              throw std::logic_error("copy_bound_fields: '" + std::string(source.parameter->key) +
+                                     "' is bound to a text on one side and a number on the other");
+            }
+          },
+          source.field, target.field);
+      ++copied;
+    }
+  return copied;
+}
+
+}  // namespace nephele::params
