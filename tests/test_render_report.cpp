@@ -238,6 +238,15 @@ TEST_CASE("the qualities' sweep renders every quality against a reference beyond
   const regional::Scene library;
   CHECK(library.view_steps == params::final_render_quality().view_steps);
   CHECK(library.resolution_divisor == 1);
+  // A step given by name survives the quality; the others take the quality's.
+  regional::Scene given;
+  regional::give_step(given, params::scene::light_steps, 7);
+  given.quality = "draft";
+  regional::apply_render_quality(given, "test");
+  CHECK(given.light_steps == 7);
+  CHECK(given.view_steps == params::render_qualities[0].view_steps);
+  CHECK(given.resolution_divisor == params::render_qualities[0].resolution_divisor);
+  CHECK_THROWS_AS(regional::give_step(given, params::scene::sky_steps, 4), std::logic_error);
 }
 
 TEST_CASE("the qualities' CSV and summary name each quality, its target and whether it meets it",

@@ -87,17 +87,13 @@ Scene parse_scene(const std::string& text, const std::string& source, const std:
     } else if (key == "quality") {
       s.quality = k.string(v, key);
     } else if (key == "view_steps") {
-      s.view_steps = k.integer(v, key);
-      s.steps_given.insert(key);
+      regional::give_step(s, params::scene::view_steps, k.integer(v, key));
     } else if (key == "light_steps") {
-      s.light_steps = k.integer(v, key);
-      s.steps_given.insert(key);
+      regional::give_step(s, params::scene::light_steps, k.integer(v, key));
     } else if (key == "frames") {
-      s.frames = k.integer(v, key);
-      s.steps_given.insert(key);
+      regional::give_step(s, params::scene::frames, k.integer(v, key));
     } else if (key == "resolution_divisor") {
-      s.resolution_divisor = k.integer(v, key);
-      s.steps_given.insert(key);
+      regional::give_step(s, params::scene::resolution_divisor, k.integer(v, key));
     } else if (key == "sky_steps") {
       s.sky_steps = k.integer(v, key);
     } else if (key == "shadow_map_size") {

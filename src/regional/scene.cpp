@@ -56,6 +56,14 @@ std::vector<params::FieldBinding> field_bindings(Scene& s) {
           {&sc::cover_size, &s.cover_size}};
 }
 
+void give_step(Scene& s, const params::Parameter& step, int value) {
+  int field = value;
+  if (params::copy_bound_fields({{&step, &field}}, field_bindings(s)) != 1 ||
+      std::find(quality_step_keys().begin(), quality_step_keys().end(), step.key) == quality_step_keys().end())
+    throw std::logic_error("give_step: '" + std::string(step.key) + "' is not a step setting of a quality");
+  s.steps_given.insert(std::string(step.key));
+}
+
 const std::vector<std::string>& quality_step_keys() {
   static const std::vector<std::string> keys = {
       std::string(params::scene::view_steps.key), std::string(params::scene::light_steps.key),

@@ -74,6 +74,9 @@ void validate_scene(const Scene& scene, const std::string& source_name, const Ke
 // (params::render_qualities); throws SceneError naming `source_name` (or --quality when the
 // option chose it) for an unknown quality.
 void apply_render_quality(Scene& scene, const std::string& source_name, const KeyOptions& options = {});
+// Sets step setting `step` (one of quality_step_keys' parameters) to `value` as given by name:
+// the field through field_bindings and the key into steps_given, so that the quality leaves it.
+void give_step(Scene& scene, const params::Parameter& step, int value);
 // The four step keys that a quality sets, in the order sidecars list them.
 const std::vector<std::string>& quality_step_keys();
 // Parses "1280x720": decimal digits only on both sides, each 1 to max_image_side; throws

@@ -6,6 +6,28 @@
 
 namespace nephele::render {
 
+namespace {
+
+// The source cell of output pixel (x, y) of a width x height image upsampled from `image`: its
+// 2 x 2 source pixels from (x0, y0) (clamped at the edges) and the bilinear weights (tx, ty).
+struct SourceCell {
+  int x0, y0;
+  double sx, sy, tx, ty;
+};
+
+SourceCell source_cell(int x, int y, int source_width, int source_height, int width, int height) {
+  SourceCell c;
+  c.sx = std::clamp((x + 0.5) * source_width / width - 0.5, 0.0, source_width - 1.0);
+  c.sy = std::clamp((y + 0.5) * source_height / height - 0.5, 0.0, source_height - 1.0);
+  c.x0 = static_cast<int>(std::floor(c.sx));
+  c.y0 = static_cast<int>(std::floor(c.sy));
+  c.tx = c.sx - c.x0;
+  c.ty = c.sy - c.y0;
+  return c;
+}
+
+}  // namespace
+
 void sample_bilinear(const core::ImageData& image, double x, double y, float* out) {
   const auto axis = [](double s, int size, int& i0, int& i1, float& t) {
     s = std::clamp(s, 0.0, size - 1.0);
@@ -32,11 +54,13 @@ core::ImageData upsample_bilinear(const core::ImageData& image, int width, int h
     throw std::invalid_argument("upsample_bilinear: empty image");
   core::ImageData out{width, height, image.channels, {}};
   out.pixels.resize(static_cast<size_t>(width) * height * image.channels);
-  // Pixel centres line up: output pixel x covers the source coordinate (x + 1/2) w/W - 1/2.
+  // Pixel centres line up: output pixel x covers the source coordinate (x + 1/2) w/W - 1/2
+  // (source_cell, which upsample_guided and guide_pixels take too).
   for (int y = 0; y < height; ++y)
-    for (int x = 0; x < width; ++x)
-      sample_bilinear(image, (x + 0.5) * image.width / width - 0.5, (y + 0.5) * image.height / height - 0.5,
-                      &out.pixels[(static_cast<size_t>(y) * width + x) * image.channels]);
+    for (int x = 0; x < width; ++x) {
+      const SourceCell c = source_cell(x, y, image.width, image.height, width, height);
+      sample_bilinear(image, c.sx, c.sy, &out.pixels[(static_cast<size_t>(y) * width + x) * image.channels]);
+    }
   return out;
 }
 
@@ -47,28 +71,6 @@ double guided_likeness(float a, float b) {
   const double l = std::log(static_cast<double>(a) / b) / sigma;
   return std::exp(-0.5 * l * l);
 }
-
-namespace {
-
-// The source cell of output pixel (x, y) of a width x height image upsampled from `image`: its
-// 2 x 2 source pixels from (x0, y0) (clamped at the edges) and the bilinear weights (tx, ty).
-struct SourceCell {
-  int x0, y0;
-  double sx, sy, tx, ty;
-};
-
-SourceCell source_cell(int x, int y, int source_width, int source_height, int width, int height) {
-  SourceCell c;
-  c.sx = std::clamp((x + 0.5) * source_width / width - 0.5, 0.0, source_width - 1.0);
-  c.sy = std::clamp((y + 0.5) * source_height / height - 0.5, 0.0, source_height - 1.0);
-  c.x0 = static_cast<int>(std::floor(c.sx));
-  c.y0 = static_cast<int>(std::floor(c.sy));
-  c.tx = c.sx - c.x0;
-  c.ty = c.sy - c.y0;
-  return c;
-}
-
-}  // namespace
 
 std::vector<glm::ivec2> guide_pixels(const core::ImageData& guide, int width, int height) {
   if (guide.width < 1 || guide.height < 1 || guide.channels != 1)

@@ -114,13 +114,9 @@ int run_render(const std::vector<std::string>& arguments) {
     parse_position(at, scene);
     typed["at"] = "--at";
   }
-  if (options.given(s::frames)) {
-    scene.frames = frames;
-    scene.steps_given.insert(std::string(s::frames.key));
-  }
+  if (options.given(s::frames)) regional::give_step(scene, s::frames, frames);
   if (options.given(s::resolution_divisor)) {
-    scene.resolution_divisor = divisor;
-    scene.steps_given.insert(std::string(s::resolution_divisor.key));
+    regional::give_step(scene, s::resolution_divisor, divisor);
     typed["resolution_divisor"] = "--resolution-divisor";
   }
   if (options.given(s::terrain)) scene.terrain = terrain;

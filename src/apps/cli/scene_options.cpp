@@ -47,14 +47,8 @@ regional::Scene SceneOptions::scene(regional::KeyOptions& typed) const {
     scene.quality = quality_;
     typed["quality"] = "--quality";
   }
-  if (options_.given(s::view_steps)) {
-    scene.view_steps = view_steps_;
-    scene.steps_given.insert(std::string(s::view_steps.key));
-  }
-  if (options_.given(s::light_steps)) {
-    scene.light_steps = light_steps_;
-    scene.steps_given.insert(std::string(s::light_steps.key));
-  }
+  if (options_.given(s::view_steps)) regional::give_step(scene, s::view_steps, view_steps_);
+  if (options_.given(s::light_steps)) regional::give_step(scene, s::light_steps, light_steps_);
   if (options_.given(s::seed)) scene.seed = seed_;
   if (!time_.empty()) {
     scene.time = time_;
