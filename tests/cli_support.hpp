@@ -2,15 +2,19 @@
 // Running the nephele executable from tests: its exit code and output, temporary directories,
 // whole files as text.
 #include <sys/wait.h>
+#include <wordexp.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <random>
 #include <sstream>
 #include <string>
 
 #include "case_tags.hpp"
+#include "command_server.hpp"
 
 namespace nephele::test {
 
@@ -37,12 +41,39 @@ inline Run run_command(const std::string& command) {
   return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, output};
 }
 
+// The words of `text` as sh would split and expand them (quotes, variables), or nothing where
+// the text needs more of the shell than that (redirections, pipes, command substitution).
+inline std::optional<std::vector<std::string>> shell_words(const std::string& text) {
+  wordexp_t expanded{};
+  if (::wordexp(text.c_str(), &expanded, WRDE_NOCMD) != 0) return std::nullopt;
+  std::vector<std::string> words(expanded.we_wordv, expanded.we_wordv + expanded.we_wordc);
+  ::wordfree(&expanded);
+  return words;
+}
+
 // nephele with the arguments, after `environment` (VAR=value ... or empty). Renders get
 // --no-cache, so that the tests never read or fill the user's noise cache (the cache's own
-// tests name a directory through XDG_CACHE_HOME and use run_command).
+// tests name a directory through XDG_CACHE_HOME and use run_command). The command runs in the
+// command server (command_server.hpp) where its words are plain, else as a process.
 inline Run run_with_environment(const std::string& environment, const std::string& arguments) {
   const bool render = arguments.rfind("render", 0) == 0 && (arguments.size() == 6 || arguments[6] == ' ');
   const std::string rest = render ? "render --no-cache" + arguments.substr(6) : arguments;
+  const auto variables = shell_words(environment);
+  const auto words = shell_words(rest);
+  const bool only_variables = variables && std::all_of(variables->begin(), variables->end(), [](const std::string& w) {
+                                return w.find('=') != std::string::npos && w.find('=') > 0;
+                              });
+  if (only_variables && words) {
+    starting_slow_work("a subprocess");
+    const std::filesystem::path log =
+        std::filesystem::temp_directory_path() / ("nephele_run_" + std::to_string(std::random_device{}()) + ".log");
+    const std::optional<int> code = run_in_command_server(*variables, *words, log);
+    if (code) {
+      const std::string output = read_file(log);
+      std::filesystem::remove(log);
+      return {*code, output};
+    }
+  }
   return run_command(environment + " " + std::string(NEPHELE_EXECUTABLE) + " " + rest);
 }
 
