@@ -60,9 +60,10 @@ std::map<std::string, std::string> make_and_hash() {
     cover = hash_pixels(d / "cover" / (std::string("cover_") + face + ".exr"), cover);
   hashes["cover 32 seed 7"] = hex(cover);
 
-  run_ok("noise --size 16 --seed 3 --cells 2 --channels rgba --r type=worley,octaves=3 --g type=perlin,octaves=3 "
-         "--b type=perlin-worley,worley-cells=2 --a type=inverted-worley --out " +
-         (d / "noise.raw").string());
+  run_ok(
+      "noise --size 16 --seed 3 --cells 2 --channels rgba --r type=worley,octaves=3 --g type=perlin,octaves=3 "
+      "--b type=perlin-worley,worley-cells=2 --a type=inverted-worley --out " +
+      (d / "noise.raw").string());
   hashes["noise 16^3 rgba seed 3"] = hex(hash_bytes(d / "noise.raw"));
 
   run_ok("model --example towering --size 24 --no-preview --quiet --out " + (d / "model").string());
@@ -99,7 +100,8 @@ TEST_CASE("covers, noise volumes, a model and renders of fixed seeds are bit-ide
   }
   const json::Value* entry = recorded.find(renderer);
   if (!entry) {
-    WARN("no golden hashes for " << renderer << " (scripts/golden-hashes.sh records them): checking that a second "
+    WARN("no golden hashes for " << renderer
+                                 << " (scripts/golden-hashes.sh records them): checking that a second "
                                     "run makes the same outputs");
     CHECK(make_and_hash() == made);
     return;
