@@ -17,7 +17,7 @@
 #include "core/error.hpp"
 #include "cover/cover_limits.hpp"
 #include "gl_support.hpp"
-#include "io/image_files.hpp"
+#include "files/image_files.hpp"
 #include "params/table.hpp"
 #include "core/json.hpp"
 #include "tolerances.hpp"
@@ -48,7 +48,7 @@ TEST_CASE("generate writes every output readable with the right sizes and a vali
   INFO(r.output);
   REQUIRE(r.exit_code == 0);
   for (const char* face : {"px", "nx", "py", "ny", "pz", "nz"}) {
-    const auto image = io::read_image(out.path / (std::string("cover_") + face + ".exr"));
+    const auto image = files::read_image(out.path / (std::string("cover_") + face + ".exr"));
     CHECK(image.width == 8);
     CHECK(image.height == 8);
     CHECK(image.channels == 1);
@@ -57,10 +57,10 @@ TEST_CASE("generate writes every output readable with the right sizes and a vali
       REQUIRE(v <= 1.0f);
     }
   }
-  const auto equirect = io::read_image(out.path / "cover_equirect.exr");
+  const auto equirect = files::read_image(out.path / "cover_equirect.exr");
   CHECK(equirect.width == 32);
   CHECK(equirect.height == 16);
-  const auto preview = io::read_image(out.path / "cover_equirect.png");
+  const auto preview = files::read_image(out.path / "cover_equirect.png");
   CHECK(preview.width == 32);
   CHECK(preview.height == 16);
   // The preview is the equirect quantised linearly: round(255 v) / 255.
@@ -117,8 +117,8 @@ TEST_CASE("generate --precision half writes the float faces rounded to half, wit
   // below 2^-14 are subnormal, absolute error at most 2^-25).
   const double relative = std::ldexp(1.0, -11), absolute = std::ldexp(1.0, -25);
   for (const char* name : {"cover_px.exr", "cover_nz.exr", "cover_equirect.exr"}) {
-    const auto a = io::read_image(full.path / name);
-    const auto b = io::read_image(half.path / name);
+    const auto a = files::read_image(full.path / name);
+    const auto b = files::read_image(half.path / name);
     REQUIRE(a.pixels.size() == b.pixels.size());
     for (size_t k = 0; k < a.pixels.size(); ++k)
       REQUIRE(std::abs(b.pixels[k] - a.pixels[k]) <= relative * std::abs(a.pixels[k]) + absolute);
@@ -221,7 +221,7 @@ TEST_CASE("render writes a tone-mapped PNG and a sidecar listing the passes", "[
           std::string(NEPHELE_SOURCE_DIR) + "/scenes/weather/bern-summer.json --out " + png);
   INFO(r.output);
   REQUIRE(r.exit_code == 0);
-  const auto image = io::read_image(png);
+  const auto image = files::read_image(png);
   CHECK(image.width == 24);
   CHECK(image.height == 12);
   CHECK(image.channels == 3);

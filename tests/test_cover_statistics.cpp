@@ -8,7 +8,7 @@
 
 #include "cli_support.hpp"
 #include "core/json.hpp"
-#include "io/image_files.hpp"
+#include "files/image_files.hpp"
 #include "shader_math/shader_math.hpp"
 #include "studies/cover_statistics.hpp"
 
@@ -134,7 +134,7 @@ TEST_CASE("stats writes stats.json and stats.png beside the cover's files", "[st
   double histogram = 0.0;
   for (const json::Value& v : stats.at("histogram").at("fractions").as_array()) histogram += v.as_number();
   CHECK(histogram == Approx(1.0).margin(1e-9));
-  const io::ImageData png = io::read_image(cover.path / "stats" / "stats.png");
+  const core::ImageData png = files::read_image(cover.path / "stats" / "stats.png");
   CHECK(png.width == 1200);
 }
 

@@ -17,12 +17,12 @@
 
 #include "case_tags.hpp"
 #include "cli_support.hpp"
-#include "io/atomic_output.hpp"
+#include "files/atomic_output.hpp"
 #include "io/cube_frames.hpp"
 #include "io/export_presets.hpp"
-#include "io/image_files.hpp"
+#include "files/image_files.hpp"
 #include "io/model_files.hpp"
-#include "io/texture_containers.hpp"
+#include "files/texture_containers.hpp"
 #include "io/volume_export.hpp"
 #include "core/error.hpp"
 #include "params/table.hpp"
@@ -51,16 +51,16 @@ void write_marker_cover(const std::filesystem::path& dir) {
   const auto m = marker_direction();
   const char* const suffixes[6] = {"px", "nx", "py", "ny", "pz", "nz"};
   for (int f = 0; f < 6; ++f) {
-    io::ImageData face{kSize, kSize, 1, std::vector<float>(kSize * kSize)};
+    core::ImageData face{kSize, kSize, 1, std::vector<float>(kSize * kSize)};
     for (int j = 0; j < kSize; ++j)
       for (int i = 0; i < kSize; ++i) {
         const auto d = io::gl_texel_direction(f, i, j, kSize);
         const double angle = std::acos(std::min(1.0, d[0] * m[0] + d[1] * m[1] + d[2] * m[2]));
         face.pixels[j * kSize + i] = angle < kRadius ? 1.0f : 0.1f;
       }
-    io::write_image(dir / (std::string("cover_") + suffixes[f] + ".exr"), face, io::exr_encoding({"Y"}));
+    files::write_image(dir / (std::string("cover_") + suffixes[f] + ".exr"), face, files::exr_encoding({"Y"}));
   }
-  io::write_text_file(dir / "cover.json", "{}\n");
+  files::write_text_file(dir / "cover.json", "{}\n");
 }
 
 struct Centroid {
@@ -134,12 +134,12 @@ float from_half(std::uint16_t h) {
 }
 
 // Read as stored: PNG alpha is unassociated, and OpenImageIO would premultiply the colour.
-io::ImageData read_png_as_stored(const std::filesystem::path& png) {
+core::ImageData read_png_as_stored(const std::filesystem::path& png) {
   OIIO::ImageSpec config;
   config.attribute("oiio:UnassociatedAlpha", 1);
   auto in = OIIO::ImageInput::open(png.string(), &config);
   REQUIRE(in);
-  io::ImageData image{in->spec().width, in->spec().height, in->spec().nchannels, {}};
+  core::ImageData image{in->spec().width, in->spec().height, in->spec().nchannels, {}};
   image.pixels.resize(std::size_t(image.width) * image.height * image.channels);
   REQUIRE(in->read_image(0, 0, 0, image.channels, OIIO::TypeDesc::FLOAT, image.pixels.data()));
   in->close();
@@ -177,7 +177,7 @@ TEST_CASE("export equirect: the marker at its longitude and geodetic latitude in
   CHECK(std::filesystem::exists(e.out.path / "README.txt"));
   for (const char* name : {"cover_equirect.exr", "cover_equirect_16.png", "cover_equirect_8.png"}) {
     INFO(name);
-    const auto image = io::read_image(e.out.path / name);
+    const auto image = files::read_image(e.out.path / name);
     REQUIRE(image.width == 4 * kSize);
     REQUIRE(image.height == 2 * kSize);
     const auto c = bright_centroid(image.pixels, image.width, image.channels, 0, 0, 0, image.width, image.height);
@@ -206,7 +206,7 @@ TEST_CASE("export gl-faces: the marker on the +Y face only, at the texel of the 
   const char* const suffixes[6] = {"px", "nx", "py", "ny", "pz", "nz"};
   for (int f = 0; f < 6; ++f) {
     INFO(suffixes[f]);
-    const auto face = io::read_image(e.out.path / (std::string("cover_") + suffixes[f] + ".exr"));
+    const auto face = files::read_image(e.out.path / (std::string("cover_") + suffixes[f] + ".exr"));
     REQUIRE(face.width == kSize);
     const auto c = bright_centroid(face.pixels, kSize, face.channels, 0, 0, 0, kSize, kSize);
     if (f != 2) {
@@ -369,7 +369,7 @@ TEST_CASE(
   }
   // OpenImageIO 2.4 reads the legacy RGBA8 cube as an N x 6N image of the faces in order; the
   // marker must be on the third face (+Y), where the GL table puts it.
-  const auto image = io::read_image(e.out.path / "cover_cube_rgba8.dds");
+  const auto image = files::read_image(e.out.path / "cover_cube_rgba8.dds");
   REQUIRE(image.width == kSize);
   REQUIRE(image.height == 6 * kSize);
   REQUIRE(image.channels == 4);
@@ -438,7 +438,7 @@ TEST_CASE("export exr-cube: an N x 6N envmap=cube strip with the +Y face flipped
   // OpenImageIO reports the header's envmap = cube as this texture format.
   CHECK(in->spec().get_string_attribute("textureformat") == "CubeFace Environment");
   in->close();
-  const auto image = io::read_image(path);
+  const auto image = files::read_image(path);
   REQUIRE(image.width == kSize);
   REQUIRE(image.height == 6 * kSize);
   for (int f = 0; f < 6; ++f) {
@@ -476,23 +476,23 @@ TEST_CASE("every cover export preset writes a README.txt naming the preset besid
 TEST_CASE("half_from_float rounds to the nearest binary16, ties to even, through subnormals and overflow",
           "[fast][export]") {
   // Exact values and their bit patterns (IEEE 754-2008, binary16).
-  CHECK(io::half_from_float(0.0f) == 0x0000);
-  CHECK(io::half_from_float(-0.0f) == 0x8000);
-  CHECK(io::half_from_float(1.0f) == 0x3C00);
-  CHECK(io::half_from_float(0.5f) == 0x3800);
-  CHECK(io::half_from_float(65504.0f) == 0x7BFF);               // largest finite half
-  CHECK(io::half_from_float(std::ldexp(1.0f, -24)) == 0x0001);  // smallest subnormal
-  CHECK(io::half_from_float(std::ldexp(1.0f, -14)) == 0x0400);  // smallest normal
+  CHECK(files::half_from_float(0.0f) == 0x0000);
+  CHECK(files::half_from_float(-0.0f) == 0x8000);
+  CHECK(files::half_from_float(1.0f) == 0x3C00);
+  CHECK(files::half_from_float(0.5f) == 0x3800);
+  CHECK(files::half_from_float(65504.0f) == 0x7BFF);               // largest finite half
+  CHECK(files::half_from_float(std::ldexp(1.0f, -24)) == 0x0001);  // smallest subnormal
+  CHECK(files::half_from_float(std::ldexp(1.0f, -14)) == 0x0400);  // smallest normal
   // Between 1 and the next half (1 + 2^-10): below, at and above the midpoint.
-  CHECK(io::half_from_float(1.0f + std::ldexp(1.0f, -12)) == 0x3C00);
-  CHECK(io::half_from_float(1.0f + std::ldexp(1.0f, -11)) == 0x3C00);      // tie to even (mantissa 0)
-  CHECK(io::half_from_float(1.0f + 3 * std::ldexp(1.0f, -11)) == 0x3C02);  // tie to even (mantissa 2)
-  CHECK(io::half_from_float(1.0f + std::ldexp(1.0f, -11) + std::ldexp(1.0f, -20)) == 0x3C01);
-  CHECK(io::half_from_float(std::ldexp(1.0f, -25)) == 0x0000);  // half the smallest subnormal: tie to even 0
-  CHECK(io::half_from_float(1e6f) == 0x7C00);                   // overflow to infinity
+  CHECK(files::half_from_float(1.0f + std::ldexp(1.0f, -12)) == 0x3C00);
+  CHECK(files::half_from_float(1.0f + std::ldexp(1.0f, -11)) == 0x3C00);      // tie to even (mantissa 0)
+  CHECK(files::half_from_float(1.0f + 3 * std::ldexp(1.0f, -11)) == 0x3C02);  // tie to even (mantissa 2)
+  CHECK(files::half_from_float(1.0f + std::ldexp(1.0f, -11) + std::ldexp(1.0f, -20)) == 0x3C01);
+  CHECK(files::half_from_float(std::ldexp(1.0f, -25)) == 0x0000);  // half the smallest subnormal: tie to even 0
+  CHECK(files::half_from_float(1e6f) == 0x7C00);                   // overflow to infinity
   // Every value the reader decodes maps back to itself.
   for (std::uint32_t h = 0; h < 0x7C00; ++h) {
-    if (io::half_from_float(from_half(std::uint16_t(h))) != h) FAIL("round trip of " << h);
+    if (files::half_from_float(from_half(std::uint16_t(h))) != h) FAIL("round trip of " << h);
   }
 }
 
@@ -518,7 +518,7 @@ FaceHit gl_face_of(const std::array<double, 3>& d) {
 
 // Checks the marker in face `hit.face` of a layout `columns` faces wide, and nothing bright in
 // the other faces.
-void check_marker_in_layout(const io::ImageData& image, int columns, const FaceHit& hit) {
+void check_marker_in_layout(const core::ImageData& image, int columns, const FaceHit& hit) {
   REQUIRE(image.width == columns * kSize);
   REQUIRE(image.height == 6 / columns * kSize);
   for (int f = 0; f < 6; ++f) {
@@ -546,7 +546,7 @@ void check_no_gamma_chunk(const std::filesystem::path& png) {
   }
 }
 
-void check_equirect_marker(const io::ImageData& image, int channel = 0) {
+void check_equirect_marker(const core::ImageData& image, int channel = 0) {
   REQUIRE(image.width == 2 * image.height);
   const auto c = bright_centroid(image.pixels, image.width, image.channels, channel, 0, 0, image.width, image.height);
   const auto expected = marker_on_equirect(image.width, image.height);
@@ -557,13 +557,13 @@ void check_equirect_marker(const io::ImageData& image, int channel = 0) {
 
 // A 2D legacy RGBA8 DDS (Microsoft's DDS_HEADER at its documented offsets): width, height and the
 // texels as floats (4 channels), after checking that it is not a cube.
-io::ImageData read_dds_2d_rgba8(const std::filesystem::path& path) {
+core::ImageData read_dds_2d_rgba8(const std::filesystem::path& path) {
   const std::string b = test::read_file(path);
   REQUIRE(b.size() >= 128);
   CHECK(b.compare(0, 4, "DDS ") == 0);
   CHECK(u32(b, 80) == 0x41u);  // DDPF_RGB | DDPF_ALPHAPIXELS
   CHECK(u32(b, 112) == 0u);    // dwCaps2: no cube
-  io::ImageData image{int(u32(b, 16)), int(u32(b, 12)), 4, {}};
+  core::ImageData image{int(u32(b, 16)), int(u32(b, 12)), 4, {}};
   REQUIRE(b.size() == 128 + 4 * std::size_t(image.width) * image.height);
   for (std::size_t i = 128; i < b.size(); ++i) image.pixels.push_back((unsigned char)b[i] / 255.0f);
   return image;
@@ -577,7 +577,7 @@ TEST_CASE("export flightgear: eight bordered tiles whose inner 126/128 reassembl
   REQUIRE(e.run.exit_code == 0);
   const int tile = io::flightgear_tile_size(kSize), border = tile / 128, content = tile - 2 * border;
   REQUIRE(tile == 128);
-  io::ImageData mosaic{4 * content, 2 * content, 1, std::vector<float>(std::size_t(8) * content * content)};
+  core::ImageData mosaic{4 * content, 2 * content, 1, std::vector<float>(std::size_t(8) * content * content)};
   for (int h = 0; h < 2; ++h)
     for (int q = 0; q < 4; ++q) {
       const std::string name = std::string("clouds_") + (h ? "S" : "N") + std::to_string(q + 1) + ".png";
@@ -654,9 +654,9 @@ TEST_CASE("export unity: the lat-long maps carry the marker, HDRP's in red, and 
           "[export]") {
   Exported e("unity");
   REQUIRE(e.run.exit_code == 0);
-  check_equirect_marker(io::read_image(e.out.path / "cover_latlong.exr"));
-  check_equirect_marker(io::read_image(e.out.path / "cover_latlong_16.png"));
-  const auto hdrp = io::read_image(e.out.path / "cover_latlong_hdrp.png");
+  check_equirect_marker(files::read_image(e.out.path / "cover_latlong.exr"));
+  check_equirect_marker(files::read_image(e.out.path / "cover_latlong_16.png"));
+  const auto hdrp = files::read_image(e.out.path / "cover_latlong_hdrp.png");
   REQUIRE(hdrp.channels == 3);
   check_equirect_marker(hdrp, 0);
   CHECK(bright_centroid(hdrp.pixels, hdrp.width, 3, 1, 0, 0, hdrp.width, hdrp.height).count == 0);
@@ -667,7 +667,7 @@ TEST_CASE("export unity: the lat-long maps carry the marker, HDRP's in red, and 
   const auto hit = gl_face_of({m[0], m[2], m[1]});
   CHECK(hit.face == 4);                                          // Unity +Z: 90 E is nearest to 60 E
   CHECK(io::AxisMap{{0, 2, 1}, {1, 1, 1}}.determinant() == -1);  // the writer's Unity axes: a reflection
-  check_marker_in_layout(io::read_image(e.out.path / "cover_cube_6x1.png"), 6, hit);
+  check_marker_in_layout(files::read_image(e.out.path / "cover_cube_6x1.png"), 6, hit);
 }
 
 TEST_CASE("export godot: 2x3 and 6x1 cubes rotated into Godot's Y-up frame and a panorama with the marker",
@@ -679,9 +679,9 @@ TEST_CASE("export godot: 2x3 and 6x1 cubes rotated into Godot's Y-up frame and a
   const auto hit = gl_face_of({m[1], m[2], m[0]});
   CHECK(hit.face == 0);                                         // Godot +X
   CHECK(io::AxisMap{{2, 0, 1}, {1, 1, 1}}.determinant() == 1);  // the writer's Godot axes: a rotation
-  check_marker_in_layout(io::read_image(e.out.path / "cover_cube_2x3.png"), 2, hit);
-  check_marker_in_layout(io::read_image(e.out.path / "cover_cube_6x1.png"), 6, hit);
-  check_equirect_marker(io::read_image(e.out.path / "cover_panorama.exr"));
+  check_marker_in_layout(files::read_image(e.out.path / "cover_cube_2x3.png"), 2, hit);
+  check_marker_in_layout(files::read_image(e.out.path / "cover_cube_6x1.png"), 6, hit);
+  check_equirect_marker(files::read_image(e.out.path / "cover_panorama.exr"));
   for (const char* png : {"cover_cube_2x3.png", "cover_cube_6x1.png", "cover_panorama_16.png"})
     check_no_gamma_chunk(e.out.path / png);
 }
@@ -692,7 +692,7 @@ TEST_CASE("export unreal: linear EXR and 16-bit PNG maps with the marker where t
   REQUIRE(e.run.exit_code == 0);
   for (const char* name : {"cover_equirect.exr", "cover_equirect_16.png"}) {
     INFO(name);
-    const auto image = io::read_image(e.out.path / name);
+    const auto image = files::read_image(e.out.path / name);
     check_equirect_marker(image);
     // The README's formula in Unreal's axes (X forward, Y right, Z up): Y = -(nephele Y).
     const auto m = marker_direction();
@@ -708,7 +708,7 @@ TEST_CASE("export unreal: linear EXR and 16-bit PNG maps with the marker where t
 TEST_CASE("export blender: the equirect with the marker and a World script whose Mapping scales Y by -1", "[export]") {
   Exported e("blender");
   REQUIRE(e.run.exit_code == 0);
-  check_equirect_marker(io::read_image(e.out.path / "cover_equirect.exr"));
+  check_equirect_marker(files::read_image(e.out.path / "cover_equirect.exr"));
   const std::string script = test::read_file(e.out.path / "nephele_world.py");
   CHECK_THAT(script, Catch::Contains("(1.0, -1.0, 1.0)") && Catch::Contains("Non-Color"));
 }
@@ -783,7 +783,7 @@ TEST_CASE("generate --export runs the presets into export/NAME of the same set, 
        {"export/flightgear/clouds_N1.png", "export/flightgear/clouds_S4.png", "export/flightgear/README.txt",
         "export/godot/cover_cube_2x3.png", "export/godot/README.txt"})
     CHECK(std::filesystem::is_regular_file(out.path / file));
-  const auto strip = io::read_image(out.path / "export/godot/cover_cube_6x1.png");
+  const auto strip = files::read_image(out.path / "export/godot/cover_cube_6x1.png");
   CHECK(strip.width == 6 * 16);  // made from the generated 16^2 faces
   test::TemporaryDirectory bad;
   const auto refused = test::run("generate --size 16 --iterations 5 --export godot,blue --out " + bad.path.string());
@@ -921,7 +921,7 @@ TEST_CASE("export atlas: a noise volume's slices in rows and columns, every texe
   REQUIRE(r.exit_code == 0);
   const std::string raw = test::read_file(dir.path / "n.raw");
   REQUIRE(raw.size() == 4u * 16 * 16 * 10 * 2);
-  const auto atlas = io::read_image(out.path / "volume_atlas.exr");
+  const auto atlas = files::read_image(out.path / "volume_atlas.exr");
   const auto png = read_png_as_stored(out.path / "volume_atlas_16.png");
   check_no_gamma_chunk(out.path / "volume_atlas_16.png");
   REQUIRE(atlas.width == 4 * 16);   // ceil(sqrt(10)) = 4 columns

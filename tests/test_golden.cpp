@@ -17,7 +17,7 @@
 #include "core/hash.hpp"
 #include "core/json.hpp"
 #include "gl_support.hpp"
-#include "io/image_files.hpp"
+#include "files/image_files.hpp"
 
 namespace fs = std::filesystem;
 using namespace nephele;
@@ -33,7 +33,7 @@ std::string hex(std::uint64_t value) {
 }
 
 std::uint64_t hash_pixels(const fs::path& image, std::uint64_t seed = 0) {
-  const core::ImageData data = io::read_image(image);
+  const core::ImageData data = files::read_image(image);
   return core::block_hash(data.pixels.data(), data.pixels.size() * sizeof(float), seed);
 }
 

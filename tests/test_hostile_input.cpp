@@ -17,7 +17,7 @@
 #include "core/error.hpp"
 #include "core/number_text.hpp"
 #include "core/printable_text.hpp"
-#include "io/image_files.hpp"
+#include "files/image_files.hpp"
 #include "model/cloud_model.hpp"
 #include "params/table.hpp"
 #include "params/values.hpp"
@@ -183,7 +183,7 @@ void copy_cover_with_face(const fs::path& to, int channels, float value) {
   face.pixels[(2 * 8 + 3) * std::size_t(channels)] = value;
   std::vector<std::string> names =
       channels == 1 ? std::vector<std::string>{"Y"} : std::vector<std::string>{"R", "G", "B"};
-  io::write_image(to / "cover_pz.exr", face, io::exr_encoding(names));
+  files::write_image(to / "cover_pz.exr", face, files::exr_encoding(names));
 }
 
 std::uint32_t crc32_of(const std::string& bytes) {  // PNG's CRC (ISO 3309), bit by bit
@@ -259,8 +259,8 @@ TEST_CASE("a too-large export is refused from the faces' headers before their pi
   // read error, so the size refusal proves that only the headers were read.
   TemporaryDirectory cover(true), out;
   const fs::path whole = cover.path / "whole.exr";
-  io::write_image(whole, core::ImageData{4097, 4097, 1, std::vector<float>(std::size_t(4097) * 4097, 0.0f)},
-                  io::exr_encoding({"Y"}));
+  files::write_image(whole, core::ImageData{4097, 4097, 1, std::vector<float>(std::size_t(4097) * 4097, 0.0f)},
+                     files::exr_encoding({"Y"}));
   std::string bytes = test::read_file(whole);
   bytes.resize(std::min<std::size_t>(bytes.size(), 4096));
   fs::remove(whole);

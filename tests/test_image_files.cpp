@@ -1,4 +1,4 @@
-// io::encode_image's PNG options, checked by a reader written here from the PNG and zlib
+// files::encode_image's PNG options, checked by a reader written here from the PNG and zlib
 // specifications (W3C PNG 2nd edition, RFC 1950/1951): at zlib level 0 the deflate stream is
 // made of stored blocks, so each row's filter-type byte can be read without inflating.
 #include <catch2/catch.hpp>
@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "cli_support.hpp"
-#include "io/image_files.hpp"
+#include "files/image_files.hpp"
 
 namespace nephele {
 namespace {
@@ -60,8 +60,8 @@ std::vector<unsigned char> stored_payload(const std::vector<unsigned char>& zlib
 }
 
 // A one-channel image whose rows differ, so that libpng's own choice is not always one filter.
-io::ImageData test_image(int width, int height) {
-  io::ImageData image{width, height, 1, std::vector<float>(static_cast<size_t>(width) * height)};
+core::ImageData test_image(int width, int height) {
+  core::ImageData image{width, height, 1, std::vector<float>(static_cast<size_t>(width) * height)};
   for (int j = 0; j < height; ++j)
     for (int i = 0; i < width; ++i)
       image.pixels[static_cast<size_t>(j) * width + i] =
@@ -73,11 +73,12 @@ io::ImageData test_image(int width, int height) {
 
 TEST_CASE("a PNG with png_filters set filters every row with that one filter and keeps the pixels", "[fast][io][png]") {
   const int width = 64, height = 24;
-  const io::ImageData image = test_image(width, height);
-  io::ImageEncoding encoding = io::png_encoding(8);
+  const core::ImageData image = test_image(width, height);
+  files::ImageEncoding encoding = files::png_encoding(8);
   encoding.png_compression_level = 0;  // stored blocks: the filtered rows lie in the file as they are
-  encoding.png_filters = io::png_filter_average;
-  const std::vector<unsigned char> rows = stored_payload(idat_stream(io::encode_image(image, encoding, "average.png")));
+  encoding.png_filters = files::png_filter_average;
+  const std::vector<unsigned char> rows =
+      stored_payload(idat_stream(files::encode_image(image, encoding, "average.png")));
   // Each row: its filter-type byte, then one byte per pixel. Type 3 is Average (PNG 9.2).
   REQUIRE(rows.size() == static_cast<size_t>(height) * (width + 1));
   for (int j = 0; j < height; ++j) {
@@ -88,7 +89,7 @@ TEST_CASE("a PNG with png_filters set filters every row with that one filter and
   // libpng's default tries every filter per row and picks different ones here.
   encoding.png_filters = 0;
   const std::vector<unsigned char> adaptive =
-      stored_payload(idat_stream(io::encode_image(image, encoding, "adaptive.png")));
+      stored_payload(idat_stream(files::encode_image(image, encoding, "adaptive.png")));
   REQUIRE(adaptive.size() == rows.size());
   bool other_filter = false;
   for (int j = 0; j < height; ++j) other_filter = other_filter || adaptive[static_cast<size_t>(j) * (width + 1)] != 3;
@@ -96,13 +97,13 @@ TEST_CASE("a PNG with png_filters set filters every row with that one filter and
 
   // Decoded, both hold round(255 v) of every pixel.
   const test::TemporaryDirectory directory(true);
-  for (const int filters : {0, io::png_filter_average}) {
-    io::ImageEncoding compressed = io::png_encoding(8);
+  for (const int filters : {0, files::png_filter_average}) {
+    files::ImageEncoding compressed = files::png_encoding(8);
     compressed.png_compression_level = 1;
     compressed.png_filters = filters;
     const std::filesystem::path path = directory.path / ("filters_" + std::to_string(filters) + ".png");
-    io::write_image(path, image, compressed);
-    const io::ImageData back = io::read_image(path);
+    files::write_image(path, image, compressed);
+    const core::ImageData back = files::read_image(path);
     REQUIRE(back.pixels.size() == image.pixels.size());
     for (size_t k = 0; k < image.pixels.size(); ++k)
       REQUIRE(back.pixels[k] * 255.0f == Approx(std::round(image.pixels[k] * 255.0f)).margin(1e-3));

@@ -1,4 +1,4 @@
-// The disk cache of noise volumes (src/io/noise_cache.hpp) and its use by nephele render.
+// The disk cache of noise volumes (src/files/float_cache.hpp, src/io/noise_cache.hpp) and its use by nephele render.
 #include <catch2/catch.hpp>
 
 #include <fcntl.h>
@@ -18,6 +18,7 @@
 
 #include "cli_support.hpp"
 #include "core/hash.hpp"
+#include "files/float_cache.hpp"
 #include "io/noise_cache.hpp"
 
 namespace fs = std::filesystem;
@@ -29,7 +30,7 @@ using test::TemporaryDirectory;
 TEST_CASE("the float cache returns what was stored and misses on another key, count or a damaged file",
           "[fast][cache]") {
   TemporaryDirectory dir(true);
-  const io::FloatCache cache(dir.path / "nephele");
+  const files::FloatCache cache(dir.path / "nephele");
   const std::vector<float> values = {1.0f, -2.5f, 3.25f, 0.0f};
   CHECK_FALSE(cache.load("a", 4));
   REQUIRE(cache.store("a", values));
@@ -55,7 +56,7 @@ TEST_CASE("the float cache removes the least recently used files beyond its cap"
   TemporaryDirectory dir(true);
   // Each file: 8 magic + 8 + 1 key + 8 count + 8 hash + 4000 values = 4033 bytes; the cap holds two.
   const std::uintmax_t file_bytes = 8 + 8 + 1 + 8 + 8 + 1000 * 4;
-  const io::FloatCache cache(dir.path, 2 * file_bytes + 100);
+  const files::FloatCache cache(dir.path, 2 * file_bytes + 100);
   const std::vector<float> values(1000, 0.5f);
   REQUIRE(cache.store("a", values));
   REQUIRE(fs::file_size(cache.file_of("a")) == file_bytes);
@@ -116,7 +117,7 @@ TEST_CASE("render reuses the cached noise volume with the same image, and --no-c
 
 namespace {
 
-// Bytes of a cache file for a one-letter key and n values (the layout in io/noise_cache.hpp).
+// Bytes of a cache file for a one-letter key and n values (the layout in files/float_cache.hpp).
 constexpr std::uintmax_t header_bytes_one_letter_key = 8 + 8 + 1 + 8 + 8;
 std::uintmax_t entry_bytes(std::size_t n) { return header_bytes_one_letter_key + n * sizeof(float); }
 
@@ -176,7 +177,7 @@ TEST_CASE("the payload hash changes with any one flipped bit and with the length
 
 TEST_CASE("a cache entry whose payload was altered is rebuilt and not served", "[fast][cache]") {
   TemporaryDirectory dir(true);
-  const io::FloatCache cache(dir.path);
+  const files::FloatCache cache(dir.path);
   const std::vector<float> values = ramp(1000);
   const fs::path file = cache.file_of("a");
   REQUIRE(cache.store("a", values));
@@ -224,7 +225,7 @@ TEST_CASE("a cache entry whose payload was altered is rebuilt and not served", "
 
 TEST_CASE("the float cache refuses to store values that are not finite", "[fast][cache]") {
   TemporaryDirectory dir(true);
-  const io::FloatCache cache(dir.path);
+  const files::FloatCache cache(dir.path);
   CHECK_FALSE(cache.store("a", {1.0f, std::numeric_limits<float>::quiet_NaN()}));
   CHECK_FALSE(cache.store("b", {-std::numeric_limits<float>::infinity()}));
   CHECK(dir.empty());
@@ -232,7 +233,7 @@ TEST_CASE("the float cache refuses to store values that are not finite", "[fast]
 
 TEST_CASE("a FIFO named like a cache entry is a miss without blocking and a store replaces it", "[fast][cache]") {
   TemporaryDirectory dir(true);
-  const io::FloatCache cache(dir.path);
+  const files::FloatCache cache(dir.path);
   const fs::path file = cache.file_of("a");
   REQUIRE(::mkfifo(file.c_str(), 0600) == 0);
   // Opening a FIFO for reading waits for a writer: if the load has not returned after 20 s,
@@ -254,7 +255,7 @@ TEST_CASE("a FIFO named like a cache entry is a miss without blocking and a stor
 TEST_CASE("a symbolic link or directory named like a cache entry is a miss and never written through",
           "[fast][cache]") {
   TemporaryDirectory dir(true), elsewhere(true);
-  const io::FloatCache cache(dir.path), other(elsewhere.path);
+  const files::FloatCache cache(dir.path), other(elsewhere.path);
   const std::vector<float> values = ramp(8);
   // A link to a valid entry of the same key: not followed (rename never makes a link).
   REQUIRE(other.store("a", values));
@@ -275,7 +276,7 @@ TEST_CASE("a symbolic link or directory named like a cache entry is a miss and n
 TEST_CASE("the cache trim removes temporary files of killed writers and counts those of live ones", "[fast][cache]") {
   TemporaryDirectory dir(true);
   const std::uintmax_t file_bytes = entry_bytes(1000);
-  const io::FloatCache cache(dir.path, 2 * file_bytes + 100);
+  const files::FloatCache cache(dir.path, 2 * file_bytes + 100);
   const auto now = fs::file_time_type::clock::now();
   const std::string pid = std::to_string(::getpid());
   // 2^22 + 1 is above the kernel's largest PID (PID_MAX_LIMIT): no such process exists.
@@ -301,7 +302,7 @@ TEST_CASE("the cache trim ignores what a symbolic link points to and never remov
           "[fast][cache]") {
   TemporaryDirectory dir(true), elsewhere(true);
   const std::uintmax_t file_bytes = entry_bytes(1000);
-  const io::FloatCache cache(dir.path, 3 * file_bytes + 100);
+  const files::FloatCache cache(dir.path, 3 * file_bytes + 100);
   REQUIRE(cache.store("a", ramp(1000)));
   REQUIRE(cache.store("b", ramp(1000)));
   // A large target dated in the future behind a name of the cache's: by its target it would
@@ -319,7 +320,7 @@ TEST_CASE("the cache trim ignores what a symbolic link points to and never remov
   CHECK_FALSE(fs::exists(fs::symlink_status(link)));  // the link is removed, its target kept
   CHECK(fs::file_size(big) == 64 * file_bytes);
   // An entry larger than the whole cap stays; the others go.
-  const io::FloatCache tiny(dir.path, 100);
+  const files::FloatCache tiny(dir.path, 100);
   REQUIRE(tiny.store("d", ramp(1000)));
   CHECK(tiny.load("d", 1000) == ramp(1000));
   CHECK_FALSE(fs::exists(cache.file_of("a")));

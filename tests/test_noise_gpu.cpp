@@ -14,7 +14,7 @@
 
 #include "apps/cli/noise_options.hpp"
 #include "apps/cli/options.hpp"
-#include "io/image_files.hpp"
+#include "files/image_files.hpp"
 #include "cli_support.hpp"
 #include "gl_support.hpp"
 #include "io/noise_files.hpp"
@@ -232,7 +232,7 @@ TEST_CASE("nephele noise writes the slice atlas and a sidecar that describes it"
   const Run r = run("noise --width 16 --height 8 --depth 4 --cells 4 --seed 9 --out " + png.string());
   INFO(r.output);
   REQUIRE(r.exit_code == 0);
-  const auto image = io::read_image(png);
+  const auto image = files::read_image(png);
   CHECK(image.width == 16 * 4);
   CHECK(image.height == 8);
   CHECK(image.channels == 1);
@@ -262,7 +262,7 @@ TEST_CASE("nephele noise writes float EXR atlases 16 bit PNGs and raw volumes", 
   const Run exr = run("noise" + common + " --out " + (out.path / "t.exr").string());
   INFO(exr.output);
   REQUIRE(exr.exit_code == 0);
-  const auto image = io::read_image(out.path / "t.exr");
+  const auto image = files::read_image(out.path / "t.exr");
   CHECK(image.width == 16 * 16);
   CHECK(image.channels == 3);
   const Run raw = run("noise" + common + " --out " + (out.path / "t.raw").string());
@@ -283,7 +283,7 @@ TEST_CASE("nephele noise writes float EXR atlases 16 bit PNGs and raw volumes", 
   CHECK(sidecar.at("channel_parameters").as_array().size() == 3);
   const Run png16 = run("noise" + common + " --bits 16 --out " + (out.path / "t16.png").string());
   REQUIRE(png16.exit_code == 0);
-  const auto deep = io::read_image(out.path / "t16.png");
+  const auto deep = files::read_image(out.path / "t16.png");
   for (size_t k = 0; k < deep.pixels.size(); ++k)
     REQUIRE(deep.pixels[k] == Approx(image.pixels[k]).epsilon(0).margin(kPng16));
 }
@@ -294,7 +294,7 @@ TEST_CASE("stretch maps each channel's range onto 0 to 1 and records the range b
       run("noise --size 16 --cells 2 --channels rg --type perlin --stretch --out " + (out.path / "s.exr").string());
   INFO(r.output);
   REQUIRE(r.exit_code == 0);
-  const auto image = io::read_image(out.path / "s.exr");
+  const auto image = files::read_image(out.path / "s.exr");
   const json::Value sidecar = json::parse(read_file(out.path / "s.json"));
   for (int c = 0; c < 2; ++c) {
     float lo = 1.0f, hi = 0.0f;

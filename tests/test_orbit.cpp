@@ -14,7 +14,7 @@
 #include "core/time.hpp"
 #include "cover/global_cover.hpp"
 #include "gl_support.hpp"
-#include "io/image_files.hpp"
+#include "files/image_files.hpp"
 #include "io/planet_textures.hpp"
 #include "render/orbit_renderer.hpp"
 
@@ -416,7 +416,7 @@ TEST_CASE("orbit: the procedural stand-in has ocean and land, and any equirect m
   core::ImageData mars{64, 48, 3, {}};
   for (int k = 0; k < 64 * 48; ++k) mars.pixels.insert(mars.pixels.end(), {0.7f, 0.35f, 0.2f});
   const auto map = out.path / "mars.png";
-  io::write_image(map, mars, io::png_encoding(8));
+  files::write_image(map, mars, files::png_encoding(8));
   const auto r = test::run("render --view orbit --earth-texture " + map.string() +
                            " --planet-radius-km 3390 --altitude-km 8000 --size 24x12 --quiet --out " +
                            (out.path / "mars_view.exr").string());

@@ -22,7 +22,7 @@
 
 #include "case_tags.hpp"
 #include "cli_support.hpp"
-#include "io/atomic_output.hpp"
+#include "files/atomic_output.hpp"
 
 extern char** environ;
 
@@ -40,7 +40,7 @@ constexpr const char* dead_pid = "2147483646";
 
 void put(const fs::path& path, const std::string& text) {
   fs::create_directories(path.parent_path());
-  io::write_text_file(path, text);
+  files::write_text_file(path, text);
 }
 
 // Entries of `place` whose name starts with `prefix`.
@@ -98,7 +98,7 @@ std::vector<fs::path> wait_for_temporary(pid_t child, const fs::path& out) {
 }
 
 // The set of a run into `out` (generate's files) with `text` in every file.
-void write_generate_like_set(io::OutputSet& set, const std::string& text) {
+void write_generate_like_set(files::OutputSet& set, const std::string& text) {
   for (const char* name : {"cover_px.exr", "cover_equirect.png", "cover.json"}) set.write(name, text);
 }
 
@@ -108,12 +108,12 @@ TEST_CASE("a set that fails before its commit leaves the complete old set and no
   TemporaryDirectory place(true);
   const fs::path out = place.path / "cubemaps";
   {
-    io::OutputSet set(out, io::OutputSet::Scope::directory);
+    files::OutputSet set(out, files::OutputSet::Scope::directory);
     write_generate_like_set(set, "old");
     set.commit();
   }
   try {
-    io::OutputSet set(out, io::OutputSet::Scope::directory);
+    files::OutputSet set(out, files::OutputSet::Scope::directory);
     set.write("cover_px.exr", "new");
     set.write("cover_equirect.png", "new");
     throw std::runtime_error("the writer of cover.json failed");  // as a failed encode or write would
@@ -127,12 +127,12 @@ TEST_CASE("a write the set cannot make throws naming the final path and keeps th
   TemporaryDirectory place(true);
   const fs::path out = place.path / "cubemaps";
   {
-    io::OutputSet set(out, io::OutputSet::Scope::directory);
+    files::OutputSet set(out, files::OutputSet::Scope::directory);
     write_generate_like_set(set, "old");
     set.commit();
   }
   {
-    io::OutputSet set(out, io::OutputSet::Scope::directory);
+    files::OutputSet set(out, files::OutputSet::Scope::directory);
     set.write("cover_px.exr", "new");
     const std::string too_long(300, 'x');  // beyond NAME_MAX (255): the file system refuses it
     try {
@@ -156,7 +156,7 @@ TEST_CASE("files in the output directory that are not part of the set survive it
   struct stat before {};
   ::stat((out / "README.md").c_str(), &before);
   {
-    io::OutputSet set(out, io::OutputSet::Scope::directory);
+    files::OutputSet set(out, files::OutputSet::Scope::directory);
     write_generate_like_set(set, "new");
     // Until the commit, readers see only the old set.
     CHECK_FALSE(fs::exists(out / "cover_px.exr"));
@@ -179,7 +179,7 @@ TEST_CASE("a set of files in a shared directory replaces only its files", "[fast
   put(place.path / "noise.png", "old");
   put(place.path / "noise.json", "old");
   {
-    io::OutputSet set(place.path, io::OutputSet::Scope::files);
+    files::OutputSet set(place.path, files::OutputSet::Scope::files);
     set.write("noise.png", "new");
     set.write("noise.json", "new");
     CHECK(read_file(place.path / "noise.png") == "old");
@@ -194,7 +194,7 @@ TEST_CASE("a set of files in a shared directory replaces only its files", "[fast
 TEST_CASE("a symbolic link at a temporary name is not written through", "[fast][output]") {
   TemporaryDirectory place(true);
   put(place.path / "victim.txt", "victim");
-  io::OutputSet set(place.path / "out", io::OutputSet::Scope::directory);
+  files::OutputSet set(place.path / "out", files::OutputSet::Scope::directory);
   fs::create_symlink(place.path / "victim.txt", set.temporary_directory() / "cover.json");
   CHECK_THROWS_AS(set.write("cover.json", "new"), std::runtime_error);
   CHECK(read_file(place.path / "victim.txt") == "victim");
@@ -202,7 +202,7 @@ TEST_CASE("a symbolic link at a temporary name is not written through", "[fast][
 
 TEST_CASE("names outside the set's directory are refused", "[fast][output]") {
   TemporaryDirectory place(true);
-  io::OutputSet set(place.path / "out", io::OutputSet::Scope::directory);
+  files::OutputSet set(place.path / "out", files::OutputSet::Scope::directory);
   CHECK_THROWS_AS(set.write("../x.png", "x"), std::invalid_argument);
   CHECK_THROWS_AS(set.write("/tmp/x.png", "x"), std::invalid_argument);
   set.write("x.png", "x");
@@ -219,7 +219,7 @@ TEST_CASE("stale temporary directories of dead runs are removed, links with thei
   const fs::path link = place.path / (std::string(".nephele-victim-") + dead_pid + "-zzzzzz");
   fs::create_directory_symlink(place.path / "victim", link);
   {
-    io::OutputSet set(out, io::OutputSet::Scope::directory);
+    files::OutputSet set(out, files::OutputSet::Scope::directory);
     CHECK_FALSE(fs::exists(stale));
   }
   CHECK(read_file(place.path / "victim" / "keep.txt") == "victim");
@@ -233,7 +233,7 @@ TEST_CASE("the next run completes a file set whose renames a killed run left hal
   const fs::path stale = place.path / (std::string(".nephele-files-") + dead_pid + "-abcdef");
   put(stale / "noise.json", "new");
   put(stale / ".nephele-manifest", "noise.png\nnoise.json\n");
-  { io::OutputSet set(place.path, io::OutputSet::Scope::files); }
+  { files::OutputSet set(place.path, files::OutputSet::Scope::files); }
   CHECK(read_file(place.path / "noise.png") == "new");
   CHECK(read_file(place.path / "noise.json") == "new");
   CHECK_FALSE(fs::exists(stale));
@@ -386,7 +386,7 @@ TEST_CASE("a directory at a file's name stops the file set's commit before anyth
   put(place.path / "x.png", "old");
   fs::create_directory(place.path / "x.json");
   {
-    io::OutputSet set(place.path, io::OutputSet::Scope::files);
+    files::OutputSet set(place.path, files::OutputSet::Scope::files);
     set.write("x.png", "new");
     set.write("x.json", "new");
     CHECK_THROWS_WITH(set.commit(),
@@ -396,7 +396,7 @@ TEST_CASE("a directory at a file's name stops the file set's commit before anyth
   CHECK(fs::is_directory(place.path / "x.json"));
   CHECK(entries_starting(place.path, ".nephele-").empty());
   // Nothing is left that stops the next set.
-  io::OutputSet next(place.path, io::OutputSet::Scope::files);
+  files::OutputSet next(place.path, files::OutputSet::Scope::files);
   next.write("y.png", "next");
   next.commit();
   CHECK(read_file(place.path / "y.png") == "next");
@@ -410,7 +410,7 @@ TEST_CASE("a directory at a file's name stops a directory set's exchange and kee
   fs::create_directory(place.path / "b.txt");
   put(place.path / "b.txt" / "notes", "the user's");
   {
-    io::OutputSet set(place.path, io::OutputSet::Scope::directory);
+    files::OutputSet set(place.path, files::OutputSet::Scope::directory);
     set.write("a.txt", "new");
     set.write("b.txt", "new");
     CHECK_THROWS_WITH(set.commit(),
@@ -438,7 +438,7 @@ TEST_CASE("a killed run's file set that cannot be completed is kept and reported
   put(stale / "x.json", "new");
   put(stale / ".nephele-manifest", "x.json\n");
   fs::create_directory(place.path / "x.json");  // made after the run was killed
-  io::OutputSet set(place.path, io::OutputSet::Scope::files);
+  files::OutputSet set(place.path, files::OutputSet::Scope::files);
   set.write("y.png", "next");
   set.commit();
   CHECK(read_file(place.path / "y.png") == "next");
@@ -466,7 +466,7 @@ TEST_CASE("two commits of one file set at once never end with files of both", "[
     std::string errors[2];
     auto writer = [&](int k) {
       try {
-        io::OutputSet set(place.path, io::OutputSet::Scope::files);
+        files::OutputSet set(place.path, files::OutputSet::Scope::files);
         for (const char* name : names) set.write(name, "run " + std::to_string(k));
         ++ready;
         while (ready.load() < 2) std::this_thread::yield();  // both commits start together
@@ -487,11 +487,11 @@ TEST_CASE("two commits of one file set at once never end with files of both", "[
 }
 
 TEST_CASE("the exchange of a directory set falls back to per-file renames on EBUSY and EXDEV only", "[fast][output]") {
-  CHECK(io::falls_back_to_files(EBUSY));         // the directory is a mount point
-  CHECK(io::falls_back_to_files(EXDEV));         // a rename would cross into another mount
-  CHECK_FALSE(io::falls_back_to_files(EINVAL));  // no RENAME_EXCHANGE: the rename-aside fallback
-  CHECK_FALSE(io::falls_back_to_files(EACCES));
-  CHECK_FALSE(io::falls_back_to_files(ENOENT));
+  CHECK(files::falls_back_to_files(EBUSY));         // the directory is a mount point
+  CHECK(files::falls_back_to_files(EXDEV));         // a rename would cross into another mount
+  CHECK_FALSE(files::falls_back_to_files(EINVAL));  // no RENAME_EXCHANGE: the rename-aside fallback
+  CHECK_FALSE(files::falls_back_to_files(EACCES));
+  CHECK_FALSE(files::falls_back_to_files(ENOENT));
 }
 
 namespace {
@@ -521,7 +521,7 @@ TEST_CASE("a directory set into a bind mount is committed by per-file renames in
   std::unique_ptr<BindMount> mount;
   if (before_open) mount = std::make_unique<BindMount>(disk, out);
   {
-    io::OutputSet set(out, io::OutputSet::Scope::directory);
+    files::OutputSet set(out, files::OutputSet::Scope::directory);
     if (!before_open) mount = std::make_unique<BindMount>(disk, out);
     if (!mount->mounted) {
       // Mounting needs root (CAP_SYS_ADMIN); the fallback's decision is tested above without one.
@@ -529,7 +529,7 @@ TEST_CASE("a directory set into a bind mount is committed by per-file renames in
                       "); run the tests as root");
       return;
     }
-    if (before_open) CHECK(set.scope() == io::OutputSet::Scope::files);
+    if (before_open) CHECK(set.scope() == files::OutputSet::Scope::files);
     set.write("cover.json", "new");
     set.write("cover_px.exr", "new");
     set.commit();
@@ -548,7 +548,7 @@ TEST_CASE("a directory that a set creates gets the mode mkdir gives under the um
     const fs::path out = place.path / ("out" + std::to_string(mask));
     const mode_t previous = ::umask(mask);
     {
-      io::OutputSet set(out, io::OutputSet::Scope::directory);
+      files::OutputSet set(out, files::OutputSet::Scope::directory);
       set.write("cover.json", "new");
       set.commit();
     }

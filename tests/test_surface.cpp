@@ -12,7 +12,7 @@
 #include "cover/surface_bias.hpp"
 #include "gl_support.hpp"
 #include "io/elevation_files.hpp"
-#include "io/image_files.hpp"
+#include "files/image_files.hpp"
 #include "io/surface_files.hpp"
 
 using namespace nephele;
@@ -147,7 +147,7 @@ TEST_CASE("generate records the surface in cover.json and refuses a bad mask nam
   core::ImageData image{4, 2, 1, std::vector<float>(8, 0.0f)};
   image.pixels[5] = 2.0f;
   const auto mask = directory.path / "mask.exr";
-  io::write_image(mask, image, io::exr_encoding({"Y"}));
+  files::write_image(mask, image, files::exr_encoding({"Y"}));
   const auto bad =
       test::run("generate --size 8 --surface " + mask.string() + " --out " + (directory.path / "y").string());
   CHECK(bad.exit_code == 2);
@@ -155,7 +155,7 @@ TEST_CASE("generate records the surface in cover.json and refuses a bad mask nam
   CHECK(bad.output.find("[0, 1]") != std::string::npos);
   // A valid image mask is taken and named in the sidecar.
   image.pixels[5] = 1.0f;
-  io::write_image(mask, image, io::exr_encoding({"Y"}));
+  files::write_image(mask, image, files::exr_encoding({"Y"}));
   const auto taken = test::run("generate --size 8 --curl-size 8 --files png --surface " + mask.string() + " --out " +
                                (directory.path / "z").string());
   REQUIRE(taken.exit_code == 0);

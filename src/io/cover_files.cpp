@@ -4,9 +4,9 @@
 #include <future>
 #include <memory>
 
-#include "io/atomic_output.hpp"
+#include "files/atomic_output.hpp"
 #include "cover/equirect.hpp"
-#include "io/image_files.hpp"
+#include "files/image_files.hpp"
 #include "core/error.hpp"
 #include "nephele/version.hpp"
 #include "params/table.hpp"
@@ -191,8 +191,8 @@ json::Value cover_sidecar(const cover::GlobalCover& cover, const gpu::ContextInf
   return root;
 }
 
-CoverExport write_cover_files(OutputSet& outputs, const cover::GlobalCover& cover, const gpu::ContextInfo& context,
-                              const CoverFileOptions& options) {
+CoverExport write_cover_files(files::OutputSet& outputs, const cover::GlobalCover& cover,
+                              const gpu::ContextInfo& context, const CoverFileOptions& options) {
   CoverExport result;
   using clock = std::chrono::steady_clock;
   auto timed = [&](const std::string& name, auto&& work) {
@@ -202,7 +202,7 @@ CoverExport write_cover_files(OutputSet& outputs, const cover::GlobalCover& cove
     result.timings.push_back({name, elapsed.count()});
   };
   const int size = cover.parameters().size;
-  const ImageEncoding exr = exr_encoding({"Y"}, options.half ? 16 : 32, options.compression);
+  const files::ImageEncoding exr = files::exr_encoding({"Y"}, options.half ? 16 : 32, options.compression);
   // Each image is encoded in memory on its own thread; the files are written afterwards in
   // order, through the output set (which is not shared between threads).
   struct Job {
@@ -210,9 +210,9 @@ CoverExport write_cover_files(OutputSet& outputs, const cover::GlobalCover& cove
     std::future<std::vector<unsigned char>> bytes;
   };
   std::vector<Job> jobs;
-  auto encode = [&](std::string name, std::shared_ptr<const ImageData> image, ImageEncoding encoding) {
+  auto encode = [&](std::string name, std::shared_ptr<const core::ImageData> image, files::ImageEncoding encoding) {
     jobs.push_back({name, std::async(std::launch::async,
-                                     [name, image, encoding] { return encode_image(*image, encoding, name); })});
+                                     [name, image, encoding] { return files::encode_image(*image, encoding, name); })});
   };
   const auto encode_start = clock::now();
   if (options.faces) {
@@ -220,14 +220,14 @@ CoverExport write_cover_files(OutputSet& outputs, const cover::GlobalCover& cove
     timed("read_faces", [&] { texels = cover.cover_field().read(); });
     const size_t per_face = static_cast<size_t>(size) * size;
     for (int face = 0; face < 6; ++face) {
-      auto image = std::make_shared<ImageData>(ImageData{
+      auto image = std::make_shared<core::ImageData>(core::ImageData{
           size, size, 1, std::vector<float>(texels.begin() + face * per_face, texels.begin() + (face + 1) * per_face)});
       encode(std::string("cover_") + face_suffixes[face] + ".exr", image, exr);
     }
   }
   if (options.equirect || options.preview) {
     // Resampled once on the GPU while the faces are encoded; both files come from this map.
-    auto equirect = std::make_shared<ImageData>(ImageData{4 * size, 2 * size, 1, {}});
+    auto equirect = std::make_shared<core::ImageData>(core::ImageData{4 * size, 2 * size, 1, {}});
     timed("equirect", [&] {
       equirect->pixels = cover::equirect_from_cube(cover.cover_field(), equirect->width, equirect->height);
     });
@@ -237,9 +237,9 @@ CoverExport write_cover_files(OutputSet& outputs, const cover::GlobalCover& cove
       // longest single encoding of generate) for an 8 % larger file; the pixels are the same.
       // The average filter on every row instead of libpng's trial of all five: 141 instead of
       // 200 ms at 1024 per face, and a file 0.6 % smaller.
-      ImageEncoding preview = png_encoding(8);
+      files::ImageEncoding preview = files::png_encoding(8);
       preview.png_compression_level = 1;
-      preview.png_filters = png_filter_average;
+      preview.png_filters = files::png_filter_average;
       encode("cover_equirect.png", equirect, preview);
     }
   }

@@ -8,7 +8,7 @@
 #include "cover/global_cover.hpp"
 #include "gpu/egl_context.hpp"
 #include "core/json.hpp"
-#include "io/atomic_output.hpp"
+#include "files/atomic_output.hpp"
 
 namespace nephele::io {
 
@@ -44,7 +44,7 @@ struct CoverExport {
 
 // Writes the files into `outputs` and commits it. The images are encoded in parallel (each
 // EXR also with OpenEXR's own threads), the faces while the GPU resamples the equirect map.
-CoverExport write_cover_files(OutputSet& outputs, const cover::GlobalCover& cover, const gpu::ContextInfo& context,
-                              const CoverFileOptions& options = {});
+CoverExport write_cover_files(files::OutputSet& outputs, const cover::GlobalCover& cover,
+                              const gpu::ContextInfo& context, const CoverFileOptions& options = {});
 
 }  // namespace nephele::io

@@ -10,8 +10,8 @@
 #include "gpu/textures.hpp"
 #include "io/cover_files.hpp"
 #include "io/cube_frames.hpp"
-#include "io/image_files.hpp"
-#include "io/texture_containers.hpp"
+#include "files/image_files.hpp"
+#include "files/texture_containers.hpp"
 
 namespace nephele::io {
 namespace {
@@ -26,9 +26,9 @@ std::string preset_words() {
   return words;
 }
 
-ImageData face_image(const CoverFaces& faces, int face) {
+core::ImageData face_image(const CoverFaces& faces, int face) {
   const std::size_t n = std::size_t(faces.size) * std::size_t(faces.size);
-  ImageData image{faces.size, faces.size, 1, {}};
+  core::ImageData image{faces.size, faces.size, 1, {}};
   image.pixels.assign(faces.texels.begin() + std::ptrdiff_t(face * n),
                       faces.texels.begin() + std::ptrdiff_t((face + 1) * n));
   return image;
@@ -37,19 +37,19 @@ ImageData face_image(const CoverFaces& faces, int face) {
 // The equirect of docs/conventions.md (4N x 2N, -180 deg at the left edge, geodetic rows),
 // resampled on the GPU by the same pass as `generate`, so that both give the same map.
 // `content` (default N) is the map's height over two: FlightGear's tiles want another size.
-ImageData equirect_image(const CoverFaces& faces, int content = 0) {
+core::ImageData equirect_image(const CoverFaces& faces, int content = 0) {
   if (content == 0) content = faces.size;
   gpu::Texture cube = gpu::Texture::cube(faces.size, GL_R32F);
   cube.write(faces.texels);
-  ImageData map{4 * content, 2 * content, 1, {}};
+  core::ImageData map{4 * content, 2 * content, 1, {}};
   map.pixels = cover::equirect_from_cube(cube, map.width, map.height);
   return map;
 }
 
 // One channel of `values` as an image, or white with `values` in alpha (`white_alpha`).
-ImageData grey_image(int width, int height, std::vector<float> values, bool white_alpha = false) {
-  if (!white_alpha) return ImageData{width, height, 1, std::move(values)};
-  ImageData image{width, height, 2, std::vector<float>(2 * values.size(), 1.0f)};
+core::ImageData grey_image(int width, int height, std::vector<float> values, bool white_alpha = false) {
+  if (!white_alpha) return core::ImageData{width, height, 1, std::move(values)};
+  core::ImageData image{width, height, 2, std::vector<float>(2 * values.size(), 1.0f)};
   for (std::size_t i = 0; i < values.size(); ++i) image.pixels[2 * i + 1] = std::clamp(values[i], 0.0f, 1.0f);
   return image;
 }
@@ -70,20 +70,20 @@ std::string readme(const ExportPreset& preset, const CoverFaces& faces, const st
 }
 
 // The preset's README.txt, listed after its files.
-void add_readme(OutputSet& out, std::vector<std::string>& names, const ExportPreset& preset, const CoverFaces& faces,
-                const std::string& body) {
+void add_readme(files::OutputSet& out, std::vector<std::string>& names, const ExportPreset& preset,
+                const CoverFaces& faces, const std::string& body) {
   out.write("README.txt", readme(preset, faces, body));
   names.push_back("README.txt");
 }
 
-void write_equirect(OutputSet& out, std::vector<std::string>& names, const ExportPreset& preset,
+void write_equirect(files::OutputSet& out, std::vector<std::string>& names, const ExportPreset& preset,
                     const CoverFaces& faces, const ExportOptions&) {
-  const ImageData map = equirect_image(faces);
-  const std::pair<std::string, ImageEncoding> files[] = {{"cover_equirect.exr", exr_encoding({"Y"})},
-                                                         {"cover_equirect_16.png", png_encoding(16)},
-                                                         {"cover_equirect_8.png", png_encoding(8)}};
+  const core::ImageData map = equirect_image(faces);
+  const std::pair<std::string, files::ImageEncoding> files[] = {{"cover_equirect.exr", files::exr_encoding({"Y"})},
+                                                                {"cover_equirect_16.png", files::png_encoding(16)},
+                                                                {"cover_equirect_8.png", files::png_encoding(8)}};
   for (const auto& [name, encoding] : files) {
-    out.write(name, encode_image(map, encoding, name));
+    out.write(name, files::encode_image(map, encoding, name));
     names.push_back(name);
   }
   const std::string w = std::to_string(map.width), h = std::to_string(map.height);
@@ -99,11 +99,11 @@ void write_equirect(OutputSet& out, std::vector<std::string>& names, const Expor
                  "map is taken (NASA Blue Marble layout).\n");
 }
 
-void write_gl_faces(OutputSet& out, std::vector<std::string>& names, const ExportPreset& preset,
+void write_gl_faces(files::OutputSet& out, std::vector<std::string>& names, const ExportPreset& preset,
                     const CoverFaces& faces, const ExportOptions&) {
   for (int f = 0; f < 6; ++f) {
     const std::string name = std::string("cover_") + face_suffixes[f] + ".exr";
-    out.write(name, encode_image(face_image(faces, f), exr_encoding({"Y"}), name));
+    out.write(name, files::encode_image(face_image(faces, f), files::exr_encoding({"Y"}), name));
     names.push_back(name);
   }
   add_readme(out, names, preset, faces,
@@ -116,14 +116,14 @@ void write_gl_faces(OutputSet& out, std::vector<std::string>& names, const Expor
              "not an exchange of two axes, which would mirror the map).\n");
 }
 
-void write_ktx2(OutputSet& out, std::vector<std::string>& names, const ExportPreset& preset, const CoverFaces& faces,
-                const ExportOptions& options) {
-  const TextureSample sample = parse_texture_sample(options.ktx2_format);
-  out.write("cover_cube.ktx2", encode_ktx2_cube(faces.texels, faces.size, sample));
+void write_ktx2(files::OutputSet& out, std::vector<std::string>& names, const ExportPreset& preset,
+                const CoverFaces& faces, const ExportOptions& options) {
+  const files::TextureSample sample = files::parse_texture_sample(options.ktx2_format);
+  out.write("cover_cube.ktx2", files::encode_ktx2_cube(faces.texels, faces.size, sample));
   names.push_back("cover_cube.ktx2");
-  const std::string format = sample == TextureSample::r8     ? "VK_FORMAT_R8_UNORM (9)"
-                             : sample == TextureSample::r16f ? "VK_FORMAT_R16_SFLOAT (76)"
-                                                             : "VK_FORMAT_R32_SFLOAT (100)";
+  const std::string format = sample == files::TextureSample::r8     ? "VK_FORMAT_R8_UNORM (9)"
+                             : sample == files::TextureSample::r16f ? "VK_FORMAT_R16_SFLOAT (76)"
+                                                                    : "VK_FORMAT_R32_SFLOAT (100)";
   add_readme(out, names, preset, faces,
              "File: cover_cube.ktx2, a KTX 2.0 cube map (faceCount 6, one mip level, no\n"
              "supercompression), " +
@@ -135,13 +135,13 @@ void write_ktx2(OutputSet& out, std::vector<std::string>& names, const ExportPre
                  "World axes as for gl-faces: +Z is the North Pole.\n");
 }
 
-void write_dds(OutputSet& out, std::vector<std::string>& names, const ExportPreset& preset, const CoverFaces& faces,
-               const ExportOptions&) {
-  const std::pair<std::string, DdsVariant> files[] = {{"cover_cube_rgba8.dds", DdsVariant::rgba8},
-                                                      {"cover_cube_r16f.dds", DdsVariant::dx10_r16f},
-                                                      {"cover_cube_r32f.dds", DdsVariant::dx10_r32f}};
+void write_dds(files::OutputSet& out, std::vector<std::string>& names, const ExportPreset& preset,
+               const CoverFaces& faces, const ExportOptions&) {
+  const std::pair<std::string, files::DdsVariant> files[] = {{"cover_cube_rgba8.dds", files::DdsVariant::rgba8},
+                                                             {"cover_cube_r16f.dds", files::DdsVariant::dx10_r16f},
+                                                             {"cover_cube_r32f.dds", files::DdsVariant::dx10_r32f}};
   for (const auto& [name, variant] : files) {
-    out.write(name, encode_dds_cube(faces.texels, faces.size, variant));
+    out.write(name, files::encode_dds_cube(faces.texels, faces.size, variant));
     names.push_back(name);
   }
   add_readme(out, names, preset, faces,
@@ -158,17 +158,17 @@ void write_dds(OutputSet& out, std::vector<std::string>& names, const ExportPres
              "right-handed axes (+Z north): an axis rename alone mirrors the map.\n");
 }
 
-void write_celestia(OutputSet& out, std::vector<std::string>& names, const ExportPreset& preset,
+void write_celestia(files::OutputSet& out, std::vector<std::string>& names, const ExportPreset& preset,
                     const CoverFaces& faces, const ExportOptions& options) {
-  const ImageData map = equirect_image(faces);
+  const core::ImageData map = equirect_image(faces);
   // White cloud colour, coverage in alpha; the equirect already has the prime meridian at the centre.
-  ImageData rgba{map.width, map.height, 4, std::vector<float>(std::size_t(4) * map.pixels.size(), 1.0f)};
+  core::ImageData rgba{map.width, map.height, 4, std::vector<float>(std::size_t(4) * map.pixels.size(), 1.0f)};
   for (std::size_t i = 0; i < map.pixels.size(); ++i) rgba.pixels[4 * i + 3] = std::clamp(map.pixels[i], 0.0f, 1.0f);
   const std::string folder = "extras/" + options.name + "/";
   const std::string texture = folder + "textures/hires/" + options.name + ".png";
-  ImageEncoding encoding = png_encoding(8);
+  files::ImageEncoding encoding = files::png_encoding(8);
   encoding.unassociated_alpha = true;  // PNG's alpha is unassociated: the colour stays white
-  out.write(texture, encode_image(rgba, encoding, texture));
+  out.write(texture, files::encode_image(rgba, encoding, texture));
   names.push_back(texture);
   const std::string ssc = folder + options.name + ".ssc";
   out.write(ssc, "# nephele cloud cover for Celestia: copy extras/" + options.name +
@@ -195,10 +195,10 @@ void write_celestia(OutputSet& out, std::vector<std::string>& names, const Expor
 // OpenEXR's cube environment layout (OpenEXR "envmap" attribute, ENVMAP_CUBE): an N x 6N
 // vertical strip +X, -X, +Y, -Y, +Z, -Z with every face mirrored relative to the GL face: the
 // X and Z faces left-right, the Y faces top-bottom (docs/conventions.md, "Other programs"; docs/export.md, "exr-cube").
-void write_exr_cube(OutputSet& out, std::vector<std::string>& names, const ExportPreset& preset,
+void write_exr_cube(files::OutputSet& out, std::vector<std::string>& names, const ExportPreset& preset,
                     const CoverFaces& faces, const ExportOptions&) {
   const int n = faces.size;
-  ImageData strip{n, 6 * n, 1, std::vector<float>(std::size_t(6) * n * n)};
+  core::ImageData strip{n, 6 * n, 1, std::vector<float>(std::size_t(6) * n * n)};
   for (int f = 0; f < 6; ++f) {
     const bool y_face = f == 2 || f == 3;
     for (int j = 0; j < n; ++j)
@@ -207,9 +207,9 @@ void write_exr_cube(OutputSet& out, std::vector<std::string>& names, const Expor
         strip.pixels[(std::size_t(f) * n + j) * n + i] = faces.texels[(std::size_t(f) * n + sj) * n + si];
       }
   }
-  ImageEncoding encoding = exr_encoding({"Y"});
+  files::ImageEncoding encoding = files::exr_encoding({"Y"});
   encoding.attributes.push_back({"textureformat", "CubeFace Environment"});
-  out.write("cover_envcube.exr", encode_image(strip, encoding, "cover_envcube.exr"));
+  out.write("cover_envcube.exr", files::encode_image(strip, encoding, "cover_envcube.exr"));
   names.push_back("cover_envcube.exr");
   add_readme(out, names, preset, faces,
              "File: cover_envcube.exr, an OpenEXR cube environment map (header envmap = cube):\n"
@@ -223,11 +223,11 @@ void write_exr_cube(OutputSet& out, std::vector<std::string>& names, const Expor
 // FlightGear Earthview: eight tiles of 90 x 90 degrees whose shipped models (Models/Astro/
 // clouds_*.ac) map UVs 1/128 .. 127/128, so the content fills the inner 126/128 of a tile and
 // the border repeats the edge pixels (docs/export.md, "flightgear").
-void write_flightgear(OutputSet& out, std::vector<std::string>& names, const ExportPreset& preset,
+void write_flightgear(files::OutputSet& out, std::vector<std::string>& names, const ExportPreset& preset,
                       const CoverFaces& faces, const ExportOptions&) {
   const int tile = flightgear_tile_size(faces.size), border = tile / 128, content = tile - 2 * border;
-  const ImageData map = equirect_image(faces, content);
-  ImageEncoding encoding = png_encoding(8);
+  const core::ImageData map = equirect_image(faces, content);
+  files::ImageEncoding encoding = files::png_encoding(8);
   encoding.unassociated_alpha = true;  // grey stays white where the alpha is small
   for (int h = 0; h < 2; ++h)
     for (int q = 0; q < 4; ++q) {
@@ -239,7 +239,7 @@ void write_flightgear(OutputSet& out, std::vector<std::string>& names, const Exp
           values[std::size_t(y) * tile + x] = map.pixels[std::size_t(cy) * map.width + cx];
         }
       const std::string name = std::string("clouds_") + (h ? "S" : "N") + std::to_string(q + 1) + ".png";
-      out.write(name, encode_image(grey_image(tile, tile, std::move(values), true), encoding, name));
+      out.write(name, files::encode_image(grey_image(tile, tile, std::move(values), true), encoding, name));
       names.push_back(name);
     }
   const std::string t = std::to_string(tile), b = std::to_string(border), c = std::to_string(content);
@@ -277,12 +277,12 @@ Direction eve_face_direction(int face, double u, double v) {
   }
 }
 
-void write_eve(OutputSet& out, std::vector<std::string>& names, const ExportPreset& preset, const CoverFaces& faces,
-               const ExportOptions& options) {
+void write_eve(files::OutputSet& out, std::vector<std::string>& names, const ExportPreset& preset,
+               const CoverFaces& faces, const ExportOptions& options) {
   const std::string folder = "GameData/" + options.name + "/";
-  const ImageData map = equirect_image(faces);  // EVE's equirect: u as nephele's, v = 0 in row 0 (north)
+  const core::ImageData map = equirect_image(faces);  // EVE's equirect: u as nephele's, v = 0 in row 0 (north)
   const std::string equirect = folder + "clouds_equirect.dds";
-  out.write(equirect, encode_dds_2d(map.pixels, map.width, map.height, DdsVariant::rgba8_white));
+  out.write(equirect, files::encode_dds_2d(map.pixels, map.width, map.height, files::DdsVariant::rgba8_white));
   names.push_back(equirect);
   const AxisMap eve_axes{{2, 0, 1}, {1, 1, 1}};  // nephele X = EVE z, Y = EVE x, Z = EVE y
   const char* const keys[6] = {"Xn", "Xp", "Yn", "Yp", "Zn", "Zp"};
@@ -298,7 +298,7 @@ void write_eve(OutputSet& out, std::vector<std::string>& names, const ExportPres
     });
     std::string key = keys[f];
     std::string file = "clouds_" + std::string(1, char(std::tolower(key[0]))) + key[1] + ".dds";
-    out.write(folder + file, encode_dds_2d(values, n, n, DdsVariant::rgba8_white));
+    out.write(folder + file, files::encode_dds_2d(values, n, n, files::DdsVariant::rgba8_white));
     names.push_back(folder + file);
     config += "\ttex" + key + " = " + options.name + "/" + file.substr(0, file.size() - 4) + "\n";
   }
@@ -338,17 +338,18 @@ void write_eve(OutputSet& out, std::vector<std::string>& names, const ExportPres
 }
 
 // A face strip or grid for an engine's cube importer, 16-bit grey PNG.
-void write_cube_layout(OutputSet& out, std::vector<std::string>& names, const std::vector<float>& engine_faces, int n,
-                       int columns, const std::string& name) {
-  const ImageData image{columns * n, 6 / columns * n, 1, face_layout(engine_faces, n, columns)};
-  out.write(name, encode_image(image, png_encoding(16), name));
+void write_cube_layout(files::OutputSet& out, std::vector<std::string>& names, const std::vector<float>& engine_faces,
+                       int n, int columns, const std::string& name) {
+  const core::ImageData image{columns * n, 6 / columns * n, 1, face_layout(engine_faces, n, columns)};
+  out.write(name, files::encode_image(image, files::png_encoding(16), name));
   names.push_back(name);
 }
 
-void write_map_files(OutputSet& out, std::vector<std::string>& names, const ImageData& map, const std::string& stem) {
-  out.write(stem + ".exr", encode_image(map, exr_encoding({"Y"}), stem + ".exr"));
+void write_map_files(files::OutputSet& out, std::vector<std::string>& names, const core::ImageData& map,
+                     const std::string& stem) {
+  out.write(stem + ".exr", files::encode_image(map, files::exr_encoding({"Y"}), stem + ".exr"));
   names.push_back(stem + ".exr");
-  out.write(stem + "_16.png", encode_image(map, png_encoding(16), stem + "_16.png"));
+  out.write(stem + "_16.png", files::encode_image(map, files::png_encoding(16), stem + "_16.png"));
   names.push_back(stem + "_16.png");
 }
 
@@ -359,13 +360,13 @@ const char* const map_orientation =
 // Unity: left-handed, Y up. Its frame for the cover: +Y north, +X longitude 0, +Z 90 E (so
 // that the planet is seen unmirrored from outside): nephele X, Y, Z = Unity x, z, y, a
 // reflection (the same swap as KSP's planetarium frame).
-void write_unity(OutputSet& out, std::vector<std::string>& names, const ExportPreset& preset, const CoverFaces& faces,
-                 const ExportOptions&) {
-  const ImageData map = equirect_image(faces);
+void write_unity(files::OutputSet& out, std::vector<std::string>& names, const ExportPreset& preset,
+                 const CoverFaces& faces, const ExportOptions&) {
+  const core::ImageData map = equirect_image(faces);
   write_map_files(out, names, map, "cover_latlong");
-  ImageData hdrp{map.width, map.height, 3, std::vector<float>(3 * map.pixels.size(), 0.0f)};
+  core::ImageData hdrp{map.width, map.height, 3, std::vector<float>(3 * map.pixels.size(), 0.0f)};
   for (std::size_t i = 0; i < map.pixels.size(); ++i) hdrp.pixels[3 * i] = map.pixels[i];
-  out.write("cover_latlong_hdrp.png", encode_image(hdrp, png_encoding(16), "cover_latlong_hdrp.png"));
+  out.write("cover_latlong_hdrp.png", files::encode_image(hdrp, files::png_encoding(16), "cover_latlong_hdrp.png"));
   names.push_back("cover_latlong_hdrp.png");
   write_cube_layout(out, names, faces_for_axes(faces, AxisMap{{0, 2, 1}, {1, 1, 1}}), faces.size, 6,
                     "cover_cube_6x1.png");
@@ -387,8 +388,8 @@ void write_unity(OutputSet& out, std::vector<std::string>& names, const ExportPr
 
 // Godot 4: right-handed, Y up, -Z forward. Frame for the cover: +Y north, +Z longitude 0,
 // +X 90 E: nephele X, Y, Z = Godot z, x, y, a rotation.
-void write_godot(OutputSet& out, std::vector<std::string>& names, const ExportPreset& preset, const CoverFaces& faces,
-                 const ExportOptions&) {
+void write_godot(files::OutputSet& out, std::vector<std::string>& names, const ExportPreset& preset,
+                 const CoverFaces& faces, const ExportOptions&) {
   const std::vector<float> godot_faces = faces_for_axes(faces, AxisMap{{2, 0, 1}, {1, 1, 1}});
   write_cube_layout(out, names, godot_faces, faces.size, 2, "cover_cube_2x3.png");
   write_cube_layout(out, names, godot_faces, faces.size, 6, "cover_cube_6x1.png");
@@ -408,8 +409,8 @@ void write_godot(OutputSet& out, std::vector<std::string>& names, const ExportPr
                  "(data). Not checked in Godot (not in Debian bookworm).\n");
 }
 
-void write_unreal(OutputSet& out, std::vector<std::string>& names, const ExportPreset& preset, const CoverFaces& faces,
-                  const ExportOptions&) {
+void write_unreal(files::OutputSet& out, std::vector<std::string>& names, const ExportPreset& preset,
+                  const CoverFaces& faces, const ExportOptions&) {
   write_map_files(out, names, equirect_image(faces), "cover_equirect");
   add_readme(out, names, preset, faces,
              "Files: cover_equirect.exr (float) and cover_equirect_16.png (16-bit grey), linear 2D\n"
@@ -427,10 +428,10 @@ void write_unreal(OutputSet& out, std::vector<std::string>& names, const ExportP
 
 // Blender (right-handed, Z up) maps an equirect with u = 0.5 - atan2(y, x)/2pi: a north-up,
 // east-right map appears mirrored unless the Mapping node scales Y by -1.
-void write_blender(OutputSet& out, std::vector<std::string>& names, const ExportPreset& preset, const CoverFaces& faces,
-                   const ExportOptions&) {
-  const ImageData map = equirect_image(faces);
-  out.write("cover_equirect.exr", encode_image(map, exr_encoding({"Y"}), "cover_equirect.exr"));
+void write_blender(files::OutputSet& out, std::vector<std::string>& names, const ExportPreset& preset,
+                   const CoverFaces& faces, const ExportOptions&) {
+  const core::ImageData map = equirect_image(faces);
+  out.write("cover_equirect.exr", files::encode_image(map, files::exr_encoding({"Y"}), "cover_equirect.exr"));
   names.push_back("cover_equirect.exr");
   out.write(
       "nephele_world.py",
@@ -496,9 +497,9 @@ int read_cover_face_size(const std::filesystem::path& directory) {
       throw core::InputError("COVER_DIR", directory.string(),
                              "a directory with cover_px.exr ... cover_nz.exr (nephele generate --files faces)",
                              "has no " + path.filename().string());
-    ImageHeader header;
+    files::ImageHeader header;
     try {
-      header = read_image_header(path);
+      header = files::read_image_header(path);
     } catch (const std::exception& e) {
       throw core::InputError("COVER_DIR", path.string(), "an OpenEXR cube face",
                              std::string("cannot be read: ") + e.what());
@@ -522,9 +523,9 @@ CoverFaces read_cover_faces(const std::filesystem::path& directory) {
   faces.texels.reserve(6 * texels);
   for (int f = 0; f < 6; ++f) {
     const std::filesystem::path path = face_path(directory, f);
-    ImageData image;
+    core::ImageData image;
     try {
-      image = read_image(path);
+      image = files::read_image(path);
     } catch (const std::exception& e) {
       throw core::InputError("COVER_DIR", path.string(), "an OpenEXR cube face",
                              std::string("cannot be read: ") + e.what());
@@ -627,10 +628,10 @@ void check_texture_limit(const ExportPreset& preset, int face_size) {
 
 void check_export_options(const ExportPreset& preset, const ExportOptions& options) {
   if (preset.takes_name) check_addon_name(options.name);
-  if (preset.takes_format) parse_texture_sample(options.ktx2_format);
+  if (preset.takes_format) files::parse_texture_sample(options.ktx2_format);
 }
 
-std::vector<std::string> write_export(OutputSet& outputs, const ExportPreset& preset, const CoverFaces& faces,
+std::vector<std::string> write_export(files::OutputSet& outputs, const ExportPreset& preset, const CoverFaces& faces,
                                       const ExportOptions& options) {
   check_texture_limit(preset, faces.size);
   check_export_options(preset, options);

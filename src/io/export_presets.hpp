@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "io/atomic_output.hpp"
+#include "files/atomic_output.hpp"
 
 namespace nephele::io {
 
@@ -37,7 +37,7 @@ struct ExportPreset {
   bool takes_format = false;  // reads --format (ExportOptions::ktx2_format)
   bool takes_name = false;    // reads --name (ExportOptions::name)
   // Writes the preset's files (README.txt included) into the set; nullptr for a volume preset.
-  void (*write)(OutputSet& outputs, std::vector<std::string>& names, const ExportPreset& preset,
+  void (*write)(files::OutputSet& outputs, std::vector<std::string>& names, const ExportPreset& preset,
                 const CoverFaces& faces, const ExportOptions& options) = nullptr;
   // The longest image edge it writes for face size n; nullptr for a volume preset.
   long long (*widest_edge)(int face_size) = nullptr;
@@ -65,7 +65,7 @@ void check_export_options(const ExportPreset& preset, const ExportOptions& optio
 
 // Writes the preset's files (README.txt included) into `outputs` without committing it, and
 // returns their names in the order written. Equirect presets need a current GL context.
-std::vector<std::string> write_export(OutputSet& outputs, const ExportPreset& preset, const CoverFaces& faces,
+std::vector<std::string> write_export(files::OutputSet& outputs, const ExportPreset& preset, const CoverFaces& faces,
                                       const ExportOptions& options = {});
 
 }  // namespace nephele::io

@@ -4,8 +4,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "io/atomic_output.hpp"
-#include "io/image_files.hpp"
+#include "files/atomic_output.hpp"
+#include "files/image_files.hpp"
 #include "render/cloud_renderer.hpp"
 #include "nephele/version.hpp"
 
@@ -74,12 +74,12 @@ json::Value model_sidecar(const model::CloudModel& model, int size, const std::v
 std::vector<std::string> write_model_files(const std::filesystem::path& directory, const model::CloudModel& model,
                                            int size, const std::vector<float>& values, const json::Value& run,
                                            const core::ImageData* preview) {
-  OutputSet outputs(directory, OutputSet::Scope::directory);
+  files::OutputSet outputs(directory, files::OutputSet::Scope::directory);
   std::vector<std::string> names = {"density.raw", "density_atlas.exr", "model.cloud.json", "density.json"};
   outputs.write("density.raw", values.data(), values.size() * sizeof(float));
   const int columns = atlas_columns(size), rows = (size + columns - 1) / columns;
-  const ImageData atlas{columns * size, rows * size, 1, model_atlas(values, size)};
-  outputs.write("density_atlas.exr", encode_image(atlas, exr_encoding({"Y"}), "density_atlas.exr"));
+  const core::ImageData atlas{columns * size, rows * size, 1, model_atlas(values, size)};
+  outputs.write("density_atlas.exr", files::encode_image(atlas, files::exr_encoding({"Y"}), "density_atlas.exr"));
   outputs.write("model.cloud.json", io::write_cloud_model(model));
   const bool vdb = vdb_available();
   if (vdb) {
@@ -87,8 +87,8 @@ std::vector<std::string> write_model_files(const std::filesystem::path& director
     names.push_back("density.vdb");
   }
   if (preview) {
-    outputs.write("preview.png",
-                  encode_image(render::tone_map(*preview, preview_exposure), png_encoding(8), "preview.png"));
+    outputs.write("preview.png", files::encode_image(render::tone_map(*preview, preview_exposure),
+                                                     files::png_encoding(8), "preview.png"));
     names.push_back("preview.png");
   }
   outputs.write("density.json", json::write(model_sidecar(model, size, values, run, vdb)));

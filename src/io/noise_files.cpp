@@ -5,8 +5,8 @@
 #include <stdexcept>
 
 #include "core/file_names.hpp"
-#include "io/atomic_output.hpp"
-#include "io/image_files.hpp"
+#include "files/atomic_output.hpp"
+#include "files/image_files.hpp"
 #include "nephele/version.hpp"
 
 namespace nephele::io {
@@ -143,18 +143,18 @@ std::filesystem::path write_noise_files(const std::filesystem::path& out, const 
   const std::filesystem::path directory = out.has_parent_path() ? out.parent_path() : std::filesystem::path(".");
   const std::string name = out.filename().string();
   const std::string sidecar_name = out.stem().string() + ".json";
-  io::OutputSet outputs(directory, io::OutputSet::Scope::files);
+  files::OutputSet outputs(directory, files::OutputSet::Scope::files);
   if (format == FileFormat::raw) {
     // float32 little-endian: the host's own layout on every platform nephele builds for.
     outputs.write(name, volume.values.data(), volume.values.size() * sizeof(float));
   } else {
-    io::ImageData image{volume.width * volume.depth, volume.height, volume.channels, slice_atlas(volume)};
-    io::ImageEncoding encoding = io::png_encoding(png_bits == 16 ? 16 : 8);
+    core::ImageData image{volume.width * volume.depth, volume.height, volume.channels, slice_atlas(volume)};
+    files::ImageEncoding encoding = files::png_encoding(png_bits == 16 ? 16 : 8);
     if (format == FileFormat::exr) {
       static const char* const names[4][4] = {{"Y"}, {"R", "G"}, {"R", "G", "B"}, {"R", "G", "B", "A"}};
-      encoding = io::exr_encoding({names[volume.channels - 1], names[volume.channels - 1] + volume.channels});
+      encoding = files::exr_encoding({names[volume.channels - 1], names[volume.channels - 1] + volume.channels});
     }
-    outputs.write(name, io::encode_image(image, encoding, name));
+    outputs.write(name, files::encode_image(image, encoding, name));
   }
   outputs.write(sidecar_name,
                 json::write(sidecar(spec, volume, format, png_bits, name, preset, extra, stretched_from)));

@@ -5,7 +5,7 @@
 
 #include "core/error.hpp"
 #include "io/export_presets.hpp"
-#include "io/image_files.hpp"
+#include "files/image_files.hpp"
 
 namespace nephele::io {
 namespace {
@@ -14,9 +14,9 @@ float srgb_to_linear(float v) { return v <= 0.04045f ? v / 12.92f : std::pow((v 
 
 core::ImageData read_equirect(const std::string& path, const std::string& option) {
   core::ImageData image;
-  ImageHeader header;
+  files::ImageHeader header;
   try {
-    image = read_image(path, 0, &header);
+    image = files::read_image(path, 0, &header);
   } catch (const std::exception& e) {
     throw core::InputError(option, path, "an equirect image file OpenImageIO reads (JPEG, PNG, EXR, ...)",
                            std::string("could not be read: ") + e.what());

@@ -3,8 +3,8 @@
 #include <filesystem>
 
 #include "core/file_names.hpp"
-#include "io/atomic_output.hpp"
-#include "io/image_files.hpp"
+#include "files/atomic_output.hpp"
+#include "files/image_files.hpp"
 #include "nephele/version.hpp"
 #include "params/table.hpp"
 #include "regional/cloud_layers.hpp"
@@ -101,15 +101,15 @@ json::Value scene_sidecar(const SceneRender& r, const regional::Scene& scene) {
 
 void write_scene_outputs(const SceneRender& result, const regional::Scene& scene,
                          const std::filesystem::path& directory, const std::vector<std::string>& names,
-                         io::OutputSet::Scope scope) {
+                         files::OutputSet::Scope scope) {
   if (names.empty()) return;
-  io::OutputSet outputs(directory, scope);
+  files::OutputSet outputs(directory, scope);
   for (const auto& name : names) {
     if (core::lowercase_extension(name) == ".png")
-      outputs.write(
-          name, io::encode_image(render::tone_map(result.render.radiance, scene.exposure), io::png_encoding(8), name));
+      outputs.write(name, files::encode_image(render::tone_map(result.render.radiance, scene.exposure),
+                                              files::png_encoding(8), name));
     else
-      outputs.write(name, io::encode_image(result.render.radiance, io::exr_encoding({"R", "G", "B", "A"}), name));
+      outputs.write(name, files::encode_image(result.render.radiance, files::exr_encoding({"R", "G", "B", "A"}), name));
   }
   // The sidecar sits beside the first output.
   const std::filesystem::path first(names.front());

@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "core/json.hpp"
-#include "io/atomic_output.hpp"
+#include "files/atomic_output.hpp"
 #include "regional/scene.hpp"
 #include "render/scene_renderer.hpp"
 
@@ -17,7 +17,7 @@ using render::SceneRender;
 // radiance with cloud opacity in A) and a JSON sidecar next to the first one, as one output set.
 void write_scene_outputs(const SceneRender& result, const regional::Scene& scene,
                          const std::filesystem::path& directory, const std::vector<std::string>& names,
-                         OutputSet::Scope scope);
+                         files::OutputSet::Scope scope);
 
 json::Value scene_sidecar(const SceneRender& result, const regional::Scene& scene);
 

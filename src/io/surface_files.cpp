@@ -5,7 +5,7 @@
 
 #include "core/error.hpp"
 #include "io/elevation_files.hpp"
-#include "io/image_files.hpp"
+#include "files/image_files.hpp"
 
 namespace nephele::io {
 
@@ -40,7 +40,7 @@ cover::SurfaceMask image_mask(const std::string& path) {
     throw core::InputError(field, path, "an existing ETOPO5 netCDF or image file, or none or etopo5", "no such file");
   core::ImageData image;
   try {
-    image = read_image(path);  // refuses FIFOs, devices and headers beyond the memory budget
+    image = files::read_image(path);  // refuses FIFOs, devices and headers beyond the memory budget
   } catch (const std::exception& e) {
     throw core::InputError(field, path, "an image OpenImageIO reads (EXR, PNG, TIFF, ...), or an ETOPO5 netCDF",
                            e.what());

@@ -10,7 +10,7 @@
 #include "core/input_file.hpp"
 #include "core/json.hpp"
 #include "io/export_presets.hpp"
-#include "io/image_files.hpp"
+#include "files/image_files.hpp"
 #include "io/model_files.hpp"
 
 namespace nephele::io {
@@ -115,15 +115,16 @@ AtlasGrid atlas_grid(int width, int height, int depth) {
   return g;
 }
 
-std::vector<std::string> write_volume_export(OutputSet& outputs, const std::string& preset, const VolumeData& v) {
+std::vector<std::string> write_volume_export(files::OutputSet& outputs, const std::string& preset,
+                                             const VolumeData& v) {
   std::vector<std::string> names;
   const std::string size = std::to_string(v.width) + " x " + std::to_string(v.height) + " x " + std::to_string(v.depth);
   std::string readme = "nephele export, preset " + preset + ", of a volume from " + v.source + " (" + size + ", " +
                        std::to_string(v.channels) + " channel(s)). Details: docs/export.md.\n\n";
   if (preset == "atlas") {
     const AtlasGrid g = atlas_grid(v.width, v.height, v.depth);
-    ImageData atlas{g.columns * v.width, g.rows * v.height, v.channels,
-                    std::vector<float>(std::size_t(g.columns) * v.width * g.rows * v.height * v.channels, 0.0f)};
+    core::ImageData atlas{g.columns * v.width, g.rows * v.height, v.channels,
+                          std::vector<float>(std::size_t(g.columns) * v.width * g.rows * v.height * v.channels, 0.0f)};
     const std::size_t row = std::size_t(v.width) * v.channels;
     for (int z = 0; z < v.depth; ++z)
       for (int y = 0; y < v.height; ++y)
@@ -134,10 +135,11 @@ std::vector<std::string> write_volume_export(OutputSet& outputs, const std::stri
     static const char* const channel_names[4][4] = {{"Y"}, {"R", "G"}, {"R", "G", "B"}, {"R", "G", "B", "A"}};
     const std::vector<std::string> exr_channels(channel_names[v.channels - 1],
                                                 channel_names[v.channels - 1] + v.channels);
-    outputs.write("volume_atlas.exr", encode_image(atlas, exr_encoding(exr_channels), "volume_atlas.exr"));
-    ImageEncoding png = png_encoding(16);
+    outputs.write("volume_atlas.exr",
+                  files::encode_image(atlas, files::exr_encoding(exr_channels), "volume_atlas.exr"));
+    files::ImageEncoding png = files::png_encoding(16);
     png.unassociated_alpha = true;  // a second or fourth channel is data, not alpha to divide by
-    outputs.write("volume_atlas_16.png", encode_image(atlas, png, "volume_atlas_16.png"));
+    outputs.write("volume_atlas_16.png", files::encode_image(atlas, png, "volume_atlas_16.png"));
     names = {"volume_atlas.exr", "volume_atlas_16.png"};
     readme += "Files: volume_atlas.exr (float) and volume_atlas_16.png (16-bit, no gamma chunk), " +
               std::to_string(atlas.width) + " x " + std::to_string(atlas.height) + ": " + std::to_string(g.columns) +

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "io/atomic_output.hpp"
+#include "files/atomic_output.hpp"
 
 namespace nephele::io {
 
@@ -32,6 +32,7 @@ struct AtlasGrid {
 AtlasGrid atlas_grid(int width, int height, int depth);
 
 // Writes the preset's files ("atlas" or "openvdb") and README.txt into `outputs`.
-std::vector<std::string> write_volume_export(OutputSet& outputs, const std::string& preset, const VolumeData& volume);
+std::vector<std::string> write_volume_export(files::OutputSet& outputs, const std::string& preset,
+                                             const VolumeData& volume);
 
 }  // namespace nephele::io

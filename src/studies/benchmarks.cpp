@@ -8,7 +8,7 @@
 #include "cover/equirect.hpp"
 #include "cover/global_cover.hpp"
 #include "gpu/pass_timer.hpp"
-#include "io/image_files.hpp"
+#include "files/image_files.hpp"
 #include "model/density_volume.hpp"
 
 namespace nephele::studies {
@@ -26,12 +26,13 @@ double encode_cover_images(const std::vector<float>& texels, const std::vector<f
   const size_t per_face = static_cast<size_t>(size) * size;
   for (int face = 0; face < 6; ++face)
     jobs.push_back(std::async(std::launch::async, [&, face] {
-      const io::ImageData image{
+      const core::ImageData image{
           size, size, 1, std::vector<float>(texels.begin() + face * per_face, texels.begin() + (face + 1) * per_face)};
-      return io::encode_image(image, io::exr_encoding({"Y"}), "face").size();
+      return files::encode_image(image, files::exr_encoding({"Y"}), "face").size();
     }));
   jobs.push_back(std::async(std::launch::async, [&] {
-    return io::encode_image(io::ImageData{4 * size, 2 * size, 1, equirect}, io::exr_encoding({"Y"}), "equirect").size();
+    return files::encode_image(core::ImageData{4 * size, 2 * size, 1, equirect}, files::exr_encoding({"Y"}), "equirect")
+        .size();
   }));
   double bytes = 0;
   for (auto& job : jobs) bytes += static_cast<double>(job.get());

@@ -12,7 +12,7 @@
 #include "cover/latitude_profile.hpp"
 #include "cover/solid_angle.hpp"
 #include "io/export_presets.hpp"
-#include "io/image_files.hpp"
+#include "files/image_files.hpp"
 #include "params/table.hpp"
 #include "params/values.hpp"
 #include "shader_math/shader_math.hpp"
@@ -284,9 +284,9 @@ CoverStatistics cover_statistics(const std::filesystem::path& cover_dir) {
   const std::filesystem::path equirect_path = cover_dir / "cover_equirect.exr";
   std::optional<Equirect> map;
   if (std::filesystem::exists(equirect_path)) {
-    io::ImageData image;
+    core::ImageData image;
     try {
-      image = io::read_image(equirect_path);
+      image = files::read_image(equirect_path);
     } catch (const std::exception& e) {
       throw core::InputError(equirect_path.string(), "", "an OpenEXR equirect map",
                              std::string("cannot be read: ") + e.what());
@@ -417,9 +417,9 @@ json::Value statistics_json(const CoverStatistics& s) {
 
 namespace {
 
-// A small raster plot: lines, markers and frames in an RGB image, labels through io::draw_text.
+// A small raster plot: lines, markers and frames in an RGB image, labels through files::draw_text.
 struct Canvas {
-  io::ImageData image;
+  core::ImageData image;
   Canvas(int width, int height) : image{width, height, 3, std::vector<float>(size_t(width) * height * 3, 1.0f)} {}
   void dot(int x, int y, const float rgb[3]) {
     if (x < 0 || y < 0 || x >= image.width || y >= image.height) return;
@@ -442,7 +442,7 @@ struct Canvas {
   }
   void text(double x, double y, const std::string& t, int size = 14) {
     const float black[3] = {0, 0, 0};
-    io::draw_text(image, static_cast<int>(x), static_cast<int>(y), t, size, black);
+    files::draw_text(image, static_cast<int>(x), static_cast<int>(y), t, size, black);
   }
 };
 
@@ -537,12 +537,12 @@ std::vector<unsigned char> plot_png(const CoverStatistics& s) {
                     std::to_string(s.perimeter.objects) + " objects >= 10 px)",
                 15);
   }
-  return io::encode_image(canvas.image, io::png_encoding(8), "stats.png");
+  return files::encode_image(canvas.image, files::png_encoding(8), "stats.png");
 }
 
 }  // namespace
 
-void write_statistics(io::OutputSet& outputs, const CoverStatistics& stats) {
+void write_statistics(files::OutputSet& outputs, const CoverStatistics& stats) {
   outputs.write("stats.json", json::write(statistics_json(stats)));
   outputs.write("stats.png", plot_png(stats));
   outputs.commit();

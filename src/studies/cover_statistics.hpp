@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "core/json.hpp"
-#include "io/atomic_output.hpp"
+#include "files/atomic_output.hpp"
 
 namespace nephele::studies {
 
@@ -79,6 +79,6 @@ CoverStatistics cover_statistics(const std::filesystem::path& cover_dir);
 
 json::Value statistics_json(const CoverStatistics& stats);
 // stats.json and stats.png (coverage by latitude against the target; the spectrum with its fit).
-void write_statistics(io::OutputSet& outputs, const CoverStatistics& stats);
+void write_statistics(files::OutputSet& outputs, const CoverStatistics& stats);
 
 }  // namespace nephele::studies

@@ -18,7 +18,7 @@
 #include "apps/viewer/viewer.hpp"
 #include "cli_support.hpp"
 #include "io/cloud_model_files.hpp"
-#include "io/image_files.hpp"
+#include "files/image_files.hpp"
 #include "model/density_volume.hpp"
 #include "render/model_preview.hpp"
 #include "tolerances.hpp"
@@ -371,7 +371,7 @@ TEST_CASE(
   REQUIRE(r.exit_code == 0);
   const std::vector<float> voxels = read_raw(dir / "density.raw");
   CHECK(voxels == v.model_volume()->read());
-  const core::ImageData preview = io::read_image(dir / "preview.png");
+  const core::ImageData preview = files::read_image(dir / "preview.png");
   // Both 8-bit: preview.png rounds 255 v to the nearest, the framebuffer in either direction.
   CHECK(largest_difference(v.last_frame(), preview) == Approx(0).epsilon(0).margin(test::kEightBitDisplay + 1e-6));
   // The radiance itself: the preview pass in this context on the window's volume, to the bit.
@@ -392,7 +392,7 @@ TEST_CASE("nephele view --model FILE --frames N opens the modeller on a model fi
                            frames.string());
   INFO(r.output);
   REQUIRE(r.exit_code == 0);
-  CHECK(io::read_image(frames / "frame_000001.png").width == 48);
+  CHECK(files::read_image(frames / "frame_000001.png").width == 48);
   const auto bad = test::run("view --model " + file.string() + " --model-size 7 --frames 1");
   CHECK(bad.exit_code == 2);
   CHECK_THAT(bad.output, Catch::Contains("--model-size"));

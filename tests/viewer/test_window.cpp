@@ -15,7 +15,7 @@
 #include "apps/viewer/view_source.hpp"
 #include "apps/viewer/viewer.hpp"
 #include "cli_support.hpp"
-#include "io/image_files.hpp"
+#include "files/image_files.hpp"
 #include "regional/sites.hpp"
 #include "render/cloud_renderer.hpp"
 #include "tolerances.hpp"
@@ -87,7 +87,7 @@ TEST_CASE("the window shows the image nephele render makes headless of the same 
       test::run(std::string("render --at ") + kAt + " --heading 300 --pitch 8 --fov 70 --time 2026-06-21T16:00Z " +
                 "--size 64x36 --quality final --view-steps 8 --light-steps 2 --quiet --out " + exr.string());
   REQUIRE(r.exit_code == 0);
-  const core::ImageData radiance = io::read_image(exr);
+  const core::ImageData radiance = files::read_image(exr);
   // The same passes on the same driver in the window's context and the headless one, the full
   // size assembled from bands: the same radiance to the bit.
   CHECK(largest_difference(v.shown_radiance(), radiance) == 0);
@@ -114,7 +114,7 @@ TEST_CASE("in orbit the window shows the image render --view orbit makes headles
       "--fov 60 --time 2026-06-21T16:00Z --size 64x36 --quiet --out " +
       exr.string());
   REQUIRE(r.exit_code == 0);
-  const core::ImageData radiance = io::read_image(exr);
+  const core::ImageData radiance = files::read_image(exr);
   // The same renderer, cover (made from the same default parameters and seed) and camera in the
   // window's context and the headless one: the same radiance to the bit.
   CHECK(largest_difference(v.shown_radiance(), radiance) == 0);
@@ -375,7 +375,7 @@ TEST_CASE("F12 writes the shown render as a PNG of its size, and --record writes
   Viewer v(options);
   refine(v);
   const auto shot = v.screenshot(out.path);
-  const core::ImageData image = io::read_image(shot);
+  const core::ImageData image = files::read_image(shot);
   CHECK(image.width == kWidth);
   CHECK(image.height == kHeight);
   int frames = 0;
@@ -406,7 +406,7 @@ TEST_CASE("nephele view COVER_DIR --record DIR --frames N shows a generated cove
   INFO(r.output);
   REQUIRE(r.exit_code == 0);
   for (const char* name : {"frame_000000.png", "frame_000001.png", "frame_000002.png"}) {
-    const core::ImageData image = io::read_image(frames / name);
+    const core::ImageData image = files::read_image(frames / name);
     CHECK(image.width == 48);
     CHECK(image.height == 27);
   }

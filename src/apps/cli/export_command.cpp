@@ -7,7 +7,7 @@
 #include "apps/cli/commands.hpp"
 #include "apps/cli/options.hpp"
 #include "gpu/egl_context.hpp"
-#include "io/atomic_output.hpp"
+#include "files/atomic_output.hpp"
 #include "io/export_presets.hpp"
 #include "io/volume_export.hpp"
 #include "params/table.hpp"
@@ -65,13 +65,13 @@ int run_export(const std::vector<std::string>& arguments) {
   }
 
   const std::filesystem::path directory(out);
-  io::check_output_directory(directory, "--out");
+  files::check_output_directory(directory, "--out");
   std::unique_ptr<gpu::EglContext> context;
   if (preset.needs_equirect) context = std::make_unique<gpu::EglContext>();
   std::error_code error;
   std::filesystem::create_directories(directory, error);
   if (error) throw UsageError("--out", out, "DIR", "cannot be created: " + error.message());
-  io::OutputSet outputs(directory, io::OutputSet::Scope::directory);
+  files::OutputSet outputs(directory, files::OutputSet::Scope::directory);
   const std::vector<std::string> names = preset.volume ? io::write_volume_export(outputs, preset.name, volume)
                                                        : io::write_export(outputs, preset, faces, export_options);
   outputs.commit();

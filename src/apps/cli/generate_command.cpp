@@ -10,7 +10,7 @@
 #include "apps/cli/cover_options.hpp"
 #include "cover/cover_limits.hpp"
 #include "render/render_limits.hpp"
-#include "io/atomic_output.hpp"
+#include "files/atomic_output.hpp"
 #include "io/cover_files.hpp"
 #include "io/export_presets.hpp"
 #include "params/values.hpp"
@@ -78,9 +78,9 @@ int run_generate(const std::vector<std::string>& arguments) {
                        "names no preset or ends with a comma");
   }
   const std::filesystem::path directory(out);
-  io::check_output_directory(directory, "--out");
+  files::check_output_directory(directory, "--out");
   // A directory of the user's at one of the set's names is refused before the run, not after.
-  io::check_output_files(directory, io::cover_file_names(file_options), "--out");
+  files::check_output_files(directory, io::cover_file_names(file_options), "--out");
 
   gpu::EglContext context;
   if (verbose)
@@ -93,7 +93,7 @@ int run_generate(const std::vector<std::string>& arguments) {
   if (error) throw UsageError("--out: cannot create directory '" + out + "': " + error.message());
 
   // Opened before the passes run, so that an interrupt at any time removes its temporary directory.
-  io::OutputSet outputs(directory, io::OutputSet::Scope::directory);
+  files::OutputSet outputs(directory, files::OutputSet::Scope::directory);
   cover::GlobalCover cover(parameters);
   // identity, (spline,) curl, warp, density, calibrate, coverage, diagnose, then the files.
   const int stages = parameters.curl_mode == cover::CurlMode::spline ? 9 : 8;
@@ -112,7 +112,7 @@ int run_generate(const std::vector<std::string>& arguments) {
     for (const io::ExportPreset* preset : presets) {
       const std::filesystem::path folder = outputs.temporary_directory() / "export" / preset->name;
       std::filesystem::create_directories(folder);
-      io::OutputSet set(folder, io::OutputSet::Scope::directory);
+      files::OutputSet set(folder, files::OutputSet::Scope::directory);
       io::write_export(set, *preset, faces);
       set.commit();
     }

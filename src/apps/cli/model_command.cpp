@@ -7,7 +7,7 @@
 #include <iostream>
 #include <sstream>
 
-#include "io/atomic_output.hpp"
+#include "files/atomic_output.hpp"
 #include "io/cloud_model_files.hpp"
 #include "apps/cli/commands.hpp"
 #include "apps/cli/options.hpp"
@@ -64,7 +64,7 @@ int run_model(const std::vector<std::string>& arguments) {
   model::validate(m, example.empty() ? scene_path : "--example " + example);
   render::PreviewSettings preview;
   regional::parse_size(preview_size, preview.width, preview.height, "--preview");
-  io::check_output_directory(out, "--out");
+  files::check_output_directory(out, "--out");
 
   gpu::EglContext context;
   if (verbose) std::cerr << "renderer: " << context.info().renderer << " (" << context.info().version << ")\n";

@@ -15,7 +15,7 @@
 #include "core/progress.hpp"
 #include "noise/noise_limits.hpp"
 #include "gpu/egl_context.hpp"
-#include "io/atomic_output.hpp"
+#include "files/atomic_output.hpp"
 #include "io/noise_files.hpp"
 #include "noise/noise_texture.hpp"
 #include "params/table.hpp"
@@ -163,7 +163,7 @@ NoiseRequest parse_noise_request(const std::vector<std::string>& arguments, bool
   if (!std::filesystem::is_directory(directory))
     throw UsageError("--out: directory '" + directory.string() + "' does not exist");
   if (std::filesystem::is_directory(out)) throw UsageError("--out: '" + request.out + "' is a directory");
-  io::check_output_files(directory, {out.filename().string(), out.stem().string() + ".json"}, "--out");
+  files::check_output_files(directory, {out.filename().string(), out.stem().string() + ".json"}, "--out");
   return request;
 }
 

@@ -16,8 +16,8 @@
 #include "cover/global_cover.hpp"
 #include "gpu/egl_context.hpp"
 #include "gpu/pass_timer.hpp"
-#include "io/atomic_output.hpp"
-#include "io/image_files.hpp"
+#include "files/atomic_output.hpp"
+#include "files/image_files.hpp"
 #include "io/planet_textures.hpp"
 #include "params/table.hpp"
 #include "regional/scene.hpp"
@@ -76,7 +76,7 @@ int run_orbit_render(const OrbitOptions& orbit) {
   if (directory.empty()) directory = ".";
   if (std::filesystem::exists(directory) && !std::filesystem::is_directory(directory))
     throw UsageError("--out: '" + directory.string() + "' is not a directory");
-  io::check_output_files(directory, {out.filename().string(), out.stem().string() + ".json"}, "--out");
+  files::check_output_files(directory, {out.filename().string(), out.stem().string() + ".json"}, "--out");
 
   render::OrbitCamera camera;
   camera.latitude_deg = orbit.lat;
@@ -135,13 +135,13 @@ int run_orbit_render(const OrbitOptions& orbit) {
   render::RenderResult result = render::render_orbit(camera, unix_seconds, textures.images, *cover, settings);
   progress.update(2, "writing files");
   {
-    io::OutputSet outputs(directory, io::OutputSet::Scope::files);
+    files::OutputSet outputs(directory, files::OutputSet::Scope::files);
     const std::string name = out.filename().string();
     if (extension == ".png")
-      outputs.write(name,
-                    io::encode_image(render::tone_map(result.radiance, orbit.exposure), io::png_encoding(8), name));
+      outputs.write(
+          name, files::encode_image(render::tone_map(result.radiance, orbit.exposure), files::png_encoding(8), name));
     else
-      outputs.write(name, io::encode_image(result.radiance, io::exr_encoding({"R", "G", "B", "A"}), name));
+      outputs.write(name, files::encode_image(result.radiance, files::exr_encoding({"R", "G", "B", "A"}), name));
     json::Value root, cam;
     root.set("view", "orbit");
     cam.set("latitude", camera.latitude_deg);

@@ -9,6 +9,7 @@
 #include "core/file_names.hpp"
 #include "apps/cli/commands.hpp"
 #include "io/elevation_files.hpp"
+#include "files/float_cache.hpp"
 #include "io/noise_cache.hpp"
 #include "render/cloud_renderer.hpp"
 #include "cover/cover_limits.hpp"
@@ -147,14 +148,14 @@ int run_render(const std::vector<std::string>& arguments) {
   std::vector<std::string> outputs, shown;
   std::string outputs_field = "--out";  // where the names come from, for errors
   std::filesystem::path directory;
-  io::OutputSet::Scope scope = io::OutputSet::Scope::files;
+  files::OutputSet::Scope scope = files::OutputSet::Scope::files;
   if (!scene_file.empty() &&
       (out.empty() || std::filesystem::is_directory(out) || std::filesystem::path(out).extension().empty())) {
     if (scene.outputs.empty()) throw UsageError(scene_file + ": 'outputs': give at least one file name, or --out FILE");
     directory = out.empty() ? std::filesystem::path(".") : std::filesystem::path(out);
     if (!out.empty()) {
-      scope = io::OutputSet::Scope::directory;
-      io::check_output_directory(directory, "--out");
+      scope = files::OutputSet::Scope::directory;
+      files::check_output_directory(directory, "--out");
     }
     outputs = scene.outputs;
     outputs_field = scene_file + ": 'outputs'";
@@ -177,7 +178,7 @@ int run_render(const std::vector<std::string>& arguments) {
   std::vector<std::string> written = outputs;
   const std::filesystem::path first(outputs.front());
   written.push_back((first.parent_path() / (first.stem().string() + ".json")).string());
-  io::check_output_files(directory, written, outputs_field);
+  files::check_output_files(directory, written, outputs_field);
 
   gpu::EglContext context;
   if (verbose) std::cerr << "renderer: " << context.info().renderer << "\n";
@@ -200,7 +201,7 @@ int run_render(const std::vector<std::string>& arguments) {
   // The noise volume from the disk cache when a layer is marched (the same bits as making it).
   std::unique_ptr<render::NoiseVolume> noise;
   std::string noise_note;
-  const std::filesystem::path cache_directory = no_cache ? std::filesystem::path() : io::default_cache_directory();
+  const std::filesystem::path cache_directory = no_cache ? std::filesystem::path() : files::default_cache_directory();
   if (!cache_directory.empty() && render::needs_noise_volume(prepared.partial.layers, prepared.field)) {
     const render::RenderSettings settings = render::render_settings(scene);
     noise = io::cached_noise_volume(settings.noise_size, settings.seed, cache_directory, &noise_note);

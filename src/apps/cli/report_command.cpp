@@ -10,7 +10,7 @@
 #include "apps/cli/cover_options.hpp"
 #include "cover/cover_limits.hpp"
 #include "render/render_limits.hpp"
-#include "io/atomic_output.hpp"
+#include "files/atomic_output.hpp"
 #include "gpu/egl_context.hpp"
 #include "studies/work_precision.hpp"
 #include "regional/scene.hpp"
@@ -84,7 +84,7 @@ int run_report(const std::vector<std::string>& all_arguments) {
   check.height = render_sweep.height;
   regional::validate_scene(check, "--render-size", {{"size", "--render-size"}});
   const std::filesystem::path directory(out);
-  io::check_output_directory(directory, "--out");
+  files::check_output_directory(directory, "--out");
 
   gpu::EglContext context;
   if (render_only && no_render) throw UsageError("report render: --no-render leaves nothing to do");
@@ -99,7 +99,7 @@ int run_report(const std::vector<std::string>& all_arguments) {
   if (error) throw UsageError("--out: cannot create directory '" + out + "': " + error.message());
 
   // Opened before the sweep, so that an interrupt at any time removes its temporary directory.
-  io::OutputSet outputs(directory, io::OutputSet::Scope::directory);
+  files::OutputSet outputs(directory, files::OutputSet::Scope::directory);
   std::cout << "device: " << context.info().renderer << " (" << context.info().version << ")\n" << std::flush;
   studies::SweepResult result;
   if (!render_only) {

@@ -6,7 +6,7 @@
 
 #include "apps/cli/commands.hpp"
 #include "apps/cli/options.hpp"
-#include "io/atomic_output.hpp"
+#include "files/atomic_output.hpp"
 #include "params/table.hpp"
 #include "studies/cover_statistics.hpp"
 
@@ -31,9 +31,9 @@ int run_stats(const std::vector<std::string>& arguments) {
   if (cover_dir.empty()) throw UsageError("COVER_DIR", "", "a directory written by nephele generate", "is missing");
   const std::filesystem::path directory =
       out.empty() ? std::filesystem::path(cover_dir) / "stats" : std::filesystem::path(out);
-  io::check_output_directory(directory, "--out");
+  files::check_output_directory(directory, "--out");
   const studies::CoverStatistics stats = studies::cover_statistics(cover_dir);
-  io::OutputSet outputs(directory, io::OutputSet::Scope::directory);
+  files::OutputSet outputs(directory, files::OutputSet::Scope::directory);
   studies::write_statistics(outputs, stats);
 
   std::cout << std::fixed << std::setprecision(3) << "coverage by 10-degree band (" << stats.coverage_source

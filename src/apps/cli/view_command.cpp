@@ -11,6 +11,7 @@
 #include "apps/viewer/viewer.hpp"
 #include "cover/integrators.hpp"
 #include "io/cloud_model_files.hpp"
+#include "files/float_cache.hpp"
 #include "io/noise_cache.hpp"
 #include "model/bricks.hpp"
 #include "params/table.hpp"
@@ -82,7 +83,7 @@ int run_view(const std::vector<std::string>& arguments) {
   view_options.cover_dir = cover_dir;
   view_options.record_dir = record;
   view_options.frames = frames;
-  view_options.cache_directory = no_cache ? std::filesystem::path() : io::default_cache_directory();
+  view_options.cache_directory = no_cache ? std::filesystem::path() : files::default_cache_directory();
   if (!model_name.empty()) {
     if (!cover_dir.empty() || !scene_file.empty())
       throw UsageError("--model: shows a cloud model alone; COVER_DIR and --scene belong to the ground view");
@@ -128,7 +129,7 @@ int bench_view(const std::vector<std::string>& arguments) {
   viewer::ViewerOptions view_options;
   regional::parse_size(size, view_options.scene.width, view_options.scene.height, "--size");
   regional::validate_scene(view_options.scene, "--size");
-  view_options.cache_directory = io::default_cache_directory();
+  view_options.cache_directory = files::default_cache_directory();
   if (!model_name.empty()) {
     load_view_model(model_name, view_options);
     view_options.model_size = model_size;

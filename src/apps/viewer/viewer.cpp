@@ -17,9 +17,9 @@
 
 #include "apps/viewer/modeller.hpp"
 #include "apps/viewer/panels.hpp"
-#include "io/atomic_output.hpp"
+#include "files/atomic_output.hpp"
 #include "io/cloud_model_files.hpp"
-#include "io/image_files.hpp"
+#include "files/image_files.hpp"
 #include "model/model_limits.hpp"
 
 namespace nephele::viewer {
@@ -84,13 +84,13 @@ std::string frame_name(long index) {
 // One file written whole or not at all (the frames, screenshots and saved models).
 void write_whole(const std::filesystem::path& directory, const std::string& name,
                  const std::vector<unsigned char>& bytes) {
-  io::OutputSet set(directory.empty() ? "." : directory, io::OutputSet::Scope::files);
+  files::OutputSet set(directory.empty() ? "." : directory, files::OutputSet::Scope::files);
   set.write(name, bytes);
   set.commit();
 }
 
 void write_png(const std::filesystem::path& directory, const std::string& name, const core::ImageData& image) {
-  write_whole(directory, name, io::encode_image(image, io::png_encoding(8), name));
+  write_whole(directory, name, files::encode_image(image, files::png_encoding(8), name));
 }
 
 bool shift_held(GLFWwindow* window) {

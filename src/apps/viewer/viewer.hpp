@@ -86,7 +86,7 @@ class Viewer {
   std::filesystem::path screenshot(const std::filesystem::path& directory = ".");
   // The modeller (ViewerOptions::model): the density volume as of the last render (nullptr
   // before it, and outside the modeller); Ctrl+S: the state's model written to
-  // ViewerOptions::model_file as a model file, all or nothing (io::OutputSet); returns the path.
+  // ViewerOptions::model_file as a model file, all or nothing (files::OutputSet); returns the path.
   const model::DensityVolume* model_volume() const;
   // The modeller's last message (saved, added, removed, or why not), shown in its panel.
   const std::string& model_status() const { return model_status_; }

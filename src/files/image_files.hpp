@@ -8,7 +8,7 @@
 
 #include "core/image.hpp"
 
-namespace nephele::io {
+namespace nephele::files {
 
 using core::ImageData;
 
@@ -85,4 +85,4 @@ ImageData read_image(const std::filesystem::path& path, std::uint64_t max_bytes 
 // leaves the image as it was when the font or FreeType is not there (a plot then has no labels).
 bool draw_text(ImageData& image, int x, int y, const std::string& text, int size, const float rgb[3]);
 
-}  // namespace nephele::io
+}  // namespace nephele::files

@@ -1,4 +1,4 @@
-#include "io/texture_containers.hpp"
+#include "files/texture_containers.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -7,7 +7,7 @@
 
 #include "core/error.hpp"
 
-namespace nephele::io {
+namespace nephele::files {
 namespace {
 
 // Little-endian writers (both formats are little-endian throughout).
@@ -235,4 +235,4 @@ std::vector<unsigned char> encode_dds_2d(const std::vector<float>& texels, int w
   return encode_dds(texels, width, height, 1, variant);
 }
 
-}  // namespace nephele::io
+}  // namespace nephele::files

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-namespace nephele::io {
+namespace nephele::files {
 
 // Sample formats of the containers: 16-bit half float, 32-bit float, 8-bit unsigned normalised.
 enum class TextureSample { r16f, r32f, r8 };
@@ -37,4 +37,4 @@ std::vector<unsigned char> encode_dds_cube(const std::vector<float>& texels, int
 // A 2D DDS of width x height texels (rows top-down as stored; one mip level), same variants.
 std::vector<unsigned char> encode_dds_2d(const std::vector<float>& texels, int width, int height, DdsVariant variant);
 
-}  // namespace nephele::io
+}  // namespace nephele::files

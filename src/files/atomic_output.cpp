@@ -1,5 +1,5 @@
 #include "core/file_descriptor.hpp"
-#include "io/atomic_output.hpp"
+#include "files/atomic_output.hpp"
 
 #include <dirent.h>
 #include <fcntl.h>
@@ -27,7 +27,7 @@
 
 #include "core/error.hpp"
 
-namespace nephele::io {
+namespace nephele::files {
 namespace fs = std::filesystem;
 namespace {
 
@@ -743,4 +743,4 @@ void write_file(const fs::path& path, const void* data, std::size_t size) {
   write_all(fd, data, size, path.string());
 }
 
-}  // namespace nephele::io
+}  // namespace nephele::files

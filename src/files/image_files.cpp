@@ -1,4 +1,4 @@
-#include "io/image_files.hpp"
+#include "files/image_files.hpp"
 
 #include <memory>
 
@@ -11,9 +11,9 @@
 
 #include <stdexcept>
 
-#include "io/atomic_output.hpp"
+#include "files/atomic_output.hpp"
 
-namespace nephele::io {
+namespace nephele::files {
 
 bool is_exr_compression(const std::string& name) {
   for (const char* known : {"none", "rle", "zips", "zip", "piz", "pxr24", "b44", "dwaa"})
@@ -115,4 +115,4 @@ bool draw_text(ImageData& image, int x, int y, const std::string& text, int size
   return OIIO::ImageBufAlgo::render_text(buffer, x, y, text, size, font, OIIO::cspan<float>(rgb, 3));
 }
 
-}  // namespace nephele::io
+}  // namespace nephele::files

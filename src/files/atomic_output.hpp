@@ -21,7 +21,7 @@
 #include <string>
 #include <vector>
 
-namespace nephele::io {
+namespace nephele::files {
 
 class OutputSet {
  public:
@@ -97,4 +97,4 @@ inline void write_text_file(const std::filesystem::path& path, const std::string
   write_file(path, text.data(), text.size());
 }
 
-}  // namespace nephele::io
+}  // namespace nephele::files
