@@ -1,11 +1,8 @@
 #pragma once
 // nephele view: a window that shows a ViewSource's image, with panels made from the parameter
 // table, mouse and keyboard flight, screenshots and frame recording (docs/viewer.md).
-//
-// Refinement: a change of the view renders at once at a quarter of the window's size in each
-// direction (the preview), then at half size, then at full size in eight bands of rows, one
-// render per frame, so that input is answered between renders and no frame costs a whole
-// full-size render. Exposure only tone-maps the last image again.
+// The display pass is apps/viewer/image_display.hpp, the refinement of each view (preview,
+// half size, bands) apps/viewer/refinement.hpp, the keys the key table below (key_table.cpp).
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -13,12 +10,13 @@
 #include <utility>
 #include <vector>
 
+#include "apps/viewer/image_display.hpp"
+#include "apps/viewer/refinement.hpp"
 #include "apps/viewer/view_source.hpp"
 #include "apps/viewer/view_state.hpp"
 #include "apps/viewer/window.hpp"
 #include "core/image.hpp"
 #include "regional/scene.hpp"
-#include "render/reprojection.hpp"
 
 struct GLFWwindow;
 
@@ -42,15 +40,6 @@ struct ViewerOptions {
 // --help and docs/viewer.md.
 const std::string& key_help();
 
-// One step of the refinement: the image at 1/divisor of the window's size each way, or band
-// `band` of `bands` (of equal rows, the last one shorter) of it.
-struct RefinementLevel {
-  int divisor;
-  int band, bands;
-};
-// The steps, coarse to fine: 1/4, 1/2, then the full size in eight bands.
-const std::vector<RefinementLevel>& refinement_levels();
-
 class Viewer {
  public:
   explicit Viewer(const ViewerOptions& options);  // throws WindowError when no window can be opened
@@ -67,10 +56,10 @@ class Viewer {
   ViewState& state() { return state_; }
   Window& window() { return *window_; }
   // True when the image shown is the full-size render of the current state.
-  bool refined() const { return next_level_ >= refinement_levels().size() && !changed(); }
+  bool refined() const { return refinement_.done(render_key()); }
   // The last render (a band's rows only, for a band): its radiance, passes and times.
-  const render::RenderResult& last_render() const { return last_render_; }
-  long renders() const { return renders_; }
+  const render::RenderResult& last_render() const { return refinement_.last_render(); }
+  long renders() const { return refinement_.renders(); }
   // Wall-clock milliseconds of the last frame (events, render, display, panels, swap).
   double frame_ms() const { return frame_ms_; }
   // The default framebuffer as shown at the end of the last frame: RGB in [0, 1] (8-bit
@@ -80,7 +69,7 @@ class Viewer {
   void set_panels_visible(bool on) { panels_ = on; }
   // The linear radiance shown: the last whole render, or the full-size image its bands have
   // filled so far (the rows not yet marched from the half-size render, nearest pixel).
-  const core::ImageData& shown_radiance() const { return shown_; }
+  const core::ImageData& shown_radiance() const { return refinement_.shown(); }
   // Writes the tone-mapped image shown (without the panels) as a PNG (the key F12 or P, into the
   // working directory as nephele_view_NNNN.png); returns the path.
   std::filesystem::path screenshot(const std::filesystem::path& directory = ".");
@@ -113,33 +102,18 @@ class Viewer {
   static const std::vector<KeyBinding>& key_table();
 
  private:
-  bool changed() const;
   // Everything a render reads (with_camera false: all but the camera's position, heading,
   // pitch and field of view).
   std::string render_key(bool with_camera = true) const;
   void refine(int framebuffer_width, int framebuffer_height);
-  void upload(const core::ImageData& display);
-  void draw_image(int framebuffer_width, int framebuffer_height);
-  core::ImageData read_framebuffer(int width, int height) const;
 
   ViewerOptions options_;
   std::unique_ptr<Window> window_;
   std::unique_ptr<ViewSource> source_;
   ViewState state_;
-  std::string shown_key_;        // render_key of the state being refined
-  std::string shown_scene_key_;  // render_key(false) of it
-  // The camera alone changed since the last frame: the quarter-size preview marches one pixel
-  // of each preview_march_stride^2 block and reprojects the rest from the last preview, kept
-  // here with its camera (docs/viewer.md, "Reprojection").
-  bool camera_moving_ = false;
-  long moving_frames_ = 0;
-  render::FrameHistory preview_history_;
-  double shown_exposure_ = 0;                 // exposure of the texture shown
-  std::size_t next_level_ = 0;                // refinement level rendered next
-  int target_width_ = 0, target_height_ = 0;  // framebuffer size being refined
-  render::RenderResult last_render_;
-  core::ImageData shown_;
-  long renders_ = 0, frames_ = 0;
+  Refinement refinement_;
+  double shown_exposure_ = 0;  // exposure of the image shown
+  long frames_ = 0;
   double frame_ms_ = 0;
   bool panels_ = true, capture_ = false, dragging_ = false, shift_ = false;
   // The modeller: its source, and the primitive being moved (as it was when grabbed, and the
@@ -152,8 +126,7 @@ class Viewer {
   double cursor_x_ = 0, cursor_y_ = 0;
   std::string panel_error_;
   core::ImageData last_frame_;
-  unsigned texture_ = 0, program_ = 0, vertex_array_ = 0;
-  int texture_width_ = 0, texture_height_ = 0;
+  std::unique_ptr<ImageDisplay> display_;  // made once the window's context exists
 };
 
 }  // namespace nephele::viewer
