@@ -9,7 +9,8 @@ if ! command -v clang-format >/dev/null 2>&1; then
   exit 1
 fi
 if git rev-parse --is-inside-work-tree >/dev/null 2>&1; then
-  mapfile -t files < <(git ls-files 'src/*.cpp' 'src/*.hpp' 'tests/*.cpp' 'tests/*.hpp')
+  # New files too (not yet added), so that a check before the commit sees what CI will see.
+  mapfile -t files < <(git ls-files --cached --others --exclude-standard 'src/*.cpp' 'src/*.hpp' 'tests/*.cpp' 'tests/*.hpp')
 else
   mapfile -t files < <(find src tests -name '*.cpp' -o -name '*.hpp')
 fi

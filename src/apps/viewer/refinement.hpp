@@ -31,8 +31,8 @@ class Refinement {
   // size changed since the last call; `scene_key` (all of it but the camera) unchanged then
   // means that the camera alone moved. Renders the level that is due, if any, with `source`;
   // returns true when it did (shown() changed).
-  bool step(ViewSource& source, const ViewState& state, const std::string& key, const std::string& scene_key,
-            int width, int height);
+  bool step(ViewSource& source, const ViewState& state, const std::string& key, const std::string& scene_key, int width,
+            int height);
   // True when the full size of `key` has been rendered.
   bool done(const std::string& key) const { return next_level_ >= refinement_levels().size() && key == shown_key_; }
   // The level rendered next (refinement_levels().size() when done).
