@@ -2,10 +2,8 @@
 // the volume's box with the regional marcher's light model (cloud_march.glsl): a shadow ray
 // towards the sun per sample (quadratically spaced), sun_scattering's multiple-scattering
 // octaves, the sky's ambient light from above and the ground's from below, albedo 0.99.
-// docs/model.md, "Preview". The includer defines how the density is read:
-//   MODEL_SOURCE_PARAM   extra trailing parameter naming the volume (empty in GLSL)
-//   MODEL_SOURCE_ARG     the matching argument (empty in GLSL)
-//   MODEL_DENSITY(uvw)   float: the density at uvw in [0, 1]^3, trilinear, clamped to the edge
+// docs/model.md, "Preview". The density volume is the parameter `density` (DensityVolume:
+// sampled at uvw in [0, 1]^3, trilinear, clamped to the edge).
 #ifndef NEPHELE_MODEL_MARCH_GLSL
 #define NEPHELE_MODEL_MARCH_GLSL
 #include "prelude.glsl"
@@ -44,24 +42,24 @@ vec2 ray_box(vec3 o, vec3 d, vec3 lo, vec3 hi) {
 }
 
 // Extinction (1/m) at x.
-float model_extinction(vec3 x, IN(ModelView) v MODEL_SOURCE_PARAM) {
-  return v.extinction * MODEL_DENSITY(x / v.extent);
+float model_extinction(vec3 x, IN(ModelView) v, IN(DensityVolume) density) {
+  return v.extinction * texture(density, x / v.extent).x;
 }
 
 // Optical depth from x towards the sun to the box's edge, samples spaced as light_sample says.
-float model_light_depth(vec3 x, IN(ModelView) v MODEL_SOURCE_PARAM) {
+float model_light_depth(vec3 x, IN(ModelView) v, IN(DensityVolume) density) {
   float length_to_exit = ray_box(x, v.sun, vec3(0.0f), vec3(v.extent)).y;
   float tau = 0.0f;
   for (int i = 0; i < v.light_steps; ++i) {
     vec2 s = light_sample(i, v.light_steps, length_to_exit);  // (distance, step), quadratic
-    tau += model_extinction(x + s.x * v.sun, v MODEL_SOURCE_ARG) * s.y;
+    tau += model_extinction(x + s.x * v.sun, v, density) * s.y;
   }
   return tau;
 }
 
 // Radiance the cloud sends along the unit view direction d (xyz) and the transmittance through
 // it (w). jitter in [0, 1): the samples' offset within their steps.
-vec4 model_march(vec3 d, float jitter, IN(ModelView) v MODEL_SOURCE_PARAM) {
+vec4 model_march(vec3 d, float jitter, IN(ModelView) v, IN(DensityVolume) density) {
   vec2 interval = ray_box(v.origin, d, vec3(0.0f), vec3(v.extent));
   vec3 radiance = vec3(0.0f);
   float transmittance = 1.0f;
@@ -71,9 +69,9 @@ vec4 model_march(vec3 d, float jitter, IN(ModelView) v MODEL_SOURCE_PARAM) {
   float nu = dot(d, v.sun);
   for (int i = 0; i < steps && transmittance > 0.01f; ++i) {
     vec3 x = v.origin + (interval.x + (float(i) + jitter) * ds) * d;
-    float sigma = model_extinction(x, v MODEL_SOURCE_ARG);
+    float sigma = model_extinction(x, v, density);
     if (sigma <= 0.0f) continue;
-    float tau = v.light_steps > 0 ? model_light_depth(x, v MODEL_SOURCE_ARG) : 0.0f;
+    float tau = v.light_steps > 0 ? model_light_depth(x, v, density) : 0.0f;
     // As cloud_march.glsl: the sky's radiance E/pi over the upper half (dimmer towards the base),
     // the ground's over the lower half, isotropic scattering.
     float h = clamp(x.z / v.extent, 0.0f, 1.0f);
@@ -97,10 +95,10 @@ vec3 model_ray(vec2 position, ivec2 size, IN(ModelView) v) {
 }
 
 // The pixel's radiance (RGB) over the background and the cloud's opacity (A).
-vec4 model_pixel(ivec2 pixel, ivec2 size, IN(ModelView) v MODEL_SOURCE_PARAM) {
+vec4 model_pixel(ivec2 pixel, ivec2 size, IN(ModelView) v, IN(DensityVolume) density) {
   vec3 d = model_ray(vec2(pixel) + 0.5f, size, v);
   float jitter = hash_to_unit3(pcg3d(uvec3(uvec2(pixel), 7u))).x;
-  vec4 cloud = model_march(d, jitter, v MODEL_SOURCE_ARG);
+  vec4 cloud = model_march(d, jitter, v, density);
   return vec4(vec3(cloud) + cloud.w * v.background, 1.0f - cloud.w);
 }
 

@@ -5,4 +5,8 @@
 #define IN(T) in T
 #define OUT(T) out T
 #define INOUT(T) inout T
+// The textures a library function reads, named by what they hold and passed as parameters
+// (Bruneton's precomputed_atmospheric_scattering does the same): GLSL samplers here; in C++
+// classes that GLSL's texture functions are overloaded for (src/shader_math/hooks.hpp).
+#define DensityVolume sampler3D
 #endif

@@ -5,9 +5,6 @@ layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
 layout(rgba32f, binding = 0) uniform writeonly image2D radiance_image;
 layout(binding = 1) uniform sampler3D model_density;
 
-#define MODEL_SOURCE_PARAM
-#define MODEL_SOURCE_ARG
-#define MODEL_DENSITY(uvw) texture(model_density, uvw).x
 #include "../lib/model_march.glsl"
 
 uniform ModelView u_view;
@@ -17,5 +14,5 @@ void main() {
   ivec2 pixel = ivec2(gl_GlobalInvocationID.xy) + ivec2(0, u_first_row);
   ivec2 size = imageSize(radiance_image);
   if (pixel.x >= size.x || pixel.y >= size.y) return;
-  imageStore(radiance_image, pixel, model_pixel(pixel, size, u_view));
+  imageStore(radiance_image, pixel, model_pixel(pixel, size, u_view, model_density));
 }

@@ -21,9 +21,6 @@
 #define CONVECTIVE_DENSITY(q, cloud) sources.convective.sample(q, cloud)
 #define LAYER_SHADOW(uv, map) sources.shadows.sample(uv, map)
 #define SKY_SHADOW(uv) sources.sky_shadow.sample(uv, 0)
-#define MODEL_SOURCE_PARAM , IN(DensitySource) density
-#define MODEL_SOURCE_ARG , density
-#define MODEL_DENSITY(uvw) density.sample(uvw)
 // The warp's stepping rules are templates over the velocity source (shaders/lib/warp_step.glsl).
 #define WARP_TEMPLATE template <class Field>
 #define WARP_FIELD_PARAM , IN(Field) field

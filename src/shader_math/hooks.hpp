@@ -48,13 +48,16 @@ struct LayeredSource {
   float sample(vec2 uv, int layer) const;
 };
 
-// A cloud model's density volume in host memory (model_march.glsl's MODEL_DENSITY): one float
+// A cloud model's density volume in host memory (model_march.glsl's DensityVolume): one float
 // per voxel, x fastest, sampled as GLSL's texture() with GL_LINEAR and GL_CLAMP_TO_EDGE.
 struct DensitySource {
   int size = 0;
   const float* values = nullptr;
   float sample(vec3 uvw) const;
 };
+// model_march.glsl's parameter type and its texture() (the density in every channel).
+using DensityVolume = DensitySource;
+inline vec4 texture(IN(DensitySource) density, vec3 uvw) { return vec4(density.sample(uvw)); }
 
 // The convective clouds' density volumes (cloud_march.glsl's CONVECTIVE_DENSITY): `count`
 // volumes of size^3 floats one after the other, each sampled as a DensitySource (the GPU holds

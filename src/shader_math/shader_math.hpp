@@ -30,9 +30,6 @@ namespace nephele::glsl {
 #undef MARCH_TERRAIN_ARG
 #undef CONVECTIVE_DENSITY
 #undef LAYER_SHADOW
-#undef MODEL_SOURCE_PARAM
-#undef MODEL_SOURCE_ARG
-#undef MODEL_DENSITY
 #undef WARP_TEMPLATE
 #undef WARP_FIELD_PARAM
 #undef WARP_FIELD_ARG

@@ -2,9 +2,6 @@
 // GLSL side reads the density volume bound to unit 4 (1000 m box).
 #ifndef __cplusplus
 layout(binding = 4) uniform sampler3D model_density;
-#define MODEL_SOURCE_PARAM
-#define MODEL_SOURCE_ARG
-#define MODEL_DENSITY(uvw) texture(model_density, uvw).x
 #include "../lib/model_march.glsl"
 #endif
 
@@ -29,13 +26,18 @@ ModelView probe_model_view() {
 }
 
 // x[0] = (function, a, b, c); x[1..3] points and directions.
-vec4 probe_model_march(mat4 x MODEL_SOURCE_PARAM) {
+vec4 probe_model_march(mat4 x, IN(DensityVolume) density) {
   int f = int(x[0].x);
   ModelView v = probe_model_view();
   vec3 p = vec3(x[1]);
   if (f == 0) return vec4(ray_box(p, normalize(vec3(x[2])), vec3(0.0f), vec3(1000.0f)), 0.0f, 0.0f);
-  if (f == 1) return vec4(model_extinction(p, v MODEL_SOURCE_ARG), model_light_depth(p, v MODEL_SOURCE_ARG), 0.0f, 0.0f);
-  if (f == 2) return model_march(normalize(vec3(x[2])), x[0].y, v MODEL_SOURCE_ARG);
-  if (f == 3) return model_pixel(ivec2(int(x[0].y), int(x[0].z)), ivec2(16, 12), v MODEL_SOURCE_ARG);
+  if (f == 1) return vec4(model_extinction(p, v, density), model_light_depth(p, v, density), 0.0f, 0.0f);
+  if (f == 2) return model_march(normalize(vec3(x[2])), x[0].y, v, density);
+  if (f == 3) return model_pixel(ivec2(int(x[0].y), int(x[0].z)), ivec2(16, 12), v, density);
   return vec4(model_ray(vec2(x[0].y, x[0].z), ivec2(16, 12), v), 0.0f);
 }
+
+#ifndef __cplusplus
+// The GPU probe passes x alone: the volume bound to unit 4.
+vec4 probe_model_march(mat4 x) { return probe_model_march(x, model_density); }
+#endif
