@@ -11,8 +11,7 @@
 //                         mean behind G3, A the W3 field (render/noise_volume.comp)
 //   WEATHER_COVERAGE(uv, channel)  float: the weather field's channel at uv in [0, 1]^2,
 //                         bilinear, clamped to the edge
-//   MARCH_TERRAIN_ARG     the ground's height texture as terrain.glsl takes it (empty in GLSL;
-//                         the includer also defines terrain.glsl's hooks)
+//   MARCH_TERRAIN_ARG     the ground's TerrainTexture as terrain.glsl takes it, after a comma
 //   CONVECTIVE_DENSITY(q, c)  float: the density of convective cloud c's volume at q in [0, 1]^3,
 //                         trilinear, clamped to the edge (docs/convection.md)
 //   LAYER_SHADOW(uv, map)  float: shadow map `map` (higher_layers_depth below) at uv in [0, 1]^2,

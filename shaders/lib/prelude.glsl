@@ -9,4 +9,5 @@
 // (Bruneton's precomputed_atmospheric_scattering does the same): GLSL samplers here; in C++
 // classes that GLSL's texture functions are overloaded for (src/shader_math/hooks.hpp).
 #define DensityVolume sampler3D
+#define TerrainTexture sampler2D  // the ground's altitude in red, its ceiling in green
 #endif

@@ -2,15 +2,12 @@
 // intersection, normal and albedo (docs/terrain.md). Points q are relative to the centre of the
 // sphere that osculates the WGS84 ellipsoid at the viewpoint, in the camera's east-north-up
 // axes; the height field's horizontal coordinate of q is earth_radius * normalize(q).xy, metres
-// on the tangent plane at the camera. The including file defines how the heights are read:
-//   TERRAIN_SOURCE_PARAM  extra trailing parameter naming the height texture (empty in GLSL)
-//   TERRAIN_SOURCE_ARG    the matching argument (empty in GLSL)
-//   TERRAIN_HEIGHT(uv)    float: altitude (m above the sphere) at uv in [0, 1]^2, bilinear,
-//                         clamped to the edge; u east, v north
-//   TERRAIN_CEILING(uv)   float: the ceiling there, sampled the same way: at each texel the
-//                         highest altitude within a window of texels around it
-//                         (regional::terrain_ceilings), so that, bilinear, it bounds the ground
-//                         within TerrainParams::reach of uv (docs/terrain.md)
+// on the tangent plane at the camera. The heights are the parameter `terrain` (TerrainTexture),
+// sampled at uv in [0, 1]^2, bilinear, clamped to the edge; u east, v north:
+//   red    altitude (m above the sphere)
+//   green  the ceiling: at each texel the highest altitude within a window of texels around it
+//          (regional::terrain_ceilings), so that, bilinear, it bounds the ground within
+//          TerrainParams::reach of uv (docs/terrain.md)
 #ifndef NEPHELE_TERRAIN_GLSL
 #define NEPHELE_TERRAIN_GLSL
 #include "prelude.glsl"
@@ -27,21 +24,21 @@ vec2 terrain_plane(vec3 q, float earth_radius) { return earth_radius * vec2(norm
 
 // Altitude of the ground above the sphere at a horizontal coordinate: the height field within
 // its square, the sphere itself (sea level) outside it and without terrain.
-float terrain_altitude(vec2 xy, IN(TerrainParams) t TERRAIN_SOURCE_PARAM) {
+float terrain_altitude(vec2 xy, IN(TerrainParams) t, IN(TerrainTexture) terrain) {
   if (t.enabled == 0 || abs(xy.x) > t.extent || abs(xy.y) > t.extent) return 0.0f;
-  return TERRAIN_HEIGHT(0.5f + 0.5f * xy / t.extent);
+  return texture(terrain, 0.5f + 0.5f * xy / t.extent).x;
 }
 
 // The highest the ground gets within t.reach (horizontally) of a horizontal coordinate: the
 // ceiling texture, and sea level outside the square (the clamped edge is no lower than what
 // the window saw there, since clamping moves a point towards the square).
-float terrain_ceiling(vec2 xy, IN(TerrainParams) t TERRAIN_SOURCE_PARAM) {
-  return max(TERRAIN_CEILING(0.5f + 0.5f * xy / t.extent), 0.0f);
+float terrain_ceiling(vec2 xy, IN(TerrainParams) t, IN(TerrainTexture) terrain) {
+  return max(texture(terrain, 0.5f + 0.5f * xy / t.extent).y, 0.0f);
 }
 
 // Height of a point above the ground below it (negative underground).
-float terrain_clearance(vec3 q, float earth_radius, IN(TerrainParams) t TERRAIN_SOURCE_PARAM) {
-  return length(q) - earth_radius - terrain_altitude(terrain_plane(q, earth_radius), t TERRAIN_SOURCE_ARG);
+float terrain_clearance(vec3 q, float earth_radius, IN(TerrainParams) t, IN(TerrainTexture) terrain) {
+  return length(q) - earth_radius - terrain_altitude(terrain_plane(q, earth_radius), t, terrain);
 }
 
 // Distance along the unit direction d from o (relative to the centre) to the first ground
@@ -54,7 +51,7 @@ float terrain_clearance(vec3 q, float earth_radius, IN(TerrainParams) t TERRAIN_
 // L times its present rate of fall; no ground within reach is skipped. A ray still above the
 // ground after the last step has grazed it all along and counts as meeting it there. loops:
 // the iterations it took.
-float terrain_hit(vec3 o, vec3 d, float earth_radius, float limit, IN(TerrainParams) t, OUT(int) loops TERRAIN_SOURCE_PARAM) {
+float terrain_hit(vec3 o, vec3 d, float earth_radius, float limit, IN(TerrainParams) t, OUT(int) loops, IN(TerrainTexture) terrain) {
   loops = 0;
   vec2 sphere = ray_sphere(o, d, vec3(0.0f), earth_radius);
   float ground = sphere.x < sphere.y && sphere.x > 0.0f && sphere.x <= limit ? sphere.x : -1.0f;
@@ -66,7 +63,7 @@ float terrain_hit(vec3 o, vec3 d, float earth_radius, float limit, IN(TerrainPar
   float previous = s;
   for (int i = 0; i < TERRAIN_MARCH_STEPS && s <= end; ++i) {
     loops += 1;
-    float h = terrain_clearance(o + s * d, earth_radius, t TERRAIN_SOURCE_ARG);
+    float h = terrain_clearance(o + s * d, earth_radius, t, terrain);
     if (h <= 0.0f) {
       // The surface lies between the previous sample (above) and this one (below).
       float a = previous;
@@ -74,7 +71,7 @@ float terrain_hit(vec3 o, vec3 d, float earth_radius, float limit, IN(TerrainPar
       for (int k = 0; k < TERRAIN_BISECTIONS; ++k) {
         loops += 1;
         float c = 0.5f * (a + b);
-        if (terrain_clearance(o + c * d, earth_radius, t TERRAIN_SOURCE_ARG) > 0.0f) a = c; else b = c;
+        if (terrain_clearance(o + c * d, earth_radius, t, terrain) > 0.0f) a = c; else b = c;
       }
       return b;
     }
@@ -84,7 +81,7 @@ float terrain_hit(vec3 o, vec3 d, float earth_radius, float limit, IN(TerrainPar
       vec3 q = o + s * d;
       float r = length(q);
       // 2 m below the ceiling for the float rounding of the altitude at the Earth's radius.
-      float room = r - earth_radius - terrain_ceiling(terrain_plane(q, earth_radius), t TERRAIN_SOURCE_ARG) - 2.0f;
+      float room = r - earth_radius - terrain_ceiling(terrain_plane(q, earth_radius), t, terrain) - 2.0f;
       float fall = max(-dot(d, q) / r, 1.0e-6f);
       if (room > 0.0f) step = max(step, min(t.reach, room / fall));
     }
@@ -97,23 +94,23 @@ float terrain_hit(vec3 o, vec3 d, float earth_radius, float limit, IN(TerrainPar
 // direction `sun`, 0 where the terrain hides it: a march towards the sun from 5 m off the
 // surface (four times the altitudes' float rounding at the Earth's radius, so that the point
 // does not find itself). loops: the iterations it took.
-float terrain_sunlit(vec3 q, vec3 normal, vec3 sun, float earth_radius, IN(TerrainParams) t, OUT(int) loops TERRAIN_SOURCE_PARAM) {
+float terrain_sunlit(vec3 q, vec3 normal, vec3 sun, float earth_radius, IN(TerrainParams) t, OUT(int) loops, IN(TerrainTexture) terrain) {
   loops = 0;
   if (t.enabled == 0) return 1.0f;
-  float hit = terrain_hit(q + 5.0f * normal, sun, earth_radius, 1.0e7f, t, loops TERRAIN_SOURCE_ARG);
+  float hit = terrain_hit(q + 5.0f * normal, sun, earth_radius, 1.0e7f, t, loops, terrain);
   return hit > 0.0f ? 0.0f : 1.0f;
 }
 
 // Outward unit normal of the ground at q (a point on it): the sphere's radial direction tilted
 // by the height field's gradient (central differences one texel apart).
-vec3 terrain_normal(vec3 q, float earth_radius, IN(TerrainParams) t TERRAIN_SOURCE_PARAM) {
+vec3 terrain_normal(vec3 q, float earth_radius, IN(TerrainParams) t, IN(TerrainTexture) terrain) {
   vec3 up = normalize(q);
   if (t.enabled == 0) return up;
   vec2 xy = terrain_plane(q, earth_radius);
   vec2 dx = vec2(t.texel, 0.0f);
   vec2 dy = vec2(0.0f, t.texel);
-  float gx = (terrain_altitude(xy + dx, t TERRAIN_SOURCE_ARG) - terrain_altitude(xy - dx, t TERRAIN_SOURCE_ARG)) / (2.0f * t.texel);
-  float gy = (terrain_altitude(xy + dy, t TERRAIN_SOURCE_ARG) - terrain_altitude(xy - dy, t TERRAIN_SOURCE_ARG)) / (2.0f * t.texel);
+  float gx = (terrain_altitude(xy + dx, t, terrain) - terrain_altitude(xy - dx, t, terrain)) / (2.0f * t.texel);
+  float gy = (terrain_altitude(xy + dy, t, terrain) - terrain_altitude(xy - dy, t, terrain)) / (2.0f * t.texel);
   // The grid's east and north axes made tangent at q.
   vec3 east = normalize(vec3(1.0f, 0.0f, 0.0f) - up.x * up);
   vec3 north = normalize(vec3(0.0f, 1.0f, 0.0f) - up.y * up);

@@ -15,11 +15,7 @@ layout(binding = 7) uniform sampler2DArray sky_shadow;
 #define MARCH_SOURCES_ARG
 #define NOISE_LOD(x, lod) textureLod(noise_volume, x, lod)
 #define WEATHER_COVERAGE(uv, channel) texture(weather_field, vec3(uv, float(channel))).x
-#define TERRAIN_SOURCE_PARAM
-#define TERRAIN_SOURCE_ARG
-#define TERRAIN_HEIGHT(uv) texture(terrain_heights, uv).x
-#define TERRAIN_CEILING(uv) texture(terrain_heights, uv).y
-#define MARCH_TERRAIN_ARG
+#define MARCH_TERRAIN_ARG , terrain_heights
 #define CONVECTIVE_DENSITY(q, cloud) texture(convective_volumes, convective_texel(q, cloud)).x
 #define LAYER_SHADOW(uv, map) texture(layer_shadows, vec3(uv, float(map))).x
 #define SKY_SHADOW(uv) texture(sky_shadow, vec3(uv, 0.0f)).x

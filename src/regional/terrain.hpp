@@ -42,7 +42,7 @@ struct TerrainGrid {
   float top_m = 0;               // highest altitude
   std::string source;            // raster and hills, for messages and the sidecar
   // terrain_ceilings(altitudes, size, ceiling_window): what lets the march step over ground it
-  // is well above (terrain.glsl's TERRAIN_CEILING).
+  // is well above (the green channel of terrain.glsl's TerrainTexture).
   std::vector<float> ceilings;
   int ceiling_window = 0;
   double texel_m() const { return 2 * extent_m / size; }

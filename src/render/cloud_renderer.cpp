@@ -361,7 +361,7 @@ RenderResult render_clouds(const Camera& camera, const std::vector<regional::Clo
   if (settings.terrain) {
     const regional::TerrainGrid& t = *settings.terrain;
     terrain = make_texture(GL_TEXTURE_2D);
-    // Heights in red, ceilings in green (terrain.glsl's TERRAIN_HEIGHT and TERRAIN_CEILING).
+    // Heights in red, ceilings in green (terrain.glsl's TerrainTexture).
     std::vector<float> texels(2 * t.altitudes.size());
     for (size_t k = 0; k < t.altitudes.size(); ++k) {
       texels[2 * k] = t.altitudes[k];

@@ -13,10 +13,6 @@
 #define MARCH_SOURCES_ARG , sources
 #define NOISE_LOD(x, lod) sources.noise.sample_lod(x, lod)
 #define WEATHER_COVERAGE(uv, channel) sources.weather.sample(uv, channel)
-#define TERRAIN_SOURCE_PARAM , IN(TerrainSource) terrain
-#define TERRAIN_SOURCE_ARG , terrain
-#define TERRAIN_HEIGHT(uv) terrain.heights.sample(uv, 0)
-#define TERRAIN_CEILING(uv) terrain.ceilings.sample(uv, 0)
 #define MARCH_TERRAIN_ARG , sources.terrain
 #define CONVECTIVE_DENSITY(q, cloud) sources.convective.sample(q, cloud)
 #define LAYER_SHADOW(uv, map) sources.shadows.sample(uv, map)

@@ -69,13 +69,17 @@ struct ConvectiveSource {
   float sample(vec3 uvw, int cloud) const;
 };
 
-// The ground's two textures in host memory (terrain.glsl's TERRAIN_HEIGHT and TERRAIN_CEILING,
-// the red and green channels of one texture on the GPU): one-layer sources of the same size,
+// The ground's two textures in host memory (terrain.glsl's TerrainTexture: the red and green
+// channels of one texture on the GPU): one-layer sources of the same size,
 // regional::terrain_source of a TerrainGrid.
 struct TerrainSource {
   LayeredSource heights;
   LayeredSource ceilings;
 };
+using TerrainTexture = TerrainSource;
+inline vec4 texture(IN(TerrainSource) terrain, vec2 uv) {
+  return vec4(terrain.heights.sample(uv, 0), terrain.ceilings.sample(uv, 0), 0.0f, 0.0f);
+}
 
 // The textures of cloud_march.glsl: the noise volume, the weather field, the ground's height
 // field and ceiling, the convective clouds' volumes and the layers' shadow maps.

@@ -2,10 +2,6 @@
 // side reads the height field bound to texture unit 4.
 #ifndef __cplusplus
 layout(binding = 4) uniform sampler2D terrain_heights;
-#define TERRAIN_SOURCE_PARAM
-#define TERRAIN_SOURCE_ARG
-#define TERRAIN_HEIGHT(uv) texture(terrain_heights, uv).x
-#define TERRAIN_CEILING(uv) texture(terrain_heights, uv).y
 #include "../lib/terrain.glsl"
 #endif
 
@@ -22,7 +18,7 @@ TerrainParams probe_terrain_params() {
 
 // x[0] = (function, a, b, c), x[1] = a point (relative to the sphere's centre), x[2] = a
 // direction, x[3] = further numbers.
-vec4 probe_terrain(mat4 x TERRAIN_SOURCE_PARAM) {
+vec4 probe_terrain(mat4 x, IN(TerrainTexture) terrain) {
   int f = int(x[0].x);
   float earth_radius = 6367000.0f;
   TerrainParams t = probe_terrain_params();
@@ -31,21 +27,26 @@ vec4 probe_terrain(mat4 x TERRAIN_SOURCE_PARAM) {
   vec3 d = vec3(x[2]);
   if (f == 0) return vec4(terrain_plane(q, earth_radius), 0.0f, 0.0f);
   if (f == 1) {
-    return vec4(terrain_altitude(vec2(x[3]), t TERRAIN_SOURCE_ARG), terrain_clearance(q, earth_radius, t TERRAIN_SOURCE_ARG),
-                terrain_ceiling(vec2(x[3]), t TERRAIN_SOURCE_ARG), 0.0f);
+    return vec4(terrain_altitude(vec2(x[3]), t, terrain), terrain_clearance(q, earth_radius, t, terrain),
+                terrain_ceiling(vec2(x[3]), t, terrain), 0.0f);
   }
   if (f == 2) {
     int loops = 0;
-    float s = terrain_hit(q, d, earth_radius, x[0].y, t, loops TERRAIN_SOURCE_ARG);
+    float s = terrain_hit(q, d, earth_radius, x[0].y, t, loops, terrain);
     return vec4(s, float(loops), 0.0f, 0.0f);
   }
-  if (f == 3) return vec4(terrain_normal(q, earth_radius, t TERRAIN_SOURCE_ARG), 0.0f);
+  if (f == 3) return vec4(terrain_normal(q, earth_radius, t, terrain), 0.0f);
   if (f == 5) {
     int loops = 0;
-    vec3 normal = terrain_normal(q, earth_radius, t TERRAIN_SOURCE_ARG);
+    vec3 normal = terrain_normal(q, earth_radius, t, terrain);
     // Called before the vector is built: C++ leaves the order of a constructor's arguments open.
-    float sunlit = terrain_sunlit(q, normal, d, earth_radius, t, loops TERRAIN_SOURCE_ARG);
+    float sunlit = terrain_sunlit(q, normal, d, earth_radius, t, loops, terrain);
     return vec4(sunlit, float(loops), 0.0f, 0.0f);
   }
   return vec4(terrain_albedo(x[0].y, d, vec3(0.0f, 0.0f, 1.0f)), 0.0f);
 }
+
+#ifndef __cplusplus
+// The GPU probe passes x alone: the height field bound to unit 4.
+vec4 probe_terrain(mat4 x) { return probe_terrain(x, terrain_heights); }
+#endif
