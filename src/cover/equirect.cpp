@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "gpu/shader_bindings.hpp"
 #include "gpu/compute_program.hpp"
 
 namespace nephele::cover {
@@ -42,13 +43,13 @@ std::vector<float> equirect_from_cube(const gpu::Texture& cube, int width, int h
   GLuint buffer = 0;
   glCreateBuffers(1, &buffer);
   glNamedBufferStorage(buffer, static_cast<GLsizeiptr>(rows.size() * sizeof(glm::vec2)), rows.data(), 0);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, buffer);
-  cube.bind_image(0, GL_READ_ONLY);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, shader_bindings::cover_equirect::row_directions, buffer);
+  cube.bind_image(shader_bindings::cover_equirect::source_cube, GL_READ_ONLY);
   program.set("u_width", width);
   std::vector<float> pixels(static_cast<size_t>(width) * static_cast<size_t>(height));
   for (const PixelTile& tile : equirect_tiles(width, height, max_tile)) {
     gpu::Texture target = gpu::Texture::plane(tile.width, tile.height, GL_R32F);
-    target.bind_image(1, GL_WRITE_ONLY);
+    target.bind_image(shader_bindings::cover_equirect::equirect, GL_WRITE_ONLY);
     program.set("u_origin_x", tile.x);
     program.set("u_origin_y", tile.y);
     if (device) device->begin();

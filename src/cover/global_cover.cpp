@@ -3,6 +3,7 @@
 
 #include <algorithm>
 
+#include "gpu/shader_bindings.hpp"
 #include "gpu/pass_timer.hpp"
 #include "shader_math/uniforms.hpp"
 
@@ -49,7 +50,7 @@ void GlobalCover::run() {
 
 void GlobalCover::run_identity() {
   timed("identity", [&] {
-    identity_field_.bind_image(0, GL_WRITE_ONLY);
+    identity_field_.bind_image(shader_bindings::cover_identity::identity_field, GL_WRITE_ONLY);
     identity_program_.dispatch_covering(parameters_.size, parameters_.size, 6);
     gpu::image_barrier();
   });
@@ -73,11 +74,11 @@ void GlobalCover::run_spline() {
     glsl::set_uniform(*spline_samples_program_, "u_curl", curl_params(parameters_));
     spline_samples_program_->set("u_noise_offset", potential_offset(parameters_));
     spline_samples_program_->set("u_cells", cells);
-    samples.bind_image(0, GL_WRITE_ONLY);
+    samples.bind_image(shader_bindings::cover_curl_spline::samples, GL_WRITE_ONLY);
     spline_samples_program_->dispatch_covering(samples_extent, samples_extent, 6);
     gpu::image_barrier();
-    samples.bind_image(0, GL_READ_ONLY);
-    spline_coefficients_.bind_image(1, GL_WRITE_ONLY);
+    samples.bind_image(shader_bindings::cover_curl_spline::samples, GL_READ_ONLY);
+    spline_coefficients_.bind_image(shader_bindings::cover_curl_spline::coefficients, GL_WRITE_ONLY);
     spline_prefilter_program_->dispatch_covering(cells + 2 * margin, cells + 2 * margin, 6);
     gpu::image_barrier();
   });
@@ -88,13 +89,13 @@ void GlobalCover::run_curl() {
   if (spline && !spline_coefficients_.id()) run_spline();
   timed("curl", [&] {
     if (spline) {
-      spline_coefficients_.bind_image(2, GL_READ_ONLY);
+      spline_coefficients_.bind_image(shader_bindings::cover_curl::curl_spline, GL_READ_ONLY);
     } else {
       glsl::set_uniform(curl_program_, "u_curl", curl_params(parameters_));
       curl_program_.set("u_noise_offset", potential_offset(parameters_));
     }
-    identity_field_.bind_image(0, GL_READ_ONLY);
-    curl_field_.bind_image(1, GL_WRITE_ONLY);
+    identity_field_.bind_image(shader_bindings::cover_curl::identity_field, GL_READ_ONLY);
+    curl_field_.bind_image(shader_bindings::cover_curl::curl_field, GL_WRITE_ONLY);
     curl_program_.dispatch_covering(parameters_.size, parameters_.size, 6);
     gpu::image_barrier();
   });
@@ -122,10 +123,10 @@ void GlobalCover::dispatch_warp(const gpu::Texture& starts, const gpu::Texture& 
     glsl::set_uniform(warp_program_, "u_curl", curl_params(p));
     warp_program_.set("u_noise_offset", potential_offset(p));
   }
-  curl_field_.bind_image(1, GL_READ_ONLY);
+  curl_field_.bind_image(shader_bindings::cover_warp::curl_field, GL_READ_ONLY);
   if (p.curl_mode == CurlMode::spline) {
     if (!spline_coefficients_.id()) run_spline();
-    spline_coefficients_.bind_image(4, GL_READ_ONLY);
+    spline_coefficients_.bind_image(shader_bindings::cover_warp::curl_spline, GL_READ_ONLY);
   }
   // Long integrations run over several dispatches (cover::shader_loop_budget): each one
   // continues from the points of the last, alternating between `warped` and a scratch map.
@@ -138,8 +139,8 @@ void GlobalCover::dispatch_warp(const gpu::Texture& starts, const gpu::Texture& 
     return scratch;
   };
   auto dispatch = [&](const gpu::Texture& from, const gpu::Texture& to) {
-    from.bind_image(0, GL_READ_ONLY);
-    to.bind_image(2, GL_WRITE_ONLY);
+    from.bind_image(shader_bindings::cover_warp::identity_field, GL_READ_ONLY);
+    to.bind_image(shader_bindings::cover_warp::warp_field, GL_WRITE_ONLY);
     warp_program_.dispatch_covering(size, size, 6);
     gpu::image_barrier();
   };
@@ -163,11 +164,11 @@ void GlobalCover::dispatch_warp(const gpu::Texture& starts, const gpu::Texture& 
   // Adaptive: each texel keeps its state between dispatches; the rounds end when no texel is
   // unfinished below its sub-step limit (a counter the shader increments).
   const gpu::Texture state = gpu::Texture::cube(size, GL_RGBA32F);
-  state.bind_image(3, GL_READ_WRITE);
+  state.bind_image(shader_bindings::cover_warp::adaptive_state, GL_READ_WRITE);
   GLuint counter = 0;
   glCreateBuffers(1, &counter);
   glNamedBufferStorage(counter, sizeof(GLuint), nullptr, GL_DYNAMIC_STORAGE_BIT | GL_MAP_READ_BIT);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, counter);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, shader_bindings::cover_warp::unfinished, counter);
   warp_program_.set("u_chunk", per_dispatch);
   const gpu::Texture* from = &starts;
   bool in_warped = true;
@@ -228,10 +229,11 @@ void GlobalCover::run_density() {
     density_program_.set("u_cyclone_cloudiness", parameters_.cyclone_cloudiness);
     density_program_.set("u_surface_weight", parameters_.surface ? parameters_.surface_weight : 0.0f);
     if (!surface_bias_.id()) upload_surface_bias();
-    warp_field_.bind_image(0, GL_READ_ONLY);
-    density_field_.bind_image(1, GL_WRITE_ONLY);
-    curl_field_.bind_image(2, GL_READ_ONLY);
-    glBindTextureUnit(3, surface_bias_.id());
+    namespace density = shader_bindings::cover_cover_density;
+    warp_field_.bind_image(density::warp_field, GL_READ_ONLY);
+    density_field_.bind_image(density::density_field, GL_WRITE_ONLY);
+    curl_field_.bind_image(density::curl_field, GL_READ_ONLY);
+    glBindTextureUnit(density::surface_bias, surface_bias_.id());
     // The pass also reduces the density range for the calibration.
     if (!gpu_calibration_) gpu_calibration_ = std::make_unique<GpuCalibration>(parameters_.size);
     gpu_calibration_->bind_density_range();
@@ -266,8 +268,8 @@ CoverageCalibration GlobalCover::run_coverage() {
       gpu_calibration_->bind_band_thresholds();
       gpu_calibration_->bind_band_cloudy();
     }
-    density_field_.bind_image(0, GL_READ_ONLY);
-    cover_field_.bind_image(1, GL_WRITE_ONLY);
+    density_field_.bind_image(shader_bindings::cover_cover_remap::density_field, GL_READ_ONLY);
+    cover_field_.bind_image(shader_bindings::cover_cover_remap::cover_field, GL_WRITE_ONLY);
     dispatch_strips(remap_program_);
     gpu::image_barrier();
     // The profile: what the smooth threshold achieves (it blends neighbouring bands, so each

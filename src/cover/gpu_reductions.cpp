@@ -8,6 +8,7 @@
 #include <tuple>
 
 #include "cover/latitude_profile.hpp"
+#include "gpu/shader_bindings.hpp"
 
 namespace nephele::cover {
 namespace {
@@ -116,7 +117,9 @@ GpuTexelWeights::GpuTexelWeights(int size) : units_(texel_weight_units(size)) {
 
 GpuTexelWeights::~GpuTexelWeights() { glDeleteBuffers(1, &buffer_); }
 
-void GpuTexelWeights::bind() const { glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 5, buffer_); }
+void GpuTexelWeights::bind() const {
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, shader_bindings::cover_texel_weights::texel_weights, buffer_);
+}
 
 GpuCalibration::GpuCalibration(int size) : size_(size), weights_(size) {
   glCreateBuffers(1, &band_thresholds_);
@@ -139,16 +142,16 @@ GpuCalibration::~GpuCalibration() {
 void GpuCalibration::bind_density_range() const {
   const GLuint empty[2] = {0xFFFFFFFFu, 0u};
   glNamedBufferSubData(density_range_, 0, sizeof empty, empty);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 8, density_range_);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, shader_bindings::cover_cover_density::density_range, density_range_);
 }
 
 std::pair<float, float> GpuCalibration::density_range(const gpu::Texture& density, bool from_density_pass) const {
   if (!from_density_pass) {
     // Stage 0 writes the same two words as the density pass.
     bind_density_range();
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, density_range_);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, shader_bindings::cover_coverage_histogram::scalars, density_range_);
     weights_.bind();
-    density.bind_image(0, GL_READ_ONLY);
+    density.bind_image(shader_bindings::cover_coverage_histogram::density_field, GL_READ_ONLY);
     const int strip = reduction_strip(size_);
     program_.set("u_strip", strip);
     program_.set("u_stage", 0);
@@ -163,7 +166,7 @@ std::pair<float, float> GpuCalibration::density_range(const gpu::Texture& densit
 void GpuCalibration::bind_band_cloudy() const {
   const GLuint zero = 0;
   glClearNamedBufferData(band_cloudy_, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 9, band_cloudy_);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, shader_bindings::cover_cover_remap::band_cloudy, band_cloudy_);
   weights_.bind();
 }
 
@@ -175,17 +178,19 @@ void GpuCalibration::read_band_cloudy(BandCalibration& c) const {
   set_achieved(sums64(words), c);
 }
 
-void GpuCalibration::bind_band_thresholds() const { glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 6, band_thresholds_); }
+void GpuCalibration::bind_band_thresholds() const {
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, shader_bindings::cover_band_thresholds::band_thresholds, band_thresholds_);
+}
 
 std::vector<std::uint64_t> GpuCalibration::band_histogram(const gpu::Texture& density, int stage, int bands,
                                                           float density_min, float scale) const {
   const size_t slots = stage == 8 ? bands : static_cast<size_t>(bands) * band_bins;
   WordBuffer histogram(2 * slots);
-  histogram.bind(2);
+  histogram.bind(shader_bindings::cover_coverage_histogram::histogram);
   weights_.bind();
   bind_band_thresholds();
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 7, band_crossing_);
-  density.bind_image(0, GL_READ_ONLY);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, shader_bindings::cover_coverage_histogram::band_crossing, band_crossing_);
+  density.bind_image(shader_bindings::cover_coverage_histogram::density_field, GL_READ_ONLY);
   const int strip = reduction_strip(size_);
   program_.set("u_strip", strip);
   program_.set("u_stage", stage);
@@ -253,11 +258,11 @@ CoverageCalibration GpuCalibration::run(const gpu::Texture& density, double targ
   CoverageCalibration result;
   std::tie(result.density_min, result.density_max) = density_range(density, range_from_density_pass);
   WordBuffer scalars(8), histogram(2 * bins), members(2 * static_cast<size_t>(calibration_member_capacity));
-  scalars.bind(1);
-  histogram.bind(2);
-  members.bind(3);
+  scalars.bind(shader_bindings::cover_coverage_histogram::scalars);
+  histogram.bind(shader_bindings::cover_coverage_histogram::histogram);
+  members.bind(shader_bindings::cover_coverage_histogram::members);
   weights_.bind();
-  density.bind_image(0, GL_READ_ONLY);
+  density.bind_image(shader_bindings::cover_coverage_histogram::density_field, GL_READ_ONLY);
   const int strip = reduction_strip(size_);
   program_.set("u_strip", strip);
   auto dispatch = [&](int stage) {
@@ -366,12 +371,13 @@ WarpDiagnostics GpuDiagnosis::run(const gpu::Texture& curl, const gpu::Texture& 
   const int partial_count = strips * size_ * 6;
   // Stage 1 writes its 64 intermediate records after the partials.
   WordBuffer counters(8), partials(2 * static_cast<size_t>(figures) * (partial_count + group)), totals(2 * figures);
-  counters.bind(1);
-  partials.bind(2);
-  totals.bind(3);
+  namespace diagnostics = shader_bindings::cover_warp_diagnostics;
+  counters.bind(diagnostics::counters);
+  partials.bind(diagnostics::partials);
+  totals.bind(diagnostics::totals);
   weights_.bind();
-  curl.bind_image(0, GL_READ_ONLY);
-  warp.bind_image(1, GL_READ_ONLY);
+  curl.bind_image(diagnostics::curl_field, GL_READ_ONLY);
+  warp.bind_image(diagnostics::warp_field, GL_READ_ONLY);
   const double limit = stability_limit(integrator);
   glProgramUniform1d(program_.id(), glGetUniformLocation(program_.id(), "u_step"), step);
   glProgramUniform1d(program_.id(), glGetUniformLocation(program_.id(), "u_limit"), limit);

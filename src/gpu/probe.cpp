@@ -8,11 +8,11 @@ std::string probe_source(const std::string& in_type, const std::string& out_type
                          const std::string& helpers, const std::string& expression) {
   return "#version 450\n"
          "layout(local_size_x = 64) in;\n"
-         "layout(std430, binding = 0) readonly buffer Inputs { " +
-         in_type +
+         "layout(std430, binding = " +
+         std::to_string(probe_inputs_binding) + ") readonly buffer Inputs { " + in_type +
          " inputs[]; };\n"
-         "layout(std430, binding = 1) writeonly buffer Outputs { " +
-         out_type +
+         "layout(std430, binding = " +
+         std::to_string(probe_outputs_binding) + ") writeonly buffer Outputs { " + out_type +
          " outputs[]; };\n"
          "uniform uint u_count;\n" +
          includes + "\n" + helpers + "\n" +
@@ -35,13 +35,13 @@ void run_probe(const std::string& source, const void* inputs, size_t input_bytes
   glCreateBuffers(2, buffers);
   glNamedBufferStorage(buffers[0], static_cast<GLsizeiptr>(input_bytes), inputs, 0);
   glNamedBufferStorage(buffers[1], static_cast<GLsizeiptr>(output_bytes), nullptr, GL_MAP_READ_BIT);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, buffers[0]);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, buffers[1]);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, probe_inputs_binding, buffers[0]);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, probe_outputs_binding, buffers[1]);
   GLuint data_buffer = 0;
   if (!data.empty()) {
     glCreateBuffers(1, &data_buffer);
     glNamedBufferStorage(data_buffer, static_cast<GLsizeiptr>(data.size() * sizeof(glm::vec4)), data.data(), 0);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, data_buffer);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, probe_data_binding, data_buffer);
   }
   program.set("u_count", static_cast<unsigned>(count));
   program.dispatch_covering(static_cast<int>(count), 1, 1);

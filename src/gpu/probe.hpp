@@ -33,8 +33,12 @@ struct GlslTypeName<glm::mat4> {
 std::string probe_source(const std::string& in_type, const std::string& out_type, const std::string& includes,
                          const std::string& helpers, const std::string& expression);
 
+// The probe's buffers: its inputs, its outputs and the data a probe file may read (declared in
+// the probe's GLSL at probe_data_binding).
+constexpr int probe_inputs_binding = 0, probe_outputs_binding = 1, probe_data_binding = 2;
+
 // Compiles `source` and runs it over `count` inputs; needs a current OpenGL 4.5 context.
-// `data`, when not empty, is bound read-only at binding 2 (a probe's cube map, say).
+// `data`, when not empty, is bound read-only at probe_data_binding (a probe's cube map, say).
 void run_probe(const std::string& source, const void* inputs, std::size_t input_bytes, void* outputs,
                std::size_t output_bytes, std::size_t count, const std::vector<glm::vec4>& data = {});
 

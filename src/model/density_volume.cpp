@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "gpu/pass_timer.hpp"
+#include "gpu/shader_bindings.hpp"
 
 namespace nephele::model {
 namespace {
@@ -135,10 +136,11 @@ void DensityVolume::run(const std::vector<int>& bricks) {
     glProgramUniform4fv(program_->id(), glGetUniformLocation(program_->id(), "u_noise_shape"), 1, &noise.shape.x);
     glProgramUniform4fv(program_->id(), glGetUniformLocation(program_->id(), "u_noise_extra"), 1, &noise.extra.x);
   }
-  glBindImageTexture(0, texture_, 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_R32F);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, primitives_);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, jobs_);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, indices_);
+  namespace density = shader_bindings::model_density;
+  glBindImageTexture(density::u_density, texture_, 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_R32F);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, density::primitives, primitives_);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, density::jobs, jobs_);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, density::indices, indices_);
   const int count = int(jobs.size());
   const int x = std::min(count, kGroupsPerRow);
   glDispatchCompute(GLuint(x), GLuint((count + x - 1) / x), 1);

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "gpu/pass_timer.hpp"
+#include "gpu/shader_bindings.hpp"
 #include "shader_math/uniforms.hpp"
 
 namespace nephele::noise {
@@ -120,8 +121,11 @@ void TextureGenerator::generate(const TextureSpec& spec, Volume& out) {
       gpu::PassTimer timer;
       const GLuint header[4] = {0u, capacity, 0u, 0u};
       glNamedBufferSubData(patches, 0, sizeof header, header);
-      glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, values);
-      glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, patches);
+      // noise_patch.comp binds the same two buffers at the same points.
+      static_assert(shader_bindings::noise_noise_patch::values == shader_bindings::noise_noise_rows::values &&
+                    shader_bindings::noise_noise_patch::patches == shader_bindings::noise_noise_rows::patches);
+      glBindBufferBase(GL_SHADER_STORAGE_BUFFER, shader_bindings::noise_noise_rows::values, values);
+      glBindBufferBase(GL_SHADER_STORAGE_BUFFER, shader_bindings::noise_noise_rows::patches, patches);
       rows.set("u_z0", z0);
       rows.set("u_slices", n);
       gpu::DeviceTimer device;

@@ -15,6 +15,7 @@
 #include <stdexcept>
 
 #include "core/hash.hpp"
+#include "gpu/shader_bindings.hpp"
 #include "gpu/compute_program.hpp"
 #include "gpu/pass_timer.hpp"
 #include "gpu/shader_sources.hpp"
@@ -154,7 +155,8 @@ NoiseVolume::NoiseVolume(int size, std::uint32_t seed) : size_(size), seed_(seed
   gpu::ComputeProgram program("render/noise_volume.comp");
   texture_ = make_volume_texture(size);
   program.set("u_seed", static_cast<unsigned>(seed));
-  glBindImageTexture(0, texture_, 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+  glBindImageTexture(shader_bindings::render_noise_volume::noise_volume, texture_, 0, GL_TRUE, 0, GL_WRITE_ONLY,
+                     GL_RGBA32F);
   program.dispatch_covering(size, size, size);
   gpu::image_barrier();
   equalise_histogram(texture_, size);
@@ -407,11 +409,12 @@ RenderResult render_clouds(const Camera& camera, const std::vector<regional::Clo
       glsl::set_uniform(*shadow_program, "u_march", params);
     }
     gpu::ComputeProgram& program = *shadow_program;
-    target.bind_image(0, GL_WRITE_ONLY);
-    glBindTextureUnit(1, noise != nullptr ? noise->texture() : 0);
-    glBindTextureUnit(2, weather);
-    glBindTextureUnit(4, terrain);
-    glBindTextureUnit(5, convective != nullptr ? convective->texture() : 0);
+    namespace sources = shader_bindings::render_march_sources;
+    target.bind_image(shader_bindings::render_layer_shadows::shadow_maps, GL_WRITE_ONLY);
+    glBindTextureUnit(sources::noise_volume, noise != nullptr ? noise->texture() : 0);
+    glBindTextureUnit(sources::weather_field, weather);
+    glBindTextureUnit(sources::terrain_heights, terrain);
+    glBindTextureUnit(sources::convective_volumes, convective != nullptr ? convective->texture() : 0);
     for (int layer = first_layer; layer <= last_layer; ++layer)
       if (layer < 0 || params.layers[layer].shadow_map >= 0) {
         program.set("u_layer", layer);
@@ -457,20 +460,21 @@ RenderResult render_clouds(const Camera& camera, const std::vector<regional::Clo
     for (int c = 0; c < params.convective_count; ++c)
       result.passes.push_back(std::string("march convective ") +
                               regional::convective_kind_name(convective->clouds()[c].kind));
-    image.bind_image(0, GL_WRITE_ONLY);
-    ground_distance.bind_image(1, GL_WRITE_ONLY);
-    glBindTextureUnit(1, noise != nullptr ? noise->texture() : 0);
-    glBindTextureUnit(2, weather);
-    glBindTextureUnit(4, terrain);
-    glBindTextureUnit(5, convective != nullptr ? convective->texture() : 0);
-    glBindTextureUnit(6, maps > 0 ? shadow_maps.id() : 0);
-    glBindTextureUnit(7, sky_map ? sky_shadow.id() : 0);
+    namespace sources = shader_bindings::render_march_sources;
+    image.bind_image(shader_bindings::render_clouds::radiance_image, GL_WRITE_ONLY);
+    ground_distance.bind_image(shader_bindings::render_clouds::ground_distance_image, GL_WRITE_ONLY);
+    glBindTextureUnit(sources::noise_volume, noise != nullptr ? noise->texture() : 0);
+    glBindTextureUnit(sources::weather_field, weather);
+    glBindTextureUnit(sources::terrain_heights, terrain);
+    glBindTextureUnit(sources::convective_volumes, convective != nullptr ? convective->texture() : 0);
+    glBindTextureUnit(sources::layer_shadows, maps > 0 ? shadow_maps.id() : 0);
+    glBindTextureUnit(sources::sky_shadow, sky_map ? sky_shadow.id() : 0);
     GLuint guard = 0;
     // The count, then a bit per pixel of the whole image.
     const std::vector<GLuint> zeros(1 + (static_cast<std::size_t>(camera.width) * camera.height + 31) / 32, 0u);
     glCreateBuffers(1, &guard);
     glNamedBufferStorage(guard, static_cast<GLsizeiptr>(zeros.size() * sizeof(GLuint)), zeros.data(), GL_MAP_READ_BIT);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, guard);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, shader_bindings::render_clouds::loop_guard, guard);
     program.set("u_first_row", settings.first_row);
     program.set("u_stride", stride);
     program.set("u_phase", phase);
@@ -501,7 +505,7 @@ RenderResult render_clouds(const Camera& camera, const std::vector<regional::Clo
     timed("view_depth", [&] {
       gpu::ComputeProgram program("render/view_depth.comp");
       glsl::set_uniform(program, "u_march", params);
-      glBindTextureUnit(4, terrain);
+      glBindTextureUnit(shader_bindings::render_march_sources::terrain_heights, terrain);
       // The ground distance of each listed pixel of an image of `size`.
       const auto distances = [&](const std::vector<glm::ivec2>& pixels, glm::ivec2 size) {
         std::vector<float> out(pixels.size());
@@ -510,8 +514,8 @@ RenderResult render_clouds(const Camera& camera, const std::vector<regional::Clo
         glCreateBuffers(2, buffers);
         glNamedBufferStorage(buffers[0], static_cast<GLsizeiptr>(pixels.size() * sizeof(glm::ivec2)), pixels.data(), 0);
         glNamedBufferStorage(buffers[1], static_cast<GLsizeiptr>(out.size() * sizeof(float)), nullptr, GL_MAP_READ_BIT);
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, buffers[0]);
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, buffers[1]);
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, shader_bindings::render_view_depth::guide_pixels, buffers[0]);
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, shader_bindings::render_view_depth::ground_distances, buffers[1]);
         program.set("u_image_size", size);
         program.set("u_pixel_count", static_cast<int>(pixels.size()));
         program.dispatch_covering(static_cast<int>(pixels.size()), 1, 1);

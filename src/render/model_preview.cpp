@@ -6,6 +6,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "gpu/shader_bindings.hpp"
 #include "gpu/compute_program.hpp"
 #include "gpu/textures.hpp"
 #include "render/cloud_renderer.hpp"
@@ -90,8 +91,8 @@ core::ImageData PreviewRenderer::render(const model::DensityVolume& volume, cons
     const float zero[4] = {0, 0, 0, 0};
     glClearTexImage(image.id(), 0, GL_RGBA, GL_FLOAT, zero);
   }
-  image.bind_image(0, GL_WRITE_ONLY);
-  glBindTextureUnit(1, volume.texture());
+  image.bind_image(shader_bindings::model_preview::radiance_image, GL_WRITE_ONLY);
+  glBindTextureUnit(shader_bindings::model_preview::model_density, volume.texture());
   if (rows > 0) program.dispatch_covering(s.width, rows, 1);
   gpu::image_barrier();
   if (glGetError() != GL_NO_ERROR) throw std::runtime_error("OpenGL error in the model preview pass");

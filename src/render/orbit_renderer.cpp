@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "gpu/shader_bindings.hpp"
 #include "gpu/compute_program.hpp"
 #include "gpu/pass_timer.hpp"
 #include "gpu/textures.hpp"
@@ -264,11 +265,12 @@ double OrbitRenderer::render_into(const OrbitCamera& camera, double unix_seconds
     p.set("u_shadow_steps", s.shadow_steps);
     p.set("u_sky_steps", s.sky_steps);
     glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
-    glBindImageTexture(0, rgba32f_texture, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-    glBindTextureUnit(1, gl_->day);
-    glBindTextureUnit(2, gl_->night);
-    glBindTextureUnit(3, gl_->cover);
-    glBindTextureUnit(4, gl_->detail);
+    namespace orbit = shader_bindings::render_orbit;
+    glBindImageTexture(orbit::radiance_image, rgba32f_texture, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    glBindTextureUnit(orbit::day_texture, gl_->day);
+    glBindTextureUnit(orbit::night_texture, gl_->night);
+    glBindTextureUnit(orbit::cover_map, gl_->cover);
+    glBindTextureUnit(orbit::detail_noise, gl_->detail);
     p.dispatch_covering(camera.width, camera.height, 1);
     gpu::image_barrier();
   });
