@@ -15,6 +15,7 @@
 #include <mutex>
 
 #include "apps/cli/command_line.hpp"
+#include "core/file_descriptor.hpp"
 
 extern char** environ;
 
@@ -24,50 +25,26 @@ namespace {
 int server_socket = -1;  // the test process's end; -1 while there is no server
 std::mutex server_mutex;
 
-bool write_all(int fd, const void* data, std::size_t bytes) {
-  const auto* p = static_cast<const char*>(data);
-  while (bytes > 0) {
-    const ssize_t n = ::write(fd, p, bytes);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) return false;
-    p += n;
-    bytes -= static_cast<std::size_t>(n);
-  }
-  return true;
-}
-
-bool read_all(int fd, void* data, std::size_t bytes) {
-  auto* p = static_cast<char*>(data);
-  while (bytes > 0) {
-    const ssize_t n = ::read(fd, p, bytes);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) return false;
-    p += n;
-    bytes -= static_cast<std::size_t>(n);
-  }
-  return true;
-}
-
 // A list of strings on the socket: its length, then each string's length and bytes.
 bool send_list(int fd, const std::vector<std::string>& list) {
   const auto count = static_cast<std::uint32_t>(list.size());
-  if (!write_all(fd, &count, sizeof count)) return false;
+  if (!core::write_exactly(fd, &count, sizeof count)) return false;
   for (const std::string& s : list) {
     const auto size = static_cast<std::uint32_t>(s.size());
-    if (!write_all(fd, &size, sizeof size) || !write_all(fd, s.data(), s.size())) return false;
+    if (!core::write_exactly(fd, &size, sizeof size) || !core::write_exactly(fd, s.data(), s.size())) return false;
   }
   return true;
 }
 
 bool receive_list(int fd, std::vector<std::string>& list) {
   std::uint32_t count = 0;
-  if (!read_all(fd, &count, sizeof count)) return false;
+  if (!core::read_exactly(fd, &count, sizeof count)) return false;
   list.assign(count, std::string());
   for (std::string& s : list) {
     std::uint32_t size = 0;
-    if (!read_all(fd, &size, sizeof size)) return false;
+    if (!core::read_exactly(fd, &size, sizeof size)) return false;
     s.resize(size);
-    if (size > 0 && !read_all(fd, s.data(), size)) return false;
+    if (size > 0 && !core::read_exactly(fd, s.data(), size)) return false;
   }
   return true;
 }
@@ -114,7 +91,7 @@ bool receive_list(int fd, std::vector<std::string>& list) {
       while (::waitpid(child, &status, 0) < 0 && errno == EINTR) {
       }
     const std::int32_t code = child < 0 ? -1 : WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    if (!write_all(fd, &code, sizeof code)) ::_exit(0);
+    if (!core::write_exactly(fd, &code, sizeof code)) ::_exit(0);
   }
 }
 
@@ -148,7 +125,7 @@ std::optional<int> run_in_command_server(const std::vector<std::string>& environ
   std::int32_t code = -1;
   if (!send_list(server_socket, {std::filesystem::current_path().string(), log.string()}) ||
       !send_list(server_socket, all) || !send_list(server_socket, words) ||
-      !read_all(server_socket, &code, sizeof code)) {
+      !core::read_exactly(server_socket, &code, sizeof code)) {
     ::close(server_socket);  // the server is gone: from now on every command is a process
     server_socket = -1;
     return std::nullopt;
