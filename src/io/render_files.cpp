@@ -99,22 +99,58 @@ json::Value scene_sidecar(const SceneRender& r, const regional::Scene& scene) {
   return root;
 }
 
+std::vector<unsigned char> encode_render_image(const core::ImageData& radiance, double exposure,
+                                               const std::string& name) {
+  if (core::lowercase_extension(name) == ".png")
+    return files::encode_image(render::tone_map(radiance, exposure), files::png_encoding(8), name);
+  return files::encode_image(radiance, files::exr_encoding({"R", "G", "B", "A"}), name);
+}
+
 void write_scene_outputs(const SceneRender& result, const regional::Scene& scene,
                          const std::filesystem::path& directory, const std::vector<std::string>& names,
                          files::OutputSet::Scope scope) {
   if (names.empty()) return;
   files::OutputSet outputs(directory, scope);
-  for (const auto& name : names) {
-    if (core::lowercase_extension(name) == ".png")
-      outputs.write(name, files::encode_image(render::tone_map(result.render.radiance, scene.exposure),
-                                              files::png_encoding(8), name));
-    else
-      outputs.write(name, files::encode_image(result.render.radiance, files::exr_encoding({"R", "G", "B", "A"}), name));
-  }
+  for (const auto& name : names) outputs.write(name, encode_render_image(result.render.radiance, scene.exposure, name));
   // The sidecar sits beside the first output.
   const std::filesystem::path first(names.front());
   outputs.write((first.parent_path() / (first.stem().string() + ".json")).string(),
                 json::write(scene_sidecar(result, scene)));
+  outputs.commit();
+}
+
+json::Value orbit_sidecar(const render::RenderResult& result, const OrbitRecord& record) {
+  json::Value root, camera;
+  root.set("view", "orbit");
+  camera.set("latitude", record.camera.latitude_deg);
+  camera.set("longitude", record.camera.longitude_deg);
+  camera.set("altitude_m", record.camera.altitude_m);
+  camera.set("heading_deg", record.camera.heading_deg);
+  camera.set("pitch_deg", record.camera.pitch_deg);
+  camera.set("fov_deg", record.camera.fov_deg);
+  camera.set("width", record.camera.width);
+  camera.set("height", record.camera.height);
+  root.set("camera", camera);
+  root.set("time", record.time);
+  root.set("sun_elevation_deg", result.sun_elevation_deg);
+  root.set("planet_radius_m", record.settings.planet_radius_m);
+  root.set("cloud_base_m", record.settings.cloud_base_m);
+  root.set("cloud_thickness_m", record.settings.cloud_thickness_m);
+  root.set("earth_texture", record.earth_texture);
+  root.set("night_texture", record.night_texture);
+  root.set("cover", record.cover);
+  root.set("exposure", record.exposure);
+  return root;
+}
+
+void write_orbit_outputs(const render::RenderResult& result, const OrbitRecord& record,
+                         const std::filesystem::path& out) {
+  std::filesystem::path directory = out.parent_path();
+  if (directory.empty()) directory = ".";
+  files::OutputSet outputs(directory, files::OutputSet::Scope::files);
+  const std::string name = out.filename().string();
+  outputs.write(name, encode_render_image(result.radiance, record.exposure, name));
+  outputs.write(out.stem().string() + ".json", json::write(orbit_sidecar(result, record)));
   outputs.commit();
 }
 

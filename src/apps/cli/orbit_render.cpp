@@ -10,15 +10,14 @@
 
 #include "core/file_names.hpp"
 #include "apps/cli/commands.hpp"
-#include "core/json.hpp"
 #include "core/progress.hpp"
 #include "core/time.hpp"
 #include "cover/global_cover.hpp"
 #include "gpu/egl_context.hpp"
 #include "gpu/pass_timer.hpp"
 #include "files/atomic_output.hpp"
-#include "files/image_files.hpp"
 #include "io/planet_textures.hpp"
+#include "io/render_files.hpp"
 #include "params/table.hpp"
 #include "regional/scene.hpp"
 #include "render/orbit_renderer.hpp"
@@ -134,37 +133,15 @@ int run_orbit_render(const OrbitOptions& orbit) {
   progress.update(1, "orbit view");
   render::RenderResult result = render::render_orbit(camera, unix_seconds, textures.images, *cover, settings);
   progress.update(2, "writing files");
-  {
-    files::OutputSet outputs(directory, files::OutputSet::Scope::files);
-    const std::string name = out.filename().string();
-    if (extension == ".png")
-      outputs.write(
-          name, files::encode_image(render::tone_map(result.radiance, orbit.exposure), files::png_encoding(8), name));
-    else
-      outputs.write(name, files::encode_image(result.radiance, files::exr_encoding({"R", "G", "B", "A"}), name));
-    json::Value root, cam;
-    root.set("view", "orbit");
-    cam.set("latitude", camera.latitude_deg);
-    cam.set("longitude", camera.longitude_deg);
-    cam.set("altitude_m", camera.altitude_m);
-    cam.set("heading_deg", camera.heading_deg);
-    cam.set("pitch_deg", camera.pitch_deg);
-    cam.set("fov_deg", camera.fov_deg);
-    cam.set("width", camera.width);
-    cam.set("height", camera.height);
-    root.set("camera", cam);
-    root.set("time", time_text);
-    root.set("sun_elevation_deg", result.sun_elevation_deg);
-    root.set("planet_radius_m", settings.planet_radius_m);
-    root.set("cloud_base_m", settings.cloud_base_m);
-    root.set("cloud_thickness_m", settings.cloud_thickness_m);
-    root.set("earth_texture", textures.day_source);
-    root.set("night_texture", textures.night_source);
-    root.set("cover", cover_source);
-    root.set("exposure", orbit.exposure);
-    outputs.write(out.stem().string() + ".json", json::write(root));
-    outputs.commit();
-  }
+  io::OrbitRecord record;
+  record.camera = camera;
+  record.settings = settings;
+  record.time = time_text;
+  record.earth_texture = textures.day_source;
+  record.night_texture = textures.night_source;
+  record.cover = cover_source;
+  record.exposure = orbit.exposure;
+  io::write_orbit_outputs(result, record, out);
   progress.finish();
   if (orbit.verbose) {
     std::cerr << "earth texture: " << textures.day_source << "\nnight texture: " << textures.night_source
