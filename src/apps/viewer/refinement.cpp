@@ -34,18 +34,19 @@ const std::vector<RefinementLevel>& refinement_levels() {
   return levels;
 }
 
-bool Refinement::step(ViewSource& source, const ViewState& state, const std::string& key, const std::string& scene_key,
-                      int width, int height) {
+void Refinement::restart(const std::string& key, const std::string& scene_key, int width, int height) {
   const bool resized = width != target_width_ || height != target_height_;
-  if (key != shown_key_ || resized) {
-    camera_moving_ = !resized && scene_key == shown_scene_key_;
-    if (!camera_moving_) preview_history_ = {};
-    shown_key_ = key;
-    shown_scene_key_ = scene_key;
-    target_width_ = width;
-    target_height_ = height;
-    next_level_ = 0;
-  }
+  camera_moving_ = !resized && scene_key == shown_scene_key_;
+  if (!camera_moving_) preview_history_ = {};
+  shown_key_ = key;
+  shown_scene_key_ = scene_key;
+  target_width_ = width;
+  target_height_ = height;
+  next_level_ = 0;
+}
+
+bool Refinement::step(ViewSource& source, const ViewState& state) {
+  const int width = target_width_, height = target_height_;
   if (next_level_ < refinement_levels().size()) {
     const RefinementLevel level = refinement_levels()[next_level_];
     // Sizes round up, so that the preview is never empty.

@@ -27,12 +27,17 @@ const std::vector<RefinementLevel>& refinement_levels();
 
 class Refinement {
  public:
-  // Starts again from the preview when `key` (everything a render reads) or the framebuffer's
-  // size changed since the last call; `scene_key` (all of it but the camera) unchanged then
-  // means that the camera alone moved. Renders the level that is due, if any, with `source`;
-  // returns true when it did (shown() changed).
-  bool step(ViewSource& source, const ViewState& state, const std::string& key, const std::string& scene_key, int width,
-            int height);
+  // True when `key` (everything a render reads) or the framebuffer's size is not the one being
+  // refined: then restart.
+  bool stale(const std::string& key, int width, int height) const {
+    return key != shown_key_ || width != target_width_ || height != target_height_;
+  }
+  // Starts again from the preview. `scene_key` (all of the key but the camera) unchanged, at the
+  // same size, means that the camera alone moved (asked only on a restart: the viewer builds
+  // the keys each frame).
+  void restart(const std::string& key, const std::string& scene_key, int width, int height);
+  // Renders the level that is due, if any, with `source`; true when it did (shown() changed).
+  bool step(ViewSource& source, const ViewState& state);
   // True when the full size of `key` has been rendered.
   bool done(const std::string& key) const { return next_level_ >= refinement_levels().size() && key == shown_key_; }
   // The level rendered next (refinement_levels().size() when done).

@@ -148,8 +148,9 @@ void Viewer::run() {
 
 void Viewer::refine(int width, int height) {
   // Exposure only tone-maps the last image again.
-  if (refinement_.step(*source_, state_, render_key(), render_key(false), width, height) ||
-      shown_exposure_ != state_.exposure) {
+  const std::string key = render_key();
+  if (refinement_.stale(key, width, height)) refinement_.restart(key, render_key(false), width, height);
+  if (refinement_.step(*source_, state_) || shown_exposure_ != state_.exposure) {
     display_->upload(render::tone_map(refinement_.shown(), state_.exposure));
     shown_exposure_ = state_.exposure;
   }
