@@ -30,15 +30,24 @@ inline std::string read_file(const std::filesystem::path& path) {
   return text.str();
 }
 
+// A fresh path for a command's stdout and stderr.
+inline std::filesystem::path new_log() {
+  return std::filesystem::temp_directory_path() / ("nephele_run_" + std::to_string(std::random_device{}()) + ".log");
+}
+
+// The log's text, and the log removed.
+inline std::string take_log(const std::filesystem::path& log) {
+  std::string output = read_file(log);
+  std::filesystem::remove(log);
+  return output;
+}
+
 // Runs a shell command line with stdout and stderr captured in a temporary log.
 inline Run run_command(const std::string& command) {
   starting_slow_work("a subprocess");
-  const std::filesystem::path log =
-      std::filesystem::temp_directory_path() / ("nephele_run_" + std::to_string(std::random_device{}()) + ".log");
+  const std::filesystem::path log = new_log();
   const int status = std::system((command + " > " + log.string() + " 2>&1").c_str());
-  const std::string output = read_file(log);
-  std::filesystem::remove(log);
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, output};
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, take_log(log)};
 }
 
 // The words of `text` as sh would split and expand them (quotes, variables), or nothing where
@@ -65,14 +74,8 @@ inline Run run_with_environment(const std::string& environment, const std::strin
                               });
   if (only_variables && words) {
     starting_slow_work("a subprocess");
-    const std::filesystem::path log =
-        std::filesystem::temp_directory_path() / ("nephele_run_" + std::to_string(std::random_device{}()) + ".log");
-    const std::optional<int> code = run_in_command_server(*variables, *words, log);
-    if (code) {
-      const std::string output = read_file(log);
-      std::filesystem::remove(log);
-      return {*code, output};
-    }
+    const std::filesystem::path log = new_log();
+    if (const std::optional<int> code = run_in_command_server(*variables, *words, log)) return {*code, take_log(log)};
   }
   return run_command(environment + " " + std::string(NEPHELE_EXECUTABLE) + " " + rest);
 }
