@@ -21,9 +21,10 @@ using gpu::run_probe;
 
 template <class Out, class In>
 std::vector<Out> probe(const std::string& includes, const std::string& expression, const std::vector<In>& inputs,
-                       const std::string& helpers = "", const std::vector<glm::vec4>& data = {}) {
+                       const std::string& helpers = "", const std::vector<glm::vec4>& data = {},
+                       gpu::ProbeData kind = gpu::ProbeData::buffer) {
   test_context();
-  return gpu::probe<Out>(includes, expression, inputs, helpers, data);
+  return gpu::probe<Out>(includes, expression, inputs, helpers, data, kind);
 }
 
 }  // namespace nephele::test

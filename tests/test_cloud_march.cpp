@@ -78,7 +78,7 @@ std::vector<float> cpu_shadow_map(int size, int layer, const glsl::MarchParams& 
   for (int j = 0; j < size; ++j)
     for (int i = 0; i < size; ++i)
       map.push_back(glsl::shadow_map_texel(glm::vec2((i + 0.5f) / size, (j + 0.5f) / size), centre, layer, loops,
-                                           params, sources));
+                                           params, sources.noise, sources.weather, sources.convective));
   return map;
 }
 
@@ -133,7 +133,7 @@ TEST_CASE("the marcher on the GPU agrees with its C++ twin pixel by pixel", "[re
         for (int i = 0; i < size; ++i) {
           int loops = 0;
           const float cpu = glsl::shadow_map_texel(glm::vec2((i + 0.5f) / size, (j + 0.5f) / size), centre, layer,
-                                                   loops, params, sources);
+                                                   loops, params, sources.noise, sources.weather, sources.convective);
           const float g =
               layer >= 0 ? gpu.shadow_maps[(static_cast<size_t>(params.layers[layer].shadow_map) * 16 + j) * 16 + i]
                          : gpu.sky_shadow_map[static_cast<size_t>(j) * 4 + i];
@@ -149,7 +149,8 @@ TEST_CASE("the marcher on the GPU agrees with its C++ twin pixel by pixel", "[re
         int loops = 0;
         float ground_distance = 0;
         const glm::vec4 cpu = glsl::render_pixel(glm::ivec2(x, y), glm::ivec2(cam.width, cam.height), params, loops,
-                                                 ground_distance, sources);
+                                                 ground_distance, sources.noise, sources.weather, sources.terrain,
+                                                 sources.convective, sources.shadows, sources.sky_shadow);
         if (glsl::loop_limited(loops)) ++limited;
         const float* g = &gpu.radiance.pixels[(static_cast<size_t>(y) * cam.width + x) * 4];
         if (cpu.w > 0.5f) ++cloudy;
@@ -185,11 +186,14 @@ TEST_CASE("an overcast layer shades the ground below it and no layer shades what
   const glm::vec3 ground(0.0f, 0.0f, -params.camera_altitude);
   int loops = 0;
   // The sheet's depth straight up, more along the slanted sun ray.
-  CHECK(glsl::shadow_depth(ground, centre, -1, -1.0e30f, loops, params, sources) >= sheet_least_depth);
+  CHECK(glsl::shadow_depth(ground, centre, -1, -1.0e30f, loops, params, sources.noise, sources.weather,
+                           sources.convective) >= sheet_least_depth);
   CHECK(loops == params.layer_count + 2 + glsl::SHADOW_STEPS);  // the layer loop, the two intervals, the samples
   // Only layers with a base at or above 2100 m shade a point at the layer's top: none here.
-  CHECK(glsl::shadow_depth(ground, centre, -1, 2100.0f, loops, params, sources) == 0.0f);
-  CHECK(glsl::shadow_depth(ground, centre, 0, -1.0e30f, loops, params, sources) == 0.0f);
+  CHECK(glsl::shadow_depth(ground, centre, -1, 2100.0f, loops, params, sources.noise, sources.weather,
+                           sources.convective) == 0.0f);
+  CHECK(glsl::shadow_depth(ground, centre, 0, -1.0e30f, loops, params, sources.noise, sources.weather,
+                           sources.convective) == 0.0f);
 }
 
 TEST_CASE("a layer under an overcast layer reads the depth through it from its shadow map and gets less sunlight",
@@ -224,8 +228,8 @@ TEST_CASE("a layer under an overcast layer reads the depth through it from its s
         glsl::shadow_map_origin((2.0f * uv - 1.0f) * params.shadow_extent, centre, params.layers[0].top, params);
     const glm::vec3 p = top - (100.0f + 25.0f * k) / params.sun.z * params.sun;  // 100 to 575 m below the top
     int n = 0;
-    const float marched = glsl::layers_shadow_depth(p, centre, 0, 2100.0f, n, params, sources);
-    const float looked_up = glsl::higher_layers_depth(p, centre, 0, params, sources);
+    const float marched = glsl::layers_shadow_depth(p, centre, 0, 2100.0f, n, params, sources.noise, sources.weather);
+    const float looked_up = glsl::higher_layers_depth(p, centre, 0, params, sources.shadows);
     INFO("point " << k << ": marched " << marched << ", from the map " << looked_up);
     CHECK(looked_up == Approx(marched).epsilon(tolerance));
     CHECK(marched >= sheet_least_depth);
@@ -239,8 +243,8 @@ TEST_CASE("a layer under an overcast layer reads the depth through it from its s
       glsl::ray_shell(glm::vec3(0.0f), d, centre, params.earth_radius + 1500.0f, params.earth_radius + 2100.0f, 1e6f);
   const auto march = [&](const glsl::MarchParams& m) {
     glsl::CloudMarch c{glm::vec3(0.0f), 1.0f, 0.0f, 0.0f, 0};
-    glsl::march_interval(b.z, b.w, 0, false, d, centre, 0.5f, glm::dot(d, m.sun), c, m,
-                         sources);  // out of the inner sphere
+    glsl::march_interval(b.z, b.w, 0, false, d, centre, 0.5f, glm::dot(d, m.sun), c, m, sources.noise, sources.weather,
+                         sources.convective, sources.shadows);  // out of the inner sphere
     return c;
   };
   const glsl::CloudMarch shaded = march(params), open = march(unshaded);
@@ -322,9 +326,11 @@ TEST_CASE("the air below an overcast layer scatters no direct sunlight: a pixel 
     int n = 0;
     float ground_distance = 0;
     const glm::vec4 with =
-        glsl::render_pixel(pixel, glm::ivec2(down.width, down.height), params, n, ground_distance, sources);
+        glsl::render_pixel(pixel, glm::ivec2(down.width, down.height), params, n, ground_distance, sources.noise,
+                           sources.weather, sources.terrain, sources.convective, sources.shadows, sources.sky_shadow);
     const glm::vec4 without =
-        glsl::render_pixel(pixel, glm::ivec2(down.width, down.height), unshaded, n, ground_distance, sources);
+        glsl::render_pixel(pixel, glm::ivec2(down.width, down.height), unshaded, n, ground_distance, sources.noise,
+                           sources.weather, sources.terrain, sources.convective, sources.shadows, sources.sky_shadow);
     // The ray's clear-sky in-scattering to the ground (no cloud on it: opacity 0).
     const glm::vec3 d = glsl::view_direction(pixel, glm::ivec2(down.width, down.height), params);
     const glm::vec2 ground = glsl::ray_sphere(glm::vec3(0.0f), d, centre, params.earth_radius);

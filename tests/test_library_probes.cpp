@@ -20,7 +20,7 @@
 #include "cover/curl_spline.hpp"
 #include "shader_math/shader_math.hpp"
 
-// The probes that call functions with texture hooks need the hook macros again.
+// The warp probe's template needs WARP_TEMPLATE again (shader_math.hpp #undefs it).
 #include "shader_math/hook_macros.hpp"
 
 namespace nephele::glsl {
@@ -165,12 +165,13 @@ mat4 arguments(int function, vec4 a, vec4 b = vec4(0.0f), vec4 c = vec4(0.0f), v
   return m;
 }
 
-// `data`: the probe's buffer at binding 2 (a cube map), which `cpu` reads as a CubeSource.
+// `data`: the probe's data at binding 2 (a cube map, say), which `cpu` reads as a CubeSource.
 template <class Cpu>
-void compare(const std::string& name, Cpu cpu, const std::vector<Case>& cases, const std::vector<vec4>& data = {}) {
+void compare(const std::string& name, Cpu cpu, const std::vector<Case>& cases, const std::vector<vec4>& data = {},
+             gpu::ProbeData kind = gpu::ProbeData::buffer) {
   std::vector<mat4> inputs;
   for (const auto& c : cases) inputs.push_back(c.input);
-  const auto gpu = test::probe<vec4>(probe_text(name), "probe_" + name + "(input_value)", inputs, "", data);
+  const auto gpu = test::probe<vec4>(probe_text(name), "probe_" + name + "(input_value)", inputs, "", data, kind);
   for (size_t k = 0; k < cases.size(); ++k) {
     const vec4 expected = cpu(cases[k].input);
     INFO(name << " function " << cases[k].input[0].x << " case " << k);
@@ -656,7 +657,8 @@ TEST_CASE("cube_sampling.glsl on the GPU agrees with the CPU", "[probe]") {
   for (int k = 0; k < 64; ++k)
     cases.push_back({arguments(1, vec4(0.0f), vec4(normalize(vec3(r.v(-1.0f, 1.0f)) + vec3(1e-3f)), 0)), kBilinear});
   compare(
-      "cube_sampling", [&](const mat4& x) { return probe_cube_sampling(x, source); }, cases, texels);
+      "cube_sampling", [&](const mat4& x) { return probe_cube_sampling(x, source); }, cases, texels,
+      gpu::ProbeData::cube_image);
 }
 
 TEST_CASE("curl_spline.glsl on the GPU agrees with the CPU", "[probe][spline]") {
@@ -698,7 +700,7 @@ TEST_CASE("curl_spline.glsl on the GPU agrees with the CPU", "[probe][spline]") 
           {arguments(2, vec4(float((k / 6) % 6), float(i), float(j), 0), cubic_bspline_weights(r(0.0f, 1.0f))), kRow});
     }
     if (f == 3) cases.push_back({arguments(3, vec4(0.0f), vec4(w, 0)), kSample});
-    if (f == 4) cases.push_back({arguments(4, vec4(0.0f), vec4(w, 0)), kProjected});
+    if (f == 4) cases.push_back({arguments(4 + 2 * ((k / 6) % 2), vec4(0.0f), vec4(w, 0)), kProjected});
     if (f == 5) {
       // Nodes inside, on and beyond the face's edges, with margins 2 and 3.
       const int margin = 2 + (k / 6) % 2;
@@ -715,7 +717,8 @@ TEST_CASE("curl_spline.glsl on the GPU agrees with the CPU", "[probe][spline]") 
         cases.push_back({arguments(3, vec4(0.0f), vec4(w, 0)), kSample});
       }
   compare(
-      "curl_spline", [&](const mat4& x) { return probe_curl_spline(x, source); }, cases, nodes);
+      "curl_spline", [&](const mat4& x) { return probe_curl_spline(x, source); }, cases, nodes,
+      gpu::ProbeData::array_image);
 }
 
 TEST_CASE("warp_step.glsl on the GPU agrees with the CPU, sampled and procedural", "[probe]") {
@@ -744,7 +747,8 @@ TEST_CASE("warp_step.glsl on the GPU agrees with the CPU, sampled and procedural
     cases.push_back({arguments(f, vec4(float(integrator), h, float(steps), 0), w, adaptive, state), tolerance});
   }
   compare(
-      "warp_step", [&](const mat4& x) { return probe_warp_step(x, source); }, cases, texels);
+      "warp_step", [&](const mat4& x) { return probe_warp_step(x, source); }, cases, texels,
+      gpu::ProbeData::cube_image);
 }
 
 TEST_CASE("noise_rows.glsl on the GPU agrees with the CPU and with the point functions", "[probe]") {
@@ -831,12 +835,35 @@ TEST_CASE("cloud_march.glsl on the GPU agrees with the CPU", "[probe][march]") {
   glTextureParameteri(shadow_texture, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
   glBindTextureUnit(6, shadow_texture);
   glBindTextureUnit(7, shadow_texture);  // function 20 reads it as the sky's map
+  // Two convective volumes of 4^3 voxels, stacked along z as the renderer stacks them: voxel
+  // (i, j, k) of volume c holds 0.1 c + 0.05 (i + 2 j + 3 k), a linear function that trilinear
+  // filtering reproduces exactly between the texel centres.
+  const int voxels = 4;
+  std::vector<float> convective;
+  for (int c = 0; c < 2; ++c)
+    for (int k = 0; k < voxels; ++k)
+      for (int j = 0; j < voxels; ++j)
+        for (int i = 0; i < voxels; ++i) convective.push_back(0.1f * c + 0.05f * float(i + 2 * j + 3 * k));
+  GLuint convective_texture = 0;
+  glCreateTextures(GL_TEXTURE_3D, 1, &convective_texture);
+  glTextureStorage3D(convective_texture, 1, GL_R32F, voxels, voxels, 2 * voxels);
+  glTextureSubImage3D(convective_texture, 0, 0, 0, 0, voxels, voxels, 2 * voxels, GL_RED, GL_FLOAT,
+                      convective.data());
+  glTextureParameteri(convective_texture, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTextureParameteri(convective_texture, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  for (GLenum wrap : {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T, GL_TEXTURE_WRAP_R})
+    glTextureParameteri(convective_texture, wrap, GL_CLAMP_TO_EDGE);
+  glBindTextureUnit(5, convective_texture);
   MarchSources sources;
+  sources.convective = {voxels, 2, convective.data()};
   sources.noise = noise.host_copy();
   sources.weather = {size, channels, weather.data()};
   sources.shadows = {size, 1, shadow.data()};
   sources.sky_shadow = sources.shadows;
-  auto cpu = [&](const mat4& x) { return probe_cloud_march(x, sources); };
+  auto cpu = [&](const mat4& x) {
+    return probe_cloud_march(x, sources.noise, sources.weather, sources.terrain, sources.convective, sources.shadows,
+                             sources.sky_shadow);
+  };
 
   // Altitudes are rounded at the scale of the Earth's radius (march_tolerance.hpp): the height
   // fraction moves by kPosition over the 1500 m layers, the noise values by kPosition over the
@@ -954,7 +981,21 @@ TEST_CASE("cloud_march.glsl on the GPU agrees with the CPU", "[probe][march]") {
     CHECK(s.z == Approx(std::exp(-sources.shadows.sample(vec2(s.x, s.y), 0))).epsilon(0).margin(kTranscendental));
     CHECK(cpu(arguments(20, sky_shell, p)).z == 1.0f);
   }
+  // Convective densities: inside the texel centres the closed form, beyond them clamped to the
+  // volume's own edge (never the other volume's). Texture coordinates of up to 8 texels round by
+  // 2^-24 x 8 x 2 texels on each of 3 axes, moving the value by at most 0.15 per texel.
+  const float stack_lookup = 3 * 2 * 8 * kUlp * 0.15f + kArithmetic;
+  for (int k = 0; k < 24; ++k) {
+    const int cloud = k % 2;
+    const vec4 q(r(-0.2f, 1.2f), r(-0.2f, 1.2f), r(-0.2f, 1.2f), 0.0f);
+    const mat4 x = arguments(22, vec4(float(cloud), 0, 0, 0), q);
+    cases.push_back({x, stack_lookup});
+    auto texel = [&](float s) { return std::clamp(4.0f * s - 0.5f, 0.0f, 3.0f); };
+    const float closed = 0.1f * cloud + 0.05f * (texel(q.x) + 2 * texel(q.y) + 3 * texel(q.z));
+    CHECK(cpu(x).x == Approx(closed).epsilon(0).margin(stack_lookup));
+  }
   compare("cloud_march", cpu, cases);
+  glDeleteTextures(1, &convective_texture);
   glDeleteTextures(1, &shadow_texture);
   glDeleteTextures(1, &weather_texture);
 }

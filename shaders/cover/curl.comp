@@ -15,10 +15,6 @@ layout(rgba32f, binding = 1) uniform writeonly imageCube curl_field;
 #include "../lib/curl_flow.glsl"
 #if CURL_FROM_SPLINE
 layout(rgba32f, binding = 2) uniform readonly image2DArray curl_spline;
-#define SPLINE_SOURCE_PARAM
-#define SPLINE_SOURCE_ARG
-#define SPLINE_FETCH(face, i, j) imageLoad(curl_spline, ivec3(i, j, face))
-#define SPLINE_CELLS (imageSize(curl_spline).x - 2 * SPLINE_MARGIN)
 #include "../lib/curl_spline.glsl"
 #else
 uniform CurlParams u_curl;
@@ -31,7 +27,7 @@ void main() {
   if (texel.x >= size || texel.y >= size) return;
   vec3 n = imageLoad(identity_field, texel).xyz;
 #if CURL_FROM_SPLINE
-  imageStore(curl_field, texel, vec4(spline_velocity(n), sample_curl_spline(n).w));
+  imageStore(curl_field, texel, vec4(spline_velocity(n, curl_spline), sample_curl_spline(n, curl_spline).w));
 #else
   imageStore(curl_field, texel, curl_flow_shifted(n, u_curl, u_noise_offset));
 #endif

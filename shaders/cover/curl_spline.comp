@@ -8,10 +8,6 @@ layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
 #ifndef CURL_SPLINE_PREFILTER
 #define CURL_SPLINE_PREFILTER 0
 #endif
-#define SPLINE_SOURCE_PARAM
-#define SPLINE_SOURCE_ARG
-#define SPLINE_FETCH(face, i, j) vec4(0.0f)
-#define SPLINE_CELLS u_cells
 uniform int u_cells;  // nodes per face edge inside the face
 #include "../lib/curl_flow.glsl"
 #include "../lib/curl_spline.glsl"

@@ -12,10 +12,6 @@ layout(std430, binding = 2) readonly buffer RowDirections {
   vec2 row_cos_sin[];  // (cos, sin) of the geocentric latitude of each row
 };
 
-#define CUBE_SOURCE_PARAM
-#define CUBE_SOURCE_ARG
-#define CUBE_FETCH(face, i, j) imageLoad(source_cube, ivec3(i, j, face))
-#define CUBE_SIZE imageSize(source_cube).x
 #include "../lib/equirect_mapping.glsl"
 #include "../lib/cube_sampling.glsl"
 
@@ -24,5 +20,5 @@ void main() {
   ivec2 size = imageSize(equirect);
   if (pixel.x >= size.x || pixel.y >= size.y) return;
   vec3 direction = equirect_direction(u_origin_x + pixel.x, u_width, row_cos_sin[u_origin_y + pixel.y]);
-  imageStore(equirect, pixel, vec4(sample_cube_bilinear(direction).x, 0.0f, 0.0f, 0.0f));
+  imageStore(equirect, pixel, vec4(sample_cube_bilinear(direction, source_cube).x, 0.0f, 0.0f, 0.0f));
 }

@@ -19,30 +19,25 @@ layout(rgba32f, binding = 2) uniform writeonly imageCube warp_field;
 #define WARP_SPLINE 0
 #endif
 
-#define CUBE_SOURCE_PARAM
-#define CUBE_SOURCE_ARG
-#define CUBE_FETCH(face, i, j) imageLoad(curl_field, ivec3(i, j, face))
-#define CUBE_SIZE imageSize(curl_field).x
 #include "../lib/curl_flow.glsl"
 #include "../lib/cube_sampling.glsl"
 
-#define WARP_TEMPLATE
-#define WARP_FIELD_PARAM
-#define WARP_FIELD_ARG
+// The velocity source of warp_step.glsl's stepping rules (WarpField) and the uniform that holds
+// it (VELOCITY_SOURCE): the curl evaluated where the stepping rule asks, the curl spline, or
+// the curl cube map.
 #if WARP_PROCEDURAL
 uniform CurlParams u_curl;
 uniform vec3 u_noise_offset;
-#define WARP_VELOCITY(w) curl_velocity_shifted(w, u_curl, u_noise_offset)
+#define WarpField CurlParams
+vec3 warp_velocity(vec3 w, IN(CurlParams) curl) { return curl_velocity_shifted(w, curl, u_noise_offset); }
+#define VELOCITY_SOURCE u_curl
 #elif WARP_SPLINE
 layout(rgba32f, binding = 4) uniform readonly image2DArray curl_spline;
-#define SPLINE_SOURCE_PARAM
-#define SPLINE_SOURCE_ARG
-#define SPLINE_FETCH(face, i, j) imageLoad(curl_spline, ivec3(i, j, face))
-#define SPLINE_CELLS (imageSize(curl_spline).x - 2 * SPLINE_MARGIN)
 #include "../lib/curl_spline.glsl"
-#define WARP_VELOCITY(w) spline_velocity(w)
+#define WarpField SplineImage
+#define VELOCITY_SOURCE curl_spline
 #else
-#define WARP_VELOCITY(w) flow_velocity(w)
+#define VELOCITY_SOURCE curl_field
 #endif
 #include "../lib/warp_step.glsl"
 
@@ -79,7 +74,7 @@ void main() {
   bool done = state.w > 0.5f;
   if (!done) {
     done = advance_adaptive(w, t, h, attempts, u_flow_time, u_max_step, u_tolerance,
-                            min(u_max_substeps, attempts + u_chunk));
+                            min(u_max_substeps, attempts + u_chunk), VELOCITY_SOURCE);
   }
   imageStore(adaptive_state, texel, vec4(t, h, float(attempts), done ? 1.0f : 0.0f));
   // w: attempted steps, negative while T is not reached (in the end: u_max_substeps ran out).
@@ -88,6 +83,7 @@ void main() {
 #else
   vec3 start_velocity = imageLoad(curl_field, texel).xyz;
   imageStore(warp_field, texel,
-             vec4(integrate_fixed_from(WARP_INTEGRATOR, start, start_velocity, u_start_velocity, u_steps, u_step_size), 0.0f));
+             vec4(integrate_fixed_from(WARP_INTEGRATOR, start, start_velocity, u_start_velocity, u_steps, u_step_size,
+                                       VELOCITY_SOURCE), 0.0f));
 #endif
 }

@@ -1,22 +1,20 @@
 // Ray marching of the cloud layers and the sky, one view ray per pixel (the pass is
 // shaders/render/clouds.comp; docs/rendering.md describes the method). Local frame: east,
 // north, up with the camera at the origin; the Earth is the sphere osculating the WGS84
-// ellipsoid at the viewpoint, its centre straight below. The including file defines how the
-// two textures are read:
-//   MARCH_SOURCES_PARAM   extra trailing parameter(s) naming the textures (empty in GLSL)
-//   MARCH_SOURCES_ARG     the matching argument(s) (empty in GLSL)
-//   NOISE_LOD(x, lod)     vec4 of the noise volume at x (one period per unit, repeating):
-//                         trilinear within and linear between mip levels at lod; RG the
-//                         shape and detail noise, B the standardised gradient-noise octave
-//                         mean behind G3, A the W3 field (render/noise_volume.comp)
-//   WEATHER_COVERAGE(uv, channel)  float: the weather field's channel at uv in [0, 1]^2,
-//                         bilinear, clamped to the edge
-//   MARCH_TERRAIN_ARG     the ground's TerrainTexture as terrain.glsl takes it, after a comma
-//   CONVECTIVE_DENSITY(q, c)  float: the density of convective cloud c's volume at q in [0, 1]^3,
-//                         trilinear, clamped to the edge (docs/convection.md)
-//   LAYER_SHADOW(uv, map)  float: shadow map `map` (higher_layers_depth below) at uv in [0, 1]^2,
-//                         bilinear, clamped to the edge
-//   SKY_SHADOW(uv)        float: the sky's shadow map (sky_sun_visibility below) likewise
+// ellipsoid at the viewpoint, its centre straight below. The textures are parameters named by
+// what they hold (prelude.glsl's types; in C++ the classes of src/shader_math/hooks.hpp), read
+// with GLSL's texture functions:
+//   NoiseVolume noise_volume        RGBA at x (one period per unit, repeating), trilinear within
+//                                   and linear between mip levels: RG the shape and detail noise,
+//                                   B the standardised gradient-noise octave mean behind G3, A
+//                                   the W3 field (render/noise_volume.comp)
+//   WeatherField weather_field      layer c: the weather field's channel c at uv in [0, 1]^2,
+//                                   bilinear, clamped to the edge
+//   TerrainTexture terrain_heights  the ground (terrain.glsl)
+//   ConvectiveVolumes convective_volumes  the convective clouds' densities (convective_density
+//                                   below; docs/convection.md)
+//   ShadowMaps layer_shadows        layer `map`: the shadow map of higher_layers_depth below
+//   ShadowMaps sky_shadow           layer 0: the sky's shadow map (sky_sun_visibility below)
 #ifndef NEPHELE_CLOUD_MARCH_GLSL
 #define NEPHELE_CLOUD_MARCH_GLSL
 #include "prelude.glsl"
@@ -49,9 +47,9 @@ vec3 view_direction(ivec2 pixel, ivec2 size, IN(MarchParams) m) {
   return normalize(m.forward + xy.x * m.right + xy.y * m.up);
 }
 
-float coverage_at(vec3 p, int channel, IN(MarchParams) m MARCH_SOURCES_PARAM) {
+float coverage_at(vec3 p, int channel, IN(MarchParams) m, IN(WeatherField) weather_field) {
   vec2 uv = 0.5f + 0.5f * vec2(p) / m.weather_extent;
-  return WEATHER_COVERAGE(uv, channel);
+  return texture(weather_field, vec3(uv, float(channel))).x;
 }
 
 // A layer's shape-noise lookups at a point: the height fraction h in the layer, the coverage c,
@@ -72,18 +70,18 @@ const float BAKED_CELLS = 4.0f;
 // A field of base frequency f at p_n from the volume: f p_n / BAKED_CELLS periods, shifted by
 // a fixed offset per field so that the fields read different parts of the volume. lod: that of
 // a field of frequency 1 (log2 of the footprint in texels at f = 1).
-vec4 baked_fields(vec3 pn, float frequency, int field, float lod MARCH_SOURCES_PARAM) {
+vec4 baked_fields(vec3 pn, float frequency, int field, float lod, IN(NoiseVolume) noise_volume) {
   vec3 decorrelate = fract(float(field) * vec3(0.3819660f, 0.6180340f, 0.2360680f));
-  return NOISE_LOD(pn * (frequency / BAKED_CELLS) + decorrelate, max(lod + log2(frequency), 0.0f));
+  return textureLod(noise_volume, pn * (frequency / BAKED_CELLS) + decorrelate, max(lod + log2(frequency), 0.0f));
 }
 
 // G3 of the baked standardised octave mean (channel B) and W3 (channel A).
-float baked_g3(vec3 pn, float frequency, int field, float lod MARCH_SOURCES_PARAM) {
-  return normal_cdf(baked_fields(pn, frequency, field, lod MARCH_SOURCES_ARG).z);
+float baked_g3(vec3 pn, float frequency, int field, float lod, IN(NoiseVolume) noise_volume) {
+  return normal_cdf(baked_fields(pn, frequency, field, lod, noise_volume).z);
 }
 
-float baked_w3(vec3 pn, float frequency, int field, float lod MARCH_SOURCES_PARAM) {
-  return baked_fields(pn, frequency, field, lod MARCH_SOURCES_ARG).w;
+float baked_w3(vec3 pn, float frequency, int field, float lod, IN(NoiseVolume) noise_volume) {
+  return baked_fields(pn, frequency, field, lod, noise_volume).w;
 }
 
 // The mean of delta over the fields (E[G3] = 1/2, E[W3] = WEBANCK_W3_MEAN): what the light
@@ -101,23 +99,23 @@ const int WEBANCK_FULL = 2;
 // n1 (alto) window: G3 is close to uniform, so n2 > 0.55 covers 45 % of space; the shift
 // 0.45 - c makes it c (exact paper form at c = 0.45, and for alto at c = 0.57). Cumulus tops are
 // rounded by raising the window with height (0.25 h), ours, not the paper's.
-void webanck_shape(INOUT(ShapeSample) q, int type, float k, float tau, int fields MARCH_SOURCES_PARAM) {
+void webanck_shape(INOUT(ShapeSample) q, int type, float k, float tau, int fields, IN(NoiseVolume) noise_volume) {
   vec3 pn = q.coordinates;
   vec3 offset = vec3(-tau, 0.0f, 0.0f);
   if (type == CLOUD_CUMULUS) {
-    float n2 = baked_g3(vec3(0.65f * pn.x, pn.y, pn.z) + offset, 15.0f, 2, q.lod MARCH_SOURCES_ARG);
-    float n3 = baked_g3(pn + 2.0f * offset, 40.0f, 3, q.lod MARCH_SOURCES_ARG);
+    float n2 = baked_g3(vec3(0.65f * pn.x, pn.y, pn.z) + offset, 15.0f, 2, q.lod, noise_volume);
+    float n3 = baked_g3(pn + 2.0f * offset, 40.0f, 3, q.lod, noise_volume);
     float n4 = fields == WEBANCK_BOUND ? 0.0f : 0.5f;
     float n5 = 0.5f;
     if (fields == WEBANCK_FULL) {
-      n4 = baked_g3(pn + 2.0f * offset, 40.0f, 4, q.lod MARCH_SOURCES_ARG);
-      n5 = baked_g3(pn + 3.0f * offset, 80.0f, 5, q.lod MARCH_SOURCES_ARG);
+      n4 = baked_g3(pn + 2.0f * offset, 40.0f, 4, q.lod, noise_volume);
+      n5 = baked_g3(pn + 3.0f * offset, 80.0f, 5, q.lod, noise_volume);
     }
     q.shape = cumulus_phi(n2, n3, n4, n5, 0.45f - q.c + 0.25f * q.h);
     q.detail = cumulus_delta(WEBANCK_W3_MEAN, WEBANCK_W3_MEAN, 0.5f, 0.5f);
     q.gate = hermite_step(0.0f, 0.06f, q.h) * (1.0f - hermite_step(0.95f, 1.0f, q.h));
   } else {
-    float n1 = baked_g3(vec3(0.35f * pn.x, pn.y, pn.z) + 2.0f * offset, 36.0f, 11, q.lod MARCH_SOURCES_ARG);
+    float n1 = baked_g3(vec3(0.35f * pn.x, pn.y, pn.z) + 2.0f * offset, 36.0f, 11, q.lod, noise_volume);
     q.shape = alto_phi(k, n1 + (q.c - 0.57f));  // H(0.43 + s, 1 + s, n1), s = 0.57 - c
     q.detail = alto_delta(k, 0.5f, WEBANCK_W3_MEAN);
     // The sheet (k near 1) keeps the weather's coverage, its edges frayed by n1.
@@ -126,30 +124,31 @@ void webanck_shape(INOUT(ShapeSample) q, int type, float k, float tau, int field
 }
 
 // Webanck's delta from the baked detail fields.
-float webanck_detail(IN(ShapeSample) q, int type, float k, float tau MARCH_SOURCES_PARAM) {
+float webanck_detail(IN(ShapeSample) q, int type, float k, float tau, IN(NoiseVolume) noise_volume) {
   vec3 pn = q.coordinates;
   vec3 offset = vec3(-tau, 0.0f, 0.0f);
   if (type == CLOUD_CUMULUS) {
-    float n6 = baked_w3(pn + 4.0f * offset, 160.0f, 6, q.lod MARCH_SOURCES_ARG);
-    float n7 = baked_w3(pn + 0.8f * offset, 240.0f, 7, q.lod MARCH_SOURCES_ARG);
-    float n8 = baked_g3(pn + 8.0f * offset, 288.0f, 8, q.lod MARCH_SOURCES_ARG);
-    float n9 = baked_g3(pn + 8.0f * offset, 384.0f, 9, q.lod MARCH_SOURCES_ARG);
+    float n6 = baked_w3(pn + 4.0f * offset, 160.0f, 6, q.lod, noise_volume);
+    float n7 = baked_w3(pn + 0.8f * offset, 240.0f, 7, q.lod, noise_volume);
+    float n8 = baked_g3(pn + 8.0f * offset, 288.0f, 8, q.lod, noise_volume);
+    float n9 = baked_g3(pn + 8.0f * offset, 384.0f, 9, q.lod, noise_volume);
     return cumulus_delta(n6, n7, n8, n9);
   }
-  float n2 = baked_g3(pn + 8.0f * offset, 96.0f, 12, q.lod MARCH_SOURCES_ARG);
-  float n3 = baked_w3(pn + 8.0f * offset, 400.0f, 13, q.lod MARCH_SOURCES_ARG);
+  float n2 = baked_g3(pn + 8.0f * offset, 96.0f, 12, q.lod, noise_volume);
+  float n3 = baked_w3(pn + 8.0f * offset, 400.0f, 13, q.lod, noise_volume);
   return alto_delta(k, n2, n3);
 }
 
 // footprint: the length one sample stands for (the pixel's width at that distance, or the step),
 // which picks the noise volume's mip level so that distant clouds do not alias into speckle.
 // fields: WEBANCK_BOUND, _LIGHT or _FULL, how much of the Webanck types' shape to read.
-ShapeSample shape_at(vec3 p, vec3 centre, int layer, float footprint, int fields, IN(MarchParams) m MARCH_SOURCES_PARAM) {
+ShapeSample shape_at(vec3 p, vec3 centre, int layer, float footprint, int fields, IN(MarchParams) m,
+                     IN(NoiseVolume) noise_volume, IN(WeatherField) weather_field) {
   LayerParams l = m.layers[layer];
   ShapeSample q;
   float altitude = length(p - centre) - m.earth_radius;
   q.h = (altitude - l.base) / (l.top - l.base);
-  q.c = coverage_at(p, l.channel, m MARCH_SOURCES_ARG);
+  q.c = coverage_at(p, l.channel, m, weather_field);
   q.shape = 0.0f;
   q.detail = 0.0f;
   q.lod = 0.0f;
@@ -160,7 +159,7 @@ ShapeSample shape_at(vec3 p, vec3 centre, int layer, float footprint, int fields
     // p_n in the wind's frame; tau in units of p_n (the base field n2 drifts with the wind).
     q.coordinates = webanck_position(vec3(vec2(p), altitude), l.wind);
     q.lod = log2(max(footprint * (m.noise_texels / (BAKED_CELLS * 108000.0f)), 1.0e-30f));
-    webanck_shape(q, l.type, 1.0f - l.morph, l.noise_offset.x / 108000.0f, fields MARCH_SOURCES_ARG);
+    webanck_shape(q, l.type, 1.0f - l.morph, l.noise_offset.x / 108000.0f, fields, noise_volume);
     return q;
   }
   // Noise coordinates in the wind's frame, moved by the wind's offset (tau).
@@ -169,12 +168,12 @@ ShapeSample shape_at(vec3 p, vec3 centre, int layer, float footprint, int fields
   q.coordinates = vec3(along_across / period, altitude / period.y);
   float texel = period.x / m.noise_texels;
   q.lod = log2(max(footprint / texel, 1.0f));
-  vec2 noise = vec2(NOISE_LOD(q.coordinates, q.lod));
+  vec2 noise = vec2(textureLod(noise_volume, q.coordinates, q.lod));
   // A second lookup at an incommensurate, rotated scale (7.3 periods) breaks the volume's tiling,
   // which would otherwise line distant clouds up in a regular array.
   vec3 x = q.coordinates;
   vec3 macro_coordinates = vec3(0.0822f * x.x + 0.0548f * x.y, -0.0548f * x.x + 0.0822f * x.y, 0.1371f * x.z + 0.37f);
-  float macro = NOISE_LOD(macro_coordinates, max(q.lod - 3.0f, 0.0f)).x;
+  float macro = textureLod(noise_volume, macro_coordinates, max(q.lod - 3.0f, 0.0f)).x;
   q.shape = uniform_from_mix(mix(noise.x, macro, 0.4f), 0.4f);
   q.detail = noise.y;
   return q;
@@ -189,34 +188,40 @@ float extinction_bound(int layer, IN(ShapeSample) q, IN(MarchParams) m) {
   return l.extinction * cloud_density(l.type, q.h, q.c, q.shape, 1.0f);
 }
 
-float extinction_bound_at(vec3 p, vec3 centre, int layer, float footprint, IN(MarchParams) m MARCH_SOURCES_PARAM) {
-  return extinction_bound(layer, shape_at(p, centre, layer, footprint, WEBANCK_BOUND, m MARCH_SOURCES_ARG), m);
+float extinction_bound_at(vec3 p, vec3 centre, int layer, float footprint, IN(MarchParams) m,
+                          IN(NoiseVolume) noise_volume, IN(WeatherField) weather_field) {
+  return extinction_bound(layer, shape_at(p, centre, layer, footprint, WEBANCK_BOUND, m, noise_volume, weather_field),
+                          m);
 }
 
 // Extinction (1/m) of a layer at p. fine: also read the detail noise (the light march does
 // without it).
-float density_at(vec3 p, vec3 centre, int layer, float footprint, bool fine, IN(MarchParams) m MARCH_SOURCES_PARAM) {
+float density_at(vec3 p, vec3 centre, int layer, float footprint, bool fine, IN(MarchParams) m,
+                 IN(NoiseVolume) noise_volume, IN(WeatherField) weather_field) {
   LayerParams l = m.layers[layer];
-  ShapeSample q = shape_at(p, centre, layer, footprint, fine ? WEBANCK_FULL : WEBANCK_LIGHT, m MARCH_SOURCES_ARG);
+  ShapeSample q = shape_at(p, centre, layer, footprint, fine ? WEBANCK_FULL : WEBANCK_LIGHT, m, noise_volume,
+                           weather_field);
   // Where even the bound is zero (most of the sky) the detail lookup is skipped.
   if (extinction_bound(layer, q, m) <= 0.0f) return 0.0f;
   if (webanck_type(l.type)) {
     // The light march subtracts delta's mean instead of reading the detail fields.
-    float delta = fine ? webanck_detail(q, l.type, 1.0f - l.morph, l.noise_offset.x / 108000.0f MARCH_SOURCES_ARG) : q.detail;
+    float delta = fine ? webanck_detail(q, l.type, 1.0f - l.morph, l.noise_offset.x / 108000.0f,
+                                        noise_volume) : q.detail;
     return l.extinction * max(q.shape - delta, 0.0f) * q.gate;
   }
-  float detail = fine ? NOISE_LOD(q.coordinates * 4.0f, q.lod + 2.0f).y : q.detail;
+  float detail = fine ? textureLod(noise_volume, q.coordinates * 4.0f, q.lod + 2.0f).y : q.detail;
   return l.extinction * cloud_density(l.type, q.h, q.c, q.shape, mix(q.detail, detail, 0.5f));
 }
 
 // Optical depth from p towards the sun within the same layer (the layers wholly above it: higher_layers_depth).
-float optical_depth_to_sun(vec3 p, vec3 centre, int layer, IN(MarchParams) m MARCH_SOURCES_PARAM) {
+float optical_depth_to_sun(vec3 p, vec3 centre, int layer, IN(MarchParams) m, IN(NoiseVolume) noise_volume,
+                           IN(WeatherField) weather_field) {
   LayerParams l = m.layers[layer];
   float length_to_exit = min((l.top - l.base) / max(m.sun.z, 0.15f), 4000.0f);
   float tau = 0.0f;
   for (int i = 0; i < m.light_steps; ++i) {
     vec2 s = light_sample(i, m.light_steps, length_to_exit);  // (distance, step), quadratic
-    tau += density_at(p + s.x * m.sun, centre, layer, s.y, false, m MARCH_SOURCES_ARG) * s.y;
+    tau += density_at(p + s.x * m.sun, centre, layer, s.y, false, m, noise_volume, weather_field) * s.y;
   }
   return tau;
 }
@@ -233,16 +238,27 @@ vec3 convective_coordinates(vec3 p, vec3 centre, int c, IN(MarchParams) m) {
   vec2 offset = vec2(p) - v.centre;
   vec2 side = vec2(-v.axis.y, v.axis.x);
   float altitude = length(p - centre) - m.earth_radius;
-  return vec3(dot(offset, v.axis) / v.extent + 0.5f, dot(offset, side) / v.extent + 0.5f, (altitude - v.bottom) / v.extent);
+  return vec3(dot(offset, v.axis) / v.extent + 0.5f, dot(offset, side) / v.extent + 0.5f,
+              (altitude - v.bottom) / v.extent);
 }
 
 bool in_unit_cube(vec3 q) {
   return q.x >= 0.0f && q.x <= 1.0f && q.y >= 0.0f && q.y <= 1.0f && q.z >= 0.0f && q.z <= 1.0f;
 }
 
+// The density of convective cloud `cloud` at q in [0, 1]^3, trilinear, clamped to the edge of
+// its own volume: volume c lies in the z-layers [c N, (c + 1) N) of the stack (N^3 each), and z
+// is clamped to its own texel centres so that no sample blends two volumes.
+float convective_density(IN(ConvectiveVolumes) convective_volumes, vec3 q, int cloud) {
+  ivec3 size = textureSize(convective_volumes, 0);
+  float n = float(size.x);
+  float z = (float(cloud) * n + clamp(q.z * n, 0.5f, n - 0.5f)) / float(size.z);
+  return texture(convective_volumes, vec3(q.x, q.y, z)).x;
+}
+
 // The extinction (1/m) of the convective clouds at p (x) and the height fraction, 0 at the
 // base and 1 at the top, of the cloud that holds most of it (y; the ambient light's height).
-vec2 convective_at(vec3 p, vec3 centre, IN(MarchParams) m MARCH_SOURCES_PARAM) {
+vec2 convective_at(vec3 p, vec3 centre, IN(MarchParams) m, IN(ConvectiveVolumes) convective_volumes) {
   float sigma = 0.0f;
   float h = 0.0f;
   float strongest = 0.0f;
@@ -250,7 +266,7 @@ vec2 convective_at(vec3 p, vec3 centre, IN(MarchParams) m MARCH_SOURCES_PARAM) {
     vec3 q = convective_coordinates(p, centre, c, m);
     if (!in_unit_cube(q)) continue;  // the box test before the texture
     ConvectiveParams v = m.convective[c];
-    float s = v.extinction * CONVECTIVE_DENSITY(q, c);
+    float s = v.extinction * convective_density(convective_volumes, q, c);
     sigma += s;
     if (s > strongest) {
       strongest = s;
@@ -304,27 +320,28 @@ const float CONVECTIVE_LIGHT_REACH = 20000.0f;
 
 // Optical depth from p towards the sun through the convective clouds, samples spaced as the
 // layers' light march (light_sample) up to where the last box along the sun ends.
-float convective_depth_to_sun(vec3 p, vec3 centre, IN(MarchParams) m MARCH_SOURCES_PARAM) {
+float convective_depth_to_sun(vec3 p, vec3 centre, IN(MarchParams) m, IN(ConvectiveVolumes) convective_volumes) {
   vec2 span = convective_span(p, m.sun, centre, CONVECTIVE_LIGHT_REACH, m);
   float tau = 0.0f;
   if (span.x >= span.y) return tau;
   for (int i = 0; i < m.light_steps; ++i) {
     vec2 s = light_sample(i, m.light_steps, span.y);
-    tau += convective_at(p + s.x * m.sun, centre, m MARCH_SOURCES_ARG).x * s.y;
+    tau += convective_at(p + s.x * m.sun, centre, m, convective_volumes).x * s.y;
   }
   return tau;
 }
 
 // The convective clouds' share of a ground point's shadow: 2 SHADOW_STEPS midpoint samples
 // where the sun ray crosses their boxes.
-float convective_shadow_depth(vec3 p, vec3 centre, INOUT(int) loop_count, IN(MarchParams) m MARCH_SOURCES_PARAM) {
+float convective_shadow_depth(vec3 p, vec3 centre, INOUT(int) loop_count, IN(MarchParams) m,
+                              IN(ConvectiveVolumes) convective_volumes) {
   loop_count += m.convective_count;
   vec2 span = convective_span(p, m.sun, centre, m.max_distance, m);
   float tau = 0.0f;
   if (span.x >= span.y) return tau;
   float ds = (span.y - span.x) / float(2 * SHADOW_STEPS);
   for (int i = 0; i < 2 * SHADOW_STEPS; ++i)
-    tau += convective_at(p + (span.x + (float(i) + 0.5f) * ds) * m.sun, centre, m MARCH_SOURCES_ARG).x * ds;
+    tau += convective_at(p + (span.x + (float(i) + 0.5f) * ds) * m.sun, centre, m, convective_volumes).x * ds;
   loop_count += 2 * SHADOW_STEPS * (1 + m.convective_count);
   return tau;
 }
@@ -339,7 +356,7 @@ const float CONVECTIVE_ALBEDO = 0.99f;
 // below replace that.) SHADOW_STEPS midpoint samples of the light march's density per interval;
 // counts its loop iterations into loop_count.
 float layers_shadow_depth(vec3 p, vec3 centre, int skip, float min_base, INOUT(int) loop_count,
-                          IN(MarchParams) m MARCH_SOURCES_PARAM) {
+                          IN(MarchParams) m, IN(NoiseVolume) noise_volume, IN(WeatherField) weather_field) {
   float tau = 0.0f;
   loop_count += m.layer_count;  // every iteration of the layer loop counts towards the limit
   for (int layer = 0; layer < m.layer_count; ++layer) {
@@ -353,7 +370,8 @@ float layers_shadow_depth(vec3 p, vec3 centre, int skip, float min_base, INOUT(i
       if (a >= b) continue;
       float ds = (b - a) / float(SHADOW_STEPS);
       for (int i = 0; i < SHADOW_STEPS; ++i) {
-        tau += density_at(p + (a + (float(i) + 0.5f) * ds) * m.sun, centre, layer, ds, false, m MARCH_SOURCES_ARG) * ds;
+        tau += density_at(p + (a + (float(i) + 0.5f) * ds) * m.sun, centre, layer, ds, false, m, noise_volume,
+                          weather_field) * ds;
       }
       loop_count += SHADOW_STEPS;
     }
@@ -363,9 +381,10 @@ float layers_shadow_depth(vec3 p, vec3 centre, int skip, float min_base, INOUT(i
 
 // The same plus the convective clouds' (all of them, whatever their altitude).
 float shadow_depth(vec3 p, vec3 centre, int skip, float min_base, INOUT(int) loop_count,
-                   IN(MarchParams) m MARCH_SOURCES_PARAM) {
-  float layers = layers_shadow_depth(p, centre, skip, min_base, loop_count, m MARCH_SOURCES_ARG);
-  return layers + convective_shadow_depth(p, centre, loop_count, m MARCH_SOURCES_ARG);
+                   IN(MarchParams) m, IN(NoiseVolume) noise_volume, IN(WeatherField) weather_field,
+                   IN(ConvectiveVolumes) convective_volumes) {
+  float layers = layers_shadow_depth(p, centre, skip, min_base, loop_count, m, noise_volume, weather_field);
+  return layers + convective_shadow_depth(p, centre, loop_count, m, convective_volumes);
 }
 
 // ---- Shadows of higher layers on lower ones (docs/rendering.md, "Shadows between layers") ----
@@ -389,13 +408,15 @@ vec3 shadow_map_origin(vec2 xy, vec3 centre, float altitude, IN(MarchParams) m) 
 // the layers wholly above `layer` from the top shell's point there; the map spans
 // [-shadow_extent, shadow_extent]^2 of the tangent plane. Layer -1: the sky's map, the depth
 // through every layer and convective cloud from the shell of the lowest base (sky_sun_visibility).
-float shadow_map_texel(vec2 uv, vec3 centre, int layer, INOUT(int) loop_count, IN(MarchParams) m MARCH_SOURCES_PARAM) {
+float shadow_map_texel(vec2 uv, vec3 centre, int layer, INOUT(int) loop_count, IN(MarchParams) m,
+                       IN(NoiseVolume) noise_volume, IN(WeatherField) weather_field,
+                       IN(ConvectiveVolumes) convective_volumes) {
   if (layer < 0) {
     vec3 q = shadow_map_origin((2.0f * uv - 1.0f) * m.shadow_extent, centre, m.sky_shadow_base, m);
-    return shadow_depth(q, centre, -1, -1.0e30f, loop_count, m MARCH_SOURCES_ARG);
+    return shadow_depth(q, centre, -1, -1.0e30f, loop_count, m, noise_volume, weather_field, convective_volumes);
   }
   vec3 q = shadow_map_origin((2.0f * uv - 1.0f) * m.shadow_extent, centre, m.layers[layer].top, m);
-  return layers_shadow_depth(q, centre, layer, m.layers[layer].top, loop_count, m MARCH_SOURCES_ARG);
+  return layers_shadow_depth(q, centre, layer, m.layers[layer].top, loop_count, m, noise_volume, weather_field);
 }
 
 // Where the sun ray from p (below the shell at `altitude`) leaves that shell, as the map's
@@ -408,10 +429,10 @@ vec2 shadow_map_uv(vec3 p, vec3 centre, float altitude, IN(MarchParams) m) {
 
 // The optical depth from p (in layer `layer`) towards the sun through the layers wholly above
 // it, from its shadow map; 0 where the layer has none.
-float higher_layers_depth(vec3 p, vec3 centre, int layer, IN(MarchParams) m MARCH_SOURCES_PARAM) {
+float higher_layers_depth(vec3 p, vec3 centre, int layer, IN(MarchParams) m, IN(ShadowMaps) layer_shadows) {
   int map = m.layers[layer].shadow_map;
   if (map < 0) return 0.0f;
-  return LAYER_SHADOW(shadow_map_uv(p, centre, m.layers[layer].top, m), map);
+  return texture(layer_shadows, vec3(shadow_map_uv(p, centre, m.layers[layer].top, m), float(map))).x;
 }
 
 // ---- Crepuscular rays (docs/rendering.md) ----
@@ -421,11 +442,11 @@ float higher_layers_depth(vec3 p, vec3 centre, int layer, IN(MarchParams) m MARC
 // kilometres apart), so that the air in the clouds' shadows scatters less sunlight: shafts of
 // light and shadow; 1 above the lowest base (within the layers the clouds themselves hide most
 // of that air), outside the map (no cloud is marched beyond max_distance) and without a map.
-float sky_sun_visibility(vec3 p, vec3 centre, IN(MarchParams) m MARCH_SOURCES_PARAM) {
+float sky_sun_visibility(vec3 p, vec3 centre, IN(MarchParams) m, IN(ShadowMaps) sky_shadow) {
   if (m.sky_shadow_map < 0 || length(p - centre) >= m.earth_radius + m.sky_shadow_base) return 1.0f;
   vec2 uv = shadow_map_uv(p, centre, m.sky_shadow_base, m);
   if (uv.x < 0.0f || uv.y < 0.0f || uv.x > 1.0f || uv.y > 1.0f) return 1.0f;
-  return exp(-SKY_SHADOW(uv));
+  return exp(-texture(sky_shadow, vec3(uv, 0.0f)).x);
 }
 
 // The intervals of a view ray inside each layer, in order of distance (start, end in .x, .y):
@@ -487,7 +508,9 @@ float march_jitter(ivec2 pixel, int frame) {
 // `convective`, the convective clouds' (where the stretch lies in their boxes). jitter in [0, 1):
 // the offset of the samples within their steps; nu = cos(angle between d and the sun).
 void march_interval(float a, float b, int layer, bool convective, vec3 d, vec3 centre, float jitter, float nu,
-                    INOUT(CloudMarch) result, IN(MarchParams) m MARCH_SOURCES_PARAM) {
+                    INOUT(CloudMarch) result, IN(MarchParams) m, IN(NoiseVolume) noise_volume,
+                    IN(WeatherField) weather_field, IN(ConvectiveVolumes) convective_volumes,
+                    IN(ShadowMaps) layer_shadows) {
   vec3 origin_from_centre = -centre;
   LayerParams l = m.layers[max(layer, 0)];
   // Samples spaced quadratically: s_i = a + (b - a) t_i^2 puts short steps near the start of
@@ -512,7 +535,8 @@ void march_interval(float a, float b, int layer, bool convective, vec3 d, vec3 c
     float t = (float(i) + jitter) / n;
     float s = a + (b - a) * t * t;
     float coarse = (b - a) * (t1 * t1 - t0 * t0);
-    bool cloudy = layer >= 0 && extinction_bound_at(s * d, centre, layer, max(coarse, s * m.pixel_angle), m MARCH_SOURCES_ARG) > 0.0f;
+    bool cloudy = layer >= 0 && extinction_bound_at(s * d, centre, layer, max(coarse, s * m.pixel_angle), m,
+                                                    noise_volume, weather_field) > 0.0f;
     if (convective) {
       cloudy = true;  // the whole stretch lies in the convective span
       result.loop_count += m.convective_count;
@@ -527,22 +551,26 @@ void march_interval(float a, float b, int layer, bool convective, vec3 d, vec3 c
       float ds = (b - a) * (u1 * u1 - u0 * u0);
       result.loop_count += 1;
       vec3 p = sj * d;
-      float sigma_layer = layer >= 0 ? density_at(p, centre, layer, max(ds, sj * m.pixel_angle), true, m MARCH_SOURCES_ARG) : 0.0f;
+      float sigma_layer = layer >= 0 ? density_at(p, centre, layer, max(ds, sj * m.pixel_angle), true, m,
+                                                  noise_volume, weather_field) : 0.0f;
       vec2 cloud = vec2(0.0f);
       if (convective) {
-        cloud = convective_at(p, centre, m MARCH_SOURCES_ARG);
+        cloud = convective_at(p, centre, m, convective_volumes);
         result.loop_count += m.convective_count;
       }
       float sigma = sigma_layer + cloud.x;
       if (sigma <= 0.0f) continue;
-      float h = layer >= 0 ? clamp((length(p - centre) - m.earth_radius - l.base) / (l.top - l.base), 0.0f, 1.0f) : cloud.y;
+      float h = layer >= 0 ? clamp((length(p - centre) - m.earth_radius - l.base) / (l.top - l.base), 0.0f,
+                                   1.0f) : cloud.y;
       if (layer >= 0 && cloud.x > 0.0f) h = (h * sigma_layer + cloud.y * cloud.x) / sigma;
       float tau = 0.0f;
       if (m.light_steps > 0) {
         // Its own layer's depth by the light march, the layers above it from their map.
-        if (layer >= 0) tau = optical_depth_to_sun(p, centre, layer, m MARCH_SOURCES_ARG) + higher_layers_depth(p, centre, layer, m MARCH_SOURCES_ARG);
+        if (layer >= 0) tau = optical_depth_to_sun(p, centre, layer, m, noise_volume,
+                                                   weather_field) + higher_layers_depth(p, centre, layer, m,
+            layer_shadows);
         if (convective) {
-          tau += convective_depth_to_sun(p, centre, m MARCH_SOURCES_ARG);
+          tau += convective_depth_to_sun(p, centre, m, convective_volumes);
           result.loop_count += m.light_steps * (1 + m.convective_count) + 2 * m.convective_count;
         }
       }
@@ -568,7 +596,9 @@ void march_interval(float a, float b, int layer, bool convective, vec3 d, vec3 c
 // convective density added: with the first layer interval that holds them (the density is then
 // the sum of both, so clouds that share space are composited in depth), or, where no layer
 // interval does, alone.
-CloudMarch march_clouds(vec3 d, vec3 centre, float cloud_limit, float jitter, IN(MarchParams) m MARCH_SOURCES_PARAM) {
+CloudMarch march_clouds(vec3 d, vec3 centre, float cloud_limit, float jitter, IN(MarchParams) m,
+                        IN(NoiseVolume) noise_volume, IN(WeatherField) weather_field,
+                        IN(ConvectiveVolumes) convective_volumes, IN(ShadowMaps) layer_shadows) {
   RayIntervals intervals = layer_intervals(d, centre, cloud_limit, m);
   float nu = dot(d, m.sun);
   CloudMarch result;
@@ -587,18 +617,23 @@ CloudMarch march_clouds(vec3 d, vec3 centre, float cloud_limit, float jitter, IN
     int layer = last ? -1 : intervals.layer[k];
     // The span before this interval that no layer interval holds: the convective clouds alone.
     float gap_end = min(a, span.y);
-    if (covered < gap_end) march_interval(covered, gap_end, -1, true, d, centre, jitter, nu, result, m MARCH_SOURCES_ARG);
+    if (covered < gap_end) march_interval(covered, gap_end, -1, true, d, centre, jitter, nu, result, m, noise_volume,
+                                          weather_field, convective_volumes, layer_shadows);
     covered = max(covered, gap_end);
     if (last) break;
     float c0 = max(a, covered);
     float c1 = min(b, span.y);
     if (c0 >= c1) {
-      march_interval(a, b, layer, false, d, centre, jitter, nu, result, m MARCH_SOURCES_ARG);
+      march_interval(a, b, layer, false, d, centre, jitter, nu, result, m, noise_volume, weather_field,
+                     convective_volumes, layer_shadows);
       continue;
     }
-    if (a < c0) march_interval(a, c0, layer, false, d, centre, jitter, nu, result, m MARCH_SOURCES_ARG);
-    march_interval(c0, c1, layer, true, d, centre, jitter, nu, result, m MARCH_SOURCES_ARG);
-    if (c1 < b) march_interval(c1, b, layer, false, d, centre, jitter, nu, result, m MARCH_SOURCES_ARG);
+    if (a < c0) march_interval(a, c0, layer, false, d, centre, jitter, nu, result, m, noise_volume, weather_field,
+                               convective_volumes, layer_shadows);
+    march_interval(c0, c1, layer, true, d, centre, jitter, nu, result, m, noise_volume, weather_field,
+                   convective_volumes, layer_shadows);
+    if (c1 < b) march_interval(c1, b, layer, false, d, centre, jitter, nu, result, m, noise_volume, weather_field,
+                               convective_volumes, layer_shadows);
     covered = c1;
   }
   result.distance = result.weight > 0.0f ? result.distance / result.weight : 0.0f;
@@ -609,24 +644,27 @@ CloudMarch march_clouds(vec3 d, vec3 centre, float cloud_limit, float jitter, IN
 // where it meets no ground before y, the distance to the top of the atmosphere. loops: the
 // terrain march's iterations. render_pixel ends its march there, and the upsampling of a render
 // at reduced resolution takes x at every full-size pixel as its guide (render/view_depth.comp).
-vec2 view_ray_end(vec3 d, IN(MarchParams) m, OUT(int) loops MARCH_SOURCES_PARAM) {
+vec2 view_ray_end(vec3 d, IN(MarchParams) m, OUT(int) loops, IN(TerrainTexture) terrain_heights) {
   vec3 centre = vec3(0.0f, 0.0f, -(m.earth_radius + m.camera_altitude));
   vec2 top = ray_sphere(vec3(0.0f), d, centre, m.earth_radius + ATMOSPHERE_THICKNESS);
-  float ground = terrain_hit(-centre, d, m.earth_radius, max(top.y, 0.0f), m.terrain, loops MARCH_TERRAIN_ARG);
+  float ground = terrain_hit(-centre, d, m.earth_radius, max(top.y, 0.0f), m.terrain, loops, terrain_heights);
   return vec2(ground > 0.0f ? ground : -1.0f, max(top.y, 0.0f));
 }
 
 // The pixel's radiance (RGB, linear) and cloud opacity (A): the clouds composited into the
 // clear sky and the ground. loop_count: the iterations its loops took, sky and ground included;
 // ground_distance: view_ray_end's x (the guide of the upsampling, render/upsample.hpp).
-vec4 render_pixel(ivec2 pixel, ivec2 size, IN(MarchParams) m, OUT(int) loop_count, OUT(float) ground_distance MARCH_SOURCES_PARAM) {
+vec4 render_pixel(ivec2 pixel, ivec2 size, IN(MarchParams) m, OUT(int) loop_count, OUT(float) ground_distance,
+                  IN(NoiseVolume) noise_volume, IN(WeatherField) weather_field, IN(TerrainTexture) terrain_heights,
+                  IN(ConvectiveVolumes) convective_volumes, IN(ShadowMaps) layer_shadows,
+                  IN(ShadowMaps) sky_shadow) {
   vec3 d = view_direction(pixel, size, m);
   vec3 centre = vec3(0.0f, 0.0f, -(m.earth_radius + m.camera_altitude));
   vec3 origin_from_centre = -centre;
 
   // The ray ends at the ground (terrain.glsl) or at the top of the atmosphere.
   int ground_loops = 0;
-  vec2 end = view_ray_end(d, m, ground_loops MARCH_SOURCES_ARG);
+  vec2 end = view_ray_end(d, m, ground_loops, terrain_heights);
   bool hits_ground = end.x > 0.0f;
   ground_distance = end.x;
   float ray_end = hits_ground ? end.x : end.y;
@@ -635,7 +673,8 @@ vec4 render_pixel(ivec2 pixel, ivec2 size, IN(MarchParams) m, OUT(int) loop_coun
   // A per-pixel offset of the samples trades banding for noise; each frame of an accumulation
   // moves it on by the golden ratio, so N frames spread every pixel's offsets evenly.
   float jitter = march_jitter(pixel, m.frame);
-  CloudMarch clouds = march_clouds(d, centre, cloud_limit, jitter, m MARCH_SOURCES_ARG);
+  CloudMarch clouds = march_clouds(d, centre, cloud_limit, jitter, m, noise_volume, weather_field, convective_volumes,
+                                   layer_shadows);
   // The sky's loops (a sun transmittance per step) and the ground's.
   loop_count = clouds.loop_count + 17 * m.sky_steps + 16 + ground_loops;
 
@@ -645,21 +684,23 @@ vec4 render_pixel(ivec2 pixel, ivec2 size, IN(MarchParams) m, OUT(int) loop_coun
   SkyIntegral sky = sky_integral_begin(d, ray_end, clouds.distance, m.sun, m.sky_steps);
   for (int i = 0; i < m.sky_steps; ++i) {
     vec3 q = sky_integral_point(sky, origin_from_centre, d, i);
-    sky_integral_step(sky, q, i, m.sun, m.earth_radius, sky_sun_visibility(q + centre, centre, m MARCH_SOURCES_ARG));
+    sky_integral_step(sky, q, i, m.sun, m.earth_radius, sky_sun_visibility(q + centre, centre, m, sky_shadow));
   }
   sky_integral_end(sky, inscatter_total, inscatter_split, transmittance_total, transmittance_split);
   vec3 background = vec3(0.0f);
   if (hits_ground) {
     // Lambertian ground (terrain.glsl's albedo), lit by the sun and the sky.
     vec3 point = origin_from_centre + ray_end * d;
-    vec3 normal = terrain_normal(point, m.earth_radius, m.terrain MARCH_TERRAIN_ARG);
-    vec3 albedo = m.terrain.enabled != 0 ? terrain_albedo(length(point) - m.earth_radius, normal, normalize(point)) : vec3(0.15f);
+    vec3 normal = terrain_normal(point, m.earth_radius, m.terrain, terrain_heights);
+    vec3 albedo = m.terrain.enabled != 0 ? terrain_albedo(length(point) - m.earth_radius, normal,
+                                                          normalize(point)) : vec3(0.15f);
     int shadow_loops = 0;
-    float sunlit = terrain_sunlit(point, normal, m.sun, m.earth_radius, m.terrain, shadow_loops MARCH_TERRAIN_ARG);
+    float sunlit = terrain_sunlit(point, normal, m.sun, m.earth_radius, m.terrain, shadow_loops, terrain_heights);
     loop_count += shadow_loops;
     // The clouds' shadows: every layer between the ground and the sun.
     int cloud_shadow_loops = 0;
-    float shadow = exp(-shadow_depth(ray_end * d, centre, -1, -1.0e30f, cloud_shadow_loops, m MARCH_SOURCES_ARG));
+    float shadow = exp(-shadow_depth(ray_end * d, centre, -1, -1.0e30f, cloud_shadow_loops, m, noise_volume,
+                                     weather_field, convective_volumes));
     loop_count += cloud_shadow_loops;
     vec3 sun_at_ground = solar_irradiance() * transmittance_to_space(point, m.sun, m.earth_radius) *
                          (sunlit * shadow * max(dot(normal, m.sun), 0.0f));

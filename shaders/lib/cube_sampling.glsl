@@ -1,10 +1,7 @@
 // Bilinear sampling of a cube map by direction, seamless across face edges, written out
 // instead of using the texture unit so that every driver and the C++ twin give the same
-// result. The including file defines:
-//   CUBE_SOURCE_PARAM   extra trailing parameter(s) naming the source (empty in GLSL)
-//   CUBE_SOURCE_ARG     the matching argument(s) (empty in GLSL)
-//   CUBE_FETCH(face, i, j)  the texel as vec4
-//   CUBE_SIZE           texels per face edge
+// result. The cube map is a CubeImage parameter (prelude.glsl; in C++ a CubeSource), read with
+// imageLoad(source, ivec3(i, j, face)) and imageSize(source).x texels per face edge.
 #ifndef NEPHELE_CUBE_SAMPLING_GLSL
 #define NEPHELE_CUBE_SAMPLING_GLSL
 #include "prelude.glsl"
@@ -15,9 +12,9 @@
 // meet along the shared edge, so the point a quarter texel beyond the edge at the texel's
 // along-edge centre falls inside exactly that texel. At a cube corner (i and j both outside)
 // there is no fourth texel; one of the two other faces' corner texels stands in.
-vec4 cube_texel_extended(int face, int i, int j CUBE_SOURCE_PARAM) {
-  int size = CUBE_SIZE;
-  if (i >= 0 && i < size && j >= 0 && j < size) return CUBE_FETCH(face, i, j);
+vec4 cube_texel_extended(int face, int i, int j, CubeImage source) {
+  int size = imageSize(source).x;
+  if (i >= 0 && i < size && j >= 0 && j < size) return imageLoad(source, ivec3(i, j, face));
   float beyond = 1.0f + 0.5f / float(size);
   float sc = i < 0 ? -beyond : (i >= size ? beyond : (2.0f * (float(i) + 0.5f)) / float(size) - 1.0f);
   float tc = j < 0 ? -beyond : (j >= size ? beyond : (2.0f * (float(j) + 0.5f)) / float(size) - 1.0f);
@@ -26,11 +23,11 @@ vec4 cube_texel_extended(int face, int i, int j CUBE_SOURCE_PARAM) {
   vec2 st = 0.5f * cube_face_coords(other, r) + 0.5f;
   int oi = clamp(int(floor(st.x * float(size))), 0, size - 1);
   int oj = clamp(int(floor(st.y * float(size))), 0, size - 1);
-  return CUBE_FETCH(other, oi, oj);
+  return imageLoad(source, ivec3(oi, oj, other));
 }
 
-vec4 sample_cube_bilinear(vec3 direction CUBE_SOURCE_PARAM) {
-  int size = CUBE_SIZE;
+vec4 sample_cube_bilinear(vec3 direction, CubeImage source) {
+  int size = imageSize(source).x;
   int face = cube_face_of(direction);
   vec2 st = 0.5f * cube_face_coords(face, direction) + 0.5f;
   float u = st.x * float(size) - 0.5f;
@@ -41,10 +38,10 @@ vec4 sample_cube_bilinear(vec3 direction CUBE_SOURCE_PARAM) {
   float fv = v - v0;
   int i = int(u0);
   int j = int(v0);
-  vec4 a = cube_texel_extended(face, i, j CUBE_SOURCE_ARG);
-  vec4 b = cube_texel_extended(face, i + 1, j CUBE_SOURCE_ARG);
-  vec4 c = cube_texel_extended(face, i, j + 1 CUBE_SOURCE_ARG);
-  vec4 d = cube_texel_extended(face, i + 1, j + 1 CUBE_SOURCE_ARG);
+  vec4 a = cube_texel_extended(face, i, j, source);
+  vec4 b = cube_texel_extended(face, i + 1, j, source);
+  vec4 c = cube_texel_extended(face, i, j + 1, source);
+  vec4 d = cube_texel_extended(face, i + 1, j + 1, source);
   return mix(mix(a, b, fu), mix(c, d, fu), fv);
 }
 

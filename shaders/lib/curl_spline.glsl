@@ -14,12 +14,9 @@
 // B-spline with the samples as coefficients. The prefilter reads one more sample beyond each
 // node, so the samples have a margin of SPLINE_MARGIN + 1.
 //
-// The including file defines:
-//   SPLINE_SOURCE_PARAM  extra trailing parameter(s) naming the coefficient grid (empty in GLSL)
-//   SPLINE_SOURCE_ARG    the matching argument(s) (empty in GLSL)
-//   SPLINE_FETCH(face, i, j)  coefficient (i, j) of `face` as vec4, 0 <= i, j < cells + 2 SPLINE_MARGIN
-//                        (index i is node i - SPLINE_MARGIN)
-//   SPLINE_CELLS         nodes per face edge inside the face (the `curl_size` parameter)
+// The coefficient grid is a SplineImage parameter (prelude.glsl; in C++ a SplineSource): layer
+// `face`, (cells + 2 SPLINE_MARGIN)^2 coefficients, index i being node i - SPLINE_MARGIN, where
+// cells is the `curl_size` parameter (nodes per face edge inside the face).
 #ifndef NEPHELE_CURL_SPLINE_GLSL
 #define NEPHELE_CURL_SPLINE_GLSL
 #include "prelude.glsl"
@@ -56,17 +53,18 @@ vec4 prefilter_cubic_bspline(vec4 previous, vec4 centre, vec4 next) {
 }
 
 // One row of the 4 x 4 coefficients, weighted along x: coefficients (i .. i + 3, j) of `face`.
-vec4 curl_spline_row(int face, int i, int j, vec4 wx SPLINE_SOURCE_PARAM) {
-  return wx.x * SPLINE_FETCH(face, i, j) + wx.y * SPLINE_FETCH(face, i + 1, j) + wx.z * SPLINE_FETCH(face, i + 2, j) +
-         wx.w * SPLINE_FETCH(face, i + 3, j);
+vec4 curl_spline_row(int face, int i, int j, vec4 wx, SplineImage spline) {
+  return wx.x * imageLoad(spline, ivec3(i, j, face)) + wx.y * imageLoad(spline, ivec3(i + 1, j,
+      face)) + wx.z * imageLoad(spline, ivec3(i + 2, j, face)) +
+         wx.w * imageLoad(spline, ivec3(i + 3, j, face));
 }
 
 // The spline of the curl grid at the unit direction w (xyz; w: the cyclonic depth, which the
 // grid carries along, curl_flow.glsl): a sum of 16 coefficients of w's face,
 // written without a loop (llvmpipe counts every loop iteration against a per-invocation limit;
 // docs/numerics.md, "llvmpipe's loop limit").
-vec4 sample_curl_spline(vec3 w SPLINE_SOURCE_PARAM) {
-  int cells = SPLINE_CELLS;
+vec4 sample_curl_spline(vec3 w, SplineImage spline) {
+  int cells = imageSize(spline).x - 2 * SPLINE_MARGIN;
   int face = cube_face_of(w);
   vec2 st = 0.5f * cube_face_coords(face, w) + 0.5f;
   float x = st.x * float(cells) - 0.5f;
@@ -78,10 +76,10 @@ vec4 sample_curl_spline(vec3 w SPLINE_SOURCE_PARAM) {
   vec4 wy = cubic_bspline_weights(y - y0);
   int i = int(x0) - 1 + SPLINE_MARGIN;
   int j = int(y0) - 1 + SPLINE_MARGIN;
-  vec4 sum = wy.x * curl_spline_row(face, i, j, wx SPLINE_SOURCE_ARG) +
-             wy.y * curl_spline_row(face, i, j + 1, wx SPLINE_SOURCE_ARG) +
-             wy.z * curl_spline_row(face, i, j + 2, wx SPLINE_SOURCE_ARG) +
-             wy.w * curl_spline_row(face, i, j + 3, wx SPLINE_SOURCE_ARG);
+  vec4 sum = wy.x * curl_spline_row(face, i, j, wx, spline) +
+             wy.y * curl_spline_row(face, i, j + 1, wx, spline) +
+             wy.z * curl_spline_row(face, i, j + 2, wx, spline) +
+             wy.w * curl_spline_row(face, i, j + 3, wx, spline);
   return sum;
 }
 
@@ -89,9 +87,12 @@ vec4 sample_curl_spline(vec3 w SPLINE_SOURCE_PARAM) {
 // approximates the curl, which is tangent at w, so its normal part is no larger than its error
 // (O(h^4)); the projection removes that part, as the procedural curl has none, and cannot
 // increase the error (it is an orthogonal projection and the exact value is in its range).
-vec3 spline_velocity(vec3 w SPLINE_SOURCE_PARAM) {
-  vec3 v = vec3(sample_curl_spline(w SPLINE_SOURCE_ARG));
+vec3 spline_velocity(vec3 w, SplineImage spline) {
+  vec3 v = vec3(sample_curl_spline(w, spline));
   return v - dot(v, w) * w;
 }
+
+// The spline as the source of the warp's stepping rules (warp_step.glsl).
+vec3 warp_velocity(vec3 w, SplineImage spline) { return spline_velocity(w, spline); }
 
 #endif

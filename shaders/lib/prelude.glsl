@@ -10,4 +10,12 @@
 // classes that GLSL's texture functions are overloaded for (src/shader_math/hooks.hpp).
 #define DensityVolume sampler3D
 #define TerrainTexture sampler2D  // the ground's altitude in red, its ceiling in green
+#define NoiseVolume sampler3D        // the renderer's baked noise, mip-mapped, repeating
+#define WeatherField sampler2DArray  // a layer per coverage channel
+#define ConvectiveVolumes sampler3D  // the convective clouds' density volumes stacked along z
+#define ShadowMaps sampler2DArray    // a layer per shadow map
+// Images read with imageLoad. GLSL takes no format and no `in` on an image parameter: the
+// argument's format applies (GLSL 4.50 section 4.4.6.2), and readonly is part of the type here.
+#define CubeImage readonly imageCube         // a cube map, face = layer (cube_sampling.glsl)
+#define SplineImage readonly image2DArray    // the curl spline's coefficients (curl_spline.glsl)
 #endif

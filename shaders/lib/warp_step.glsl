@@ -1,45 +1,47 @@
 // Integration of the warp field: each texel's point follows the flow dW/dt = v(W) on the unit
-// sphere for the flow time T. Requires cube_sampling.glsl's CUBE_* macros naming the curl cube
-// map (the sampled velocity). docs/numerics.md derives the schemes and their limits.
+// sphere for the flow time T. docs/numerics.md derives the schemes and their limits.
 //
-// The stepping rules are written once for every velocity source. The including file defines:
-//   WARP_VELOCITY(w)   the velocity at the unit vector w
-//   WARP_FIELD_PARAM   extra trailing parameter(s) naming the source (empty in GLSL)
-//   WARP_FIELD_ARG     the matching argument(s) (empty in GLSL)
-//   WARP_TEMPLATE      `template <class Field>` in C++, so that one definition serves the
-//                      sampled cube map, the procedural curl and the analytic test flows;
-//                      empty in GLSL, where each compiled variant has one source
-// Without them, the sampled curl cube map is the source.
+// The stepping rules are written once for every velocity source: their last parameter is the
+// source, `WarpField field`, whose velocity at the unit vector w is warp_velocity(w, field).
+//   C++: WARP_TEMPLATE is `template <class WarpField>`, so that one definition serves the sampled
+//        cube map (CubeSource), the procedural curl (CurlParams), the curl spline (SplineSource)
+//        and the analytic test flows (any callable); hooks.hpp declares their warp_velocity.
+//   GLSL: each compiled variant has one source. WarpField is the includer's #define (by default
+//        CubeImage, the sampled curl cube map), and warp_velocity is defined for it: here for
+//        CubeImage, in curl_spline.glsl for SplineImage, by the includer otherwise.
 #ifndef NEPHELE_WARP_STEP_GLSL
 #define NEPHELE_WARP_STEP_GLSL
 #include "prelude.glsl"
 #include "cube_sampling.glsl"
 
+#ifndef __cplusplus
+#define WARP_TEMPLATE
+#ifndef WarpField
+#define WarpField CubeImage
+#endif
+#endif
+
 // The velocity sampled bilinearly from the curl cube map.
-vec3 flow_velocity(vec3 w CUBE_SOURCE_PARAM) {
-  return vec3(sample_cube_bilinear(w CUBE_SOURCE_ARG));
+vec3 flow_velocity(vec3 w, CubeImage source) {
+  return vec3(sample_cube_bilinear(w, source));
 }
 
 // sfsim's stepping rule, kept as the reference of the sampled Euler warp: forward Euler
 // projected back onto the sphere, W <- normalize(W + h v(W)).
-vec3 warp_step(vec3 w, float h CUBE_SOURCE_PARAM) {
-  return normalize(w + h * flow_velocity(w CUBE_SOURCE_ARG));
+vec3 warp_step(vec3 w, float h, CubeImage source) {
+  return normalize(w + h * flow_velocity(w, source));
 }
 
-vec3 integrate_warp(vec3 start, int steps, float h CUBE_SOURCE_PARAM) {
+vec3 integrate_warp(vec3 start, int steps, float h, CubeImage source) {
   vec3 w = start;
   for (int k = 0; k < steps; ++k) {
-    w = warp_step(w, h CUBE_SOURCE_ARG);
+    w = warp_step(w, h, source);
   }
   return w;
 }
 
-#ifndef WARP_VELOCITY
-#define WARP_TEMPLATE
-#define WARP_FIELD_PARAM CUBE_SOURCE_PARAM
-#define WARP_FIELD_ARG CUBE_SOURCE_ARG
-#define WARP_VELOCITY(w) flow_velocity(w CUBE_SOURCE_ARG)
-#endif
+// The sampled curl cube map as the source of the stepping rules below.
+vec3 warp_velocity(vec3 w, CubeImage source) { return flow_velocity(w, source); }
 
 // Integrator numbers, shared by the host (src/numerics/integrators.hpp) and the shaders.
 const int INTEGRATOR_EULER = 0;
@@ -53,22 +55,22 @@ const int INTEGRATOR_ADAPTIVE = 4;
 // |x| and, started on the sphere, is the flow on the sphere. Each scheme therefore keeps its
 // order in R^3, and the projection at the end of a step changes W by O(h^(p+1)) only.
 WARP_TEMPLATE
-vec3 velocity_at(vec3 x WARP_FIELD_PARAM) {
-  return WARP_VELOCITY(normalize(x));
+vec3 velocity_at(vec3 x, WarpField field) {
+  return warp_velocity(normalize(x), field);
 }
 
 // Forward Euler, order 1: W <- normalize(W + h v(W)). W is a unit vector, so the velocity is
 // taken at W itself, which makes the sampled variant identical to warp_step.
 WARP_TEMPLATE
-vec3 euler_step(vec3 w, float h WARP_FIELD_PARAM) {
-  return normalize(w + h * WARP_VELOCITY(w));
+vec3 euler_step(vec3 w, float h, WarpField field) {
+  return normalize(w + h * warp_velocity(w, field));
 }
 
 // Heun (explicit trapezoidal rule), order 2.
 WARP_TEMPLATE
-vec3 heun_step(vec3 w, float h WARP_FIELD_PARAM) {
-  vec3 k1 = WARP_VELOCITY(w);
-  vec3 k2 = velocity_at(w + h * k1 WARP_FIELD_ARG);
+vec3 heun_step(vec3 w, float h, WarpField field) {
+  vec3 k1 = warp_velocity(w, field);
+  vec3 k2 = velocity_at(w + h * k1, field);
   return normalize(w + (0.5f * h) * (k1 + k2));
 }
 
@@ -78,29 +80,29 @@ vec3 heun_step(vec3 w, float h WARP_FIELD_PARAM) {
 // order as the unrolled form.
 // With first_stage 1 the caller gives k1 = v(w) and stage 0 is skipped; with 0, k1 is unused.
 WARP_TEMPLATE
-vec3 rk4_step_from(vec3 w, vec3 k1, int first_stage, float h WARP_FIELD_PARAM) {
+vec3 rk4_step_from(vec3 w, vec3 k1, int first_stage, float h, WarpField field) {
   vec3 k = k1;
   vec3 sum = k1;
   for (int stage = first_stage; stage < 4; ++stage) {
     vec3 x = w;
     if (stage > 0) x = normalize(w + (stage == 3 ? h : 0.5f * h) * k);
-    k = WARP_VELOCITY(x);
+    k = warp_velocity(x, field);
     sum = stage == 0 ? k : sum + (stage == 3 ? k : 2.0f * k);
   }
   return normalize(w + (h / 6.0f) * sum);
 }
 
 WARP_TEMPLATE
-vec3 rk4_step(vec3 w, float h WARP_FIELD_PARAM) {
-  return rk4_step_from(w, vec3(0.0f), 0, h WARP_FIELD_ARG);
+vec3 rk4_step(vec3 w, float h, WarpField field) {
+  return rk4_step_from(w, vec3(0.0f), 0, h, field);
 }
 
 // Geodesic Euler (Lie-Euler), order 1: along the great circle that starts in the direction of
 // v, i.e. a rotation about W x v by the angle h |v|; W stays on the sphere by construction.
 // The tangential part of v is used (the sampled field is tangent only up to interpolation).
 WARP_TEMPLATE
-vec3 geodesic_step(vec3 w, float h WARP_FIELD_PARAM) {
-  vec3 v = WARP_VELOCITY(w);
+vec3 geodesic_step(vec3 w, float h, WarpField field) {
+  vec3 v = warp_velocity(w, field);
   vec3 tangent = v - dot(v, w) * w;
   float speed = length(tangent);
   if (!(speed > 0.0f)) return w;
@@ -110,19 +112,19 @@ vec3 geodesic_step(vec3 w, float h WARP_FIELD_PARAM) {
 
 // One step of the fixed-step scheme `integrator` (an INTEGRATOR_* number, not ADAPTIVE).
 WARP_TEMPLATE
-vec3 fixed_step(int integrator, vec3 w, float h WARP_FIELD_PARAM) {
-  if (integrator == INTEGRATOR_HEUN) return heun_step(w, h WARP_FIELD_ARG);
-  if (integrator == INTEGRATOR_RK4) return rk4_step(w, h WARP_FIELD_ARG);
-  if (integrator == INTEGRATOR_GEODESIC) return geodesic_step(w, h WARP_FIELD_ARG);
-  return euler_step(w, h WARP_FIELD_ARG);
+vec3 fixed_step(int integrator, vec3 w, float h, WarpField field) {
+  if (integrator == INTEGRATOR_HEUN) return heun_step(w, h, field);
+  if (integrator == INTEGRATOR_RK4) return rk4_step(w, h, field);
+  if (integrator == INTEGRATOR_GEODESIC) return geodesic_step(w, h, field);
+  return euler_step(w, h, field);
 }
 
 // K steps of size h: the flow map at T = K h.
 WARP_TEMPLATE
-vec3 integrate_fixed(int integrator, vec3 start, int steps, float h WARP_FIELD_PARAM) {
+vec3 integrate_fixed(int integrator, vec3 start, int steps, float h, WarpField field) {
   vec3 w = start;
   for (int k = 0; k < steps; ++k) {
-    w = fixed_step(integrator, w, h WARP_FIELD_ARG);
+    w = fixed_step(integrator, w, h, field);
   }
   return w;
 }
@@ -134,11 +136,11 @@ vec3 integrate_fixed(int integrator, vec3 start, int steps, float h WARP_FIELD_P
 // llvmpipe would run both sides of a choice between two calls).
 WARP_TEMPLATE
 vec3 integrate_fixed_from(int integrator, vec3 start, vec3 start_velocity, int known, int steps,
-                          float h WARP_FIELD_PARAM) {
-  if (integrator != INTEGRATOR_RK4) return integrate_fixed(integrator, start, steps, h WARP_FIELD_ARG);
+                          float h, WarpField field) {
+  if (integrator != INTEGRATOR_RK4) return integrate_fixed(integrator, start, steps, h, field);
   vec3 w = start;
   for (int k = 0; k < steps; ++k) {
-    w = rk4_step_from(w, start_velocity, k == 0 ? known : 0, h WARP_FIELD_ARG);
+    w = rk4_step_from(w, start_velocity, k == 0 ? known : 0, h, field);
   }
   return w;
 }
@@ -149,11 +151,11 @@ vec3 integrate_fixed_from(int integrator, vec3 start, vec3 start_velocity, int k
 // (first same as last), and `error` is |third-order - second-order result|, computed from the
 // stage velocities without cancellation.
 WARP_TEMPLATE
-vec3 bogacki_shampine_step(vec3 w, vec3 k1, float h, OUT(vec3) k4, OUT(float) error WARP_FIELD_PARAM) {
-  vec3 k2 = velocity_at(w + (0.5f * h) * k1 WARP_FIELD_ARG);
-  vec3 k3 = velocity_at(w + (0.75f * h) * k2 WARP_FIELD_ARG);
+vec3 bogacki_shampine_step(vec3 w, vec3 k1, float h, OUT(vec3) k4, OUT(float) error, WarpField field) {
+  vec3 k2 = velocity_at(w + (0.5f * h) * k1, field);
+  vec3 k3 = velocity_at(w + (0.75f * h) * k2, field);
   vec3 next = normalize(w + h * ((2.0f / 9.0f) * k1 + (1.0f / 3.0f) * k2 + (4.0f / 9.0f) * k3));
-  k4 = WARP_VELOCITY(next);
+  k4 = warp_velocity(next, field);
   error = h * length((-5.0f / 72.0f) * k1 + (1.0f / 12.0f) * k2 + (1.0f / 9.0f) * k3 - 0.125f * k4);
   return next;
 }
@@ -170,8 +172,8 @@ vec3 bogacki_shampine_step(vec3 w, vec3 k1, float h, OUT(vec3) k4, OUT(float) er
 // long integrations over several dispatches). Returns whether T was reached.
 WARP_TEMPLATE
 bool advance_adaptive(INOUT(vec3) w, INOUT(float) t, INOUT(float) h, INOUT(int) attempts, float flow_time,
-                      float max_step, float tolerance, int attempt_limit WARP_FIELD_PARAM) {
-  vec3 k1 = WARP_VELOCITY(w);
+                      float max_step, float tolerance, int attempt_limit, WarpField field) {
+  vec3 k1 = warp_velocity(w, field);
   bool done = !(t < flow_time);
   while (!done && attempts < attempt_limit) {
     float remaining = flow_time - t;
@@ -179,7 +181,7 @@ bool advance_adaptive(INOUT(vec3) w, INOUT(float) t, INOUT(float) h, INOUT(int) 
     float step = last ? remaining : h;
     vec3 k4;
     float error;
-    vec3 next = bogacki_shampine_step(w, k1, step, k4, error WARP_FIELD_ARG);
+    vec3 next = bogacki_shampine_step(w, k1, step, k4, error, field);
     attempts += 1;
     if (error <= tolerance) {
       w = next;
@@ -197,12 +199,12 @@ bool advance_adaptive(INOUT(vec3) w, INOUT(float) t, INOUT(float) h, INOUT(int) 
 // negated when `max_steps` ran out before T was reached (W is then the point reached so far).
 WARP_TEMPLATE
 vec4 integrate_adaptive(vec3 start, float flow_time, float first_step, float max_step, float tolerance,
-                        int max_steps WARP_FIELD_PARAM) {
+                        int max_steps, WarpField field) {
   vec3 w = start;
   float t = 0.0f;
   float h = min(first_step, max_step);
   int attempts = 0;
-  bool done = advance_adaptive(w, t, h, attempts, flow_time, max_step, tolerance, max_steps WARP_FIELD_ARG);
+  bool done = advance_adaptive(w, t, h, attempts, flow_time, max_step, tolerance, max_steps, field);
   return vec4(w, done ? float(attempts) : -float(attempts));
 }
 

@@ -31,7 +31,9 @@ void main() {
   if (pixel.x >= size.x || pixel.y >= size.y) return;
   int loop_count = 0;
   float ground_distance = 0.0f;
-  vec4 radiance = render_pixel(pixel, size, u_march, loop_count, ground_distance);
+  vec4 radiance = render_pixel(pixel, size, u_march, loop_count, ground_distance, noise_volume, weather_field,
+                               terrain_heights,
+                               convective_volumes, layer_shadows, sky_shadow);
   if (loop_limited(loop_count)) {
     atomicAdd(loop_limited_pixels, 1u);
     uint k = uint(pixel.y * size.x + pixel.x);

@@ -17,7 +17,8 @@ void main() {
   if (texel.x >= size || texel.y >= size) return;
   vec3 centre = vec3(0.0f, 0.0f, -(u_march.earth_radius + u_march.camera_altitude));
   int loop_count = 0;  // SHADOW_STEPS per layer above: far from llvmpipe's limit
-  float depth = shadow_map_texel((vec2(texel) + 0.5f) / float(size), centre, u_layer, loop_count, u_march);
+  float depth = shadow_map_texel((vec2(texel) + 0.5f) / float(size), centre, u_layer, loop_count, u_march, noise_volume,
+                                 weather_field, convective_volumes);
   int map = u_layer >= 0 ? u_march.layers[u_layer].shadow_map : u_march.sky_shadow_map;
   imageStore(shadow_maps, ivec3(texel, map), vec4(depth));
 }

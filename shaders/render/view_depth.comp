@@ -25,6 +25,6 @@ void main() {
   int k = int(gl_GlobalInvocationID.x);
   if (k >= u_pixel_count) return;
   int loops = 0;
-  vec2 end = view_ray_end(view_direction(guide_pixels[k], u_image_size, u_march), u_march, loops);
+  vec2 end = view_ray_end(view_direction(guide_pixels[k], u_image_size, u_march), u_march, loops, terrain_heights);
   ground_distances[k] = end.x;
 }

@@ -37,17 +37,24 @@ std::string probe_source(const std::string& in_type, const std::string& out_type
 // the probe's GLSL at probe_data_binding).
 constexpr int probe_inputs_binding = 0, probe_outputs_binding = 1, probe_data_binding = 2;
 
+// How a probe reads its data: a read-only buffer of vec4, or a read-only rgba32f image of six
+// square layers (texels layer by layer, rows from t = 0), a cube map (imageCube) or a 2D array
+// (image2DArray), at image unit probe_data_binding.
+enum class ProbeData { buffer, cube_image, array_image };
+
 // Compiles `source` and runs it over `count` inputs; needs a current OpenGL 4.5 context.
-// `data`, when not empty, is bound read-only at probe_data_binding (a probe's cube map, say).
+// `data`, when not empty, is bound read-only at probe_data_binding as `kind` says.
 void run_probe(const std::string& source, const void* inputs, std::size_t input_bytes, void* outputs,
-               std::size_t output_bytes, std::size_t count, const std::vector<glm::vec4>& data = {});
+               std::size_t output_bytes, std::size_t count, const std::vector<glm::vec4>& data = {},
+               ProbeData kind = ProbeData::buffer);
 
 template <class Out, class In>
 std::vector<Out> probe(const std::string& includes, const std::string& expression, const std::vector<In>& inputs,
-                       const std::string& helpers = "", const std::vector<glm::vec4>& data = {}) {
+                       const std::string& helpers = "", const std::vector<glm::vec4>& data = {},
+                       ProbeData kind = ProbeData::buffer) {
   std::vector<Out> outputs(inputs.size());
   run_probe(probe_source(GlslTypeName<In>::name, GlslTypeName<Out>::name, includes, helpers, expression), inputs.data(),
-            inputs.size() * sizeof(In), outputs.data(), outputs.size() * sizeof(Out), inputs.size(), data);
+            inputs.size() * sizeof(In), outputs.data(), outputs.size() * sizeof(Out), inputs.size(), data, kind);
   return outputs;
 }
 

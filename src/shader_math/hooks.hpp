@@ -1,8 +1,11 @@
 #pragma once
-// What the GLSL library (shaders/lib) expects its includer to define, for C++: the cube map
-// source of cube_sampling.glsl, the velocity source of warp_step.glsl's templates and the two
-// textures of cloud_march.glsl and terrain.glsl and the density volume of model_march.glsl. Shared by
+// The C++ twins of the textures and images that the GLSL library (shaders/lib) takes as
+// parameters, with the GLSL texture and image functions it calls on them: the cube map of
+// cube_sampling.glsl, the curl spline of curl_spline.glsl, the velocity sources of
+// warp_step.glsl's templates, the textures of cloud_march.glsl and terrain.glsl and the density
+// volume of model_march.glsl. Shared by
 // shader_math.hpp (declarations) and shader_math.cpp (the one compiled copy of the functions).
+#include <cmath>
 #include <cstddef>
 #include <vector>
 
@@ -18,6 +21,10 @@ struct CubeSource {
   const vec4* texels = nullptr;
   vec4 fetch(int face, int i, int j) const { return texels[(static_cast<size_t>(face) * size + j) * size + i]; }
 };
+// cube_sampling.glsl's parameter type and its image functions (GLSL's imageCube: layer = face).
+using CubeImage = const CubeSource&;
+inline ivec2 imageSize(IN(CubeSource) cube) { return ivec2(cube.size); }
+inline vec4 imageLoad(IN(CubeSource) cube, ivec3 p) { return cube.fetch(p.z, p.x, p.y); }
 
 // The curl spline's coefficient grid in host memory (curl_spline.glsl): vec4 per node, faces in GL
 // order, each face (cells + 2 SPLINE_MARGIN)^2 nodes, rows from t = 0, as the GPU's 2D array
@@ -27,8 +34,12 @@ struct SplineSource {
   const vec4* texels = nullptr;
   vec4 fetch(int face, int i, int j) const;  // defined after curl_spline.glsl (SPLINE_MARGIN)
 };
+// curl_spline.glsl's parameter type and its image functions (a 2D array: layer = face).
+using SplineImage = const SplineSource&;
+ivec3 imageSize(IN(SplineSource) spline);  // defined after curl_spline.glsl (SPLINE_MARGIN)
+inline vec4 imageLoad(IN(SplineSource) spline, ivec3 p) { return spline.fetch(p.z, p.x, p.y); }
 
-// The renderer's noise volume in host memory (cloud_march.glsl's NOISE_LOD): RGBA per texel,
+// The renderer's noise volume in host memory (cloud_march.glsl's NoiseVolume): RGBA per texel,
 // every mip level (level k of size >> k texels per side, x fastest, then y, then z), sampled as
 // GLSL's textureLod with GL_LINEAR_MIPMAP_LINEAR filtering and GL_REPEAT wrapping (OpenGL 4.5
 // section 8.14: lerps along x, y, z, then between the levels floor(lod) and floor(lod) + 1).
@@ -37,8 +48,11 @@ struct VolumeSource {
   std::vector<std::vector<vec4>> levels;
   vec4 sample_lod(vec3 x, float lod) const;
 };
+// cloud_march.glsl's parameter type and its textureLod().
+using NoiseVolume = VolumeSource;
+inline vec4 textureLod(IN(VolumeSource) volume, vec3 x, float lod) { return volume.sample_lod(x, lod); }
 
-// A 2D array texture of one channel in host memory (cloud_march.glsl's WEATHER_COVERAGE, the
+// A 2D array texture of one channel in host memory (cloud_march.glsl's WeatherField, the
 // weather field): values[(layer * size + row) * size + column], sampled as GLSL's texture() with
 // GL_LINEAR filtering and GL_CLAMP_TO_EDGE wrapping.
 struct LayeredSource {
@@ -47,6 +61,13 @@ struct LayeredSource {
   const float* values = nullptr;
   float sample(vec2 uv, int layer) const;
 };
+// cloud_march.glsl's parameter types (the weather field, the shadow maps) and their texture():
+// the layer is the nearest integer to p.z, clamped to the layers (OpenGL 4.5 section 8.14.2).
+using WeatherField = LayeredSource;
+using ShadowMaps = LayeredSource;
+inline vec4 texture(IN(LayeredSource) layers, vec3 p) {
+  return vec4(layers.sample(vec2(p.x, p.y), static_cast<int>(std::floor(p.z + 0.5f))));
+}
 
 // A cloud model's density volume in host memory (model_march.glsl's DensityVolume): one float
 // per voxel, x fastest, sampled as GLSL's texture() with GL_LINEAR and GL_CLAMP_TO_EDGE.
@@ -59,15 +80,22 @@ struct DensitySource {
 using DensityVolume = DensitySource;
 inline vec4 texture(IN(DensitySource) density, vec3 uvw) { return vec4(density.sample(uvw)); }
 
-// The convective clouds' density volumes (cloud_march.glsl's CONVECTIVE_DENSITY): `count`
-// volumes of size^3 floats one after the other, each sampled as a DensitySource (the GPU holds
-// them as the z-layers of one 3D texture and clamps within each).
+// The convective clouds' density volumes (cloud_march.glsl's ConvectiveVolumes): `count`
+// volumes of size^3 floats one after the other, as the z-layers of one 3D texture of size x size
+// x (count size) on the GPU. texture() samples the stack with GL_LINEAR and GL_CLAMP_TO_EDGE; the
+// marcher's convective_density keeps z within one volume's texel centres, so each volume is
+// read on its own.
 struct ConvectiveSource {
   int size = 0;
   int count = 0;
   const float* values = nullptr;
-  float sample(vec3 uvw, int cloud) const;
+  float sample(vec3 stack) const;
 };
+using ConvectiveVolumes = ConvectiveSource;
+inline vec4 texture(IN(ConvectiveSource) volumes, vec3 stack) { return vec4(volumes.sample(stack)); }
+inline ivec3 textureSize(IN(ConvectiveSource) volumes, int) {
+  return ivec3(volumes.size, volumes.size, volumes.size * volumes.count);
+}
 
 // The ground's two textures in host memory (terrain.glsl's TerrainTexture: the red and green
 // channels of one texture on the GPU): one-layer sources of the same size,
@@ -81,16 +109,17 @@ inline vec4 texture(IN(TerrainSource) terrain, vec2 uv) {
   return vec4(terrain.heights.sample(uv, 0), terrain.ceilings.sample(uv, 0), 0.0f, 0.0f);
 }
 
-// The textures of cloud_march.glsl: the noise volume, the weather field, the ground's height
-// field and ceiling, the convective clouds' volumes and the layers' shadow maps.
+// The textures of cloud_march.glsl in host memory, held together for the tests: the noise
+// volume, the weather field, the ground's height field and ceiling, the convective clouds'
+// volumes and the layers' shadow maps (the marcher's functions take each by name).
 struct MarchSources {
   VolumeSource noise;
   LayeredSource weather;
   TerrainSource terrain;
   ConvectiveSource convective;
-  // The shadow maps (cloud_march.glsl's LAYER_SHADOW): one layer per map; none by default.
+  // The shadow maps (cloud_march.glsl's layer_shadows): one layer per map; none by default.
   LayeredSource shadows;
-  // The sky's shadow map (SKY_SHADOW): one layer; none by default.
+  // The sky's shadow map (sky_shadow): one layer; none by default.
   LayeredSource sky_shadow;
 };
 

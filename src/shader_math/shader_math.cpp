@@ -31,11 +31,15 @@ namespace nephele::glsl {
 #include "lib/worley.glsl"
 #include "lib/worley_fbm.glsl"
 
-vec3 warp_velocity(vec3 w, IN(CubeSource) source) { return vec3(sample_cube_bilinear(w, source)); }
+// The procedural curl as the warp's velocity source (the GPU's warp.comp defines its own, with
+// the noise offset); the cube map's and the spline's are library functions.
 vec3 warp_velocity(vec3 w, IN(CurlParams) curl) { return curl_velocity(w, curl); }
-vec3 warp_velocity(vec3 w, IN(SplineSource) spline) { return spline_velocity(w, spline); }
 vec4 SplineSource::fetch(int face, int i, int j) const {
   const int row = cells + 2 * SPLINE_MARGIN;
   return texels[(static_cast<size_t>(face) * row + j) * row + i];
+}
+ivec3 imageSize(IN(SplineSource) spline) {
+  const int row = spline.cells + 2 * SPLINE_MARGIN;
+  return ivec3(row, row, 6);
 }
 }  // namespace nephele::glsl

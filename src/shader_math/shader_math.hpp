@@ -11,22 +11,4 @@ namespace nephele::glsl {
 #include "shader_math/declarations.hpp"
 }  // namespace nephele::glsl
 
-#undef CUBE_SOURCE_PARAM
-#undef CUBE_SOURCE_ARG
-#undef CUBE_FETCH
-#undef CUBE_SIZE
-#undef SPLINE_SOURCE_PARAM
-#undef SPLINE_SOURCE_ARG
-#undef SPLINE_FETCH
-#undef SPLINE_CELLS
-#undef MARCH_SOURCES_PARAM
-#undef MARCH_SOURCES_ARG
-#undef NOISE_LOD
-#undef WEATHER_COVERAGE
-#undef MARCH_TERRAIN_ARG
-#undef CONVECTIVE_DENSITY
-#undef LAYER_SHADOW
 #undef WARP_TEMPLATE
-#undef WARP_FIELD_PARAM
-#undef WARP_FIELD_ARG
-#undef WARP_VELOCITY

@@ -80,9 +80,10 @@ float DensitySource::sample(vec3 uvw) const {
   return trilinear(at, clamp_taps(uvw.x, size), clamp_taps(uvw.y, size), clamp_taps(uvw.z, size));
 }
 
-float ConvectiveSource::sample(vec3 uvw, int cloud) const {
-  const size_t voxels = static_cast<size_t>(size) * size * size;
-  return DensitySource{size, values + cloud * voxels}.sample(uvw);
+float ConvectiveSource::sample(vec3 stack) const {
+  const int depth = size * count;
+  auto at = [&](int i, int j, int k) { return values[(static_cast<size_t>(k) * size + j) * size + i]; };
+  return trilinear(at, clamp_taps(stack.x, size), clamp_taps(stack.y, size), clamp_taps(stack.z, depth));
 }
 
 }  // namespace nephele::glsl

@@ -74,7 +74,9 @@ MarchParams probe_march_params() {
 }
 
 // x[0] = (function, a, b, c), x[1] = a point, x[2] = a direction, x[3] = further numbers.
-vec4 probe_cloud_march(mat4 x MARCH_SOURCES_PARAM) {
+vec4 probe_cloud_march(mat4 x, IN(NoiseVolume) noise_volume, IN(WeatherField) weather_field,
+                       IN(TerrainTexture) terrain_heights, IN(ConvectiveVolumes) convective_volumes,
+                       IN(ShadowMaps) layer_shadows, IN(ShadowMaps) sky_shadow) {
   int f = int(x[0].x);
   MarchParams m = probe_march_params();
   vec3 p = vec3(x[1]);
@@ -86,43 +88,47 @@ vec4 probe_cloud_march(mat4 x MARCH_SOURCES_PARAM) {
     m.panorama = int(x[0].w);
     return vec4(view_direction(ivec2(int(x[3].x), int(x[3].y)), ivec2(16, 9), m), 0.0f);
   }
-  if (f == 1) return vec4(coverage_at(p, int(x[0].y), m MARCH_SOURCES_ARG), 0.0f, 0.0f, 0.0f);
+  if (f == 1) return vec4(coverage_at(p, int(x[0].y), m, weather_field), 0.0f, 0.0f, 0.0f);
   if (f == 2) {
-    ShapeSample q = shape_at(p, centre, layer, footprint, WEBANCK_FULL, m MARCH_SOURCES_ARG);
+    ShapeSample q = shape_at(p, centre, layer, footprint, WEBANCK_FULL, m, noise_volume, weather_field);
     return vec4(q.h, q.c, q.shape, q.detail);
   }
   if (f == 3) {
-    ShapeSample q = shape_at(p, centre, layer, footprint, WEBANCK_FULL, m MARCH_SOURCES_ARG);
-    return vec4(extinction_bound(layer, q, m), extinction_bound_at(p, centre, layer, footprint, m MARCH_SOURCES_ARG),
-                density_at(p, centre, layer, footprint, true, m MARCH_SOURCES_ARG),
-                density_at(p, centre, layer, footprint, false, m MARCH_SOURCES_ARG));
+    ShapeSample q = shape_at(p, centre, layer, footprint, WEBANCK_FULL, m, noise_volume, weather_field);
+    return vec4(extinction_bound(layer, q, m), extinction_bound_at(p, centre, layer, footprint, m, noise_volume,
+                                                                   weather_field),
+                density_at(p, centre, layer, footprint, true, m, noise_volume, weather_field),
+                density_at(p, centre, layer, footprint, false, m, noise_volume, weather_field));
   }
-  if (f == 4) return vec4(optical_depth_to_sun(p, centre, layer, m MARCH_SOURCES_ARG), 0.0f, 0.0f, 0.0f);
+  if (f == 4) return vec4(optical_depth_to_sun(p, centre, layer, m, noise_volume, weather_field), 0.0f, 0.0f, 0.0f);
   if (f == 5) {
     RayIntervals r = layer_intervals(d, centre, x[0].z, m);
     return vec4(float(r.count), r.count > 0 ? r.bounds[0].x : 0.0f, r.count > 0 ? r.bounds[0].y : 0.0f,
                 r.count > 0 ? float(r.layer[0]) : -1.0f);
   }
   if (f == 6) {
-    CloudMarch c = march_clouds(d, centre, x[0].z, x[0].w, m MARCH_SOURCES_ARG);
+    CloudMarch c = march_clouds(d, centre, x[0].z, x[0].w, m, noise_volume, weather_field, convective_volumes,
+                                layer_shadows);
     return vec4(c.radiance, c.transmittance);
   }
   if (f == 7) {
     int loops = 0;
     float ground = 0.0f;
-    vec4 pixel = render_pixel(ivec2(int(x[3].x), int(x[3].y)), ivec2(16, 9), m, loops, ground MARCH_SOURCES_ARG);
+    vec4 pixel = render_pixel(ivec2(int(x[3].x), int(x[3].y)), ivec2(16, 9), m, loops, ground, noise_volume,
+                              weather_field, terrain_heights, convective_volumes, layer_shadows, sky_shadow);
     return loop_limited(loops) ? vec4(-1.0f) : pixel;
   }
   if (f == 21) {
     // Where the view ray d ends: the ground's distance (or -1) and the atmosphere's top.
     int loops = 0;
-    vec2 end = view_ray_end(d, m, loops MARCH_SOURCES_ARG);
+    vec2 end = view_ray_end(d, m, loops, terrain_heights);
     return vec4(end, float(loops), 0.0f);
   }
   if (f == 9) {
     // The baked Webanck fields at p_n = x[1] (frequency x[0].z, level of detail x[0].w).
-    vec4 v = baked_fields(p, footprint, layer, x[0].w MARCH_SOURCES_ARG);
-    return vec4(v.z, baked_g3(p, footprint, layer, x[0].w MARCH_SOURCES_ARG), baked_w3(p, footprint, layer, x[0].w MARCH_SOURCES_ARG),
+    vec4 v = baked_fields(p, footprint, layer, x[0].w, noise_volume);
+    return vec4(v.z, baked_g3(p, footprint, layer, x[0].w, noise_volume), baked_w3(p, footprint, layer, x[0].w,
+        noise_volume),
                 webanck_type(layer) ? 1.0f : 0.0f);
   }
   if (f == 10) {
@@ -132,20 +138,20 @@ vec4 probe_cloud_march(mat4 x MARCH_SOURCES_PARAM) {
     q.c = x[3].y;
     q.lod = x[3].z;
     q.coordinates = p;
-    webanck_shape(q, m.layers[layer].type, 0.5f, 0.01f, int(x[0].w) MARCH_SOURCES_ARG);
-    return vec4(q.shape, q.detail, q.gate, webanck_detail(q, m.layers[layer].type, 0.5f, 0.01f MARCH_SOURCES_ARG));
+    webanck_shape(q, m.layers[layer].type, 0.5f, 0.01f, int(x[0].w), noise_volume);
+    return vec4(q.shape, q.detail, q.gate, webanck_detail(q, m.layers[layer].type, 0.5f, 0.01f, noise_volume));
   }
   if (f == 11) {
     // Shadow depth from p (below layer x[0].y's top, min_base x[0].z) and a pixel's jitter.
     int loops = 0;
-    float tau = shadow_depth(p, centre, layer, footprint, loops, m MARCH_SOURCES_ARG);
+    float tau = shadow_depth(p, centre, layer, footprint, loops, m, noise_volume, weather_field, convective_volumes);
     return vec4(tau, float(loops), march_jitter(ivec2(int(x[3].x), int(x[3].y)), int(x[3].z)), 0.0f);
   }
   if (f == 17) {
     // The shadow map of layer x[0].y: where p's sun ray leaves the layer's top (uv), and the
     // depth read there.
     vec2 uv = shadow_map_uv(p, centre, m.layers[layer].top, m);
-    return vec4(uv, higher_layers_depth(p, centre, layer, m MARCH_SOURCES_ARG), 0.0f);
+    return vec4(uv, higher_layers_depth(p, centre, layer, m, layer_shadows), 0.0f);
   }
   if (f == 20) {
     // Crepuscular rays: the sky's map (the test binds the cumulus's there too) from the shell at
@@ -153,7 +159,7 @@ vec4 probe_cloud_march(mat4 x MARCH_SOURCES_PARAM) {
     m.sky_shadow_map = 0;
     m.sky_shadow_base = x[0].z;
     vec2 uv = shadow_map_uv(p, centre, x[0].z, m);
-    return vec4(uv, sky_sun_visibility(p, centre, m MARCH_SOURCES_ARG), 0.0f);
+    return vec4(uv, sky_sun_visibility(p, centre, m, sky_shadow), 0.0f);
   }
   if (f == 18) {
     // The top shell's point above the tangent-plane coordinates x[3].xy, and its coordinates
@@ -167,13 +173,18 @@ vec4 probe_cloud_march(mat4 x MARCH_SOURCES_PARAM) {
     // top shell's point there.
     int loops = 0;
     vec3 q = shadow_map_origin((2.0f * vec2(x[3]) - 1.0f) * m.shadow_extent, centre, m.layers[layer].top, m);
-    return vec4(shadow_map_texel(vec2(x[3]), centre, layer, loops, m MARCH_SOURCES_ARG),
-                layers_shadow_depth(q, centre, layer, m.layers[layer].top, loops, m MARCH_SOURCES_ARG), 0.0f, 0.0f);
+    return vec4(shadow_map_texel(vec2(x[3]), centre, layer, loops, m, noise_volume, weather_field, convective_volumes),
+                layers_shadow_depth(q, centre, layer, m.layers[layer].top, loops, m, noise_volume, weather_field),
+                0.0f, 0.0f);
+  }
+  if (f == 22) {
+    // Convective volume x[0].y at q = x[1].
+    return vec4(convective_density(convective_volumes, vec3(x[1]), int(x[0].y)), 0.0f, 0.0f, 0.0f);
   }
   m.convective_count = 1;
   if (f == 12) {
     // The convective cloud at p: extinction, height fraction, inside its box, volume z.
-    vec2 v = convective_at(p, centre, m MARCH_SOURCES_ARG);
+    vec2 v = convective_at(p, centre, m, convective_volumes);
     vec3 q = convective_coordinates(p, centre, 0, m);
     return vec4(v.x, v.y, in_unit_cube(q) ? 1.0f : 0.0f, q.z);
   }
@@ -183,12 +194,13 @@ vec4 probe_cloud_march(mat4 x MARCH_SOURCES_PARAM) {
   }
   if (f == 14) {
     int loops = 0;
-    float shadow = convective_shadow_depth(p, centre, loops, m MARCH_SOURCES_ARG);
-    return vec4(convective_depth_to_sun(p, centre, m MARCH_SOURCES_ARG), shadow, float(loops), 0.0f);
+    float shadow = convective_shadow_depth(p, centre, loops, m, convective_volumes);
+    return vec4(convective_depth_to_sun(p, centre, m, convective_volumes), shadow, float(loops), 0.0f);
   }
   if (f == 15) {
     // The layers and the convective cloud marched together (limit x[0].z, jitter x[0].w).
-    CloudMarch c = march_clouds(d, centre, x[0].z, x[0].w, m MARCH_SOURCES_ARG);
+    CloudMarch c = march_clouds(d, centre, x[0].z, x[0].w, m, noise_volume, weather_field, convective_volumes,
+                                layer_shadows);
     return vec4(c.radiance, c.transmittance);
   }
   if (f == 16) {
@@ -199,8 +211,17 @@ vec4 probe_cloud_march(mat4 x MARCH_SOURCES_PARAM) {
     c.distance = 0.0f;
     c.weight = 0.0f;
     c.loop_count = 0;
-    march_interval(x[3].x, x[3].y, -1, true, d, centre, x[0].w, dot(d, m.sun), c, m MARCH_SOURCES_ARG);
+    march_interval(x[3].x, x[3].y, -1, true, d, centre, x[0].w, dot(d, m.sun), c, m, noise_volume, weather_field,
+                   convective_volumes, layer_shadows);
     return vec4(c.radiance, c.transmittance);
   }
   return vec4(loop_limited(int(x[0].y)) ? 1.0f : 0.0f, 0.0f, 0.0f, 0.0f);
 }
+
+#ifndef __cplusplus
+// The GPU probe passes x alone: the renderer's textures at their units.
+vec4 probe_cloud_march(mat4 x) {
+  return probe_cloud_march(x, noise_volume, weather_field, terrain_heights, convective_volumes, layer_shadows,
+                           sky_shadow);
+}
+#endif

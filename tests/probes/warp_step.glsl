@@ -1,8 +1,9 @@
 // Probe of lib/warp_step.glsl (shared GLSL/C++ subset; tests/test_library_probes.cpp).
 // Two velocity sources: the curl cube map sampled bilinearly (WARP_PROBE_CUBE_SIZE^2 texels per
-// face; in GLSL the buffer at binding 2, in C++ a CubeSource over the same floats) and the
+// face; in GLSL the cube map image at the probe's data binding, in C++ a CubeSource over the same floats) and the
 // procedural curl of warp_probe_curl(). C++ instantiates the stepping templates for each
-// (CubeSource, CurlParams); GLSL, with one source per shader, switches (warp_probe_uses_curl).
+// (CubeSource, CurlParams); GLSL, with one source per shader, passes a flag that switches
+// (warp_probe_uses_curl).
 // x[0] = (function, integrator, h, steps), x[1] = (start, procedural), x[2] = (flow time,
 // first step, max step, tolerance), x[3] = (attempt limit, part, t, attempts).
 #ifndef __cplusplus
@@ -28,34 +29,26 @@ CurlParams warp_probe_curl() {
   c.storm_track_shift = 0.0f;
   return c;
 }
-#ifdef __cplusplus
-#define CUBE_SOURCE_PARAM , IN(CubeSource) source
-#define CUBE_SOURCE_ARG , source
-#define WARP_TEMPLATE template <class Field>
-#define WARP_FIELD_PARAM , IN(Field) field
-#define WARP_FIELD_ARG , field
-#else
-layout(std430, binding = 2) readonly buffer ProbeCube { vec4 probe_cube[]; };
-#define CUBE_SOURCE_PARAM
-#define CUBE_SOURCE_ARG
-#define CUBE_FETCH(face, i, j) probe_cube[((face) * WARP_PROBE_CUBE_SIZE + (j)) * WARP_PROBE_CUBE_SIZE + (i)]
-#define CUBE_SIZE WARP_PROBE_CUBE_SIZE
+#ifndef __cplusplus
+layout(rgba32f, binding = 2) uniform readonly imageCube probe_cube;
 #include "../lib/cube_sampling.glsl"
-bool warp_probe_procedural;
-#define WARP_TEMPLATE
-#define WARP_FIELD_PARAM
-#define WARP_FIELD_ARG
-#define WARP_VELOCITY(w) (warp_probe_procedural ? curl_velocity(w, warp_probe_curl()) : flow_velocity(w))
+// The GPU's velocity source is a flag, true for the procedural curl and false for the probe's
+// cube map, passed as a constant at each call (warp_probe_uses_curl), which the compiler
+// propagates into the inlined code (the other source's code then goes).
+#define WarpField bool
+vec3 warp_velocity(vec3 w, bool procedural) {
+  return procedural ? curl_velocity(w, warp_probe_curl()) : vec3(sample_cube_bilinear(w, probe_cube));
+}
 #include "../lib/warp_step.glsl"
 #endif
 
 // The sampled field's reference functions (the cube map only).
-vec4 warp_probe_sampled(mat4 x CUBE_SOURCE_PARAM) {
+vec4 warp_probe_sampled(mat4 x, CubeImage source) {
   int f = int(x[0].x);
   vec3 w = vec3(x[1]);
-  if (f == 0) return vec4(flow_velocity(w CUBE_SOURCE_ARG), 0.0f);
-  if (f == 1) return vec4(warp_step(w, x[0].z CUBE_SOURCE_ARG), 0.0f);
-  return vec4(integrate_warp(w, int(x[0].w), x[0].z CUBE_SOURCE_ARG), 0.0f);
+  if (f == 0) return vec4(flow_velocity(w, source), 0.0f);
+  if (f == 1) return vec4(warp_step(w, x[0].z, source), 0.0f);
+  return vec4(integrate_warp(w, int(x[0].w), x[0].z, source), 0.0f);
 }
 
 // Whether function f runs on the procedural curl. Every velocity source costs the GPU compiler
@@ -66,68 +59,63 @@ bool warp_probe_uses_curl(mat4 x) {
   if (f == 3) return x[1].w != 0.0f;
   return f == 5 || f == 7 || f == 9;
 }
+// The source the stepping rules take: C++ passes the field it was instantiated for, the GPU the
+// flag of warp_velocity(vec3, bool) above.
 #ifdef __cplusplus
-#define WARP_PROBE_SOURCE(procedural)
+#define WARP_PROBE_SOURCE(procedural) field
 #else
-// A constant store, which the compiler propagates into the inlined code (the other source's
-// code then goes).
-#define WARP_PROBE_SOURCE(procedural) warp_probe_procedural = (procedural)
+#define WARP_PROBE_SOURCE(procedural) (procedural)
 #endif
 
 // The stepping rules. fixed_step and integrate_fixed take constant integrators (their dispatch
 // is an if chain; the schemes themselves are probed directly), which keeps one scheme's code.
 WARP_TEMPLATE
-vec4 warp_probe_field(mat4 x WARP_FIELD_PARAM) {
+vec4 warp_probe_field(mat4 x, WarpField field) {
   int f = int(x[0].x);
   int integrator = int(x[0].y);
   float h = x[0].z;
   vec3 w = vec3(x[1]);
   if (f == 3) {
-    WARP_PROBE_SOURCE(x[1].w != 0.0f);
-    return vec4(velocity_at(1.5f * w WARP_FIELD_ARG), 0.0f);
+    return vec4(velocity_at(1.5f * w, WARP_PROBE_SOURCE(x[1].w != 0.0f)), 0.0f);
   }
   if (f == 4) {
-    WARP_PROBE_SOURCE(false);
-    if (integrator == INTEGRATOR_HEUN) return vec4(heun_step(w, h WARP_FIELD_ARG), 0.0f);
+    if (integrator == INTEGRATOR_HEUN) return vec4(heun_step(w, h, WARP_PROBE_SOURCE(false)), 0.0f);
     if (integrator == INTEGRATOR_RK4) {
       // With the flag: the first velocity given, as the warp pass takes it from the curl pass.
-      if (x[1].w != 0.0f) return vec4(rk4_step_from(w, velocity_at(w WARP_FIELD_ARG), 1, h WARP_FIELD_ARG), 0.0f);
-      return vec4(rk4_step(w, h WARP_FIELD_ARG), 0.0f);
+      if (x[1].w != 0.0f) return vec4(rk4_step_from(w, velocity_at(w, WARP_PROBE_SOURCE(false)), 1, h,
+                                                    WARP_PROBE_SOURCE(false)), 0.0f);
+      return vec4(rk4_step(w, h, WARP_PROBE_SOURCE(false)), 0.0f);
     }
-    if (integrator == INTEGRATOR_GEODESIC) return vec4(geodesic_step(w, h WARP_FIELD_ARG), 0.0f);
-    return vec4(euler_step(w, h WARP_FIELD_ARG), 0.0f);
+    if (integrator == INTEGRATOR_GEODESIC) return vec4(geodesic_step(w, h, WARP_PROBE_SOURCE(false)), 0.0f);
+    return vec4(euler_step(w, h, WARP_PROBE_SOURCE(false)), 0.0f);
   }
   if (f == 5) {
-    WARP_PROBE_SOURCE(true);
-    return vec4(fixed_step(INTEGRATOR_RK4, w, h WARP_FIELD_ARG), 0.0f);
+    return vec4(fixed_step(INTEGRATOR_RK4, w, h, WARP_PROBE_SOURCE(true)), 0.0f);
   }
   if (f == 6) {
-    WARP_PROBE_SOURCE(false);
     if (x[1].w != 0.0f) {
-      vec3 v = velocity_at(w WARP_FIELD_ARG);
-      return vec4(integrate_fixed_from(INTEGRATOR_RK4, w, v, 1, int(x[0].w), h WARP_FIELD_ARG), 0.0f);
+      vec3 v = velocity_at(w, WARP_PROBE_SOURCE(false));
+      return vec4(integrate_fixed_from(INTEGRATOR_RK4, w, v, 1, int(x[0].w), h, WARP_PROBE_SOURCE(false)), 0.0f);
     }
-    return vec4(integrate_fixed(INTEGRATOR_HEUN, w, int(x[0].w), h WARP_FIELD_ARG), 0.0f);
+    return vec4(integrate_fixed(INTEGRATOR_HEUN, w, int(x[0].w), h, WARP_PROBE_SOURCE(false)), 0.0f);
   }
   if (f == 7) {
-    WARP_PROBE_SOURCE(true);
     vec3 k4;
     float error;
-    vec3 next = bogacki_shampine_step(w, velocity_at(w WARP_FIELD_ARG), h, k4, error WARP_FIELD_ARG);
+    vec3 next = bogacki_shampine_step(w, velocity_at(w, WARP_PROBE_SOURCE(true)), h, k4, error,
+                                      WARP_PROBE_SOURCE(true));
     return int(x[3].y) == 0 ? vec4(next, error) : vec4(k4, error);
   }
   if (f == 8) {
     // Continues from flow time x[3].z after int(x[3].w) attempts, with step h.
-    WARP_PROBE_SOURCE(false);
     float t = x[3].z;
     float step = h;
     int attempts = int(x[3].w);
-    bool done = advance_adaptive(w, t, step, attempts, x[2].x, x[2].z, x[2].w, int(x[3].x) WARP_FIELD_ARG);
+    bool done = advance_adaptive(w, t, step, attempts, x[2].x, x[2].z, x[2].w, int(x[3].x), WARP_PROBE_SOURCE(false));
     if (int(x[3].y) == 0) return vec4(w, done ? 1.0f : 0.0f);
     return vec4(t, step, float(attempts), done ? 1.0f : 0.0f);
   }
-  WARP_PROBE_SOURCE(true);
-  return integrate_adaptive(w, x[2].x, x[2].y, x[2].z, x[2].w, int(x[3].x) WARP_FIELD_ARG);
+  return integrate_adaptive(w, x[2].x, x[2].y, x[2].z, x[2].w, int(x[3].x), WARP_PROBE_SOURCE(true));
 }
 
 #ifdef __cplusplus
@@ -136,15 +124,10 @@ vec4 probe_warp_step(mat4 x, IN(CubeSource) source) {
   if (warp_probe_uses_curl(x)) return warp_probe_field(x, warp_probe_curl());
   return warp_probe_field(x, source);
 }
-#undef CUBE_SOURCE_PARAM
-#undef CUBE_SOURCE_ARG
-#undef WARP_TEMPLATE
-#undef WARP_FIELD_PARAM
-#undef WARP_FIELD_ARG
 #undef WARP_PROBE_SOURCE
 #else
 vec4 probe_warp_step(mat4 x) {
-  if (int(x[0].x) < 3) return warp_probe_sampled(x);
-  return warp_probe_field(x);
+  if (int(x[0].x) < 3) return warp_probe_sampled(x, probe_cube);
+  return warp_probe_field(x, false);  // the flag at each call chooses
 }
 #endif
