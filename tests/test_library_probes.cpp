@@ -847,8 +847,7 @@ TEST_CASE("cloud_march.glsl on the GPU agrees with the CPU", "[probe][march]") {
   GLuint convective_texture = 0;
   glCreateTextures(GL_TEXTURE_3D, 1, &convective_texture);
   glTextureStorage3D(convective_texture, 1, GL_R32F, voxels, voxels, 2 * voxels);
-  glTextureSubImage3D(convective_texture, 0, 0, 0, 0, voxels, voxels, 2 * voxels, GL_RED, GL_FLOAT,
-                      convective.data());
+  glTextureSubImage3D(convective_texture, 0, 0, 0, 0, voxels, voxels, 2 * voxels, GL_RED, GL_FLOAT, convective.data());
   glTextureParameteri(convective_texture, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
   glTextureParameteri(convective_texture, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
   for (GLenum wrap : {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T, GL_TEXTURE_WRAP_R})

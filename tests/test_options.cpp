@@ -243,3 +243,19 @@ TEST_CASE("scene files refuse every numeric key just outside the range the table
     }
   }
 }
+
+TEST_CASE("a panorama without a size is the 2:1 view sphere, in a scene file as with --panorama", "[fast][cli]") {
+  const regional::Scene bare = io::parse_scene(R"({"panorama": true})", "scene.json", ".");
+  CHECK(bare.panorama);
+  CHECK(bare.width == regional::panorama_width);
+  CHECK(bare.height == regional::panorama_height);
+  CHECK(bare.width == 2 * bare.height);
+  const regional::Scene sized = io::parse_scene(R"({"size": "640x480", "panorama": true})", "scene.json", ".");
+  CHECK(sized.panorama);
+  CHECK(sized.width == 640);
+  CHECK(sized.height == 480);
+  regional::Scene flags;
+  regional::make_panorama(flags, false);
+  CHECK(flags.width == regional::panorama_width);
+  CHECK(flags.height == regional::panorama_height);
+}

@@ -65,4 +65,10 @@ std::vector<float> equirect_from_cube(const gpu::Texture& cube, int width, int h
   return pixels;
 }
 
+std::vector<float> equirect_from_faces(int face_size, const std::vector<float>& texels, int width, int height) {
+  gpu::Texture cube = gpu::Texture::cube(face_size, GL_R32F);
+  cube.write(texels);
+  return equirect_from_cube(cube, width, height);
+}
+
 }  // namespace nephele::cover

@@ -35,5 +35,8 @@ constexpr int default_equirect_tile = 4096;
 // `device`, when given, measures the GPU time of the tiles' dispatches (not their read-backs).
 std::vector<float> equirect_from_cube(const gpu::Texture& cube, int width, int height, int max_tile = 0,
                                       gpu::DeviceTimer* device = nullptr);
+// The same for six one-channel faces in host memory (GL order, rows from t = 0), uploaded as a
+// cube map first; the resampler of the export presets (io::ExportOptions::resample_equirect).
+std::vector<float> equirect_from_faces(int face_size, const std::vector<float>& texels, int width, int height);
 
 }  // namespace nephele::cover

@@ -26,19 +26,27 @@ int read_cover_face_size(const std::filesystem::path& directory);
 struct ExportOptions {
   std::string ktx2_format = "r16f";     // ktx2: r16f, r32f, r8
   std::string name = "nephele_clouds";  // celestia: the add-on's folder and file names
+  // Resamples the six faces to a width x height equirect (cover::equirect_from_faces): the GPU
+  // pass that the presets with needs_equirect use, given by the caller, so that io runs none.
+  std::vector<float> (*resample_equirect)(int face_size, const std::vector<float>& texels, int width,
+                                          int height) = nullptr;
 };
+
+struct ExportPreset;
+// A preset's writer: its files (README.txt included) into `out`, their names appended to
+// `names` in the order written (one file per target family: io/export_writers.hpp).
+using ExportWriter = void(files::OutputSet& out, std::vector<std::string>& names, const ExportPreset& preset,
+                          const CoverFaces& faces, const ExportOptions& options);
 
 // One row of the preset registry: everything about a preset is here, its writer included.
 struct ExportPreset {
-  std::string name;           // --preset word
-  std::string summary;        // one line for --help and the README
-  bool needs_equirect;        // resamples the cube map on the GPU (a context must be current)
-  bool volume = false;        // reads a volume's sidecar (io/volume_export.hpp) instead of a cover
-  bool takes_format = false;  // reads --format (ExportOptions::ktx2_format)
-  bool takes_name = false;    // reads --name (ExportOptions::name)
-  // Writes the preset's files (README.txt included) into the set; nullptr for a volume preset.
-  void (*write)(files::OutputSet& outputs, std::vector<std::string>& names, const ExportPreset& preset,
-                const CoverFaces& faces, const ExportOptions& options) = nullptr;
+  std::string name;               // --preset word
+  std::string summary;            // one line for --help and the README
+  bool needs_equirect;            // resamples the cube map (ExportOptions::resample_equirect)
+  bool volume = false;            // reads a volume's sidecar (io/volume_export.hpp) instead of a cover
+  bool takes_format = false;      // reads --format (ExportOptions::ktx2_format)
+  bool takes_name = false;        // reads --name (ExportOptions::name)
+  ExportWriter* write = nullptr;  // nullptr for a volume preset
   // The longest image edge it writes for face size n; nullptr for a volume preset.
   long long (*widest_edge)(int face_size) = nullptr;
 };

@@ -1,5 +1,6 @@
 #include "io/scene_files.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 
@@ -118,6 +119,11 @@ Scene parse_scene(const std::string& text, const std::string& source, const std:
     } else {
       k.fail(key, "unknown key (allowed: " + scene_keys() + ")");
     }
+  }
+  if (s.panorama) {
+    const auto& keys = root.as_object();
+    regional::make_panorama(s,
+                            std::any_of(keys.begin(), keys.end(), [](const auto& kv) { return kv.first == "size"; }));
   }
   regional::apply_render_quality(s, source);
   regional::validate_scene(s, source);

@@ -85,6 +85,13 @@ void apply_render_quality(Scene& s, const std::string& source, const KeyOptions&
   set(params::scene::resolution_divisor, s.resolution_divisor, q->resolution_divisor);
 }
 
+void make_panorama(Scene& s, bool size_given) {
+  s.panorama = true;
+  if (size_given) return;
+  s.width = panorama_width;
+  s.height = panorama_height;
+}
+
 void parse_size(const std::string& text, int& width, int& height, const std::string& name) {
   const std::string form = "is not WIDTHxHEIGHT, e.g. 1280x720 (each 1 to " + std::to_string(max_image_side) + ")";
   const size_t x = text.find('x');

@@ -31,7 +31,7 @@ struct Scene {
   std::string time{params::scene::time.default_text};
   int width = params::size_part(params::scene::size.default_text, false);
   int height = params::size_part(params::scene::size.default_text, true);
-  bool panorama = false;
+  bool panorama = false;             // set with make_panorama
   std::vector<std::string> weather;  // weather files (paths resolved against the scene file)
   std::uint32_t seed = params::scene::seed.default_uint32();
   // The render quality (params/render_quality.hpp) and the step settings given by name (scene
@@ -66,6 +66,12 @@ std::vector<params::FieldBinding> field_bindings(Scene& scene);
 // user typed instead of the key of a file they did not write. Keys: view, at, heading, pitch,
 // fov, time, size, weather, view_steps, light_steps, frames, exposure, seed.
 using KeyOptions = std::map<std::string, std::string>;
+
+// A panorama's image when no size is given: the whole 360 x 180 degree view sphere as a 2:1
+// equirect, 2048 x 1024 (the table's `size` help says so).
+inline constexpr int panorama_width = 2048, panorama_height = 1024;
+// Turns `s` into a panorama, at panorama_width x panorama_height unless its size was given.
+void make_panorama(Scene& s, bool size_given);
 
 // Checks ranges; throws SceneError naming the key ("SOURCE: 'key': ...") or, for the keys in
 // `options`, the option ("--view: ...").

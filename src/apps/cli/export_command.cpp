@@ -6,6 +6,7 @@
 
 #include "apps/cli/commands.hpp"
 #include "apps/cli/options.hpp"
+#include "cover/equirect.hpp"
 #include "gpu/egl_context.hpp"
 #include "files/atomic_output.hpp"
 #include "io/export_presets.hpp"
@@ -53,6 +54,7 @@ int run_export(const std::vector<std::string>& arguments) {
   io::ExportOptions export_options;
   export_options.ktx2_format = format;
   export_options.name = name;
+  export_options.resample_equirect = cover::equirect_from_faces;
   io::check_export_options(preset, export_options);  // before --out is created
   io::CoverFaces faces;
   io::VolumeData volume;

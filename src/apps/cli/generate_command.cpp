@@ -9,6 +9,7 @@
 #include "params/table.hpp"
 #include "apps/cli/cover_options.hpp"
 #include "cover/cover_limits.hpp"
+#include "cover/equirect.hpp"
 #include "render/render_limits.hpp"
 #include "files/atomic_output.hpp"
 #include "io/cover_files.hpp"
@@ -113,7 +114,9 @@ int run_generate(const std::vector<std::string>& arguments) {
       const std::filesystem::path folder = outputs.temporary_directory() / "export" / preset->name;
       std::filesystem::create_directories(folder);
       files::OutputSet set(folder, files::OutputSet::Scope::directory);
-      io::write_export(set, *preset, faces);
+      io::ExportOptions export_options;
+      export_options.resample_equirect = cover::equirect_from_faces;
+      io::write_export(set, *preset, faces, export_options);
       set.commit();
     }
   }

@@ -130,11 +130,8 @@ int run_render(const std::vector<std::string>& arguments) {
     typed["powder"] = "--powder";
   }
   if (panorama) {
-    scene.panorama = true;
-    if (!scene_options.size_given()) {
-      scene.width = 2048, scene.height = 1024;
-      typed["size"] = "--panorama";
-    }
+    if (!scene_options.size_given()) typed["size"] = "--panorama";
+    regional::make_panorama(scene, scene_options.size_given());
   }
   if (!weather.empty()) {
     scene.weather = weather;

@@ -1,0 +1,172 @@
+// The export presets of planetaria and simulators: Celestia, FlightGear Earthview and KSP's EVE
+// (docs/export.md).
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+#include "core/error.hpp"
+#include "files/image_files.hpp"
+#include "files/texture_containers.hpp"
+#include "io/cover_files.hpp"
+#include "io/cube_frames.hpp"
+#include "io/export_writers.hpp"
+
+namespace nephele::io {
+
+void write_celestia(files::OutputSet& out, std::vector<std::string>& names, const ExportPreset& preset,
+                    const CoverFaces& faces, const ExportOptions& options) {
+  const core::ImageData map = equirect_image(faces, options);
+  // White cloud colour, coverage in alpha; the equirect already has the prime meridian at the centre.
+  core::ImageData rgba{map.width, map.height, 4, std::vector<float>(std::size_t(4) * map.pixels.size(), 1.0f)};
+  for (std::size_t i = 0; i < map.pixels.size(); ++i) rgba.pixels[4 * i + 3] = std::clamp(map.pixels[i], 0.0f, 1.0f);
+  const std::string folder = "extras/" + options.name + "/";
+  const std::string texture = folder + "textures/hires/" + options.name + ".png";
+  files::ImageEncoding encoding = files::png_encoding(8);
+  encoding.unassociated_alpha = true;  // PNG's alpha is unassociated: the colour stays white
+  out.write(texture, files::encode_image(rgba, encoding, texture));
+  names.push_back(texture);
+  const std::string ssc = folder + options.name + ".ssc";
+  out.write(ssc, "# nephele cloud cover for Celestia: copy extras/" + options.name +
+                     " into Celestia's extras folder.\n"
+                     "Modify \"Earth\" \"Sol\"\n{\n\tAtmosphere\n\t{\n\t\tCloudMap \"" +
+                     options.name + ".png\"\n\t}\n}\n");
+  names.push_back(ssc);
+  add_readme(out, names, preset, faces,
+             "Files: " + texture + " (RGBA 8-bit PNG, " + std::to_string(map.width) + " x " +
+                 std::to_string(map.height) +
+                 ", white, coverage in alpha, 2:1 with the prime meridian at\n"
+                 "the centre and north up) and " +
+                 ssc +
+                 ".\n"
+                 "Install: copy the folder extras/" +
+                 options.name +
+                 " into Celestia's extras directory (or the add-on\n"
+                 "folder named by ExtrasDirectories in celestia.cfg) and restart Celestia. The .ssc\n"
+                 "modifies Earth's atmosphere so that its CloudMap is this texture; Celestia looks it\n"
+                 "up in textures/hires/ when the high-resolution texture setting is chosen (it falls\n"
+                 "back to the other resolutions' folders otherwise).\n");
+}
+
+// FlightGear Earthview: eight tiles of 90 x 90 degrees whose shipped models (Models/Astro/
+// clouds_*.ac) map UVs 1/128 .. 127/128, so the content fills the inner 126/128 of a tile and
+// the border repeats the edge pixels (docs/export.md, "flightgear").
+void write_flightgear(files::OutputSet& out, std::vector<std::string>& names, const ExportPreset& preset,
+                      const CoverFaces& faces, const ExportOptions& options) {
+  const int tile = flightgear_tile_size(faces.size), border = tile / 128, content = tile - 2 * border;
+  const core::ImageData map = equirect_image(faces, options, content);
+  files::ImageEncoding encoding = files::png_encoding(8);
+  encoding.unassociated_alpha = true;  // grey stays white where the alpha is small
+  for (int h = 0; h < 2; ++h)
+    for (int q = 0; q < 4; ++q) {
+      std::vector<float> values(std::size_t(tile) * tile);
+      for (int y = 0; y < tile; ++y)
+        for (int x = 0; x < tile; ++x) {
+          const int cx = q * content + std::clamp(x - border, 0, content - 1);
+          const int cy = h * content + std::clamp(y - border, 0, content - 1);
+          values[std::size_t(y) * tile + x] = map.pixels[std::size_t(cy) * map.width + cx];
+        }
+      const std::string name = std::string("clouds_") + (h ? "S" : "N") + std::to_string(q + 1) + ".png";
+      out.write(name, files::encode_image(grey_image(tile, tile, std::move(values), true), encoding, name));
+      names.push_back(name);
+    }
+  const std::string t = std::to_string(tile), b = std::to_string(border), c = std::to_string(content);
+  add_readme(out, names, preset, faces,
+             "Files: clouds_N1.png .. clouds_N4.png (latitude 90 N to 0) and clouds_S1.png ..\n"
+             "clouds_S4.png (0 to 90 S); 1 to 4 are the longitudes 180 W-90 W, 90 W-0, 0-90 E,\n"
+             "90 E-180 E. Each is " +
+                 t + " x " + t +
+                 " PNG grey + alpha, 8-bit: grey white, coverage in\n"
+                 "alpha (unassociated), as FlightGear's shipped cloud tiles. The 90 degrees fill the\n"
+                 "inner " +
+                 c + " x " + c + " pixels; the " + b +
+                 "-pixel border repeats the edge pixels, because the\n"
+                 "shipped models Models/Astro/clouds_*.ac map their UVs from 1/128 to 127/128 of a tile.\n"
+                 "Rows are geodetic latitudes, north up. Install: replace the files of the same names\n"
+                 "in $FG_ROOT/Models/Astro/Textures/ (keep a copy of the shipped ones) or put them in\n"
+                 "an aircraft's or a scenery overlay's Models/Astro/Textures/; Earthview shows them\n"
+                 "when started (Menu: View > Earthview, or --prop:/earthview/show-clouds=1).\n");
+}
+
+namespace {
+
+// KSP's Environmental Visual Enhancements, the fork LGhassen/EnvironmentalVisualEnhancements
+// (EVE Redux / Volumetrics; its Assets/Shaders/cubeMap.cginc keeps rbray89's 1.x mapping).
+// EVE looks up an equirect with u = 0.5 + atan2(x, z)/2pi, v = acos(y)/pi in the body's frame,
+// so that frame's geography is: +Z longitude 0, +X longitude 90 E, +Y north; for the six
+// faces it inverts GetCubeCubeUV below. KSP's DDS loader puts the file's first row at v = 0.
+Direction eve_face_direction(int face, double u, double v) {
+  // face: 0 xn, 1 xp, 2 yn, 3 yp, 4 zn, 5 zp (EVE's key order texXn .. texZp).
+  switch (face) {
+    case 0: return {-1, 1 - 2 * v, 2 * u - 1};
+    case 1: return {1, 1 - 2 * v, 1 - 2 * u};
+    case 2: return {2 * u - 1, -1, 1 - 2 * v};
+    case 3: return {2 * u - 1, 1, 2 * v - 1};
+    case 4: return {1 - 2 * u, 1 - 2 * v, -1};
+    default: return {2 * u - 1, 1 - 2 * v, 1};
+  }
+}
+
+}  // namespace
+
+void write_eve(files::OutputSet& out, std::vector<std::string>& names, const ExportPreset& preset,
+               const CoverFaces& faces, const ExportOptions& options) {
+  const std::string folder = "GameData/" + options.name + "/";
+  const core::ImageData map = equirect_image(faces, options);  // EVE's equirect: u as nephele's, v = 0 in row 0 (north)
+  const std::string equirect = folder + "clouds_equirect.dds";
+  out.write(equirect, files::encode_dds_2d(map.pixels, map.width, map.height, files::DdsVariant::rgba8_white));
+  names.push_back(equirect);
+  const AxisMap eve_axes{{2, 0, 1}, {1, 1, 1}};  // nephele X = EVE z, Y = EVE x, Z = EVE y
+  const char* const keys[6] = {"Xn", "Xp", "Yn", "Yp", "Zn", "Zp"};
+  std::string config =
+      "// nephele cloud cover for EVE (LGhassen/EnvironmentalVisualEnhancements): the six\n"
+      "// faces as one cube texture; name it as a layer's _MainTex.\n"
+      "EVE_TEXTURE_CONFIG\n{\n\tname = " +
+      options.name + "_cube\n\ttype = TEX_CUBE_6\n";
+  const int n = faces.size;
+  for (int f = 0; f < 6; ++f) {
+    const auto values = cover_by_direction(faces, n, n, [&](int i, int j) {
+      return eve_axes.to_nephele(eve_face_direction(f, (i + 0.5) / n, (j + 0.5) / n));
+    });
+    std::string key = keys[f];
+    std::string file = "clouds_" + std::string(1, char(std::tolower(key[0]))) + key[1] + ".dds";
+    out.write(folder + file, files::encode_dds_2d(values, n, n, files::DdsVariant::rgba8_white));
+    names.push_back(folder + file);
+    config += "\ttex" + key + " = " + options.name + "/" + file.substr(0, file.size() - 4) + "\n";
+  }
+  config += "}\n";
+  const std::string cfg = folder + options.name + "_textures.cfg";
+  out.write(cfg, config);
+  names.push_back(cfg);
+  add_readme(out, names, preset, faces,
+             "For Kerbal Space Program's Environmental Visual Enhancements, the fork\n"
+             "LGhassen/EnvironmentalVisualEnhancements (its shader Assets/Shaders/cubeMap.cginc).\n"
+             "Files (legacy RGBA8 DDS, RGB white, coverage in alpha, one mip level):\n"
+             "  " +
+                 equirect + "  " + std::to_string(map.width) + " x " + std::to_string(map.height) +
+                 " equirect in EVE's mapping\n"
+                 "      u = 0.5 + atan2(x, z)/2pi, v = acos(y)/pi: column i at longitude -180 + 360 (i + 0.5)/W\n"
+                 "      (+Z of the body is longitude 0, +X 90 E), row j at v = (j + 0.5)/H (north first:\n"
+                 "      KSP's DDS loader puts a file's first row at v = 0)\n"
+                 "  " +
+                 folder +
+                 "clouds_xn.dds .. clouds_zp.dds  the six faces as EVE's GetCubeCubeUV samples\n"
+                 "      them (texXn .. texZp), same frame\n"
+                 "  " +
+                 cfg +
+                 "  an EVE_TEXTURE_CONFIG node (type TEX_CUBE_6) whose texXn .. texZp\n"
+                 "      keys name the faces (GameData paths without extension)\n"
+                 "KSP's Unity frame is left-handed: the faces are the cover reflected into it (nephele\n"
+                 "X, Y, Z = EVE z, x, y), not the GL faces renamed. Install: copy GameData/" +
+                 options.name +
+                 " into KSP's\n"
+                 "GameData; in a cloud layer's config set _MainTex to " +
+                 options.name +
+                 "/clouds_equirect (one texture) or\n"
+                 "to " +
+                 options.name +
+                 "_cube (the faces). Rows are geodetic latitudes (EVE's v is spherical: at most\n"
+                 "0.19 degrees apart). Not checked in KSP (not available here).\n");
+}
+
+}  // namespace nephele::io
