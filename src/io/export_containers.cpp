@@ -1,10 +1,5 @@
 // The export presets of texture containers: KTX 2.0 and DDS cube maps, the OpenEXR cube
 // environment map (docs/export.md).
-#include <algorithm>
-#include <cmath>
-#include <cstdio>
-#include <sstream>
-
 #include "core/error.hpp"
 #include "files/image_files.hpp"
 #include "files/texture_containers.hpp"

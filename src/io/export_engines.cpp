@@ -1,10 +1,5 @@
 // The export presets of game engines and renderers: Unity, Godot, Unreal and Blender
 // (docs/export.md).
-#include <algorithm>
-#include <cmath>
-#include <cstdio>
-#include <sstream>
-
 #include "core/error.hpp"
 #include "files/image_files.hpp"
 #include "io/cube_frames.hpp"

@@ -1,13 +1,7 @@
 // The export presets of plain images: the equirect map and the six GL faces (docs/export.md).
-#include <algorithm>
-#include <cmath>
-#include <cstdio>
-#include <sstream>
-
 #include "core/error.hpp"
 #include "files/image_files.hpp"
 #include "io/cover_files.hpp"
-
 #include "io/export_writers.hpp"
 
 namespace nephele::io {

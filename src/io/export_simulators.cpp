@@ -1,9 +1,6 @@
 // The export presets of planetaria and simulators: Celestia, FlightGear Earthview and KSP's EVE
 // (docs/export.md).
 #include <algorithm>
-#include <cmath>
-#include <cstdio>
-#include <sstream>
 
 #include "core/error.hpp"
 #include "files/image_files.hpp"
