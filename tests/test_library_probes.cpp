@@ -54,6 +54,15 @@ using namespace nephele::glsl;
 
 namespace {
 
+// The renderer's sampling of its data textures: GL_LINEAR, clamped to the edge on every axis (the
+// wrap of an axis a texture lacks is ignored).
+void filter_linear_clamped(GLuint texture) {
+  glTextureParameteri(texture, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTextureParameteri(texture, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  for (GLenum wrap : {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T, GL_TEXTURE_WRAP_R})
+    glTextureParameteri(texture, wrap, GL_CLAMP_TO_EDGE);
+}
+
 // One float rounding, relative: 2^-24.
 constexpr float kUlp = 1.0f / 16777216.0f;
 // Integer results (hashes, cell indices, face numbers) and sign flips: no rounding at all.
@@ -815,10 +824,7 @@ TEST_CASE("cloud_march.glsl on the GPU agrees with the CPU", "[probe][march]") {
   glCreateTextures(GL_TEXTURE_2D_ARRAY, 1, &weather_texture);
   glTextureStorage3D(weather_texture, 1, GL_R32F, size, size, channels);
   glTextureSubImage3D(weather_texture, 0, 0, 0, 0, size, size, channels, GL_RED, GL_FLOAT, weather.data());
-  glTextureParameteri(weather_texture, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-  glTextureParameteri(weather_texture, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-  glTextureParameteri(weather_texture, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-  glTextureParameteri(weather_texture, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  filter_linear_clamped(weather_texture);
   glBindTextureUnit(1, noise.texture());
   glBindTextureUnit(2, weather_texture);
   // The cumulus's shadow map (probe_march_params: shadow_map 0, 30 km each way): 4 x 4 texels of
@@ -829,10 +835,7 @@ TEST_CASE("cloud_march.glsl on the GPU agrees with the CPU", "[probe][march]") {
   glCreateTextures(GL_TEXTURE_2D_ARRAY, 1, &shadow_texture);
   glTextureStorage3D(shadow_texture, 1, GL_R32F, size, size, 1);
   glTextureSubImage3D(shadow_texture, 0, 0, 0, 0, size, size, 1, GL_RED, GL_FLOAT, shadow.data());
-  glTextureParameteri(shadow_texture, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-  glTextureParameteri(shadow_texture, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-  glTextureParameteri(shadow_texture, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-  glTextureParameteri(shadow_texture, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  filter_linear_clamped(shadow_texture);
   glBindTextureUnit(6, shadow_texture);
   glBindTextureUnit(7, shadow_texture);  // function 20 reads it as the sky's map
   // Two convective volumes of 4^3 voxels, stacked along z as the renderer stacks them: voxel
@@ -848,10 +851,7 @@ TEST_CASE("cloud_march.glsl on the GPU agrees with the CPU", "[probe][march]") {
   glCreateTextures(GL_TEXTURE_3D, 1, &convective_texture);
   glTextureStorage3D(convective_texture, 1, GL_R32F, voxels, voxels, 2 * voxels);
   glTextureSubImage3D(convective_texture, 0, 0, 0, 0, voxels, voxels, 2 * voxels, GL_RED, GL_FLOAT, convective.data());
-  glTextureParameteri(convective_texture, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-  glTextureParameteri(convective_texture, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-  for (GLenum wrap : {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T, GL_TEXTURE_WRAP_R})
-    glTextureParameteri(convective_texture, wrap, GL_CLAMP_TO_EDGE);
+  filter_linear_clamped(convective_texture);
   glBindTextureUnit(5, convective_texture);
   MarchSources sources;
   sources.convective = {voxels, 2, convective.data()};
@@ -1014,10 +1014,7 @@ TEST_CASE("terrain.glsl on the GPU agrees with the CPU", "[probe][terrain]") {
   glCreateTextures(GL_TEXTURE_2D, 1, &texture);
   glTextureStorage2D(texture, 1, GL_RG32F, size, size);
   glTextureSubImage2D(texture, 0, 0, 0, size, size, GL_RG, GL_FLOAT, texels.data());
-  glTextureParameteri(texture, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-  glTextureParameteri(texture, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-  glTextureParameteri(texture, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-  glTextureParameteri(texture, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  filter_linear_clamped(texture);
   glBindTextureUnit(4, texture);
   const TerrainSource source{{size, 1, heights.data()}, {size, 1, ceilings.data()}};
   auto cpu = [&](const mat4& x) { return probe_terrain(x, source); };

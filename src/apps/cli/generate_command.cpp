@@ -110,12 +110,12 @@ int run_generate(const std::vector<std::string>& arguments) {
     // Each preset writes its own set into export/NAME inside this set's temporary directory,
     // so that everything still appears whole or not at all (write_cover_files commits it).
     const io::CoverFaces faces{parameters.size, cover.cover_field().read()};
+    io::ExportOptions export_options;
+    export_options.resample_equirect = cover::equirect_from_faces;
     for (const io::ExportPreset* preset : presets) {
       const std::filesystem::path folder = outputs.temporary_directory() / "export" / preset->name;
       std::filesystem::create_directories(folder);
       files::OutputSet set(folder, files::OutputSet::Scope::directory);
-      io::ExportOptions export_options;
-      export_options.resample_equirect = cover::equirect_from_faces;
       io::write_export(set, *preset, faces, export_options);
       set.commit();
     }
