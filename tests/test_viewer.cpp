@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <optional>
 #include <set>
 
 #include "apps/viewer/modeller.hpp"
@@ -13,6 +14,7 @@
 #include "core/error.hpp"
 #include "params/field_binding.hpp"
 #include "params/table.hpp"
+#include "regional/sites.hpp"
 #include "render/scene_renderer.hpp"
 
 namespace nephele {
@@ -294,6 +296,50 @@ TEST_CASE("a scene's parameters reach the viewer's state and the renderer's sett
   CHECK_THROWS_AS(params::copy_bound_fields({{&params::scene::seed, &text}}, {{&params::scene::seed, &number}}),
                   std::logic_error);
   CHECK(params::copy_bound_fields({{&params::scene::fov, &number}}, {{&params::scene::pitch, &number}}) == 0);
+}
+
+TEST_CASE("a camera position given or left to the viewpoint moves between scene, camera and viewer state by the table",
+          "[fast][viewer]") {
+  // An empty optional is not copied (the viewpoint's value stays); a given one is.
+  std::optional<double> left, given = 7.5;
+  double field = 3;
+  CHECK(params::copy_bound_fields({{&params::scene::height, &left}}, {{&params::scene::height, &field}}) == 0);
+  CHECK(field == 3);
+  CHECK(params::copy_bound_fields({{&params::scene::height, &given}}, {{&params::scene::height, &field}}) == 1);
+  CHECK(field == 7.5);
+  CHECK(params::copy_bound_fields({{&params::scene::height, &field}}, {{&params::scene::height, &left}}) == 1);
+  CHECK(left == 7.5);
+
+  // --at and --heading reach the camera; the viewer's state goes back to a scene with them.
+  regional::Scene scene;
+  scene.latitude_deg = 47.25;
+  scene.longitude_deg = 7.5;
+  scene.height_m = 1200;
+  scene.heading_deg = 135;
+  scene.pitch_deg = 4;
+  const render::Camera camera = render::scene_camera(scene);
+  CHECK(camera.latitude_deg == 47.25);
+  CHECK(camera.longitude_deg == 7.5);
+  CHECK(camera.height_m == 1200);
+  CHECK(camera.heading_deg == 135);
+  CHECK(camera.pitch_deg == 4);
+  const regional::Scene back = viewer::scene_of(viewer::state_of_scene(scene), 32, 18);
+  CHECK(back.latitude_deg == scene.latitude_deg);
+  CHECK(back.longitude_deg == scene.longitude_deg);
+  CHECK(back.height_m == scene.height_m);
+  CHECK(back.heading_deg == scene.heading_deg);
+
+  // Choosing a viewpoint moves the camera to its summit and heading and keeps the pitch and fov.
+  viewer::ViewState state = viewer::state_of_scene(scene);
+  state.camera.fov_deg = 41;
+  viewer::go_to_viewpoint(state, "bantiger");
+  const auto bantiger = regional::find_viewpoint("bantiger");
+  REQUIRE(bantiger);
+  CHECK(state.camera.latitude_deg == bantiger->site.latitude_deg);
+  CHECK(state.camera.height_m == bantiger->site.elevation_m + 2.0);
+  CHECK(state.camera.heading_deg == bantiger->heading_deg);
+  CHECK(state.camera.pitch_deg == 4);
+  CHECK(state.camera.fov_deg == 41);
 }
 
 }  // namespace nephele

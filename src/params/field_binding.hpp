@@ -4,6 +4,7 @@
 // to the table, so that copies between such structs go through the table instead of field by
 // field by hand.
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <variant>
 #include <vector>
@@ -12,7 +13,9 @@
 
 namespace nephele::params {
 
-using FieldPointer = std::variant<double*, float*, int*, std::uint32_t*, std::string*>;
+// An optional number is a value a struct may leave to someone else (a scene's position, given
+// by --at or left to its viewpoint): copied from only when it holds a value.
+using FieldPointer = std::variant<double*, float*, int*, std::uint32_t*, std::string*, std::optional<double>*>;
 
 struct FieldBinding {
   const Parameter* parameter;
@@ -21,7 +24,8 @@ struct FieldBinding {
 
 // Copies the value of every parameter that both lists bind from its field in `from` to its field
 // in `to`, numbers converted to the target's type (a text to a number, or the reverse, is a
-// std::logic_error: one parameter is one kind of value). Returns how many were copied.
+// std::logic_error: one parameter is one kind of value); an empty optional source is skipped.
+// Returns how many were copied.
 int copy_bound_fields(const std::vector<FieldBinding>& from, const std::vector<FieldBinding>& to);
 
 }  // namespace nephele::params

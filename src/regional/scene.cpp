@@ -38,7 +38,11 @@ void check_range(const std::string& where, double value, const params::Parameter
 
 std::vector<params::FieldBinding> field_bindings(Scene& s) {
   namespace sc = params::scene;
-  return {{&sc::pitch, &s.pitch_deg},
+  return {{&sc::latitude, &s.latitude_deg},
+          {&sc::longitude, &s.longitude_deg},
+          {&sc::height, &s.height_m},
+          {&sc::heading, &s.heading_deg},
+          {&sc::pitch, &s.pitch_deg},
           {&sc::fov, &s.fov_deg},
           {&sc::time, &s.time},
           {&sc::seed, &s.seed},

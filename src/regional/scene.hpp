@@ -57,7 +57,7 @@ struct Scene {
 };
 
 // The fields of `scene` that hold one parameter of the table each (not the view, whose meaning
-// depends on the optional position, nor the optional heading and position themselves): what
+// depends on the optional position; the position and heading copy from only where given): what
 // copies between a scene and the structs made from it go through (params::copy_bound_fields).
 std::vector<params::FieldBinding> field_bindings(Scene& scene);
 

@@ -315,6 +315,12 @@ int shadow_map_count(const glsl::MarchParams& params) {
   return maps;
 }
 
+std::vector<params::FieldBinding> field_bindings(Camera& c) {
+  namespace sc = params::scene;
+  return {{&sc::latitude, &c.latitude_deg}, {&sc::longitude, &c.longitude_deg}, {&sc::height, &c.height_m},
+          {&sc::heading, &c.heading_deg},   {&sc::pitch, &c.pitch_deg},         {&sc::fov, &c.fov_deg}};
+}
+
 std::vector<params::FieldBinding> field_bindings(RenderSettings& s) {
   namespace sc = params::scene;
   return {{&sc::view_steps, &s.view_steps},

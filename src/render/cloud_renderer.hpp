@@ -29,6 +29,10 @@ struct Camera {
   int width = 1280, height = 720;
 };
 
+// The camera's fields by the parameters that declare them (position, heading, pitch, fov), so
+// that a scene or the viewer's state moves into it through the table (params/field_binding.hpp).
+std::vector<params::FieldBinding> field_bindings(Camera& camera);
+
 // A perspective camera's axes in its east-north-up frame (level right, up = right x forward)
 // and tan(fov / 2): what the marcher's view_direction spans its pixels with.
 struct CameraFrame {

@@ -54,21 +54,17 @@ PreparedScene prepare_scene(const regional::Scene& scene, const std::vector<regi
 
 Camera scene_camera(const regional::Scene& scene) {
   Camera c;
-  if (scene.latitude_deg) {
-    c.latitude_deg = *scene.latitude_deg;
-    c.longitude_deg = *scene.longitude_deg;
-    c.height_m = *scene.height_m;
-    c.heading_deg = scene.heading_deg.value_or(0.0);
-  } else {
+  if (!scene.latitude_deg) {
+    // The viewpoint's place, eye height 2 m above the summit, and its heading unless given.
     const auto viewpoint = regional::find_viewpoint(scene.view);
     c.latitude_deg = viewpoint->site.latitude_deg;
     c.longitude_deg = viewpoint->site.longitude_deg;
-    // Eye height 2 m above the summit.
     c.height_m = viewpoint->site.elevation_m + 2.0;
-    c.heading_deg = scene.heading_deg.value_or(viewpoint->heading_deg);
+    c.heading_deg = viewpoint->heading_deg;
   }
-  c.pitch_deg = scene.pitch_deg;
-  c.fov_deg = scene.fov_deg;
+  // The position (--at) and heading where given, pitch and fov, through the table.
+  regional::Scene source = scene;
+  params::copy_bound_fields(regional::field_bindings(source), field_bindings(c));
   c.panorama = scene.panorama;
   c.width = scene.width;
   c.height = scene.height;

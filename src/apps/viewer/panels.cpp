@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <cstring>
 #include <map>
+#include <optional>
 #include <sstream>
 
 #include "core/error.hpp"
@@ -109,6 +110,9 @@ void parameter_widget(ViewState& state, const params::Parameter& p, std::string&
         using T = std::remove_pointer_t<decltype(field)>;
         if constexpr (std::is_same_v<T, std::string>) {
           if (text_widget(p, *field, error) && &p == &params::scene::view) go_to_viewpoint(state, *field);
+        } else if constexpr (std::is_same_v<T, std::optional<double>>) {
+          if (!*field) *field = p.default_number;
+          number_widget(p, **field);
         } else {
           number_widget(p, *field);
         }
@@ -253,7 +257,11 @@ std::string value_text(ViewState& state, const params::Parameter& p) {
         } else {
           std::ostringstream s;
           s.precision(17);
-          s << *field;
+          if constexpr (std::is_same_v<T, std::optional<double>>) {
+            if (*field) s << **field;  // empty: left to the viewpoint
+          } else {
+            s << *field;
+          }
           return s.str();
         }
       },

@@ -14,21 +14,20 @@ namespace nephele::viewer {
 std::vector<Binding> bindings(ViewState& s) {
   namespace sc = params::scene;
   namespace co = params::cover;
-  return {{&sc::view, &s.viewpoint},
-          {&sc::heading, &s.camera.heading_deg},
-          {&sc::pitch, &s.camera.pitch_deg},
-          {&sc::fov, &s.camera.fov_deg},
-          {&sc::time, &s.time},
-          {&sc::view_steps, &s.view_steps},
-          {&sc::light_steps, &s.light_steps},
-          {&sc::exposure, &s.exposure},
-          {&sc::seed, &s.seed},
-          {&sc::cover_size, &s.cover_size},
-          {&co::coverage, &s.coverage},
-          {&co::month, &s.month},
-          {&co::iterations, &s.iterations},
-          {&co::step, &s.step},
-          {&co::integrator, &s.integrator}};
+  std::vector<Binding> out = render::field_bindings(s.camera);  // position, heading, pitch, fov
+  out.insert(out.end(), {{&sc::view, &s.viewpoint},
+                         {&sc::time, &s.time},
+                         {&sc::view_steps, &s.view_steps},
+                         {&sc::light_steps, &s.light_steps},
+                         {&sc::exposure, &s.exposure},
+                         {&sc::seed, &s.seed},
+                         {&sc::cover_size, &s.cover_size},
+                         {&co::coverage, &s.coverage},
+                         {&co::month, &s.month},
+                         {&co::iterations, &s.iterations},
+                         {&co::step, &s.step},
+                         {&co::integrator, &s.integrator}});
+  return out;
 }
 
 bool option_only(const params::Parameter& p) {
@@ -46,14 +45,12 @@ void go_to_viewpoint(ViewState& state, const std::string& name) {
     return;
   }
   if (!regional::find_viewpoint(name)) return;
-  regional::Scene scene;
+  // The viewpoint's place and heading; the pitch and fov stay the state's.
+  regional::Scene scene = scene_of(state, state.camera.width, state.camera.height);
   scene.view = name;
-  const render::Camera camera = render::scene_camera(scene);
+  scene.latitude_deg = scene.longitude_deg = scene.height_m = scene.heading_deg = std::nullopt;
   state.viewpoint = name;
-  state.camera.latitude_deg = camera.latitude_deg;
-  state.camera.longitude_deg = camera.longitude_deg;
-  state.camera.height_m = camera.height_m;
-  state.camera.heading_deg = camera.heading_deg;
+  state.camera = render::scene_camera(scene);
 }
 
 ViewState state_of_scene(const regional::Scene& scene) {
@@ -81,14 +78,10 @@ ViewState state_of_scene(const regional::Scene& scene) {
 regional::Scene scene_of(const ViewState& state, int width, int height) {
   regional::Scene scene;
   scene.view.clear();
-  scene.latitude_deg = state.camera.latitude_deg;
-  scene.longitude_deg = state.camera.longitude_deg;
-  scene.height_m = state.camera.height_m;
-  scene.heading_deg = state.camera.heading_deg;
   scene.width = width;
   scene.height = height;
   scene.weather = state.weather;
-  // Pitch, fov, time, seed, steps, exposure, cover size through the table's bindings.
+  // Position, heading, pitch, fov, time, seed, steps, exposure, cover size through the table.
   ViewState source = state;
   params::copy_bound_fields(bindings(source), regional::field_bindings(scene));
   return scene;
