@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "gl_support.hpp"
+#include "library_probes.hpp"
 #include "march_tolerance.hpp"
 #include "model/density_volume.hpp"
 #include "regional/terrain.hpp"
@@ -51,6 +52,13 @@ namespace nephele::glsl {
 
 using namespace nephele;
 using namespace nephele::glsl;
+using test::arguments;
+using test::cube_of;
+using test::kArithmetic;
+using test::kExact;
+using test::kTranscendental;
+using test::kUlp;
+using test::probe_text;
 
 namespace {
 
@@ -63,18 +71,7 @@ void filter_linear_clamped(GLuint texture) {
     glTextureParameteri(texture, wrap, GL_CLAMP_TO_EDGE);
 }
 
-// One float rounding, relative: 2^-24.
-constexpr float kUlp = 1.0f / 16777216.0f;
-// Integer results (hashes, cell indices, face numbers) and sign flips: no rounding at all.
-constexpr float kExact = 0.0f;
-// GLSL allows 2.5 ulp for a division and lets the driver fuse a*b + c (1 ulp more per fused
-// pair); the arithmetic probed here chains at most 8 such operations on values below 4:
-// 8 x 3.5 ulp x 4 = 112 ulp (6.7e-6).
-constexpr float kArithmetic = 8 * 3.5f * 4 * kUlp;
-// Driver exp, pow, sin and cos: GLSL 4.50 (section 4.7.1) allows exp/exp2 3 + 2|x| ulp and pow
-// that of exp2(y log2 x); with |x| <= 8 here that is at most 19 ulp relative, then the few
-// arithmetic operations around them: 32 ulp relative, on results below 4 (absolute 2^-17).
-constexpr float kTranscendental = 32 * 4 * kUlp;
+// The float tolerances kUlp, kExact, kArithmetic and kTranscendental: library_probes.hpp.
 // Worley F1 is a sqrt of a squared distance below 3 formed from 3 products and sums: a few ulp
 // of values below 2 (the probe of test_shader_probes.cpp measures the same): 2^-20.
 constexpr float kWorley = 16 * kUlp;
@@ -153,26 +150,10 @@ const float kTransmittance = kDepthRelative / std::exp(1.0f) + kTranscendental;
 // before them by kDepthRelative relative (in the worst case, D ~ 1) and that towards the sun too.
 constexpr float kSkyRelative = 3 * kDepthRelative;
 
-std::string probe_text(const std::string& name) {
-  std::ifstream in(std::string(NEPHELE_SOURCE_DIR) + "/tests/probes/" + name + ".glsl");
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
 struct Case {
-  mat4 input;
+  mat4 input;       // test::arguments: the function's code (the probe's PROBE_...) and its arguments
   float tolerance;  // absolute, per component
 };
-
-mat4 arguments(int function, vec4 a, vec4 b = vec4(0.0f), vec4 c = vec4(0.0f), vec4 d = vec4(0.0f)) {
-  mat4 m(0.0f);
-  m[0] = vec4(float(function), a.x, a.y, a.z);
-  m[1] = b;
-  m[2] = c;
-  m[3] = d;
-  return m;
-}
 
 // `data`: the probe's data at binding 2 (a cube map, say), which `cpu` reads as a CubeSource.
 template <class Cpu>
@@ -180,10 +161,13 @@ void compare(const std::string& name, Cpu cpu, const std::vector<Case>& cases, c
              gpu::ProbeData kind = gpu::ProbeData::buffer) {
   std::vector<mat4> inputs;
   for (const auto& c : cases) inputs.push_back(c.input);
-  const auto gpu = test::probe<vec4>(probe_text(name), "probe_" + name + "(input_value)", inputs, "", data, kind);
+  const auto gpu = test::run_library_probe(name, inputs, data, kind);
+  const auto functions = test::probe_function_names(probe_text(name));
   for (size_t k = 0; k < cases.size(); ++k) {
     const vec4 expected = cpu(cases[k].input);
-    INFO(name << " function " << cases[k].input[0].x << " case " << k);
+    const int code = int(cases[k].input[0].x);
+    INFO("tests/probes/" << name << ".glsl " << (functions.count(code) ? functions.at(code) : "function") << " (code "
+                         << code << ") case " << k);
     for (int i = 0; i < 4; ++i) {
       INFO("component " << i << ": GPU " << gpu[k][i] << ", CPU " << expected[i]);
       REQUIRE(std::abs(gpu[k][i] - expected[i]) <= cases[k].tolerance);
@@ -230,7 +214,8 @@ TEST_CASE("every function of each GLSL library file appears in that file's probe
 
 TEST_CASE("portable_math.glsl on the GPU agrees with the CPU", "[probe]") {
   std::vector<Case> cases;
-  for (int k = 0; k <= 64; ++k) cases.push_back({arguments(0, vec4(-1.0f + k / 32.0f, 0, 0, 0)), kArithmetic});
+  for (int k = 0; k <= 64; ++k)
+    cases.push_back({arguments(PROBE_PORTABLE_ASIN, vec4(-1.0f + k / 32.0f, 0, 0, 0)), kArithmetic});
   compare("portable_math", probe_portable_math, cases);
 }
 
@@ -244,8 +229,10 @@ TEST_CASE("ray_sphere.glsl on the GPU agrees with the CPU", "[probe]") {
     const vec3 target = vec3(r.v(-0.25f, 0.25f));
     const vec3 d = normalize(target - o);
     const float r_in = r(1.0f, 1.2f), r_out = r(1.3f, 1.6f), limit = r(0.5f, 4.0f);
+    const int function = k % 2 ? PROBE_RAY_SHELL : PROBE_RAY_SPHERE;
     cases.push_back(
-        {arguments(k % 2, vec4(k % 2 ? r_in : r_out, r_out, limit, 0), vec4(o, 0), vec4(d, 0)), kArithmetic});
+        {arguments(function, vec4(function == PROBE_RAY_SHELL ? r_in : r_out, r_out, limit, 0), vec4(o, 0), vec4(d, 0)),
+         kArithmetic});
   }
   compare("ray_sphere", probe_ray_sphere, cases);
 }
@@ -253,7 +240,7 @@ TEST_CASE("ray_sphere.glsl on the GPU agrees with the CPU", "[probe]") {
 TEST_CASE("equirect_mapping.glsl on the GPU agrees with the CPU", "[probe]") {
   std::vector<Case> cases;
   for (int column = 0; column < 64; column += 3)
-    for (int f = 0; f < 2; ++f) {
+    for (int f : {PROBE_EQUIRECT_LONGITUDE, PROBE_EQUIRECT_DIRECTION}) {
       const float latitude = 0.05f * column - 1.5f;
       cases.push_back(
           {arguments(f, vec4(float(column), 64.0f, 0, 0), vec4(std::cos(latitude), std::sin(latitude), 0, 0)),
@@ -266,7 +253,7 @@ TEST_CASE("equirect_mapping.glsl on the GPU agrees with the CPU", "[probe]") {
     const float longitude = equirect_longitude(column, 64);
     const vec3 n(std::cos(latitude) * std::cos(longitude), std::cos(latitude) * std::sin(longitude),
                  std::sin(latitude));
-    cases.push_back({arguments(2, vec4(0.0f), vec4(n, 0.0f)), kTranscendental});
+    cases.push_back({arguments(PROBE_EQUIRECT_UV, vec4(0.0f), vec4(n, 0.0f)), kTranscendental});
     const vec2 uv = equirect_uv(n);
     CHECK(uv.x == Approx((column + 0.5) / 64).margin(1e-6));
     CHECK(uv.y == Approx(0.5 - latitude / M_PI).margin(1e-6));
@@ -280,10 +267,14 @@ TEST_CASE("cube_faces.glsl on the GPU agrees with the CPU", "[probe]") {
   for (int face = 0; face < 6; ++face)
     for (int k = 0; k < 8; ++k) {
       const vec3 direction = normalize(vec3(r.v(-1.0f, 1.0f)) + vec3(1e-3f));
-      cases.push_back({arguments(0, vec4(float(face), r(-1.0f, 1.0f), r(-1.0f, 1.0f), 0)), kExact});
-      cases.push_back({arguments(1, vec4(float(face), float(k), float(7 - k), 0), vec4(8.0f, 0, 0, 0)), kArithmetic});
-      cases.push_back({arguments(2, vec4(0.0f), vec4(direction, 0)), kExact});
-      cases.push_back({arguments(3, vec4(float(cube_face_of(direction)), 0, 0, 0), vec4(direction, 0)), kArithmetic});
+      cases.push_back({arguments(PROBE_CUBE_FACE_POINT, vec4(float(face), r(-1.0f, 1.0f), r(-1.0f, 1.0f), 0)), kExact});
+      cases.push_back(
+          {arguments(PROBE_TEXEL_DIRECTION, vec4(float(face), float(k), float(7 - k), 0), vec4(8.0f, 0, 0, 0)),
+           kArithmetic});
+      cases.push_back({arguments(PROBE_CUBE_FACE_OF, vec4(0.0f), vec4(direction, 0)), kExact});
+      cases.push_back(
+          {arguments(PROBE_CUBE_FACE_COORDS, vec4(float(cube_face_of(direction)), 0, 0, 0), vec4(direction, 0)),
+           kArithmetic});
     }
   compare("cube_faces", probe_cube_faces, cases);
 }
@@ -291,11 +282,12 @@ TEST_CASE("cube_faces.glsl on the GPU agrees with the CPU", "[probe]") {
 TEST_CASE("hash.glsl on the GPU agrees with the CPU", "[probe]") {
   Random r(13);
   std::vector<Case> cases;
+  const int functions[] = {PROBE_PCG3D, PROBE_HASH_TO_UNIT3, PROBE_NOISE_KEY};
   for (int k = 0; k < 48; ++k) {
     // Integers below 2^24 pass exactly as floats.
     const vec4 v = vec4(std::floor(r(0.0f, 16777215.0f)), std::floor(r(0.0f, 16777215.0f)),
                         std::floor(r(0.0f, 16777215.0f)), 0.0f);
-    cases.push_back({arguments(k % 3, vec4(0.0f), v), kExact});
+    cases.push_back({arguments(functions[k % 3], vec4(0.0f), v), kExact});
   }
   compare("hash", probe_hash, cases);
 }
@@ -307,10 +299,13 @@ TEST_CASE("cover_density.glsl on the GPU agrees with the CPU", "[probe]") {
   for (int k = 0; k < 32; ++k) {
     const vec4 p = vec4(normalize(vec3(r.v(-1.0f, 1.0f)) + vec3(1e-3f)), 0.0f);
     const vec4 seed_and_offset(7.0f, r(-0.5f, 0.5f), r(-0.5f, 0.5f), r(-0.5f, 0.5f));
-    cases.push_back({arguments(k % 2, vec4(0.0f), p, fbm, seed_and_offset), kFbm});
-    cases.push_back({arguments(2, vec4(r(0.0f, 1.0f), r(0.0f, 0.5f), r(0.5f, 1.0f), 0)), kArithmetic});
-    cases.push_back({arguments(3, vec4(r(0.0f, 1.5f), r(0.0f, 0.7f), r(0.0f, 2.0f), 0), vec4(0.0f), vec4(0.0f),
-                               vec4(0.0f, r(-1.0f, 1.0f), r(0.0f, 1.0f), 0.0f)),
+    cases.push_back(
+        {arguments(k % 2 ? PROBE_COVER_DENSITY_SHIFTED : PROBE_COVER_DENSITY, vec4(0.0f), p, fbm, seed_and_offset),
+         kFbm});
+    cases.push_back(
+        {arguments(PROBE_COVER_FROM_DENSITY, vec4(r(0.0f, 1.0f), r(0.0f, 0.5f), r(0.5f, 1.0f), 0)), kArithmetic});
+    cases.push_back({arguments(PROBE_SHAPED_DENSITY, vec4(r(0.0f, 1.5f), r(0.0f, 0.7f), r(0.0f, 2.0f), 0), vec4(0.0f),
+                               vec4(0.0f), vec4(0.0f, r(-1.0f, 1.0f), r(0.0f, 1.0f), 0.0f)),
                      kArithmetic});
   }
   compare("cover_density", probe_cover_density, cases);
@@ -327,13 +322,13 @@ TEST_CASE("latitude_bands.glsl on the GPU agrees with the CPU", "[probe]") {
   const float coordinate_tolerance = 32.0f * kArithmetic;
   for (int k = 0; k < 32; ++k) {
     const vec4 direction = vec4(normalize(vec3(r.v(-1.0f, 1.0f)) + vec3(1e-3f)), 0.0f);
-    cases.push_back({arguments(0, vec4(90.0f, 0, 0, 0), direction), coordinate_tolerance});
+    cases.push_back({arguments(PROBE_BAND_COORDINATE, vec4(90.0f, 0, 0, 0), direction), coordinate_tolerance});
     // Coordinates given as floats: the band, fraction and neighbours (mirrored at both poles)
     // involve only floor, a subtraction of it and integer arithmetic.
     const float c = k < 4 ? -0.5f + 0.1f * k : k < 8 ? 89.5f - 0.1f * (k - 4) : r(-0.5f, 89.5f);
-    cases.push_back({arguments(1, vec4(90.0f, c, 0, 0)), kExact});
-    cases.push_back({arguments(2, vec4(90.0f, c, 0, 0)), kExact});
-    cases.push_back({arguments(3, vec4(0.0f, r(0.0f, 1.0f), 0, 0)), kArithmetic});
+    cases.push_back({arguments(PROBE_BAND_OF, vec4(90.0f, c, 0, 0)), kExact});
+    cases.push_back({arguments(PROBE_BAND_NEIGHBOURS, vec4(90.0f, c, 0, 0)), kExact});
+    cases.push_back({arguments(PROBE_CATMULL_ROM_WEIGHTS, vec4(0.0f, r(0.0f, 1.0f), 0, 0)), kArithmetic});
   }
   compare("latitude_bands", probe_latitude_bands, cases);
   // The mirror at the poles: the neighbours of the southernmost half band are 1, 0, 0, 1.
@@ -348,18 +343,23 @@ TEST_CASE("latitude_bands.glsl on the GPU agrees with the CPU", "[probe]") {
 TEST_CASE("cloud_density.glsl on the GPU agrees with the CPU", "[probe]") {
   Random r(15);
   std::vector<Case> cases;
-  for (int f = 0; f < 13; ++f)
+  for (int f : {PROBE_HERMITE_STEP, PROBE_SHEET_PROFILE, PROBE_HEAPED_DENSITY, PROBE_SHEET_DENSITY,
+                PROBE_HERMITE_STEP_HALF_WIDTH, PROBE_CLOUD_DENSITY, PROBE_UNIFORM_FROM_MIX, PROBE_NOISE_PERIOD,
+                PROBE_CLOUD_PHASE, PROBE_SUN_SCATTERING, PROBE_LIGHT_SAMPLE, PROBE_FOG_DENSITY, PROBE_POWDER_FACTOR})
     for (int k = 0; k < 12; ++k) {
       vec4 a(r(0.0f, 1.0f), r(0.0f, 1.0f), r(0.0f, 1.0f), 0.0f);
-      if (f == 10) a = vec4(float(k), 12.0f, r(100.0f, 4000.0f), 0.0f);        // light_sample(i, n, length)
-      if (f == 0) a.y = a.x + r(0.05f, 1.0f);                                  // hermite_step needs a < b
-      if (f == 7) a.x = float(k % 9);                                          // noise_period's cloud type
-      if (f == 8) a = vec4(r(-1.0f, 1.0f), r(0.25f, 1.0f), 0, 0);              // cloud_phase(nu, scale)
-      if (f == 9) a = vec4(r(0.0f, 8.0f), r(-1.0f, 1.0f), 0, 0);               // sun_scattering(tau, nu)
-      if (f == 12) a = vec4(r(0.0f, 4.0f), r(-1.0f, 1.0f), r(0.0f, 1.0f), 0);  // powder_factor(tau, nu, k)
+      if (f == PROBE_LIGHT_SAMPLE) a = vec4(float(k), 12.0f, r(100.0f, 4000.0f), 0.0f);         // (i, n, length)
+      if (f == PROBE_HERMITE_STEP) a.y = a.x + r(0.05f, 1.0f);                                  // needs a < b
+      if (f == PROBE_NOISE_PERIOD) a.x = float(k % 9);                                          // the cloud type
+      if (f == PROBE_CLOUD_PHASE) a = vec4(r(-1.0f, 1.0f), r(0.25f, 1.0f), 0, 0);               // (nu, scale)
+      if (f == PROBE_SUN_SCATTERING) a = vec4(r(0.0f, 8.0f), r(-1.0f, 1.0f), 0, 0);             // (tau, nu)
+      if (f == PROBE_POWDER_FACTOR) a = vec4(r(0.0f, 4.0f), r(-1.0f, 1.0f), r(0.0f, 1.0f), 0);  // (tau, nu, k)
       const vec4 b(r(0.0f, 1.0f), r(0.0f, 1.0f), float(k % 9), 0.0f);
-      const bool transcendental = f == 5 || f == 8 || f == 9 || f == 12;
-      cases.push_back({arguments(f, a, b), f == 7 ? kExact : transcendental ? kTranscendental : kArithmetic});
+      const bool transcendental =
+          f == PROBE_CLOUD_DENSITY || f == PROBE_CLOUD_PHASE || f == PROBE_SUN_SCATTERING || f == PROBE_POWDER_FACTOR;
+      cases.push_back({arguments(f, a, b), f == PROBE_NOISE_PERIOD ? kExact
+                                           : transcendental        ? kTranscendental
+                                                                   : kArithmetic});
     }
   compare("cloud_density", probe_cloud_density, cases);
 }
@@ -368,16 +368,22 @@ TEST_CASE("worley.glsl on the GPU agrees with the CPU", "[probe]") {
   Random r(16);
   std::vector<Case> cases;
   const vec4 key = vec4(std::floor(r(0.0f, 16777215.0f)), std::floor(r(0.0f, 16777215.0f)), 12345.0f, 0.0f);
+  const int functions[] = {
+      PROBE_WRAP_CELL,     PROBE_FEATURE_OFFSET,     PROBE_WORLEY_CANDIDATE, PROBE_WRAPPED_FEATURE_OFFSET,
+      PROBE_SMOOTH_WORLEY, PROBE_WRAPPED_NEIGHBOURS, PROBE_WORLEY_F1};
   for (int k = 0; k < 98; ++k) {
-    const int f = k % 7;
-    const bool integer = f < 2 || f == 3 || f == 5;
+    const int f = functions[k % 7];
+    const bool integer = f == PROBE_WRAP_CELL || f == PROBE_FEATURE_OFFSET || f == PROBE_WRAPPED_FEATURE_OFFSET ||
+                         f == PROBE_WRAPPED_NEIGHBOURS;
     const vec4 period = (k / 4) % 2 ? vec4(5.0f, 7.0f, 3.0f, 0.0f) : vec4(0.0f);
     const vec4 p =
         integer ? vec4(std::floor(r(-40.0f, 40.0f)), std::floor(r(-40.0f, 40.0f)), std::floor(r(-40.0f, 40.0f)), 0)
-                : (f == 2 ? r.v(0.0f, 1.0f) : r.v(-20.0f, 20.0f));
+                : (f == PROBE_WORLEY_CANDIDATE ? r.v(0.0f, 1.0f) : r.v(-20.0f, 20.0f));
     vec4 a(r(0.5f, 3.0f), float(k % 3 - 1), float((k / 3) % 3 - 1), 0.0f);
-    if (f == 4) a.y = r(0.05f, 1.0f);  // smooth_worley's lambda
-    cases.push_back({arguments(f, a, p, period, key), integer ? kExact : f == 4 ? kSmoothWorley : kWorley});
+    if (f == PROBE_SMOOTH_WORLEY) a.y = r(0.05f, 1.0f);  // smooth_worley's lambda
+    cases.push_back({arguments(f, a, p, period, key), integer                    ? kExact
+                                                      : f == PROBE_SMOOTH_WORLEY ? kSmoothWorley
+                                                                                 : kWorley});
   }
   compare("worley", probe_worley, cases);
 }
@@ -390,8 +396,8 @@ TEST_CASE("worley_fbm.glsl on the GPU agrees with the CPU", "[probe]") {
     const vec4 period = k % 2 ? vec4(4.0f, 4.0f, 4.0f, 0.0f) : vec4(0.0f);
     const bool smooth = k % 3 == 2;  // smooth_worley_fbm with lambda in [0.05, 1]
     cases.push_back(
-        {arguments(0, vec4(smooth ? 1.0f : 0.0f, smooth ? r(0.05f, 1.0f) : 0.0f, 0.0f, 0.0f), r.v(0.0f, 1.0f),
-                   vec4(3.0f, 5.0f, 2.0f, 0.5f), vec4(99.0f, period.x, period.y, period.z)),
+        {arguments(PROBE_INVERTED_WORLEY_FBM, vec4(smooth ? 1.0f : 0.0f, smooth ? r(0.05f, 1.0f) : 0.0f, 0.0f, 0.0f),
+                   r.v(0.0f, 1.0f), vec4(3.0f, 5.0f, 2.0f, 0.5f), vec4(99.0f, period.x, period.y, period.z)),
          (smooth ? kSmoothFbm : kFbm) * highest_frequency});
   }
   compare("worley_fbm", probe_worley_fbm, cases);
@@ -401,15 +407,19 @@ TEST_CASE("perlin.glsl on the GPU agrees with the CPU", "[probe]") {
   Random r(18);
   std::vector<Case> cases;
   const vec4 key = vec4(std::floor(r(0.0f, 16777215.0f)), std::floor(r(0.0f, 16777215.0f)), 4321.0f, 0.0f);
+  const int functions[] = {PROBE_WRAP_AXIS_AND_FADE, PROBE_PERLIN_GRADIENT, PROBE_PERLIN_YZ_WEIGHTS, PROBE_PERLIN_FACES,
+                           PROBE_PERLIN_NOISE};
   for (int k = 0; k < 80; ++k) {
-    const int f = k % 5;
+    const int f = functions[k % 5];
     const vec4 period = (k / 5) % 2 ? vec4(5.0f, 7.0f, 3.0f, 0.0f) : vec4(0.0f);
     const vec4 lattice(std::floor(r(-40.0f, 40.0f)), std::floor(r(-40.0f, 40.0f)), std::floor(r(-40.0f, 40.0f)), 0.0f);
-    if (f == 0) cases.push_back({arguments(0, vec4(lattice.x, period.y, r(0.0f, 1.0f), 0)), kArithmetic});
-    if (f == 1) cases.push_back({arguments(1, vec4(0.0f), lattice, period, key), kExact});
-    if (f == 2) cases.push_back({arguments(2, vec4(r(0.0f, 1.0f), r(0.0f, 1.0f), 0, 0)), kArithmetic});
-    if (f == 3) cases.push_back({arguments(3, lattice, r.v(0.0f, 1.0f), period, key), kPerlin});
-    if (f == 4) cases.push_back({arguments(4, vec4(0.0f), r.v(-20.0f, 20.0f), period, key), kPerlin});
+    if (f == PROBE_WRAP_AXIS_AND_FADE)
+      cases.push_back({arguments(f, vec4(lattice.x, period.y, r(0.0f, 1.0f), 0)), kArithmetic});
+    if (f == PROBE_PERLIN_GRADIENT) cases.push_back({arguments(f, vec4(0.0f), lattice, period, key), kExact});
+    if (f == PROBE_PERLIN_YZ_WEIGHTS)
+      cases.push_back({arguments(f, vec4(r(0.0f, 1.0f), r(0.0f, 1.0f), 0, 0)), kArithmetic});
+    if (f == PROBE_PERLIN_FACES) cases.push_back({arguments(f, lattice, r.v(0.0f, 1.0f), period, key), kPerlin});
+    if (f == PROBE_PERLIN_NOISE) cases.push_back({arguments(f, vec4(0.0f), r.v(-20.0f, 20.0f), period, key), kPerlin});
   }
   compare("perlin", probe_perlin, cases);
 }
@@ -426,18 +436,19 @@ TEST_CASE("implicit_field.glsl on the GPU agrees with the CPU", "[probe][model]"
   constexpr float kBlended = 2 * kTurbulence + kField + 4 * kArithmetic;
   Random r(31);
   std::vector<Case> cases;
+  const int functions[] = {PROBE_FIELD_PARTS, PROBE_PRIMITIVE_FIELD, PROBE_MODEL_TURBULENCE, PROBE_MODEL_BLENDS};
   for (int k = 0; k < 96; ++k) {
-    const int f = k % 4;
+    const int f = functions[k % 4];
     const vec4 a = vec4(r(-1.0f, 1.0f), r(-1.0f, 1.0f), r(-1.0f, 1.0f), r(0.0f, 0.3f));
     const vec4 b = vec4(r(-1.0f, 1.0f), r(-1.0f, 1.0f), r(-1.0f, 1.0f), r(0.25f, 1.0f));
     const vec4 kind = vec4(r(0.5f, 1.0f), float(k / 4 % 2), r(0.5f, 4.0f), r(0.0f, 1.0f));
-    if (f == 0)
-      cases.push_back({arguments(0, vec4(r(-0.2f, 1.2f), r(0.0f, 1.0f), r(0.0f, 1.0f), 0.0f),
+    if (f == PROBE_FIELD_PARTS)
+      cases.push_back({arguments(f, vec4(r(-0.2f, 1.2f), r(0.0f, 1.0f), r(0.0f, 1.0f), 0.0f),
                                  vec4(1.0f, r(0.0f, 1.0f), r(0.0f, 2.0f), r(0.0f, 1.0f))),
                        kArithmetic});
-    if (f == 1) cases.push_back({arguments(1, r.v(-1.0f, 1.0f), a, b, kind), kField});
-    if (f == 2) cases.push_back({arguments(2, r.v(-2.0f, 2.0f), a, b, kind), kTurbulence});
-    if (f == 3) cases.push_back({arguments(3, r.v(-2.0f, 2.0f), a, b, kind), kBlended});
+    if (f == PROBE_PRIMITIVE_FIELD) cases.push_back({arguments(f, r.v(-1.0f, 1.0f), a, b, kind), kField});
+    if (f == PROBE_MODEL_TURBULENCE) cases.push_back({arguments(f, r.v(-2.0f, 2.0f), a, b, kind), kTurbulence});
+    if (f == PROBE_MODEL_BLENDS) cases.push_back({arguments(f, r.v(-2.0f, 2.0f), a, b, kind), kBlended});
   }
   compare("implicit_field", probe_implicit_field, cases);
 }
@@ -469,20 +480,21 @@ TEST_CASE("model_march.glsl on the GPU agrees with the CPU", "[probe][model]") {
   const float march = 16 * 4 * (extinction * 125.0f + depth + kTranscendental);
   Random r(41);
   std::vector<Case> cases;
+  const int functions[] = {PROBE_RAY_BOX, PROBE_MODEL_EXTINCTION, PROBE_MODEL_MARCH, PROBE_MODEL_PIXEL};
   for (int k = 0; k < 48; ++k) {
-    const int f = k % 4;
+    const int f = functions[k % 4];
     const vec4 inside(r(100.0f, 900.0f), r(100.0f, 900.0f), r(100.0f, 900.0f), 0.0f);
     vec4 towards(r(-0.3f, 0.3f), 1.0f, r(-0.3f, 0.3f), 0.0f);  // |components| >= 0.05 after normalising
     if (std::abs(towards.x) < 0.06f) towards.x = 0.06f;
     if (std::abs(towards.z) < 0.06f) towards.z = 0.06f;
     const vec4 origin(500.0f, -1500.0f, 450.0f, 0.0f);
-    if (f == 0) cases.push_back({arguments(0, vec4(0.0f), origin, towards), distance});
-    if (f == 1) cases.push_back({arguments(1, vec4(0.0f), inside), std::max(extinction, depth)});
-    if (f == 2) cases.push_back({arguments(2, vec4(r(0.0f, 1.0f), 0, 0, 0), origin, towards), march});
-    if (f == 3) cases.push_back({arguments(3, vec4(float(k % 16), float(k % 12), 0, 0)), march});
+    if (f == PROBE_RAY_BOX) cases.push_back({arguments(f, vec4(0.0f), origin, towards), distance});
+    if (f == PROBE_MODEL_EXTINCTION) cases.push_back({arguments(f, vec4(0.0f), inside), std::max(extinction, depth)});
+    if (f == PROBE_MODEL_MARCH) cases.push_back({arguments(f, vec4(r(0.0f, 1.0f), 0, 0, 0), origin, towards), march});
+    if (f == PROBE_MODEL_PIXEL) cases.push_back({arguments(f, vec4(float(k % 16), float(k % 12), 0, 0)), march});
     // A cursor's ray (any position in the 16 x 12 image): a few products and sums of values
     // below 2, then a normalisation.
-    cases.push_back({arguments(4, vec4(r(0.0f, 16.0f), r(0.0f, 12.0f), 0, 0)), kArithmetic});
+    cases.push_back({arguments(PROBE_MODEL_RAY, vec4(r(0.0f, 16.0f), r(0.0f, 12.0f), 0, 0)), kArithmetic});
   }
   compare("model_march", cpu, cases);
 }
@@ -490,8 +502,9 @@ TEST_CASE("model_march.glsl on the GPU agrees with the CPU", "[probe][model]") {
 TEST_CASE("tileable_noise.glsl on the GPU agrees with the CPU", "[probe]") {
   Random r(19);
   std::vector<Case> cases;
+  const int functions[] = {PROBE_NEXT_OCTAVE, PROBE_FBM_MEANS, PROBE_UNIT_MAPS, PROBE_CHANNEL_VALUES};
   for (int k = 0; k < 48; ++k) {
-    const int f = k % 4;
+    const int f = functions[k % 4];
     // Texel-unit points of a 32-texel texture; octave 0 has 4 or 8 texels per cell, 3 octaves
     // of lacunarity 2, so lattice coordinates stay below kLatticeLimit.
     const float frequency = (k / 4) % 2 ? 0.25f : 0.125f;
@@ -500,12 +513,14 @@ TEST_CASE("tileable_noise.glsl on the GPU agrees with the CPU", "[probe]") {
     const vec4 seed_and_period(float(40 + k), period, period, period);
     const vec4 p = r.v(0.0f, 32.0f);
     const float type = float(k % 4);
-    if (f == 0)
+    if (f == PROBE_NEXT_OCTAVE)
       cases.push_back(
-          {arguments(0, vec4(type, r(0.0f, 1.0f), r(0.0f, 1.0f), 0), p, fbm, seed_and_period), kArithmetic});
-    if (f == 1) cases.push_back({arguments(1, vec4(type, 0, 0, 0), p, fbm, seed_and_period), kNoiseMean});
-    if (f == 2) cases.push_back({arguments(2, vec4(type, r(0.0f, 1.0f), r(-1.0f, 1.0f), 0)), kArithmetic});
-    if (f == 3) cases.push_back({arguments(3, vec4(type, 0, 0, 0), p, fbm, seed_and_period), kNoiseChannel});
+          {arguments(f, vec4(type, r(0.0f, 1.0f), r(0.0f, 1.0f), 0), p, fbm, seed_and_period), kArithmetic});
+    if (f == PROBE_FBM_MEANS) cases.push_back({arguments(f, vec4(type, 0, 0, 0), p, fbm, seed_and_period), kNoiseMean});
+    if (f == PROBE_UNIT_MAPS)
+      cases.push_back({arguments(f, vec4(type, r(0.0f, 1.0f), r(-1.0f, 1.0f), 0)), kArithmetic});
+    if (f == PROBE_CHANNEL_VALUES)
+      cases.push_back({arguments(f, vec4(type, 0, 0, 0), p, fbm, seed_and_period), kNoiseChannel});
   }
   compare("tileable_noise", probe_tileable_noise, cases);
 }
@@ -527,25 +542,30 @@ TEST_CASE("webanck_forms.glsl on the GPU agrees with the CPU", "[probe]") {
   for (int k = 0; k < 12; ++k) {
     const float z = r(-4.0f, 4.0f);
     cases.push_back(
-        {arguments(0, vec4(z, float(1 + k % 8), r(0.3f, 0.7f), 0), vec4(r(0.1f, 1.0f), 0, 0, 0)), kTranscendental});
-    cases.push_back(
-        {arguments(1, vec4(float(1 + k % 8), 0.52f, 2.02f, 0), vec4(r(1.0f, 400.0f), 0, 0, 0), vec4(0, 0, 0, float(k))),
-         kArithmetic * 400.0f});
+        {arguments(PROBE_NORMAL_CDF, vec4(z, float(1 + k % 8), r(0.3f, 0.7f), 0), vec4(r(0.1f, 1.0f), 0, 0, 0)),
+         kTranscendental});
+    cases.push_back({arguments(PROBE_WEBANCK_OCTAVES, vec4(float(1 + k % 8), 0.52f, 2.02f, 0),
+                               vec4(r(1.0f, 400.0f), 0, 0, 0), vec4(0, 0, 0, float(k))),
+                     kArithmetic * 400.0f});
     // G3 and W3 of up to 8 octaves at frequency f on points in [0, 0.05]^3: x0 = 0.05 f.
     const float frequency = r(10.0f, 400.0f);
     const vec4 point(r.v(0.0f, 0.05f).x, r.v(0.0f, 0.05f).y, r(0.0f, 0.05f), frequency);
-    cases.push_back({arguments(2, vec4(float(1 + k % 8), 0.52f, 2.02f, 0), point, vec4(0, 0, 0, float(k))),
-                     webanck_field_tolerance(0.05f * frequency)});
-    const vec2 wind = normalize(vec2(r(-1.0f, 1.0f), r(-1.0f, 1.0f)) + vec2(1e-3f));
-    cases.push_back({arguments(3, vec4(0.0f), vec4(r.v(-5.0e4f, 5.0e4f)), vec4(wind, 0, 0)), kArithmetic});
     cases.push_back(
-        {arguments(4, vec4(r(0.0f, 1.0f), r(0.0f, 1.0f), r(0.0f, 1.0f), 0), vec4(r(0.0f, 1.0f), r(-0.2f, 0.2f), 0, 0)),
-         kArithmetic});
-    cases.push_back({arguments(5, vec4(r(-0.2f, 0.2f), 0, 0, 0), r.v(0.0f, 1.0f), r.v(0.0f, 1.0f)), kArithmetic});
+        {arguments(PROBE_WEBANCK_FIELDS, vec4(float(1 + k % 8), 0.52f, 2.02f, 0), point, vec4(0, 0, 0, float(k))),
+         webanck_field_tolerance(0.05f * frequency)});
+    const vec2 wind = normalize(vec2(r(-1.0f, 1.0f), r(-1.0f, 1.0f)) + vec2(1e-3f));
+    cases.push_back(
+        {arguments(PROBE_WEBANCK_POSITION, vec4(0.0f), vec4(r.v(-5.0e4f, 5.0e4f)), vec4(wind, 0, 0)), kArithmetic});
+    cases.push_back({arguments(PROBE_FORM_PROFILES, vec4(r(0.0f, 1.0f), r(0.0f, 1.0f), r(0.0f, 1.0f), 0),
+                               vec4(r(0.0f, 1.0f), r(-0.2f, 0.2f), 0, 0)),
+                     kArithmetic});
+    cases.push_back(
+        {arguments(PROBE_FORMS, vec4(r(-0.2f, 0.2f), 0, 0, 0), r.v(0.0f, 1.0f), r.v(0.0f, 1.0f)), kArithmetic});
     // The exact fields: points in [0, 0.05]^3 and tau <= 0.01 keep p_n + 8 q below 0.13, so
     // x0 <= 0.13 x 400 (the highest base frequency).
     const vec4 pn(r(0.0f, 0.05f), r(0.0f, 0.05f), r(0.0f, 0.05f), 0.0f);
-    cases.push_back({arguments(6 + (k % 2), vec4(r(0.0f, 0.01f), float(k / 2 % 2), 0, 0), pn, vec4(0, 0, 0, float(k))),
+    cases.push_back({arguments(k % 2 ? PROBE_ALTO_FIELDS_EXACT : PROBE_CUMULUS_FIELDS_EXACT,
+                               vec4(r(0.0f, 0.01f), float(k / 2 % 2), 0, 0), pn, vec4(0, 0, 0, float(k))),
                      webanck_field_tolerance(0.13f * 400.0f)});
   }
   compare("webanck_forms", probe_webanck_forms, cases);
@@ -562,29 +582,32 @@ TEST_CASE("curl_flow.glsl on the GPU agrees with the CPU", "[probe]") {
     const vec4 potential(fast ? 4.0f : 2.0f, 3.0f, float(k), float(k + 100));
     const vec4 flow(0.5f, 2.5f, fast ? 2.0f : 0.5f, fast ? 8.0f : 0.0f);
     const float highest_frequency = potential.x * 4.0f;
-    // Function 0 runs the smooth potential (lambda 0.3): its fBm errs by kSmoothFbm, not kFbm.
+    // PROBE_CURL_VELOCITY and PROBE_CURL_FLOW_SHIFTED run the smooth potential (lambda 0.3): its
+    // fBm errs by kSmoothFbm, not kFbm.
     const float smooth_extra = k % 2 == 0 ? flow.z * (kSmoothFbm - kFbm) * highest_frequency : 0.0f;
-    // Function 2 (k % 4 == 2, the fast variant) adds the cyclonic depth, a sum of fBm values
-    // below 1: kSmoothFbm, within the velocity's tolerance. The storm-track envelope of
-    // functions 0 and 2 multiplies the fBm terms by A <= 1 and adds dA/dlat (below 4.2 for
+    // PROBE_CURL_FLOW_SHIFTED (k % 4 == 2, the fast variant) adds the cyclonic depth, a sum of fBm
+    // values below 1: kSmoothFbm, within the velocity's tolerance. The storm-track envelope of
+    // both smooth functions multiplies the fBm terms by A <= 1 and adds dA/dlat (below 4.2 for
     // f = 0.6) times values below 1, computed with one exp: 4.2 kTranscendental more.
-    const int function = k % 4 == 2 ? 2 : k % 2;
-    const float envelope_extra = function == 1 ? 0.0f : flow.z * 4.2f * kTranscendental;
+    const int function = k % 4 == 2 ? PROBE_CURL_FLOW_SHIFTED
+                         : k % 2    ? PROBE_CURL_VELOCITY_SHIFTED
+                                    : PROBE_CURL_VELOCITY;
+    const float envelope_extra = function == PROBE_CURL_VELOCITY_SHIFTED ? 0.0f : flow.z * 4.2f * kTranscendental;
     cases.push_back({arguments(function, vec4(r(-0.5f, 0.5f), r(-0.5f, 0.5f), r(-0.5f, 0.5f), 0), n, potential, flow),
                      curl_tolerance(flow.z, highest_frequency, flow.x, flow.y) + smooth_extra + envelope_extra});
   }
   // The zonal profile's derivative: products of values below 3 (kArithmetic), cells 0 .. 3.
   for (int k = 0; k < 8; ++k) {
     const float z = r(-1.0f, 1.0f);
-    cases.push_back({arguments(4, vec4(0.0f), vec4(z, std::sqrt(1.0f - z * z), float(k % 4), r(-3.0f, 3.0f)),
-                               vec4(0.0f), vec4(0.0f)),
+    cases.push_back({arguments(PROBE_ZONAL_PROFILE_DERIVATIVE, vec4(0.0f),
+                               vec4(z, std::sqrt(1.0f - z * z), float(k % 4), r(-3.0f, 3.0f)), vec4(0.0f), vec4(0.0f)),
                      kArithmetic});
   }
   // The envelope alone: one exp and a few products of values below 16 (kTranscendental x 16).
   for (int k = 0; k < 8; ++k)
-    cases.push_back(
-        {arguments(3, vec4(0.0f), vec4(r(-1.0f, 1.0f), k % 2 == 0 ? 0.6f : 1.0f, 0, 0), vec4(0.0f), vec4(0.0f)),
-         16.0f * kTranscendental});
+    cases.push_back({arguments(PROBE_STORM_TRACK_ENVELOPE, vec4(0.0f),
+                               vec4(r(-1.0f, 1.0f), k % 2 == 0 ? 0.6f : 1.0f, 0, 0), vec4(0.0f), vec4(0.0f)),
+                     16.0f * kTranscendental});
   compare("curl_flow", probe_curl_flow, cases);
 }
 
@@ -592,20 +615,26 @@ TEST_CASE("atmosphere.glsl on the GPU agrees with the CPU", "[probe]") {
   Random r(21);
   const float earth_radius = 6360000.0f;
   std::vector<Case> cases;
+  const int functions[] = {PROBE_RAYLEIGH, PROBE_SUN_AND_HENYEY_GREENSTEIN, PROBE_AIR_EXTINCTION,
+                           PROBE_TRANSMITTANCE_TO_SPACE, PROBE_SKY_SINGLE_SCATTERING};
   for (int k = 0; k < 48; ++k) {
-    const int f = k % 5;
+    const int f = functions[k % 5];
     const vec3 up = normalize(vec3(r.v(-1.0f, 1.0f)) + vec3(1e-3f));
     const vec3 d = normalize(vec3(r.v(-1.0f, 1.0f)) + 0.5f * up);
     const vec3 sun = normalize(vec3(r.v(-1.0f, 1.0f)) + up);
     const vec4 p(up * (earth_radius + r(0.0f, 20000.0f)), r(1000.0f, 200000.0f));
-    if (f == 0) cases.push_back({arguments(0, vec4(earth_radius, r(-1.0f, 1.0f), 0, 0)), kTranscendental});
-    if (f == 1) cases.push_back({arguments(1, vec4(earth_radius, r(-1.0f, 1.0f), r(0.0f, 0.9f), 0)), kTranscendental});
-    if (f == 2) cases.push_back({arguments(2, vec4(earth_radius, r(-100.0f, 30000.0f), 0, 0)), kTranscendental});
-    if (f == 3) cases.push_back({arguments(3, vec4(earth_radius, 0, 0, 0), p, vec4(d, 0)), kTransmittance});
-    if (f == 4) {
+    if (f == PROBE_RAYLEIGH) cases.push_back({arguments(f, vec4(earth_radius, r(-1.0f, 1.0f), 0, 0)), kTranscendental});
+    if (f == PROBE_SUN_AND_HENYEY_GREENSTEIN)
+      cases.push_back({arguments(f, vec4(earth_radius, r(-1.0f, 1.0f), r(0.0f, 0.9f), 0)), kTranscendental});
+    if (f == PROBE_AIR_EXTINCTION)
+      cases.push_back({arguments(f, vec4(earth_radius, r(-100.0f, 30000.0f), 0, 0)), kTranscendental});
+    if (f == PROBE_TRANSMITTANCE_TO_SPACE)
+      cases.push_back({arguments(f, vec4(earth_radius, 0, 0, 0), p, vec4(d, 0)), kTransmittance});
+    if (f == PROBE_SKY_SINGLE_SCATTERING) {
       // Radiances (parts 0, 1, scaled to order one) relative to their largest component.
       const int part = k % 4;
-      const mat4 x = arguments(4, vec4(earth_radius, float(part), 0, 0), p, vec4(d, r(0.0f, p.w)), vec4(sun, 8.0f));
+      const mat4 x = arguments(PROBE_SKY_SINGLE_SCATTERING, vec4(earth_radius, float(part), 0, 0), p,
+                               vec4(d, r(0.0f, p.w)), vec4(sun, 8.0f));
       const vec4 cpu = probe_atmosphere(x);
       const float largest = std::max(cpu.x, std::max(cpu.y, cpu.z));
       cases.push_back({x, part < 2 ? kSkyRelative * largest + kTranscendental : kTransmittance});
@@ -614,10 +643,11 @@ TEST_CASE("atmosphere.glsl on the GPU agrees with the CPU", "[probe]") {
       // transmittance does not depend on it.
       const int half = part % 2;
       const auto stepwise = [&](float v) {
-        return arguments(5, vec4(earth_radius, float(half), v, 0), p, vec4(d, r(0.0f, p.w)), vec4(sun, 8.0f));
+        return arguments(PROBE_SKY_INTEGRAL_STEPS, vec4(earth_radius, float(half), v, 0), p, vec4(d, r(0.0f, p.w)),
+                         vec4(sun, 8.0f));
       };
       mat4 plain = stepwise(1.0f);
-      plain[0] = vec4(4.0f, earth_radius, float(half), 0.0f);
+      plain[0] = vec4(float(PROBE_SKY_SINGLE_SCATTERING), earth_radius, float(half), 0.0f);
       mat4 shaded = stepwise(0.0f);
       shaded[2] = plain[2];
       mat4 mid = stepwise(0.5f);
@@ -638,20 +668,6 @@ TEST_CASE("atmosphere.glsl on the GPU agrees with the CPU", "[probe]") {
   compare("atmosphere", probe_atmosphere, cases);
 }
 
-namespace {
-
-// A cube map of size^2 texels per face: f(direction) at each texel centre.
-template <class F>
-std::vector<vec4> cube_of(int size, F f) {
-  std::vector<vec4> texels;
-  for (int face = 0; face < 6; ++face)
-    for (int j = 0; j < size; ++j)
-      for (int i = 0; i < size; ++i) texels.push_back(f(texel_direction(face, i, j, size), face));
-  return texels;
-}
-
-}  // namespace
-
 TEST_CASE("cube_sampling.glsl on the GPU agrees with the CPU", "[probe]") {
   // Known data: the direction and the face number, so that a texel fetched from the wrong face
   // or position shows.
@@ -662,9 +678,11 @@ TEST_CASE("cube_sampling.glsl on the GPU agrees with the CPU", "[probe]") {
   for (int face = 0; face < 6; ++face)
     for (int j = -1; j <= CUBE_PROBE_SIZE; ++j)
       for (int i = -1; i <= CUBE_PROBE_SIZE; ++i)  // every texel, edge and corner neighbour
-        cases.push_back({arguments(0, vec4(float(face), float(i), float(j), 0)), kExact});
+        cases.push_back({arguments(PROBE_CUBE_TEXEL_EXTENDED, vec4(float(face), float(i), float(j), 0)), kExact});
   for (int k = 0; k < 64; ++k)
-    cases.push_back({arguments(1, vec4(0.0f), vec4(normalize(vec3(r.v(-1.0f, 1.0f)) + vec3(1e-3f)), 0)), kBilinear});
+    cases.push_back(
+        {arguments(PROBE_SAMPLE_CUBE_BILINEAR, vec4(0.0f), vec4(normalize(vec3(r.v(-1.0f, 1.0f)) + vec3(1e-3f)), 0)),
+         kBilinear});
   compare(
       "cube_sampling", [&](const mat4& x) { return probe_cube_sampling(x, source); }, cases, texels,
       gpu::ProbeData::cube_image);
@@ -695,25 +713,31 @@ TEST_CASE("curl_spline.glsl on the GPU agrees with the CPU", "[probe][spline]") 
   constexpr float kProjected = 2 * kSample + 5 * 3.5f * 5 * kUlp;
   Random r(24);
   std::vector<Case> cases;
+  const int functions[] = {PROBE_CUBIC_BSPLINE_WEIGHTS, PROBE_PREFILTER_CUBIC_BSPLINE, PROBE_CURL_SPLINE_ROW,
+                           PROBE_SAMPLE_CURL_SPLINE,    PROBE_SPLINE_VELOCITY,         PROBE_CURL_SPLINE_NODE};
   for (int k = 0; k < 96; ++k) {
-    const int f = k % 6;
+    const int f = functions[k % 6];
     const vec3 w = normalize(vec3(r.v(-1.0f, 1.0f)) + vec3(1e-3f));
-    if (f == 0) cases.push_back({arguments(0, vec4(r(0.0f, 1.0f), 0, 0, 0)), kArithmetic});
-    if (f == 1)
-      cases.push_back({arguments(1, vec4(0.0f), r.v(-1.0f, 1.0f) + vec4(0, 0, 0, r(-1.0f, 1.0f)), r.v(-1.0f, 1.0f),
+    if (f == PROBE_CUBIC_BSPLINE_WEIGHTS) cases.push_back({arguments(f, vec4(r(0.0f, 1.0f), 0, 0, 0)), kArithmetic});
+    if (f == PROBE_PREFILTER_CUBIC_BSPLINE)
+      cases.push_back({arguments(f, vec4(0.0f), r.v(-1.0f, 1.0f) + vec4(0, 0, 0, r(-1.0f, 1.0f)), r.v(-1.0f, 1.0f),
                                  r.v(-1.0f, 1.0f)),
                        kPrefilter});
-    if (f == 2) {
+    if (f == PROBE_CURL_SPLINE_ROW) {
       const int i = int(r(0.0f, float(extent - 4) + 0.999f)), j = int(r(0.0f, float(extent) - 0.001f));
       cases.push_back(
-          {arguments(2, vec4(float((k / 6) % 6), float(i), float(j), 0), cubic_bspline_weights(r(0.0f, 1.0f))), kRow});
+          {arguments(f, vec4(float((k / 6) % 6), float(i), float(j), 0), cubic_bspline_weights(r(0.0f, 1.0f))), kRow});
     }
-    if (f == 3) cases.push_back({arguments(3, vec4(0.0f), vec4(w, 0)), kSample});
-    if (f == 4) cases.push_back({arguments(4 + 2 * ((k / 6) % 2), vec4(0.0f), vec4(w, 0)), kProjected});
-    if (f == 5) {
+    if (f == PROBE_SAMPLE_CURL_SPLINE) cases.push_back({arguments(f, vec4(0.0f), vec4(w, 0)), kSample});
+    if (f == PROBE_SPLINE_VELOCITY) {
+      // spline_velocity and warp_velocity by turns.
+      const int velocity = (k / 6) % 2 ? PROBE_SPLINE_WARP_VELOCITY : PROBE_SPLINE_VELOCITY;
+      cases.push_back({arguments(velocity, vec4(0.0f), vec4(w, 0)), kProjected});
+    }
+    if (f == PROBE_CURL_SPLINE_NODE) {
       // Nodes inside, on and beyond the face's edges, with margins 2 and 3.
       const int margin = 2 + (k / 6) % 2;
-      cases.push_back({arguments(5, vec4(float((k / 6) % 6), float(k % 9), float((k / 3) % 9), 0),
+      cases.push_back({arguments(f, vec4(float((k / 6) % 6), float(k % 9), float((k / 3) % 9), 0),
                                  vec4(float(margin), float(SPLINE_PROBE_CELLS), 0, 0)),
                        kArithmetic});
     }
@@ -723,7 +747,7 @@ TEST_CASE("curl_spline.glsl on the GPU agrees with the CPU", "[probe][spline]") 
     for (float s : {-1.0f, -0.999f, 0.0f, 0.999f, 1.0f})
       for (float t : {-1.0f, 0.37f, 1.0f}) {
         const vec3 w = normalize(cube_face_point(face, s, t));
-        cases.push_back({arguments(3, vec4(0.0f), vec4(w, 0)), kSample});
+        cases.push_back({arguments(PROBE_SAMPLE_CURL_SPLINE, vec4(0.0f), vec4(w, 0)), kSample});
       }
   compare(
       "curl_spline", [&](const mat4& x) { return probe_curl_spline(x, source); }, cases, nodes,
@@ -739,8 +763,12 @@ TEST_CASE("warp_step.glsl on the GPU agrees with the CPU, sampled and procedural
   std::vector<Case> cases;
   const float h = 0.02f;
   const int steps = 4;
+  const int functions[] = {
+      PROBE_FLOW_VELOCITY,    PROBE_WARP_STEP,         PROBE_INTEGRATE_WARP,  PROBE_VELOCITY_AT,
+      PROBE_SCHEME_STEP,      PROBE_FIXED_STEP,        PROBE_INTEGRATE_FIXED, PROBE_BOGACKI_SHAMPINE_STEP,
+      PROBE_ADVANCE_ADAPTIVE, PROBE_INTEGRATE_ADAPTIVE};
   for (int k = 0; k < 96; ++k) {
-    const int f = k % 10;
+    const int f = functions[k % 10];
     // The procedural flag picks velocity_at's source; the other functions have theirs fixed
     // (warp_probe_uses_curl).
     const bool procedural = (k / 10) % 2 == 1;
@@ -749,10 +777,10 @@ TEST_CASE("warp_step.glsl on the GPU agrees with the CPU, sampled and procedural
     // flow time, first step, max step, tolerance (radians); attempt limit, part, t, attempts
     const vec4 adaptive(4.0f * h, h, 2.0f * h, 1.0e-4f);
     const vec4 state(64.0f, float((k / 10) % 2), 0.0f, 0.0f);
-    const float tolerance = f == 0 || f == 3   ? kVelocity
-                            : f == 2 || f == 6 ? warp_tolerance(steps, h)
-                            : f >= 8           ? warp_tolerance(64, h)
-                                               : warp_tolerance(1, h);
+    const float tolerance = f == PROBE_FLOW_VELOCITY || f == PROBE_VELOCITY_AT             ? kVelocity
+                            : f == PROBE_INTEGRATE_WARP || f == PROBE_INTEGRATE_FIXED      ? warp_tolerance(steps, h)
+                            : f == PROBE_ADVANCE_ADAPTIVE || f == PROBE_INTEGRATE_ADAPTIVE ? warp_tolerance(64, h)
+                                                                                           : warp_tolerance(1, h);
     cases.push_back({arguments(f, vec4(float(integrator), h, float(steps), 0), w, adaptive, state), tolerance});
   }
   compare(
@@ -765,6 +793,7 @@ TEST_CASE("noise_rows.glsl on the GPU agrees with the CPU and with the point fun
   std::vector<Case> point_cases;
   // Segments of a 96-texel texture: the second segment (t0 = 64) is partly beyond the row
   // (count 32); frequencies with 2 to 16 texels per cell, so both Perlin walks run.
+  const int walks[] = {PROBE_WORLEY_ROW, PROBE_PERLIN_ROW, PROBE_PERLIN_ROW_WIDE, PROBE_PERLIN_ROW_FINISH};
   for (int type = 0; type < 4; ++type)
     for (int k = 0; k < 8; ++k) {
       const float frequency = 1.0f / float(2 << (k % 4));
@@ -776,25 +805,27 @@ TEST_CASE("noise_rows.glsl on the GPU agrees with the CPU and with the point fun
       const vec4 segment(float(3 + k), count, float(k % 5), float(5 + k % 3));  // z, count, i0, stride
       for (int y : {0, 17}) {
         const vec4 head(float(type), t0, float(y), 0.0f);
-        cases.push_back({arguments(0, head, segment, fbm, seed_and_period), kRowWalk});
+        cases.push_back({arguments(PROBE_CHANNEL_WALK, head, segment, fbm, seed_and_period), kRowWalk});
         point_cases.push_back(cases.back());
-        cases.push_back({arguments(1, head, segment, fbm, seed_and_period), kNoiseChannel});
+        cases.push_back({arguments(PROBE_CHANNEL_POINTS, head, segment, fbm, seed_and_period), kNoiseChannel});
         point_cases.push_back(cases.back());
       }
-      // One octave through each walk directly: worley_row, perlin_row, perlin_row_wide (cells of
-      // 8 texels or more), perlin_row_finish; the Perlin ones finish as a Perlin channel.
+      // One octave through each walk directly (walks[type]): worley_row, perlin_row,
+      // perlin_row_wide (cells of 8 texels or more), perlin_row_finish; the Perlin ones finish as a
+      // Perlin channel.
       const vec4 single(type == 2 ? std::min(frequency, 0.125f) : frequency, 1.0f, 2.0f, 0.5f);
       cases.push_back(
-          {arguments(4 + type, vec4(type == 0 ? 0.0f : 2.0f, t0, 5.0f, 0), segment, single, seed_and_period),
+          {arguments(walks[type], vec4(type == 0 ? 0.0f : 2.0f, t0, 5.0f, 0), segment, single, seed_and_period),
            kRowWalk});
-      cases.push_back(
-          {arguments(2, vec4(float(type), float(3 * k), 1.0f, 0), vec4(0, 0, 0.4f, -0.3f), fbm, seed_and_period),
-           kArithmetic});
-      cases.push_back({arguments(3, vec4(float(type), float(k), float(k + 1), 0), vec4(float(k + 2), 0, float(k), 0.3f),
+      cases.push_back({arguments(PROBE_ROW_SETUP, vec4(float(type), float(3 * k), 1.0f, 0), vec4(0, 0, 0.4f, -0.3f),
                                  fbm, seed_and_period),
                        kArithmetic});
+      cases.push_back({arguments(PROBE_ROW_FRAMES, vec4(float(type), float(k), float(k + 1), 0),
+                                 vec4(float(k + 2), 0, float(k), 0.3f), fbm, seed_and_period),
+                       kArithmetic});
       cases.push_back(
-          {arguments(8, vec4(float(type), 0, 0, 0), vec4(0, 0, 0.7f, 0.2f), fbm, seed_and_period), kArithmetic});
+          {arguments(PROBE_NOISE_TAKE, vec4(float(type), 0, 0, 0), vec4(0, 0, 0.7f, 0.2f), fbm, seed_and_period),
+           kArithmetic});
     }
   compare("noise_rows", probe_noise_rows, cases);
 
@@ -902,38 +933,41 @@ TEST_CASE("cloud_march.glsl on the GPU agrees with the CPU", "[probe][march]") {
   };
   for (int k = 0; k < 12; ++k) {
     const vec4 pixel(float(k % 16), float((5 * k) % 9), 0, 0);
-    cases.push_back({arguments(0, vec4(0, 0, float(k % 2), 0), vec4(0), vec4(0), pixel), kTranscendental});
+    cases.push_back(
+        {arguments(PROBE_VIEW_DIRECTION, vec4(0, 0, float(k % 2), 0), vec4(0), vec4(0), pixel), kTranscendental});
     // Points in the two layers, within 20 km of the camera.
     const int layer = k % 2;
     const float altitude = layer == 0 ? r(1600.0f, 2900.0f) : r(3600.0f, 4900.0f);
     const vec4 p(r(-20000.0f, 20000.0f), r(-20000.0f, 20000.0f), altitude - 860.0f, 0.0f);
-    cases.push_back({arguments(1, vec4(float(k % 5), 0, 0, 0), p), kArithmetic});
-    cases.push_back({arguments(2, vec4(float(layer), r(10.0f, 3000.0f), 0, 0), p), std::max(height, shape)});
-    cases.push_back({arguments(3, vec4(float(layer), r(10.0f, 3000.0f), 0, 0), p), 0.01f * march});
-    cases.push_back(relative(arguments(4, vec4(float(layer), 0, 0, 0), p), march));
+    cases.push_back({arguments(PROBE_COVERAGE_AT, vec4(float(k % 5), 0, 0, 0), p), kArithmetic});
+    cases.push_back(
+        {arguments(PROBE_SHAPE_AT, vec4(float(layer), r(10.0f, 3000.0f), 0, 0), p), std::max(height, shape)});
+    cases.push_back({arguments(PROBE_DENSITY_AT, vec4(float(layer), r(10.0f, 3000.0f), 0, 0), p), 0.01f * march});
+    cases.push_back(relative(arguments(PROBE_OPTICAL_DEPTH_TO_SUN, vec4(float(layer), 0, 0, 0), p), march));
     // View rays rising 0.2 to 1.2 rad.
     const float elevation = r(0.2f, 1.2f), azimuth = r(-3.0f, 3.0f);
     const vec4 d(std::cos(elevation) * std::sin(azimuth), std::cos(elevation) * std::cos(azimuth), std::sin(elevation),
                  0);
-    cases.push_back({arguments(5, vec4(0, r(5000.0f, 150000.0f), 0, 0), vec4(0), d), crossing});
-    cases.push_back(relative(arguments(6, vec4(0, 150000.0f, r(0.0f, 1.0f), 0), vec4(0), d), march));
-    cases.push_back(relative(arguments(7, vec4(0), vec4(0), vec4(0), pixel), march));
+    cases.push_back({arguments(PROBE_LAYER_INTERVALS, vec4(0, r(5000.0f, 150000.0f), 0, 0), vec4(0), d), crossing});
+    cases.push_back(relative(arguments(PROBE_MARCH_CLOUDS, vec4(0, 150000.0f, r(0.0f, 1.0f), 0), vec4(0), d), march));
+    cases.push_back(relative(arguments(PROBE_RENDER_PIXEL, vec4(0), vec4(0), vec4(0), pixel), march));
     // View rays ending at the bare sphere (falling 0.2 to 1.2 rad: the crossing's tolerance) or
     // rising to the atmosphere's top (-1 and its distance, whose rounding is the same).
     const vec4 down(d.x, d.y, -d.z, 0);
-    cases.push_back({arguments(21, vec4(0), vec4(0), down), crossing});
-    cases.push_back({arguments(21, vec4(0), vec4(0), d), crossing});
-    cases.push_back({arguments(8, vec4(float(65535 + k - 6), 0, 0, 0)), kExact});
+    cases.push_back({arguments(PROBE_VIEW_RAY_END, vec4(0), vec4(0), down), crossing});
+    cases.push_back({arguments(PROBE_VIEW_RAY_END, vec4(0), vec4(0), d), crossing});
+    cases.push_back({arguments(PROBE_LOOP_LIMITED, vec4(float(65535 + k - 6), 0, 0, 0)), kExact});
     // Baked Webanck fields at p_n within 0.2 (frequencies up to 400: texel coordinates below
     // 0.2 x 400 / 4 x 16 = 320, whose rounding moves a lookup by kPosition-like amounts).
     const vec4 pn(r(0.0f, 0.2f), r(0.0f, 0.2f), r(0.0f, 0.03f), 0.0f);
-    cases.push_back({arguments(9, vec4(float(k % 14), r(10.0f, 400.0f), r(-1.0f, 3.0f), 0), pn), baked});
-    cases.push_back({arguments(10, vec4(float(layer), 0, float(k % 3), 0), pn, vec4(0),
+    cases.push_back(
+        {arguments(PROBE_BAKED_FIELDS, vec4(float(k % 14), r(10.0f, 400.0f), r(-1.0f, 3.0f), 0), pn), baked});
+    cases.push_back({arguments(PROBE_WEBANCK_SHAPE, vec4(float(layer), 0, float(k % 3), 0), pn, vec4(0),
                                vec4(r(0.0f, 1.0f), r(0.2f, 0.9f), r(-2.0f, 2.0f), 0)),
                      webanck});
     // Shadows from the ground (all layers) or from the cumulus (the alto above), and jitters.
     cases.push_back(relative(
-        arguments(11, vec4(k % 2 ? -1.0f : 0.0f, k % 2 ? -1.0e30f : 3000.0f, 0, 0),
+        arguments(PROBE_SHADOW_DEPTH, vec4(k % 2 ? -1.0f : 0.0f, k % 2 ? -1.0e30f : 3000.0f, 0, 0),
                   vec4(p.x, p.y, k % 2 ? -860.0f : altitude - 860.0f, 0), vec4(0), pixel + vec4(0, 0, float(k), 0)),
         march));
   }
@@ -946,21 +980,21 @@ TEST_CASE("cloud_march.glsl on the GPU agrees with the CPU", "[probe][march]") {
     const vec3 down(up.x, up.y, -up.z);
     const MarchParams m = probe_march_params();
     const vec3 centre(0.0f, 0.0f, -(m.earth_radius + m.camera_altitude));
-    const vec4 falls = cpu(arguments(21, vec4(0), vec4(0), vec4(down, 0)));
+    const vec4 falls = cpu(arguments(PROBE_VIEW_RAY_END, vec4(0), vec4(0), vec4(down, 0)));
     CHECK(falls.x == Approx(ray_sphere(vec3(0.0f), down, centre, m.earth_radius).x).epsilon(0).margin(crossing));
-    CHECK(cpu(arguments(21, vec4(0), vec4(0), vec4(up, 0))).x == -1.0f);
+    CHECK(cpu(arguments(PROBE_VIEW_RAY_END, vec4(0), vec4(0), vec4(up, 0))).x == -1.0f);
   }
   // Shadow maps: points of the cumulus within 25 km, texels anywhere in the map; the depth
   // through the alto from the cumulus's top (relative, a march).
   for (int k = 0; k < 12; ++k) {
     const vec4 p(r(-25000.0f, 25000.0f), r(-25000.0f, 25000.0f), r(1600.0f, 2900.0f) - 860.0f, 0.0f);
-    const vec4 v = cpu(arguments(17, vec4(0), p));
-    cases.push_back({arguments(17, vec4(0), p), std::max(exit_uv, map_lookup)});
+    const vec4 v = cpu(arguments(PROBE_SHADOW_MAP_UV, vec4(0), p));
+    cases.push_back({arguments(PROBE_SHADOW_MAP_UV, vec4(0), p), std::max(exit_uv, map_lookup)});
     const vec4 xy(r(-30000.0f, 30000.0f), r(-30000.0f, 30000.0f), 0, 0);
-    const vec4 w = cpu(arguments(18, vec4(0), vec4(0), vec4(0), xy));
-    cases.push_back({arguments(18, vec4(0), vec4(0), vec4(0), xy), shell});
+    const vec4 w = cpu(arguments(PROBE_SHADOW_MAP_ORIGIN, vec4(0), vec4(0), vec4(0), xy));
+    cases.push_back({arguments(PROBE_SHADOW_MAP_ORIGIN, vec4(0), vec4(0), vec4(0), xy), shell});
     const vec4 uv(r(0.0f, 1.0f), r(0.0f, 1.0f), 0, 0);
-    cases.push_back(relative(arguments(19, vec4(0), vec4(0), vec4(0), uv), march));
+    cases.push_back(relative(arguments(PROBE_SHADOW_MAP_TEXEL, vec4(0), vec4(0), vec4(0), uv), march));
     // On the CPU: the point lies on the top shell at the coordinates asked for, the lookup reads
     // the bilinear map there (texel centres at (i + 1/2) / 4), and a texel is the march from its
     // point of the top shell.
@@ -968,17 +1002,18 @@ TEST_CASE("cloud_march.glsl on the GPU agrees with the CPU", "[probe][march]") {
     CHECK(std::abs(w.y) <= shell);
     CHECK(std::abs(w.z) <= shell);
     CHECK(v.z == Approx(sources.shadows.sample(vec2(v.x, v.y), 0)).epsilon(0).margin(kArithmetic));
-    const vec4 t = cpu(arguments(19, vec4(0), vec4(0), vec4(0), uv));
+    const vec4 t = cpu(arguments(PROBE_SHADOW_MAP_TEXEL, vec4(0), vec4(0), vec4(0), uv));
     CHECK(t.x == t.y);
     // Crepuscular rays, map 0 as the sky's from the shell at 1500 m: a point of the air below it
     // takes e^-depth at its sun ray's exit (e^-x has slope <= 1: the lookup's tolerance); a
     // point of the cumulus, above the shell, the whole sun.
     const vec4 air(p.x, p.y, r(0.0f, 1400.0f) - 860.0f, 0.0f);
     const vec4 sky_shell(0, 1500.0f, 0, 0);  // x[0].z
-    const vec4 s = cpu(arguments(20, sky_shell, air));
-    cases.push_back({arguments(20, sky_shell, air), std::max(exit_uv, map_lookup + kTranscendental)});
+    const vec4 s = cpu(arguments(PROBE_SKY_SUN_VISIBILITY, sky_shell, air));
+    cases.push_back(
+        {arguments(PROBE_SKY_SUN_VISIBILITY, sky_shell, air), std::max(exit_uv, map_lookup + kTranscendental)});
     CHECK(s.z == Approx(std::exp(-sources.shadows.sample(vec2(s.x, s.y), 0))).epsilon(0).margin(kTranscendental));
-    CHECK(cpu(arguments(20, sky_shell, p)).z == 1.0f);
+    CHECK(cpu(arguments(PROBE_SKY_SUN_VISIBILITY, sky_shell, p)).z == 1.0f);
   }
   // Convective densities: inside the texel centres the closed form, beyond them clamped to the
   // volume's own edge (never the other volume's). Texture coordinates of up to 8 texels round by
@@ -987,7 +1022,7 @@ TEST_CASE("cloud_march.glsl on the GPU agrees with the CPU", "[probe][march]") {
   for (int k = 0; k < 24; ++k) {
     const int cloud = k % 2;
     const vec4 q(r(-0.2f, 1.2f), r(-0.2f, 1.2f), r(-0.2f, 1.2f), 0.0f);
-    const mat4 x = arguments(22, vec4(float(cloud), 0, 0, 0), q);
+    const mat4 x = arguments(PROBE_CONVECTIVE_DENSITY, vec4(float(cloud), 0, 0, 0), q);
     cases.push_back({x, stack_lookup});
     auto texel = [&](float s) { return std::clamp(4.0f * s - 0.5f, 0.0f, 3.0f); };
     const float closed = 0.1f * cloud + 0.05f * (texel(q.x) + 2 * texel(q.y) + 3 * texel(q.z));
@@ -1038,20 +1073,21 @@ TEST_CASE("terrain.glsl on the GPU agrees with the CPU", "[probe][terrain]") {
     const int enabled = k % 4 == 3 ? 0 : 1;
     const vec4 xy(r(-25000.0f, 25000.0f), r(-25000.0f, 25000.0f), 0, 0);  // also outside the square
     const vec4 q(xy.x, xy.y, R + r(200.0f, 1500.0f), 0);
-    cases.push_back({arguments(0, vec4(0, 0, float(enabled), 0), q), 25000.0f * kArithmetic});
+    cases.push_back({arguments(PROBE_TERRAIN_PLANE, vec4(0, 0, float(enabled), 0), q), 25000.0f * kArithmetic});
     // (altitude, clearance, ceiling): the ceiling is interpolated like the altitude.
-    cases.push_back({arguments(1, vec4(0, 0, float(enabled), 0), q, vec4(0), xy), clearance});
+    cases.push_back({arguments(PROBE_TERRAIN_ALTITUDE, vec4(0, 0, float(enabled), 0), q, vec4(0), xy), clearance});
     const float fall = r(0.15f, 0.8f), azimuth = r(-3.0f, 3.0f);
     const vec4 down(std::cos(fall) * std::sin(azimuth), std::cos(fall) * std::cos(azimuth), -std::sin(fall), 0);
     const vec4 eye(r(-5000.0f, 5000.0f), r(-5000.0f, 5000.0f), R + 1500.0f, 0);
-    cases.push_back({arguments(2, vec4(0, 200000.0f, 0, float(enabled)), eye, down), hit});
+    cases.push_back({arguments(PROBE_TERRAIN_HIT, vec4(0, 200000.0f, 0, float(enabled)), eye, down), hit});
     // Rising rays meet nothing; falling ones with a short limit stop before the ground.
     const vec4 up(down.x, down.y, -down.z, 0);
-    cases.push_back({arguments(2, vec4(0, 200000.0f, 0, float(enabled)), eye, up), hit});
-    cases.push_back({arguments(2, vec4(0, 200.0f, 0, float(enabled)), eye, down), hit});
+    cases.push_back({arguments(PROBE_TERRAIN_HIT, vec4(0, 200000.0f, 0, float(enabled)), eye, up), hit});
+    cases.push_back({arguments(PROBE_TERRAIN_HIT, vec4(0, 200.0f, 0, float(enabled)), eye, down), hit});
     // Points on the ground: their normals.
-    const vec4 ground(xy.x, xy.y, R + cpu(arguments(1, vec4(0, 0, float(enabled), 0), q, vec4(0), xy)).x, 0);
-    cases.push_back({arguments(3, vec4(0, 0, float(enabled), 0), ground), normal});
+    const vec4 ground(xy.x, xy.y,
+                      R + cpu(arguments(PROBE_TERRAIN_ALTITUDE, vec4(0, 0, float(enabled), 0), q, vec4(0), xy)).x, 0);
+    cases.push_back({arguments(PROBE_TERRAIN_NORMAL, vec4(0, 0, float(enabled), 0), ground), normal});
     // The sun high above (lit: the probe's slopes are below 0.06) or below the horizon (hidden
     // by the ground): no ray grazes, so both sides agree exactly on the verdict and within the
     // march's few steps on the loops.
@@ -1060,12 +1096,15 @@ TEST_CASE("terrain.glsl on the GPU agrees with the CPU", "[probe][terrain]") {
                    std::sin(sun_elevation), 0);
     // Points well inside the square (outside it the ground drops to sea level at its edge).
     const vec4 inner(0.6f * xy.x, 0.6f * xy.y, 0, 0);
-    const vec4 on_ground(inner.x, inner.y, R + cpu(arguments(1, vec4(0, 0, float(enabled), 0), q, vec4(0), inner)).x,
+    const vec4 on_ground(inner.x, inner.y,
+                         R + cpu(arguments(PROBE_TERRAIN_ALTITUDE, vec4(0, 0, float(enabled), 0), q, vec4(0), inner)).x,
                          0);
-    cases.push_back({arguments(5, vec4(0, 0, float(enabled), 0), on_ground, sun), 4.0f});
-    if (enabled == 1) CHECK(cpu(arguments(5, vec4(0, 0, 1, 0), on_ground, sun)).x == (sun_elevation > 0 ? 1.0f : 0.0f));
+    cases.push_back({arguments(PROBE_TERRAIN_SUNLIT, vec4(0, 0, float(enabled), 0), on_ground, sun), 4.0f});
+    if (enabled == 1)
+      CHECK(cpu(arguments(PROBE_TERRAIN_SUNLIT, vec4(0, 0, 1, 0), on_ground, sun)).x ==
+            (sun_elevation > 0 ? 1.0f : 0.0f));
     const vec4 n = normalize(vec4(r(-0.5f, 0.5f), r(-0.5f, 0.5f), 1.0f, 0.0f));
-    cases.push_back({arguments(4, vec4(r(0.0f, 4000.0f), 0, 0, 0), vec4(0), n), kArithmetic});
+    cases.push_back({arguments(PROBE_TERRAIN_ALBEDO, vec4(r(0.0f, 4000.0f), 0, 0, 0), vec4(0), n), kArithmetic});
   }
   // At a texel's centre the ceiling is the highest of the 7 x 7 texels around it (window 3,
   // cut at the edges), by brute force here; bilinear weights there are 1 and 0.
@@ -1076,7 +1115,7 @@ TEST_CASE("terrain.glsl on the GPU agrees with the CPU", "[probe][terrain]") {
         for (int a = std::max(i - 3, 0); a <= std::min(i + 3, size - 1); ++a)
           highest = std::max(highest, heights[size_t(b) * size + a]);
       const vec4 centre(((i + 0.5f) / size - 0.5f) * 40000.0f, ((j + 0.5f) / size - 0.5f) * 40000.0f, 0, 0);
-      CHECK(cpu(arguments(1, vec4(0, 0, 1, 0), vec4(0), vec4(0), centre)).z ==
+      CHECK(cpu(arguments(PROBE_TERRAIN_ALTITUDE, vec4(0, 0, 1, 0), vec4(0), vec4(0), centre)).z ==
             Approx(highest).epsilon(0).margin(altitude));
     }
   compare("terrain", cpu, cases);

@@ -1,16 +1,24 @@
 // Probe of lib/atmosphere.glsl (shared GLSL/C++ subset; tests/test_library_probes.cpp).
 // Lengths in metres; x[0] = (function, earth radius, a, b), x[1..3] points and directions.
+// The functions (x[0].x):
+const int PROBE_RAYLEIGH = 0;  // rayleigh_scattering, rayleigh_phase
+const int PROBE_SUN_AND_HENYEY_GREENSTEIN = 1;  // solar_irradiance, henyey_greenstein
+const int PROBE_AIR_EXTINCTION = 2;
+const int PROBE_TRANSMITTANCE_TO_SPACE = 3;
+const int PROBE_SKY_SINGLE_SCATTERING = 4;
+const int PROBE_SKY_INTEGRAL_STEPS = 5;  // sky_integral_begin, _point, _step, _end
 #ifndef __cplusplus
 #include "../lib/atmosphere.glsl"
 #endif
 vec4 probe_atmosphere(mat4 x) {
   int f = int(x[0].x);
   float earth_radius = x[0].y;
-  if (f == 0) return vec4(rayleigh_scattering() * 1.0e5f, rayleigh_phase(x[0].z));
-  if (f == 1) return vec4(solar_irradiance(), henyey_greenstein(x[0].z, x[0].w));
-  if (f == 2) return vec4(air_extinction(x[0].z) * 1.0e5f, 0.0f);
-  if (f == 3) return vec4(transmittance_to_space(vec3(x[1]), vec3(x[2]), earth_radius), 0.0f);
-  if (f == 5) {
+  if (f == PROBE_RAYLEIGH) return vec4(rayleigh_scattering() * 1.0e5f, rayleigh_phase(x[0].z));
+  if (f == PROBE_SUN_AND_HENYEY_GREENSTEIN) return vec4(solar_irradiance(), henyey_greenstein(x[0].z, x[0].w));
+  if (f == PROBE_AIR_EXTINCTION) return vec4(air_extinction(x[0].z) * 1.0e5f, 0.0f);
+  if (f == PROBE_TRANSMITTANCE_TO_SPACE)
+    return vec4(transmittance_to_space(vec3(x[1]), vec3(x[2]), earth_radius), 0.0f);
+  if (f == PROBE_SKY_INTEGRAL_STEPS) {
     // The same integral step by step with the sun's share x[0].w at the odd steps (1 at the
     // others): the in-scattering of part x[0].z (0 total, 1 split, scaled by 1e3) and the total
     // transmittance's green.
@@ -23,9 +31,9 @@ vec4 probe_atmosphere(mat4 x) {
     sky_integral_end(s, total, split, transmittance, transmittance_split);
     return vec4((x[0].z == 0.0f ? total : split) * 1.0e3f, transmittance.y);
   }
-  // sky_single_scattering from x[1] along x[2] over x[1].w metres (split at x[2].w) towards the
-  // sun x[3] with int(x[3].w) steps; x[0].z picks which of its four results to return
-  // (radiances scaled by 1e3 to order one).
+  // PROBE_SKY_SINGLE_SCATTERING: sky_single_scattering from x[1] along x[2] over x[1].w metres
+  // (split at x[2].w) towards the sun x[3] with int(x[3].w) steps; x[0].z picks which of its four
+  // results to return (radiances scaled by 1e3 to order one).
   vec3 inscatter_total;
   vec3 inscatter_split;
   vec3 transmittance_total;

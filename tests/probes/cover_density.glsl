@@ -1,4 +1,10 @@
-// Probe of lib/cover_density.glsl (shared GLSL/C++ subset; tests/test_shader_probes.cpp).
+// Probe of lib/cover_density.glsl (shared GLSL/C++ subset; tests/test_library_probes.cpp).
+// x[0] = (function, a, b, c), x[1] = the point, x[2] = (frequency, octaves, lacunarity, gain),
+// x[3] = (seed, offset or further numbers). The functions (x[0].x):
+const int PROBE_COVER_DENSITY = 0;
+const int PROBE_COVER_DENSITY_SHIFTED = 1;
+const int PROBE_COVER_FROM_DENSITY = 2;  // cover_from_density(a, b, c)
+const int PROBE_SHAPED_DENSITY = 3;  // shaped_density(a, b, c, x[3].y, x[3].z)
 #ifndef __cplusplus
 #include "../lib/cover_density.glsl"
 #endif
@@ -11,8 +17,10 @@ vec4 probe_cover_density(mat4 x) {
   params.gain = x[2].w;
   params.seed = uint(x[3].x);
   params.period = ivec3(0);
-  if (f == 0) return vec4(cover_density(vec3(x[1]), params), 0.0f, 0.0f, 0.0f);
-  if (f == 1) return vec4(cover_density_shifted(vec3(x[1]), params, vec3(x[3].y, x[3].z, x[3].w)), 0.0f, 0.0f, 0.0f);
-  if (f == 3) return vec4(shaped_density(x[0].y, x[0].z, x[0].w, x[3].y, x[3].z), 0.0f, 0.0f, 0.0f);
-  return vec4(cover_from_density(x[0].y, x[0].z, x[0].w), 0.0f, 0.0f, 0.0f);
+  if (f == PROBE_COVER_DENSITY) return vec4(cover_density(vec3(x[1]), params), 0.0f, 0.0f, 0.0f);
+  if (f == PROBE_COVER_DENSITY_SHIFTED)
+    return vec4(cover_density_shifted(vec3(x[1]), params, vec3(x[3].y, x[3].z, x[3].w)), 0.0f, 0.0f, 0.0f);
+  if (f == PROBE_SHAPED_DENSITY)
+    return vec4(shaped_density(x[0].y, x[0].z, x[0].w, x[3].y, x[3].z), 0.0f, 0.0f, 0.0f);
+  return vec4(cover_from_density(x[0].y, x[0].z, x[0].w), 0.0f, 0.0f, 0.0f);  // PROBE_COVER_FROM_DENSITY
 }

@@ -2,10 +2,14 @@
 // The coefficient grid has SPLINE_PROBE_CELLS nodes per face edge inside the face (and
 // SPLINE_MARGIN more on each side), vec4 per node, faces in GL order and rows from j = 0: in GLSL
 // the 2D array image at the probe's data binding, in C++ a SplineSource over the same floats.
-// x[0] = (function, a, b, c); functions: 0 cubic_bspline_weights(a), 1
-// prefilter_cubic_bspline(x[1], x[2], x[3]), 2 curl_spline_row(face a, i b, j c, weights x[1]),
-// 3 sample_curl_spline(x[1]), 4 spline_velocity(x[1]), 5 curl_spline_node(face a, i b, j c,
-// margin x[1].x, cells x[1].y), 6 warp_velocity(x[1]).
+// x[0] = (function, a, b, c). The functions (x[0].x):
+const int PROBE_CUBIC_BSPLINE_WEIGHTS = 0;  // cubic_bspline_weights(a)
+const int PROBE_PREFILTER_CUBIC_BSPLINE = 1;  // prefilter_cubic_bspline(x[1], x[2], x[3])
+const int PROBE_CURL_SPLINE_ROW = 2;  // curl_spline_row(face a, i b, j c, weights x[1])
+const int PROBE_SAMPLE_CURL_SPLINE = 3;  // sample_curl_spline(x[1])
+const int PROBE_SPLINE_VELOCITY = 4;  // spline_velocity(x[1])
+const int PROBE_CURL_SPLINE_NODE = 5;  // curl_spline_node(face a, i b, j c, margin x[1].x, cells x[1].y)
+const int PROBE_SPLINE_WARP_VELOCITY = 6;  // warp_velocity(x[1]) of the spline
 const int SPLINE_PROBE_CELLS = 4;
 #ifndef __cplusplus
 layout(rgba32f, binding = 2) uniform readonly image2DArray probe_spline;
@@ -13,13 +17,14 @@ layout(rgba32f, binding = 2) uniform readonly image2DArray probe_spline;
 #endif
 vec4 probe_curl_spline(mat4 x, SplineImage spline) {
   int f = int(x[0].x);
-  if (f == 0) return cubic_bspline_weights(x[0].y);
-  if (f == 1) return prefilter_cubic_bspline(x[1], x[2], x[3]);
-  if (f == 2) return curl_spline_row(int(x[0].y), int(x[0].z), int(x[0].w), x[1], spline);
-  if (f == 3) return sample_curl_spline(vec3(x[1]), spline);
-  if (f == 4) return vec4(spline_velocity(vec3(x[1]), spline), 0.0f);
-  if (f == 6) return vec4(warp_velocity(vec3(x[1]), spline), 0.0f);
-  return vec4(curl_spline_node(int(x[0].y), int(x[0].z), int(x[0].w), int(x[1].x), int(x[1].y)), 0.0f);
+  if (f == PROBE_CUBIC_BSPLINE_WEIGHTS) return cubic_bspline_weights(x[0].y);
+  if (f == PROBE_PREFILTER_CUBIC_BSPLINE) return prefilter_cubic_bspline(x[1], x[2], x[3]);
+  if (f == PROBE_CURL_SPLINE_ROW) return curl_spline_row(int(x[0].y), int(x[0].z), int(x[0].w), x[1], spline);
+  if (f == PROBE_SAMPLE_CURL_SPLINE) return sample_curl_spline(vec3(x[1]), spline);
+  if (f == PROBE_SPLINE_VELOCITY) return vec4(spline_velocity(vec3(x[1]), spline), 0.0f);
+  if (f == PROBE_SPLINE_WARP_VELOCITY) return vec4(warp_velocity(vec3(x[1]), spline), 0.0f);
+  return vec4(curl_spline_node(int(x[0].y), int(x[0].z), int(x[0].w), int(x[1].x), int(x[1].y)),
+              0.0f);  // PROBE_CURL_SPLINE_NODE
 }
 #ifndef __cplusplus
 vec4 probe_curl_spline(mat4 x) { return probe_curl_spline(x, probe_spline); }

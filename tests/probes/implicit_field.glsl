@@ -1,5 +1,9 @@
 // Probe of lib/implicit_field.glsl (shared GLSL/C++ subset; tests/test_library_probes.cpp).
-// x[0] = (function, a, b, c); x[1..3] as each function needs.
+// x[0] = (function, a, b, c); x[1..3] as each function needs. The functions (x[0].x):
+const int PROBE_FIELD_PARTS = 0;  // wyvill1(a), lipus_blend(b, c, x[1].x), apply_turbulence(x[1].yzw)
+const int PROBE_PRIMITIVE_FIELD = 1;  // segment_distance, primitive_distance, primitive_field at (a, b, c)
+const int PROBE_MODEL_TURBULENCE = 2;
+const int PROBE_MODEL_BLENDS = 3;  // model_accumulate and model_finish with each blend
 #ifndef __cplusplus
 #include "../lib/implicit_field.glsl"
 #endif
@@ -16,12 +20,12 @@ vec4 probe_implicit_field(mat4 x) {
   int f = int(x[0].x);
   vec3 p = vec3(x[0].y, x[0].z, x[0].w);
   ModelPrimitive prim = probe_model_primitive(x);
-  if (f == 0) return vec4(wyvill1(x[0].y), lipus_blend(x[0].z, x[0].w, x[1].x),
+  if (f == PROBE_FIELD_PARTS) return vec4(wyvill1(x[0].y), lipus_blend(x[0].z, x[0].w, x[1].x),
                           apply_turbulence(x[1].y, x[1].z, x[1].w), 0.0f);
-  if (f == 1) return vec4(segment_distance(p, vec3(x[1]), vec3(x[2])), primitive_distance(p, prim),
+  if (f == PROBE_PRIMITIVE_FIELD) return vec4(segment_distance(p, vec3(x[1]), vec3(x[2])), primitive_distance(p, prim),
                           primitive_field(p, prim), 0.0f);
-  if (f == 2) return vec4(model_turbulence(p, prim.noise), 0.0f, 0.0f, 0.0f);
-  // f == 3: one primitive folded in with each blend, then finished.
+  if (f == PROBE_MODEL_TURBULENCE) return vec4(model_turbulence(p, prim.noise), 0.0f, 0.0f, 0.0f);
+  // PROBE_MODEL_BLENDS: one primitive folded in with each blend, then finished.
   vec4 r = vec4(0.0f);
   for (int blend = 0; blend < 4; ++blend) {
     float rho = model_accumulate(0.25f, p, p, prim, blend);

@@ -1,5 +1,10 @@
 // Probe of lib/model_march.glsl (shared GLSL/C++ subset; tests/test_library_probes.cpp). The
-// GLSL side reads the density volume bound to unit 4 (1000 m box).
+// GLSL side reads the density volume bound to unit 4 (1000 m box). The functions (x[0].x):
+const int PROBE_RAY_BOX = 0;
+const int PROBE_MODEL_EXTINCTION = 1;  // model_extinction, model_light_depth
+const int PROBE_MODEL_MARCH = 2;
+const int PROBE_MODEL_PIXEL = 3;
+const int PROBE_MODEL_RAY = 4;
 #ifndef __cplusplus
 layout(binding = 4) uniform sampler3D model_density;
 #include "../lib/model_march.glsl"
@@ -30,11 +35,12 @@ vec4 probe_model_march(mat4 x, IN(DensityVolume) density) {
   int f = int(x[0].x);
   ModelView v = probe_model_view();
   vec3 p = vec3(x[1]);
-  if (f == 0) return vec4(ray_box(p, normalize(vec3(x[2])), vec3(0.0f), vec3(1000.0f)), 0.0f, 0.0f);
-  if (f == 1) return vec4(model_extinction(p, v, density), model_light_depth(p, v, density), 0.0f, 0.0f);
-  if (f == 2) return model_march(normalize(vec3(x[2])), x[0].y, v, density);
-  if (f == 3) return model_pixel(ivec2(int(x[0].y), int(x[0].z)), ivec2(16, 12), v, density);
-  return vec4(model_ray(vec2(x[0].y, x[0].z), ivec2(16, 12), v), 0.0f);
+  if (f == PROBE_RAY_BOX) return vec4(ray_box(p, normalize(vec3(x[2])), vec3(0.0f), vec3(1000.0f)), 0.0f, 0.0f);
+  if (f == PROBE_MODEL_EXTINCTION)
+    return vec4(model_extinction(p, v, density), model_light_depth(p, v, density), 0.0f, 0.0f);
+  if (f == PROBE_MODEL_MARCH) return model_march(normalize(vec3(x[2])), x[0].y, v, density);
+  if (f == PROBE_MODEL_PIXEL) return model_pixel(ivec2(int(x[0].y), int(x[0].z)), ivec2(16, 12), v, density);
+  return vec4(model_ray(vec2(x[0].y, x[0].z), ivec2(16, 12), v), 0.0f);  // PROBE_MODEL_RAY
 }
 
 #ifndef __cplusplus

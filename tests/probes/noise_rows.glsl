@@ -5,7 +5,16 @@
 // array of the invocation, in C++ the arrays of a NoiseRowTarget.
 // x[0] = (function, channel type, t0, y), x[1] = (z, count, i0, stride),
 // x[2] = (frequency, octaves, lacunarity, gain), x[3] = (seed, period); the Worley part of
-// perlin-worley is the channel's fBm with seed + 1.
+// perlin-worley is the channel's fBm with seed + 1. The functions (x[0].x):
+const int PROBE_CHANNEL_WALK = 0;  // the channel's walk as noise_rows.comp runs it
+const int PROBE_CHANNEL_POINTS = 1;  // noise_channel_value at the same texels
+const int PROBE_ROW_SETUP = 2;  // fbm_norm, texels_below, perlin_row_is_wide, finish_texel
+const int PROBE_ROW_FRAMES = 3;  // worley_slab, perlin_row_frame
+const int PROBE_WORLEY_ROW = 4;
+const int PROBE_PERLIN_ROW = 5;
+const int PROBE_PERLIN_ROW_WIDE = 6;
+const int PROBE_PERLIN_ROW_FINISH = 7;
+const int PROBE_NOISE_TAKE = 8;
 #ifdef __cplusplus
 #define NOISE_ROWS_PROBE_PARAM , IN(NoiseRowTarget) target
 #define NOISE_ROWS_PROBE_ARG , target
@@ -58,18 +67,18 @@ vec4 noise_rows_probe_walk(mat4 x NOISE_ROWS_PROBE_PARAM) {
   finish.worley_norm = fbm_norm(channel.worley);
   uvec3 key = noise_key(fbm.seed, 0u);
   uvec2 beyond = uvec2(0u);
-  if (f == 1) {
+  if (f == PROBE_CHANNEL_POINTS) {
     // The point functions that the walk accelerates, at the same texel centres.
     vec4 v = vec4(0.0f);
     for (int k = 0; k < 4; ++k)
       v[k] = noise_channel_value(vec3(float(first + k * stride), float(y), float(z)) + 0.5f, channel);
     return v;
   }
-  if (f == 2) {
+  if (f == PROBE_ROW_SETUP) {
     return vec4(fbm_norm(fbm), float(texels_below(t0, fbm.frequency)), perlin_row_is_wide(fbm.frequency) ? 1.0f : 0.0f,
                 finish_texel(finish, x[1].z, x[1].w));
   }
-  if (f == 3) {
+  if (f == PROBE_ROW_FRAMES) {
     // Feature point k of the slab at lattice x = t0 around lattice row (y, z) seen from offsets
     // (x[1].w, x[1].w / 2), and the frame of the Perlin walk along texel row (y, z).
     int k = int(x[1].z);
@@ -77,7 +86,7 @@ vec4 noise_rows_probe_walk(mat4 x NOISE_ROWS_PROBE_PARAM) {
     PerlinRowFrame frame = perlin_row_frame(y, z, fbm.frequency, fbm.period);
     return vec4(slab.x[k], slab.dyz[k], frame.fy, frame.w.y);
   }
-  if (f == 0) {
+  if (f == PROBE_CHANNEL_WALK) {
     // The channel's walk as shaders/noise/noise_rows.comp runs it.
     if (channel.type == NOISE_PERLIN) {
       perlin_fbm_row(t0, count, y, z, fbm, 0, true, finish NOISE_ROWS_PROBE_ARG);
@@ -87,16 +96,17 @@ vec4 noise_rows_probe_walk(mat4 x NOISE_ROWS_PROBE_PARAM) {
     } else {
       worley_fbm_row(t0, count, y, z, fbm, 0, true, finish, beyond NOISE_ROWS_PROBE_ARG);
     }
-  } else if (f == 4) {
-    worley_row(t0, count, y, z, fbm.frequency, fbm.period, key, 1.0f, 0, false, true, finish, beyond NOISE_ROWS_PROBE_ARG);
-  } else if (f == 5) {
+  } else if (f == PROBE_WORLEY_ROW) {
+    worley_row(t0, count, y, z, fbm.frequency, fbm.period, key, 1.0f, 0, false, true, finish,
+               beyond NOISE_ROWS_PROBE_ARG);
+  } else if (f == PROBE_PERLIN_ROW) {
     perlin_row(t0, count, y, z, fbm.frequency, fbm.period, key, 1.0f, 0, false, true, finish NOISE_ROWS_PROBE_ARG);
-  } else if (f == 6) {
+  } else if (f == PROBE_PERLIN_ROW_WIDE) {
     perlin_row_wide(t0, count, y, z, fbm.frequency, fbm.period, key, 1.0f, 0, false, finish NOISE_ROWS_PROBE_ARG);
-  } else if (f == 7) {
+  } else if (f == PROBE_PERLIN_ROW_FINISH) {
     perlin_row_finish(t0, count, y, z, fbm.frequency, fbm.period, key, 1.0f, 0, false, finish NOISE_ROWS_PROBE_ARG);
   } else {
-    // Two terms of texel t0: stored, then added and emitted.
+    // PROBE_NOISE_TAKE: two terms of texel t0, stored, then added and emitted.
     noise_take(t0, 0, 0, x[1].z, false, false, finish NOISE_ROWS_PROBE_ARG);
     noise_take(t0, 0, 0, x[1].w, true, true, finish NOISE_ROWS_PROBE_ARG);
     return vec4(NOISE_ROWS_PROBE_VALUE(t0), 0.0f, 0.0f, 0.0f);

@@ -1,5 +1,11 @@
 // Probe of lib/terrain.glsl (shared GLSL/C++ subset; tests/test_library_probes.cpp). The GLSL
-// side reads the height field bound to texture unit 4.
+// side reads the height field bound to texture unit 4. The functions (x[0].x):
+const int PROBE_TERRAIN_PLANE = 0;
+const int PROBE_TERRAIN_ALTITUDE = 1;  // terrain_altitude, terrain_clearance, terrain_ceiling
+const int PROBE_TERRAIN_HIT = 2;
+const int PROBE_TERRAIN_NORMAL = 3;
+const int PROBE_TERRAIN_ALBEDO = 4;
+const int PROBE_TERRAIN_SUNLIT = 5;  // terrain_sunlit at terrain_normal
 #ifndef __cplusplus
 layout(binding = 4) uniform sampler2D terrain_heights;
 #include "../lib/terrain.glsl"
@@ -25,25 +31,25 @@ vec4 probe_terrain(mat4 x, IN(TerrainTexture) terrain) {
   t.enabled = int(x[0].w);
   vec3 q = vec3(x[1]);
   vec3 d = vec3(x[2]);
-  if (f == 0) return vec4(terrain_plane(q, earth_radius), 0.0f, 0.0f);
-  if (f == 1) {
+  if (f == PROBE_TERRAIN_PLANE) return vec4(terrain_plane(q, earth_radius), 0.0f, 0.0f);
+  if (f == PROBE_TERRAIN_ALTITUDE) {
     return vec4(terrain_altitude(vec2(x[3]), t, terrain), terrain_clearance(q, earth_radius, t, terrain),
                 terrain_ceiling(vec2(x[3]), t, terrain), 0.0f);
   }
-  if (f == 2) {
+  if (f == PROBE_TERRAIN_HIT) {
     int loops = 0;
     float s = terrain_hit(q, d, earth_radius, x[0].y, t, loops, terrain);
     return vec4(s, float(loops), 0.0f, 0.0f);
   }
-  if (f == 3) return vec4(terrain_normal(q, earth_radius, t, terrain), 0.0f);
-  if (f == 5) {
+  if (f == PROBE_TERRAIN_NORMAL) return vec4(terrain_normal(q, earth_radius, t, terrain), 0.0f);
+  if (f == PROBE_TERRAIN_SUNLIT) {
     int loops = 0;
     vec3 normal = terrain_normal(q, earth_radius, t, terrain);
     // Called before the vector is built: C++ leaves the order of a constructor's arguments open.
     float sunlit = terrain_sunlit(q, normal, d, earth_radius, t, loops, terrain);
     return vec4(sunlit, float(loops), 0.0f, 0.0f);
   }
-  return vec4(terrain_albedo(x[0].y, d, vec3(0.0f, 0.0f, 1.0f)), 0.0f);
+  return vec4(terrain_albedo(x[0].y, d, vec3(0.0f, 0.0f, 1.0f)), 0.0f);  // PROBE_TERRAIN_ALBEDO
 }
 
 #ifndef __cplusplus

@@ -5,7 +5,18 @@
 // (CubeSource, CurlParams); GLSL, with one source per shader, passes a flag that switches
 // (warp_probe_uses_curl).
 // x[0] = (function, integrator, h, steps), x[1] = (start, procedural), x[2] = (flow time,
-// first step, max step, tolerance), x[3] = (attempt limit, part, t, attempts).
+// first step, max step, tolerance), x[3] = (attempt limit, part, t, attempts). The functions
+// (x[0].x); the first three read the cube map directly (warp_probe_sampled):
+const int PROBE_FLOW_VELOCITY = 0;
+const int PROBE_WARP_STEP = 1;
+const int PROBE_INTEGRATE_WARP = 2;
+const int PROBE_VELOCITY_AT = 3;  // velocity_at(1.5 w), procedural when x[1].w != 0
+const int PROBE_SCHEME_STEP = 4;  // euler_step, heun_step, rk4_step (rk4_step_from), geodesic_step
+const int PROBE_FIXED_STEP = 5;  // fixed_step(RK4), procedural
+const int PROBE_INTEGRATE_FIXED = 6;  // integrate_fixed(Heun) or integrate_fixed_from(RK4)
+const int PROBE_BOGACKI_SHAMPINE_STEP = 7;  // procedural
+const int PROBE_ADVANCE_ADAPTIVE = 8;
+const int PROBE_INTEGRATE_ADAPTIVE = 9;  // procedural
 #ifndef __cplusplus
 #include "../lib/curl_flow.glsl"
 #endif
@@ -46,9 +57,14 @@ vec3 warp_velocity(vec3 w, bool procedural) {
 vec4 warp_probe_sampled(mat4 x, CubeImage source) {
   int f = int(x[0].x);
   vec3 w = vec3(x[1]);
-  if (f == 0) return vec4(flow_velocity(w, source), 0.0f);
-  if (f == 1) return vec4(warp_step(w, x[0].z, source), 0.0f);
-  return vec4(integrate_warp(w, int(x[0].w), x[0].z, source), 0.0f);
+  if (f == PROBE_FLOW_VELOCITY) return vec4(flow_velocity(w, source), 0.0f);
+  if (f == PROBE_WARP_STEP) return vec4(warp_step(w, x[0].z, source), 0.0f);
+  return vec4(integrate_warp(w, int(x[0].w), x[0].z, source), 0.0f);  // PROBE_INTEGRATE_WARP
+}
+// Whether function f is one of warp_probe_sampled's.
+bool warp_probe_is_sampled(mat4 x) {
+  int f = int(x[0].x);
+  return f == PROBE_FLOW_VELOCITY || f == PROBE_WARP_STEP || f == PROBE_INTEGRATE_WARP;
 }
 
 // Whether function f runs on the procedural curl. Every velocity source costs the GPU compiler
@@ -56,8 +72,8 @@ vec4 warp_probe_sampled(mat4 x, CubeImage source) {
 // the schemes run sampled directly and procedural through fixed_step; velocity_at runs both.
 bool warp_probe_uses_curl(mat4 x) {
   int f = int(x[0].x);
-  if (f == 3) return x[1].w != 0.0f;
-  return f == 5 || f == 7 || f == 9;
+  if (f == PROBE_VELOCITY_AT) return x[1].w != 0.0f;
+  return f == PROBE_FIXED_STEP || f == PROBE_BOGACKI_SHAMPINE_STEP || f == PROBE_INTEGRATE_ADAPTIVE;
 }
 // The source the stepping rules take: C++ passes the field it was instantiated for, the GPU the
 // flag of warp_velocity(vec3, bool) above.
@@ -75,10 +91,10 @@ vec4 warp_probe_field(mat4 x, WarpField field) {
   int integrator = int(x[0].y);
   float h = x[0].z;
   vec3 w = vec3(x[1]);
-  if (f == 3) {
+  if (f == PROBE_VELOCITY_AT) {
     return vec4(velocity_at(1.5f * w, WARP_PROBE_SOURCE(x[1].w != 0.0f)), 0.0f);
   }
-  if (f == 4) {
+  if (f == PROBE_SCHEME_STEP) {
     if (integrator == INTEGRATOR_HEUN) return vec4(heun_step(w, h, WARP_PROBE_SOURCE(false)), 0.0f);
     if (integrator == INTEGRATOR_RK4) {
       // With the flag: the first velocity given, as the warp pass takes it from the curl pass.
@@ -89,24 +105,24 @@ vec4 warp_probe_field(mat4 x, WarpField field) {
     if (integrator == INTEGRATOR_GEODESIC) return vec4(geodesic_step(w, h, WARP_PROBE_SOURCE(false)), 0.0f);
     return vec4(euler_step(w, h, WARP_PROBE_SOURCE(false)), 0.0f);
   }
-  if (f == 5) {
+  if (f == PROBE_FIXED_STEP) {
     return vec4(fixed_step(INTEGRATOR_RK4, w, h, WARP_PROBE_SOURCE(true)), 0.0f);
   }
-  if (f == 6) {
+  if (f == PROBE_INTEGRATE_FIXED) {
     if (x[1].w != 0.0f) {
       vec3 v = velocity_at(w, WARP_PROBE_SOURCE(false));
       return vec4(integrate_fixed_from(INTEGRATOR_RK4, w, v, 1, int(x[0].w), h, WARP_PROBE_SOURCE(false)), 0.0f);
     }
     return vec4(integrate_fixed(INTEGRATOR_HEUN, w, int(x[0].w), h, WARP_PROBE_SOURCE(false)), 0.0f);
   }
-  if (f == 7) {
+  if (f == PROBE_BOGACKI_SHAMPINE_STEP) {
     vec3 k4;
     float error;
     vec3 next = bogacki_shampine_step(w, velocity_at(w, WARP_PROBE_SOURCE(true)), h, k4, error,
                                       WARP_PROBE_SOURCE(true));
     return int(x[3].y) == 0 ? vec4(next, error) : vec4(k4, error);
   }
-  if (f == 8) {
+  if (f == PROBE_ADVANCE_ADAPTIVE) {
     // Continues from flow time x[3].z after int(x[3].w) attempts, with step h.
     float t = x[3].z;
     float step = h;
@@ -115,19 +131,20 @@ vec4 warp_probe_field(mat4 x, WarpField field) {
     if (int(x[3].y) == 0) return vec4(w, done ? 1.0f : 0.0f);
     return vec4(t, step, float(attempts), done ? 1.0f : 0.0f);
   }
-  return integrate_adaptive(w, x[2].x, x[2].y, x[2].z, x[2].w, int(x[3].x), WARP_PROBE_SOURCE(true));
+  return integrate_adaptive(w, x[2].x, x[2].y, x[2].z, x[2].w, int(x[3].x),
+                            WARP_PROBE_SOURCE(true));  // PROBE_INTEGRATE_ADAPTIVE
 }
 
 #ifdef __cplusplus
 vec4 probe_warp_step(mat4 x, IN(CubeSource) source) {
-  if (int(x[0].x) < 3) return warp_probe_sampled(x, source);
+  if (warp_probe_is_sampled(x)) return warp_probe_sampled(x, source);
   if (warp_probe_uses_curl(x)) return warp_probe_field(x, warp_probe_curl());
   return warp_probe_field(x, source);
 }
 #undef WARP_PROBE_SOURCE
 #else
 vec4 probe_warp_step(mat4 x) {
-  if (int(x[0].x) < 3) return warp_probe_sampled(x, probe_cube);
+  if (warp_probe_is_sampled(x)) return warp_probe_sampled(x, probe_cube);
   return warp_probe_field(x, false);  // the flag at each call chooses
 }
 #endif

@@ -1,4 +1,13 @@
-// Probe of lib/worley.glsl (shared GLSL/C++ subset; tests/test_shader_probes.cpp).
+// Probe of lib/worley.glsl (shared GLSL/C++ subset; tests/test_library_probes.cpp).
+// x[0] = (function, a, b, c), x[1] = the point or cell, x[2] = the period, x[3] = the key. The
+// functions (x[0].x):
+const int PROBE_WRAP_CELL = 0;  // wrap_cell, wrap_remainder
+const int PROBE_FEATURE_OFFSET = 1;
+const int PROBE_WORLEY_CANDIDATE = 2;  // worley_candidate, worley_nearer
+const int PROBE_WRAPPED_FEATURE_OFFSET = 3;
+const int PROBE_SMOOTH_WORLEY = 4;
+const int PROBE_WRAPPED_NEIGHBOURS = 5;  // wrapped_neighbours, wrap_axis, wrap_step
+const int PROBE_WORLEY_F1 = 6;
 #ifndef __cplusplus
 #include "../lib/worley.glsl"
 #endif
@@ -7,21 +16,22 @@ vec4 probe_worley(mat4 x) {
   ivec3 period = ivec3(vec3(x[2]));
   uvec3 key = uvec3(vec3(x[3]));
   // w: the remainder of index x[1].x by 7 from the given quotient x[1].y (integer arithmetic).
-  if (f == 0) return vec4(vec3(wrap_cell(ivec3(vec3(x[1])), period)), float(wrap_remainder(int(x[1].x), 7, int(x[1].y))));
-  if (f == 1) return vec4(feature_offset(ivec3(vec3(x[1])), period, key), 0.0f);
-  if (f == 2) {
+  if (f == PROBE_WRAP_CELL)
+    return vec4(vec3(wrap_cell(ivec3(vec3(x[1])), period)), float(wrap_remainder(int(x[1].x), 7, int(x[1].y))));
+  if (f == PROBE_FEATURE_OFFSET) return vec4(feature_offset(ivec3(vec3(x[1])), period, key), 0.0f);
+  if (f == PROBE_WORLEY_CANDIDATE) {
     float best = x[0].y;
     vec3 best_delta = vec3(0.0f);
     worley_candidate(ivec3(0), ivec3(int(x[0].z), int(x[0].w), 1), vec3(x[1]), period, key, best, best_delta);
     worley_nearer(vec3(x[1]), ivec3(1, 0, 0), vec3(x[1].w), best, best_delta);
     return vec4(best_delta, best);
   }
-  if (f == 3) return vec4(wrapped_feature_offset(ivec3(vec3(x[1])), key), 0.0f);
-  if (f == 4) return smooth_worley(vec3(x[1]), period, key, x[0].y);
-  if (f == 5) {
+  if (f == PROBE_WRAPPED_FEATURE_OFFSET) return vec4(wrapped_feature_offset(ivec3(vec3(x[1])), key), 0.0f);
+  if (f == PROBE_SMOOTH_WORLEY) return smooth_worley(vec3(x[1]), period, key, x[0].y);
+  if (f == PROBE_WRAPPED_NEIGHBOURS) {
     // The three wrapped neighbours along x, and one step from the wrapped y along x[0].z.
     int y = wrap_axis(int(x[1].y), period.y);
     return vec4(vec3(wrapped_neighbours(int(x[1].x), period.x)), float(wrap_step(y, int(x[0].z), period.y)));
   }
-  return worley_f1(vec3(x[1]), period, key);  // f == 6
+  return worley_f1(vec3(x[1]), period, key);  // PROBE_WORLEY_F1
 }

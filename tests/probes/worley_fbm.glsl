@@ -1,4 +1,8 @@
-// Probe of lib/worley_fbm.glsl (shared GLSL/C++ subset; tests/test_shader_probes.cpp).
+// Probe of lib/worley_fbm.glsl (shared GLSL/C++ subset; tests/test_library_probes.cpp).
+// x[0] = (function, lambda, 0, 0), x[1] = the point, x[2] = (frequency, octaves, lacunarity,
+// gain), x[3] = (seed, period). The functions (x[0].x):
+const int PROBE_INVERTED_WORLEY_FBM = 0;
+const int PROBE_SMOOTH_WORLEY_FBM = 1;  // smooth_worley_fbm with lambda x[0].y
 #ifndef __cplusplus
 #include "../lib/worley_fbm.glsl"
 #endif
@@ -10,6 +14,6 @@ vec4 probe_worley_fbm(mat4 x) {
   params.gain = x[2].w;
   params.seed = uint(x[3].x);
   params.period = ivec3(vec3(x[3].y, x[3].z, x[3].w));
-  if (x[0].x > 0.5f) return smooth_worley_fbm(vec3(x[1]), params, x[0].y);
-  return inverted_worley_fbm(vec3(x[1]), params);
+  if (int(x[0].x) == PROBE_SMOOTH_WORLEY_FBM) return smooth_worley_fbm(vec3(x[1]), params, x[0].y);
+  return inverted_worley_fbm(vec3(x[1]), params);  // PROBE_INVERTED_WORLEY_FBM
 }
