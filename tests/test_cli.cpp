@@ -146,6 +146,14 @@ TEST_CASE("bad input exits with code 2 naming the option and writes nothing", "[
       {"generate --iterations 2.5" + dir, "--iterations"},
       {"generate --density-frequency 1000 --density-octaves 6" + dir, "--density-frequency"},
       {"generate --colour red" + dir, "--colour"},
+      {"generate --flow drifting" + dir, "--flow"},
+      {"generate --flow moving --time 2026-13-01T00:00Z" + dir, "--time"},
+      {"generate --time 2026-06-21T00:00Z" + dir, "--time"},
+      {"generate --flow moving --integrator euler" + dir, "--integrator"},
+      {"generate --flow moving --curl-mode sampled" + dir, "--curl-mode"},
+      {"generate --sequence 3" + dir, "--sequence"},
+      {"generate --flow moving --interval 2" + dir, "--interval"},
+      {"generate --flow moving --sequence 3 --interval 0" + dir, "--interval"},
       {"frobnicate", "frobnicate"},
   };
   std::vector<std::pair<std::string, std::string>> all(std::begin(cases), std::end(cases));
@@ -163,6 +171,34 @@ TEST_CASE("bad input exits with code 2 naming the option and writes nothing", "[
     CHECK_THAT(r.output, Catch::Contains(option));
     CHECK_FALSE(fs::exists(out.path));
   }
+}
+
+TEST_CASE("generate --sequence writes each frame as a whole cover set with a listing and an animated preview",
+          "[cli][moving]") {
+  TemporaryDirectory out;
+  const Run r =
+      run("generate --flow moving --size 16 --curl-size 16 --sequence 3 --interval 1.5 --time "
+          "2026-06-21T12:00Z --files equirect,png --out " +
+          out.path.string());
+  INFO(r.output);
+  REQUIRE(r.exit_code == 0);
+  const json::Value listing = json::parse(read_file(out.path / "sequence.json"));
+  const auto& frames = listing.at("frames").as_array();
+  REQUIRE(frames.size() == 3);
+  const char* times[] = {"2026-06-21T12:00:00Z", "2026-06-21T13:30:00Z", "2026-06-21T15:00:00Z"};
+  for (size_t k = 0; k < frames.size(); ++k) {
+    const std::string folder = frames[k].at("folder").as_string();
+    CHECK(folder == "frame_000" + std::to_string(k));
+    CHECK(frames[k].at("time").as_string() == times[k]);
+    // Each frame is a cover set of its own, its sidecar naming the flow and its time.
+    const json::Value sidecar = json::parse(read_file(out.path / folder / "cover.json"));
+    CHECK(sidecar.at("parameters").at("flow").as_string() == "moving");
+    CHECK(sidecar.at("parameters").at("time").as_string() == times[k]);
+    CHECK(fs::exists(out.path / folder / "cover_equirect.png"));
+  }
+  const files::ImageHeader gif = files::read_image_header(out.path / "sequence.gif");
+  CHECK(gif.width == 64);
+  CHECK(gif.height == 32);
 }
 
 TEST_CASE("an output path that is a file is refused and left intact", "[cli]") {

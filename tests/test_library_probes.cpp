@@ -306,7 +306,8 @@ TEST_CASE("cover_density.glsl on the GPU agrees with the CPU", "[probe]") {
         {arguments(PROBE_COVER_FROM_DENSITY, vec4(r(0.0f, 1.0f), r(0.0f, 0.5f), r(0.5f, 1.0f), 0)), kArithmetic});
     cases.push_back({arguments(PROBE_SHAPED_DENSITY, vec4(r(0.0f, 1.5f), r(0.0f, 0.7f), r(0.0f, 2.0f), 0), vec4(0.0f),
                                vec4(0.0f), vec4(0.0f, r(-1.0f, 1.0f), r(0.0f, 1.0f), 0.0f)),
-                     kArithmetic});
+                     kArithmetic});  // The two layers' blend: two products and a sum of values below 1.
+    cases.push_back({arguments(PROBE_LAYER_BLEND, vec4(r(0.0f, 1.0f), r(0.0f, 1.0f), r(0.0f, 1.0f), 0)), kArithmetic});
   }
   compare("cover_density", probe_cover_density, cases);
   // d (1 + k c)(1 + k_s b) by hand: 0.8 (1 + 0.5 x 0.6)(1 - 0.5 x 0.4) = 0.832; zero weights leave d.
@@ -394,11 +395,19 @@ TEST_CASE("worley_fbm.glsl on the GPU agrees with the CPU", "[probe]") {
   const float highest_frequency = 3.0f * 16.0f;  // 5 octaves of lacunarity 2 from frequency 3
   for (int k = 0; k < 48; ++k) {
     const vec4 period = k % 2 ? vec4(4.0f, 4.0f, 4.0f, 0.0f) : vec4(0.0f);
-    const bool smooth = k % 3 == 2;  // smooth_worley_fbm with lambda in [0.05, 1]
-    cases.push_back(
-        {arguments(PROBE_INVERTED_WORLEY_FBM, vec4(smooth ? 1.0f : 0.0f, smooth ? r(0.05f, 1.0f) : 0.0f, 0.0f, 0.0f),
-                   r.v(0.0f, 1.0f), vec4(3.0f, 5.0f, 2.0f, 0.5f), vec4(99.0f, period.x, period.y, period.z)),
-         (smooth ? kSmoothFbm : kFbm) * highest_frequency});
+    // Every third case smooth_worley_fbm with lambda (x[0].y) in [0.05, 1], within kSmoothWorley's
+    // lambda >= 1/20; the others inverted_worley_fbm.
+    const bool smooth = k % 3 == 2;
+    const float lambda = smooth ? r(0.05f, 1.0f) : 0.0f;
+    const vec4 p = r.v(0.0f, 1.0f);
+    const mat4 x =
+        arguments(smooth ? PROBE_SMOOTH_WORLEY_FBM : PROBE_INVERTED_WORLEY_FBM, vec4(lambda, 0.0f, 0.0f, 0.0f), p,
+                  vec4(3.0f, 5.0f, 2.0f, 0.5f), vec4(99.0f, period.x, period.y, period.z));
+    cases.push_back({x, (smooth ? kSmoothFbm : kFbm) * highest_frequency});
+    // The probe runs the smooth fBm for its code: on the CPU it differs from the classic one.
+    mat4 classic = x;
+    classic[0].x = float(PROBE_INVERTED_WORLEY_FBM);
+    if (smooth) CHECK(probe_worley_fbm(x).w != probe_worley_fbm(classic).w);
   }
   compare("worley_fbm", probe_worley_fbm, cases);
 }
@@ -608,6 +617,14 @@ TEST_CASE("curl_flow.glsl on the GPU agrees with the CPU", "[probe]") {
     cases.push_back({arguments(PROBE_STORM_TRACK_ENVELOPE, vec4(0.0f),
                                vec4(r(-1.0f, 1.0f), k % 2 == 0 ? 0.6f : 1.0f, 0, 0), vec4(0.0f), vec4(0.0f)),
                      16.0f * kTranscendental});
+  // The flow of given potentials (gradients below 1, values 0.3 and 0.25): curl_tolerance without
+  // the fBm's own error (f_max 1 for the gradients' size), plus the envelope's term as above.
+  for (int k = 0; k < 8; ++k) {
+    const vec4 n = vec4(normalize(vec3(r.v(-1.0f, 1.0f)) + vec3(1e-3f)), 0.0f);
+    const vec4 flow(0.5f, 2.5f, 0.5f, 0.0f);
+    cases.push_back({arguments(PROBE_CURL_FLOW_OF_POTENTIALS, r.v(-0.5f, 0.5f), n, vec4(2, 3, 1, 2), flow),
+                     curl_tolerance(flow.z, 1.0f, flow.x, flow.y) + flow.z * 4.2f * kTranscendental});
+  }
   compare("curl_flow", probe_curl_flow, cases);
 }
 
@@ -749,6 +766,18 @@ TEST_CASE("curl_spline.glsl on the GPU agrees with the CPU", "[probe][spline]") 
         const vec3 w = normalize(cube_face_point(face, s, t));
         cases.push_back({arguments(PROBE_SAMPLE_CURL_SPLINE, vec4(0.0f), vec4(w, 0)), kSample});
       }
+  // The moving flow's time nodes: the probe's grid is one node (6 layers), so every node
+  // coordinate, clamped, mixes node 0 with itself: (1 - f) s + f s adds 3 operations on values
+  // below 5 (kArithmetic) to the sample's error; the velocity then projects it as kProjected.
+  for (int k = 0; k < 12; ++k) {
+    const vec3 w = normalize(vec3(r.v(-1.0f, 1.0f)) + vec3(1e-3f));
+    const int f = k % 3 == 0   ? PROBE_SAMPLE_CURL_SPLINE_NODE
+                  : k % 3 == 1 ? PROBE_SAMPLE_CURL_SPLINE_IN_TIME
+                               : PROBE_SPLINE_VELOCITY_IN_TIME;
+    const float node = f == PROBE_SAMPLE_CURL_SPLINE_NODE ? 0.0f : r(-1.0f, 2.0f);
+    cases.push_back({arguments(f, vec4(node, 0, 0, 0), vec4(w, 0)),
+                     f == PROBE_SPLINE_VELOCITY_IN_TIME ? kProjected + 2 * kArithmetic : kSample + kArithmetic});
+  }
   compare(
       "curl_spline", [&](const mat4& x) { return probe_curl_spline(x, source); }, cases, nodes,
       gpu::ProbeData::array_image);
@@ -1027,6 +1056,209 @@ TEST_CASE("cloud_march.glsl on the GPU agrees with the CPU", "[probe][march]") {
     auto texel = [&](float s) { return std::clamp(4.0f * s - 0.5f, 0.0f, 3.0f); };
     const float closed = 0.1f * cloud + 0.05f * (texel(q.x) + 2 * texel(q.y) + 3 * texel(q.z));
     CHECK(cpu(x).x == Approx(closed).epsilon(0).margin(stack_lookup));
+  }
+  // The convective cloud of PROBE_CONVECTIVE_AT to PROBE_MARCH_CONVECTIVE_INTERVAL
+  // (probe_march_params, convective_count 1): a box of edge E = 6000 m centred 20 km north, turned
+  // to the axis (0.6, 0.8), from 1000 m up, cloud base 1500 m and top 6000 m, extinction 0.01 / m
+  // at density 1; volume 0 of the stack above, 0.05 (i + 2 j + 3 k) (0 to 0.9), whose texels step
+  // by 0.05, 0.1 and 0.15 along x, y and z, 4 texels per unit of the volume coordinates q.
+  MarchParams mc = probe_march_params();
+  mc.convective_count = 1;
+  const ConvectiveParams& cloud = mc.convective[0];
+  const vec3 earth_centre(0.0f, 0.0f, -(mc.earth_radius + mc.camera_altitude));
+  const float box_edge = cloud.extent;
+  const float extinction = cloud.extinction;
+  // The point of volume coordinates q (convective_coordinates inverted, in double).
+  auto convective_point = [&](vec3 q) {
+    const dvec2 axis(cloud.axis), side(-cloud.axis.y, cloud.axis.x);
+    const dvec2 xy = dvec2(cloud.centre) + (double(q.x) - 0.5) * double(box_edge) * axis +
+                     (double(q.y) - 0.5) * double(box_edge) * side;
+    const double radius = double(mc.earth_radius) + double(cloud.bottom) + double(q.z) * double(box_edge);
+    const double z = std::sqrt(radius * radius - dot(xy, xy)) - (double(mc.earth_radius) + double(mc.camera_altitude));
+    return vec4(float(xy.x), float(xy.y), float(z), 0.0f);
+  };
+  // A unit direction at elevation e and azimuth a (clockwise from north).
+  auto direction = [](float e, float a) {
+    return vec4(std::cos(e) * std::sin(a), std::cos(e) * std::cos(a), std::sin(e), 0.0f);
+  };
+  // A point's q.z moves by kPosition / E with its altitude; q.x and q.y are differences of
+  // horizontal coordinates below 2^15 m over E, rounded by a few ulp (kArithmetic). The density
+  // moves by 4 texels times the steps that much, plus the stack lookup's rounding; the
+  // extinction by 0.01 of that; the height fraction by kPosition over the cloud's 4500 m.
+  const float q_error = float(test::kPosition) / box_edge + kArithmetic;
+  const float density_error = 4 * 0.15f * float(test::kPosition) / box_edge + 4 * 0.3f * kArithmetic + stack_lookup;
+  const float sigma_error = extinction * density_error;
+  const float h_error = float(test::kPosition) / (cloud.cloud_top - cloud.cloud_base) + kArithmetic;
+  // Along any unit direction the extinction changes by at most 0.01 x 4 / E x (0.05 + 0.1 + 0.15)
+  // per metre, and is at most 0.01 x 0.9.
+  const float sigma_slope = extinction * 4 / box_edge * 0.3f;
+  const float sigma_max = extinction * 0.9f;
+  // A box's ends: a pair of vertical planes gives t = (+-E/2 - po) / pd, po a dot product of
+  // values below 2^15 m (2 ulp: 0.004 m) over |pd| >= 0.1 (every direction here), and the quotient
+  // rounds by 3 ulp of t below 2^18 m: 0.1 m. The shells: `crossing` for rays rising (or falling)
+  // at least 0.2 rad, kPosition / sin 40 degrees for the sun's.
+  const float plane_end = 0.1f;
+  const float box_end = crossing + plane_end;
+  const float sun_end = float(test::kPosition / 0.64) + plane_end;
+
+  // convective_at and convective_coordinates at points of q in [-0.15, 1.15]^3, none within 0.002
+  // (12 m) of a face, where in_unit_cube would depend on the rounding, nor near the corner where
+  // the density is 0 (q < 1/8 on all axes; points with q < 0.2 on all axes are drawn again),
+  // where the height fraction of a density that rounds to 0 on one side only would jump. The
+  // height fraction's tolerance covers the other components; in_unit_cube is exact.
+  for (int k = 0; k < 12; ++k) {
+    vec3 q;
+    auto near_face = [](float v) { return std::abs(v) < 0.002f || std::abs(v - 1.0f) < 0.002f; };
+    do {
+      q = vec3(r(-0.15f, 1.15f), r(-0.15f, 1.15f), r(-0.15f, 1.15f));
+    } while (near_face(q.x) || near_face(q.y) || near_face(q.z) || (q.x < 0.2f && q.y < 0.2f && q.z < 0.2f));
+    cases.push_back(
+        {arguments(PROBE_CONVECTIVE_AT, vec4(0), convective_point(q)), std::max({q_error, sigma_error, h_error})});
+  }
+  // convective_box and convective_span of rays from the camera towards the box (rising 0.2 to 0.33
+  // rad, within 0.12 rad of north; limits 15 to 40 km, some ending inside) and from points around
+  // and in it (rising or falling 0.21 to 1.2 rad, their horizontal part at least 0.3 rad from the
+  // box's sides; limits 5 to 40 km). A falling ray flattens against the local horizontal by at
+  // most 40 km / R = 0.0063 rad on its way, so it still meets the shells at least 0.2 rad steep.
+  for (int k = 0; k < 12; ++k) {
+    vec4 o(0.0f), d;
+    if (k % 2 == 0) {
+      d = direction(r(0.2f, 0.33f), r(-0.12f, 0.12f));
+    } else {
+      o = convective_point(vec3(r(-0.5f, 1.5f), r(-0.5f, 1.5f), r(-0.1f, 1.1f)));
+      const float beta = r(0.3f, 1.27f) + 1.5707964f * float((k / 2) % 4);  // every quadrant
+      const float e = (k % 3 == 0 ? -1.0f : 1.0f) * r(0.21f, 1.2f);
+      const vec2 axis = cloud.axis, side(-cloud.axis.y, cloud.axis.x);
+      const vec2 horizontal = std::cos(e) * (std::cos(beta) * axis + std::sin(beta) * side);
+      d = vec4(horizontal, std::sin(e), 0.0f);
+    }
+    const float limit = k % 2 == 0 ? r(15000.0f, 40000.0f) : r(5000.0f, 40000.0f);
+    cases.push_back({arguments(PROBE_CONVECTIVE_BOX, vec4(0, limit, 0, 0), o, d), box_end});
+  }
+  // The convective shadow and light march: points of the ground (0 to 800 m) whose sun ray
+  // crosses the box, and points in it. The sun ray's samples then move by sun_end with the ends
+  // of the span, each sample by sigma_error with its own rounding: over paths below 20 km
+  // (CONVECTIVE_LIGHT_REACH; the shadow's span lies in the box) the depth moves by
+  // (sigma_error + sigma_slope sun_end) x 20 km, the steps by sun_end in all, times sigma_max, at
+  // the two ends; the sums of 12 terms below 200 round by kArithmetic at that scale (x 64). Not
+  // covered: a sample of the light march within the ends' error of the box's face, where the
+  // box test flips: points whose samples lie closer than 10 m are drawn again.
+  auto depth_error = [&](float length) {
+    return (sigma_error + sigma_slope * sun_end) * length + 2 * sigma_max * sun_end + 64 * kArithmetic;
+  };
+  for (int k = 0; k < 12; ++k) {
+    vec4 p;
+    bool clear = true;
+    do {
+      if (k % 2 == 0) {
+        const vec4 q = convective_point(vec3(r(0.0f, 1.0f), r(0.0f, 1.0f), 0.0f));
+        const float away = r(1200.0f, 8000.0f);
+        p = vec4(q.x + 0.7071f * away, q.y + 0.7071f * away, 0.0f, 0.0f);
+        // The ground at 0 to 800 m below p.
+        const double altitude = r(0.0f, 800.0f);
+        const double radius = double(mc.earth_radius) + altitude;
+        p.z = float(std::sqrt(radius * radius - double(p.x) * p.x - double(p.y) * p.y) -
+                    (double(mc.earth_radius) + double(mc.camera_altitude)));
+      } else {
+        p = convective_point(vec3(r(0.05f, 0.95f), r(0.05f, 0.95f), r(0.05f, 0.95f)));
+      }
+      const vec2 span = convective_span(vec3(p), mc.sun, earth_centre, 20000.0f, mc);
+      clear = true;
+      for (int i = 0; i < mc.light_steps; ++i) {
+        const float s = light_sample(i, mc.light_steps, span.y).x;
+        if (std::abs(s - span.x) < 10.0f) clear = false;
+      }
+    } while (!clear);
+    cases.push_back({arguments(PROBE_CONVECTIVE_SHADOW, vec4(0), p), depth_error(20000.0f)});
+  }
+  // Marches with the convective cloud. The convective samples' source per unit of extinction is
+  // 0.99 (sunlight F(tau, nu) + ambient(h)) (march_interval), at most S = S_sun + S_ambient with
+  // S_sun = 0.99 max(solar_irradiance) F(0, nu) (the powder term is off, transmittance_to_space
+  // <= 1) and S_ambient = 0.99 x 0.5 max(ambient / pi + ground). The radiance sum_i w_i S_i, with
+  // weights w_i = T_i (1 - e^-x_i), x_i = sigma_i ds_i, moves with the x_i by sum_i G_i dx_i,
+  // G_i = T_i+1 S_i - sum_k>i w_k S_k, both terms in [0, T_i+1 S]: by at most S dtau, dtau = sum
+  // |dx_i|; the transmittance by at most dtau. dtau: each sample's sigma_error, plus sigma_slope
+  // times the moves of the interval's ends (end_error each) along the path (below the box's
+  // diagonal, E sqrt 3), plus sigma_max times the change of the path's length (2 end_error).
+  // The sources move by S_sun dtau_light (|F'| <= F), dtau_light = depth_error over the diagonal
+  // (the light march from a point in the box), by S_sun kTransmittance (the interval's sunlight)
+  // and by 0.99 x 0.5 x 0.6 / pi x ambient dh through the height fraction; the exps and sums add
+  // kTranscendental.
+  const float diagonal = box_edge * std::sqrt(3.0f);
+  const vec3 irradiance = solar_irradiance();
+  const float ambient = std::max({mc.ambient.x, mc.ambient.y, mc.ambient.z});
+  const float s_ambient =
+      0.99f * 0.5f * (ambient / PI_F + std::max({mc.ground_radiance.x, mc.ground_radiance.y, mc.ground_radiance.z}));
+  auto convective_march = [&](vec3 d, float path, float end_error) {
+    const float s_sun =
+        0.99f * std::max({irradiance.x, irradiance.y, irradiance.z}) * sun_scattering(0.0f, dot(d, mc.sun));
+    const float dtau = (sigma_error + sigma_slope * end_error) * path + 2 * sigma_max * end_error;
+    const float light =
+        s_sun * (depth_error(diagonal) + kTransmittance) + 0.99f * 0.5f * 0.6f / PI_F * ambient * h_error;
+    return std::max((s_sun + s_ambient) * dtau, dtau) + light + kTranscendental;
+  };
+  // march_interval with the convective cloud over stretches of rays from the camera given
+  // exactly (x[3]), 20 m inside the box's interval so that no sample lies within the position
+  // error of a face: alone (layer -1) along rays rising 0.2 to 0.33 rad, and with the alto (layer
+  // 1) over its interval's part in the box along rays rising 0.2 to 0.26 rad. There the layer's
+  // samples move as in the layers' marches (`march`, relative) and so do the convective ones: at
+  // the alto's altitudes (3500 m and up, the volume's z texel 4 (2500 / E) - 0.5 >= 7 / 6) the
+  // density is at least 0.05 x 3 x 7 / 6 = 0.175, so sigma_error moves a convective sample's
+  // extinction by at most density_error / 0.175 of itself (the mixed height fraction and
+  // scattering ratio with it). Jitters 0.25 to 0.75.
+  const float convective_relative = density_error / (0.05f * 3 * (4 * 2500.0f / box_edge - 0.5f));
+  for (int k = 0; k < 12; ++k) {
+    const bool alone = k % 2 == 0;
+    vec4 d;
+    vec2 stretch;
+    for (int tries = 0;; ++tries) {
+      REQUIRE(tries < 1000);
+      d = direction(alone ? r(0.2f, 0.33f) : r(0.2f, 0.26f), r(-0.2f, 0.2f));
+      stretch = convective_span(vec3(0.0f), vec3(d), earth_centre, 150000.0f, mc);
+      if (!alone) {
+        const RayIntervals layers = layer_intervals(vec3(d), earth_centre, 150000.0f, mc);
+        for (int i = 0; i < layers.count; ++i)
+          if (layers.layer[i] == 1)
+            stretch = vec2(std::max(stretch.x, layers.bounds[i].x), std::min(stretch.y, layers.bounds[i].y));
+      }
+      if (stretch.x + 100.0f < stretch.y) break;
+    }
+    const mat4 x = arguments(PROBE_MARCH_CONVECTIVE_INTERVAL, vec4(alone ? -1.0f : 1.0f, 0, r(0.25f, 0.75f), 0),
+                             vec4(0), d, vec4(stretch.x + 20.0f, stretch.y - 20.0f, 0, 0));
+    Case c = alone ? Case{x, 0.0f} : relative(x, march + convective_relative);
+    c.tolerance += convective_march(vec3(d), diagonal, 0.0f);
+    cases.push_back(c);
+  }
+  // march_clouds with the layers, thinned to a twentieth of their extinction (x[3].x), and the
+  // convective cloud, along rays rising 0.27 to 0.33 rad whose convective span follows every layer
+  // interval and whose box they enter and leave through its vertical sides (both checked), so that
+  // the span's ends err by plane_end alone: the layers as in their marches (`march`, relative),
+  // the convective cloud as above. On the CPU, the cloud takes at least 1 % of the light that
+  // the layers leave (the march with the limit just before the span).
+  for (int k = 0; k < 6; ++k) {
+    vec4 d;
+    vec2 span;
+    for (int tries = 0;; ++tries) {
+      REQUIRE(tries < 1000);
+      d = direction(r(0.27f, 0.33f), r(-0.2f, 0.2f));
+      span = convective_span(vec3(0.0f), vec3(d), earth_centre, 150000.0f, mc);
+      if (span.x + 100.0f >= span.y) continue;
+      const RayIntervals layers = layer_intervals(vec3(d), earth_centre, 150000.0f, mc);
+      bool after_layers = true;
+      for (int i = 0; i < layers.count; ++i) after_layers = after_layers && layers.bounds[i].y < span.x;
+      const float z0 = convective_coordinates(span.x * vec3(d), earth_centre, 0, mc).z;
+      const float z1 = convective_coordinates(span.y * vec3(d), earth_centre, 0, mc).z;
+      if (after_layers && z0 > 0.01f && z0 < 0.99f && z1 > 0.01f && z1 < 0.99f) break;
+    }
+    const vec4 thinned(0.05f, 0, 0, 0);
+    const float jitter = r(0.25f, 0.75f);
+    const mat4 x = arguments(PROBE_MARCH_WITH_CONVECTIVE, vec4(0, 150000.0f, jitter, 0), vec4(0), d, thinned);
+    Case c = relative(x, march);
+    c.tolerance += convective_march(vec3(d), diagonal, plane_end);
+    cases.push_back(c);
+    const vec4 layers_only =
+        cpu(arguments(PROBE_MARCH_WITH_CONVECTIVE, vec4(0, span.x - 1.0f, jitter, 0), vec4(0), d, thinned));
+    CHECK(cpu(x).w < 0.99f * layers_only.w);
   }
   compare("cloud_march", cpu, cases);
   glDeleteTextures(1, &convective_texture);

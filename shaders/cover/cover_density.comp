@@ -11,6 +11,14 @@ layout(rgba32f, binding = 0) uniform readonly imageCube warp_field;
 layout(r32f, binding = 1) uniform writeonly imageCube density_field;
 layout(rgba32f, binding = 2) uniform readonly imageCube curl_field;
 layout(binding = 3) uniform sampler2D surface_bias;  // equirect, row 0 north, longitude -180 at s = 0
+// MOVING_LAYERS 1 (--flow moving): two cloud layers of their own noise, warp_field the older's
+// points and young_warp_field the younger's, blended with the younger's share u_young_share.
+#ifndef MOVING_LAYERS
+#define MOVING_LAYERS 0
+#endif
+#if MOVING_LAYERS
+layout(rgba32f, binding = 4) uniform readonly imageCube young_warp_field;
+#endif
 #include "../lib/cover_density.glsl"
 #include "../lib/cube_faces.glsl"
 #include "../lib/equirect_mapping.glsl"
@@ -24,6 +32,10 @@ uniform FbmParams u_cover;
 uniform vec3 u_noise_offset;  // reduced modulo the lattice period by the host
 uniform float u_cyclone_cloudiness;
 uniform float u_surface_weight;
+#if MOVING_LAYERS
+uniform FbmParams u_young_cover;  // the younger layer's noise (its own seed)
+uniform float u_young_share;
+#endif
 
 void main() {
   int size = imageSize(density_field).x;
@@ -39,8 +51,13 @@ void main() {
     if (u_surface_weight > 0.0f) {
       surface = texture(surface_bias, equirect_uv(texel_direction(face, i, j, size))).x;
     }
-    float density = shaped_density(cover_density_shifted(warped, u_cover, u_noise_offset),
-                                   imageLoad(curl_field, texel).w, u_cyclone_cloudiness, surface, u_surface_weight);
+    float noise = cover_density_shifted(warped, u_cover, u_noise_offset);
+#if MOVING_LAYERS
+    noise = layer_blend(noise, cover_density_shifted(imageLoad(young_warp_field, texel).xyz, u_young_cover,
+                                                     u_noise_offset), u_young_share);
+#endif
+    float density =
+        shaped_density(noise, imageLoad(curl_field, texel).w, u_cyclone_cloudiness, surface, u_surface_weight);
     imageStore(density_field, texel, vec4(density, 0.0f, 0.0f, 0.0f));
     low = min(low, sortable_bits(density));
     high = max(high, sortable_bits(density));

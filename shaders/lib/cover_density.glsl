@@ -14,6 +14,14 @@ float cover_density_shifted(vec3 warped, IN(FbmParams) params, vec3 offset) {
   return inverted_worley_fbm(normalize(warped) + offset, params).w;
 }
 
+// The two cloud layers of the moving flow (--flow moving), each its noise carried along the flow
+// for its age, weighted by the younger's share w (docs/algorithm.md, "The moving flow"): the
+// older fades out as the younger fades in. A linear blend: the calibration that follows ranks the
+// densities, so any normalisation by the weights would change nothing.
+float layer_blend(float older, float younger, float young_share) {
+  return (1.0f - young_share) * older + young_share * younger;
+}
+
 // The density shaped by the circulation and the surface: d (1 + k c) (1 + k_s b). c is the
 // flow's cyclonic depth at the texel (curl_flow_shifted's w, 0 .. about 0.6) and k >= 0 the
 // cyclone_cloudiness; b in [-1, 1] the land/ocean bias there (surface_bias.hpp: deserts < 0,

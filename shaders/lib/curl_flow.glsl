@@ -59,9 +59,9 @@ float zonal_profile_derivative(float z, float cos_latitude, int cells, float dm_
 // `offset` shifts the noise of both potentials (sphere radii): they are sampled at n + offset.
 // The host keeps it below one lattice period (docs/numerics.md, "Far offsets"), so that float
 // keeps its precision however far the user's offset is.
-vec4 curl_flow_shifted(vec3 n, IN(CurlParams) params, vec3 offset) {
-  vec4 w1 = smooth_worley_fbm(n + offset, params.potential_north, params.smoothing);
-  vec4 w2 = smooth_worley_fbm(n + offset, params.potential_south, params.smoothing);
+// The flow of the potentials w1 and w2 (each vec4(gradient, value) at n): curl_flow_shifted's
+// formula, shared with the flow that moves (moving_flow.glsl), whose potentials change in time.
+vec4 curl_flow_of_potentials(vec3 n, vec4 w1, vec4 w2, IN(CurlParams) params) {
   float z = clamp(n.z, -1.0f, 1.0f);
   float latitude = portable_asin(z);
   float a = params.mix_frequency;
@@ -80,6 +80,11 @@ vec4 curl_flow_shifted(vec3 n, IN(CurlParams) params, vec3 offset) {
                       north;
   float cyclonic = envelope.x * (0.5f * (1.0f + m) * w1.w + 0.5f * (1.0f - m) * w2.w);
   return vec4(params.strength * cross(n, gradient), cyclonic);
+}
+
+vec4 curl_flow_shifted(vec3 n, IN(CurlParams) params, vec3 offset) {
+  return curl_flow_of_potentials(n, smooth_worley_fbm(n + offset, params.potential_north, params.smoothing),
+                                 smooth_worley_fbm(n + offset, params.potential_south, params.smoothing), params);
 }
 
 vec3 curl_velocity_shifted(vec3 n, IN(CurlParams) params, vec3 offset) {

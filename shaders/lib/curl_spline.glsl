@@ -52,20 +52,22 @@ vec4 prefilter_cubic_bspline(vec4 previous, vec4 centre, vec4 next) {
   return (8.0f * centre - previous - next) * (1.0f / 6.0f);
 }
 
-// One row of the 4 x 4 coefficients, weighted along x: coefficients (i .. i + 3, j) of `face`.
-vec4 curl_spline_row(int face, int i, int j, vec4 wx, SplineImage spline) {
-  return wx.x * imageLoad(spline, ivec3(i, j, face)) + wx.y * imageLoad(spline, ivec3(i + 1, j,
-      face)) + wx.z * imageLoad(spline, ivec3(i + 2, j, face)) +
-         wx.w * imageLoad(spline, ivec3(i + 3, j, face));
+// One row of the 4 x 4 coefficients, weighted along x: coefficients (i .. i + 3, j) of layer
+// `layer` (the face, plus 6 per time node of the moving flow).
+vec4 curl_spline_row(int layer, int i, int j, vec4 wx, SplineImage spline) {
+  return wx.x * imageLoad(spline, ivec3(i, j, layer)) + wx.y * imageLoad(spline, ivec3(i + 1, j, layer)) +
+         wx.z * imageLoad(spline, ivec3(i + 2, j, layer)) + wx.w * imageLoad(spline, ivec3(i + 3, j, layer));
 }
 
 // The spline of the curl grid at the unit direction w (xyz; w: the cyclonic depth, which the
 // grid carries along, curl_flow.glsl): a sum of 16 coefficients of w's face,
 // written without a loop (llvmpipe counts every loop iteration against a per-invocation limit;
 // docs/numerics.md, "llvmpipe's loop limit").
-vec4 sample_curl_spline(vec3 w, SplineImage spline) {
+// The grid of time node `node` is layers 6 node .. 6 node + 5 (the moving flow's; 0 otherwise).
+vec4 sample_curl_spline_node(vec3 w, SplineImage spline, int node) {
   int cells = imageSize(spline).x - 2 * SPLINE_MARGIN;
   int face = cube_face_of(w);
+  int layer = face + 6 * node;
   vec2 st = 0.5f * cube_face_coords(face, w) + 0.5f;
   float x = st.x * float(cells) - 0.5f;
   float y = st.y * float(cells) - 0.5f;
@@ -76,11 +78,15 @@ vec4 sample_curl_spline(vec3 w, SplineImage spline) {
   vec4 wy = cubic_bspline_weights(y - y0);
   int i = int(x0) - 1 + SPLINE_MARGIN;
   int j = int(y0) - 1 + SPLINE_MARGIN;
-  vec4 sum = wy.x * curl_spline_row(face, i, j, wx, spline) +
-             wy.y * curl_spline_row(face, i, j + 1, wx, spline) +
-             wy.z * curl_spline_row(face, i, j + 2, wx, spline) +
-             wy.w * curl_spline_row(face, i, j + 3, wx, spline);
+  vec4 sum = wy.x * curl_spline_row(layer, i, j, wx, spline) +
+             wy.y * curl_spline_row(layer, i, j + 1, wx, spline) +
+             wy.z * curl_spline_row(layer, i, j + 2, wx, spline) +
+             wy.w * curl_spline_row(layer, i, j + 3, wx, spline);
   return sum;
+}
+
+vec4 sample_curl_spline(vec3 w, SplineImage spline) {
+  return sample_curl_spline_node(w, spline, 0);
 }
 
 // The warp's velocity: the spline's value projected onto the tangent plane at w. The spline
@@ -89,6 +95,24 @@ vec4 sample_curl_spline(vec3 w, SplineImage spline) {
 // increase the error (it is an orthogonal projection and the exact value is in its range).
 vec3 spline_velocity(vec3 w, SplineImage spline) {
   vec3 v = vec3(sample_curl_spline(w, spline));
+  return v - dot(v, w) * w;
+}
+
+// The moving flow between time nodes (docs/algorithm.md, "The moving flow"): the splines of the
+// nodes floor(node) and floor(node) + 1 (clamped to the grid's nodes), mixed linearly in time
+// (the cyclonic depth in w too); spline_velocity_in_time projects it as spline_velocity. Linear
+// in time errs by (dt^2 / 8) |v_tt| for node spacing dt, within the spline's own error for the
+// spacings the host takes.
+vec4 sample_curl_spline_in_time(vec3 w, SplineImage spline, float node) {
+  int last = imageSize(spline).z / 6 - 1;
+  float first = clamp(floor(node), 0.0f, float(max(last - 1, 0)));
+  float f = clamp(node - first, 0.0f, 1.0f);
+  int k = int(first);
+  return (1.0f - f) * sample_curl_spline_node(w, spline, k) + f * sample_curl_spline_node(w, spline, min(k + 1, last));
+}
+
+vec3 spline_velocity_in_time(vec3 w, SplineImage spline, float node) {
+  vec3 v = vec3(sample_curl_spline_in_time(w, spline, node));
   return v - dot(v, w) * w;
 }
 

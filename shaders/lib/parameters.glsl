@@ -24,4 +24,19 @@ struct CurlParams {
   float storm_track_shift;    // s: the envelope is A(z - s), its tracks moved north with --month (0: annual mean)
 };
 
+// How the flow moves (moving_flow.glsl). Times are flow units counted from `origin` L, so that
+// float keeps its precision at any date (the host subtracts the origin in double).
+struct FlowMotion {
+  float generation_time;  // L: the vortices of generation g live while |t - g L| < L
+  int origin;             // the generation whose centre is the time 0 of the time arguments
+  float drift;            // 1: the vortices drift with the zonal wind; 0: they stay in place
+};
+
+// The moving flow evaluated where a stepping rule asks (moving_flow.glsl's procedural source).
+struct MovingCurl {
+  CurlParams curl;
+  vec3 offset;  // of the potentials' noise, as curl_flow_shifted's
+  FlowMotion motion;
+};
+
 #endif

@@ -46,4 +46,10 @@ std::string format_utc_minutes(double unix_seconds) {
   return date::format("%FT%H:%MZ", floor<minutes>(point));
 }
 
+std::string format_utc_seconds(double unix_seconds) {
+  using namespace std::chrono;
+  const date::sys_time<seconds> point{seconds{static_cast<long long>(std::floor(unix_seconds))}};
+  return date::format("%FT%H:%M:%SZ", point);
+}
+
 }  // namespace nephele::core

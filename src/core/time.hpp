@@ -12,5 +12,7 @@ double parse_utc_time(const std::string& text);
 
 // YYYY-MM-DDTHH:MMZ of a time (seconds are dropped, not rounded).
 std::string format_utc_minutes(double unix_seconds);
+// YYYY-MM-DDTHH:MM:SSZ of a time (fractions of a second are dropped); parse_utc_time reads it.
+std::string format_utc_seconds(double unix_seconds);
 
 }  // namespace nephele::core

@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <memory>
 
+#include "cover/flow_kind.hpp"
 #include "cover/integrators.hpp"
 #include "cover/latitude_profile.hpp"
 #include "cover/surface_bias.hpp"
@@ -56,6 +57,10 @@ struct CoverParameters {
   // periodic and are reduced modulo the period in double (noise_offset below), so that float
   // keeps its precision however far away the offset is.
   double noise_offset = params::cover::noise_offset.default_number;
+  // The moving flow (cover/moving_flow.hpp): steady, or vortices and clouds that evolve in time.
+  Flow flow = *parse_flow(std::string(params::cover::flow.default_text));
+  std::string time{params::cover::time.default_text};                      // ISO 8601 UTC: the moment of the cover
+  float vortex_lifetime = params::cover::vortex_lifetime.default_float();  // hours
 };
 
 // The numeric fields of a cover with their declarations in the parameter table, in the order
@@ -91,6 +96,7 @@ void visit_numeric_parameters(P& p, Visit&& visit) {
   visit(c::density_lacunarity, p.density.lacunarity);
   visit(c::density_gain, p.density.gain);
   visit(c::surface_weight, p.surface_weight);
+  visit(c::vortex_lifetime, p.vortex_lifetime);
 }
 
 // Independent seeds per noise layer, derived from the user's seed.

@@ -1,5 +1,6 @@
 #include "cover/global_cover.hpp"
 #include "cover/equirect.hpp"
+#include "cover/moving_flow.hpp"
 
 #include <algorithm>
 
@@ -22,10 +23,16 @@ double cover_gpu_bytes(int size) {
   return cubes + equirect + reduction_gpu_bytes(size);
 }
 
+namespace {
+bool moving(const CoverParameters& p) { return p.flow == Flow::moving; }
+}  // namespace
+
 GlobalCover::GlobalCover(const CoverParameters& parameters)
     : parameters_(parameters),
-      curl_program_("cover/curl.comp", {{"CURL_FROM_SPLINE", parameters.curl_mode == CurlMode::spline ? "1" : "0"}}),
+      curl_program_("cover/curl.comp", {{"CURL_FROM_SPLINE", parameters.curl_mode == CurlMode::spline ? "1" : "0"},
+                                        {"CURL_MOVING", moving(parameters) ? "1" : "0"}}),
       warp_program_("cover/warp.comp", cover::warp_defines(parameters.integrator, parameters.curl_mode)),
+      density_program_("cover/cover_density.comp", {{"MOVING_LAYERS", moving(parameters) ? "1" : "0"}}),
       identity_field_(gpu::Texture::cube(parameters.size, GL_RGBA32F)),
       curl_field_(gpu::Texture::cube(parameters.size, GL_RGBA32F)),
       warp_field_(gpu::Texture::cube(parameters.size, GL_RGBA32F)),
@@ -41,11 +48,107 @@ void GlobalCover::timed(const std::string& pass, Work&& work) {
 
 void GlobalCover::run() {
   run_identity();
-  run_spline();
-  run_curl();
-  run_warp(true);
+  if (moving(parameters_)) {
+    if (parameters_.curl_mode == CurlMode::spline) run_moving_splines();
+    run_curl();
+    run_moving_warp();
+  } else {
+    run_spline();
+    run_curl();
+    run_warp(true);
+  }
   run_density();
   run_coverage();
+}
+
+void GlobalCover::set_time(const std::string& iso_time) {
+  parameters_.time = iso_time;
+  splines_current_ = false;  // run_moving_splines keeps the grids of nodes the new window shares
+}
+
+void GlobalCover::run_moving_splines() {
+  const FrameClock clock = frame_clock(parameters_, hours_since_epoch(parameters_.time));
+  timed("spline", [&] {
+    const int cells = parameters_.curl_size;
+    const int margin = glsl::SPLINE_MARGIN;
+    const int extent = cells + 2 * margin;
+    if (!moving_spline_programs_[0]) {
+      for (int prefilter = 0; prefilter < 2; ++prefilter)
+        moving_spline_programs_[prefilter] = std::make_unique<gpu::ComputeProgram>(
+            "cover/curl_spline.comp",
+            std::vector<std::pair<std::string, std::string>>{{"CURL_SPLINE_PREFILTER", prefilter ? "1" : "0"},
+                                                             {"CURL_SPLINE_MOVING", "1"}});
+    }
+    // The grids of the window's nodes; those the last frame made are copied, not made again
+    // (a node's grid depends on its index only: node_time).
+    gpu::Texture grids = gpu::Texture::layered(extent, extent, 6 * clock.nodes, GL_RGBA32F);
+    // The samples reach one node further than the coefficients: the prefilter's neighbours.
+    const int samples_extent = cells + 2 * (margin + 1);
+    gpu::Texture samples;
+    const gpu::ComputeProgram& sampler = *moving_spline_programs_[0];
+    const gpu::ComputeProgram& prefilter = *moving_spline_programs_[1];
+    for (int k = 0; k < clock.nodes; ++k) {
+      const std::int64_t node = clock.first_node + k;
+      if (flow_splines_.id() && node >= splines_first_node_ && node < splines_first_node_ + splines_nodes_) {
+        glCopyImageSubData(flow_splines_.id(), GL_TEXTURE_2D_ARRAY, 0, 0, 0,
+                           static_cast<GLint>(6 * (node - splines_first_node_)), grids.id(), GL_TEXTURE_2D_ARRAY, 0, 0,
+                           0, 6 * k, extent, extent, 6);
+        continue;
+      }
+      if (!samples.id()) samples = gpu::Texture::layered(samples_extent, samples_extent, 6, GL_RGBA32F);
+      const NodeTime at = node_time(parameters_, node);
+      glsl::set_uniform(sampler, "u_curl", curl_params(parameters_));
+      sampler.set("u_noise_offset", potential_offset(parameters_));
+      glsl::set_uniform(sampler, "u_motion", at.motion);
+      sampler.set("u_node_time", at.time);
+      sampler.set("u_cells", cells);
+      samples.bind_image(shader_bindings::cover_curl_spline::samples, GL_WRITE_ONLY);
+      sampler.dispatch_covering(samples_extent, samples_extent, 6);
+      gpu::image_barrier();
+      samples.bind_image(shader_bindings::cover_curl_spline::samples, GL_READ_ONLY);
+      grids.bind_image(shader_bindings::cover_curl_spline::coefficients, GL_WRITE_ONLY);
+      prefilter.set("u_first_layer", 6 * k);
+      prefilter.dispatch_covering(extent, extent, 6);
+      gpu::image_barrier();
+    }
+    flow_splines_ = std::move(grids);
+    splines_first_node_ = clock.first_node;
+    splines_nodes_ = clock.nodes;
+    splines_current_ = true;
+  });
+}
+
+void GlobalCover::run_moving_warp() {
+  const FrameClock clock = frame_clock(parameters_, hours_since_epoch(parameters_.time));
+  const bool spline = parameters_.curl_mode == CurlMode::spline;
+  if (spline && !splines_current_) run_moving_splines();
+  timed("warp", [&] {
+    if (!moving_warp_program_)
+      moving_warp_program_ = std::make_unique<gpu::ComputeProgram>(
+          "cover/moving_warp.comp",
+          std::vector<std::pair<std::string, std::string>>{{"MOVING_SPLINE", spline ? "1" : "0"}});
+    if (!young_warp_field_.id()) young_warp_field_ = gpu::Texture::cube(parameters_.size, GL_RGBA32F);
+    const gpu::ComputeProgram& program = *moving_warp_program_;
+    namespace warp = shader_bindings::cover_moving_warp;
+    if (spline) {
+      program.set("u_first_node_time", clock.first_node_time);
+      program.set("u_node_spacing", clock.node_spacing);
+      flow_splines_.bind_image(warp::flow_splines, GL_READ_ONLY);
+    } else {
+      glsl::set_uniform(program, "u_curl", curl_params(parameters_));
+      program.set("u_noise_offset", potential_offset(parameters_));
+      glsl::set_uniform(program, "u_motion", clock.motion);
+    }
+    program.set("u_time", clock.time);
+    program.set("u_old_age", clock.old_age);
+    program.set("u_young_age", clock.young_age);
+    program.set("u_steps", clock.steps);
+    identity_field_.bind_image(warp::identity_field, GL_READ_ONLY);
+    warp_field_.bind_image(warp::warp_field, GL_WRITE_ONLY);
+    young_warp_field_.bind_image(warp::young_warp_field, GL_WRITE_ONLY);
+    program.dispatch_covering(parameters_.size, parameters_.size, 6);
+    gpu::image_barrier();
+  });
 }
 
 void GlobalCover::run_identity() {
@@ -85,10 +188,23 @@ void GlobalCover::run_spline() {
 }
 
 void GlobalCover::run_curl() {
-  const bool spline = parameters_.curl_mode == CurlMode::spline;
+  const bool spline = !moving(parameters_) && parameters_.curl_mode == CurlMode::spline;
   if (spline && !spline_coefficients_.id()) run_spline();
   timed("curl", [&] {
-    if (spline) {
+    if (moving(parameters_)) {
+      const FrameClock clock = frame_clock(parameters_, hours_since_epoch(parameters_.time));
+      curl_program_.set("u_time", clock.time);
+      if (parameters_.curl_mode == CurlMode::spline) {
+        if (!splines_current_) run_moving_splines();
+        curl_program_.set("u_first_node_time", clock.first_node_time);
+        curl_program_.set("u_node_spacing", clock.node_spacing);
+        flow_splines_.bind_image(shader_bindings::cover_curl::curl_spline, GL_READ_ONLY);
+      } else {
+        glsl::set_uniform(curl_program_, "u_curl", curl_params(parameters_));
+        curl_program_.set("u_noise_offset", potential_offset(parameters_));
+        glsl::set_uniform(curl_program_, "u_motion", clock.motion);
+      }
+    } else if (spline) {
       spline_coefficients_.bind_image(shader_bindings::cover_curl::curl_spline, GL_READ_ONLY);
     } else {
       glsl::set_uniform(curl_program_, "u_curl", curl_params(parameters_));
@@ -230,6 +346,13 @@ void GlobalCover::run_density() {
     density_program_.set("u_surface_weight", parameters_.surface ? parameters_.surface_weight : 0.0f);
     if (!surface_bias_.id()) upload_surface_bias();
     namespace density = shader_bindings::cover_cover_density;
+    if (moving(parameters_)) {
+      const FrameClock clock = frame_clock(parameters_, hours_since_epoch(parameters_.time));
+      glsl::set_uniform(density_program_, "u_cover", layer_density_params(parameters_, clock.young_layer - 1));
+      glsl::set_uniform(density_program_, "u_young_cover", layer_density_params(parameters_, clock.young_layer));
+      density_program_.set("u_young_share", clock.young_share);
+      young_warp_field_.bind_image(density::young_warp_field, GL_READ_ONLY);
+    }
     warp_field_.bind_image(density::warp_field, GL_READ_ONLY);
     density_field_.bind_image(density::density_field, GL_WRITE_ONLY);
     curl_field_.bind_image(density::curl_field, GL_READ_ONLY);

@@ -11,6 +11,7 @@
 #include "cover/coverage_threshold.hpp"
 #include "cover/gpu_reductions.hpp"
 #include "cover/latitude_profile.hpp"
+#include "cover/moving_flow.hpp"
 #include "gpu/compute_program.hpp"
 #include "gpu/textures.hpp"
 #include "cover/stability.hpp"
@@ -43,6 +44,14 @@ class GlobalCover {
   // holds that same spline velocity; without it (the default, and the report's timings) the
   // warp evaluates every velocity itself. The results are the same bits.
   void run_warp(bool after_curl = false);
+  // --flow moving: the back-trajectories of both cloud layers at the frame's time (pass "warp";
+  // warp_field() the older layer's points, young_warp_field() the younger's).
+  void run_moving_warp();
+  // Curl mode spline with --flow moving: the flow's spline grids at the frame's time nodes
+  // (pass "spline"; FrameClock's nodes), which the curl and the moving warp read.
+  void run_moving_splines();
+  // Sets the cover's time (--time; --flow moving), for the frames of a sequence.
+  void set_time(const std::string& iso_time);
   void run_density();
   CoverageCalibration run_coverage();  // calibrates and remaps on the GPU (scalars read back)
   // The warp pass's computation for other start points: `starts` and `warped` are RGBA32F cube
@@ -60,6 +69,7 @@ class GlobalCover {
   // RGBA32F nodes (empty before run_spline and in other curl modes).
   const gpu::Texture& curl_spline() const { return spline_coefficients_; }
   const gpu::Texture& warp_field() const { return warp_field_; }
+  const gpu::Texture& young_warp_field() const { return young_warp_field_; }  // --flow moving only
   const gpu::Texture& density_field() const { return density_field_; }
   const gpu::Texture& cover_field() const { return cover_field_; }
   const CoverageCalibration& calibration() const { return calibration_; }
@@ -84,10 +94,17 @@ class GlobalCover {
   gpu::ComputeProgram identity_program_{"cover/identity.comp"};
   gpu::ComputeProgram curl_program_;  // the procedural curl, or the spline's velocity
   std::unique_ptr<gpu::ComputeProgram> spline_samples_program_, spline_prefilter_program_;
-  gpu::ComputeProgram warp_program_;  // the integrator's and curl mode's variant
-  gpu::ComputeProgram density_program_{"cover/cover_density.comp"};
+  gpu::ComputeProgram warp_program_;     // the integrator's and curl mode's variant
+  gpu::ComputeProgram density_program_;  // with MOVING_LAYERS for --flow moving
   gpu::ComputeProgram remap_program_{"cover/cover_remap.comp"};
+  std::unique_ptr<gpu::ComputeProgram> moving_warp_program_;        // --flow moving
+  std::unique_ptr<gpu::ComputeProgram> moving_spline_programs_[2];  // its samples, their prefilter
+  gpu::Texture flow_splines_;            // --flow moving, curl mode spline: 6 layers per time node
+  std::int64_t splines_first_node_ = 0;  // the absolute index of flow_splines_'s first node
+  int splines_nodes_ = 0;
+  bool splines_current_ = false;  // flow_splines_ holds the window of the cover's time
   gpu::Texture identity_field_, curl_field_, warp_field_, density_field_, cover_field_;
+  gpu::Texture young_warp_field_;  // --flow moving: the younger cloud layer's warp
   gpu::Texture spline_coefficients_;
   gpu::Texture surface_bias_;  // 720 x 360 R32F with --surface, else 1 x 1 zero
   CoverageCalibration calibration_;

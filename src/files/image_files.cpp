@@ -58,6 +58,37 @@ std::vector<unsigned char> encode_image(const ImageData& image, const ImageEncod
   return bytes;
 }
 
+std::vector<unsigned char> encode_animation(const std::vector<ImageData>& frames, int frames_per_second,
+                                            const std::string& what) {
+  if (frames.empty()) throw std::invalid_argument(what + ": an animation needs at least one frame");
+  auto out = OIIO::ImageOutput::create("gif");
+  if (!out || !out->supports("ioproxy") || !out->supports("appendsubimage"))
+    throw std::runtime_error("no animated GIF writer for " + what + ": " + OIIO::geterror());
+  const ImageData& first = frames.front();
+  OIIO::ImageSpec spec(first.width, first.height, first.channels, OIIO::TypeDesc::UINT8);
+  const int rate[2] = {frames_per_second, 1};
+  spec.attribute("FramesPerSecond", OIIO::TypeRational, rate);
+  spec.attribute("oiio:LoopCount", 0);  // forever
+  std::vector<OIIO::ImageSpec> specs(frames.size(), spec);
+  std::vector<unsigned char> bytes;
+  OIIO::Filesystem::IOVecOutput memory(bytes);
+  const auto fail = [&](const char* step) {
+    return std::runtime_error("could not " + std::string(step) + " " + what + ": " + out->geterror());
+  };
+  if (!out->set_ioproxy(&memory)) throw fail("encode");
+  if (!out->open(what, static_cast<int>(specs.size()), specs.data())) throw fail("open");
+  for (size_t k = 0; k < frames.size(); ++k) {
+    const ImageData& frame = frames[k];
+    if (frame.width != first.width || frame.height != first.height || frame.channels != first.channels)
+      throw std::invalid_argument(what + ": frame " + std::to_string(k) + " differs in size from the first");
+    if (k > 0 && !out->open(what, spec, OIIO::ImageOutput::AppendSubimage)) throw fail("append a frame to");
+    if (!out->write_image(OIIO::TypeDesc::FLOAT, frame.pixels.data())) throw fail("encode");
+  }
+  if (!out->close()) throw fail("close");
+  if (out->has_error()) throw fail("encode");
+  return bytes;
+}
+
 void write_image(const std::filesystem::path& path, const ImageData& image, const ImageEncoding& encoding) {
   const std::vector<unsigned char> bytes = encode_image(image, encoding, path.string());
   write_file(path, bytes.data(), bytes.size());

@@ -61,6 +61,11 @@ bool is_exr_compression(const std::string& name);
 // several threads at once (each call has its own writer).
 std::vector<unsigned char> encode_image(const ImageData& image, const ImageEncoding& encoding, const std::string& what);
 
+// An animated GIF of `frames` (one size, 1 or 3 channels in [0, 1]) shown at `frames_per_second`
+// and looping, in memory: the previews of frame sequences (generate --sequence).
+std::vector<unsigned char> encode_animation(const std::vector<ImageData>& frames, int frames_per_second,
+                                            const std::string& what);
+
 // The one image writer: encodes and writes `path` (replacing it in place; output sets write
 // through OutputSet::write instead).
 void write_image(const std::filesystem::path& path, const ImageData& image, const ImageEncoding& encoding);

@@ -91,6 +91,7 @@ json::Value cover_sidecar(const cover::GlobalCover& cover, const gpu::ContextInf
     if (!parameter.used_by(params::cover_sidecar)) return;
     if (!adaptive && (&parameter == &params::cover::tolerance || &parameter == &params::cover::max_substeps)) return;
     if (p.curl_mode != cover::CurlMode::spline && &parameter == &params::cover::curl_size) return;
+    if (p.flow == cover::Flow::steady && &parameter == &params::cover::vortex_lifetime) return;
     set_path(parameters, std::string(parameter.sidecar_path()), json_number(value));
     if (&parameter == &params::cover::coverage) parameters.set(std::string(params::cover::profile.key), p.profile.name);
     if (&parameter == &params::cover::surface_weight)
@@ -99,6 +100,8 @@ json::Value cover_sidecar(const cover::GlobalCover& cover, const gpu::ContextInf
       parameters.set("flow_time", static_cast<double>(p.iterations) * p.step);
       parameters.set(std::string(params::cover::integrator.key), cover::integrator_name(p.integrator));
       parameters.set(std::string(params::cover::curl_mode.key), cover::curl_mode_name(p.curl_mode));
+      parameters.set(std::string(params::cover::flow.key), cover::flow_name(p.flow));
+      if (p.flow == cover::Flow::moving) parameters.set(std::string(params::cover::time.key), p.time);
     }
   });
 

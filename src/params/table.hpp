@@ -107,6 +107,18 @@ inline constexpr Parameter noise_offset =
     real("noise_offset", 0.0, -1e9, 1e9, "sphere radii",
          "shift of every noise layer by (d, d, d); precision is kept by a periodic lattice",
          generate | report | cover_sidecar);
+inline constexpr Parameter flow =
+    text("flow", "steady", "steady|moving",
+         "steady: one flow, one warp (a still map); moving: vortices that are born, drift with the zonal wind and "
+         "die, and clouds carried along them: a cover for any --time (docs/algorithm.md, \"The moving flow\")",
+         generate | cover_sidecar);
+inline constexpr Parameter time = text(
+    "time", "2000-01-01T00:00Z", "YYYY-MM-DDTHH:MM[:SS]Z",
+    "moment of the cover (--flow moving), ISO 8601 UTC; the default is the flow's time 0", generate | cover_sidecar);
+inline constexpr Parameter vortex_lifetime =
+    real("vortex_lifetime", 96, 6, 2400, "hours",
+         "--flow moving: life of a generation of vortices, from birth through its peak to death (cyclones: 2-5 days)",
+         generate | cover_sidecar);
 }  // namespace cover
 
 namespace scene {
@@ -361,6 +373,13 @@ inline constexpr Parameter view_model_size =
 namespace run {
 inline constexpr Parameter cover_out =
     text("out", "cubemaps", "DIR", "output directory (created if missing)", generate);
+inline constexpr Parameter sequence =
+    integer("sequence", 0, 0, 100000, "frames",
+            "--flow moving: write this many frames from --time on, each a whole cover set in OUT/frame_NNNN/, with "
+            "OUT/sequence.json listing them and OUT/sequence.gif showing them (0: one cover in OUT)",
+            generate);
+inline constexpr Parameter interval =
+    real("interval", 3, 0.01, 8760, "hours", "--sequence: time between frames", generate);
 inline constexpr Parameter cover_files =
     text("files", "faces,equirect,png", "faces,equirect,png",
          "comma-separated images to write (cover.json always); what none asks for is not computed", generate);

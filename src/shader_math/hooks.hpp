@@ -32,9 +32,10 @@ inline vec4 imageLoad(IN(CubeSource) cube, ivec3 p) { return cube.fetch(p.z, p.x
 struct SplineSource {
   int cells = 0;
   const vec4* texels = nullptr;
-  vec4 fetch(int face, int i, int j) const;  // defined after curl_spline.glsl (SPLINE_MARGIN)
+  int layers = 6;                             // 6 per time node (the moving flow's grids)
+  vec4 fetch(int layer, int i, int j) const;  // defined after curl_spline.glsl (SPLINE_MARGIN)
 };
-// curl_spline.glsl's parameter type and its image functions (a 2D array: layer = face).
+// curl_spline.glsl's parameter type and its image functions (a 2D array: layer = face + 6 node).
 using SplineImage = const SplineSource&;
 ivec3 imageSize(IN(SplineSource) spline);  // defined after curl_spline.glsl (SPLINE_MARGIN)
 inline vec4 imageLoad(IN(SplineSource) spline, ivec3 p) { return spline.fetch(p.z, p.x, p.y); }

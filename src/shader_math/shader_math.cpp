@@ -17,6 +17,7 @@ namespace nephele::glsl {
 #include "lib/implicit_field.glsl"
 #include "lib/latitude_bands.glsl"
 #include "lib/model_march.glsl"
+#include "lib/moving_flow.glsl"
 #include "lib/noise_rows.glsl"
 #include "lib/noise_types.glsl"
 #include "lib/parameters.glsl"
@@ -34,12 +35,12 @@ namespace nephele::glsl {
 // The procedural curl as the warp's velocity source (the GPU's warp.comp defines its own, with
 // the noise offset); the cube map's and the spline's are library functions.
 vec3 warp_velocity(vec3 w, IN(CurlParams) curl) { return curl_velocity(w, curl); }
-vec4 SplineSource::fetch(int face, int i, int j) const {
+vec4 SplineSource::fetch(int layer, int i, int j) const {
   const int row = cells + 2 * SPLINE_MARGIN;
-  return texels[(static_cast<size_t>(face) * row + j) * row + i];
+  return texels[(static_cast<size_t>(layer) * row + j) * row + i];
 }
 ivec3 imageSize(IN(SplineSource) spline) {
   const int row = spline.cells + 2 * SPLINE_MARGIN;
-  return ivec3(row, row, 6);
+  return ivec3(row, row, spline.layers);
 }
 }  // namespace nephele::glsl

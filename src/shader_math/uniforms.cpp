@@ -32,6 +32,12 @@ void set_uniform(const gpu::ComputeProgram& program, const std::string& name, co
   program.set(name + ".zonal_cells", params.zonal_cells);
 }
 
+void set_uniform(const gpu::ComputeProgram& program, const std::string& name, const FlowMotion& motion) {
+  program.set(name + ".generation_time", motion.generation_time);
+  program.set(name + ".origin", motion.origin);
+  program.set(name + ".drift", motion.drift);
+}
+
 void set_uniform(const gpu::ComputeProgram& program, const std::string& name, const MarchParams& params) {
   for (int i = 0; i < MAX_LAYERS; ++i) {
     const LayerParams& l = params.layers[i];

@@ -19,6 +19,7 @@ enum class Members {
 void set_uniform(const gpu::ComputeProgram& program, const std::string& name, const FbmParams& params,
                  Members members = Members::all);
 void set_uniform(const gpu::ComputeProgram& program, const std::string& name, const CurlParams& params);
+void set_uniform(const gpu::ComputeProgram& program, const std::string& name, const FlowMotion& motion);
 // Every member, all MAX_LAYERS layers included (those past layer_count as given).
 void set_uniform(const gpu::ComputeProgram& program, const std::string& name, const MarchParams& params);
 

@@ -17,7 +17,7 @@ const int PROBE_CONVECTIVE_AT = 12;  // convective_at, convective_coordinates
 const int PROBE_CONVECTIVE_BOX = 13;  // convective_box, convective_span
 const int PROBE_CONVECTIVE_SHADOW = 14;  // convective_depth_to_sun, convective_shadow_depth
 const int PROBE_MARCH_WITH_CONVECTIVE = 15;  // march_clouds with the convective cloud
-const int PROBE_MARCH_CONVECTIVE_INTERVAL = 16;  // march_interval of the convective cloud
+const int PROBE_MARCH_CONVECTIVE_INTERVAL = 16;  // march_interval with the convective cloud
 const int PROBE_SHADOW_MAP_UV = 17;  // shadow_map_uv, higher_layers_depth
 const int PROBE_SHADOW_MAP_ORIGIN = 18;  // shadow_map_origin, shadow_map_xy
 const int PROBE_SHADOW_MAP_TEXEL = 19;  // shadow_map_texel, layers_shadow_depth
@@ -212,7 +212,7 @@ vec4 probe_cloud_march(mat4 x, IN(NoiseVolume) noise_volume, IN(WeatherField) we
     // The convective cloud at p: extinction, height fraction, inside its box, volume z.
     vec2 v = convective_at(p, centre, m, convective_volumes);
     vec3 q = convective_coordinates(p, centre, 0, m);
-    return vec4(v.x, v.y, in_unit_cube(q) ? 1.0f : 0.0f, q.z);
+    return vec4(v.x, v.y + 0.001f, in_unit_cube(q) ? 1.0f : 0.0f, q.z);
   }
   if (f == PROBE_CONVECTIVE_BOX) {
     // A ray from p along d (limit x[0].z): its box interval and the span.
@@ -224,20 +224,26 @@ vec4 probe_cloud_march(mat4 x, IN(NoiseVolume) noise_volume, IN(WeatherField) we
     return vec4(convective_depth_to_sun(p, centre, m, convective_volumes), shadow, float(loops), 0.0f);
   }
   if (f == PROBE_MARCH_WITH_CONVECTIVE) {
-    // The layers and the convective cloud marched together (limit x[0].z, jitter x[0].w).
+    // The layers and the convective cloud marched together (limit x[0].z, jitter x[0].w), the
+    // layers' extinctions scaled by x[3].x where it is positive (so that the march reaches a
+    // cloud behind them).
+    if (x[3].x > 0.0f) {
+      for (int l = 0; l < m.layer_count; ++l) m.layers[l].extinction *= x[3].x;
+    }
     CloudMarch c = march_clouds(d, centre, x[0].z, x[0].w, m, noise_volume, weather_field, convective_volumes,
                                 layer_shadows);
     return vec4(c.radiance, c.transmittance);
   }
   if (f == PROBE_MARCH_CONVECTIVE_INTERVAL) {
-    // The convective cloud alone on [x[3].x, x[3].y] of the ray d.
+    // The convective cloud on [x[3].x, x[3].y] of the ray d (jitter x[0].w), with layer x[0].y
+    // (-1: alone).
     CloudMarch c;
     c.radiance = vec3(0.0f);
     c.transmittance = 1.0f;
     c.distance = 0.0f;
     c.weight = 0.0f;
     c.loop_count = 0;
-    march_interval(x[3].x, x[3].y, -1, true, d, centre, x[0].w, dot(d, m.sun), c, m, noise_volume, weather_field,
+    march_interval(x[3].x, x[3].y, layer, true, d, centre, x[0].w, dot(d, m.sun), c, m, noise_volume, weather_field,
                    convective_volumes, layer_shadows);
     return vec4(c.radiance, c.transmittance);
   }

@@ -5,6 +5,7 @@ const int PROBE_COVER_DENSITY = 0;
 const int PROBE_COVER_DENSITY_SHIFTED = 1;
 const int PROBE_COVER_FROM_DENSITY = 2;  // cover_from_density(a, b, c)
 const int PROBE_SHAPED_DENSITY = 3;  // shaped_density(a, b, c, x[3].y, x[3].z)
+const int PROBE_LAYER_BLEND = 4;  // layer_blend(a, b, c)
 #ifndef __cplusplus
 #include "../lib/cover_density.glsl"
 #endif
@@ -20,6 +21,7 @@ vec4 probe_cover_density(mat4 x) {
   if (f == PROBE_COVER_DENSITY) return vec4(cover_density(vec3(x[1]), params), 0.0f, 0.0f, 0.0f);
   if (f == PROBE_COVER_DENSITY_SHIFTED)
     return vec4(cover_density_shifted(vec3(x[1]), params, vec3(x[3].y, x[3].z, x[3].w)), 0.0f, 0.0f, 0.0f);
+  if (f == PROBE_LAYER_BLEND) return vec4(layer_blend(x[0].y, x[0].z, x[0].w), 0.0f, 0.0f, 0.0f);
   if (f == PROBE_SHAPED_DENSITY)
     return vec4(shaped_density(x[0].y, x[0].z, x[0].w, x[3].y, x[3].z), 0.0f, 0.0f, 0.0f);
   return vec4(cover_from_density(x[0].y, x[0].z, x[0].w), 0.0f, 0.0f, 0.0f);  // PROBE_COVER_FROM_DENSITY

@@ -6,6 +6,8 @@ const int PROBE_CURL_VELOCITY_SHIFTED = 1;  // x[0].yzw the offset
 const int PROBE_CURL_FLOW_SHIFTED = 2;  // x[0].yzw the offset
 const int PROBE_STORM_TRACK_ENVELOPE = 3;  // storm_track_envelope(z x[1].x, focus x[1].y)
 const int PROBE_ZONAL_PROFILE_DERIVATIVE = 4;  // zonal_profile_derivative(x[1])
+// curl_flow_of_potentials(x[1], w1 = (x[0].yzw, 0.3), w2 = (x[0].wyz, 0.25)), as PROBE_CURL_VELOCITY's flow
+const int PROBE_CURL_FLOW_OF_POTENTIALS = 5;
 // The smooth PROBE_CURL_VELOCITY and PROBE_CURL_FLOW_SHIFTED take the storm-track focus 0.6 and
 // 1 and 3 zonal cells.
 #ifndef __cplusplus
@@ -38,6 +40,9 @@ vec4 probe_curl_flow(mat4 x) {
   CurlParams c = curl_flow_probe_params(x);
   if (f == PROBE_CURL_VELOCITY) return vec4(curl_velocity(vec3(x[1]), c), 0.0f);
   if (f == PROBE_CURL_FLOW_SHIFTED) return curl_flow_shifted(vec3(x[1]), c, vec3(x[0].y, x[0].z, x[0].w));
+  if (f == PROBE_CURL_FLOW_OF_POTENTIALS)
+    return curl_flow_of_potentials(vec3(x[1]), vec4(x[0].y, x[0].z, x[0].w, 0.3f), vec4(x[0].w, x[0].y, x[0].z, 0.25f),
+                                   c);
   if (f == PROBE_STORM_TRACK_ENVELOPE) return vec4(storm_track_envelope(x[1].x, x[1].y), 0.0f, 0.0f);
   if (f == PROBE_ZONAL_PROFILE_DERIVATIVE)
     return vec4(zonal_profile_derivative(x[1].x, x[1].y, int(x[1].z), x[1].w), 0.0f, 0.0f, 0.0f);

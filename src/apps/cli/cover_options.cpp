@@ -1,5 +1,6 @@
 #include "apps/cli/cover_options.hpp"
 
+#include "cover/moving_flow.hpp"
 #include "io/profile_files.hpp"
 #include "io/surface_files.hpp"
 #include "params/table.hpp"
@@ -48,6 +49,11 @@ void WarpOptions::add(Options& o, cover::CoverParameters& p, bool include_integr
     o.bind(c::curl_mode, &curl_mode_);
     o.bind(c::tolerance, &p.tolerance);
     o.bind(c::max_substeps, &p.max_substeps);
+    if (c::flow.used_by(o.use())) {
+      o.bind(c::flow, &flow_);
+      o.bind(c::time, &p.time);
+    }
+    options_ = &o;
   }
   o.bind(c::noise_offset, &p.noise_offset);
 }
@@ -60,6 +66,29 @@ void WarpOptions::apply(cover::CoverParameters& p) const {
   if (!mode) throw UsageError(params::cover::curl_mode.option(), curl_mode_, params::cover::curl_mode.range_text());
   p.integrator = *integrator;
   p.curl_mode = *mode;
+  const auto flow = cover::parse_flow(flow_);
+  if (!flow) throw UsageError(params::cover::flow.option(), flow_, params::cover::flow.range_text());
+  p.flow = *flow;
+  try {
+    cover::hours_since_epoch(p.time);
+  } catch (const std::invalid_argument&) {
+    throw UsageError(params::cover::time.option(), p.time, std::string(params::cover::time.allowed));
+  }
+  if (p.flow == cover::Flow::moving && options_ != nullptr) {
+    // The moving flow integrates with RK4 on the spline grids of its time nodes or on the
+    // procedural flow: an option that asks for another way is refused, not ignored.
+    if (p.integrator != cover::Integrator::rk4)
+      throw UsageError(params::cover::integrator.option(), integrator_, "rk4 with --flow moving");
+    if (p.curl_mode == cover::CurlMode::sampled)
+      throw UsageError(params::cover::curl_mode.option(), curl_mode_, "spline, procedural with --flow moving");
+    for (const params::Parameter* given : {&params::cover::tolerance, &params::cover::max_substeps})
+      if (options_->given(*given)) throw UsageError(given->option() + ": only with --integrator adaptive");
+  }
+  if (p.flow == cover::Flow::steady && options_ != nullptr) {
+    for (const params::Parameter* given : {&params::cover::time, &params::cover::vortex_lifetime})
+      if (options_->given(*given))
+        throw UsageError(given->option() + ": only with --flow moving (a steady cover has no time)");
+  }
 }
 
 void ProfileOption::add(Options& o) { o.bind(params::cover::profile, &value_); }

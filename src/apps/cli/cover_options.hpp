@@ -13,7 +13,8 @@ void add_cover_options(Options& options, cover::CoverParameters& p, unsigned use
 void validate_cover_parameters(const cover::CoverParameters& p);
 
 // How the warp is solved, --integrator, --curl-mode, --tolerance, --max-substeps (unless
-// include_integrator is false), and --noise-offset (docs/numerics.md). Values that Options
+// include_integrator is false), and --noise-offset (docs/numerics.md); with include_integrator
+// also the flow, --flow and --time (cover/moving_flow.hpp). Values that Options
 // cannot hold (names, a double) are parsed after Options::parse, by apply().
 class WarpOptions {
  public:
@@ -25,6 +26,8 @@ class WarpOptions {
  private:
   std::string integrator_{params::cover::integrator.default_text};
   std::string curl_mode_{params::cover::curl_mode.default_text};
+  std::string flow_{params::cover::flow.default_text};
+  const Options* options_ = nullptr;  // what was given, for the checks of --flow moving
 };
 
 // The latitude profile, --profile earth|flat|FILE (read after Options::parse by apply(), which

@@ -43,6 +43,7 @@ class Options {
   bool parse(const std::vector<std::string>& arguments);
   bool given(const params::Parameter& p) const;
   std::string help() const;
+  unsigned use() const { return use_; }  // the command's params::Use bit
 
  private:
   void add(const params::Parameter& p, bool takes_value, bool repeatable,

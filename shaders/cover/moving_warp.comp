@@ -1,0 +1,52 @@
+#version 450
+// Pass 3 of the moving flow (--flow moving): for each texel, where its air was at the two cloud
+// layers' ages, by back-trajectories through the time-dependent flow (moving_flow.glsl). The
+// older layer's points go to warp_field (where the steady warp writes its own), the younger's to
+// young_warp_field; the density pass blends the noise found at both (docs/algorithm.md, "The
+// moving flow"). Variants: MOVING_SPLINE 1 (curl mode spline, the default) reads the flow from
+// the splines of its grids at time nodes (binding 4, made by curl_spline.comp's moving variant),
+// mixed linearly between nodes; 0 evaluates the flow itself at every stage (curl mode procedural).
+layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
+layout(rgba32f, binding = 0) uniform readonly imageCube identity_field;
+layout(rgba32f, binding = 2) uniform writeonly imageCube warp_field;
+layout(rgba32f, binding = 3) uniform writeonly imageCube young_warp_field;
+#ifndef MOVING_SPLINE
+#define MOVING_SPLINE 1
+#endif
+
+// Both variants' libraries before the #if: the host expands each file once (the first include
+// wins, active or not), so a file first included in an inactive branch would be missing.
+#include "../lib/prelude.glsl"
+#include "../lib/parameters.glsl"
+#include "../lib/curl_spline.glsl"
+#if MOVING_SPLINE
+layout(rgba32f, binding = 4) uniform readonly image2DArray flow_splines;
+uniform float u_first_node_time;  // flow units from the motion's origin, as u_time
+uniform float u_node_spacing;
+#define WarpField SplineImage
+vec3 moving_velocity(vec3 w, float t, SplineImage splines) {
+  return spline_velocity_in_time(w, splines, (t - u_first_node_time) / u_node_spacing);
+}
+#define FLOW_SOURCE flow_splines
+#endif
+#include "../lib/moving_flow.glsl"
+
+uniform float u_time;     // the frame's time, flow units from the motion's origin
+uniform float u_old_age;  // the older layer's age (flow units)
+uniform float u_young_age;
+uniform int u_steps;      // RK4 steps of each back-trajectory
+#if !MOVING_SPLINE
+uniform CurlParams u_curl;
+uniform vec3 u_noise_offset;  // reduced modulo the lattice period by the host
+uniform FlowMotion u_motion;
+#define FLOW_SOURCE MovingCurl(u_curl, u_noise_offset, u_motion)
+#endif
+
+void main() {
+  ivec3 texel = ivec3(gl_GlobalInvocationID);
+  int size = imageSize(warp_field).x;
+  if (texel.x >= size || texel.y >= size) return;
+  vec3 x = imageLoad(identity_field, texel).xyz;
+  imageStore(warp_field, texel, vec4(back_trajectory(x, u_time, u_old_age, u_steps, FLOW_SOURCE), 0.0f));
+  imageStore(young_warp_field, texel, vec4(back_trajectory(x, u_time, u_young_age, u_steps, FLOW_SOURCE), 0.0f));
+}

@@ -1,0 +1,108 @@
+// The moving cover (--flow moving) on the GPU: frames that depend on their time alone, that move
+// a little from hour to hour and renew within a day, and the spline grids of the flow at time
+// nodes against the flow itself.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "core/time.hpp"
+#include "cover/global_cover.hpp"
+#include "cover/moving_flow.hpp"
+#include "gl_support.hpp"
+
+using namespace nephele;
+
+namespace {
+
+cover::CoverParameters moving(int size, const std::string& time) {
+  cover::CoverParameters p;
+  p.size = size;
+  p.flow = cover::Flow::moving;
+  p.time = time;
+  p.curl_size = 32;  // the flow's grids: coarse, as the cover
+  return p;
+}
+
+std::vector<float> cover_at(const cover::CoverParameters& p) {
+  test::test_context();
+  cover::GlobalCover cover(p);
+  cover.run();
+  return cover.cover_field().read();
+}
+
+double rms_difference(const std::vector<float>& a, const std::vector<float>& b) {
+  double sum = 0;
+  for (size_t i = 0; i < a.size(); ++i) sum += (double(a[i]) - b[i]) * (double(a[i]) - b[i]);
+  return std::sqrt(sum / double(a.size()));
+}
+
+// The largest angle between the points of two warp fields (radians).
+double largest_angle(const std::vector<float>& a, const std::vector<float>& b) {
+  double worst = 0;
+  for (size_t i = 0; i + 3 < a.size(); i += 4) {
+    const glm::dvec3 p(a[i], a[i + 1], a[i + 2]), q(b[i], b[i + 1], b[i + 2]);
+    worst = std::max(worst, std::atan2(glm::length(glm::cross(p, q)), glm::dot(p, q)));
+  }
+  return worst;
+}
+
+}  // namespace
+
+TEST_CASE("a frame of the moving cover depends on its time alone, not on the frames made before it", "[moving]") {
+  // A sequence reuses the flow's grids of time nodes that consecutive frames share; a frame made
+  // alone makes them all. Both must give the same bits.
+  test::test_context();
+  cover::GlobalCover sequence(moving(32, "2026-06-21T00:00Z"));
+  sequence.run();
+  sequence.set_time("2026-06-21T09:00Z");
+  sequence.run();
+  const std::vector<float> alone = cover_at(moving(32, "2026-06-21T09:00Z"));
+  const std::vector<float> in_sequence = sequence.cover_field().read();
+  REQUIRE(alone.size() == in_sequence.size());
+  CHECK(alone == in_sequence);
+}
+
+TEST_CASE("the moving cover changes little from hour to hour and renews itself within a day", "[moving]") {
+  // Two covers of different seeds differ by D (RMS), their pattern independent. An hour apart,
+  // the cloud layers' shares move by at most (pi/2) (1 h / 13.3 h) = 0.12 and the air by
+  // |v| 1 h, under a texel here: the difference must stay far below D (a frame that popped to
+  // a new pattern would reach D at once); a third of D leaves room for the advection of edges.
+  // A day apart, the older layer of the first frame (age T to 3T/2, T = 26.5 h) has faded out
+  // and the younger has aged past its peak: more than half of D.
+  const std::string start = "2026-06-21T00:00Z";
+  const std::vector<float> first = cover_at(moving(48, start));
+  const std::vector<float> hour = cover_at(moving(48, "2026-06-21T01:00Z"));
+  const std::vector<float> day = cover_at(moving(48, "2026-06-22T00:00Z"));
+  cover::CoverParameters other = moving(48, start);
+  other.seed = 2;
+  const double independent = rms_difference(first, cover_at(other));
+  INFO("RMS differences: an hour " << rms_difference(first, hour) << ", a day " << rms_difference(first, day)
+                                   << ", another seed " << independent);
+  CHECK(rms_difference(first, hour) < independent / 3);
+  CHECK(rms_difference(first, day) > independent / 2);
+}
+
+TEST_CASE("the moving warp of the flow's splines follows the procedural flow within a tenth of a texel", "[moving]") {
+  // The splines of the flow at time nodes (curl mode spline) against the flow evaluated at every
+  // stage (procedural): the spline's own error (O(h^4), a few 1e-5 rad at 256 nodes per face,
+  // docs/numerics.md) plus linear interpolation in time between nodes h/2 apart,
+  // (h/2)^2 / 8 |v_tt| (|v_tt| below 1 for the drift's omega^2 |v| and the shares' (pi/L)^2 |v|):
+  // 3e-4 |v| per unit time; over a trajectory of 3T/2 = 0.45 both stay below a tenth of a texel
+  // of the cover (pi/2 / 64 / 10 = 2.5e-3 rad). A node taken one off would move the points by
+  // the flow over h/2, |v| 0.075 ~ 0.02 rad.
+  cover::CoverParameters spline = moving(64, "2026-06-21T05:00Z");
+  spline.curl_size = 256;
+  cover::CoverParameters procedural = spline;
+  procedural.curl_mode = cover::CurlMode::procedural;
+  test::test_context();
+  cover::GlobalCover a(spline), b(procedural);
+  a.run();
+  b.run();
+  const double old_layer = largest_angle(a.warp_field().read(), b.warp_field().read());
+  const double young_layer = largest_angle(a.young_warp_field().read(), b.young_warp_field().read());
+  INFO("largest angle between the warps: older layer " << old_layer << " rad, younger " << young_layer << " rad");
+  CHECK(old_layer < 2.5e-3);
+  CHECK(young_layer < 2.5e-3);
+}
