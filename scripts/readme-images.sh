@@ -3,6 +3,8 @@
 #   docs/images/cover_equirect.png           nephele generate (defaults), the equirect preview
 #   docs/images/cover_stats.png              nephele stats of that cover (coverage by latitude, spectrum, D)
 #   docs/images/cover_equirect_surface.png   nephele generate --surface etopo5 (the land/ocean mask)
+#   docs/images/cover_sequence.gif           nephele generate --flow moving --sequence 24 --interval 3 (a day)
+#   docs/images/cover_motion.svg             nephele stats of that sequence (speeds by band, decorrelation)
 #   docs/images/render_gurten.png/.json      nephele render --view gurten (--quality final)
 #   docs/images/render_gurten_panorama.*     the same scene as a panorama
 #   docs/images/render_bantiger.png/.json    nephele render --view bantiger (--quality final)
@@ -24,6 +26,10 @@ trap 'rm -rf "$work"' EXIT
 cp "$work/cover/cover_equirect.png" docs/images/cover_equirect.png
 "$nephele" stats "$work/cover" --out "$work/stats"
 cp "$work/stats/stats.png" docs/images/cover_stats.png
+"$nephele" generate --flow moving --sequence 24 --interval 3 --files equirect,png --quiet --out "$work/sequence"
+cp "$work/sequence/sequence.gif" docs/images/cover_sequence.gif
+"$nephele" stats "$work/sequence" --out "$work/motion"
+cp "$work/motion/motion.svg" docs/images/cover_motion.svg
 "$nephele" generate --surface etopo5 --files png --quiet --out "$work/cover-surface"
 cp "$work/cover-surface/cover_equirect.png" docs/images/cover_equirect_surface.png
 "$nephele" render --view gurten --quality final --no-cache --out "$work/render_gurten.png"

@@ -306,7 +306,8 @@ TEST_CASE("cover_density.glsl on the GPU agrees with the CPU", "[probe]") {
         {arguments(PROBE_COVER_FROM_DENSITY, vec4(r(0.0f, 1.0f), r(0.0f, 0.5f), r(0.5f, 1.0f), 0)), kArithmetic});
     cases.push_back({arguments(PROBE_SHAPED_DENSITY, vec4(r(0.0f, 1.5f), r(0.0f, 0.7f), r(0.0f, 2.0f), 0), vec4(0.0f),
                                vec4(0.0f), vec4(0.0f, r(-1.0f, 1.0f), r(0.0f, 1.0f), 0.0f)),
-                     kArithmetic});  // The two layers' blend: two products and a sum of values below 1.
+                     kArithmetic});
+    // The two layers' blend: two products and a sum of values below 1.
     cases.push_back({arguments(PROBE_LAYER_BLEND, vec4(r(0.0f, 1.0f), r(0.0f, 1.0f), r(0.0f, 1.0f), 0)), kArithmetic});
   }
   compare("cover_density", probe_cover_density, cases);
@@ -1199,13 +1200,14 @@ TEST_CASE("cloud_march.glsl on the GPU agrees with the CPU", "[probe][march]") {
   };
   // march_interval with the convective cloud over stretches of rays from the camera given
   // exactly (x[3]), 20 m inside the box's interval so that no sample lies within the position
-  // error of a face: alone (layer -1) along rays rising 0.2 to 0.33 rad, and with the alto (layer
-  // 1) over its interval's part in the box along rays rising 0.2 to 0.26 rad. There the layer's
-  // samples move as in the layers' marches (`march`, relative) and so do the convective ones: at
-  // the alto's altitudes (3500 m and up, the volume's z texel 4 (2500 / E) - 0.5 >= 7 / 6) the
-  // density is at least 0.05 x 3 x 7 / 6 = 0.175, so sigma_error moves a convective sample's
-  // extinction by at most density_error / 0.175 of itself (the mixed height fraction and
-  // scattering ratio with it). Jitters 0.25 to 0.75.
+  // error of a face: alone (layer -1) along rays rising 0.2 to 0.33 rad, over the whole interval
+  // (the light all but spent) or 150 to 600 m of it (optically thin: the transmittance shows the
+  // density), and with the alto (layer 1) over its interval's part in the box along rays rising
+  // 0.2 to 0.26 rad. There the layer's samples move as in the layers' marches (`march`,
+  // relative) and so do the convective ones: at the alto's altitudes (3500 m and up, the
+  // volume's z texel 4 (2500 / E) - 0.5 >= 7 / 6) the density is at least 0.05 x 3 x 7 / 6 =
+  // 0.175, so sigma_error moves a convective sample's extinction by at most density_error / 0.175
+  // of itself (the mixed height fraction and scattering ratio with it). Jitters 0.25 to 0.75.
   const float convective_relative = density_error / (0.05f * 3 * (4 * 2500.0f / box_edge - 0.5f));
   for (int k = 0; k < 12; ++k) {
     const bool alone = k % 2 == 0;
@@ -1223,10 +1225,16 @@ TEST_CASE("cloud_march.glsl on the GPU agrees with the CPU", "[probe][march]") {
       }
       if (stretch.x + 100.0f < stretch.y) break;
     }
+    stretch += vec2(20.0f, -20.0f);
+    if (k % 4 == 2) {
+      const float length = r(150.0f, 600.0f);
+      stretch.x += r(0.0f, 1.0f) * std::max(stretch.y - stretch.x - length, 0.0f);
+      stretch.y = std::min(stretch.y, stretch.x + length);
+    }
     const mat4 x = arguments(PROBE_MARCH_CONVECTIVE_INTERVAL, vec4(alone ? -1.0f : 1.0f, 0, r(0.25f, 0.75f), 0),
-                             vec4(0), d, vec4(stretch.x + 20.0f, stretch.y - 20.0f, 0, 0));
+                             vec4(0), d, vec4(stretch.x, stretch.y, 0, 0));
     Case c = alone ? Case{x, 0.0f} : relative(x, march + convective_relative);
-    c.tolerance += convective_march(vec3(d), diagonal, 0.0f);
+    c.tolerance += convective_march(vec3(d), stretch.y - stretch.x, 0.0f);
     cases.push_back(c);
   }
   // march_clouds with the layers, thinned to a twentieth of their extinction (x[3].x), and the

@@ -212,7 +212,7 @@ vec4 probe_cloud_march(mat4 x, IN(NoiseVolume) noise_volume, IN(WeatherField) we
     // The convective cloud at p: extinction, height fraction, inside its box, volume z.
     vec2 v = convective_at(p, centre, m, convective_volumes);
     vec3 q = convective_coordinates(p, centre, 0, m);
-    return vec4(v.x, v.y + 0.001f, in_unit_cube(q) ? 1.0f : 0.0f, q.z);
+    return vec4(v.x, v.y, in_unit_cube(q) ? 1.0f : 0.0f, q.z);
   }
   if (f == PROBE_CONVECTIVE_BOX) {
     // A ray from p along d (limit x[0].z): its box interval and the span.

@@ -9,6 +9,7 @@
 #include "files/atomic_output.hpp"
 #include "params/table.hpp"
 #include "studies/cover_statistics.hpp"
+#include "studies/motion_statistics.hpp"
 
 namespace nephele::cli {
 
@@ -19,7 +20,9 @@ int run_stats(const std::vector<std::string>& arguments) {
                   "EXR) and prints and writes stats.json and stats.png: coverage by 2- and 10-degree latitude\n"
                   "band against the profile's targets, the zonal power spectrum (|lat| <= 60) and its slope,\n"
                   "the perimeter dimension of cloud objects, the histogram of cover values and the warp's\n"
-                  "fold figures (docs/climate.md).",
+                  "fold figures (docs/climate.md). On a sequence (generate --flow moving --sequence N) it measures\n"
+                  "the motion instead: motion.json and motion.svg with the clouds' eastward speed by band against\n"
+                  "the flow's wind, the correlation by lag and the cloud fraction across frames.",
                   params::stats);
   options.bind(params::run::stats_out, &out);
   std::vector<std::string> rest = arguments;
@@ -32,6 +35,27 @@ int run_stats(const std::vector<std::string>& arguments) {
   const std::filesystem::path directory =
       out.empty() ? std::filesystem::path(cover_dir) / "stats" : std::filesystem::path(out);
   files::check_output_directory(directory, "--out");
+  if (std::filesystem::exists(std::filesystem::path(cover_dir) / "sequence.json")) {
+    // A sequence (generate --flow moving --sequence N): its motion (docs/climate.md, "Motion").
+    const studies::MotionStatistics motion = studies::motion_statistics(cover_dir);
+    files::OutputSet outputs(directory, files::OutputSet::Scope::directory);
+    studies::write_motion(outputs, motion);
+    std::cout << std::fixed << std::setprecision(2) << motion.frames << " frames " << motion.interval_hours
+              << " h apart; eastward speed by 10-degree band (m/s), clouds against the flow's zonal-mean wind:\n";
+    for (size_t b = 0; b < motion.band_centres_deg.size(); ++b)
+      std::cout << "  " << std::setw(6) << motion.band_centres_deg[b] << ": clouds " << std::setw(7)
+                << motion.cloud_speed_ms[b] << "  flow " << std::setw(7) << motion.flow_speed_ms[b] << "\n";
+    std::cout << "correlation of the cover by lag:";
+    for (size_t k = 0; k < motion.correlation_by_lag.size(); ++k)
+      std::cout << " " << motion.interval_hours * double(k) << " h " << std::setprecision(3)
+                << motion.correlation_by_lag[k] << std::setprecision(2)
+                << (k + 1 < motion.correlation_by_lag.size() ? "," : "");
+    std::cout << "\ndecorrelation (1/e) after " << motion.decorrelation_hours << " h; cloud fraction "
+              << std::setprecision(4) << motion.cloud_fraction_mean << " (range " << motion.cloud_fraction_range
+              << ")\nwrote " << (directory / "motion.json").string() << " and " << (directory / "motion.svg").string()
+              << "\n";
+    return exit_ok;
+  }
   const studies::CoverStatistics stats = studies::cover_statistics(cover_dir);
   files::OutputSet outputs(directory, files::OutputSet::Scope::directory);
   studies::write_statistics(outputs, stats);
