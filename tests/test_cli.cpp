@@ -152,6 +152,7 @@ TEST_CASE("bad input exits with code 2 naming the option and writes nothing", "[
       {"generate --flow moving --integrator euler" + dir, "--integrator"},
       {"generate --flow moving --curl-mode sampled" + dir, "--curl-mode"},
       {"generate --sequence 3" + dir, "--sequence"},
+      {"generate --loop 24" + dir, "--loop"},
       {"generate --flow moving --interval 2" + dir, "--interval"},
       {"generate --flow moving --sequence 3 --interval 0" + dir, "--interval"},
       {"frobnicate", "frobnicate"},

@@ -25,6 +25,7 @@ FlowMotion test_motion(float generation_time = 0.5f, int origin = 7) {
   m.generation_time = generation_time;
   m.origin = origin;
   m.drift = 1.0f;
+  m.generations = 0;
   return m;
 }
 
@@ -241,10 +242,12 @@ TEST_CASE("moving_flow.glsl on the GPU agrees with the CPU", "[probe][moving]") 
                          : k % 6 == 3 ? PROBE_MOVING_RK4_STEP
                          : k % 6 == 4 ? PROBE_MOVING_VELOCITY
                                       : PROBE_ZONAL_DRIFT;
-    const vec4 a0 = function == PROBE_BACK_TRAJECTORY   ? vec4(0.45f, 3.0f, 7.0f, 0.0f)
-                    : function == PROBE_MOVING_RK4_STEP ? vec4(-0.15f, 0.0f, 7.0f, 0.0f)
-                    : function == PROBE_ZONAL_DRIFT     ? vec4(float(k % 4), 0.0f, 7.0f, 0.0f)
-                                                        : vec4(0.3f, 0.0f, 7.0f, 0.0f);
+    // Origin 7 (odd: the probe loops 5 generations) or 8 (no loop), by turns.
+    const float origin = float(7 + (k / 6) % 2);
+    const vec4 a0 = function == PROBE_BACK_TRAJECTORY   ? vec4(0.45f, 3.0f, origin, 0.0f)
+                    : function == PROBE_MOVING_RK4_STEP ? vec4(-0.15f, 0.0f, origin, 0.0f)
+                    : function == PROBE_ZONAL_DRIFT     ? vec4(float(k % 4), 0.0f, origin, 0.0f)
+                                                        : vec4(0.3f, 0.0f, origin, 0.0f);
     inputs.push_back(arguments(function, a0, vec4(n, t), potential_octaves, flow));
     // zonal_drift: a polynomial of z (or one asin, sin and cos for 0 cells) times s P: values
     // below 16 x 3 in a few products. drifted_potential: `potential` for one generation.
@@ -260,6 +263,11 @@ TEST_CASE("moving_flow.glsl on the GPU agrees with the CPU", "[probe][moving]") 
                                vec4(0.25f * float(k), 0, 0, 0), potential_octaves, flow));
     tolerances.push_back(2 * kTranscendental);
   }
+  // looped_generation: integers, exact; negative generations wrap too.
+  for (int g : {-11, -5, -1, 0, 4, 5, 13}) {
+    inputs.push_back(arguments(PROBE_LOOPED_GENERATION, vec4(float(g), float(g % 3 == 0 ? 0 : 5), 7, 0)));
+    tolerances.push_back(0.0f);
+  }
   const std::vector<vec4> gpu = test::run_library_probe("moving_flow", inputs);
   const auto names = test::probe_function_names(test::probe_text("moving_flow"));
   for (size_t k = 0; k < inputs.size(); ++k) {
@@ -269,5 +277,26 @@ TEST_CASE("moving_flow.glsl on the GPU agrees with the CPU", "[probe][moving]") 
                    << ", CPU " << cpu[i] << ", tolerance " << tolerances[k]);
       CHECK(std::abs(gpu[k][i] - cpu[i]) <= tolerances[k]);
     }
+  }
+}
+
+TEST_CASE("a looped flow repeats after its generations and wraps negative generations", "[fast][moving]") {
+  CHECK(looped_generation(7, 0) == 7);
+  CHECK(looped_generation(-1, 0) == -1);
+  CHECK(looped_generation(7, 5) == 2);
+  CHECK(looped_generation(-1, 5) == 4);
+  CHECK(looped_generation(-10, 5) == 0);
+  const CurlParams c = test_curl();
+  FlowMotion m = test_motion(0.5f, 3);
+  m.generations = 4;
+  std::mt19937 rng(31);
+  for (int k = 0; k < 8; ++k) {
+    const vec3 n = random_direction(rng);
+    const float t = 0.23f * float(k) - 0.6f;
+    // Four generations later (t + 4 L) the flow is the same: only the float time differs, by an
+    // ulp of 2 (t + 2): the flow's time derivative (about 1) times 2.4e-7.
+    const vec4 now = moving_curl_flow(n, c, vec3(0.0f), m, t);
+    const vec4 later = moving_curl_flow(n, c, vec3(0.0f), m, t + 4 * m.generation_time);
+    for (int i = 0; i < 4; ++i) CHECK(std::abs(now[i] - later[i]) <= 1e-5f);
   }
 }

@@ -1,6 +1,6 @@
 #version 450
 // Pass 3 of the moving flow (--flow moving): for each texel, where its air was at the two cloud
-// layers' ages, by back-trajectories through the time-dependent flow (moving_flow.glsl). The
+// layers' ages, by one back-trajectory through the time-dependent flow (moving_flow.glsl). The
 // older layer's points go to warp_field (where the steady warp writes its own), the younger's to
 // young_warp_field; the density pass blends the noise found at both (docs/algorithm.md, "The
 // moving flow"). Variants: MOVING_SPLINE 1 (curl mode spline, the default) reads the flow from
@@ -34,7 +34,8 @@ vec3 moving_velocity(vec3 w, float t, SplineImage splines) {
 uniform float u_time;     // the frame's time, flow units from the motion's origin
 uniform float u_old_age;  // the older layer's age (flow units)
 uniform float u_young_age;
-uniform int u_steps;      // RK4 steps of each back-trajectory
+uniform int u_young_steps;  // RK4 steps back to the younger layer's age
+uniform int u_older_steps;  // and on from there to the older layer's
 #if !MOVING_SPLINE
 uniform CurlParams u_curl;
 uniform vec3 u_noise_offset;  // reduced modulo the lattice period by the host
@@ -47,6 +48,9 @@ void main() {
   int size = imageSize(warp_field).x;
   if (texel.x >= size || texel.y >= size) return;
   vec3 x = imageLoad(identity_field, texel).xyz;
-  imageStore(warp_field, texel, vec4(back_trajectory(x, u_time, u_old_age, u_steps, FLOW_SOURCE), 0.0f));
-  imageStore(young_warp_field, texel, vec4(back_trajectory(x, u_time, u_young_age, u_steps, FLOW_SOURCE), 0.0f));
+  // One trajectory: back to the younger layer's birth, then on to the older layer's.
+  vec3 young = back_trajectory(x, u_time, u_young_age, u_young_steps, FLOW_SOURCE);
+  vec3 old = back_trajectory(young, u_time - u_young_age, u_old_age - u_young_age, u_older_steps, FLOW_SOURCE);
+  imageStore(young_warp_field, texel, vec4(young, 0.0f));
+  imageStore(warp_field, texel, vec4(old, 0.0f));
 }

@@ -42,6 +42,16 @@ FbmParams generation_noise(IN(FbmParams) noise, int generation) {
   return out_noise;
 }
 
+// Generation g's index in a loop of `generations` (--loop: g mod generations, also for negative g),
+// or g itself when generations is 0. GLSL leaves % undefined for negative operands (4.50 section
+// 5.9), so a negative g takes the remainder of -g.
+int looped_generation(int generation, int generations) {
+  if (generations <= 0) return generation;
+  if (generation >= 0) return generation % generations;
+  int r = (-generation) % generations;
+  return r == 0 ? 0 : generations - r;
+}
+
 // A potential whose pattern has drifted east by the angle omega(z) age about the axis:
 // W(R(beta) n) with beta = -omega(z) age, R the rotation about z. Its gradient by the chain
 // rule: R^T grad W + (grad W . (e_z x R n)) (d beta / dz) e_z, with d beta / dz = -age omega'(z),
@@ -79,13 +89,15 @@ vec4 moving_curl_flow(vec3 n, IN(CurlParams) params, vec3 offset, IN(FlowMotion)
   float older_age = phase * motion.generation_time;
   float younger_age = older_age - motion.generation_time;
   float lambda = params.smoothing;
-  vec4 w1 = (1.0f - young) * drifted_potential(n, generation_noise(params.potential_north, older), lambda, offset,
+  int first_seed = looped_generation(older, motion.generations);
+  int second_seed = looped_generation(older + 1, motion.generations);
+  vec4 w1 = (1.0f - young) * drifted_potential(n, generation_noise(params.potential_north, first_seed), lambda, offset,
                                                 drift, older_age) +
-            young * drifted_potential(n, generation_noise(params.potential_north, older + 1), lambda, offset, drift,
+            young * drifted_potential(n, generation_noise(params.potential_north, second_seed), lambda, offset, drift,
                                       younger_age);
-  vec4 w2 = (1.0f - young) * drifted_potential(n, generation_noise(params.potential_south, older), lambda, offset,
+  vec4 w2 = (1.0f - young) * drifted_potential(n, generation_noise(params.potential_south, first_seed), lambda, offset,
                                                 drift, older_age) +
-            young * drifted_potential(n, generation_noise(params.potential_south, older + 1), lambda, offset, drift,
+            young * drifted_potential(n, generation_noise(params.potential_south, second_seed), lambda, offset, drift,
                                       younger_age);
   return curl_flow_of_potentials(n, w1, w2, params);
 }

@@ -30,6 +30,7 @@ struct FlowMotion {
   float generation_time;  // L: the vortices of generation g live while |t - g L| < L
   int origin;             // the generation whose centre is the time 0 of the time arguments
   float drift;            // 1: the vortices drift with the zonal wind; 0: they stay in place
+  int generations;        // > 0: the noise of generation g is that of g mod generations (a loop)
 };
 
 // The moving flow evaluated where a stepping rule asks (moving_flow.glsl's procedural source).

@@ -61,6 +61,7 @@ struct CoverParameters {
   Flow flow = *parse_flow(std::string(params::cover::flow.default_text));
   std::string time{params::cover::time.default_text};                      // ISO 8601 UTC: the moment of the cover
   float vortex_lifetime = params::cover::vortex_lifetime.default_float();  // hours
+  float loop_hours = params::cover::loop.default_float();                  // 0: no loop
 };
 
 // The numeric fields of a cover with their declarations in the parameter table, in the order
@@ -97,6 +98,7 @@ void visit_numeric_parameters(P& p, Visit&& visit) {
   visit(c::density_gain, p.density.gain);
   visit(c::surface_weight, p.surface_weight);
   visit(c::vortex_lifetime, p.vortex_lifetime);
+  visit(c::loop, p.loop_hours);
 }
 
 // Independent seeds per noise layer, derived from the user's seed.

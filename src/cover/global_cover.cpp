@@ -142,7 +142,8 @@ void GlobalCover::run_moving_warp() {
     program.set("u_time", clock.time);
     program.set("u_old_age", clock.old_age);
     program.set("u_young_age", clock.young_age);
-    program.set("u_steps", clock.steps);
+    program.set("u_young_steps", clock.young_steps);
+    program.set("u_older_steps", clock.older_steps);
     identity_field_.bind_image(warp::identity_field, GL_READ_ONLY);
     warp_field_.bind_image(warp::warp_field, GL_WRITE_ONLY);
     young_warp_field_.bind_image(warp::young_warp_field, GL_WRITE_ONLY);
@@ -348,8 +349,10 @@ void GlobalCover::run_density() {
     namespace density = shader_bindings::cover_cover_density;
     if (moving(parameters_)) {
       const FrameClock clock = frame_clock(parameters_, hours_since_epoch(parameters_.time));
-      glsl::set_uniform(density_program_, "u_cover", layer_density_params(parameters_, clock.young_layer - 1));
-      glsl::set_uniform(density_program_, "u_young_cover", layer_density_params(parameters_, clock.young_layer));
+      glsl::set_uniform(density_program_, "u_cover",
+                        layer_density_params(parameters_, clock.young_layer - 1, clock.layers_in_loop));
+      glsl::set_uniform(density_program_, "u_young_cover",
+                        layer_density_params(parameters_, clock.young_layer, clock.layers_in_loop));
       density_program_.set("u_young_share", clock.young_share);
       young_warp_field_.bind_image(density::young_warp_field, GL_READ_ONLY);
     }

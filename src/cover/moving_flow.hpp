@@ -32,7 +32,11 @@ struct FrameClock {
   float young_age = 0;           // the younger's, in [T/2, T)
   float young_share = 0;         // the younger's weight, sin^2(pi/2 (age - T/2) / (T/2))
   std::int64_t young_layer = 0;  // the younger layer's index (its noise's generation)
-  int steps = 1;                 // RK4 steps of each back-trajectory: ceil(3T/2 / h)
+  // RK4 steps of the younger layer's back-trajectory, ceil(T / h), and of its continuation to
+  // the older layer's age, ceil(T/2 / h): the older layer's air is the younger's, followed T/2
+  // further back (one trajectory, not two).
+  int young_steps = 1;
+  int older_steps = 1;
   // Curl mode spline: the flow's grids at time nodes k = 0 .. nodes - 1, at first_node_time +
   // k node_spacing, node_spacing = h / 2 on a grid of absolute time (so that a node is the same
   // flow in every frame that uses it), covering [t - 3T/2, t].
@@ -40,6 +44,7 @@ struct FrameClock {
   float node_spacing = 0;
   int nodes = 0;
   std::int64_t first_node = 0;  // the absolute index of the first node (node k at k node_spacing)
+  int layers_in_loop = 0;       // --loop: layer j's noise is layer (j mod this)'s; 0 without a loop
 };
 
 FrameClock frame_clock(const CoverParameters& p, double hours);
@@ -52,7 +57,8 @@ struct NodeTime {
 };
 NodeTime node_time(const CoverParameters& p, std::int64_t node);
 
-// The density noise of cloud layer `layer` (its own seed, as the vortices' generations).
-glsl::FbmParams layer_density_params(const CoverParameters& p, std::int64_t layer);
+// The density noise of cloud layer `layer` (its own seed, as the vortices' generations; in a loop
+// of `layers_in_loop` layers, that of layer mod layers_in_loop).
+glsl::FbmParams layer_density_params(const CoverParameters& p, std::int64_t layer, int layers_in_loop);
 
 }  // namespace nephele::cover

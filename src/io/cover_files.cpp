@@ -91,7 +91,9 @@ json::Value cover_sidecar(const cover::GlobalCover& cover, const gpu::ContextInf
     if (!parameter.used_by(params::cover_sidecar)) return;
     if (!adaptive && (&parameter == &params::cover::tolerance || &parameter == &params::cover::max_substeps)) return;
     if (p.curl_mode != cover::CurlMode::spline && &parameter == &params::cover::curl_size) return;
-    if (p.flow == cover::Flow::steady && &parameter == &params::cover::vortex_lifetime) return;
+    if (p.flow == cover::Flow::steady &&
+        (&parameter == &params::cover::vortex_lifetime || &parameter == &params::cover::loop))
+      return;
     set_path(parameters, std::string(parameter.sidecar_path()), json_number(value));
     if (&parameter == &params::cover::coverage) parameters.set(std::string(params::cover::profile.key), p.profile.name);
     if (&parameter == &params::cover::surface_weight)

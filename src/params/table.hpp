@@ -119,6 +119,11 @@ inline constexpr Parameter vortex_lifetime =
     real("vortex_lifetime", 96, 6, 2400, "hours",
          "--flow moving: life of a generation of vortices, from birth through its peak to death (cyclones: 2-5 days)",
          generate | cover_sidecar);
+inline constexpr Parameter loop =
+    real("loop", 0, 0, 87600, "hours",
+         "--flow moving: the cover repeats after this time, seamlessly (0: never); the vortices' and the clouds' "
+         "lifetimes and the flow's time nodes are rounded so that whole numbers of them fit",
+         generate | cover_sidecar);
 }  // namespace cover
 
 namespace scene {

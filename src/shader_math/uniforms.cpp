@@ -36,6 +36,7 @@ void set_uniform(const gpu::ComputeProgram& program, const std::string& name, co
   program.set(name + ".generation_time", motion.generation_time);
   program.set(name + ".origin", motion.origin);
   program.set(name + ".drift", motion.drift);
+  program.set(name + ".generations", motion.generations);
 }
 
 void set_uniform(const gpu::ComputeProgram& program, const std::string& name, const MarchParams& params) {

@@ -10,6 +10,7 @@ const int PROBE_BACK_TRAJECTORY = 3;       // back_trajectory from (n, t), age x
 const int PROBE_GENERATION_SHARE = 4;      // generation_share(x[1].x), generation_noise's seed
 const int PROBE_MOVING_RK4_STEP = 5;       // moving_rk4_step from (n, t), h x[0].y
 const int PROBE_MOVING_VELOCITY = 6;       // moving_velocity at (n, t)
+const int PROBE_LOOPED_GENERATION = 7;     // looped_generation(x[0].y, x[0].z)
 #ifndef __cplusplus
 #include "../lib/moving_flow.glsl"
 #endif
@@ -37,6 +38,7 @@ FlowMotion moving_flow_probe_motion(mat4 x) {
   m.generation_time = x[3].z;
   m.origin = int(x[0].w);
   m.drift = x[3].w;
+  m.generations = int(x[0].w) % 2 == 1 ? 5 : 0;  // an odd origin: a loop of 5 generations
   return m;
 }
 vec4 probe_moving_flow(mat4 x) {
@@ -62,5 +64,6 @@ vec4 probe_moving_flow(mat4 x) {
                 0.0f);
   // PROBE_MOVING_RK4_STEP
   if (f == PROBE_MOVING_VELOCITY) return vec4(moving_velocity(n, x[1].w, field), 0.0f);
+  if (f == PROBE_LOOPED_GENERATION) return vec4(float(looped_generation(int(x[0].y), int(x[0].z))), 0.0f, 0.0f, 0.0f);
   return vec4(moving_rk4_step(n, x[1].w, x[0].y, field), 0.0f);
 }

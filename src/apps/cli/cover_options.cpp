@@ -85,7 +85,7 @@ void WarpOptions::apply(cover::CoverParameters& p) const {
       if (options_->given(*given)) throw UsageError(given->option() + ": only with --integrator adaptive");
   }
   if (p.flow == cover::Flow::steady && options_ != nullptr) {
-    for (const params::Parameter* given : {&params::cover::time, &params::cover::vortex_lifetime})
+    for (const params::Parameter* given : {&params::cover::time, &params::cover::vortex_lifetime, &params::cover::loop})
       if (options_->given(*given))
         throw UsageError(given->option() + ": only with --flow moving (a steady cover has no time)");
   }
