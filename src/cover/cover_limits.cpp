@@ -19,7 +19,7 @@ double host_bytes(int size) {
 
 }  // namespace
 
-void check_cover_fits(const gpu::Context& context, int size, const std::string& option) {
+void check_cover_fits(const gpu::Context& context, int size, const std::string& option, Flow flow) {
   const int max_cube = gpu::max_cube_map_size();
   if (size > max_cube)
     throw core::InputError(option + ": " + std::to_string(size) + " exceeds this driver's cube map limit (" +
@@ -36,7 +36,7 @@ void check_cover_fits(const gpu::Context& context, int size, const std::string& 
   const double host_available = core::host_memory_available_bytes();
   if (context.is_software()) {
     // A software rasteriser keeps its textures in host memory too.
-    auto total = [](int s) { return cover_gpu_bytes(s) + host_bytes(s); };
+    auto total = [flow](int s) { return cover_gpu_bytes(s, flow) + host_bytes(s); };
     if (host_available > 0 && total(size) > host_available) {
       std::ostringstream m;
       m << option << ": " << size << " needs about " << std::ceil(total(size) / 1048576.0) << " MiB but "
@@ -55,11 +55,11 @@ void check_cover_fits(const gpu::Context& context, int size, const std::string& 
     throw core::InputError(m.str());
   }
   const double gpu_available = gpu::gpu_memory_available_bytes();
-  if (gpu_available > 0 && cover_gpu_bytes(size) > gpu_available) {
+  if (gpu_available > 0 && cover_gpu_bytes(size, flow) > gpu_available) {
     std::ostringstream m;
-    m << option << ": " << size << " needs about " << std::ceil(cover_gpu_bytes(size) / 1048576.0)
+    m << option << ": " << size << " needs about " << std::ceil(cover_gpu_bytes(size, flow) / 1048576.0)
       << " MiB of GPU memory but " << std::floor(gpu_available / 1048576.0) << " MiB are available; allowed range 1 to "
-      << gpu::largest_fitting(max_cube, [&](int s) { return cover_gpu_bytes(s) <= gpu_available; });
+      << gpu::largest_fitting(max_cube, [&](int s) { return cover_gpu_bytes(s, flow) <= gpu_available; });
     throw core::InputError(m.str());
   }
 }

@@ -10,11 +10,14 @@
 
 namespace nephele::cover {
 
-double cover_gpu_bytes(int size) {
+double cover_gpu_bytes(int size, Flow flow) {
   const double texels = 6.0 * size * size;
   // identity, curl, warp; density, cover; and two RGBA32F cubes the warp pass adds for long or
   // adaptive integrations (a scratch map and the adaptive state).
-  const double cubes = texels * (16.0 * 5 + 4.0 * 2);
+  // --flow moving adds the younger cloud layer's warp (RGBA32F) and its flow grids, 6 x 16 x
+  // (curl_size + 4)^2 bytes a time node (8 nodes at the defaults: 52 MiB; not counted, as the
+  // steady spline's grid).
+  const double cubes = texels * (16.0 * (flow == Flow::moving ? 6 : 5) + 4.0 * 2);
   // The equirect export holds one R32F tile of the 4 size x 2 size map at a time; the
   // calibration and diagnosis their tables and partial sums.
   const double equirect = std::min(8.0 * size * size, double(default_equirect_tile) * default_equirect_tile) * 4.0;

@@ -117,6 +117,6 @@ class GlobalCover {
 };
 
 // Bytes of GPU memory the passes allocate for a cube face size (plus the equirect export).
-double cover_gpu_bytes(int size);
+double cover_gpu_bytes(int size, Flow flow = Flow::steady);
 
 }  // namespace nephele::cover

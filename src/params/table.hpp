@@ -111,19 +111,20 @@ inline constexpr Parameter flow =
     text("flow", "steady", "steady|moving",
          "steady: one flow, one warp (a still map); moving: vortices that are born, drift with the zonal wind and "
          "die, and clouds carried along them: a cover for any --time (docs/algorithm.md, \"The moving flow\")",
-         generate | cover_sidecar);
-inline constexpr Parameter time = text(
-    "time", "2000-01-01T00:00Z", "YYYY-MM-DDTHH:MM[:SS]Z",
-    "moment of the cover (--flow moving), ISO 8601 UTC; the default is the flow's time 0", generate | cover_sidecar);
+         generate | bench_cover | cover_sidecar);
+inline constexpr Parameter time =
+    text("time", "2000-01-01T00:00Z", "YYYY-MM-DDTHH:MM[:SS]Z",
+         "moment of the cover (--flow moving), ISO 8601 UTC; the default is the flow's time 0",
+         generate | bench_cover | cover_sidecar);
 inline constexpr Parameter vortex_lifetime =
     real("vortex_lifetime", 96, 6, 2400, "hours",
          "--flow moving: life of a generation of vortices, from birth through its peak to death (cyclones: 2-5 days)",
-         generate | cover_sidecar);
+         generate | bench_cover | cover_sidecar);
 inline constexpr Parameter loop =
     real("loop", 0, 0, 87600, "hours",
          "--flow moving: the cover repeats after this time, seamlessly (0: never); the vortices' and the clouds' "
          "lifetimes and the flow's time nodes are rounded so that whole numbers of them fit",
-         generate | cover_sidecar);
+         generate | bench_cover | cover_sidecar);
 }  // namespace cover
 
 namespace scene {

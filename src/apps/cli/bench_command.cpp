@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "apps/cli/commands.hpp"
+#include "cover/moving_flow.hpp"
 #include "apps/cli/orbit_render.hpp"
 #include "params/table.hpp"
 #include "apps/cli/noise_options.hpp"
@@ -27,6 +28,9 @@ int bench_cover(const std::vector<std::string>& arguments) {
   profile_option.add(options);
   std::string curl_mode(params::cover::curl_mode.default_text);
   options.bind(params::cover::curl_mode, &curl_mode);
+  std::string flow(params::cover::flow.default_text);
+  options.bind(params::cover::flow, &flow);
+  options.bind(params::cover::time, &parameters.time);
   if (!options.parse(arguments)) {
     std::cout << options.help();
     return exit_ok;
@@ -35,11 +39,20 @@ int bench_cover(const std::vector<std::string>& arguments) {
   const auto mode = cover::parse_curl_mode(curl_mode);
   if (!mode) throw UsageError(params::cover::curl_mode.option(), curl_mode, params::cover::curl_mode.range_text());
   parameters.curl_mode = *mode;
+  const auto flow_kind = cover::parse_flow(flow);
+  if (!flow_kind) throw UsageError(params::cover::flow.option(), flow, params::cover::flow.range_text());
+  parameters.flow = *flow_kind;
+  try {
+    cover::hours_since_epoch(parameters.time);
+  } catch (const std::invalid_argument&) {
+    throw UsageError(params::cover::time.option(), parameters.time, std::string(params::cover::time.allowed));
+  }
   validate_cover_parameters(parameters);
   const std::vector<int> sizes = parse_number_list<int>("--sizes", sizes_text, 1, 16384, true);
   gpu::EglContext context;
-  for (int s : sizes) cover::check_cover_fits(context, s, "--sizes");
+  for (int s : sizes) cover::check_cover_fits(context, s, "--sizes", parameters.flow);
   std::printf("device: %s (%s)\n", context.info().renderer.c_str(), context.info().version.c_str());
+  std::printf("flow: %s\n", cover::flow_name(parameters.flow));
   std::printf("K = %d steps, %s curl%s, potential %d octaves, density %d octaves; median of %d runs\n",
               parameters.iterations, cover::curl_mode_name(parameters.curl_mode),
               parameters.curl_mode == cover::CurlMode::spline

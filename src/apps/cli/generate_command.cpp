@@ -154,7 +154,7 @@ int run_generate(const std::vector<std::string>& arguments) {
   if (verbose)
     std::cerr << "renderer: " << context.info().renderer << " (" << context.info().version << ", EGL "
               << context.info().platform << ")\n";
-  cover::check_cover_fits(context, parameters.size);
+  cover::check_cover_fits(context, parameters.size, "--size", parameters.flow);
 
   std::error_code error;
   std::filesystem::create_directories(directory, error);
