@@ -15,6 +15,7 @@
 #include "params/field_binding.hpp"
 #include "params/table.hpp"
 #include "regional/sites.hpp"
+#include "render/orbit_renderer.hpp"
 #include "render/scene_renderer.hpp"
 
 namespace nephele {
@@ -340,6 +341,16 @@ TEST_CASE("a camera position given or left to the viewpoint moves between scene,
   CHECK(state.camera.heading_deg == bantiger->heading_deg);
   CHECK(state.camera.pitch_deg == 4);
   CHECK(state.camera.fov_deg == 41);
+
+  // The orbit camera takes the point below it, heading, pitch and fov from the camera by the
+  // same parameters (its altitude is the caller's conversion).
+  render::OrbitCamera orbit;
+  params::copy_bound_fields(render::field_bindings(state.camera), render::field_bindings(orbit));
+  CHECK(orbit.latitude_deg == state.camera.latitude_deg);
+  CHECK(orbit.longitude_deg == state.camera.longitude_deg);
+  CHECK(orbit.heading_deg == state.camera.heading_deg);
+  CHECK(orbit.pitch_deg == 4);
+  CHECK(orbit.fov_deg == 41);
 }
 
 }  // namespace nephele

@@ -16,6 +16,15 @@
 #include "shader_math/shader_math.hpp"
 
 namespace nephele::render {
+
+std::vector<params::FieldBinding> field_bindings(OrbitCamera& c) {
+  namespace sc = params::scene;
+  return {{&sc::latitude, &c.latitude_deg},
+          {&sc::longitude, &c.longitude_deg},
+          {&sc::heading, &c.heading_deg},
+          {&sc::pitch, &c.pitch_deg},
+          {&sc::fov, &c.fov_deg}};
+}
 namespace {
 
 constexpr double degree = M_PI / 180.0;

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/image.hpp"
+#include "params/field_binding.hpp"
 #include "render/cloud_renderer.hpp"
 
 namespace nephele::render {
@@ -23,6 +24,12 @@ struct OrbitCamera {
   double fov_deg = 70;                         // horizontal field of view
   int width = 1280, height = 720;
 };
+
+// The orbit camera's fields by the parameters that declare them: the point below it by the
+// camera's position (params::scene::latitude, longitude), heading, pitch and fov; so that the
+// viewer's camera becomes an orbit camera through the table (its height, above the ellipsoid,
+// becomes altitude_m above the sphere by the caller's rule).
+std::vector<params::FieldBinding> field_bindings(OrbitCamera& camera);
 
 // The top of the atmosphere above the planet's sphere (atmosphere.glsl's ATMOSPHERE_THICKNESS),
 // and whether a cloud shell from base_m, thickness_m thick, ends below it: the rule the

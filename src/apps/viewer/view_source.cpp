@@ -123,14 +123,12 @@ render::RenderResult OrbitSource::render(const ViewState& state, int width, int 
     }
     cover_key_ = key;
   }
+  // Position, heading, pitch and fov through the table; the orbit view's range starts at 1 m
+  // above its sphere.
   render::OrbitCamera camera;
-  camera.latitude_deg = state.camera.latitude_deg;
-  camera.longitude_deg = state.camera.longitude_deg;
-  // The orbit view's range starts at 1 m above its sphere.
+  render::Camera view = state.camera;
+  params::copy_bound_fields(render::field_bindings(view), render::field_bindings(camera));
   camera.altitude_m = std::clamp(state.camera.height_m, 1.0, params::scene::altitude_km.max * 1000.0);
-  camera.heading_deg = state.camera.heading_deg;
-  camera.pitch_deg = state.camera.pitch_deg;
-  camera.fov_deg = state.camera.fov_deg;
   camera.width = width;
   camera.height = height;
   render::RenderResult result = renderer_->render(camera, core::parse_utc_time(state.time));
