@@ -36,6 +36,7 @@ GlobalCover::GlobalCover(const CoverParameters& parameters)
                                         {"CURL_MOVING", moving(parameters) ? "1" : "0"}}),
       warp_program_("cover/warp.comp", cover::warp_defines(parameters.integrator, parameters.curl_mode)),
       density_program_("cover/cover_density.comp", {{"MOVING_LAYERS", moving(parameters) ? "1" : "0"}}),
+      clock_(moving(parameters) ? frame_clock(parameters, hours_since_epoch(parameters.time)) : FrameClock{}),
       identity_field_(gpu::Texture::cube(parameters.size, GL_RGBA32F)),
       curl_field_(gpu::Texture::cube(parameters.size, GL_RGBA32F)),
       warp_field_(gpu::Texture::cube(parameters.size, GL_RGBA32F)),
@@ -66,11 +67,12 @@ void GlobalCover::run() {
 
 void GlobalCover::set_time(const std::string& iso_time) {
   parameters_.time = iso_time;
+  clock_ = frame_clock(parameters_, hours_since_epoch(iso_time));
   splines_current_ = false;  // run_moving_splines keeps the grids of nodes the new window shares
 }
 
 void GlobalCover::run_moving_splines() {
-  const FrameClock clock = frame_clock(parameters_, hours_since_epoch(parameters_.time));
+  const FrameClock& clock = clock_;
   timed("spline", [&] {
     const int cells = parameters_.curl_size;
     const int margin = glsl::SPLINE_MARGIN;
@@ -90,6 +92,9 @@ void GlobalCover::run_moving_splines() {
     gpu::Texture samples;
     const gpu::ComputeProgram& sampler = *moving_spline_programs_[0];
     const gpu::ComputeProgram& prefilter = *moving_spline_programs_[1];
+    glsl::set_uniform(sampler, "u_curl", curl_params(parameters_));
+    sampler.set("u_noise_offset", potential_offset(parameters_));
+    sampler.set("u_cells", cells);
     for (int k = 0; k < clock.nodes; ++k) {
       const std::int64_t node = clock.first_node + k;
       if (flow_splines_.id() && node >= splines_first_node_ && node < splines_first_node_ + splines_nodes_) {
@@ -100,11 +105,8 @@ void GlobalCover::run_moving_splines() {
       }
       if (!samples.id()) samples = gpu::Texture::layered(samples_extent, samples_extent, 6, GL_RGBA32F);
       const NodeTime at = node_time(parameters_, node);
-      glsl::set_uniform(sampler, "u_curl", curl_params(parameters_));
-      sampler.set("u_noise_offset", potential_offset(parameters_));
       glsl::set_uniform(sampler, "u_motion", at.motion);
       sampler.set("u_node_time", at.time);
-      sampler.set("u_cells", cells);
       samples.bind_image(shader_bindings::cover_curl_spline::samples, GL_WRITE_ONLY);
       sampler.dispatch_covering(samples_extent, samples_extent, 6);
       gpu::image_barrier();
@@ -122,7 +124,7 @@ void GlobalCover::run_moving_splines() {
 }
 
 void GlobalCover::run_moving_warp() {
-  const FrameClock clock = frame_clock(parameters_, hours_since_epoch(parameters_.time));
+  const FrameClock& clock = clock_;
   const bool spline = parameters_.curl_mode == CurlMode::spline;
   if (spline && !splines_current_) run_moving_splines();
   timed("warp", [&] {
@@ -196,7 +198,7 @@ void GlobalCover::run_curl() {
   if (spline && !spline_coefficients_.id()) run_spline();
   timed("curl", [&] {
     if (moving(parameters_)) {
-      const FrameClock clock = frame_clock(parameters_, hours_since_epoch(parameters_.time));
+      const FrameClock& clock = clock_;
       curl_program_.set("u_time", clock.time);
       if (parameters_.curl_mode == CurlMode::spline) {
         if (!splines_current_) run_moving_splines();
@@ -351,7 +353,7 @@ void GlobalCover::run_density() {
     if (!surface_bias_.id()) upload_surface_bias();
     namespace density = shader_bindings::cover_cover_density;
     if (moving(parameters_)) {
-      const FrameClock clock = frame_clock(parameters_, hours_since_epoch(parameters_.time));
+      const FrameClock& clock = clock_;
       glsl::set_uniform(density_program_, "u_cover",
                         layer_density_params(parameters_, clock.young_layer - 1, clock.layers_in_loop));
       glsl::set_uniform(density_program_, "u_young_cover",

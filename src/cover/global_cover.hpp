@@ -97,6 +97,7 @@ class GlobalCover {
   gpu::ComputeProgram warp_program_;     // the integrator's and curl mode's variant
   gpu::ComputeProgram density_program_;  // with MOVING_LAYERS for --flow moving
   gpu::ComputeProgram remap_program_{"cover/cover_remap.comp"};
+  FrameClock clock_;  // --flow moving: the frame's clock at parameters_.time (set_time renews it)
   std::unique_ptr<gpu::ComputeProgram> moving_warp_program_;        // --flow moving
   std::unique_ptr<gpu::ComputeProgram> moving_spline_programs_[2];  // its samples, their prefilter
   gpu::Texture flow_splines_;            // --flow moving, curl mode spline: 6 layers per time node

@@ -3,7 +3,6 @@
 #include <iostream>
 
 #include "apps/cli/commands.hpp"
-#include "cover/moving_flow.hpp"
 #include "apps/cli/orbit_render.hpp"
 #include "params/table.hpp"
 #include "apps/cli/noise_options.hpp"
@@ -39,14 +38,7 @@ int bench_cover(const std::vector<std::string>& arguments) {
   const auto mode = cover::parse_curl_mode(curl_mode);
   if (!mode) throw UsageError(params::cover::curl_mode.option(), curl_mode, params::cover::curl_mode.range_text());
   parameters.curl_mode = *mode;
-  const auto flow_kind = cover::parse_flow(flow);
-  if (!flow_kind) throw UsageError(params::cover::flow.option(), flow, params::cover::flow.range_text());
-  parameters.flow = *flow_kind;
-  try {
-    cover::hours_since_epoch(parameters.time);
-  } catch (const std::invalid_argument&) {
-    throw UsageError(params::cover::time.option(), parameters.time, std::string(params::cover::time.allowed));
-  }
+  apply_flow(flow, parameters);
   validate_cover_parameters(parameters);
   const std::vector<int> sizes = parse_number_list<int>("--sizes", sizes_text, 1, 16384, true);
   gpu::EglContext context;

@@ -37,6 +37,17 @@ void validate_cover_parameters(const cover::CoverParameters& p) {
   check("density", p.density);
 }
 
+void apply_flow(const std::string& flow, cover::CoverParameters& p) {
+  const auto kind = cover::parse_flow(flow);
+  if (!kind) throw UsageError(params::cover::flow.option(), flow, params::cover::flow.range_text());
+  p.flow = *kind;
+  try {
+    cover::hours_since_epoch(p.time);
+  } catch (const std::invalid_argument&) {
+    throw UsageError(params::cover::time.option(), p.time, std::string(params::cover::time.allowed));
+  }
+}
+
 bool WarpOptions::binds(const params::Parameter& p) {
   namespace c = params::cover;
   return &p == &c::tolerance || &p == &c::max_substeps || &p == &c::noise_offset;
@@ -66,14 +77,7 @@ void WarpOptions::apply(cover::CoverParameters& p) const {
   if (!mode) throw UsageError(params::cover::curl_mode.option(), curl_mode_, params::cover::curl_mode.range_text());
   p.integrator = *integrator;
   p.curl_mode = *mode;
-  const auto flow = cover::parse_flow(flow_);
-  if (!flow) throw UsageError(params::cover::flow.option(), flow_, params::cover::flow.range_text());
-  p.flow = *flow;
-  try {
-    cover::hours_since_epoch(p.time);
-  } catch (const std::invalid_argument&) {
-    throw UsageError(params::cover::time.option(), p.time, std::string(params::cover::time.allowed));
-  }
+  apply_flow(flow_, p);
   if (p.flow == cover::Flow::moving && options_ != nullptr) {
     // The moving flow integrates with RK4 on the spline grids of its time nodes or on the
     // procedural flow: an option that asks for another way is refused, not ignored.

@@ -12,6 +12,10 @@ void add_cover_options(Options& options, cover::CoverParameters& p, unsigned use
 // Checks that span several options; throws UsageError.
 void validate_cover_parameters(const cover::CoverParameters& p);
 
+// The flow (--flow steady|moving) and the cover's time (--time) into `p`: throws UsageError
+// naming the option for a word or a time it does not take.
+void apply_flow(const std::string& flow, cover::CoverParameters& p);
+
 // How the warp is solved, --integrator, --curl-mode, --tolerance, --max-substeps (unless
 // include_integrator is false), and --noise-offset (docs/numerics.md); with include_integrator
 // also the flow, --flow and --time (cover/moving_flow.hpp). Values that Options
