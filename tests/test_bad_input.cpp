@@ -244,8 +244,15 @@ TEST_CASE("render messages name the option typed or the scene file's key", "[bad
   std::ofstream(good) << R"({"view": "gurten", "time": "2024-02-31T12:00Z", "outputs": ["a.png"]})";
   const fs::path fine = dir.path / "fine.json";
   std::ofstream(fine) << R"({"view": "gurten", "time": "2024-02-28T12:00Z", "outputs": ["a.png"]})";
+  const fs::path drifting = dir.path / "drifting.json";
+  std::ofstream(drifting) << R"({"view": "gurten", "flow": "drifting", "outputs": ["a.png"]})";
   const std::string png = " --out " + (dir.path / "x.png").string();
   const std::pair<std::string, std::string> cases[] = {
+      {"render --view gurten --flow drifting" + png, "nephele: --flow: 'drifting'"},
+      {"render --scene " + drifting.string() + " --out " + dir.path.string(),
+       "nephele: " + drifting.string() + ": 'flow': 'drifting' is not a flow (allowed: steady, moving)"},
+      // The orbit view's cover is either read (--cover) or made with a flow, not both.
+      {"render --view orbit --flow steady --cover " + dir.path.string() + png, "nephele: --flow: "},
       {"render --view nowhere" + png, "nephele: --view: 'nowhere'"},
       {"render --scene " + scene.string() + " --out " + dir.path.string(),
        "nephele: " + scene.string() + ": 'view': 'nowhere'"},

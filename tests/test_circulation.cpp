@@ -7,6 +7,7 @@
 #include <random>
 #include <vector>
 
+#include "steady_cover.hpp"
 #include "cover/cover_parameters.hpp"
 #include "cover_texels.hpp"
 #include "shader_math/shader_math.hpp"
@@ -80,7 +81,7 @@ TEST_CASE("the flow's vortices are concentrated in the storm tracks by the envel
   // variation of A inside the bands (A >= 0.94 in 45-55, <= 0.41 in 0-10); sampling 3000 points
   // a band leaves a few percent, so [2.1, 2.8] tests the factor.
   for (uint32_t seed : {1u, 7u}) {
-    cover::CoverParameters p;
+    cover::CoverParameters p = test::steady_cover();
     p.seed = seed;
     CurlParams focused = cover::curl_params(p);
     focused.prevailing = 0.0f;
@@ -102,7 +103,7 @@ TEST_CASE("the cyclonic depth marks cyclonic vorticity in both hemispheres", "[f
   // parameter's sign, so the cyclonic vorticity zeta sign(lat) is high where the depth c is.
   // The relation is not one to one (zeta is the Laplacian of the stream function, c the
   // function itself): the correlation is asked to be clearly positive, > 0.3, in each hemisphere.
-  cover::CoverParameters p;
+  cover::CoverParameters p = test::steady_cover();
   const CurlParams c = cover::curl_params(p);
   std::mt19937 rng(5);
   std::vector<double> depth[2], cyclonic[2];
@@ -126,7 +127,7 @@ TEST_CASE("cyclones are cloudier than anticyclones, and the cyclone cloudiness m
   // close (measured 0.05 apart at k = 0); with the default k = 0.5 the cyclones must be
   // clearly cloudier: more than 0.12 apart (measured 0.17), and 0.08 more than without.
   auto gap = [](float cloudiness) {
-    cover::CoverParameters p;
+    cover::CoverParameters p = test::steady_cover();
     p.size = 48;
     p.curl_size = 48;
     p.cyclone_cloudiness = cloudiness;
@@ -152,7 +153,7 @@ TEST_CASE("cyclones are cloudier than anticyclones, and the cyclone cloudiness m
 TEST_CASE("the storm tracks follow the season of --month, as the latitude profile does", "[fast][curl][climate]") {
   // The annual mean keeps its envelope to the bit.
   CHECK(cover::storm_track_shift(0) == 0.0);
-  cover::CoverParameters p;
+  cover::CoverParameters p = test::steady_cover();
   CHECK(cover::curl_params(p).storm_track_shift == 0.0f);
   // August: the northern track at 50 + seasonal_shift_deg(50, 8), about 3 degrees north; the
   // southern one (the other root of A(z - s)'s peak, z - s = -sin 50) moves north by about as

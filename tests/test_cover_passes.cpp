@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstring>
 
+#include "steady_cover.hpp"
 #include "cover/global_cover.hpp"
 #include "curl_bounds.hpp"
 #include "cube_fields.hpp"
@@ -53,7 +54,7 @@ static_assert(kFractionSlack >= kFractionSum);
 constexpr double kSeamMeanRatio = 1.5;
 
 cover::CoverParameters small(int size, int iterations = 50) {
-  cover::CoverParameters p;
+  cover::CoverParameters p = test::steady_cover();
   p.size = size;
   p.iterations = iterations;
   // sfsim's scheme, which these passes are checked against (integrate_warp, warp_step).

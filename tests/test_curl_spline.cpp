@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <random>
 
+#include "steady_cover.hpp"
 #include "cover/curl_spline.hpp"
 #include "cover/global_cover.hpp"
 #include "cube_fields.hpp"
@@ -133,7 +134,7 @@ double great_circle(vec3 a, vec3 b) {
 
 // The whole cover at `size` per face in curl modes spline and procedural, otherwise the defaults.
 ModeComparison compare_modes(int size, int curl_size = cover::CoverParameters().curl_size) {
-  cover::CoverParameters p;
+  cover::CoverParameters p = test::steady_cover();
   p.size = size;
   p.curl_size = curl_size;
   std::vector<vec4> warp[2], curl;
@@ -173,7 +174,7 @@ TEST_CASE("explore: spline error against the procedural curl by curl size", "[.e
   for (const Variant v :
        {Variant{2, 2.0f, 0.3f}, Variant{1, 1.0f, 0.3f}, Variant{1, 0.5f, 0.3f}, Variant{2, 1.0f, 1.0f}}) {
     const int octaves = v.octaves;
-    cover::CoverParameters p;
+    cover::CoverParameters p = test::steady_cover();
     p.potential.octaves = octaves;
     p.potential.frequency = v.frequency;
     p.curl_smoothing = v.smoothing;
@@ -194,7 +195,7 @@ TEST_CASE("explore: spline error against the procedural curl by curl size", "[.e
 TEST_CASE("the spline pass, the curl pass and the warp in curl mode spline agree with their CPU twins",
           "[spline][gpu]") {
   test::test_context();
-  cover::CoverParameters p;
+  cover::CoverParameters p = test::steady_cover();
   p.size = 16;
   p.curl_size = 16;
   p.curl_mode = CurlMode::spline;  // rk4, 2 steps of 0.15: the defaults
@@ -266,7 +267,7 @@ TEST_CASE("the warp's first velocity taken from the curl pass gives the bits of 
   // run() starts RK4 from the curl pass's value at each identity texel (the same
   // spline_velocity of the same point); warping a copy of the identity map evaluates it instead.
   test::test_context();
-  cover::CoverParameters p;
+  cover::CoverParameters p = test::steady_cover();
   p.size = 24;
   p.curl_size = 16;
   p.curl_mode = CurlMode::spline;
@@ -352,7 +353,7 @@ TEST_CASE("the spline converges to the procedural curl at fourth order in the no
   // times the nodes for the same (docs/numerics.md, "The spline velocity"). The errors stay
   // above the reference's own float noise (about 1e-6 outside the polar caps, measured) by a
   // factor of 30 at 64 nodes.
-  cover::CoverParameters p;
+  cover::CoverParameters p = test::steady_cover();
   p.potential.octaves = 1;
   p.potential.frequency = 1.0f;
   const auto points = random_directions(4000, 7);
@@ -378,7 +379,7 @@ TEST_CASE("the spline converges to the procedural curl at fourth order in the no
 
 TEST_CASE("the spline warp at the default curl size agrees with the procedural warp", "[spline][gpu]") {
   test::test_context();
-  const cover::CoverParameters defaults;
+  const cover::CoverParameters defaults = test::steady_cover();
   REQUIRE(defaults.curl_size == 256);
   const ModeComparison c = compare_modes(32);
   // The velocity error of the GPU's spline (its coefficients, read back, through the CPU twin:
@@ -419,7 +420,7 @@ TEST_CASE("the spline warp at the default curl size agrees with the procedural w
 TEST_CASE("the smallest curl grid (4 nodes per face edge) gives a finite warp on the sphere", "[spline][extreme]") {
   // At 4 nodes the margin reaches face coordinates of -2.25 and 2.25: still ordinary directions.
   test::test_context();
-  cover::CoverParameters p;
+  cover::CoverParameters p = test::steady_cover();
   p.size = 8;
   p.curl_size = 4;
   cover::GlobalCover cover(p);

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <random>
 
+#include "steady_cover.hpp"
 #include "cover/global_cover.hpp"
 #include "cover/gpu_reductions.hpp"
 #include "cover/solid_angle.hpp"
@@ -96,7 +97,7 @@ TEST_CASE("the GPU calibration gives the CPU's threshold and its fraction within
 
 TEST_CASE("the GPU calibration of a cover's density matches the CPU's on the same field", "[gpu-reduce]") {
   test::test_context();
-  cover::CoverParameters p;
+  cover::CoverParameters p = test::steady_cover();
   p.size = 48;
   p.iterations = 10;
   p.profile = cover::flat_profile();
@@ -113,7 +114,7 @@ TEST_CASE("the density and remap passes reduce the range and band fractions the 
   // The passes reduce as they write (strips of 32 texels: size 45 leaves a partial strip and
   // partial workgroups); the same integer sums in any order, so equal to the bit.
   test::test_context();
-  cover::CoverParameters p;
+  cover::CoverParameters p = test::steady_cover();
   p.size = 45;
   p.iterations = 10;
   cover::GlobalCover cover(p);
@@ -211,7 +212,7 @@ TEST_CASE("the GPU diagnosis gives the CPU's stiffness, folding and sub-step fig
   for (const Case c : {Case{40, 50, 0.006, cover::Integrator::euler}, Case{33, 30, 0.05, cover::Integrator::euler},
                        Case{24, 10, 0.006, cover::Integrator::adaptive}, Case{2, 5, 0.006, cover::Integrator::heun},
                        Case{1, 5, 0.006, cover::Integrator::euler}}) {
-    cover::CoverParameters p;
+    cover::CoverParameters p = test::steady_cover();
     p.size = c.size;
     p.iterations = c.iterations;
     p.step = c.step;
@@ -233,7 +234,7 @@ TEST_CASE("the GPU diagnosis finds the folds of a mirror image", "[gpu-reduce]")
   test::test_context();
   // A warp that mirrors x folds the whole sphere (J = -1); the CPU reference says the same.
   const int size = 20;
-  cover::CoverParameters p;
+  cover::CoverParameters p = test::steady_cover();
   p.size = size;
   cover::GlobalCover cover(p);
   cover.run_identity();

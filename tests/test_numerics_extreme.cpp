@@ -8,6 +8,7 @@
 #include <cstring>
 #include <limits>
 
+#include "steady_cover.hpp"
 #include "cover/global_cover.hpp"
 #include "cube_fields.hpp"
 #include "gl_support.hpp"
@@ -101,7 +102,7 @@ vec3 cpu_warp(const cover::CoverParameters& p, const std::vector<vec4>& curl, ve
 }
 
 struct VariantResult {
-  cover::CoverParameters parameters;
+  cover::CoverParameters parameters = test::steady_cover();
   std::vector<vec4> identity, warp;
   std::vector<float> cover;
   std::vector<vec3> points_gpu, points_cpu;
@@ -148,7 +149,7 @@ std::vector<VariantResult> check_every_variant(const cover::CoverParameters& bas
 }
 
 cover::CoverParameters small(int size = 8) {
-  cover::CoverParameters p;
+  cover::CoverParameters p = test::steady_cover();
   p.size = size;
   p.iterations = 10;
   p.step = 0.03f;

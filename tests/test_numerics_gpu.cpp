@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstring>
 
+#include "steady_cover.hpp"
 #include "cover/global_cover.hpp"
 #include "cube_fields.hpp"
 #include "gl_support.hpp"
@@ -56,7 +57,7 @@ static_assert(kCoverRounding >= 2 * 4 * kUlp / 0.5);
 constexpr double kAdaptiveVersusEuler = 0.2;
 
 cover::CoverParameters parameters(int size, Integrator integrator, CurlMode mode, int steps, float flow_time) {
-  cover::CoverParameters p;
+  cover::CoverParameters p = test::steady_cover();
   p.size = size;
   p.integrator = integrator;
   p.curl_mode = mode;
@@ -328,7 +329,7 @@ TEST_CASE("a stiff flow with large steps is reported for fixed-step schemes and 
 TEST_CASE("the default cover is within the stable step and neither reported as stiff nor folded",
           "[numerics][gpu][stiff]") {
   test::test_context();
-  cover::CoverParameters p;
+  cover::CoverParameters p = test::steady_cover();
   p.size = 64;
   cover::GlobalCover cover(p);
   cover.run();

@@ -174,8 +174,9 @@ TEST_CASE("every command's --help lists each option the table gives that command
 
 TEST_CASE("cover.json records every cover parameter of the table under its sidecar path", "[params][cli]") {
   test::TemporaryDirectory out;
-  // Adaptive, so that its tolerance and sub-step limit are recorded too.
-  const auto r = test::run("generate --size 8 --iterations 2 --integrator adaptive --quiet --out " + out.path.string());
+  // Adaptive (a steady flow's integrator), so that its tolerance and sub-step limit are recorded too.
+  const auto r = test::run("generate --size 8 --iterations 2 --flow steady --integrator adaptive --quiet --out " +
+                           out.path.string());
   REQUIRE(r.exit_code == 0);
   const json::Value sidecar = json::parse(test::read_file(out.path / "cover.json"));
   const json::Value& recorded = sidecar.at("parameters");
@@ -190,7 +191,11 @@ TEST_CASE("cover.json records every cover parameter of the table under its sidec
     // Float fields are written as the shortest decimal that reads back as the same float, so
     // they differ from the table's double default by at most half a float ulp (kFloatField).
     if (p->type == params::Type::text)
-      CHECK(value->as_string() == std::string(p == &params::cover::integrator ? "adaptive" : p->default_text));
+      CHECK(value->as_string() == std::string(p == &params::cover::integrator ? "adaptive"
+                                              : p == &params::cover::flow     ? "steady"
+                                              // auto is recorded as the mode it resolved to
+                                              : p == &params::cover::curl_mode ? "spline"
+                                                                               : p->default_text));
     else
       CHECK(value->as_number() == Approx(p == &params::cover::size         ? 8
                                          : p == &params::cover::iterations ? 2

@@ -236,6 +236,33 @@ TEST_CASE("a scene with weather files does not generate the global cover and one
   CHECK(contains(from_cover.passes, "weather_field (global cover)"));
 }
 
+TEST_CASE("a scene's global cover is that of its time with the moving flow and one map at every time with the steady",
+          "[render]") {
+  test::test_context();
+  Scene scene = small_summer_scene();
+  scene.weather.clear();
+  scene.cover_size = 16;
+  auto cover_at = [&](const std::string& flow, const std::string& time) {
+    scene.cover_flow = flow;
+    scene.time = time;
+    const cover::CoverParameters p = render::scene_cover_parameters(scene);
+    CHECK(p.time == time);
+    CHECK(cover::flow_name(p.flow) == flow);
+    return render::make_global_cover(p).texels;
+  };
+  // Six hours apart: the moving clouds have moved (the cover's RMS change between frames 3 h
+  // apart is about half its spread, docs/climate.md), the steady map is the same to the bit.
+  const auto moving_noon = cover_at("moving", "2026-06-21T12:00Z"),
+             moving_evening = cover_at("moving", "2026-06-21T18:00Z");
+  const auto steady_noon = cover_at("steady", "2026-06-21T12:00Z"),
+             steady_evening = cover_at("steady", "2026-06-21T18:00Z");
+  CHECK(steady_noon == steady_evening);
+  int changed = 0;
+  for (std::size_t k = 0; k < moving_noon.size(); ++k) changed += moving_noon[k] != moving_evening[k];
+  CHECK(changed > int(moving_noon.size()) / 2);
+  CHECK(moving_noon != steady_noon);
+}
+
 TEST_CASE("tone mapping encodes black as 0 and saturates to 1 without exceeding it", "[fast][render]") {
   core::ImageData hdr{3, 1, 4, {0, 0, 0, 0, 0.1f, 0.1f, 0.1f, 0, 1e6f, 1e6f, 1e6f, 1}};
   const auto ldr = render::tone_map(hdr, 4.0);

@@ -298,8 +298,8 @@ TEST_CASE("report and generate reject bad numerics options with exit code 2 and 
 
 TEST_CASE("generate warns about a stiff warp and records it in cover.json while adaptive sub-steps", "[report][cli]") {
   const std::string stiff =
-      "--size 32 --curl-frequency 64 --curl-octaves 1 --curl-strength 0.1 --iterations 6 --step 0.05 --curl-mode "
-      "sampled";
+      "--flow steady --size 32 --curl-frequency 64 --curl-octaves 1 --curl-strength 0.1 --iterations 6 --step 0.05 "
+      "--curl-mode sampled";
   // Warnings other than the stiffness one: the texels of size 32 cannot resolve this flow's
   // stretching, so the fold warning stands beside it.
   auto stiffness_warnings = [](const json::Value& numerics) {

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "steady_cover.hpp"
 #include "cli_support.hpp"
 #include "core/error.hpp"
 #include "cover_texels.hpp"
@@ -99,7 +100,7 @@ TEST_CASE("the density pass moves clouds from a continent's desert to the deck o
   // The cloudy fraction (cover > 0) in a box inside the desert and in a box off the west coast,
   // with and without the mask; the calibration keeps each band's coverage, so the clouds move.
   auto fractions = [](bool with_mask) {
-    cover::CoverParameters p;
+    cover::CoverParameters p = test::steady_cover();
     p.size = 64;
     p.curl_size = 64;
     if (with_mask) p.surface = std::make_shared<const cover::SurfaceMask>(synthetic(continent));

@@ -272,8 +272,10 @@ TEST_CASE("a scene's parameters reach the viewer's state and the renderer's sett
   scene.fov_deg = 33;
   scene.powder = 0.25;
   scene.resolution_divisor = 3;
+  scene.cover_flow = "steady";
   const viewer::ViewState state = viewer::state_of_scene(scene);
   CHECK(state.time == scene.time);
+  CHECK(state.flow == "steady");
   CHECK(state.seed == 77u);
   CHECK(state.cover_size == 64);
   CHECK(state.view_steps == 9);
@@ -285,6 +287,7 @@ TEST_CASE("a scene's parameters reach the viewer's state and the renderer's sett
   CHECK(back.view_steps == 9);
   CHECK(back.pitch_deg == 12);
   CHECK(back.fov_deg == 33);
+  CHECK(back.cover_flow == "steady");
   // The renderer's settings: numbers converted to their fields' types.
   const render::RenderSettings settings = render::render_settings(scene);
   CHECK(settings.view_steps == 9);
@@ -351,6 +354,25 @@ TEST_CASE("a camera position given or left to the viewpoint moves between scene,
   CHECK(orbit.heading_deg == state.camera.heading_deg);
   CHECK(orbit.pitch_deg == 4);
   CHECK(orbit.fov_deg == 41);
+}
+
+TEST_CASE("the viewer's time moves by whole steps, and its cover is that of its flow at its time", "[fast][viewer]") {
+  viewer::ViewState state;
+  state.time = "2026-06-21T16:00Z";
+  CHECK(state.flow == std::string(params::cover::flow.default_text));
+  cover::CoverParameters p = viewer::cover_of(state);
+  CHECK(p.flow == cover::Flow::moving);
+  CHECK(p.time == state.time);
+  viewer::advance_time(state, 1.5);
+  CHECK(state.time == "2026-06-21T17:30:00Z");
+  CHECK(viewer::cover_of(state).time == state.time);
+  viewer::advance_time(state, -48);
+  CHECK(state.time == "2026-06-19T17:30:00Z");
+  // Before 1970 the clock stops at its start rather than wrapping.
+  viewer::advance_time(state, -1e9);
+  CHECK(state.time == "1970-01-01T00:00:00Z");
+  state.flow = "steady";
+  CHECK(viewer::cover_of(state).flow == cover::Flow::steady);
 }
 
 }  // namespace nephele

@@ -62,6 +62,7 @@ class GlobalCover {
   const cover::WarpDiagnostics& diagnose();
   const std::optional<cover::WarpDiagnostics>& diagnostics() const { return diagnostics_; }
 
+  // The parameters as run: the curl mode resolved (never automatic).
   const CoverParameters& parameters() const { return parameters_; }
   const gpu::Texture& identity_field() const { return identity_field_; }
   const gpu::Texture& curl_field() const { return curl_field_; }
@@ -118,6 +119,9 @@ class GlobalCover {
 };
 
 // Bytes of GPU memory the passes allocate for a cube face size (plus the equirect export).
+// The curl mode a cover runs with: `p.curl_mode`, or for automatic spline (steady flow) or the
+// cheaper of spline and procedural (moving flow), by their counts of curl evaluations.
+CurlMode resolved_curl_mode(const CoverParameters& p);
 double cover_gpu_bytes(int size, Flow flow = Flow::steady);
 
 }  // namespace nephele::cover

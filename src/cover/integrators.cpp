@@ -28,6 +28,7 @@ const char* curl_mode_name(CurlMode mode) {
     case CurlMode::sampled: return "sampled";
     case CurlMode::procedural: return "procedural";
     case CurlMode::spline: return "spline";
+    case CurlMode::automatic: return "auto";
   }
   return "?";
 }
@@ -52,6 +53,7 @@ std::optional<Integrator> parse_integrator(const std::string& name) {
 std::optional<CurlMode> parse_curl_mode(const std::string& name) {
   for (CurlMode m : all_curl_modes())
     if (name == curl_mode_name(m)) return m;
+  if (name == curl_mode_name(CurlMode::automatic)) return CurlMode::automatic;
   return std::nullopt;
 }
 

@@ -11,15 +11,16 @@ namespace nephele::cover {
 // Values equal the INTEGRATOR_* numbers of warp_step.glsl.
 enum class Integrator { euler = 0, heun = 1, rk4 = 2, geodesic = 3, adaptive = 4 };
 // Where the warp takes the velocity: bilinearly from the curl cube map, the procedural curl
-// evaluated at the exact point, or the cubic B-spline of the curl grid (curl_spline.glsl).
-enum class CurlMode { sampled, procedural, spline };
+// evaluated at the exact point, or the cubic B-spline of the curl grid (curl_spline.glsl);
+// automatic ("auto") is resolved before the passes by resolved_curl_mode (cover/global_cover.hpp).
+enum class CurlMode { sampled, procedural, spline, automatic };
 
 const char* integrator_name(Integrator integrator);
 const char* curl_mode_name(CurlMode mode);
 std::optional<Integrator> parse_integrator(const std::string& name);
 std::optional<CurlMode> parse_curl_mode(const std::string& name);
 const std::vector<Integrator>& all_integrators();
-const std::vector<CurlMode>& all_curl_modes();
+const std::vector<CurlMode>& all_curl_modes();  // the three a warp can run (not automatic)
 
 // Order of convergence on a smooth flow (adaptive: that of the solution it advances with).
 int integrator_order(Integrator integrator);

@@ -28,6 +28,15 @@ json::Value scene_sidecar(const SceneRender& r, const regional::Scene& scene) {
   root.set("time", scene.time);
   root.set("sun_elevation_deg", r.render.sun_elevation_deg);
   root.set("weather_source", r.weather_source);
+  if (r.weather_source == "global cover") {
+    // The cover the scene made: what `nephele generate` makes again with these options.
+    json::Value cover;
+    cover.set("size", scene.cover_size);
+    cover.set("seed", static_cast<double>(scene.seed));
+    cover.set("flow", scene.cover_flow);
+    cover.set("time", scene.time);
+    root.set("global_cover", cover);
+  }
   json::Value weather;
   weather.set("cloud_cover", r.weather_at_camera.cloud_cover);
   weather.set("cloud_low", r.weather_at_camera.cloud_low);

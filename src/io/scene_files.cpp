@@ -112,6 +112,8 @@ Scene parse_scene(const std::string& text, const std::string& source, const std:
       s.exposure = k.number(v, key);
     } else if (key == "cover_size") {
       s.cover_size = k.integer(v, key);
+    } else if (key == "flow") {
+      s.cover_flow = k.string(v, key);
     } else if (key == "outputs") {
       s.outputs = k.strings(v, key);
     } else if (key == "description") {

@@ -140,6 +140,7 @@ const std::vector<const Parameter*>& all() {
       &run::report_no_render,
       &run::report_budget_ms,
       &run::view_record,
+      &run::time_step,
       &run::view_frames,
       &run::bench_view_size,
       &run::bench_view_repeat,

@@ -90,9 +90,11 @@ inline constexpr Parameter surface_weight =
 inline constexpr Parameter integrator = text("integrator", "rk4", "euler|heun|rk4|geodesic|adaptive",
                                              "warp stepping rule", generate | cover_sidecar | viewer);
 inline constexpr Parameter curl_mode =
-    text("curl_mode", "spline", "sampled|procedural|spline",
+    text("curl_mode", "auto", "auto|sampled|procedural|spline",
          "velocity of the warp: sampled (bilinear from the curl cube map), procedural (exact point) or spline (C2 "
-         "cubic B-spline of a curl grid of --curl-size per face)",
+         "cubic B-spline of a curl grid of --curl-size per face); auto: spline for the steady flow, and for the "
+         "moving flow the cheaper of spline and procedural by their count of curl evaluations (procedural below "
+         "about 180 texels per face at the default --curl-size)",
          generate | bench_cover | cover_sidecar);
 inline constexpr Parameter curl_size =
     integer("curl_size", 256, 4, 1024, "nodes",
@@ -108,10 +110,11 @@ inline constexpr Parameter noise_offset =
          "shift of every noise layer by (d, d, d); precision is kept by a periodic lattice",
          generate | report | cover_sidecar);
 inline constexpr Parameter flow =
-    text("flow", "steady", "steady|moving",
+    text("flow", "moving", "steady|moving",
          "steady: one flow, one warp (a still map); moving: vortices that are born, drift with the zonal wind and "
-         "die, and clouds carried along them: a cover for any --time (docs/algorithm.md, \"The moving flow\")",
-         generate | bench_cover | cover_sidecar);
+         "die, and clouds carried along them: a cover for any --time (docs/algorithm.md, \"The moving flow\"); render "
+         "and view show the cover of their scene's --time",
+         generate | bench_cover | cover_sidecar | render | scene_file | viewer);
 inline constexpr Parameter time =
     text("time", "2000-01-01T00:00Z", "YYYY-MM-DDTHH:MM[:SS]Z",
          "moment of the cover (--flow moving), ISO 8601 UTC; the default is the flow's time 0",
@@ -459,6 +462,11 @@ inline constexpr Parameter report_render_size =
 inline constexpr Parameter report_no_render = flag("no_render", "skip the render sweep", report);
 inline constexpr Parameter view_record =
     text("record", "", "DIR", "write every displayed frame as DIR/frame_NNNNNN.png (created if missing)", viewer);
+inline constexpr Parameter time_step =
+    real("time_step", 1, 0.01, 240, "hours",
+         "how far the keys , and . move the time, and T's playback per frame (the sun and, with --flow moving, the "
+         "clouds)",
+         viewer);
 inline constexpr Parameter view_frames =
     integer("frames", 0, 0, 1e9, "frames",
             "close the window after this many frames (0: when it is closed); for scripts", viewer);

@@ -57,7 +57,8 @@ std::vector<params::FieldBinding> field_bindings(Scene& s) {
           {&sc::terrain, &s.terrain},
           {&sc::fog_top, &s.fog_top_m},
           {&sc::exposure, &s.exposure},
-          {&sc::cover_size, &s.cover_size}};
+          {&sc::cover_size, &s.cover_size},
+          {&params::cover::flow, &s.cover_flow}};
 }
 
 void give_step(Scene& s, const params::Parameter& step, int value) {
@@ -138,6 +139,10 @@ void validate_scene(const Scene& s, const std::string& source, const KeyOptions&
   check_range(where("fog_top"), s.fog_top_m, params::scene::fog_top);
   check_range(where("powder"), s.powder, params::scene::powder);
   check_range(where("cover_size"), s.cover_size, params::scene::cover_size);
+  const std::vector<std::string> flows = params::cover::flow.words();
+  if (std::find(flows.begin(), flows.end(), s.cover_flow) == flows.end())
+    throw SceneError(where("flow") + ": '" + s.cover_flow +
+                     "' is not a flow (allowed: " + params::cover::flow.range_text() + ")");
   try {
     core::parse_utc_time(s.time);
   } catch (const std::invalid_argument& e) {

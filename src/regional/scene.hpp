@@ -53,7 +53,9 @@ struct Scene {
   double fog_top_m = params::scene::fog_top.default_number;  // sea of fog's top, m above sea level
   double exposure = params::scene::exposure.default_number;
   int cover_size = params::scene::cover_size.default_int();  // global cover size when no weather is given
-  std::vector<std::string> outputs;                          // file names (png, exr); --scene renders into --out DIR
+  // The global cover's flow (cover/flow_kind.hpp); a moving cover is that of `time`.
+  std::string cover_flow{params::cover::flow.default_text};
+  std::vector<std::string> outputs;  // file names (png, exr); --scene renders into --out DIR
 };
 
 // The fields of `scene` that hold one parameter of the table each (not the view, whose meaning

@@ -38,11 +38,20 @@ GlobalCoverFaces make_global_cover(const cover::CoverParameters& parameters) {
   return {parameters.size, cover.cover_field().read()};
 }
 
-cover::CoverParameters scene_cover_parameters(const regional::Scene& scene) {
+cover::CoverParameters view_cover_parameters(int size, std::uint32_t seed, const std::string& flow,
+                                             const std::string& time) {
   cover::CoverParameters parameters;
-  parameters.size = scene.cover_size;
-  parameters.seed = scene.seed;
+  parameters.size = size;
+  parameters.seed = seed;
+  const std::optional<cover::Flow> kind = cover::parse_flow(flow);
+  if (!kind) throw std::invalid_argument("view_cover_parameters: '" + flow + "' is not a flow");
+  parameters.flow = *kind;
+  parameters.time = time;
   return parameters;
+}
+
+cover::CoverParameters scene_cover_parameters(const regional::Scene& scene) {
+  return view_cover_parameters(scene.cover_size, scene.seed, scene.cover_flow, scene.time);
 }
 
 PreparedScene prepare_scene(const regional::Scene& scene, const std::vector<regional::WeatherSeries>& weather) {

@@ -51,7 +51,13 @@ struct GlobalCoverFaces {
 };
 // Runs the cover passes with `parameters` and reads the cover back (current GL context).
 GlobalCoverFaces make_global_cover(const cover::CoverParameters& parameters);
-// The cover a scene makes when it names no weather: its cover_size and seed, the rest defaults.
+// The cover a view makes when it names no weather: `size` texels per face, the seed, and the
+// flow ("steady" or "moving", the table's words) at the view's ISO 8601 `time`, so that a
+// moving cover is that of the moment the sun lights; the rest defaults. render, its orbit view
+// and nephele view all make their cover here.
+cover::CoverParameters view_cover_parameters(int size, std::uint32_t seed, const std::string& flow,
+                                             const std::string& time);
+// The same for a scene: its cover_size, seed, cover_flow and time.
 cover::CoverParameters scene_cover_parameters(const regional::Scene& scene);
 
 // Need a current OpenGL 4.5 context. Throw regional::WeatherError / SceneError for bad input.

@@ -179,6 +179,7 @@ SweepResult run_sweep(const SweepOptions& o, const std::function<void(const std:
         }
         for (const Config& config : configs) {
           cover::CoverParameters p = o.base;
+          p.flow = cover::Flow::steady;  // the sweep is of the steady warp (its reference flow)
           p.size = size;
           p.integrator = integrator;
           p.curl_mode = mode;

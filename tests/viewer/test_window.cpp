@@ -15,6 +15,7 @@
 #include "apps/viewer/view_source.hpp"
 #include "apps/viewer/viewer.hpp"
 #include "cli_support.hpp"
+#include "core/time.hpp"
 #include "files/image_files.hpp"
 #include "regional/sites.hpp"
 #include "render/cloud_renderer.hpp"
@@ -44,6 +45,14 @@ viewer::ViewerOptions small_view() {
   scene.height = kHeight;
   scene.view_steps = 8;
   scene.light_steps = 2;
+  return options;
+}
+
+// The same with a cover of 32 texels per face, for tests that do not compare with a render of
+// the default scene (a moving cover of 128 takes about a second on llvmpipe; one of 32, 0.1 s).
+viewer::ViewerOptions small_cover_view() {
+  viewer::ViewerOptions options = small_view();
+  options.scene.cover_size = 32;
   return options;
 }
 
@@ -126,7 +135,7 @@ TEST_CASE("in orbit the window shows the image render --view orbit makes headles
 
 TEST_CASE("between 12 and 20 km the view cross-fades from the ground renderer to the orbit's, without a step",
           "[window][orbit]") {
-  Viewer v(small_view());  // for its GL context and its state
+  Viewer v(small_cover_view());  // for its GL context and its state
   viewer::go_to_viewpoint(v.state(), "orbit");
   viewer::fly(v.state(), 0, 0, 0);  // flying clears the viewpoint: the height decides
   viewer::ViewState state = v.state();
@@ -195,7 +204,7 @@ TEST_CASE("between 12 and 20 km the view cross-fades from the ground renderer to
 }
 
 TEST_CASE("a change renders a quarter-size preview in the next frame, then refines to full size", "[window]") {
-  Viewer v(small_view());
+  Viewer v(small_cover_view());
   v.set_panels_visible(false);
   refine(v);
   const long before = v.renders();
@@ -221,7 +230,7 @@ TEST_CASE("a change renders a quarter-size preview in the next frame, then refin
 }
 
 TEST_CASE("while the camera turns the preview marches a quarter of its pixels and reprojects the rest", "[window]") {
-  Viewer v(small_view());
+  Viewer v(small_cover_view());
   v.set_panels_visible(false);
   refine(v);
   auto has = [](const render::RenderResult& r, const std::string& prefix) {
@@ -274,7 +283,7 @@ TEST_CASE("while the camera turns the preview marches a quarter of its pixels an
 }
 
 TEST_CASE("the preview sizes march the preview steps and the full size the scene's", "[window]") {
-  viewer::ViewerOptions options = small_view();
+  viewer::ViewerOptions options = small_cover_view();
   options.scene.view_steps = 48;
   options.scene.light_steps = 12;
   Viewer v(options);
@@ -294,7 +303,7 @@ TEST_CASE("the preview sizes march the preview steps and the full size the scene
 }
 
 TEST_CASE("a mouse drag turns the heading by dx fov / width and the pitch by dy fov / width", "[window]") {
-  Viewer v(small_view());
+  Viewer v(small_cover_view());
   v.set_panels_visible(false);
   v.frame();
   GLFWwindow* window = v.window().handle();
@@ -319,7 +328,7 @@ TEST_CASE("a mouse drag turns the heading by dx fov / width and the pitch by dy 
 }
 
 TEST_CASE("W flies one flight step along the heading, PageUp climbs one, the scroll wheel zooms", "[window]") {
-  Viewer v(small_view());
+  Viewer v(small_cover_view());
   v.set_panels_visible(false);
   v.frame();
   GLFWwindow* window = v.window().handle();
@@ -348,7 +357,7 @@ TEST_CASE("W flies one flight step along the heading, PageUp climbs one, the scr
 }
 
 TEST_CASE("changing a panel's cover value makes the cover again and shows a different image", "[window]") {
-  Viewer v(small_view());
+  Viewer v(small_cover_view());
   v.set_panels_visible(false);
   v.set_capture(true);
   refine(v);
@@ -370,7 +379,7 @@ TEST_CASE("changing a panel's cover value makes the cover again and shows a diff
 
 TEST_CASE("F12 writes the shown render as a PNG of its size, and --record writes every frame", "[window]") {
   test::TemporaryDirectory out(true);
-  viewer::ViewerOptions options = small_view();
+  viewer::ViewerOptions options = small_cover_view();
   options.record_dir = out.path / "frames";
   Viewer v(options);
   refine(v);
@@ -415,6 +424,47 @@ TEST_CASE("nephele view COVER_DIR --record DIR --frames N shows a generated cove
   const auto bad = test::run("view " + out.path.string() + " --size 48x27 --frames 1 --no-cache");
   CHECK(bad.exit_code == 2);
   CHECK_THAT(bad.output, Catch::Contains("COVER_DIR"));
+}
+
+TEST_CASE("T plays the time: each frame after a render moves it by the time step, the moving cover made anew",
+          "[window]") {
+  viewer::ViewerOptions options = small_cover_view();
+  Viewer v(options);
+  v.set_panels_visible(false);
+  v.frame();
+  GLFWwindow* window = v.window().handle();
+  v.state().time_step_hours = 3;
+  const std::string start = v.state().time;
+  Viewer::on_key(window, GLFW_KEY_T, 0, GLFW_PRESS, 0);
+  REQUIRE(v.state().playing);
+  auto made_cover = [&] {
+    const auto& timings = v.last_render().timings_ms;
+    return std::any_of(timings.begin(), timings.end(), [](const auto& t) { return t.first == "global_cover"; });
+  };
+  // Each frame renders the moment shown and then moves on: three frames, nine hours. The first
+  // refines the moment already shown; each later one shows a new moment, its cover made anew.
+  for (int k = 0; k < 3; ++k) {
+    v.frame();
+    if (k > 0) CHECK(made_cover());
+  }
+  CHECK(core::parse_utc_time(v.state().time) - core::parse_utc_time(start) == 9 * 3600.0);
+  Viewer::on_key(window, GLFW_KEY_T, 0, GLFW_PRESS, 0);
+  CHECK_FALSE(v.state().playing);
+  const std::string paused = v.state().time;
+  v.frame();
+  CHECK(v.state().time == paused);
+  // Comma and period step back and forth by the time step.
+  Viewer::on_key(window, GLFW_KEY_COMMA, 0, GLFW_PRESS, 0);
+  CHECK(core::parse_utc_time(v.state().time) == core::parse_utc_time(paused) - 3 * 3600.0);
+  Viewer::on_key(window, GLFW_KEY_PERIOD, 0, GLFW_PRESS, 0);
+  CHECK(core::parse_utc_time(v.state().time) == core::parse_utc_time(paused));
+  // The steady cover is one map at every time: moving the time lights it anew, it is not made again.
+  v.state().flow = "steady";
+  refine(v);
+  Viewer::on_key(window, GLFW_KEY_PERIOD, 0, GLFW_PRESS, 0);
+  v.frame();
+  CHECK(v.renders() > 0);
+  CHECK_FALSE(made_cover());
 }
 
 }  // namespace nephele

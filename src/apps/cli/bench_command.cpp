@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "apps/cli/commands.hpp"
+#include "cover/global_cover.hpp"
 #include "apps/cli/orbit_render.hpp"
 #include "params/table.hpp"
 #include "apps/cli/noise_options.hpp"
@@ -46,8 +47,8 @@ int bench_cover(const std::vector<std::string>& arguments) {
   std::printf("device: %s (%s)\n", context.info().renderer.c_str(), context.info().version.c_str());
   std::printf("flow: %s\n", cover::flow_name(parameters.flow));
   std::printf("K = %d steps, %s curl%s, potential %d octaves, density %d octaves; median of %d runs\n",
-              parameters.iterations, cover::curl_mode_name(parameters.curl_mode),
-              parameters.curl_mode == cover::CurlMode::spline
+              parameters.iterations, cover::curl_mode_name(cover::resolved_curl_mode(parameters)),
+              cover::resolved_curl_mode(parameters) == cover::CurlMode::spline
                   ? (" of " + std::to_string(parameters.curl_size) + " nodes per face edge").c_str()
                   : "",
               parameters.potential.octaves, parameters.density.octaves, repeat);

@@ -194,7 +194,7 @@ int run_generate(const std::vector<std::string>& arguments) {
     return exit_ok;
   }
   // identity, (spline,) curl, warp, density, calibrate, coverage, diagnose, then the files.
-  const int stages = parameters.curl_mode == cover::CurlMode::spline ? 9 : 8;
+  const int stages = cover::resolved_curl_mode(parameters) == cover::CurlMode::spline ? 9 : 8;
   core::Progress progress("generate", stages, core::Progress::for_stderr(quiet));
   int stages_started = 0;
   cover.on_pass([&](const std::string& pass) { progress.update(stages_started++, pass); });

@@ -22,6 +22,7 @@
 #include "regional/scene.hpp"
 #include "render/orbit_renderer.hpp"
 #include "render/render_limits.hpp"
+#include "render/scene_renderer.hpp"
 
 namespace nephele::cli {
 
@@ -119,16 +120,15 @@ int run_orbit_render(const OrbitOptions& orbit) {
   std::string cover_source = orbit.cover;
   if (!cover) {
     progress.update(0, "global cover");
-    cover::CoverParameters parameters;
-    parameters.size = s::cover_size.default_int();
-    parameters.seed = orbit.seed;
+    const cover::CoverParameters parameters =
+        render::view_cover_parameters(s::cover_size.default_int(), orbit.seed, orbit.flow, time_text);
     timings.emplace_back("global cover", gpu::time_pass([&] {
                            cover::GlobalCover generated(parameters);
                            generated.run();
                            cover = render::CoverCube{parameters.size, generated.cover_field().read()};
                          }));
-    cover_source =
-        "generated (seed " + std::to_string(orbit.seed) + ", " + std::to_string(parameters.size) + " texels per face)";
+    cover_source = "generated (seed " + std::to_string(orbit.seed) + ", " + std::to_string(parameters.size) +
+                   " texels per face, flow " + orbit.flow + ")";
   }
   progress.update(1, "orbit view");
   render::RenderResult result = render::render_orbit(camera, unix_seconds, textures.images, *cover, settings);
@@ -170,12 +170,13 @@ int bench_orbit(const std::vector<std::string>& arguments) {
   std::printf("device: %s (%s)\n", context.info().renderer.c_str(), context.info().version.c_str());
   io::PlanetTextures textures = io::read_planet_textures("");
   for (const auto& w : textures.warnings) std::cerr << "warning: " << w << "\n";
-  cover::CoverParameters parameters;
-  parameters.size = s::cover_size.default_int();
+  const std::string time_text(s::time.default_text);
+  const cover::CoverParameters parameters = render::view_cover_parameters(
+      s::cover_size.default_int(), s::seed.default_uint32(), std::string(params::cover::flow.default_text), time_text);
   cover::GlobalCover generated(parameters);
   generated.run();
   render::OrbitRenderer renderer(textures.images, {parameters.size, generated.cover_field().read()});
-  const double time = core::parse_utc_time(std::string(s::time.default_text));
+  const double time = core::parse_utc_time(time_text);
   for (const auto& [width, height] : {std::pair{640, 360}, std::pair{1280, 720}}) {
     render::OrbitCamera camera;
     camera.latitude_deg = s::lat.default_number;

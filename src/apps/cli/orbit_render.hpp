@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "apps/cli/options.hpp"
+#include "params/table.hpp"
 
 namespace nephele::cli {
 
@@ -21,6 +22,7 @@ struct OrbitOptions {
   std::string time, size, out;
   std::optional<double> heading, pitch, fov;
   std::uint32_t seed = 1;
+  std::string flow{params::cover::flow.default_text};  // the generated cover's (without --cover)
   double exposure = 4;
   bool verbose = false, quiet = false;
 };

@@ -91,6 +91,11 @@ int run_render(const std::vector<std::string>& arguments) {
     orbit.size = scene_options.size();
     orbit.out = out;
     orbit.seed = scene_options.seed();
+    if (!scene_options.flow().empty()) {
+      if (!orbit.cover.empty())
+        throw UsageError("--flow: the flow of a generated cover; --cover " + orbit.cover + " gives the cover");
+      orbit.flow = scene_options.flow();
+    }
     // Clouds seen from above reflect most of the sunlight: a lower default exposure than the ground views'.
     orbit.exposure = options.given(s::exposure) ? scene_options.exposure() : orbit_default_exposure;
     orbit.verbose = verbose;

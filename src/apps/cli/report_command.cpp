@@ -24,6 +24,7 @@ int run_report(const std::vector<std::string>& all_arguments) {
   const bool render_only = !all_arguments.empty() && all_arguments[0] == "render";
   const std::vector<std::string> arguments(all_arguments.begin() + (render_only ? 1 : 0), all_arguments.end());
   cover::CoverParameters parameters;
+  parameters.flow = cover::Flow::steady;  // the sweeps below are of the steady warp and its reference
   std::string out(params::run::report_out.default_text), sizes, steps, tolerances, render_size;
   bool quick = false, no_render = false, quiet = false;
   int samples = 0, repeat = 0;  // 0: the mode's default

@@ -26,6 +26,7 @@ SceneOptions::SceneOptions(Options& options)
   options.bind(s::light_steps, &light_steps_);
   options.bind(s::exposure, &exposure_);
   options.bind(s::seed, &seed_);
+  options.bind(params::cover::flow, &flow_);
 }
 
 regional::Scene SceneOptions::scene(regional::KeyOptions& typed) const {
@@ -50,6 +51,10 @@ regional::Scene SceneOptions::scene(regional::KeyOptions& typed) const {
   if (options_.given(s::view_steps)) regional::give_step(scene, s::view_steps, view_steps_);
   if (options_.given(s::light_steps)) regional::give_step(scene, s::light_steps, light_steps_);
   if (options_.given(s::seed)) scene.seed = seed_;
+  if (!flow_.empty()) {
+    scene.cover_flow = flow_;
+    typed["flow"] = "--flow";
+  }
   if (!time_.empty()) {
     scene.time = time_;
     typed["time"] = "--time";

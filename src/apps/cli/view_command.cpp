@@ -42,6 +42,7 @@ int run_view(const std::vector<std::string>& arguments) {
   int month = c::month.default_int();
   float coverage = c::coverage.default_float(), step = c::step.default_float();
   bool no_cache = false;
+  double time_step = params::run::time_step.default_number;
   std::string model_name;
   int model_size = params::cloud_model::view_model_size.default_int();
   Options options("view [COVER_DIR]",
@@ -63,6 +64,7 @@ int run_view(const std::vector<std::string>& arguments) {
   options.bind(c::integrator, &integrator);
   options.bind(params::run::view_record, &record);
   options.bind(params::run::view_frames, &frames);
+  options.bind(params::run::time_step, &time_step);
   options.bind(params::run::no_cache, &no_cache);
   options.bind(params::cloud_model::view_model, &model_name);
   options.bind(params::cloud_model::view_model_size, &model_size);
@@ -99,6 +101,7 @@ int run_view(const std::vector<std::string>& arguments) {
   state.iterations = iterations;
   state.step = step;
   state.integrator = integrator;
+  state.time_step_hours = time_step;
   window.run();
   return exit_ok;
 }

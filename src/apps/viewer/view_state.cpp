@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/time.hpp"
 #include "cover/integrators.hpp"
 #include "regional/sites.hpp"
 #include "render/scene_renderer.hpp"
@@ -26,7 +27,9 @@ std::vector<Binding> bindings(ViewState& s) {
                          {&co::month, &s.month},
                          {&co::iterations, &s.iterations},
                          {&co::step, &s.step},
-                         {&co::integrator, &s.integrator}});
+                         {&co::integrator, &s.integrator},
+                         {&co::flow, &s.flow},
+                         {&params::run::time_step, &s.time_step_hours}});
   return out;
 }
 
@@ -88,15 +91,18 @@ regional::Scene scene_of(const ViewState& state, int width, int height) {
 }
 
 cover::CoverParameters cover_of(const ViewState& state) {
-  cover::CoverParameters p;
-  p.size = state.cover_size;
-  p.seed = state.seed;
+  cover::CoverParameters p = render::view_cover_parameters(state.cover_size, state.seed, state.flow, state.time);
   p.coverage = state.coverage;
   p.month = state.month;
   p.iterations = state.iterations;
   p.step = state.step;
   p.integrator = cover::parse_integrator(state.integrator).value_or(p.integrator);
   return p;
+}
+
+void advance_time(ViewState& state, double hours) {
+  const double seconds = core::parse_utc_time(state.time) + hours * 3600.0;
+  state.time = core::format_utc_seconds(std::max(seconds, 0.0));
 }
 
 void turn(ViewState& state, double heading_deg, double pitch_deg) {

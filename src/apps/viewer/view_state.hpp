@@ -31,6 +31,9 @@ struct ViewState {
   int iterations = params::cover::iterations.default_int();
   float step = params::cover::step.default_float();
   std::string integrator{params::cover::integrator.default_text};
+  std::string flow{params::cover::flow.default_text};              // moving: the cover of `time`
+  double time_step_hours = params::run::time_step.default_number;  // the time keys' and playback's step
+  bool playing = false;                                            // T: the time moves by time_step_hours each frame
   std::vector<std::string> weather;  // station files of --scene (the global cover when empty)
   // nephele view --model: the cloud model being edited, shown by ModelSource (the camera's
   // heading, pitch and field of view turn the orbit around it; its position is not used).
@@ -65,6 +68,10 @@ bool shows_orbit(const ViewState& state);
 // The scene and cover of a render of `state` at width x height.
 regional::Scene scene_of(const ViewState& state, int width, int height);
 cover::CoverParameters cover_of(const ViewState& state);
+
+// Moves the time by `hours` (the sun and, with the moving flow, the clouds); times before 1970
+// stay at 1970-01-01T00:00Z.
+void advance_time(ViewState& state, double hours);
 
 // Inputs. A drag of (dx, dy) pixels in a window `width` pixels wide turns the view so that the
 // scene follows the cursor: heading -= dx fov / width, pitch += dy fov / width (pitch kept in

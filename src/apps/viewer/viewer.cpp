@@ -131,7 +131,9 @@ std::string Viewer::render_key(bool with_camera) const {
   key.precision(17);
   if (with_camera) key << copy.camera.latitude_deg << ' ' << copy.camera.longitude_deg << ' ' << copy.camera.height_m;
   for (const Binding& b : bindings(copy)) {
-    if (b.parameter == &params::scene::exposure || b.parameter == &params::scene::view) continue;
+    if (b.parameter == &params::scene::exposure || b.parameter == &params::scene::view ||
+        b.parameter == &params::run::time_step)
+      continue;
     const bool camera = b.parameter == &params::scene::heading || b.parameter == &params::scene::pitch ||
                         b.parameter == &params::scene::fov;
     if (with_camera || !camera) key << ' ' << value_text(copy, *b.parameter);
@@ -163,6 +165,11 @@ void Viewer::frame() {
   window_->framebuffer_size(width, height);
   if (width > 0 && height > 0) {
     refine(width, height);
+    // Playing: once the current moment has been rendered (its first, coarse level), the next.
+    if (state_.playing && state_.modeller == false && refinement_.renders() > renders_at_time_step_) {
+      advance_time(state_, state_.time_step_hours);
+      renders_at_time_step_ = refinement_.renders();
+    }
     display_->draw(width, height);
     ImGui_ImplOpenGL3_NewFrame();
     ImGui_ImplGlfw_NewFrame();

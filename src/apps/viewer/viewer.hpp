@@ -114,6 +114,7 @@ class Viewer {
   Refinement refinement_;
   double shown_exposure_ = 0;  // exposure of the image shown
   long frames_ = 0;
+  long renders_at_time_step_ = 0;  // renders made when playback last moved the time
   double frame_ms_ = 0;
   bool panels_ = true, capture_ = false, dragging_ = false, shift_ = false;
   // The modeller: its source, and the primitive being moved (as it was when grabbed, and the
