@@ -3,17 +3,18 @@
 #   docs/images/cover_equirect.png           nephele generate (defaults), the equirect preview
 #   docs/images/cover_stats.png              nephele stats of that cover (coverage by latitude, spectrum, D)
 #   docs/images/cover_equirect_surface.png   nephele generate --surface etopo5 (the land/ocean mask)
-#   docs/images/cover_sequence.gif           nephele generate --flow moving --sequence 24 --interval 3 (a day)
+#   docs/images/cover_sequence.gif           nephele generate --sequence 24 --interval 3 (a day of the moving cover)
 #   docs/images/cover_motion.svg             nephele stats of that sequence (speeds by band, decorrelation)
 #   docs/images/render_gurten.png/.json      nephele render --view gurten (--quality final)
 #   docs/images/render_gurten_panorama.*     the same scene as a panorama
 #   docs/images/render_bantiger.png/.json    nephele render --view bantiger (--quality final)
 #   docs/images/model_examples.png           nephele model previews of the four built-in clouds
-#   docs/images/render_orbit.png/.json       nephele render --view orbit of the default cover
+#   docs/images/render_orbit.png/.json       nephele render --view orbit of the default cover at the render's time
 #   docs/images/gurten-thunderstorm.png      scenes/gurten-thunderstorm.json (convective clouds)
 #   docs/images/bantiger-fog.png             scenes/bantiger-fog.json (the sea of fog from the Bantiger)
 # With --report it also runs `nephele report` (about 35 minutes on two cores) and copies its
-# work-precision diagrams (error_vs_runtime*.svg, render_error_vs_runtime.svg).
+# work-precision diagrams (error_vs_runtime*.svg, render_error_vs_runtime.svg,
+# moving_error_vs_runtime.svg; `nephele report moving` alone makes the last in about 4 minutes).
 set -euo pipefail
 repo_root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$repo_root"
@@ -26,7 +27,7 @@ trap 'rm -rf "$work"' EXIT
 cp "$work/cover/cover_equirect.png" docs/images/cover_equirect.png
 "$nephele" stats "$work/cover" --out "$work/stats"
 cp "$work/stats/stats.png" docs/images/cover_stats.png
-"$nephele" generate --flow moving --sequence 24 --interval 3 --files equirect,png --quiet --out "$work/sequence"
+"$nephele" generate --sequence 24 --interval 3 --files equirect,png --quiet --out "$work/sequence"
 cp "$work/sequence/sequence.gif" docs/images/cover_sequence.gif
 "$nephele" stats "$work/sequence" --out "$work/motion"
 cp "$work/motion/motion.svg" docs/images/cover_motion.svg
@@ -38,7 +39,9 @@ cp "$work/render_gurten.png" "$work/render_gurten.json" docs/images/
 cp "$work/render_gurten_panorama.png" "$work/render_gurten_panorama.json" docs/images/
 "$nephele" render --view bantiger --quality final --no-cache --quiet --out "$work/render_bantiger.png"
 cp "$work/render_bantiger.png" "$work/render_bantiger.json" docs/images/
-"$nephele" render --view orbit --cover "$work/cover" --altitude-km 12000 --time 2026-06-21T17:00Z --quiet \
+# The orbit view's cover at 512 per face, of the moment the view shows (render alone makes 128).
+"$nephele" generate --time 2026-06-21T17:00Z --files faces --quiet --out "$work/cover-orbit"
+"$nephele" render --view orbit --cover "$work/cover-orbit" --altitude-km 12000 --time 2026-06-21T17:00Z --quiet \
   --out "$work/render_orbit.png"
 cp "$work/render_orbit.png" "$work/render_orbit.json" docs/images/
 "$nephele" render --scene scenes/gurten-thunderstorm.json --quality final --no-cache --quiet --out "$work/storm"
@@ -56,5 +59,6 @@ if [[ "${1:-}" == "--report" ]]; then
   "$nephele" report --out "$work/report"
   cp "$work/report/error_vs_runtime.svg" docs/images/error_vs_runtime.svg
   cp "$work/report/render_error_vs_runtime.svg" docs/images/render_error_vs_runtime.svg
+  cp "$work/report/moving_error_vs_runtime.svg" docs/images/moving_error_vs_runtime.svg
 fi
 echo "readme-images: docs/images updated"

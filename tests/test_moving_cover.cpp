@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "core/time.hpp"
@@ -96,6 +97,8 @@ TEST_CASE("the moving warp of the flow's splines follows the procedural flow wit
   // nodes: the time interpolation dominates.)
   cover::CoverParameters spline = moving(32, "2026-06-21T05:00Z");
   spline.curl_size = 128;
+  spline.curl_mode = cover::CurlMode::spline;  // auto would take procedural for this small cover
+  REQUIRE(cover::resolved_curl_mode(spline) == cover::CurlMode::spline);
   cover::CoverParameters procedural = spline;
   procedural.curl_mode = cover::CurlMode::procedural;
   test::test_context();
@@ -107,6 +110,41 @@ TEST_CASE("the moving warp of the flow's splines follows the procedural flow wit
   INFO("largest angle between the warps: older layer " << old_layer << " rad, younger " << young_layer << " rad");
   CHECK(old_layer < 2.5e-3);
   CHECK(young_layer < 2.5e-3);
+}
+
+TEST_CASE("curl mode auto takes spline for the steady flow and for the moving flow the way with fewer curl evaluations",
+          "[fast][moving]") {
+  cover::CoverParameters p;
+  REQUIRE(p.curl_mode == cover::CurlMode::automatic);
+  p.flow = cover::Flow::steady;
+  for (int size : {8, 128, 4096}) {
+    p.size = size;
+    CHECK(cover::resolved_curl_mode(p) == cover::CurlMode::spline);
+  }
+  // Moving, defaults (T = 0.3, h = 0.15, nodes h/2 apart over 3T/2: 7 grids of g^2 per face,
+  // g = min(256, max(64, size / 2)); trajectories of 2 + 1 steps of 4 stages: 12 size^2):
+  // procedural while 12 size^2 < 7 x 64^2, up to 48; a spline above, on a grid of size / 2.
+  p.flow = cover::Flow::moving;
+  const std::tuple<int, cover::CurlMode, int> expected[] = {
+      {32, cover::CurlMode::procedural, 256}, {48, cover::CurlMode::procedural, 256},
+      {49, cover::CurlMode::spline, 64},      {128, cover::CurlMode::spline, 64},
+      {300, cover::CurlMode::spline, 150},    {1024, cover::CurlMode::spline, 256}};
+  for (const auto& [size, mode, grid] : expected) {
+    p.size = size;
+    INFO("size " << size);
+    const cover::CoverParameters resolved = cover::resolved_curl(p);
+    CHECK(resolved.curl_mode == mode);
+    CHECK(resolved.curl_size == grid);
+  }
+  // A smaller --curl-size caps the grid; a mode given by name is kept with its grid.
+  p.size = 1024;
+  p.curl_size = 100;
+  CHECK(cover::resolved_curl(p).curl_size == 100);
+  p.curl_mode = cover::CurlMode::spline;
+  p.size = 128;
+  CHECK(cover::resolved_curl(p).curl_size == 100);
+  p.curl_mode = cover::CurlMode::procedural;
+  CHECK(cover::resolved_curl_mode(p) == cover::CurlMode::procedural);
 }
 
 TEST_CASE(

@@ -155,6 +155,27 @@ TEST_CASE("report --quick writes the CSV the diagram and the summary and the not
   CHECK(summary.find("speed-up") != std::string::npos);
   CHECK(summary.find("Best speed-up at equal error") != std::string::npos);
   CHECK(read_file(out.path / "stability.csv").find("stiffness") != std::string::npos);
+  // The moving flow: both sweeps, every row finite; RK4 converges towards the reference as the
+  // step shrinks (procedural: no other error; at least 8 times smaller over 4 times the steps,
+  // order 4 allowing for the smooth potential's limited smoothness), and a longer window errs more.
+  std::stringstream moving(read_file(out.path / "moving_error.csv"));
+  std::getline(moving, line);
+  CHECK(line.rfind("sweep,curl_mode,curl_size,iterations,step,window_hours,time_ms,", 0) == 0);
+  std::map<std::string, double> procedural_error;
+  int moving_rows = 0;
+  while (std::getline(moving, line)) {
+    const auto fields = split(line, ',');
+    REQUIRE(fields.size() == 12);
+    CHECK(fields[11] == "1");
+    for (size_t k = 4; k < 11; ++k) REQUIRE(std::isfinite(std::stod(fields[k])));
+    if (fields[1] == "procedural") procedural_error[fields[0] + fields[3]] = std::stod(fields[10]);
+    ++moving_rows;
+  }
+  CHECK(moving_rows == 12);  // 3 step counts x (procedural, spline 32), 3 windows x the two
+  CHECK(procedural_error["step4"] * 8 <= procedural_error["step1"]);
+  CHECK(procedural_error["window4"] > procedural_error["window1"]);
+  CHECK(summary.find("## The moving flow: error against run time and window") != std::string::npos);
+  CHECK(read_file(out.path / "moving_error_vs_runtime.svg").find("<polyline") != std::string::npos);
 
   // The notebook reads that CSV and draws the same diagram, headless (Debian's
   // jupyter-nbconvert, python3-ipykernel, python3-matplotlib; scripts/debian-packages.txt).
@@ -335,6 +356,19 @@ TEST_CASE("generate warns about a stiff warp and records it in cover.json while 
     CHECK(numerics.at("substeps").at("mean").as_number() > 6.0);
     CHECK(numerics.at("substeps").at("capped_texels").as_number() == 0.0);
     CHECK(stiffness_warnings(numerics) == 0);
+  }
+  {
+    // The moving flow (RK4 only) warns of the same stiff vortices and advises the step alone.
+    TemporaryDirectory out;
+    const Run r = run("generate --size 16 --curl-frequency 64 --curl-octaves 1 --iterations 6 --step 0.05 --out " +
+                      out.path.string());
+    INFO(r.output);
+    REQUIRE(r.exit_code == 0);
+    CHECK(r.output.find("stiffness") != std::string::npos);
+    CHECK(r.output.find("--integrator adaptive") == std::string::npos);
+    const json::Value sidecar = json::parse(read_file(out.path / "cover.json"));
+    CHECK(sidecar.at("parameters").at("flow").as_string() == "moving");
+    CHECK(stiffness_warnings(sidecar.at("result").at("numerics")) == 1);
   }
 }
 

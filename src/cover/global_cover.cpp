@@ -30,30 +30,33 @@ namespace {
 bool moving(const CoverParameters& p) { return p.flow == Flow::moving; }
 }  // namespace
 
-CurlMode resolved_curl_mode(const CoverParameters& p) {
-  if (p.curl_mode != CurlMode::automatic) return p.curl_mode;
-  if (!moving(p)) return CurlMode::spline;
+CoverParameters resolved_curl(CoverParameters p) {
+  if (p.curl_mode != CurlMode::automatic) return p;
+  if (!moving(p)) {
+    p.curl_mode = CurlMode::spline;
+    return p;
+  }
+  // The grid: half the cover's texels per edge, at least 64 and at most --curl-size. Its error
+  // is that of the interpolation in time at 128 nodes and up, 7.6e-4 rad at 64, 5.5e-4 rad at
+  // 128 and 256 (docs/numerics.md, 8b): a tenth of a texel or less at every size up to 1024.
+  const int grid = std::min(p.curl_size, std::max(64, p.size / 2));
   // Curl evaluations: the spline's time nodes (a window of 3T/2, the most a frame spans), each a
-  // grid of 6 curl_size^2, against four RK4 stages per step of each of 6 size^2 trajectories.
-  // Both cost about the same per evaluation (llvmpipe: 0.6 us; 830 ms against 1420 ms at 128
-  // texels per face, 3.4 s against 1.5 s at 256; docs/algorithm.md). The counts do not depend
-  // on the time, so every frame of a sequence takes the same way.
+  // grid of 6 grid^2, against four RK4 stages per step of each of 6 size^2 trajectories. Both
+  // cost about the same per evaluation (llvmpipe: 0.6 us; docs/algorithm.md). The counts do not
+  // depend on the time, so every frame of a sequence takes the same way.
   const FrameClock clock = frame_clock(p, 0.0);
-  const double nodes = std::ceil(3.0 * double(p.iterations) * p.step / 2.0 / clock.node_spacing) + 1.0;
-  const double spline = nodes * p.curl_size * p.curl_size;
+  const double nodes = std::ceil(3.0 * double(p.iterations) * p.step / 2.0 / clock.node_spacing - 1e-6) + 1.0;
+  const double spline = nodes * grid * grid;
   const double procedural = 4.0 * double(p.size) * p.size * (clock.young_steps + clock.older_steps);
-  return procedural < spline ? CurlMode::procedural : CurlMode::spline;
-}
-
-namespace {
-CoverParameters resolved(CoverParameters p) {
-  p.curl_mode = resolved_curl_mode(p);
+  p.curl_mode = procedural < spline ? CurlMode::procedural : CurlMode::spline;
+  if (p.curl_mode == CurlMode::spline) p.curl_size = grid;
   return p;
 }
-}  // namespace
+
+CurlMode resolved_curl_mode(const CoverParameters& p) { return resolved_curl(p).curl_mode; }
 
 GlobalCover::GlobalCover(const CoverParameters& parameters)
-    : parameters_(resolved(parameters)),
+    : parameters_(resolved_curl(parameters)),
       curl_program_("cover/curl.comp", {{"CURL_FROM_SPLINE", parameters_.curl_mode == CurlMode::spline ? "1" : "0"},
                                         {"CURL_MOVING", moving(parameters) ? "1" : "0"}}),
       warp_program_("cover/warp.comp", cover::warp_defines(parameters_.integrator, parameters_.curl_mode)),
@@ -340,7 +343,8 @@ void GlobalCover::dispatch_warp(const gpu::Texture& starts, const gpu::Texture& 
 const cover::WarpDiagnostics& GlobalCover::diagnose() {
   timed("diagnose", [&] {
     if (!gpu_diagnosis_) gpu_diagnosis_ = std::make_unique<GpuDiagnosis>(parameters_.size);
-    diagnostics_ = gpu_diagnosis_->run(curl_field_, warp_field_, parameters_.integrator, parameters_.step);
+    diagnostics_ =
+        gpu_diagnosis_->run(curl_field_, warp_field_, parameters_.integrator, parameters_.step, moving(parameters_));
   });
   return *diagnostics_;
 }

@@ -62,7 +62,7 @@ class GlobalCover {
   const cover::WarpDiagnostics& diagnose();
   const std::optional<cover::WarpDiagnostics>& diagnostics() const { return diagnostics_; }
 
-  // The parameters as run: the curl mode resolved (never automatic).
+  // The parameters as run: the curl mode and grid resolved (resolved_curl; never automatic).
   const CoverParameters& parameters() const { return parameters_; }
   const gpu::Texture& identity_field() const { return identity_field_; }
   const gpu::Texture& curl_field() const { return curl_field_; }
@@ -119,8 +119,10 @@ class GlobalCover {
 };
 
 // Bytes of GPU memory the passes allocate for a cube face size (plus the equirect export).
-// The curl mode a cover runs with: `p.curl_mode`, or for automatic spline (steady flow) or the
-// cheaper of spline and procedural (moving flow), by their counts of curl evaluations.
+// The curl mode and grid a cover runs with: `p` as given, or for curl mode automatic the spline
+// (steady flow), or for the moving flow the cheaper of procedural and a spline on a grid of
+// min(curl_size, max(64, size / 2)) nodes per face edge, by their counts of curl evaluations.
+CoverParameters resolved_curl(CoverParameters p);
 CurlMode resolved_curl_mode(const CoverParameters& p);
 double cover_gpu_bytes(int size, Flow flow = Flow::steady);
 

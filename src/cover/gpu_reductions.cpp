@@ -362,7 +362,7 @@ CoverageCalibration GpuCalibration::run(const gpu::Texture& density, double targ
 GpuDiagnosis::GpuDiagnosis(int size) : size_(size), weights_(size) {}
 
 WarpDiagnostics GpuDiagnosis::run(const gpu::Texture& curl, const gpu::Texture& warp, Integrator integrator,
-                                  double step) const {
+                                  double step, bool moving) const {
   if (curl.width() != size_ || warp.width() != size_)
     throw std::invalid_argument("GpuDiagnosis: the maps are not of its size");
   constexpr int figures = 6, group = 64;
@@ -416,7 +416,7 @@ WarpDiagnostics GpuDiagnosis::run(const gpu::Texture& curl, const gpu::Texture& 
   d.substeps.mean_attempts = total[5] / texels;
   d.substeps.max_attempts = from_sortable(words[6]);
   d.substeps.capped_texels = words[4];
-  add_warp_warnings(d, integrator, step, words[5]);
+  add_warp_warnings(d, integrator, step, words[5], moving);
   return d;
 }
 

@@ -128,7 +128,9 @@ class GpuCalibration {
 class GpuDiagnosis {
  public:
   explicit GpuDiagnosis(int size);
-  WarpDiagnostics run(const gpu::Texture& curl, const gpu::Texture& warp, Integrator integrator, double step) const;
+  // `moving`: the moving flow's warp (its warnings do not offer the adaptive integrator).
+  WarpDiagnostics run(const gpu::Texture& curl, const gpu::Texture& warp, Integrator integrator, double step,
+                      bool moving = false) const;
 
  private:
   int size_;

@@ -148,15 +148,18 @@ WarpDiagnostics diagnose_warp(const std::vector<float>& curl, const std::vector<
   return d;
 }
 
-void add_warp_warnings(WarpDiagnostics& d, Integrator integrator, double step, long off) {
+void add_warp_warnings(WarpDiagnostics& d, Integrator integrator, double step, long off, bool moving) {
   char text[512];
   if (!d.adaptive && d.stiffness.beyond_fraction > warn_fraction) {
     std::snprintf(text, sizeof text,
                   "--step %g: the stiffness number h rho reaches %.3g, beyond the stable limit %.3g of %s, on %.3g%% "
                   "of the sphere (the flow's rate of change rho is up to %.4g there); the warp is unreliable in "
-                  "those vortex cores: use --integrator adaptive, or more --iterations with a smaller --step",
+                  "those vortex cores: %s",
                   step, d.stiffness.stiffness, d.stiffness.limit, integrator_name(integrator),
-                  100.0 * d.stiffness.beyond_fraction, d.stiffness.max_rate);
+                  100.0 * d.stiffness.beyond_fraction, d.stiffness.max_rate,
+                  moving ? "use more --iterations with a smaller --step (the same flow time), or a weaker flow "
+                           "(--curl-strength)"
+                         : "use --integrator adaptive, or more --iterations with a smaller --step");
     d.warnings.push_back(text);
   }
   if (d.adaptive && d.substeps.capped_texels > 0) {

@@ -64,7 +64,8 @@ struct WarpDiagnostics {
 constexpr double warn_fraction = 1e-4;
 // The warnings above for reports already made; `off_sphere`: warped points that are not finite
 // unit vectors. diagnose_warp and the GPU diagnosis (gpu_reductions.hpp) share it.
-void add_warp_warnings(WarpDiagnostics& d, Integrator integrator, double step, long off_sphere);
+// `moving`: the moving flow's warp, which integrates with RK4 only (its advice is the step).
+void add_warp_warnings(WarpDiagnostics& d, Integrator integrator, double step, long off_sphere, bool moving = false);
 WarpDiagnostics diagnose_warp(const std::vector<float>& curl_rgba, const std::vector<float>& warp_rgba, int size,
                               Integrator integrator, double step);
 

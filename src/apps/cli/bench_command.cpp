@@ -47,9 +47,17 @@ int bench_cover(const std::vector<std::string>& arguments) {
   std::printf("device: %s (%s)\n", context.info().renderer.c_str(), context.info().version.c_str());
   std::printf("flow: %s\n", cover::flow_name(parameters.flow));
   std::printf("K = %d steps, %s curl%s, potential %d octaves, density %d octaves; median of %d runs\n",
-              parameters.iterations, cover::curl_mode_name(cover::resolved_curl_mode(parameters)),
-              cover::resolved_curl_mode(parameters) == cover::CurlMode::spline
+              parameters.iterations, cover::curl_mode_name(parameters.curl_mode),
+              parameters.curl_mode == cover::CurlMode::spline
                   ? (" of " + std::to_string(parameters.curl_size) + " nodes per face edge").c_str()
+              : parameters.curl_mode == cover::CurlMode::automatic
+                  ? (" (" +
+                     std::string(parameters.flow == cover::Flow::moving
+                                     ? "per size: procedural up to 48 per face, else a spline of min(" +
+                                           std::to_string(parameters.curl_size) + ", max(64, size / 2)) nodes"
+                                     : "spline of " + std::to_string(parameters.curl_size) + " nodes") +
+                     ")")
+                        .c_str()
                   : "",
               parameters.potential.octaves, parameters.density.octaves, repeat);
   std::printf(

@@ -12,6 +12,7 @@
 #include "render/render_limits.hpp"
 #include "files/atomic_output.hpp"
 #include "gpu/egl_context.hpp"
+#include "studies/moving_precision.hpp"
 #include "studies/work_precision.hpp"
 #include "regional/scene.hpp"
 #include "studies/render_error.hpp"
@@ -21,8 +22,11 @@ namespace nephele::cli {
 
 int run_report(const std::vector<std::string>& all_arguments) {
   // `nephele report render`: only the render sweep.
+  // `nephele report moving`: only the moving flow's sweep.
   const bool render_only = !all_arguments.empty() && all_arguments[0] == "render";
-  const std::vector<std::string> arguments(all_arguments.begin() + (render_only ? 1 : 0), all_arguments.end());
+  const bool moving_only = !all_arguments.empty() && all_arguments[0] == "moving";
+  const std::vector<std::string> arguments(all_arguments.begin() + (render_only || moving_only ? 1 : 0),
+                                           all_arguments.end());
   cover::CoverParameters parameters;
   parameters.flow = cover::Flow::steady;  // the sweeps below are of the steady warp and its reference
   std::string out(params::run::report_out.default_text), sizes, steps, tolerances, render_size;
@@ -33,6 +37,8 @@ int run_report(const std::vector<std::string>& all_arguments) {
                   "Sweeps integrator x steps x curl mode x size, times the curl and warp passes and compares\n"
                   "the warped points with a reference solution at sample points. Writes error_vs_runtime.csv,\n"
                   "error_vs_runtime.svg (work-precision diagram), stability.csv and summary.md into --out.\n"
+                  "The moving flow's back-trajectories (one frame; RK4 steps, spline grids and windows) against\n"
+                  "the CPU's procedural flow go into moving_error.csv and moving_error_vs_runtime.svg.\n"
                   "The flow time T = iterations * step stays fixed; fixed-step schemes use h = T / steps.\n"
                   "Then renders the default scene with view steps 8..96 x light steps 2..12, over 2 and 4\n"
                   "frames and at 1/2 and 1/4 resolution, against " +
@@ -43,7 +49,8 @@ int run_report(const std::vector<std::string>& all_arguments) {
                       "at 1280x720 against " +
                       studies::RenderSweepOptions::qualities(false).reference_name() +
                       " (quick: 64x36) into render_quality.csv and a section of summary.md.\n"
-                      "`nephele report render [options]` runs only the render sweep.",
+                      "`nephele report render [options]` runs only the render sweep, `nephele report moving\n"
+                      "[options]` only the moving flow's.",
                   params::report);
   options.bind(params::run::report_out, &out);
   options.bind(params::run::report_quick, &quick);
@@ -89,7 +96,9 @@ int run_report(const std::vector<std::string>& all_arguments) {
 
   gpu::EglContext context;
   if (render_only && no_render) throw UsageError("report render: --no-render leaves nothing to do");
-  if (!render_only)
+  if (moving_only) no_render = true;
+  const bool steady_sweep = !render_only && !moving_only;
+  if (steady_sweep)
     for (int size : sweep.sizes) cover::check_cover_fits(context, size, "--sizes");
   if (!no_render) render::check_render_fits(context, render_sweep.width, render_sweep.height, "--render-size");
   if (!no_render)
@@ -103,7 +112,7 @@ int run_report(const std::vector<std::string>& all_arguments) {
   files::OutputSet outputs(directory, files::OutputSet::Scope::directory);
   std::cout << "device: " << context.info().renderer << " (" << context.info().version << ")\n" << std::flush;
   studies::SweepResult result;
-  if (!render_only) {
+  if (steady_sweep) {
     core::Progress sweep_progress("report", sweep.planned_runs(), core::Progress::for_stderr(quiet));
     result = studies::run_sweep(
         sweep, [](const std::string& line) { std::cout << line << "\n"
@@ -112,6 +121,22 @@ int run_report(const std::vector<std::string>& all_arguments) {
     sweep_progress.finish();
   }
   result.device = context.info().renderer + " (" + context.info().version + ")";
+  // The moving flow (the default cover): its back-trajectories against their CPU reference.
+  cover::CoverParameters moving_base = parameters;
+  moving_base.flow = cover::Flow::moving;
+  moving_base.integrator = cover::Integrator::rk4;
+  const studies::MovingPrecisionOptions moving_sweep =
+      quick ? studies::MovingPrecisionOptions::quick(moving_base) : studies::MovingPrecisionOptions::full(moving_base);
+  std::vector<studies::MovingPrecisionRow> moving_rows;
+  if (!render_only) {
+    std::cout << "moving flow: one frame at " << moving_sweep.base.time << ", " << moving_sweep.size
+              << " per face, against the CPU's procedural flow at " << moving_sweep.reference_factor
+              << " times the steps\n"
+              << std::flush;
+    moving_rows = studies::moving_precision_sweep(moving_sweep, [](const studies::MovingPrecisionRow& row) {
+      std::cout << studies::moving_precision_line(row) << "\n" << std::flush;
+    });
+  }
 
   std::vector<studies::RenderErrorRow> render_rows, quality_rows;
   studies::ReferenceCheck reference_check;
@@ -148,7 +173,7 @@ int run_report(const std::vector<std::string>& all_arguments) {
       studies::choose_render_steps(render_rows, render_scene.view_steps, render_scene.light_steps);
 
   std::string summary;
-  if (!render_only) {
+  if (steady_sweep) {
     outputs.write("error_vs_runtime.csv", studies::error_csv(result.rows));
     outputs.write("stability.csv", studies::stability_csv(result.rows));
     outputs.write("error_vs_runtime.svg",
@@ -157,7 +182,14 @@ int run_report(const std::vector<std::string>& all_arguments) {
                                                                 : "time of the curl + warp passes (ms)"));
     summary = studies::summary_markdown(result, sweep) + "\n";
   }
-  if (no_render) {
+  if (!render_only) {
+    outputs.write("moving_error.csv", studies::moving_precision_csv(moving_rows));
+    outputs.write("moving_error_vs_runtime.svg",
+                  studies::moving_precision_svg(moving_rows, "The moving flow's back-trajectories, " + result.device));
+    summary += studies::moving_precision_markdown(moving_rows, moving_sweep) + "\n";
+  }
+  if (moving_only) {
+  } else if (no_render) {
     summary += "## Render: image error against run time\n\nNot run (--no-render).\n";
   } else {
     outputs.write("render_error.csv", studies::render_error_csv(render_rows, render_sweep));
@@ -191,7 +223,8 @@ int run_report(const std::vector<std::string>& all_arguments) {
               << studies::render_variant_name(render_choice.most_accurate) << " (display rms "
               << render_choice.most_accurate.display_rms << ")\n";
   std::cout << "wrote " << directory.string()
-            << "/: " << (render_only ? "" : "error_vs_runtime.csv, error_vs_runtime.svg, stability.csv, ")
+            << "/: " << (steady_sweep ? "error_vs_runtime.csv, error_vs_runtime.svg, stability.csv, " : "")
+            << (render_only ? "" : "moving_error.csv, moving_error_vs_runtime.svg, ")
             << (no_render ? "" : "render_error.csv, render_error_vs_runtime.svg, render_quality.csv, ")
             << "summary.md\n";
   return exit_ok;
