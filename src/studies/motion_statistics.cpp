@@ -105,16 +105,26 @@ double best_shift(const core::ImageData& a, const core::ImageData& b, int row0, 
   return shift;
 }
 
-// Solid-angle weighted correlation of two equirect maps between 60 S and 60 N.
-double correlation(const core::ImageData& a, const core::ImageData& b) {
+// Solid-angle weighted correlation of two equirect maps between 60 S and 60 N; `shift(row)`
+// (pixels eastward, fractional: linear between the two nearest) moves b's row back before the
+// comparison, so that a pattern carried that far east between a and b is compared with itself.
+template <class Shift>
+double correlation(const core::ImageData& a, const core::ImageData& b, Shift&& shift) {
   double sw = 0, sa = 0, sb = 0, saa = 0, sbb = 0, sab = 0;
   for (int row = 0; row < a.height; ++row) {
     const double lat = 90.0 - 180.0 * (row + 0.5) / a.height;
     if (std::abs(lat) > 60) continue;
     const double weight = std::cos(lat * kPi / 180.0);
+    const double s = shift(row);
+    const double whole = std::floor(s), part = s - whole;
     for (int x = 0; x < a.width; ++x) {
       const double u = a.pixels[(size_t(row) * a.width + x) * a.channels];
-      const double v = b.pixels[(size_t(row) * b.width + x) * b.channels];
+      const auto at = [&](long column) {
+        const long wrapped = ((column % a.width) + a.width) % a.width;
+        return double(b.pixels[(size_t(row) * b.width + size_t(wrapped)) * b.channels]);
+      };
+      const long base = x + long(whole);
+      const double v = part == 0.0 ? at(base) : (1.0 - part) * at(base) + part * at(base + 1);
       sw += weight;
       sa += weight * u;
       sb += weight * v;
@@ -185,18 +195,35 @@ MotionStatistics motion_statistics(const std::filesystem::path& sequence_dir) {
       wind += zonal_wind(first, centre, start_hours + k * m.interval_hours);
     m.flow_speed_ms.push_back(wind / 3);
   }
-  for (int lag = 0; lag < m.frames; ++lag) {
-    double sum = 0;
-    for (int k = 0; k + lag < m.frames; ++k) sum += correlation(maps[size_t(k)], maps[size_t(k + lag)]);
-    m.correlation_by_lag.push_back(sum / (m.frames - lag));
+  // The rows' shift per interval: that of the band the row lies in (pixels eastward).
+  std::vector<double> shift_per_interval(size_t(shape.height), 0.0);
+  for (int row = 0; row < shape.height; ++row) {
+    const double lat = 90.0 - 180.0 * (row + 0.5) / shape.height;
+    const int band = std::clamp(int(std::floor((lat + 60.0) / 10.0)), 0, 11);
+    shift_per_interval[size_t(row)] = m.cloud_speed_ms[size_t(band)] * seconds /
+                                      (kEarthRadius * std::cos(lat * kPi / 180.0)) * shape.width / (2 * kPi);
   }
-  const double threshold = std::exp(-1.0);
-  for (int lag = 1; lag < m.frames; ++lag)
-    if (m.correlation_by_lag[size_t(lag)] < threshold) {
-      const double a = m.correlation_by_lag[size_t(lag) - 1], b = m.correlation_by_lag[size_t(lag)];
-      m.decorrelation_hours = (lag - 1 + (a - threshold) / (a - b)) * m.interval_hours;
-      break;
+  for (int lag = 0; lag < m.frames; ++lag) {
+    double fixed = 0, moving = 0;
+    for (int k = 0; k + lag < m.frames; ++k) {
+      fixed += correlation(maps[size_t(k)], maps[size_t(k + lag)], [](int) { return 0.0; });
+      moving += correlation(maps[size_t(k)], maps[size_t(k + lag)],
+                            [&](int row) { return shift_per_interval[size_t(row)] * lag; });
     }
+    m.correlation_by_lag.push_back(fixed / (m.frames - lag));
+    m.comoving_correlation_by_lag.push_back(moving / (m.frames - lag));
+  }
+  const auto falls_below = [&](const std::vector<double>& c) {
+    const double threshold = std::exp(-1.0);
+    for (int lag = 1; lag < m.frames; ++lag)
+      if (c[size_t(lag)] < threshold) {
+        const double a = c[size_t(lag) - 1], b = c[size_t(lag)];
+        return (lag - 1 + (a - threshold) / (a - b)) * m.interval_hours;
+      }
+    return 0.0;
+  };
+  m.decorrelation_hours = falls_below(m.correlation_by_lag);
+  m.comoving_decorrelation_hours = falls_below(m.comoving_correlation_by_lag);
   if (!fractions.empty()) {
     double sum = 0;
     for (double f : fractions) sum += f;
@@ -224,6 +251,10 @@ void write_motion(files::OutputSet& outputs, const MotionStatistics& m) {
   for (double c : m.correlation_by_lag) correlation.emplace_back(c);
   out.set("correlation_by_lag", std::move(correlation));
   out.set("decorrelation_hours", m.decorrelation_hours);
+  json::Value::Array comoving;
+  for (double c : m.comoving_correlation_by_lag) comoving.emplace_back(c);
+  out.set("comoving_correlation_by_lag", std::move(comoving));
+  out.set("comoving_decorrelation_hours", m.comoving_decorrelation_hours);
   out.set("cloud_fraction_mean", m.cloud_fraction_mean);
   out.set("cloud_fraction_range", m.cloud_fraction_range);
   outputs.write("motion.json", json::write(out));
@@ -274,7 +305,13 @@ void write_motion(files::OutputSet& outputs, const MotionStatistics& m) {
   for (size_t k = 0; k < m.correlation_by_lag.size(); ++k)
     line.push_back(corr(m.interval_hours * double(k), m.correlation_by_lag[k]));
   polyline(s, line, "#c03020");
+  std::vector<std::pair<double, double>> comoving_line;
+  for (size_t k = 0; k < m.comoving_correlation_by_lag.size(); ++k)
+    comoving_line.push_back(corr(m.interval_hours * double(k), m.comoving_correlation_by_lag[k]));
+  polyline(s, comoving_line, "#2060c0");
   polyline(s, {corr(0, std::exp(-1.0)), corr(max_lag, std::exp(-1.0))}, "#808080", true);
+  legend_line(s, 840, 70, "#c03020", "at a fixed place");
+  legend_line(s, 840, 90, "#2060c0", "moving with the band's clouds");
   end_document(s);
   outputs.write("motion.svg", s.str());
   outputs.commit();

@@ -22,7 +22,12 @@ struct MotionStatistics {
   // Correlation of the cover between frames k apart (per texel, weighted by solid angle, 60 S to
   // 60 N, mean over start frames), k = 0 .. frames - 1, and the lag where it falls below 1/e.
   std::vector<double> correlation_by_lag;
-  double decorrelation_hours = 0;                            // 0 when it never falls below 1/e within the sequence
+  double decorrelation_hours = 0;  // 0 when it never falls below 1/e within the sequence
+  // The same moving with the clouds: frame k + lag's rows shifted back by their band's measured
+  // zonal displacement over lag intervals (a Lagrangian decorrelation in the zonal mean: how
+  // fast the pattern itself renews, not how fast it passes a place).
+  std::vector<double> comoving_correlation_by_lag;
+  double comoving_decorrelation_hours = 0;
   double cloud_fraction_mean = 0, cloud_fraction_range = 0;  // over the frames (sequence.json)
 };
 

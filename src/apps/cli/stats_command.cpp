@@ -50,7 +50,13 @@ int run_stats(const std::vector<std::string>& arguments) {
       std::cout << " " << motion.interval_hours * double(k) << " h " << std::setprecision(3)
                 << motion.correlation_by_lag[k] << std::setprecision(2)
                 << (k + 1 < motion.correlation_by_lag.size() ? "," : "");
-    std::cout << "\ndecorrelation (1/e) after " << motion.decorrelation_hours << " h; cloud fraction "
+    std::cout << "\nmoving with the clouds:";
+    for (size_t k = 0; k < motion.comoving_correlation_by_lag.size(); ++k)
+      std::cout << " " << motion.interval_hours * double(k) << " h " << std::setprecision(3)
+                << motion.comoving_correlation_by_lag[k] << std::setprecision(2)
+                << (k + 1 < motion.comoving_correlation_by_lag.size() ? "," : "");
+    std::cout << "\ndecorrelation (1/e) after " << motion.decorrelation_hours << " h at a fixed place, "
+              << motion.comoving_decorrelation_hours << " h moving with the clouds; cloud fraction "
               << std::setprecision(4) << motion.cloud_fraction_mean << " (range " << motion.cloud_fraction_range
               << ")\nwrote " << (directory / "motion.json").string() << " and " << (directory / "motion.svg").string()
               << "\n";
