@@ -779,6 +779,22 @@ TEST_CASE("curl_spline.glsl on the GPU agrees with the CPU", "[probe][spline]") 
     cases.push_back({arguments(f, vec4(node, 0, 0, 0), vec4(w, 0)),
                      f == PROBE_SPLINE_VELOCITY_IN_TIME ? kProjected + 2 * kArithmetic : kSample + kArithmetic});
   }
+  // Turned with the drift: the point R(-a) w moves by the rotation's cos and sin errors (each
+  // within kTranscendental, on components below 1: 2 kTranscendental), which the face coordinates
+  // (a division by the major axis, at least 1/sqrt 3) scale by sqrt 3 and the 4 cells per half
+  // face by 2 more; the value moves by 1.5 times the spread of neighbouring nodes (below 10) per
+  // cell of that. Turning the vector back adds the same rotation errors on values below 5 (10
+  // kTranscendental) and two products and a sum (kArithmetic).
+  constexpr float kTurned =
+      kSample + 1.5f * 10 * 2 * 1.7321f * 2 * kTranscendental + 10 * kTranscendental + kArithmetic;
+  for (int k = 0; k < 8; ++k) {
+    const vec3 w = normalize(vec3(r.v(-1.0f, 1.0f)) + vec3(1e-3f));
+    const float angle = r(-0.5f, 0.5f);
+    cases.push_back({arguments(PROBE_SAMPLE_CURL_SPLINE_NODE_TURNED, vec4(0.0f, angle, 0, 0), vec4(w, 0)), kTurned});
+    cases.push_back({arguments(k % 2 ? PROBE_SAMPLE_CURL_SPLINE_IN_TIME : PROBE_SPLINE_VELOCITY_IN_TIME,
+                               vec4(r(-1.0f, 2.0f), angle, 0, 0), vec4(w, 0)),
+                     2 * kTurned + kProjected + 2 * kArithmetic});
+  }
   compare(
       "curl_spline", [&](const mat4& x) { return probe_curl_spline(x, source); }, cases, nodes,
       gpu::ProbeData::array_image);

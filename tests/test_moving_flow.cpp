@@ -189,11 +189,11 @@ TEST_CASE("the flow's splines at two time nodes mix linearly between them and ho
                                        {-1.0f, vec4(1, 2, 3, 4)},
                                        {3.0f, vec4(5, 6, 7, 8)},
                                        {1.0f, vec4(5, 6, 7, 8)}}) {
-    const vec4 value = sample_curl_spline_in_time(w, grids, node);
+    const vec4 value = sample_curl_spline_in_time(w, grids, node, 0.0f);
     INFO("node " << node);
     for (int i = 0; i < 4; ++i) CHECK(std::abs(value[i] - expected[i]) <= rounding);
     // The velocity: the mix's xyz projected onto the tangent plane at w.
-    const vec3 v = spline_velocity_in_time(w, grids, node);
+    const vec3 v = spline_velocity_in_time(w, grids, node, 0.0f);
     const vec3 projected = vec3(expected) - dot(vec3(expected), w) * w;
     CHECK(length(v - projected) <= 4 * rounding);
   }

@@ -26,6 +26,8 @@ layout(rgba32f, binding = 2) uniform readonly image2DArray curl_spline;
 uniform float u_time;  // flow units from the motion's origin
 uniform float u_first_node_time;
 uniform float u_node_spacing;
+uniform CurlParams u_curl;  // for the drift that turns the grids (curl_spline.glsl)
+uniform FlowMotion u_motion;
 #endif
 #else
 uniform CurlParams u_curl;
@@ -43,8 +45,10 @@ void main() {
   vec3 n = imageLoad(identity_field, texel).xyz;
 #if CURL_FROM_SPLINE && CURL_MOVING
   float node = (u_time - u_first_node_time) / u_node_spacing;
+  float turn = u_motion.drift * zonal_drift(clamp(n.z, -1.0f, 1.0f), u_curl).x * u_node_spacing;
   imageStore(curl_field, texel,
-             vec4(spline_velocity_in_time(n, curl_spline, node), sample_curl_spline_in_time(n, curl_spline, node).w));
+             vec4(spline_velocity_in_time(n, curl_spline, node, turn),
+                  sample_curl_spline_in_time(n, curl_spline, node, turn).w));
 #elif CURL_FROM_SPLINE
   imageStore(curl_field, texel, vec4(spline_velocity(n, curl_spline), sample_curl_spline(n, curl_spline).w));
 #elif CURL_MOVING

@@ -19,13 +19,18 @@ layout(rgba32f, binding = 3) uniform writeonly imageCube young_warp_field;
 #include "../lib/prelude.glsl"
 #include "../lib/parameters.glsl"
 #include "../lib/curl_spline.glsl"
+uniform CurlParams u_curl;
+uniform FlowMotion u_motion;
 #if MOVING_SPLINE
 layout(rgba32f, binding = 4) uniform readonly image2DArray flow_splines;
 uniform float u_first_node_time;  // flow units from the motion's origin, as u_time
 uniform float u_node_spacing;
 #define WarpField SplineImage
+vec2 zonal_drift(float z, CurlParams params);  // moving_flow.glsl, included below
+// The grids turned with the drift between their time and t (curl_spline.glsl).
 vec3 moving_velocity(vec3 w, float t, SplineImage splines) {
-  return spline_velocity_in_time(w, splines, (t - u_first_node_time) / u_node_spacing);
+  float turn = u_motion.drift * zonal_drift(clamp(w.z, -1.0f, 1.0f), u_curl).x * u_node_spacing;
+  return spline_velocity_in_time(w, splines, (t - u_first_node_time) / u_node_spacing, turn);
 }
 #define FLOW_SOURCE flow_splines
 #endif
@@ -37,9 +42,7 @@ uniform float u_young_age;
 uniform int u_young_steps;  // RK4 steps back to the younger layer's age
 uniform int u_older_steps;  // and on from there to the older layer's
 #if !MOVING_SPLINE
-uniform CurlParams u_curl;
 uniform vec3 u_noise_offset;  // reduced modulo the lattice period by the host
-uniform FlowMotion u_motion;
 #define FLOW_SOURCE MovingCurl(u_curl, u_noise_offset, u_motion)
 #endif
 

@@ -98,21 +98,38 @@ vec3 spline_velocity(vec3 w, SplineImage spline) {
   return v - dot(v, w) * w;
 }
 
+// Node `node`'s spline where the drift has carried its pattern after `angle` radians about the
+// axis: the moving flow's vortices drift east as a rotation R(-omega(z) t) of their potential
+// (moving_flow.glsl's drifted_potential, the same for every generation, and the zonal term is
+// symmetric about the axis), so the flow dt after a node is the node's turned by omega dt:
+// sampled at R(-angle) w and its vector turned back by R(angle). Exact for a rigid rotation;
+// the shear of omega(z) errs by O(dt), with opposite signs at the two nodes around a time, which
+// the linear mix below cancels to first order.
+vec4 sample_curl_spline_node_turned(vec3 w, SplineImage spline, int node, float angle) {
+  float c = cos(angle);
+  float s = sin(angle);
+  vec4 v = sample_curl_spline_node(vec3(c * w.x + s * w.y, c * w.y - s * w.x, w.z), spline, node);
+  return vec4(c * v.x - s * v.y, s * v.x + c * v.y, v.z, v.w);
+}
+
 // The moving flow between time nodes (docs/algorithm.md, "The moving flow"): the splines of the
-// nodes floor(node) and floor(node) + 1 (clamped to the grid's nodes), mixed linearly in time
-// (the cyclonic depth in w too); spline_velocity_in_time projects it as spline_velocity. Linear
-// in time errs by (dt^2 / 8) |v_tt| for node spacing dt, within the spline's own error for the
-// spacings the host takes.
-vec4 sample_curl_spline_in_time(vec3 w, SplineImage spline, float node) {
+// nodes floor(node) and floor(node) + 1 (clamped to the grid's nodes), each turned with the
+// drift to the time (`turn`: the drift's angle per node spacing at w's latitude, 0 for none),
+// mixed linearly in time (the cyclonic depth in w too); spline_velocity_in_time projects it as
+// spline_velocity. What is left is the change of the pattern itself (the generations' shares)
+// and the drift's shear (docs/numerics.md, 8b).
+vec4 sample_curl_spline_in_time(vec3 w, SplineImage spline, float node, float turn) {
   int last = imageSize(spline).z / 6 - 1;
   float first = clamp(floor(node), 0.0f, float(max(last - 1, 0)));
   float f = clamp(node - first, 0.0f, 1.0f);
   int k = int(first);
-  return (1.0f - f) * sample_curl_spline_node(w, spline, k) + f * sample_curl_spline_node(w, spline, min(k + 1, last));
+  int next = min(k + 1, last);
+  return (1.0f - f) * sample_curl_spline_node_turned(w, spline, k, turn * (node - first)) +
+         f * sample_curl_spline_node_turned(w, spline, next, turn * (node - float(next)));
 }
 
-vec3 spline_velocity_in_time(vec3 w, SplineImage spline, float node) {
-  vec3 v = vec3(sample_curl_spline_in_time(w, spline, node));
+vec3 spline_velocity_in_time(vec3 w, SplineImage spline, float node, float turn) {
+  vec3 v = vec3(sample_curl_spline_in_time(w, spline, node, turn));
   return v - dot(v, w) * w;
 }
 

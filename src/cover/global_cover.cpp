@@ -160,14 +160,14 @@ void GlobalCover::run_moving_warp() {
     if (!young_warp_field_.id()) young_warp_field_ = gpu::Texture::cube(parameters_.size, GL_RGBA32F);
     const gpu::ComputeProgram& program = *moving_warp_program_;
     namespace warp = shader_bindings::cover_moving_warp;
+    glsl::set_uniform(program, "u_curl", curl_params(parameters_));
+    glsl::set_uniform(program, "u_motion", clock.motion);
     if (spline) {
       program.set("u_first_node_time", clock.first_node_time);
       program.set("u_node_spacing", clock.node_spacing);
       flow_splines_.bind_image(warp::flow_splines, GL_READ_ONLY);
     } else {
-      glsl::set_uniform(program, "u_curl", curl_params(parameters_));
       program.set("u_noise_offset", potential_offset(parameters_));
-      glsl::set_uniform(program, "u_motion", clock.motion);
     }
     program.set("u_time", clock.time);
     program.set("u_old_age", clock.old_age);
@@ -229,6 +229,8 @@ void GlobalCover::run_curl() {
         if (!splines_current_) run_moving_splines();
         curl_program_.set("u_first_node_time", clock.first_node_time);
         curl_program_.set("u_node_spacing", clock.node_spacing);
+        glsl::set_uniform(curl_program_, "u_curl", curl_params(parameters_));
+        glsl::set_uniform(curl_program_, "u_motion", clock.motion);
         flow_splines_.bind_image(shader_bindings::cover_curl::curl_spline, GL_READ_ONLY);
       } else {
         glsl::set_uniform(curl_program_, "u_curl", curl_params(parameters_));
