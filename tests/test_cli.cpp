@@ -202,6 +202,15 @@ TEST_CASE("generate --sequence writes each frame as a whole cover set with a lis
   CHECK(gif.height == 32);
 }
 
+TEST_CASE("bench cover names the curl each size runs with under curl mode auto", "[cli][moving]") {
+  // The moving flow's defaults: procedural while 12 size^2 < 7 x 64^2 (up to 48 per face), then
+  // a spline of max(64, size / 2) nodes (cover::resolved_curl).
+  const Run r = run("bench cover --sizes 8,64 --repeat 1");
+  INFO(r.output);
+  REQUIRE(r.exit_code == 0);
+  CHECK_THAT(r.output, Catch::Contains("curl auto (8: procedural, 64: spline of 64 nodes)"));
+}
+
 TEST_CASE("stats on a sequence finds the clouds moving with the flow's trade winds", "[cli][moving]") {
   TemporaryDirectory out;
   const std::string dir = out.path.string();

@@ -46,19 +46,17 @@ int bench_cover(const std::vector<std::string>& arguments) {
   for (int s : sizes) cover::check_cover_fits(context, s, "--sizes", parameters.flow);
   std::printf("device: %s (%s)\n", context.info().renderer.c_str(), context.info().version.c_str());
   std::printf("flow: %s\n", cover::flow_name(parameters.flow));
-  std::printf("K = %d steps, %s curl%s, potential %d octaves, density %d octaves; median of %d runs\n",
-              parameters.iterations, cover::curl_mode_name(parameters.curl_mode),
-              parameters.curl_mode == cover::CurlMode::spline
-                  ? (" of " + std::to_string(parameters.curl_size) + " nodes per face edge").c_str()
-              : parameters.curl_mode == cover::CurlMode::automatic
-                  ? (" (" +
-                     std::string(parameters.flow == cover::Flow::moving
-                                     ? "per size: procedural up to 48 per face, else a spline of min(" +
-                                           std::to_string(parameters.curl_size) + ", max(64, size / 2)) nodes"
-                                     : "spline of " + std::to_string(parameters.curl_size) + " nodes") +
-                     ")")
-                        .c_str()
-                  : "",
+  // The curl each size runs with (--curl-mode auto resolves per size: cover::resolved_curl).
+  std::string curl;
+  for (int size : sizes) {
+    cover::CoverParameters at = parameters;
+    at.size = size;
+    at = cover::resolved_curl(at);
+    curl += (curl.empty() ? "" : ", ") + std::to_string(size) + ": " + cover::curl_mode_name(at.curl_mode) +
+            (at.curl_mode == cover::CurlMode::spline ? " of " + std::to_string(at.curl_size) + " nodes" : "");
+  }
+  std::printf("K = %d steps, curl %s (%s); potential %d octaves, density %d octaves; median of %d runs\n",
+              parameters.iterations, cover::curl_mode_name(parameters.curl_mode), curl.c_str(),
               parameters.potential.octaves, parameters.density.octaves, repeat);
   std::printf(
       "device ms: GPU time of each pass by GL_TIME_ELAPSED queries (equirect: its dispatches), or\n"
