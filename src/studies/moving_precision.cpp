@@ -36,8 +36,8 @@ struct Layers {
 
 // Both layers' points at the samples by the CPU twin with `factor` times the run's steps: the
 // procedural flow, one trajectory as the GPU's (young, then on to the older layer's age).
-Layers reference_layers(const cover::CoverParameters& p, const std::vector<vec3>& starts, int factor) {
-  const cover::FrameClock clock = cover::frame_clock(p, cover::hours_since_epoch(p.time));
+Layers reference_layers(const cover::CoverParameters& p, const cover::FrameClock& clock,
+                        const std::vector<vec3>& starts, int factor) {
   const glsl::MovingCurl field{cover::curl_params(p), cover::potential_offset(p), clock.motion};
   Layers out;
   for (const vec3& x : starts) {
@@ -114,7 +114,7 @@ MovingPrecisionRow run_config(const MovingPrecisionOptions& o, const Config& c,
   if (!references.count(key)) {
     std::vector<vec3> starts;
     for (std::size_t t : texels) starts.push_back(point(identity, t));
-    references[key] = reference_layers(p, starts, o.reference_factor);
+    references[key] = reference_layers(p, clock, starts, o.reference_factor);
   }
   const Layers& reference = references[key];
   double young_sum = 0, old_sum = 0;
