@@ -26,6 +26,7 @@
 #include "io/volume_export.hpp"
 #include "core/error.hpp"
 #include "params/table.hpp"
+#include "texture_readers.hpp"
 
 namespace nephele {
 namespace {
@@ -105,13 +106,6 @@ struct Exported {
   }
 };
 
-std::uint32_t u32(const std::string& b, std::size_t at) {
-  std::uint32_t v = 0;
-  for (int i = 3; i >= 0; --i) v = (v << 8) | (unsigned char)b[at + i];
-  return v;
-}
-std::uint64_t u64(const std::string& b, std::size_t at) { return u32(b, at) | (std::uint64_t(u32(b, at + 4)) << 32); }
-
 // PNG chunk types in file order (PNG specification, section 5.3: length, type, data, CRC).
 std::vector<std::string> png_chunks(const std::string& bytes) {
   std::vector<std::string> types;
@@ -125,14 +119,6 @@ std::vector<std::string> png_chunks(const std::string& bytes) {
   return types;
 }
 
-// IEEE 754 binary16 to float, for the readers below.
-float from_half(std::uint16_t h) {
-  const int exponent = (h >> 10) & 31, mantissa = h & 1023;
-  const float magnitude =
-      exponent == 0 ? std::ldexp(float(mantissa), -24) : std::ldexp(float(mantissa + 1024), exponent - 25);
-  return (h & 0x8000) ? -magnitude : magnitude;
-}
-
 // Read as stored: PNG alpha is unassociated, and OpenImageIO would premultiply the colour.
 core::ImageData read_png_as_stored(const std::filesystem::path& png) {
   OIIO::ImageSpec config;
@@ -144,6 +130,81 @@ core::ImageData read_png_as_stored(const std::filesystem::path& png) {
   REQUIRE(in->read_image(0, 0, 0, image.channels, OIIO::TypeDesc::FLOAT, image.pixels.data()));
   in->close();
   return image;
+}
+
+void check_equirect_marker(const core::ImageData& image, int channel = 0) {
+  REQUIRE(image.width == 2 * image.height);
+  const auto c = bright_centroid(image.pixels, image.width, image.channels, channel, 0, 0, image.width, image.height);
+  const auto expected = marker_on_equirect(image.width, image.height);
+  REQUIRE(c.count > 0);
+  CHECK(c.x == Approx(expected[0]).epsilon(0).margin(kMarkerPixels));
+  CHECK(c.y == Approx(expected[1]).epsilon(0).margin(kMarkerPixels));
+}
+
+// A 2D DDS of EVE's kind (legacy FourCC DXT5, every mip level; Microsoft's DDS_HEADER at its
+// documented offsets): the base level as RGBA floats, after checking that it is not a cube and
+// that the file holds exactly the full chain.
+core::ImageData read_dds_2d_dxt5(const std::filesystem::path& path) {
+  const std::string b = test::read_file(path);
+  const test::DdsFile d = test::read_dds(b);
+  CHECK(d.four_cc == "DXT5");
+  CHECK(d.faces == 1);
+  CHECK((d.caps & 0x400000u) != 0);  // DDSCAPS_MIPMAP: EVE's reader keeps the chain only with it
+  int levels = 1;
+  for (std::uint32_t edge = std::max(d.width, d.height); edge > 1; edge >>= 1) ++levels;
+  CHECK(d.mip_count == std::uint32_t(levels));
+  CHECK(b.size() == test::dds_image_offset(d, test::StoredFormat::bc3, 1, 0));
+  const int width = int(d.width), height = int(d.height);
+  const auto* data = reinterpret_cast<const unsigned char*>(b.data()) + d.data_offset;
+  return {width, height, 4, test::decode_stored_image(test::StoredFormat::bc3, data, width, height)};
+}
+
+// KSP's ConfigNode text (GameData/*.cfg) as EVE's managers see it: nodes NAME { ... } holding
+// `key = value` lines and child nodes, // comments. Written from the format's description on
+// the KSP wiki and EVE's EveManager/IEVEManager.cs (Apply reads the child nodes of each
+// top-level node), not from nephele's writer.
+struct ConfigNode {
+  std::string name;
+  std::multimap<std::string, std::string> values;
+  std::vector<ConfigNode> nodes;
+  std::string value(const std::string& key) const {
+    const auto it = values.find(key);
+    return it == values.end() ? std::string() : it->second;
+  }
+  const ConfigNode* node(const std::string& child) const {
+    for (const auto& n : nodes)
+      if (n.name == child) return &n;
+    return nullptr;
+  }
+};
+std::string trimmed(std::string text) {
+  const auto first = text.find_first_not_of(" \t\r"), last = text.find_last_not_of(" \t\r");
+  return first == std::string::npos ? std::string() : text.substr(first, last - first + 1);
+}
+ConfigNode parse_config(const std::string& text) {
+  ConfigNode root;
+  std::vector<ConfigNode*> open{&root};
+  std::string pending;  // a name waiting for its '{'
+  std::istringstream lines(text);
+  for (std::string line; std::getline(lines, line);) {
+    line = trimmed(line.substr(0, line.find("//")));
+    if (line.empty()) continue;
+    if (line == "{") {
+      REQUIRE_FALSE(pending.empty());
+      open.back()->nodes.push_back({pending, {}, {}});
+      open.push_back(&open.back()->nodes.back());
+      pending.clear();
+    } else if (line == "}") {
+      REQUIRE(open.size() > 1);
+      open.pop_back();
+    } else if (line.find('=') != std::string::npos) {
+      open.back()->values.emplace(trimmed(line.substr(0, line.find('='))), trimmed(line.substr(line.find('=') + 1)));
+    } else {
+      pending = line;
+    }
+  }
+  CHECK(open.size() == 1);  // every node closed
+  return root;
 }
 
 }  // namespace
@@ -219,96 +280,44 @@ TEST_CASE("export gl-faces: the marker on the +Y face only, at the texel of the 
   }
 }
 
-// A KTX2 reader from the Khronos KTX 2.0 specification, sections 3.1-3.9, and the Khronos Data
-// Format Specification 1.3, section 5: only what a loader needs to place a cube's texels.
-struct Ktx2 {
-  std::uint32_t vk_format, type_size, width, height, depth, layers, faces, levels, supercompression;
-  std::uint32_t dfd_offset, dfd_length, kvd_offset, kvd_length;
-  std::uint64_t level_offset, level_length;
-  std::uint32_t color_model, primaries, transfer, bytes_plane0, bit_length, channel_byte;
-  std::string orientation;
-};
-
-Ktx2 read_ktx2(const std::string& b) {
-  const unsigned char identifier[12] = {0xAB, 'K', 'T', 'X', ' ', '2', '0', 0xBB, '\r', '\n', 0x1A, '\n'};
-  REQUIRE(b.size() > 80);
-  REQUIRE(std::memcmp(b.data(), identifier, 12) == 0);
-  Ktx2 k;
-  std::uint32_t* header[] = {&k.vk_format, &k.type_size, &k.width,  &k.height,          &k.depth,
-                             &k.layers,    &k.faces,     &k.levels, &k.supercompression};
-  for (int i = 0; i < 9; ++i) *header[i] = u32(b, 12 + 4 * i);
-  k.dfd_offset = u32(b, 48), k.dfd_length = u32(b, 52), k.kvd_offset = u32(b, 56), k.kvd_length = u32(b, 60);
-  CHECK(u64(b, 64) == 0);  // no supercompression global data
-  k.level_offset = u64(b, 80), k.level_length = u64(b, 88);
-  CHECK(u64(b, 96) == k.level_length);  // uncompressedByteLength
-  const std::size_t d = k.dfd_offset;
-  CHECK(u32(b, d) == k.dfd_length);                  // dfdTotalSize
-  CHECK(u32(b, d + 4) == 0);                         // Khronos vendor, basic descriptor type
-  CHECK((u32(b, d + 8) & 0xffff) == 2);              // version 2 (KDF 1.3)
-  CHECK((u32(b, d + 8) >> 16) == k.dfd_length - 4);  // descriptorBlockSize: one block
-  k.color_model = u32(b, d + 12) & 0xff, k.primaries = (u32(b, d + 12) >> 8) & 0xff;
-  k.transfer = (u32(b, d + 12) >> 16) & 0xff;
-  k.bytes_plane0 = u32(b, d + 20) & 0xff;
-  k.bit_length = ((u32(b, d + 28) >> 16) & 0xff) + 1;
-  k.channel_byte = u32(b, d + 28) >> 24;
-  // Key/value pairs: length, "key\0value", padded to 4 bytes.
-  for (std::size_t at = k.kvd_offset; at < k.kvd_offset + k.kvd_length;) {
-    const std::uint32_t length = u32(b, at);
-    const std::string entry = b.substr(at + 4, length);
-    const std::string key = entry.substr(0, entry.find('\0'));
-    if (key == "KTXorientation") k.orientation = std::string(entry.c_str() + key.size() + 1);
-    at += 4 + ((length + 3) / 4) * 4;
-  }
-  return k;
-}
-
 TEST_CASE(
-    "export ktx2: an independent reader finds the spec's header, descriptor and orientation, and the marker on +Y",
+    "export ktx2: an independent reader finds the spec's header, descriptor, orientation and mip chain, and the marker "
+    "on +Y",
     "[export]") {
   const struct {
     const char* format;
-    std::uint32_t vk_format, bytes;
-  } cases[] = {{"r16f", 76, 2}, {"r32f", 100, 4}, {"r8", 9, 1}};
+    std::uint32_t vk_format, type_size;
+    test::StoredFormat stored;
+  } cases[] = {{"r16f", 76, 2, test::StoredFormat::r16f},
+               {"r32f", 100, 4, test::StoredFormat::r32f},
+               {"r8", 9, 1, test::StoredFormat::r8},
+               {"bc4", 139, 1, test::StoredFormat::bc4}};
   for (const auto& c : cases) {
     INFO(c.format);
     Exported e("ktx2", std::string(" --format ") + c.format);
     REQUIRE(e.run.exit_code == 0);
     const std::string b = test::read_file(e.out.path / "cover_cube.ktx2");
-    const Ktx2 k = read_ktx2(b);
+    const test::Ktx2File k = test::read_ktx2(b);
     CHECK(k.vk_format == c.vk_format);
-    CHECK(k.type_size == c.bytes);
+    CHECK(k.type_size == c.type_size);
     CHECK(k.width == std::uint32_t(kSize));
     CHECK(k.height == std::uint32_t(kSize));
     CHECK(k.depth == 0);
     CHECK(k.layers == 0);
     CHECK(k.faces == 6);
-    CHECK(k.levels == 1);
+    CHECK(k.level_count == 6);  // 32 down to 1
     CHECK(k.supercompression == 0);
-    CHECK(k.color_model == 1);  // RGBSDA
-    CHECK(k.primaries == 1);    // BT.709
-    CHECK(k.transfer == 1);     // linear: coverage is data
-    CHECK(k.bytes_plane0 == c.bytes);
-    CHECK(k.bit_length == 8 * c.bytes);
-    CHECK(k.channel_byte == (c.bytes == 1 ? 0x00u : 0xC0u));  // red; float and signed for SFLOAT
+    CHECK(k.primaries == 1);  // BT.709
+    CHECK(k.transfer == 1);   // linear: coverage is data
     CHECK(k.orientation == "rd");
-    CHECK(k.level_offset % 4 == 0);
-    REQUIRE(k.level_length == 6ull * kSize * kSize * c.bytes);
-    REQUIRE(k.level_offset + k.level_length <= b.size());
-    // Faces in GL order, rows without padding: the marker on face 2.
-    std::vector<float> texels(6 * kSize * kSize);
-    for (std::size_t i = 0; i < texels.size(); ++i) {
-      const std::size_t at = k.level_offset + i * c.bytes;
-      if (c.bytes == 1)
-        texels[i] = (unsigned char)b[at] / 255.0f;
-      else if (c.bytes == 2)
-        texels[i] = from_half(std::uint16_t((unsigned char)b[at] | ((unsigned char)b[at + 1] << 8)));
-      else {
-        const std::uint32_t bits = u32(b, at);
-        std::memcpy(&texels[i], &bits, 4);
-      }
-    }
+    // Faces in GL order, rows without padding: the marker on face 2 of the base level.
+    const std::size_t face_bytes = test::stored_image_bytes(c.stored, kSize, kSize);
+    REQUIRE(k.levels[0].length == 6 * face_bytes);
+    REQUIRE(k.levels[0].offset + k.levels[0].length <= b.size());
     for (int f = 0; f < 6; ++f) {
-      const auto centroid = bright_centroid(texels, kSize, 1, 0, 0, f * kSize, kSize, kSize);
+      const auto* data = reinterpret_cast<const unsigned char*>(b.data()) + k.levels[0].offset + f * face_bytes;
+      const std::vector<float> texels = test::decode_stored_image(c.stored, data, kSize, kSize);
+      const auto centroid = bright_centroid(texels, kSize, 1, 0, 0, 0, kSize, kSize);
       INFO("face " << f);
       if (f != 2) {
         CHECK(centroid.count == 0);
@@ -320,7 +329,7 @@ TEST_CASE(
   }
 }
 
-TEST_CASE("export refuses a ktx2 format outside r16f, r32f, r8", "[export][cli]") {
+TEST_CASE("export refuses a ktx2 format outside r16f, r32f, r8, bc4", "[export][cli]") {
   Exported e("ktx2", " --format bc7");
   CHECK(e.run.exit_code == 2);
   CHECK_THAT(e.run.output, Catch::Contains("--format") && Catch::Contains("bc7"));
@@ -329,43 +338,57 @@ TEST_CASE("export refuses a ktx2 format outside r16f, r32f, r8", "[export][cli]"
 // The fields of a DDS file that place its texels (Microsoft's "DDS_HEADER", "DDS_PIXELFORMAT"
 // and "DDS_HEADER_DXT10" reference pages), read at their documented byte offsets.
 TEST_CASE(
-    "export dds: legacy RGBA8 and DX10 float cube headers as documented, and OpenImageIO finds the marker in the RGBA8 "
-    "cube",
+    "export dds: BC4, BC3, RGBA8 and DX10 float cubes with mip chains as documented, and OpenImageIO finds the marker "
+    "in the RGBA8 cube",
     "[export]") {
   Exported e("dds");
   REQUIRE(e.run.exit_code == 0);
   const struct {
     const char* name;
-    std::uint32_t dxgi, bytes;  // dxgi 0: the legacy header
-  } cases[] = {{"cover_cube_rgba8.dds", 0, 4}, {"cover_cube_r16f.dds", 54, 2}, {"cover_cube_r32f.dds", 41, 4}};
+    const char* four_cc;
+    std::uint32_t dxgi;
+    test::StoredFormat stored;
+  } cases[] = {{"cover_cube_bc4.dds", "ATI1", 0, test::StoredFormat::bc4},
+               {"cover_cube_bc3.dds", "DXT5", 0, test::StoredFormat::bc3},
+               {"cover_cube_rgba8.dds", "", 0, test::StoredFormat::rgba8},
+               {"cover_cube_r16f.dds", "DX10", 54, test::StoredFormat::r16f},
+               {"cover_cube_r32f.dds", "DX10", 41, test::StoredFormat::r32f}};
   for (const auto& c : cases) {
     INFO(c.name);
     const std::string b = test::read_file(e.out.path / c.name);
-    REQUIRE(b.size() > 128);
-    CHECK(b.compare(0, 4, "DDS ") == 0);
-    CHECK(u32(b, 4) == 124);                    // dwSize
-    CHECK(u32(b, 12) == std::uint32_t(kSize));  // dwHeight
-    CHECK(u32(b, 16) == std::uint32_t(kSize));  // dwWidth
-    CHECK(u32(b, 20) == kSize * c.bytes);       // dwPitchOrLinearSize: bytes per row
-    CHECK(u32(b, 76) == 32);                    // ddspf.dwSize
-    CHECK((u32(b, 108) & 0x1008u) == 0x1008u);  // dwCaps: TEXTURE | COMPLEX
-    CHECK(u32(b, 112) == 0xFE00u);              // dwCaps2: CUBEMAP and all six faces
-    std::size_t data = 128;
-    if (c.dxgi == 0) {
-      CHECK(u32(b, 80) == 0x41u);  // DDPF_RGB | DDPF_ALPHAPIXELS
-      CHECK(u32(b, 88) == 32);     // dwRGBBitCount
-      CHECK(u32(b, 92) == 0x000000ffu);
-      CHECK(u32(b, 104) == 0xff000000u);
-    } else {
-      CHECK(u32(b, 80) == 0x4u);  // DDPF_FOURCC
-      CHECK(b.compare(84, 4, "DX10") == 0);
-      CHECK(u32(b, 128) == c.dxgi);
-      CHECK(u32(b, 132) == 3);    // D3D10_RESOURCE_DIMENSION_TEXTURE2D
-      CHECK(u32(b, 136) == 0x4);  // DDS_RESOURCE_MISC_TEXTURECUBE
-      CHECK(u32(b, 140) == 1);    // one cube
-      data = 148;
+    const test::DdsFile d = test::read_dds(b);
+    CHECK(d.height == std::uint32_t(kSize));
+    CHECK(d.width == std::uint32_t(kSize));
+    CHECK(d.mip_count == 6);
+    CHECK(d.four_cc == c.four_cc);
+    CHECK(d.caps2 == 0xFE00u);  // CUBEMAP and all six faces
+    if (c.stored == test::StoredFormat::rgba8) {
+      CHECK(d.pixel_flags == 0x41u);  // DDPF_RGB | DDPF_ALPHAPIXELS
+      CHECK(d.rgb_bits == 32);
+      CHECK(d.masks[0] == 0x000000ffu);
+      CHECK(d.masks[3] == 0xff000000u);
     }
-    CHECK(b.size() == data + 6ull * kSize * kSize * c.bytes);
+    if (c.dxgi != 0) {
+      CHECK(d.dxgi == c.dxgi);
+      CHECK(d.dx10_dimension == 3);  // D3D10_RESOURCE_DIMENSION_TEXTURE2D
+      CHECK(d.dx10_misc == 0x4);     // DDS_RESOURCE_MISC_TEXTURECUBE
+      CHECK(d.dx10_array_size == 1);
+    }
+    CHECK(b.size() == test::dds_image_offset(d, c.stored, 6, 0));
+    // The marker on face 2 of the base level (alpha for the RGBA formats).
+    for (int f = 0; f < 6; ++f) {
+      const auto* data = reinterpret_cast<const unsigned char*>(b.data()) + test::dds_image_offset(d, c.stored, f, 0);
+      const std::vector<float> texels = test::decode_stored_image(c.stored, data, kSize, kSize);
+      const int channels = int(texels.size() / (kSize * kSize));
+      const auto centroid = bright_centroid(texels, kSize, channels, channels - 1, 0, 0, kSize, kSize);
+      INFO("face " << f);
+      if (f != 2) {
+        CHECK(centroid.count == 0);
+        continue;
+      }
+      CHECK(centroid.x == Approx(marker_on_face()[0]).epsilon(0).margin(kMarkerPixels));
+      CHECK(centroid.y == Approx(marker_on_face()[1]).epsilon(0).margin(kMarkerPixels));
+    }
   }
   // OpenImageIO 2.4 reads the legacy RGBA8 cube as an N x 6N image of the faces in order; the
   // marker must be on the third face (+Y), where the GL table puts it.
@@ -393,7 +416,15 @@ TEST_CASE(
   REQUIRE(e.run.exit_code == 0);
   const auto folder = e.out.path / "extras" / "marker_test";
   const std::string ssc = test::read_file(folder / "marker_test.ssc");
-  CHECK_THAT(ssc, Catch::Contains("Modify \"Earth\" \"Sol\"") && Catch::Contains("CloudMap \"marker_test.png\""));
+  CHECK_THAT(ssc, Catch::Contains("Modify \"Earth\" \"Sol\"") && Catch::Contains("CloudMap \"marker_test.dds\"") &&
+                      Catch::Contains("CloudShadowDepth 1"));
+  // The DDS the .ssc names: DXT5 (Celestia's loader reads DXT1, DXT3, DXT5), every mip level,
+  // RGB white and the marker in alpha where the PNG has it.
+  const auto dds = read_dds_2d_dxt5(folder / "textures" / "hires" / "marker_test.dds");
+  REQUIRE(dds.width == 4 * kSize);
+  REQUIRE(dds.height == 2 * kSize);
+  CHECK(dds.pixels[0] == 1.0f);
+  check_equirect_marker(dds, 3);
   const auto png = folder / "textures" / "hires" / "marker_test.png";
   const auto image = read_png_as_stored(png);
   REQUIRE(image.channels == 4);
@@ -428,29 +459,106 @@ TEST_CASE("export celestia and eve refuse a bad --name with exit code 2 before c
   }
 }
 
-TEST_CASE("export exr-cube: an N x 6N envmap=cube strip with the +Y face flipped top-bottom, as OpenEXR's layout wants",
-          "[export]") {
+// OpenEXR's CubeMap::pixelPosition inverted and CubeMap::direction (src/lib/OpenEXR/ImfEnvmap.cpp),
+// transcribed: the direction of pixel (column c, row r) of `face` in an N x 6N strip. pif is the
+// position in the face, 0 .. N - 1 on both axes, mapped to -1 .. 1 edge to edge.
+std::array<double, 3> openexr_direction(int face, int c, int r, int n) {
+  const double s = n - 1;
+  double px = 0, py = 0;  // pif
+  switch (face) {
+    case 0: px = s - r, py = c; break;      // +X: pixel (min.x + pif.y, max.y - pif.x)
+    case 1: px = s - r, py = s - c; break;  // -X: (max.x - pif.y, max.y - pif.x)
+    case 2: px = c, py = s - r; break;      // +Y: (min.x + pif.x, max.y - pif.y)
+    case 3: px = c, py = r; break;          // -Y: (min.x + pif.x, min.y + pif.y)
+    case 4: px = s - c, py = s - r; break;  // +Z: (max.x - pif.x, max.y - pif.y)
+    default: px = c, py = s - r; break;     // -Z: (min.x + pif.x, max.y - pif.y)
+  }
+  const double a = px / s * 2 - 1, b = py / s * 2 - 1;
+  const std::array<double, 3> d = face == 0   ? std::array<double, 3>{1, a, b}
+                                  : face == 1 ? std::array<double, 3>{-1, a, b}
+                                  : face == 2 ? std::array<double, 3>{a, 1, b}
+                                  : face == 3 ? std::array<double, 3>{a, -1, b}
+                                  : face == 4 ? std::array<double, 3>{a, b, 1}
+                                              : std::array<double, 3>{a, b, -1};
+  const double length = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+  return {d[0] / length, d[1] / length, d[2] / length};
+}
+
+TEST_CASE(
+    "export exr-cube: every pixel holds the cover in the direction OpenEXR's envmap gives it, edge pixels on the "
+    "cube's edges",
+    "[export]") {
+  // A smooth cover, f(d) = 0.5 + A (x + y + z) with A = 0.45 / sqrt 3, on faces of n texels.
+  const int n = 64;
+  const double amplitude = 0.45 / std::sqrt(3.0);
+  const auto f = [&](const std::array<double, 3>& d) { return 0.5 + amplitude * (d[0] + d[1] + d[2]); };
+  test::TemporaryDirectory cover{true}, out;
+  const char* const suffixes[6] = {"px", "nx", "py", "ny", "pz", "nz"};
+  for (int face = 0; face < 6; ++face) {
+    core::ImageData image{n, n, 1, std::vector<float>(n * n)};
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i) image.pixels[j * n + i] = float(f(io::gl_texel_direction(face, i, j, n)));
+    files::write_image(cover.path / (std::string("cover_") + suffixes[face] + ".exr"), image,
+                       files::exr_encoding({"Y"}));
+  }
+  const test::Run run = test::run("export " + cover.path.string() + " --preset exr-cube --out " + out.path.string());
+  REQUIRE(run.exit_code == 0);
+  const auto path = out.path / "cover_envcube.exr";
+  {
+    auto in = OIIO::ImageInput::open(path.string());
+    REQUIRE(in);
+    // OpenImageIO reports the header's envmap = cube as this texture format.
+    CHECK(in->spec().get_string_attribute("textureformat") == "CubeFace Environment");
+  }
+  const auto strip = files::read_image(path);
+  REQUIRE(strip.width == n);
+  REQUIRE(strip.height == 6 * n);
+  // Bilinear interpolation of f in face coordinates (a, b), texel spacing h = 2/n, errs by at most
+  // h^2/8 (|f_aa| + |f_bb|); each unit direction component has second derivatives of at most 1 in
+  // a and b on a face, so |f_aa| + |f_bb| <= 6 A. That bounds every pixel off the face's edges.
+  // An edge pixel mixes in texels of the next face (shaders/lib/cube_sampling.glsl), whose centres
+  // lie up to h/2 along the edge from where the face's own grid continued (at a corner one more
+  // stands in): with |grad f| <= sqrt 3 A per unit of a or b, at most sqrt 3 A h more.
+  const double h = 2.0 / n, bound = h * h / 8 * 6 * amplitude, edge_bound = bound + std::sqrt(3.0) * amplitude * h;
+  double worst = 0, worst_edge = 0, worst_gl_centres = 0;
+  for (int face = 0; face < 6; ++face)
+    for (int r = 0; r < n; ++r)
+      for (int c = 0; c < n; ++c) {
+        const double want = f(openexr_direction(face, c, r, n));
+        const double error = std::abs(strip.pixels[(std::size_t(face) * n + r) * n + c] - want);
+        const bool edge = c == 0 || r == 0 || c == n - 1 || r == n - 1;
+        (edge ? worst_edge : worst) = std::max(edge ? worst_edge : worst, error);
+        // What a mirrored copy of the GL texels (centres half a texel inside the face) puts there.
+        const bool y_face = face == 2 || face == 3;
+        const auto gl = io::gl_texel_direction(face, y_face ? c : n - 1 - c, y_face ? n - 1 - r : r, n);
+        if (!edge) worst_gl_centres = std::max(worst_gl_centres, std::abs(f(gl) - want));
+      }
+  CHECK(worst <= bound);
+  CHECK(worst_edge <= edge_bound);
+  // The test tells the conventions apart: half a texel of shift errs by several bounds.
+  CHECK(worst_gl_centres > 3 * bound);
+  // The marker cover lands where OpenEXR's directions put it: on the third face of the strip.
   Exported e("exr-cube");
   REQUIRE(e.run.exit_code == 0);
-  const auto path = e.out.path / "cover_envcube.exr";
-  auto in = OIIO::ImageInput::open(path.string());
-  REQUIRE(in);
-  // OpenImageIO reports the header's envmap = cube as this texture format.
-  CHECK(in->spec().get_string_attribute("textureformat") == "CubeFace Environment");
-  in->close();
-  const auto image = files::read_image(path);
-  REQUIRE(image.width == kSize);
-  REQUIRE(image.height == 6 * kSize);
-  for (int f = 0; f < 6; ++f) {
-    INFO("face " << f);
-    const auto centroid = bright_centroid(image.pixels, kSize, image.channels, 0, 0, f * kSize, kSize, kSize);
-    if (f != 2) {
+  const auto marker = files::read_image(e.out.path / "cover_envcube.exr");
+  for (int face = 0; face < 6; ++face) {
+    INFO("face " << face);
+    const auto centroid = bright_centroid(marker.pixels, kSize, 1, 0, 0, face * kSize, kSize, kSize);
+    if (face != 2) {
       CHECK(centroid.count == 0);
       continue;
     }
-    // The Y faces are mirrored top-bottom relative to the GL face (REFERENCE.md, OpenEXR cube).
-    CHECK(centroid.x == Approx(marker_on_face()[0]).epsilon(0).margin(kMarkerPixels));
-    CHECK(centroid.y == Approx(kSize - 1 - marker_on_face()[1]).epsilon(0).margin(kMarkerPixels));
+    // Where OpenEXR's direction of a pixel is nearest the marker's.
+    const auto m = marker_direction();
+    double best = -2, bx = 0, by = 0;
+    for (int r = 0; r < kSize; ++r)
+      for (int c = 0; c < kSize; ++c) {
+        const auto d = openexr_direction(face, c, r, kSize);
+        const double dot = d[0] * m[0] + d[1] * m[1] + d[2] * m[2];
+        if (dot > best) best = dot, bx = c, by = r;
+      }
+    CHECK(centroid.x == Approx(bx).epsilon(0).margin(kMarkerPixels + 0.5));
+    CHECK(centroid.y == Approx(by).epsilon(0).margin(kMarkerPixels + 0.5));
   }
 }
 
@@ -492,7 +600,7 @@ TEST_CASE("half_from_float rounds to the nearest binary16, ties to even, through
   CHECK(files::half_from_float(1e6f) == 0x7C00);                   // overflow to infinity
   // Every value the reader decodes maps back to itself.
   for (std::uint32_t h = 0; h < 0x7C00; ++h) {
-    if (files::half_from_float(from_half(std::uint16_t(h))) != h) FAIL("round trip of " << h);
+    if (files::half_from_float(test::float_from_half(std::uint16_t(h))) != h) FAIL("round trip of " << h);
   }
 }
 
@@ -546,29 +654,6 @@ void check_no_gamma_chunk(const std::filesystem::path& png) {
   }
 }
 
-void check_equirect_marker(const core::ImageData& image, int channel = 0) {
-  REQUIRE(image.width == 2 * image.height);
-  const auto c = bright_centroid(image.pixels, image.width, image.channels, channel, 0, 0, image.width, image.height);
-  const auto expected = marker_on_equirect(image.width, image.height);
-  REQUIRE(c.count > 0);
-  CHECK(c.x == Approx(expected[0]).epsilon(0).margin(kMarkerPixels));
-  CHECK(c.y == Approx(expected[1]).epsilon(0).margin(kMarkerPixels));
-}
-
-// A 2D legacy RGBA8 DDS (Microsoft's DDS_HEADER at its documented offsets): width, height and the
-// texels as floats (4 channels), after checking that it is not a cube.
-core::ImageData read_dds_2d_rgba8(const std::filesystem::path& path) {
-  const std::string b = test::read_file(path);
-  REQUIRE(b.size() >= 128);
-  CHECK(b.compare(0, 4, "DDS ") == 0);
-  CHECK(u32(b, 80) == 0x41u);  // DDPF_RGB | DDPF_ALPHAPIXELS
-  CHECK(u32(b, 112) == 0u);    // dwCaps2: no cube
-  core::ImageData image{int(u32(b, 16)), int(u32(b, 12)), 4, {}};
-  REQUIRE(b.size() == 128 + 4 * std::size_t(image.width) * image.height);
-  for (std::size_t i = 128; i < b.size(); ++i) image.pixels.push_back((unsigned char)b[i] / 255.0f);
-  return image;
-}
-
 }  // namespace
 
 TEST_CASE("export flightgear: eight bordered tiles whose inner 126/128 reassemble to the map with the marker in N3",
@@ -602,8 +687,10 @@ TEST_CASE("export flightgear: eight bordered tiles whose inner 126/128 reassembl
   check_equirect_marker(mosaic);
 }
 
-TEST_CASE("export eve: the marker where EVE's equirect and GetCubeCubeUV rules look, and the config names the faces",
-          "[export]") {
+TEST_CASE(
+    "export eve: DXT5 textures with mip chains, the marker where EVE's equirect and GetCubeCubeUV rules look, and "
+    "configs EVE's node structure reads",
+    "[export]") {
   Exported e("eve");
   REQUIRE(e.run.exit_code == 0);
   const auto dir = e.out.path / "GameData" / "nephele_clouds";
@@ -611,7 +698,7 @@ TEST_CASE("export eve: the marker where EVE's equirect and GetCubeCubeUV rules l
   const auto m = marker_direction();
   const std::array<double, 3> v{m[1], m[2], m[0]};
   {
-    const auto image = read_dds_2d_rgba8(dir / "clouds_equirect.dds");
+    const auto image = read_dds_2d_dxt5(dir / "clouds_equirect.dds");
     REQUIRE(image.width == 4 * kSize);
     const double u = 0.5 + std::atan2(v[0], v[2]) / (2 * kPi), vv = std::acos(v[1]) / kPi;
     const auto c = bright_centroid(image.pixels, image.width, 4, 3, 0, 0, image.width, image.height);
@@ -629,14 +716,20 @@ TEST_CASE("export eve: the marker where EVE's equirect and GetCubeCubeUV rules l
                                   : std::array<double, 3>{v[0], -s * v[2], -v[1]};
   const double u = 0.5 * dc[1] / std::abs(dc[0]) + 0.5, vv = 0.5 * dc[2] / std::abs(dc[0]) + 0.5;
   const std::string hit = std::string(ny ? (zx ? "z" : "x") : "y") + (s > 0 ? "p" : "n");
-  const std::string config = test::read_file(dir / "nephele_clouds_textures.cfg");
-  CHECK_THAT(config, Catch::Contains("EVE_TEXTURE_CONFIG") && Catch::Contains("type = TEX_CUBE_6"));
+  // EVE's TextureConfig manager reads each child node of EVE_TEXTURE_CONFIG; a TEX_CUBE_6 object
+  // names its six faces by GameData paths without extension.
+  const ConfigNode textures = parse_config(test::read_file(dir / "nephele_clouds_textures.cfg"));
+  const ConfigNode* texture_config = textures.node("EVE_TEXTURE_CONFIG");
+  REQUIRE(texture_config != nullptr);
+  REQUIRE(texture_config->nodes.size() == 1);
+  const ConfigNode& cube = texture_config->nodes[0];
+  CHECK(cube.value("type") == "TEX_CUBE_6");
+  CHECK(texture_config->values.empty());  // keys outside an object are never read
   for (const char* key : {"xn", "xp", "yn", "yp", "zn", "zp"}) {
     INFO(key);
-    const std::string file = std::string("clouds_") + key;
-    CHECK_THAT(config,
-               Catch::Contains(std::string("tex") + char(std::toupper(key[0])) + key[1] + " = nephele_clouds/" + file));
-    const auto image = read_dds_2d_rgba8(dir / (file + ".dds"));
+    const std::string path = cube.value(std::string("tex") + char(std::toupper(key[0])) + key[1]);
+    REQUIRE_FALSE(path.empty());
+    const auto image = read_dds_2d_dxt5(e.out.path / "GameData" / (path + ".dds"));
     REQUIRE(image.width == kSize);
     const auto c = bright_centroid(image.pixels, kSize, 4, 3, 0, 0, kSize, kSize);
     if (hit != key) {
@@ -648,6 +741,20 @@ TEST_CASE("export eve: the marker where EVE's equirect and GetCubeCubeUV rules l
     CHECK(c.y == Approx(vv * kSize - 0.5).epsilon(0).margin(kMarkerPixels));
   }
   CHECK(hit == "xp");  // 30 N 60 E: EVE's +X (90 E) face
+  // The cloud layer: an object of EVE_CLOUDS whose _MainTex is the cube by name, type CubeMap
+  // (TextureWrapper.isValid looks a CubeMap value up among the texture configs' names).
+  const ConfigNode clouds = parse_config(test::read_file(dir / "nephele_clouds_clouds.cfg"));
+  REQUIRE(clouds.node("EVE_CLOUDS") != nullptr);
+  REQUIRE(clouds.node("EVE_CLOUDS")->nodes.size() == 1);
+  const ConfigNode& layer = clouds.node("EVE_CLOUDS")->nodes[0];
+  CHECK(layer.value("body") == "Kerbin");
+  CHECK_FALSE(layer.value("altitude").empty());
+  REQUIRE(layer.node("settings") != nullptr);
+  const ConfigNode* main_texture = layer.node("settings")->node("_MainTex");
+  REQUIRE(main_texture != nullptr);
+  CHECK(main_texture->value("value") == cube.value("name"));
+  CHECK(main_texture->value("type") == "CubeMap");
+  CHECK(layer.node("layer2D") != nullptr);
 }
 
 TEST_CASE("export unity: the lat-long maps carry the marker, HDRP's in red, and the 6x1 strip is the reflected cube",
@@ -793,6 +900,48 @@ TEST_CASE("generate --export runs the presets into export/NAME of the same set, 
   const auto too_wide = test::run("generate --size 4097 --export equirect --out " + bad.path.string());
   CHECK(too_wide.exit_code == 2);
   CHECK_THAT(too_wide.output, Catch::Contains("16384"));
+}
+
+// FlightGear's shipped cloud tiles (Debian flightgear-data-models, optional): the grey channel
+// multiplies the light when Earthview's overlay is off (Shaders/planet-cloudlayer.frag), so the
+// exported tiles must carry the grey the shipped ones carry for a given alpha, or our clouds come
+// out brighter or darker than FlightGear's. Mean grey per alpha bin of width 0.1 over the eight
+// shipped tiles, compared bin by bin with the export of the marker cover (alpha 0.1 and 1).
+TEST_CASE("export flightgear: the tiles' grey follows the shipped tiles' grey for each alpha",
+          "[optional][export][flightgear]") {
+  const std::filesystem::path textures = "/usr/share/games/flightgear/Models/Astro/Textures";
+  if (!std::filesystem::exists(textures / "clouds_N1.png")) {
+    test::skip_case("FlightGear's models are not installed (apt-get install flightgear-data-models)");
+    return;
+  }
+  const auto grey_by_alpha = [](const std::filesystem::path& folder) {
+    std::array<double, 10> sum{}, count{};
+    for (const char* tile : {"N1", "N2", "N3", "N4", "S1", "S2", "S3", "S4"}) {
+      const auto image = read_png_as_stored(folder / (std::string("clouds_") + tile + ".png"));
+      REQUIRE(image.channels == 2);  // grey + alpha
+      for (std::size_t i = 0; i < image.pixels.size(); i += 2) {
+        const float alpha = image.pixels[i + 1];
+        if (alpha <= 0.0f) continue;  // invisible: its grey is arbitrary in the shipped tiles
+        const int bin = std::min(9, int(alpha * 10));
+        sum[bin] += image.pixels[i], count[bin] += 1;
+      }
+    }
+    std::array<double, 10> mean{};
+    for (int b = 0; b < 10; ++b) mean[b] = count[b] > 0 ? sum[b] / count[b] : -1;
+    return mean;
+  };
+  const auto shipped = grey_by_alpha(textures);
+  Exported e("flightgear");
+  REQUIRE(e.run.exit_code == 0);
+  const auto ours = grey_by_alpha(e.out.path);
+  int compared = 0;
+  for (int b = 0; b < 10; ++b) {
+    if (shipped[b] < 0 || ours[b] < 0) continue;
+    INFO("alpha in [" << b / 10.0 << ", " << (b + 1) / 10.0 << ")");
+    CHECK(ours[b] == Approx(shipped[b]).margin(0.05));
+    ++compared;
+  }
+  CHECK(compared >= 2);  // the marker cover's two levels
 }
 
 // FlightGear's own models (Debian flightgear-data-models, optional): every vertex of the

@@ -1,40 +1,52 @@
 #pragma once
-// GPU texture containers for a one-channel cube map, written from their specifications:
-// KTX 2.0 (Khronos, "KTX File Format Specification", version 2.0) and DDS (Microsoft,
-// "DDS_HEADER structure", "DDS_PIXELFORMAT", "DDS_HEADER_DXT10"). docs/export.md explains
-// which program reads which variant.
+// GPU texture containers with full mip chains, written from their specifications: KTX 2.0
+// (Khronos, "KTX File Format Specification", version 2.0, with the Khronos Data Format
+// Specification 1.3) and DDS (Microsoft, "DDS_HEADER structure", "DDS_PIXELFORMAT",
+// "DDS_HEADER_DXT10", "Programming Guide for DDS"). docs/export.md says which program reads
+// which variant.
 #include <cstdint>
 #include <string>
 #include <vector>
 
+#include "files/mip_chain.hpp"
+
 namespace nephele::files {
 
-// Sample formats of the containers: 16-bit half float, 32-bit float, 8-bit unsigned normalised.
-enum class TextureSample { r16f, r32f, r8 };
-TextureSample parse_texture_sample(const std::string& word);  // "r16f", "r32f", "r8"
-int sample_bytes(TextureSample sample);
+// How a texel is stored. r8, r16f, r32f: one channel (8-bit unsigned normalised, binary16,
+// binary32); rgba8: four 8-bit channels; bc1, bc3, bc4: the block formats of
+// files/block_compression.hpp (bc1 opaque RGB from RGBA texels, bc3 RGBA, bc4 one channel).
+enum class TexelFormat { r8, r16f, r32f, rgba8, bc1, bc3, bc4 };
+bool is_block_compressed(TexelFormat format);
+// The channels a chain must have for `format`: 1 for r8, r16f, r32f and bc4, 4 (RGBA) otherwise.
+int format_channels(TexelFormat format);
+// ktx2's --format words: "r16f", "r32f", "r8", "bc4" (core::InputError naming --format otherwise).
+TexelFormat parse_ktx2_format(const std::string& word);
+// "VK_FORMAT_R16_SFLOAT (76)" and so on, for READMEs.
+std::string vk_format_name(TexelFormat format);
+// Vulkan format codes (Vulkan specification, VkFormat): R8_UNORM 9, R8G8B8A8_UNORM 37,
+// R16_SFLOAT 76, R32_SFLOAT 100, BC1_RGB_UNORM_BLOCK 131, BC3_UNORM_BLOCK 137,
+// BC4_UNORM_BLOCK 139.
+std::uint32_t vk_format(TexelFormat format);
 
 // IEEE 754 binary16 of `value`, rounded to nearest even; overflow gives infinity.
 std::uint16_t half_from_float(float value);
 
-// Vulkan format codes (Vulkan specification, VkFormat): R8_UNORM 9, R16_SFLOAT 76, R32_SFLOAT 100.
-std::uint32_t vk_format(TextureSample sample);
+// A one-channel chain's texels in a four-channel format: the value in R, G, B and A (grey), or
+// RGB white with the value in alpha (a cloud colour map, alpha unassociated).
+enum class GreyLayout { grey, white_alpha };
 
-// A KTX2 cube map of one mip level: `texels` holds 6 faces of size x size in GL order +X, -X,
-// +Y, -Y, +Z, -Z, rows from t = 0 (docs/conventions.md), values in [0, 1]. With the Data
-// Format Descriptor (one sample, linear transfer, BT.709 primaries), the key/value data
-// KTXorientation = "rd" and KTXwriter, no supercompression.
-std::vector<unsigned char> encode_ktx2_cube(const std::vector<float>& texels, int size, TextureSample sample);
+// A KTX2 file of every level of `chain` (6 layers: a cube map, faceCount 6; otherwise one 2D
+// image): the Data Format Descriptor of the format (linear transfer, BT.709 primaries), the
+// key/value data KTXorientation = "rd" and KTXwriter, no supercompression, levels stored
+// smallest first as section 3.9 wants, each face's rows (or rows of blocks) without padding.
+// `chain` has format_channels(format) channels, or 1 with `layout` saying how to fill RGBA.
+std::vector<unsigned char> encode_ktx2(const MipChain& chain, TexelFormat format, GreyLayout layout = GreyLayout::grey);
 
-// A DDS cube map of one mip level, faces in the same order and orientation (Direct3D uses the
-// same face addressing as OpenGL). rgba8: the legacy header, an uncompressed 32-bit RGBA pixel
-// format with coverage in R, G, B and A (what KSP's and Unity's DDS loaders read); otherwise
-// the DX10 extension header with DXGI_FORMAT_R16_FLOAT (54), R32_FLOAT (41) or R8_UNORM (61)
-// (Direct3D 10+ engines, DirectXTex/texconv).
-// rgba8_white: the legacy header with RGB white and coverage in alpha (a cloud colour map).
-enum class DdsVariant { rgba8, rgba8_white, dx10_r16f, dx10_r32f, dx10_r8 };
-std::vector<unsigned char> encode_dds_cube(const std::vector<float>& texels, int size, DdsVariant variant);
-// A 2D DDS of width x height texels (rows top-down as stored; one mip level), same variants.
-std::vector<unsigned char> encode_dds_2d(const std::vector<float>& texels, int width, int height, DdsVariant variant);
+// A DDS file of every level of `chain` (6 layers: a cube map with all six face bits; otherwise
+// 2D), each face's levels together (DDS's order), rows top-down. rgba8, bc1, bc3 and bc4 use the
+// legacy header that every DDS loader reads (rgba8 as RGB + alpha masks, the block formats by
+// the FourCC "DXT1", "DXT5" and "ATI1"); r8, r16f and r32f the DX10 extension header
+// (DXGI_FORMAT_R8_UNORM 61, R16_FLOAT 54, R32_FLOAT 41; Direct3D 10+ engines, DirectXTex).
+std::vector<unsigned char> encode_dds(const MipChain& chain, TexelFormat format, GreyLayout layout = GreyLayout::grey);
 
 }  // namespace nephele::files

@@ -25,6 +25,10 @@ std::string readme(const ExportPreset& preset, const CoverFaces& faces, const st
 
 }  // namespace
 
+files::MipChain cube_mip_chain(const CoverFaces& faces) {
+  return files::build_mip_chain(faces.texels, faces.size, faces.size, 6, 1);
+}
+
 core::ImageData face_image(const CoverFaces& faces, int face) {
   const std::size_t n = std::size_t(faces.size) * std::size_t(faces.size);
   core::ImageData image{faces.size, faces.size, 1, {}};

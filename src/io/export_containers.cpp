@@ -2,79 +2,112 @@
 // environment map (docs/export.md).
 #include "core/error.hpp"
 #include "files/image_files.hpp"
+#include "files/mip_chain.hpp"
 #include "files/texture_containers.hpp"
 #include "io/export_writers.hpp"
+#include "shader_math/shader_math.hpp"
 
 namespace nephele::io {
 
 void write_ktx2(files::OutputSet& out, std::vector<std::string>& names, const ExportPreset& preset,
                 const CoverFaces& faces, const ExportOptions& options) {
-  const files::TextureSample sample = files::parse_texture_sample(options.ktx2_format);
-  out.write("cover_cube.ktx2", files::encode_ktx2_cube(faces.texels, faces.size, sample));
+  const files::TexelFormat format = files::parse_ktx2_format(options.ktx2_format);
+  const files::MipChain chain = cube_mip_chain(faces);
+  out.write("cover_cube.ktx2", files::encode_ktx2(chain, format));
   names.push_back("cover_cube.ktx2");
-  const std::string format = sample == files::TextureSample::r8     ? "VK_FORMAT_R8_UNORM (9)"
-                             : sample == files::TextureSample::r16f ? "VK_FORMAT_R16_SFLOAT (76)"
-                                                                    : "VK_FORMAT_R32_SFLOAT (100)";
   add_readme(out, names, preset, faces,
-             "File: cover_cube.ktx2, a KTX 2.0 cube map (faceCount 6, one mip level, no\n"
-             "supercompression), " +
-                 format +
-                 ", faces in the order +X, -X, +Y, -Y, +Z, -Z\n"
-                 "with the OpenGL/Vulkan face orientation, KTXorientation \"rd\". Load it with\n"
-                 "libktx (ktxTexture2_CreateFromNamedFile, then ktxTexture_GLUpload or\n"
-                 "ktxTexture_VkUpload) or any KTX2 loader as a cube texture; no flips are needed.\n"
-                 "World axes as for gl-faces: +Z is the North Pole.\n");
+             "File: cover_cube.ktx2, a KTX 2.0 cube map (faceCount 6, " + std::to_string(chain.count()) +
+                 " mip levels from\n" + std::to_string(faces.size) +
+                 " to 1, each the area mean of the level above; no supercompression), " +
+                 files::vk_format_name(format) +
+                 ",\nfaces in the order +X, -X, +Y, -Y, +Z, -Z with the OpenGL/Vulkan face orientation,\n"
+                 "KTXorientation \"rd\". Load it with libktx (ktxTexture2_CreateFromNamedFile, then\n"
+                 "ktxTexture_GLUpload or ktxTexture_VkUpload) or any KTX2 loader as a cube texture; no\n"
+                 "flips are needed. World axes as for gl-faces: +Z is the North Pole.\n");
 }
 
 void write_dds(files::OutputSet& out, std::vector<std::string>& names, const ExportPreset& preset,
                const CoverFaces& faces, const ExportOptions&) {
-  const std::pair<std::string, files::DdsVariant> files[] = {{"cover_cube_rgba8.dds", files::DdsVariant::rgba8},
-                                                             {"cover_cube_r16f.dds", files::DdsVariant::dx10_r16f},
-                                                             {"cover_cube_r32f.dds", files::DdsVariant::dx10_r32f}};
-  for (const auto& [name, variant] : files) {
-    out.write(name, files::encode_dds_cube(faces.texels, faces.size, variant));
+  const files::MipChain chain = cube_mip_chain(faces);
+  const std::pair<std::string, files::TexelFormat> files[] = {{"cover_cube_bc4.dds", files::TexelFormat::bc4},
+                                                              {"cover_cube_bc3.dds", files::TexelFormat::bc3},
+                                                              {"cover_cube_rgba8.dds", files::TexelFormat::rgba8},
+                                                              {"cover_cube_r16f.dds", files::TexelFormat::r16f},
+                                                              {"cover_cube_r32f.dds", files::TexelFormat::r32f}};
+  for (const auto& [name, format] : files) {
+    out.write(name, files::encode_dds(chain, format));
     names.push_back(name);
   }
   add_readme(out, names, preset, faces,
-             "Files (DDS cube maps, one mip level, faces +X, -X, +Y, -Y, +Z, -Z, rows top-down):\n"
-             "  cover_cube_rgba8.dds  legacy header, uncompressed 32-bit RGBA, coverage in R, G, B\n"
-             "                        and A: for loaders that read only legacy DDS (KSP's texture\n"
-             "                        loader, Unity's DDS importer, OpenImageIO, GIMP)\n"
-             "  cover_cube_r16f.dds   DX10 header, DXGI_FORMAT_R16_FLOAT (54)\n"
-             "  cover_cube_r32f.dds   DX10 header, DXGI_FORMAT_R32_FLOAT (41): for Direct3D 10+\n"
-             "                        engines and DirectXTex (texconv, texassemble); OpenImageIO\n"
-             "                        2.4 does not read these\n"
-             "Faces are addressed as in OpenGL (Direct3D's cube addressing is the same). In a\n"
-             "left-handed engine (Unity, Unreal, KSP) the world must be reflected into nephele's\n"
-             "right-handed axes (+Z north): an axis rename alone mirrors the map.\n");
+             "Files (DDS cube maps, faces +X, -X, +Y, -Y, +Z, -Z, rows top-down, each face with " +
+                 std::to_string(chain.count()) +
+                 "\nmip levels down to 1 x 1):\n"
+                 "  cover_cube_bc4.dds    legacy header, FourCC ATI1 (BC4, one channel, 0.5 byte a\n"
+                 "                        texel): Godot, Direct3D 10+ engines, DirectXTex\n"
+                 "  cover_cube_bc3.dds    legacy header, FourCC DXT5 (BC3), coverage in R, G, B and A:\n"
+                 "                        for loaders that read only DXT1/DXT5 (KSP, Unity, Blender)\n"
+                 "  cover_cube_rgba8.dds  legacy header, uncompressed 32-bit RGBA, coverage in R, G, B\n"
+                 "                        and A (KSP's texture loader, Unity's DDS importer,\n"
+                 "                        OpenImageIO, GIMP)\n"
+                 "  cover_cube_r16f.dds   DX10 header, DXGI_FORMAT_R16_FLOAT (54)\n"
+                 "  cover_cube_r32f.dds   DX10 header, DXGI_FORMAT_R32_FLOAT (41): for Direct3D 10+\n"
+                 "                        engines and DirectXTex (texconv, texassemble)\n"
+                 "docs/export.md gives each block format's error against the float cover.\n"
+                 "Faces are addressed as in OpenGL (Direct3D's cube addressing is the same). In a\n"
+                 "left-handed engine (Unity, Unreal, KSP) the world must be reflected into nephele's\n"
+                 "right-handed axes (+Z north): an axis rename alone mirrors the map.\n");
 }
 
-// OpenEXR's cube environment layout (OpenEXR "envmap" attribute, ENVMAP_CUBE): an N x 6N
-// vertical strip +X, -X, +Y, -Y, +Z, -Z with every face mirrored relative to the GL face: the
-// X and Z faces left-right, the Y faces top-bottom (docs/conventions.md, "Other programs"; docs/export.md, "exr-cube").
+namespace {
+
+// The direction of pixel (column c, row r) of `face` in OpenEXR's cube environment strip
+// (OpenEXR, src/lib/OpenEXR/ImfEnvmap.cpp, CubeMap::pixelPosition and CubeMap::direction):
+// positions run from face edge to face edge, 2 i/(n - 1) - 1, so the first and last pixels'
+// centres lie on the cube's edges (not half a texel inside, as in OpenGL). OpenEXR's axes are
+// nephele's (both right-handed; docs/export.md, "exr-cube").
+glsl::vec3 openexr_pixel_direction(int face, int c, int r, int n) {
+  const float s = n > 1 ? float(n - 1) : 1.0f;
+  const float a = n > 1 ? 2.0f * float(c) / s - 1.0f : 0.0f, b = n > 1 ? 1.0f - 2.0f * float(r) / s : 0.0f;
+  switch (face) {
+    case 0: return {1.0f, b, a};    // +X
+    case 1: return {-1.0f, b, -a};  // -X
+    case 2: return {a, 1.0f, b};    // +Y
+    case 3: return {a, -1.0f, -b};  // -Y
+    case 4: return {-a, b, 1.0f};   // +Z
+    default: return {a, b, -1.0f};  // -Z
+  }
+}
+
+}  // namespace
+
+// OpenEXR's cube environment map (header envmap = cube): an N x 6N vertical strip +X, -X, +Y,
+// -Y, +Z, -Z whose pixels lie where openexr_pixel_direction says. Those are not the GL texel
+// centres (and every face is mirrored relative to the GL face), so each pixel is the cover
+// sampled bilinearly in its direction, seamless across face edges (shaders/lib/cube_sampling.glsl).
 void write_exr_cube(files::OutputSet& out, std::vector<std::string>& names, const ExportPreset& preset,
                     const CoverFaces& faces, const ExportOptions&) {
   const int n = faces.size;
+  std::vector<glsl::vec4> texels(faces.texels.size());
+  for (std::size_t i = 0; i < texels.size(); ++i) texels[i] = glsl::vec4(faces.texels[i], 0.0f, 0.0f, 0.0f);
+  const glsl::CubeSource cube{n, texels.data()};
   core::ImageData strip{n, 6 * n, 1, std::vector<float>(std::size_t(6) * n * n)};
-  for (int f = 0; f < 6; ++f) {
-    const bool y_face = f == 2 || f == 3;
-    for (int j = 0; j < n; ++j)
-      for (int i = 0; i < n; ++i) {
-        const int si = y_face ? i : n - 1 - i, sj = y_face ? n - 1 - j : j;
-        strip.pixels[(std::size_t(f) * n + j) * n + i] = faces.texels[(std::size_t(f) * n + sj) * n + si];
-      }
-  }
+  for (int f = 0; f < 6; ++f)
+    for (int r = 0; r < n; ++r)
+      for (int c = 0; c < n; ++c)
+        strip.pixels[(std::size_t(f) * n + r) * n + c] =
+            glsl::sample_cube_bilinear(glsl::normalize(openexr_pixel_direction(f, c, r, n)), cube).x;
   files::ImageEncoding encoding = files::exr_encoding({"Y"});
   encoding.attributes.push_back({"textureformat", "CubeFace Environment"});
   out.write("cover_envcube.exr", files::encode_image(strip, encoding, "cover_envcube.exr"));
   names.push_back("cover_envcube.exr");
   add_readme(out, names, preset, faces,
              "File: cover_envcube.exr, an OpenEXR cube environment map (header envmap = cube):\n"
-             "an N x 6N vertical strip of the faces +X, -X, +Y, -Y, +Z, -Z, each mirrored as\n"
-             "OpenEXR's cube layout wants relative to the GL faces (X and Z faces left-right, Y\n"
-             "faces top-bottom). For renderers that take OpenEXR environment cubes (RenderMan-\n"
-             "style lookups, OpenEXR's envmap tools). OpenImageIO 2.4 reads the file but cannot\n"
-             "sample it as a cube environment. Axes as for gl-faces: +Z is the North Pole.\n");
+             "an N x 6N vertical strip of the faces +X, -X, +Y, -Y, +Z, -Z in OpenEXR's layout\n"
+             "(ImfEnvmap.cpp): a face's first and last pixels lie on the cube's edges, 2 i/(N - 1) - 1,\n"
+             "so each pixel is the cover resampled bilinearly in its direction (the GL faces' texel\n"
+             "centres lie half a texel inside). For renderers that take OpenEXR environment cubes\n"
+             "(OpenEXR's envmap tools, RenderMan-style lookups). OpenImageIO 2.4 reads the file but\n"
+             "cannot sample it as a cube environment. Axes as for gl-faces: +Z is the North Pole.\n");
 }
 
 }  // namespace nephele::io

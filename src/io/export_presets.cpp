@@ -108,18 +108,18 @@ const std::vector<ExportPreset>& export_presets() {
        equirect_edge},
       {"gl-faces", "six OpenEXR cube faces in the OpenGL order and orientation", false, false, false, false,
        write_gl_faces, faces_edge},
-      {"ktx2", "KTX 2.0 cube map (R16_SFLOAT, R32_SFLOAT or R8_UNORM; --format)", false, false, true, false, write_ktx2,
-       faces_edge},
-      {"dds", "DDS cube maps: legacy RGBA8 and DX10 R16_FLOAT / R32_FLOAT", false, false, false, false, write_dds,
-       faces_edge},
-      {"celestia", "Celestia add-on: RGBA cloud map (white, coverage in alpha) and .ssc", true, false, false, true,
-       write_celestia, equirect_edge},
+      {"ktx2", "KTX 2.0 cube map with mips (R16_SFLOAT, R32_SFLOAT, R8_UNORM or BC4; --format)", false, false, true,
+       false, write_ktx2, faces_edge},
+      {"dds", "DDS cube maps with mips: BC4, BC3, RGBA8 and DX10 R16_FLOAT / R32_FLOAT", false, false, false, false,
+       write_dds, faces_edge},
+      {"celestia", "Celestia add-on: cloud map (white, coverage in alpha) as PNG and DXT5 DDS with mips, .ssc", true,
+       false, false, true, write_celestia, equirect_edge},
       {"exr-cube", "OpenEXR cube environment map (N x 6N strip, envmap = cube)", false, false, false, false,
        write_exr_cube, faces_edge},
       {"flightgear", "FlightGear Earthview: eight bordered tiles clouds_N1..S4, grey + alpha", true, false, false,
        false, write_flightgear, tile_edge},
-      {"eve", "KSP EVE (LGhassen's fork): equirect and six faces as DDS, EVE_TEXTURE_CONFIG", true, false, false, true,
-       write_eve, equirect_edge},
+      {"eve", "KSP EVE (LGhassen's fork): equirect and six faces as DXT5 DDS with mips, texture and cloud configs",
+       true, false, false, true, write_eve, equirect_edge},
       {"unity", "Unity: lat-long map (HDRP cloud map in red) and a 6x1 face strip, reflected", true, false, false,
        false, write_unity, strip_edge},
       {"godot", "Godot 4: 2x3 and 6x1 cubemap images and a panorama equirect", true, false, false, false, write_godot,
@@ -168,7 +168,7 @@ void check_texture_limit(const ExportPreset& preset, int face_size) {
 
 void check_export_options(const ExportPreset& preset, const ExportOptions& options) {
   if (preset.takes_name) check_addon_name(options.name);
-  if (preset.takes_format) files::parse_texture_sample(options.ktx2_format);
+  if (preset.takes_format) files::parse_ktx2_format(options.ktx2_format);
 }
 
 std::vector<std::string> write_export(files::OutputSet& outputs, const ExportPreset& preset, const CoverFaces& faces,

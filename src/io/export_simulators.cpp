@@ -23,26 +23,41 @@ void write_celestia(files::OutputSet& out, std::vector<std::string>& names, cons
   encoding.unassociated_alpha = true;  // PNG's alpha is unassociated: the colour stays white
   out.write(texture, files::encode_image(rgba, encoding, texture));
   names.push_back(texture);
+  // The same map as DXT5 with every mip level: Celestia's DDS loader (src/celimage/dds.cpp) reads
+  // DXT1, DXT3 and DXT5 with their mips; a quarter of the PNG's GPU memory, no shimmer from orbit.
+  const std::string compressed = folder + "textures/hires/" + options.name + ".dds";
+  out.write(compressed, files::encode_dds(files::build_mip_chain(map.pixels, map.width, map.height, 1, 1),
+                                          files::TexelFormat::bc3, files::GreyLayout::white_alpha));
+  names.push_back(compressed);
   const std::string ssc = folder + options.name + ".ssc";
+  // CloudShadowDepth above 0 turns on the clouds' shadows on the ground, darkened by 0.75 times
+  // the cloud map's alpha (Celestia's solarsys.cpp ReadAtmosphere, shadermanager.cpp).
   out.write(ssc, "# nephele cloud cover for Celestia: copy extras/" + options.name +
                      " into Celestia's extras folder.\n"
+                     "# CloudMap may name " +
+                     options.name +
+                     ".png instead (lossless, Celestia makes its mips).\n"
                      "Modify \"Earth\" \"Sol\"\n{\n\tAtmosphere\n\t{\n\t\tCloudMap \"" +
-                     options.name + ".png\"\n\t}\n}\n");
+                     options.name + ".dds\"\n\t\tCloudShadowDepth 1\n\t}\n}\n");
   names.push_back(ssc);
   add_readme(out, names, preset, faces,
              "Files: " + texture + " (RGBA 8-bit PNG, " + std::to_string(map.width) + " x " +
                  std::to_string(map.height) +
                  ", white, coverage in alpha, 2:1 with the prime meridian at\n"
-                 "the centre and north up) and " +
+                 "the centre and north up), " +
+                 compressed +
+                 " (the same map as DDS DXT5, BC3, with every\n"
+                 "mip level: the .ssc's CloudMap) and " +
                  ssc +
                  ".\n"
                  "Install: copy the folder extras/" +
                  options.name +
                  " into Celestia's extras directory (or the add-on\n"
                  "folder named by ExtrasDirectories in celestia.cfg) and restart Celestia. The .ssc\n"
-                 "modifies Earth's atmosphere so that its CloudMap is this texture; Celestia looks it\n"
-                 "up in textures/hires/ when the high-resolution texture setting is chosen (it falls\n"
-                 "back to the other resolutions' folders otherwise).\n");
+                 "modifies Earth's atmosphere so that its CloudMap is this texture and the clouds cast\n"
+                 "shadows (CloudShadowDepth 1); Celestia looks it up in textures/hires/ when the\n"
+                 "high-resolution texture setting is chosen (it falls back to the other resolutions'\n"
+                 "folders otherwise).\n");
 }
 
 // FlightGear Earthview: eight tiles of 90 x 90 degrees whose shipped models (Models/Astro/
@@ -108,37 +123,60 @@ Direction eve_face_direction(int face, double u, double v) {
 
 void write_eve(files::OutputSet& out, std::vector<std::string>& names, const ExportPreset& preset,
                const CoverFaces& faces, const ExportOptions& options) {
+  // EVE re-reads every DDS through its own loader (Utils/TextureConverter.cs, DDSToTexture),
+  // which takes the FourCCs DXT1, DXT3 and DXT5 and no DX10 header: BC3 (DXT5) with RGB white
+  // and the coverage in its 8-bit interpolated alpha, every mip level (docs/export.md, "eve").
+  const auto eve_dds = [](std::vector<float> values, int width, int height) {
+    return files::encode_dds(files::build_mip_chain(std::move(values), width, height, 1, 1), files::TexelFormat::bc3,
+                             files::GreyLayout::white_alpha);
+  };
   const std::string folder = "GameData/" + options.name + "/";
-  const core::ImageData map = equirect_image(faces, options);  // EVE's equirect: u as nephele's, v = 0 in row 0 (north)
+  core::ImageData map = equirect_image(faces, options);  // EVE's equirect: u as nephele's, v = 0 in row 0 (north)
   const std::string equirect = folder + "clouds_equirect.dds";
-  out.write(equirect, files::encode_dds_2d(map.pixels, map.width, map.height, files::DdsVariant::rgba8_white));
+  out.write(equirect, eve_dds(std::move(map.pixels), map.width, map.height));
   names.push_back(equirect);
   const AxisMap eve_axes{{2, 0, 1}, {1, 1, 1}};  // nephele X = EVE z, Y = EVE x, Z = EVE y
   const char* const keys[6] = {"Xn", "Xp", "Yn", "Yp", "Zn", "Zp"};
+  // EVE's managers read the child nodes of EVE_TEXTURE_CONFIG and EVE_CLOUDS, one object each
+  // (EveManager/IEVEManager.cs, Apply); OBJECT is the name EVE's own configs give them.
+  const std::string cube = options.name + "_cube";
   std::string config =
       "// nephele cloud cover for EVE (LGhassen/EnvironmentalVisualEnhancements): the six\n"
-      "// faces as one cube texture; name it as a layer's _MainTex.\n"
-      "EVE_TEXTURE_CONFIG\n{\n\tname = " +
-      options.name + "_cube\n\ttype = TEX_CUBE_6\n";
+      "// faces as one cube texture, which " +
+      options.name +
+      "_clouds.cfg names as its layer's _MainTex.\nEVE_TEXTURE_CONFIG\n{\n\tOBJECT\n\t{\n\t\tname = " + cube +
+      "\n\t\ttype = TEX_CUBE_6\n";
   const int n = faces.size;
   for (int f = 0; f < 6; ++f) {
-    const auto values = cover_by_direction(faces, n, n, [&](int i, int j) {
+    auto values = cover_by_direction(faces, n, n, [&](int i, int j) {
       return eve_axes.to_nephele(eve_face_direction(f, (i + 0.5) / n, (j + 0.5) / n));
     });
     std::string key = keys[f];
     std::string file = "clouds_" + std::string(1, char(std::tolower(key[0]))) + key[1] + ".dds";
-    out.write(folder + file, files::encode_dds_2d(values, n, n, files::DdsVariant::rgba8_white));
+    out.write(folder + file, eve_dds(std::move(values), n, n));
     names.push_back(folder + file);
-    config += "\ttex" + key + " = " + options.name + "/" + file.substr(0, file.size() - 4) + "\n";
+    config += "\t\ttex" + key + " = " + options.name + "/" + file.substr(0, file.size() - 4) + "\n";
   }
-  config += "}\n";
+  config += "\t}\n}\n";
   const std::string cfg = folder + options.name + "_textures.cfg";
   out.write(cfg, config);
   names.push_back(cfg);
+  // A 2D cloud layer on Kerbin with the cube as its main texture: `type = CubeMap` makes EVE look
+  // the value up among the EVE_TEXTURE_CONFIG cubes (Utils/TextureWrapper.cs, isValid).
+  const std::string clouds_cfg = folder + options.name + "_clouds.cfg";
+  out.write(clouds_cfg, "// nephele cloud layer for EVE: Kerbin's 2D clouds from the cube of " + options.name +
+                            "_textures.cfg.\nEVE_CLOUDS\n{\n\tOBJECT\n\t{\n\t\tname = " + options.name +
+                            "\n\t\tbody = Kerbin\n\t\taltitude = 5000\n\t\tsettings\n\t\t{\n\t\t\t_MainTex\n\t\t\t{\n"
+                            "\t\t\t\tvalue = " +
+                            cube +
+                            "\n\t\t\t\ttype = CubeMap\n\t\t\t}\n\t\t}\n\t\tlayer2D\n\t\t{\n\t\t\tmacroCloudMaterial\n"
+                            "\t\t\t{\n\t\t\t}\n\t\t}\n\t}\n}\n");
+  names.push_back(clouds_cfg);
   add_readme(out, names, preset, faces,
              "For Kerbal Space Program's Environmental Visual Enhancements, the fork\n"
              "LGhassen/EnvironmentalVisualEnhancements (its shader Assets/Shaders/cubeMap.cginc).\n"
-             "Files (legacy RGBA8 DDS, RGB white, coverage in alpha, one mip level):\n"
+             "Files (DDS with the legacy FourCC DXT5, BC3: RGB white, coverage in the interpolated\n"
+             "alpha, every mip level down to 1 x 1; EVE's DDS reader takes DXT1, DXT3 and DXT5 only):\n"
              "  " +
                  equirect + "  " + std::to_string(map.width) + " x " + std::to_string(map.height) +
                  " equirect in EVE's mapping\n"
@@ -150,20 +188,23 @@ void write_eve(files::OutputSet& out, std::vector<std::string>& names, const Exp
                  "clouds_xn.dds .. clouds_zp.dds  the six faces as EVE's GetCubeCubeUV samples\n"
                  "      them (texXn .. texZp), same frame\n"
                  "  " +
-                 cfg +
-                 "  an EVE_TEXTURE_CONFIG node (type TEX_CUBE_6) whose texXn .. texZp\n"
-                 "      keys name the faces (GameData paths without extension)\n"
+                 cfg + "  EVE_TEXTURE_CONFIG with one OBJECT: the cube " + cube +
+                 "\n      (type TEX_CUBE_6), its texXn .. texZp the faces (GameData paths without extension)\n"
+                 "  " +
+                 clouds_cfg +
+                 "  EVE_CLOUDS with one OBJECT: a 2D layer on Kerbin at 5000 m\n"
+                 "      whose _MainTex is { value = " +
+                 cube +
+                 ", type = CubeMap }; edit body, altitude and the\n"
+                 "      layer's other settings there, or delete it and name the cube in a layer of your own\n"
                  "KSP's Unity frame is left-handed: the faces are the cover reflected into it (nephele\n"
                  "X, Y, Z = EVE z, x, y), not the GL faces renamed. Install: copy GameData/" +
                  options.name +
                  " into KSP's\n"
-                 "GameData; in a cloud layer's config set _MainTex to " +
+                 "GameData. For the equirect instead of the cube, set _MainTex = " +
                  options.name +
-                 "/clouds_equirect (one texture) or\n"
-                 "to " +
-                 options.name +
-                 "_cube (the faces). Rows are geodetic latitudes (EVE's v is spherical: at most\n"
-                 "0.19 degrees apart). Not checked in KSP (not available here).\n");
+                 "/clouds_equirect.\nRows are geodetic latitudes (EVE's v is spherical: at most 0.19 degrees apart).\n"
+                 "Not checked in KSP (not available here).\n");
 }
 
 }  // namespace nephele::io

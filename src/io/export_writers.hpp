@@ -7,6 +7,7 @@
 
 #include "core/image.hpp"
 #include "files/atomic_output.hpp"
+#include "files/mip_chain.hpp"
 #include "io/export_presets.hpp"
 
 namespace nephele::io {
@@ -28,6 +29,8 @@ ExportWriter write_godot;
 ExportWriter write_unreal;
 ExportWriter write_blender;
 
+// The cover's six faces and their mip chain (files/mip_chain.hpp), for the texture containers.
+files::MipChain cube_mip_chain(const CoverFaces& faces);
 // Face f of the cover as a one-channel image.
 core::ImageData face_image(const CoverFaces& faces, int face);
 // The equirect of docs/conventions.md (4 content x 2 content, -180 deg at the left edge,

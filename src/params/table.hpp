@@ -409,8 +409,8 @@ inline constexpr Parameter export_preset =
 inline constexpr Parameter export_out =
     text("out", "", "DIR", "output directory (created if missing; the set appears whole or not at all)", export_cover);
 inline constexpr Parameter export_format =
-    text("format", "r16f", "r16f|r32f|r8",
-         "sample format of the ktx2 preset: half float, float, 8-bit unsigned normalised", export_cover);
+    text("format", "r16f", "r16f|r32f|r8|bc4",
+         "texel format of the ktx2 preset: half float, float, 8-bit unsigned normalised, BC4 blocks", export_cover);
 inline constexpr Parameter export_name =
     text("name", "nephele_clouds", "NAME",
          "add-on folder and file name of the celestia and eve presets (letters, digits, _ and -)", export_cover);
