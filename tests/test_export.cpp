@@ -86,16 +86,30 @@ std::array<double, 2> marker_on_face() {
   return {s * kSize - 0.5, t * kSize - 0.5};
 }
 
+// The thresholded dot is about 6 texels across; its centroid moves by less than half a pixel
+// with the texel grid, plus the bilinear resampling's blur of the edge: one pixel bounds both.
+constexpr double kMarkerPixels = 1.0;
+
+// The marker in face `face` of a cube map (kSize^2 texels of `channels`, starting at row `y0` of
+// an image kSize wide): on +Y (face 2) where the GL face table puts it, nothing bright elsewhere.
+void check_cube_face_marker(int face, const std::vector<float>& texels, int channels, int channel, int y0 = 0) {
+  const auto centroid = bright_centroid(texels, kSize, channels, channel, 0, y0, kSize, kSize);
+  INFO("face " << face << " channel " << channel);
+  if (face != 2) {
+    CHECK(centroid.count == 0);
+    return;
+  }
+  REQUIRE(centroid.count > 0);
+  CHECK(centroid.x == Approx(marker_on_face()[0]).epsilon(0).margin(kMarkerPixels));
+  CHECK(centroid.y == Approx(marker_on_face()[1]).epsilon(0).margin(kMarkerPixels));
+}
+
 // Where it falls on a W x H equirect: -180 at the left edge, geodetic latitude down the rows.
 std::array<double, 2> marker_on_equirect(int width, int height) {
   const double f = 1 / 298.257223563;
   const double geodetic = std::atan(std::tan(kLat * kPi / 180) / ((1 - f) * (1 - f))) * 180 / kPi;
   return {(kLon + 180) / 360 * width - 0.5, (90 - geodetic) / 180 * height - 0.5};
 }
-
-// The thresholded dot is about 6 texels across; its centroid moves by less than half a pixel
-// with the texel grid, plus the bilinear resampling's blur of the edge: one pixel bounds both.
-constexpr double kMarkerPixels = 1.0;
 
 struct Exported {
   test::TemporaryDirectory cover{true}, out;
@@ -269,14 +283,7 @@ TEST_CASE("export gl-faces: the marker on the +Y face only, at the texel of the 
     INFO(suffixes[f]);
     const auto face = files::read_image(e.out.path / (std::string("cover_") + suffixes[f] + ".exr"));
     REQUIRE(face.width == kSize);
-    const auto c = bright_centroid(face.pixels, kSize, face.channels, 0, 0, 0, kSize, kSize);
-    if (f != 2) {
-      CHECK(c.count == 0);
-      continue;
-    }
-    REQUIRE(c.count > 0);
-    CHECK(c.x == Approx(marker_on_face()[0]).epsilon(0).margin(kMarkerPixels));
-    CHECK(c.y == Approx(marker_on_face()[1]).epsilon(0).margin(kMarkerPixels));
+    check_cube_face_marker(f, face.pixels, face.channels, 0);
   }
 }
 
@@ -316,15 +323,7 @@ TEST_CASE(
     REQUIRE(k.levels[0].offset + k.levels[0].length <= b.size());
     for (int f = 0; f < 6; ++f) {
       const auto* data = reinterpret_cast<const unsigned char*>(b.data()) + k.levels[0].offset + f * face_bytes;
-      const std::vector<float> texels = test::decode_stored_image(c.stored, data, kSize, kSize);
-      const auto centroid = bright_centroid(texels, kSize, 1, 0, 0, 0, kSize, kSize);
-      INFO("face " << f);
-      if (f != 2) {
-        CHECK(centroid.count == 0);
-        continue;
-      }
-      CHECK(centroid.x == Approx(marker_on_face()[0]).epsilon(0).margin(kMarkerPixels));
-      CHECK(centroid.y == Approx(marker_on_face()[1]).epsilon(0).margin(kMarkerPixels));
+      check_cube_face_marker(f, test::decode_stored_image(c.stored, data, kSize, kSize), 1, 0);
     }
   }
 }
@@ -380,14 +379,7 @@ TEST_CASE(
       const auto* data = reinterpret_cast<const unsigned char*>(b.data()) + test::dds_image_offset(d, c.stored, f, 0);
       const std::vector<float> texels = test::decode_stored_image(c.stored, data, kSize, kSize);
       const int channels = int(texels.size() / (kSize * kSize));
-      const auto centroid = bright_centroid(texels, kSize, channels, channels - 1, 0, 0, kSize, kSize);
-      INFO("face " << f);
-      if (f != 2) {
-        CHECK(centroid.count == 0);
-        continue;
-      }
-      CHECK(centroid.x == Approx(marker_on_face()[0]).epsilon(0).margin(kMarkerPixels));
-      CHECK(centroid.y == Approx(marker_on_face()[1]).epsilon(0).margin(kMarkerPixels));
+      check_cube_face_marker(f, texels, channels, channels - 1);
     }
   }
   // OpenImageIO 2.4 reads the legacy RGBA8 cube as an N x 6N image of the faces in order; the
@@ -397,16 +389,7 @@ TEST_CASE(
   REQUIRE(image.height == 6 * kSize);
   REQUIRE(image.channels == 4);
   for (int channel = 0; channel < 4; ++channel)
-    for (int f = 0; f < 6; ++f) {
-      INFO("channel " << channel << " face " << f);
-      const auto centroid = bright_centroid(image.pixels, kSize, 4, channel, 0, f * kSize, kSize, kSize);
-      if (f != 2) {
-        CHECK(centroid.count == 0);
-        continue;
-      }
-      CHECK(centroid.x == Approx(marker_on_face()[0]).epsilon(0).margin(kMarkerPixels));
-      CHECK(centroid.y == Approx(marker_on_face()[1]).epsilon(0).margin(kMarkerPixels));
-    }
+    for (int f = 0; f < 6; ++f) check_cube_face_marker(f, image.pixels, 4, channel, f * kSize);
 }
 
 TEST_CASE(
@@ -560,6 +543,39 @@ TEST_CASE(
     CHECK(centroid.x == Approx(bx).epsilon(0).margin(kMarkerPixels + 0.5));
     CHECK(centroid.y == Approx(by).epsilon(0).margin(kMarkerPixels + 0.5));
   }
+}
+
+TEST_CASE("bench export prints each texel format's error within the bound of its format", "[export][cli]") {
+  test::TemporaryDirectory cover{true};
+  write_marker_cover(cover.path);
+  const test::Run r = test::run("bench export " + cover.path.string());
+  INFO(r.output);
+  REQUIRE(r.exit_code == 0);
+  // format -> {rms, max}, from the rows "format bits MB ms rms max written-by".
+  std::map<std::string, std::pair<double, double>> errors;
+  std::istringstream lines(r.output);
+  for (std::string line; std::getline(lines, line);) {
+    std::istringstream words(line);
+    std::string first, second;
+    words >> first >> second;
+    if (second == "alpha" || second == "grey")
+      first += " " + second;
+    else
+      words.seekg(0), words >> first;
+    double bits = 0, megabytes = 0, ms = 0, rms = -1, max = -1;
+    if (words >> bits >> megabytes >> ms >> rms >> max) errors[first] = {rms, max};
+  }
+  REQUIRE(errors.size() == 7);
+  CHECK(errors["r32f"].second == 0.0);
+  CHECK(errors["r16f"].second <= std::ldexp(1.0, -12));  // half an ulp of binary16 below 1
+  CHECK(errors["r8"].second <= 0.5 / 255 + 1e-6);
+  // The marker cover's blocks span at most 0.9: BC4 and BC3's alpha within a palette step of it
+  // (0.9 / 7) plus rounding, the 4-entry colour blocks within 0.9 / 3 plus the 5-bit step.
+  CHECK(errors["bc4"].second <= 0.9 / 7 + 1.5 / 255);
+  CHECK(errors["bc3 alpha"].second <= 0.9 / 7 + 1.5 / 255);
+  CHECK(errors["bc3 grey"].second <= 0.9 / 3 + 8.0 / 255);
+  CHECK(errors["bc1 grey"].second <= 0.9 / 3 + 8.0 / 255);
+  for (const auto& [format, error] : errors) CHECK(error.first <= error.second);
 }
 
 TEST_CASE("every cover export preset writes a README.txt naming the preset beside its files", "[export]") {

@@ -86,13 +86,15 @@ int bench_cover(const std::vector<std::string>& arguments) {
 
 int run_bench(const std::vector<std::string>& arguments) {
   if (arguments.empty() || arguments[0] == "--help" || arguments[0] == "-h") {
-    std::cout << "usage: nephele bench cover [options]\n\nbenchmarks:\n"
-                 "  cover   time of each global cover pass for sizes 256, 512, 1024\n"
-                 "  render  seconds per frame of the default scene, image error against steps\n"
-                 "  noise   million points per second of 3D Worley and Perlin, seconds of the noise presets\n"
-                 "  model   milliseconds per cloud model volume (1 to 50 primitives), whole and after one edit\n"
-                 "  orbit   milliseconds per frame of the orbit view at 640x360 and 1280x720\n"
-                 "  view    milliseconds per pass of nephele view's preview and refinement frames (needs a display)\n";
+    std::cout
+        << "usage: nephele bench cover [options]\n\nbenchmarks:\n"
+           "  cover   time of each global cover pass for sizes 256, 512, 1024\n"
+           "  render  seconds per frame of the default scene, image error against steps\n"
+           "  noise   million points per second of 3D Worley and Perlin, seconds of the noise presets\n"
+           "  model   milliseconds per cloud model volume (1 to 50 primitives), whole and after one edit\n"
+           "  orbit   milliseconds per frame of the orbit view at 640x360 and 1280x720\n"
+           "  view    milliseconds per pass of nephele view's preview and refinement frames (needs a display)\n"
+           "  export  error, size and encoding time of each texel format of the exports (bench export COVER_DIR)\n";
     return arguments.empty() ? exit_usage : exit_ok;
   }
   const std::vector<std::string> rest(arguments.begin() + 1, arguments.end());
@@ -102,8 +104,9 @@ int run_bench(const std::vector<std::string>& arguments) {
   if (arguments[0] == "model") return bench_model(rest);
   if (arguments[0] == "orbit") return bench_orbit(rest);
   if (arguments[0] == "view") return bench_view(rest);
+  if (arguments[0] == "export") return bench_export(rest);
   throw UsageError("nephele bench: unknown benchmark '" + arguments[0] +
-                   "' (allowed: cover, render, noise, model, orbit, view)");
+                   "' (allowed: cover, render, noise, model, orbit, view, export)");
 }
 
 }  // namespace nephele::cli

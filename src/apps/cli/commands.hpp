@@ -20,6 +20,7 @@ int run_render(const std::vector<std::string>& arguments);
 int bench_render(const std::vector<std::string>& arguments);
 int run_model(const std::vector<std::string>& arguments);
 int bench_model(const std::vector<std::string>& arguments);
+int bench_export(const std::vector<std::string>& arguments);
 int run_export(const std::vector<std::string>& arguments);
 int run_view(const std::vector<std::string>& arguments);
 int run_stats(const std::vector<std::string>& arguments);

@@ -32,16 +32,8 @@ int run_export(const std::vector<std::string>& arguments) {
   options.bind(run::export_out, &out);
   options.bind(run::export_format, &format);
   options.bind(run::export_name, &name);
-  // COVER_DIR comes first; the rest are options.
-  std::vector<std::string> rest = arguments;
-  const std::string cover_dir = take_leading_operand(rest);
-  if (!options.parse(rest)) {
-    std::cout << options.help();
-    return exit_ok;
-  }
-  if (cover_dir.empty())
-    throw UsageError("COVER_DIR", "", "a directory written by nephele generate, given before the options",
-                     "is missing");
+  std::string cover_dir;  // COVER_DIR comes first; the rest are options
+  if (!parse_with_cover_dir(options, arguments, cover_dir)) return exit_ok;
   if (!options.given(run::export_preset))
     throw UsageError("--preset", "", std::string(run::export_preset.allowed), "is missing");
   if (!options.given(run::export_out)) throw UsageError("--out", "", "DIR", "is missing");

@@ -1,9 +1,12 @@
 #include "apps/cli/options.hpp"
 
+#include <iostream>
+
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
 #include <functional>
+#include <iostream>
 #include <sstream>
 #include <stdexcept>
 
@@ -20,6 +23,19 @@ std::string take_leading_operand(std::vector<std::string>& arguments) {
   std::string operand = arguments.front();
   arguments.erase(arguments.begin());
   return operand;
+}
+
+bool parse_with_cover_dir(Options& options, const std::vector<std::string>& arguments, std::string& cover_dir) {
+  std::vector<std::string> rest = arguments;
+  cover_dir = take_leading_operand(rest);
+  if (!options.parse(rest)) {
+    std::cout << options.help();
+    return false;
+  }
+  if (cover_dir.empty())
+    throw UsageError("COVER_DIR", "", "a directory written by nephele generate, given before the options",
+                     "is missing");
+  return true;
 }
 
 Options::Options(std::string command, std::string summary, unsigned use)

@@ -61,6 +61,10 @@ class Options {
 // The operand before the options (export's and view's COVER_DIR): removed from `arguments` and
 // returned; "" when the first argument is an option or there is none.
 std::string take_leading_operand(std::vector<std::string>& arguments);
+// Takes the leading COVER_DIR operand and parses the rest: false when --help was asked for (the
+// help is printed; the caller returns exit_ok), else true with `cover_dir` set; a missing operand
+// is a UsageError naming COVER_DIR, checked after the help so that --help needs none.
+bool parse_with_cover_dir(Options& options, const std::vector<std::string>& arguments, std::string& cover_dir);
 
 // Strict number parsing for values outside the table (list items, channel settings): the whole
 // text, decimal, finite, within [min, max]; errors name the option.
