@@ -19,6 +19,7 @@
 #include "cli_support.hpp"
 #include "files/atomic_output.hpp"
 #include "io/cube_frames.hpp"
+#include "io/export_writers.hpp"
 #include "io/export_presets.hpp"
 #include "files/image_files.hpp"
 #include "io/model_files.hpp"
@@ -400,7 +401,15 @@ TEST_CASE(
   const auto folder = e.out.path / "extras" / "marker_test";
   const std::string ssc = test::read_file(folder / "marker_test.ssc");
   CHECK_THAT(ssc, Catch::Contains("Modify \"Earth\" \"Sol\"") && Catch::Contains("CloudMap \"marker_test.dds\"") &&
-                      Catch::Contains("CloudShadowDepth 1"));
+                      Catch::Contains("CloudShadowDepth 1") &&
+                      Catch::Contains("CloudNormalMap \"marker_test_normal.png\""));
+  // The normal map: the cloud map's size, flat (0.5, 0.5, 1) where the cover is flat.
+  const auto normals = read_png_as_stored(folder / "textures" / "hires" / "marker_test_normal.png");
+  REQUIRE(normals.channels == 3);
+  CHECK(normals.width == 4 * kSize);
+  CHECK(normals.height == 2 * kSize);
+  CHECK(normals.pixels[0] == Approx(128 / 255.0).margin(1e-6));  // far from the marker: flat
+  CHECK(normals.pixels[2] == 1.0f);
   // The DDS the .ssc names: DXT5 (Celestia's loader reads DXT1, DXT3, DXT5), every mip level,
   // RGB white and the marker in alpha where the PNG has it.
   const auto dds = read_dds_2d_dxt5(folder / "textures" / "hires" / "marker_test.dds");
@@ -428,6 +437,41 @@ TEST_CASE(
   CHECK(bad.run.exit_code == 2);
   CHECK_THAT(bad.run.output, Catch::Contains("--name"));
   CHECK_FALSE(std::filesystem::exists(bad.out.path / "README.txt"));  // the set appears whole or not at all
+}
+
+TEST_CASE("celestia's cloud normal map tilts red east and green south by the slope of the coverage's height",
+          "[fast][export]") {
+  // Celestia's tangent frame (shadermanager.cpp, the sphere's tangent (sin theta, 0, -cos theta)):
+  // red east, green south (row 0 is north), blue up, each (1 + n)/2. A height rising east
+  // tilts the surface west (red below 1/2), one rising south tilts it north (green below 1/2).
+  const int w = 64, h = 32;
+  const double relief = 1e6, pi = 3.14159265358979323846, radius = 6371000.0;
+  core::ImageData east{w, h, 1, std::vector<float>(w * h)}, south{w, h, 1, std::vector<float>(w * h)};
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      east.pixels[y * w + x] = 0.01f * float(x);   // coverage rising by 0.01 a column to the east
+      south.pixels[y * w + x] = 0.02f * float(y);  // and by 0.02 a row to the south
+    }
+  const auto tilted_east = io::celestia_normal_map(east, relief);
+  const auto tilted_south = io::celestia_normal_map(south, relief);
+  for (int y : {4, 16, 27}) {
+    const double latitude = pi / 2 - (y + 0.5) * pi / h;
+    const double slope = relief * 0.01 / (radius * std::cos(latitude) * 2 * pi / w);  // dh/d(east), m/m
+    const double length = std::sqrt(1 + slope * slope);
+    for (int x : {1, 30, 62}) {  // away from the seam, where the ramp wraps
+      INFO("row " << y << " column " << x);
+      const float* n = &tilted_east.pixels[(std::size_t(y) * w + x) * 3];
+      CHECK(n[0] == Approx(0.5 - 0.5 * slope / length).margin(1e-6));
+      CHECK(n[1] == Approx(0.5).margin(1e-6));
+      CHECK(n[2] == Approx(0.5 + 0.5 / length).margin(1e-6));
+      const double north_slope = -relief * 0.02 / (radius * pi / h);  // falls to the north
+      const double l2 = std::sqrt(1 + north_slope * north_slope);
+      const float* m = &tilted_south.pixels[(std::size_t(y) * w + x) * 3];
+      CHECK(m[0] == Approx(0.5).margin(1e-6));
+      CHECK(m[1] == Approx(0.5 + 0.5 * north_slope / l2).margin(1e-6));
+      CHECK(m[1] < 0.5f);
+    }
+  }
 }
 
 TEST_CASE("export celestia and eve refuse a bad --name with exit code 2 before creating --out", "[export][cli]") {
@@ -771,6 +815,25 @@ TEST_CASE(
   CHECK(main_texture->value("value") == cube.value("name"));
   CHECK(main_texture->value("type") == "CubeMap");
   CHECK(layer.node("layer2D") != nullptr);
+  // The detail texture the layer names: it tiles (the step across its wrap is no larger than
+  // between neighbours inside) and has the statistics of EVE's shipped detail (grey 0.85, sd 0.05).
+  const std::string detail_path = layer.node("settings")->value("_DetailTex");
+  REQUIRE_FALSE(detail_path.empty());
+  const auto detail = read_dds_2d_dxt5(e.out.path / "GameData" / (detail_path + ".dds"));
+  const int n = detail.width;
+  REQUIRE(detail.height == n);
+  double sum = 0, squares = 0, inner_step = 0, wrap_step = 0;
+  for (int y = 0; y < n; ++y)
+    for (int x = 0; x < n; ++x) {
+      const double g = detail.pixels[(std::size_t(y) * n + x) * 4 + 1];
+      sum += g, squares += g * g;
+      const double right = detail.pixels[(std::size_t(y) * n + (x + 1) % n) * 4 + 1];
+      (x == n - 1 ? wrap_step : inner_step) += std::abs(right - g);
+    }
+  const double mean = sum / (double(n) * n);
+  CHECK(mean == Approx(0.85).margin(0.01));
+  CHECK(std::sqrt(squares / (double(n) * n) - mean * mean) == Approx(0.05).margin(0.01));
+  CHECK(wrap_step / n <= 2.0 * inner_step / (double(n) * (n - 1)));
 }
 
 TEST_CASE("export unity: the lat-long maps carry the marker, HDRP's in red, and the 6x1 strip is the reflected cube",

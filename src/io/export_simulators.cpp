@@ -1,6 +1,7 @@
 // The export presets of planetaria and simulators: Celestia, FlightGear Earthview and KSP's EVE
 // (docs/export.md).
 #include <algorithm>
+#include <cmath>
 
 #include "core/error.hpp"
 #include "files/image_files.hpp"
@@ -8,8 +9,46 @@
 #include "io/cover_files.hpp"
 #include "io/cube_frames.hpp"
 #include "io/export_writers.hpp"
+#include "noise/noise_spec.hpp"
 
 namespace nephele::io {
+namespace {
+
+// Until the cover carries a cloud-top height (docs/formats.md), the normal maps take the height
+// as cloud_relief_m times the coverage: the step of a cloud deck's top over clear sky is of the
+// order of a boundary-layer cloud's depth, 1-3 km (stratocumulus tops at 1-2 km).
+constexpr double cloud_relief_m = 2000.0;
+
+}  // namespace
+
+// Celestia's normal-map convention (src/celengine/shadermanager.cpp and the sphere's per-vertex
+// tangent (sin theta, 0, -cos theta), render.cpp): red the east component, green the south one
+// (down the image: row 0 is north), blue up, each 2 c - 1. For a height field h on the 4N x 2N
+// equirect the surface normal in (east, south, up) is (-h_e, h_n, 1) / m with h_e and h_n the
+// slopes to the east and north (central differences; longitude wraps, the pole rows take the
+// one-sided difference) and m the length. 8-bit RGB, linear.
+core::ImageData celestia_normal_map(const core::ImageData& map, double relief_m) {
+  constexpr double earth_radius_m = 6371000.0;  // mean radius (IUGG): the map's scale
+  const int w = map.width, h = map.height;
+  core::ImageData normals{w, h, 3, std::vector<float>(std::size_t(3) * w * h)};
+  const double pi = 3.14159265358979323846, step_lon = 2 * pi / w, step_lat = pi / h;
+  const auto height = [&](int x, int y) { return relief_m * map.pixels[std::size_t(y) * w + ((x + w) % w)]; };
+  for (int y = 0; y < h; ++y) {
+    const double latitude = pi / 2 - (y + 0.5) * step_lat;
+    const double east_m = earth_radius_m * std::cos(latitude) * step_lon, north_m = earth_radius_m * step_lat;
+    const int above = std::max(0, y - 1), below = std::min(h - 1, y + 1);  // above: further north
+    for (int x = 0; x < w; ++x) {
+      const double slope_east = (height(x + 1, y) - height(x - 1, y)) / (2 * east_m);
+      const double slope_north = (height(x, above) - height(x, below)) / ((below - above) * north_m);
+      const double length = std::sqrt(1 + slope_east * slope_east + slope_north * slope_north);
+      float* n = &normals.pixels[(std::size_t(y) * w + x) * 3];
+      n[0] = float(0.5 - 0.5 * slope_east / length);
+      n[1] = float(0.5 + 0.5 * slope_north / length);
+      n[2] = float(0.5 + 0.5 / length);
+    }
+  }
+  return normals;
+}
 
 void write_celestia(files::OutputSet& out, std::vector<std::string>& names, const ExportPreset& preset,
                     const CoverFaces& faces, const ExportOptions& options) {
@@ -29,6 +68,10 @@ void write_celestia(files::OutputSet& out, std::vector<std::string>& names, cons
   out.write(compressed, files::encode_dds(files::build_mip_chain(map.pixels, map.width, map.height, 1, 1),
                                           files::TexelFormat::bc3, files::GreyLayout::white_alpha));
   names.push_back(compressed);
+  const std::string normal_map = folder + "textures/hires/" + options.name + "_normal.png";
+  out.write(normal_map,
+            files::encode_image(celestia_normal_map(map, cloud_relief_m), files::png_encoding(8), normal_map));
+  names.push_back(normal_map);
   const std::string ssc = folder + options.name + ".ssc";
   // CloudShadowDepth above 0 turns on the clouds' shadows on the ground, darkened by 0.75 times
   // the cloud map's alpha (Celestia's solarsys.cpp ReadAtmosphere, shadermanager.cpp).
@@ -38,7 +81,8 @@ void write_celestia(files::OutputSet& out, std::vector<std::string>& names, cons
                      options.name +
                      ".png instead (lossless, Celestia makes its mips).\n"
                      "Modify \"Earth\" \"Sol\"\n{\n\tAtmosphere\n\t{\n\t\tCloudMap \"" +
-                     options.name + ".dds\"\n\t\tCloudShadowDepth 1\n\t}\n}\n");
+                     options.name + ".dds\"\n\t\tCloudNormalMap \"" + options.name +
+                     "_normal.png\"\n\t\tCloudShadowDepth 1\n\t}\n}\n");
   names.push_back(ssc);
   add_readme(out, names, preset, faces,
              "Files: " + texture + " (RGBA 8-bit PNG, " + std::to_string(map.width) + " x " +
@@ -47,7 +91,11 @@ void write_celestia(files::OutputSet& out, std::vector<std::string>& names, cons
                  "the centre and north up), " +
                  compressed +
                  " (the same map as DDS DXT5, BC3, with every\n"
-                 "mip level: the .ssc's CloudMap) and " +
+                 "mip level: the .ssc's CloudMap), " +
+                 normal_map +
+                 " (the clouds' relief as a\n"
+                 "tangent-space normal map, red east, green south, blue up, 8-bit linear: the .ssc's\n"
+                 "CloudNormalMap; heights 2000 m times the coverage) and " +
                  ssc +
                  ".\n"
                  "Install: copy the folder extras/" +
@@ -101,6 +149,43 @@ void write_flightgear(files::OutputSet& out, std::vector<std::string>& names, co
 }
 
 namespace {
+
+// EVE's _DetailTex: one tiling texture projected onto each cube face _DetailScale times, whose
+// RGBA multiplies the layer's colour and alpha near the camera (Assets/Shaders/SphereCloud.shader:
+// color = _Color main lerp(detail, 1, saturate(2 _DetailDist dist))). A slice of tileable 3D
+// Perlin-Worley noise (the noise stage's channel, its GLSL compiled as C++), so it tiles
+// seamlessly and looks alike in every direction across face edges, scaled to the statistics of
+// the detail texture EVE's own configs ship (BoulderCo detail1: grey mean 0.81, standard
+// deviation 0.05, alpha mean 0.87): grey 0.85 + 0.05 z, alpha grey + 0.02, with z the noise's
+// standard score, clamped to [0.6, 1].
+std::vector<float> eve_detail_texture(int size) {
+  noise::TextureSpec spec;
+  spec.width = spec.height = spec.depth = size;
+  spec.seed = 1;
+  spec.channels[0].type = noise::NoiseType::perlin_worley;
+  spec.channels[0].cells = 8;
+  spec.channels[0].octaves = 4;
+  spec.channels[0].worley_cells = 8;
+  spec.channels[0].worley_octaves = 3;
+  const glsl::NoiseChannel channel = noise::channel_params(spec, 0);
+  std::vector<double> values(std::size_t(size) * size);
+  double sum = 0, squares = 0;
+  for (int j = 0; j < size; ++j)
+    for (int i = 0; i < size; ++i) {
+      const double v = glsl::perlin_worley_channel_value(glsl::vec3(float(i) + 0.5f, float(j) + 0.5f, 0.5f), channel);
+      values[std::size_t(j) * size + i] = v;
+      sum += v, squares += v * v;
+    }
+  const double n = double(values.size()), mean = sum / n;
+  const double sd = std::sqrt(std::max(1e-12, squares / n - mean * mean));
+  std::vector<float> rgba(4 * values.size());
+  for (std::size_t t = 0; t < values.size(); ++t) {
+    const double grey = std::clamp(0.85 + 0.05 * (values[t] - mean) / sd, 0.6, 1.0);
+    rgba[4 * t] = rgba[4 * t + 1] = rgba[4 * t + 2] = float(grey);
+    rgba[4 * t + 3] = float(std::min(1.0, grey + 0.02));
+  }
+  return rgba;
+}
 
 // KSP's Environmental Visual Enhancements, the fork LGhassen/EnvironmentalVisualEnhancements
 // (EVE Redux / Volumetrics; its Assets/Shaders/cubeMap.cginc keeps rbray89's 1.x mapping).
@@ -158,19 +243,26 @@ void write_eve(files::OutputSet& out, std::vector<std::string>& names, const Exp
     config += "\t\ttex" + key + " = " + options.name + "/" + file.substr(0, file.size() - 4) + "\n";
   }
   config += "\t}\n}\n";
+  const int detail_size = 512;
+  const std::string detail = folder + "clouds_detail.dds";
+  out.write(detail,
+            files::encode_dds(files::build_mip_chain(eve_detail_texture(detail_size), detail_size, detail_size, 1, 4),
+                              files::TexelFormat::bc3));
+  names.push_back(detail);
   const std::string cfg = folder + options.name + "_textures.cfg";
   out.write(cfg, config);
   names.push_back(cfg);
   // A 2D cloud layer on Kerbin with the cube as its main texture: `type = CubeMap` makes EVE look
   // the value up among the EVE_TEXTURE_CONFIG cubes (Utils/TextureWrapper.cs, isValid).
   const std::string clouds_cfg = folder + options.name + "_clouds.cfg";
-  out.write(clouds_cfg, "// nephele cloud layer for EVE: Kerbin's 2D clouds from the cube of " + options.name +
-                            "_textures.cfg.\nEVE_CLOUDS\n{\n\tOBJECT\n\t{\n\t\tname = " + options.name +
-                            "\n\t\tbody = Kerbin\n\t\taltitude = 5000\n\t\tsettings\n\t\t{\n\t\t\t_MainTex\n\t\t\t{\n"
-                            "\t\t\t\tvalue = " +
-                            cube +
-                            "\n\t\t\t\ttype = CubeMap\n\t\t\t}\n\t\t}\n\t\tlayer2D\n\t\t{\n\t\t\tmacroCloudMaterial\n"
-                            "\t\t\t{\n\t\t\t}\n\t\t}\n\t}\n}\n");
+  out.write(clouds_cfg,
+            "// nephele cloud layer for EVE: Kerbin's 2D clouds from the cube of " + options.name +
+                "_textures.cfg.\nEVE_CLOUDS\n{\n\tOBJECT\n\t{\n\t\tname = " + options.name +
+                "\n\t\tbody = Kerbin\n\t\taltitude = 5000\n\t\tsettings\n\t\t{\n\t\t\t_MainTex\n\t\t\t{\n"
+                "\t\t\t\tvalue = " +
+                cube + "\n\t\t\t\ttype = CubeMap\n\t\t\t}\n\t\t\t_DetailTex = " + options.name +
+                "/clouds_detail\n\t\t\t_DetailScale = 25\n\t\t}\n\t\tlayer2D\n\t\t{\n\t\t\tmacroCloudMaterial\n"
+                "\t\t\t{\n\t\t\t}\n\t\t}\n\t}\n}\n");
   names.push_back(clouds_cfg);
   add_readme(out, names, preset, faces,
              "For Kerbal Space Program's Environmental Visual Enhancements, the fork\n"
@@ -188,6 +280,10 @@ void write_eve(files::OutputSet& out, std::vector<std::string>& names, const Exp
                  "clouds_xn.dds .. clouds_zp.dds  the six faces as EVE's GetCubeCubeUV samples\n"
                  "      them (texXn .. texZp), same frame\n"
                  "  " +
+                 detail +
+                 "  512 x 512 tiling detail (DXT5 with mips: grey 0.85 +- 0.05,\n"
+                 "      alpha 0.02 more), tileable Perlin-Worley noise, the layer's _DetailTex\n"
+                 "  " +
                  cfg + "  EVE_TEXTURE_CONFIG with one OBJECT: the cube " + cube +
                  "\n      (type TEX_CUBE_6), its texXn .. texZp the faces (GameData paths without extension)\n"
                  "  " +
@@ -195,7 +291,7 @@ void write_eve(files::OutputSet& out, std::vector<std::string>& names, const Exp
                  "  EVE_CLOUDS with one OBJECT: a 2D layer on Kerbin at 5000 m\n"
                  "      whose _MainTex is { value = " +
                  cube +
-                 ", type = CubeMap }; edit body, altitude and the\n"
+                 ", type = CubeMap }, _DetailTex the detail, _DetailScale 25; edit body, altitude and the\n"
                  "      layer's other settings there, or delete it and name the cube in a layer of your own\n"
                  "KSP's Unity frame is left-handed: the faces are the cover reflected into it (nephele\n"
                  "X, Y, Z = EVE z, x, y), not the GL faces renamed. Install: copy GameData/" +

@@ -29,6 +29,10 @@ ExportWriter write_godot;
 ExportWriter write_unreal;
 ExportWriter write_blender;
 
+// The celestia preset's CloudNormalMap of an equirect of coverage (4N x 2N, row 0 north), the
+// height relief_m times the coverage: RGB in [0, 1], red east, green south, blue up (Celestia's
+// tangent frame), each (1 + component)/2 (export_simulators.cpp).
+core::ImageData celestia_normal_map(const core::ImageData& map, double relief_m);
 // The cover's six faces and their mip chain (files/mip_chain.hpp), for the texture containers.
 files::MipChain cube_mip_chain(const CoverFaces& faces);
 // Face f of the cover as a one-channel image.
