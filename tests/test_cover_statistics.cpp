@@ -93,6 +93,70 @@ TEST_CASE("discs of many sizes have perimeter dimension close to 1", "[fast][sta
   CHECK(d.dimension == Approx(1.0).margin(0.05));
 }
 
+TEST_CASE("a 40 x 10 rectangle at the equator has elongation 4 and a disc has elongation 1", "[fast][stats]") {
+  // Second moments of n pixels in a row: (n^2 - 1)/12 of the centres plus 1/12 of each pixel's
+  // own extent, n^2/12: the principal ratio of a w x h rectangle is (w/h)^2 exactly, apart from
+  // the rows' cos(latitude) (rows within 0.5 degrees of the equator: 4e-5).
+  studies::Equirect m = blank(4096, 2048);
+  fill_rectangle(m, 100, 1019, 40, 10);
+  for (int y = -12; y <= 12; ++y)
+    for (int x = -12; x <= 12; ++x)
+      if (x * x + y * y <= 144) m.values[static_cast<size_t>(1024 + y) * 4096 + 600 + x] = 1.0f;
+  const std::vector<studies::CloudObject> objects = studies::cloud_objects(m, 60.0);
+  REQUIRE(objects.size() == 2);
+  const studies::CloudObject& rectangle = objects[0].area == 400 ? objects[0] : objects[1];
+  const studies::CloudObject& disc = objects[0].area == 400 ? objects[1] : objects[0];
+  REQUIRE(rectangle.area == 400);
+  CHECK(rectangle.elongation == Approx(4.0).epsilon(1e-3));
+  CHECK(disc.elongation == Approx(1.0).epsilon(0.02));  // a digital disc: symmetric up to its staircase
+  // Areas on the 6371 km sphere: 400 pixels of (2 pi R / 4096) x (pi R / 2048) km.
+  const double pixel_km2 = 6371.0 * 6371.0 * (2 * M_PI / 4096) * (M_PI / 2048);
+  CHECK(rectangle.area_km2 == Approx(400 * pixel_km2).epsilon(1e-4));
+}
+
+TEST_CASE("object statistics give the largest system's share, the mid-tones and the edge contrast of known maps",
+          "[fast][stats]") {
+  // Two squares on the same rows, 10 x 10 and 10 x 30 pixels: the larger holds 3/4 of the cloud.
+  // The small one is 0.5 inside with a border of 1; the large one is 1: mid-tones (0.25-0.75)
+  // are the small one's 8 x 8 inside, 64 of 400 pixels; the edge pixels are all 1 (contrast
+  // = 1 over the cloudy mean).
+  studies::Equirect m = blank(1024, 512);
+  fill_rectangle(m, 100, 250, 10, 10);
+  fill_rectangle(m, 300, 250, 30, 10);
+  for (float& v : m.values)
+    if (v > 0.0f) v = 1.0f;
+  for (int y = 251; y < 259; ++y)
+    for (int x = 101; x < 109; ++x) m.values[static_cast<size_t>(y) * 1024 + x] = 0.5f;
+  const studies::ObjectStatistics o = studies::object_statistics(m, 60.0);
+  CHECK(o.objects == 2);
+  // Rows 250..259 straddle the equator (rows 255.5): their cos(latitude) differ by 1e-4.
+  CHECK(o.largest_share == Approx(0.75).epsilon(1e-3));
+  CHECK(o.mid_tone_share == Approx(64.0 / 400.0).epsilon(1e-3));
+  CHECK(o.edge_value == Approx(1.0).epsilon(1e-6));
+  CHECK(o.cloudy_mean == Approx((400.0 - 32.0) / 400.0).epsilon(1e-3));
+}
+
+TEST_CASE("objects whose areas fall as 1/k have a cumulative size distribution of exponent 1", "[fast][stats]") {
+  // Strips one row tall, object k of floor(S/k) pixels, k = 1 .. 400: N(>= a) = floor(S/a),
+  // whose log-log slope is -1 up to the floor, below 1/N = 4 % where N >= 24 (the fit's rule);
+  // the rows lie within 3 degrees of the equator, so areas in km2 are pixels times one size to
+  // 0.14 %. The fitted exponent is 1 within 0.03.
+  studies::Equirect m = blank(8192, 4096);
+  const int S = 4000;
+  int x = 0, y = 2048 - 140;
+  for (int k = 1; k <= 400; ++k) {
+    const int length = S / k;
+    if (x + length + 2 > 8192) x = 0, y += 2;
+    fill_rectangle(m, x, y, length, 1);
+    x += length + 2;
+  }
+  REQUIRE(y < 2048 + 140);
+  const studies::ObjectStatistics o = studies::object_statistics(m, 60.0);
+  CHECK(o.objects == 400);
+  CHECK(o.size_exponent == Approx(1.0).margin(0.03));
+  CHECK(o.fit_low_km2 > 0.0);
+}
+
 TEST_CASE("the zonal spectrum of a power-law signal has its slope", "[fast][stats]") {
   // Each row sum_k a_k cos(2 pi k x / W + phase_k) with a_k = k^(-beta/2): its DFT has
   // |X_k| = W a_k / 2, so P(k) = a_k^2 / 4 = k^-beta / 4 exactly, with the FFT (W = 512) and
@@ -131,6 +195,8 @@ TEST_CASE("stats writes stats.json and stats.png beside the cover's files", "[st
   CHECK(ten.at("target").as_array().size() == 18);
   CHECK(stats.at("zonal_spectrum").at("power").as_array().size() == 64);
   CHECK(stats.at("folding").at("folded_fraction").is_number());
+  CHECK(stats.at("cloud_objects").at("size_distribution").at("thresholds_km2").is_array());
+  CHECK(r.output.find("edge cover") != std::string::npos);
   double histogram = 0.0;
   for (const json::Value& v : stats.at("histogram").at("fractions").as_array()) histogram += v.as_number();
   CHECK(histogram == Approx(1.0).margin(1e-9));

@@ -199,12 +199,14 @@ PowerLaw fit_power_law(const std::vector<double>& x, const std::vector<double>& 
   return fit;
 }
 
-std::vector<CloudObject> cloud_objects(const Equirect& map, double max_latitude_deg) {
+std::vector<CloudObject> cloud_objects(const Equirect& map, double max_latitude_deg, bool keep_cut) {
   const auto rows_range = central_rows(map.height, max_latitude_deg);
   const int first = rows_range.first, last = rows_range.second;  // captured below: no bindings (C++17)
   std::vector<CloudObject> objects;
   if (last < first) return objects;
   const int rows = last - first + 1, w = map.width;
+  // Pixel sizes on the mean sphere: a pixel spans 360/W degrees of longitude and 180/H of latitude.
+  const double radius_km = 6371.0, step_lon = 2.0 * M_PI / w, step_lat = M_PI / map.height;
   auto cloudy = [&](int r, int x) { return map.values[static_cast<size_t>(first + r) * w + x] > 0.0f; };
   std::vector<char> seen(static_cast<size_t>(rows) * w, 0);
   std::vector<std::pair<int, int>> stack;
@@ -212,14 +214,22 @@ std::vector<CloudObject> cloud_objects(const Equirect& map, double max_latitude_
     for (int x0 = 0; x0 < w; ++x0) {
       if (seen[static_cast<size_t>(r0) * w + x0] || !cloudy(r0, x0)) continue;
       CloudObject object;
-      bool cut = false;
+      // Second moments in local km about the seed pixel: east from the longitude difference
+      // (unwrapped across the seam) at each row's latitude, north from the row difference.
+      double m0 = 0, mx = 0, my = 0, mxx = 0, myy = 0, mxy = 0;
       stack.assign(1, {r0, x0});
       seen[static_cast<size_t>(r0) * w + x0] = 1;
       while (!stack.empty()) {
         const auto [r, x] = stack.back();
         stack.pop_back();
         ++object.area;
-        if (r == 0 || r == rows - 1) cut = true;
+        if (r == 0 || r == rows - 1) object.cut = true;
+        const double latitude = row_latitude_deg(first + r, map.height) * degree;
+        const double a = radius_km * radius_km * std::cos(latitude) * step_lon * step_lat;
+        const int dx = ((x - x0) % w + w + w / 2) % w - w / 2;
+        const double east = radius_km * std::cos(latitude) * step_lon * dx, north = radius_km * step_lat * (r0 - r);
+        m0 += a, mx += a * east, my += a * north, mxx += a * east * east, myy += a * north * north;
+        mxy += a * east * north;
         const int neighbours[4][2] = {{r - 1, x}, {r + 1, x}, {r, (x + 1) % w}, {r, (x + w - 1) % w}};
         for (const auto& n : neighbours) {
           if (n[0] < 0 || n[0] >= rows) continue;  // beyond the window: the object is cut anyway
@@ -234,7 +244,15 @@ std::vector<CloudObject> cloud_objects(const Equirect& map, double max_latitude_
           }
         }
       }
-      if (!cut) objects.push_back(object);
+      object.area_km2 = m0;
+      // Covariance of the area (plus a pixel's own spread, so that a single pixel is round).
+      const double cx = mx / m0, cy = my / m0;
+      const double pixel_x = radius_km * step_lon, pixel_y = radius_km * step_lat;
+      const double sxx = mxx / m0 - cx * cx + pixel_x * pixel_x / 12, syy = myy / m0 - cy * cy + pixel_y * pixel_y / 12;
+      const double sxy = mxy / m0 - cx * cy;
+      const double mean = 0.5 * (sxx + syy), spread = std::sqrt(0.25 * (sxx - syy) * (sxx - syy) + sxy * sxy);
+      object.elongation = mean - spread > 0 ? std::sqrt((mean + spread) / (mean - spread)) : 1.0;
+      if (keep_cut || !object.cut) objects.push_back(object);
     }
   return objects;
 }
@@ -244,7 +262,7 @@ PerimeterDimension perimeter_dimension(const std::vector<CloudObject>& objects, 
   PerimeterDimension d;
   d.min_area = std::numeric_limits<long>::max();
   for (const CloudObject& o : objects) {
-    if (o.area < min_area) continue;
+    if (o.area < min_area || o.cut) continue;
     area.push_back(static_cast<double>(o.area));
     perimeter.push_back(static_cast<double>(o.perimeter));
     d.min_area = std::min(d.min_area, o.area);
@@ -255,6 +273,64 @@ PerimeterDimension perimeter_dimension(const std::vector<CloudObject>& objects, 
   d.dimension = 2.0 * fit.slope;
   d.objects = fit.points;
   return d;
+}
+
+ObjectStatistics object_statistics(const Equirect& map, double max_latitude_deg) {
+  ObjectStatistics o;
+  const std::vector<CloudObject> all = cloud_objects(map, max_latitude_deg, true);
+  std::vector<double> elongations;
+  double total = 0.0, largest = 0.0;
+  for (const CloudObject& object : all) {
+    total += object.area_km2;
+    largest = std::max(largest, object.area_km2);
+    if (object.cut) continue;
+    ++o.objects;
+    if (object.area >= min_object_area) elongations.push_back(object.elongation);
+  }
+  o.largest_share = total > 0.0 ? largest / total : 0.0;
+  if (!elongations.empty()) {
+    std::nth_element(elongations.begin(), elongations.begin() + elongations.size() / 2, elongations.end());
+    o.elongation_median = elongations[elongations.size() / 2];
+  }
+  // N(>= a) on thresholds ten to a decade, from 10 pixels at the equator to 1e6 km2.
+  const double pixel_km2 = 6371.0 * 6371.0 * (2.0 * M_PI / map.width) * (M_PI / map.height);
+  std::vector<double> fit_a, fit_n;
+  for (double log_a = std::log10(10.0 * pixel_km2); log_a <= 6.0 + 1e-9; log_a += 0.1) {
+    const double a = std::pow(10.0, log_a);
+    double n = 0;
+    for (const CloudObject& object : all)
+      if (!object.cut && object.area_km2 >= a) ++n;
+    o.thresholds_km2.push_back(a);
+    o.count_at_least.push_back(n);
+    if (n >= 24) fit_a.push_back(a), fit_n.push_back(n);
+  }
+  if (fit_a.size() >= 2) {
+    o.size_fit = fit_power_law(fit_a, fit_n, 0.0, std::numeric_limits<double>::infinity());
+    o.size_exponent = -o.size_fit.slope;
+    o.fit_low_km2 = fit_a.front(), o.fit_high_km2 = fit_a.back();
+  }
+  // Brightness measures over the window's cloudy pixels, weighted by their areas.
+  const auto [first, last] = central_rows(map.height, max_latitude_deg);
+  double cloudy = 0, mid = 0, sum = 0, edge_weight = 0, edge_sum = 0;
+  const int w = map.width;
+  for (int r = first; r <= last; ++r) {
+    const double weight = std::cos(row_latitude_deg(r, map.height) * degree);
+    for (int x = 0; x < w; ++x) {
+      const float c = map.values[static_cast<size_t>(r) * w + x];
+      if (!(c > 0.0f)) continue;
+      cloudy += weight, sum += weight * c;
+      if (c >= 0.25f && c < 0.75f) mid += weight;
+      const auto clear = [&](int rr, int xx) {
+        return rr >= 0 && rr < map.height && !(map.values[static_cast<size_t>(rr) * w + (xx + w) % w] > 0.0f);
+      };
+      if (clear(r - 1, x) || clear(r + 1, x) || clear(r, x - 1) || clear(r, x + 1))
+        edge_weight += weight, edge_sum += weight * c;
+    }
+  }
+  o.mid_tone_share = cloudy > 0 ? mid / cloudy : 0.0;
+  o.cloudy_mean = cloudy > 0 ? sum / cloudy : 0.0;
+  o.edge_value = edge_weight > 0 ? edge_sum / edge_weight : 0.0;
+  return o;
 }
 
 CoverStatistics cover_statistics(const std::filesystem::path& cover_dir) {
@@ -349,6 +425,7 @@ CoverStatistics cover_statistics(const std::filesystem::path& cover_dir) {
     stats.fit_k_high = std::max(32, std::min(512, map->width / 8));
     stats.spectrum_fit = fit_power_law(k, stats.spectrum, stats.fit_k_low, stats.fit_k_high);
     stats.perimeter = perimeter_dimension(cloud_objects(*map, stats_max_latitude), min_object_area);
+    stats.objects = object_statistics(*map, stats_max_latitude);
   }
   return stats;
 }
@@ -399,6 +476,27 @@ json::Value statistics_json(const CoverStatistics& s) {
     perimeter.set("min_area_px", static_cast<double>(s.perimeter.min_area));
     perimeter.set("max_area_px", static_cast<double>(s.perimeter.max_area));
     root.set("perimeter_dimension", perimeter);
+    const ObjectStatistics& o = s.objects;
+    json::Value objects;
+    objects.set("definition",
+                "cloud objects (cover > 0, 4-connected) within 60 degrees of the equator, those cut by the "
+                "window left out of counts and sizes; areas on a sphere of 6371 km");
+    objects.set("count", o.objects);
+    json::Value sizes;
+    sizes.set("thresholds_km2", array_of(o.thresholds_km2));
+    sizes.set("count_at_least", array_of(o.count_at_least));
+    sizes.set("exponent", o.size_exponent);
+    sizes.set("fit_low_km2", o.fit_low_km2);
+    sizes.set("fit_high_km2", o.fit_high_km2);
+    sizes.set("definition", "N(>= a) ~ a^-exponent, least squares in log-log over thresholds with N >= 24");
+    objects.set("size_distribution", sizes);
+    objects.set("largest_share", o.largest_share);
+    objects.set("elongation_median", o.elongation_median);
+    objects.set("mid_tone_share", o.mid_tone_share);
+    objects.set("edge_value", o.edge_value);
+    objects.set("cloudy_mean", o.cloudy_mean);
+    objects.set("edge_contrast", o.cloudy_mean > 0 ? o.edge_value / o.cloudy_mean : 0.0);
+    root.set("cloud_objects", objects);
   }
   json::Value histogram;
   histogram.set("definition",

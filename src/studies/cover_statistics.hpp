@@ -44,11 +44,15 @@ PowerLaw fit_power_law(const std::vector<double>& x, const std::vector<double>& 
 
 // Connected cloud objects (cover > 0, 4-connected, periodic in longitude) of the rows within
 // `max_latitude_deg` of the equator, without those that touch the first or last of these rows
-// (cut off there). Area: pixels; perimeter: pixel edges between the object and clear pixels.
+// (cut off there) unless `keep_cut`. Area: pixels; perimeter: pixel edges between the object and
+// clear pixels; area_km2: its pixels' areas on a sphere of 6371 km; elongation: the square root
+// of the ratio of the principal second moments of area (local east and north km), 1 for a disc.
 struct CloudObject {
   long area = 0, perimeter = 0;
+  bool cut = false;
+  double area_km2 = 0.0, elongation = 1.0;
 };
-std::vector<CloudObject> cloud_objects(const Equirect& map, double max_latitude_deg);
+std::vector<CloudObject> cloud_objects(const Equirect& map, double max_latitude_deg, bool keep_cut = false);
 
 // The perimeter-area dimension: P ~ A^(D/2) fitted over the objects of at least `min_area`
 // pixels (log P against log A, least squares): D = 2 slope.
@@ -59,6 +63,28 @@ struct PerimeterDimension {
 };
 PerimeterDimension perimeter_dimension(const std::vector<CloudObject>& objects, long min_area);
 
+// The measures by which satellite cloud fields are told from noise (docs/climate.md, "Cloud
+// objects"), over the rows within `max_latitude_deg` of the equator:
+// - objects: the uncut objects (cloud_objects); their areas' complementary cumulative
+//   distribution N(>= a) on thresholds ten to a decade from 10 equatorial pixels to 1e6 km2, and
+//   its power-law exponent alpha (N ~ a^-alpha) fitted where N >= 24 (DeWitt and Garrett 2024's
+//   precaution for counts; satellites: alpha close to 1, DeWitt et al. 2024);
+// - largest_share: the largest connected system's area over all cloudy area, cut objects included;
+// - elongation_median: of the uncut objects of at least 10 pixels;
+// - mid_tone_share: the share of the cloudy area with cover in [0.25, 0.75);
+// - edge_value over cloudy_mean: the mean cover of the cloudy pixels that border a clear one,
+//   over that of all cloudy pixels: near 1 for sharp-edged clouds, small for soft ones.
+struct ObjectStatistics {
+  int objects = 0;
+  std::vector<double> thresholds_km2;
+  std::vector<double> count_at_least;
+  PowerLaw size_fit;  // log10 N against log10 a
+  double size_exponent = 0.0, fit_low_km2 = 0.0, fit_high_km2 = 0.0;
+  double largest_share = 0.0, elongation_median = 1.0, mid_tone_share = 0.0;
+  double edge_value = 0.0, cloudy_mean = 0.0;
+};
+ObjectStatistics object_statistics(const Equirect& map, double max_latitude_deg);
+
 // Everything `nephele stats` reports on a cover directory.
 struct CoverStatistics {
   std::string coverage_source;  // "faces" or "equirect"
@@ -68,6 +94,7 @@ struct CoverStatistics {
   PowerLaw spectrum_fit;
   double fit_k_low = 0, fit_k_high = 0;
   PerimeterDimension perimeter;
+  ObjectStatistics objects;       // (without an equirect: zero)
   std::vector<double> histogram;  // [0] clear (cover 0), then 20 bins over (0, 1]
   json::Value sidecar;            // cover.json
 };

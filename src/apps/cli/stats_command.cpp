@@ -80,7 +80,14 @@ int run_stats(const std::vector<std::string>& arguments) {
     std::cout << "zonal spectrum slope " << stats.spectrum_fit.slope << " (k " << stats.fit_k_low << " to "
               << stats.fit_k_high << ")\nperimeter dimension D " << stats.perimeter.dimension << " ("
               << stats.perimeter.objects << " objects of " << stats.perimeter.min_area << " to "
-              << stats.perimeter.max_area << " px)\n";
+              << stats.perimeter.max_area << " px)\n"
+              << "cloud objects " << stats.objects.objects << ", size distribution N(>=a) ~ a^-"
+              << stats.objects.size_exponent << " (" << std::setprecision(0) << stats.objects.fit_low_km2 << " to "
+              << stats.objects.fit_high_km2 << " km2)" << std::setprecision(3) << ", largest system "
+              << stats.objects.largest_share << " of the cloud, median elongation " << stats.objects.elongation_median
+              << "\nmid-tones (cover 0.25-0.75) " << stats.objects.mid_tone_share << " of the cloud; edge cover "
+              << stats.objects.edge_value << " against " << stats.objects.cloudy_mean << " inside (contrast "
+              << (stats.objects.cloudy_mean > 0 ? stats.objects.edge_value / stats.objects.cloudy_mean : 0.0) << ")\n";
   else
     std::cout << "no equirect map: no spectrum and no perimeter dimension\n";
   std::cout << "clear fraction " << stats.histogram[0] << "\nwrote " << (directory / "stats.json").string() << " and "
