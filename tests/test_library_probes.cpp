@@ -42,6 +42,7 @@ namespace nephele::glsl {
 #include "probes/perlin.glsl"
 #include "probes/portable_math.glsl"
 #include "probes/ray_sphere.glsl"
+#include "probes/sun_glint.glsl"
 #include "probes/terrain.glsl"
 #include "probes/tileable_noise.glsl"
 #include "probes/warp_step.glsl"
@@ -235,6 +236,26 @@ TEST_CASE("ray_sphere.glsl on the GPU agrees with the CPU", "[probe]") {
          kArithmetic});
   }
   compare("ray_sphere", probe_ray_sphere, cases);
+}
+
+TEST_CASE("sun_glint.glsl on the GPU agrees with the CPU", "[probe]") {
+  Random r(19);
+  std::vector<Case> cases;
+  for (int k = 0; k < 64; ++k) {
+    const float wind = r(0.0f, 15.0f), cos_i = r(0.0f, 1.0f), tan2 = r(0.0f, 0.2f);
+    const vec3 up = normalize(vec3(r.v(-1.0f, 1.0f)) + vec3(0.0f, 0.0f, 2.0f));
+    // View and sun above the local horizon, within 80 degrees of the vertical.
+    const vec3 view = normalize(up + 0.8f * normalize(vec3(r.v(-1.0f, 1.0f))));
+    const vec3 sun = normalize(up + 0.8f * normalize(vec3(r.v(-1.0f, 1.0f))));
+    // A sqrt, a division and an exp on values below 100 (1 / (pi sigma^2) <= 106), then the
+    // BRDF's product and division: the transcendental tolerance relative to the largest output.
+    const vec4 cpu = probe_sun_glint(
+        arguments(PROBE_SUN_GLINT, vec4(wind, cos_i, tan2, 0), vec4(up, 0), vec4(view, 0), vec4(sun, 0)));
+    const float largest = std::max({1.0f, std::abs(cpu.x), std::abs(cpu.y), std::abs(cpu.z), std::abs(cpu.w)});
+    cases.push_back({arguments(PROBE_SUN_GLINT, vec4(wind, cos_i, tan2, 0), vec4(up, 0), vec4(view, 0), vec4(sun, 0)),
+                     8 * kTranscendental * largest});
+  }
+  compare("sun_glint", probe_sun_glint, cases);
 }
 
 TEST_CASE("equirect_mapping.glsl on the GPU agrees with the CPU", "[probe]") {

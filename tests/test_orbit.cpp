@@ -425,3 +425,46 @@ TEST_CASE("orbit: the procedural stand-in has ocean and land, and any equirect m
   CHECK_THAT(r.output, Catch::Contains("not 2:1"));
   CHECK(std::filesystem::exists(out.path / "mars_view.exr"));
 }
+
+TEST_CASE("orbit: over an all-water planet the sun glints where the sea mirrors the sun into the camera",
+          "[orbit][glint]") {
+  test::test_context();
+  // A dark sea everywhere, no cloud; the camera 3000 km up, 12 degrees from the subsolar point.
+  const glm::dvec3 sun = render::sun_direction_ecef(june_morning);
+  const double sun_lat = std::asin(sun.z) / degree, sun_lon = std::atan2(sun.y, sun.x) / degree;
+  render::PlanetImages planet = uniform_planet(0.03);
+  planet.water = {1, 1, 1, {1.0f}};
+  const int w = 96, h = 64;
+  const auto camera = nadir_camera(sun_lat - 12, sun_lon, 3.0e6, w, h, 50);
+  const auto r = render::render_orbit(camera, june_morning, planet, clear_cover());
+  // The brightest pixel of the disc and the ground point it shows.
+  int bx = 0, by = 0;
+  double brightest = -1;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+      if (luminance(pixel(r, x, y)) > brightest) brightest = luminance(pixel(r, x, y)), bx = x, by = y;
+  const double R = render::OrbitSettings{}.planet_radius_m;
+  const render::OrbitFrame frame = render::orbit_frame(camera, R);
+  const double tan_half = std::tan(camera.fov_deg * degree / 2);
+  const double px = (2.0 * (bx + 0.5) / w - 1) * tan_half, py = (1 - 2.0 * (by + 0.5) / h) * double(h) / w * tan_half;
+  const glm::dvec3 d = glm::normalize(frame.forward + px * frame.right + py * frame.up);
+  const double b = glm::dot(frame.position, d), q = glm::dot(frame.position, frame.position) - R * R;
+  REQUIRE(b * b - q > 0);  // on the disc
+  const glm::dvec3 ground = frame.position + (-b - std::sqrt(b * b - q)) * d;
+  // There the facets that mirror the sun into the camera (normal along the half vector) tilt by
+  // beta from the vertical; the glint's radiance falls as exp(-tan^2 beta / sigma^2) while its
+  // other factors change by less than a factor 2 across the frame, so the brightest point has
+  // tan^2 beta <= sigma^2 ln 2: beta below sigma.
+  const glm::dvec3 up = glm::normalize(ground), view = glm::normalize(frame.position - ground);
+  const glm::dvec3 half = glm::normalize(view + sun);
+  const double beta = std::acos(std::min(1.0, glm::dot(up, half)));
+  const double sigma = std::sqrt(0.003 + 0.00512 * render::OrbitSettings{}.sea_wind_ms);
+  INFO("brightest pixel " << bx << ", " << by << ", facet tilt " << beta << " rad, sigma " << sigma);
+  CHECK(beta <= sigma);
+  // The glint outshines the plain sea away from it (the frame's bottom edge, 20 degrees of arc
+  // from the subsolar point), and without water there is none: the brightest pixel is then
+  // the plain sea's.
+  CHECK(brightest > 2 * luminance(pixel(r, w / 2, h - 2)));
+  const auto dry = render::render_orbit(camera, june_morning, uniform_planet(0.03), clear_cover());
+  CHECK(luminance(pixel(dry, bx, by)) < 0.5 * brightest);
+}

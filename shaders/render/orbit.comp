@@ -13,10 +13,12 @@ layout(binding = 1) uniform sampler2D day_texture;    // equirect, linear RGB, r
 layout(binding = 2) uniform sampler2D night_texture;  // equirect, linear RGB (city lights)
 layout(binding = 3) uniform samplerCube cover_map;    // coverage in [0, 1], GL face convention
 layout(binding = 4) uniform sampler3D detail_noise;   // 32^3 value noise in [0, 1], repeating
+layout(binding = 5) uniform sampler2D water_texture;  // equirect, fraction of open water (sun glint)
 
 #include "../lib/atmosphere.glsl"
 #include "../lib/equirect_mapping.glsl"
 #include "../lib/hash.glsl"
+#include "../lib/sun_glint.glsl"
 
 uniform vec3 u_centre;         // planet centre relative to the camera, m
 uniform float u_q_ground;      // |camera - centre|^2 - r^2 for the ground, cloud base, cloud top
@@ -34,6 +36,7 @@ uniform float u_tan_half_fov;
 uniform float u_pixel_angle;   // radians per pixel
 uniform vec3 u_sun;            // unit direction towards the sun
 uniform float u_night_lights;  // radiance of a city-light texel of value 1
+uniform float u_sea_wind;      // wind over the sea, m/s (the glint's facet slopes)
 uniform float u_cover_texel;   // arc length of one cover texel on the ground, m
 uniform float u_day_texel;     // arc length of one day-texture texel, m
 uniform int u_cloud_steps;
@@ -211,6 +214,10 @@ void main() {
     vec3 sky = PI_F * sky_ambient(n);
     float night = 1.0f - smoothstep(-0.1f, 0.05f, mu);
     background = albedo / PI_F * (direct + sky) + u_night_lights * night * lights;
+    // Sun glint: the sea's facets mirror the direct sunlight (already through air and cloud) into
+    // the view, radiance = BRDF x irradiance on the horizontal.
+    float water = textureLod(water_texture, tex, day_lod).r;
+    if (water > 0.0f && mu > 0.0f) background += water * sun_glint_brdf(n, -d, u_sun, u_sea_wind) * direct;
   }
 
   vec3 radiance;

@@ -1,9 +1,11 @@
 #include "io/planet_textures.hpp"
 
 #include <cmath>
+#include <algorithm>
 #include <system_error>
 
 #include "core/error.hpp"
+#include "io/elevation_files.hpp"
 #include "io/export_presets.hpp"
 #include "files/image_files.hpp"
 
@@ -29,10 +31,38 @@ core::ImageData read_equirect(const std::string& path, const std::string& option
   return image;
 }
 
+// The fraction of open water in each pixel of a 1080 x 540 equirect (a third of a degree: the glint
+// is a lobe hundreds of km wide), from the 16 ETOPO5 samples (a twelfth of a degree apart)
+// nearest the pixel's points on a 4 x 4 grid:
+// below sea level is water. Land below sea level (the Caspian and Dead Sea depressions' shores)
+// counts as water: a few hundred pixels.
+core::ImageData etopo5_water(const std::string& path) {
+  const regional::ElevationRaster raster = read_etopo5(path, -90.0, 90.0, "ETOPO5");
+  const int width = 1080, height = 540;
+  core::ImageData water{width, height, 1, std::vector<float>(std::size_t(width) * height, 0.0f)};
+  const double per_degree = 1.0 / raster.step_deg;
+  const int wrap = static_cast<int>(std::lround(360.0 * per_degree));
+  for (int j = 0; j < height; ++j)
+    for (int i = 0; i < width; ++i) {
+      int wet = 0;
+      for (int k = 0; k < 16; ++k) {
+        const double lat = 90.0 - (j + 0.125 + 0.25 * (k / 4)) * 180.0 / height;
+        const double lon = -180.0 + (i + 0.125 + 0.25 * (k % 4)) * 360.0 / width;
+        const int row =
+            std::clamp(static_cast<int>(std::lround((lat - raster.south_deg) * per_degree)), 0, raster.rows - 1);
+        const int column = static_cast<int>(std::lround((lon - raster.west_deg) * per_degree)) % wrap;
+        if (raster.heights[std::size_t(row) * raster.columns + (column + wrap) % wrap] < 0.0f) ++wet;
+      }
+      water.pixels[std::size_t(j) * width + i] = float(wet) / 16.0f;
+    }
+  return water;
+}
+
 }  // namespace
 
 PlanetTextures read_planet_textures(const std::string& day, const std::string& night, const std::string& option) {
   PlanetTextures out;
+  out.water_source = "none";
   std::error_code error;
   if (!day.empty()) {
     out.images.day = read_equirect(day, option);
@@ -43,9 +73,17 @@ PlanetTextures read_planet_textures(const std::string& day, const std::string& n
   } else if (std::filesystem::is_regular_file(default_earth_texture, error)) {
     out.images.day = read_equirect(default_earth_texture, option);
     out.day_source = default_earth_texture;
+    if (std::filesystem::is_regular_file(etopo5_default_path, error)) {
+      out.images.water = etopo5_water(etopo5_default_path);
+      out.water_source = etopo5_default_path;
+    } else {
+      out.warnings.push_back(std::string(etopo5_default_path) +
+                             " is missing (Debian package ferret-datasets): no water mask, so no sun glint");
+    }
   } else {
     out.images = render::procedural_planet();
     out.day_source = "procedural";
+    out.water_source = "procedural";
     out.warnings.push_back(std::string(default_earth_texture) +
                            " is missing (Debian package xplanet-images): a procedural ocean and land map stands in");
   }

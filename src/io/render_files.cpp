@@ -147,6 +147,7 @@ json::Value orbit_sidecar(const render::RenderResult& result, const OrbitRecord&
   root.set("cloud_thickness_m", record.settings.cloud_thickness_m);
   root.set("earth_texture", record.earth_texture);
   root.set("night_texture", record.night_texture);
+  root.set("water_mask", record.water);
   root.set("cover", record.cover);
   root.set("exposure", record.exposure);
   return root;

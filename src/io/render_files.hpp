@@ -34,6 +34,7 @@ struct OrbitRecord {
   render::OrbitSettings settings;
   std::string time;
   std::string earth_texture, night_texture, cover;  // where each came from
+  std::string water = "none";                       // the sun glint's water mask: ETOPO5's file, "procedural" or "none"
   double exposure = 1;
 };
 json::Value orbit_sidecar(const render::RenderResult& result, const OrbitRecord& record);

@@ -58,7 +58,8 @@ void check_settings(const OrbitSettings& s) {
   if (!(s.cloud_base_m >= 0) || !(s.cloud_thickness_m > 0) || !cloud_shell_fits(s.cloud_base_m, s.cloud_thickness_m))
     bad("the cloud shell must lie within the atmosphere (" + std::to_string(atmosphere_top_km()) +
         " km) and have a thickness above 0");
-  if (!(s.cloud_extinction >= 0) || !(s.night_lights >= 0)) bad("negative extinction or night lights");
+  if (!(s.cloud_extinction >= 0) || !(s.night_lights >= 0) || !(s.sea_wind_ms >= 0))
+    bad("negative extinction, night lights or sea wind");
   if (s.cloud_steps < 1 || s.cloud_steps > 1024 || s.shadow_steps < 0 || s.shadow_steps > 256 || s.sky_steps < 1 ||
       s.sky_steps > 256)
     bad("step counts out of range");
@@ -76,22 +77,45 @@ void check_cover(const CoverCube& cover) {
     throw std::invalid_argument("orbit renderer: the cover cube needs 6 x size x size texels");
 }
 
-GLuint equirect_texture(const core::ImageData& image) {
+// An equirect texture of `format` with every mip level: `upload` fills level 0, then the levels
+// are made and it is filtered trilinearly, repeating in longitude and clamped in latitude.
+template <class Upload>
+GLuint equirect_texture_of(const core::ImageData& image, GLenum format, Upload&& upload) {
   GLuint id = 0;
   glCreateTextures(GL_TEXTURE_2D, 1, &id);
   const int levels = 1 + static_cast<int>(std::floor(std::log2(std::max(image.width, image.height))));
-  glTextureStorage2D(id, levels, GL_RGBA16F, image.width, image.height);
-  std::vector<float> rgba(static_cast<size_t>(image.width) * image.height * 4, 1.0f);
-  for (size_t k = 0, n = static_cast<size_t>(image.width) * image.height; k < n; ++k)
-    for (int c = 0; c < 3; ++c) rgba[4 * k + c] = image.pixels[k * image.channels + std::min(c, image.channels - 1)];
-  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-  glTextureSubImage2D(id, 0, 0, 0, image.width, image.height, GL_RGBA, GL_FLOAT, rgba.data());
+  glTextureStorage2D(id, levels, format, image.width, image.height);
+  upload(id);
   glGenerateTextureMipmap(id);
   glTextureParameteri(id, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
   glTextureParameteri(id, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
   glTextureParameteri(id, GL_TEXTURE_WRAP_S, GL_REPEAT);
   glTextureParameteri(id, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
   return id;
+}
+
+GLuint equirect_texture(const core::ImageData& image) {
+  return equirect_texture_of(image, GL_RGBA16F, [&](GLuint id) {
+    std::vector<float> rgba(static_cast<size_t>(image.width) * image.height * 4, 1.0f);
+    for (size_t k = 0, n = static_cast<size_t>(image.width) * image.height; k < n; ++k)
+      for (int c = 0; c < 3; ++c) rgba[4 * k + c] = image.pixels[k * image.channels + std::min(c, image.channels - 1)];
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    glTextureSubImage2D(id, 0, 0, 0, image.width, image.height, GL_RGBA, GL_FLOAT, rgba.data());
+  });
+}
+
+// A one-channel equirect (the water fraction) as an 8-bit texture: a quarter of the upload of
+// equirect_texture's RGBA16F.
+GLuint fraction_texture(const core::ImageData& image) {
+  return equirect_texture_of(image, GL_R8, [&](GLuint id) {
+    std::vector<unsigned char> bytes(static_cast<size_t>(image.width) * image.height);
+    for (size_t k = 0; k < bytes.size(); ++k)
+      bytes[k] =
+          static_cast<unsigned char>(std::lround(255.0f * std::clamp(image.pixels[k * image.channels], 0.0f, 1.0f)));
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTextureSubImage2D(id, 0, 0, 0, image.width, image.height, GL_RED, GL_UNSIGNED_BYTE, bytes.data());
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  });
 }
 
 GLuint cover_texture(const CoverCube& cover) {
@@ -194,10 +218,10 @@ double framing_fov_deg(double altitude_m, double planet_radius_m, int width, int
 
 struct OrbitRenderer::Gl {
   gpu::ComputeProgram program{"render/orbit.comp"};
-  GLuint day = 0, night = 0, cover = 0, detail = 0;
+  GLuint day = 0, night = 0, water = 0, cover = 0, detail = 0;
   int day_width = 1, cover_size = 1;
   ~Gl() {
-    for (GLuint id : {day, night, cover, detail})
+    for (GLuint id : {day, night, water, cover, detail})
       if (id != 0) glDeleteTextures(1, &id);
   }
 };
@@ -216,6 +240,11 @@ OrbitRenderer::OrbitRenderer(const PlanetImages& planet, const CoverCube& cover,
       night.pixels.size() != static_cast<size_t>(night.width) * night.height * night.channels)
     night = {1, 1, 3, {0.0f, 0.0f, 0.0f}};
   gl_->night = equirect_texture(night);
+  core::ImageData water = planet.water;
+  if (water.width < 1 || water.height < 1 || water.channels < 1 ||
+      water.pixels.size() != static_cast<size_t>(water.width) * water.height * water.channels)
+    water = {1, 1, 1, {0.0f}};
+  gl_->water = fraction_texture(water);
   gl_->cover = cover_texture(cover);
   gl_->cover_size = cover.size;
   gl_->detail = detail_texture();
@@ -268,6 +297,7 @@ double OrbitRenderer::render_into(const OrbitCamera& camera, double unix_seconds
     p.set("u_pixel_angle", static_cast<float>(2 * tan_half / camera.width));
     p.set("u_sun", glm::vec3(sun));
     p.set("u_night_lights", static_cast<float>(s.night_lights));
+    p.set("u_sea_wind", static_cast<float>(s.sea_wind_ms));
     p.set("u_cover_texel", static_cast<float>(R * (M_PI / 2) / gl_->cover_size));
     p.set("u_day_texel", static_cast<float>(2 * M_PI * R / gl_->day_width));
     p.set("u_cloud_steps", s.cloud_steps);
@@ -278,6 +308,7 @@ double OrbitRenderer::render_into(const OrbitCamera& camera, double unix_seconds
     glBindImageTexture(orbit::radiance_image, rgba32f_texture, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
     glBindTextureUnit(orbit::day_texture, gl_->day);
     glBindTextureUnit(orbit::night_texture, gl_->night);
+    glBindTextureUnit(orbit::water_texture, gl_->water);
     glBindTextureUnit(orbit::cover_map, gl_->cover);
     glBindTextureUnit(orbit::detail_noise, gl_->detail);
     p.dispatch_covering(camera.width, camera.height, 1);
@@ -316,6 +347,7 @@ RenderResult render_orbit(const OrbitCamera& camera, double unix_seconds, const 
 PlanetImages procedural_planet(int width, int height) {
   PlanetImages planet;
   planet.day = {width, height, 3, {}};
+  planet.water = {width, height, 1, {}};
   planet.day.pixels.reserve(static_cast<size_t>(width) * height * 3);
   for (int j = 0; j < height; ++j) {
     const double lat = M_PI / 2 - (j + 0.5) * M_PI / height;
@@ -328,8 +360,10 @@ PlanetImages procedural_planet(int width, int height) {
       glm::dvec3 colour = land > 0.52 ? glm::mix(glm::dvec3(0.06, 0.10, 0.03), glm::dvec3(0.25, 0.20, 0.12),
                                                  std::clamp((land - 0.52) * 5, 0.0, 1.0))
                                       : glm::dvec3(0.005, 0.015, 0.05);
-      if (std::abs(lat) > 70 * degree) colour = glm::dvec3(0.7, 0.72, 0.75);
+      const bool ice = std::abs(lat) > 70 * degree;
+      if (ice) colour = glm::dvec3(0.7, 0.72, 0.75);
       for (int c = 0; c < 3; ++c) planet.day.pixels.push_back(static_cast<float>(colour[c]));
+      planet.water.pixels.push_back(land <= 0.52 && !ice ? 1.0f : 0.0f);
     }
   }
   return planet;

@@ -43,15 +43,21 @@ struct OrbitSettings {
   double cloud_thickness_m = 8000;   // the shell's thickness
   double cloud_extinction = 0.02;    // 1/m at density 1 (optical depth 20 per km)
   double night_lights = 0.08;        // radiance (W m^-2 sr^-1 nm^-1) of a city-light texel of value 1
-  int cloud_steps = 32;              // samples along a view ray through the shell
-  int shadow_steps = 6;              // samples from the ground towards the sun
-  int sky_steps = 12;                // samples of the atmosphere along a view ray
+  // Wind over the sea (m/s) for the glint's facet slopes: 7 m/s, about the global ocean mean of
+  // the 10 m wind (scatterometer climatologies: 7 to 7.5 m/s; docs/orbit_view.md).
+  double sea_wind_ms = 7.0;
+  int cloud_steps = 32;  // samples along a view ray through the shell
+  int shadow_steps = 6;  // samples from the ground towards the sun
+  int sky_steps = 12;    // samples of the atmosphere along a view ray
 };
 
 // The planet's surface: equirect images, longitude -180 at the left edge, north up, RGB or RGBA,
 // linear values (io::read_planet_textures decodes sRGB). An empty night image means no lights.
 struct PlanetImages {
   core::ImageData day, night;
+  // The fraction of each pixel that is open water (one channel, the same equirect layout), where
+  // the sun glints (shaders/lib/sun_glint.glsl); empty: no glint.
+  core::ImageData water;
 };
 
 // The global cover as a cube map: faces +X, -X, +Y, -Y, +Z, -Z, size x size floats each, rows

@@ -24,6 +24,7 @@ namespace nephele::glsl {
 #include "lib/perlin.glsl"
 #include "lib/portable_math.glsl"
 #include "lib/ray_sphere.glsl"
+#include "lib/sun_glint.glsl"
 #include "lib/render_types.glsl"
 #include "lib/terrain.glsl"
 #include "lib/tileable_noise.glsl"

@@ -139,6 +139,7 @@ int run_orbit_render(const OrbitOptions& orbit) {
   record.time = time_text;
   record.earth_texture = textures.day_source;
   record.night_texture = textures.night_source;
+  record.water = textures.water_source;
   record.cover = cover_source;
   record.exposure = orbit.exposure;
   io::write_orbit_outputs(result, record, out);

@@ -1,0 +1,50 @@
+// Sun glint: the sunlight the wind-roughened sea reflects towards the viewer, for the orbit view
+// (docs/orbit_view.md, "Sun glint"). The sea is a surface of facets whose slopes are Gaussian
+// with the mean square slope Cox and Munk measured from photographs of the glint against the
+// wind speed (Cox, C. and Munk, W. 1954, "Measurement of the roughness of the sea surface from
+// photographs of the sun's glitter", J. Opt. Soc. Am. 44, 838-850: sigma^2 = 0.003 + 0.00512 U,
+// isotropic form, U the wind 12.5 m above the sea in m/s); each facet reflects by Fresnel's
+// law for water (refractive index 1.334).
+#ifndef NEPHELE_SUN_GLINT_GLSL
+#define NEPHELE_SUN_GLINT_GLSL
+#include "prelude.glsl"
+
+const float WATER_REFRACTIVE_INDEX = 1.334f;
+
+// The mean square slope of the sea surface (both directions together) at wind speed `wind` m/s.
+float sea_slope_variance(float wind) { return 0.003f + 0.00512f * max(wind, 0.0f); }
+
+// Fresnel reflectance of water for unpolarised light arriving at cos(incidence) = cos_i
+// (the mean of the s and p reflectances; air to water, so no total reflection).
+float water_fresnel(float cos_i) {
+  float c = clamp(cos_i, 0.0f, 1.0f);
+  float n = WATER_REFRACTIVE_INDEX;
+  float sin_t2 = (1.0f - c * c) / (n * n);
+  float cos_t = sqrt(max(1.0f - sin_t2, 0.0f));
+  float rs = (c - n * cos_t) / (c + n * cos_t);
+  float rp = (n * c - cos_t) / (n * c + cos_t);
+  return 0.5f * (rs * rs + rp * rp);
+}
+
+// The probability density of facet slopes (z_x, z_y) = tan(beta) (cos, sin): isotropic Gaussian
+// exp(-tan^2 beta / sigma^2) / (pi sigma^2), per unit of slope squared.
+float sea_slope_density(float tan2_beta, float variance) { return exp(-tan2_beta / variance) / (3.14159265358979f * variance); }
+
+// The sea's glint BRDF (1/sr) for unit vectors `up` (the local vertical), `view` (towards the
+// viewer) and `sun` (towards the sun): the facets whose normal is the half vector h reflect the
+// sun into the view, rho(view . h) p(tan beta) / (4 mu mu0 cos^4 beta), with mu = up . view,
+// mu0 = up . sun and cos beta = up . h (Cox and Munk 1954, eq. 3; the form of Nakajima and
+// Tanaka 1983 and of the 6S code's glint). 0 below the horizon of either direction.
+float sun_glint_brdf(vec3 up, vec3 view, vec3 sun, float wind) {
+  float mu = dot(up, view), mu0 = dot(up, sun);
+  if (mu <= 0.0f || mu0 <= 0.0f) return 0.0f;
+  vec3 h = normalize(view + sun);
+  float cos_beta = dot(up, h);
+  if (cos_beta <= 0.0f) return 0.0f;
+  float cos2 = cos_beta * cos_beta;
+  float tan2 = (1.0f - cos2) / cos2;
+  float density = sea_slope_density(tan2, sea_slope_variance(wind));
+  return water_fresnel(dot(view, h)) * density / (4.0f * mu * mu0 * cos2 * cos2);
+}
+
+#endif

@@ -1,0 +1,11 @@
+// Probe of lib/sun_glint.glsl (shared GLSL/C++ subset; tests/test_library_probes.cpp).
+// x[0] = (function, wind, cos_i, tan2_beta), x[1] = up, x[2] = view, x[3] = sun.
+const int PROBE_SUN_GLINT = 0;
+#ifndef __cplusplus
+#include "../lib/sun_glint.glsl"
+#endif
+vec4 probe_sun_glint(mat4 x) {
+  float wind = x[0].y;
+  return vec4(sea_slope_variance(wind), water_fresnel(x[0].z), sea_slope_density(x[0].w, sea_slope_variance(wind)),
+              sun_glint_brdf(vec3(x[1]), vec3(x[2]), vec3(x[3]), wind));
+}
