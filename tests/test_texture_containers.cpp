@@ -224,6 +224,51 @@ TEST_CASE(
   }
 }
 
+TEST_CASE("a KTX2 of RGBA formats describes RGBA8 by four samples and BC3 by its alpha and colour blocks",
+          "[fast][texture_containers]") {
+  // Khronos Data Format Specification 1.3: RGBA8 in the RGBSDA model, channels R, G, B and
+  // alpha (15) at bit offsets 0, 8, 16, 24; BC3 in KHR_DF_MODEL_BC3 (130) with the alpha block
+  // (channel 15) in the first 64 bits and the colour block (0) in the second, 4 x 4 texels in 16
+  // bytes. A one-channel chain is spread into RGBA as grey; its alpha decodes to the chain.
+  const int n = 8;
+  const std::vector<float> cube = test_cube(n);
+  const files::MipChain chain = files::build_mip_chain(cube, n, n, 6, 1);
+  const auto reference = reference_levels(cube, n);
+  const std::string rgba = as_string(files::encode_ktx2(chain, files::TexelFormat::rgba8));
+  const test::Ktx2File a = test::read_ktx2(rgba);
+  CHECK(a.vk_format == 37);
+  CHECK(a.color_model == 1);
+  REQUIRE(a.samples.size() == 4);
+  for (std::uint32_t k = 0; k < 4; ++k) {
+    CHECK(a.samples[k].bit_offset == 8 * k);
+    CHECK(a.samples[k].bit_length == 8);
+    CHECK(a.samples[k].channel == (k < 3 ? k : 15u));
+  }
+  const std::string bc3 = as_string(files::encode_ktx2(chain, files::TexelFormat::bc3));
+  const test::Ktx2File b = test::read_ktx2(bc3);
+  CHECK(b.vk_format == 137);
+  CHECK(b.color_model == 130);
+  CHECK(b.block_width == 4);
+  CHECK(b.bytes_plane0 == 16);
+  REQUIRE(b.samples.size() == 2);
+  CHECK(b.samples[0].channel == 15);
+  CHECK(b.samples[0].bit_offset == 0);
+  CHECK(b.samples[1].channel == 0);
+  CHECK(b.samples[1].bit_offset == 64);
+  // Level 0, face 3: the alpha within the BC4 bound of the float texels, and RGBA8's alpha
+  // within half of 1/255.
+  const std::size_t face = 3;
+  const auto* rgba_data = reinterpret_cast<const unsigned char*>(rgba.data()) + a.levels[0].offset + face * n * n * 4;
+  const auto* bc3_data = reinterpret_cast<const unsigned char*>(bc3.data()) + b.levels[0].offset + face * 4 * 16;
+  const std::vector<float> rgba_values = test::decode_stored_image(test::StoredFormat::rgba8, rgba_data, n, n);
+  const std::vector<float> bc3_values = test::decode_stored_image(test::StoredFormat::bc3, bc3_data, n, n);
+  std::vector<float> rgba_alpha, bc3_alpha;
+  for (int t = 0; t < n * n; ++t)
+    rgba_alpha.push_back(rgba_values[4 * t + 3]), bc3_alpha.push_back(bc3_values[4 * t + 3]);
+  check_level(files::TexelFormat::r8, rgba_alpha, reference[0].data() + face * n * n, n, n);
+  check_level(files::TexelFormat::bc4, bc3_alpha, reference[0].data() + face * n * n, n, n);
+}
+
 TEST_CASE("a DDS cube holds each face's mip levels in turn, flagged as mipmapped, in legacy and DX10 headers",
           "[fast][texture_containers]") {
   const int n = 16;
