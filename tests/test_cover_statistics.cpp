@@ -127,7 +127,7 @@ TEST_CASE("object statistics give the largest system's share, the mid-tones and 
     if (v > 0.0f) v = 1.0f;
   for (int y = 251; y < 259; ++y)
     for (int x = 101; x < 109; ++x) m.values[static_cast<size_t>(y) * 1024 + x] = 0.5f;
-  const studies::ObjectStatistics o = studies::object_statistics(m, 60.0);
+  const studies::ObjectStatistics o = studies::object_statistics(m, studies::cloud_objects(m, 60.0, true), 60.0);
   CHECK(o.objects == 2);
   // Rows 250..259 straddle the equator (rows 255.5): their cos(latitude) differ by 1e-4.
   CHECK(o.largest_share == Approx(0.75).epsilon(1e-3));
@@ -151,7 +151,7 @@ TEST_CASE("objects whose areas fall as 1/k have a cumulative size distribution o
     x += length + 2;
   }
   REQUIRE(y < 2048 + 140);
-  const studies::ObjectStatistics o = studies::object_statistics(m, 60.0);
+  const studies::ObjectStatistics o = studies::object_statistics(m, studies::cloud_objects(m, 60.0, true), 60.0);
   CHECK(o.objects == 400);
   CHECK(o.size_exponent == Approx(1.0).margin(0.03));
   CHECK(o.fit_low_km2 > 0.0);

@@ -275,9 +275,8 @@ PerimeterDimension perimeter_dimension(const std::vector<CloudObject>& objects, 
   return d;
 }
 
-ObjectStatistics object_statistics(const Equirect& map, double max_latitude_deg) {
+ObjectStatistics object_statistics(const Equirect& map, const std::vector<CloudObject>& all, double max_latitude_deg) {
   ObjectStatistics o;
-  const std::vector<CloudObject> all = cloud_objects(map, max_latitude_deg, true);
   std::vector<double> elongations;
   double total = 0.0, largest = 0.0;
   for (const CloudObject& object : all) {
@@ -424,8 +423,9 @@ CoverStatistics cover_statistics(const std::filesystem::path& cover_dir) {
     stats.fit_k_low = 16;
     stats.fit_k_high = std::max(32, std::min(512, map->width / 8));
     stats.spectrum_fit = fit_power_law(k, stats.spectrum, stats.fit_k_low, stats.fit_k_high);
-    stats.perimeter = perimeter_dimension(cloud_objects(*map, stats_max_latitude), min_object_area);
-    stats.objects = object_statistics(*map, stats_max_latitude);
+    const std::vector<CloudObject> objects = cloud_objects(*map, stats_max_latitude, true);
+    stats.perimeter = perimeter_dimension(objects, min_object_area);
+    stats.objects = object_statistics(*map, objects, stats_max_latitude);
   }
   return stats;
 }

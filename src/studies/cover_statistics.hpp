@@ -83,7 +83,10 @@ struct ObjectStatistics {
   double largest_share = 0.0, elongation_median = 1.0, mid_tone_share = 0.0;
   double edge_value = 0.0, cloudy_mean = 0.0;
 };
-ObjectStatistics object_statistics(const Equirect& map, double max_latitude_deg);
+// `objects`: cloud_objects(map, max_latitude_deg, keep_cut = true), labelled once for this and
+// perimeter_dimension (which leaves the cut ones out).
+ObjectStatistics object_statistics(const Equirect& map, const std::vector<CloudObject>& objects,
+                                   double max_latitude_deg);
 
 // Everything `nephele stats` reports on a cover directory.
 struct CoverStatistics {
