@@ -194,6 +194,13 @@ std::uint16_t half_from_float(float value) {
   return std::uint16_t(sign | h);
 }
 
+float float_from_half(std::uint16_t h) {
+  const int exponent = (h >> 10) & 31, mantissa = h & 1023;
+  const float magnitude =
+      exponent == 0 ? std::ldexp(float(mantissa), -24) : std::ldexp(float(mantissa + 1024), exponent - 25);
+  return (h & 0x8000) ? -magnitude : magnitude;
+}
+
 std::vector<unsigned char> encode_ktx2(const MipChain& chain, TexelFormat format, GreyLayout layout) {
   check_chain(chain, format);
   const bool cube = chain.layers == 6;

@@ -3,10 +3,10 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <stdexcept>
 #include <unistd.h>
 
+#include "files/atomic_output.hpp"
 #include "files/image_files.hpp"
 #include "files/mip_chain.hpp"
 #include "files/texture_containers.hpp"
@@ -33,9 +33,7 @@ std::vector<float> decoded_face(const files::MipChain& chain, int face, const Ca
     for (std::size_t i = 0; i < n; ++i) {
       const float v = texels[i];
       if (c.format == files::TexelFormat::r16f) {
-        const std::uint16_t h = files::half_from_float(v);
-        const int exponent = (h >> 10) & 31, mantissa = h & 1023;
-        out[i] = exponent == 0 ? std::ldexp(float(mantissa), -24) : std::ldexp(float(mantissa + 1024), exponent - 25);
+        out[i] = files::float_from_half(files::half_from_float(v));
       } else if (c.format == files::TexelFormat::r32f) {
         out[i] = v;
       } else {
@@ -49,10 +47,7 @@ std::vector<float> decoded_face(const files::MipChain& chain, int face, const Ca
   const std::vector<unsigned char> bytes = files::encode_dds(one, c.format, c.layout);
   const std::filesystem::path path =
       std::filesystem::temp_directory_path() / ("nephele_compression_" + std::to_string(::getpid()) + ".dds");
-  {
-    std::ofstream file(path, std::ios::binary);
-    file.write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
-  }
+  files::write_file(path, bytes.data(), bytes.size());
   files::ImageData image = files::read_image(path);
   std::filesystem::remove(path);
   for (std::size_t i = 0; i < n; ++i)
