@@ -124,20 +124,6 @@ TEST_CASE("the host memory probe reads MemAvailable from /proc/meminfo", "[fast]
   CHECK(core::host_memory_available_bytes() > 0.0);
 }
 
-TEST_CASE("a cover size the driver cannot allocate is refused naming --size before any work", "[bad-input][cli]") {
-  if (!test::test_context().is_software()) {
-    test::skip_case("not a software rasteriser; 4096 may fit this device");
-    return;
-  }
-  // llvmpipe refuses textures over about 1.5 GiB: a 4096^2 RGBA32F cube map is 1.5 GiB.
-  TemporaryDirectory out;
-  const Run r = test::run("generate --size 4096 --out " + out.path.string());
-  INFO(r.output);
-  CHECK(r.exit_code == 2);
-  CHECK_THAT(r.output, Catch::StartsWith("nephele: --size: 4096"));
-  CHECK_FALSE(fs::exists(out.path));
-}
-
 TEST_CASE("image sizes are strict WIDTHxHEIGHT integers within 1 to 16384", "[fast][bad-input][scene]") {
   int w = 0, h = 0;
   regional::parse_size("1280x720", w, h, "--size");

@@ -7,9 +7,9 @@
 // and adds its strip's range with two atomics. (A reduction in shared memory needs a barrier,
 // which on llvmpipe cost more than the pass it saved.)
 layout(local_size_x = 64, local_size_y = 1, local_size_z = 1) in;
-layout(rgba32f, binding = 0) uniform readonly imageCube warp_field;
-layout(r32f, binding = 1) uniform writeonly imageCube density_field;
-layout(rgba32f, binding = 2) uniform readonly imageCube curl_field;
+layout(rgba32f, binding = 0) uniform readonly image2DArray warp_field;
+layout(r32f, binding = 1) uniform writeonly image2DArray density_field;
+layout(rgba32f, binding = 2) uniform readonly image2DArray curl_field;
 layout(binding = 3) uniform sampler2D surface_bias;  // equirect, row 0 north, longitude -180 at s = 0
 // MOVING_LAYERS 1 (--flow moving): two cloud layers of their own noise, warp_field the older's
 // points and young_warp_field the younger's, blended with the younger's share u_young_share.
@@ -17,12 +17,13 @@ layout(binding = 3) uniform sampler2D surface_bias;  // equirect, row 0 north, l
 #define MOVING_LAYERS 0
 #endif
 #if MOVING_LAYERS
-layout(rgba32f, binding = 4) uniform readonly imageCube young_warp_field;
+layout(rgba32f, binding = 4) uniform readonly image2DArray young_warp_field;
 #endif
 #include "../lib/cover_density.glsl"
 #include "../lib/cube_faces.glsl"
 #include "../lib/equirect_mapping.glsl"
 #include "reduction_words.glsl"
+#include "cube_tile.glsl"
 
 // Words 0, 1: sortable bits of the smallest and largest density (reset by the host).
 layout(std430, binding = 8) buffer DensityRange { uint density_range[]; };
@@ -38,18 +39,19 @@ uniform float u_young_share;
 #endif
 
 void main() {
-  int size = imageSize(density_field).x;
-  int i = int(gl_GlobalInvocationID.x), face = int(gl_GlobalInvocationID.z);
-  int first = int(gl_GlobalInvocationID.y) * u_strip;
-  if (i >= size || first >= size) return;
-  int last = min(size, first + u_strip);
+  int size = u_face_size;
+  int i = int(gl_GlobalInvocationID.x), layer = int(gl_GlobalInvocationID.z);
+  int first = u_tile_rows.x + int(gl_GlobalInvocationID.y) * u_strip;
+  if (i >= size || first >= u_tile_rows.y) return;
+  int last = min(u_tile_rows.y, first + u_strip);
   uint low = 0xFFFFFFFFu, high = 0u;
   for (int j = first; j < last; ++j) {
-    ivec3 texel = ivec3(i, j, face);
+    ivec3 texel = ivec3(i, j, layer);
     vec3 warped = imageLoad(warp_field, texel).xyz;
     float surface = 0.0f;
     if (u_surface_weight > 0.0f) {
-      surface = texture(surface_bias, equirect_uv(texel_direction(face, i, j, size))).x;
+      ivec3 at = face_texel(texel);
+      surface = texture(surface_bias, equirect_uv(texel_direction(at.z, at.x, at.y, size))).x;
     }
     float noise = cover_density_shifted(warped, u_cover, u_noise_offset);
 #if MOVING_LAYERS

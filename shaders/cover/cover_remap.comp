@@ -6,12 +6,13 @@
 // invocation walks a strip of u_strip texels down a column and adds runs of one band at once
 // (as the reductions of coverage_histogram.comp).
 layout(local_size_x = 64, local_size_y = 1, local_size_z = 1) in;
-layout(r32f, binding = 0) uniform readonly imageCube density_field;
-layout(r32f, binding = 1) uniform writeonly imageCube cover_field;
+layout(r32f, binding = 0) uniform readonly image2DArray density_field;
+layout(r32f, binding = 1) uniform writeonly image2DArray cover_field;
 #include "../lib/cover_density.glsl"
 #include "../lib/cube_faces.glsl"
 #include "band_thresholds.glsl"
 #include "texel_weights.glsl"
+#include "cube_tile.glsl"
 
 uniform float u_threshold;
 uniform float u_density_max;
@@ -21,19 +22,20 @@ layout(std430, binding = 9) buffer BandCloudy { uint band_cloudy[]; };
 uniform int u_strip;
 
 void main() {
-  int size = imageSize(cover_field).x;
-  int i = int(gl_GlobalInvocationID.x), face = int(gl_GlobalInvocationID.z);
-  int first = int(gl_GlobalInvocationID.y) * u_strip;
-  if (i >= size || first >= size) return;
-  int last = min(size, first + u_strip);
+  int size = u_face_size;
+  int i = int(gl_GlobalInvocationID.x), layer = int(gl_GlobalInvocationID.z);
+  int first = u_tile_rows.x + int(gl_GlobalInvocationID.y) * u_strip;
+  if (i >= size || first >= u_tile_rows.y) return;
+  int last = min(u_tile_rows.y, first + u_strip);
   int run_band = -1;
   uint run_units = 0u;
   for (int j = first; j < last; ++j) {
-    ivec3 texel = ivec3(i, j, face);
+    ivec3 texel = ivec3(i, j, layer);
+    ivec3 at = face_texel(texel);
     float density = imageLoad(density_field, texel).x;
     float threshold = u_threshold;
     if (u_bands > 0) {
-      vec3 direction = texel_direction(face, i, j, size);
+      vec3 direction = texel_direction(at.z, at.x, at.y, size);
       threshold = smooth_band_threshold(direction);
       int band = band_of(band_coordinate(direction, u_bands), u_bands);
       // A run is flushed once it reaches 2^31 units; a texel is below 2^31, so the 32-bit run
@@ -44,7 +46,7 @@ void main() {
           run_band = band;
           run_units = 0u;
         }
-        run_units += texel_weight(i, j, size);
+        run_units += texel_weight(at.x, at.y, size);
       }
     }
     imageStore(cover_field, texel, vec4(cover_from_density(density, threshold, u_density_max), 0.0f, 0.0f, 0.0f));

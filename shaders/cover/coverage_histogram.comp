@@ -15,10 +15,11 @@
 // Each invocation walks a strip of u_strip texels of a column and adds runs of one bin at once,
 // so that few atomics are needed.
 layout(local_size_x = 64, local_size_y = 1, local_size_z = 1) in;
-layout(r32f, binding = 0) uniform readonly imageCube density_field;
+layout(r32f, binding = 0) uniform readonly image2DArray density_field;
 #include "texel_weights.glsl"
 #include "../lib/cube_faces.glsl"
 #include "band_thresholds.glsl"
+#include "cube_tile.glsl"
 
 const int bins = 4096;
 uniform int u_stage;
@@ -57,17 +58,18 @@ void list_member(float density, uint units) {
 }
 
 void main() {
-  int size = imageSize(density_field).x;
+  int size = u_face_size;
   // Strips run down columns, so that neighbouring invocations read neighbouring texels.
-  int i = int(gl_GlobalInvocationID.x), face = int(gl_GlobalInvocationID.z);
-  int first = int(gl_GlobalInvocationID.y) * u_strip;
-  if (i >= size || first >= size) return;
-  int last = min(size, first + u_strip);
+  int i = int(gl_GlobalInvocationID.x), layer = int(gl_GlobalInvocationID.z);
+  int first = u_tile_rows.x + int(gl_GlobalInvocationID.y) * u_strip;
+  if (i >= size || first >= u_tile_rows.y) return;
+  int last = min(u_tile_rows.y, first + u_strip);
   uint low = 0xFFFFFFFFu, high = 0u;
   int run_bin = -1;
   uint run_units = 0u;
   for (int j = first; j < last; ++j) {
-    float density = imageLoad(density_field, ivec3(i, j, face)).x;
+    float density = imageLoad(density_field, ivec3(i, j, layer)).x;
+    ivec3 at = face_texel(ivec3(i, j, layer));
     if (u_stage == 0) {
       low = min(low, sortable_bits(density));
       high = max(high, sortable_bits(density));
@@ -77,7 +79,7 @@ void main() {
     int slot = -1;
     if (u_stage >= 6) {
       // The band of the texel's centre, as the CPU reference (coverage_threshold.cpp).
-      vec3 direction = texel_direction(face, i, j, size);
+      vec3 direction = texel_direction(at.z, at.x, at.y, size);
       int band = band_of(band_coordinate(direction, u_bands), u_bands);
       int coarse = min(band_bins - 1, int((density - u_density_min) * u_band_scale));
       if (u_stage == 6) {
@@ -99,8 +101,8 @@ void main() {
       }
       if (u_stage == 1) slot = b.x;
       if (u_stage == 3 && b.x == u_coarse) slot = b.y;
-      if (u_stage == 2 && b.x == u_coarse) list_member(density, texel_weight(i, j, size));
-      if (u_stage == 4 && b.x == u_coarse && b.y == u_fine) list_member(density, texel_weight(i, j, size));
+      if (u_stage == 2 && b.x == u_coarse) list_member(density, texel_weight(at.x, at.y, size));
+      if (u_stage == 4 && b.x == u_coarse && b.y == u_fine) list_member(density, texel_weight(at.x, at.y, size));
     }
     if (slot < 0) continue;
     // A run is flushed once it reaches 2^31 units; a texel is below 2^31, so the 32-bit run
@@ -110,7 +112,7 @@ void main() {
       run_bin = slot;
       run_units = 0u;
     }
-    run_units += texel_weight(i, j, size);
+    run_units += texel_weight(at.x, at.y, size);
   }
   if (u_stage == 0) {
     atomicMin(scalars[0], low);

@@ -4,8 +4,8 @@
 // the velocity the spline warp uses there instead (curl_mode spline: the diagnosis then judges
 // the flow that was integrated, and no procedural evaluation is made per texel).
 layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
-layout(rgba32f, binding = 0) uniform readonly imageCube identity_field;
-layout(rgba32f, binding = 1) uniform writeonly imageCube curl_field;
+layout(rgba32f, binding = 0) uniform readonly image2DArray identity_field;
+layout(rgba32f, binding = 1) uniform writeonly image2DArray curl_field;
 #ifndef CURL_FROM_SPLINE
 #define CURL_FROM_SPLINE 0
 #endif
@@ -40,8 +40,8 @@ uniform float u_time;  // flow units from u_motion's origin
 
 void main() {
   ivec3 texel = ivec3(gl_GlobalInvocationID);
-  int size = imageSize(curl_field).x;
-  if (texel.x >= size || texel.y >= size) return;
+  ivec3 extent = imageSize(curl_field);
+  if (texel.x >= extent.x || texel.y >= extent.y) return;
   vec3 n = imageLoad(identity_field, texel).xyz;
 #if CURL_FROM_SPLINE && CURL_MOVING
   float node = (u_time - u_first_node_time) / u_node_spacing;

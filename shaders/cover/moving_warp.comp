@@ -7,9 +7,9 @@
 // the splines of its grids at time nodes (binding 4, made by curl_spline.comp's moving variant),
 // mixed linearly between nodes; 0 evaluates the flow itself at every stage (curl mode procedural).
 layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
-layout(rgba32f, binding = 0) uniform readonly imageCube identity_field;
-layout(rgba32f, binding = 2) uniform writeonly imageCube warp_field;
-layout(rgba32f, binding = 3) uniform writeonly imageCube young_warp_field;
+layout(rgba32f, binding = 0) uniform readonly image2DArray identity_field;
+layout(rgba32f, binding = 2) uniform writeonly image2DArray warp_field;
+layout(rgba32f, binding = 3) uniform writeonly image2DArray young_warp_field;
 #ifndef MOVING_SPLINE
 #define MOVING_SPLINE 1
 #endif
@@ -48,8 +48,8 @@ uniform vec3 u_noise_offset;  // reduced modulo the lattice period by the host
 
 void main() {
   ivec3 texel = ivec3(gl_GlobalInvocationID);
-  int size = imageSize(warp_field).x;
-  if (texel.x >= size || texel.y >= size) return;
+  ivec3 extent = imageSize(warp_field);
+  if (texel.x >= extent.x || texel.y >= extent.y) return;
   vec3 x = imageLoad(identity_field, texel).xyz;
   // One trajectory: back to the younger layer's birth, then on to the older layer's.
   vec3 young = back_trajectory(x, u_time, u_young_age, u_young_steps, FLOW_SOURCE);

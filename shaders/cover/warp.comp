@@ -5,9 +5,8 @@
 // of sampling the curl cube map, WARP_SPLINE 1 the cubic B-spline of the curl grid (binding 4). The start points come from identity_field, whose size (that
 // of warp_field) may differ from the curl field's: the report warps sample points that way.
 layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
-layout(rgba32f, binding = 0) uniform readonly imageCube identity_field;
-layout(rgba32f, binding = 1) uniform readonly imageCube curl_field;
-layout(rgba32f, binding = 2) uniform writeonly imageCube warp_field;
+layout(rgba32f, binding = 0) uniform readonly image2DArray identity_field;
+layout(rgba32f, binding = 2) uniform writeonly image2DArray warp_field;
 
 #ifndef WARP_INTEGRATOR
 #define WARP_INTEGRATOR 0
@@ -21,6 +20,15 @@ layout(rgba32f, binding = 2) uniform writeonly imageCube warp_field;
 
 #include "../lib/curl_flow.glsl"
 #include "../lib/cube_sampling.glsl"
+
+// The curl map: the velocity source of curl mode sampled, which reads it anywhere on the sphere
+// (so it needs the whole cube map, never a tile); in the other modes only RK4's first velocity
+// at the texel itself (u_start_velocity), as the identity and warp maps a whole map or a tile.
+#if WARP_PROCEDURAL || WARP_SPLINE
+layout(rgba32f, binding = 1) uniform readonly image2DArray curl_field;
+#else
+layout(rgba32f, binding = 1) uniform readonly imageCube curl_field;
+#endif
 
 // The velocity source of warp_step.glsl's stepping rules (WarpField) and the uniform that holds
 // it (VELOCITY_SOURCE): the curl evaluated where the stepping rule asks, the curl spline, or
@@ -50,7 +58,7 @@ uniform float u_step_size;  // h (adaptive: the first step)
 // A long adaptive integration runs over several dispatches (see GlobalCover::dispatch_warp):
 // each texel keeps (t, h, attempts, done) here and continues where it stopped; identity_field
 // then holds the previous dispatch's points.
-layout(rgba32f, binding = 3) uniform imageCube adaptive_state;
+layout(rgba32f, binding = 3) uniform image2DArray adaptive_state;
 layout(std430, binding = 0) buffer Unfinished { uint unfinished; };
 uniform float u_flow_time;  // T
 uniform float u_max_step;
@@ -62,8 +70,8 @@ uniform int u_resume;       // 0: the first dispatch
 
 void main() {
   ivec3 texel = ivec3(gl_GlobalInvocationID);
-  int size = imageSize(warp_field).x;
-  if (texel.x >= size || texel.y >= size) return;
+  ivec3 extent = imageSize(warp_field);
+  if (texel.x >= extent.x || texel.y >= extent.y) return;
   vec3 start = imageLoad(identity_field, texel).xyz;
 #if WARP_INTEGRATOR == 4
   vec4 state = u_resume != 0 ? imageLoad(adaptive_state, texel) : vec4(0.0f, min(u_step_size, u_max_step), 0.0f, 0.0f);

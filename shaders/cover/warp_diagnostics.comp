@@ -9,10 +9,11 @@
 // Integer atomics commute and the folding order is fixed, so the figures are the same on
 // every run.
 layout(local_size_x = 64, local_size_y = 1, local_size_z = 1) in;
-layout(rgba32f, binding = 0) uniform readonly imageCube curl_field;
-layout(rgba32f, binding = 1) uniform readonly imageCube warp_field;
+layout(rgba32f, binding = 0) uniform readonly image2DArray curl_field;
+layout(rgba32f, binding = 1) uniform readonly image2DArray warp_field;
 #include "../lib/cube_faces.glsl"
 #include "texel_weights.glsl"
+#include "cube_tile.glsl"
 
 uniform int u_stage;
 uniform int u_strip;
@@ -30,9 +31,13 @@ layout(std430, binding = 3) buffer Totals { double totals[]; };
 const double none_low = 1.0e300lf;  // identity of min (no texel)
 double acc[figures];
 
-dvec3 direction(int face, int i, int j, int size) { return dvec3(texel_direction(face, i, j, size)); }
-dvec3 curl_at(int face, int i, int j) { return dvec3(imageLoad(curl_field, ivec3(i, j, face)).xyz); }
-dvec3 warp_at(int face, int i, int j) { return dvec3(imageLoad(warp_field, ivec3(i, j, face)).xyz); }
+// Texels by image position (row j of layer l); directions by face position (face_texel).
+dvec3 direction(int layer, int i, int j, int size) {
+  ivec3 at = face_texel(ivec3(i, j, layer));
+  return dvec3(texel_direction(at.z, at.x, at.y, size));
+}
+dvec3 curl_at(int layer, int i, int j) { return dvec3(imageLoad(curl_field, ivec3(i, j, layer)).xyz); }
+dvec3 warp_at(int layer, int i, int j) { return dvec3(imageLoad(warp_field, ivec3(i, j, layer)).xyz); }
 
 void clear_acc() {
   acc[0] = 0.0lf;
@@ -51,26 +56,28 @@ void fold(double rho, double jmin, double jmax, double err2, double weight, doub
   acc[5] += attempts;
 }
 
-void texel_figures(int face, int i, int j, int size, inout uint capped, inout uint off, inout uint most,
+// The neighbours are clamped to the image's rows: a tile's image holds a row of halo beyond each
+// edge that is not the face's, so this is the face's clamp (cube_tiles.hpp).
+void texel_figures(int layer, int i, int j, int size, int rows, inout uint capped, inout uint off, inout uint most,
                    inout uvec2 folded, inout uvec2 beyond) {
-  uint units = texel_weight(i, j, size);
-  vec4 w4 = imageLoad(warp_field, ivec3(i, j, face));
+  uint units = texel_weight(i, face_texel(ivec3(i, j, layer)).y, size);
+  vec4 w4 = imageLoad(warp_field, ivec3(i, j, layer));
   if (w4.w < 0.0f) capped += 1u;
   most = max(most, sortable_bits(abs(w4.w)));
   double length_w = sqrt(dot(dvec3(w4.xyz), dvec3(w4.xyz)));
   if (!(abs(length_w - 1.0lf) <= 1e-5lf)) off += 1u;
   double attempts = abs(double(w4.w));
-  int i0 = max(i - 1, 0), i1 = min(i + 1, size - 1), j0 = max(j - 1, 0), j1 = min(j + 1, size - 1);
+  int i0 = max(i - 1, 0), i1 = min(i + 1, size - 1), j0 = max(j - 1, 0), j1 = min(j + 1, rows - 1);
   if (i0 == i1 || j0 == j1) {
     fold(0.0lf, none_low, -none_low, 0.0lf, 0.0lf, attempts);
     return;
   }
-  dvec3 n = direction(face, i, j, size);
-  dvec3 e1 = direction(face, i1, j, size) - direction(face, i0, j, size);
-  dvec3 e2 = direction(face, i, j1, size) - direction(face, i, j0, size);
+  dvec3 n = direction(layer, i, j, size);
+  dvec3 e1 = direction(layer, i1, j, size) - direction(layer, i0, j, size);
+  dvec3 e2 = direction(layer, i, j1, size) - direction(layer, i, j0, size);
   // Spectral radius of the tangential velocity gradient G = D E^-1 (cover::flow_rates).
-  dvec3 d1 = curl_at(face, i1, j) - curl_at(face, i0, j);
-  dvec3 d2 = curl_at(face, i, j1) - curl_at(face, i, j0);
+  dvec3 d1 = curl_at(layer, i1, j) - curl_at(layer, i0, j);
+  dvec3 d2 = curl_at(layer, i, j1) - curl_at(layer, i, j0);
   dvec3 t1 = normalize(e1 - dot(e1, n) * n);
   dvec3 t2 = cross(n, t1);
   double e11 = dot(e1, t1), e12 = dot(e2, t1), e21 = dot(e1, t2), e22 = dot(e2, t2);
@@ -86,7 +93,7 @@ void texel_figures(int face, int i, int j, int size, inout uint capped, inout ui
   // Area Jacobian of the warp (cover::folding_report).
   double area = dot(cross(e1, e2), n);
   dvec3 w = normalize(dvec3(w4.xyz));
-  double warped_area = dot(cross(warp_at(face, i1, j) - warp_at(face, i0, j), warp_at(face, i, j1) - warp_at(face, i, j0)), w);
+  double warped_area = dot(cross(warp_at(layer, i1, j) - warp_at(layer, i0, j), warp_at(layer, i, j1) - warp_at(layer, i, j0)), w);
   double jacobian = warped_area / area;
   if (!(jacobian > 0.0lf)) folded = add_units(folded, units);
   double weight = double(units);
@@ -114,20 +121,20 @@ void main() {
     }
     return;
   }
-  int size = imageSize(warp_field).x;
-  int strips = (size + u_strip - 1) / u_strip;
+  int size = u_face_size, rows = imageSize(warp_field).y;
+  int strips = (u_tile_rows.y - u_tile_rows.x + u_strip - 1) / u_strip;
   // Strips run down columns, so that neighbouring invocations read neighbouring texels.
-  int i = int(gl_GlobalInvocationID.x), s = int(gl_GlobalInvocationID.y), face = int(gl_GlobalInvocationID.z);
+  int i = int(gl_GlobalInvocationID.x), s = int(gl_GlobalInvocationID.y), layer = int(gl_GlobalInvocationID.z);
   if (i >= size || s >= strips) return;
   uint capped = 0u, off = 0u, most = 0u;
   uvec2 folded = uvec2(0u), beyond = uvec2(0u);  // the strip's units, added once below
-  for (int j = s * u_strip; j < min(size, (s + 1) * u_strip); ++j)
-    texel_figures(face, i, j, size, capped, off, most, folded, beyond);
+  for (int j = u_tile_rows.x + s * u_strip; j < min(u_tile_rows.y, u_tile_rows.x + (s + 1) * u_strip); ++j)
+    texel_figures(layer, i, j, size, rows, capped, off, most, folded, beyond);
   if (folded != uvec2(0u)) ADD_WORDS64(counters, 0, folded);
   if (beyond != uvec2(0u)) ADD_WORDS64(counters, 1, beyond);
   if (capped > 0u) atomicAdd(counters[4], capped);
   if (off > 0u) atomicAdd(counters[5], off);
   atomicMax(counters[6], most);
-  int record = (face * strips + s) * size + i;
+  int record = (layer * strips + s) * size + i;
   for (int f = 0; f < figures; ++f) partials[figures * record + f] = acc[f];
 }

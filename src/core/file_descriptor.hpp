@@ -21,6 +21,11 @@ class FileDescriptor {
   FileDescriptor& operator=(const FileDescriptor&) = delete;
   int get() const { return fd_; }
   int release() { return std::exchange(fd_, -1); }
+  // Owns `fd` from now on, closing the one held before.
+  void reset(int fd) {
+    if (fd_ >= 0) ::close(fd_);
+    fd_ = fd;
+  }
   // Closes now, so that close's own error (a write that failed late) is seen.
   bool close() { return ::close(release()) == 0; }
 

@@ -1,5 +1,6 @@
 #include "cover/cover_limits.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -18,6 +19,40 @@ double host_bytes(int size) {
 }
 
 }  // namespace
+
+double default_memory_budget_bytes(const gpu::Context& context) {
+  if (context.is_software()) return core::host_memory_available_bytes() / 2.0;
+  const double gpu = gpu::gpu_memory_available_bytes();
+  const double host = core::host_memory_available_bytes() / 2.0;
+  return gpu > 0 && host > 0 ? std::min(gpu, host) : std::max(gpu, host);
+}
+
+double whole_cover_bytes(int size, Flow flow) { return cover_gpu_bytes(size, flow) + host_bytes(size); }
+
+double tile_bytes(int size, int rows, Flow flow) {
+  const double texels = double(size) * rows;
+  // identity, curl, warp (and the moving flow's younger warp), a scratch map and the adaptive
+  // state: RGBA32F; density and cover: R32F; the densities read back and copied: 2 x 4 bytes.
+  const double maps = texels * (16.0 * (flow == Flow::moving ? 6 : 5) + 4.0 * 2 + 8.0);
+  // The texel weight tables of the calibration and the diagnosis, ((N + 1) / 2)^2 / 2 words
+  // each, and the diagnosis's partial records (6 doubles a strip of a column).
+  const double half = (size + 1) / 2;
+  const double shared = 2.0 * half * (half + 1) / 2 * 4.0 + 48.0 * size * (rows / double(diagnosis_strip(size)) + 1);
+  return maps + shared;
+}
+
+int tile_count_for_budget(int size, Flow flow, double budget, const std::string& option) {
+  // The tile is the largest strip, N / S rows rounded up, and its halo.
+  for (long strips = 1; strips <= size; ++strips) {
+    const int rows = static_cast<int>((size + strips - 1) / strips) + 2;
+    if (tile_bytes(size, std::min(rows, size), flow) <= budget) return static_cast<int>(6 * strips);
+  }
+  std::ostringstream m;
+  m << option << ": " << std::floor(budget / 1048576.0) << " MiB is too little for tiles of one row of a cover of "
+    << size << " per face (" << std::ceil(tile_bytes(size, std::min(size, 3), flow) / 1048576.0)
+    << " MiB); allowed range from that up";
+  throw core::InputError(m.str());
+}
 
 void check_cover_fits(const gpu::Context& context, int size, const std::string& option, Flow flow) {
   const int max_cube = gpu::max_cube_map_size();

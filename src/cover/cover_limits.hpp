@@ -13,4 +13,17 @@ namespace nephele::cover {
 void check_cover_fits(const gpu::Context& context, int size, const std::string& option = "--size",
                       Flow flow = Flow::steady);
 
+// The memory a cover's passes may take when --memory-budget is 0: the GPU's free memory, or with
+// a software renderer (whose textures are host memory) half the host's available memory; 0
+// when unknown.
+double default_memory_budget_bytes(const gpu::Context& context);
+// Bytes the passes take for the whole cube map (GPU maps, and the host copies of the files).
+double whole_cover_bytes(int size, Flow flow);
+// Bytes a tile of `rows` rows (its halo included) takes: its maps, the read-back densities and
+// the tables every tile shares (texel weights, the curl grid).
+double tile_bytes(int size, int rows, Flow flow);
+// The fewest tiles (a multiple of 6) whose passes fit `budget` bytes. Throws core::InputError
+// naming --memory-budget when even tiles of one row do not fit.
+int tile_count_for_budget(int size, Flow flow, double budget, const std::string& option = "--memory-budget");
+
 }  // namespace nephele::cover

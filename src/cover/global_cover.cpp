@@ -55,18 +55,51 @@ CoverParameters resolved_curl(CoverParameters p) {
 
 CurlMode resolved_curl_mode(const CoverParameters& p) { return resolved_curl(p).curl_mode; }
 
-GlobalCover::GlobalCover(const CoverParameters& parameters)
+GlobalCover::GlobalCover(const CoverParameters& parameters, std::optional<CubeRegion> tile)
     : parameters_(resolved_curl(parameters)),
+      region_(tile ? *tile : CubeRegion::whole(parameters.size)),
       curl_program_("cover/curl.comp", {{"CURL_FROM_SPLINE", parameters_.curl_mode == CurlMode::spline ? "1" : "0"},
                                         {"CURL_MOVING", moving(parameters) ? "1" : "0"}}),
       warp_program_("cover/warp.comp", cover::warp_defines(parameters_.integrator, parameters_.curl_mode)),
       density_program_("cover/cover_density.comp", {{"MOVING_LAYERS", moving(parameters) ? "1" : "0"}}),
       clock_(moving(parameters) ? frame_clock(parameters, hours_since_epoch(parameters.time)) : FrameClock{}),
-      identity_field_(gpu::Texture::cube(parameters.size, GL_RGBA32F)),
-      curl_field_(gpu::Texture::cube(parameters.size, GL_RGBA32F)),
-      warp_field_(gpu::Texture::cube(parameters.size, GL_RGBA32F)),
-      density_field_(gpu::Texture::cube(parameters.size, GL_R32F)),
-      cover_field_(gpu::Texture::cube(parameters.size, GL_R32F)) {}
+      coverage_(parameters_) {
+  if (region_.face_size != parameters_.size)
+    throw std::invalid_argument("GlobalCover: a tile of another face size than the cover's");
+  // Curl mode sampled reads the curl map anywhere on the sphere: a tile does not hold it.
+  if (!region_.whole_cube() && parameters_.curl_mode == CurlMode::sampled)
+    throw std::invalid_argument("GlobalCover: curl mode sampled needs the whole cube map, not a tile");
+  identity_field_ = make_field(GL_RGBA32F);
+  curl_field_ = make_field(GL_RGBA32F);
+  warp_field_ = make_field(GL_RGBA32F);
+  density_field_ = make_field(GL_R32F);
+  cover_field_ = make_field(GL_R32F);
+}
+
+void GlobalCover::set_tile(const CubeRegion& tile) {
+  if (region_.whole_cube() || tile.whole_cube() || tile.face_size != region_.face_size)
+    throw std::invalid_argument("GlobalCover::set_tile: not a tile of this cover's tiling");
+  const bool same_shape = tile.rows == region_.rows;
+  region_ = tile;
+  diagnostics_.reset();
+  density_range_current_ = false;
+  if (same_shape) return;
+  identity_field_ = make_field(GL_RGBA32F);
+  curl_field_ = make_field(GL_RGBA32F);
+  warp_field_ = make_field(GL_RGBA32F);
+  density_field_ = make_field(GL_R32F);
+  cover_field_ = make_field(GL_R32F);
+  if (young_warp_field_.id()) young_warp_field_ = make_field(GL_RGBA32F);
+}
+
+gpu::Texture GlobalCover::make_field(GLenum internal_format) const {
+  if (region_.whole_cube()) return gpu::Texture::cube(region_.face_size, internal_format);
+  return gpu::Texture::layered(region_.face_size, region_.rows, region_.layers, internal_format);
+}
+
+void GlobalCover::dispatch_texels(const gpu::ComputeProgram& program) const {
+  program.dispatch_covering(region_.face_size, region_.rows, region_.layers);
+}
 
 template <class Work>
 void GlobalCover::timed(const std::string& pass, Work&& work) {
@@ -82,12 +115,13 @@ void GlobalCover::run() {
     run_curl();
     run_moving_warp();
   } else {
-    run_spline();
+    // The spline's grid is the same for every tile: made for the first only.
+    if (region_.whole_cube() || !spline_coefficients_.id()) run_spline();
     run_curl();
     run_warp(true);
   }
   run_density();
-  run_coverage();
+  if (region_.whole_cube()) run_coverage();
 }
 
 void GlobalCover::set_time(const std::string& iso_time) {
@@ -157,7 +191,7 @@ void GlobalCover::run_moving_warp() {
       moving_warp_program_ = std::make_unique<gpu::ComputeProgram>(
           "cover/moving_warp.comp",
           std::vector<std::pair<std::string, std::string>>{{"MOVING_SPLINE", spline ? "1" : "0"}});
-    if (!young_warp_field_.id()) young_warp_field_ = gpu::Texture::cube(parameters_.size, GL_RGBA32F);
+    if (!young_warp_field_.id()) young_warp_field_ = make_field(GL_RGBA32F);
     const gpu::ComputeProgram& program = *moving_warp_program_;
     namespace warp = shader_bindings::cover_moving_warp;
     glsl::set_uniform(program, "u_curl", curl_params(parameters_));
@@ -174,18 +208,19 @@ void GlobalCover::run_moving_warp() {
     program.set("u_young_age", clock.young_age);
     program.set("u_young_steps", clock.young_steps);
     program.set("u_older_steps", clock.older_steps);
-    identity_field_.bind_image(warp::identity_field, GL_READ_ONLY);
-    warp_field_.bind_image(warp::warp_field, GL_WRITE_ONLY);
-    young_warp_field_.bind_image(warp::young_warp_field, GL_WRITE_ONLY);
-    program.dispatch_covering(parameters_.size, parameters_.size, 6);
+    identity_field_.bind_image_layers(warp::identity_field, GL_READ_ONLY);
+    warp_field_.bind_image_layers(warp::warp_field, GL_WRITE_ONLY);
+    young_warp_field_.bind_image_layers(warp::young_warp_field, GL_WRITE_ONLY);
+    dispatch_texels(program);
     gpu::image_barrier();
   });
 }
 
 void GlobalCover::run_identity() {
   timed("identity", [&] {
-    identity_field_.bind_image(shader_bindings::cover_identity::identity_field, GL_WRITE_ONLY);
-    identity_program_.dispatch_covering(parameters_.size, parameters_.size, 6);
+    identity_field_.bind_image_layers(shader_bindings::cover_identity::identity_field, GL_WRITE_ONLY);
+    set_region(identity_program_, region_);
+    dispatch_texels(identity_program_);
     gpu::image_barrier();
   });
 }
@@ -243,9 +278,9 @@ void GlobalCover::run_curl() {
       glsl::set_uniform(curl_program_, "u_curl", curl_params(parameters_));
       curl_program_.set("u_noise_offset", potential_offset(parameters_));
     }
-    identity_field_.bind_image(shader_bindings::cover_curl::identity_field, GL_READ_ONLY);
-    curl_field_.bind_image(shader_bindings::cover_curl::curl_field, GL_WRITE_ONLY);
-    curl_program_.dispatch_covering(parameters_.size, parameters_.size, 6);
+    identity_field_.bind_image_layers(shader_bindings::cover_curl::identity_field, GL_READ_ONLY);
+    curl_field_.bind_image_layers(shader_bindings::cover_curl::curl_field, GL_WRITE_ONLY);
+    dispatch_texels(curl_program_);
     gpu::image_barrier();
   });
 }
@@ -272,25 +307,32 @@ void GlobalCover::dispatch_warp(const gpu::Texture& starts, const gpu::Texture& 
     glsl::set_uniform(warp_program_, "u_curl", curl_params(p));
     warp_program_.set("u_noise_offset", potential_offset(p));
   }
-  curl_field_.bind_image(shader_bindings::cover_warp::curl_field, GL_READ_ONLY);
+  // The warp reads the curl map as a cube map in curl mode sampled (anywhere on the sphere),
+  // else at its own texel (warp.comp).
+  if (p.curl_mode == CurlMode::sampled)
+    curl_field_.bind_image(shader_bindings::cover_warp::curl_field, GL_READ_ONLY);
+  else
+    curl_field_.bind_image_layers(shader_bindings::cover_warp::curl_field, GL_READ_ONLY);
   if (p.curl_mode == CurlMode::spline) {
     if (!spline_coefficients_.id()) run_spline();
     spline_coefficients_.bind_image(shader_bindings::cover_warp::curl_spline, GL_READ_ONLY);
   }
   // Long integrations run over several dispatches (cover::shader_loop_budget): each one
   // continues from the points of the last, alternating between `warped` and a scratch map.
+  // `warped` is a map of the cover's region, or (warp_points) a cube map of any size.
+  const bool own_region = &warped == &warp_field_;
   const int size = warped.width();
   const int per_dispatch = cover::steps_per_dispatch(p.integrator, p.curl_mode, p.potential.octaves);
   gpu::Texture scratch;
   auto target = [&](bool into_warped) -> const gpu::Texture& {
     if (into_warped) return warped;
-    if (!scratch.id()) scratch = gpu::Texture::cube(size, GL_RGBA32F);
+    if (!scratch.id()) scratch = own_region ? make_field(GL_RGBA32F) : gpu::Texture::cube(size, GL_RGBA32F);
     return scratch;
   };
   auto dispatch = [&](const gpu::Texture& from, const gpu::Texture& to) {
-    from.bind_image(shader_bindings::cover_warp::identity_field, GL_READ_ONLY);
-    to.bind_image(shader_bindings::cover_warp::warp_field, GL_WRITE_ONLY);
-    warp_program_.dispatch_covering(size, size, 6);
+    from.bind_image_layers(shader_bindings::cover_warp::identity_field, GL_READ_ONLY);
+    to.bind_image_layers(shader_bindings::cover_warp::warp_field, GL_WRITE_ONLY);
+    warp_program_.dispatch_covering(size, to.height(), to.layers());
     gpu::image_barrier();
   };
   if (!adaptive) {
@@ -312,8 +354,8 @@ void GlobalCover::dispatch_warp(const gpu::Texture& starts, const gpu::Texture& 
   }
   // Adaptive: each texel keeps its state between dispatches; the rounds end when no texel is
   // unfinished below its sub-step limit (a counter the shader increments).
-  const gpu::Texture state = gpu::Texture::cube(size, GL_RGBA32F);
-  state.bind_image(shader_bindings::cover_warp::adaptive_state, GL_READ_WRITE);
+  const gpu::Texture state = own_region ? make_field(GL_RGBA32F) : gpu::Texture::cube(size, GL_RGBA32F);
+  state.bind_image_layers(shader_bindings::cover_warp::adaptive_state, GL_READ_WRITE);
   GLuint counter = 0;
   glCreateBuffers(1, &counter);
   glNamedBufferStorage(counter, sizeof(GLuint), nullptr, GL_DYNAMIC_STORAGE_BIT | GL_MAP_READ_BIT);
@@ -336,8 +378,8 @@ void GlobalCover::dispatch_warp(const gpu::Texture& starts, const gpu::Texture& 
   }
   glDeleteBuffers(1, &counter);
   if (!in_warped) {
-    glCopyImageSubData(scratch.id(), GL_TEXTURE_CUBE_MAP, 0, 0, 0, 0, warped.id(), GL_TEXTURE_CUBE_MAP, 0, 0, 0, 0,
-                       size, size, 6);
+    glCopyImageSubData(scratch.id(), scratch.target(), 0, 0, 0, 0, warped.id(), warped.target(), 0, 0, 0, 0, size,
+                       warped.height(), warped.layers());
     gpu::image_barrier();
   }
 }
@@ -345,11 +387,23 @@ void GlobalCover::dispatch_warp(const gpu::Texture& starts, const gpu::Texture& 
 const cover::WarpDiagnostics& GlobalCover::diagnose() {
   timed("diagnose", [&] {
     if (!gpu_diagnosis_) gpu_diagnosis_ = std::make_unique<GpuDiagnosis>(parameters_.size);
-    diagnostics_ =
-        gpu_diagnosis_->run(curl_field_, warp_field_, parameters_.integrator, parameters_.step, moving(parameters_));
+    diagnostics_ = diagnostics_from_sums(
+        gpu_diagnosis_->sums(curl_field_, warp_field_, region_, parameters_.integrator, parameters_.step),
+        gpu_diagnosis_->units(), parameters_.integrator, parameters_.step, moving(parameters_));
   });
   return *diagnostics_;
 }
+
+DiagnosisSums GlobalCover::diagnosis_sums() {
+  DiagnosisSums sums;
+  timed("diagnose", [&] {
+    if (!gpu_diagnosis_) gpu_diagnosis_ = std::make_unique<GpuDiagnosis>(parameters_.size);
+    sums = gpu_diagnosis_->sums(curl_field_, warp_field_, region_, parameters_.integrator, parameters_.step);
+  });
+  return sums;
+}
+
+std::pair<float, float> GlobalCover::density_range() const { return coverage_.calibration().read_density_range(); }
 
 void GlobalCover::upload_surface_bias() {
   // Without a mask a 1 x 1 zero texture keeps the sampler complete (the weight is 0 then).
@@ -364,12 +418,6 @@ void GlobalCover::upload_surface_bias() {
   glTextureParameteri(surface_bias_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
   glTextureParameteri(surface_bias_.id(), GL_TEXTURE_WRAP_S, GL_REPEAT);
   glTextureParameteri(surface_bias_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-}
-
-void GlobalCover::dispatch_strips(const gpu::ComputeProgram& program) const {
-  const int strip = reduction_strip(parameters_.size);
-  program.set("u_strip", strip);
-  program.dispatch_covering(parameters_.size, (parameters_.size + strip - 1) / strip, 6);
 }
 
 void GlobalCover::run_density() {
@@ -387,59 +435,38 @@ void GlobalCover::run_density() {
       glsl::set_uniform(density_program_, "u_young_cover",
                         layer_density_params(parameters_, clock.young_layer, clock.layers_in_loop));
       density_program_.set("u_young_share", clock.young_share);
-      young_warp_field_.bind_image(density::young_warp_field, GL_READ_ONLY);
+      young_warp_field_.bind_image_layers(density::young_warp_field, GL_READ_ONLY);
     }
-    warp_field_.bind_image(density::warp_field, GL_READ_ONLY);
-    density_field_.bind_image(density::density_field, GL_WRITE_ONLY);
-    curl_field_.bind_image(density::curl_field, GL_READ_ONLY);
+    warp_field_.bind_image_layers(density::warp_field, GL_READ_ONLY);
+    density_field_.bind_image_layers(density::density_field, GL_WRITE_ONLY);
+    curl_field_.bind_image_layers(density::curl_field, GL_READ_ONLY);
     glBindTextureUnit(density::surface_bias, surface_bias_.id());
-    // The pass also reduces the density range for the calibration.
-    if (!gpu_calibration_) gpu_calibration_ = std::make_unique<GpuCalibration>(parameters_.size);
-    gpu_calibration_->bind_density_range();
-    dispatch_strips(density_program_);
+    // The pass also reduces the density range for the calibration; an invocation per strip of
+    // reduction_strip texels of a column of the region's owned rows.
+    coverage_.calibration().bind_density_range();
+    set_region(density_program_, region_);
+    const int strip = reduction_strip(parameters_.size);
+    density_program_.set("u_strip", strip);
+    density_program_.dispatch_covering(parameters_.size, (region_.owned_rows() + strip - 1) / strip, region_.layers);
     gpu::image_barrier();
   });
   density_range_current_ = true;
 }
 
 CoverageCalibration GlobalCover::run_coverage() {
-  const bool flat = parameters_.profile.kind == LatitudeProfile::Kind::flat;
-  std::optional<BandCalibration> bands;
+  if (!region_.whole_cube())
+    throw std::logic_error("GlobalCover::run_coverage: a tile's coverage needs every tile (cover/tiled_cover.hpp)");
   timed("calibrate", [&] {
-    if (!gpu_calibration_) gpu_calibration_ = std::make_unique<GpuCalibration>(parameters_.size);
-    if (flat) {
-      calibration_ = gpu_calibration_->run(density_field_, parameters_.coverage, density_range_current_);
-      return;
-    }
-    bands = gpu_calibration_->run_bands(density_field_,
-                                        band_targets(parameters_.profile, parameters_.month, parameters_.coverage),
-                                        density_range_current_);
-    calibration_ = CoverageCalibration{};
-    calibration_.density_min = bands->density_min;
-    calibration_.density_max = bands->density_max;
-    calibration_.max_texel_fraction = gpu_calibration_->weights().units().largest_fraction;
+    std::optional<std::pair<float, float>> range;
+    if (density_range_current_) range = density_range();
+    coverage_.calibrate(whole_cube(density_field_), range);
   });
   timed("coverage", [&] {
-    remap_program_.set("u_threshold", calibration_.threshold);
-    remap_program_.set("u_density_max", calibration_.density_max);
-    remap_program_.set("u_bands", flat ? 0 : profile_bands);
-    if (!flat) {
-      gpu_calibration_->bind_band_thresholds();
-      gpu_calibration_->bind_band_cloudy();
-    }
-    density_field_.bind_image(shader_bindings::cover_cover_remap::density_field, GL_READ_ONLY);
-    cover_field_.bind_image(shader_bindings::cover_cover_remap::cover_field, GL_WRITE_ONLY);
-    dispatch_strips(remap_program_);
-    gpu::image_barrier();
-    // The profile: what the smooth threshold achieves (it blends neighbouring bands, so each
-    // band's fraction differs a little from its target), measured by the remap as it wrote.
-    if (!flat) {
-      gpu_calibration_->read_band_cloudy(*bands);
-      calibration_.achieved_fraction = bands->achieved_fraction;
-    }
+    coverage_.begin_remap();
+    coverage_.remap(density_field_, cover_field_, region_);
+    coverage_.finish_remap();
   });
-  bands_ = std::move(bands);
-  return calibration_;
+  return coverage_.result();
 }
 
 }  // namespace nephele::cover

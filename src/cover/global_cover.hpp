@@ -9,6 +9,8 @@
 
 #include "cover/cover_parameters.hpp"
 #include "cover/coverage_threshold.hpp"
+#include "cover/coverage_remap.hpp"
+#include "cover/cube_tiles.hpp"
 #include "cover/gpu_reductions.hpp"
 #include "cover/latitude_profile.hpp"
 #include "cover/moving_flow.hpp"
@@ -26,9 +28,15 @@ struct PassTiming {
 
 class GlobalCover {
  public:
-  explicit GlobalCover(const CoverParameters& parameters);
+  // The whole cube map, or with `tile` only that region's rows (a tile of cube_tiles.hpp): its
+  // maps are then 2D arrays of the tile's rows, the same texels as the whole map's to the bit.
+  explicit GlobalCover(const CoverParameters& parameters, std::optional<CubeRegion> tile = std::nullopt);
 
-  // Runs every pass in order; the result stays on the GPU in cover_field().
+  // Moves a tiled cover to another tile of the same tiling (the programs stay compiled).
+  void set_tile(const CubeRegion& tile);
+
+  // Runs every pass in order; the result stays on the GPU in cover_field(). A tile stops after
+  // the density pass: its coverage needs every tile's densities (cover/tiled_cover.hpp).
   void run();
 
   // The passes one by one (tests run them separately).
@@ -53,17 +61,22 @@ class GlobalCover {
   // Sets the cover's time (--time; --flow moving), for the frames of a sequence.
   void set_time(const std::string& iso_time);
   void run_density();
-  CoverageCalibration run_coverage();  // calibrates and remaps on the GPU (scalars read back)
+  CoverageCalibration run_coverage();  // calibrates and remaps on the GPU (scalars read back); whole map only
+  // The smallest and largest density the last density pass wrote.
+  std::pair<float, float> density_range() const;
   // The warp pass's computation for other start points: `starts` and `warped` are RGBA32F cube
   // maps of one size (any, independent of the cover's), the curl field is this cover's.
   void warp_points(const gpu::Texture& starts, const gpu::Texture& warped);
   // Stiffness, folding and sub-steps of the warp (GPU reductions, scalars read back; after
   // run_warp). Kept for the sidecar.
   const cover::WarpDiagnostics& diagnose();
+  // The diagnosis's sums over the region's owned texels (after run_warp), for tiles to add up.
+  DiagnosisSums diagnosis_sums();
   const std::optional<cover::WarpDiagnostics>& diagnostics() const { return diagnostics_; }
 
   // The parameters as run: the curl mode and grid resolved (resolved_curl; never automatic).
   const CoverParameters& parameters() const { return parameters_; }
+  const CubeRegion& region() const { return region_; }
   const gpu::Texture& identity_field() const { return identity_field_; }
   const gpu::Texture& curl_field() const { return curl_field_; }
   // The spline's coefficients: a 2D array of 6 layers of (curl_size + 2 SPLINE_MARGIN)^2
@@ -73,10 +86,10 @@ class GlobalCover {
   const gpu::Texture& young_warp_field() const { return young_warp_field_; }  // --flow moving only
   const gpu::Texture& density_field() const { return density_field_; }
   const gpu::Texture& cover_field() const { return cover_field_; }
-  const CoverageCalibration& calibration() const { return calibration_; }
+  const CoverageCalibration& calibration() const { return coverage_.result(); }
   // The latitude profile's calibration (absent with --profile flat, whose threshold is
   // calibration().threshold).
-  const std::optional<BandCalibration>& band_calibration() const { return bands_; }
+  const std::optional<BandCalibration>& band_calibration() const { return coverage_.bands(); }
   const std::vector<PassTiming>& timings() const { return timings_; }
   // Called with a pass's name as it starts (for progress reports).
   void on_pass(std::function<void(const std::string&)> callback) { on_pass_ = std::move(callback); }
@@ -86,19 +99,21 @@ class GlobalCover {
   void timed(const std::string& pass, Work&& work);
   // start_velocity_in_curl: the curl map holds the velocity at `starts` (run_warp(true) only).
   void dispatch_warp(const gpu::Texture& starts, const gpu::Texture& warped, bool start_velocity_in_curl = false);
-  // The density and remap passes: an invocation per strip of reduction_strip texels of a column.
-  void dispatch_strips(const gpu::ComputeProgram& program) const;
+  // A map of the region: a cube map, or a 2D array of the tile's rows.
+  gpu::Texture make_field(GLenum internal_format) const;
+  // Dispatches a pass over every texel of the region's maps (owned and halo).
+  void dispatch_texels(const gpu::ComputeProgram& program) const;
   void upload_surface_bias();  // the land/ocean bias grid (surface_bias.hpp), once
 
   CoverParameters parameters_;
+  CubeRegion region_;
   std::function<void(const std::string&)> on_pass_;
   gpu::ComputeProgram identity_program_{"cover/identity.comp"};
   gpu::ComputeProgram curl_program_;  // the procedural curl, or the spline's velocity
   std::unique_ptr<gpu::ComputeProgram> spline_samples_program_, spline_prefilter_program_;
   gpu::ComputeProgram warp_program_;     // the integrator's and curl mode's variant
   gpu::ComputeProgram density_program_;  // with MOVING_LAYERS for --flow moving
-  gpu::ComputeProgram remap_program_{"cover/cover_remap.comp"};
-  FrameClock clock_;  // --flow moving: the frame's clock at parameters_.time (set_time renews it)
+  FrameClock clock_;                     // --flow moving: the frame's clock at parameters_.time (set_time renews it)
   std::unique_ptr<gpu::ComputeProgram> moving_warp_program_;        // --flow moving
   std::unique_ptr<gpu::ComputeProgram> moving_spline_programs_[2];  // its samples, their prefilter
   gpu::Texture flow_splines_;            // --flow moving, curl mode spline: 6 layers per time node
@@ -109,11 +124,9 @@ class GlobalCover {
   gpu::Texture young_warp_field_;  // --flow moving: the younger cloud layer's warp
   gpu::Texture spline_coefficients_;
   gpu::Texture surface_bias_;  // 720 x 360 R32F with --surface, else 1 x 1 zero
-  CoverageCalibration calibration_;
-  std::optional<BandCalibration> bands_;
-  std::unique_ptr<GpuCalibration> gpu_calibration_;  // made at the first density pass or calibration
-  bool density_range_current_ = false;               // the density pass reduced the range into gpu_calibration_
-  std::unique_ptr<GpuDiagnosis> gpu_diagnosis_;      // made at the first diagnosis
+  CoverageRemap coverage_;
+  bool density_range_current_ = false;           // the density pass reduced the range into coverage_'s buffers
+  std::unique_ptr<GpuDiagnosis> gpu_diagnosis_;  // made at the first diagnosis
   std::vector<PassTiming> timings_;
   std::optional<cover::WarpDiagnostics> diagnostics_;
 };

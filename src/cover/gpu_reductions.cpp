@@ -62,6 +62,12 @@ constexpr int bins = 4096;  // per level, as cover::calibrate_coverage
 
 }  // namespace
 
+DensityParts whole_cube(const gpu::Texture& density) {
+  return [&density](const std::function<void(const DensityPart&)>& use) {
+    use(DensityPart{density, CubeRegion::whole(density.width())});
+  };
+}
+
 int reduction_strip(int size) {
   const long texels = 6L * size * size;
   return static_cast<int>(std::max<long>(32, (texels + (1L << 20) - 1) >> 20));
@@ -145,18 +151,28 @@ void GpuCalibration::bind_density_range() const {
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, shader_bindings::cover_cover_density::density_range, density_range_);
 }
 
-std::pair<float, float> GpuCalibration::density_range(const gpu::Texture& density, bool from_density_pass) const {
-  if (!from_density_pass) {
-    // Stage 0 writes the same two words as the density pass.
-    bind_density_range();
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, shader_bindings::cover_coverage_histogram::scalars, density_range_);
-    weights_.bind();
-    density.bind_image(shader_bindings::cover_coverage_histogram::density_field, GL_READ_ONLY);
-    const int strip = reduction_strip(size_);
-    program_.set("u_strip", strip);
-    program_.set("u_stage", 0);
-    program_.dispatch_covering(size_, (size_ + strip - 1) / strip, 6);
-  }
+void GpuCalibration::dispatch_parts(const DensityParts& parts) const {
+  const int strip = reduction_strip(size_);
+  program_.set("u_strip", strip);
+  parts([&](const DensityPart& part) {
+    if (part.region.face_size != size_) throw std::invalid_argument("GpuCalibration: a density part of another size");
+    part.density.bind_image_layers(shader_bindings::cover_coverage_histogram::density_field, GL_READ_ONLY);
+    set_region(program_, part.region);
+    program_.dispatch_covering(size_, (part.region.owned_rows() + strip - 1) / strip, part.region.layers);
+  });
+}
+
+std::pair<float, float> GpuCalibration::density_range(const DensityParts& parts) const {
+  // Stage 0 writes the same two words as the density pass.
+  bind_density_range();
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, shader_bindings::cover_coverage_histogram::scalars, density_range_);
+  weights_.bind();
+  program_.set("u_stage", 0);
+  dispatch_parts(parts);
+  return read_density_range();
+}
+
+std::pair<float, float> GpuCalibration::read_density_range() const {
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
   GLuint words[2];
   glGetNamedBufferSubData(density_range_, 0, sizeof words, words);
@@ -182,7 +198,7 @@ void GpuCalibration::bind_band_thresholds() const {
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, shader_bindings::cover_band_thresholds::band_thresholds, band_thresholds_);
 }
 
-std::vector<std::uint64_t> GpuCalibration::band_histogram(const gpu::Texture& density, int stage, int bands,
+std::vector<std::uint64_t> GpuCalibration::band_histogram(const DensityParts& parts, int stage, int bands,
                                                           float density_min, float scale) const {
   const size_t slots = stage == 8 ? bands : static_cast<size_t>(bands) * band_bins;
   WordBuffer histogram(2 * slots);
@@ -190,14 +206,11 @@ std::vector<std::uint64_t> GpuCalibration::band_histogram(const gpu::Texture& de
   weights_.bind();
   bind_band_thresholds();
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, shader_bindings::cover_coverage_histogram::band_crossing, band_crossing_);
-  density.bind_image(shader_bindings::cover_coverage_histogram::density_field, GL_READ_ONLY);
-  const int strip = reduction_strip(size_);
-  program_.set("u_strip", strip);
   program_.set("u_stage", stage);
   program_.set("u_bands", bands);
   program_.set("u_density_min", density_min);
   program_.set("u_band_scale", scale);
-  program_.dispatch_covering(size_, (size_ + strip - 1) / strip, 6);
+  dispatch_parts(parts);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   return sums64(histogram.read(2 * slots));
 }
@@ -205,12 +218,19 @@ std::vector<std::uint64_t> GpuCalibration::band_histogram(const gpu::Texture& de
 BandCalibration GpuCalibration::run_bands(const gpu::Texture& density, const std::vector<double>& targets,
                                           bool range_from_density_pass) const {
   if (density.width() != size_) throw std::invalid_argument("GpuCalibration: the density map is not of its size");
+  std::optional<std::pair<float, float>> range;
+  if (range_from_density_pass) range = read_density_range();
+  return run_bands(whole_cube(density), targets, range);
+}
+
+BandCalibration GpuCalibration::run_bands(const DensityParts& parts, const std::vector<double>& targets,
+                                          std::optional<std::pair<float, float>> range) const {
   const int bands = static_cast<int>(targets.size());
   if (bands < 1 || bands > profile_bands) throw std::invalid_argument("GpuCalibration: bands out of range");
   const TexelWeightUnits& units = weights_.units();
   BandCalibration c;
   c.targets = targets;
-  std::tie(c.density_min, c.density_max) = density_range(density, range_from_density_pass);
+  std::tie(c.density_min, c.density_max) = range ? *range : density_range(parts);
   const float scale = band_bin_scale(c.density_min, c.density_max);
   const auto as_fractions = [&](const std::vector<std::uint64_t>& sums) {
     std::vector<double> out(sums.size());
@@ -218,14 +238,14 @@ BandCalibration GpuCalibration::run_bands(const gpu::Texture& density, const std
     return out;
   };
   const std::vector<BandCrossing> crossings = band_crossings(
-      as_fractions(band_histogram(density, 6, bands, c.density_min, scale)), targets, c.density_min, scale);
+      as_fractions(band_histogram(parts, 6, bands, c.density_min, scale)), targets, c.density_min, scale);
   std::vector<GLuint> crossing_words(2 * static_cast<size_t>(bands));
   for (int b = 0; b < bands; ++b) {
     crossing_words[2 * b] = static_cast<GLuint>(crossings[b].bin);
     std::memcpy(&crossing_words[2 * b + 1], &crossings[b].low, 4);
   }
   glNamedBufferSubData(band_crossing_, 0, static_cast<GLsizeiptr>(crossing_words.size() * 4), crossing_words.data());
-  const std::vector<double> fine = as_fractions(band_histogram(density, 7, bands, c.density_min, scale));
+  const std::vector<double> fine = as_fractions(band_histogram(parts, 7, bands, c.density_min, scale));
   c.thresholds = band_thresholds(crossings, fine, c.density_min, c.density_max, scale);
   glNamedBufferSubData(band_thresholds_, 0, static_cast<GLsizeiptr>(bands * 4), c.thresholds.data());
   c.band_weight.resize(static_cast<size_t>(bands));
@@ -236,7 +256,7 @@ BandCalibration GpuCalibration::run_bands(const gpu::Texture& density, const std
 void GpuCalibration::measure_bands(const gpu::Texture& density, BandCalibration& c) const {
   const int bands = static_cast<int>(c.thresholds.size());
   glNamedBufferSubData(band_thresholds_, 0, static_cast<GLsizeiptr>(bands * 4), c.thresholds.data());
-  set_achieved(band_histogram(density, 8, bands, c.density_min, 0.0f), c);
+  set_achieved(band_histogram(whole_cube(density), 8, bands, c.density_min, 0.0f), c);
 }
 
 void GpuCalibration::set_achieved(const std::vector<std::uint64_t>& cloudy, BandCalibration& c) const {
@@ -254,20 +274,24 @@ void GpuCalibration::set_achieved(const std::vector<std::uint64_t>& cloudy, Band
 CoverageCalibration GpuCalibration::run(const gpu::Texture& density, double target,
                                         bool range_from_density_pass) const {
   if (density.width() != size_) throw std::invalid_argument("GpuCalibration: the density map is not of its size");
+  std::optional<std::pair<float, float>> range;
+  if (range_from_density_pass) range = read_density_range();
+  return run(whole_cube(density), target, range);
+}
+
+CoverageCalibration GpuCalibration::run(const DensityParts& parts, double target,
+                                        std::optional<std::pair<float, float>> range) const {
   const TexelWeightUnits& units = weights_.units();
   CoverageCalibration result;
-  std::tie(result.density_min, result.density_max) = density_range(density, range_from_density_pass);
+  std::tie(result.density_min, result.density_max) = range ? *range : density_range(parts);
   WordBuffer scalars(8), histogram(2 * bins), members(2 * static_cast<size_t>(calibration_member_capacity));
   scalars.bind(shader_bindings::cover_coverage_histogram::scalars);
   histogram.bind(shader_bindings::cover_coverage_histogram::histogram);
   members.bind(shader_bindings::cover_coverage_histogram::members);
   weights_.bind();
-  density.bind_image(shader_bindings::cover_coverage_histogram::density_field, GL_READ_ONLY);
-  const int strip = reduction_strip(size_);
-  program_.set("u_strip", strip);
   auto dispatch = [&](int stage) {
     program_.set("u_stage", stage);
-    program_.dispatch_covering(size_, (size_ + strip - 1) / strip, 6);
+    dispatch_parts(parts);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   };
   result.max_texel_fraction = units.largest_fraction;
@@ -361,14 +385,59 @@ CoverageCalibration GpuCalibration::run(const gpu::Texture& density, double targ
 
 GpuDiagnosis::GpuDiagnosis(int size) : size_(size), weights_(size) {}
 
+void DiagnosisSums::add(const DiagnosisSums& o) {
+  folded_units += o.folded_units;
+  beyond_units += o.beyond_units;
+  capped_texels += o.capped_texels;
+  off_sphere_texels += o.off_sphere_texels;
+  max_attempts = std::max(max_attempts, o.max_attempts);
+  max_rate = std::max(max_rate, o.max_rate);
+  jacobian_min = std::min(jacobian_min, o.jacobian_min);
+  jacobian_max = std::max(jacobian_max, o.jacobian_max);
+  error_sum += o.error_sum;
+  weight_sum += o.weight_sum;
+  attempts_sum += o.attempts_sum;
+}
+
+WarpDiagnostics diagnostics_from_sums(const DiagnosisSums& s, const TexelWeightUnits& units, Integrator integrator,
+                                      double step, bool moving) {
+  const double limit = stability_limit(integrator);
+  WarpDiagnostics d;
+  d.adaptive = integrator == Integrator::adaptive;
+  d.stiffness.step = step;
+  d.stiffness.max_rate = s.max_rate;
+  d.stiffness.stiffness = step * s.max_rate;
+  d.stiffness.limit = limit;
+  d.stiffness.beyond_fraction = units.fraction(s.beyond_units);
+  const bool measured = s.weight_sum > 0.0;  // size 1: no neighbours, nothing measured
+  d.folding.folded_fraction = units.fraction(s.folded_units);
+  d.folding.jacobian_min = measured ? s.jacobian_min : 1.0;
+  d.folding.jacobian_max = measured ? s.jacobian_max : 1.0;
+  d.folding.area_error_rms = measured ? std::sqrt(s.error_sum / s.weight_sum) : 0.0;
+  const double texels = 6.0 * units.size * units.size;
+  d.substeps.mean_attempts = s.attempts_sum / texels;
+  d.substeps.max_attempts = s.max_attempts;
+  d.substeps.capped_texels = static_cast<long>(s.capped_texels);
+  add_warp_warnings(d, integrator, step, static_cast<long>(s.off_sphere_texels), moving);
+  return d;
+}
+
 WarpDiagnostics GpuDiagnosis::run(const gpu::Texture& curl, const gpu::Texture& warp, Integrator integrator,
                                   double step, bool moving) const {
   if (curl.width() != size_ || warp.width() != size_)
     throw std::invalid_argument("GpuDiagnosis: the maps are not of its size");
+  return diagnostics_from_sums(sums(curl, warp, CubeRegion::whole(size_), integrator, step), weights_.units(),
+                               integrator, step, moving);
+}
+
+DiagnosisSums GpuDiagnosis::sums(const gpu::Texture& curl, const gpu::Texture& warp, const CubeRegion& region,
+                                 Integrator integrator, double step) const {
+  if (region.face_size != size_ || warp.width() != size_ || warp.height() != region.rows)
+    throw std::invalid_argument("GpuDiagnosis: the maps are not of its region");
   constexpr int figures = 6, group = 64;
   const int strip = diagnosis_strip(size_);
-  const int strips = (size_ + strip - 1) / strip;
-  const int partial_count = strips * size_ * 6;
+  const int strips = (region.owned_rows() + strip - 1) / strip;
+  const int partial_count = strips * size_ * region.layers;
   // Stage 1 writes its 64 intermediate records after the partials.
   WordBuffer counters(8), partials(2 * static_cast<size_t>(figures) * (partial_count + group)), totals(2 * figures);
   namespace diagnostics = shader_bindings::cover_warp_diagnostics;
@@ -376,15 +445,16 @@ WarpDiagnostics GpuDiagnosis::run(const gpu::Texture& curl, const gpu::Texture& 
   partials.bind(diagnostics::partials);
   totals.bind(diagnostics::totals);
   weights_.bind();
-  curl.bind_image(diagnostics::curl_field, GL_READ_ONLY);
-  warp.bind_image(diagnostics::warp_field, GL_READ_ONLY);
+  curl.bind_image_layers(diagnostics::curl_field, GL_READ_ONLY);
+  warp.bind_image_layers(diagnostics::warp_field, GL_READ_ONLY);
+  set_region(program_, region);
   const double limit = stability_limit(integrator);
   glProgramUniform1d(program_.id(), glGetUniformLocation(program_.id(), "u_step"), step);
   glProgramUniform1d(program_.id(), glGetUniformLocation(program_.id(), "u_limit"), limit);
   program_.set("u_partials", partial_count);
   program_.set("u_strip", strip);
   program_.set("u_stage", 0);
-  program_.dispatch_covering(size_, strips, 6);
+  program_.dispatch_covering(size_, strips, region.layers);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   program_.set("u_stage", 1);
   program_.use();
@@ -395,29 +465,22 @@ WarpDiagnostics GpuDiagnosis::run(const gpu::Texture& curl, const gpu::Texture& 
   const std::vector<GLuint> total_words = totals.read(2 * figures);
   double total[figures];
   std::memcpy(total, total_words.data(), sizeof total);
-  const TexelWeightUnits& units = weights_.units();
   const auto units64 = [&](int slot) {
     return words[2 * slot] | (static_cast<std::uint64_t>(words[2 * slot + 1]) << 32);
   };
-
-  WarpDiagnostics d;
-  d.adaptive = integrator == Integrator::adaptive;
-  d.stiffness.step = step;
-  d.stiffness.max_rate = total[0];
-  d.stiffness.stiffness = step * total[0];
-  d.stiffness.limit = limit;
-  d.stiffness.beyond_fraction = units.fraction(units64(1));
-  const bool measured = total[4] > 0.0;  // size 1: no neighbours, nothing measured
-  d.folding.folded_fraction = units.fraction(units64(0));
-  d.folding.jacobian_min = measured ? total[1] : 1.0;
-  d.folding.jacobian_max = measured ? total[2] : 1.0;
-  d.folding.area_error_rms = measured ? std::sqrt(total[3] / total[4]) : 0.0;
-  const double texels = 6.0 * size_ * size_;
-  d.substeps.mean_attempts = total[5] / texels;
-  d.substeps.max_attempts = from_sortable(words[6]);
-  d.substeps.capped_texels = words[4];
-  add_warp_warnings(d, integrator, step, words[5], moving);
-  return d;
+  DiagnosisSums s;
+  s.folded_units = units64(0);
+  s.beyond_units = units64(1);
+  s.capped_texels = words[4];
+  s.off_sphere_texels = words[5];
+  s.max_attempts = from_sortable(words[6]);
+  s.max_rate = total[0];
+  s.jacobian_min = total[1];
+  s.jacobian_max = total[2];
+  s.error_sum = total[3];
+  s.weight_sum = total[4];
+  s.attempts_sum = total[5];
+  return s;
 }
 
 }  // namespace nephele::cover

@@ -4,10 +4,13 @@
 // The CPU versions (coverage_threshold.hpp, stability.hpp) are their reference; the tests
 // compare the two. docs/performance.md gives the algorithm and its bounds.
 #include <cstdint>
+#include <functional>
+#include <optional>
 #include <utility>
 #include <vector>
 
 #include "cover/coverage_threshold.hpp"
+#include "cover/cube_tiles.hpp"
 #include "cover/integrators.hpp"
 #include "cover/stability.hpp"
 #include "gpu/compute_program.hpp"
@@ -57,6 +60,18 @@ class GpuTexelWeights {
   unsigned buffer_ = 0;
 };
 
+// One part of a density map (R32F) that the reductions read: a whole cube map, or a tile of it
+// (cube_tiles.hpp) whose owned rows they count.
+struct DensityPart {
+  const gpu::Texture& density;
+  CubeRegion region;
+};
+// The parts of a density map, each handed to `use` in turn: a reduction binds and reads one part
+// at a time, so that tiles may come from files one by one. The sums are the same in any order.
+using DensityParts = std::function<void(const std::function<void(const DensityPart&)>& use)>;
+// A whole cube map as its one part.
+DensityParts whole_cube(const gpu::Texture& density);
+
 // Bytes of GPU memory the calibration and the diagnosis allocate for a cube face size: two
 // weight tables, the listed texels, the histograms and the diagnosis's partial records.
 double reduction_gpu_bytes(int size);
@@ -86,6 +101,10 @@ class GpuCalibration {
   // The density range: found by a pass of its own (stage 0), or, with range_from_density_pass,
   // the one cover_density.comp reduced into the buffer bind_density_range bound before it.
   CoverageCalibration run(const gpu::Texture& density, double target, bool range_from_density_pass = false) const;
+  // The same over the parts of a density map; `range`: its smallest and largest density where
+  // known (the density passes reduced them), else found by a pass over the parts.
+  CoverageCalibration run(const DensityParts& parts, double target,
+                          std::optional<std::pair<float, float>> range = std::nullopt) const;
   // cover::calibrate_band_coverage on the GPU (stages 0, 6, 7 of coverage_histogram.comp; one
   // target per band): read back are two words and two tables of bands x band_bins 64-bit sums.
   // The thresholds stay in a buffer for the remap pass (bind_band_thresholds).
@@ -95,6 +114,8 @@ class GpuCalibration {
   // thresholds, which move with the histograms continuously within one fine bin.
   BandCalibration run_bands(const gpu::Texture& density, const std::vector<double>& targets,
                             bool range_from_density_pass = false) const;
+  BandCalibration run_bands(const DensityParts& parts, const std::vector<double>& targets,
+                            std::optional<std::pair<float, float>> range = std::nullopt) const;
   // The achieved fractions at the smooth threshold of `calibration` (stage 8), in place.
   void measure_bands(const gpu::Texture& density, BandCalibration& calibration) const;
   // The same measured by the remap pass (cover_remap.comp) as it writes the cover: bind before
@@ -103,14 +124,18 @@ class GpuCalibration {
   void read_band_cloudy(BandCalibration& calibration) const;
   // Resets the density range to empty and binds it (binding 8 of cover_density.comp).
   void bind_density_range() const;
+  // The range the density passes reduced since bind_density_range (smallest, largest).
+  std::pair<float, float> read_density_range() const;
   // Binds the thresholds of the last run_bands (binding 6 of band_thresholds.glsl).
   void bind_band_thresholds() const;
   const GpuTexelWeights& weights() const { return weights_; }
 
  private:
-  std::pair<float, float> density_range(const gpu::Texture& density, bool from_density_pass) const;
+  std::pair<float, float> density_range(const DensityParts& parts) const;  // stage 0
+  // Dispatches the program's current stage over every part's owned rows.
+  void dispatch_parts(const DensityParts& parts) const;
   void set_achieved(const std::vector<std::uint64_t>& cloudy, BandCalibration& calibration) const;
-  std::vector<std::uint64_t> band_histogram(const gpu::Texture& density, int stage, int bands, float density_min,
+  std::vector<std::uint64_t> band_histogram(const DensityParts& parts, int stage, int bands, float density_min,
                                             float scale) const;
   int size_;
   GpuTexelWeights weights_;
@@ -125,12 +150,32 @@ class GpuCalibration {
 // come back. The same figures as the CPU up to the texel directions, which the GPU rounds
 // to float on its own (a few units in the last place; see tests/test_gpu_reductions.cpp for
 // the resulting tolerances), and fractions summed in texel weight units.
+// The diagnosis's sums over a part of the cube map (cube_tiles.hpp), which `add` combines over
+// the parts: the integer figures exactly, the extremes exactly, the double sums to rounding.
+struct DiagnosisSums {
+  std::uint64_t folded_units = 0, beyond_units = 0;  // texel weight units
+  std::uint64_t capped_texels = 0, off_sphere_texels = 0;
+  double max_attempts = 0.0;
+  double max_rate = 0.0;  // largest spectral radius of the velocity gradient
+  double jacobian_min = 1.0e300, jacobian_max = -1.0e300;
+  double error_sum = 0.0, weight_sum = 0.0;  // sums of w (J - 1)^2 and w over texels with neighbours
+  double attempts_sum = 0.0;
+  void add(const DiagnosisSums& other);
+};
+// The figures from the sums over every texel of a cube map of `size` texels per face.
+WarpDiagnostics diagnostics_from_sums(const DiagnosisSums& sums, const TexelWeightUnits& units, Integrator integrator,
+                                      double step, bool moving);
+
 class GpuDiagnosis {
  public:
   explicit GpuDiagnosis(int size);
   // `moving`: the moving flow's warp (its warnings do not offer the adaptive integrator).
   WarpDiagnostics run(const gpu::Texture& curl, const gpu::Texture& warp, Integrator integrator, double step,
                       bool moving = false) const;
+  // The sums over the owned rows of `region`, whose rows the maps hold (the halo included).
+  DiagnosisSums sums(const gpu::Texture& curl, const gpu::Texture& warp, const CubeRegion& region,
+                     Integrator integrator, double step) const;
+  const TexelWeightUnits& units() const { return weights_.units(); }
 
  private:
   int size_;

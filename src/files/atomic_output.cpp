@@ -551,6 +551,17 @@ OutputSet::~OutputSet() {
 }
 
 void OutputSet::write(const std::string& name, const void* data, std::size_t size) {
+  const fs::path path = reserve(name);
+  const std::string shown =
+      final_path(fs::path(name).lexically_normal().string()).string() + " (temporary " + path.string() + ")";
+  // O_EXCL and O_NOFOLLOW: nothing that appeared at the temporary name, a symbolic link
+  // least of all, is ever written through.
+  const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0666);
+  if (fd < 0) throw os_error("could not write " + shown, errno);
+  write_all(fd, data, size, shown);
+}
+
+fs::path OutputSet::reserve(const std::string& name) {
   const fs::path relative = fs::path(name).lexically_normal();
   const std::string first = relative.empty() ? std::string() : relative.begin()->string();
   if (done_) throw std::logic_error("output set " + directory_.string() + " is already committed");
@@ -568,12 +579,12 @@ void OutputSet::write(const std::string& name, const void* data, std::size_t siz
     fs::create_directories(temporary_ / relative.parent_path(), error);
     if (error) throw std::runtime_error("could not write " + shown + ": " + error.message());
   }
-  // O_EXCL and O_NOFOLLOW: nothing that appeared at the temporary name, a symbolic link
-  // least of all, is ever written through.
-  const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0666);
-  if (fd < 0) throw os_error("could not write " + shown, errno);
+  std::error_code probe;  // a name the system refuses fails at the open that follows, named
+  const fs::file_type type = fs::symlink_status(path, probe).type();
+  if (!probe && type != fs::file_type::not_found)
+    throw std::runtime_error("could not write " + shown + ": something is already at the temporary name");
   names_.push_back(relative.string());
-  write_all(fd, data, size, shown);
+  return path;
 }
 
 void OutputSet::commit() {
@@ -735,6 +746,27 @@ void check_output_directory(const fs::path& directory, const std::string& field)
   std::error_code error;
   if (fs::exists(directory, error) && !fs::is_directory(directory, error))
     throw core::InputError(field, directory.string(), "DIR", "exists and is not a directory");
+}
+
+void replace_file(const fs::path& path, const std::vector<FilePiece>& pieces) {
+  const fs::path directory = path.has_parent_path() ? path.parent_path() : fs::path(".");
+  std::string name = (directory / ("." + path.filename().string() + ".XXXXXX")).string();
+  const int fd = ::mkostemp(name.data(), O_CLOEXEC);
+  if (fd < 0) throw os_error("could not write " + path.string(), errno);
+  try {
+    Fd file(fd);
+    for (const FilePiece& piece : pieces)
+      if (!core::write_exactly(file.get(), piece.data, piece.size))
+        throw os_error("could not write " + path.string(), errno);
+    if (::fchmod(file.get(), 0666 & ~current_umask()) != 0) throw os_error("could not write " + path.string(), errno);
+    if (::fsync(file.get()) != 0) throw os_error("could not write " + path.string() + " (fsync)", errno);
+    if (!file.close()) throw os_error("could not write " + path.string() + " (close)", errno);
+    if (::rename(name.c_str(), path.c_str()) != 0) throw os_error("could not write " + path.string(), errno);
+  } catch (...) {
+    ::unlink(name.c_str());
+    throw;
+  }
+  sync_directory(directory);
 }
 
 void write_file(const fs::path& path, const void* data, std::size_t size) {

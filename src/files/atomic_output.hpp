@@ -43,6 +43,11 @@ class OutputSet {
     write(name, bytes.data(), bytes.size());
   }
 
+  // Reserves `name` (as write checks it) and returns the path in the temporary directory where the
+  // caller writes the file itself, whole and fsynced, before commit: images too large to hold
+  // in memory, written row by row (files::ImageRowWriter).
+  std::filesystem::path reserve(const std::string& name);
+
   // Makes the new set visible at once (Scope::directory) or file by file after its manifest
   // (Scope::files). Waits while another commit into the same place runs. Signals from outside
   // wait until it is done. Throws, leaving the old files as they were, when a directory stands
@@ -96,5 +101,16 @@ void write_file(const std::filesystem::path& path, const void* data, std::size_t
 inline void write_text_file(const std::filesystem::path& path, const std::string& text) {
   write_file(path, text.data(), text.size());
 }
+
+// Writes `path` whole or not at all, for many writers sharing a directory (the tile parts of
+// generate --tiles, written by the tasks of a job array, docs/scale.md): `pieces` go to a
+// temporary file beside it (.NAME.XXXXXX, unique on every machine), which is fsynced and
+// renamed over `path`. Readers see the old file or the new one. Throws std::runtime_error
+// naming the path on any failure, and leaves no temporary file.
+struct FilePiece {
+  const void* data;
+  std::size_t size;
+};
+void replace_file(const std::filesystem::path& path, const std::vector<FilePiece>& pieces);
 
 }  // namespace nephele::files

@@ -1,7 +1,14 @@
 #include "files/image_files.hpp"
 
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cstring>
 #include <memory>
 
+#include "core/file_descriptor.hpp"
 #include "core/input_file.hpp"
 
 #include <OpenImageIO/filesystem.h>
@@ -21,8 +28,13 @@ bool is_exr_compression(const std::string& name) {
   return false;
 }
 
-std::vector<unsigned char> encode_image(const ImageData& image, const ImageEncoding& encoding,
-                                        const std::string& what) {
+namespace {
+
+// The writer and the header of an image as `encoding` says; encode_image and ImageRowWriter share
+// them, so that both give the same bytes.
+std::pair<std::unique_ptr<OIIO::ImageOutput>, OIIO::ImageSpec> image_writer(int width, int height, int channels,
+                                                                            const ImageEncoding& encoding,
+                                                                            const std::string& what) {
   const bool png = encoding.format == ImageFormat::png;
   if (png ? (encoding.bits != 8 && encoding.bits != 16) : (encoding.bits != 32 && encoding.bits != 16))
     throw std::invalid_argument(what + ": " + std::to_string(encoding.bits) +
@@ -33,18 +45,119 @@ std::vector<unsigned char> encode_image(const ImageData& image, const ImageEncod
   auto out = OIIO::ImageOutput::create(format);
   if (!out) throw std::runtime_error("no image writer for " + what + ": " + OIIO::geterror());
   if (!out->supports("ioproxy"))
-    throw std::runtime_error("the " + std::string(format) + " writer cannot write to memory");
+    throw std::runtime_error("the " + std::string(format) + " writer cannot write through a proxy");
   const OIIO::TypeDesc type = !png ? (encoding.bits == 16 ? OIIO::TypeDesc::HALF : OIIO::TypeDesc::FLOAT)
                               : encoding.bits == 16 ? OIIO::TypeDesc::UINT16
                                                     : OIIO::TypeDesc::UINT8;
-  OIIO::ImageSpec spec(image.width, image.height, image.channels, type);
+  OIIO::ImageSpec spec(width, height, channels, type);
   if (!encoding.channel_names.empty()) spec.channelnames = encoding.channel_names;
   if (!png) spec.attribute("compression", encoding.compression);
   if (png) spec.attribute("png:compressionLevel", encoding.png_compression_level);
   if (png && encoding.png_filters != 0) spec.attribute("png:filter", encoding.png_filters);
   spec.attribute("Software", "nephele");
+  spec.attribute("DateTime", "");
   for (const auto& [name, value] : encoding.attributes) spec.attribute(name, value);
   if (encoding.unassociated_alpha) spec.attribute("oiio:UnassociatedAlpha", 1);
+  return {std::move(out), spec};
+}
+
+// Writes through a file descriptor, every write checked: a failed or short write is kept and
+// reported by failed() (OpenImageIO's own file proxy does not report a failed fwrite).
+class CheckedFileProxy : public OIIO::Filesystem::IOProxy {
+ public:
+  CheckedFileProxy(const std::string& path, int fd) : IOProxy(path, Write), fd_(fd) {}
+  const char* proxytype() const override { return "nephele-fd"; }
+  size_t write(const void* buf, size_t size) override {
+    const size_t n = pwrite(buf, size, m_pos);
+    m_pos += static_cast<int64_t>(n);
+    return n;
+  }
+  size_t pwrite(const void* buf, size_t size, int64_t offset) override {
+    const auto* p = static_cast<const char*>(buf);
+    size_t done = 0;
+    while (done < size) {
+      const ssize_t n = ::pwrite(fd_, p + done, size - done, static_cast<off_t>(offset) + static_cast<off_t>(done));
+      if (n <= 0) {
+        if (n < 0 && errno == EINTR) continue;
+        error_ = n < 0 ? errno : ENOSPC;
+        break;
+      }
+      done += static_cast<size_t>(n);
+    }
+    end_ = std::max<int64_t>(end_, offset + static_cast<int64_t>(done));
+    return done;
+  }
+  size_t size() const override { return static_cast<size_t>(end_); }
+  int error_number() const { return error_; }
+
+ private:
+  int fd_;
+  int error_ = 0;
+  int64_t end_ = 0;
+};
+
+}  // namespace
+
+struct ImageRowWriter::State {
+  std::filesystem::path path;
+  core::FileDescriptor fd;
+  std::unique_ptr<CheckedFileProxy> proxy;
+  std::unique_ptr<OIIO::ImageOutput> out;
+  int width = 0, height = 0, channels = 0, next_row = 0;
+  bool closed = false;
+};
+
+ImageRowWriter::ImageRowWriter(const std::filesystem::path& path, int width, int height, int channels,
+                               const ImageEncoding& encoding)
+    : state_(std::make_unique<State>()) {
+  State& s = *state_;
+  s.path = path;
+  s.width = width;
+  s.height = height;
+  s.channels = channels;
+  const std::string shown = path.string();
+  s.fd.reset(::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_NOFOLLOW | O_CLOEXEC, 0666));
+  if (s.fd.get() < 0) throw std::runtime_error("could not write " + shown + ": " + std::strerror(errno));
+  auto [out, spec] = image_writer(width, height, channels, encoding, shown);
+  s.out = std::move(out);
+  s.proxy = std::make_unique<CheckedFileProxy>(shown, s.fd.get());
+  if (!s.out->set_ioproxy(s.proxy.get()) || !s.out->open(shown, spec))
+    throw std::runtime_error("could not open " + shown + ": " + s.out->geterror());
+}
+
+ImageRowWriter::~ImageRowWriter() {
+  if (state_ && state_->out && !state_->closed) state_->out->close();
+}
+
+void ImageRowWriter::write_rows(int rows, const float* pixels) {
+  State& s = *state_;
+  if (rows < 0 || s.next_row + rows > s.height)
+    throw std::logic_error("ImageRowWriter: more rows than the image's " + std::to_string(s.height));
+  if (rows > 0 && !s.out->write_scanlines(s.next_row, s.next_row + rows, 0, OIIO::TypeDesc::FLOAT, pixels))
+    throw std::runtime_error("could not write " + s.path.string() + ": " + s.out->geterror());
+  if (s.proxy->error_number() != 0)
+    throw std::runtime_error("could not write " + s.path.string() + ": " + std::strerror(s.proxy->error_number()));
+  s.next_row += rows;
+}
+
+void ImageRowWriter::close() {
+  State& s = *state_;
+  if (s.next_row != s.height)
+    throw std::logic_error("ImageRowWriter: " + std::to_string(s.next_row) + " of " + std::to_string(s.height) +
+                           " rows written to " + s.path.string());
+  const bool closed = s.out->close();
+  s.closed = true;
+  if (!closed || s.out->has_error())
+    throw std::runtime_error("could not close " + s.path.string() + ": " + s.out->geterror());
+  if (s.proxy->error_number() != 0)
+    throw std::runtime_error("could not write " + s.path.string() + ": " + std::strerror(s.proxy->error_number()));
+  if (::fsync(s.fd.get()) != 0) throw std::runtime_error("could not write " + s.path.string() + " (fsync)");
+  if (!s.fd.close()) throw std::runtime_error("could not write " + s.path.string() + " (close)");
+}
+
+std::vector<unsigned char> encode_image(const ImageData& image, const ImageEncoding& encoding,
+                                        const std::string& what) {
+  auto [out, spec] = image_writer(image.width, image.height, image.channels, encoding, what);
   std::vector<unsigned char> bytes;
   OIIO::Filesystem::IOVecOutput memory(bytes);
   const auto fail = [&](const char* step) {

@@ -2,6 +2,7 @@
 // Image files through OpenImageIO. Coverage is data, not colour: nothing is sRGB-encoded.
 #include <cstdint>
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -60,6 +61,26 @@ bool is_exr_compression(const std::string& name);
 // std::runtime_error naming `what` (the file's name) when encoding fails. Safe to call from
 // several threads at once (each call has its own writer).
 std::vector<unsigned char> encode_image(const ImageData& image, const ImageEncoding& encoding, const std::string& what);
+
+// An image written row by row straight into its file, for images too large to hold whole (the
+// faces of a cover in tiles, nephele assemble): the same bytes as encode_image gives for the same
+// rows. Rows come in order, from row 0; close() checks that all came and fsyncs the file. Every
+// write is checked (a full disk fails, naming the path); an image not closed leaves its file
+// for the caller's output set to remove.
+class ImageRowWriter {
+ public:
+  ImageRowWriter(const std::filesystem::path& path, int width, int height, int channels, const ImageEncoding& encoding);
+  ~ImageRowWriter();
+  ImageRowWriter(const ImageRowWriter&) = delete;
+  ImageRowWriter& operator=(const ImageRowWriter&) = delete;
+  // `rows` rows of width x channels floats from the next row on.
+  void write_rows(int rows, const float* pixels);
+  void close();
+
+ private:
+  struct State;
+  std::unique_ptr<State> state_;
+};
 
 // An animated GIF of `frames` (one size, 1 or 3 channels in [0, 1]) shown at `frames_per_second`
 // and looping, in memory: the previews of frame sequences (generate --sequence).

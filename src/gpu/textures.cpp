@@ -62,6 +62,7 @@ Texture Texture::layered(int width, int height, int layers, GLenum internal_form
 }
 
 Texture::~Texture() {
+  if (layer_view_) glDeleteTextures(1, &layer_view_);
   if (id_) glDeleteTextures(1, &id_);
 }
 
@@ -69,8 +70,10 @@ Texture::Texture(Texture&& other) noexcept { *this = std::move(other); }
 
 Texture& Texture::operator=(Texture&& other) noexcept {
   if (this != &other) {
+    if (layer_view_) glDeleteTextures(1, &layer_view_);
     if (id_) glDeleteTextures(1, &id_);
     id_ = std::exchange(other.id_, 0);
+    layer_view_ = std::exchange(other.layer_view_, 0);
     target_ = other.target_;
     format_ = other.format_;
     width_ = other.width_;
@@ -91,6 +94,19 @@ int Texture::channels() const {
 
 void Texture::bind_image(GLuint unit, GLenum access) const {
   glBindImageTexture(unit, id_, 0, layers_ > 1 ? GL_TRUE : GL_FALSE, 0, access, format_);
+}
+
+void Texture::bind_image_layers(GLuint unit, GLenum access) const {
+  GLuint id = id_;
+  if (target_ == GL_TEXTURE_CUBE_MAP) {
+    if (!layer_view_) {
+      // A view needs a name that was never bound: glGenTextures, not glCreateTextures.
+      glGenTextures(1, &layer_view_);
+      glTextureView(layer_view_, GL_TEXTURE_2D_ARRAY, id_, format_, 0, 1, 0, 6);
+    }
+    id = layer_view_;
+  }
+  glBindImageTexture(unit, id, 0, GL_TRUE, 0, access, format_);
 }
 
 std::vector<float> Texture::read() const {

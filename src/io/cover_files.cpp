@@ -81,9 +81,7 @@ std::vector<std::string> cover_file_names(const CoverFileOptions& options) {
   return names;
 }
 
-json::Value cover_sidecar(const cover::GlobalCover& cover, const gpu::ContextInfo& context,
-                          const std::vector<cover::PassTiming>& export_timings, const CoverFileOptions& options) {
-  const cover::CoverParameters& p = cover.parameters();
+json::Value cover_parameters_json(const cover::CoverParameters& p) {
   // Keys and nesting come from the parameter table (sidecar paths such as "potential.gain").
   json::Value parameters;
   const bool adaptive = p.integrator == cover::Integrator::adaptive;
@@ -106,13 +104,34 @@ json::Value cover_sidecar(const cover::GlobalCover& cover, const gpu::ContextInf
       if (p.flow == cover::Flow::moving) parameters.set(std::string(params::cover::time.key), p.time);
     }
   });
+  return parameters;
+}
 
-  const cover::CoverageCalibration& c = cover.calibration();
+CoverSummary cover_summary(const cover::GlobalCover& cover) {
+  CoverSummary s;
+  s.parameters = cover.parameters();
+  s.calibration = cover.calibration();
+  s.bands = cover.band_calibration();
+  s.diagnostics = cover.diagnostics();
+  s.timings = cover.timings();
+  return s;
+}
+
+json::Value cover_sidecar(const cover::GlobalCover& cover, const gpu::ContextInfo& context,
+                          const std::vector<cover::PassTiming>& export_timings, const CoverFileOptions& options) {
+  return cover_sidecar(cover_summary(cover), context, export_timings, options);
+}
+
+json::Value cover_sidecar(const CoverSummary& cover, const gpu::ContextInfo& context,
+                          const std::vector<cover::PassTiming>& export_timings, const CoverFileOptions& options) {
+  const json::Value parameters = cover_parameters_json(cover.parameters);
+
+  const cover::CoverageCalibration& c = cover.calibration;
   json::Value result;
   result.set("cloud_fraction", c.achieved_fraction);
   result.set("cloud_fraction_tolerance", c.max_texel_fraction);
   // One threshold (--profile flat), or the latitude profile's bands (docs/climate.md).
-  if (const auto& bands = cover.band_calibration()) {
+  if (const auto& bands = cover.bands) {
     json::Value profile;
     const double band_deg = 180.0 / static_cast<double>(bands->targets.size());
     profile.set("bands", static_cast<double>(bands->targets.size()));
@@ -135,7 +154,7 @@ json::Value cover_sidecar(const cover::GlobalCover& cover, const gpu::ContextInf
   result.set("density_max", c.density_max);
 
   // Stability of the warp (docs/numerics.md): present when the cover was diagnosed.
-  if (const auto& d = cover.diagnostics()) {
+  if (const auto& d = cover.diagnostics) {
     json::Value stiffness;
     stiffness.set("max_rate", d->stiffness.max_rate);
     stiffness.set("stiffness_number", d->stiffness.stiffness);
@@ -163,7 +182,7 @@ json::Value cover_sidecar(const cover::GlobalCover& cover, const gpu::ContextInf
   }
 
   json::Value timings;
-  for (const auto& t : cover.timings()) timings.set(t.pass, t.milliseconds);
+  for (const auto& t : cover.timings) timings.set(t.pass, t.milliseconds);
   for (const auto& t : export_timings) timings.set(t.pass, t.milliseconds);
 
   json::Value device;
@@ -183,6 +202,7 @@ json::Value cover_sidecar(const cover::GlobalCover& cover, const gpu::ContextInf
   // Recorded when they differ from the defaults, so that default sidecars stay as they were.
   if (options.half) files.set("exr_precision", "half");
   if (options.compression != "zip") files.set("exr_compression", options.compression);
+  if (cover.tiles > 0) files.set("computed_in_tiles", cover.tiles);
 
   json::Value root;
   root.set("program", "nephele");
@@ -196,17 +216,39 @@ json::Value cover_sidecar(const cover::GlobalCover& cover, const gpu::ContextInf
   return root;
 }
 
-CoverExport write_cover_files(files::OutputSet& outputs, const cover::GlobalCover& cover,
-                              const gpu::ContextInfo& context, const CoverFileOptions& options) {
-  CoverExport result;
-  using clock = std::chrono::steady_clock;
-  auto timed = [&](const std::string& name, auto&& work) {
-    const auto start = clock::now();
-    work();
-    const std::chrono::duration<double, std::milli> elapsed = clock::now() - start;
-    result.timings.push_back({name, elapsed.count()});
-  };
-  const int size = cover.parameters().size;
+std::vector<float> reduced_faces(int size, const std::vector<float>& texels, int reduced) {
+  if (reduced >= size) return texels;
+  // Each reduced texel is the mean of the texels whose centres fall in it (k x k blocks when
+  // the sizes divide, else one or two texels more or less along an edge).
+  std::vector<double> sum(6 * static_cast<size_t>(reduced) * reduced, 0.0);
+  std::vector<int> count(sum.size(), 0);
+  for (int face = 0; face < 6; ++face)
+    for (int j = 0; j < size; ++j) {
+      const int rj = static_cast<int>(static_cast<long>(j) * reduced / size);
+      for (int i = 0; i < size; ++i) {
+        const int ri = static_cast<int>(static_cast<long>(i) * reduced / size);
+        const size_t at = (static_cast<size_t>(face) * reduced + rj) * reduced + ri;
+        sum[at] += texels[(static_cast<size_t>(face) * size + j) * size + i];
+        ++count[at];
+      }
+    }
+  std::vector<float> out(sum.size());
+  for (size_t k = 0; k < out.size(); ++k) out[k] = static_cast<float>(sum[k] / count[k]);
+  return out;
+}
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double milliseconds_since(Clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+}  // namespace
+
+void write_cover_images(files::OutputSet& outputs, const CoverImages& images, const CoverFileOptions& options,
+                        CoverExport& result) {
   const files::ImageEncoding exr = files::exr_encoding({"Y"}, options.half ? 16 : 32, options.compression);
   // Each image is encoded in memory on its own thread; the files are written afterwards in
   // order, through the output set (which is not shared between threads).
@@ -219,50 +261,81 @@ CoverExport write_cover_files(files::OutputSet& outputs, const cover::GlobalCove
     jobs.push_back({name, std::async(std::launch::async,
                                      [name, image, encoding] { return files::encode_image(*image, encoding, name); })});
   };
-  const auto encode_start = clock::now();
-  if (options.faces) {
-    std::vector<float> texels;
-    timed("read_faces", [&] { texels = cover.cover_field().read(); });
+  const auto encode_start = Clock::now();
+  if (images.faces) {
+    const int size = images.face_size;
     const size_t per_face = static_cast<size_t>(size) * size;
     for (int face = 0; face < 6; ++face) {
       auto image = std::make_shared<core::ImageData>(core::ImageData{
-          size, size, 1, std::vector<float>(texels.begin() + face * per_face, texels.begin() + (face + 1) * per_face)});
+          size, size, 1,
+          std::vector<float>(images.faces->begin() + static_cast<std::ptrdiff_t>(face * per_face),
+                             images.faces->begin() + static_cast<std::ptrdiff_t>((face + 1) * per_face))});
       encode(std::string("cover_") + face_suffixes[face] + ".exr", image, exr);
     }
   }
-  if (options.equirect || options.preview) {
-    // Resampled once on the GPU while the faces are encoded; both files come from this map.
-    auto equirect = std::make_shared<core::ImageData>(core::ImageData{4 * size, 2 * size, 1, {}});
-    timed("equirect", [&] {
-      equirect->pixels = cover::equirect_from_cube(cover.cover_field(), equirect->width, equirect->height);
-    });
-    if (options.equirect) encode("cover_equirect.exr", equirect, exr);
-    if (options.preview) {
-      // zlib level 1: the 4096 x 2048 preview encodes in about half the time of level 6 (the
-      // longest single encoding of generate) for an 8 % larger file; the pixels are the same.
-      // The average filter on every row instead of libpng's trial of all five: 141 instead of
-      // 200 ms at 1024 per face, and a file 0.6 % smaller.
-      files::ImageEncoding preview = files::png_encoding(8);
-      preview.png_compression_level = 1;
-      preview.png_filters = files::png_filter_average;
-      encode("cover_equirect.png", equirect, preview);
-    }
+  if (images.equirect) encode("cover_equirect.exr", images.equirect, exr);
+  if (images.preview) {
+    // zlib level 1: the 4096 x 2048 preview encodes in about half the time of level 6 (the
+    // longest single encoding of generate) for an 8 % larger file; the pixels are the same.
+    // The average filter on every row instead of libpng's trial of all five: 141 instead of
+    // 200 ms at 1024 per face, and a file 0.6 % smaller.
+    files::ImageEncoding preview = files::png_encoding(8);
+    preview.png_compression_level = 1;
+    preview.png_filters = files::png_filter_average;
+    encode("cover_equirect.png", images.preview, preview);
   }
   // Each file is written as soon as it is encoded, in order, while the later images are still
   // encoding: the writes (and their fsync waits) overlap the encoding instead of following it.
   double write_ms = 0;
   for (Job& job : jobs) {
     const std::vector<unsigned char> bytes = job.bytes.get();
-    const auto write_start = clock::now();
+    const auto write_start = Clock::now();
     outputs.write(job.name, bytes);
-    write_ms += std::chrono::duration<double, std::milli>(clock::now() - write_start).count();
+    write_ms += milliseconds_since(write_start);
     result.bytes += static_cast<double>(bytes.size());
   }
-  result.timings.push_back({"encode", std::chrono::duration<double, std::milli>(clock::now() - encode_start).count()});
+  result.timings.push_back({"encode", milliseconds_since(encode_start)});
   result.timings.push_back({"write_files", write_ms});
+}
+
+CoverExport write_cover_files(files::OutputSet& outputs, const cover::GlobalCover& cover,
+                              const gpu::ContextInfo& context, const CoverFileOptions& options) {
+  CoverExport result;
+  auto timed = [&](const std::string& name, auto&& work) {
+    const auto start = Clock::now();
+    work();
+    result.timings.push_back({name, milliseconds_since(start)});
+  };
+  const int size = cover.parameters().size;
+  CoverImages images;
+  images.face_size = size;
+  const bool reduce_preview = options.preview && size > preview_face_limit;
+  if (options.faces || reduce_preview) {
+    auto texels = std::make_shared<std::vector<float>>();
+    timed("read_faces", [&] { *texels = cover.cover_field().read(); });
+    if (options.faces) images.faces = texels;
+    if (reduce_preview)
+      timed("preview", [&] { images.preview = std::make_shared<core::ImageData>(preview_image(size, *texels)); });
+  }
+  if (options.equirect || (options.preview && !reduce_preview)) {
+    // Resampled once on the GPU; both files come from this map (the preview up to its limit).
+    auto equirect = std::make_shared<core::ImageData>(core::ImageData{4 * size, 2 * size, 1, {}});
+    timed("equirect", [&] {
+      equirect->pixels = cover::equirect_from_cube(cover.cover_field(), equirect->width, equirect->height);
+    });
+    if (options.equirect) images.equirect = equirect;
+    if (options.preview && !reduce_preview) images.preview = equirect;
+  }
+  write_cover_images(outputs, images, options, result);
   outputs.write("cover.json", json::write(cover_sidecar(cover, context, result.timings, options)));
   outputs.commit();
   return result;
+}
+
+core::ImageData preview_image(int size, const std::vector<float>& texels) {
+  const int face = std::min(size, preview_face_limit);
+  return core::ImageData{4 * face, 2 * face, 1,
+                         cover::equirect_from_faces(face, reduced_faces(size, texels, face), 4 * face, 2 * face)};
 }
 
 }  // namespace nephele::io

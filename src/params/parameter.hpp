@@ -30,6 +30,7 @@ enum Use : unsigned {
   viewer = 1u << 13,        // nephele view: its options and its window's panels (src/apps/viewer)
   bench_view = 1u << 14,    // nephele bench view
   stats = 1u << 15,         // nephele stats
+  assemble = 1u << 16,      // nephele assemble
 };
 
 struct Parameter {

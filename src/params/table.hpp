@@ -389,19 +389,36 @@ inline constexpr Parameter sequence =
             generate);
 inline constexpr Parameter interval =
     real("interval", 3, 0.01, 8760, "hours", "--sequence: time between frames", generate);
-inline constexpr Parameter cover_files =
-    text("files", "faces,equirect,png", "faces,equirect,png",
-         "comma-separated images to write (cover.json always); what none asks for is not computed", generate);
+inline constexpr Parameter cover_files = text(
+    "files", "faces,equirect,png", "faces,equirect,png",
+    "comma-separated images to write (cover.json always); what none asks for is not computed", generate | assemble);
+inline constexpr Parameter tiles =
+    integer("tiles", 0, 0, 6.0 * 16384, "tiles",
+            "compute the cube map in this many tiles, strips of rows of each face (a multiple of 6), one after "
+            "another; 0: as few as --memory-budget allows (docs/scale.md)",
+            generate);
+inline constexpr Parameter tile =
+    text("tile", "", "A or A-B",
+         "with --tiles: compute only tiles A to B (from 0) into --out as tile parts for nephele assemble, skipping "
+         "parts already complete there; for the tasks of a job array (docs/scale.md)",
+         generate);
+inline constexpr Parameter memory_budget =
+    integer("memory_budget", 0, 0, 16777216, "MiB",
+            "memory the cover's passes may take, GPU and host; larger covers are computed in tiles (0: the GPU's free "
+            "memory, with a software renderer half the host's available memory)",
+            generate);
+inline constexpr Parameter assemble_out =
+    text("out", "cubemaps", "DIR", "output directory of the assembled cover (created if missing)", assemble);
 inline constexpr Parameter cover_exports = text(
     "export", "", "NAME,NAME,...",
     "export presets (docs/export.md) run on the new cover, each into DIR/export/NAME of the same output set", generate);
 inline constexpr Parameter precision =
     text("precision", "float", "float|half",
-         "EXR samples: 32-bit float, or 16-bit half (11 significant bits, half the bytes)", generate);
+         "EXR samples: 32-bit float, or 16-bit half (11 significant bits, half the bytes)", generate | assemble);
 inline constexpr Parameter exr_compression =
     text("exr_compression", "zip", "none|rle|zips|zip|piz|pxr24|b44|dwaa",
          "EXR compression: zip (OpenEXR's default), none, rle, zips, piz lose nothing; pxr24, b44, dwaa round values",
-         generate);
+         generate | assemble);
 inline constexpr Parameter export_preset =
     text("preset", "",
          "equirect|gl-faces|ktx2|dds|celestia|exr-cube|flightgear|eve|unity|godot|unreal|blender|atlas|openvdb",
@@ -421,12 +438,12 @@ inline constexpr Parameter stats_out =
 inline constexpr Parameter report_out = text("out", "report", "DIR", "output directory (created if missing)", report);
 inline constexpr Parameter quiet =
     flag("quiet", "no progress reports on stderr (they appear for work of more than a second)",
-         generate | report | render | noise | model);
+         generate | report | render | noise | model | assemble);
 inline constexpr Parameter no_cache =
     flag("no_cache", "neither read nor write the noise volume cache ($XDG_CACHE_HOME/nephele, else ~/.cache/nephele)",
          render | viewer);
-inline constexpr Parameter verbose =
-    flag("verbose", "print the renderer, the passes that ran and their times", generate | render | noise | model);
+inline constexpr Parameter verbose = flag("verbose", "print the renderer, the passes that ran and their times",
+                                          generate | render | noise | model | assemble);
 inline constexpr Parameter bench_cover_sizes =
     text("sizes", "256,512,1024", "N,N,... (1 to 16384)", "comma-separated cube face sizes", bench_cover);
 inline constexpr Parameter bench_cover_repeat =

@@ -1,5 +1,6 @@
 // nephele's command line: dispatch to the command table and the exit code of each error kind.
 #include "apps/cli/command_line.hpp"
+#include "core/input_file.hpp"
 
 #include <csignal>
 #include <iostream>
@@ -44,6 +45,10 @@ int nephele::cli::run_command_line(const std::vector<std::string>& arguments) {
     for (const Command& c : commands()) names += (names.empty() ? "" : ", ") + std::string(c.name);
     throw UsageError("unknown command '" + command + "' (allowed: " + names + ")");
   } catch (const nephele::core::InputError& e) {
+    std::cerr << "nephele: " << shown(e) << "\n";
+    return exit_usage;
+  } catch (const nephele::core::InputFileError& e) {
+    // A file the user gave is bad (its message names the file and the field).
     std::cerr << "nephele: " << shown(e) << "\n";
     return exit_usage;
   } catch (const nephele::gpu::ContextError& e) {

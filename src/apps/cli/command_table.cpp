@@ -13,6 +13,7 @@ const std::vector<Command>& commands() {
     for (const io::ExportPreset& p : io::export_presets()) presets += (presets.empty() ? "" : ", ") + p.name;
     return std::vector<Command>{
         {"generate", "make a global cloud cover (cube map faces, equirect map, cover.json)", run_generate},
+        {"assemble", "the files of a cover computed in tiles on many machines (generate --tiles --tile)", run_assemble},
         {"render", "cloud layers seen from the ground (Gurten, Bantiger, anywhere) or the planet from orbit",
          run_render},
         {"noise", "tileable 3D noise textures (Worley, Perlin, Perlin-Worley, fBm)", run_noise},

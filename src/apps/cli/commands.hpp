@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "core/error.hpp"
+#include "cover/cover_parameters.hpp"
 
 namespace nephele::cli {
 
@@ -13,6 +14,9 @@ constexpr int exit_usage = core::exit_bad_input;
 constexpr int exit_no_context = core::exit_environment;
 
 int run_generate(const std::vector<std::string>& arguments);
+int run_assemble(const std::vector<std::string>& arguments);
+// The cover's parameters from generate's arguments (a tile part records them; assemble reads).
+cover::CoverParameters parse_generate_parameters(const std::vector<std::string>& arguments);
 int run_bench(const std::vector<std::string>& arguments);
 int run_noise(const std::vector<std::string>& arguments);
 int run_report(const std::vector<std::string>& arguments);

@@ -5,6 +5,8 @@
 #include <filesystem>
 #include <sstream>
 #include <iostream>
+#include <memory>
+#include <optional>
 
 #include "apps/cli/commands.hpp"
 #include "core/json.hpp"
@@ -17,7 +19,10 @@
 #include "cover/equirect.hpp"
 #include "render/render_limits.hpp"
 #include "files/atomic_output.hpp"
+#include "io/cover_assembly.hpp"
 #include "io/cover_files.hpp"
+#include "io/cover_tiles.hpp"
+#include "cover/tiled_cover.hpp"
 #include "io/export_presets.hpp"
 #include "params/values.hpp"
 
@@ -74,16 +79,70 @@ void write_sequence(files::OutputSet& outputs, cover::GlobalCover& cover, const 
   progress.finish();
 }
 
-}  // namespace
+// --tile A or A-B: tiles A to B of `count`.
+struct TileRange {
+  int first = 0, last = 0;
+};
+TileRange parse_tile_range(const std::string& text, int count, const std::string& option) {
+  const std::string allowed = "A or A-B with 0 <= A <= B < " + std::to_string(count) + " (--tiles)";
+  const auto number = [&](const std::string& digits) {
+    if (digits.empty() || digits.size() > 9 || digits.find_first_not_of("0123456789") != std::string::npos)
+      throw UsageError(option, text, allowed);
+    return std::stoi(digits);
+  };
+  const auto dash = text.find('-');
+  TileRange range;
+  range.first = number(text.substr(0, dash));
+  range.last = dash == std::string::npos ? range.first : number(text.substr(dash + 1));
+  if (range.first > range.last || range.last >= count) throw UsageError(option, text, allowed);
+  return range;
+}
 
-int run_generate(const std::vector<std::string>& arguments) {
+// generate's options, parsed and checked before any work.
+struct GenerateSetup {
   cover::CoverParameters parameters;
-  std::string out(params::run::cover_out.default_text);
+  std::string out;
   bool verbose = false, quiet = false;
+  io::CoverFileOptions file_options;
+  std::vector<const io::ExportPreset*> presets;
+  int sequence = 0;
+  double interval = 0;
+  int tiles = 0;                             // --tiles (0: as the budget needs)
+  std::optional<TileRange> tile;             // --tile
+  double memory_budget = 0;                  // bytes (0: the device's)
+  std::vector<std::string> cover_arguments;  // the arguments without --tile and --out (tile parts record them)
+};
+
+// The arguments that define the cover: all but --tile, --out and the reporting flags.
+std::vector<std::string> cover_arguments(const std::vector<std::string>& arguments) {
+  std::vector<std::string> kept;
+  const std::string tile = params::run::tile.option(), out = params::run::cover_out.option();
+  for (size_t k = 0; k < arguments.size(); ++k) {
+    const std::string& a = arguments[k];
+    const auto named = [&](const std::string& option) { return a == option || a.rfind(option + "=", 0) == 0; };
+    if (named(tile) || named(out)) {
+      if (a.find('=') == std::string::npos) ++k;  // its value follows
+      continue;
+    }
+    if (a == params::run::quiet.option() || a == params::run::verbose.option()) continue;
+    kept.push_back(a);
+  }
+  return kept;
+}
+
+// Parses generate's arguments; false when --help was given (printed).
+bool parse_generate(const std::vector<std::string>& arguments, GenerateSetup& setup) {
+  cover::CoverParameters& parameters = setup.parameters;
+  std::string& out = setup.out;
+  out = std::string(params::run::cover_out.default_text);
+  bool& verbose = setup.verbose;
+  bool& quiet = setup.quiet;
   Options options("generate",
                   "Generates a global cloud cover: curl-warped Worley noise on a cube map, written to\n"
                   "cover_{px,nx,py,ny,pz,nz}.exr, cover_equirect.exr, cover_equirect.png and cover.json\n"
-                  "(--files chooses the images; what none asks for is not computed).",
+                  "(--files chooses the images; what none asks for is not computed). Covers beyond\n"
+                  "--memory-budget are computed in tiles; --tiles with --tile computes some tiles only,\n"
+                  "for nephele assemble (docs/scale.md).",
                   params::generate);
   add_cover_options(options, parameters, params::generate);
   WarpOptions warp_options;
@@ -100,16 +159,25 @@ int run_generate(const std::vector<std::string>& arguments) {
   options.bind(params::run::cover_exports, &exports);
   options.bind(params::run::precision, &precision);
   options.bind(params::run::exr_compression, &compression);
-  int sequence = params::run::sequence.default_int();
-  double interval = params::run::interval.default_number;
+  int& sequence = setup.sequence;
+  double& interval = setup.interval;
+  sequence = params::run::sequence.default_int();
+  interval = params::run::interval.default_number;
   options.bind(params::run::sequence, &sequence);
   options.bind(params::run::interval, &interval);
   options.bind(params::run::quiet, &quiet);
   options.bind(params::run::verbose, &verbose);
+  std::string tile_text;
+  int budget_mib = params::run::memory_budget.default_int();
+  options.bind(params::run::tiles, &setup.tiles);
+  options.bind(params::run::tile, &tile_text);
+  options.bind(params::run::memory_budget, &budget_mib);
   if (!options.parse(arguments)) {
     std::cout << options.help();
-    return exit_ok;
+    return false;
   }
+  setup.cover_arguments = cover_arguments(arguments);
+  setup.memory_budget = budget_mib * 1048576.0;
   warp_options.apply(parameters);
   profile_option.apply(parameters);
   surface_option.apply(parameters);
@@ -119,14 +187,40 @@ int run_generate(const std::vector<std::string>& arguments) {
                      "is a sequence of a cover that does not move");
   if (sequence == 0 && options.given(params::run::interval))
     throw UsageError(params::run::interval.option() + ": only with --sequence");
-  io::CoverFileOptions file_options;
+  if (options.given(params::run::tiles)) {
+    const std::string problem = cover::tile_count_problem(parameters.size, setup.tiles);
+    if (!problem.empty())
+      throw UsageError(params::run::tiles.option(), std::to_string(setup.tiles),
+                       "a multiple of 6 from 6 to " + std::to_string(cover::max_tile_count(parameters.size)) +
+                           " (6 strips of one row per face at --size " + std::to_string(parameters.size) + ")",
+                       problem);
+  }
+  const bool tiled = setup.tiles > 0 || options.given(params::run::tile);
+  if (tiled && sequence > 0)
+    throw UsageError(params::run::tiles.option() +
+                     ": not with --sequence (each frame is computed whole; a job "
+                     "array computes frames with --time, docs/scale.md)");
+  if (tiled && cover::resolved_curl_mode(parameters) == cover::CurlMode::sampled)
+    throw UsageError(params::run::tiles.option() +
+                     ": not with --curl-mode sampled, whose warp reads the curl map "
+                     "anywhere on the sphere (procedural and spline evaluate the flow where they go)");
+  if (options.given(params::run::tile)) {
+    if (!options.given(params::run::tiles))
+      throw UsageError(params::run::tile.option() + ": only with --tiles COUNT (the tiling the parts belong to)");
+    setup.tile = parse_tile_range(tile_text, setup.tiles, params::run::tile.option());
+    for (const params::Parameter* p : {&params::run::cover_files, &params::run::cover_exports, &params::run::precision,
+                                       &params::run::exr_compression})
+      if (options.given(*p))
+        throw UsageError(p->option() + ": not with --tile, which writes tile parts; give it to nephele assemble");
+  }
+  io::CoverFileOptions& file_options = setup.file_options;
   io::parse_cover_files(files, file_options);
   params::check_word(params::run::precision, precision, params::run::precision.option());
   params::check_word(params::run::exr_compression, compression, params::run::exr_compression.option());
   file_options.half = precision == "half";
   file_options.compression = compression;
   // The presets are checked before any work: a name or a texture limit never fails late.
-  std::vector<const io::ExportPreset*> presets;
+  std::vector<const io::ExportPreset*>& presets = setup.presets;
   if (options.given(params::run::cover_exports)) {
     std::stringstream list(exports);
     for (std::string name; std::getline(list, name, ',');) {
@@ -145,8 +239,135 @@ int run_generate(const std::vector<std::string>& arguments) {
       throw UsageError("--export", exports, std::string(params::run::cover_exports.allowed),
                        "names no preset or ends with a comma");
   }
+  return true;
+}
+
+void create_output_directory(const std::filesystem::path& directory) {
+  std::error_code error;
+  std::filesystem::create_directories(directory, error);
+  if (error) throw UsageError("--out: cannot create directory '" + directory.string() + "': " + error.message());
+}
+
+// Computes tiles `range` of `tiling` into `directory` as tile parts, skipping those complete
+// there; returns how many were kept.
+int compute_tile_parts(const GenerateSetup& setup, const cover::CubeTiling& tiling, TileRange range,
+                       const std::filesystem::path& directory, core::Progress& progress, int progress_offset) {
+  const json::Value identity = io::cover_identity(setup.cover_arguments, setup.parameters);
+  std::unique_ptr<cover::TileRunner> runner;
+  int kept = 0;
+  for (int index = range.first; index <= range.last; ++index) {
+    if (io::find_tile_part(directory, index, tiling.count, identity)) {
+      ++kept;
+      continue;
+    }
+    progress.update(progress_offset + index - range.first,
+                    "tile " + std::to_string(index) + " of " + std::to_string(tiling.count));
+    if (!runner) runner = std::make_unique<cover::TileRunner>(setup.parameters, tiling);
+    io::write_tile_part(directory, runner->run(index), tiling.count, identity);
+  }
+  return kept;
+}
+
+// The budget's check of a tiling: its largest tile's passes must fit.
+void check_tiles_fit(const cover::CoverParameters& p, const cover::CubeTiling& tiling, double budget) {
+  const int rows = (p.size + tiling.strips_per_face() - 1) / tiling.strips_per_face() + 2;
+  const double bytes = cover::tile_bytes(p.size, std::min(rows, p.size), p.flow);
+  if (budget > 0 && bytes > budget)
+    throw UsageError(params::run::tiles.option(), std::to_string(tiling.count),
+                     "from " + std::to_string(cover::tile_count_for_budget(p.size, p.flow, budget)) +
+                         " up (or a larger --memory-budget)",
+                     "makes tiles of " + std::to_string(static_cast<long>(std::ceil(bytes / 1048576.0))) +
+                         " MiB, over the memory budget of " + std::to_string(static_cast<long>(budget / 1048576.0)) +
+                         " MiB");
+}
+
+// generate --tiles COUNT --tile A-B: tile parts for nephele assemble.
+int run_tile_parts(const GenerateSetup& setup, const std::filesystem::path& directory) {
+  const cover::CoverParameters& p = setup.parameters;
+  gpu::EglContext context;
+  const cover::CubeTiling tiling{p.size, setup.tiles};
+  const double budget = setup.memory_budget > 0 ? setup.memory_budget : cover::default_memory_budget_bytes(context);
+  check_tiles_fit(p, tiling, budget);
+  create_output_directory(directory);
+  const TileRange range = *setup.tile;
+  core::Progress progress("generate", range.last - range.first + 1, core::Progress::for_stderr(setup.quiet));
+  const int kept = compute_tile_parts(setup, tiling, range, directory, progress, 0);
+  progress.finish();
+  std::cout << "wrote tiles " << range.first << " to " << range.last << " of " << tiling.count << " into "
+            << directory.string();
+  if (kept > 0) std::cout << " (" << kept << " already complete, kept)";
+  std::cout << "\n";
+  return exit_ok;
+}
+
+// generate beyond the memory budget, or with --tiles alone: every tile in turn into a folder of
+// the output set, then the files assembled from them (the folder goes before the commit).
+int run_in_tiles(const GenerateSetup& setup, const gpu::EglContext& context, double budget) {
+  const cover::CoverParameters& p = setup.parameters;
+  const int count = setup.tiles > 0 ? setup.tiles : cover::tile_count_for_budget(p.size, p.flow, budget);
+  const cover::CubeTiling tiling{p.size, count};
+  check_tiles_fit(p, tiling, budget);
+  const double host = io::assembly_host_bytes(p.size, count, setup.file_options);
+  if (budget > 0 && host > budget)
+    throw UsageError(params::run::cover_files.option() + ": the equirect EXR of a cover of " + std::to_string(p.size) +
+                     " per face is made from the whole cover, " + std::to_string(static_cast<long>(host / 1048576.0)) +
+                     " MiB, over the memory budget of " + std::to_string(static_cast<long>(budget / 1048576.0)) +
+                     " MiB; write faces,png (export --preset equirect makes the map from the faces) or raise "
+                     "--memory-budget");
+  if (!setup.presets.empty())
+    throw UsageError(params::run::cover_exports.option() +
+                     ": not for a cover computed in tiles; export its files "
+                     "with nephele export COVER_DIR --preset NAME");
+  const std::filesystem::path directory(setup.out);
+  create_output_directory(directory);
+  files::OutputSet outputs(directory, files::OutputSet::Scope::directory);
+  const std::filesystem::path parts = outputs.temporary_directory() / "tile_parts";
+  std::filesystem::create_directories(parts);
+  // The tiles, then calibrate, each tile's cover, the equirect map and the files.
+  core::Progress progress("generate", count + 4, core::Progress::for_stderr(setup.quiet));
+  compute_tile_parts(setup, tiling, {0, count - 1}, parts, progress, 0);
+  const std::vector<io::TilePart> all = io::read_all_tile_parts(parts, "--out");
+  int step = count;
+  const io::AssembledCover assembled =
+      io::write_assembled_cover(outputs, all, p, context.info(), setup.file_options, [&](const std::string& what) {
+        if (what.rfind("tile ", 0) != 0) progress.update(std::min(step++, count + 3), what);
+      });
+  std::filesystem::remove_all(parts);
+  outputs.commit();
+  progress.finish();
+  if (setup.verbose) {
+    for (const auto& t : assembled.summary.timings) std::cerr << "pass " << t.pass << ": " << t.milliseconds << " ms\n";
+    for (const auto& t : assembled.exported.timings)
+      std::cerr << "export " << t.pass << ": " << t.milliseconds << " ms\n";
+  }
+  std::cout << "wrote " << (directory / "cover.json").string() << " and "
+            << io::cover_file_names(setup.file_options).size() - 1 << " images in " << count
+            << " tiles; cloud fraction " << assembled.summary.calibration.achieved_fraction << " (target " << p.coverage
+            << ")\n";
+  return exit_ok;
+}
+
+}  // namespace
+
+cover::CoverParameters parse_generate_parameters(const std::vector<std::string>& arguments) {
+  GenerateSetup setup;
+  if (!parse_generate(arguments, setup)) throw UsageError("the tile parts' arguments ask for --help");
+  return setup.parameters;
+}
+
+int run_generate(const std::vector<std::string>& arguments) {
+  GenerateSetup setup;
+  if (!parse_generate(arguments, setup)) return exit_ok;
+  cover::CoverParameters& parameters = setup.parameters;
+  const std::string& out = setup.out;
+  const bool verbose = setup.verbose, quiet = setup.quiet;
+  const io::CoverFileOptions& file_options = setup.file_options;
+  const std::vector<const io::ExportPreset*>& presets = setup.presets;
+  const int sequence = setup.sequence;
+  const double interval = setup.interval;
   const std::filesystem::path directory(out);
   files::check_output_directory(directory, "--out");
+  if (setup.tile) return run_tile_parts(setup, directory);
   // A directory of the user's at one of the set's names is refused before the run, not after.
   files::check_output_files(directory, io::cover_file_names(file_options), "--out");
 
@@ -154,6 +375,9 @@ int run_generate(const std::vector<std::string>& arguments) {
   if (verbose)
     std::cerr << "renderer: " << context.info().renderer << " (" << context.info().version << ", EGL "
               << context.info().platform << ")\n";
+  const double budget = setup.memory_budget > 0 ? setup.memory_budget : cover::default_memory_budget_bytes(context);
+  if (setup.tiles > 0 || (budget > 0 && cover::whole_cover_bytes(parameters.size, parameters.flow) > budget))
+    return run_in_tiles(setup, context, budget);
   cover::check_cover_fits(context, parameters.size, "--size", parameters.flow);
 
   std::error_code error;

@@ -1,0 +1,189 @@
+#include "io/cover_assembly.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <memory>
+#include <optional>
+
+#include "core/error.hpp"
+#include "cover/equirect.hpp"
+#include "cover/gpu_reductions.hpp"
+#include "files/image_files.hpp"
+
+namespace nephele::io {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double milliseconds_since(Clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+// Adds `ms` to the pass's entry, appending the pass at its first time.
+void add_timing(std::vector<cover::PassTiming>& timings, const std::string& pass, double ms) {
+  for (cover::PassTiming& t : timings)
+    if (t.pass == pass) {
+      t.milliseconds += ms;
+      return;
+    }
+  timings.push_back({pass, ms});
+}
+
+}  // namespace
+
+double assembly_host_bytes(int size, int tiles, const CoverFileOptions& options) {
+  const double n2 = double(size) * size;
+  const double tile = 6.0 * n2 / tiles + 2.0 * size;  // owned texels of the largest tile
+  // The tile's densities as read and as uploaded, its cover read back; the preview's cube.
+  double bytes = tile * 4.0 * 3.0;
+  const double preview_face = std::min(size, preview_face_limit);
+  if (options.preview)
+    bytes += 6.0 * preview_face * preview_face * (8.0 + 4.0 + 4.0) + 8.0 * preview_face * preview_face * 4.0;
+  // The equirect EXR: the whole cover and its 4 N x 2 N map, encoded in memory.
+  if (options.equirect) bytes += 6.0 * n2 * 4.0 + 8.0 * n2 * 4.0 * 2.0;
+  return bytes;
+}
+
+std::vector<TilePart> read_all_tile_parts(const std::filesystem::path& directory, const std::string& field) {
+  std::error_code error;
+  if (!std::filesystem::is_directory(directory, error))
+    throw core::InputError(field, directory.string(), "a directory of tile parts (generate --tiles --tile)",
+                           "is not a directory");
+  const std::filesystem::path first = directory / tile_part_name(0);
+  if (!std::filesystem::exists(first, error))
+    throw core::InputError(field, directory.string(), "a directory of tile parts (generate --tiles --tile)",
+                           "holds no " + tile_part_name(0));
+  std::vector<TilePart> parts;
+  parts.push_back(read_tile_header(first));
+  const int count = parts.front().tile_count;
+  std::vector<int> missing;
+  for (int index = 1; index < count; ++index) {
+    std::optional<TilePart> part = find_tile_part(directory, index, count, parts.front().identity);
+    if (part)
+      parts.push_back(std::move(*part));
+    else
+      missing.push_back(index);
+  }
+  if (!missing.empty()) {
+    std::string list;
+    for (size_t k = 0; k < missing.size() && k < 20; ++k) list += (k ? ", " : "") + std::to_string(missing[k]);
+    if (missing.size() > 20) list += ", ... (" + std::to_string(missing.size()) + " in all)";
+    throw core::InputError(field, directory.string(), "every tile of the cover, 0 to " + std::to_string(count - 1),
+                           "lacks tiles " + list + " (run generate with --tile for them)");
+  }
+  return parts;
+}
+
+AssembledCover write_assembled_cover(files::OutputSet& outputs, const std::vector<TilePart>& parts,
+                                     const cover::CoverParameters& parameters, const gpu::ContextInfo& context,
+                                     const CoverFileOptions& options,
+                                     const std::function<void(const std::string&)>& progress) {
+  const int size = parameters.size;
+  const int count = static_cast<int>(parts.size());
+  const cover::CubeTiling tiling{size, count};
+  AssembledCover result;
+  CoverSummary& summary = result.summary;
+  summary.parameters = cover::resolved_curl(parameters);
+  summary.tiles = count;
+  const auto say = [&](const std::string& step) {
+    if (progress) progress(step);
+  };
+
+  // What the tiles' passes reduced: the density range, the diagnosis, their times.
+  std::pair<float, float> range{INFINITY, -INFINITY};
+  cover::DiagnosisSums sums;
+  for (const TilePart& part : parts) {
+    range.first = std::min(range.first, part.tile.density_min);
+    range.second = std::max(range.second, part.tile.density_max);
+    sums.add(part.tile.diagnosis);
+    for (const cover::PassTiming& t : part.tile.timings) add_timing(summary.timings, t.pass, t.milliseconds);
+  }
+  summary.diagnostics =
+      cover::diagnostics_from_sums(sums, cover::texel_weight_units(size), summary.parameters.integrator,
+                                   summary.parameters.step, summary.parameters.flow == cover::Flow::moving);
+
+  cover::TiledCoverage coverage(parameters, tiling);
+  const cover::LoadTileDensity load = [&](int index) { return read_tile_densities(parts[static_cast<size_t>(index)]); };
+  say("calibrate");
+  auto start = Clock::now();
+  coverage.calibrate(range, load);
+  add_timing(summary.timings, "calibrate", milliseconds_since(start));
+
+  // Each tile's cover as it comes: rows of a face EXR, and where asked for the whole cover (the
+  // equirect EXR) or the preview's reduced cube.
+  const files::ImageEncoding exr = files::exr_encoding({"Y"}, options.half ? 16 : 32, options.compression);
+  std::unique_ptr<files::ImageRowWriter> face_writer;
+  std::shared_ptr<std::vector<float>> whole;
+  if (options.equirect) whole = std::make_shared<std::vector<float>>(6 * static_cast<size_t>(size) * size);
+  const int preview_face = std::min(size, preview_face_limit);
+  const bool reduce_preview = options.preview && !whole;
+  std::vector<double> preview_sum;
+  std::vector<int> preview_count;
+  if (reduce_preview) {
+    preview_sum.assign(6 * static_cast<size_t>(preview_face) * preview_face, 0.0);
+    preview_count.assign(preview_sum.size(), 0);
+  }
+  double face_ms = 0.0;
+  start = Clock::now();
+  coverage.remap(load, [&](int index, const std::vector<float>& cover) {
+    const cover::CubeRegion region = cover::owned_region(tiling.tile(index));
+    say("tile " + std::to_string(index + 1) + " of " + std::to_string(count));
+    if (options.faces) {
+      const auto face_start = Clock::now();
+      const std::string name = std::string("cover_") + face_suffixes[region.face] + ".exr";
+      if (region.first_row == 0)
+        face_writer = std::make_unique<files::ImageRowWriter>(outputs.reserve(name), size, size, 1, exr);
+      face_writer->write_rows(region.rows, cover.data());
+      if (region.first_row + region.rows == size) {
+        face_writer->close();
+        face_writer.reset();
+      }
+      face_ms += milliseconds_since(face_start);
+    }
+    const size_t offset = (static_cast<size_t>(region.face) * size + region.first_row) * size;
+    if (whole) std::copy(cover.begin(), cover.end(), whole->begin() + static_cast<std::ptrdiff_t>(offset));
+    if (reduce_preview)
+      for (int r = 0; r < region.rows; ++r) {
+        const int rj = static_cast<int>(static_cast<long>(region.first_row + r) * preview_face / size);
+        for (int i = 0; i < size; ++i) {
+          const int ri = static_cast<int>(static_cast<long>(i) * preview_face / size);
+          const size_t at = (static_cast<size_t>(region.face) * preview_face + rj) * preview_face + ri;
+          preview_sum[at] += cover[static_cast<size_t>(r) * size + i];
+          ++preview_count[at];
+        }
+      }
+  });
+  add_timing(summary.timings, "coverage", milliseconds_since(start) - face_ms);
+  summary.calibration = coverage.calibration();
+  summary.bands = coverage.bands();
+
+  CoverExport& exported = result.exported;
+  if (options.faces) exported.timings.push_back({"write_faces", face_ms});
+  CoverImages images;
+  images.face_size = size;
+  start = Clock::now();
+  if (whole) {
+    say("equirect");
+    auto equirect = std::make_shared<core::ImageData>(core::ImageData{4 * size, 2 * size, 1, {}});
+    equirect->pixels = cover::equirect_from_faces(size, *whole, equirect->width, equirect->height);
+    images.equirect = equirect;
+    if (options.preview)
+      images.preview =
+          size > preview_face_limit ? std::make_shared<core::ImageData>(preview_image(size, *whole)) : equirect;
+  } else if (reduce_preview) {
+    say("preview");
+    std::vector<float> reduced(preview_sum.size());
+    for (size_t k = 0; k < reduced.size(); ++k) reduced[k] = static_cast<float>(preview_sum[k] / preview_count[k]);
+    images.preview = std::make_shared<core::ImageData>(
+        core::ImageData{4 * preview_face, 2 * preview_face, 1,
+                        cover::equirect_from_faces(preview_face, reduced, 4 * preview_face, 2 * preview_face)});
+  }
+  if (images.equirect || images.preview) exported.timings.push_back({"equirect", milliseconds_since(start)});
+  say("writing files");
+  write_cover_images(outputs, images, options, exported);
+  outputs.write("cover.json", json::write(cover_sidecar(summary, context, exported.timings, options)));
+  return result;
+}
+
+}  // namespace nephele::io
