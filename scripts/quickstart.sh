@@ -46,26 +46,9 @@ wanted_packages() {
   done <scripts/debian-packages.txt
 }
 
-is_installed() {
-  local status
-  status="$(dpkg-query -W -f='${Status}' "$1" 2>/dev/null || true)"
-  [[ "$status" == *"ok installed"* ]]
-}
-
-# Runs a command as root: directly when root, else through sudo (never prompting in CI).
-as_root() {
-  if [[ "$(id -u)" -eq 0 ]]; then
-    "$@"
-  elif command -v sudo >/dev/null 2>&1; then
-    if [[ "${CI:-}" == "true" ]]; then
-      sudo -n "$@"
-    else
-      sudo "$@"
-    fi
-  else
-    die "not root and sudo is missing: as root, run $*"
-  fi
-}
+# is_installed, as_root
+# shellcheck source=scripts/debian-root.sh
+source "$repo_root/scripts/debian-root.sh"
 
 install_missing_packages() {
   if ! command -v dpkg-query >/dev/null 2>&1 || ! command -v apt-get >/dev/null 2>&1; then

@@ -61,22 +61,9 @@ fi
 nephele="$(cd "$(dirname "$nephele")" && pwd)/$(basename "$nephele")"
 
 # --- packages ----------------------------------------------------------------------------
-is_installed() {
-  local status
-  status="$(dpkg-query -W -f='${Status}' "$1" 2>/dev/null || true)"
-  [[ "$status" == *"ok installed"* ]]
-}
-
-# Runs a command as root: directly when root, else through sudo (never prompting in CI).
-as_root() {
-  if [[ "$(id -u)" -eq 0 ]]; then
-    "$@"
-  elif command -v sudo >/dev/null 2>&1; then
-    if [[ "${CI:-}" == "true" ]]; then sudo -n "$@"; else sudo "$@"; fi
-  else
-    die "not root and sudo is missing: as root, run $*"
-  fi
-}
+# is_installed, as_root
+# shellcheck source=scripts/debian-root.sh
+source "$repo_root/scripts/debian-root.sh"
 
 missing=()
 for package in slurm-wlm munge; do
@@ -362,6 +349,23 @@ wait_jobs "$again_id"
 [[ "$(ls -A "$work/parts")" == "$before" ]] || die "the second array changed the parts' names"
 say "array again: $(since "$t") s (job $again_id)"
 
+# Frames: an array of 2 frames of the moving cover, 6 hours apart; frame 1 must equal the cover
+# that one generate makes at its time.
+say "frames: 2 tasks of cover-frames.sbatch"
+t="$EPOCHREALTIME"
+frames_id="$(START=2026-06-21T00:00Z INTERVAL=6 OUT="$work/frames" sbatch --parsable --export=ALL \
+  --chdir="$work" --array=0-1 "$repo_root/scripts/slurm/cover-frames.sbatch")"
+frames_id="${frames_id%%;*}"
+"$nephele" generate --size "$size" --seed "$seed" --time 2026-06-21T06:00:00Z --files faces --out "$work/frame_single" \
+  --quiet
+wait_jobs "$frames_id"
+for face in "${faces[@]}"; do
+  cmp -s "$work/frame_single/cover_$face.exr" "$work/frames/frame_0001/cover_$face.exr" ||
+    die "frame 1 of the array differs from generate --time 2026-06-21T06:00:00Z in face $face"
+done
+say "frames: $(since "$t") s (job $frames_id)"
+
 say "total: $(since "$started") s"
-printf 'slurm-check: %s array tasks, %s tiles, assembled cover equals the single-process cover to the bit\n' \
+printf 'slurm-check: %s array tasks, %s tiles, assembled cover equals the single-process cover to the bit;' \
   "$tasks" "$tiles"
+printf ' an array frame equals generate --time\n'

@@ -9,7 +9,9 @@
 
 #include "cover/cube_tiles.hpp"
 #include "cover/global_cover.hpp"
+#include "cover/equirect.hpp"
 #include "cover/latitude_profile.hpp"
+#include "cover/streamed_equirect.hpp"
 #include "cover/surface_bias.hpp"
 #include "cover/tiled_cover.hpp"
 #include "cli_support.hpp"
@@ -269,4 +271,35 @@ TEST_CASE("a damaged tile part is made again by the next run and named by assemb
   const test::Run damaged = test::run("assemble " + parts.string() + " --out " + (work.path / "c").string());
   CHECK(damaged.exit_code == 2);
   CHECK_THAT(damaged.output, Catch::Contains("tile_000004.part: the densities do not match"));
+}
+
+TEST_CASE("the streamed equirect map equals the GPU's within float rounding", "[tiles]") {
+  test::test_context();
+  // A cover-like field: smooth plus texel noise, values in [0, 1].
+  const int n = 48;
+  std::vector<float> faces(6 * static_cast<size_t>(n) * n);
+  for (size_t k = 0; k < faces.size(); ++k)
+    faces[k] = 0.5f + 0.3f * std::sin(0.013f * static_cast<float>(k)) + 0.2f * std::cos(2.7f * static_cast<float>(k));
+  const int width = 4 * n, height = 2 * n;
+  const std::vector<float> gpu = cover::equirect_from_faces(n, faces, width, height);
+  const float* face_rows[6];
+  for (int f = 0; f < 6; ++f) face_rows[f] = faces.data() + static_cast<size_t>(f) * n * n;
+  std::vector<float> streamed(gpu.size(), -1.0f);
+  int next_row = 0;
+  cover::streamed_equirect(
+      n, face_rows, width, height,
+      [&](int first_row, int rows, const std::vector<float>& pixels) {
+        CHECK(first_row == next_row);
+        next_row += rows;
+        std::copy(pixels.begin(), pixels.end(), streamed.begin() + static_cast<std::ptrdiff_t>(first_row) * width);
+      },
+      7);
+  CHECK(next_row == height);
+  // The sample point's texel coordinates carry a few ulp of n (the GPU's and the C++ cos, sin
+  // and divisions round differently); neighbouring texels differ by at most 1 here, so the
+  // bilinear value differs by at most that position error: 8 n 2^-24.
+  const double tolerance = 8.0 * n * std::ldexp(1.0, -24);
+  double worst = 0.0;
+  for (size_t k = 0; k < gpu.size(); ++k) worst = std::max(worst, double(std::abs(gpu[k] - streamed[k])));
+  CHECK(worst <= tolerance);
 }

@@ -155,6 +155,41 @@ void ImageRowWriter::close() {
   if (!s.fd.close()) throw std::runtime_error("could not write " + s.path.string() + " (close)");
 }
 
+struct ImageRowReader::State {
+  std::string shown;
+  std::unique_ptr<OIIO::ImageInput> in;
+  int width = 0, height = 0, channels = 0;
+};
+
+ImageRowReader::ImageRowReader(const std::filesystem::path& path) : state_(std::make_unique<State>()) {
+  State& s = *state_;
+  s.shown = path.string();
+  core::regular_file_size(s.shown);  // a regular file, not a FIFO or device
+  s.in = OIIO::ImageInput::open(s.shown);
+  if (!s.in) throw std::runtime_error("could not read " + s.shown + ": " + OIIO::geterror());
+  const OIIO::ImageSpec& spec = s.in->spec();
+  s.width = spec.width;
+  s.height = spec.height;
+  s.channels = spec.nchannels;
+}
+
+ImageRowReader::~ImageRowReader() {
+  if (state_ && state_->in) state_->in->close();
+}
+
+int ImageRowReader::width() const { return state_->width; }
+int ImageRowReader::height() const { return state_->height; }
+int ImageRowReader::channels() const { return state_->channels; }
+
+void ImageRowReader::read_rows(int first_row, int rows, float* out) {
+  State& s = *state_;
+  if (first_row < 0 || rows < 0 || first_row + rows > s.height)
+    throw std::logic_error("ImageRowReader: rows outside " + s.shown);
+  if (rows > 0 &&
+      !s.in->read_scanlines(0, 0, first_row, first_row + rows, 0, 0, s.channels, OIIO::TypeDesc::FLOAT, out))
+    throw std::runtime_error("could not read " + s.shown + ": " + s.in->geterror());
+}
+
 std::vector<unsigned char> encode_image(const ImageData& image, const ImageEncoding& encoding,
                                         const std::string& what) {
   auto [out, spec] = image_writer(image.width, image.height, image.channels, encoding, what);

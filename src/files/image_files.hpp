@@ -82,6 +82,25 @@ class ImageRowWriter {
   std::unique_ptr<State> state_;
 };
 
+// Rows of an image file read on demand, as floats (the streamed equirect map reads the faces
+// of a cover too large to hold whole). Throws std::runtime_error naming the path.
+class ImageRowReader {
+ public:
+  explicit ImageRowReader(const std::filesystem::path& path);
+  ~ImageRowReader();
+  ImageRowReader(const ImageRowReader&) = delete;
+  ImageRowReader& operator=(const ImageRowReader&) = delete;
+  int width() const;
+  int height() const;
+  int channels() const;
+  // `rows` rows from `first_row` on, width x channels floats a row.
+  void read_rows(int first_row, int rows, float* out);
+
+ private:
+  struct State;
+  std::unique_ptr<State> state_;
+};
+
 // An animated GIF of `frames` (one size, 1 or 3 channels in [0, 1]) shown at `frames_per_second`
 // and looping, in memory: the previews of frame sequences (generate --sequence).
 std::vector<unsigned char> encode_animation(const std::vector<ImageData>& frames, int frames_per_second,

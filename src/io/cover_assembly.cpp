@@ -9,7 +9,9 @@
 #include "core/error.hpp"
 #include "cover/equirect.hpp"
 #include "cover/gpu_reductions.hpp"
+#include "cover/streamed_equirect.hpp"
 #include "files/image_files.hpp"
+#include "files/scratch_floats.hpp"
 
 namespace nephele::io {
 namespace {
@@ -32,16 +34,39 @@ void add_timing(std::vector<cover::PassTiming>& timings, const std::string& pass
 
 }  // namespace
 
-double assembly_host_bytes(int size, int tiles, const CoverFileOptions& options) {
+double whole_equirect_bytes(int size) {
+  const double n2 = double(size) * size;
+  // The whole cover, its cube map on the device and its 4 N x 2 N map, encoded in memory.
+  return 6.0 * n2 * 4.0 * 2.0 + 8.0 * n2 * 4.0 * 2.0;
+}
+
+namespace {
+
+// The bytes the assembly holds besides the equirect EXR's: a tile's densities as read and as
+// uploaded and its cover read back; the preview's reduced cube (sums, counts, values) and map.
+double tile_and_preview_bytes(int size, int tiles, const CoverFileOptions& options) {
   const double n2 = double(size) * size;
   const double tile = 6.0 * n2 / tiles + 2.0 * size;  // owned texels of the largest tile
-  // The tile's densities as read and as uploaded, its cover read back; the preview's cube.
   double bytes = tile * 4.0 * 3.0;
   const double preview_face = std::min(size, preview_face_limit);
   if (options.preview)
     bytes += 6.0 * preview_face * preview_face * (8.0 + 4.0 + 4.0) + 8.0 * preview_face * preview_face * 4.0;
-  // The equirect EXR: the whole cover and its 4 N x 2 N map, encoded in memory.
-  if (options.equirect) bytes += 6.0 * n2 * 4.0 + 8.0 * n2 * 4.0 * 2.0;
+  return bytes;
+}
+
+}  // namespace
+
+bool equirect_from_whole_cover(int size, int tiles, const CoverFileOptions& options, double budget) {
+  return budget <= 0 || tile_and_preview_bytes(size, tiles, options) + whole_equirect_bytes(size) <= budget;
+}
+
+double assembly_host_bytes(int size, int tiles, const CoverFileOptions& options, double budget) {
+  double bytes = tile_and_preview_bytes(size, tiles, options);
+  // The equirect EXR: from the whole cover where it fits the budget, else a band of the map (its
+  // faces are mapped from scratch files, which the kernel pages).
+  if (options.equirect)
+    bytes +=
+        equirect_from_whole_cover(size, tiles, options, budget) ? whole_equirect_bytes(size) : 4.0 * size * 64 * 4.0;
   return bytes;
 }
 
@@ -77,7 +102,7 @@ std::vector<TilePart> read_all_tile_parts(const std::filesystem::path& directory
 
 AssembledCover write_assembled_cover(files::OutputSet& outputs, const std::vector<TilePart>& parts,
                                      const cover::CoverParameters& parameters, const gpu::ContextInfo& context,
-                                     const CoverFileOptions& options,
+                                     const CoverFileOptions& options, double budget,
                                      const std::function<void(const std::string&)>& progress) {
   const int size = parameters.size;
   const int count = static_cast<int>(parts.size());
@@ -115,9 +140,17 @@ AssembledCover write_assembled_cover(files::OutputSet& outputs, const std::vecto
   const files::ImageEncoding exr = files::exr_encoding({"Y"}, options.half ? 16 : 32, options.compression);
   std::unique_ptr<files::ImageRowWriter> face_writer;
   std::shared_ptr<std::vector<float>> whole;
-  if (options.equirect) whole = std::make_shared<std::vector<float>>(6 * static_cast<size_t>(size) * size);
+  // The equirect EXR from the whole cover where it fits the budget, else on the CPU from the
+  // faces kept in scratch files (cover/streamed_equirect.hpp).
+  const bool streamed = options.equirect && !equirect_from_whole_cover(size, count, options, budget);
+  if (options.equirect && !streamed) whole = std::make_shared<std::vector<float>>(6 * static_cast<size_t>(size) * size);
+  std::vector<std::unique_ptr<files::ScratchFloats>> scratch_faces;
+  if (streamed)
+    for (int face = 0; face < 6; ++face)
+      scratch_faces.push_back(std::make_unique<files::ScratchFloats>(outputs.temporary_directory() /
+                                                                     (std::string("scratch_") + face_suffixes[face])));
   const int preview_face = std::min(size, preview_face_limit);
-  const bool reduce_preview = options.preview && !whole;
+  const bool reduce_preview = options.preview && !whole;  // (streamed: from the reduced cube)
   std::vector<double> preview_sum;
   std::vector<int> preview_count;
   if (reduce_preview) {
@@ -129,6 +162,7 @@ AssembledCover write_assembled_cover(files::OutputSet& outputs, const std::vecto
   coverage.remap(load, [&](int index, const std::vector<float>& cover) {
     const cover::CubeRegion region = cover::owned_region(tiling.tile(index));
     say("tile " + std::to_string(index + 1) + " of " + std::to_string(count));
+    if (streamed) scratch_faces[static_cast<size_t>(region.face)]->append(cover.data(), cover.size());
     if (options.faces) {
       const auto face_start = Clock::now();
       const std::string name = std::string("cover_") + face_suffixes[region.face] + ".exr";
@@ -160,6 +194,19 @@ AssembledCover write_assembled_cover(files::OutputSet& outputs, const std::vecto
 
   CoverExport& exported = result.exported;
   if (options.faces) exported.timings.push_back({"write_faces", face_ms});
+  if (streamed) {
+    say("equirect");
+    start = Clock::now();
+    const float* faces[6];
+    for (int face = 0; face < 6; ++face) faces[face] = scratch_faces[static_cast<size_t>(face)]->map();
+    files::ImageRowWriter map(outputs.reserve("cover_equirect.exr"), 4 * size, 2 * size, 1, exr);
+    cover::streamed_equirect(size, faces, 4 * size, 2 * size, [&](int, int rows, const std::vector<float>& pixels) {
+      map.write_rows(rows, pixels.data());
+    });
+    map.close();
+    scratch_faces.clear();
+    exported.timings.push_back({"equirect_streamed", milliseconds_since(start)});
+  }
   CoverImages images;
   images.face_size = size;
   start = Clock::now();

@@ -17,8 +17,13 @@ namespace nephele::io {
 
 // Host bytes the assembly holds for a cover of `size` per face: a tile's densities and cover
 // (the largest tile of `tiles`), the preview's cube, and with the equirect EXR the whole cover
-// and its map (which the EXR is resampled from).
-double assembly_host_bytes(int size, int tiles, const CoverFileOptions& options);
+// and its map where they fit `budget` (0: no budget), else the rows the streamed map holds
+// (cover/streamed_equirect.hpp).
+double assembly_host_bytes(int size, int tiles, const CoverFileOptions& options, double budget);
+double whole_equirect_bytes(int size);
+// Whether the equirect EXR is made from the whole cover (on the GPU, as generate's whole map),
+// which takes whole_equirect_bytes, or streamed from scratch faces on the CPU.
+bool equirect_from_whole_cover(int size, int tiles, const CoverFileOptions& options, double budget);
 
 struct AssembledCover {
   CoverSummary summary;
@@ -30,7 +35,7 @@ struct AssembledCover {
 // `progress` hears each step ("calibrate", "tile 3 of 24", ...).
 AssembledCover write_assembled_cover(files::OutputSet& outputs, const std::vector<TilePart>& parts,
                                      const cover::CoverParameters& parameters, const gpu::ContextInfo& context,
-                                     const CoverFileOptions& options,
+                                     const CoverFileOptions& options, double budget,
                                      const std::function<void(const std::string&)>& progress = {});
 
 // The complete parts of every tile of a cover in `directory`: throws core::InputError naming the

@@ -406,7 +406,7 @@ inline constexpr Parameter memory_budget =
     integer("memory_budget", 0, 0, 16777216, "MiB",
             "memory the cover's passes may take, GPU and host; larger covers are computed in tiles (0: the GPU's free "
             "memory, with a software renderer half the host's available memory)",
-            generate);
+            generate | assemble);
 inline constexpr Parameter assemble_out =
     text("out", "cubemaps", "DIR", "output directory of the assembled cover (created if missing)", assemble);
 inline constexpr Parameter cover_exports = text(

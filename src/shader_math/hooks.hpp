@@ -15,11 +15,18 @@ namespace nephele::glsl {
 
 #include "lib/parameters.glsl"
 
-// A cube map in host memory, vec4 per texel, faces in GL order, rows from t = 0.
+// A cube map in host memory, vec4 per texel, faces in GL order, rows from t = 0. Or, without
+// `texels`, one channel in separate faces (a cover too large for the GPU, mapped from files:
+// cover/streamed_equirect.cpp): row j of face f at face_rows[f] + (j - first_row[f]) size.
 struct CubeSource {
   int size = 0;
   const vec4* texels = nullptr;
-  vec4 fetch(int face, int i, int j) const { return texels[(static_cast<size_t>(face) * size + j) * size + i]; }
+  const float* const* face_rows = nullptr;
+  const int* first_row = nullptr;
+  vec4 fetch(int face, int i, int j) const {
+    if (texels) return texels[(static_cast<size_t>(face) * size + j) * size + i];
+    return vec4(face_rows[face][static_cast<size_t>(j - first_row[face]) * size + i], 0.0f, 0.0f, 0.0f);
+  }
 };
 // cube_sampling.glsl's parameter type and its image functions (GLSL's imageCube: layer = face).
 using CubeImage = const CubeSource&;

@@ -1,11 +1,14 @@
 // nephele assemble PARTS: the files of a cover computed in tiles (generate --tiles --tile),
 // the same files generate writes (docs/scale.md).
+#include <cmath>
 #include <filesystem>
 #include <iostream>
 
 #include "apps/cli/commands.hpp"
+#include "apps/cli/cover_options.hpp"
 #include "apps/cli/options.hpp"
 #include "core/memory.hpp"
+#include "cover/cover_limits.hpp"
 #include "core/progress.hpp"
 #include "files/atomic_output.hpp"
 #include "gpu/egl_context.hpp"
@@ -22,32 +25,26 @@ int run_assemble(const std::vector<std::string>& arguments) {
   std::vector<std::string> rest = arguments;
   const std::string parts_dir = take_leading_operand(rest);
   std::string out(params::run::assemble_out.default_text);
-  std::string files(params::run::cover_files.default_text), precision(params::run::precision.default_text),
-      compression(params::run::exr_compression.default_text);
+  CoverFileOption file_option;
   bool quiet = false, verbose = false;
+  int budget_mib = params::run::memory_budget.default_int();
   Options options("assemble",
                   "Assembles a cover computed in tiles: nephele assemble PARTS_DIR [options] reads the tile\n"
                   "parts that generate --tiles COUNT --tile A-B wrote (every tile of one cover), calibrates\n"
                   "the coverage over all of them and writes the files generate writes (docs/scale.md).",
                   params::assemble);
   options.bind(params::run::assemble_out, &out);
-  options.bind(params::run::cover_files, &files);
-  options.bind(params::run::precision, &precision);
-  options.bind(params::run::exr_compression, &compression);
+  file_option.add(options);
   options.bind(params::run::quiet, &quiet);
   options.bind(params::run::verbose, &verbose);
+  options.bind(params::run::memory_budget, &budget_mib);
   if (!options.parse(rest)) {
     std::cout << options.help();
     return exit_ok;
   }
   if (parts_dir.empty())
     throw UsageError("PARTS_DIR", "", "the directory of tile parts (generate --tile ... --out DIR)", "is missing");
-  io::CoverFileOptions file_options;
-  io::parse_cover_files(files, file_options);
-  params::check_word(params::run::precision, precision, params::run::precision.option());
-  params::check_word(params::run::exr_compression, compression, params::run::exr_compression.option());
-  file_options.half = precision == "half";
-  file_options.compression = compression;
+  const io::CoverFileOptions file_options = file_option.file_options();
   const std::vector<io::TilePart> parts = io::read_all_tile_parts(parts_dir, "PARTS_DIR");
   // The cover's parameters as generate parsed them for the parts.
   std::vector<std::string> cover_arguments;
@@ -64,13 +61,14 @@ int run_assemble(const std::vector<std::string>& arguments) {
   files::check_output_directory(directory, params::run::assemble_out.option());
   files::check_output_files(directory, io::cover_file_names(file_options), params::run::assemble_out.option());
   gpu::EglContext context;
-  const double host = io::assembly_host_bytes(parameters.size, static_cast<int>(parts.size()), file_options);
-  const double available = core::host_memory_available_bytes();
-  if (available > 0 && host > available)
-    throw UsageError(params::run::cover_files.option() + ": the equirect EXR of a cover of " +
-                     std::to_string(parameters.size) + " per face needs " +
-                     std::to_string(static_cast<long>(host / 1048576.0)) + " MiB, " +
-                     std::to_string(static_cast<long>(available / 1048576.0)) + " MiB are available; write faces,png");
+  const double budget = budget_mib > 0 ? budget_mib * 1048576.0 : cover::default_memory_budget_bytes(context);
+  const double host = io::assembly_host_bytes(parameters.size, static_cast<int>(parts.size()), file_options, budget);
+  if (budget > 0 && host > budget)
+    throw UsageError(params::run::memory_budget.option() + ": the files of a cover of " +
+                     std::to_string(parameters.size) + " per face hold " +
+                     std::to_string(static_cast<long>(std::ceil(host / 1048576.0))) +
+                     " MiB at once (a polar face for the equirect map), over the budget of " +
+                     std::to_string(static_cast<long>(budget / 1048576.0)) + " MiB; write --files faces,png");
   std::error_code error;
   std::filesystem::create_directories(directory, error);
   if (error)
@@ -81,7 +79,7 @@ int run_assemble(const std::vector<std::string>& arguments) {
   core::Progress progress("assemble", count + 4, core::Progress::for_stderr(quiet));
   int step = 0;
   const io::AssembledCover assembled =
-      io::write_assembled_cover(outputs, parts, parameters, context.info(), file_options,
+      io::write_assembled_cover(outputs, parts, parameters, context.info(), file_options, budget,
                                 [&](const std::string& what) { progress.update(std::min(step++, count + 3), what); });
   outputs.commit();
   progress.finish();

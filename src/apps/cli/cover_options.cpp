@@ -4,6 +4,7 @@
 #include "io/profile_files.hpp"
 #include "io/surface_files.hpp"
 #include "params/table.hpp"
+#include "params/values.hpp"
 
 #include <cmath>
 #include <sstream>
@@ -107,5 +108,21 @@ void ProfileOption::apply(cover::CoverParameters& p) const {
 void SurfaceOption::add(Options& o) { o.bind(params::cover::surface, &value_); }
 
 void SurfaceOption::apply(cover::CoverParameters& p) const { p.surface = io::surface_from_option(value_); }
+
+void CoverFileOption::add(Options& options) {
+  options.bind(params::run::cover_files, &files_);
+  options.bind(params::run::precision, &precision_);
+  options.bind(params::run::exr_compression, &compression_);
+}
+
+io::CoverFileOptions CoverFileOption::file_options() const {
+  io::CoverFileOptions file_options;
+  io::parse_cover_files(files_, file_options);
+  params::check_word(params::run::precision, precision_, params::run::precision.option());
+  params::check_word(params::run::exr_compression, compression_, params::run::exr_compression.option());
+  file_options.half = precision_ == "half";
+  file_options.compression = compression_;
+  return file_options;
+}
 
 }  // namespace nephele::cli

@@ -2,6 +2,7 @@
 // The options shared by every command that makes a global cover (generate, bench).
 #include "apps/cli/options.hpp"
 #include "cover/cover_parameters.hpp"
+#include "io/cover_files.hpp"
 #include "params/table.hpp"
 
 namespace nephele::cli {
@@ -15,6 +16,18 @@ void validate_cover_parameters(const cover::CoverParameters& p);
 // The flow (--flow steady|moving) and the cover's time (--time) into `p`: throws UsageError
 // naming the option for a word or a time it does not take.
 void apply_flow(const std::string& flow, cover::CoverParameters& p);
+
+// The images a cover's files hold and how (--files, --precision, --exr-compression of generate
+// and assemble), bound to `options`; file_options() checks them after the parse.
+class CoverFileOption {
+ public:
+  void add(Options& options);
+  io::CoverFileOptions file_options() const;  // throws UsageError naming the option
+
+ private:
+  std::string files_{params::run::cover_files.default_text}, precision_{params::run::precision.default_text},
+      compression_{params::run::exr_compression.default_text};
+};
 
 // How the warp is solved, --integrator, --curl-mode, --tolerance, --max-substeps (unless
 // include_integrator is false), and --noise-offset (docs/numerics.md); with include_integrator

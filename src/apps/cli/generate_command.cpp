@@ -151,14 +151,11 @@ bool parse_generate(const std::vector<std::string>& arguments, GenerateSetup& se
   SurfaceOption surface_option;
   surface_option.add(options);
   warp_options.add(options, parameters);
-  std::string files(params::run::cover_files.default_text), precision(params::run::precision.default_text),
-      compression(params::run::exr_compression.default_text);
+  CoverFileOption file_option;
   options.bind(params::run::cover_out, &out);
-  options.bind(params::run::cover_files, &files);
+  file_option.add(options);
   std::string exports;
   options.bind(params::run::cover_exports, &exports);
-  options.bind(params::run::precision, &precision);
-  options.bind(params::run::exr_compression, &compression);
   int& sequence = setup.sequence;
   double& interval = setup.interval;
   sequence = params::run::sequence.default_int();
@@ -214,11 +211,7 @@ bool parse_generate(const std::vector<std::string>& arguments, GenerateSetup& se
         throw UsageError(p->option() + ": not with --tile, which writes tile parts; give it to nephele assemble");
   }
   io::CoverFileOptions& file_options = setup.file_options;
-  io::parse_cover_files(files, file_options);
-  params::check_word(params::run::precision, precision, params::run::precision.option());
-  params::check_word(params::run::exr_compression, compression, params::run::exr_compression.option());
-  file_options.half = precision == "half";
-  file_options.compression = compression;
+  file_options = file_option.file_options();
   // The presets are checked before any work: a name or a texture limit never fails late.
   std::vector<const io::ExportPreset*>& presets = setup.presets;
   if (options.given(params::run::cover_exports)) {
@@ -307,13 +300,13 @@ int run_in_tiles(const GenerateSetup& setup, const gpu::EglContext& context, dou
   const int count = setup.tiles > 0 ? setup.tiles : cover::tile_count_for_budget(p.size, p.flow, budget);
   const cover::CubeTiling tiling{p.size, count};
   check_tiles_fit(p, tiling, budget);
-  const double host = io::assembly_host_bytes(p.size, count, setup.file_options);
+  const double host = io::assembly_host_bytes(p.size, count, setup.file_options, budget);
   if (budget > 0 && host > budget)
-    throw UsageError(params::run::cover_files.option() + ": the equirect EXR of a cover of " + std::to_string(p.size) +
-                     " per face is made from the whole cover, " + std::to_string(static_cast<long>(host / 1048576.0)) +
-                     " MiB, over the memory budget of " + std::to_string(static_cast<long>(budget / 1048576.0)) +
-                     " MiB; write faces,png (export --preset equirect makes the map from the faces) or raise "
-                     "--memory-budget");
+    throw UsageError(params::run::memory_budget.option() + ": the files of a cover of " + std::to_string(p.size) +
+                     " per face hold " + std::to_string(static_cast<long>(std::ceil(host / 1048576.0))) +
+                     " MiB at once (a polar face for the equirect map), over the budget of " +
+                     std::to_string(static_cast<long>(budget / 1048576.0)) +
+                     " MiB; write --files faces,png or raise --memory-budget");
   if (!setup.presets.empty())
     throw UsageError(params::run::cover_exports.option() +
                      ": not for a cover computed in tiles; export its files "
@@ -328,10 +321,11 @@ int run_in_tiles(const GenerateSetup& setup, const gpu::EglContext& context, dou
   compute_tile_parts(setup, tiling, {0, count - 1}, parts, progress, 0);
   const std::vector<io::TilePart> all = io::read_all_tile_parts(parts, "--out");
   int step = count;
-  const io::AssembledCover assembled =
-      io::write_assembled_cover(outputs, all, p, context.info(), setup.file_options, [&](const std::string& what) {
-        if (what.rfind("tile ", 0) != 0) progress.update(std::min(step++, count + 3), what);
-      });
+  const io::AssembledCover assembled = io::write_assembled_cover(outputs, all, p, context.info(), setup.file_options,
+                                                                 budget, [&](const std::string& what) {
+                                                                   if (what.rfind("tile ", 0) != 0)
+                                                                     progress.update(std::min(step++, count + 3), what);
+                                                                 });
   std::filesystem::remove_all(parts);
   outputs.commit();
   progress.finish();
