@@ -9,7 +9,9 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <map>
 #include <sstream>
 #include <string>
@@ -26,6 +28,10 @@
 #include "files/texture_containers.hpp"
 #include "io/volume_export.hpp"
 #include "core/error.hpp"
+#include "cover/equirect.hpp"
+#include "gl_support.hpp"
+#include "io/cover_files.hpp"
+#include "shader_math/shader_math.hpp"
 #include "params/table.hpp"
 #include "texture_readers.hpp"
 
@@ -1226,6 +1232,72 @@ TEST_CASE("export openvdb: a model's density.json becomes a FOG grid density wit
                                  bad.path.string());
   CHECK(refused.exit_code == 2);
   CHECK_THAT(refused.output, Catch::Contains("VOLUME"));
+}
+
+}  // namespace nephele
+
+namespace nephele {
+
+TEST_CASE("celestia beyond one texture: a virtual texture whose level K holds 2^(K+1) x 2^K tiles of the map",
+          "[export]") {
+  test::test_context();
+  // A smooth cover with a bright cap north of 60 degrees, so that a tile's place shows.
+  const int n = 64, tile = 64;
+  io::CoverFaces faces{n, std::vector<float>(6 * static_cast<size_t>(n) * n)};
+  for (int f = 0; f < 6; ++f)
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i) {
+        const glm::vec3 d = glm::normalize(glsl::texel_direction(f, i, j, n));
+        faces.texels[(static_cast<size_t>(f) * n + j) * n + i] = d.z > 0.866f ? 1.0f : 0.25f + 0.2f * d.x;
+      }
+  test::TemporaryDirectory out(true);
+  files::OutputSet set(out.path, files::OutputSet::Scope::directory);
+  io::ExportOptions options;
+  options.name = "vt";
+  options.celestia_tile = tile;
+  options.resample_equirect = cover::equirect_from_faces;
+  io::write_export(set, io::find_export_preset("celestia"), faces, options);
+  set.commit();
+  const std::filesystem::path hires = out.path / "extras/vt/textures/hires";
+  const std::string ctx = test::read_file(hires / "vt.ctx");
+  CHECK_THAT(ctx, Catch::Contains("VirtualTexture") && Catch::Contains("ImageDirectory \"vt\"") &&
+                      Catch::Contains("BaseSplit 0") && Catch::Contains("TileSize 64") &&
+                      Catch::Contains("TileType \"dds\""));
+  CHECK_THAT(test::read_file(out.path / "extras/vt/vt.ssc"), Catch::Contains("CloudMap \"vt.ctx\""));
+  // 4 n = 256 texels wide: level 0 is 128 wide (2 x 1 tiles), level 1 256 (4 x 2), no level 2.
+  CHECK_FALSE(std::filesystem::exists(hires / "vt/level2"));
+  for (int level = 0; level < 2; ++level) {
+    const int width = tile << (level + 1), height = width / 2, face = width / 4;
+    // The level's map: the cube box-filtered to a quarter of its width per face, resampled.
+    const std::vector<float> expected =
+        cover::equirect_from_faces(face, io::reduced_faces(n, faces.texels, face), width, height);
+    int count = 0;
+    double worst = 0.0;
+    for (const auto& entry : std::filesystem::directory_iterator(hires / ("vt/level" + std::to_string(level)))) {
+      ++count;
+      int u = -1, v = -1;
+      REQUIRE(std::sscanf(entry.path().filename().c_str(), "tx_%d_%d.dds", &u, &v) == 2);
+      REQUIRE(u < (2 << level));
+      REQUIRE(v < (1 << level));
+      const std::string bytes = test::read_file(entry.path());
+      const test::DdsFile dds = test::read_dds(bytes);
+      CHECK(dds.four_cc == "DXT5");
+      CHECK(dds.width == static_cast<unsigned>(tile));
+      CHECK(dds.mip_count == 7);  // 64 down to 1
+      const std::vector<float> rgba = test::decode_stored_image(
+          test::StoredFormat::bc3, reinterpret_cast<const unsigned char*>(bytes.data()) + dds.data_offset, tile, tile);
+      for (int y = 0; y < tile; ++y)
+        for (int x = 0; x < tile; ++x) {
+          const float want = expected[static_cast<size_t>(v * tile + y) * width + u * tile + x];
+          worst = std::max(worst, double(std::abs(rgba[(static_cast<size_t>(y) * tile + x) * 4 + 3] - want)));
+        }
+    }
+    INFO("level " << level);
+    CHECK(count == (2 << level) * (1 << level));
+    // BC3's alpha: 8 levels between a block's extremes, 1/14 of their span at most, plus the
+    // 8-bit rounding and the CPU twin's float rounding; the cap's edge spans 0 to 1 in a block.
+    CHECK(worst <= 1.0 / 14.0 + 1.0 / 255.0 + 1e-4);
+  }
 }
 
 }  // namespace nephele

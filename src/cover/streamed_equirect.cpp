@@ -8,29 +8,37 @@
 
 namespace nephele::cover {
 
-void streamed_equirect(int face_size, const float* const faces[6], int width, int height, const TakeMapRows& take,
-                       int band_rows) {
-  const std::vector<glm::vec2> rows = geodetic_row_directions(height);
+void equirect_region(int face_size, const float* const faces[6], int width, const std::vector<glm::vec2>& rows,
+                     const PixelTile& region, float* out) {
   const int first_row[6] = {};
   glsl::CubeSource source{face_size};
   source.face_rows = faces;
   source.first_row = first_row;
+  // Each thread a share of the region's rows.
   const int threads = static_cast<int>(std::max(1u, std::min(16u, std::thread::hardware_concurrency())));
+  const auto sample = [&](int r0, int r1) {
+    for (int r = r0; r < r1; ++r) {
+      const glm::vec2 row = rows[static_cast<size_t>(region.y + r)];
+      for (int c = 0; c < region.width; ++c)
+        out[static_cast<size_t>(r) * region.width + c] =
+            glsl::sample_cube_bilinear(glsl::equirect_direction(region.x + c, width, row), source).x;
+    }
+  };
+  std::vector<std::thread> pool;
+  for (int t = 1; t < threads; ++t)
+    pool.emplace_back(sample, t * region.height / threads, (t + 1) * region.height / threads);
+  sample(0, region.height / threads);
+  for (std::thread& thread : pool) thread.join();
+}
+
+void streamed_equirect(int face_size, const float* const faces[6], int width, int height, const TakeMapRows& take,
+                       int band_rows) {
+  const std::vector<glm::vec2> rows = geodetic_row_directions(height);
   std::vector<float> band;
   for (int y0 = 0; y0 < height; y0 += band_rows) {
     const int y1 = std::min(height, y0 + band_rows);
     band.assign(static_cast<size_t>(y1 - y0) * width, 0.0f);
-    // Each thread a share of the band's columns.
-    const auto sample = [&](int x0, int x1) {
-      for (int y = y0; y < y1; ++y)
-        for (int x = x0; x < x1; ++x)
-          band[static_cast<size_t>(y - y0) * width + x] =
-              glsl::sample_cube_bilinear(glsl::equirect_direction(x, width, rows[static_cast<size_t>(y)]), source).x;
-    };
-    std::vector<std::thread> pool;
-    for (int t = 1; t < threads; ++t) pool.emplace_back(sample, t * width / threads, (t + 1) * width / threads);
-    sample(0, width / threads);
-    for (std::thread& thread : pool) thread.join();
+    equirect_region(face_size, faces, width, rows, PixelTile{0, y0, width, y1 - y0}, band.data());
     take(y0, y1 - y0, band);
   }
 }

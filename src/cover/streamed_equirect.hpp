@@ -9,6 +9,10 @@
 #include <functional>
 #include <vector>
 
+#include <glm/glm.hpp>
+
+#include "cover/equirect.hpp"
+
 namespace nephele::cover {
 
 // Receives the map's rows [first_row, first_row + rows), width floats a row, in order.
@@ -19,5 +23,11 @@ using TakeMapRows = std::function<void(int first_row, int rows, const std::vecto
 // t = 0) are `faces`, in bands of `band_rows` rows, each sampled by all hardware threads.
 void streamed_equirect(int face_size, const float* const faces[6], int width, int height, const TakeMapRows& take,
                        int band_rows = 64);
+
+// The pixels of `region` of such a map `width` wide whose rows' directions are `rows`
+// (geodetic_row_directions of its height), row by row into `out` (region.width floats a row):
+// the tiles of virtual textures (io/export_simulators.cpp, celestia).
+void equirect_region(int face_size, const float* const faces[6], int width, const std::vector<glm::vec2>& rows,
+                     const PixelTile& region, float* out);
 
 }  // namespace nephele::cover

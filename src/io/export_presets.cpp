@@ -98,6 +98,8 @@ long long faces_edge(int n) { return n; }
 long long equirect_edge(int n) { return 4LL * n; }
 long long strip_edge(int n) { return 6LL * n; }
 long long tile_edge(int n) { return flightgear_tile_size(n); }
+// Celestia: one 4n x 2n map up to the texture limit, a virtual texture of 1024-texel tiles beyond.
+long long celestia_edge(int n) { return 4LL * n <= max_texture_edge ? 4LL * n : 1024; }
 
 }  // namespace
 
@@ -113,7 +115,7 @@ const std::vector<ExportPreset>& export_presets() {
       {"dds", "DDS cube maps with mips: BC4, BC3, RGBA8 and DX10 R16_FLOAT / R32_FLOAT", false, false, false, false,
        write_dds, faces_edge},
       {"celestia", "Celestia add-on: cloud map (white, coverage in alpha) as PNG and DXT5 DDS with mips, .ssc", true,
-       false, false, true, write_celestia, equirect_edge},
+       false, false, true, write_celestia, celestia_edge},
       {"exr-cube", "OpenEXR cube environment map (N x 6N strip, envmap = cube)", false, false, false, false,
        write_exr_cube, faces_edge},
       {"flightgear", "FlightGear Earthview: eight bordered tiles clouds_N1..S4, grey + alpha", true, false, false,

@@ -26,6 +26,9 @@ int read_cover_face_size(const std::filesystem::path& directory);
 struct ExportOptions {
   std::string ktx2_format = "r16f";     // ktx2: r16f, r32f, r8
   std::string name = "nephele_clouds";  // celestia: the add-on's folder and file names
+  // celestia: the CloudMap's tile edge as a virtual texture (a power of two from 64); 0 writes one
+  // map where it fits max_texture_edge and a virtual texture of 1024-texel tiles beyond.
+  int celestia_tile = 0;
   // Resamples the six faces to a width x height equirect (cover::equirect_from_faces): the GPU
   // pass that the presets with needs_equirect use, given by the caller, so that io runs none.
   std::vector<float> (*resample_equirect)(int face_size, const std::vector<float>& texels, int width,

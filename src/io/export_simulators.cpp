@@ -4,6 +4,8 @@
 #include <cmath>
 
 #include "core/error.hpp"
+#include "cover/equirect.hpp"
+#include "cover/streamed_equirect.hpp"
 #include "files/image_files.hpp"
 #include "files/texture_containers.hpp"
 #include "io/cover_files.hpp"
@@ -50,13 +52,85 @@ core::ImageData celestia_normal_map(const core::ImageData& map, double relief_m)
   return normals;
 }
 
+namespace {
+
+// The CloudMap as a Celestia virtual texture (Celestia's src/celengine/virtualtex.cpp): NAME.ctx
+// names the folder NAME beside it, BaseSplit 0 and the tile edge T; folder levelK holds the
+// 2^(K+1) x 2^K tiles tx_U_V.dds of level K, the map 2^(K+1) T wide, U from the -180 deg edge
+// and V from the north, each T x T DXT5 (white, coverage in alpha) with its mips. The finest
+// level is the first at least as wide as the cover's 4 N map (Celestia reads 13 at most); each
+// level is sampled on the CPU from the cube box-filtered to a quarter of the level's width per
+// face (reduced_faces), so a coarse level averages the texels it covers. Returns the README's
+// description of the files.
+std::string write_celestia_virtual_texture(files::OutputSet& out, std::vector<std::string>& names,
+                                           const CoverFaces& faces, const ExportOptions& options,
+                                           const std::string& folder, int tile) {
+  int levels = 1;
+  while ((static_cast<long long>(tile) << levels) < 4LL * faces.size) ++levels;
+  if (levels > 13)
+    throw core::InputError("COVER_DIR", "face size " + std::to_string(faces.size),
+                           "at most 13 levels of " + std::to_string(tile) + "-texel tiles for preset celestia",
+                           "needs " + std::to_string(levels) + " levels (Celestia reads 13)");
+  const std::string directory = folder + "textures/hires/" + options.name;
+  for (int level = 0; level < levels; ++level) {
+    const int width = tile << (level + 1), height = width / 2, face = std::max(1, width / 4);
+    const std::vector<float> reduced = face < faces.size ? reduced_faces(faces.size, faces.texels, face) : faces.texels;
+    const int n = std::min(face, faces.size);
+    const float* face_rows[6];
+    for (int f = 0; f < 6; ++f) face_rows[f] = reduced.data() + static_cast<size_t>(f) * n * n;
+    const std::vector<glm::vec2> rows = cover::geodetic_row_directions(height);
+    std::vector<float> values(static_cast<size_t>(tile) * tile);
+    for (int v = 0; v < (1 << level); ++v)
+      for (int u = 0; u < (2 << level); ++u) {
+        cover::equirect_region(n, face_rows, width, rows, cover::PixelTile{u * tile, v * tile, tile, tile},
+                               values.data());
+        const std::string name = directory + "/level" + std::to_string(level) + "/tx_" + std::to_string(u) + "_" +
+                                 std::to_string(v) + ".dds";
+        out.write(name, files::encode_dds(files::build_mip_chain(values, tile, tile, 1, 1), files::TexelFormat::bc3,
+                                          files::GreyLayout::white_alpha));
+      }
+  }
+  names.push_back(directory + "/level0 .. level" + std::to_string(levels - 1));
+  const std::string ctx = directory + ".ctx";
+  out.write(ctx, "# nephele cloud cover as a Celestia virtual texture: " + std::to_string(levels) + " levels of " +
+                     std::to_string(tile) + "-texel DXT5 tiles in " + options.name +
+                     "/levelK/tx_U_V.dds\nVirtualTexture\n{\n\tImageDirectory \"" + options.name +
+                     "\"\n\tBaseSplit 0\n\tTileSize " + std::to_string(tile) + "\n\tTileType \"dds\"\n}\n");
+  names.push_back(ctx);
+  return "Files: " + ctx + " (a Celestia virtual texture, the .ssc's CloudMap) and the folder " + directory +
+         "\n(levels 0 to " + std::to_string(levels - 1) + "; level K holds 2^(K+1) x 2^K tiles tx_U_V.dds of " +
+         std::to_string(tile) + " x " + std::to_string(tile) +
+         " texels, U from longitude -180 deg, V from the\nnorth; DDS DXT5, white with coverage in alpha, with "
+         "mips; the finest level " +
+         std::to_string(static_cast<long long>(tile) << levels) + " x " +
+         std::to_string(static_cast<long long>(tile) << (levels - 1)) + " texels) and " + folder + options.name +
+         ".ssc. The map is too wide for one texture,\nso no CloudNormalMap is written.\n";
+}
+
+}  // namespace
+
 void write_celestia(files::OutputSet& out, std::vector<std::string>& names, const ExportPreset& preset,
                     const CoverFaces& faces, const ExportOptions& options) {
+  const std::string folder = "extras/" + options.name + "/";
+  const int tile = options.celestia_tile > 0 ? options.celestia_tile : 4LL * faces.size > max_texture_edge ? 1024 : 0;
+  if (tile > 0) {
+    const std::string files = write_celestia_virtual_texture(out, names, faces, options, folder, tile);
+    const std::string ssc = folder + options.name + ".ssc";
+    out.write(ssc,
+              "# nephele cloud cover for Celestia: copy extras/" + options.name +
+                  " into Celestia's extras folder.\nModify \"Earth\" \"Sol\"\n{\n\tAtmosphere\n\t{\n\t\tCloudMap \"" +
+                  options.name + ".ctx\"\n\t\tCloudShadowDepth 1\n\t}\n}\n");
+    names.push_back(ssc);
+    add_readme(out, names, preset, faces,
+               files + "Install: copy the folder extras/" + options.name +
+                   " into Celestia's extras directory and restart Celestia (the\nvirtual texture's tiles load as "
+                   "they come into view).\n");
+    return;
+  }
   const core::ImageData map = equirect_image(faces, options);
   // White cloud colour, coverage in alpha; the equirect already has the prime meridian at the centre.
   core::ImageData rgba{map.width, map.height, 4, std::vector<float>(std::size_t(4) * map.pixels.size(), 1.0f)};
   for (std::size_t i = 0; i < map.pixels.size(); ++i) rgba.pixels[4 * i + 3] = std::clamp(map.pixels[i], 0.0f, 1.0f);
-  const std::string folder = "extras/" + options.name + "/";
   const std::string texture = folder + "textures/hires/" + options.name + ".png";
   files::ImageEncoding encoding = files::png_encoding(8);
   encoding.unassociated_alpha = true;  // PNG's alpha is unassociated: the colour stays white
