@@ -262,3 +262,27 @@ TEST_CASE("a crowded histogram bin is refined into fine bins and still gives the
   densities[12345] = 1.0f;
   check_calibration_matches_cpu(densities, size);
 }
+
+TEST_CASE("the texel weights of a 16384 face read to the face centre: the table passes a storage block's 128 MiB",
+          "[gpu-reduce]") {
+  test::test_context();
+  const int size = 16384;
+  const cover::GpuTexelWeights weights(size);
+  const cover::TexelWeightUnits& units = weights.units();
+  REQUIRE(units.octant.size() * 4 > (size_t(1) << 27));  // past llvmpipe's storage block limit
+  weights.bind();
+  // Texels from the corner to the centre, the last of the table among them.
+  const std::vector<glm::uvec4> texels = {{0, 0, 0, 0},       {5000, 3, 0, 0},    {8190, 8191, 0, 0},
+                                          {8191, 8191, 0, 0}, {8192, 8192, 0, 0}, {16383, 8191, 0, 0}};
+  const std::vector<glm::uvec4> gpu = test::probe<glm::uvec4>(
+      "#include \"../cover/texel_weights.glsl\"",
+      "uvec4(texel_weight(int(input_value.x), int(input_value.y), " + std::to_string(size) + "), 0u, 0u, 0u)", texels);
+  for (size_t k = 0; k < texels.size(); ++k) {
+    const glm::ivec2 texel(texels[k]);
+    const int a = std::min(texel.x, size - 1 - texel.x), b = std::min(texel.y, size - 1 - texel.y);
+    const int lo = std::min(a, b), hi = std::max(a, b);
+    INFO("texel " << texel.x << ", " << texel.y);
+    CHECK(gpu[k].x == units.octant[size_t(hi) * (hi + 1) / 2 + lo]);
+    CHECK(gpu[k].x > 0u);
+  }
+}

@@ -303,3 +303,20 @@ TEST_CASE("the streamed equirect map equals the GPU's within float rounding", "[
   for (size_t k = 0; k < gpu.size(); ++k) worst = std::max(worst, double(std::abs(gpu[k] - streamed[k])));
   CHECK(worst <= tolerance);
 }
+
+TEST_CASE("assemble reads the profile a tile task named by a relative path, from any directory", "[tiles][cli]") {
+  const test::TemporaryDirectory work(true);
+  files::write_text_file(work.path / "zonal.csv", "latitude_deg,fraction\n-60,0.8\n0,0.4\n60,0.7\n");
+  const std::string nephele = NEPHELE_EXECUTABLE;
+  // The task runs in the work directory and names the profile relatively; assemble runs elsewhere.
+  const test::Run task = test::run_command("cd " + work.path.string() + " && " + nephele +
+                                           " generate --size 8 --tiles 6 --tile 0-5 --profile zonal.csv --quiet "
+                                           "--out parts");
+  REQUIRE(task.exit_code == 0);
+  const test::Run assemble = test::run("assemble " + (work.path / "parts").string() + " --files faces --quiet --out " +
+                                       (work.path / "cover").string());
+  INFO(assemble.output);
+  REQUIRE(assemble.exit_code == 0);
+  const json::Value sidecar = json::parse(test::read_file(work.path / "cover" / "cover.json"));
+  CHECK(sidecar.at("parameters").at("profile").as_string() == (work.path / "zonal.csv").string());
+}

@@ -5,13 +5,14 @@
 // not depend on the order in which invocations add them.
 #include "reduction_words.glsl"
 
-layout(std430, binding = 5) readonly buffer TexelWeights {
-  uint texel_weight_units[];
-};
+// The table is a buffer texture (R32UI), not a shader storage block: a face of 16384 texels has
+// 8192 x 8193 / 2 entries, 134 MB, past the 128 MiB that drivers give a storage block (llvmpipe's
+// limit, where the face centres' weights read as 0); a buffer texture holds 2^27 texels there.
+layout(binding = 5) uniform usamplerBuffer texel_weights;
 
 uint texel_weight(int i, int j, int size) {
   int a = min(i, size - 1 - i);
   int b = min(j, size - 1 - j);
   int lo = min(a, b), hi = max(a, b);
-  return texel_weight_units[hi * (hi + 1) / 2 + lo];
+  return texelFetch(texel_weights, hi * (hi + 1) / 2 + lo).x;
 }

@@ -89,12 +89,17 @@ TexelWeightUnits texel_weight_units(int size) {
   const int half = (size + 1) / 2;
   std::vector<double> fractions;
   fractions.reserve(static_cast<size_t>(half) * (half + 1) / 2);
-  for (int b = 0; b < half; ++b)
+  // The antiderivative at the edges (a, b) and (a, b + 1), row by row: each corner's value is
+  // computed once (not four times), with the same arguments in the same order, so the same bits.
+  std::vector<double> row(static_cast<size_t>(half) + 1), next_row(static_cast<size_t>(half) + 1);
+  for (int a = 0; a <= 1 && a <= half; ++a) row[a] = area_antiderivative(edges[a], edges[0]);
+  for (int b = 0; b < half; ++b) {
+    for (int a = 0; a <= b + 1; ++a) next_row[a] = area_antiderivative(edges[a], edges[b + 1]);
+    if (b + 1 <= half) row[b + 1] = area_antiderivative(edges[b + 1], edges[b]);
     for (int a = 0; a <= b; ++a)
-      fractions.push_back((area_antiderivative(edges[a + 1], edges[b + 1]) -
-                           area_antiderivative(edges[a], edges[b + 1]) - area_antiderivative(edges[a + 1], edges[b]) +
-                           area_antiderivative(edges[a], edges[b])) /
-                          (4.0 * M_PI));
+      fractions.push_back((next_row[a + 1] - next_row[a] - row[a + 1] + row[a]) / (4.0 * M_PI));
+    std::swap(row, next_row);
+  }
   TexelWeightUnits units;
   units.size = size;
   // The largest texel is at the face's centre, in the octant: the same double as the CPU's.
@@ -117,15 +122,24 @@ double reduction_gpu_bytes(int size) {
 }
 
 GpuTexelWeights::GpuTexelWeights(int size) : units_(texel_weight_units(size)) {
+  GLint most = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &most);
+  if (most > 0 && units_.octant.size() > static_cast<size_t>(most))
+    throw std::runtime_error("the texel weight table of a face of " + std::to_string(size) + " has " +
+                             std::to_string(units_.octant.size()) + " entries, over this driver's " +
+                             std::to_string(most) + " buffer texture texels");
   glCreateBuffers(1, &buffer_);
   glNamedBufferStorage(buffer_, static_cast<GLsizeiptr>(units_.octant.size() * 4), units_.octant.data(), 0);
+  glCreateTextures(GL_TEXTURE_BUFFER, 1, &texture_);
+  glTextureBuffer(texture_, GL_R32UI, buffer_);
 }
 
-GpuTexelWeights::~GpuTexelWeights() { glDeleteBuffers(1, &buffer_); }
-
-void GpuTexelWeights::bind() const {
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, shader_bindings::cover_texel_weights::texel_weights, buffer_);
+GpuTexelWeights::~GpuTexelWeights() {
+  glDeleteTextures(1, &texture_);
+  glDeleteBuffers(1, &buffer_);
 }
+
+void GpuTexelWeights::bind() const { glBindTextureUnit(shader_bindings::cover_texel_weights::texel_weights, texture_); }
 
 GpuCalibration::GpuCalibration(int size) : size_(size), weights_(size) {
   glCreateBuffers(1, &band_thresholds_);

@@ -45,7 +45,8 @@ struct TexelWeightUnits {
 };
 TexelWeightUnits texel_weight_units(int size);
 
-// The weight table uploaded once and bound to the binding texel_weights.glsl reads.
+// The weight table uploaded once (a buffer texture, R32UI) and bound to the texture unit
+// texel_weights.glsl reads.
 class GpuTexelWeights {
  public:
   explicit GpuTexelWeights(int size);
@@ -58,6 +59,7 @@ class GpuTexelWeights {
  private:
   TexelWeightUnits units_;
   unsigned buffer_ = 0;
+  unsigned texture_ = 0;  // a buffer texture of buffer_ (texel_weights.glsl)
 };
 
 // One part of a density map (R32F) that the reductions read: a whole cube map, or a tile of it

@@ -216,8 +216,9 @@ std::optional<TilePart> find_tile_part(const std::filesystem::path& directory, i
   } catch (const core::InputFileError&) {
     return std::nullopt;  // cut short or damaged: made again
   }
-  if (part.tile_count != tile_count || part.tile.index != index ||
-      json::write(part.identity.at("parameters")) != json::write(identity.at("parameters")))
+  const json::Value* parameters = part.identity.find("parameters");
+  if (part.tile_count != tile_count || part.tile.index != index || !parameters ||
+      json::write(*parameters) != json::write(identity.at("parameters")))
     throw core::InputFileError(path.string() +
                                ": a part of another cover (other parameters or tile count); use another --out "
                                "directory, or remove the old parts");

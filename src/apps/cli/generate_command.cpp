@@ -113,7 +113,9 @@ struct GenerateSetup {
   std::vector<std::string> cover_arguments;  // the arguments without --tile and --out (tile parts record them)
 };
 
-// The arguments that define the cover: all but --tile, --out and the reporting flags.
+// The arguments that define the cover: all but --tile, --out and the reporting flags. Files
+// named by --profile and --surface are made absolute, so that assemble, run elsewhere, reads
+// the same ones.
 std::vector<std::string> cover_arguments(const std::vector<std::string>& arguments) {
   std::vector<std::string> kept;
   const std::string tile = params::run::tile.option(), out = params::run::cover_out.option();
@@ -125,7 +127,21 @@ std::vector<std::string> cover_arguments(const std::vector<std::string>& argumen
       continue;
     }
     if (a == params::run::quiet.option() || a == params::run::verbose.option()) continue;
-    kept.push_back(a);
+    bool file_value = false;
+    for (const params::Parameter* file_option : {&params::cover::profile, &params::cover::surface}) {
+      const std::string option = file_option->option();
+      const bool joined = a.rfind(option + "=", 0) == 0;
+      if ((a != option || k + 1 >= arguments.size()) && !joined) continue;
+      const std::string value = joined ? a.substr(option.size() + 1) : arguments[k + 1];
+      std::error_code error;
+      kept.push_back(option);
+      kept.push_back(std::filesystem::is_regular_file(value, error) ? std::filesystem::absolute(value).string()
+                                                                    : value);
+      if (!joined) ++k;
+      file_value = true;
+      break;
+    }
+    if (!file_value) kept.push_back(a);
   }
   return kept;
 }
