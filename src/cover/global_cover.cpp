@@ -69,11 +69,16 @@ GlobalCover::GlobalCover(const CoverParameters& parameters, std::optional<CubeRe
   // Curl mode sampled reads the curl map anywhere on the sphere: a tile does not hold it.
   if (!region_.whole_cube() && parameters_.curl_mode == CurlMode::sampled)
     throw std::invalid_argument("GlobalCover: curl mode sampled needs the whole cube map, not a tile");
+  make_fields();
+}
+
+void GlobalCover::make_fields() {
   identity_field_ = make_field(GL_RGBA32F);
   curl_field_ = make_field(GL_RGBA32F);
   warp_field_ = make_field(GL_RGBA32F);
   density_field_ = make_field(GL_R32F);
   cover_field_ = make_field(GL_R32F);
+  if (young_warp_field_.id()) young_warp_field_ = make_field(GL_RGBA32F);
 }
 
 void GlobalCover::set_tile(const CubeRegion& tile) {
@@ -83,13 +88,7 @@ void GlobalCover::set_tile(const CubeRegion& tile) {
   region_ = tile;
   diagnostics_.reset();
   density_range_current_ = false;
-  if (same_shape) return;
-  identity_field_ = make_field(GL_RGBA32F);
-  curl_field_ = make_field(GL_RGBA32F);
-  warp_field_ = make_field(GL_RGBA32F);
-  density_field_ = make_field(GL_R32F);
-  cover_field_ = make_field(GL_R32F);
-  if (young_warp_field_.id()) young_warp_field_ = make_field(GL_RGBA32F);
+  if (!same_shape) make_fields();
 }
 
 gpu::Texture GlobalCover::make_field(GLenum internal_format) const {
@@ -319,14 +318,12 @@ void GlobalCover::dispatch_warp(const gpu::Texture& starts, const gpu::Texture& 
   }
   // Long integrations run over several dispatches (cover::shader_loop_budget): each one
   // continues from the points of the last, alternating between `warped` and a scratch map.
-  // `warped` is a map of the cover's region, or (warp_points) a cube map of any size.
-  const bool own_region = &warped == &warp_field_;
   const int size = warped.width();
   const int per_dispatch = cover::steps_per_dispatch(p.integrator, p.curl_mode, p.potential.octaves);
   gpu::Texture scratch;
   auto target = [&](bool into_warped) -> const gpu::Texture& {
     if (into_warped) return warped;
-    if (!scratch.id()) scratch = own_region ? make_field(GL_RGBA32F) : gpu::Texture::cube(size, GL_RGBA32F);
+    if (!scratch.id()) scratch = gpu::Texture::shaped_like(warped, GL_RGBA32F);
     return scratch;
   };
   auto dispatch = [&](const gpu::Texture& from, const gpu::Texture& to) {
@@ -354,7 +351,7 @@ void GlobalCover::dispatch_warp(const gpu::Texture& starts, const gpu::Texture& 
   }
   // Adaptive: each texel keeps its state between dispatches; the rounds end when no texel is
   // unfinished below its sub-step limit (a counter the shader increments).
-  const gpu::Texture state = own_region ? make_field(GL_RGBA32F) : gpu::Texture::cube(size, GL_RGBA32F);
+  const gpu::Texture state = gpu::Texture::shaped_like(warped, GL_RGBA32F);
   state.bind_image_layers(shader_bindings::cover_warp::adaptive_state, GL_READ_WRITE);
   GLuint counter = 0;
   glCreateBuffers(1, &counter);

@@ -99,8 +99,10 @@ class GlobalCover {
   void timed(const std::string& pass, Work&& work);
   // start_velocity_in_curl: the curl map holds the velocity at `starts` (run_warp(true) only).
   void dispatch_warp(const gpu::Texture& starts, const gpu::Texture& warped, bool start_velocity_in_curl = false);
-  // A map of the region: a cube map, or a 2D array of the tile's rows.
+  // A map of the region: a cube map, or a 2D array of the tile's rows; make_fields (re)makes
+  // every map the passes write.
   gpu::Texture make_field(GLenum internal_format) const;
+  void make_fields();
   // Dispatches a pass over every texel of the region's maps (owned and halo).
   void dispatch_texels(const gpu::ComputeProgram& program) const;
   void upload_surface_bias();  // the land/ocean bias grid (surface_bias.hpp), once

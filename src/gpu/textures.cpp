@@ -61,6 +61,12 @@ Texture Texture::layered(int width, int height, int layers, GLenum internal_form
   return t;
 }
 
+Texture Texture::shaped_like(const Texture& other, GLenum internal_format) {
+  if (other.target_ == GL_TEXTURE_CUBE_MAP) return cube(other.width_, internal_format);
+  if (other.target_ == GL_TEXTURE_2D) return plane(other.width_, other.height_, internal_format);
+  return layered(other.width_, other.height_, other.layers_, internal_format);
+}
+
 Texture::~Texture() {
   if (layer_view_) glDeleteTextures(1, &layer_view_);
   if (id_) glDeleteTextures(1, &id_);

@@ -14,6 +14,8 @@ class Texture {
   static Texture plane(int width, int height, GLenum internal_format);
   // A 2D array texture of `layers` width x height layers (one mip level).
   static Texture layered(int width, int height, int layers, GLenum internal_format);
+  // A texture of `other`'s kind and extent (cube map, plane or 2D array) in `internal_format`.
+  static Texture shaped_like(const Texture& other, GLenum internal_format);
   ~Texture();
   Texture(Texture&& other) noexcept;
   Texture& operator=(Texture&& other) noexcept;
