@@ -442,7 +442,7 @@ void GlobalCover::run_density() {
     // reduction_strip texels of a column of the region's owned rows.
     coverage_.calibration().bind_density_range();
     set_region(density_program_, region_);
-    const int strip = reduction_strip(parameters_.size);
+    const int strip = density_strip(parameters_.size);
     density_program_.set("u_strip", strip);
     density_program_.dispatch_covering(parameters_.size, (region_.owned_rows() + strip - 1) / strip, region_.layers);
     gpu::image_barrier();

@@ -75,6 +75,8 @@ int reduction_strip(int size) {
 
 int diagnosis_strip(int size) { return 4 * reduction_strip(size); }
 
+int density_strip(int size) { return std::min(reduction_strip(size), 96); }
+
 double TexelWeightUnits::fraction(std::uint64_t units) const {
   return std::ldexp(static_cast<double>(units), -scale_bits);
 }

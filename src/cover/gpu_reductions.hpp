@@ -28,6 +28,12 @@ int reduction_strip(int size);
 // double, and on llvmpipe fewer, longer strips (fewer partial records to store and fold) made
 // the pass about 17 % faster at 1024 per face. 4096 per face still has 2^18 strips for a GPU.
 int diagnosis_strip(int size);
+// The density pass's strips: reduction_strip, at most 96 texels. Each texel runs the noise's
+// loops (a Worley search per octave, two cloud layers), and llvmpipe ends an invocation's loops
+// silently after 65535 iterations in all (integrators.hpp, shader_loop_budget): at 16384 per
+// face the 1536-texel strips lost the second half of every strip (density 0, cloud fraction
+// 0.588 instead of 0.67). At 4096 and below the strip is reduction_strip's, as before.
+int density_strip(int size);
 
 // Texel solid angles of one face as integers: units of 2^-scale_bits of the sphere, one entry
 // per texel of the octant 0 <= a <= b < ceil(N/2) (index b (b + 1)/2 + a; the other texels
