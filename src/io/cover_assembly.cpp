@@ -70,6 +70,17 @@ double assembly_host_bytes(int size, int tiles, const CoverFileOptions& options,
   return bytes;
 }
 
+void check_assembly_fits(int size, int tiles, const CoverFileOptions& options, double budget) {
+  const double host = assembly_host_bytes(size, tiles, options, budget);
+  if (budget <= 0 || host <= budget) return;
+  throw core::InputError("--memory-budget: the files of a cover of " + std::to_string(size) + " per face in " +
+                         std::to_string(tiles) + " tiles hold " +
+                         std::to_string(static_cast<long>(std::ceil(host / 1048576.0))) +
+                         " MiB at once (a tile's densities and cover, the preview's cube), over the budget of " +
+                         std::to_string(static_cast<long>(budget / 1048576.0)) +
+                         " MiB; write fewer --files, use more --tiles or raise --memory-budget");
+}
+
 std::vector<TilePart> read_all_tile_parts(const std::filesystem::path& directory, const std::string& field) {
   std::error_code error;
   if (!std::filesystem::is_directory(directory, error))

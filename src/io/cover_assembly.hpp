@@ -21,6 +21,9 @@ namespace nephele::io {
 // (cover/streamed_equirect.hpp).
 double assembly_host_bytes(int size, int tiles, const CoverFileOptions& options, double budget);
 double whole_equirect_bytes(int size);
+// Throws core::InputError naming --memory-budget when the assembly's host bytes pass `budget`
+// (0: no budget); generate and assemble check it before any work.
+void check_assembly_fits(int size, int tiles, const CoverFileOptions& options, double budget);
 // Whether the equirect EXR is made from the whole cover (on the GPU, as generate's whole map),
 // which takes whole_equirect_bytes, or streamed from scratch faces on the CPU.
 bool equirect_from_whole_cover(int size, int tiles, const CoverFileOptions& options, double budget);

@@ -62,13 +62,7 @@ int run_assemble(const std::vector<std::string>& arguments) {
   files::check_output_files(directory, io::cover_file_names(file_options), params::run::assemble_out.option());
   gpu::EglContext context;
   const double budget = budget_mib > 0 ? budget_mib * 1048576.0 : cover::default_memory_budget_bytes(context);
-  const double host = io::assembly_host_bytes(parameters.size, static_cast<int>(parts.size()), file_options, budget);
-  if (budget > 0 && host > budget)
-    throw UsageError(params::run::memory_budget.option() + ": the files of a cover of " +
-                     std::to_string(parameters.size) + " per face hold " +
-                     std::to_string(static_cast<long>(std::ceil(host / 1048576.0))) +
-                     " MiB at once (a polar face for the equirect map), over the budget of " +
-                     std::to_string(static_cast<long>(budget / 1048576.0)) + " MiB; write --files faces,png");
+  io::check_assembly_fits(parameters.size, static_cast<int>(parts.size()), file_options, budget);
   std::error_code error;
   std::filesystem::create_directories(directory, error);
   if (error)

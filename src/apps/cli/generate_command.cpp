@@ -316,13 +316,7 @@ int run_in_tiles(const GenerateSetup& setup, const gpu::EglContext& context, dou
   const int count = setup.tiles > 0 ? setup.tiles : cover::tile_count_for_budget(p.size, p.flow, budget);
   const cover::CubeTiling tiling{p.size, count};
   check_tiles_fit(p, tiling, budget);
-  const double host = io::assembly_host_bytes(p.size, count, setup.file_options, budget);
-  if (budget > 0 && host > budget)
-    throw UsageError(params::run::memory_budget.option() + ": the files of a cover of " + std::to_string(p.size) +
-                     " per face hold " + std::to_string(static_cast<long>(std::ceil(host / 1048576.0))) +
-                     " MiB at once (a polar face for the equirect map), over the budget of " +
-                     std::to_string(static_cast<long>(budget / 1048576.0)) +
-                     " MiB; write --files faces,png or raise --memory-budget");
+  io::check_assembly_fits(p.size, count, setup.file_options, budget);
   if (!setup.presets.empty())
     throw UsageError(params::run::cover_exports.option() +
                      ": not for a cover computed in tiles; export its files "
