@@ -3,6 +3,7 @@
 // tests/texture_readers.hpp and decoded by tests/block_decoding.hpp: both written from the
 // specifications, neither sharing code with the writers.
 #include <OpenImageIO/imageio.h>
+#include <unistd.h>
 
 #include <catch2/catch.hpp>
 #include <algorithm>
@@ -357,6 +358,52 @@ TEST_CASE("OpenImageIO's DDS reader decodes the BC4 and BC3 cubes as the spec de
         }
     }
   }
+}
+
+TEST_CASE("a container written face by face in bands of rows holds the bytes of the whole chain's encoding",
+          "[fast][texture_containers]") {
+  // An odd size, so that levels have partial 4 x 4 blocks and the last band is short.
+  const int n = 37, levels = files::full_mip_count(n, n);
+  const std::vector<float> cube = test_cube(n);
+  const files::MipChain whole = files::build_mip_chain(cube, n, n, 6, 1);
+  const std::filesystem::path directory =
+      std::filesystem::temp_directory_path() / ("nephele_container_writer_" + std::to_string(::getpid()));
+  std::filesystem::remove_all(directory);
+  std::filesystem::create_directories(directory);
+  const struct {
+    files::TexelFormat format;
+    files::GreyLayout layout;
+  } cases[] = {
+      {files::TexelFormat::bc4, files::GreyLayout::grey},   {files::TexelFormat::bc3, files::GreyLayout::white_alpha},
+      {files::TexelFormat::rgba8, files::GreyLayout::grey}, {files::TexelFormat::r8, files::GreyLayout::grey},
+      {files::TexelFormat::r16f, files::GreyLayout::grey},  {files::TexelFormat::r32f, files::GreyLayout::grey}};
+  int written = 0;
+  for (const bool ktx2 : {true, false})
+    for (const auto& c : cases)
+      for (const int band : {4, 8, 0}) {
+        INFO((ktx2 ? "ktx2" : "dds") << " format " << int(c.format) << " band " << band);
+        const std::filesystem::path path = directory / ("file" + std::to_string(written++));
+        files::ContainerWriter writer(
+            path, ktx2 ? files::ktx2_layout(n, n, 6, levels, c.format) : files::dds_layout(n, n, 6, levels, c.format),
+            c.format, c.layout, band);
+        for (const int f : {3, 0, 5, 1, 4, 2}) {  // any order of faces
+          const float* face = cube.data() + std::size_t(f) * n * n;
+          writer.write_layer(f, files::build_mip_chain(std::vector<float>(face, face + n * n), n, n, 1, 1));
+        }
+        writer.close();
+        std::ifstream in(path, std::ios::binary);
+        const std::string file((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+        const std::vector<unsigned char> expected =
+            ktx2 ? files::encode_ktx2(whole, c.format, c.layout) : files::encode_dds(whole, c.format, c.layout);
+        REQUIRE(file.size() == expected.size());
+        CHECK(file == std::string(expected.begin(), expected.end()));
+      }
+  // A face left out is an error, not a file with a hole of zeros.
+  files::ContainerWriter partial(directory / "partial", files::dds_layout(n, n, 6, levels, files::TexelFormat::r8),
+                                 files::TexelFormat::r8);
+  partial.write_layer(0, files::build_mip_chain(std::vector<float>(cube.begin(), cube.begin() + n * n), n, n, 1, 1));
+  CHECK_THROWS_AS(partial.close(), std::logic_error);
+  std::filesystem::remove_all(directory);
 }
 
 }  // namespace nephele

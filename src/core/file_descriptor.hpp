@@ -63,4 +63,22 @@ inline bool write_exactly(int fd, const void* data, std::size_t bytes) {
   return true;
 }
 
+// Writes all `bytes` at `offset` (pwrite), retrying after signals; false at an error, with errno
+// saying which.
+inline bool write_exactly_at(int fd, const void* data, std::size_t bytes, off_t offset) {
+  const auto* p = static_cast<const char*>(data);
+  while (bytes > 0) {
+    const ssize_t n = ::pwrite(fd, p, bytes, offset);
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) return false;
+    if (n == 0) {
+      errno = EIO;
+      return false;
+    }
+    p += n, offset += n;
+    bytes -= static_cast<std::size_t>(n);
+  }
+  return true;
+}
+
 }  // namespace nephele::core

@@ -1,8 +1,8 @@
 #include "cover/streamed_equirect.hpp"
 
 #include <algorithm>
-#include <thread>
 
+#include "core/parallel_rows.hpp"
 #include "cover/equirect.hpp"
 #include "shader_math/shader_math.hpp"
 
@@ -15,20 +15,14 @@ void equirect_region(int face_size, const float* const faces[6], int width, cons
   source.face_rows = faces;
   source.first_row = first_row;
   // Each thread a share of the region's rows.
-  const int threads = static_cast<int>(std::max(1u, std::min(16u, std::thread::hardware_concurrency())));
-  const auto sample = [&](int r0, int r1) {
+  core::parallel_rows(region.height, [&](int r0, int r1) {
     for (int r = r0; r < r1; ++r) {
       const glm::vec2 row = rows[static_cast<size_t>(region.y + r)];
       for (int c = 0; c < region.width; ++c)
         out[static_cast<size_t>(r) * region.width + c] =
             glsl::sample_cube_bilinear(glsl::equirect_direction(region.x + c, width, row), source).x;
     }
-  };
-  std::vector<std::thread> pool;
-  for (int t = 1; t < threads; ++t)
-    pool.emplace_back(sample, t * region.height / threads, (t + 1) * region.height / threads);
-  sample(0, region.height / threads);
-  for (std::thread& thread : pool) thread.join();
+  });
 }
 
 void streamed_equirect(int face_size, const float* const faces[6], int width, int height, const TakeMapRows& take,

@@ -1,5 +1,8 @@
 #include "files/texture_containers.hpp"
 
+#include <fcntl.h>
+#include <unistd.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -55,50 +58,22 @@ void check_chain(const MipChain& chain, TexelFormat format) {
     throw std::invalid_argument("texture container: the mip chain's channels do not match the format");
 }
 
-// Image `layer` of `level` with format_channels(format) channels: a one-channel chain is spread
-// into RGBA by `layout`.
-std::vector<float> image_in_channels(const MipChain& chain, int level, int layer, TexelFormat format,
-                                     GreyLayout layout) {
-  const float* image = chain.image(level, layer);
-  const std::size_t floats = chain.image_floats(level);
-  const int channels = format_channels(format);
-  if (channels == chain.channels) return std::vector<float>(image, image + floats);
-  std::vector<float> rgba(floats * 4);
-  for (std::size_t i = 0; i < floats; ++i) {
-    const float v = image[i], colour = layout == GreyLayout::white_alpha ? 1.0f : v;
-    rgba[4 * i] = rgba[4 * i + 1] = rgba[4 * i + 2] = colour;
-    rgba[4 * i + 3] = v;
-  }
-  return rgba;
+void check_layers(int layers, const char* container) {
+  if (layers != 1 && layers != 6) throw std::invalid_argument(std::string(container) + ": one image or a cube of six");
 }
 
-// The bytes of image `layer` of `level` in `format`, appended.
-void put_image(std::vector<unsigned char>& out, const MipChain& chain, int level, int layer, TexelFormat format,
-               GreyLayout layout) {
-  const std::vector<float> texels = image_in_channels(chain, level, layer, format, layout);
-  const int width = chain.level_width(level), height = chain.level_height(level);
-  if (is_block_compressed(format)) {
-    const std::vector<unsigned char> blocks = compress_image(texels.data(), width, height, block_format(format));
-    out.insert(out.end(), blocks.begin(), blocks.end());
-    return;
-  }
-  for (float v : texels) {
-    switch (format) {
-      case TexelFormat::r16f: {
-        const std::uint16_t h = half_from_float(v);
-        out.push_back((unsigned char)(h & 0xff));
-        out.push_back((unsigned char)(h >> 8));
-        break;
-      }
-      case TexelFormat::r32f: {
-        std::uint32_t bits;
-        std::memcpy(&bits, &v, 4);
-        put32(out, bits);
-        break;
-      }
-      default: out.push_back(unorm8(v));  // r8, rgba8
+// A chain's images at their layout's places in one buffer.
+std::vector<unsigned char> encode_in_memory(const ContainerLayout& layout, const MipChain& chain, TexelFormat format,
+                                            GreyLayout grey) {
+  std::vector<unsigned char> out(layout.file_bytes, 0);
+  std::copy(layout.header.begin(), layout.header.end(), out.begin());
+  for (int k = 0; k < chain.count(); ++k)
+    for (int layer = 0; layer < chain.layers; ++layer) {
+      const std::vector<unsigned char> bytes =
+          encode_rows(chain.image(k, layer), chain.level_width(k), chain.level_height(k), chain.channels, format, grey);
+      std::copy(bytes.begin(), bytes.end(), out.begin() + std::ptrdiff_t(layout.offsets[k][layer]));
     }
-  }
+  return out;
 }
 
 // One sample of a Data Format Descriptor (Khronos Data Format Specification 1.3, section 5.15).
@@ -201,29 +176,71 @@ float float_from_half(std::uint16_t h) {
   return (h & 0x8000) ? -magnitude : magnitude;
 }
 
-std::vector<unsigned char> encode_ktx2(const MipChain& chain, TexelFormat format, GreyLayout layout) {
-  check_chain(chain, format);
-  const bool cube = chain.layers == 6;
-  if (!cube && chain.layers != 1) throw std::invalid_argument("KTX2: one image or a cube of six");
+std::uint64_t image_bytes(int width, int height, TexelFormat format) {
+  if (is_block_compressed(format)) return compressed_image_bytes(width, height, block_format(format));
+  return std::uint64_t(width) * std::uint64_t(height) * texel_block_bytes(format);
+}
+
+std::vector<unsigned char> encode_rows(const float* texels, int width, int rows, int channels, TexelFormat format,
+                                       GreyLayout layout) {
+  const std::size_t count = std::size_t(width) * std::size_t(rows);
+  std::vector<float> spread;
+  if (channels != format_channels(format)) {  // one channel into RGBA
+    spread.resize(count * 4);
+    for (std::size_t i = 0; i < count; ++i) {
+      const float v = texels[i], colour = layout == GreyLayout::white_alpha ? 1.0f : v;
+      spread[4 * i] = spread[4 * i + 1] = spread[4 * i + 2] = colour;
+      spread[4 * i + 3] = v;
+    }
+    texels = spread.data();
+  }
+  if (is_block_compressed(format)) return compress_image(texels, width, rows, block_format(format));
+  std::vector<unsigned char> out;
+  out.reserve(std::size_t(image_bytes(width, rows, format)));
+  const std::size_t values = count * std::size_t(format_channels(format));
+  for (std::size_t i = 0; i < values; ++i) {
+    const float v = texels[i];
+    switch (format) {
+      case TexelFormat::r16f: {
+        const std::uint16_t h = half_from_float(v);
+        out.push_back((unsigned char)(h & 0xff));
+        out.push_back((unsigned char)(h >> 8));
+        break;
+      }
+      case TexelFormat::r32f: {
+        std::uint32_t bits;
+        std::memcpy(&bits, &v, 4);
+        put32(out, bits);
+        break;
+      }
+      default: out.push_back(unorm8(v));  // r8, rgba8
+    }
+  }
+  return out;
+}
+
+ContainerLayout ktx2_layout(int width, int height, int layers, int levels, TexelFormat format) {
+  check_layers(layers, "KTX2");
+  const bool cube = layers == 6;
   const bool block = is_block_compressed(format);
   const std::uint32_t bytes = texel_block_bytes(format);
-  const std::uint32_t levels = std::uint32_t(chain.count());
-  std::vector<unsigned char> out;
+  ContainerLayout layout;
+  std::vector<unsigned char>& out = layout.header;
   // Section 3.1: the file identifier «KTX 20»\r\n\x1A\n.
   const unsigned char identifier[12] = {0xAB, 0x4B, 0x54, 0x58, 0x20, 0x32, 0x30, 0xBB, 0x0D, 0x0A, 0x1A, 0x0A};
   for (unsigned char byte : identifier) out.push_back(byte);
   // Section 3.2, header: vkFormat, typeSize (1 for block formats and 8-bit data), pixelWidth,
   // pixelHeight, pixelDepth, layerCount, faceCount, levelCount, supercompressionScheme.
   const std::uint32_t type_size = block || format == TexelFormat::rgba8 ? 1u : bytes;
-  for (std::uint32_t v : {vk_format(format), type_size, std::uint32_t(chain.width), std::uint32_t(chain.height), 0u, 0u,
-                          cube ? 6u : 1u, levels, 0u})
+  for (std::uint32_t v : {vk_format(format), type_size, std::uint32_t(width), std::uint32_t(height), 0u, 0u,
+                          cube ? 6u : 1u, std::uint32_t(levels), 0u})
     put32(out, v);
   // Section 3.3, index: dfd offset and length, kvd offset and length, sgd offset and length (64-bit).
   const std::size_t index_at = out.size();
   put32(out, 0), put32(out, 0), put32(out, 0), put32(out, 0), put64(out, 0), put64(out, 0);
   // Section 3.4, level index: {byteOffset, byteLength, uncompressedByteLength} for level 0 first.
   const std::size_t level_index_at = out.size();
-  for (std::uint32_t k = 0; k < levels; ++k) put64(out, 0), put64(out, 0), put64(out, 0);
+  for (int k = 0; k < levels; ++k) put64(out, 0), put64(out, 0), put64(out, 0);
 
   // Section 3.5 and the Khronos Data Format Specification 1.3, section 5 (basic descriptor
   // block) and the chapters on S3TC and RGTC for the block formats' samples.
@@ -264,43 +281,45 @@ std::vector<unsigned char> encode_ktx2(const MipChain& chain, TexelFormat format
 
   // Section 3.9: levels from the smallest to the base, each aligned to lcm(texel block size, 4);
   // a cube level is its faces in order.
-  const std::size_t alignment = std::lcm<std::size_t>(bytes, 4);
-  for (int k = int(levels) - 1; k >= 0; --k) {
-    pad_to(out, alignment);
-    const std::size_t level_at = out.size();
-    for (int layer = 0; layer < chain.layers; ++layer) put_image(out, chain, k, layer, format, layout);
-    const std::size_t level_length = out.size() - level_at;
-    set64(out, level_index_at + 24 * k + 0, level_at);
-    set64(out, level_index_at + 24 * k + 8, level_length);
-    set64(out, level_index_at + 24 * k + 16, level_length);
+  const std::uint64_t alignment = std::lcm<std::uint64_t>(bytes, 4);
+  layout.offsets.assign(std::size_t(levels), std::vector<std::uint64_t>(std::size_t(layers)));
+  std::uint64_t at = out.size();
+  for (int k = levels - 1; k >= 0; --k) {
+    at = (at + alignment - 1) / alignment * alignment;
+    const std::uint64_t image = image_bytes(std::max(1, width >> k), std::max(1, height >> k), format);
+    for (int layer = 0; layer < layers; ++layer) layout.offsets[k][layer] = at + image * layer;
+    set64(out, level_index_at + 24 * k + 0, at);
+    set64(out, level_index_at + 24 * k + 8, image * layers);
+    set64(out, level_index_at + 24 * k + 16, image * layers);
+    at += image * layers;
   }
+  layout.file_bytes = at;
   set32(out, index_at + 0, std::uint32_t(dfd_at));
   set32(out, index_at + 4, std::uint32_t(dfd_length));
   set32(out, index_at + 8, std::uint32_t(kvd_at));
   set32(out, index_at + 12, std::uint32_t(kvd_length));
-  return out;
+  return layout;
 }
 
-std::vector<unsigned char> encode_dds(const MipChain& chain, TexelFormat format, GreyLayout layout) {
-  check_chain(chain, format);
-  const bool cube = chain.layers == 6;
-  if (!cube && chain.layers != 1) throw std::invalid_argument("DDS: one image or a cube of six");
+ContainerLayout dds_layout(int width, int height, int layers, int levels, TexelFormat format) {
+  check_layers(layers, "DDS");
+  const bool cube = layers == 6;
   const bool block = is_block_compressed(format);
   const bool legacy = block || format == TexelFormat::rgba8;
   const std::uint32_t bytes = texel_block_bytes(format);
-  std::vector<unsigned char> out;
+  ContainerLayout layout;
+  std::vector<unsigned char>& out = layout.header;
   put32(out, 0x20534444u);  // "DDS "
   // DDS_HEADER (124 bytes). Flags: CAPS | HEIGHT | WIDTH | PIXELFORMAT | MIPMAPCOUNT, and PITCH
   // for uncompressed data or LINEARSIZE for blocks.
   put32(out, 124);
   put32(out, 0x1u | 0x2u | 0x4u | 0x1000u | 0x20000u | (block ? 0x80000u : 0x8u));
-  put32(out, std::uint32_t(chain.height));  // dwHeight
-  put32(out, std::uint32_t(chain.width));   // dwWidth
+  put32(out, std::uint32_t(height));  // dwHeight
+  put32(out, std::uint32_t(width));   // dwWidth
   // dwPitchOrLinearSize: bytes per row, or the base level's bytes for block formats.
-  put32(out, block ? std::uint32_t(compressed_image_bytes(chain.width, chain.height, block_format(format)))
-                   : std::uint32_t(chain.width) * bytes);
+  put32(out, block ? std::uint32_t(image_bytes(width, height, format)) : std::uint32_t(width) * bytes);
   put32(out, 0);                               // dwDepth
-  put32(out, std::uint32_t(chain.count()));    // dwMipMapCount
+  put32(out, std::uint32_t(levels));           // dwMipMapCount
   for (int i = 0; i < 11; ++i) put32(out, 0);  // dwReserved1
   // DDS_PIXELFORMAT (32 bytes).
   put32(out, 32);
@@ -320,7 +339,7 @@ std::vector<unsigned char> encode_dds(const MipChain& chain, TexelFormat format,
   }
   // dwCaps: DDSCAPS_TEXTURE, DDSCAPS_MIPMAP and DDSCAPS_COMPLEX with more than one level, COMPLEX
   // for a cube; dwCaps2: DDSCAPS2_CUBEMAP and all six face bits.
-  const bool mips = chain.count() > 1;
+  const bool mips = levels > 1;
   put32(out, 0x1000u | (mips ? 0x400000u : 0u) | (mips || cube ? 0x8u : 0u));
   put32(out, cube ? 0x200u | 0xFC00u : 0u);
   put32(out, 0), put32(out, 0), put32(out, 0);  // dwCaps3, dwCaps4, dwReserved2
@@ -330,9 +349,77 @@ std::vector<unsigned char> encode_dds(const MipChain& chain, TexelFormat format,
     const std::uint32_t dxgi = format == TexelFormat::r16f ? 54u : format == TexelFormat::r32f ? 41u : 61u;
     put32(out, dxgi), put32(out, 3), put32(out, cube ? 0x4u : 0u), put32(out, 1), put32(out, 0);
   }
-  for (int layer = 0; layer < chain.layers; ++layer)
-    for (int k = 0; k < chain.count(); ++k) put_image(out, chain, k, layer, format, layout);
-  return out;
+  layout.offsets.assign(std::size_t(levels), std::vector<std::uint64_t>(std::size_t(layers)));
+  std::uint64_t at = out.size();
+  for (int layer = 0; layer < layers; ++layer)
+    for (int k = 0; k < levels; ++k) {
+      layout.offsets[k][layer] = at;
+      at += image_bytes(std::max(1, width >> k), std::max(1, height >> k), format);
+    }
+  layout.file_bytes = at;
+  return layout;
+}
+
+std::vector<unsigned char> encode_ktx2(const MipChain& chain, TexelFormat format, GreyLayout layout) {
+  check_chain(chain, format);
+  return encode_in_memory(ktx2_layout(chain.width, chain.height, chain.layers, chain.count(), format), chain, format,
+                          layout);
+}
+
+std::vector<unsigned char> encode_dds(const MipChain& chain, TexelFormat format, GreyLayout layout) {
+  check_chain(chain, format);
+  return encode_in_memory(dds_layout(chain.width, chain.height, chain.layers, chain.count(), format), chain, format,
+                          layout);
+}
+
+namespace {
+
+std::runtime_error write_error(const std::filesystem::path& path, const std::string& what, int error) {
+  return std::runtime_error("could not write " + path.string() + " (" + what + "): " + std::strerror(error));
+}
+
+}  // namespace
+
+ContainerWriter::ContainerWriter(std::filesystem::path path, ContainerLayout layout, TexelFormat format,
+                                 GreyLayout grey, int band_rows)
+    : path_(std::move(path)), layout_(std::move(layout)), format_(format), grey_(grey), band_rows_(band_rows) {
+  if (band_rows_ < 0 || band_rows_ % 4 != 0) throw std::invalid_argument("ContainerWriter: bands of 4 k rows");
+  fd_.reset(::open(path_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666));
+  if (fd_.get() < 0) throw write_error(path_, "create", errno);
+  // The full length first: the padding between levels reads as zeros, as encode_ktx2 writes it.
+  if (::ftruncate(fd_.get(), off_t(layout_.file_bytes)) != 0) throw write_error(path_, "set its length", errno);
+  if (!core::write_exactly_at(fd_.get(), layout_.header.data(), layout_.header.size(), 0))
+    throw write_error(path_, "header", errno);
+  written_.assign(layout_.offsets.empty() ? 0 : layout_.offsets[0].size(), false);
+}
+
+void ContainerWriter::write_layer(int layer, const MipChain& chain) {
+  if (chain.layers != 1 || chain.count() != int(layout_.offsets.size()) || layer < 0 || layer >= int(written_.size()))
+    throw std::invalid_argument("ContainerWriter: a layer's chain that does not match the layout");
+  check_chain(chain, format_);
+  for (int k = 0; k < chain.count(); ++k) {
+    const int width = chain.level_width(k), height = chain.level_height(k);
+    // Bands of whole block rows of about 4 M texels: the RGBA spread of a 16384 face's rows stays small.
+    const int band = band_rows_ > 0 ? band_rows_ : std::max(4, ((1 << 22) / width) / 4 * 4);
+    for (int row = 0; row < height; row += band) {
+      const int rows = std::min(band, height - row);
+      const std::vector<unsigned char> bytes = encode_rows(
+          chain.image(k, 0) + std::size_t(row) * width * chain.channels, width, rows, chain.channels, format_, grey_);
+      const std::uint64_t at = layout_.offsets[k][layer] + image_bytes(width, row, format_);
+      if (!core::write_exactly_at(fd_.get(), bytes.data(), bytes.size(), off_t(at)))
+        throw write_error(path_, "level " + std::to_string(k), errno);
+    }
+  }
+  written_[layer] = true;
+}
+
+void ContainerWriter::close() {
+  for (std::size_t layer = 0; layer < written_.size(); ++layer)
+    if (!written_[layer])
+      throw std::logic_error("ContainerWriter: layer " + std::to_string(layer) + " of " + path_.string() +
+                             " was not written");
+  if (::fsync(fd_.get()) != 0) throw write_error(path_, "fsync", errno);
+  if (!fd_.close()) throw write_error(path_, "close", errno);
 }
 
 }  // namespace nephele::files

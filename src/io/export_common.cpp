@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "core/error.hpp"
+#include "files/texture_containers.hpp"
 #include "io/export_writers.hpp"
 
 namespace nephele::io {
@@ -25,8 +26,28 @@ std::string readme(const ExportPreset& preset, const CoverFaces& faces, const st
 
 }  // namespace
 
-files::MipChain cube_mip_chain(const CoverFaces& faces) {
-  return files::build_mip_chain(faces.texels, faces.size, faces.size, 6, 1);
+void write_cube_containers(files::OutputSet& out, std::vector<std::string>& names, const CoverFaces& faces,
+                           const std::vector<CubeContainer>& containers, const ExportOptions& options) {
+  const int n = faces.size, levels = files::full_mip_count(n, n);
+  std::vector<files::ContainerWriter> writers;
+  writers.reserve(containers.size());
+  for (const CubeContainer& c : containers) {
+    const files::ContainerLayout layout =
+        c.ktx2 ? files::ktx2_layout(n, n, 6, levels, c.format) : files::dds_layout(n, n, 6, levels, c.format);
+    writers.emplace_back(out.reserve(c.name), layout, c.format, c.layout);
+  }
+  // Face by face: one face's chain (4/3 of a face) at a time, shared by every container.
+  const std::size_t texels = std::size_t(n) * std::size_t(n);
+  for (int f = 0; f < 6; ++f) {
+    report_progress(options, f / 6.0, "face " + std::to_string(f + 1) + " of 6");
+    const float* face = faces.texels.data() + texels * std::size_t(f);
+    const files::MipChain chain = files::build_mip_chain(std::vector<float>(face, face + texels), n, n, 1, 1);
+    for (files::ContainerWriter& writer : writers) writer.write_layer(f, chain);
+  }
+  for (std::size_t i = 0; i < writers.size(); ++i) {
+    writers[i].close();
+    names.push_back(containers[i].name);
+  }
 }
 
 core::ImageData face_image(const CoverFaces& faces, int face) {
@@ -44,6 +65,18 @@ core::ImageData equirect_image(const CoverFaces& faces, const ExportOptions& opt
   core::ImageData map{4 * content, 2 * content, 1, {}};
   map.pixels = options.resample_equirect(faces.size, faces.texels, map.width, map.height);
   return map;
+}
+
+void report_progress(const ExportOptions& options, double done, const std::string& stage) {
+  if (options.progress) options.progress(done, stage);
+}
+
+bool equirect_on_cpu(int face_size, const ExportOptions& options) { return face_size > options.gpu_equirect_faces; }
+
+std::array<const float*, 6> face_pointers(int face_size, const float* texels) {
+  std::array<const float*, 6> faces{};
+  for (int f = 0; f < 6; ++f) faces[f] = texels + std::size_t(f) * std::size_t(face_size) * std::size_t(face_size);
+  return faces;
 }
 
 core::ImageData grey_image(int width, int height, std::vector<float> values, bool white_alpha) {

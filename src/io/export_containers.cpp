@@ -1,6 +1,9 @@
 // The export presets of texture containers: KTX 2.0 and DDS cube maps, the OpenEXR cube
 // environment map (docs/export.md).
+#include <algorithm>
+
 #include "core/error.hpp"
+#include "core/parallel_rows.hpp"
 #include "files/image_files.hpp"
 #include "files/mip_chain.hpp"
 #include "files/texture_containers.hpp"
@@ -12,13 +15,11 @@ namespace nephele::io {
 void write_ktx2(files::OutputSet& out, std::vector<std::string>& names, const ExportPreset& preset,
                 const CoverFaces& faces, const ExportOptions& options) {
   const files::TexelFormat format = files::parse_ktx2_format(options.ktx2_format);
-  const files::MipChain chain = cube_mip_chain(faces);
-  out.write("cover_cube.ktx2", files::encode_ktx2(chain, format));
-  names.push_back("cover_cube.ktx2");
+  write_cube_containers(out, names, faces, {{"cover_cube.ktx2", true, format}}, options);
   add_readme(out, names, preset, faces,
-             "File: cover_cube.ktx2, a KTX 2.0 cube map (faceCount 6, " + std::to_string(chain.count()) +
-                 " mip levels from\n" + std::to_string(faces.size) +
-                 " to 1, each the area mean of the level above; no supercompression), " +
+             "File: cover_cube.ktx2, a KTX 2.0 cube map (faceCount 6, " +
+                 std::to_string(files::full_mip_count(faces.size, faces.size)) + " mip levels from\n" +
+                 std::to_string(faces.size) + " to 1, each the area mean of the level above; no supercompression), " +
                  files::vk_format_name(format) +
                  ",\nfaces in the order +X, -X, +Y, -Y, +Z, -Z with the OpenGL/Vulkan face orientation,\n"
                  "KTXorientation \"rd\". Load it with libktx (ktxTexture2_CreateFromNamedFile, then\n"
@@ -27,20 +28,17 @@ void write_ktx2(files::OutputSet& out, std::vector<std::string>& names, const Ex
 }
 
 void write_dds(files::OutputSet& out, std::vector<std::string>& names, const ExportPreset& preset,
-               const CoverFaces& faces, const ExportOptions&) {
-  const files::MipChain chain = cube_mip_chain(faces);
-  const std::pair<std::string, files::TexelFormat> files[] = {{"cover_cube_bc4.dds", files::TexelFormat::bc4},
-                                                              {"cover_cube_bc3.dds", files::TexelFormat::bc3},
-                                                              {"cover_cube_rgba8.dds", files::TexelFormat::rgba8},
-                                                              {"cover_cube_r16f.dds", files::TexelFormat::r16f},
-                                                              {"cover_cube_r32f.dds", files::TexelFormat::r32f}};
-  for (const auto& [name, format] : files) {
-    out.write(name, files::encode_dds(chain, format));
-    names.push_back(name);
-  }
+               const CoverFaces& faces, const ExportOptions& options) {
+  write_cube_containers(out, names, faces,
+                        {{"cover_cube_bc4.dds", false, files::TexelFormat::bc4},
+                         {"cover_cube_bc3.dds", false, files::TexelFormat::bc3},
+                         {"cover_cube_rgba8.dds", false, files::TexelFormat::rgba8},
+                         {"cover_cube_r16f.dds", false, files::TexelFormat::r16f},
+                         {"cover_cube_r32f.dds", false, files::TexelFormat::r32f}},
+                        options);
   add_readme(out, names, preset, faces,
              "Files (DDS cube maps, faces +X, -X, +Y, -Y, +Z, -Z, rows top-down, each face with " +
-                 std::to_string(chain.count()) +
+                 std::to_string(files::full_mip_count(faces.size, faces.size)) +
                  "\nmip levels down to 1 x 1):\n"
                  "  cover_cube_bc4.dds    legacy header, FourCC ATI1 (BC4, one channel, 0.5 byte a\n"
                  "                        texel): Godot, Direct3D 10+ engines, DirectXTex\n"
@@ -85,20 +83,32 @@ glsl::vec3 openexr_pixel_direction(int face, int c, int r, int n) {
 // centres (and every face is mirrored relative to the GL face), so each pixel is the cover
 // sampled bilinearly in its direction, seamless across face edges (shaders/lib/cube_sampling.glsl).
 void write_exr_cube(files::OutputSet& out, std::vector<std::string>& names, const ExportPreset& preset,
-                    const CoverFaces& faces, const ExportOptions&) {
+                    const CoverFaces& faces, const ExportOptions& options) {
   const int n = faces.size;
-  std::vector<glsl::vec4> texels(faces.texels.size());
-  for (std::size_t i = 0; i < texels.size(); ++i) texels[i] = glsl::vec4(faces.texels[i], 0.0f, 0.0f, 0.0f);
-  const glsl::CubeSource cube{n, texels.data()};
-  core::ImageData strip{n, 6 * n, 1, std::vector<float>(std::size_t(6) * n * n)};
-  for (int f = 0; f < 6; ++f)
-    for (int r = 0; r < n; ++r)
-      for (int c = 0; c < n; ++c)
-        strip.pixels[(std::size_t(f) * n + r) * n + c] =
-            glsl::sample_cube_bilinear(glsl::normalize(openexr_pixel_direction(f, c, r, n)), cube).x;
+  // The faces as one-channel rows (CubeSource's second form), the strip written row by row: a
+  // cover of any size needs one row of the strip beside its faces.
+  const float* face_rows[6];
+  const int first_row[6] = {0, 0, 0, 0, 0, 0};
+  for (int f = 0; f < 6; ++f) face_rows[f] = faces.texels.data() + std::size_t(f) * n * n;
+  const glsl::CubeSource cube{n, nullptr, face_rows, first_row};
   files::ImageEncoding encoding = files::exr_encoding({"Y"});
   encoding.attributes.push_back({"textureformat", "CubeFace Environment"});
-  out.write("cover_envcube.exr", files::encode_image(strip, encoding, "cover_envcube.exr"));
+  files::ImageRowWriter strip(out.reserve("cover_envcube.exr"), n, 6 * n, 1, encoding);
+  const int band = std::max(1, std::min(n, (1 << 22) / n));  // rows of about 4 M pixels
+  std::vector<float> rows(static_cast<std::size_t>(band) * n);
+  for (int f = 0; f < 6; ++f)
+    for (int r0 = 0; r0 < n; r0 += band) {
+      report_progress(options, (f + double(r0) / n) / 6.0, "face " + std::to_string(f + 1) + " of 6");
+      const int count = std::min(band, n - r0);
+      core::parallel_rows(count, [&](int begin, int end) {
+        for (int r = begin; r < end; ++r)
+          for (int c = 0; c < n; ++c)
+            rows[std::size_t(r) * n + c] =
+                glsl::sample_cube_bilinear(glsl::normalize(openexr_pixel_direction(f, c, r0 + r, n)), cube).x;
+      });
+      strip.write_rows(count, rows.data());
+    }
+  strip.close();
   names.push_back("cover_envcube.exr");
   add_readme(out, names, preset, faces,
              "File: cover_envcube.exr, an OpenEXR cube environment map (header envmap = cube):\n"

@@ -2,6 +2,7 @@
 // nephele export: a cover directory written by `generate` turned into what one target reads
 // (docs/export.md). Each preset writes its files and a README.txt into one output set.
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -29,6 +30,14 @@ struct ExportOptions {
   // celestia: the CloudMap's tile edge as a virtual texture (a power of two from 64); 0 writes one
   // map where it fits max_texture_edge and a virtual texture of 1024-texel tiles beyond.
   int celestia_tile = 0;
+  // The largest face size whose equirect presets resample the cube map on the GPU
+  // (resample_equirect), whole; beyond it celestia and flightgear sample their tiles from the
+  // faces on the CPU (io/export_writers.hpp, equirect_on_cpu). 4096: the 4N map is one
+  // texture of 16384 and the cube map fits llvmpipe's 1 GiB per texture.
+  int gpu_equirect_faces = 4096;
+  // Told the share of the preset's work done (0 to 1) and what runs now, by the presets whose
+  // work grows with the cover (containers face by face, tiles one by one); may be empty.
+  std::function<void(double done, const std::string& stage)> progress;
   // Resamples the six faces to a width x height equirect (cover::equirect_from_faces): the GPU
   // pass that the presets with needs_equirect use, given by the caller, so that io runs none.
   std::vector<float> (*resample_equirect)(int face_size, const std::vector<float>& texels, int width,

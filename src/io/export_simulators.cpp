@@ -74,15 +74,20 @@ std::string write_celestia_virtual_texture(files::OutputSet& out, std::vector<st
   const std::string directory = folder + "textures/hires/" + options.name;
   for (int level = 0; level < levels; ++level) {
     const int width = tile << (level + 1), height = width / 2, face = std::max(1, width / 4);
-    const std::vector<float> reduced = face < faces.size ? reduced_faces(faces.size, faces.texels, face) : faces.texels;
+    // The finest level reads the cover's own faces (no copy: 6.4 GB at 16384).
+    const std::vector<float> reduced =
+        face < faces.size ? reduced_faces(faces.size, faces.texels, face) : std::vector<float>{};
     const int n = std::min(face, faces.size);
-    const float* face_rows[6];
-    for (int f = 0; f < 6; ++f) face_rows[f] = reduced.data() + static_cast<size_t>(f) * n * n;
+    const std::array<const float*, 6> face_rows =
+        face_pointers(n, face < faces.size ? reduced.data() : faces.texels.data());
     const std::vector<glm::vec2> rows = cover::geodetic_row_directions(height);
     std::vector<float> values(static_cast<size_t>(tile) * tile);
     for (int v = 0; v < (1 << level); ++v)
       for (int u = 0; u < (2 << level); ++u) {
-        cover::equirect_region(n, face_rows, width, rows, cover::PixelTile{u * tile, v * tile, tile, tile},
+        // Level k holds 2^(2k+1) of the (4^levels - 1) 2/3 tiles.
+        const double before = 2.0 * ((1 << (2 * level)) - 1) / 3.0 + double(v * (2 << level) + u);
+        report_progress(options, before / (2.0 * ((1 << (2 * levels)) - 1) / 3.0), "level " + std::to_string(level));
+        cover::equirect_region(n, face_rows.data(), width, rows, cover::PixelTile{u * tile, v * tile, tile, tile},
                                values.data());
         const std::string name = directory + "/level" + std::to_string(level) + "/tx_" + std::to_string(u) + "_" +
                                  std::to_string(v) + ".dds";
@@ -112,7 +117,7 @@ std::string write_celestia_virtual_texture(files::OutputSet& out, std::vector<st
 void write_celestia(files::OutputSet& out, std::vector<std::string>& names, const ExportPreset& preset,
                     const CoverFaces& faces, const ExportOptions& options) {
   const std::string folder = "extras/" + options.name + "/";
-  const int tile = options.celestia_tile > 0 ? options.celestia_tile : 4LL * faces.size > max_texture_edge ? 1024 : 0;
+  const int tile = options.celestia_tile > 0 ? options.celestia_tile : equirect_on_cpu(faces.size, options) ? 1024 : 0;
   if (tile > 0) {
     const std::string files = write_celestia_virtual_texture(out, names, faces, options, folder, tile);
     const std::string ssc = folder + options.name + ".ssc";
@@ -188,18 +193,29 @@ void write_celestia(files::OutputSet& out, std::vector<std::string>& names, cons
 void write_flightgear(files::OutputSet& out, std::vector<std::string>& names, const ExportPreset& preset,
                       const CoverFaces& faces, const ExportOptions& options) {
   const int tile = flightgear_tile_size(faces.size), border = tile / 128, content = tile - 2 * border;
-  const core::ImageData map = equirect_image(faces, options, content);
+  // The 4 content x 2 content map whole from the GPU pass, or each tile's 90 x 90 degrees from
+  // the faces on the CPU where that map is too large (equirect_on_cpu).
+  const bool on_cpu = equirect_on_cpu(faces.size, options);
+  const core::ImageData map = on_cpu ? core::ImageData{} : equirect_image(faces, options, content);
+  const std::vector<glm::vec2> rows = on_cpu ? cover::geodetic_row_directions(2 * content) : std::vector<glm::vec2>{};
+  std::vector<float> block(on_cpu ? std::size_t(content) * content : 0);
   files::ImageEncoding encoding = files::png_encoding(8);
   encoding.unassociated_alpha = true;  // grey stays white where the alpha is small
   for (int h = 0; h < 2; ++h)
     for (int q = 0; q < 4; ++q) {
+      report_progress(options, (4 * h + q) / 8.0, "tile " + std::to_string(4 * h + q + 1) + " of 8");
+      if (on_cpu)
+        cover::equirect_region(faces.size, face_pointers(faces.size, faces.texels.data()).data(), 4 * content, rows,
+                               cover::PixelTile{q * content, h * content, content, content}, block.data());
+      const auto value = [&](int cx, int cy) {  // (cx, cy) in the tile's content
+        return on_cpu ? block[std::size_t(cy) * content + cx]
+                      : map.pixels[std::size_t(h * content + cy) * map.width + q * content + cx];
+      };
       std::vector<float> values(std::size_t(tile) * tile);
       for (int y = 0; y < tile; ++y)
-        for (int x = 0; x < tile; ++x) {
-          const int cx = q * content + std::clamp(x - border, 0, content - 1);
-          const int cy = h * content + std::clamp(y - border, 0, content - 1);
-          values[std::size_t(y) * tile + x] = map.pixels[std::size_t(cy) * map.width + cx];
-        }
+        for (int x = 0; x < tile; ++x)
+          values[std::size_t(y) * tile + x] =
+              value(std::clamp(x - border, 0, content - 1), std::clamp(y - border, 0, content - 1));
       const std::string name = std::string("clouds_") + (h ? "S" : "N") + std::to_string(q + 1) + ".png";
       out.write(name, files::encode_image(grey_image(tile, tile, std::move(values), true), encoding, name));
       names.push_back(name);

@@ -6,6 +6,7 @@
 
 #include "apps/cli/commands.hpp"
 #include "apps/cli/options.hpp"
+#include "core/progress.hpp"
 #include "cover/equirect.hpp"
 #include "gpu/egl_context.hpp"
 #include "files/atomic_output.hpp"
@@ -48,6 +49,9 @@ int run_export(const std::vector<std::string>& arguments) {
   export_options.name = name;
   export_options.resample_equirect = cover::equirect_from_faces;
   io::check_export_options(preset, export_options);  // before --out is created
+  // Minutes at 16384 per face: reading the faces, then the preset's own stages.
+  core::Progress progress("export " + preset.name, 1.0, core::Progress::for_stderr(false));
+  export_options.progress = [&](double done, const std::string& stage) { progress.update(done, stage); };
   io::CoverFaces faces;
   io::VolumeData volume;
   if (preset.volume) {
@@ -55,6 +59,7 @@ int run_export(const std::vector<std::string>& arguments) {
     if (preset.name == "atlas") io::atlas_grid(volume.width, volume.height, volume.depth);  // fits, before any work
   } else {
     io::check_texture_limit(preset, io::read_cover_face_size(cover_dir));  // headers only: refused before reading
+    progress.update(0.0, "reading the faces");
     faces = io::read_cover_faces(cover_dir);
   }
 
@@ -68,7 +73,9 @@ int run_export(const std::vector<std::string>& arguments) {
   files::OutputSet outputs(directory, files::OutputSet::Scope::directory);
   const std::vector<std::string> names = preset.volume ? io::write_volume_export(outputs, preset.name, volume)
                                                        : io::write_export(outputs, preset, faces, export_options);
+  progress.update(1.0, "commit");
   outputs.commit();
+  progress.finish();
   for (const auto& file : names) std::cout << (directory / file).string() << "\n";
   return exit_ok;
 }
