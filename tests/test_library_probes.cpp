@@ -29,6 +29,7 @@ namespace nephele::glsl {
 #include "probes/cloud_density.glsl"
 #include "probes/cloud_march.glsl"
 #include "probes/cover_density.glsl"
+#include "probes/cube_bspline.glsl"
 #include "probes/cube_faces.glsl"
 #include "probes/cube_sampling.glsl"
 #include "probes/curl_flow.glsl"
@@ -725,6 +726,31 @@ TEST_CASE("cube_sampling.glsl on the GPU agrees with the CPU", "[probe]") {
   compare(
       "cube_sampling", [&](const mat4& x) { return probe_cube_sampling(x, source); }, cases, texels,
       gpu::ProbeData::cube_image);
+}
+
+TEST_CASE("cube_bspline.glsl on the GPU agrees with the CPU", "[probe]") {
+  Random r(29);
+  std::vector<Case> cases;
+  for (int k = 0; k < 32; ++k)
+    cases.push_back({arguments(PROBE_BSPLINE_WEIGHTS, vec4(r(0.0f, 1.0f), 0, 0, 0)), kArithmetic});
+  // The taps on a 64-texel cube. The texel coordinate x = (0.5 c + 0.5) 64 - 0.5 carries the face
+  // coordinate's division (2.5 ulp) and two roundings of values below 64: about 64 x 4 ulp; the
+  // pair positions and g follow the fraction with slopes below 1.5, and the face coordinates
+  // scale them by 2/64. 64 x 8 ulp bounds both. Directions are kept off texel centres by 1e-3
+  // texels, where floor() may take either side (the filtered value is continuous there; its
+  // taps are not).
+  const float size = 64.0f;
+  constexpr float kTaps = 64 * 8 * kUlp;
+  while (cases.size() < 32 + 4 * 48) {
+    const vec3 d = normalize(vec3(r.v(-1.0f, 1.0f)));
+    const int face = cube_face_of(d);
+    const vec2 x = (0.5f * cube_face_coords(face, d) + 0.5f) * size - 0.5f;
+    const vec2 f = x - floor(x);
+    if (std::min({f.x, f.y, 1.0f - f.x, 1.0f - f.y}) < 1e-3f) continue;
+    for (int function = PROBE_TAPS_00; function <= PROBE_TAPS_11; ++function)
+      cases.push_back({arguments(function, vec4(size, 0, 0, 0), vec4(d, 0)), kTaps});
+  }
+  compare("cube_bspline", probe_cube_bspline, cases);
 }
 
 TEST_CASE("curl_spline.glsl on the GPU agrees with the CPU", "[probe][spline]") {

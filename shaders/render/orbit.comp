@@ -16,6 +16,7 @@ layout(binding = 4) uniform sampler3D detail_noise;   // 32^3 value noise in [0,
 layout(binding = 5) uniform sampler2D water_texture;  // equirect, fraction of open water (sun glint)
 
 #include "../lib/atmosphere.glsl"
+#include "../lib/cube_bspline.glsl"
 #include "../lib/equirect_mapping.glsl"
 #include "../lib/hash.glsl"
 #include "../lib/sun_glint.glsl"
@@ -38,6 +39,7 @@ uniform vec3 u_sun;            // unit direction towards the sun
 uniform float u_night_lights;  // radiance of a city-light texel of value 1
 uniform float u_sea_wind;      // wind over the sea, m/s (the glint's facet slopes)
 uniform float u_cover_texel;   // arc length of one cover texel on the ground, m
+uniform float u_cover_size;    // cover texels along a face edge
 uniform float u_day_texel;     // arc length of one day-texture texel, m
 uniform int u_cloud_steps;
 uniform int u_shadow_steps;
@@ -74,6 +76,20 @@ const float DETAIL_CELL = 1600.0f;  // m: the detail noise's coarse cell (the fi
 
 float cover_lod(float footprint) { return max(log2(max(footprint, 1.0f) / u_cover_texel), 0.0f); }
 
+// The cover in direction n at mip level `lod`. Where a cover texel spans more than a sample
+// (lod < 1) the base level is filtered by the cubic B-spline (cube_bspline.glsl): trilinear
+// lookups alone show the texel grid as a staircase of straight edges from low orbit. Between
+// lod 0 and 1 the two are blended, so nothing switches with distance.
+float cover_at(vec3 n, float lod) {
+  float mipmapped = textureLod(cover_map, n, lod).r;
+  if (lod >= 1.0f) return mipmapped;
+  CubeBsplineTaps taps = cube_bspline_taps(n, u_cover_size);
+  float c00 = textureLod(cover_map, taps.d00, 0.0f).r, c10 = textureLod(cover_map, taps.d10, 0.0f).r;
+  float c01 = textureLod(cover_map, taps.d01, 0.0f).r, c11 = textureLod(cover_map, taps.d11, 0.0f).r;
+  float smooth_cover = mix(mix(c00, c10, taps.g.x), mix(c01, c11, taps.g.x), taps.g.y);
+  return mix(smooth_cover, mipmapped, lod);
+}
+
 // Cloud density in [0, 1] at p (relative to the planet centre) for a sample that stands for
 // `footprint` metres: the cover at p's direction sets how high the column reaches (0.15 of the
 // shell at the thinnest, all of it at coverage 1) and how dense it is; the base and the top are
@@ -83,7 +99,7 @@ float cloud_density(vec3 p, float footprint) {
   float r = length(p);
   float hf = (r - u_radius - u_cloud_base) / (u_cloud_top - u_cloud_base);
   if (hf <= 0.0f || hf >= 1.0f) return 0.0f;
-  float c = textureLod(cover_map, p / r, cover_lod(footprint)).r;
+  float c = cover_at(p / r, cover_lod(footprint));
   if (c <= 0.0f) return 0.0f;
   float top = 0.15f + 0.85f * c;
   float column = smoothstep(0.0f, 0.08f, hf) * (1.0f - smoothstep(0.75f * top, top, hf));

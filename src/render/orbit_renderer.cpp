@@ -299,6 +299,7 @@ double OrbitRenderer::render_into(const OrbitCamera& camera, double unix_seconds
     p.set("u_night_lights", static_cast<float>(s.night_lights));
     p.set("u_sea_wind", static_cast<float>(s.sea_wind_ms));
     p.set("u_cover_texel", static_cast<float>(R * (M_PI / 2) / gl_->cover_size));
+    p.set("u_cover_size", static_cast<float>(gl_->cover_size));
     p.set("u_day_texel", static_cast<float>(2 * M_PI * R / gl_->day_width));
     p.set("u_cloud_steps", s.cloud_steps);
     p.set("u_shadow_steps", s.shadow_steps);

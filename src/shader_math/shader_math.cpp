@@ -8,6 +8,7 @@ namespace nephele::glsl {
 #include "lib/cloud_density.glsl"
 #include "lib/cloud_march.glsl"
 #include "lib/cover_density.glsl"
+#include "lib/cube_bspline.glsl"
 #include "lib/cube_faces.glsl"
 #include "lib/cube_sampling.glsl"
 #include "lib/curl_flow.glsl"
