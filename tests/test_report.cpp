@@ -120,12 +120,25 @@ namespace {
 // tolerance still give every integrator and curl mode (16 rows).
 const std::string small_warp = "--quick --sizes 8 --steps 10 --tolerances 1e-2 --samples 1";
 
+// The warp part of `report --quick` alone (--no-render), run once for the tests that read its
+// files: the sweep is the slow part of this file.
+struct NoRenderReport {
+  TemporaryDirectory out;
+  Run result;
+  NoRenderReport() : result(run("report " + small_warp + " --no-render --out " + out.path.string())) {}
+};
+const NoRenderReport& no_render_report() {
+  static const NoRenderReport report;
+  return report;
+}
+
 }  // namespace
 
 TEST_CASE("report --quick writes the CSV the diagram and the summary and the notebook draws the CSV", "[report][cli]") {
-  TemporaryDirectory out;
   // The render part has its own test below.
-  const Run r = run("report " + small_warp + " --no-render --out " + out.path.string());
+  const NoRenderReport& report = no_render_report();
+  const TemporaryDirectory& out = report.out;
+  const Run& r = report.result;
   INFO(r.output);
   REQUIRE(r.exit_code == 0);
   const std::string csv = read_file(out.path / "error_vs_runtime.csv");
@@ -275,8 +288,8 @@ TEST_CASE("report --quick writes the render error CSV and diagram and a render s
   CHECK(only_summary.find("| default | 16 view x 4 light steps, 1/4 resolution | 0.01 |") != std::string::npos);
 
   // --no-render writes neither render file.
-  TemporaryDirectory skipped;
-  const Run no_render = run("report " + small_warp + " --no-render --out " + skipped.path.string());
+  const TemporaryDirectory& skipped = no_render_report().out;
+  const Run& no_render = no_render_report().result;
   INFO(no_render.output);
   REQUIRE(no_render.exit_code == 0);
   CHECK(fs::exists(skipped.path / "summary.md"));
