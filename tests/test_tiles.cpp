@@ -187,7 +187,9 @@ TEST_CASE("tile parts made in two runs assemble to the files of one generate, by
   const test::TemporaryDirectory work(true);
   const std::string cover = "--size 24 --seed 5 --curl-size 32";
   const std::string parts = (work.path / "parts").string();
-  REQUIRE(test::run("generate " + cover + " --files faces,equirect --quiet --out " + (work.path / "whole").string())
+  const std::string exports = " --export ktx2,flightgear";
+  REQUIRE(test::run("generate " + cover + " --files faces,equirect --quiet" + exports + " --out " +
+                    (work.path / "whole").string())
               .exit_code == 0);
   REQUIRE(test::run("generate " + cover + " --tiles 12 --tile 0-4 --quiet --out " + parts).exit_code == 0);
   // Parts of one cover only: assemble names the tiles that are missing.
@@ -200,11 +202,16 @@ TEST_CASE("tile parts made in two runs assemble to the files of one generate, by
   CHECK_THAT(second.output, Catch::Contains("2 already complete, kept"));
   const std::filesystem::path assembled = work.path / "assembled";
   const test::Run assemble =
-      test::run("assemble " + parts + " --files faces,equirect --quiet --out " + assembled.string());
+      test::run("assemble " + parts + " --files faces,equirect --quiet" + exports + " --out " + assembled.string());
   REQUIRE(assemble.exit_code == 0);
   for (const char* face : {"px", "nx", "py", "ny", "pz", "nz", "equirect"}) {
     INFO(face);
     CHECK(face_bytes(assembled, face) == face_bytes(work.path / "whole", face));
+  }
+  // The presets run on the assembled faces write what they write on the whole map's floats.
+  for (const char* file : {"export/ktx2/cover_cube.ktx2", "export/flightgear/clouds_N3.png"}) {
+    INFO(file);
+    CHECK(test::read_file(assembled / file) == test::read_file(work.path / "whole" / file));
   }
   const json::Value sidecar = json::parse(test::read_file(assembled / "cover.json"));
   CHECK(sidecar.at("files").at("computed_in_tiles").as_number() == 12);
@@ -229,6 +236,9 @@ TEST_CASE("generate refuses tilings that do not cut every face alike, and parts 
   refused("generate --size 8 --tiles 14 --out " + parts, "a multiple of 6");
   refused("generate --size 2 --tiles 18 --out " + parts, "less than a row");
   refused("generate --size 8 --tile 0 --out " + parts, "only with --tiles");
+  // A cover in tiles is exported from its face files: they must be written, as floats, losslessly.
+  refused("generate --size 8 --tiles 6 --files equirect --export ktx2 --out " + parts, "reads the faces");
+  refused("generate --size 8 --tiles 6 --precision half --export ktx2 --out " + parts, "reads the faces");
   refused("generate --size 8 --tiles 12 --tile 5-3 --out " + parts, "0 <= A <= B < 12");
   refused("generate --size 8 --tiles 12 --tile 12 --out " + parts, "0 <= A <= B < 12");
   refused("generate --size 8 --tiles 12 --tile 0 --files faces --out " + parts, "give it to nephele assemble");

@@ -409,9 +409,10 @@ inline constexpr Parameter memory_budget =
             generate | assemble);
 inline constexpr Parameter assemble_out =
     text("out", "cubemaps", "DIR", "output directory of the assembled cover (created if missing)", assemble);
-inline constexpr Parameter cover_exports = text(
-    "export", "", "NAME,NAME,...",
-    "export presets (docs/export.md) run on the new cover, each into DIR/export/NAME of the same output set", generate);
+inline constexpr Parameter cover_exports =
+    text("export", "", "NAME,NAME,...",
+         "export presets (docs/export.md) run on the new cover, each into DIR/export/NAME of the same output set",
+         generate | assemble);
 inline constexpr Parameter precision =
     text("precision", "float", "float|half",
          "EXR samples: 32-bit float, or 16-bit half (11 significant bits, half the bytes)", generate | assemble);

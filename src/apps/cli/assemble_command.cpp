@@ -5,6 +5,7 @@
 #include <iostream>
 
 #include "apps/cli/commands.hpp"
+#include "apps/cli/cover_exports.hpp"
 #include "apps/cli/cover_options.hpp"
 #include "apps/cli/options.hpp"
 #include "core/memory.hpp"
@@ -28,6 +29,7 @@ int run_assemble(const std::vector<std::string>& arguments) {
   CoverFileOption file_option;
   bool quiet = false, verbose = false;
   int budget_mib = params::run::memory_budget.default_int();
+  std::string exports;
   Options options("assemble",
                   "Assembles a cover computed in tiles: nephele assemble PARTS_DIR [options] reads the tile\n"
                   "parts that generate --tiles COUNT --tile A-B wrote (every tile of one cover), calibrates\n"
@@ -38,6 +40,7 @@ int run_assemble(const std::vector<std::string>& arguments) {
   options.bind(params::run::quiet, &quiet);
   options.bind(params::run::verbose, &verbose);
   options.bind(params::run::memory_budget, &budget_mib);
+  options.bind(params::run::cover_exports, &exports);
   if (!options.parse(rest)) {
     std::cout << options.help();
     return exit_ok;
@@ -57,6 +60,9 @@ int run_assemble(const std::vector<std::string>& arguments) {
     cover_arguments.push_back(a.as_string());
   }
   const cover::CoverParameters parameters = parse_generate_parameters(cover_arguments);
+  std::vector<const io::ExportPreset*> presets;
+  if (options.given(params::run::cover_exports)) presets = parse_cover_exports(exports, parameters.size);
+  check_exports_read_faces(presets, file_options);
   const std::filesystem::path directory(out);
   files::check_output_directory(directory, params::run::assemble_out.option());
   files::check_output_files(directory, io::cover_file_names(file_options), params::run::assemble_out.option());
@@ -75,6 +81,7 @@ int run_assemble(const std::vector<std::string>& arguments) {
   const io::AssembledCover assembled =
       io::write_assembled_cover(outputs, parts, parameters, context.info(), file_options, budget,
                                 [&](const std::string& what) { progress.update(std::min(step++, count + 3), what); });
+  write_cover_exports_from_faces(outputs, presets);
   outputs.commit();
   progress.finish();
   if (verbose) {

@@ -9,6 +9,7 @@
 #include <optional>
 
 #include "apps/cli/commands.hpp"
+#include "apps/cli/cover_exports.hpp"
 #include "core/json.hpp"
 #include "core/progress.hpp"
 #include "core/time.hpp"
@@ -229,25 +230,10 @@ bool parse_generate(const std::vector<std::string>& arguments, GenerateSetup& se
   io::CoverFileOptions& file_options = setup.file_options;
   file_options = file_option.file_options();
   // The presets are checked before any work: a name or a texture limit never fails late.
-  std::vector<const io::ExportPreset*>& presets = setup.presets;
-  if (options.given(params::run::cover_exports)) {
-    std::stringstream list(exports);
-    for (std::string name; std::getline(list, name, ',');) {
-      const auto& all = io::export_presets();
-      const auto found =
-          std::find_if(all.begin(), all.end(), [&](const io::ExportPreset& p) { return p.name == name; });
-      if (found == all.end()) throw UsageError("--export", name, std::string(params::run::export_preset.allowed));
-      if (found->volume) throw UsageError("--export", name, "a cover preset", "exports volumes, not covers");
-      if (std::find(presets.begin(), presets.end(), &*found) != presets.end())
-        throw UsageError("--export", exports, std::string(params::run::cover_exports.allowed),
-                         "names " + name + " twice (as --files refuses faces,faces)");
-      presets.push_back(&*found);
-      io::check_texture_limit(*presets.back(), parameters.size);
-    }
-    if (presets.empty() || exports.back() == ',')
-      throw UsageError("--export", exports, std::string(params::run::cover_exports.allowed),
-                       "names no preset or ends with a comma");
-  }
+  if (options.given(params::run::cover_exports)) setup.presets = parse_cover_exports(exports, parameters.size);
+  // --tiles: the cover is made in tiles and exported from its face files (checked again in
+  // run_in_tiles for covers the budget tiles).
+  if (setup.tiles > 0) check_exports_read_faces(setup.presets, file_options);
   return true;
 }
 
@@ -317,10 +303,7 @@ int run_in_tiles(const GenerateSetup& setup, const gpu::EglContext& context, dou
   const cover::CubeTiling tiling{p.size, count};
   check_tiles_fit(p, tiling, budget);
   io::check_assembly_fits(p.size, count, setup.file_options, budget);
-  if (!setup.presets.empty())
-    throw UsageError(params::run::cover_exports.option() +
-                     ": not for a cover computed in tiles; export its files "
-                     "with nephele export COVER_DIR --preset NAME");
+  check_exports_read_faces(setup.presets, setup.file_options);
   const std::filesystem::path directory(setup.out);
   create_output_directory(directory);
   files::OutputSet outputs(directory, files::OutputSet::Scope::directory);
@@ -337,6 +320,7 @@ int run_in_tiles(const GenerateSetup& setup, const gpu::EglContext& context, dou
                                                                      progress.update(std::min(step++, count + 3), what);
                                                                  });
   std::filesystem::remove_all(parts);
+  write_cover_exports_from_faces(outputs, setup.presets);
   outputs.commit();
   progress.finish();
   if (setup.verbose) {
@@ -395,18 +379,8 @@ int run_generate(const std::vector<std::string>& arguments) {
   // preset into export/NAME inside the set's temporary directory, so that everything still
   // appears whole or not at all.
   const auto write_cover = [&](files::OutputSet& set) {
-    if (!presets.empty()) {
-      const io::CoverFaces faces{parameters.size, cover.cover_field().read()};
-      io::ExportOptions export_options;
-      export_options.resample_equirect = cover::equirect_from_faces;
-      for (const io::ExportPreset* preset : presets) {
-        const std::filesystem::path folder = set.temporary_directory() / "export" / preset->name;
-        std::filesystem::create_directories(folder);
-        files::OutputSet preset_set(folder, files::OutputSet::Scope::directory);
-        io::write_export(preset_set, *preset, faces, export_options);
-        preset_set.commit();
-      }
-    }
+    if (!presets.empty())
+      write_cover_exports(set, presets, io::CoverFaces{parameters.size, cover.cover_field().read()});
     return io::write_cover_files(set, cover, context.info(), file_options);
   };
   const auto run_cover = [&]() -> const cover::WarpDiagnostics& {
