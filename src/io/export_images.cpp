@@ -30,8 +30,9 @@ void write_equirect(files::OutputSet& out, std::vector<std::string>& names, cons
 }
 
 void write_gl_faces(files::OutputSet& out, std::vector<std::string>& names, const ExportPreset& preset,
-                    const CoverFaces& faces, const ExportOptions&) {
+                    const CoverFaces& faces, const ExportOptions& options) {
   for (int f = 0; f < 6; ++f) {
+    report_progress(options, f / 6.0, "face " + std::to_string(f + 1) + " of 6");
     const std::string name = std::string("cover_") + face_suffixes[f] + ".exr";
     out.write(name, files::encode_image(face_image(faces, f), files::exr_encoding({"Y"}), name));
     names.push_back(name);

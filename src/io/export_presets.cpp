@@ -164,8 +164,9 @@ void check_texture_limit(const ExportPreset& preset, int face_size) {
                          "face size at most " + std::to_string(largest) + " for preset " + preset.name,
                          "would make an image " + std::to_string(edge) + " pixels wide, over the " +
                              std::to_string(max_texture_edge) +
-                             " pixels engines and GPUs take (GL_MAX_TEXTURE_SIZE); use flightgear (tiles) or "
-                             "gl-faces, ktx2, dds (cube faces), or generate a smaller --size");
+                             " pixels engines and GPUs take (GL_MAX_TEXTURE_SIZE); use celestia or "
+                             "flightgear (tiles), gl-faces, ktx2, dds or exr-cube (cube faces), or generate a smaller "
+                             "--size");
 }
 
 void check_export_options(const ExportPreset& preset, const ExportOptions& options) {
