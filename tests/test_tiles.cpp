@@ -208,10 +208,15 @@ TEST_CASE("tile parts made in two runs assemble to the files of one generate, by
     INFO(face);
     CHECK(face_bytes(assembled, face) == face_bytes(work.path / "whole", face));
   }
-  // The presets run on the assembled faces write what they write on the whole map's floats.
+  // The presets run on the assembled faces write what they write on the whole map's floats,
+  // after assemble and after generate in tiles alike.
+  const std::filesystem::path tiled = work.path / "tiled";
+  REQUIRE(test::run("generate " + cover + " --tiles 12 --files faces --quiet" + exports + " --out " + tiled.string())
+              .exit_code == 0);
   for (const char* file : {"export/ktx2/cover_cube.ktx2", "export/flightgear/clouds_N3.png"}) {
     INFO(file);
     CHECK(test::read_file(assembled / file) == test::read_file(work.path / "whole" / file));
+    CHECK(test::read_file(tiled / file) == test::read_file(work.path / "whole" / file));
   }
   const json::Value sidecar = json::parse(test::read_file(assembled / "cover.json"));
   CHECK(sidecar.at("files").at("computed_in_tiles").as_number() == 12);
