@@ -81,13 +81,13 @@ float cover_lod(float footprint) { return max(log2(max(footprint, 1.0f) / u_cove
 // lookups alone show the texel grid as a staircase of straight edges from low orbit. Between
 // lod 0 and 1 the two are blended, so nothing switches with distance.
 float cover_at(vec3 n, float lod) {
-  float mipmapped = textureLod(cover_map, n, lod).r;
-  if (lod >= 1.0f) return mipmapped;
+  if (lod >= 1.0f) return textureLod(cover_map, n, lod).r;
   CubeBsplineTaps taps = cube_bspline_taps(n, u_cover_size);
   float c00 = textureLod(cover_map, taps.d00, 0.0f).r, c10 = textureLod(cover_map, taps.d10, 0.0f).r;
   float c01 = textureLod(cover_map, taps.d01, 0.0f).r, c11 = textureLod(cover_map, taps.d11, 0.0f).r;
   float smooth_cover = mix(mix(c00, c10, taps.g.x), mix(c01, c11, taps.g.x), taps.g.y);
-  return mix(smooth_cover, mipmapped, lod);
+  // Close up (lod 0, most samples below 2000 km) the mipmapped lookup has no weight: not fetched.
+  return lod > 0.0f ? mix(smooth_cover, textureLod(cover_map, n, lod).r, lod) : smooth_cover;
 }
 
 // Cloud density in [0, 1] at p (relative to the planet centre) for a sample that stands for

@@ -22,10 +22,14 @@
 
 namespace nephele::files {
 
-bool is_exr_compression(const std::string& name) {
-  for (const char* known : {"none", "rle", "zips", "zip", "piz", "pxr24", "b44", "dwaa"})
-    if (name == known) return true;
+bool is_lossless_exr_compression(const std::string& name) {
+  for (const char* lossless : {"none", "rle", "zips", "zip", "piz"})
+    if (name == lossless) return true;
   return false;
+}
+
+bool is_exr_compression(const std::string& name) {
+  return is_lossless_exr_compression(name) || name == "pxr24" || name == "b44" || name == "dwaa";
 }
 
 namespace {

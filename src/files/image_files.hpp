@@ -55,6 +55,9 @@ inline ImageEncoding exr_encoding(std::vector<std::string> channel_names, int bi
 
 // OpenEXR's compressions that nephele offers (params::run::exr_compression lists the same).
 bool is_exr_compression(const std::string& name);
+// Whether OpenEXR's compression `name` gives back every value exactly: none, rle, zips, zip,
+// piz (pxr24, b44 and dwaa round them).
+bool is_lossless_exr_compression(const std::string& name);
 
 // The file's bytes, encoded in memory, so that the caller writes them with every write, fsync
 // and close checked (OpenImageIO's PNG writer does not report a failed fwrite). Throws

@@ -87,10 +87,9 @@ void write_exr_cube(files::OutputSet& out, std::vector<std::string>& names, cons
   const int n = faces.size;
   // The faces as one-channel rows (CubeSource's second form), the strip written row by row: a
   // cover of any size needs one row of the strip beside its faces.
-  const float* face_rows[6];
+  const std::array<const float*, 6> face_rows = face_pointers(n, faces.texels.data());
   const int first_row[6] = {0, 0, 0, 0, 0, 0};
-  for (int f = 0; f < 6; ++f) face_rows[f] = faces.texels.data() + std::size_t(f) * n * n;
-  const glsl::CubeSource cube{n, nullptr, face_rows, first_row};
+  const glsl::CubeSource cube{n, nullptr, face_rows.data(), first_row};
   files::ImageEncoding encoding = files::exr_encoding({"Y"});
   encoding.attributes.push_back({"textureformat", "CubeFace Environment"});
   files::ImageRowWriter strip(out.reserve("cover_envcube.exr"), n, 6 * n, 1, encoding);

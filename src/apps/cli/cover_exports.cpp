@@ -6,6 +6,7 @@
 
 #include "apps/cli/options.hpp"
 #include "cover/equirect.hpp"
+#include "files/image_files.hpp"
 #include "params/table.hpp"
 
 namespace nephele::cli {
@@ -31,9 +32,7 @@ std::vector<const io::ExportPreset*> parse_cover_exports(const std::string& list
 
 void check_exports_read_faces(const std::vector<const io::ExportPreset*>& presets, const io::CoverFileOptions& files) {
   if (presets.empty()) return;
-  const bool lossless = files.compression == "none" || files.compression == "rle" || files.compression == "zips" ||
-                        files.compression == "zip" || files.compression == "piz";
-  if (!files.faces || files.half || !lossless)
+  if (!files.faces || files.half || !files::is_lossless_exr_compression(files.compression))
     throw UsageError("--export", "",
                      "--files with faces, --precision float and a lossless --exr-compression (none, rle, zips, zip, "
                      "piz)",
