@@ -124,13 +124,18 @@ TEST_CASE("the cyclonic depth marks cyclonic vorticity in both hemispheres", "[f
 TEST_CASE("cyclones are cloudier than anticyclones, and the cyclone cloudiness makes them so", "[pass][climate]") {
   // The cloudy fraction (cover > 0) of the texels in the highest third of the cyclonic vorticity
   // against that of the lowest third (beyond 15 degrees). The warped noise alone leaves them
-  // close (measured 0.05 apart at k = 0); with the default k = 0.5 the cyclones must be
-  // clearly cloudier: more than 0.12 apart (measured 0.17), and 0.08 more than without.
+  // close (measured 0.005 apart at k = 0 with the flow of s = 0.2, 0.05 with s = 0.1); with the
+  // default k = 0.5 the cyclones must be clearly cloudier: more than 0.1 apart (measured 0.122;
+  // 0.17 with s = 0.1, whose weaker vortices stir the noise less), and 0.08 more than without.
   auto gap = [](float cloudiness) {
     cover::CoverParameters p = test::steady_cover();
     p.size = 48;
     p.curl_size = 48;
     p.cyclone_cloudiness = cloudiness;
+    // The flow's vortices alone: the weather systems' comma clouds are placed on their own, not
+    // on the flow's lows, and would dilute the measure.
+    p.cyclones = 0;
+    p.itcz = p.trade_cumulus = p.cirrus = 0.0f;
     const CurlParams c = cover::curl_params(p);
     std::vector<std::pair<double, float>> texels;  // (cyclonic vorticity, cover)
     for (const test::CoverTexel& t : test::cover_texels(p)) {
@@ -146,7 +151,7 @@ TEST_CASE("cyclones are cloudier than anticyclones, and the cyclone cloudiness m
   const double with = gap(cover::CoverParameters{}.cyclone_cloudiness), without = gap(0.0f);
   INFO("cloudy fraction of cyclones minus anticyclones: " << with << " with the default cloudiness, " << without
                                                           << " without");
-  CHECK(with > 0.12);
+  CHECK(with > 0.1);
   CHECK(with > without + 0.08);
 }
 

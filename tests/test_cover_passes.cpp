@@ -7,6 +7,8 @@
 
 #include "steady_cover.hpp"
 #include "cover/global_cover.hpp"
+#include "cover/moving_flow.hpp"
+#include "cover/weather_systems.hpp"
 #include "curl_bounds.hpp"
 #include "cube_fields.hpp"
 #include "gl_support.hpp"
@@ -41,6 +43,11 @@ static_assert(kDensity >= 18 * 4 * kUlp / 1.97 + 1.0e-6);
 // (GLSL: 2.5 ulp) of values in [0, 1], plus the span's subtraction: about 4 x 2^-24 = 2.4e-7;
 // 1e-6 leaves a factor 4.
 constexpr double kCoverRemap = 1.0e-6;
+
+// The weather systems' own rounding on the two sides: atan, log and exp of the comma's frame
+// (kTranscendental-like, 1e-6 relative) through a band edge's slope (1.5 / (0.4 x 0.12) = 31 per
+// head radius at the narrowest): 3e-5; 1e-4 leaves a factor 3.
+constexpr double kSystems = 1.0e-4;
 static_assert(kCoverRemap >= 4 * kUlp);
 // The achieved cloudy fraction is within one texel's share of the target (the calibration
 // walks texel by texel); the slack on top of that is 1e-9, far looser than the double sums'
@@ -145,16 +152,33 @@ TEST_CASE("density and coverage passes agree with the CPU twin", "[pass]") {
   const auto density = cover.density_field().read();
   const auto covered = cover.cover_field().read();
   const FbmParams params = cover::density_params(p);
+  const WeatherSystems systems = cover::weather_systems(p, cover::hours_since_epoch(p.time));
   const auto& c = cover.calibration();
   for (size_t k = 0; k < density.size(); ++k) {
     // The cyclonic factor 1 + k c (c from the GPU's curl field on both sides) scales the
     // density's error and adds two roundings of the product.
     const float factor = 1.0f + p.cyclone_cloudiness * curl[k].w;
-    const float expected =
-        shaped_density(cover_density(vec3(warp[k]), params), curl[k].w, p.cyclone_cloudiness, 0.0f, 0.0f);
-    REQUIRE(density[k] == Approx(expected).epsilon(0).margin(kDensity * factor + 4 * kUlp * expected));
-    REQUIRE(covered[k] ==
-            Approx(cover_from_density(density[k], c.threshold, c.density_max)).epsilon(0).margin(kCoverRemap));
+    const float noise = cover_density(vec3(warp[k]), params);
+    // The cyclones where the texel is, the belts at the air's origin (cover_density.comp).
+    const vec3 origin = normalize(vec3(warp[k]));
+    const vec3 direction = texel_direction(int(k / (16 * 16)), int(k % 16), int(k % (16 * 16) / 16), 16);
+    const float systems_value = std::max(
+        cyclone_systems(direction, systems, system_edge(noise)),
+        belt_systems(origin, portable_asin(clamp(origin.z, -1.0f, 1.0f)), systems, systems.seed, system_edge(noise)));
+    const float shaped = shaped_density(noise, curl[k].w, p.cyclone_cloudiness, 0.0f, 0.0f);
+    const float expected = with_systems(shaped, systems_value);
+    // The systems' field in [0, 1] takes the noise's error through system_edge (1 / 0.15) and a
+    // band's edge (offset 0.8 half widths per unit of edge, smoothstep slope 1.5 / 0.4 half widths):
+    // 20 kDensity, plus its transcendental functions' rounding (atan, log, exp: kSystems); the
+    // factor 1 + 0.6 w scales the shaped density's error.
+    const double systems_error = 20 * kDensity + kSystems;
+    REQUIRE(density[k] == Approx(expected).epsilon(0).margin((kDensity * factor + 4 * kUlp * shaped) * 1.6 +
+                                                             0.6 * shaped * systems_error));
+    // The remap's exp: its argument's error over the softness (kCoverRemap of the subtraction,
+    // divided by s) and the exp's own rounding.
+    REQUIRE(covered[k] == Approx(cover_from_density(density[k], c.threshold, c.density_max, p.cover_softness))
+                              .epsilon(0)
+                              .margin(kCoverRemap / p.cover_softness + 4 * kUlp));
   }
 }
 

@@ -47,6 +47,7 @@ namespace nephele::glsl {
 #include "probes/terrain.glsl"
 #include "probes/tileable_noise.glsl"
 #include "probes/warp_step.glsl"
+#include "probes/weather_systems.glsl"
 #include "probes/webanck_forms.glsl"
 #include "probes/worley.glsl"
 #include "probes/worley_fbm.glsl"
@@ -326,6 +327,12 @@ TEST_CASE("cover_density.glsl on the GPU agrees with the CPU", "[probe]") {
          kFbm});
     cases.push_back(
         {arguments(PROBE_COVER_FROM_DENSITY, vec4(r(0.0f, 1.0f), r(0.0f, 0.5f), r(0.5f, 1.0f), 0)), kArithmetic});
+    // With a softness: one subtraction, a division and an exp of a value below 0.
+    cases.push_back({arguments(PROBE_COVER_FROM_DENSITY, vec4(r(0.0f, 1.0f), r(0.0f, 0.5f), r(0.5f, 1.0f), 0),
+                               vec4(0.0f), vec4(0.0f), vec4(0.0f, r(0.02f, 0.3f), 0.0f, 0.0f)),
+                     kTranscendental});
+    cases.push_back({arguments(PROBE_SYSTEM_EDGE, vec4(r(0.0f, 1.0f), 0, 0, 0)), kArithmetic});
+    cases.push_back({arguments(PROBE_WITH_SYSTEMS, vec4(r(0.0f, 1.5f), r(0.0f, 1.0f), 0, 0)), kArithmetic});
     cases.push_back({arguments(PROBE_SHAPED_DENSITY, vec4(r(0.0f, 1.5f), r(0.0f, 0.7f), r(0.0f, 2.0f), 0), vec4(0.0f),
                                vec4(0.0f), vec4(0.0f, r(-1.0f, 1.0f), r(0.0f, 1.0f), 0.0f)),
                      kArithmetic});
@@ -336,6 +343,44 @@ TEST_CASE("cover_density.glsl on the GPU agrees with the CPU", "[probe]") {
   // d (1 + k c)(1 + k_s b) by hand: 0.8 (1 + 0.5 x 0.6)(1 - 0.5 x 0.4) = 0.832; zero weights leave d.
   CHECK(std::abs(shaped_density(0.8f, 0.6f, 0.5f, -0.4f, 0.5f) - 0.832f) < 4 * kUlp);
   CHECK(shaped_density(0.8f, 0.6f, 0.0f, -0.4f, 0.0f) == 0.8f);
+}
+
+TEST_CASE("weather_systems.glsl on the GPU agrees with the CPU", "[probe]") {
+  Random r(31);
+  std::vector<Case> cases;
+  // The tolerance: a band's edge turns its offset's rounding into value by its smoothstep's slope,
+  // at most 1.5 / (0.4 x 0.7 x 0.12) = 45 per head radius on the cold front's narrow end; the
+  // frame's coordinates (a dot product over a radius near 0.2) and the head's atan, log and exp
+  // err by a few kTranscendental: 8 kTranscendental x 45 x 4 (the head's log offset over its
+  // narrowest width) bounds both.
+  const float band = 8 * kTranscendental * 45 * 4;
+  for (int k = 0; k < 48; ++k) {
+    cases.push_back({arguments(PROBE_BAND_PROFILE, vec4(r(-1.0f, 1.0f), r(0.1f, 1.0f), 0, 0)), kArithmetic * 16});
+    const vec4 wrap(r(1.5f, 4.0f), 0, 0, 0);
+    cases.push_back({arguments(PROBE_COMMA_CLOUD, vec4(r(-3.0f, 3.0f), r(-3.5f, 2.5f), wrap.x, 0), vec4(0.0f),
+                               vec4(0.0f), vec4(r(-1.0f, 1.0f), 0, 0, 0)),
+                     band});
+    // A cyclone at 30-60 degrees and a point within 3 head radii of it.
+    const float lat = r(0.5f, 1.0f), lon = r(-3.0f, 3.0f), radius = r(0.12f, 0.25f);
+    const vec3 centre(std::cos(lat) * std::cos(lon), std::cos(lat) * std::sin(lon), std::sin(lat));
+    const vec3 p = normalize(centre + 3.0f * radius * vec3(r.v(-1.0f, 1.0f)));
+    const vec4 cyclone(centre, radius), life(r(1.5f, 4.0f), r(0.0f, 1.0f), 0, 0);
+    cases.push_back({arguments(PROBE_CYCLONE, vec4(r(-1.0f, 1.0f), 0, 0, 0), vec4(p, 0), cyclone, life), band});
+    // Cells and belts anywhere within 40 degrees of the equator; the cells' F1 differs by kF1-like
+    // rounding (kFbm) through a cloud edge's slope, 1 / (0.4 x 0.2) = 12.5 per cell; cirrus takes one fBm
+    // into a smoothstep of slope 6.
+    const float plat = r(-0.7f, 0.7f), plon = r(-3.1f, 3.1f);
+    const vec3 q(std::cos(plat) * std::cos(plon), std::cos(plat) * std::sin(plon), std::sin(plat));
+    const float seed = float(k % 5 + 1);
+    cases.push_back(
+        {arguments(PROBE_CELL_CLOUDS, vec4(r(5.0f, 50.0f), seed, r(-1.0f, 1.0f), 0), vec4(q, 0)), 12.5f * 50 * kFbm});
+    cases.push_back(
+        {arguments(PROBE_BELTS, vec4(r(-0.1f, 0.2f), seed, r(-1.0f, 1.0f), 0), vec4(q, 0)), 12.5f * 70 * kFbm});
+    cases.push_back(
+        {arguments(PROBE_WEATHER_DENSITY, vec4(r(-0.1f, 0.2f), seed, r(-1.0f, 1.0f), 0), vec4(q, 0), cyclone, life),
+         std::max(band, 12.5f * 70 * kFbm)});
+  }
+  compare("weather_systems", probe_weather_systems, cases);
 }
 
 TEST_CASE("latitude_bands.glsl on the GPU agrees with the CPU", "[probe]") {

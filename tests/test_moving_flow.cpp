@@ -17,7 +17,7 @@ namespace {
 
 CurlParams test_curl() {
   cover::CoverParameters p;
-  return cover::curl_params(p);  // the table's defaults: 3 zonal cells, P = 1, s = 0.1
+  return cover::curl_params(p);  // the table's defaults: 3 zonal cells, P = 0.5, s = 0.2
 }
 
 FlowMotion test_motion(float generation_time = 0.5f, int origin = 7) {
@@ -158,12 +158,14 @@ TEST_CASE("back-trajectories converge at fourth order and retrace forward steps"
     // Age 0: the point itself, up to the three steps' normalisations (an ulp each).
     CHECK(length(back_trajectory(x, t, 0.0f, 3, field) - x) <= 3 * 1.2e-7f);
     // Error against a fine reference shrinks about 16 times per halving of h (order 4); at least
-    // 8 allows for the smooth potential's limited smoothness between its Voronoi cells.
+    // 8 allows for the smooth potential's limited smoothness between its Voronoi cells. Below the
+    // float rounding that the 96-step reference gathers (a random walk of about 2 ulp of a unit
+    // vector a step: sqrt(96) x 2.4e-7 = 2.4e-6, twice that as the floor) no order shows.
     const vec3 reference = back_trajectory(x, t, age, 96, field);
     const float coarse = length(back_trajectory(x, t, age, 3, field) - reference);
     const float fine = length(back_trajectory(x, t, age, 6, field) - reference);
     INFO("case " << k << ": error " << coarse << " at 3 steps, " << fine << " at 6");
-    CHECK((fine <= 1e-6f || coarse / fine >= 8.0f));
+    CHECK((fine <= 5e-6f || coarse / fine >= 8.0f));
     // A step forward from where the back-trajectory ends returns to x: RK4's local error h^5
     // times the flow's fifth derivatives; below 1e-4 rad (a third of a texel at 1024 per face).
     const vec3 back = back_trajectory(x, t, 0.15f, 1, field);

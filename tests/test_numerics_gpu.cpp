@@ -256,8 +256,10 @@ TEST_CASE("two runs with the same flow time and different integrators give the s
   double worst_cover = 0;
   for (size_t k = 0; k < we.size(); ++k) {
     if (std::abs(identity[k].z) > std::sin(1.2f)) continue;  // as above
-    const float ce = cover_from_density(cover_density(vec3(we[k]), density), c.threshold, c.density_max);
-    const float cr = cover_from_density(cover_density(vec3(wr[k]), density), c.threshold, c.density_max);
+    // The linear ramp (softness 0), whose slope is 1 / (d_max - t): the softened remap adds a step
+    // of COVER_EDGE at the threshold, which no Lipschitz bound covers.
+    const float ce = cover_from_density(cover_density(vec3(we[k]), density), c.threshold, c.density_max, 0.0f);
+    const float cr = cover_from_density(cover_density(vec3(wr[k]), density), c.threshold, c.density_max, 0.0f);
     worst_cover = std::max(worst_cover, static_cast<double>(std::abs(ce - cr)));
   }
   INFO("cover difference " << worst_cover << ", bound " << cover_bound);
@@ -330,15 +332,15 @@ TEST_CASE("the default cover is within the stable step and neither reported as s
           "[numerics][gpu][stiff]") {
   test::test_context();
   cover::CoverParameters p = test::steady_cover();
-  p.size = 64;
+  p.size = 256;
   cover::GlobalCover cover(p);
   cover.run();
   const auto& d = cover.diagnose();
   INFO("stiffness " << d.stiffness.stiffness << " beyond on " << d.stiffness.beyond_fraction);
   CHECK(d.warnings.empty());
   CHECK(d.stiffness.beyond_fraction <= cover::warn_fraction);
-  // The exact flow keeps area (J = 1); the default flow is gentle enough for the texels of
-  // size 64 to resolve its stretching (measured J_min 0.71).
+  // The exact flow keeps area (J = 1); the texels of size 256 resolve the default steady flow's
+  // stretching (measured J_min 0.54; at 64 the finite differences see folds on 3e-5 of the sphere).
   CHECK(d.folding.folded_fraction == 0.0);
   CHECK(d.folding.jacobian_min > 0.0);
 }

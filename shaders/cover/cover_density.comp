@@ -1,7 +1,8 @@
 #version 450
 // Pass 4a: cloud density, inverted Worley fBm sampled through the warp, shaped by the flow's
 // cyclonic depth at the texel (the curl field's w: cyclones cloudy) and by the land/ocean bias
-// (--surface; a zero weight without one). The pass also reduces the densities' range into
+// (--surface; a zero weight without one), plus the weather systems (weather_systems.glsl) with
+// edges frayed by the same noise. The pass also reduces the densities' range into
 // DensityRange, which the calibration then needs no pass of its own to find: each invocation
 // walks a strip of u_strip texels down a column (as the reductions of coverage_histogram.comp)
 // and adds its strip's range with two atomics. (A reduction in shared memory needs a barrier,
@@ -20,6 +21,8 @@ layout(binding = 3) uniform sampler2D surface_bias;  // equirect, row 0 north, l
 layout(rgba32f, binding = 4) uniform readonly image2DArray young_warp_field;
 #endif
 #include "../lib/cover_density.glsl"
+#include "../lib/weather_systems.glsl"
+#include "../lib/portable_math.glsl"
 #include "../lib/cube_faces.glsl"
 #include "../lib/equirect_mapping.glsl"
 #include "reduction_words.glsl"
@@ -33,10 +36,16 @@ uniform FbmParams u_cover;
 uniform vec3 u_noise_offset;  // reduced modulo the lattice period by the host
 uniform float u_cyclone_cloudiness;
 uniform float u_surface_weight;
+uniform WeatherSystems u_systems;
 #if MOVING_LAYERS
 uniform FbmParams u_young_cover;  // the younger layer's noise (its own seed)
 uniform float u_young_share;
+uniform uint u_young_systems_seed;  // the younger layer's belts (u_systems.seed: the older's)
 #endif
+
+float belts_at(vec3 origin, uint seed, float noise) {
+  return belt_systems(origin, portable_asin(clamp(origin.z, -1.0f, 1.0f)), u_systems, seed, system_edge(noise));
+}
 
 void main() {
   int size = u_face_size;
@@ -48,18 +57,28 @@ void main() {
   for (int j = first; j < last; ++j) {
     ivec3 texel = ivec3(i, j, layer);
     vec3 warped = imageLoad(warp_field, texel).xyz;
+    ivec3 at = face_texel(texel);
+    vec3 direction = texel_direction(at.z, at.x, at.y, size);
     float surface = 0.0f;
-    if (u_surface_weight > 0.0f) {
-      ivec3 at = face_texel(texel);
-      surface = texture(surface_bias, equirect_uv(texel_direction(at.z, at.x, at.y, size))).x;
-    }
+    if (u_surface_weight > 0.0f) surface = texture(surface_bias, equirect_uv(direction)).x;
     float noise = cover_density_shifted(warped, u_cover, u_noise_offset);
 #if MOVING_LAYERS
-    noise = layer_blend(noise, cover_density_shifted(imageLoad(young_warp_field, texel).xyz, u_young_cover,
-                                                     u_noise_offset), u_young_share);
+    vec3 young_warped = imageLoad(young_warp_field, texel).xyz;
+    noise = layer_blend(noise, cover_density_shifted(young_warped, u_young_cover, u_noise_offset), u_young_share);
 #endif
-    float density =
-        shaped_density(noise, imageLoad(curl_field, texel).w, u_cyclone_cloudiness, surface, u_surface_weight);
+    // The cyclones move on their own (the host places them at the frame's time), so they are drawn
+    // where the texel is; the belts' clusters, cumulus and cirrus are carried by the flow as the
+    // noise is, drawn at each cloud layer's origin with the layer's own noise and blended as it.
+    float systems = max(cyclone_systems(direction, u_systems, system_edge(noise)),
+                        belts_at(normalize(warped), u_systems.seed, noise));
+#if MOVING_LAYERS
+    systems = max(cyclone_systems(direction, u_systems, system_edge(noise)),
+                  layer_blend(belts_at(normalize(warped), u_systems.seed, noise),
+                              belts_at(normalize(young_warped), u_young_systems_seed, noise), u_young_share));
+#endif
+    float density = with_systems(
+        shaped_density(noise, imageLoad(curl_field, texel).w, u_cyclone_cloudiness, surface, u_surface_weight),
+        systems);
     imageStore(density_field, texel, vec4(density, 0.0f, 0.0f, 0.0f));
     low = min(low, sortable_bits(density));
     high = max(high, sortable_bits(density));

@@ -16,6 +16,7 @@ layout(r32f, binding = 1) uniform writeonly image2DArray cover_field;
 
 uniform float u_threshold;
 uniform float u_density_max;
+uniform float u_softness;
 // Per band, a 64-bit sum of texel weight units (cleared by the host), as stage 8 of
 // coverage_histogram.comp, which measures the same on any density map.
 layout(std430, binding = 9) buffer BandCloudy { uint band_cloudy[]; };
@@ -49,7 +50,7 @@ void main() {
         run_units += texel_weight(at.x, at.y, size);
       }
     }
-    imageStore(cover_field, texel, vec4(cover_from_density(density, threshold, u_density_max), 0.0f, 0.0f, 0.0f));
+    imageStore(cover_field, texel, vec4(cover_from_density(density, threshold, u_density_max, u_softness), 0.0f, 0.0f, 0.0f));
   }
   if (run_band >= 0) ADD_UNITS64(band_cloudy, run_band, run_units);
 }

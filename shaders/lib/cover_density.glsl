@@ -32,9 +32,32 @@ float shaped_density(float density, float cyclonic, float cloudiness, float surf
   return density * (1.0f + cloudiness * cyclonic) * (1.0f + surface_weight * surface);
 }
 
-// Linear ramp from the calibrated threshold (cover 0) to the largest density (cover 1):
-// texels with density above the threshold, and only those, are cloudy (cover > 0).
-float cover_from_density(float density, float threshold, float density_max) {
+// The cover's noise as the weather systems' edge offset in [-1, 1]: the warped fBm's values
+// spread about 0.55 with a standard deviation near 0.1 (8 octaves of gain 0.75).
+float system_edge(float noise) {
+  return clamp((noise - 0.55f) / 0.15f, -1.0f, 1.0f);
+}
+
+// The density with the weather systems' field w in [0, 1] (weather_systems.glsl): d (1 + 0.6 w), a
+// factor, as the cyclones' and the surface's, so that the systems keep the warped noise's texture
+// and frayed edges inside them and only lift it above the threshold.
+float with_systems(float density, float systems) {
+  return density * (1.0f + 0.6f * systems);
+}
+
+// The cover of a cloudy texel just above the threshold: cloud boundaries are steps of optical
+// thickness at a texel's scale, not ramps from nothing.
+const float COVER_EDGE = 0.1f;
+
+// Cover from density with the calibrated threshold: texels with density above the threshold, and
+// only those, are cloudy (cover > 0). With softness s > 0, 1 - (1 - e) exp(-(d - t) / s), e the
+// COVER_EDGE: cloud more than a few s above the threshold (the weather systems' bands) saturates
+// towards 1 and ends in a sharp edge, cloud just above it (thin cirrus, the noise's fringes)
+// stays grey. With s = 0 the linear ramp from the threshold (0) to the largest density (1) of
+// earlier versions.
+float cover_from_density(float density, float threshold, float density_max, float softness) {
+  if (softness > 0.0f)
+    return density > threshold ? 1.0f - (1.0f - COVER_EDGE) * exp(-(density - threshold) / softness) : 0.0f;
   float span = density_max - threshold;
   return span > 0.0f ? clamp((density - threshold) / span, 0.0f, 1.0f) : 0.0f;
 }

@@ -40,6 +40,12 @@ struct CoverParameters {
   float storm_tracks = params::cover::storm_tracks.default_float();      // vortex focus on the storm tracks
   float cyclone_cloudiness =
       params::cover::cyclone_cloudiness.default_float();  // weight of the cyclonic depth in the density
+  // The weather systems (weather_systems.hpp) and the remap's softness (docs/climate.md).
+  int cyclones = params::cover::cyclones.default_int();                  // per hemisphere
+  float itcz = params::cover::itcz.default_float();                      // strength of the ITCZ's clusters
+  float trade_cumulus = params::cover::trade_cumulus.default_float();    // strength of the cumulus fields
+  float cirrus = params::cover::cirrus.default_float();                  // strength of the cirrus streaks
+  float cover_softness = params::cover::cover_softness.default_float();  // density scale of the remap
   NoiseOctaves density{params::cover::density_frequency.default_float(), params::cover::density_octaves.default_int(),
                        params::cover::density_lacunarity.default_float(),
                        params::cover::density_gain.default_float()};  // Worley fBm of the cloud density
@@ -92,6 +98,11 @@ void visit_numeric_parameters(P& p, Visit&& visit) {
   visit(c::zonal_cells, p.zonal_cells);
   visit(c::storm_tracks, p.storm_tracks);
   visit(c::cyclone_cloudiness, p.cyclone_cloudiness);
+  visit(c::cyclones, p.cyclones);
+  visit(c::itcz, p.itcz);
+  visit(c::trade_cumulus, p.trade_cumulus);
+  visit(c::cirrus, p.cirrus);
+  visit(c::cover_softness, p.cover_softness);
   visit(c::density_frequency, p.density.frequency);
   visit(c::density_octaves, p.density.octaves);
   visit(c::density_lacunarity, p.density.lacunarity);
@@ -102,7 +113,7 @@ void visit_numeric_parameters(P& p, Visit&& visit) {
 }
 
 // Independent seeds per noise layer, derived from the user's seed.
-enum class NoiseLayer : std::uint32_t { potential_north = 1, potential_south = 2, density = 3 };
+enum class NoiseLayer : std::uint32_t { potential_north = 1, potential_south = 2, density = 3, weather_systems = 4 };
 std::uint32_t layer_seed(std::uint32_t seed, NoiseLayer layer);
 
 glsl::FbmParams fbm_params(const NoiseOctaves& octaves, std::uint32_t seed, NoiseLayer layer);

@@ -28,6 +28,7 @@ void CoverageRemap::calibrate(const DensityParts& parts, std::optional<std::pair
 void CoverageRemap::begin_remap() const {
   remap_program_.set("u_threshold", result_.threshold);
   remap_program_.set("u_density_max", result_.density_max);
+  remap_program_.set("u_softness", parameters_.cover_softness);
   remap_program_.set("u_bands", flat(parameters_) ? 0 : profile_bands);
   remap_program_.set("u_strip", reduction_strip(parameters_.size));
   if (!flat(parameters_)) {

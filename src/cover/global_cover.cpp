@@ -1,4 +1,5 @@
 #include "cover/global_cover.hpp"
+#include "cover/weather_systems.hpp"
 #include "cover/equirect.hpp"
 #include "cover/moving_flow.hpp"
 
@@ -423,6 +424,16 @@ void GlobalCover::run_density() {
     density_program_.set("u_noise_offset", density_offset(parameters_));
     density_program_.set("u_cyclone_cloudiness", parameters_.cyclone_cloudiness);
     density_program_.set("u_surface_weight", parameters_.surface ? parameters_.surface_weight : 0.0f);
+    // The steady flow's cover does not change with the time; the moving flow's systems live on it,
+    // and its two cloud layers draw their belts with their own noise (the older's in u_systems).
+    glsl::WeatherSystems systems =
+        weather_systems(parameters_, moving(parameters_) ? hours_since_epoch(parameters_.time) : 0.0);
+    if (moving(parameters_)) {
+      systems.seed = layer_systems_seed(parameters_, clock_.young_layer - 1, clock_.layers_in_loop);
+      density_program_.set("u_young_systems_seed",
+                           layer_systems_seed(parameters_, clock_.young_layer, clock_.layers_in_loop));
+    }
+    glsl::set_uniform(density_program_, "u_systems", systems);
     if (!surface_bias_.id()) upload_surface_bias();
     namespace density = shader_bindings::cover_cover_density;
     if (moving(parameters_)) {

@@ -13,7 +13,7 @@
 namespace nephele::cover {
 
 // Hours per flow unit: the stream function's trade wind at the equator, u = 3 s P flow units
-// for the table's s = 0.1 and P = 1, is 6 m/s (the surface trades blow at 5-7 m/s; Peixoto and
+// for the table's s = 0.2 and P = 0.5 (s P = 0.1), is 6 m/s (the surface trades blow at 5-7 m/s; Peixoto and
 // Oort, Physics of Climate, 1992, fig. 7.20): 0.3 / (6 m/s * 3600 s / 6371 km) = 88.5 hours.
 constexpr double flow_hours_per_unit = 0.3 / (6.0 * 3600.0 / 6371000.0);
 // The time origin of --time: the flow's time 0.

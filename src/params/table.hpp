@@ -41,7 +41,7 @@ inline constexpr Parameter curl_lacunarity = real(
 inline constexpr Parameter curl_gain =
     real("curl_gain", 0.2, 0.0, 1.0, "", "amplitude ratio between octaves", cover_commands, "potential.gain");
 inline constexpr Parameter prevailing =
-    real("prevailing", 1.0, -100.0, 100.0, "", "strength of the zonal wind bands (> 0: easterly trade winds)",
+    real("prevailing", 0.5, -100.0, 100.0, "", "strength of the zonal wind bands (> 0: easterly trade winds)",
          cover_commands);
 inline constexpr Parameter mix_frequency = real(
     "mix_frequency", 3.0, 0.0, 10.0, "",
@@ -66,8 +66,29 @@ inline constexpr Parameter cyclone_cloudiness =
          "k in density * (1 + k c), c the flow's cyclonic depth (0 .. about 0.6): cyclones cloudy, anticyclones clear "
          "(0: off; docs/climate.md)",
          cover_commands);
+inline constexpr Parameter cyclones =
+    integer("cyclones", 6, 0, 16, "per hemisphere",
+            "extratropical cyclones with comma cloud, cold-front band, dry slot and warm-front shield, each living 5 "
+            "days in the storm track (0: none; docs/climate.md, \"Weather systems\")",
+            cover_commands, "systems.cyclones");
+inline constexpr Parameter itcz =
+    real("itcz", 1.0, 0.0, 1.0, "",
+         "strength of the ITCZ's broken line of convective clusters near 5 N, following --month (0: none)",
+         cover_commands, "systems.itcz");
+inline constexpr Parameter trade_cumulus =
+    real("trade_cumulus", 1.0, 0.0, 1.0, "",
+         "strength of the fields of small trade cumulus between 6 and 30 degrees (0: none)", cover_commands,
+         "systems.trade_cumulus");
+inline constexpr Parameter cirrus = real(
+    "cirrus", 1.0, 0.0, 1.0, "", "strength of the thin cirrus streaks along the westerlies and over the ITCZ (0: none)",
+    cover_commands, "systems.cirrus");
+inline constexpr Parameter cover_softness =
+    real("cover_softness", 0.05, 0.0, 10.0, "density",
+         "cover = 1 - exp(-(density - threshold) / softness): thick cloud saturates to a bright, sharp-edged 1 and "
+         "thin cloud stays grey (0: the linear ramp to the largest density of earlier versions)",
+         cover_commands, "remap.softness");
 inline constexpr Parameter curl_strength =
-    real("curl_strength", 0.1, 0.0, 100.0, "", "scale of the flow's potential (velocity = strength * n x grad phi)",
+    real("curl_strength", 0.2, 0.0, 100.0, "", "scale of the flow's potential (velocity = strength * n x grad phi)",
          cover_commands);
 inline constexpr Parameter density_frequency =
     real("density_frequency", 3.0, 0.01, 4096.0, "cells per radius",

@@ -30,6 +30,7 @@ namespace nephele::glsl {
 #include "lib/terrain.glsl"
 #include "lib/tileable_noise.glsl"
 #include "lib/warp_step.glsl"
+#include "lib/weather_systems.glsl"
 #include "lib/webanck_forms.glsl"
 #include "lib/worley.glsl"
 #include "lib/worley_fbm.glsl"

@@ -39,6 +39,25 @@ void set_uniform(const gpu::ComputeProgram& program, const std::string& name, co
   program.set(name + ".generations", motion.generations);
 }
 
+void set_uniform(const gpu::ComputeProgram& program, const std::string& name, const WeatherSystems& systems) {
+  for (int i = 0; i < MAX_CYCLONES; ++i) {
+    const Cyclone& c = systems.cyclones[i];
+    const std::string cyclone = name + ".cyclones[" + std::to_string(i) + "].";
+    program.set(cyclone + "centre", c.centre);
+    program.set(cyclone + "east", c.east);
+    program.set(cyclone + "pole", c.pole);
+    program.set(cyclone + "radius", c.radius);
+    program.set(cyclone + "wrap", c.wrap);
+    program.set(cyclone + "strength", c.strength);
+  }
+  program.set(name + ".cyclone_count", systems.cyclone_count);
+  program.set(name + ".itcz_latitude", systems.itcz_latitude);
+  program.set(name + ".itcz", systems.itcz);
+  program.set(name + ".trade_cumulus", systems.trade_cumulus);
+  program.set(name + ".cirrus", systems.cirrus);
+  program.set(name + ".seed", static_cast<unsigned>(systems.seed));
+}
+
 void set_uniform(const gpu::ComputeProgram& program, const std::string& name, const MarchParams& params) {
   for (int i = 0; i < MAX_LAYERS; ++i) {
     const LayerParams& l = params.layers[i];

@@ -1,6 +1,6 @@
 #pragma once
-// The one upload of the library's parameter blocks (FbmParams, CurlParams, MarchParams) to a shader's
-// uniform struct of the same layout.
+// The one upload of the library's parameter blocks (FbmParams, CurlParams, FlowMotion, WeatherSystems, MarchParams) to
+// a shader's uniform struct of the same layout.
 #include <string>
 
 #include "gpu/compute_program.hpp"
@@ -20,6 +20,8 @@ void set_uniform(const gpu::ComputeProgram& program, const std::string& name, co
                  Members members = Members::all);
 void set_uniform(const gpu::ComputeProgram& program, const std::string& name, const CurlParams& params);
 void set_uniform(const gpu::ComputeProgram& program, const std::string& name, const FlowMotion& motion);
+// Every member, all MAX_CYCLONES cyclones included (those past cyclone_count as given).
+void set_uniform(const gpu::ComputeProgram& program, const std::string& name, const WeatherSystems& systems);
 // Every member, all MAX_LAYERS layers included (those past layer_count as given).
 void set_uniform(const gpu::ComputeProgram& program, const std::string& name, const MarchParams& params);
 

@@ -265,11 +265,12 @@ SweepResult run_sweep(const SweepOptions& o, const std::function<void(const std:
             if (!std::isfinite(length) || std::abs(length - 1.0f) > 1e-5f) row.off_sphere = true;
             if (!reference[k].converged) continue;
             warp_errors.push_back(great_circle_distance(dvec3(w), reference[k].end));
-            const float approximate = glsl::cover_from_density(glsl::cover_density_shifted(w, density, density_offset),
-                                                               calibration.threshold, calibration.density_max);
+            const float approximate =
+                glsl::cover_from_density(glsl::cover_density_shifted(w, density, density_offset), calibration.threshold,
+                                         calibration.density_max, p.cover_softness);
             const float exact = glsl::cover_from_density(
                 glsl::cover_density_shifted(glm::vec3(reference[k].end), density, density_offset),
-                calibration.threshold, calibration.density_max);
+                calibration.threshold, calibration.density_max, p.cover_softness);
             cover_errors.push_back(std::abs(static_cast<double>(approximate) - exact));
           }
           row.warp_err_rms = rms_of(warp_errors);

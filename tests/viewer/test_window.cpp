@@ -288,6 +288,8 @@ TEST_CASE("the preview sizes march the preview steps and the full size the scene
   options.scene.light_steps = 12;
   Viewer v(options);
   v.set_panels_visible(false);
+  // Overcast, so that the clouds the steps march are in view whatever the cover's weather.
+  viewer::set_value(v.state(), params::cover::coverage, "0.95");
   refine(v);
   const auto source = viewer::make_view_source({}, {});
   viewer::ViewState cheap = v.state();
@@ -360,6 +362,7 @@ TEST_CASE("changing a panel's cover value makes the cover again and shows a diff
   Viewer v(small_cover_view());
   v.set_panels_visible(false);
   v.set_capture(true);
+  viewer::set_value(v.state(), params::cover::coverage, "0.95");  // clouds in view, whatever the weather
   refine(v);
   const core::ImageData before = v.last_frame();
   viewer::set_value(v.state(), params::cover::coverage, "0.1");

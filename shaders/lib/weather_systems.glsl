@@ -1,0 +1,185 @@
+// The weather systems of the global cover (docs/climate.md, "Weather systems"): extratropical
+// cyclones with their comma cloud, the ITCZ's broken line of convective clusters, fields of trade
+// cumulus and cirrus streaks. Each is a field in [0, 1] with a flat top and a steep, noise-frayed
+// edge; the density pass adds them to the warped noise, so that the calibration, which ranks the
+// densities, lays the systems' cloud first and fills each band's remaining target from the noise.
+// Positions are radians of arc on the unit sphere (z north); the cyclones' places at a moment are
+// the host's (cover/weather_systems.hpp), so that every frame is computed on its own.
+#ifndef NEPHELE_WEATHER_SYSTEMS_GLSL
+#define NEPHELE_WEATHER_SYSTEMS_GLSL
+#include "prelude.glsl"
+#include "hash.glsl"
+#include "parameters.glsl"
+#include "portable_math.glsl"
+#include "worley.glsl"
+#include "worley_fbm.glsl"
+
+#define MAX_CYCLONES 32
+
+// One extratropical cyclone at a moment. Its frame: x east, y towards the nearer pole, so that the
+// southern hemisphere's cyclones are the mirror images of the northern ones (they turn clockwise).
+struct Cyclone {
+  vec3 centre;     // unit vector of the low's centre
+  vec3 east;       // unit tangent east at the centre
+  vec3 pole;       // unit tangent towards the nearer pole at the centre
+  float radius;    // the comma head's radius, radians of arc
+  float wrap;      // how far the head winds around the centre, radians (grows as the low occludes)
+  float strength;  // 0 .. 1 over the life cycle (growth, maturity, decay)
+};
+
+struct WeatherSystems {
+  Cyclone cyclones[MAX_CYCLONES];
+  int cyclone_count;
+  float itcz_latitude;  // radians, the ITCZ's centre line (follows --month)
+  float itcz;           // strength of its convective clusters, 0: none
+  float trade_cumulus;  // strength of the trade cumulus fields, 0: none
+  float cirrus;         // strength of the cirrus streaks, 0: none
+  uint seed;            // the belts' noise (cluster places, cumulus cells, cirrus); per cloud layer
+};
+
+// A band with a flat top and a steep edge: 1 for |offset| up to 0.6 half_width, 0 from half_width.
+float band_profile(float offset, float half_width) {
+  return 1.0f - smoothstep(0.6f, 1.0f, abs(offset) / half_width);
+}
+
+// p in the cyclone's frame, in head radii (x east, y poleward); far away (1e3) on the far side.
+vec2 cyclone_frame(vec3 p, IN(Cyclone) cyclone) {
+  if (dot(p, cyclone.centre) < 0.5f) return vec2(1.0e3f);
+  vec3 d = p - cyclone.centre;
+  return vec2(dot(d, cyclone.east), dot(d, cyclone.pole)) / cyclone.radius;
+}
+
+// The comma cloud of a cyclone in its frame (head radii; the northern hemisphere's orientation),
+// after the conceptual model of satellite meteorology (Carlson 1980, "Airflow through midlatitude
+// cyclones and the comma cloud pattern", Mon. Wea. Rev. 108; Browning 1997): the cold front's
+// band trails from east of the low three radii towards the equator and west, sharp on its rear
+// edge where the dry slot follows it; at the join it becomes the head, a logarithmic spiral that
+// winds `wrap` radians anticlockwise around the low, broad on its poleward side (the warm front's
+// cloud shield) and thinning to the hook. The low's centre and the dry slot are clear. `edge` in
+// [-1, 1] (the cover's own noise) moves the band across by up to 0.4 of its half width (never
+// clearing its core), so that the edges are as ragged as the noise and move with it.
+float comma_cloud(vec2 xy, float wrap, float edge) {
+  const vec2 tail_end = vec2(-0.7f, -3.0f);
+  const vec2 join = vec2(1.0f, -0.6f);
+  vec2 axis = join - tail_end;
+  float along_tail = clamp(dot(xy - tail_end, axis) / dot(axis, axis), 0.0f, 1.0f);
+  vec2 from_axis = xy - (tail_end + along_tail * axis);
+  vec2 ahead = normalize(vec2(axis.y, -axis.x));  // east-south-east: ahead of the cold front
+  float tail_half = mix(0.12f, 0.35f, along_tail);
+  float across = (dot(from_axis, ahead) >= 0.0f ? 1.0f : -1.0f) * length(from_axis) + edge * 0.4f * tail_half;
+  float tail_width = across > 0.0f ? 1.3f * tail_half : 0.7f * tail_half;
+  float tail = band_profile(across, tail_width) * smoothstep(0.0f, 0.2f, along_tail);
+
+  const float two_pi = 6.28318530717959f;
+  const float r_hook = 0.3f;
+  float r_join = length(join);
+  float theta_join = atan(join.y, join.x);
+  float k = log(r_join / r_hook) / max(wrap, 0.1f);  // r(phi) = r_join exp(-k phi), phi in [0, wrap]
+  float r = max(length(xy), 1.0e-4f);
+  float turned = atan(xy.y, xy.x) - theta_join;
+  float phi0 = turned - two_pi * floor(turned / two_pi);  // [0, 2 pi)
+  float head = 0.0f;
+  for (int turn = 0; turn < 2; ++turn) {
+    float phi = phi0 - two_pi * float(turn);
+    float along = phi / max(wrap, 0.1f);
+    if (along < -0.15f || along > 1.0f) continue;
+    float half_width = mix(0.45f, 0.2f, clamp(along, 0.0f, 1.0f));
+    // > 0: poleward of the arm (the shield)
+    float offset = log(r / (r_join * exp(-k * phi))) + edge * 0.4f * half_width;
+    float width = offset > 0.0f ? 1.3f * half_width : 0.8f * half_width;
+    float arm = band_profile(offset, width) * smoothstep(-0.15f, 0.05f, along) *
+                (1.0f - smoothstep(0.75f, 1.0f, along));
+    head = max(head, arm);
+  }
+  return max(tail, head);
+}
+
+// A cyclone's cloud at p: its comma scaled by its strength.
+float cyclone_cloud(vec3 p, IN(Cyclone) cyclone, float edge) {
+  vec2 xy = cyclone_frame(p, cyclone);
+  if (dot(xy, xy) > 16.0f) return 0.0f;  // the comma lies within 3.1 head radii of the low
+  return cyclone.strength * comma_cloud(xy, cyclone.wrap, edge);
+}
+
+// Round clouds in cells of a random lattice (Worley F1): a cell's cloud has a radius of `radius`
+// plus up to `spread` (in cells) by the cell's hash, and one cell in `empty` has none. The edge
+// is as steep as band_profile's and moved by `edge` (a tenth of a cell at most).
+float cell_clouds(vec3 p, float frequency, uint seed, uint layer, float radius, float spread, float empty,
+                  float edge) {
+  vec3 scaled = p * frequency;
+  vec4 f1 = worley_f1(scaled, ivec3(0), noise_key(seed, layer));
+  // The nearest feature point's cell names the cloud.
+  ivec3 cell = ivec3(floor(scaled - vec3(f1) * f1.w));
+  vec3 h = hash_to_unit3(pcg3d(uvec3(cell) ^ noise_key(seed, layer + 1u)));
+  if (h.y < empty) return 0.0f;
+  float size = radius + spread * h.x;
+  return 1.0f - smoothstep(0.6f * size, size, f1.w + 0.1f * edge);
+}
+
+// The ITCZ: clusters of deep convection 300-700 km across (where the sphere cuts a cell's ball
+// through its middle), about 1000 km apart (6 cells per radius), a quarter of the places empty, within a Gaussian belt of 4 degrees around the line
+// (Waliser and Gautier 1993, "A satellite-derived climatology of the ITCZ", J. Climate 6;
+// Mapes and Houze 1993 for the clusters' sizes).
+float itcz_clusters(vec3 p, float latitude, float itcz_latitude, uint seed, float edge) {
+  float belt = (latitude - itcz_latitude) / 0.07f;
+  belt = exp(-belt * belt);
+  if (belt < 0.02f) return 0.0f;
+  return belt * cell_clouds(p, 6.0f, seed, 11u, 0.3f, 0.35f, 0.25f, edge);
+}
+
+// Trade cumulus: many small clouds up to 60-120 km across (the mesoscale clusters of the cumulus,
+// whose single clouds are far below a texel), about 110 km apart (60 cells per radius), 30 % of
+// the cells empty and the fields patchy where the cover's noise is low, between about 6 and 30 degrees of
+// latitude where the trades blow (Nuijens et al. 2014, "The
+// distribution and variability of low-level cloud in the North Atlantic trades", QJRMS 140).
+float trade_cumulus(vec3 p, float latitude, uint seed, float edge) {
+  float a = abs(latitude);
+  float belt = smoothstep(0.06f, 0.14f, a) * (1.0f - smoothstep(0.45f, 0.58f, a));
+  if (belt <= 0.0f) return 0.0f;
+  return belt * smoothstep(-0.4f, 0.2f, edge) * cell_clouds(p, 60.0f, seed, 13u, 0.3f, 0.25f, 0.3f, edge);
+}
+
+// Cirrus streaks: Worley fBm (14 cells per radius, 2 octaves) of the point with its z (north)
+// component stretched fourfold, which draws the cells out along the latitude circles into streaks
+// about 3 to 4 times longer than wide (sqrt(sin^2 lat + 16 cos^2 lat) : 1), as the westerlies and
+// the tropical easterlies draw out cirrus; in the storm tracks (35-65 degrees) and over the ITCZ's
+// anvils (within 15 degrees of the equator). One fBm: a streak costs a fifth of the cover's noise.
+float cirrus_streaks(vec3 p, float latitude, uint seed) {
+  float a = abs(latitude);
+  float gate = max(smoothstep(0.55f, 0.7f, a) * (1.0f - smoothstep(1.05f, 1.2f, a)), 1.0f - smoothstep(0.15f, 0.3f, a));
+  if (gate <= 0.0f) return 0.0f;
+  FbmParams noise;
+  noise.frequency = 14.0f;
+  noise.octaves = 2;
+  noise.lacunarity = 2.0f;
+  noise.gain = 0.5f;
+  noise.seed = seed ^ 0x2545F491u;
+  noise.period = ivec3(0);
+  return gate * smoothstep(0.55f, 0.8f, inverted_worley_fbm(vec3(p.x, p.y, 4.0f * p.z), noise).w);
+}
+
+// The cyclones' cloud at p: the largest of their commas.
+float cyclone_systems(vec3 p, IN(WeatherSystems) systems, float edge) {
+  float cloud = 0.0f;
+  for (int i = 0; i < systems.cyclone_count && i < MAX_CYCLONES; ++i)
+    cloud = max(cloud, cyclone_cloud(p, systems.cyclones[i], edge));
+  return cloud;
+}
+
+// The belts' cloud at p with the noise of `seed`: ITCZ clusters at full weight (thick cloud),
+// trade cumulus at 0.6, cirrus at 0.35 (thin: it rises little above the threshold and stays grey).
+float belt_systems(vec3 p, float latitude, IN(WeatherSystems) systems, uint seed, float edge) {
+  float cloud = 0.0f;
+  if (systems.itcz > 0.0f) cloud = max(cloud, systems.itcz * itcz_clusters(p, latitude, systems.itcz_latitude, seed, edge));
+  if (systems.trade_cumulus > 0.0f) cloud = max(cloud, 0.6f * systems.trade_cumulus * trade_cumulus(p, latitude, seed, edge));
+  if (systems.cirrus > 0.0f) cloud = max(cloud, 0.35f * systems.cirrus * cirrus_streaks(p, latitude, seed));
+  return cloud;
+}
+
+// All systems at the unit direction p of geocentric latitude `latitude` (radians), with the cover's
+// noise as `edge` in [-1, 1] and the belts' noise of systems.seed: the larger of the two fields.
+float weather_density(vec3 p, float latitude, IN(WeatherSystems) systems, float edge) {
+  return max(cyclone_systems(p, systems, edge), belt_systems(p, latitude, systems, systems.seed, edge));
+}
+
+#endif

@@ -1,0 +1,97 @@
+#include "cover/weather_systems.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+#include "cover/latitude_profile.hpp"
+#include "cover/moving_flow.hpp"
+
+namespace nephele::cover {
+namespace {
+
+constexpr double degree = M_PI / 180.0;
+constexpr double earth_radius_km = 6371.0;
+
+// Three uniform numbers in [0, 1) for a slot of a hemisphere (slots may be negative: before the
+// epoch).
+glsl::vec3 slot_random(std::uint32_t seed, std::int64_t slot, int hemisphere, std::uint32_t salt) {
+  const auto s = static_cast<std::uint64_t>(slot);
+  return glsl::hash_to_unit3(glsl::pcg3d(
+      glsl::uvec3(seed ^ salt, static_cast<std::uint32_t>(s), static_cast<std::uint32_t>(s >> 32) * 2u + hemisphere)));
+}
+
+float smoothstep(double a, double b, double x) {
+  const double t = std::clamp((x - a) / (b - a), 0.0, 1.0);
+  return static_cast<float>(t * t * (3.0 - 2.0 * t));
+}
+
+glsl::Cyclone make_cyclone(double latitude_deg, double longitude_deg, double radius_km, double age_fraction) {
+  const double lat = latitude_deg * degree, lon = longitude_deg * degree;
+  const float sign = latitude_deg >= 0.0 ? 1.0f : -1.0f;
+  glsl::Cyclone c;
+  c.centre = glsl::vec3(std::cos(lat) * std::cos(lon), std::cos(lat) * std::sin(lon), std::sin(lat));
+  c.east = glsl::vec3(-std::sin(lon), std::cos(lon), 0.0);
+  c.pole = sign * glsl::vec3(glsl::vec3(-std::sin(lat) * std::cos(lon), -std::sin(lat) * std::sin(lon), std::cos(lat)));
+  c.radius = static_cast<float>(radius_km / earth_radius_km);
+  c.wrap = cyclone_wrap(age_fraction);
+  c.strength = cyclone_strength(age_fraction);
+  return c;
+}
+
+}  // namespace
+
+float cyclone_strength(double a) { return smoothstep(0.0, 0.2, a) * (1.0f - smoothstep(0.67, 1.0, a)); }
+
+float cyclone_wrap(double a) { return static_cast<float>(M_PI * (0.5 + 0.75 * std::clamp(a, 0.0, 1.0))); }
+
+glsl::WeatherSystems weather_systems(const CoverParameters& p, double hours) {
+  glsl::WeatherSystems w{};
+  const std::uint32_t seed = layer_seed(p.seed, NoiseLayer::weather_systems);
+  w.seed = seed;
+  w.itcz = p.itcz;
+  w.trade_cumulus = p.trade_cumulus;
+  w.cirrus = p.cirrus;
+  // The ITCZ's annual-mean line near 5 N (Waliser and Gautier 1993), moved with the profile's
+  // seasonal shift there.
+  w.itcz_latitude = static_cast<float>((5.0 + seasonal_shift_deg(5.0, p.month)) * degree);
+  if (p.cyclones <= 0) return w;
+  const double lifetime = cyclone_lifetime_hours;
+  double spacing = lifetime / p.cyclones;
+  // With a loop, a whole number of slots fits it and slot k + n is slot k again, a loop later.
+  std::int64_t slots_in_loop = 0;
+  if (p.loop_hours > 0.0) {
+    slots_in_loop = std::max<std::int64_t>(1, std::llround(p.loop_hours / spacing));
+    spacing = p.loop_hours / static_cast<double>(slots_in_loop);
+  }
+  const double track_deg = 38.0 + seasonal_shift_deg(50.0, p.month);
+  const auto first = static_cast<std::int64_t>(std::floor((hours - lifetime) / spacing)) - 1;
+  const auto last = static_cast<std::int64_t>(std::floor(hours / spacing));
+  for (int hemisphere = 0; hemisphere < 2; ++hemisphere) {
+    for (std::int64_t slot = first; slot <= last && w.cyclone_count < MAX_CYCLONES; ++slot) {
+      std::int64_t named = slot;
+      if (slots_in_loop > 0) named = ((slot % slots_in_loop) + slots_in_loop) % slots_in_loop;
+      const glsl::vec3 u = slot_random(seed, named, hemisphere, 0x68E31DA4u);
+      const glsl::vec3 v = slot_random(seed, named, hemisphere, 0xB5297A4Du);
+      const double genesis = (static_cast<double>(slot) + 0.8 * u.x) * spacing;
+      const double age = hours - genesis;
+      if (age < 0.0 || age >= lifetime) continue;
+      const double a = age / lifetime;
+      // In the south the tracks move with the season as the north's do (the profile's shift).
+      const double genesis_lat = (hemisphere == 0 ? track_deg : 76.0 - track_deg) + 12.0 * (u.y - 0.5);
+      const double latitude = genesis_lat + cyclone_poleward_deg * a;
+      const double mean_cos = std::cos((genesis_lat + 0.5 * cyclone_poleward_deg * a) * degree);
+      const double east_deg = cyclone_speed_m_s * 3.6 * age / (earth_radius_km * mean_cos) / degree;
+      const double longitude = 360.0 * u.z + east_deg;
+      const double radius_km = (900.0 + 600.0 * v.x) * (0.7 + 0.3 * cyclone_strength(a));
+      w.cyclones[w.cyclone_count++] = make_cyclone(hemisphere == 0 ? latitude : -latitude, longitude, radius_km, a);
+    }
+  }
+  return w;
+}
+
+std::uint32_t layer_systems_seed(const CoverParameters& p, std::int64_t layer, int layers_in_loop) {
+  return glsl::pcg3d(glsl::uvec3(layer_density_params(p, layer, layers_in_loop).seed, 0x57A7E5u, 0u)).x;
+}
+
+}  // namespace nephele::cover

@@ -1,0 +1,42 @@
+#pragma once
+// The host's side of the weather systems (shaders/lib/weather_systems.glsl): where the
+// extratropical cyclones are at a moment, how old and how strong, and the ITCZ's latitude. Each
+// cyclone lives through its own slot of a seeded schedule, so that the systems of any moment
+// follow from the seed and the time alone: frames are computed on their own, in any order
+// (docs/climate.md, "Weather systems").
+#include <cstdint>
+#include <vector>
+
+#include "cover/cover_parameters.hpp"
+#include "shader_math/shader_math.hpp"
+
+namespace nephele::cover {
+
+// The life of an extratropical cyclone from its wave to its decay, hours: 3-7 days observed
+// (Hoskins and Hodges 2002, "New perspectives on the Northern Hemisphere winter storm tracks",
+// J. Atmos. Sci. 59: most tracks last 2-6 days); nephele takes 5.
+constexpr double cyclone_lifetime_hours = 120.0;
+// Their eastward speed, m/s (Hoskins and Hodges 2002: 10-15 m/s along the tracks), and the
+// poleward drift over a life, degrees (Hoskins and Hodges: 5-15 degrees).
+constexpr double cyclone_speed_m_s = 12.0;
+constexpr double cyclone_poleward_deg = 10.0;
+
+// One cyclone's state at `age_fraction` = age / lifetime in [0, 1): its strength (grows in the
+// first fifth, decays in the last third) and how far its head winds (half a turn as a wave, three
+// quarters of a turn more as it occludes).
+float cyclone_strength(double age_fraction);
+float cyclone_wrap(double age_fraction);
+
+// The systems at `hours` since the flow's epoch (cover/moving_flow.hpp): p.cyclones per
+// hemisphere on average (a Poisson-like schedule: genesis every lifetime / p.cyclones hours with
+// a seeded jitter), each from its genesis place in the storm track (38 +- 6 degrees, moved with
+// --month as the profile's storm tracks) drifting east and poleward. With --loop the schedule
+// repeats after the loop, so the cover does. At most MAX_CYCLONES.
+glsl::WeatherSystems weather_systems(const CoverParameters& p, double hours);
+
+// The belts' noise of the moving flow's cloud layer `layer` (cover/moving_flow.hpp): its own, as
+// the layer's density noise is (derived from that noise's seed), so that the ITCZ's clusters, the
+// cumulus and the cirrus fade in and out with the layers instead of jumping between them.
+std::uint32_t layer_systems_seed(const CoverParameters& p, std::int64_t layer, int layers_in_loop);
+
+}  // namespace nephele::cover

@@ -1,0 +1,50 @@
+// Probe of lib/weather_systems.glsl (shared GLSL/C++ subset; tests/test_library_probes.cpp).
+// x[0] = (function, a, b, c), x[1] = the point p (unit), x[2] = a cyclone's centre (xyz, made
+// unit here) and radius (w), x[3] = (wrap, strength, ...). The functions (x[0].x):
+const int PROBE_BAND_PROFILE = 0;     // band_profile(a, b)
+const int PROBE_COMMA_CLOUD = 1;      // comma_cloud(vec2(a, b), c, x[3].x)
+const int PROBE_CYCLONE = 2;          // cyclone_frame(p, C).xy, cyclone_cloud(p, C, a) in z
+const int PROBE_CELL_CLOUDS = 3;      // cell_clouds(p, a, uint(b), 7, 0.2, 0.3, 0.3, c)
+const int PROBE_BELTS = 4;            // itcz_clusters(p, lat, a, uint(b), c), trade_cumulus, cirrus_streaks
+const int PROBE_WEATHER_DENSITY = 5;  // weather_density, cyclone_systems, belt_systems (seed b + 1): cyclone C, the ITCZ at a, seed b, edge c
+#ifndef __cplusplus
+#include "../lib/weather_systems.glsl"
+#endif
+// A cyclone at x[2]'s direction with x east and y north (a northern one; the host mirrors the
+// southern ones, tests/test_weather_systems.cpp).
+Cyclone probe_cyclone(mat4 x) {
+  Cyclone c;
+  c.centre = normalize(vec3(x[2]));
+  c.east = normalize(cross(vec3(0.0f, 0.0f, 1.0f), c.centre));
+  c.pole = cross(c.centre, c.east);
+  c.radius = x[2].w;
+  c.wrap = x[3].x;
+  c.strength = x[3].y;
+  return c;
+}
+vec4 probe_weather_systems(mat4 x) {
+  int f = int(x[0].x);
+  vec3 p = vec3(x[1]);
+  float latitude = portable_asin(clamp(p.z, -1.0f, 1.0f));
+  uint seed = uint(x[0].z);
+  if (f == PROBE_BAND_PROFILE) return vec4(band_profile(x[0].y, x[0].z), 0.0f, 0.0f, 0.0f);
+  if (f == PROBE_COMMA_CLOUD) return vec4(comma_cloud(vec2(x[0].y, x[0].z), x[0].w, x[3].x), 0.0f, 0.0f, 0.0f);
+  if (f == PROBE_CYCLONE) {
+    Cyclone c = probe_cyclone(x);
+    return vec4(cyclone_frame(p, c), cyclone_cloud(p, c, x[0].y), 0.0f);
+  }
+  if (f == PROBE_CELL_CLOUDS) return vec4(cell_clouds(p, x[0].y, seed, 7u, 0.2f, 0.3f, 0.3f, x[0].w), 0.0f, 0.0f, 0.0f);
+  if (f == PROBE_BELTS)
+    return vec4(itcz_clusters(p, latitude, x[0].y, seed, x[0].w), trade_cumulus(p, latitude, seed, x[0].w),
+                cirrus_streaks(p, latitude, seed), 0.0f);
+  WeatherSystems systems;
+  systems.cyclones[0] = probe_cyclone(x);
+  systems.cyclone_count = 1;
+  systems.itcz_latitude = x[0].y;
+  systems.itcz = 1.0f;
+  systems.trade_cumulus = 1.0f;
+  systems.cirrus = 1.0f;
+  systems.seed = seed;
+  return vec4(weather_density(p, latitude, systems, x[0].w), cyclone_systems(p, systems, x[0].w),
+              belt_systems(p, latitude, systems, seed + 1u, x[0].w), 0.0f);  // PROBE_WEATHER_DENSITY
+}
