@@ -333,6 +333,9 @@ TEST_CASE("cover_density.glsl on the GPU agrees with the CPU", "[probe]") {
                      kTranscendental});
     cases.push_back({arguments(PROBE_SYSTEM_EDGE, vec4(r(0.0f, 1.0f), 0, 0, 0)), kArithmetic});
     cases.push_back({arguments(PROBE_WITH_SYSTEMS, vec4(r(0.0f, 1.5f), r(0.0f, 1.0f), 0, 0)), kArithmetic});
+    // A sqrt and a division of values near 1 on top of the linear blend.
+    cases.push_back(
+        {arguments(PROBE_NOISE_BLEND, vec4(r(0.0f, 1.0f), r(0.0f, 1.0f), r(0.0f, 1.0f), 0)), kTranscendental});
     cases.push_back({arguments(PROBE_SHAPED_DENSITY, vec4(r(0.0f, 1.5f), r(0.0f, 0.7f), r(0.0f, 2.0f), 0), vec4(0.0f),
                                vec4(0.0f), vec4(0.0f, r(-1.0f, 1.0f), r(0.0f, 1.0f), 0.0f)),
                      kArithmetic});

@@ -64,18 +64,21 @@ void main() {
     float noise = cover_density_shifted(warped, u_cover, u_noise_offset);
 #if MOVING_LAYERS
     vec3 young_warped = imageLoad(young_warp_field, texel).xyz;
-    noise = layer_blend(noise, cover_density_shifted(young_warped, u_young_cover, u_noise_offset), u_young_share);
+    noise = noise_blend(noise, cover_density_shifted(young_warped, u_young_cover, u_noise_offset), u_young_share);
 #endif
-    // The cyclones move on their own (the host places them at the frame's time), so they are drawn
-    // where the texel is; the belts' clusters, cumulus and cirrus are carried by the flow as the
-    // noise is, drawn at each cloud layer's origin with the layer's own noise and blended as it.
-    float systems = max(cyclone_systems(direction, u_systems, system_edge(noise)),
-                        belts_at(normalize(warped), u_systems.seed, noise));
+    // The cyclones move on their own (the host places them at the frame's time) and are drawn at
+    // the air's origin so that the flow deforms them as it does the noise: with two layers at
+    // the origin slid from the older's to the younger's by its share, which is continuous as
+    // the younger layer becomes the older. The belts' clusters, cumulus and cirrus are carried by
+    // the flow as the noise is: drawn at each layer's origin with the layer's own noise and
+    // blended as it.
+    vec3 origin = normalize(warped);
+    float belts = belts_at(origin, u_systems.seed, noise);
 #if MOVING_LAYERS
-    systems = max(cyclone_systems(direction, u_systems, system_edge(noise)),
-                  layer_blend(belts_at(normalize(warped), u_systems.seed, noise),
-                              belts_at(normalize(young_warped), u_young_systems_seed, noise), u_young_share));
+    belts = layer_blend(belts, belts_at(normalize(young_warped), u_young_systems_seed, noise), u_young_share);
+    origin = normalize(mix(warped, young_warped, u_young_share));
 #endif
+    float systems = max(cyclone_systems(origin, u_systems, system_edge(noise)), belts);
     float density = with_systems(
         shaped_density(noise, imageLoad(curl_field, texel).w, u_cyclone_cloudiness, surface, u_surface_weight),
         systems);

@@ -56,8 +56,9 @@ vec2 cyclone_frame(vec3 p, IN(Cyclone) cyclone) {
 // edge where the dry slot follows it; at the join it becomes the head, a logarithmic spiral that
 // winds `wrap` radians anticlockwise around the low, broad on its poleward side (the warm front's
 // cloud shield) and thinning to the hook. The low's centre and the dry slot are clear. `edge` in
-// [-1, 1] (the cover's own noise) moves the band across by up to 0.4 of its half width (never
-// clearing its core), so that the edges are as ragged as the noise and move with it.
+// [-1, 1] (the cover's own noise) moves the band across by up to 0.6 of its half width (breaking
+// its narrow rear side where the noise is extreme), so that the edges are as ragged as the noise
+// and move with it.
 float comma_cloud(vec2 xy, float wrap, float edge) {
   const vec2 tail_end = vec2(-0.7f, -3.0f);
   const vec2 join = vec2(1.0f, -0.6f);
@@ -66,7 +67,7 @@ float comma_cloud(vec2 xy, float wrap, float edge) {
   vec2 from_axis = xy - (tail_end + along_tail * axis);
   vec2 ahead = normalize(vec2(axis.y, -axis.x));  // east-south-east: ahead of the cold front
   float tail_half = mix(0.12f, 0.35f, along_tail);
-  float across = (dot(from_axis, ahead) >= 0.0f ? 1.0f : -1.0f) * length(from_axis) + edge * 0.4f * tail_half;
+  float across = (dot(from_axis, ahead) >= 0.0f ? 1.0f : -1.0f) * length(from_axis) + edge * 0.6f * tail_half;
   float tail_width = across > 0.0f ? 1.3f * tail_half : 0.7f * tail_half;
   float tail = band_profile(across, tail_width) * smoothstep(0.0f, 0.2f, along_tail);
 
@@ -85,7 +86,7 @@ float comma_cloud(vec2 xy, float wrap, float edge) {
     if (along < -0.15f || along > 1.0f) continue;
     float half_width = mix(0.45f, 0.2f, clamp(along, 0.0f, 1.0f));
     // > 0: poleward of the arm (the shield)
-    float offset = log(r / (r_join * exp(-k * phi))) + edge * 0.4f * half_width;
+    float offset = log(r / (r_join * exp(-k * phi))) + edge * 0.6f * half_width;
     float width = offset > 0.0f ? 1.3f * half_width : 0.8f * half_width;
     float arm = band_profile(offset, width) * smoothstep(-0.15f, 0.05f, along) *
                 (1.0f - smoothstep(0.75f, 1.0f, along));
