@@ -13,7 +13,7 @@ echo "| seed | objects | alpha (fit range km^2) | D | largest system | elongatio
 echo "|-----:|--------:|-----------------------:|--:|---------------:|-----------:|----------:|--------------:|---------:|---:|"
 for seed in 1 2 3 4 5 6; do
   start=$(date +%s.%N)
-  build/nephele generate --size "$size" --seed "$seed" --time "$time" --files equirect --quiet --out "$work/c$seed" "$@" >/dev/null
+  build/nephele generate --size "$size" --seed "$seed" --time "$time" --files faces,equirect --quiet --out "$work/c$seed" "$@" >/dev/null
   end=$(date +%s.%N)
   build/nephele stats "$work/c$seed" >/dev/null
   python3 - "$work/c$seed/stats/stats.json" "$seed" "$start" "$end" <<'PY'
