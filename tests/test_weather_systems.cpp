@@ -88,14 +88,14 @@ TEST_CASE("cyclones live in the storm tracks with orthonormal frames whose pole 
 }
 
 TEST_CASE("on average the schedule keeps the asked number of cyclones alive per hemisphere", "[fast][systems]") {
-  for (int n : {1, 6, 16}) {
+  for (int n : {1, 6, 15}) {
     cover::CoverParameters p;
     p.cyclones = n;
     double sum = 0;
     const int samples = 400;
     for (int k = 0; k < samples; ++k) sum += cover::weather_systems(p, 37.0 * k).cyclone_count;
     // Genesis every lifetime / n hours: n alive at any moment, give or take the one whose
-    // jittered genesis is due.
+    // jittered genesis is due (so at most 2 (n + 1) = 32 = MAX_CYCLONES at the table's 15).
     INFO("n " << n << " mean alive " << sum / samples / 2);
     CHECK(std::abs(sum / samples / 2 - n) <= 0.5);
   }

@@ -5,12 +5,15 @@
 #include <cstdint>
 
 #include "cover/latitude_profile.hpp"
+#include "params/table.hpp"
 #include "cover/moving_flow.hpp"
 
 namespace nephele::cover {
 namespace {
 
 constexpr double degree = M_PI / 180.0;
+// n + 1 cyclones alive per hemisphere at most (weather_systems.hpp), for the table's largest n.
+static_assert(2 * (params::cover::cyclones.max + 1) <= MAX_CYCLONES);
 constexpr double earth_radius_km = 6371.0;
 
 // Three uniform numbers in [0, 1) for a slot of a hemisphere (slots may be negative: before the

@@ -31,7 +31,8 @@ float cyclone_wrap(double age_fraction);
 // hemisphere on average (a Poisson-like schedule: genesis every lifetime / p.cyclones hours with
 // a seeded jitter), each from its genesis place in the storm track (38 +- 6 degrees, moved with
 // --month as the profile's storm tracks) drifting east and poleward. With --loop the schedule
-// repeats after the loop, so the cover does. At most MAX_CYCLONES.
+// repeats after the loop, so the cover does. At most n + 1 are alive per hemisphere (a slot's
+// jitter is below its spacing), so the table's 15 fill MAX_CYCLONES at most.
 glsl::WeatherSystems weather_systems(const CoverParameters& p, double hours);
 
 // The belts' noise of the moving flow's cloud layer `layer` (cover/moving_flow.hpp): its own, as

@@ -67,7 +67,7 @@ inline constexpr Parameter cyclone_cloudiness =
          "(0: off; docs/climate.md)",
          cover_commands);
 inline constexpr Parameter cyclones =
-    integer("cyclones", 6, 0, 16, "per hemisphere",
+    integer("cyclones", 6, 0, 15, "per hemisphere",
             "extratropical cyclones with comma cloud, cold-front band, dry slot and warm-front shield, each living 5 "
             "days in the storm track (0: none; docs/climate.md, \"Weather systems\")",
             cover_commands, "systems.cyclones");
