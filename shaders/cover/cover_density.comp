@@ -57,10 +57,11 @@ void main() {
   for (int j = first; j < last; ++j) {
     ivec3 texel = ivec3(i, j, layer);
     vec3 warped = imageLoad(warp_field, texel).xyz;
-    ivec3 at = face_texel(texel);
-    vec3 direction = texel_direction(at.z, at.x, at.y, size);
     float surface = 0.0f;
-    if (u_surface_weight > 0.0f) surface = texture(surface_bias, equirect_uv(direction)).x;
+    if (u_surface_weight > 0.0f) {
+      ivec3 at = face_texel(texel);
+      surface = texture(surface_bias, equirect_uv(texel_direction(at.z, at.x, at.y, size))).x;
+    }
     float noise = cover_density_shifted(warped, u_cover, u_noise_offset);
 #if MOVING_LAYERS
     vec3 young_warped = imageLoad(young_warp_field, texel).xyz;
