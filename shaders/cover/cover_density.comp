@@ -43,8 +43,8 @@ uniform float u_young_share;
 uniform uint u_young_systems_seed;  // the younger layer's belts (u_systems.seed: the older's)
 #endif
 
-float belts_at(vec3 origin, uint seed, float noise) {
-  return belt_systems(origin, portable_asin(clamp(origin.z, -1.0f, 1.0f)), u_systems, seed, system_edge(noise));
+float belts_at(vec3 origin, uint seed, float edge) {
+  return belt_systems(origin, portable_asin(clamp(origin.z, -1.0f, 1.0f)), u_systems, seed, edge);
 }
 
 void main() {
@@ -73,13 +73,14 @@ void main() {
     // the younger layer becomes the older. The belts' clusters, cumulus and cirrus are carried by
     // the flow as the noise is: drawn at each layer's origin with the layer's own noise and
     // blended as it.
+    float edge = system_edge(noise);
     vec3 origin = normalize(warped);
-    float belts = belts_at(origin, u_systems.seed, noise);
+    float belts = belts_at(origin, u_systems.seed, edge);
 #if MOVING_LAYERS
-    belts = layer_blend(belts, belts_at(normalize(young_warped), u_young_systems_seed, noise), u_young_share);
+    belts = layer_blend(belts, belts_at(normalize(young_warped), u_young_systems_seed, edge), u_young_share);
     origin = normalize(mix(warped, young_warped, u_young_share));
 #endif
-    float systems = max(cyclone_systems(origin, u_systems, system_edge(noise)), belts);
+    float systems = max(cyclone_systems(origin, u_systems, edge), belts);
     float density = with_systems(
         shaped_density(noise, imageLoad(curl_field, texel).w, u_cyclone_cloudiness, surface, u_surface_weight),
         systems);

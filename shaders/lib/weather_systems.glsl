@@ -1,8 +1,9 @@
 // The weather systems of the global cover (docs/climate.md, "Weather systems"): extratropical
 // cyclones with their comma cloud, the ITCZ's broken line of convective clusters, fields of trade
 // cumulus and cirrus streaks. Each is a field in [0, 1] with a flat top and a steep, noise-frayed
-// edge; the density pass adds them to the warped noise, so that the calibration, which ranks the
-// densities, lays the systems' cloud first and fills each band's remaining target from the noise.
+// edge; the density pass multiplies the warped noise by 1 + 0.5 w (cover_density.glsl's
+// with_systems), so that the calibration, which ranks the densities, lays the systems' cloud first
+// and fills each band's remaining target from the noise.
 // Positions are radians of arc on the unit sphere (z north); the cyclones' places at a moment are
 // the host's (cover/weather_systems.hpp), so that every frame is computed on its own.
 #ifndef NEPHELE_WEATHER_SYSTEMS_GLSL

@@ -5,8 +5,8 @@
 #include <cstdint>
 
 #include "cover/latitude_profile.hpp"
-#include "params/table.hpp"
 #include "cover/moving_flow.hpp"
+#include "params/table.hpp"
 
 namespace nephele::cover {
 namespace {
@@ -24,18 +24,13 @@ glsl::vec3 slot_random(std::uint32_t seed, std::int64_t slot, int hemisphere, st
       glsl::uvec3(seed ^ salt, static_cast<std::uint32_t>(s), static_cast<std::uint32_t>(s >> 32) * 2u + hemisphere)));
 }
 
-float smoothstep(double a, double b, double x) {
-  const double t = std::clamp((x - a) / (b - a), 0.0, 1.0);
-  return static_cast<float>(t * t * (3.0 - 2.0 * t));
-}
-
 glsl::Cyclone make_cyclone(double latitude_deg, double longitude_deg, double radius_km, double age_fraction) {
   const double lat = latitude_deg * degree, lon = longitude_deg * degree;
   const float sign = latitude_deg >= 0.0 ? 1.0f : -1.0f;
   glsl::Cyclone c;
   c.centre = glsl::vec3(std::cos(lat) * std::cos(lon), std::cos(lat) * std::sin(lon), std::sin(lat));
   c.east = glsl::vec3(-std::sin(lon), std::cos(lon), 0.0);
-  c.pole = sign * glsl::vec3(glsl::vec3(-std::sin(lat) * std::cos(lon), -std::sin(lat) * std::sin(lon), std::cos(lat)));
+  c.pole = sign * glsl::vec3(-std::sin(lat) * std::cos(lon), -std::sin(lat) * std::sin(lon), std::cos(lat));
   c.radius = static_cast<float>(radius_km / earth_radius_km);
   c.wrap = cyclone_wrap(age_fraction);
   c.strength = cyclone_strength(age_fraction);
@@ -44,7 +39,9 @@ glsl::Cyclone make_cyclone(double latitude_deg, double longitude_deg, double rad
 
 }  // namespace
 
-float cyclone_strength(double a) { return smoothstep(0.0, 0.2, a) * (1.0f - smoothstep(0.67, 1.0, a)); }
+float cyclone_strength(double a) {
+  return static_cast<float>(glm::smoothstep(0.0, 0.2, a)) * (1.0f - static_cast<float>(glm::smoothstep(0.67, 1.0, a)));
+}
 
 float cyclone_wrap(double a) { return static_cast<float>(M_PI * (0.5 + 0.75 * std::clamp(a, 0.0, 1.0))); }
 

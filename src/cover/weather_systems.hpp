@@ -5,7 +5,6 @@
 // follow from the seed and the time alone: frames are computed on their own, in any order
 // (docs/climate.md, "Weather systems").
 #include <cstdint>
-#include <vector>
 
 #include "cover/cover_parameters.hpp"
 #include "shader_math/shader_math.hpp"
