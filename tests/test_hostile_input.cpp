@@ -174,15 +174,17 @@ const fs::path& small_cover() {
   return directory.path;
 }
 
-// A copy of the small cover with face +Z replaced by `channels` channels of `value` at texel (3, 2).
+// A copy of the small cover with face +Z replaced by one of `value` at texel (3, 2): with channels 1
+// a cover's face (Y, tau, cloud_top as generate writes them, the value in Y), else RGB.
 void copy_cover_with_face(const fs::path& to, int channels, float value) {
   fs::create_directories(to);
   for (const auto& entry : fs::directory_iterator(small_cover()))
     fs::copy_file(entry.path(), to / entry.path().filename());
-  core::ImageData face{8, 8, channels, std::vector<float>(64 * std::size_t(channels), 0.5f)};
-  face.pixels[(2 * 8 + 3) * std::size_t(channels)] = value;
+  const std::size_t stride = 3;
+  core::ImageData face{8, 8, static_cast<int>(stride), std::vector<float>(64 * stride, 0.5f)};
+  face.pixels[(2 * 8 + 3) * stride] = value;
   std::vector<std::string> names =
-      channels == 1 ? std::vector<std::string>{"Y"} : std::vector<std::string>{"R", "G", "B"};
+      channels == 1 ? std::vector<std::string>{"Y", "tau", "cloud_top"} : std::vector<std::string>{"R", "G", "B"};
   files::write_image(to / "cover_pz.exr", face, files::exr_encoding(names));
 }
 
@@ -238,7 +240,7 @@ TEST_CASE("an RGB cover face is refused, not read through its red channel", "[ba
   copy_cover_with_face(cover.path, 3, 0.25f);
   const Run r = run_without_gl("export " + cover.path.string() + " --preset gl-faces --out " + out.path.string());
   CHECK(r.exit_code == 2);
-  CHECK_THAT(r.output, Catch::Contains("cover_pz.exr") && Catch::Contains("has 3 channels"));
+  CHECK_THAT(r.output, Catch::Contains("cover_pz.exr") && Catch::Contains("has the channels R, G, B"));
   CHECK_FALSE(fs::exists(out.path));
 }
 

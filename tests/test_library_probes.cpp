@@ -27,6 +27,7 @@
 namespace nephele::glsl {
 #include "probes/atmosphere.glsl"
 #include "probes/cloud_density.glsl"
+#include "probes/cloud_properties.glsl"
 #include "probes/cloud_march.glsl"
 #include "probes/cover_density.glsl"
 #include "probes/cube_bspline.glsl"
@@ -348,6 +349,33 @@ TEST_CASE("cover_density.glsl on the GPU agrees with the CPU", "[probe]") {
   CHECK(shaped_density(0.8f, 0.6f, 0.0f, -0.4f, 0.0f) == 0.8f);
 }
 
+TEST_CASE("cloud_properties.glsl on the GPU agrees with the CPU", "[probe]") {
+  Random r(32);
+  std::vector<Case> cases;
+  for (int k = 0; k < 32; ++k) {
+    // The quantile: a log of a value in [1e-3, 1/2] (3 ulp relative, or 2^-21 absolute near 1), a
+    // sqrt and the rational function's few operations on t below 4: kTranscendental.
+    const float rank = k < 4 ? 0.0005f + 0.333f * k : r(0.0f, 1.0f);
+    cases.push_back(
+        {arguments(PROBE_NORMAL_QUANTILE, vec4(std::clamp(rank, 1e-3f, 1.0f - 1e-3f), 0, 0, 0)), kTranscendental});
+    // tau = m exp(s z): the exp's 3 + 2 |s z| ulp (|s z| <= 9.3) and z's error times s (up to 3),
+    // relative to tau (at most 100 exp(9.3)): 32 + 3 x 32 ulp relative.
+    const vec4 lognormal(rank, r(0.5f, 10.0f), r(0.0f, 3.0f), 0.0f);
+    const float tau = optical_thickness_from_rank(lognormal.x, lognormal.y, lognormal.z);
+    cases.push_back({arguments(PROBE_TAU_FROM_RANK, vec4(rank, lognormal.y, lognormal.z, 0)),
+                     std::max(128 * kUlp * tau, kArithmetic)});
+    cases.push_back({arguments(PROBE_TAU_FROM_COVER, vec4(rank, lognormal.y, lognormal.z, 0)),
+                     std::max(128 * kUlp * tau, kArithmetic)});
+    // Heights below 16 km: a cos and a few mixes, kTranscendental scaled from values below 4.
+    const vec4 types(r(0.0f, 1.0f), r(0.0f, 1.0f), r(0.0f, 1.0f), r(0.0f, 1.0f));
+    const vec4 place(r(-1.5f, 1.5f), r(0.0f, 0.6f), r(-1.0f, 1.0f), 0.0f);
+    cases.push_back({arguments(PROBE_CLOUD_TOP, vec4(0.0f), types, place), 4 * kTranscendental});
+    cases.push_back(
+        {arguments(PROBE_CLOUD_TOP_FROM_COVER, vec4(r(0.0f, 1.0f), 0, 0, 0), vec4(0.0f), place), 4 * kTranscendental});
+  }
+  compare("cloud_properties", probe_cloud_properties, cases);
+}
+
 TEST_CASE("weather_systems.glsl on the GPU agrees with the CPU", "[probe]") {
   Random r(31);
   std::vector<Case> cases;
@@ -381,6 +409,9 @@ TEST_CASE("weather_systems.glsl on the GPU agrees with the CPU", "[probe]") {
         {arguments(PROBE_BELTS, vec4(r(-0.1f, 0.2f), seed, r(-1.0f, 1.0f), 0), vec4(q, 0)), 12.5f * 70 * kFbm});
     cases.push_back(
         {arguments(PROBE_WEATHER_DENSITY, vec4(r(-0.1f, 0.2f), seed, r(-1.0f, 1.0f), 0), vec4(q, 0), cyclone, life),
+         std::max(band, 12.5f * 70 * kFbm)});
+    cases.push_back(
+        {arguments(PROBE_BELT_FIELDS, vec4(r(-0.1f, 0.2f), seed, r(-1.0f, 1.0f), 0), vec4(q, 0), cyclone, life),
          std::max(band, 12.5f * 70 * kFbm)});
   }
   compare("weather_systems", probe_weather_systems, cases);

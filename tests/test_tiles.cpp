@@ -25,7 +25,8 @@ using namespace nephele;
 namespace {
 
 struct TiledResult {
-  std::vector<float> cover;  // faces in order, rows from 0, as GlobalCover::cover_field().read()
+  std::vector<float> cover;                         // faces in order, rows from 0, as GlobalCover::cover_field().read()
+  std::vector<float> optical_thickness, cloud_top;  // the same way
   cover::CoverageCalibration calibration;
   std::optional<cover::BandCalibration> bands;
   cover::WarpDiagnostics diagnostics;
@@ -49,11 +50,17 @@ TiledResult run_tiled(const cover::CoverParameters& p, int count) {
   coverage.calibrate(range, load);
   TiledResult result;
   result.cover.assign(6 * static_cast<size_t>(p.size) * p.size, -1.0f);
-  result.calibration = coverage.remap(load, [&](int index, const std::vector<float>& cover) {
+  const auto load_cloud_top = [&](int index) { return tiles[static_cast<size_t>(index)].cloud_top; };
+  result.optical_thickness = result.cloud_top = result.cover;
+  result.calibration = coverage.remap(load, load_cloud_top, [&](int index, const cover::CoverPlanes& planes) {
     const cover::CubeRegion region = cover::owned_region(tiling.tile(index));
     const size_t offset = (static_cast<size_t>(region.face) * p.size + region.first_row) * p.size;
-    REQUIRE(cover.size() == static_cast<size_t>(region.owned_texels()));
-    std::copy(cover.begin(), cover.end(), result.cover.begin() + static_cast<std::ptrdiff_t>(offset));
+    REQUIRE(planes.cover.size() == static_cast<size_t>(region.owned_texels()));
+    std::copy(planes.cover.begin(), planes.cover.end(), result.cover.begin() + static_cast<std::ptrdiff_t>(offset));
+    std::copy(planes.optical_thickness.begin(), planes.optical_thickness.end(),
+              result.optical_thickness.begin() + static_cast<std::ptrdiff_t>(offset));
+    std::copy(planes.cloud_top.begin(), planes.cloud_top.end(),
+              result.cloud_top.begin() + static_cast<std::ptrdiff_t>(offset));
   });
   result.bands = coverage.bands();
   const cover::TexelWeightUnits units = cover::texel_weight_units(p.size);
@@ -76,6 +83,10 @@ void check_tiles_match_whole(const cover::CoverParameters& p, std::initializer_l
     INFO(count << " tiles of a cover of " << p.size << " per face");
     const TiledResult tiled = run_tiled(p, count);
     CHECK(same_bits(tiled.cover, expected));
+    // The remap's other fields too: the ranks' tails are sums of integer units (any cut into
+    // tiles gives the same histograms) and the tops the density pass's, texel by texel.
+    CHECK(same_bits(tiled.optical_thickness, whole.optical_thickness_field().read()));
+    CHECK(same_bits(tiled.cloud_top, whole.cloud_top_field().read()));
     CHECK(tiled.calibration.density_min == whole.calibration().density_min);
     CHECK(tiled.calibration.density_max == whole.calibration().density_max);
     CHECK(tiled.calibration.threshold == whole.calibration().threshold);
@@ -274,18 +285,22 @@ TEST_CASE("a damaged tile part is made again by the next run and named by assemb
   const test::Run again = test::run(make);
   REQUIRE(again.exit_code == 0);
   CHECK_THAT(again.output, Catch::Contains("5 already complete, kept"));
-  // The same densities (the header's timings are the new run's): the last 8 x 8 floats.
+  // The same densities and cloud tops (the header's timings are the new run's): the last 2 x 8 x 8
+  // floats.
   const std::string made = test::read_file(part);
-  const size_t data = 8 * 8 * sizeof(float);
+  const size_t data = 2 * 8 * 8 * sizeof(float);
   REQUIRE(made.size() >= data);
   CHECK(made.substr(made.size() - data) == whole.substr(whole.size() - data));
-  // A flipped density byte: the header's hash tells, and assemble names the file.
-  std::string flipped = whole;
-  flipped[flipped.size() - 3] ^= 0x40;
-  files::write_file(part, flipped.data(), flipped.size());
-  const test::Run damaged = test::run("assemble " + parts.string() + " --out " + (work.path / "c").string());
-  CHECK(damaged.exit_code == 2);
-  CHECK_THAT(damaged.output, Catch::Contains("tile_000004.part: the densities do not match"));
+  // A flipped density byte, then a flipped cloud-top byte: the header's hashes tell, and
+  // assemble names the file.
+  for (const auto& [back, what] : {std::pair<size_t, const char*>{data / 2 + 3, "densities"}, {3, "cloud tops"}}) {
+    std::string flipped = whole;
+    flipped[flipped.size() - back] ^= 0x40;
+    files::write_file(part, flipped.data(), flipped.size());
+    const test::Run damaged = test::run("assemble " + parts.string() + " --out " + (work.path / "c").string());
+    CHECK(damaged.exit_code == 2);
+    CHECK_THAT(damaged.output, Catch::Contains(std::string("tile_000004.part: the ") + what + " do not match"));
+  }
 }
 
 TEST_CASE("the streamed equirect map equals the GPU's within float rounding", "[tiles]") {

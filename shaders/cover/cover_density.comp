@@ -12,6 +12,7 @@ layout(rgba32f, binding = 0) uniform readonly image2DArray warp_field;
 layout(r32f, binding = 1) uniform writeonly image2DArray density_field;
 layout(rgba32f, binding = 2) uniform readonly image2DArray curl_field;
 layout(binding = 3) uniform sampler2D surface_bias;  // equirect, row 0 north, longitude -180 at s = 0
+layout(r32f, binding = 5) uniform writeonly image2DArray cloud_top_field;  // km above sea level
 // MOVING_LAYERS 1 (--flow moving): two cloud layers of their own noise, warp_field the older's
 // points and young_warp_field the younger's, blended with the younger's share u_young_share.
 #ifndef MOVING_LAYERS
@@ -22,6 +23,7 @@ layout(rgba32f, binding = 4) uniform readonly image2DArray young_warp_field;
 #endif
 #include "../lib/cover_density.glsl"
 #include "../lib/weather_systems.glsl"
+#include "../lib/cloud_properties.glsl"
 #include "../lib/portable_math.glsl"
 #include "../lib/cube_faces.glsl"
 #include "../lib/equirect_mapping.glsl"
@@ -43,8 +45,8 @@ uniform float u_young_share;
 uniform uint u_young_systems_seed;  // the younger layer's belts (u_systems.seed: the older's)
 #endif
 
-float belts_at(vec3 origin, uint seed, float edge) {
-  return belt_systems(origin, portable_asin(clamp(origin.z, -1.0f, 1.0f)), u_systems, seed, edge);
+vec3 belts_at(vec3 origin, uint seed, float edge) {
+  return belt_fields(origin, portable_asin(clamp(origin.z, -1.0f, 1.0f)), u_systems, seed, edge);
 }
 
 void main() {
@@ -57,11 +59,9 @@ void main() {
   for (int j = first; j < last; ++j) {
     ivec3 texel = ivec3(i, j, layer);
     vec3 warped = imageLoad(warp_field, texel).xyz;
-    float surface = 0.0f;
-    if (u_surface_weight > 0.0f) {
-      ivec3 at = face_texel(texel);
-      surface = texture(surface_bias, equirect_uv(texel_direction(at.z, at.x, at.y, size))).x;
-    }
+    ivec3 at = face_texel(texel);
+    vec3 direction = texel_direction(at.z, at.x, at.y, size);
+    float surface = u_surface_weight > 0.0f ? texture(surface_bias, equirect_uv(direction)).x : 0.0f;
     float noise = cover_density_shifted(warped, u_cover, u_noise_offset);
 #if MOVING_LAYERS
     vec3 young_warped = imageLoad(young_warp_field, texel).xyz;
@@ -75,16 +75,28 @@ void main() {
     // blended as it.
     float edge = system_edge(noise);
     vec3 origin = normalize(warped);
-    float belts = belts_at(origin, u_systems.seed, edge);
+    vec3 fields = belts_at(origin, u_systems.seed, edge);
+    float belts = belt_cloud(fields);
 #if MOVING_LAYERS
-    belts = layer_blend(belts, belts_at(normalize(young_warped), u_young_systems_seed, edge), u_young_share);
+    vec3 young_fields = belts_at(normalize(young_warped), u_young_systems_seed, edge);
+    belts = layer_blend(belts, belt_cloud(young_fields), u_young_share);
+    fields = mix(fields, young_fields, u_young_share);
     origin = normalize(mix(warped, young_warped, u_young_share));
 #endif
-    float systems = max(cyclone_systems(origin, u_systems, edge), belts);
-    float density = with_systems(
-        shaped_density(noise, imageLoad(curl_field, texel).w, u_cyclone_cloudiness, surface, u_surface_weight),
-        systems);
+    float cyclones = cyclone_systems(origin, u_systems, edge);
+    float systems = max(cyclones, belts);
+    float cyclonic = imageLoad(curl_field, texel).w;
+    float density =
+        with_systems(shaped_density(noise, cyclonic, u_cyclone_cloudiness, surface, u_surface_weight), systems);
     imageStore(density_field, texel, vec4(density, 0.0f, 0.0f, 0.0f));
+    // The cloud's top by its types (the remap clears it where the texel stays clear).
+    CloudTypes types;
+    types.frontal = cyclones;
+    types.deep_convection = fields.x / BELT_WEIGHTS.x;
+    types.cumulus = fields.y / BELT_WEIGHTS.y;
+    types.cirrus = fields.z / BELT_WEIGHTS.z;
+    float latitude = portable_asin(clamp(direction.z, -1.0f, 1.0f));
+    imageStore(cloud_top_field, texel, vec4(cloud_top_km(types, latitude, cyclonic, surface), 0.0f, 0.0f, 0.0f));
     low = min(low, sortable_bits(density));
     high = max(high, sortable_bits(density));
   }

@@ -5,10 +5,17 @@
 // (BandCloudy), the achieved fractions, so that they need no pass of their own: each
 // invocation walks a strip of u_strip texels down a column and adds runs of one band at once
 // (as the reductions of coverage_histogram.comp).
+// The pass also writes the cloud's optical thickness, log-normal by the texel's rank in density
+// among its band's cloudy texels (cloud_properties.glsl, band_tails.glsl), and clears the density
+// pass's cloud-top height where the texel stays clear: both 0 there.
 layout(local_size_x = 64, local_size_y = 1, local_size_z = 1) in;
 layout(r32f, binding = 0) uniform readonly image2DArray density_field;
 layout(r32f, binding = 1) uniform writeonly image2DArray cover_field;
+layout(r32f, binding = 2) uniform writeonly image2DArray optical_thickness_field;
+layout(r32f, binding = 3) uniform image2DArray cloud_top_field;  // km; the density pass's
 #include "../lib/cover_density.glsl"
+#include "../lib/cloud_properties.glsl"
+#include "band_tails.glsl"
 #include "../lib/cube_faces.glsl"
 #include "band_thresholds.glsl"
 #include "texel_weights.glsl"
@@ -17,6 +24,8 @@ layout(r32f, binding = 1) uniform writeonly image2DArray cover_field;
 uniform float u_threshold;
 uniform float u_density_max;
 uniform float u_softness;
+uniform float u_tau_median;
+uniform float u_tau_spread;
 // Per band, a 64-bit sum of texel weight units (cleared by the host), as stage 8 of
 // coverage_histogram.comp, which measures the same on any density map.
 layout(std430, binding = 9) buffer BandCloudy { uint band_cloudy[]; };
@@ -35,8 +44,8 @@ void main() {
     ivec3 at = face_texel(texel);
     float density = imageLoad(density_field, texel).x;
     float threshold = u_threshold;
+    vec3 direction = texel_direction(at.z, at.x, at.y, size);
     if (u_bands > 0) {
-      vec3 direction = texel_direction(at.z, at.x, at.y, size);
       threshold = smooth_band_threshold(direction);
       int band = band_of(band_coordinate(direction, u_bands), u_bands);
       // A run is flushed once it reaches 2^31 units; a texel is below 2^31, so the 32-bit run
@@ -51,6 +60,13 @@ void main() {
       }
     }
     imageStore(cover_field, texel, vec4(cover_from_density(density, threshold, u_density_max, u_softness), 0.0f, 0.0f, 0.0f));
+    bool cloudy = density > threshold;
+    float tau = cloudy ? optical_thickness_from_rank(
+                             cloudy_rank(density_tail(direction, density), density_tail(direction, threshold)),
+                             u_tau_median, u_tau_spread)
+                       : 0.0f;
+    imageStore(optical_thickness_field, texel, vec4(tau, 0.0f, 0.0f, 0.0f));
+    if (!cloudy) imageStore(cloud_top_field, texel, vec4(0.0f));
   }
   if (run_band >= 0) ADD_UNITS64(band_cloudy, run_band, run_units);
 }

@@ -168,14 +168,21 @@ float cyclone_systems(vec3 p, IN(WeatherSystems) systems, float edge) {
   return cloud;
 }
 
-// The belts' cloud at p with the noise of `seed`: ITCZ clusters at full weight (thick cloud),
-// trade cumulus at 0.6, cirrus at 0.35 (thin: it rises little above the threshold and stays grey).
+// The belts' weights in the density at p with the noise of `seed`: ITCZ clusters at full weight
+// (thick cloud), trade cumulus at 0.6, cirrus at 0.35 (thin: it rises little above the threshold
+// and stays grey); x the clusters, y the cumulus, z the cirrus.
+const vec3 BELT_WEIGHTS = vec3(1.0f, 0.6f, 0.35f);
+vec3 belt_fields(vec3 p, float latitude, IN(WeatherSystems) systems, uint seed, float edge) {
+  vec3 fields = vec3(0.0f);
+  if (systems.itcz > 0.0f) fields.x = systems.itcz * itcz_clusters(p, latitude, systems.itcz_latitude, seed, edge);
+  if (systems.trade_cumulus > 0.0f) fields.y = BELT_WEIGHTS.y * systems.trade_cumulus * trade_cumulus(p, latitude, seed, edge);
+  if (systems.cirrus > 0.0f) fields.z = BELT_WEIGHTS.z * systems.cirrus * cirrus_streaks(p, latitude, seed);
+  return fields;
+}
+// The belts' cloud from their weighted fields: the largest.
+float belt_cloud(vec3 fields) { return max(max(fields.x, fields.y), max(fields.z, 0.0f)); }
 float belt_systems(vec3 p, float latitude, IN(WeatherSystems) systems, uint seed, float edge) {
-  float cloud = 0.0f;
-  if (systems.itcz > 0.0f) cloud = max(cloud, systems.itcz * itcz_clusters(p, latitude, systems.itcz_latitude, seed, edge));
-  if (systems.trade_cumulus > 0.0f) cloud = max(cloud, 0.6f * systems.trade_cumulus * trade_cumulus(p, latitude, seed, edge));
-  if (systems.cirrus > 0.0f) cloud = max(cloud, 0.35f * systems.cirrus * cirrus_streaks(p, latitude, seed));
-  return cloud;
+  return belt_cloud(belt_fields(p, latitude, systems, seed, edge));
 }
 
 // All systems at the unit direction p of geocentric latitude `latitude` (radians), with the cover's

@@ -46,6 +46,8 @@ struct CoverParameters {
   float trade_cumulus = params::cover::trade_cumulus.default_float();    // strength of the cumulus fields
   float cirrus = params::cover::cirrus.default_float();                  // strength of the cirrus streaks
   float cover_softness = params::cover::cover_softness.default_float();  // density scale of the remap
+  float tau_median = params::cover::tau_median.default_float();          // the cloud's optical thickness,
+  float tau_spread = params::cover::tau_spread.default_float();          // log-normal (cloud_properties.glsl)
   NoiseOctaves density{params::cover::density_frequency.default_float(), params::cover::density_octaves.default_int(),
                        params::cover::density_lacunarity.default_float(),
                        params::cover::density_gain.default_float()};  // Worley fBm of the cloud density
@@ -103,6 +105,8 @@ void visit_numeric_parameters(P& p, Visit&& visit) {
   visit(c::trade_cumulus, p.trade_cumulus);
   visit(c::cirrus, p.cirrus);
   visit(c::cover_softness, p.cover_softness);
+  visit(c::tau_median, p.tau_median);
+  visit(c::tau_spread, p.tau_spread);
   visit(c::density_frequency, p.density.frequency);
   visit(c::density_octaves, p.density.octaves);
   visit(c::density_lacunarity, p.density.lacunarity);

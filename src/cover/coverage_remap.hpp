@@ -13,6 +13,14 @@
 
 namespace nephele::cover {
 
+// The maps the remap writes, of one region: the cover, the optical thickness, and the cloud-top
+// height, which the density pass wrote and the remap clears where the texel stays clear.
+struct CoverFields {
+  const gpu::Texture& cover;
+  const gpu::Texture& optical_thickness;
+  const gpu::Texture& cloud_top;
+};
+
 class CoverageRemap {
  public:
   explicit CoverageRemap(const CoverParameters& parameters);
@@ -21,10 +29,12 @@ class CoverageRemap {
   // The threshold (--profile flat) or the band thresholds from every part's density; `range`
   // (smallest, largest) where the density passes reduced it, else found by a pass of its own.
   void calibrate(const DensityParts& parts, std::optional<std::pair<float, float>> range);
-  // The remap of the parts, after calibrate: begin, each part's density into its cover (an
-  // R32F map or tile of the same region), and finish, which reads the achieved fractions back.
+  // The remap of the parts, after calibrate: begin, each part's density into its fields (R32F
+  // maps or tiles of the same region), and finish, which reads the achieved fractions back.
+  // The optical thickness follows the rank of a texel's density among its band's cloudy texels,
+  // from the calibration's coarse histograms (one more histogram for --profile flat).
   void begin_remap() const;
-  void remap(const gpu::Texture& density, const gpu::Texture& cover, const CubeRegion& region) const;
+  void remap(const gpu::Texture& density, const CoverFields& fields, const CubeRegion& region) const;
   const CoverageCalibration& finish_remap();
 
   const CoverageCalibration& result() const { return result_; }
@@ -37,6 +47,8 @@ class CoverageRemap {
   gpu::ComputeProgram remap_program_{"cover/cover_remap.comp"};
   CoverageCalibration result_;
   std::optional<BandCalibration> bands_;
+  int tail_bands_ = 1;  // the densities' tails (GpuCalibration::set_band_tails): bands, range, scale
+  float tail_min_ = 0.0f, tail_scale_ = 0.0f;
 };
 
 }  // namespace nephele::cover

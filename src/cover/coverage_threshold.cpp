@@ -235,4 +235,23 @@ BandCalibration calibrate_band_coverage(const std::vector<float>& densities, int
   return c;
 }
 
+std::vector<float> band_tails(const std::vector<double>& histogram, int bands) {
+  if (bands < 1 || histogram.size() != static_cast<size_t>(bands) * band_bins)
+    throw std::invalid_argument("band_tails: the histogram is not bands x band_bins weights");
+  std::vector<float> tails(static_cast<size_t>(bands) * (band_bins + 1));
+  for (int b = 0; b < bands; ++b) {
+    const double* weights = histogram.data() + static_cast<size_t>(b) * band_bins;
+    float* tail = tails.data() + static_cast<size_t>(b) * (band_bins + 1);
+    double total = 0.0;
+    for (int k = 0; k < band_bins; ++k) total += weights[k];
+    double above = 0.0;  // summed from the densest bin down, so that the last values are exact
+    tail[band_bins] = 0.0f;
+    for (int k = band_bins - 1; k >= 0; --k) {
+      above += weights[k];
+      tail[k] = total > 0.0 ? static_cast<float>(above / total) : static_cast<float>(band_bins - k) / band_bins;
+    }
+  }
+  return tails;
+}
+
 }  // namespace nephele::cover

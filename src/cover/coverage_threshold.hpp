@@ -35,7 +35,17 @@ struct BandCalibration {
   std::vector<double> achieved;     // per band: cloudy fraction at the smooth threshold
   std::vector<double> band_weight;  // per band: its texels' share of the sphere
   double achieved_fraction = 0.0;   // the sphere's cloudy fraction at the smooth threshold
+  // The coarse level: bands x band_bins weights (fractions of the sphere) over [min, max] at
+  // bin_scale bins per unit density (band_bin_scale), for the densities' tails (band_tails).
+  std::vector<double> histogram;
+  float bin_scale = 0.0f;
 };
+
+// Per band, the share of its weight in the bins at and above each bin: band_bins + 1 values a
+// band, from 1 at bin 0 down to 0 past the last bin (a band without weight: 1 - k / band_bins),
+// for the remap's ranks of cloudy texels (shaders/cover/band_tails.glsl). `histogram` holds
+// bands x band_bins weights.
+std::vector<float> band_tails(const std::vector<double>& histogram, int bands);
 
 // Bins per unit density of the coarse level: band_bins / (max - min) in float, 0 when all
 // densities are equal (or nearly) so that every texel falls in bin 0.

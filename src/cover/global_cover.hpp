@@ -86,6 +86,10 @@ class GlobalCover {
   const gpu::Texture& young_warp_field() const { return young_warp_field_; }  // --flow moving only
   const gpu::Texture& density_field() const { return density_field_; }
   const gpu::Texture& cover_field() const { return cover_field_; }
+  // The cloud's optical thickness and cloud-top height (km above sea level), 0 where clear
+  // (cloud_properties.glsl; after run_coverage, the top's clear texels after it too).
+  const gpu::Texture& optical_thickness_field() const { return optical_thickness_field_; }
+  const gpu::Texture& cloud_top_field() const { return cloud_top_field_; }
   const CoverageCalibration& calibration() const { return coverage_.result(); }
   // The latitude profile's calibration (absent with --profile flat, whose threshold is
   // calibration().threshold).
@@ -123,6 +127,7 @@ class GlobalCover {
   int splines_nodes_ = 0;
   bool splines_current_ = false;  // flow_splines_ holds the window of the cover's time
   gpu::Texture identity_field_, curl_field_, warp_field_, density_field_, cover_field_;
+  gpu::Texture optical_thickness_field_, cloud_top_field_;
   gpu::Texture young_warp_field_;  // --flow moving: the younger cloud layer's warp
   gpu::Texture spline_coefficients_;
   gpu::Texture surface_bias_;  // 720 x 360 R32F with --surface, else 1 x 1 zero

@@ -152,6 +152,8 @@ GpuCalibration::GpuCalibration(int size) : size_(size), weights_(size) {
   glNamedBufferStorage(density_range_, 8, nullptr, GL_DYNAMIC_STORAGE_BIT);
   glCreateBuffers(1, &band_cloudy_);
   glNamedBufferStorage(band_cloudy_, profile_bands * 8, nullptr, GL_DYNAMIC_STORAGE_BIT);
+  glCreateBuffers(1, &band_tails_);
+  glNamedBufferStorage(band_tails_, profile_bands * (band_bins + 1) * 4, nullptr, GL_DYNAMIC_STORAGE_BIT);
 }
 
 GpuCalibration::~GpuCalibration() {
@@ -159,6 +161,7 @@ GpuCalibration::~GpuCalibration() {
   glDeleteBuffers(1, &band_crossing_);
   glDeleteBuffers(1, &density_range_);
   glDeleteBuffers(1, &band_cloudy_);
+  glDeleteBuffers(1, &band_tails_);
 }
 
 void GpuCalibration::bind_density_range() const {
@@ -214,6 +217,16 @@ void GpuCalibration::bind_band_thresholds() const {
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, shader_bindings::cover_band_thresholds::band_thresholds, band_thresholds_);
 }
 
+void GpuCalibration::set_band_tails(const std::vector<float>& tails) const {
+  if (tails.empty() || tails.size() > static_cast<size_t>(profile_bands) * (band_bins + 1))
+    throw std::invalid_argument("GpuCalibration: band tails of more bands than the profile's");
+  glNamedBufferSubData(band_tails_, 0, static_cast<GLsizeiptr>(tails.size() * 4), tails.data());
+}
+
+void GpuCalibration::bind_band_tails() const {
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, shader_bindings::cover_band_tails::band_tails, band_tails_);
+}
+
 std::vector<std::uint64_t> GpuCalibration::band_histogram(const DensityParts& parts, int stage, int bands,
                                                           float density_min, float scale) const {
   const size_t slots = stage == 8 ? bands : static_cast<size_t>(bands) * band_bins;
@@ -253,8 +266,9 @@ BandCalibration GpuCalibration::run_bands(const DensityParts& parts, const std::
     for (size_t k = 0; k < sums.size(); ++k) out[k] = units.fraction(sums[k]);
     return out;
   };
-  const std::vector<BandCrossing> crossings = band_crossings(
-      as_fractions(band_histogram(parts, 6, bands, c.density_min, scale)), targets, c.density_min, scale);
+  c.histogram = as_fractions(band_histogram(parts, 6, bands, c.density_min, scale));
+  c.bin_scale = scale;
+  const std::vector<BandCrossing> crossings = band_crossings(c.histogram, targets, c.density_min, scale);
   std::vector<GLuint> crossing_words(2 * static_cast<size_t>(bands));
   for (int b = 0; b < bands; ++b) {
     crossing_words[2 * b] = static_cast<GLuint>(crossings[b].bin);
@@ -267,6 +281,14 @@ BandCalibration GpuCalibration::run_bands(const DensityParts& parts, const std::
   c.band_weight.resize(static_cast<size_t>(bands));
   for (int b = 0; b < bands; ++b) c.band_weight[b] = crossings[b].total;
   return c;
+}
+
+std::vector<double> GpuCalibration::coarse_histogram(const DensityParts& parts, int bands, float density_min,
+                                                     float scale) const {
+  const std::vector<std::uint64_t> sums = band_histogram(parts, 6, bands, density_min, scale);
+  std::vector<double> out(sums.size());
+  for (size_t k = 0; k < sums.size(); ++k) out[k] = weights_.units().fraction(sums[k]);
+  return out;
 }
 
 void GpuCalibration::measure_bands(const gpu::Texture& density, BandCalibration& c) const {

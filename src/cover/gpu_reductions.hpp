@@ -124,6 +124,9 @@ class GpuCalibration {
                             bool range_from_density_pass = false) const;
   BandCalibration run_bands(const DensityParts& parts, const std::vector<double>& targets,
                             std::optional<std::pair<float, float>> range = std::nullopt) const;
+  // Stage 6 alone: bands x band_bins weights (fractions of the sphere) over [density_min, ...)
+  // at `scale` bins per unit density (run_bands keeps its own in BandCalibration::histogram).
+  std::vector<double> coarse_histogram(const DensityParts& parts, int bands, float density_min, float scale) const;
   // The achieved fractions at the smooth threshold of `calibration` (stage 8), in place.
   void measure_bands(const gpu::Texture& density, BandCalibration& calibration) const;
   // The same measured by the remap pass (cover_remap.comp) as it writes the cover: bind before
@@ -136,6 +139,10 @@ class GpuCalibration {
   std::pair<float, float> read_density_range() const;
   // Binds the thresholds of the last run_bands (binding 6 of band_thresholds.glsl).
   void bind_band_thresholds() const;
+  // The densities' tails per band (band_tails) for the remap's ranks: kept, then bound
+  // (binding 10 of band_tails.glsl).
+  void set_band_tails(const std::vector<float>& tails) const;
+  void bind_band_tails() const;
   const GpuTexelWeights& weights() const { return weights_; }
 
  private:
@@ -152,6 +159,7 @@ class GpuCalibration {
   unsigned band_crossing_ = 0;    // (bin, lower edge bits) per band
   unsigned density_range_ = 0;    // sortable bits of the smallest and largest density
   unsigned band_cloudy_ = 0;      // a 64-bit sum of units per band (the remap's measurement)
+  unsigned band_tails_ = 0;       // band_bins + 1 floats per band (band_tails)
 };
 
 // cover::diagnose_warp on the GPU: the curl and warp maps stay there, 7 integers and 6 doubles

@@ -27,12 +27,24 @@ void equirect_region(int face_size, const float* const faces[6], int width, cons
 
 void streamed_equirect(int face_size, const float* const faces[6], int width, int height, const TakeMapRows& take,
                        int band_rows) {
+  streamed_equirect(face_size, {FacePointers{faces[0], faces[1], faces[2], faces[3], faces[4], faces[5]}}, width,
+                    height, take, band_rows);
+}
+
+void streamed_equirect(int face_size, const std::vector<FacePointers>& faces, int width, int height,
+                       const TakeMapRows& take, int band_rows) {
   const std::vector<glm::vec2> rows = geodetic_row_directions(height);
-  std::vector<float> band;
+  const size_t channels = faces.size();
+  std::vector<float> plane, band;
   for (int y0 = 0; y0 < height; y0 += band_rows) {
     const int y1 = std::min(height, y0 + band_rows);
-    band.assign(static_cast<size_t>(y1 - y0) * width, 0.0f);
-    equirect_region(face_size, faces, width, rows, PixelTile{0, y0, width, y1 - y0}, band.data());
+    const size_t pixels = static_cast<size_t>(y1 - y0) * width;
+    band.assign(pixels * channels, 0.0f);
+    plane.resize(pixels);
+    for (size_t c = 0; c < channels; ++c) {
+      equirect_region(face_size, faces[c].data(), width, rows, PixelTile{0, y0, width, y1 - y0}, plane.data());
+      for (size_t k = 0; k < pixels; ++k) band[k * channels + c] = plane[k];
+    }
     take(y0, y1 - y0, band);
   }
 }

@@ -6,6 +6,7 @@
 // band reads; a band of rows of the map reads rows of the polar and +-Y faces near its latitude
 // but every row of the +-X faces, whose rows run along longitude). The values are the GPU's
 // map's up to float rounding (the same operations; the GPU contracts and rounds its own way).
+#include <array>
 #include <functional>
 #include <vector>
 
@@ -23,6 +24,11 @@ using TakeMapRows = std::function<void(int first_row, int rows, const std::vecto
 // t = 0) are `faces`, in bands of `band_rows` rows, each sampled by all hardware threads.
 void streamed_equirect(int face_size, const float* const faces[6], int width, int height, const TakeMapRows& take,
                        int band_rows = 64);
+// The same for several channels' faces at once (faces[c] the six faces of channel c): the rows
+// hand over the channels interleaved, faces.size() floats a pixel.
+using FacePointers = std::array<const float*, 6>;
+void streamed_equirect(int face_size, const std::vector<FacePointers>& faces, int width, int height,
+                       const TakeMapRows& take, int band_rows = 64);
 
 // The pixels of `region` of such a map `width` wide whose rows' directions are `rows`
 // (geodetic_row_directions of its height), row by row into `out` (region.width floats a row):

@@ -31,8 +31,12 @@ TileDensity TileRunner::run(int index) {
   tile.diagnosis = cover_->diagnosis_sums();
   const std::vector<float> all = cover_->density_field().read();
   const std::size_t row = static_cast<std::size_t>(region.face_size);
-  tile.density.assign(all.begin() + static_cast<std::ptrdiff_t>(region.owned_begin * row),
-                      all.begin() + static_cast<std::ptrdiff_t>(region.owned_end * row));
+  const auto owned = [&](const std::vector<float>& texels) {
+    return std::vector<float>(texels.begin() + static_cast<std::ptrdiff_t>(region.owned_begin * row),
+                              texels.begin() + static_cast<std::ptrdiff_t>(region.owned_end * row));
+  };
+  tile.density = owned(all);
+  tile.cloud_top = owned(cover_->cloud_top_field().read());
   tile.timings.assign(cover_->timings().begin() + static_cast<std::ptrdiff_t>(before), cover_->timings().end());
   return tile;
 }
@@ -49,6 +53,8 @@ const gpu::Texture& TiledCoverage::upload(int index, const std::vector<float>& d
   if (density_.height() != region.rows) {
     density_ = gpu::Texture::layered(region.face_size, region.rows, 1, GL_R32F);
     cover_ = gpu::Texture::layered(region.face_size, region.rows, 1, GL_R32F);
+    optical_thickness_ = gpu::Texture::layered(region.face_size, region.rows, 1, GL_R32F);
+    cloud_top_ = gpu::Texture::layered(region.face_size, region.rows, 1, GL_R32F);
   }
   density_.write(density);
   return density_;
@@ -65,13 +71,18 @@ const CoverageCalibration& TiledCoverage::calibrate(std::pair<float, float> rang
   return coverage_.result();
 }
 
-const CoverageCalibration& TiledCoverage::remap(
-    const LoadTileDensity& load, const std::function<void(int index, const std::vector<float>& cover)>& take) {
+const CoverageCalibration& TiledCoverage::remap(const LoadTileDensity& load, const LoadTileDensity& load_cloud_top,
+                                                const std::function<void(int index, const CoverPlanes& cover)>& take) {
   coverage_.begin_remap();
   for (int index = 0; index < tiling_.count; ++index) {
     const gpu::Texture& density = upload(index, load(index));
-    coverage_.remap(density, cover_, owned_region(tiling_.tile(index)));
-    take(index, cover_.read());
+    const std::vector<float> tops = load_cloud_top(index);
+    if (tops.size() != static_cast<std::size_t>(owned_region(tiling_.tile(index)).owned_texels()))
+      throw std::invalid_argument("TiledCoverage: tile " + std::to_string(index) + " has " +
+                                  std::to_string(tops.size()) + " cloud tops");
+    cloud_top_.write(tops);
+    coverage_.remap(density, {cover_, optical_thickness_, cloud_top_}, owned_region(tiling_.tile(index)));
+    take(index, CoverPlanes{cover_.read(), optical_thickness_.read(), cloud_top_.read()});
   }
   return coverage_.finish_remap();
 }

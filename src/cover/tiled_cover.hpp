@@ -17,8 +17,9 @@ namespace nephele::cover {
 // What a tile's passes leave for the coverage: its densities and its share of the reductions.
 struct TileDensity {
   int index = 0;
-  CubeRegion region;           // the tile with its halo
-  std::vector<float> density;  // its owned rows, row by row from the first (N texels a row)
+  CubeRegion region;             // the tile with its halo
+  std::vector<float> density;    // its owned rows, row by row from the first (N texels a row)
+  std::vector<float> cloud_top;  // the density pass's cloud-top heights there, km (cloud_properties.glsl)
   float density_min = 0.0f, density_max = 0.0f;
   DiagnosisSums diagnosis;
   std::vector<PassTiming> timings;
@@ -44,16 +45,22 @@ class TileRunner {
 // A tile's owned densities, loaded (from memory or a file) when the coverage asks for them.
 using LoadTileDensity = std::function<std::vector<float>(int index)>;
 
+// The cover's three fields over a region of texels or pixels, each a plane of floats: the remap's
+// for a tile's owned rows (as TileDensity::density), or whole maps.
+struct CoverPlanes {
+  std::vector<float> cover, optical_thickness, cloud_top;
+};
+
 class TiledCoverage {
  public:
   TiledCoverage(const CoverParameters& parameters, const CubeTiling& tiling);
   // The thresholds from every tile's densities (each loaded two or three times: one pass over
   // the tiles per histogram), with the range the tiles' density passes reduced.
   const CoverageCalibration& calibrate(std::pair<float, float> range, const LoadTileDensity& load);
-  // Each tile's cover in turn (its owned rows, as TileDensity::density) to `take`; then the
-  // achieved fractions.
-  const CoverageCalibration& remap(const LoadTileDensity& load,
-                                   const std::function<void(int index, const std::vector<float>& cover)>& take);
+  // Each tile's fields in turn (its owned rows, as TileDensity::density) to `take`, from its
+  // densities and cloud tops; then the achieved fractions.
+  const CoverageCalibration& remap(const LoadTileDensity& load, const LoadTileDensity& load_cloud_top,
+                                   const std::function<void(int index, const CoverPlanes& cover)>& take);
   const CoverageCalibration& calibration() const { return coverage_.result(); }
   const std::optional<BandCalibration>& bands() const { return coverage_.bands(); }
 
@@ -63,7 +70,7 @@ class TiledCoverage {
   CoverParameters parameters_;
   CubeTiling tiling_;
   CoverageRemap coverage_;
-  gpu::Texture density_, cover_;
+  gpu::Texture density_, cover_, optical_thickness_, cloud_top_;
 };
 
 }  // namespace nephele::cover

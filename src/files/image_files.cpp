@@ -255,7 +255,8 @@ std::unique_ptr<OIIO::ImageInput> open_image(const std::filesystem::path& path, 
   const OIIO::ImageSpec& spec = in->spec();
   const auto base = spec.format.basetype;
   header = {spec.width, spec.height, spec.nchannels,
-            base == OIIO::TypeDesc::FLOAT || base == OIIO::TypeDesc::HALF || base == OIIO::TypeDesc::DOUBLE};
+            base == OIIO::TypeDesc::FLOAT || base == OIIO::TypeDesc::HALF || base == OIIO::TypeDesc::DOUBLE,
+            std::vector<std::string>(spec.channelnames.begin(), spec.channelnames.end())};
   if (spec.width < 1 || spec.height < 1 || spec.nchannels < 1)
     throw core::InputFileError(path.string() + ": declares an empty image (" + std::to_string(spec.width) + " x " +
                                std::to_string(spec.height) + " x " + std::to_string(spec.nchannels) + ")");

@@ -118,6 +118,9 @@ void write_image(const std::filesystem::path& path, const ImageData& image, cons
 struct ImageHeader {
   int width = 0, height = 0, channels = 0;
   bool float_samples = false;
+  // In the order read_image gives the channels (OpenEXR stores them sorted by name; OpenImageIO
+  // puts R, G, B, A first).
+  std::vector<std::string> channel_names;
 };
 
 // The one image reader. The path must be a regular file (core::regular_file_size: a FIFO cannot

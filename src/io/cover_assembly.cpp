@@ -36,8 +36,10 @@ void add_timing(std::vector<cover::PassTiming>& timings, const std::string& pass
 
 double whole_equirect_bytes(int size) {
   const double n2 = double(size) * size;
-  // The whole cover, its cube map on the device and its 4 N x 2 N map, encoded in memory.
-  return 6.0 * n2 * 4.0 * 2.0 + 8.0 * n2 * 4.0 * 2.0;
+  const double channels = static_cast<double>(cover_channels.size());
+  // The whole cover's fields, a field's cube map on the device, the 4 N x 2 N maps of the fields
+  // and the map interleaved, encoded in memory.
+  return 6.0 * n2 * 4.0 * (channels + 1.0) + 8.0 * n2 * 4.0 * (2.0 * channels + 1.0);
 }
 
 namespace {
@@ -47,7 +49,8 @@ namespace {
 double tile_and_preview_bytes(int size, int tiles, const CoverFileOptions& options) {
   const double n2 = double(size) * size;
   const double tile = 6.0 * n2 / tiles + 2.0 * size;  // owned texels of the largest tile
-  double bytes = tile * 4.0 * 3.0;
+  // Its densities and cloud tops as read and uploaded, its fields read back and interleaved.
+  double bytes = tile * 4.0 * (4.0 + 2.0 * static_cast<double>(cover_channels.size()));
   const double preview_face = std::min(size, preview_face_limit);
   if (options.preview)
     bytes += 6.0 * preview_face * preview_face * (8.0 + 4.0 + 4.0) + 8.0 * preview_face * preview_face * 4.0;
@@ -65,8 +68,9 @@ double assembly_host_bytes(int size, int tiles, const CoverFileOptions& options,
   // The equirect EXR: from the whole cover where it fits the budget, else a band of the map (its
   // faces are mapped from scratch files, which the kernel pages).
   if (options.equirect)
-    bytes +=
-        equirect_from_whole_cover(size, tiles, options, budget) ? whole_equirect_bytes(size) : 4.0 * size * 64 * 4.0;
+    bytes += equirect_from_whole_cover(size, tiles, options, budget)
+                 ? whole_equirect_bytes(size)
+                 : 4.0 * size * 64 * 4.0 * 2.0 * static_cast<double>(cover_channels.size());
   return bytes;
 }
 
@@ -141,6 +145,9 @@ AssembledCover write_assembled_cover(files::OutputSet& outputs, const std::vecto
 
   cover::TiledCoverage coverage(parameters, tiling);
   const cover::LoadTileDensity load = [&](int index) { return read_tile_densities(parts[static_cast<size_t>(index)]); };
+  const cover::LoadTileDensity load_cloud_top = [&](int index) {
+    return read_tile_cloud_tops(parts[static_cast<size_t>(index)]);
+  };
   say("calibrate");
   auto start = Clock::now();
   coverage.calibrate(range, load);
@@ -148,18 +155,25 @@ AssembledCover write_assembled_cover(files::OutputSet& outputs, const std::vecto
 
   // Each tile's cover as it comes: rows of a face EXR, and where asked for the whole cover (the
   // equirect EXR) or the preview's reduced cube.
-  const files::ImageEncoding exr = files::exr_encoding({"Y"}, options.half ? 16 : 32, options.compression);
+  const files::ImageEncoding exr = files::exr_encoding(cover_channels, options.half ? 16 : 32, options.compression);
+  const int channels = static_cast<int>(cover_channels.size());
   std::unique_ptr<files::ImageRowWriter> face_writer;
-  std::shared_ptr<std::vector<float>> whole;
+  std::shared_ptr<CoverPlanes> whole;
   // The equirect EXR from the whole cover where it fits the budget, else on the CPU from the
   // faces kept in scratch files (cover/streamed_equirect.hpp).
   const bool streamed = options.equirect && !equirect_from_whole_cover(size, count, options, budget);
-  if (options.equirect && !streamed) whole = std::make_shared<std::vector<float>>(6 * static_cast<size_t>(size) * size);
+  if (options.equirect && !streamed) {
+    whole = std::make_shared<CoverPlanes>();
+    for (std::vector<float>* plane : {&whole->cover, &whole->optical_thickness, &whole->cloud_top})
+      plane->resize(6 * static_cast<size_t>(size) * size);
+  }
+  // Streamed: the fields' faces in scratch files, channel by channel (6 files a channel).
   std::vector<std::unique_ptr<files::ScratchFloats>> scratch_faces;
   if (streamed)
-    for (int face = 0; face < 6; ++face)
-      scratch_faces.push_back(std::make_unique<files::ScratchFloats>(outputs.temporary_directory() /
-                                                                     (std::string("scratch_") + face_suffixes[face])));
+    for (const std::string& channel : cover_channels)
+      for (int face = 0; face < 6; ++face)
+        scratch_faces.push_back(std::make_unique<files::ScratchFloats>(
+            outputs.temporary_directory() / ("scratch_" + channel + "_" + face_suffixes[face])));
   const int preview_face = std::min(size, preview_face_limit);
   const bool reduce_preview = options.preview && !whole;  // (streamed: from the reduced cube)
   std::vector<double> preview_sum;
@@ -170,16 +184,21 @@ AssembledCover write_assembled_cover(files::OutputSet& outputs, const std::vecto
   }
   double face_ms = 0.0;
   start = Clock::now();
-  coverage.remap(load, [&](int index, const std::vector<float>& cover) {
+  coverage.remap(load, load_cloud_top, [&](int index, const CoverPlanes& planes) {
     const cover::CubeRegion region = cover::owned_region(tiling.tile(index));
     say("tile " + std::to_string(index + 1) + " of " + std::to_string(count));
-    if (streamed) scratch_faces[static_cast<size_t>(region.face)]->append(cover.data(), cover.size());
+    const std::vector<float>& cover = planes.cover;
+    if (streamed) {
+      const std::vector<float>* sources[3] = {&planes.cover, &planes.optical_thickness, &planes.cloud_top};
+      for (int c = 0; c < channels; ++c)
+        scratch_faces[static_cast<size_t>(c * 6 + region.face)]->append(sources[c]->data(), sources[c]->size());
+    }
     if (options.faces) {
       const auto face_start = Clock::now();
       const std::string name = std::string("cover_") + face_suffixes[region.face] + ".exr";
       if (region.first_row == 0)
-        face_writer = std::make_unique<files::ImageRowWriter>(outputs.reserve(name), size, size, 1, exr);
-      face_writer->write_rows(region.rows, cover.data());
+        face_writer = std::make_unique<files::ImageRowWriter>(outputs.reserve(name), size, size, channels, exr);
+      face_writer->write_rows(region.rows, interleaved_channels(planes, 0, cover.size()).data());
       if (region.first_row + region.rows == size) {
         face_writer->close();
         face_writer.reset();
@@ -187,7 +206,13 @@ AssembledCover write_assembled_cover(files::OutputSet& outputs, const std::vecto
       face_ms += milliseconds_since(face_start);
     }
     const size_t offset = (static_cast<size_t>(region.face) * size + region.first_row) * size;
-    if (whole) std::copy(cover.begin(), cover.end(), whole->begin() + static_cast<std::ptrdiff_t>(offset));
+    if (whole) {
+      std::copy(cover.begin(), cover.end(), whole->cover.begin() + static_cast<std::ptrdiff_t>(offset));
+      std::copy(planes.optical_thickness.begin(), planes.optical_thickness.end(),
+                whole->optical_thickness.begin() + static_cast<std::ptrdiff_t>(offset));
+      std::copy(planes.cloud_top.begin(), planes.cloud_top.end(),
+                whole->cloud_top.begin() + static_cast<std::ptrdiff_t>(offset));
+    }
     if (reduce_preview)
       for (int r = 0; r < region.rows; ++r) {
         const int rj = static_cast<int>(static_cast<long>(region.first_row + r) * preview_face / size);
@@ -208,9 +233,12 @@ AssembledCover write_assembled_cover(files::OutputSet& outputs, const std::vecto
   if (streamed) {
     say("equirect");
     start = Clock::now();
-    const float* faces[6];
-    for (int face = 0; face < 6; ++face) faces[face] = scratch_faces[static_cast<size_t>(face)]->map();
-    files::ImageRowWriter map(outputs.reserve("cover_equirect.exr"), 4 * size, 2 * size, 1, exr);
+    std::vector<cover::FacePointers> faces(static_cast<size_t>(channels));
+    for (int c = 0; c < channels; ++c)
+      for (int face = 0; face < 6; ++face)
+        faces[static_cast<size_t>(c)][static_cast<size_t>(face)] =
+            scratch_faces[static_cast<size_t>(c * 6 + face)]->map();
+    files::ImageRowWriter map(outputs.reserve("cover_equirect.exr"), 4 * size, 2 * size, channels, exr);
     cover::streamed_equirect(size, faces, 4 * size, 2 * size, [&](int, int rows, const std::vector<float>& pixels) {
       map.write_rows(rows, pixels.data());
     });
@@ -223,12 +251,17 @@ AssembledCover write_assembled_cover(files::OutputSet& outputs, const std::vecto
   start = Clock::now();
   if (whole) {
     say("equirect");
-    auto equirect = std::make_shared<core::ImageData>(core::ImageData{4 * size, 2 * size, 1, {}});
-    equirect->pixels = cover::equirect_from_faces(size, *whole, equirect->width, equirect->height);
-    images.equirect = equirect;
+    const int width = 4 * size, height = 2 * size;
+    CoverPlanes map;
+    map.cover = cover::equirect_from_faces(size, whole->cover, width, height);
+    map.optical_thickness = cover::equirect_from_faces(size, whole->optical_thickness, width, height);
+    map.cloud_top = cover::equirect_from_faces(size, whole->cloud_top, width, height);
+    images.equirect = std::make_shared<core::ImageData>(
+        core::ImageData{width, height, channels, interleaved_channels(map, 0, static_cast<size_t>(width) * height)});
     if (options.preview)
-      images.preview =
-          size > preview_face_limit ? std::make_shared<core::ImageData>(preview_image(size, *whole)) : equirect;
+      images.preview = size > preview_face_limit
+                           ? std::make_shared<core::ImageData>(preview_image(size, whole->cover))
+                           : std::make_shared<core::ImageData>(core::ImageData{width, height, 1, std::move(map.cover)});
   } else if (reduce_preview) {
     say("preview");
     std::vector<float> reduced(preview_sum.size());

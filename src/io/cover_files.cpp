@@ -3,6 +3,7 @@
 #include <chrono>
 #include <future>
 #include <memory>
+#include <stdexcept>
 
 #include "files/atomic_output.hpp"
 #include "cover/equirect.hpp"
@@ -47,6 +48,9 @@ json::Value conventions_json() {
         "2:1 plate carree, north up, longitude -180 deg at the left edge and 0 at the centre, "
         "pixel centres at (i + 0.5)/W; rows are WGS84 geodetic latitudes");
   c.set("values", "coverage in [0, 1], linear data (no sRGB); 0 is clear sky, > 0 cloudy");
+  c.set("channels",
+        "EXR channels Y (coverage), tau (optical thickness at 0.6 um, log-normal over the cloudy texels) and "
+        "cloud_top (cloud-top height, km above sea level); tau and cloud_top are 0 where Y is 0");
   c.set("png_preview", "8-bit, round(255 * coverage), no gamma curve");
   return c;
 }
@@ -247,9 +251,20 @@ double milliseconds_since(Clock::time_point start) {
 
 }  // namespace
 
+std::vector<float> interleaved_channels(const CoverPlanes& planes, std::size_t first, std::size_t count) {
+  const std::vector<float>* sources[3] = {&planes.cover, &planes.optical_thickness, &planes.cloud_top};
+  std::vector<float> out(3 * count);
+  for (int c = 0; c < 3; ++c) {
+    if (sources[c]->size() < first + count) throw std::invalid_argument("interleaved_channels: a plane is too short");
+    const float* in = sources[c]->data() + first;
+    for (std::size_t k = 0; k < count; ++k) out[3 * k + c] = in[k];
+  }
+  return out;
+}
+
 void write_cover_images(files::OutputSet& outputs, const CoverImages& images, const CoverFileOptions& options,
                         CoverExport& result) {
-  const files::ImageEncoding exr = files::exr_encoding({"Y"}, options.half ? 16 : 32, options.compression);
+  const files::ImageEncoding exr = files::exr_encoding(cover_channels, options.half ? 16 : 32, options.compression);
   // Each image is encoded in memory on its own thread; the files are written afterwards in
   // order, through the output set (which is not shared between threads).
   struct Job {
@@ -266,10 +281,9 @@ void write_cover_images(files::OutputSet& outputs, const CoverImages& images, co
     const int size = images.face_size;
     const size_t per_face = static_cast<size_t>(size) * size;
     for (int face = 0; face < 6; ++face) {
-      auto image = std::make_shared<core::ImageData>(core::ImageData{
-          size, size, 1,
-          std::vector<float>(images.faces->begin() + static_cast<std::ptrdiff_t>(face * per_face),
-                             images.faces->begin() + static_cast<std::ptrdiff_t>((face + 1) * per_face))});
+      auto image = std::make_shared<core::ImageData>(
+          core::ImageData{size, size, static_cast<int>(cover_channels.size()),
+                          interleaved_channels(*images.faces, face * per_face, per_face)});
       encode(std::string("cover_") + face_suffixes[face] + ".exr", image, exr);
     }
   }
@@ -311,20 +325,35 @@ CoverExport write_cover_files(files::OutputSet& outputs, const cover::GlobalCove
   images.face_size = size;
   const bool reduce_preview = options.preview && size > preview_face_limit;
   if (options.faces || reduce_preview) {
-    auto texels = std::make_shared<std::vector<float>>();
-    timed("read_faces", [&] { *texels = cover.cover_field().read(); });
-    if (options.faces) images.faces = texels;
+    auto faces = std::make_shared<CoverPlanes>();
+    timed("read_faces", [&] {
+      faces->cover = cover.cover_field().read();
+      if (options.faces) {
+        faces->optical_thickness = cover.optical_thickness_field().read();
+        faces->cloud_top = cover.cloud_top_field().read();
+      }
+    });
+    if (options.faces) images.faces = faces;
     if (reduce_preview)
-      timed("preview", [&] { images.preview = std::make_shared<core::ImageData>(preview_image(size, *texels)); });
+      timed("preview", [&] { images.preview = std::make_shared<core::ImageData>(preview_image(size, faces->cover)); });
   }
   if (options.equirect || (options.preview && !reduce_preview)) {
     // Resampled once on the GPU; both files come from this map (the preview up to its limit).
-    auto equirect = std::make_shared<core::ImageData>(core::ImageData{4 * size, 2 * size, 1, {}});
+    const int width = 4 * size, height = 2 * size;
+    CoverPlanes map;
     timed("equirect", [&] {
-      equirect->pixels = cover::equirect_from_cube(cover.cover_field(), equirect->width, equirect->height);
+      map.cover = cover::equirect_from_cube(cover.cover_field(), width, height);
+      if (options.equirect) {
+        map.optical_thickness = cover::equirect_from_cube(cover.optical_thickness_field(), width, height);
+        map.cloud_top = cover::equirect_from_cube(cover.cloud_top_field(), width, height);
+      }
     });
-    if (options.equirect) images.equirect = equirect;
-    if (options.preview && !reduce_preview) images.preview = equirect;
+    if (options.equirect)
+      images.equirect = std::make_shared<core::ImageData>(
+          core::ImageData{width, height, static_cast<int>(cover_channels.size()),
+                          interleaved_channels(map, 0, static_cast<std::size_t>(width) * height)});
+    if (options.preview && !reduce_preview)
+      images.preview = std::make_shared<core::ImageData>(core::ImageData{width, height, 1, std::move(map.cover)});
   }
   write_cover_images(outputs, images, options, result);
   outputs.write("cover.json", json::write(cover_sidecar(cover, context, result.timings, options)));

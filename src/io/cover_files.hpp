@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "cover/global_cover.hpp"
+#include "cover/tiled_cover.hpp"
 #include "gpu/egl_context.hpp"
 #include "core/image.hpp"
 #include "core/json.hpp"
@@ -73,12 +74,22 @@ std::vector<float> reduced_faces(int size, const std::vector<float>& texels, int
 // preview_face_limit first where larger.
 core::ImageData preview_image(int size, const std::vector<float>& texels);
 
+// The channels of the cover's EXR files (faces and equirect), in order: the coverage as Y, the
+// optical thickness and the cloud-top height in km above sea level, 0 where clear
+// (docs/formats.md; shaders/lib/cloud_properties.glsl).
+inline const std::vector<std::string> cover_channels = {"Y", "tau", "cloud_top"};
+
+using cover::CoverPlanes;
+// The planes' values interleaved as the EXR files' channels (cover_channels), from value `first`
+// of each plane, `count` of them.
+std::vector<float> interleaved_channels(const CoverPlanes& planes, std::size_t first, std::size_t count);
+
 // Images of a cover in host memory, each encoded and written by write_cover_images where present.
 struct CoverImages {
   int face_size = 0;
-  std::shared_ptr<const std::vector<float>> faces;  // cover_{px,...}.exr
-  std::shared_ptr<const core::ImageData> equirect;  // cover_equirect.exr
-  std::shared_ptr<const core::ImageData> preview;   // cover_equirect.png
+  std::shared_ptr<const CoverPlanes> faces;         // cover_{px,...}.exr: six faces a plane, GL order
+  std::shared_ptr<const core::ImageData> equirect;  // cover_equirect.exr, the channels interleaved
+  std::shared_ptr<const core::ImageData> preview;   // cover_equirect.png, the coverage
 };
 // Encodes the images in parallel and writes them into `outputs`, adding the timings and bytes.
 void write_cover_images(files::OutputSet& outputs, const CoverImages& images, const CoverFileOptions& options,

@@ -18,7 +18,7 @@
 namespace nephele::io {
 namespace {
 
-constexpr char magic[8] = {'N', 'E', 'P', 'H', 'T', 'I', 'L', '1'};
+constexpr char magic[8] = {'N', 'E', 'P', 'H', 'T', 'I', 'L', '2'};
 constexpr std::uint64_t max_header_bytes = 1u << 20;
 
 // 64-bit integers as decimal text: JSON numbers (doubles) hold 53 bits.
@@ -105,7 +105,7 @@ void write_tile_part(const std::filesystem::path& directory, const cover::TileDe
   const cover::CubeRegion& r = tile.region;
   const std::uint64_t bytes = tile.density.size() * sizeof(float);
   json::Value header;
-  header.set("format", "nephele tile part 1");
+  header.set("format", "nephele tile part 2");
   header.set("tile", tile.index);
   header.set("tiles", tile_count);
   header.set("face_size", r.face_size);
@@ -125,12 +125,17 @@ void write_tile_part(const std::filesystem::path& directory, const cover::TileDe
   header.set("timings_ms", timings);
   header.set("density_bytes", u64_text(bytes));
   header.set("density_hash", u64_text(core::block_hash(tile.density.data(), bytes)));
+  if (tile.cloud_top.size() != tile.density.size())
+    throw std::invalid_argument("write_tile_part: a cloud top per density");
+  header.set("cloud_top_hash", u64_text(core::block_hash(tile.cloud_top.data(), bytes)));
   header.set("cover", identity);
   const std::string text = json::write(header);
   const std::uint64_t length = text.size();
-  files::replace_file(
-      directory / tile_part_name(tile.index),
-      {{magic, sizeof magic}, {&length, sizeof length}, {text.data(), text.size()}, {tile.density.data(), bytes}});
+  files::replace_file(directory / tile_part_name(tile.index), {{magic, sizeof magic},
+                                                               {&length, sizeof length},
+                                                               {text.data(), text.size()},
+                                                               {tile.density.data(), bytes},
+                                                               {tile.cloud_top.data(), bytes}});
 }
 
 TilePart read_tile_header(const std::filesystem::path& path) {
@@ -139,7 +144,9 @@ TilePart read_tile_header(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
   char head[16];
   if (!in.read(head, sizeof head) || std::memcmp(head, magic, sizeof magic) != 0)
-    throw core::InputFileError(shown + ": not a nephele tile part (no NEPHTIL1 magic)");
+    throw core::InputFileError(shown +
+                               ": not a nephele tile part (no NEPHTIL2 magic; older parts (NEPHTIL1) hold no cloud "
+                               "tops: generate them again)");
   std::uint64_t length = 0;
   std::memcpy(&length, head + 8, sizeof length);
   if (length == 0 || length > max_header_bytes || 16 + length > file_bytes)
@@ -197,10 +204,11 @@ TilePart read_tile_header(const std::filesystem::path& path) {
   const std::uint64_t bytes = h.u64(root, "density_bytes");
   if (bytes != static_cast<std::uint64_t>(r.owned_texels()) * sizeof(float))
     h.fail("density_bytes", "is not the tile's " + std::to_string(r.owned_texels()) + " float32 densities");
-  if (file_bytes != part.data_offset + bytes)
+  if (file_bytes != part.data_offset + 2 * bytes)
     throw core::InputFileError(shown + ": " + std::to_string(file_bytes - part.data_offset) +
-                               " bytes of densities, not the header's " + std::to_string(bytes));
+                               " bytes of densities and cloud tops, not twice the header's " + std::to_string(bytes));
   part.density_hash = h.u64(root, "density_hash");
+  part.cloud_top_hash = h.u64(root, "cloud_top_hash");
   part.identity = h.at(root, "cover");
   return part;
 }
@@ -225,17 +233,33 @@ std::optional<TilePart> find_tile_part(const std::filesystem::path& directory, i
   return part;
 }
 
-std::vector<float> read_tile_densities(const TilePart& part) {
+namespace {
+
+// The part's block of a float per owned texel after `blocks_before` such blocks, checked
+// against `hash` (the header's `hash_key`).
+std::vector<float> read_tile_block(const TilePart& part, int blocks_before, std::uint64_t hash, const char* what,
+                                   const char* hash_key) {
   const std::string shown = part.path.string();
   const std::size_t count = static_cast<std::size_t>(part.tile.region.owned_texels());
-  std::vector<float> density(count);
+  std::vector<float> values(count);
   std::ifstream in(part.path, std::ios::binary);
-  in.seekg(static_cast<std::streamoff>(part.data_offset));
-  if (!in.read(reinterpret_cast<char*>(density.data()), static_cast<std::streamsize>(count * sizeof(float))))
-    throw core::InputFileError(shown + ": the densities are cut short");
-  if (core::block_hash(density.data(), count * sizeof(float)) != part.density_hash)
-    throw core::InputFileError(shown + ": the densities do not match the header's density_hash (a damaged file)");
-  return density;
+  in.seekg(static_cast<std::streamoff>(part.data_offset + blocks_before * count * sizeof(float)));
+  if (!in.read(reinterpret_cast<char*>(values.data()), static_cast<std::streamsize>(count * sizeof(float))))
+    throw core::InputFileError(shown + ": the " + what + " are cut short");
+  if (core::block_hash(values.data(), count * sizeof(float)) != hash)
+    throw core::InputFileError(shown + ": the " + what + " do not match the header's " + hash_key +
+                               " (a damaged file)");
+  return values;
+}
+
+}  // namespace
+
+std::vector<float> read_tile_densities(const TilePart& part) {
+  return read_tile_block(part, 0, part.density_hash, "densities", "density_hash");
+}
+
+std::vector<float> read_tile_cloud_tops(const TilePart& part) {
+  return read_tile_block(part, 1, part.cloud_top_hash, "cloud tops", "cloud_top_hash");
 }
 
 }  // namespace nephele::io

@@ -3,11 +3,13 @@
 // docs/scale.md; the format in docs/formats.md, "Tile parts"). One file per tile,
 // tile_NNNNNN.part, written whole or not at all (files::replace_file), so that the tasks of a
 // job array share the directory and a task run again replaces its parts:
-//   8 bytes   "NEPHTIL1"
+//   8 bytes   "NEPHTIL2"
 //   8 bytes   L, the header's length (unsigned, little-endian)
 //   L bytes   the header, JSON: the tile's place, its density range and diagnosis sums, its
-//             timings, the densities' byte count and block hash, and the cover it belongs to
-//   the rest  the tile's owned densities, float32 little-endian, row by row (face_size a row)
+//             timings, the densities' byte count, the block hashes of the densities and the
+//             cloud tops, and the cover it belongs to
+//   B bytes   the tile's owned densities, float32 little-endian, row by row (face_size a row)
+//   B bytes   their cloud-top heights (km), the same way
 #include <cstdint>
 #include <filesystem>
 #include <optional>
@@ -36,6 +38,7 @@ struct TilePart {
   int tile_count = 0;
   json::Value identity;
   std::uint64_t density_hash = 0;
+  std::uint64_t cloud_top_hash = 0;
   std::uint64_t data_offset = 0;
 };
 
@@ -48,5 +51,7 @@ std::optional<TilePart> find_tile_part(const std::filesystem::path& directory, i
 TilePart read_tile_header(const std::filesystem::path& path);
 // The densities of a part, checked against the header's hash; throws core::InputFileError.
 std::vector<float> read_tile_densities(const TilePart& part);
+// Its cloud-top heights, checked the same way.
+std::vector<float> read_tile_cloud_tops(const TilePart& part);
 
 }  // namespace nephele::io

@@ -3,6 +3,7 @@
 #include "io/export_presets.hpp"
 
 #include <cstdio>
+#include <limits>
 
 #include "core/error.hpp"
 #include "files/image_files.hpp"
@@ -21,6 +22,25 @@ std::string preset_words() {
 
 std::filesystem::path face_path(const std::filesystem::path& directory, int f) {
   return directory / (std::string("cover_") + face_suffixes[f] + ".exr");
+}
+
+// Where the file's channels hold Y, tau and cloud_top (cover_channels; -1 where absent): Y
+// alone, or all three and nothing else; empty for any other set.
+std::vector<int> face_channels(const std::vector<std::string>& names) {
+  std::vector<int> at(cover_channels.size(), -1);
+  for (size_t k = 0; k < names.size(); ++k)
+    for (size_t c = 0; c < cover_channels.size(); ++c)
+      if (names[k] == cover_channels[c]) at[c] = static_cast<int>(k);
+  const bool y_alone = names.size() == 1 && at[0] == 0;
+  const bool all = names.size() == cover_channels.size() && at[0] >= 0 && at[1] >= 0 && at[2] >= 0;
+  if (!y_alone && !all) return {};
+  return at;
+}
+
+std::string channel_list(const std::vector<std::string>& names) {
+  std::string list;
+  for (const std::string& n : names) list += (list.empty() ? "" : ", ") + n;
+  return list.empty() ? "(none)" : list;
 }
 
 }  // namespace
@@ -47,10 +67,11 @@ int read_cover_face_size(const std::filesystem::path& directory) {
     if (header.width != header.height || (f > 0 && header.width != size))
       throw core::InputError("COVER_DIR", path.string(), "six square faces of one size",
                              "is " + std::to_string(header.width) + " x " + std::to_string(header.height));
-    // A face holds coverage alone; reading one channel of a colour image would be a guess.
-    if (header.channels != 1)
-      throw core::InputError("COVER_DIR", path.string(), "one channel (Y) of coverage per face",
-                             "has " + std::to_string(header.channels) + " channels");
+    // A face holds coverage (and the cloud's properties); reading one channel of a colour image
+    // would be a guess.
+    if (face_channels(header.channel_names).empty())
+      throw core::InputError("COVER_DIR", path.string(), "the channel Y of coverage per face, or Y, tau and cloud_top",
+                             "has the channels " + channel_list(header.channel_names));
     size = header.width;
   }
   return size;
@@ -64,26 +85,38 @@ CoverFaces read_cover_faces(const std::filesystem::path& directory) {
   for (int f = 0; f < 6; ++f) {
     const std::filesystem::path path = face_path(directory, f);
     core::ImageData image;
+    files::ImageHeader header;
     try {
-      image = files::read_image(path);
+      image = files::read_image(path, 0, &header);
     } catch (const std::exception& e) {
       throw core::InputError("COVER_DIR", path.string(), "an OpenEXR cube face",
                              std::string("cannot be read: ") + e.what());
     }
     // The headers were checked; a file replaced meanwhile is caught here.
-    if (image.width != faces.size || image.height != faces.size || image.channels != 1)
-      throw core::InputError("COVER_DIR", path.string(), "six square one-channel faces of one size",
-                             "changed while read");
-    for (std::size_t i = 0; i < texels; ++i) {
-      const float v = image.pixels[i];
-      if (!(v >= 0.0f && v <= 1.0f)) {  // NaN fails both
-        char shown[32];
-        std::snprintf(shown, sizeof shown, "%g", double(v));
-        throw core::InputError("COVER_DIR", path.string(), "coverage values in [0, 1]",
-                               std::string("holds ") + shown + " at texel " + std::to_string(i % faces.size) + ", " +
-                                   std::to_string(i / faces.size));
+    const std::vector<int> at = face_channels(header.channel_names);
+    if (image.width != faces.size || image.height != faces.size || at.empty() ||
+        (f > 0 && (at[1] >= 0) != !faces.optical_thickness.empty()))
+      throw core::InputError("COVER_DIR", path.string(), "six square faces of one size and the same channels",
+                             "changed while read, or has other channels than cover_px.exr");
+    const int stride = image.channels;
+    // Each channel's values with its range: the coverage in [0, 1], tau and the top >= 0.
+    const auto take = [&](int channel, float most, const char* what, std::vector<float>& out) {
+      for (std::size_t i = 0; i < texels; ++i) {
+        const float v = image.pixels[i * stride + channel];
+        if (!(v >= 0.0f && v <= most)) {  // NaN fails both
+          char shown[32];
+          std::snprintf(shown, sizeof shown, "%g", double(v));
+          throw core::InputError("COVER_DIR", path.string(), what,
+                                 std::string("holds ") + shown + " at texel " + std::to_string(i % faces.size) + ", " +
+                                     std::to_string(i / faces.size));
+        }
+        out.push_back(v);
       }
-      faces.texels.push_back(v);
+    };
+    take(at[0], 1.0f, "coverage values in [0, 1] (channel Y)", faces.texels);
+    if (at[1] >= 0) {
+      take(at[1], std::numeric_limits<float>::max(), "optical thicknesses (tau) >= 0", faces.optical_thickness);
+      take(at[2], std::numeric_limits<float>::max(), "cloud-top heights (cloud_top, km) >= 0", faces.cloud_top);
     }
   }
   return faces;

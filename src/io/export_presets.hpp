@@ -13,12 +13,16 @@ namespace nephele::io {
 // The six faces of a cover, GL order +X, -X, +Y, -Y, +Z, -Z, rows from t = 0.
 struct CoverFaces {
   int size = 0;
-  std::vector<float> texels;  // 6 * size * size
+  std::vector<float> texels;  // 6 * size * size: the coverage
+  // The cloud's optical thickness and cloud-top height (km), as texels; empty for faces without
+  // the tau and cloud_top channels (covers of earlier versions, a user's own coverage).
+  std::vector<float> optical_thickness, cloud_top;
 };
 
-// Reads cover_px.exr ... cover_nz.exr of `directory` (the first channel of each). Throws
-// core::InputError naming COVER_DIR when the directory, a face or its size is wrong.
-// Reads the six faces: square, of one size, one channel each (Y), every value finite in [0, 1];
+// Reads cover_px.exr ... cover_nz.exr of `directory`. Throws core::InputError naming COVER_DIR
+// when the directory, a face or its size is wrong.
+// Reads the six faces: square, of one size, with the channel Y alone or Y, tau and cloud_top
+// (io::cover_channels), the coverage finite in [0, 1], tau and the top finite and >= 0;
 // anything else is core::InputError naming the file (and the texel). read_cover_face_size reads
 // only the headers, so that size limits are checked before the pixels are read.
 CoverFaces read_cover_faces(const std::filesystem::path& directory);

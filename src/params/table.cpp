@@ -27,6 +27,8 @@ const std::vector<const Parameter*>& all() {
       &cover::trade_cumulus,
       &cover::cirrus,
       &cover::cover_softness,
+      &cover::tau_median,
+      &cover::tau_spread,
       &cover::density_frequency,
       &cover::density_octaves,
       &cover::density_lacunarity,

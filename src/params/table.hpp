@@ -87,6 +87,15 @@ inline constexpr Parameter cover_softness =
          "cover = 1 - exp(-(density - threshold) / softness): thick cloud saturates to a bright, sharp-edged 1 and "
          "thin cloud stays grey (0: the linear ramp to the largest density of earlier versions)",
          cover_commands, "remap.softness");
+inline constexpr Parameter tau_median =
+    real("tau_median", 4.0, 0.1, 100.0, "",
+         "median optical thickness of the cloudy texels, log-normal by their rank in density (ISCCP: about half of "
+         "the cloud thinner than 3.6; docs/climate.md)",
+         cover_commands, "optical_thickness.median");
+inline constexpr Parameter tau_spread =
+    real("tau_spread", 1.2, 0.0, 3.0, "",
+         "standard deviation of the natural logarithm of the optical thickness (0: every cloudy texel at the median)",
+         cover_commands, "optical_thickness.spread");
 inline constexpr Parameter curl_strength =
     real("curl_strength", 0.2, 0.0, 100.0, "", "scale of the flow's potential (velocity = strength * n x grad phi)",
          cover_commands);

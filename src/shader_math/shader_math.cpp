@@ -6,6 +6,7 @@
 namespace nephele::glsl {
 #include "lib/atmosphere.glsl"
 #include "lib/cloud_density.glsl"
+#include "lib/cloud_properties.glsl"
 #include "lib/cloud_march.glsl"
 #include "lib/cover_density.glsl"
 #include "lib/cube_bspline.glsl"

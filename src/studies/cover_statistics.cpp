@@ -332,6 +332,34 @@ ObjectStatistics object_statistics(const Equirect& map, const std::vector<CloudO
   return o;
 }
 
+CloudPropertyStatistics cloud_property_statistics(const std::vector<float>& cover,
+                                                  const std::vector<float>& optical_thickness,
+                                                  const std::vector<float>& cloud_top, int size) {
+  CloudPropertyStatistics p;
+  if (optical_thickness.size() != cover.size() || cloud_top.size() != cover.size() || cover.empty()) return p;
+  p.present = true;
+  const std::vector<double> weights = cover::face_texel_solid_angles(size);
+  double total = 0, log_sum = 0, log_square = 0, top_sum = 0;
+  for (size_t k = 0; k < cover.size(); ++k) {
+    if (!(cover[k] > 0.0f)) continue;
+    const double w = weights[k % weights.size()];
+    const double tau = std::max(1e-6, static_cast<double>(optical_thickness[k]));
+    const double top = cloud_top[k];
+    total += w;
+    (tau < 3.6 ? p.thin : tau < 23.0 ? p.medium : p.thick) += w;
+    (top < 3.2 ? p.low : top < 6.5 ? p.middle : p.high) += w;
+    log_sum += w * std::log(tau);
+    log_square += w * std::log(tau) * std::log(tau);
+    top_sum += w * top;
+  }
+  if (total <= 0) return p;
+  for (double* share : {&p.thin, &p.medium, &p.thick, &p.low, &p.middle, &p.high}) *share /= total;
+  p.log_tau_mean = log_sum / total;
+  p.log_tau_sd = std::sqrt(std::max(0.0, log_square / total - p.log_tau_mean * p.log_tau_mean));
+  p.top_mean_km = top_sum / total;
+  return p;
+}
+
 CoverStatistics cover_statistics(const std::filesystem::path& cover_dir) {
   if (!std::filesystem::is_directory(cover_dir))
     throw core::InputError("COVER_DIR", cover_dir.string(), "a directory written by nephele generate",
@@ -397,6 +425,7 @@ CoverStatistics cover_statistics(const std::filesystem::path& cover_dir) {
     stats.coverage_10deg = band_coverage_faces(faces.texels, size, 18);
     const std::vector<double> weights = cover::face_texel_solid_angles(size);
     for (size_t k = 0; k < faces.texels.size(); ++k) add(faces.texels[k], weights[k % weights.size()] / (4.0 * M_PI));
+    stats.properties = cloud_property_statistics(faces.texels, faces.optical_thickness, faces.cloud_top, size);
   } else {
     stats.coverage_source = "equirect";
     stats.coverage_2deg = band_coverage_equirect(*map, 90);
@@ -455,6 +484,24 @@ json::Value statistics_json(const CoverStatistics& s) {
   coverage.set("bands_2deg", two);
   coverage.set("bands_10deg", ten);
   root.set("coverage_by_latitude", coverage);
+  if (s.properties.present) {
+    const CloudPropertyStatistics& p = s.properties;
+    json::Value properties;
+    properties.set("definition",
+                   "over the faces' cloudy texels (cover > 0), weighted by solid angle: shares of ISCCP's optical "
+                   "thickness classes (thin tau < 3.6, medium, thick tau >= 23) and cloud-top classes (low below "
+                   "3.2 km, middle, high from 6.5 km); mean and standard deviation of ln tau");
+    properties.set("thin", p.thin);
+    properties.set("medium", p.medium);
+    properties.set("thick", p.thick);
+    properties.set("log_tau_mean", p.log_tau_mean);
+    properties.set("log_tau_sd", p.log_tau_sd);
+    properties.set("low", p.low);
+    properties.set("middle", p.middle);
+    properties.set("high", p.high);
+    properties.set("top_mean_km", p.top_mean_km);
+    root.set("cloud_properties", properties);
+  }
   if (!s.spectrum.empty()) {
     json::Value spectrum;
     spectrum.set("definition",

@@ -88,6 +88,22 @@ struct ObjectStatistics {
 ObjectStatistics object_statistics(const Equirect& map, const std::vector<CloudObject>& objects,
                                    double max_latitude_deg);
 
+// The cloud's optical thickness and cloud-top height over the cloudy texels of faces with the tau
+// and cloud_top channels (docs/climate.md, "Optical thickness and cloud tops"), weighted by solid
+// angle: the shares of ISCCP's classes, thin (tau < 3.6), medium and thick (tau >= 23), low
+// (tops below 3.2 km, 680 hPa), middle and high (from 6.5 km, 440 hPa), and the log-normal's
+// mean and standard deviation of ln tau.
+struct CloudPropertyStatistics {
+  bool present = false;  // the faces had the channels
+  double thin = 0, medium = 0, thick = 0;
+  double log_tau_mean = 0, log_tau_sd = 0;
+  double low = 0, middle = 0, high = 0;
+  double top_mean_km = 0;
+};
+CloudPropertyStatistics cloud_property_statistics(const std::vector<float>& cover,
+                                                  const std::vector<float>& optical_thickness,
+                                                  const std::vector<float>& cloud_top, int size);
+
 // Everything `nephele stats` reports on a cover directory.
 struct CoverStatistics {
   std::string coverage_source;  // "faces" or "equirect"
@@ -97,9 +113,10 @@ struct CoverStatistics {
   PowerLaw spectrum_fit;
   double fit_k_low = 0, fit_k_high = 0;
   PerimeterDimension perimeter;
-  ObjectStatistics objects;       // (without an equirect: zero)
-  std::vector<double> histogram;  // [0] clear (cover 0), then 20 bins over (0, 1]
-  json::Value sidecar;            // cover.json
+  ObjectStatistics objects;            // (without an equirect: zero)
+  std::vector<double> histogram;       // [0] clear (cover 0), then 20 bins over (0, 1]
+  CloudPropertyStatistics properties;  // from the faces' tau and cloud_top channels
+  json::Value sidecar;                 // cover.json
 };
 
 // Reads COVER_DIR (cover.json, the faces and/or the equirect EXR) and computes the statistics.

@@ -7,6 +7,7 @@ const int PROBE_CYCLONE = 2;          // cyclone_frame(p, C).xy, cyclone_cloud(p
 const int PROBE_CELL_CLOUDS = 3;      // cell_clouds(p, a, uint(b), 7, 0.2, 0.3, 0.3, c)
 const int PROBE_BELTS = 4;            // itcz_clusters(p, lat, a, uint(b), c), trade_cumulus, cirrus_streaks
 const int PROBE_WEATHER_DENSITY = 5;  // weather_density, cyclone_systems, belt_systems (seed b + 1): cyclone C, the ITCZ at a, seed b, edge c
+const int PROBE_BELT_FIELDS = 6;      // belt_fields(p, lat, systems (the ITCZ at a), uint(b), c), belt_cloud of them in w
 #ifndef __cplusplus
 #include "../lib/weather_systems.glsl"
 #endif
@@ -45,6 +46,10 @@ vec4 probe_weather_systems(mat4 x) {
   systems.trade_cumulus = 1.0f;
   systems.cirrus = 1.0f;
   systems.seed = seed;
+  if (f == PROBE_BELT_FIELDS) {
+    vec3 fields = belt_fields(p, latitude, systems, seed, x[0].w);
+    return vec4(fields, belt_cloud(fields));
+  }
   return vec4(weather_density(p, latitude, systems, x[0].w), cyclone_systems(p, systems, x[0].w),
               belt_systems(p, latitude, systems, seed + 1u, x[0].w), 0.0f);  // PROBE_WEATHER_DENSITY
 }

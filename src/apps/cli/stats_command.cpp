@@ -90,6 +90,13 @@ int run_stats(const std::vector<std::string>& arguments) {
               << (stats.objects.cloudy_mean > 0 ? stats.objects.edge_value / stats.objects.cloudy_mean : 0.0) << ")\n";
   else
     std::cout << "no equirect map: no spectrum and no perimeter dimension\n";
+  if (stats.properties.present) {
+    const studies::CloudPropertyStatistics& p = stats.properties;
+    std::cout << "optical thickness: thin (tau < 3.6) " << p.thin << ", medium " << p.medium << ", thick (>= 23) "
+              << p.thick << " of the cloud; ln tau " << p.log_tau_mean << " +- " << p.log_tau_sd
+              << "\ncloud tops: low (< 3.2 km) " << p.low << ", middle " << p.middle << ", high (>= 6.5 km) " << p.high
+              << ", mean " << p.top_mean_km << " km\n";
+  }
   std::cout << "clear fraction " << stats.histogram[0] << "\nwrote " << (directory / "stats.json").string() << " and "
             << (directory / "stats.png").string() << "\n";
   return exit_ok;

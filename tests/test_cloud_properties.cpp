@@ -1,0 +1,173 @@
+// The cloud's optical thickness and cloud-top height (shaders/lib/cloud_properties.glsl): the
+// functions on the CPU, the calibration's tails, and the remap's fields on the GPU.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <vector>
+
+#include "cover/coverage_threshold.hpp"
+#include "cover/global_cover.hpp"
+#include "cover/solid_angle.hpp"
+#include "gl_support.hpp"
+#include "shader_math/shader_math.hpp"
+#include "steady_cover.hpp"
+
+using namespace nephele;
+
+namespace {
+
+// Abramowitz and Stegun 26.2.23 bounds its error in z by 4.5e-4.
+constexpr double kQuantile = 4.5e-4;
+
+double normal_cdf(double z) { return 0.5 * std::erfc(-z / std::sqrt(2.0)); }
+
+}  // namespace
+
+TEST_CASE("normal_quantile inverts the normal distribution within the approximation's bound", "[fast][properties]") {
+  for (double z : {-3.0, -2.0, -1.0, -0.3, 0.0, 0.2, 1.0, 1.959964, 3.0}) {
+    const float p = static_cast<float>(normal_cdf(z));
+    INFO("z " << z);
+    // The float p's rounding moves z by at most 2^-24 p / phi(z), under 1e-6 here.
+    CHECK(glsl::normal_quantile(p) == Approx(z).margin(kQuantile + 1e-6));
+  }
+  CHECK(glsl::normal_quantile(0.5f) == 0.0f);
+}
+
+TEST_CASE("ranks spread evenly give the log-normal's shares of ISCCP's thin, medium and thick cloud",
+          "[fast][properties]") {
+  const float median = 4.0f, spread = 1.2f;
+  const int n = 100000;
+  double thin = 0, thick = 0, log_sum = 0;
+  for (int k = 0; k < n; ++k) {
+    const float tau = glsl::optical_thickness_from_rank((k + 0.5f) / n, median, spread);
+    thin += tau < 3.6f;
+    thick += tau >= 23.0f;
+    log_sum += std::log(tau);
+  }
+  // A share is Phi((ln tau_c - ln median) / spread); the quantile's error in z moves it by at most
+  // phi(z) 4.5e-4 < 1.8e-4, the ranks' grid by 1/n.
+  const double tolerance = 0.4 * kQuantile + 1.0 / n;
+  CHECK(thin / n == Approx(normal_cdf(std::log(3.6 / 4.0) / 1.2)).margin(tolerance));
+  CHECK(thick / n == Approx(1.0 - normal_cdf(std::log(23.0 / 4.0) / 1.2)).margin(tolerance));
+  CHECK(thin / n == Approx(0.465).margin(0.001));
+  CHECK(thick / n == Approx(0.0725).margin(0.001));
+  // The mean of ln tau is ln median (the ranks are symmetric about 1/2; the limits clip both tails alike).
+  CHECK(log_sum / n == Approx(std::log(4.0)).margin(1e-3));
+  // The limits bound tau: median exp(+-3.09 spread).
+  CHECK(glsl::optical_thickness_from_rank(0.0f, median, spread) ==
+        Approx(median * std::exp(-3.0902 * spread)).epsilon(2e-3));
+  CHECK(glsl::optical_thickness_from_cover(0.0f, median, spread) == 0.0f);
+  CHECK(glsl::optical_thickness_from_cover(0.5f, median, spread) == Approx(median).epsilon(1e-6));
+}
+
+TEST_CASE("cloud tops follow the cloud type: decks low, fronts middle, cirrus high, anvils at the tropopause",
+          "[fast][properties]") {
+  const auto top = [](float frontal, float deep, float cumulus, float cirrus, float latitude, float cyclonic,
+                      float bias) {
+    glsl::CloudTypes t;
+    t.frontal = frontal;
+    t.deep_convection = deep;
+    t.cumulus = cumulus;
+    t.cirrus = cirrus;
+    return glsl::cloud_top_km(t, latitude, cyclonic, bias);
+  };
+  const float deg = static_cast<float>(M_PI / 180.0);
+  CHECK(glsl::tropopause_km(0.0f) == Approx(16.0f));
+  CHECK(glsl::tropopause_km(90.0f * deg) == Approx(9.0f).margin(1e-5));
+  CHECK(top(0, 0, 0, 0, 45 * deg, 0, 0) == Approx(3.0f));                                  // unorganised layer cloud
+  CHECK(top(0, 0, 0, 0, 20 * deg, 0, 1) == Approx(1.5f));                                  // a stratocumulus deck
+  CHECK(top(0, 0, 0, 0, 50 * deg, 0.6f, 0) == Approx(6.0f));                               // lifted in a cyclone
+  CHECK(top(0, 0, 1, 0, 15 * deg, 0, 0) == Approx(2.0f));                                  // trade cumulus
+  CHECK(top(1, 0, 0, 0, 50 * deg, 0, 0) == Approx(8.0f));                                  // the comma's shield
+  CHECK(top(0, 1, 0, 0, 5 * deg, 0, 0) == Approx(glsl::tropopause_km(5 * deg) - 1.0f));    // anvils
+  CHECK(top(0, 0, 0, 1, 50 * deg, 0, 0) == Approx(glsl::tropopause_km(50 * deg) - 2.0f));  // cirrus
+  // A system over lower cloud shows its own top where it is whole, and the higher type wins.
+  CHECK(top(1, 0, 0, 1, 50 * deg, 0, 0) == Approx(glsl::tropopause_km(50 * deg) - 2.0f));
+  CHECK(top(0.5f, 0, 0, 0, 50 * deg, 0, 0) == Approx(5.5f));
+  CHECK(glsl::cloud_top_from_cover(0.0f, 0.0f) == 0.0f);
+  CHECK(glsl::cloud_top_from_cover(0.5f, 45 * deg) == Approx(3.0f));
+  CHECK(glsl::cloud_top_from_cover(1.0f, 45 * deg) == Approx(8.0f));
+}
+
+TEST_CASE("band tails fall from 1 to 0 with each bin's weight", "[fast][properties]") {
+  std::vector<double> histogram(2 * cover::band_bins, 0.0);
+  histogram[10] = 0.25;
+  histogram[20] = 0.75;  // band 0: two bins; band 1: empty
+  const std::vector<float> tails = cover::band_tails(histogram, 2);
+  REQUIRE(tails.size() == 2u * (cover::band_bins + 1));
+  CHECK(tails[0] == 1.0f);
+  CHECK(tails[10] == 1.0f);
+  CHECK(tails[11] == 0.75f);
+  CHECK(tails[20] == 0.75f);
+  CHECK(tails[21] == 0.0f);
+  CHECK(tails[cover::band_bins] == 0.0f);
+  // A band without weight falls linearly, so that its ranks stay defined.
+  const float* empty = tails.data() + cover::band_bins + 1;
+  CHECK(empty[0] == 1.0f);
+  CHECK(empty[cover::band_bins / 2] == 0.5f);
+  CHECK(empty[cover::band_bins] == 0.0f);
+  CHECK_THROWS(cover::band_tails(histogram, 3));
+}
+
+TEST_CASE("the remap's optical thickness follows each cloudy texel's rank in density, and clear texels have none",
+          "[pass][properties]") {
+  test::test_context();
+  cover::CoverParameters p = test::steady_cover();
+  p.size = 32;
+  p.profile = cover::flat_profile();  // one band: the rank is over the sphere's cloudy texels
+  cover::GlobalCover cover(p);
+  cover.run();
+  const std::vector<float> density = cover.density_field().read();
+  const std::vector<float> covered = cover.cover_field().read();
+  const std::vector<float> tau = cover.optical_thickness_field().read();
+  const std::vector<float> top = cover.cloud_top_field().read();
+  const std::vector<double> weights = cover::face_texel_solid_angles(p.size);
+  const cover::CoverageCalibration& c = cover.calibration();
+
+  // The exact ranks: the cloudy solid angle below each cloudy texel's density, over the whole.
+  std::vector<size_t> cloudy;
+  for (size_t k = 0; k < density.size(); ++k)
+    if (density[k] > c.threshold) cloudy.push_back(k);
+  REQUIRE(cloudy.size() > 100);
+  std::sort(cloudy.begin(), cloudy.end(), [&](size_t a, size_t b) { return density[a] < density[b]; });
+  double total = 0;
+  for (size_t k : cloudy) total += weights[k % weights.size()];
+  // The GPU interpolates the tails linearly inside the calibration's coarse bins; a rank is off
+  // by at most the weight of the bins holding the density and the threshold, over the cloudy
+  // weight: twice the heaviest bin's.
+  const float scale = cover::band_bin_scale(c.density_min, c.density_max);
+  std::vector<double> bins(cover::band_bins, 0.0);
+  for (size_t k = 0; k < density.size(); ++k)
+    bins[std::min(cover::band_bins - 1, static_cast<int>((density[k] - c.density_min) * scale))] +=
+        weights[k % weights.size()];
+  const double rank_error = 2.0 * *std::max_element(bins.begin(), bins.end()) / total;
+  INFO("rank error bound " << rank_error);
+  REQUIRE(rank_error < 0.2);
+  double below = 0;
+  for (size_t k : cloudy) {
+    const double w = weights[k % weights.size()];
+    const float rank = static_cast<float>((below + 0.5 * w) / total);
+    below += w;
+    // The bracket of the ranks within the bound, widened by the functions' float rounding.
+    const float low =
+        glsl::optical_thickness_from_rank(rank - static_cast<float>(rank_error), p.tau_median, p.tau_spread);
+    const float high =
+        glsl::optical_thickness_from_rank(rank + static_cast<float>(rank_error), p.tau_median, p.tau_spread);
+    INFO("texel " << k << " rank " << rank << " tau " << tau[k] << " in [" << low << ", " << high << "]");
+    REQUIRE(tau[k] >= low * (1.0f - 1e-5f));
+    REQUIRE(tau[k] <= high * (1.0f + 1e-5f));
+  }
+  for (size_t k = 0; k < density.size(); ++k) {
+    INFO("texel " << k);
+    REQUIRE((covered[k] > 0.0f) == (tau[k] > 0.0f));
+    // Every cloudy texel has a top between the decks' and the tropical tropopause's.
+    if (covered[k] > 0.0f) {
+      REQUIRE(top[k] >= 1.5f);
+      REQUIRE(top[k] <= 16.0f);
+    } else {
+      REQUIRE(top[k] == 0.0f);
+    }
+  }
+}
