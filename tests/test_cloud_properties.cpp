@@ -91,6 +91,38 @@ TEST_CASE("cloud tops follow the cloud type: decks low, fronts middle, cirrus hi
   CHECK(glsl::cloud_top_from_cover(1.0f, 45 * deg) == Approx(8.0f));
 }
 
+TEST_CASE("clouds are as deep as their optical thickness makes them: decks shallow, cumulonimbus to the ground",
+          "[fast][properties]") {
+  CHECK(glsl::cloud_thickness_km(1.5f, 4.0f) == Approx(0.3f).margin(1e-3));   // a stratocumulus deck
+  CHECK(glsl::cloud_thickness_km(2.0f, 3.0f) == Approx(0.45f).margin(1e-3));  // trade cumulus
+  CHECK(glsl::cloud_thickness_km(15.0f, 80.0f) == Approx(14.5f));             // a cumulonimbus from 0.5 km
+  const float shield = glsl::cloud_thickness_km(8.0f, 20.0f);
+  CHECK(shield > 2.5f);
+  CHECK(shield < 5.0f);
+  // Deeper with tau at one top; never thinner than 300 m nor reaching below 200 m under the top's
+  // floor.
+  float previous = 0.0f;
+  for (float tau = 0.5f; tau < 100.0f; tau *= 1.5f) {
+    const float h = glsl::cloud_thickness_km(10.0f, tau);
+    CHECK(h >= previous);
+    previous = h;
+  }
+  CHECK(glsl::cloud_thickness_km(0.15f, 1.0f) == Approx(0.3f));
+}
+
+TEST_CASE("a partly cloudy texel is as transparent as its clear share and its cloud's transmittance",
+          "[fast][properties]") {
+  for (float c : {0.0f, 0.15f, 0.5f, 0.9f, 1.0f})
+    for (float tau : {0.15f, 1.0f, 10.0f, 50.0f}) {
+      INFO("cover " << c << " tau " << tau);
+      const double expected = -std::log((1.0 - c) + c * std::exp(-double(tau)));
+      CHECK(glsl::covered_optical_depth(c, tau) == Approx(expected).epsilon(1e-5).margin(1e-6));
+    }
+  // Whole thick cloud keeps its depth where exp(-tau) underflows in float.
+  CHECK(glsl::covered_optical_depth(1.0f, 163.0f) == 163.0f);
+  CHECK(glsl::covered_optical_depth(0.999f, 163.0f) == Approx(-std::log(0.001)).epsilon(1e-3));
+}
+
 TEST_CASE("band tails fall from 1 to 0 with each bin's weight", "[fast][properties]") {
   std::vector<double> histogram(2 * cover::band_bins, 0.0);
   histogram[10] = 0.25;

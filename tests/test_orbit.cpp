@@ -234,20 +234,53 @@ TEST_CASE("orbit: a cloud patch of the cover appears at its pixel and nowhere el
 
 TEST_CASE("orbit: with the sun overhead the ground below the cloud patch is darker than beside it", "[orbit]") {
   test::test_context();
-  // The patch at the subsolar point; the camera 1 km up (below the 2 km base) looks straight
-  // down, once under the patch and once 8 deg away. Under it the sunlight is cut to exp(-tau) +
-  // (1 - exp(-tau)) / (1 + 0.1125 tau) = 0.07 for tau near 120; the sky light (about a fifth of
-  // the total) is not, so the ground keeps about 0.25 of its brightness: below 0.5.
+  // The patch at the subsolar point; the camera 200 m up (below the lowest base, 300 m) looks
+  // straight down, once under the patch and once 8 deg away. The patch's cover 1 is thick cloud
+  // (tau 163 by the fallback) whose slab reaches from 0.5 to 8 km. Under it the sunlight is cut
+  // to exp(-tau) + (1 - exp(-tau)) / (1 + 0.1125 tau) = 0.05; the sky light (about a fifth of the
+  // total) is not, so the ground keeps about 0.25 of its brightness: below 0.5.
   const glm::dvec3 sun = render::sun_direction_ecef(june_morning);
   const double lat = std::asin(sun.z) / degree, lon = std::atan2(sun.y, sun.x) / degree;
   const auto cover = patch_cover(48, lat, lon, 4);
   const auto planet = uniform_planet(0.2);
-  const auto under = render::render_orbit(nadir_camera(lat, lon, 1000, 9, 5), june_morning, planet, cover);
-  const auto beside = render::render_orbit(nadir_camera(lat, lon + 8, 1000, 9, 5), june_morning, planet, cover);
+  const auto under = render::render_orbit(nadir_camera(lat, lon, 200, 9, 5), june_morning, planet, cover);
+  const auto beside = render::render_orbit(nadir_camera(lat, lon + 8, 200, 9, 5), june_morning, planet, cover);
   const glm::vec4 u = pixel(under, 4, 2), b = pixel(beside, 4, 2);
   CHECK(u.a == 0.0f);  // looking down from below the base: no cloud in the way
   CHECK(luminance(u) < 0.5 * luminance(b));
   CHECK(luminance(u) > 0.0);
+}
+
+TEST_CASE("orbit: thin cloud lets the ground through by its optical thickness, and thick cloud hides it",
+          "[orbit][thickness]") {
+  test::test_context();
+  // A cover of 0.15 everywhere with tau 0.15 (ISCCP's thinnest cirrus) and tops at 3 km, seen
+  // straight down from 2000 km: a nadir ray crosses the whole slab, whose optical depth is that
+  // of the texel's mean transmittance, -ln(1 - 0.15 (1 - exp(-0.15))) = 0.0211, so the cloud's
+  // opacity (alpha) is 1 - exp(-0.0211) = 0.0209. The slab integral is exact per segment; the
+  // half floats of the cover's texture round tau and the cover by 2^-11 relative: 0.3 % of alpha,
+  // and the B-spline of equal texels is exact.
+  const int size = 16;
+  const size_t texels = 6 * size * size;
+  const render::CoverCube thin{size, std::vector<float>(texels, 0.15f), std::vector<float>(texels, 0.15f),
+                               std::vector<float>(texels, 3.0f)};
+  const auto camera = nadir_camera(10, 60, 2.0e6, 9, 5, 2);
+  const auto planet = uniform_planet(0.05);
+  const glm::vec4 seen = pixel(render::render_orbit(camera, june_morning, planet, thin), 4, 2);
+  const double tau = -std::log(1 - 0.15 * (1 - std::exp(-0.15)));
+  CHECK(seen.a == Approx(1 - std::exp(-tau)).epsilon(0.01));
+  // The ground shows through: the pixel keeps at least the clear pixel's light times the view's
+  // transmittance exp(-tau) and the sunlight's through the slab, exp(-tau / mu) (the light the
+  // cloud scatters and the air before it only add).
+  const glm::vec4 clear = pixel(render::render_orbit(camera, june_morning, planet, clear_cover(size)), 4, 2);
+  const double mu = glm::dot(unit_of(10, 60), render::sun_direction_ecef(june_morning));
+  REQUIRE(mu > 0.2);
+  const double through = std::exp(-tau) * std::exp(-tau / mu);
+  for (int c = 0; c < 3; ++c) CHECK(seen[c] >= through * clear[c] * (1 - 1e-3));
+  // The same cover with tau 30 (thick): opaque.
+  const render::CoverCube thick{size, std::vector<float>(texels, 1.0f), std::vector<float>(texels, 30.0f),
+                                std::vector<float>(texels, 3.0f)};
+  CHECK(pixel(render::render_orbit(camera, june_morning, planet, thick), 4, 2).a > 0.99f);
 }
 
 TEST_CASE("orbit: a descent from 2000 km to 1 km changes luminance and cloud fraction smoothly", "[orbit][descent]") {

@@ -1,7 +1,9 @@
 #version 450
-// The orbit view (docs/orbit_view.md): a textured planet, a volumetric cloud shell whose density
-// follows the global cover (a cube map), cloud shadows on the ground, city lights on the night
-// side and the single-scattering atmosphere of shaders/lib/atmosphere.glsl in front of both.
+// The orbit view (docs/orbit_view.md): a textured planet, volumetric clouds whose columns follow
+// the global cover's cube map (cover, optical thickness and cloud-top height: each texel's cloud
+// a slab below its top, as thick as its type and tau make it), cloud shadows on the ground, city
+// lights on the night side and the single-scattering atmosphere of shaders/lib/atmosphere.glsl in
+// front of both.
 // One invocation per pixel. Positions are relative to the camera: the host computes the camera
 // and planet in double and hands over the planet's centre relative to the camera as float, and
 // for each sphere q = |camera - centre|^2 - r^2 (exact in double; in float it would cancel
@@ -11,11 +13,12 @@ layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
 layout(rgba32f, binding = 0) uniform writeonly image2D radiance_image;
 layout(binding = 1) uniform sampler2D day_texture;    // equirect, linear RGB, row 0 = north
 layout(binding = 2) uniform sampler2D night_texture;  // equirect, linear RGB (city lights)
-layout(binding = 3) uniform samplerCube cover_map;    // coverage in [0, 1], GL face convention
+layout(binding = 3) uniform samplerCube cover_map;    // (cover, tau, cloud top km, 0), GL face convention
 layout(binding = 4) uniform sampler3D detail_noise;   // 32^3 value noise in [0, 1], repeating
 layout(binding = 5) uniform sampler2D water_texture;  // equirect, fraction of open water (sun glint)
 
 #include "../lib/atmosphere.glsl"
+#include "../lib/cloud_properties.glsl"
 #include "../lib/cube_bspline.glsl"
 #include "../lib/equirect_mapping.glsl"
 #include "../lib/hash.glsl"
@@ -27,9 +30,8 @@ uniform float u_q_base;        // and atmosphere top spheres (double on the host
 uniform float u_q_top;
 uniform float u_q_atmosphere;
 uniform float u_radius;        // planet radius, m
-uniform float u_cloud_base;    // altitude of the shell's bottom, m
-uniform float u_cloud_top;     // altitude of the shell's top, m
-uniform float u_extinction;    // cloud extinction at density 1, 1/m
+uniform float u_cloud_base;    // altitude of the shell's bottom, m: no cloud below
+uniform float u_cloud_top;     // altitude of the shell's top, m: none above
 uniform vec3 u_forward;
 uniform vec3 u_right;
 uniform vec3 u_up;
@@ -40,6 +42,9 @@ uniform float u_night_lights;  // radiance of a city-light texel of value 1
 uniform float u_sea_wind;      // wind over the sea, m/s (the glint's facet slopes)
 uniform float u_cover_texel;   // arc length of one cover texel on the ground, m
 uniform float u_cover_size;    // cover texels along a face edge
+uniform int u_cover_properties;  // 1: the cover map holds tau and cloud tops; 0: derived from the cover
+uniform float u_tau_median;      // the fallback's log-normal (the table's defaults)
+uniform float u_tau_spread;
 uniform float u_day_texel;     // arc length of one day-texture texel, m
 uniform int u_cloud_steps;
 uniform int u_shadow_steps;
@@ -76,49 +81,90 @@ const float DETAIL_CELL = 1600.0f;  // m: the detail noise's coarse cell (the fi
 
 float cover_lod(float footprint) { return max(log2(max(footprint, 1.0f) / u_cover_texel), 0.0f); }
 
-// The cover in direction n at mip level `lod`. Where a cover texel spans more than a sample
-// (lod < 1) the base level is filtered by the cubic B-spline (cube_bspline.glsl): trilinear
-// lookups alone show the texel grid as a staircase of straight edges from low orbit. Between
-// lod 0 and 1 the two are blended, so nothing switches with distance.
-float cover_at(vec3 n, float lod) {
-  if (lod >= 1.0f) return textureLod(cover_map, n, lod).r;
+// The cover's channels (cover, tau, top km, 0) in direction n at mip level `lod`. Where a cover
+// texel spans more than a sample (lod < 1) the base level is filtered by the cubic B-spline
+// (cube_bspline.glsl): trilinear lookups alone show the texel grid as a staircase of straight
+// edges from low orbit. Between lod 0 and 1 the two are blended, so nothing switches with distance.
+vec4 cover_at(vec3 n, float lod) {
+  if (lod >= 1.0f) return textureLod(cover_map, n, lod);
   CubeBsplineTaps taps = cube_bspline_taps(n, u_cover_size);
-  float c00 = textureLod(cover_map, taps.d00, 0.0f).r, c10 = textureLod(cover_map, taps.d10, 0.0f).r;
-  float c01 = textureLod(cover_map, taps.d01, 0.0f).r, c11 = textureLod(cover_map, taps.d11, 0.0f).r;
-  float smooth_cover = mix(mix(c00, c10, taps.g.x), mix(c01, c11, taps.g.x), taps.g.y);
+  vec4 c00 = textureLod(cover_map, taps.d00, 0.0f), c10 = textureLod(cover_map, taps.d10, 0.0f);
+  vec4 c01 = textureLod(cover_map, taps.d01, 0.0f), c11 = textureLod(cover_map, taps.d11, 0.0f);
+  vec4 smooth_cover = mix(mix(c00, c10, taps.g.x), mix(c01, c11, taps.g.x), taps.g.y);
   // Close up (lod 0, most samples below 2000 km) the mipmapped lookup has no weight: not fetched.
-  return lod > 0.0f ? mix(smooth_cover, textureLod(cover_map, n, lod).r, lod) : smooth_cover;
+  return lod > 0.0f ? mix(smooth_cover, textureLod(cover_map, n, lod), lod) : smooth_cover;
 }
 
-// Cloud density in [0, 1] at p (relative to the planet centre) for a sample that stands for
-// `footprint` metres: the cover at p's direction sets how high the column reaches (0.15 of the
-// shell at the thinnest, all of it at coverage 1) and how dense it is; the base and the top are
-// soft. Close up, two octaves of value noise erode it (more where the cover is thin); they fade
-// out smoothly where a sample covers a noise cell, so nothing switches with distance.
-float cloud_density(vec3 p, float footprint) {
-  float r = length(p);
-  float hf = (r - u_radius - u_cloud_base) / (u_cloud_top - u_cloud_base);
-  if (hf <= 0.0f || hf >= 1.0f) return 0.0f;
-  float c = cover_at(p / r, cover_lod(footprint));
-  if (c <= 0.0f) return 0.0f;
-  float top = 0.15f + 0.85f * c;
-  float column = smoothstep(0.0f, 0.08f, hf) * (1.0f - smoothstep(0.75f * top, top, hf));
-  float density = smoothstep(0.0f, 0.15f, c) * (0.4f + 0.6f * c) * column;
-  float coarse = 1.0f - smoothstep(0.5f * DETAIL_CELL, 2.0f * DETAIL_CELL, footprint);
+// The cloud's slab in direction n: (base m, top m, extinction 1/m, the cloud's own extinction
+// 1/m), extinctions 0 where clear. The texel's cloud covers the share `cover` of it with optical
+// thickness tau; its mean transmittance 1 - c (1 - exp(-tau)) is that of a uniform slab of optical
+// depth covered_optical_depth(c, tau): thin cloud and the grey edges let the surface show
+// through, thick cloud is opaque. The light that diffuses through the cloud goes by the cloud's
+// own tau (the fourth component), not by that mean. The slab reaches from the type's top down by cloud_thickness_km. With `detail`
+// (the view's rays), close up, two octaves of value noise erode it (more where the cover is
+// thin); they fade out smoothly where a sample covers a noise cell, so nothing switches with
+// distance. The light's rays (shadows on the ground and in the cloud) take the slab as it is:
+// their optical depth is the cover's tau, which the erosion would only thin.
+vec4 cloud_slab(vec3 p, float footprint, bool detail) {
+  vec3 n = normalize(p);
+  vec4 c = cover_at(n, cover_lod(footprint));
+  if (u_cover_properties == 0) {
+    c.y = optical_thickness_from_cover(c.x, u_tau_median, u_tau_spread);
+    c.z = cloud_top_from_cover(c.x, asin(clamp(n.z, -1.0f, 1.0f)));
+  }
+  if (c.x <= 0.0f || c.y <= 0.0f) return vec4(0.0f);
+  float top = 1000.0f * c.z;
+  float thickness = 1000.0f * cloud_thickness_km(c.z, c.y);
+  float extinction = covered_optical_depth(c.x, c.y) / thickness;
+  float own = c.y / thickness;
+  float coarse = detail ? 1.0f - smoothstep(0.5f * DETAIL_CELL, 2.0f * DETAIL_CELL, footprint) : 0.0f;
   if (coarse > 0.0f) {
     float fine = 1.0f - smoothstep(0.125f * DETAIL_CELL, 0.5f * DETAIL_CELL, footprint);
     float n1 = textureLod(detail_noise, p / (32.0f * DETAIL_CELL), 0.0f).r;
     float n2 = textureLod(detail_noise, p / (8.0f * DETAIL_CELL) + vec3(0.37f), 0.0f).r;
-    float n = 0.7f * n1 + 0.3f * mix(0.5f, n2, fine);
-    float erosion = clamp((n - 0.45f * (1.0f - c) - 0.1f) * 3.0f, 0.0f, 1.0f);
-    density *= mix(1.0f, erosion, coarse);
+    float noise = 0.7f * n1 + 0.3f * mix(0.5f, n2, fine);
+    float erosion = clamp((noise - 0.45f * (1.0f - c.x) - 0.1f) * 3.0f, 0.0f, 1.0f);
+    extinction *= mix(1.0f, erosion, coarse);
+    own *= mix(1.0f, erosion, coarse);
   }
-  return density;
+  return vec4(max(top - thickness, u_cloud_base), min(top, u_cloud_top), extinction, own);
 }
 
-// Optical depth of the shell from p (relative to the centre) towards the sun, `steps` samples
-// spread over the path to the shell's top (at most 60 km: beyond, low sun light is gone anyway).
-float optical_depth_to_sun(vec3 p, int steps, float footprint) {
+// The mean extinctions (1/m; cloud_slab's two) over the segment from p to p + dt d (relative to the
+// planet's centre):
+// the slab at the segment's middle, times the share of the segment's altitudes inside it, so that
+// a slab thinner than a step (a stratocumulus deck of 300 m under a step of a kilometre) has its
+// whole optical depth instead of being hit or missed by a sample. `inside` is where the light is
+// evaluated: in the segment's part in the slab, at its middle or, in thick cloud, one mean free
+// path (1 / extinction) past where the segment enters it, which is where the light that leaves
+// the segment was scattered on average: the lit side of a thick cloud, not its dark inside.
+vec2 segment_extinction(vec3 p, vec3 d, float dt, float footprint, bool detail, out vec3 inside) {
+  vec3 middle = p + 0.5f * dt * d;
+  inside = middle;
+  vec4 slab = cloud_slab(middle, footprint, detail);
+  if (slab.z <= 0.0f || slab.y <= slab.x) return vec2(0.0f);
+  float h0 = length(p) - u_radius, h1 = length(p + dt * d) - u_radius;
+  float low = min(h0, h1), high = max(h0, h1);
+  float overlap;
+  if (high - low < 1.0e-3f * max(dt, 1.0f)) {
+    float h = 0.5f * (low + high);
+    overlap = h > slab.x && h < slab.y ? 1.0f : 0.0f;
+  } else {
+    float a = max(low, slab.x), b = min(high, slab.y);
+    overlap = clamp((b - a) / (high - low), 0.0f, 1.0f);
+    // Where the segment enters the slab and how far it runs in it (linear in t: near enough
+    // over a step).
+    float entry = clamp(((h1 > h0 ? a : b) - h0) / (h1 - h0), 0.0f, 1.0f) * dt;
+    float inside_length = overlap * dt;
+    inside = p + (entry + min(0.5f * inside_length, 1.0f / slab.z)) * d;
+  }
+  return slab.zw * overlap;
+}
+
+// Optical depths of the clouds from p (relative to the centre) towards the sun, `steps` segments
+// spread over the path to the shell's top (at most 60 km: beyond, low sun light is gone anyway):
+// the mean one (direct light) and the clouds' own (the light diffusing through them).
+vec2 optical_depth_to_sun(vec3 p, int steps, float footprint) {
   float b = dot(p, u_sun);
   float r_top = u_radius + u_cloud_top;
   float q = dot(p, p) - r_top * r_top;
@@ -130,19 +176,30 @@ float optical_depth_to_sun(vec3 p, int steps, float footprint) {
     start = max(sphere_hits(b, dot(p, p) - r_base * r_base).y, 0.0f);
   }
   float span = max(length_to_top - start, 0.0f);
-  float depth = 0.0f;
+  vec2 depth = vec2(0.0f);
+  vec3 inside;
   for (int i = 0; i < steps; ++i) {
     float t0 = float(i) / float(steps), t1 = float(i + 1) / float(steps);
     // Quadratic spacing: short steps near p, where the light's shadow detail is.
-    float s = start + span * 0.25f * (t0 + t1) * (t0 + t1);
-    depth += cloud_density(p + s * u_sun, footprint) * span * (t1 * t1 - t0 * t0);
+    float s0 = start + span * t0 * t0, s1 = start + span * t1 * t1;
+    // The light integrates the clouds across the segment: they are looked up at its length's
+    // scale (one mipmapped fetch, not the B-spline's four, once that spans a cover texel).
+    depth += segment_extinction(p + s0 * u_sun, u_sun, s1 - s0, max(footprint, 0.5f * (s1 - s0)), false, inside) *
+             (s1 - s0);
   }
-  return depth * u_extinction;
+  return depth;
 }
 
 // Share of the light that gets through a cloud layer of optical depth tau by multiple scattering
 // (two-stream, asymmetry 0.85: 1 / (1 + 0.75 x 0.15 tau)).
 float diffuse_transmission(float tau) { return 1.0f / (1.0f + 0.1125f * tau); }
+
+// The sunlight through the clouds of depths (mean, own): the direct beam by the mean, the rest
+// diffusing through the cloud by its own depth.
+float cloud_shadow(vec2 depth) {
+  float direct = exp(-depth.x);
+  return direct + (1.0f - direct) * diffuse_transmission(depth.y);
+}
 
 float hg(float nu, float g) { return henyey_greenstein(nu, g); }
 
@@ -179,32 +236,52 @@ void main() {
   float cloud_transmittance = 1.0f;
   float weighted_distance = 0.0f, weight_sum = 0.0f;
   if (len0 + len1 > 0.0f) {
-    int steps = max(u_cloud_steps, 1);
+    // Each segment's slab integral is exact where the segment stays over one column, so a ray
+    // needs segments only as often as it moves across the cover: two per cover texel of its
+    // horizontal travel in the shell (a nadir ray from orbit: 2; near the limb: u_cloud_steps).
+    // Close to the clouds (the detail noise resolved) every step is taken.
+    vec3 entry = oc + shell.x * d;
+    float across = sqrt(max(1.0f - pow(dot(d, normalize(entry)), 2.0f), 0.0f));
+    float near = shell.x * u_pixel_angle < 2.0f * DETAIL_CELL ? 1.0f : 0.0f;
+    int steps = near > 0.0f ? max(u_cloud_steps, 1)
+                            : clamp(int(ceil(2.0f * (len0 + len1) * across / u_cover_texel)) + 1, 2,
+                                    max(u_cloud_steps, 2));
     float dt = (len0 + len1) / float(steps);
     vec3 sun_at_cloud = vec3(-1.0f);  // sunlight at the shell, computed at the first dense sample
-    for (int i = 0; i < steps && cloud_transmittance > 0.005f; ++i) {
-      float s = (float(i) + jitter) * dt;
-      float t = s < len0 ? shell.x + s : shell.z + (s - len0);
-      vec3 p = oc + t * d;
-      float footprint = max(t * u_pixel_angle, 0.25f * dt);
-      float density = cloud_density(p, footprint);
-      if (density <= 0.0f) continue;
-      vec3 n = normalize(p);
-      if (sun_at_cloud.x < 0.0f) sun_at_cloud = solar_irradiance() * transmittance_to_space(p, u_sun, u_radius);
-      float sigma = density * u_extinction;
-      float tau_light = optical_depth_to_sun(p, 4, footprint);
-      float nu = dot(d, u_sun);
-      float phase = 0.7f * hg(nu, 0.6f) + 0.3f * hg(nu, -0.3f);
-      // Single scattering plus the light that diffuses through the cloud (multiple scattering,
-      // isotropic), with the two-stream transmission 1 / (1 + 0.75 (1 - g) tau) of a cloud of
-      // asymmetry g = 0.85.
-      vec3 source = CLOUD_ALBEDO * (sun_at_cloud * (phase * exp(-tau_light) + 0.3f * diffuse_transmission(tau_light)) +
-                                    sky_ambient(n));
-      float step_transmittance = exp(-sigma * dt);
-      cloud_light += cloud_transmittance * source * (1.0f - step_transmittance);
-      weighted_distance += t * cloud_transmittance * (1.0f - step_transmittance);
-      weight_sum += cloud_transmittance * (1.0f - step_transmittance);
-      cloud_transmittance *= step_transmittance;
+    float nu = dot(d, u_sun);
+    float phase = 0.7f * hg(nu, 0.6f) + 0.3f * hg(nu, -0.3f);
+    // Segments between the boundaries (k + jitter) dt, k = 0 .. steps - 1, and the ends (so that
+    // the boundaries do not line up between pixels); a segment across the gap between the two
+    // intervals is taken in its two parts.
+    float total = len0 + len1;
+    for (int i = 0; i <= steps && cloud_transmittance > 0.005f; ++i) {
+      float a = i == 0 ? 0.0f : min((float(i) - 1.0f + jitter) * dt, total);
+      float e = i == steps ? total : min((float(i) + jitter) * dt, total);
+      for (int part = 0; part < 2; ++part) {
+        float s0 = part == 0 ? a : max(a, len0);
+        float s1 = part == 0 ? min(e, len0) : e;
+        if (s1 <= s0) continue;
+        float t = s0 < len0 ? shell.x + s0 : shell.z + (s0 - len0);
+        float segment = s1 - s0;
+        vec3 p;
+        float footprint = max(t * u_pixel_angle, 0.25f * dt);
+        float sigma = segment_extinction(oc + t * d, d, segment, footprint, true, p).x;
+        if (sigma <= 0.0f) continue;
+        vec3 n = normalize(p);
+        if (sun_at_cloud.x < 0.0f) sun_at_cloud = solar_irradiance() * transmittance_to_space(p, u_sun, u_radius);
+        vec2 tau_light = optical_depth_to_sun(p, 4, footprint);
+        // Single scattering plus the light that diffuses through the cloud (multiple scattering,
+        // isotropic), with the two-stream transmission 1 / (1 + 0.75 (1 - g) tau) of a cloud of
+        // asymmetry g = 0.85.
+        vec3 source = CLOUD_ALBEDO * (sun_at_cloud * (phase * exp(-tau_light.x) + 0.3f * diffuse_transmission(tau_light.y)) +
+                                      sky_ambient(n));
+        float step_transmittance = exp(-sigma * segment);
+        float hit_distance = length(p - oc);
+        cloud_light += cloud_transmittance * source * (1.0f - step_transmittance);
+        weighted_distance += hit_distance * cloud_transmittance * (1.0f - step_transmittance);
+        weight_sum += cloud_transmittance * (1.0f - step_transmittance);
+        cloud_transmittance *= step_transmittance;
+      }
     }
   }
   float cloud_distance = weight_sum > 0.0f ? weighted_distance / weight_sum : 0.0f;
@@ -223,8 +300,7 @@ void main() {
     vec3 direct = vec3(0.0f);
     if (mu > -0.02f) {
       // Cloud shadow: the shell's optical depth towards the sun; some light diffuses through.
-      float tau = optical_depth_to_sun(g, u_shadow_steps, footprint);
-      float shadow = exp(-tau) + (1.0f - exp(-tau)) * diffuse_transmission(tau);
+      float shadow = cloud_shadow(optical_depth_to_sun(g, u_shadow_steps, footprint));
       direct = solar_irradiance() * transmittance_to_space(g + 1.0f * n, u_sun, u_radius) * max(mu, 0.0f) * shadow;
     }
     vec3 sky = PI_F * sky_ambient(n);

@@ -102,7 +102,7 @@ PlanetTextures read_planet_textures(const std::string& day, const std::string& n
 
 render::CoverCube read_cover_cube(const std::filesystem::path& directory) {
   CoverFaces faces = read_cover_faces(directory);
-  return {faces.size, std::move(faces.texels)};
+  return {faces.size, std::move(faces.texels), std::move(faces.optical_thickness), std::move(faces.cloud_top)};
 }
 
 }  // namespace nephele::io

@@ -304,10 +304,15 @@ inline constexpr Parameter night_texture =
 inline constexpr Parameter planet_radius_km =
     real("planet_radius_km", 6371, 1, 1e6, "km", "orbit view: radius of the planet's sphere", render);
 inline constexpr Parameter cloud_base_km =
-    real("cloud_base_km", 2, 0, 90, "km", "orbit view: altitude of the cloud shell's bottom", render);
+    real("cloud_base_km", 0.3, 0, 90, "km",
+         "orbit view: the lowest cloud base; each cloud's slab comes from the cover's tau and cloud_top "
+         "(docs/orbit_view.md)",
+         render);
 inline constexpr Parameter cloud_thickness_km =
-    real("cloud_thickness_km", 8, 0.01, 90, "km",
-         "orbit view: thickness of the cloud shell (base + thickness below 100 km)", render);
+    real("cloud_thickness_km", 15.7, 0.01, 90, "km",
+         "orbit view: the shell the clouds lie in above the lowest base, which clips their tops (base + thickness "
+         "below 100 km)",
+         render);
 }  // namespace scene
 
 namespace noise_texture {

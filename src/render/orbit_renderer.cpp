@@ -12,6 +12,7 @@
 #include "gpu/compute_program.hpp"
 #include "gpu/pass_timer.hpp"
 #include "gpu/textures.hpp"
+#include "params/table.hpp"
 #include "render/sun_position.hpp"
 #include "shader_math/shader_math.hpp"
 
@@ -58,8 +59,7 @@ void check_settings(const OrbitSettings& s) {
   if (!(s.cloud_base_m >= 0) || !(s.cloud_thickness_m > 0) || !cloud_shell_fits(s.cloud_base_m, s.cloud_thickness_m))
     bad("the cloud shell must lie within the atmosphere (" + std::to_string(atmosphere_top_km()) +
         " km) and have a thickness above 0");
-  if (!(s.cloud_extinction >= 0) || !(s.night_lights >= 0) || !(s.sea_wind_ms >= 0))
-    bad("negative extinction, night lights or sea wind");
+  if (!(s.night_lights >= 0) || !(s.sea_wind_ms >= 0)) bad("negative night lights or sea wind");
   if (s.cloud_steps < 1 || s.cloud_steps > 1024 || s.shadow_steps < 0 || s.shadow_steps > 256 || s.sky_steps < 1 ||
       s.sky_steps > 256)
     bad("step counts out of range");
@@ -73,8 +73,12 @@ bool cloud_shell_fits(double base_m, double thickness_m) { return base_m + thick
 namespace {
 
 void check_cover(const CoverCube& cover) {
-  if (cover.size < 1 || cover.texels.size() != 6 * static_cast<size_t>(cover.size) * cover.size)
+  const size_t texels = 6 * static_cast<size_t>(std::max(cover.size, 0)) * std::max(cover.size, 0);
+  if (cover.size < 1 || cover.texels.size() != texels)
     throw std::invalid_argument("orbit renderer: the cover cube needs 6 x size x size texels");
+  if ((!cover.optical_thickness.empty() || !cover.cloud_top.empty()) &&
+      (cover.optical_thickness.size() != texels || cover.cloud_top.size() != texels))
+    throw std::invalid_argument("orbit renderer: the cover's tau and cloud tops need a value per texel, or none");
 }
 
 // An equirect texture of `format` with every mip level: `upload` fills level 0, then the levels
@@ -118,14 +122,37 @@ GLuint fraction_texture(const core::ImageData& image) {
   });
 }
 
+// The texels as the orbit shader reads them: (cover, tau, cloud top km, 0). Clear texels take the
+// unorganised cloud's top (TOP_LAYER_KM), so that the filtered tops at a cloud's edge blend
+// towards a cloud's height and not towards the ground. Without the cover's own tau and tops the
+// shader derives both from the filtered coverage (cloud_properties.glsl's fallbacks): derived
+// per texel and then filtered, they would carry the texel grid into the image.
+std::vector<float> cover_channels(const CoverCube& cover) {
+  const size_t texels = cover.texels.size();
+  const bool own = !cover.optical_thickness.empty();
+  std::vector<float> rgba(4 * texels, 0.0f);
+  for (size_t k = 0; k < texels; ++k) {
+    const float c = cover.texels[k];
+    rgba[4 * k] = c;
+    if (own) {
+      rgba[4 * k + 1] = cover.optical_thickness[k];
+      rgba[4 * k + 2] = c > 0.0f ? cover.cloud_top[k] : glsl::TOP_LAYER_KM;
+    }
+  }
+  return rgba;
+}
+
 GLuint cover_texture(const CoverCube& cover) {
   GLuint id = 0;
   glCreateTextures(GL_TEXTURE_CUBE_MAP, 1, &id);
   const int levels = 1 + static_cast<int>(std::floor(std::log2(cover.size)));
-  glTextureStorage2D(id, levels, GL_R32F, cover.size, cover.size);
+  // Half floats: coverage, tau and heights in km need 3 digits, not float's 7 (half the upload
+  // and memory of RGBA32F).
+  glTextureStorage2D(id, levels, GL_RGBA16F, cover.size, cover.size);
   glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
   // Rows from t = 0 in file order: what glTexSubImage expects for a cube face (cubemaps/README.md).
-  glTextureSubImage3D(id, 0, 0, 0, 0, cover.size, cover.size, 6, GL_RED, GL_FLOAT, cover.texels.data());
+  const std::vector<float> rgba = cover_channels(cover);
+  glTextureSubImage3D(id, 0, 0, 0, 0, cover.size, cover.size, 6, GL_RGBA, GL_FLOAT, rgba.data());
   glGenerateTextureMipmap(id);
   glTextureParameteri(id, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
   glTextureParameteri(id, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
@@ -220,6 +247,7 @@ struct OrbitRenderer::Gl {
   gpu::ComputeProgram program{"render/orbit.comp"};
   GLuint day = 0, night = 0, water = 0, cover = 0, detail = 0;
   int day_width = 1, cover_size = 1;
+  bool cover_properties = false;  // the cover has its own tau and cloud tops
   ~Gl() {
     for (GLuint id : {day, night, water, cover, detail})
       if (id != 0) glDeleteTextures(1, &id);
@@ -247,6 +275,7 @@ OrbitRenderer::OrbitRenderer(const PlanetImages& planet, const CoverCube& cover,
   gl_->water = fraction_texture(water);
   gl_->cover = cover_texture(cover);
   gl_->cover_size = cover.size;
+  gl_->cover_properties = !cover.optical_thickness.empty();
   gl_->detail = detail_texture();
 }
 
@@ -263,6 +292,7 @@ void OrbitRenderer::set_cover(const CoverCube& cover) {
   glDeleteTextures(1, &gl_->cover);
   gl_->cover = texture;
   gl_->cover_size = cover.size;
+  gl_->cover_properties = !cover.optical_thickness.empty();
 }
 
 double OrbitRenderer::render_into(const OrbitCamera& camera, double unix_seconds, unsigned rgba32f_texture) const {
@@ -288,7 +318,6 @@ double OrbitRenderer::render_into(const OrbitCamera& camera, double unix_seconds
     p.set("u_radius", static_cast<float>(R));
     p.set("u_cloud_base", static_cast<float>(s.cloud_base_m));
     p.set("u_cloud_top", static_cast<float>(s.cloud_base_m + s.cloud_thickness_m));
-    p.set("u_extinction", static_cast<float>(s.cloud_extinction));
     p.set("u_forward", glm::vec3(frame.forward));
     p.set("u_right", glm::vec3(frame.right));
     p.set("u_up", glm::vec3(frame.up));
@@ -300,6 +329,9 @@ double OrbitRenderer::render_into(const OrbitCamera& camera, double unix_seconds
     p.set("u_sea_wind", static_cast<float>(s.sea_wind_ms));
     p.set("u_cover_texel", static_cast<float>(R * (M_PI / 2) / gl_->cover_size));
     p.set("u_cover_size", static_cast<float>(gl_->cover_size));
+    p.set("u_cover_properties", gl_->cover_properties ? 1 : 0);
+    p.set("u_tau_median", params::cover::tau_median.default_float());
+    p.set("u_tau_spread", params::cover::tau_spread.default_float());
     p.set("u_day_texel", static_cast<float>(2 * M_PI * R / gl_->day_width));
     p.set("u_cloud_steps", s.cloud_steps);
     p.set("u_shadow_steps", s.shadow_steps);

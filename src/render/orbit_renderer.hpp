@@ -39,10 +39,11 @@ bool cloud_shell_fits(double base_m, double thickness_m);
 
 struct OrbitSettings {
   double planet_radius_m = 6371000;  // mean Earth radius (IUGG)
-  double cloud_base_m = 2000;        // altitude of the cloud shell's bottom
-  double cloud_thickness_m = 8000;   // the shell's thickness
-  double cloud_extinction = 0.02;    // 1/m at density 1 (optical depth 20 per km)
-  double night_lights = 0.08;        // radiance (W m^-2 sr^-1 nm^-1) of a city-light texel of value 1
+  // The shell the clouds may lie in (their slabs come from the cover's tau and cloud_top,
+  // clipped to it): from the lowest bases to the tropical tropopause.
+  double cloud_base_m = 300;
+  double cloud_thickness_m = 15700;
+  double night_lights = 0.08;  // radiance (W m^-2 sr^-1 nm^-1) of a city-light texel of value 1
   // Wind over the sea (m/s) for the glint's facet slopes: 7 m/s, about the global ocean mean of
   // the 10 m wind (scatterometer climatologies: 7 to 7.5 m/s; docs/orbit_view.md).
   double sea_wind_ms = 7.0;
@@ -61,10 +62,13 @@ struct PlanetImages {
 };
 
 // The global cover as a cube map: faces +X, -X, +Y, -Y, +Z, -Z, size x size floats each, rows
-// from t = 0 (io::read_cover_faces, or cover::GlobalCover::cover_field().read() of R32F).
+// from t = 0 (io::read_cover_faces, or cover::GlobalCover's fields read back): the coverage, and
+// where known the optical thickness and the cloud-top height (km; empty: derived from the
+// coverage by cloud_properties.glsl's fallbacks).
 struct CoverCube {
   int size = 0;
   std::vector<float> texels;
+  std::vector<float> optical_thickness, cloud_top;
 };
 
 // Camera frame in Earth-centred, Earth-fixed axes (+Z north, +X latitude 0 longitude 0), double.

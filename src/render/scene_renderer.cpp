@@ -35,7 +35,8 @@ regional::LayerRules layer_rules(const regional::Scene& scene) {
 GlobalCoverFaces make_global_cover(const cover::CoverParameters& parameters) {
   cover::GlobalCover cover(parameters);
   cover.run();
-  return {parameters.size, cover.cover_field().read()};
+  return {parameters.size, cover.cover_field().read(), cover.optical_thickness_field().read(),
+          cover.cloud_top_field().read()};
 }
 
 cover::CoverParameters view_cover_parameters(int size, std::uint32_t seed, const std::string& flow,

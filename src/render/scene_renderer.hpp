@@ -48,6 +48,7 @@ Camera scene_camera(const regional::Scene& scene);
 struct GlobalCoverFaces {
   int size = 0;
   std::vector<float> texels;
+  std::vector<float> optical_thickness, cloud_top;  // the cover's other fields (cloud_properties.glsl)
 };
 // Runs the cover passes with `parameters` and reads the cover back (current GL context).
 GlobalCoverFaces make_global_cover(const cover::CoverParameters& parameters);

@@ -4,8 +4,9 @@
 const int PROBE_NORMAL_QUANTILE = 0;    // normal_quantile(a)
 const int PROBE_TAU_FROM_RANK = 1;      // optical_thickness_from_rank(a, b, c), cloudy_rank(a, b) in y
 const int PROBE_TAU_FROM_COVER = 2;     // optical_thickness_from_cover(a, b, c)
-const int PROBE_CLOUD_TOP = 3;          // cloud_top_km(x[1], x[2]), tropopause_km(latitude) in y
+const int PROBE_CLOUD_TOP = 3;          // cloud_top_km(x[1], x[2]), tropopause_km(latitude) in y, cloud_thickness_km(a, b) in z
 const int PROBE_CLOUD_TOP_FROM_COVER = 4;  // cloud_top_from_cover(a, latitude)
+const int PROBE_COVERED_DEPTH = 5;         // covered_optical_depth(a, b)
 #ifndef __cplusplus
 #include "../lib/cloud_properties.glsl"
 #endif
@@ -22,7 +23,8 @@ vec4 probe_cloud_properties(mat4 x) {
     types.deep_convection = x[1].y;
     types.cumulus = x[1].z;
     types.cirrus = x[1].w;
-    return vec4(cloud_top_km(types, latitude, x[2].y, x[2].z), tropopause_km(latitude), 0.0f, 0.0f);
+    return vec4(cloud_top_km(types, latitude, x[2].y, x[2].z), tropopause_km(latitude), cloud_thickness_km(a, b), 0.0f);
   }
+  if (f == PROBE_COVERED_DEPTH) return vec4(covered_optical_depth(a, b), 0.0f, 0.0f, 0.0f);
   return vec4(cloud_top_from_cover(a, latitude), 0.0f, 0.0f, 0.0f);  // PROBE_CLOUD_TOP_FROM_COVER
 }

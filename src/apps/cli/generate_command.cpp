@@ -380,7 +380,9 @@ int run_generate(const std::vector<std::string>& arguments) {
   // appears whole or not at all.
   const auto write_cover = [&](files::OutputSet& set) {
     if (!presets.empty())
-      write_cover_exports(set, presets, io::CoverFaces{parameters.size, cover.cover_field().read()});
+      write_cover_exports(set, presets,
+                          io::CoverFaces{parameters.size, cover.cover_field().read(),
+                                         cover.optical_thickness_field().read(), cover.cloud_top_field().read()});
     return io::write_cover_files(set, cover, context.info(), file_options);
   };
   const auto run_cover = [&]() -> const cover::WarpDiagnostics& {

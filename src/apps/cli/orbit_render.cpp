@@ -125,7 +125,9 @@ int run_orbit_render(const OrbitOptions& orbit) {
     timings.emplace_back("global cover", gpu::time_pass([&] {
                            cover::GlobalCover generated(parameters);
                            generated.run();
-                           cover = render::CoverCube{parameters.size, generated.cover_field().read()};
+                           cover = render::CoverCube{parameters.size, generated.cover_field().read(),
+                                                     generated.optical_thickness_field().read(),
+                                                     generated.cloud_top_field().read()};
                          }));
     cover_source = "generated (seed " + std::to_string(orbit.seed) + ", " + std::to_string(parameters.size) +
                    " texels per face, flow " + orbit.flow + ")";
@@ -176,7 +178,9 @@ int bench_orbit(const std::vector<std::string>& arguments) {
       s::cover_size.default_int(), s::seed.default_uint32(), std::string(params::cover::flow.default_text), time_text);
   cover::GlobalCover generated(parameters);
   generated.run();
-  render::OrbitRenderer renderer(textures.images, {parameters.size, generated.cover_field().read()});
+  render::OrbitRenderer renderer(
+      textures.images, {parameters.size, generated.cover_field().read(), generated.optical_thickness_field().read(),
+                        generated.cloud_top_field().read()});
   const double time = core::parse_utc_time(time_text);
   for (const auto& [width, height] : {std::pair{640, 360}, std::pair{1280, 720}}) {
     render::OrbitCamera camera;

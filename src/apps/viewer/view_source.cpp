@@ -33,7 +33,7 @@ GroundSource::GroundSource(const std::filesystem::path& cover_dir, const std::fi
     : cache_directory_(cache_directory) {
   if (!cover_dir.empty()) {
     const io::CoverFaces faces = io::read_cover_faces(cover_dir);
-    cover_ = {faces.size, faces.texels};
+    cover_ = {faces.size, faces.texels, faces.optical_thickness, faces.cloud_top};
     cover_from_files_ = true;
   }
 }
@@ -111,7 +111,8 @@ render::RenderResult OrbitSource::render(const ViewState& state, int width, int 
                               cube = io::read_cover_cube(cover_dir_);
                             } else {
                               render::GlobalCoverFaces faces = render::make_global_cover(cover_of(state));
-                              cube = {faces.size, std::move(faces.texels)};
+                              cube = {faces.size, std::move(faces.texels), std::move(faces.optical_thickness),
+                                      std::move(faces.cloud_top)};
                             }
                           }));
     if (renderer_) {
