@@ -10,6 +10,7 @@
 #   docs/images/render_bantiger.png/.json    nephele render --view bantiger (--quality final)
 #   docs/images/model_examples.png           nephele model previews of the four built-in clouds
 #   docs/images/render_orbit.png/.json       nephele render --view orbit of the default cover at the render's time
+#   docs/images/render_orbit_{36000,2000,400}.png  the same cover from 36000, 2000 and 400 km
 #   docs/images/gurten-thunderstorm.png      scenes/gurten-thunderstorm.json (convective clouds)
 #   docs/images/bantiger-fog.png             scenes/bantiger-fog.json (the sea of fog from the Bantiger)
 # With --report it also runs `nephele report` (about 35 minutes on two cores) and copies its
@@ -44,6 +45,15 @@ cp "$work/render_bantiger.png" "$work/render_bantiger.json" docs/images/
 "$nephele" render --view orbit --cover "$work/cover-orbit" --altitude-km 12000 --time 2026-06-21T17:00Z --quiet \
   --out "$work/render_orbit.png"
 cp "$work/render_orbit.png" "$work/render_orbit.json" docs/images/
+# The same cover from geostationary height (the full disk), 2000 km, and 400 km (the ISS's
+# height) looking west-north-west towards the evening sun.
+"$nephele" render --view orbit --cover "$work/cover-orbit" --altitude-km 36000 --time 2026-06-21T12:00Z --quiet \
+  --out "$work/render_orbit_36000.png"
+"$nephele" render --view orbit --cover "$work/cover-orbit" --altitude-km 2000 --time 2026-06-21T17:00Z --quiet \
+  --out "$work/render_orbit_2000.png"
+"$nephele" render --view orbit --cover "$work/cover-orbit" --altitude-km 400 --heading 290 --pitch -25 --fov 70 \
+  --time 2026-06-21T17:00Z --quiet --out "$work/render_orbit_400.png"
+for km in 36000 2000 400; do cp "$work/render_orbit_$km.png" docs/images/; done
 "$nephele" render --scene scenes/gurten-thunderstorm.json --quality final --no-cache --quiet --out "$work/storm"
 cp "$work/storm/gurten-thunderstorm.png" docs/images/gurten-thunderstorm.png
 "$nephele" render --scene scenes/bantiger-fog.json --quality final --no-cache --quiet --out "$work/fog"

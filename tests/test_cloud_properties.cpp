@@ -77,6 +77,7 @@ TEST_CASE("cloud tops follow the cloud type: decks low, fronts middle, cirrus hi
   CHECK(glsl::tropopause_km(0.0f) == Approx(16.0f));
   CHECK(glsl::tropopause_km(90.0f * deg) == Approx(9.0f).margin(1e-5));
   CHECK(top(0, 0, 0, 0, 45 * deg, 0, 0) == Approx(3.0f));                                  // unorganised layer cloud
+  CHECK(top(0, 0, 0, 0, 20 * deg, 0, 0) == Approx(2.0f));                                  // under the trade inversion
   CHECK(top(0, 0, 0, 0, 20 * deg, 0, 1) == Approx(1.5f));                                  // a stratocumulus deck
   CHECK(top(0, 0, 0, 0, 50 * deg, 0.6f, 0) == Approx(6.0f));                               // lifted in a cyclone
   CHECK(top(0, 0, 1, 0, 15 * deg, 0, 0) == Approx(2.0f));                                  // trade cumulus

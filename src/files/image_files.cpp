@@ -55,6 +55,13 @@ std::pair<std::unique_ptr<OIIO::ImageOutput>, OIIO::ImageSpec> image_writer(int 
                                                     : OIIO::TypeDesc::UINT8;
   OIIO::ImageSpec spec(width, height, channels, type);
   if (!encoding.channel_names.empty()) spec.channelnames = encoding.channel_names;
+  if (!png && !encoding.half_channels.empty()) {
+    // Channels of their own precision: the file's format per channel, half where asked.
+    if (static_cast<int>(encoding.half_channels.size()) != channels)
+      throw std::invalid_argument(what + ": a half_channels flag per channel");
+    for (int c = 0; c < channels; ++c)
+      spec.channelformats.push_back(encoding.half_channels[static_cast<size_t>(c)] ? OIIO::TypeDesc::HALF : type);
+  }
   if (!png) spec.attribute("compression", encoding.compression);
   if (png) spec.attribute("png:compressionLevel", encoding.png_compression_level);
   if (png && encoding.png_filters != 0) spec.attribute("png:filter", encoding.png_filters);

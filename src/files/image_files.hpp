@@ -20,8 +20,10 @@ enum class ImageFormat { png, exr };
 // zip-compressed unless another of OpenEXR's compressions is named.
 struct ImageEncoding {
   ImageFormat format = ImageFormat::png;
-  int bits = 8;                                                 // png: 8 or 16; exr: 32 (float) or 16 (half)
-  std::vector<std::string> channel_names;                       // empty: OpenImageIO's defaults (Y, RGB, RGBA ...)
+  int bits = 8;                            // png: 8 or 16; exr: 32 (float) or 16 (half)
+  std::vector<std::string> channel_names;  // empty: OpenImageIO's defaults (Y, RGB, RGBA ...)
+  // exr: per channel, true stores it as 16-bit half whatever `bits` says (empty: all as `bits`).
+  std::vector<bool> half_channels;
   std::string compression = "zip";                              // exr: none, rle, zips, zip, piz, pxr24, b44, dwaa
   std::vector<std::pair<std::string, std::string>> attributes;  // extra string metadata (OpenImageIO names)
   // With 4 channels: the colour is not premultiplied by alpha (white clouds with coverage in

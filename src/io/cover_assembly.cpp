@@ -155,7 +155,7 @@ AssembledCover write_assembled_cover(files::OutputSet& outputs, const std::vecto
 
   // Each tile's cover as it comes: rows of a face EXR, and where asked for the whole cover (the
   // equirect EXR) or the preview's reduced cube.
-  const files::ImageEncoding exr = files::exr_encoding(cover_channels, options.half ? 16 : 32, options.compression);
+  const files::ImageEncoding exr = cover_exr_encoding(options);
   const int channels = static_cast<int>(cover_channels.size());
   std::unique_ptr<files::ImageRowWriter> face_writer;
   std::shared_ptr<CoverPlanes> whole;

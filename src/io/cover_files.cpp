@@ -262,9 +262,15 @@ std::vector<float> interleaved_channels(const CoverPlanes& planes, std::size_t f
   return out;
 }
 
+files::ImageEncoding cover_exr_encoding(const CoverFileOptions& options) {
+  files::ImageEncoding exr = files::exr_encoding(cover_channels, options.half ? 16 : 32, options.compression);
+  exr.half_channels = {options.half, true, true};
+  return exr;
+}
+
 void write_cover_images(files::OutputSet& outputs, const CoverImages& images, const CoverFileOptions& options,
                         CoverExport& result) {
-  const files::ImageEncoding exr = files::exr_encoding(cover_channels, options.half ? 16 : 32, options.compression);
+  const files::ImageEncoding exr = cover_exr_encoding(options);
   // Each image is encoded in memory on its own thread; the files are written afterwards in
   // order, through the output set (which is not shared between threads).
   struct Job {

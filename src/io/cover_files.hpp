@@ -13,6 +13,7 @@
 #include "core/image.hpp"
 #include "core/json.hpp"
 #include "files/atomic_output.hpp"
+#include "files/image_files.hpp"
 
 namespace nephele::io {
 
@@ -78,6 +79,10 @@ core::ImageData preview_image(int size, const std::vector<float>& texels);
 // optical thickness and the cloud-top height in km above sea level, 0 where clear
 // (docs/formats.md; shaders/lib/cloud_properties.glsl).
 inline const std::vector<std::string> cover_channels = {"Y", "tau", "cloud_top"};
+// The EXR encoding of the cover's files: Y as --precision says (float by default: covers just
+// above the threshold can be below half's smallest value), tau and cloud_top as half (3 digits
+// are more than either is known to; half the bytes to encode and store).
+files::ImageEncoding cover_exr_encoding(const CoverFileOptions& options);
 
 using cover::CoverPlanes;
 // The planes' values interleaved as the EXR files' channels (cover_channels), from value `first`
