@@ -560,14 +560,19 @@ TEST_CASE("orbit: a 64-texel cover shows no more of its texel grid than a 1024-t
   // Straight down on the centre of face +X at 2000 km, where a 64 cover's texel (156 km) spans
   // about 12 of the frame's pixels and the face's grid runs along the image axes; the sun near
   // overhead. The 64 cover is the 1024 one's area means, as generate's smaller sizes are.
+  // Also at 400 km (the issue's height; the 64 cover's texel spans 60 pixels there, the detail
+  // noise is resolved): the B-spline keeps the grid out all the same.
   const render::CoverCube fine = wave_cover(1024);
   const render::CoverCube coarse{64, io::reduced_faces(1024, fine.texels, 64)};
-  const auto camera = nadir_camera(0, 0, 2.0e6, 192, 108, 60);
   const double equinox_noon = core::parse_utc_time("2026-03-20T12:00Z");
   const auto planet = uniform_planet(0.06);
-  const double share_fine = axis_aligned_edge_share(render::render_orbit(camera, equinox_noon, planet, fine));
-  const double share_coarse = axis_aligned_edge_share(render::render_orbit(camera, equinox_noon, planet, coarse));
-  INFO("axis-aligned share of strong edges: 1024 cover " << share_fine << ", 64 cover " << share_coarse);
-  // Within 5 points: the grid of a bilinear lookup puts a third of the strong edges on the axes.
-  CHECK(share_coarse <= share_fine + 0.05);
+  for (double altitude : {2.0e6, 4.0e5}) {
+    const auto camera = nadir_camera(0, 0, altitude, 192, 108, 60);
+    const double share_fine = axis_aligned_edge_share(render::render_orbit(camera, equinox_noon, planet, fine));
+    const double share_coarse = axis_aligned_edge_share(render::render_orbit(camera, equinox_noon, planet, coarse));
+    INFO(altitude / 1000 << " km: axis-aligned share of strong edges: 1024 cover " << share_fine << ", 64 cover "
+                         << share_coarse);
+    // Within 5 points: the grid of a bilinear lookup puts a third of the strong edges on the axes.
+    CHECK(share_coarse <= share_fine + 0.05);
+  }
 }
