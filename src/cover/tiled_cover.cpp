@@ -5,6 +5,18 @@
 
 namespace nephele::cover {
 
+namespace {
+
+// A tile's values (its densities or cloud tops) must be one per owned texel.
+void check_tile_values(int index, const std::vector<float>& values, const CubeRegion& owned, const char* what) {
+  if (values.size() != static_cast<std::size_t>(owned.owned_texels()))
+    throw std::invalid_argument("TiledCoverage: tile " + std::to_string(index) + " has " +
+                                std::to_string(values.size()) + " " + what + ", not " +
+                                std::to_string(owned.owned_texels()));
+}
+
+}  // namespace
+
 CubeRegion owned_region(const CubeRegion& tile) {
   CubeRegion region = tile;
   region.first_row = tile.first_row + tile.owned_begin;
@@ -46,10 +58,7 @@ TiledCoverage::TiledCoverage(const CoverParameters& parameters, const CubeTiling
 
 const gpu::Texture& TiledCoverage::upload(int index, const std::vector<float>& density) {
   const CubeRegion region = owned_region(tiling_.tile(index));
-  if (density.size() != static_cast<std::size_t>(region.owned_texels()))
-    throw std::invalid_argument("TiledCoverage: tile " + std::to_string(index) + " has " +
-                                std::to_string(density.size()) + " densities, not " +
-                                std::to_string(region.owned_texels()));
+  check_tile_values(index, density, region, "densities");
   if (density_.height() != region.rows) {
     density_ = gpu::Texture::layered(region.face_size, region.rows, 1, GL_R32F);
     cover_ = gpu::Texture::layered(region.face_size, region.rows, 1, GL_R32F);
@@ -76,12 +85,11 @@ const CoverageCalibration& TiledCoverage::remap(const LoadTileDensity& load, con
   coverage_.begin_remap();
   for (int index = 0; index < tiling_.count; ++index) {
     const gpu::Texture& density = upload(index, load(index));
+    const CubeRegion region = owned_region(tiling_.tile(index));
     const std::vector<float> tops = load_cloud_top(index);
-    if (tops.size() != static_cast<std::size_t>(owned_region(tiling_.tile(index)).owned_texels()))
-      throw std::invalid_argument("TiledCoverage: tile " + std::to_string(index) + " has " +
-                                  std::to_string(tops.size()) + " cloud tops");
+    check_tile_values(index, tops, region, "cloud tops");
     cloud_top_.write(tops);
-    coverage_.remap(density, {cover_, optical_thickness_, cloud_top_}, owned_region(tiling_.tile(index)));
+    coverage_.remap(density, {cover_, optical_thickness_, cloud_top_}, region);
     take(index, CoverPlanes{cover_.read(), optical_thickness_.read(), cloud_top_.read()});
   }
   return coverage_.finish_remap();

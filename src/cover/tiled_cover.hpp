@@ -49,6 +49,12 @@ using LoadTileDensity = std::function<std::vector<float>(int index)>;
 // for a tile's owned rows (as TileDensity::density), or whole maps.
 struct CoverPlanes {
   std::vector<float> cover, optical_thickness, cloud_top;
+  // The planes in the order of the files' channels (io::cover_channels: Y, tau, cloud_top).
+  static constexpr int count = 3;
+  std::vector<float>& operator[](int channel) {
+    return channel == 0 ? cover : channel == 1 ? optical_thickness : cloud_top;
+  }
+  const std::vector<float>& operator[](int channel) const { return const_cast<CoverPlanes&>(*this)[channel]; }
 };
 
 class TiledCoverage {

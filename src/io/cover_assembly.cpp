@@ -164,8 +164,7 @@ AssembledCover write_assembled_cover(files::OutputSet& outputs, const std::vecto
   const bool streamed = options.equirect && !equirect_from_whole_cover(size, count, options, budget);
   if (options.equirect && !streamed) {
     whole = std::make_shared<CoverPlanes>();
-    for (std::vector<float>* plane : {&whole->cover, &whole->optical_thickness, &whole->cloud_top})
-      plane->resize(6 * static_cast<size_t>(size) * size);
+    for (int c = 0; c < CoverPlanes::count; ++c) (*whole)[c].resize(6 * static_cast<size_t>(size) * size);
   }
   // Streamed: the fields' faces in scratch files, channel by channel (6 files a channel).
   std::vector<std::unique_ptr<files::ScratchFloats>> scratch_faces;
@@ -188,11 +187,9 @@ AssembledCover write_assembled_cover(files::OutputSet& outputs, const std::vecto
     const cover::CubeRegion region = cover::owned_region(tiling.tile(index));
     say("tile " + std::to_string(index + 1) + " of " + std::to_string(count));
     const std::vector<float>& cover = planes.cover;
-    if (streamed) {
-      const std::vector<float>* sources[3] = {&planes.cover, &planes.optical_thickness, &planes.cloud_top};
+    if (streamed)
       for (int c = 0; c < channels; ++c)
-        scratch_faces[static_cast<size_t>(c * 6 + region.face)]->append(sources[c]->data(), sources[c]->size());
-    }
+        scratch_faces[static_cast<size_t>(c * 6 + region.face)]->append(planes[c].data(), planes[c].size());
     if (options.faces) {
       const auto face_start = Clock::now();
       const std::string name = std::string("cover_") + face_suffixes[region.face] + ".exr";
@@ -206,13 +203,9 @@ AssembledCover write_assembled_cover(files::OutputSet& outputs, const std::vecto
       face_ms += milliseconds_since(face_start);
     }
     const size_t offset = (static_cast<size_t>(region.face) * size + region.first_row) * size;
-    if (whole) {
-      std::copy(cover.begin(), cover.end(), whole->cover.begin() + static_cast<std::ptrdiff_t>(offset));
-      std::copy(planes.optical_thickness.begin(), planes.optical_thickness.end(),
-                whole->optical_thickness.begin() + static_cast<std::ptrdiff_t>(offset));
-      std::copy(planes.cloud_top.begin(), planes.cloud_top.end(),
-                whole->cloud_top.begin() + static_cast<std::ptrdiff_t>(offset));
-    }
+    if (whole)
+      for (int c = 0; c < channels; ++c)
+        std::copy(planes[c].begin(), planes[c].end(), (*whole)[c].begin() + static_cast<std::ptrdiff_t>(offset));
     if (reduce_preview)
       for (int r = 0; r < region.rows; ++r) {
         const int rj = static_cast<int>(static_cast<long>(region.first_row + r) * preview_face / size);
@@ -253,9 +246,7 @@ AssembledCover write_assembled_cover(files::OutputSet& outputs, const std::vecto
     say("equirect");
     const int width = 4 * size, height = 2 * size;
     CoverPlanes map;
-    map.cover = cover::equirect_from_faces(size, whole->cover, width, height);
-    map.optical_thickness = cover::equirect_from_faces(size, whole->optical_thickness, width, height);
-    map.cloud_top = cover::equirect_from_faces(size, whole->cloud_top, width, height);
+    for (int c = 0; c < channels; ++c) map[c] = cover::equirect_from_faces(size, (*whole)[c], width, height);
     images.equirect = std::make_shared<core::ImageData>(
         core::ImageData{width, height, channels, interleaved_channels(map, 0, static_cast<size_t>(width) * height)});
     if (options.preview)

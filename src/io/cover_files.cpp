@@ -252,12 +252,12 @@ double milliseconds_since(Clock::time_point start) {
 }  // namespace
 
 std::vector<float> interleaved_channels(const CoverPlanes& planes, std::size_t first, std::size_t count) {
-  const std::vector<float>* sources[3] = {&planes.cover, &planes.optical_thickness, &planes.cloud_top};
-  std::vector<float> out(3 * count);
-  for (int c = 0; c < 3; ++c) {
-    if (sources[c]->size() < first + count) throw std::invalid_argument("interleaved_channels: a plane is too short");
-    const float* in = sources[c]->data() + first;
-    for (std::size_t k = 0; k < count; ++k) out[3 * k + c] = in[k];
+  constexpr int n = CoverPlanes::count;
+  std::vector<float> out(n * count);
+  for (int c = 0; c < n; ++c) {
+    if (planes[c].size() < first + count) throw std::invalid_argument("interleaved_channels: a plane is too short");
+    const float* in = planes[c].data() + first;
+    for (std::size_t k = 0; k < count; ++k) out[n * k + c] = in[k];
   }
   return out;
 }

@@ -32,8 +32,8 @@ std::string cover_key(const cover::CoverParameters& p) {
 GroundSource::GroundSource(const std::filesystem::path& cover_dir, const std::filesystem::path& cache_directory)
     : cache_directory_(cache_directory) {
   if (!cover_dir.empty()) {
-    const io::CoverFaces faces = io::read_cover_faces(cover_dir);
-    cover_ = {faces.size, faces.texels, faces.optical_thickness, faces.cloud_top};
+    io::CoverFaces faces = io::read_cover_faces(cover_dir);
+    cover_ = {faces.size, std::move(faces.texels), std::move(faces.optical_thickness), std::move(faces.cloud_top)};
     cover_from_files_ = true;
   }
 }
