@@ -5,9 +5,10 @@
 #                                                   `build/nephele generate` (into cubemaps/)
 #   scripts/quickstart.sh test                      set up, build, then run the test suite
 #
-# Set-up installs the packages of scripts/debian-packages.txt that are missing and builds
-# in build/ (CMake, Release). Safe to run again: installed packages and an up-to-date build
-# are left alone. With CI=true nothing asks questions (sudo fails instead of prompting).
+# Set-up installs the packages of scripts/debian-packages.txt that are missing and the geodata
+# of scripts/install-data.sh, and builds in build/ (CMake, Release). Safe to run again:
+# installed packages and data and an up-to-date build are left alone. With CI=true nothing
+# asks questions (sudo fails instead of prompting).
 set -euo pipefail
 
 # Everything below uses paths relative to the repository root, whatever the caller's
@@ -16,7 +17,7 @@ repo_root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$repo_root"
 
 usage() {
-  sed -n '2,10s/^# \{0,1\}//p' scripts/quickstart.sh
+  sed -n '2,11s/^# \{0,1\}//p' scripts/quickstart.sh
 }
 
 say() {
@@ -104,6 +105,8 @@ case "${1:-}" in
 esac
 
 install_missing_packages
+# shellcheck source=scripts/install-data.sh
+source scripts/install-data.sh
 if [[ "$mode" == "test" ]]; then build; else build nephele; fi
 
 if [[ "$mode" == "test" ]]; then

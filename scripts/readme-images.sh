@@ -58,6 +58,14 @@ for km in 36000 2000 400; do cp "$work/render_orbit_$km.png" docs/images/; done
 cp "$work/storm/gurten-thunderstorm.png" docs/images/gurten-thunderstorm.png
 "$nephele" render --scene scenes/bantiger-fog.json --quality final --no-cache --quiet --out "$work/fog"
 cp "$work/fog/bantiger-fog.png" docs/images/bantiger-fog.png
+# docs/terrain.md: the ground alone towards the Alps, and above it the same without land cover
+# and fractal detail (the ETOPO5 surface as before them).
+"$nephele" render --scene scenes/gurten-alps-clear.json --quality final --no-cache --quiet --out "$work/alps"
+cp "$work/alps/gurten-alps-clear.png" docs/images/terrain_gurten_alps.png
+"$nephele" render --scene scenes/gurten-alps-clear.json --land-cover none --terrain-detail 0 --quality final \
+  --no-cache --quiet --out "$work/alps-plain"
+oiiotool "$work/alps-plain/gurten-alps-clear.png" "$work/alps/gurten-alps-clear.png" --mosaic 1x2 \
+  -o docs/images/terrain_side_by_side.png
 examples=(fair-weather towering cumulonimbus stratocumulus)
 for example in "${examples[@]}"; do
   "$nephele" model --example "$example" --preview 256x256 --quiet --out "$work/model-$example"

@@ -150,7 +150,7 @@ TEST_CASE("the marcher on the GPU agrees with its C++ twin pixel by pixel", "[re
         float ground_distance = 0;
         const glm::vec4 cpu = glsl::render_pixel(glm::ivec2(x, y), glm::ivec2(cam.width, cam.height), params, loops,
                                                  ground_distance, sources.noise, sources.weather, sources.terrain,
-                                                 sources.convective, sources.shadows, sources.sky_shadow);
+                                                 sources.land, sources.convective, sources.shadows, sources.sky_shadow);
         if (glsl::loop_limited(loops)) ++limited;
         const float* g = &gpu.radiance.pixels[(static_cast<size_t>(y) * cam.width + x) * 4];
         if (cpu.w > 0.5f) ++cloudy;
@@ -325,12 +325,12 @@ TEST_CASE("the air below an overcast layer scatters no direct sunlight: a pixel 
     const glm::ivec2 pixel(2 * k + 1, k);
     int n = 0;
     float ground_distance = 0;
-    const glm::vec4 with =
-        glsl::render_pixel(pixel, glm::ivec2(down.width, down.height), params, n, ground_distance, sources.noise,
-                           sources.weather, sources.terrain, sources.convective, sources.shadows, sources.sky_shadow);
-    const glm::vec4 without =
-        glsl::render_pixel(pixel, glm::ivec2(down.width, down.height), unshaded, n, ground_distance, sources.noise,
-                           sources.weather, sources.terrain, sources.convective, sources.shadows, sources.sky_shadow);
+    const glm::vec4 with = glsl::render_pixel(pixel, glm::ivec2(down.width, down.height), params, n, ground_distance,
+                                              sources.noise, sources.weather, sources.terrain, sources.land,
+                                              sources.convective, sources.shadows, sources.sky_shadow);
+    const glm::vec4 without = glsl::render_pixel(pixel, glm::ivec2(down.width, down.height), unshaded, n,
+                                                 ground_distance, sources.noise, sources.weather, sources.terrain,
+                                                 sources.land, sources.convective, sources.shadows, sources.sky_shadow);
     // The ray's clear-sky in-scattering to the ground (no cloud on it: opacity 0).
     const glm::vec3 d = glsl::view_direction(pixel, glm::ivec2(down.width, down.height), params);
     const glm::vec2 ground = glsl::ray_sphere(glm::vec3(0.0f), d, centre, params.earth_radius);

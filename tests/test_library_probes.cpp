@@ -38,6 +38,7 @@ namespace nephele::glsl {
 #include "probes/equirect_mapping.glsl"
 #include "probes/hash.glsl"
 #include "probes/implicit_field.glsl"
+#include "probes/land_cover.glsl"
 #include "probes/latitude_bands.glsl"
 #include "probes/model_march.glsl"
 #include "probes/noise_rows.glsl"
@@ -1071,8 +1072,8 @@ TEST_CASE("cloud_march.glsl on the GPU agrees with the CPU", "[probe][march]") {
   sources.shadows = {size, 1, shadow.data()};
   sources.sky_shadow = sources.shadows;
   auto cpu = [&](const mat4& x) {
-    return probe_cloud_march(x, sources.noise, sources.weather, sources.terrain, sources.convective, sources.shadows,
-                             sources.sky_shadow);
+    return probe_cloud_march(x, sources.noise, sources.weather, sources.terrain, sources.land, sources.convective,
+                             sources.shadows, sources.sky_shadow);
   };
 
   // Altitudes are rounded at the scale of the Earth's radius (march_tolerance.hpp): the height
@@ -1493,8 +1494,6 @@ TEST_CASE("terrain.glsl on the GPU agrees with the CPU", "[probe][terrain]") {
     if (enabled == 1)
       CHECK(cpu(arguments(PROBE_TERRAIN_SUNLIT, vec4(0, 0, 1, 0), on_ground, sun)).x ==
             (sun_elevation > 0 ? 1.0f : 0.0f));
-    const vec4 n = normalize(vec4(r(-0.5f, 0.5f), r(-0.5f, 0.5f), 1.0f, 0.0f));
-    cases.push_back({arguments(PROBE_TERRAIN_ALBEDO, vec4(r(0.0f, 4000.0f), 0, 0, 0), vec4(0), n), kArithmetic});
   }
   // At a texel's centre the ceiling is the highest of the 7 x 7 texels around it (window 3,
   // cut at the edges), by brute force here; bilinear weights there are 1 and 0.
@@ -1509,5 +1508,62 @@ TEST_CASE("terrain.glsl on the GPU agrees with the CPU", "[probe][terrain]") {
             Approx(highest).epsilon(0).margin(altitude));
     }
   compare("terrain", cpu, cases);
+  glDeleteTextures(1, &texture);
+}
+
+TEST_CASE("land_cover.glsl on the GPU agrees with the CPU", "[probe][terrain]") {
+  test::test_context();
+  // Two levels of 8 x 8 texels: water distances from -300 to 300 m, built-up fractions 0 to 1.
+  const int size = 8, levels = 2;
+  std::vector<float> water, urban, texels;
+  for (int l = 0; l < levels; ++l)
+    for (int j = 0; j < size; ++j)
+      for (int i = 0; i < size; ++i) {
+        water.push_back(300.0f * std::sin(0.8f * i + 0.3f * l) * std::cos(0.6f * j));
+        urban.push_back(0.5f + 0.5f * std::sin(0.5f * i * j + l));
+        texels.insert(texels.end(), {water.back(), urban.back()});
+      }
+  GLuint texture = 0;
+  glCreateTextures(GL_TEXTURE_2D_ARRAY, 1, &texture);
+  glTextureStorage3D(texture, 1, GL_RG32F, size, size, levels);
+  glTextureSubImage3D(texture, 0, 0, 0, 0, size, size, levels, GL_RG, GL_FLOAT, texels.data());
+  filter_linear_clamped(texture);
+  glBindTextureUnit(8, texture);
+  const LandCoverSource source{{size, levels, water.data()}, {size, levels, urban.data()}};
+  auto cpu = [&](const mat4& x) { return probe_land_cover(x, source); };
+
+  // Distances interpolated with texture coordinates within kArithmetic of each other: 8 texels,
+  // neighbours at most 300 m apart; the coverage divides them by the edge (at least 1 m).
+  const float distance = 2 * 8 * 300.0f * kArithmetic;
+  // The noise's lattice coordinates (below 40 at these scales) and its fades: kArithmetic
+  // relative; the forest's and snow's smoothsteps are at most 1.5 / (2 x 0.02) and 1 / 300 m
+  // steep in the noise; patterns compare exact hashes of cells (points away from cell edges).
+  const float noise = 64 * kArithmetic;
+  Random r(37);
+  std::vector<Case> cases;
+  for (int k = 0; k < 32; ++k) {
+    const vec4 xy(r(-9000.0f, 9000.0f), r(-9000.0f, 9000.0f), 0, 0);  // both levels and beyond
+    const float footprint = k % 4 == 0 ? r(50.0f, 400.0f) : r(0.1f, 8.0f);
+    cases.push_back({arguments(PROBE_LAND_SAMPLE, vec4(footprint, 0, 0, 0), xy), distance / 1.0f + distance});
+    // Points at a cell's centre (fields 180 x 108 m at 23 degrees, blocks of 40 m), so that
+    // floor() sees the same cell on both sides.
+    const float row = std::floor(r(-50.0f, 50.0f)) + 0.5f, column = std::floor(r(-50.0f, 50.0f)) + 0.5f;
+    const float px = column * 180.0f, py = row * 108.0f;  // the parcels' rotated frame (offsets aside)
+    const vec4 field(0.921f * px + 0.391f * py, -0.391f * px + 0.921f * py, 0, 0);
+    cases.push_back({arguments(PROBE_LAND_PATTERNS, vec4(footprint, r(0.0f, 2.0f), 0, 0), field), kArithmetic});
+    const vec4 block((std::floor(r(-200.0f, 200.0f)) + 0.6f) * 40.0f, (std::floor(r(-200.0f, 200.0f)) + 0.6f) * 40.0f,
+                     0, 0);
+    // (The ground's texture at points up to 8 km out: lattice coordinates up to 3200 at 2.5 m.)
+    cases.push_back({arguments(PROBE_LAND_URBAN, vec4(footprint, 0, 0, 0), block), noise});
+    const float altitude = r(400.0f, 3500.0f), slope = r(0.0f, 0.3f);
+    cases.push_back({arguments(PROBE_LAND_NATURE, vec4(footprint, altitude, slope, 0), xy, vec4(0),
+                               vec4(r(1000.0f, 3000.0f), r(100.0f, 2000.0f), 0, 0)),
+                     noise * 40.0f});
+    // The whole surface, with footprints over the patterns' periods (their means: no cell edges).
+    const vec4 normal = normalize(vec4(r(-0.4f, 0.4f), r(-0.4f, 0.4f), 1.0f, 0.0f));
+    cases.push_back({arguments(PROBE_GROUND_SURFACE, vec4(r(100.0f, 400.0f), altitude, 0, 0), xy, normal),
+                     noise * 40.0f + distance});
+  }
+  compare("land_cover", cpu, cases);
   glDeleteTextures(1, &texture);
 }

@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <random>
 
 #include "core/error.hpp"
 #include "gl_support.hpp"
@@ -102,6 +103,50 @@ double steepest_slope(const regional::ElevationRaster& r, double south, double n
 double horizon_tolerance_deg(const regional::TerrainGrid& g, double distance_m, double step_m) {
   static const double L = steepest_slope(raster(), 46.0, 47.6, 6.5, 8.5);
   return (L * std::sqrt(2.0) * g.texel_m() + L * step_m / 2 + test::kPosition) / distance_m * 180 / M_PI;
+}
+
+// A clear sky from Gurten rendered with and without the ground: no layer is marched, so the
+// pixels differ only where the ground shows.
+struct ClearView {
+  render::Camera camera;
+  render::RenderResult with, bare;
+  glsl::MarchParams m;
+  glm::vec3 direction(int column, int row) const {
+    return glsl::view_direction(glm::ivec2(column, row), glm::ivec2(camera.width, camera.height), m);
+  }
+  double elevation_deg(int column, int row) const { return std::asin(direction(column, row).z) * 180 / M_PI; }
+  // The first row from the top whose pixel shows the ground in a column; -1 where none does.
+  int first_ground_row(int column) const {
+    for (int row = 0; row < camera.height; ++row) {
+      const size_t k = (size_t(row) * camera.width + column) * 4;
+      if (std::abs(with.radiance.pixels[k] - bare.radiance.pixels[k]) > 1e-6f * std::abs(bare.radiance.pixels[k]))
+        return row;
+    }
+    return -1;
+  }
+};
+
+ClearView clear_view_from_gurten(const std::shared_ptr<const regional::TerrainGrid>& grid, double heading, double pitch,
+                                 double fov, int width, int height) {
+  regional::WeatherField field{4, 160000.0, std::vector<float>(regional::coverage_channels * 16, 0.0f)};
+  render::RenderSettings settings;
+  settings.sky_steps = 4;
+  ClearView view;
+  view.camera.latitude_deg = gurten_lat;
+  view.camera.longitude_deg = gurten_lon;
+  view.camera.height_m = eye_height;
+  view.camera.heading_deg = heading;
+  view.camera.pitch_deg = pitch;
+  view.camera.fov_deg = fov;
+  view.camera.width = width;
+  view.camera.height = height;
+  const double time = 1782036000;  // 2026-06-21 10:00 UTC
+  settings.terrain = grid;
+  view.with = render::render_clouds(view.camera, {}, field, time, settings);
+  settings.terrain = nullptr;
+  view.bare = render::render_clouds(view.camera, {}, field, time, settings);
+  view.m = render::march_params(view.camera, {}, field, time, settings);
+  return view;
 }
 
 }  // namespace
@@ -206,28 +251,12 @@ TEST_CASE("rendered from Gurten, the ground meets the sky where the elevation da
   if (!have_etopo5()) FAIL("ferret-datasets is not installed (scripts/debian-packages.txt)");
   test::test_context();
   const auto grid = io::load_terrain("etopo5", gurten_lat, gurten_lon, eye_height);
-  // A clear sky: no layer is marched, so the pixels differ only where the ground does.
-  regional::WeatherField field{4, 160000.0, std::vector<float>(regional::coverage_channels * 16, 0.0f)};
-  render::RenderSettings settings;
-  settings.sky_steps = 4;
   for (const auto& [name, lat, lon] : {std::tuple<const char*, double, double>{"Eiger", eiger_lat, eiger_lon},
                                        {"Chasseral (Jura)", chasseral_lat, chasseral_lon}}) {
-    // A narrow column of pixels about the bare sphere's horizon and the reference's.
-    render::Camera camera;
-    camera.latitude_deg = gurten_lat;
-    camera.longitude_deg = gurten_lon;
-    camera.height_m = eye_height;
-    camera.heading_deg = azimuth_deg(lat, lon);
-    camera.pitch_deg = 0.5;
-    camera.fov_deg = 1.5;
-    camera.width = 8;
-    camera.height = 48;              // 0.19 degrees a pixel, 9 degrees tall
-    const double time = 1782036000;  // 2026-06-21 10:00 UTC
-    settings.terrain = grid;
-    const render::RenderResult with = render::render_clouds(camera, {}, field, time, settings);
-    settings.terrain = nullptr;
-    const render::RenderResult bare = render::render_clouds(camera, {}, field, time, settings);
-    const glsl::MarchParams m = render::march_params(camera, {}, field, time, settings);
+    // A narrow column of pixels about the bare sphere's horizon and the reference's: 0.19
+    // degrees a pixel, 9 degrees tall.
+    const ClearView view = clear_view_from_gurten(grid, azimuth_deg(lat, lon), 0.5, 1.5, 8, 48);
+    const render::Camera& camera = view.camera;
     double distance = 0;
     const double reference =
         regional::horizon_elevation_deg(gurten_lat, gurten_lon, eye_height, camera.heading_deg, raster(),
@@ -237,17 +266,9 @@ TEST_CASE("rendered from Gurten, the ground meets the sky where the elevation da
     // above it does not, so the horizon lies between their elevations (within the height
     // field's tolerance).
     const int column = camera.width / 2;
-    int first = -1;
-    for (int row = 0; row < camera.height && first < 0; ++row) {
-      const size_t k = (size_t(row) * camera.width + column) * 4;
-      if (std::abs(with.radiance.pixels[k] - bare.radiance.pixels[k]) > 1e-6f * std::abs(bare.radiance.pixels[k]))
-        first = row;
-    }
+    const int first = view.first_ground_row(column);
     REQUIRE(first > 0);
-    auto elevation = [&](int row) {
-      return std::asin(glsl::view_direction(glsl::ivec2(column, row), glsl::ivec2(camera.width, camera.height), m).z) *
-             180 / M_PI;
-    };
+    auto elevation = [&](int row) { return view.elevation_deg(column, row); };
     INFO(name << ": reference " << reference << " deg, ground from row " << first << " at " << elevation(first)
               << " deg, row above at " << elevation(first - 1) << " deg");
     CHECK(reference >= elevation(first) - tolerance);
@@ -351,4 +372,124 @@ TEST_CASE("the terrain march steps over ground it is well above and meets the gr
   INFO("rays " << rays << ", loops " << loops_with << " against " << loops_without);
   // Rays that rise, or look over the Plateau, spend most of their march well above the ground.
   CHECK(2 * loops_with < loops_without);
+}
+
+TEST_CASE("rendered from Gurten, the Alps' skyline follows the elevation data and peaks at the Jungfrau massif",
+          "[terrain][render]") {
+  if (!have_etopo5()) FAIL("ferret-datasets is not installed (scripts/debian-packages.txt)");
+  test::test_context();
+  const auto grid = io::load_terrain("etopo5", gurten_lat, gurten_lon, eye_height);
+  // The Bernese Alps from the Bluemlisalp to beyond the Schreckhorn (azimuths 115 to 155
+  // degrees), 0.05 degrees a pixel, elevations 0 to 3 degrees.
+  const ClearView view = clear_view_from_gurten(grid, 135, 1.5, 40, 800, 60);
+  const render::Camera& camera = view.camera;
+  // Per column: the image's skyline (the elevation of the first row from the top that shows
+  // ground) and the elevation data's (along the geodesic, 200 m steps).
+  std::vector<double> azimuth(camera.width), image(camera.width), data(camera.width);
+  for (int column = 0; column < camera.width; ++column) {
+    const glm::vec3 top = view.direction(column, 0);
+    azimuth[column] = std::atan2(top.x, top.y) * 180 / M_PI;
+    const int first = view.first_ground_row(column);
+    image[column] = first >= 0 ? view.elevation_deg(column, first) : -90;
+    data[column] = regional::horizon_elevation_deg(gurten_lat, gurten_lon, eye_height, azimuth[column], raster(),
+                                                   regional::substitute_hills(), 140000.0, 200.0);
+  }
+  // The data's peaks: the highest point within 1.5 degrees either side, standing at least 0.1
+  // degrees above the lowest there (a massif, not a shoulder).
+  // ETOPO5's 5' cells smooth the Bernese Alps into one dome whose top is the massif of the
+  // Eiger, Moench and Jungfrau (Jungfrau 4158 m, 46.5367 N 7.9622 E): the image's highest
+  // skyline (the middle of the columns that reach its highest row) stands within 1 degree of
+  // the data's highest, and both within 1 degree of the massif's geodesic azimuths (from the
+  // Eiger's to the Jungfrau's).
+  const int top = int(std::max_element(data.begin(), data.end()) - data.begin());
+  const double highest = *std::max_element(image.begin(), image.end());
+  double sum = 0;
+  int count = 0;
+  for (int k = 0; k < camera.width; ++k)
+    if (image[k] == highest) sum += azimuth[k], ++count;
+  const double eiger = azimuth_deg(eiger_lat, eiger_lon), jungfrau = azimuth_deg(46.5367, 7.9622);
+  INFO("data's highest skyline " << data[top] << " deg at azimuth " << azimuth[top] << " deg; image's " << highest
+                                 << " deg at " << sum / count << " deg; the Eiger at " << eiger
+                                 << " deg, the Jungfrau at " << jungfrau << " deg");
+  CHECK(std::abs(sum / count - azimuth[top]) <= 1.0);
+  for (const double peak : {sum / count, azimuth[top]}) {
+    CHECK(peak >= eiger - 1.0);
+    CHECK(peak <= jungfrau + 1.0);
+  }
+  // The whole skyline: within a row (0.05 degrees) and the height field's tolerance at the Alps'
+  // distance (50 to 80 km) in every column.
+  const double tolerance = 0.05 + horizon_tolerance_deg(*grid, 50000.0, 200.0);
+  for (int k = 0; k < camera.width; ++k) {
+    INFO("azimuth " << azimuth[k] << " deg: image " << image[k] << " deg, data " << data[k] << " deg");
+    CHECK(std::abs(image[k] - data[k]) <= tolerance);
+  }
+}
+
+TEST_CASE("the fractal detail never moves a summit nor lifts ground above its cell's highest sample",
+          "[fast][terrain]") {
+  if (!have_etopo5()) FAIL("ferret-datasets is not installed (scripts/debian-packages.txt)");
+  const auto& r = raster();
+  const regional::TerrainDetail detail = regional::terrain_detail(r, 45.6, 48.2, 5.5, 9.4, 1.0);
+  REQUIRE(detail.cell_rms_m > 0);
+  int summits = 0;
+  for (int row = 1; row + 1 < r.rows; ++row)
+    for (int c = 1; c + 1 < r.columns; ++c) {
+      const double lat = r.south_deg + row * r.step_deg, lon = r.west_deg + c * r.step_deg;
+      if (lat < 46.0 || lat > 47.8 || lon < 6.0 || lon > 9.0) continue;
+      const float h = r.heights[size_t(row) * r.columns + c];
+      bool summit = h > 0;
+      for (int dr = -1; dr <= 1; ++dr)
+        for (int dc = -1; dc <= 1; ++dc)
+          if ((dr || dc) && r.heights[size_t(row + dr) * r.columns + c + dc] >= h) summit = false;
+      if (!summit) continue;
+      ++summits;
+      // Lattice coordinates are rounded: a micrometre's margin.
+      CHECK(regional::relief_elevation(r, detail, lat, lon) == Approx(h).epsilon(0).margin(1e-6));
+    }
+  CHECK(summits > 20);
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> lat(46.0, 47.8), lon(6.0, 9.0);
+  for (int k = 0; k < 20000; ++k) {
+    const double a = lat(rng), b = lon(rng);
+    const int row = int((a - r.south_deg) / r.step_deg), c = int((b - r.west_deg) / r.step_deg);
+    double highest = 0;
+    for (int dr = 0; dr <= 1; ++dr)
+      for (int dc = 0; dc <= 1; ++dc)
+        highest = std::max(highest, double(r.heights[size_t(row + dr) * r.columns + c + dc]));
+    REQUIRE(regional::relief_elevation(r, detail, a, b) <= highest + 1e-9);
+  }
+}
+
+TEST_CASE("the fractal detail continues the elevation data's structure function below its cells", "[fast][terrain]") {
+  if (!have_etopo5()) FAIL("ferret-datasets is not installed (scripts/debian-packages.txt)");
+  const auto& r = raster();
+  // The region of the ground views around Bern: its fitted H and S(one cell).
+  const regional::TerrainDetail detail = regional::terrain_detail(r, 45.6, 48.2, 5.5, 9.4, 1.0);
+  const regional::TerrainDetail none = regional::terrain_detail(r, 45.6, 48.2, 5.5, 9.4, 0.0);
+  INFO("fitted H " << detail.hurst << ", S(one cell) " << detail.cell_rms_m << " m");
+  // S at lags of a half, a quarter and an eighth of a cell (north-south), over random points.
+  const double cell = r.step_deg;
+  auto structure = [&](const regional::TerrainDetail& d, double lag) {
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> lat(45.8, 48.0), lon(5.7, 9.2);
+    double sum = 0;
+    const int n = 40000;
+    for (int k = 0; k < n; ++k) {
+      const double a = lat(rng), b = lon(rng);
+      const double dh = regional::relief_elevation(r, d, a + lag * cell, b) - regional::relief_elevation(r, d, a, b);
+      sum += dh * dh;
+    }
+    return std::sqrt(sum / n);
+  };
+  for (const double lag : {0.5, 0.25, 0.125}) {
+    const double expected = detail.cell_rms_m * std::pow(lag, detail.hurst);
+    const double with = structure(detail, lag), without = structure(none, lag);
+    INFO("lag " << lag << " cell: power law " << expected << " m, with detail " << with << " m, without " << without
+                << " m");
+    // The data's power law within a quarter (the octaves' rms is set for it; clamping at the
+    // cells' highest samples and the summits' holes take a little); the bilinear surface alone
+    // falls short, more so the shorter the lag (it is smooth: S ~ lag).
+    CHECK(with == Approx(expected).epsilon(0.25));
+    CHECK(without < 0.8 * expected);
+  }
 }

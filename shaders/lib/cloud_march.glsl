@@ -25,6 +25,8 @@
 #include "hash.glsl"
 #include "ray_sphere.glsl"
 #include "terrain.glsl"
+#include "land_cover.glsl"
+#include "sun_glint.glsl"
 
 // Mesa's llvmpipe stops every loop of an invocation after 65535 iterations in all, so pixels
 // whose loops run (or would run) that long are cut short on that driver (docs/rendering.md);
@@ -656,7 +658,7 @@ vec2 view_ray_end(vec3 d, IN(MarchParams) m, OUT(int) loops, IN(TerrainTexture) 
 // ground_distance: view_ray_end's x (the guide of the upsampling, render/upsample.hpp).
 vec4 render_pixel(ivec2 pixel, ivec2 size, IN(MarchParams) m, OUT(int) loop_count, OUT(float) ground_distance,
                   IN(NoiseVolume) noise_volume, IN(WeatherField) weather_field, IN(TerrainTexture) terrain_heights,
-                  IN(ConvectiveVolumes) convective_volumes, IN(ShadowMaps) layer_shadows,
+                  IN(LandCoverTexture) land_cover, IN(ConvectiveVolumes) convective_volumes, IN(ShadowMaps) layer_shadows,
                   IN(ShadowMaps) sky_shadow) {
   vec3 d = view_direction(pixel, size, m);
   vec3 centre = vec3(0.0f, 0.0f, -(m.earth_radius + m.camera_altitude));
@@ -689,11 +691,19 @@ vec4 render_pixel(ivec2 pixel, ivec2 size, IN(MarchParams) m, OUT(int) loop_coun
   sky_integral_end(sky, inscatter_total, inscatter_split, transmittance_total, transmittance_split);
   vec3 background = vec3(0.0f);
   if (hits_ground) {
-    // Lambertian ground (terrain.glsl's albedo), lit by the sun and the sky.
+    // Lambertian ground (land_cover.glsl's albedo), lit by the sun and the sky; lakes and rivers
+    // mirror the sky and the sun by Fresnel's law on top of the light from under their surface.
     vec3 point = origin_from_centre + ray_end * d;
     vec3 normal = terrain_normal(point, m.earth_radius, m.terrain, terrain_heights);
-    vec3 albedo = m.terrain.enabled != 0 ? terrain_albedo(length(point) - m.earth_radius, normal,
-                                                          normalize(point)) : vec3(0.15f);
+    vec3 up = normalize(point);
+    // The pixel's footprint on the ground, stretched along the view where it grazes the ground.
+    float footprint = ray_end * m.pixel_angle / max(abs(dot(d, normal)), 0.02f);
+    GroundSurface surface;
+    surface.albedo = vec3(0.15f);
+    surface.water = 0.0f;
+    if (m.terrain.enabled != 0)
+      surface = ground_surface(terrain_plane(point, m.earth_radius), length(point) - m.earth_radius, normal, up,
+                               footprint, m.terrain, land_cover);
     int shadow_loops = 0;
     float sunlit = terrain_sunlit(point, normal, m.sun, m.earth_radius, m.terrain, shadow_loops, terrain_heights);
     loop_count += shadow_loops;
@@ -702,9 +712,18 @@ vec4 render_pixel(ivec2 pixel, ivec2 size, IN(MarchParams) m, OUT(int) loop_coun
     float shadow = exp(-shadow_depth(ray_end * d, centre, -1, -1.0e30f, cloud_shadow_loops, m, noise_volume,
                                      weather_field, convective_volumes));
     loop_count += cloud_shadow_loops;
-    vec3 sun_at_ground = solar_irradiance() * transmittance_to_space(point, m.sun, m.earth_radius) *
-                         (sunlit * shadow * max(dot(normal, m.sun), 0.0f));
-    background = transmittance_total * (albedo / PI_F) * (sun_at_ground + m.ambient);
+    vec3 sunlight = solar_irradiance() * transmittance_to_space(point, m.sun, m.earth_radius) * (sunlit * shadow);
+    vec3 sun_at_ground = sunlight * max(dot(normal, m.sun), 0.0f);
+    vec3 ground = (surface.albedo / PI_F) * (sun_at_ground + m.ambient);
+    if (surface.water > 0.0f) {
+      // The water's surface is level: the sky (its mean radiance, ambient / pi) and the sun's
+      // glint on the wind-roughened facets (sun_glint.glsl) by Fresnel, the rest from below.
+      vec3 sun_on_water = sunlight * max(dot(up, m.sun), 0.0f);
+      vec3 water = (WATER_ALBEDO / PI_F) * (sun_on_water + m.ambient) +
+                   water_fresnel(dot(up, -d)) * m.ambient / PI_F + sun_glint_brdf(up, -d, m.sun, LAKE_WIND) * sun_on_water;
+      ground = mix(ground, water, surface.water);
+    }
+    background = transmittance_total * ground;
   }
   vec3 color = inscatter_split + transmittance_split * clouds.radiance +
                clouds.transmittance * (inscatter_total - inscatter_split + background);

@@ -10,6 +10,7 @@
 // classes that GLSL's texture functions are overloaded for (src/shader_math/hooks.hpp).
 #define DensityVolume sampler3D
 #define TerrainTexture sampler2D  // the ground's altitude in red, its ceiling in green
+#define LandCoverTexture sampler2DArray  // water distance in red, built-up fraction in green, a layer per level
 #define NoiseVolume sampler3D        // the renderer's baked noise, mip-mapped, repeating
 #define WeatherField sampler2DArray  // a layer per coverage channel
 #define ConvectiveVolumes sampler3D  // the convective clouds' density volumes stacked along z

@@ -28,6 +28,12 @@ struct TerrainParams {
   float top;             // highest altitude in it (above the sphere), metres
   float texel;           // its texel spacing, metres
   float reach;           // horizontal radius (m) within which the ceiling bounds the ground; 0: unused
+  int land;              // 1: the land cover texture (land_cover.glsl) holds lakes, rivers and towns
+  float land_near;       // half-sizes of its near and far levels' squares, metres
+  float land_far;
+  float land_texels;     // texels per side of each level
+  float snow_line;       // the season's snow line, metres above sea level (land_cover.glsl)
+  float crop_stage;      // the season's crops: 0 bare soil, 1 green, 2 ripe (land_cover.glsl)
 };
 
 // One convective cloud's density volume (docs/convection.md) as the marcher sees it: a cube of

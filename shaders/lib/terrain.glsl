@@ -1,5 +1,5 @@
 // The ground of the views near the ground: a height field over the Earth sphere, its ray
-// intersection, normal and albedo (docs/terrain.md). Points q are relative to the centre of the
+// intersection and normal (docs/terrain.md; what covers it is land_cover.glsl). Points q are relative to the centre of the
 // sphere that osculates the WGS84 ellipsoid at the viewpoint, in the camera's east-north-up
 // axes; the height field's horizontal coordinate of q is earth_radius * normalize(q).xy, metres
 // on the tangent plane at the camera. The heights are the parameter `terrain` (TerrainTexture),
@@ -115,20 +115,6 @@ vec3 terrain_normal(vec3 q, float earth_radius, IN(TerrainParams) t, IN(TerrainT
   vec3 east = normalize(vec3(1.0f, 0.0f, 0.0f) - up.x * up);
   vec3 north = normalize(vec3(0.0f, 1.0f, 0.0f) - up.y * up);
   return normalize(up - gx * east - gy * north);
-}
-
-// Lambertian albedo of the ground (docs/terrain.md): meadow and forest below the tree line,
-// rock on steep slopes and above it, snow above the snow line on slopes that hold it.
-vec3 terrain_albedo(float altitude, vec3 normal, vec3 up) {
-  vec3 meadow = vec3(0.10f, 0.14f, 0.07f);
-  vec3 rock = vec3(0.20f, 0.19f, 0.17f);
-  vec3 snow = vec3(0.80f, 0.82f, 0.85f);
-  float slope = 1.0f - dot(normal, up);  // 0 flat, 0.29 at 45 degrees
-  float rocky = clamp((altitude - 1800.0f) / 600.0f, 0.0f, 1.0f);
-  rocky = max(rocky, clamp((slope - 0.10f) / 0.10f, 0.0f, 1.0f));
-  vec3 ground = mix(meadow, rock, rocky);
-  float snowy = clamp((altitude - 2500.0f) / 400.0f, 0.0f, 1.0f) * (1.0f - clamp((slope - 0.25f) / 0.15f, 0.0f, 1.0f));
-  return mix(ground, snow, snowy);
 }
 
 #endif

@@ -32,8 +32,7 @@ void main() {
   int loop_count = 0;
   float ground_distance = 0.0f;
   vec4 radiance = render_pixel(pixel, size, u_march, loop_count, ground_distance, noise_volume, weather_field,
-                               terrain_heights,
-                               convective_volumes, layer_shadows, sky_shadow);
+                               terrain_heights, land_cover, convective_volumes, layer_shadows, sky_shadow);
   if (loop_limited(loop_count)) {
     atomicAdd(loop_limited_pixels, 1u);
     uint k = uint(pixel.y * size.x + pixel.x);

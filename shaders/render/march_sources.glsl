@@ -6,6 +6,8 @@
 layout(binding = 1) uniform NoiseVolume noise_volume;
 layout(binding = 2) uniform WeatherField weather_field;
 layout(binding = 4) uniform TerrainTexture terrain_heights;  // terrain.glsl's height field and ceiling
+// What covers the ground (land_cover.glsl): lakes, rivers, towns, a layer per level.
+layout(binding = 8) uniform LandCoverTexture land_cover;
 // The convective clouds' density volumes, volume c in z-layers [c N, (c + 1) N) (N^3 each).
 layout(binding = 5) uniform ConvectiveVolumes convective_volumes;
 // The shadow maps of the layers with layers above them (render/layer_shadows.comp).

@@ -52,4 +52,12 @@ std::string format_utc_seconds(double unix_seconds) {
   return date::format("%FT%H:%M:%SZ", point);
 }
 
+int day_of_year(double unix_seconds) {
+  using namespace std::chrono;
+  const date::sys_days day =
+      date::floor<date::days>(date::sys_time<seconds>{seconds{static_cast<long long>(std::floor(unix_seconds))}});
+  const date::year_month_day ymd{day};
+  return static_cast<int>((day - date::sys_days{ymd.year() / 1 / 1}).count()) + 1;
+}
+
 }  // namespace nephele::core

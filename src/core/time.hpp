@@ -14,5 +14,7 @@ double parse_utc_time(const std::string& text);
 std::string format_utc_minutes(double unix_seconds);
 // YYYY-MM-DDTHH:MM:SSZ of a time (fractions of a second are dropped); parse_utc_time reads it.
 std::string format_utc_seconds(double unix_seconds);
+// The day of the year (1 on 1 January, to 365 or 366) of a time, in UTC.
+int day_of_year(double unix_seconds);
 
 }  // namespace nephele::core

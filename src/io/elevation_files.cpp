@@ -9,6 +9,7 @@
 
 #include "core/error.hpp"
 #include "core/input_file.hpp"
+#include "io/land_cover_files.hpp"
 #include "render/cloud_renderer.hpp"
 
 namespace nephele::io {
@@ -91,7 +92,7 @@ regional::ElevationRaster read_etopo5(const std::string& path, double south_deg,
 
 std::shared_ptr<const regional::TerrainGrid> load_terrain(const std::string& setting, double latitude_deg,
                                                           double longitude_deg, double height_m, std::string* warning,
-                                                          const std::string& field) {
+                                                          const std::string& field, const GroundOptions& options) {
   if (setting == "flat") return nullptr;
   std::string path = setting;
   if (setting == "etopo5") {
@@ -106,17 +107,28 @@ std::shared_ptr<const regional::TerrainGrid> load_terrain(const std::string& set
   // The rows the square reaches, with a margin: its corner lies extent * sqrt(2) away.
   const double reach_deg = terrain_grid_extent_m * 1.5 / 111000.0;
   const regional::ElevationRaster raster = read_etopo5(path, latitude_deg - reach_deg, latitude_deg + reach_deg, field);
-  auto grid = std::make_shared<const regional::TerrainGrid>(
-      regional::terrain_grid(latitude_deg, longitude_deg, height_m, render::osculating_earth_radius(latitude_deg),
-                             raster, regional::substitute_hills(), terrain_grid_size, terrain_grid_extent_m));
+  std::string land_warning;
+  std::shared_ptr<const regional::LandCoverGrid> land_cover =
+      load_land_cover(options.land_cover, latitude_deg, longitude_deg, height_m, &land_warning, options.land_field);
+  const double reach_lon = reach_deg / std::max(std::cos(latitude_deg * M_PI / 180), 0.1);
+  const regional::TerrainDetail detail =
+      regional::terrain_detail(raster, latitude_deg - reach_deg, latitude_deg + reach_deg, longitude_deg - reach_lon,
+                               longitude_deg + reach_lon, options.detail);
+  auto made = std::make_shared<regional::TerrainGrid>(regional::terrain_grid(
+      latitude_deg, longitude_deg, height_m, render::osculating_earth_radius(latitude_deg), raster,
+      regional::substitute_hills(), terrain_grid_size, terrain_grid_extent_m, land_cover.get(), detail));
+  made->land = land_cover;
+  std::shared_ptr<const regional::TerrainGrid> grid = made;
   // The camera stands where the four middle texels meet; below their mean it looks out from
   // underground (ETOPO5 fills valleys: Bern's old town at 540 m lies under 700 m of it).
   const std::size_t n = grid->size, middle = n / 2;
   const double ground = (grid->altitudes[(middle - 1) * n + middle - 1] + grid->altitudes[(middle - 1) * n + middle] +
                          grid->altitudes[middle * n + middle - 1] + grid->altitudes[middle * n + middle]) /
                         4;
+  if (warning) *warning = land_warning;
   if (ground > height_m && warning)
-    *warning = "the camera at " + std::to_string(int(std::lround(height_m))) + " m is below the terrain there (" +
+    *warning = (land_warning.empty() ? "" : land_warning + "; ") + "the camera at " +
+               std::to_string(int(std::lround(height_m))) + " m is below the terrain there (" +
                std::to_string(int(std::lround(ground))) + " m, " + raster.source +
                " smooths valleys): raise its height or use --terrain flat";
   return grid;

@@ -23,11 +23,20 @@ regional::ElevationRaster read_etopo5(const std::string& path, double south_deg,
 // The ground for a camera from the `terrain` setting (params::scene::terrain): "flat" or an
 // absent default file gives none (the bare sphere; `warning` then says why when the default
 // was meant), "etopo5" the packaged file, anything else an ETOPO5 file of that path.
-// `warning` also says when the camera is below the ground under it.
+// `warning` also says when the camera is below the ground under it. The land cover
+// (io::load_land_cover of `ground.land_cover`) comes with the ground and carves its lakes into
+// it; the fractal detail (regional::TerrainDetail of `ground.detail`) is fitted to the raster
+// within the height field's reach.
+struct GroundOptions {
+  std::string land_cover = "none";  // params::scene::land_cover
+  std::string land_field = "--land-cover";
+  double detail = 0;  // params::scene::terrain_detail
+};
 std::shared_ptr<const regional::TerrainGrid> load_terrain(const std::string& setting, double latitude_deg,
                                                           double longitude_deg, double height_m,
                                                           std::string* warning = nullptr,
-                                                          const std::string& field = "--terrain");
+                                                          const std::string& field = "--terrain",
+                                                          const GroundOptions& ground = {});
 
 // The height field's size and half-extent for the renders: 300 km square, 390 m texels, enough
 // for the substitute hills' widths and the Alps' main ridge from Bern.

@@ -105,6 +105,8 @@ json::Value scene_sidecar(const SceneRender& r, const regional::Scene& scene) {
   root.set(std::string(params::scene::quality.key), quality);
   root.set("exposure", scene.exposure);
   root.set(std::string(params::scene::terrain.key), scene.terrain);
+  root.set(std::string(params::scene::land_cover.key), scene.land_cover);
+  root.set(std::string(params::scene::terrain_detail.key), scene.terrain_detail);
   return root;
 }
 

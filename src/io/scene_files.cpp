@@ -108,6 +108,13 @@ Scene parse_scene(const std::string& text, const std::string& source, const std:
       const bool word = t == "etopo5" || t == "flat";
       s.terrain =
           word || std::filesystem::path(t).is_absolute() ? t : (std::filesystem::path(base_directory) / t).string();
+    } else if (key == "terrain_detail") {
+      s.terrain_detail = k.number(v, key);
+    } else if (key == "land_cover") {
+      const std::string t = k.string(v, key);
+      const bool word = t == "swiss-maps" || t == "none";
+      s.land_cover =
+          word || std::filesystem::path(t).is_absolute() ? t : (std::filesystem::path(base_directory) / t).string();
     } else if (key == "exposure") {
       s.exposure = k.number(v, key);
     } else if (key == "cover_size") {

@@ -270,6 +270,17 @@ inline constexpr Parameter terrain = text("terrain", "etopo5", "etopo5|flat|FILE
                                           "ground relief: ETOPO5 of ferret-datasets (bare sphere with a warning when "
                                           "absent), flat (the bare sphere), or an ETOPO5 netCDF file (docs/terrain.md)",
                                           render_and_scene);
+inline constexpr Parameter terrain_detail =
+    real("terrain_detail", 1, 0, 3, "",
+         "strength of the fractal relief added below the elevation data's 9 km cells, its amplitudes continuing the "
+         "data's structure function (0: the data's smooth surface; docs/terrain.md)",
+         render_and_scene);
+inline constexpr Parameter land_cover =
+    text("land_cover", "swiss-maps", "swiss-maps|none|FILE",
+         "lakes and towns on the ground: swiss-maps' TopoJSON as scripts/install-data.sh installs it (none with a "
+         "warning when absent), none, or a swiss-maps TopoJSON file; forest, fields and snow are drawn either way "
+         "(docs/terrain.md)",
+         render_and_scene);
 inline constexpr Parameter exposure =
     real("exposure", 4.0, 1e-6, 1e6, "", "exposure before tone mapping (PNG)", render_scene_view);
 inline constexpr Parameter seed =

@@ -55,6 +55,8 @@ std::vector<params::FieldBinding> field_bindings(Scene& s) {
           {&sc::frames, &s.frames},
           {&sc::resolution_divisor, &s.resolution_divisor},
           {&sc::terrain, &s.terrain},
+          {&sc::land_cover, &s.land_cover},
+          {&sc::terrain_detail, &s.terrain_detail},
           {&sc::fog_top, &s.fog_top_m},
           {&sc::exposure, &s.exposure},
           {&sc::cover_size, &s.cover_size},
@@ -137,6 +139,7 @@ void validate_scene(const Scene& s, const std::string& source, const KeyOptions&
   check_range(where("shadow_map_size"), s.shadow_map_size, params::scene::shadow_map_size);
   check_range(where("exposure"), s.exposure, params::scene::exposure);
   check_range(where("fog_top"), s.fog_top_m, params::scene::fog_top);
+  check_range(where("terrain_detail"), s.terrain_detail, params::scene::terrain_detail);
   check_range(where("powder"), s.powder, params::scene::powder);
   check_range(where("cover_size"), s.cover_size, params::scene::cover_size);
   const std::vector<std::string> flows = params::cover::flow.words();

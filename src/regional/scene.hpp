@@ -49,8 +49,10 @@ struct Scene {
   int shadow_map_size = params::scene::shadow_map_size.default_int();
   int frames = params::scene::frames.default_int();
   int resolution_divisor = params::scene::resolution_divisor.default_int();
-  std::string terrain{params::scene::terrain.default_text};  // etopo5, flat or an ETOPO5 file
-  double fog_top_m = params::scene::fog_top.default_number;  // sea of fog's top, m above sea level
+  std::string terrain{params::scene::terrain.default_text};              // etopo5, flat or an ETOPO5 file
+  std::string land_cover{params::scene::land_cover.default_text};        // swiss-maps, none or a TopoJSON file
+  double terrain_detail = params::scene::terrain_detail.default_number;  // fractal relief's strength
+  double fog_top_m = params::scene::fog_top.default_number;              // sea of fog's top, m above sea level
   double exposure = params::scene::exposure.default_number;
   int cover_size = params::scene::cover_size.default_int();  // global cover size when no weather is given
   // The global cover's flow (cover/flow_kind.hpp); a moving cover is that of `time`.

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 namespace nephele::regional {
 
@@ -19,6 +20,162 @@ std::optional<double> ElevationRaster::at(double latitude_deg, double longitude_
   const double fv = v - r, fu = u - c;
   auto h = [&](int rr, int cc) { return double(heights[static_cast<size_t>(rr) * columns + cc]); };
   return (1 - fv) * ((1 - fu) * h(r, c) + fu * h(r, c + 1)) + fv * ((1 - fu) * h(r + 1, c) + fu * h(r + 1, c + 1));
+}
+
+std::pair<double, double> TangentPlane::of(double latitude_deg, double longitude_deg, double ellipsoid_height_m) const {
+  double x, y, z;
+  frame_.Forward(latitude_deg, longitude_deg, ellipsoid_height_m, x, y, z);
+  return of_local(x, y, z);
+}
+
+std::pair<double, double> TangentPlane::of_local(double x, double y, double z) const {
+  // The camera's frame: east, north, up, the sphere's centre R + height below the camera.
+  const double qz = z + radius_m_ + height_m_;
+  const double n = std::sqrt(x * x + y * y + qz * qz);
+  return {radius_m_ * x / n, radius_m_ * y / n};
+}
+
+namespace {
+
+// The rms of perlin_noise over a plane (its lattice's z = 0.5), measured once on 65536 points:
+// what turns an octave's wanted rms into its amplitude.
+double perlin_rms() {
+  static const double rms = [] {
+    const glsl::uvec3 key = glsl::noise_key(0x54455252u, 0u);
+    double sum = 0;
+    const int n = 256;
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i) {
+        const double v =
+            glsl::perlin_noise(glsl::vec3((i + 0.37f) * 0.173f, (j + 0.61f) * 0.173f, 0.5f), glsl::ivec3(0), key);
+        sum += v * v;
+      }
+    return std::sqrt(sum / (n * n));
+  }();
+  return rms;
+}
+
+}  // namespace
+
+double TerrainDetail::at(double u, double v, double fu, double fv, const double corners[4],
+                         const bool summits[4]) const {
+  if (strength <= 0 || cell_rms_m <= 0) return 0;
+  const double hi = std::max({corners[0], corners[1], corners[2], corners[3]});
+  const double lo = std::min({corners[0], corners[1], corners[2], corners[3]});
+  const double local = std::min((hi - lo) / mean_range_m, 3.0);
+  // Vanishes at summits: a Gaussian hole a quarter of a cell wide round each.
+  double guard = 1;
+  const double cu[4] = {0, 1, 0, 1}, cv[4] = {0, 0, 1, 1};
+  for (int k = 0; k < 4; ++k)
+    if (summits[k]) {
+      const double d2 = ((fu - cu[k]) * (fu - cu[k]) + (fv - cv[k]) * (fv - cv[k])) / (0.25 * 0.25);
+      guard *= 1 - std::exp(-d2);
+    }
+  // Octave k has the wavelength of 2^-k cells and the rms S(1) 2^(-k H) / sqrt(2): the rms
+  // difference of a noise at half its wavelength is about sqrt(2) times its rms. The lattice
+  // repeats every 1024 cells (85 degrees), wrapped exactly.
+  const double wu = u - 1024.0 * std::floor(u / 1024.0), wv = v - 1024.0 * std::floor(v / 1024.0);
+  double sum = 0;
+  for (int k = 1; k <= octaves; ++k) {
+    const double scale = std::ldexp(1.0, k);
+    const double rms = cell_rms_m * std::pow(2.0, -k * hurst) / std::sqrt(2.0);
+    const int period = 1024 << k;
+    sum += rms / perlin_rms() *
+           glsl::perlin_noise(glsl::vec3(float(wu * scale), float(wv * scale), 0.5f), glsl::ivec3(period, period, 0),
+                              glsl::noise_key(0x54455252u, static_cast<unsigned>(k)));
+  }
+  return strength * scale * local * guard * sum;
+}
+
+TerrainDetail terrain_detail(const ElevationRaster& raster, double south_deg, double north_deg, double west_deg,
+                             double east_deg, double strength) {
+  TerrainDetail detail;
+  detail.strength = strength;
+  auto h = [&](int r, int c) {
+    return std::max(double(raster.heights[static_cast<size_t>(r) * raster.columns + c]), 0.0);
+  };
+  double sum1 = 0, sum2 = 0, ranges = 0;
+  long n1 = 0, n2 = 0, cells = 0;
+  for (int r = 0; r + 2 < raster.rows; ++r) {
+    const double lat = raster.south_deg + r * raster.step_deg;
+    if (lat < south_deg || lat > north_deg) continue;
+    for (int c = 0; c + 2 < raster.columns; ++c) {
+      double lon = raster.west_deg + c * raster.step_deg;
+      lon -= 360.0 * std::floor((lon - west_deg) / 360.0);
+      if (lon > east_deg) continue;
+      for (const auto& [dr, dc] : {std::pair<int, int>{0, 1}, {1, 0}}) {
+        const double d1 = h(r + dr, c + dc) - h(r, c), d2 = h(r + 2 * dr, c + 2 * dc) - h(r, c);
+        sum1 += d1 * d1, sum2 += d2 * d2;
+        ++n1, ++n2;
+      }
+      ranges += std::max({h(r, c), h(r + 1, c), h(r, c + 1), h(r + 1, c + 1)}) -
+                std::min({h(r, c), h(r + 1, c), h(r, c + 1), h(r + 1, c + 1)});
+      ++cells;
+    }
+  }
+  if (n1 == 0 || sum1 <= 0) return detail;
+  detail.cell_rms_m = std::sqrt(sum1 / n1);
+  detail.hurst = std::clamp(std::log2(std::sqrt(sum2 / n2) / detail.cell_rms_m), 0.3, 1.0);
+  detail.mean_range_m = std::max(ranges / cells, 1.0);
+  // The factor: at each lag the octaves must supply what the bilinear surface lacks of the
+  // power law, S^2 = S_bilinear^2 + scale^2 S_octaves^2; the mean of the three lags' factors.
+  // Measured north-south over a fixed lattice of 4096 points (the same for every run).
+  TerrainDetail unit = detail;
+  unit.strength = 1;
+  unit.scale = 1;
+  const TerrainDetail smooth;
+  double factors = 0;
+  int lags = 0;
+  for (const double lag : {0.5, 0.25, 0.125}) {
+    double surface = 0, octaves = 0;
+    for (int k = 0; k < 4096; ++k) {
+      // A Weyl sequence over the region (golden-ratio steps: evenly spread, no grid alignment).
+      const double lat = south_deg + (north_deg - south_deg) * std::fmod(k * 0.6180339887498949, 1.0);
+      const double lon = west_deg + (east_deg - west_deg) * std::fmod(k * 0.7548776662466927, 1.0);
+      const double step = lag * raster.step_deg;
+      const double b = relief_elevation(raster, smooth, lat + step, lon) - relief_elevation(raster, smooth, lat, lon);
+      const double d = relief_elevation(raster, unit, lat + step, lon) - relief_elevation(raster, unit, lat, lon) - b;
+      surface += b * b, octaves += d * d;
+    }
+    const double target = detail.cell_rms_m * std::pow(lag, detail.hurst);
+    const double lacking = target * target - surface / 4096;
+    if (octaves > 0 && lacking > 0) factors += std::sqrt(lacking / (octaves / 4096)), ++lags;
+  }
+  detail.scale = lags > 0 ? factors / lags : 0.0;
+  return detail;
+}
+
+double relief_elevation(const ElevationRaster& raster, const TerrainDetail& detail, double latitude_deg,
+                        double longitude_deg) {
+  const double bilinear = std::max(raster.at(latitude_deg, longitude_deg).value_or(0.0), 0.0);
+  if (detail.strength <= 0) return bilinear;
+  const double v = (latitude_deg - raster.south_deg) / raster.step_deg;
+  double u = std::fmod(longitude_deg - raster.west_deg, 360.0);
+  if (u < 0) u += 360.0;
+  u /= raster.step_deg;
+  if (v < 0 || v > raster.rows - 1 || u < 0 || u > raster.columns - 1) return bilinear;
+  const int r = std::min(static_cast<int>(v), raster.rows - 2), c = std::min(static_cast<int>(u), raster.columns - 2);
+  auto h = [&](int rr, int cc) {
+    return std::max(double(raster.heights[static_cast<size_t>(rr) * raster.columns + cc]), 0.0);
+  };
+  // A sample is a summit when it is higher than its eight neighbours (those inside the raster).
+  auto summit = [&](int rr, int cc) {
+    for (int dr = -1; dr <= 1; ++dr)
+      for (int dc = -1; dc <= 1; ++dc) {
+        const int a = rr + dr, b = cc + dc;
+        if ((dr != 0 || dc != 0) && a >= 0 && a < raster.rows && b >= 0 && b < raster.columns && h(a, b) >= h(rr, cc))
+          return false;
+      }
+    return true;
+  };
+  const double corners[4] = {h(r, c), h(r, c + 1), h(r + 1, c), h(r + 1, c + 1)};
+  const bool summits[4] = {summit(r, c), summit(r, c + 1), summit(r + 1, c), summit(r + 1, c + 1)};
+  // The raster's longitude origin added back, so that the lattice is the same for every cut.
+  const double column0 = std::round((raster.west_deg + 360.0) / raster.step_deg);
+  const double row0 = std::round((raster.south_deg + 90.0) / raster.step_deg);
+  const double d = detail.at(u + column0, v + row0, u - c, v - r, corners, summits);
+  const double highest = std::max({corners[0], corners[1], corners[2], corners[3]});
+  return std::max(std::min(bilinear + d, std::max(highest, bilinear)), 0.0);
 }
 
 const std::vector<Hill>& substitute_hills() {
@@ -38,21 +195,30 @@ namespace {
 // it) plus each hill's bump, whose height brings the raster at the summit up to the summit.
 struct Relief {
   const ElevationRaster& raster;
-  std::vector<double> bump;  // per hill: summit minus the raster there
+  std::vector<double> bump;  // per hill: summit minus the relief there
   const std::vector<Hill>& hills;
+  const TerrainDetail& detail;
 
-  Relief(const ElevationRaster& r, const std::vector<Hill>& h) : raster(r), hills(h) {
+  Relief(const ElevationRaster& r, const std::vector<Hill>& h, const TerrainDetail& d)
+      : raster(r), hills(h), detail(d) {
     for (const Hill& hill : hills)
-      bump.push_back(hill.summit_m - raster.at(hill.latitude_deg, hill.longitude_deg).value_or(0.0));
+      bump.push_back(hill.summit_m - relief_elevation(raster, {}, hill.latitude_deg, hill.longitude_deg));
   }
   // distance_m(k): the point's distance from hill k.
   template <class Distance>
   double at(double latitude_deg, double longitude_deg, const Distance& distance_m) const {
-    double h = std::max(raster.at(latitude_deg, longitude_deg).value_or(0.0), 0.0);
+    double h = relief_elevation(raster, {}, latitude_deg, longitude_deg);
+    // The detail fades out over the hills (a Gaussian hole twice as wide as each), which stand
+    // for the relief there.
+    double keep = 1;
     for (size_t k = 0; k < hills.size(); ++k) {
       const double d = distance_m(k) / hills[k].sigma_m;
       if (d < 6) h += bump[k] * std::exp(-0.5 * d * d);
+      keep *= 1 - std::exp(-0.125 * d * d);
     }
+    if (detail.strength > 0 && keep > 0)
+      h += keep * (relief_elevation(raster, detail, latitude_deg, longitude_deg) -
+                   relief_elevation(raster, {}, latitude_deg, longitude_deg));
     return h;
   }
 };
@@ -60,28 +226,27 @@ struct Relief {
 }  // namespace
 
 TerrainGrid terrain_grid(double latitude_deg, double longitude_deg, double height_m, double earth_radius_m,
-                         const ElevationRaster& raster, const std::vector<Hill>& hills, int size, double extent_m) {
+                         const ElevationRaster& raster, const std::vector<Hill>& hills, int size, double extent_m,
+                         const LandCoverGrid* land, const TerrainDetail& detail) {
   TerrainGrid grid;
   grid.size = size;
   grid.extent_m = extent_m;
   grid.source = raster.source;
-  for (const Hill& h : hills) grid.source += " + substitute " + h.name;
-  grid.altitudes.resize(static_cast<size_t>(size) * size);
-  const GeographicLib::LocalCartesian frame(latitude_deg, longitude_deg, height_m);
-  const double R = earth_radius_m;
-  // The camera's frame: east, north, up, the sphere's centre R + height below the camera.
-  auto plane_of = [&](double x, double y, double z) {
-    const double qx = x, qy = y, qz = z + R + height_m;
-    const double n = std::sqrt(qx * qx + qy * qy + qz * qz);
-    return std::pair<double, double>(R * qx / n, R * qy / n);
-  };
-  std::vector<std::pair<double, double>> hill_xy;
-  for (const Hill& h : hills) {
-    double x, y, z;
-    frame.Forward(h.latitude_deg, h.longitude_deg, 0.0, x, y, z);
-    hill_xy.push_back(plane_of(x, y, z));
+  if (detail.strength > 0) {
+    char text[96];
+    std::snprintf(text, sizeof text, " + fractal detail (H %.2f, S %.0f m a cell, mean range %.0f m)", detail.hurst,
+                  detail.cell_rms_m, detail.mean_range_m);
+    grid.source += text;
   }
-  const Relief relief(raster, hills);
+  for (const Hill& h : hills) grid.source += " + substitute " + h.name;
+  if (land != nullptr && !land->empty()) grid.source += " + lakes of " + land->source;
+  grid.altitudes.resize(static_cast<size_t>(size) * size);
+  const TangentPlane plane(latitude_deg, longitude_deg, height_m, earth_radius_m);
+  const GeographicLib::LocalCartesian& frame = plane.frame();
+  const double R = earth_radius_m;
+  std::vector<std::pair<double, double>> hill_xy;
+  for (const Hill& h : hills) hill_xy.push_back(plane.of(h.latitude_deg, h.longitude_deg));
+  const Relief relief(raster, hills, detail);
   float top = 0;
   for (int j = 0; j < size; ++j) {
     const double y = ((2.0 * j + 1) / size - 1) * extent_m;
@@ -91,8 +256,15 @@ TerrainGrid terrain_grid(double latitude_deg, double longitude_deg, double heigh
       const double z = std::sqrt(std::max(R * R - x * x - y * y, 0.0)) - R - height_m;
       double lat, lon, h_sphere;
       frame.Reverse(x, y, z, lat, lon, h_sphere);
-      const double h =
-          relief.at(lat, lon, [&](size_t k) { return std::hypot(x - hill_xy[k].first, y - hill_xy[k].second); });
+      double h = relief.at(lat, lon, [&](size_t k) { return std::hypot(x - hill_xy[k].first, y - hill_xy[k].second); });
+      if (land != nullptr && !land->empty()) {
+        // The lake's surface inside it; outside, the relief lowered towards it within the band.
+        const auto [distance, surface] = land->far_lake(x, y);
+        if (!std::isnan(surface)) {
+          const double t = std::clamp(distance / land->band_m(1), 0.0, 1.0);
+          h = distance <= 0 ? surface : std::min(h, surface + std::max(h - surface, 0.0) * t * t * (3 - 2 * t));
+        }
+      }
       const float altitude = static_cast<float>(h - h_sphere);
       grid.altitudes[static_cast<size_t>(j) * size + i] = altitude;
       top = std::max(top, altitude);
@@ -126,21 +298,52 @@ std::vector<float> terrain_ceilings(const std::vector<float>& altitudes, int siz
 
 glsl::TerrainParams terrain_params(const TerrainGrid& grid) {
   // The shell the march searches reaches a metre above the highest texel.
-  return {1, static_cast<float>(grid.extent_m), grid.top_m + 1.0f, static_cast<float>(grid.texel_m()),
-          static_cast<float>(grid.reach_m())};
+  glsl::TerrainParams t = no_terrain_params();
+  t.enabled = 1;
+  t.extent = static_cast<float>(grid.extent_m);
+  t.top = grid.top_m + 1.0f;
+  t.texel = static_cast<float>(grid.texel_m());
+  t.reach = static_cast<float>(grid.reach_m());
+  if (grid.land && !grid.land->empty()) {
+    t.land = 1;
+    t.land_near = static_cast<float>(grid.land->extent_m[0]);
+    t.land_far = static_cast<float>(grid.land->extent_m[1]);
+    t.land_texels = static_cast<float>(grid.land->size);
+  }
+  return t;
+}
+
+glsl::TerrainParams no_terrain_params() {
+  glsl::TerrainParams t;
+  t.enabled = 0;
+  t.extent = 1.0f;
+  t.top = 0.0f;
+  t.texel = 1.0f;
+  t.reach = 0.0f;
+  t.land = 0;
+  t.land_near = 1.0f;
+  t.land_far = 1.0f;
+  t.land_texels = 1.0f;
+  t.snow_line = static_cast<float>(seasonal_snow_line_m(172));  // the summer solstice's
+  t.crop_stage = static_cast<float>(seasonal_crop_stage(172));
+  return t;
 }
 
 glsl::TerrainSource terrain_source(const TerrainGrid& grid) {
   return {{grid.size, 1, grid.altitudes.data()}, {grid.size, 1, grid.ceilings.data()}};
 }
 
+glsl::LandCoverSource land_cover_source(const LandCoverGrid& land) {
+  return {{land.size, land_cover_levels, land.water.data()}, {land.size, land_cover_levels, land.urban.data()}};
+}
+
 double horizon_elevation_deg(double latitude_deg, double longitude_deg, double height_m, double azimuth_deg,
                              const ElevationRaster& raster, const std::vector<Hill>& hills, double max_distance_m,
-                             double step_m, double* distance_m) {
+                             double step_m, double* distance_m, const TerrainDetail& detail) {
   const GeographicLib::Geodesic& g = GeographicLib::Geodesic::WGS84();
   const GeographicLib::GeodesicLine line = g.Line(latitude_deg, longitude_deg, azimuth_deg);
   const GeographicLib::LocalCartesian frame(latitude_deg, longitude_deg, height_m);
-  const Relief relief(raster, hills);
+  const Relief relief(raster, hills, detail);
   double best = -90.0;
   for (double s = step_m; s <= max_distance_m; s += step_m) {
     double lat, lon;

@@ -2,10 +2,15 @@
 // The ground around a viewpoint: an elevation raster (read by src/io/elevation_files), the
 // substitute relief of the hills it does not resolve, and the height field the renderer marches
 // (shaders/lib/terrain.glsl). docs/terrain.md explains the frame and the sources.
+#include <GeographicLib/LocalCartesian.hpp>
+
+#include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
+#include "regional/land_cover.hpp"
 #include "shader_math/shader_math.hpp"
 
 namespace nephele::regional {
@@ -21,6 +26,49 @@ struct ElevationRaster {
   // nullopt outside the lattice.
   std::optional<double> at(double latitude_deg, double longitude_deg) const;
 };
+
+// The renderer's horizontal coordinate (m east and north, docs/terrain.md, Frame) of geographic
+// points seen from a camera: the point in GeographicLib's local Cartesian frame at the camera,
+// projected from the centre of the sphere of radius earth_radius_m under the camera.
+class TangentPlane {
+ public:
+  TangentPlane(double latitude_deg, double longitude_deg, double height_m, double earth_radius_m)
+      : frame_(latitude_deg, longitude_deg, height_m), radius_m_(earth_radius_m), height_m_(height_m) {}
+  std::pair<double, double> of(double latitude_deg, double longitude_deg, double ellipsoid_height_m = 0) const;
+  // The same for a point given in the local Cartesian frame (m east, north, up of the camera).
+  std::pair<double, double> of_local(double x, double y, double z) const;
+  const GeographicLib::LocalCartesian& frame() const { return frame_; }
+
+ private:
+  GeographicLib::LocalCartesian frame_;
+  double radius_m_, height_m_;
+};
+
+// Relief finer than the raster's cells (docs/terrain.md, Detail): three octaves of gradient
+// noise at a half, a quarter and an eighth of a cell, whose amplitudes continue the raster's own
+// structure function S(lag) = rms(h(x + lag) - h(x)) ~ lag^H below the cell (H fitted between
+// one and two cells around the camera), scaled by each cell's own relief (the range of its four
+// samples over the mean range), so that the Alps get rugged and the Plateau stays gentle. One
+// factor, measured on the region's surface, brings the whole surface's S at a half, a quarter
+// and an eighth of a cell onto the power law (the octaves overlap, and the bilinear surface has
+// its own share).
+// Defined in the raster's lattice coordinates, the same for every camera. Never moves a
+// summit: it vanishes at raster samples higher than their eight neighbours and never lifts a
+// point above the highest sample of its cell.
+struct TerrainDetail {
+  double strength = 0;      // 0: none (the raster's bilinear surface), 1: the fitted amplitudes
+  double hurst = 1;         // H
+  double cell_rms_m = 0;    // S(one cell)
+  double mean_range_m = 1;  // the mean of the cells' ranges (max - min of their four samples)
+  double scale = 1;         // the measured factor on the octaves' amplitudes
+  static constexpr int octaves = 3;
+  // Detail (m) at a point of a cell whose four samples are h00, h10, h01, h11 (fu, fv its
+  // position in the cell; summit00.. whether each sample is a summit).
+  double at(double u, double v, double fu, double fv, const double corners[4], const bool summits[4]) const;
+};
+// The detail's statistics from the raster's samples between two latitudes and longitudes.
+TerrainDetail terrain_detail(const ElevationRaster& raster, double south_deg, double north_deg, double west_deg,
+                             double east_deg, double strength);
 
 // A hill too small for the raster, given a substitute relief: a Gaussian bump of standard
 // deviation sigma_m added to the raster so that the summit reaches its known elevation.
@@ -45,6 +93,8 @@ struct TerrainGrid {
   // is well above (the green channel of terrain.glsl's TerrainTexture).
   std::vector<float> ceilings;
   int ceiling_window = 0;
+  // What covers it (lakes, rivers, towns; io::load_land_cover); none: the procedural cover alone.
+  std::shared_ptr<const LandCoverGrid> land;
   double texel_m() const { return 2 * extent_m / size; }
   // How far (m, horizontally) the bilinear ceiling bounds the ground: the window less 2 texels
   // (1 for the bilinear taps of the ceiling, 1 for those of the ground; docs/terrain.md).
@@ -59,14 +109,22 @@ constexpr int terrain_ceiling_window = 8;
 // edges). Separable: a running maximum along rows, then along columns.
 std::vector<float> terrain_ceilings(const std::vector<float>& altitudes, int size, int window);
 
-// What the marcher and its C++ twin take of a grid.
+// What the marcher and its C++ twin take of a grid (its land cover's levels too; the snow line
+// is the summer solstice's until the renderer sets the day's).
 glsl::TerrainParams terrain_params(const TerrainGrid& grid);
 glsl::TerrainSource terrain_source(const TerrainGrid& grid);
+glsl::LandCoverSource land_cover_source(const LandCoverGrid& land);
+// The bare sphere's.
+glsl::TerrainParams no_terrain_params();
 
 // Samples the raster (plus the hills) under every texel; the geodesy (the texel's latitude,
 // longitude and ellipsoidal height) is GeographicLib's local Cartesian frame at the camera.
+// With detail (strength > 0), the relief below the raster's cells is added (before the lakes).
+// With land cover, the ground within a lake is its surface, and the shores slope down to it over
+// the land cover's band (the raster's 9 km cells fill the lakes' basins; docs/terrain.md).
 TerrainGrid terrain_grid(double latitude_deg, double longitude_deg, double height_m, double earth_radius_m,
-                         const ElevationRaster& raster, const std::vector<Hill>& hills, int size, double extent_m);
+                         const ElevationRaster& raster, const std::vector<Hill>& hills, int size, double extent_m,
+                         const LandCoverGrid* land = nullptr, const TerrainDetail& detail = {});
 
 // Elevation angle (degrees above the horizontal) of the highest ground seen from the camera in
 // an azimuth (degrees clockwise from north), ignoring refraction: the largest angle of the
@@ -75,6 +133,11 @@ TerrainGrid terrain_grid(double latitude_deg, double longitude_deg, double heigh
 // the renderer's horizon is tested against. distance_m: where that ground lies.
 double horizon_elevation_deg(double latitude_deg, double longitude_deg, double height_m, double azimuth_deg,
                              const ElevationRaster& raster, const std::vector<Hill>& hills, double max_distance_m,
-                             double step_m, double* distance_m = nullptr);
+                             double step_m, double* distance_m = nullptr, const TerrainDetail& detail = {});
+
+// Elevation (m above sea level) of the relief at a point: the raster (bilinear, sea level where
+// it has none), plus the detail; the hills left out (they need the point's distances).
+double relief_elevation(const ElevationRaster& raster, const TerrainDetail& detail, double latitude_deg,
+                        double longitude_deg);
 
 }  // namespace nephele::regional

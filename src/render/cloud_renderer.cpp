@@ -15,6 +15,7 @@
 #include <stdexcept>
 
 #include "core/hash.hpp"
+#include "core/time.hpp"
 #include "gpu/shader_bindings.hpp"
 #include "gpu/compute_program.hpp"
 #include "gpu/pass_timer.hpp"
@@ -274,8 +275,9 @@ glsl::MarchParams march_params(const Camera& camera, const std::vector<regional:
       camera.panorama ? 2 * M_PI / camera.width : 2 * std::tan(camera.fov_deg * M_PI / 360) / camera.width;
   m.pixel_angle = static_cast<float>(pixel_angle);
   m.noise_texels = static_cast<float>(settings.noise_size);
-  m.terrain = {0, 1.0f, 0.0f, 1.0f, 0.0f};
-  if (settings.terrain) m.terrain = regional::terrain_params(*settings.terrain);
+  m.terrain = settings.terrain ? regional::terrain_params(*settings.terrain) : regional::no_terrain_params();
+  m.terrain.snow_line = static_cast<float>(regional::seasonal_snow_line_m(core::day_of_year(unix_seconds)));
+  m.terrain.crop_stage = static_cast<float>(regional::seasonal_crop_stage(core::day_of_year(unix_seconds)));
   m.convective_count = convective != nullptr ? convective->count() : 0;
   for (int c = 0; c < m.convective_count; ++c) m.convective[c] = convective->params(c);
   // The sky's map (crepuscular rays): the depth through all clouds from the lowest base.
@@ -365,7 +367,7 @@ RenderResult render_clouds(const Camera& camera, const std::vector<regional::Clo
                       field.values.data());
   filter_linear_clamped(weather);
 
-  GLuint terrain = 0;
+  GLuint terrain = 0, land_cover = 0;
   if (settings.terrain) {
     const regional::TerrainGrid& t = *settings.terrain;
     terrain = make_texture(GL_TEXTURE_2D);
@@ -379,6 +381,22 @@ RenderResult render_clouds(const Camera& camera, const std::vector<regional::Clo
     glTextureSubImage2D(terrain, 0, 0, 0, t.size, t.size, GL_RG, GL_FLOAT, texels.data());
     filter_linear_clamped(terrain);
     result.passes.push_back("terrain (" + t.source + ")");
+    if (t.land && !t.land->empty()) {
+      // Water distance in red, built-up fraction in green (land_cover.glsl), a layer per level;
+      // half floats keep the distances to within a few centimetres of the band.
+      const regional::LandCoverGrid& land = *t.land;
+      land_cover = make_texture(GL_TEXTURE_2D_ARRAY);
+      std::vector<float> rg(2 * land.water.size());
+      for (size_t k = 0; k < land.water.size(); ++k) {
+        rg[2 * k] = land.water[k];
+        rg[2 * k + 1] = land.urban[k];
+      }
+      glTextureStorage3D(land_cover, 1, GL_RG16F, land.size, land.size, regional::land_cover_levels);
+      glTextureSubImage3D(land_cover, 0, 0, 0, 0, land.size, land.size, regional::land_cover_levels, GL_RG, GL_FLOAT,
+                          rg.data());
+      filter_linear_clamped(land_cover);
+      result.passes.push_back("land cover (" + land.source + ")");
+    }
   }
 
   result.sun_direction =
@@ -420,6 +438,7 @@ RenderResult render_clouds(const Camera& camera, const std::vector<regional::Clo
     glBindTextureUnit(sources::noise_volume, noise != nullptr ? noise->texture() : 0);
     glBindTextureUnit(sources::weather_field, weather);
     glBindTextureUnit(sources::terrain_heights, terrain);
+    glBindTextureUnit(sources::land_cover, land_cover);
     glBindTextureUnit(sources::convective_volumes, convective != nullptr ? convective->texture() : 0);
     for (int layer = first_layer; layer <= last_layer; ++layer)
       if (layer < 0 || params.layers[layer].shadow_map >= 0) {
@@ -472,6 +491,7 @@ RenderResult render_clouds(const Camera& camera, const std::vector<regional::Clo
     glBindTextureUnit(sources::noise_volume, noise != nullptr ? noise->texture() : 0);
     glBindTextureUnit(sources::weather_field, weather);
     glBindTextureUnit(sources::terrain_heights, terrain);
+    glBindTextureUnit(sources::land_cover, land_cover);
     glBindTextureUnit(sources::convective_volumes, convective != nullptr ? convective->texture() : 0);
     glBindTextureUnit(sources::layer_shadows, maps > 0 ? shadow_maps.id() : 0);
     glBindTextureUnit(sources::sky_shadow, sky_map ? sky_shadow.id() : 0);
@@ -558,6 +578,7 @@ RenderResult render_clouds(const Camera& camera, const std::vector<regional::Clo
   }
   glDeleteTextures(1, &weather);
   if (terrain != 0) glDeleteTextures(1, &terrain);
+  if (land_cover != 0) glDeleteTextures(1, &land_cover);
   return result;
 }
 

@@ -117,6 +117,20 @@ inline vec4 texture(IN(TerrainSource) terrain, vec2 uv) {
   return vec4(terrain.heights.sample(uv, 0), terrain.ceilings.sample(uv, 0), 0.0f, 0.0f);
 }
 
+// The land cover in host memory (land_cover.glsl's LandCoverTexture: the red and green channels
+// of one texture array on the GPU): the water distance and built-up fraction, a layer per level
+// (regional::LandCoverGrid's arrays). Sampled like the weather field (the layer is the nearest
+// integer to p.z).
+struct LandCoverSource {
+  LayeredSource water;
+  LayeredSource urban;
+};
+using LandCoverTexture = LandCoverSource;
+inline vec4 texture(IN(LandCoverSource) land, vec3 p) {
+  const int layer = static_cast<int>(std::floor(p.z + 0.5f));
+  return vec4(land.water.sample(vec2(p.x, p.y), layer), land.urban.sample(vec2(p.x, p.y), layer), 0.0f, 0.0f);
+}
+
 // The textures of cloud_march.glsl in host memory, held together for the tests: the noise
 // volume, the weather field, the ground's height field and ceiling, the convective clouds'
 // volumes and the layers' shadow maps (the marcher's functions take each by name).
@@ -124,6 +138,7 @@ struct MarchSources {
   VolumeSource noise;
   LayeredSource weather;
   TerrainSource terrain;
+  LandCoverSource land;  // none by default (TerrainParams::land 0 never samples it)
   ConvectiveSource convective;
   // The shadow maps (cloud_march.glsl's layer_shadows): one layer per map; none by default.
   LayeredSource shadows;

@@ -103,6 +103,12 @@ void set_uniform(const gpu::ComputeProgram& program, const std::string& name, co
   program.set(name + ".terrain.top", params.terrain.top);
   program.set(name + ".terrain.texel", params.terrain.texel);
   program.set(name + ".terrain.reach", params.terrain.reach);
+  program.set(name + ".terrain.land", params.terrain.land);
+  program.set(name + ".terrain.land_near", params.terrain.land_near);
+  program.set(name + ".terrain.land_far", params.terrain.land_far);
+  program.set(name + ".terrain.land_texels", params.terrain.land_texels);
+  program.set(name + ".terrain.snow_line", params.terrain.snow_line);
+  program.set(name + ".terrain.crop_stage", params.terrain.crop_stage);
   for (int i = 0; i < MAX_CONVECTIVE; ++i) {
     const ConvectiveParams& c = params.convective[i];
     const std::string cloud = name + ".convective[" + std::to_string(i) + "].";

@@ -83,6 +83,12 @@ MarchParams probe_march_params() {
   m.terrain.top = 0.0f;
   m.terrain.texel = 1.0f;
   m.terrain.reach = 0.0f;
+  m.terrain.land = 0;  // no land cover (tests/probes/land_cover.glsl probes it)
+  m.terrain.land_near = 1.0f;
+  m.terrain.land_far = 1.0f;
+  m.terrain.land_texels = 1.0f;
+  m.terrain.snow_line = 2500.0f;
+  m.terrain.crop_stage = 1.0f;
   // One convective cloud 20 km north, turned to (0.6, 0.8); marched only by PROBE_CONVECTIVE_AT to
   // PROBE_MARCH_CONVECTIVE_INTERVAL.
   m.convective_count = 0;
@@ -100,7 +106,8 @@ MarchParams probe_march_params() {
 
 // x[0] = (function, a, b, c), x[1] = a point, x[2] = a direction, x[3] = further numbers.
 vec4 probe_cloud_march(mat4 x, IN(NoiseVolume) noise_volume, IN(WeatherField) weather_field,
-                       IN(TerrainTexture) terrain_heights, IN(ConvectiveVolumes) convective_volumes,
+                       IN(TerrainTexture) terrain_heights, IN(LandCoverTexture) land_cover,
+                       IN(ConvectiveVolumes) convective_volumes,
                        IN(ShadowMaps) layer_shadows, IN(ShadowMaps) sky_shadow) {
   int f = int(x[0].x);
   MarchParams m = probe_march_params();
@@ -141,7 +148,8 @@ vec4 probe_cloud_march(mat4 x, IN(NoiseVolume) noise_volume, IN(WeatherField) we
     int loops = 0;
     float ground = 0.0f;
     vec4 pixel = render_pixel(ivec2(int(x[3].x), int(x[3].y)), ivec2(16, 9), m, loops, ground, noise_volume,
-                              weather_field, terrain_heights, convective_volumes, layer_shadows, sky_shadow);
+                              weather_field, terrain_heights, land_cover, convective_volumes, layer_shadows,
+                              sky_shadow);
     return loop_limited(loops) ? vec4(-1.0f) : pixel;
   }
   if (f == PROBE_VIEW_RAY_END) {
@@ -253,7 +261,7 @@ vec4 probe_cloud_march(mat4 x, IN(NoiseVolume) noise_volume, IN(WeatherField) we
 #ifndef __cplusplus
 // The GPU probe passes x alone: the renderer's textures at their units.
 vec4 probe_cloud_march(mat4 x) {
-  return probe_cloud_march(x, noise_volume, weather_field, terrain_heights, convective_volumes, layer_shadows,
+  return probe_cloud_march(x, noise_volume, weather_field, terrain_heights, land_cover, convective_volumes, layer_shadows,
                            sky_shadow);
 }
 #endif

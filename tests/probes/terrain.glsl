@@ -4,8 +4,7 @@ const int PROBE_TERRAIN_PLANE = 0;
 const int PROBE_TERRAIN_ALTITUDE = 1;  // terrain_altitude, terrain_clearance, terrain_ceiling
 const int PROBE_TERRAIN_HIT = 2;
 const int PROBE_TERRAIN_NORMAL = 3;
-const int PROBE_TERRAIN_ALBEDO = 4;
-const int PROBE_TERRAIN_SUNLIT = 5;  // terrain_sunlit at terrain_normal
+const int PROBE_TERRAIN_SUNLIT = 4;  // terrain_sunlit at terrain_normal
 #ifndef __cplusplus
 layout(binding = 4) uniform sampler2D terrain_heights;
 #include "../lib/terrain.glsl"
@@ -19,6 +18,12 @@ TerrainParams probe_terrain_params() {
   t.top = 1201.0f;
   t.texel = 5000.0f;
   t.reach = 5000.0f;  // a ceiling window of 3 texels (the test's regional::terrain_ceilings)
+  t.land = 0;  // no land cover (tests/probes/land_cover.glsl probes it)
+  t.land_near = 1.0f;
+  t.land_far = 1.0f;
+  t.land_texels = 1.0f;
+  t.snow_line = 2500.0f;
+  t.crop_stage = 1.0f;
   return t;
 }
 
@@ -42,14 +47,12 @@ vec4 probe_terrain(mat4 x, IN(TerrainTexture) terrain) {
     return vec4(s, float(loops), 0.0f, 0.0f);
   }
   if (f == PROBE_TERRAIN_NORMAL) return vec4(terrain_normal(q, earth_radius, t, terrain), 0.0f);
-  if (f == PROBE_TERRAIN_SUNLIT) {
-    int loops = 0;
-    vec3 normal = terrain_normal(q, earth_radius, t, terrain);
-    // Called before the vector is built: C++ leaves the order of a constructor's arguments open.
-    float sunlit = terrain_sunlit(q, normal, d, earth_radius, t, loops, terrain);
-    return vec4(sunlit, float(loops), 0.0f, 0.0f);
-  }
-  return vec4(terrain_albedo(x[0].y, d, vec3(0.0f, 0.0f, 1.0f)), 0.0f);  // PROBE_TERRAIN_ALBEDO
+  // PROBE_TERRAIN_SUNLIT
+  int loops = 0;
+  vec3 normal = terrain_normal(q, earth_radius, t, terrain);
+  // Called before the vector is built: C++ leaves the order of a constructor's arguments open.
+  float sunlit = terrain_sunlit(q, normal, d, earth_radius, t, loops, terrain);
+  return vec4(sunlit, float(loops), 0.0f, 0.0f);
 }
 
 #ifndef __cplusplus

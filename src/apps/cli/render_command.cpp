@@ -72,6 +72,10 @@ int run_render(const std::vector<std::string>& arguments) {
   options.bind(s::resolution_divisor, &divisor);
   std::string terrain;
   options.bind(s::terrain, &terrain);
+  std::string land_cover;
+  options.bind(s::land_cover, &land_cover);
+  double terrain_detail = regional::Scene{}.terrain_detail;
+  options.bind(s::terrain_detail, &terrain_detail);
   double fog_top = regional::Scene{}.fog_top_m;
   options.bind(s::fog_top, &fog_top);
   double powder = regional::Scene{}.powder;
@@ -104,8 +108,8 @@ int run_render(const std::vector<std::string>& arguments) {
     if (options.given(s::pitch)) orbit.pitch = scene_options.pitch();
     if (options.given(s::fov)) orbit.fov = scene_options.fov();
     for (const auto* ground_only :
-         {&s::at, &s::scene_path, &s::panorama, &s::weather, &s::terrain, &s::fog_top, &s::powder, &s::quality,
-          &s::view_steps, &s::light_steps, &s::frames, &s::resolution_divisor})
+         {&s::at, &s::scene_path, &s::panorama, &s::weather, &s::terrain, &s::land_cover, &s::terrain_detail,
+          &s::fog_top, &s::powder, &s::quality, &s::view_steps, &s::light_steps, &s::frames, &s::resolution_divisor})
       if (options.given(*ground_only))
         throw UsageError(ground_only->option() + ": not taken by --view orbit (it belongs to the ground views)");
     return run_orbit_render(orbit);
@@ -126,6 +130,11 @@ int run_render(const std::vector<std::string>& arguments) {
     typed["resolution_divisor"] = "--resolution-divisor";
   }
   if (options.given(s::terrain)) scene.terrain = terrain;
+  if (options.given(s::land_cover)) scene.land_cover = land_cover;
+  if (options.given(s::terrain_detail)) {
+    scene.terrain_detail = terrain_detail;
+    typed["terrain_detail"] = "--terrain-detail";
+  }
   if (options.given(s::fog_top)) {
     scene.fog_top_m = fog_top;
     typed["fog_top"] = "--fog-top";
@@ -196,8 +205,11 @@ int run_render(const std::vector<std::string>& arguments) {
   const std::string terrain_field =
       options.given(s::terrain) || scene_file.empty() ? s::terrain.option() : scene_file + ": 'terrain'";
   const render::Camera& camera = prepared.partial.camera;
-  prepared.terrain = io::load_terrain(scene.terrain, camera.latitude_deg, camera.longitude_deg, camera.height_m,
-                                      &terrain_warning, terrain_field);
+  const std::string land_field =
+      options.given(s::land_cover) || scene_file.empty() ? s::land_cover.option() : scene_file + ": 'land_cover'";
+  prepared.terrain =
+      io::load_terrain(scene.terrain, camera.latitude_deg, camera.longitude_deg, camera.height_m, &terrain_warning,
+                       terrain_field, {scene.land_cover, land_field, scene.terrain_detail});
   if (!terrain_warning.empty()) std::cerr << "warning: " << terrain_warning << "\n";
   progress.update(1, "clouds");
   // The noise volume from the disk cache when a layer is marched (the same bits as making it).

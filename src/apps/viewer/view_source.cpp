@@ -61,14 +61,16 @@ render::RenderResult GroundSource::render(const ViewState& state, int width, int
                         gpu::time_pass([&] { prepared = render::prepare_scene(scene, stations_, cover_); }));
   std::ostringstream terrain_key;
   terrain_key.precision(17);
-  terrain_key << scene.terrain << ' ' << prepared.partial.camera.latitude_deg << ' '
-              << prepared.partial.camera.longitude_deg << ' ' << prepared.partial.camera.height_m;
+  terrain_key << scene.terrain << ' ' << scene.land_cover << ' ' << scene.terrain_detail << ' '
+              << prepared.partial.camera.latitude_deg << ' ' << prepared.partial.camera.longitude_deg << ' '
+              << prepared.partial.camera.height_m;
   if (terrain_key.str() != terrain_key_) {
     std::string warning;
     setup_ms.emplace_back("terrain", gpu::time_pass([&] {
                             terrain_ = io::load_terrain(scene.terrain, prepared.partial.camera.latitude_deg,
                                                         prepared.partial.camera.longitude_deg,
-                                                        prepared.partial.camera.height_m, &warning);
+                                                        prepared.partial.camera.height_m, &warning, "--terrain",
+                                                        {scene.land_cover, "--land-cover", scene.terrain_detail});
                           }));
     // Said once per place, not once per frame.
     if (!warning.empty()) std::cerr << "warning: " << warning << "\n";
