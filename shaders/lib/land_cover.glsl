@@ -120,18 +120,26 @@ vec3 urban_albedo(vec2 xy, float footprint) {
 // forest is about a quarter of the land) and the tree line ends. The edge widens with the
 // footprint, so distant forest fades to its share.
 float forest_cover(vec2 xy, float altitude, float slope, float footprint) {
-  float n = 0.55f * land_noise(xy, FOREST_SCALE, 1u) + 0.3f * land_noise(xy, FOREST_SCALE / 3.7f, 2u) +
-            0.15f * land_noise(xy, FOREST_SCALE / 13.1f, 3u);
+  float tree_line = clamp((TREE_LINE - altitude) / 200.0f, 0.0f, 1.0f);
+  if (tree_line <= 0.0f) return 0.0f;
+  // The finer octaves fade to their mean (0) like the patterns, and cost nothing then.
+  float n = 0.55f * land_noise(xy, FOREST_SCALE, 1u);
+  float fine = pattern_detail(footprint, FOREST_SCALE / 3.7f);
+  if (fine > 0.0f) n += fine * 0.3f * land_noise(xy, FOREST_SCALE / 3.7f, 2u);
+  float finest = pattern_detail(footprint, FOREST_SCALE / 13.1f);
+  if (finest > 0.0f) n += finest * 0.15f * land_noise(xy, FOREST_SCALE / 13.1f, 3u);
   float montane = clamp((altitude - 800.0f) / 300.0f, 0.0f, 1.0f) * clamp((1900.0f - altitude) / 400.0f, 0.0f, 1.0f);
   float threshold = 0.17f - 1.5f * slope - 0.12f * montane;
   float edge = 0.02f + 0.5f * footprint / FOREST_SCALE;
   float forest = smoothstep(threshold - edge, threshold + edge, n);
-  return forest * clamp((TREE_LINE - altitude) / 200.0f, 0.0f, 1.0f);
+  return forest * tree_line;
 }
 
 // Snow's share: above the snow line (raised and lowered by up to 150 m by the noise), on
 // slopes under about 45 degrees.
 float snow_cover(vec2 xy, float altitude, float slope, float snow_line) {
+  // The noise moves the line by at most 150 PERLIN_BOUND m: no snow further below it.
+  if (altitude <= snow_line - 150.0f * PERLIN_BOUND) return 0.0f;
   float line = snow_line + 150.0f * land_noise(xy, 2000.0f, 4u);
   return clamp((altitude - line) / 300.0f, 0.0f, 1.0f) * (1.0f - clamp((slope - 0.25f) / 0.15f, 0.0f, 1.0f));
 }
@@ -140,9 +148,13 @@ float snow_cover(vec2 xy, float altitude, float slope, float snow_line) {
 // (tussocks, bushes, furrows), each octave fading like the patterns as the footprint grows.
 float ground_texture(vec2 xy, float footprint) {
   float t = 0.0f;
-  t += 0.10f * pattern_detail(footprint, 60.0f) * land_noise(xy, 60.0f, 5u);
-  t += 0.07f * pattern_detail(footprint, 12.0f) * land_noise(xy, 12.0f, 6u);
-  t += 0.05f * pattern_detail(footprint, 2.5f) * land_noise(xy, 2.5f, 7u);
+  float coarse = pattern_detail(footprint, 60.0f);
+  if (coarse <= 0.0f) return 1.0f;  // the finer octaves are gone too
+  t += 0.10f * coarse * land_noise(xy, 60.0f, 5u);
+  float middle = pattern_detail(footprint, 12.0f);
+  if (middle > 0.0f) t += 0.07f * middle * land_noise(xy, 12.0f, 6u);
+  float fine = pattern_detail(footprint, 2.5f);
+  if (fine > 0.0f) t += 0.05f * fine * land_noise(xy, 2.5f, 7u);
   return 1.0f + t;
 }
 

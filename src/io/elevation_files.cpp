@@ -6,6 +6,8 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <mutex>
+#include <sstream>
 
 #include "core/error.hpp"
 #include "core/input_file.hpp"
@@ -90,10 +92,11 @@ regional::ElevationRaster read_etopo5(const std::string& path, double south_deg,
   return raster;
 }
 
-std::shared_ptr<const regional::TerrainGrid> load_terrain(const std::string& setting, double latitude_deg,
+namespace {
+
+std::shared_ptr<const regional::TerrainGrid> make_terrain(const std::string& setting, double latitude_deg,
                                                           double longitude_deg, double height_m, std::string* warning,
                                                           const std::string& field, const GroundOptions& options) {
-  if (setting == "flat") return nullptr;
   std::string path = setting;
   if (setting == "etopo5") {
     path = etopo5_default_path;
@@ -132,6 +135,36 @@ std::shared_ptr<const regional::TerrainGrid> load_terrain(const std::string& set
                std::to_string(int(std::lround(ground))) + " m, " + raster.source +
                " smooths valleys): raise its height or use --terrain flat";
   return grid;
+}
+
+}  // namespace
+
+std::shared_ptr<const regional::TerrainGrid> load_terrain(const std::string& setting, double latitude_deg,
+                                                          double longitude_deg, double height_m, std::string* warning,
+                                                          const std::string& field, const GroundOptions& options) {
+  if (setting == "flat") return nullptr;
+  // The last ground made is kept for the process: the viewer's sources and the tests ask for
+  // the same place again and again (about 1.4 s each on two cores).
+  static std::mutex mutex;
+  static std::string last_key, last_warning;
+  static std::shared_ptr<const regional::TerrainGrid> last;
+  std::ostringstream key;
+  key.precision(17);
+  key << setting << '\n'
+      << latitude_deg << ' ' << longitude_deg << ' ' << height_m << '\n'
+      << field << '\n'
+      << options.land_cover << '\n'
+      << options.land_field << '\n'
+      << options.detail;
+  const std::lock_guard<std::mutex> lock(mutex);
+  if (!last || key.str() != last_key) {
+    std::string made_warning;
+    last = make_terrain(setting, latitude_deg, longitude_deg, height_m, &made_warning, field, options);
+    last_key = key.str();
+    last_warning = made_warning;
+  }
+  if (warning) *warning = last_warning;
+  return last;
 }
 
 }  // namespace nephele::io
