@@ -68,6 +68,16 @@ GLuint make_texture(GLenum target) {
 
 // GL_LINEAR within and between texels, clamped to the edge in s and t: how the marcher's 2D
 // textures are read (their C++ twins filter the same way, hooks.hpp).
+// Two planes of floats interleaved as the red and green channels of one texture.
+std::vector<float> red_green(const std::vector<float>& red, const std::vector<float>& green) {
+  std::vector<float> texels(2 * red.size());
+  for (size_t k = 0; k < red.size(); ++k) {
+    texels[2 * k] = red[k];
+    texels[2 * k + 1] = green[k];
+  }
+  return texels;
+}
+
 void filter_linear_clamped(GLuint texture) {
   glTextureParameteri(texture, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
   glTextureParameteri(texture, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
@@ -372,25 +382,17 @@ RenderResult render_clouds(const Camera& camera, const std::vector<regional::Clo
     const regional::TerrainGrid& t = *settings.terrain;
     terrain = make_texture(GL_TEXTURE_2D);
     // Heights in red, ceilings in green (terrain.glsl's TerrainTexture).
-    std::vector<float> texels(2 * t.altitudes.size());
-    for (size_t k = 0; k < t.altitudes.size(); ++k) {
-      texels[2 * k] = t.altitudes[k];
-      texels[2 * k + 1] = t.ceilings[k];
-    }
+    const std::vector<float> texels = red_green(t.altitudes, t.ceilings);
     glTextureStorage2D(terrain, 1, GL_RG32F, t.size, t.size);
     glTextureSubImage2D(terrain, 0, 0, 0, t.size, t.size, GL_RG, GL_FLOAT, texels.data());
     filter_linear_clamped(terrain);
     result.passes.push_back("terrain (" + t.source + ")");
     if (t.land && !t.land->empty()) {
       // Water distance in red, built-up fraction in green (land_cover.glsl), a layer per level;
-      // half floats keep the distances to within a few centimetres of the band.
+      // half floats keep the distances within 1 m out to the far level's band (2.3 km).
       const regional::LandCoverGrid& land = *t.land;
       land_cover = make_texture(GL_TEXTURE_2D_ARRAY);
-      std::vector<float> rg(2 * land.water.size());
-      for (size_t k = 0; k < land.water.size(); ++k) {
-        rg[2 * k] = land.water[k];
-        rg[2 * k + 1] = land.urban[k];
-      }
+      const std::vector<float> rg = red_green(land.water, land.urban);
       glTextureStorage3D(land_cover, 1, GL_RG16F, land.size, land.size, regional::land_cover_levels);
       glTextureSubImage3D(land_cover, 0, 0, 0, 0, land.size, land.size, regional::land_cover_levels, GL_RG, GL_FLOAT,
                           rg.data());
