@@ -37,29 +37,29 @@ const float FOREST_SCALE = 1500.0f;  // m, the largest patches of forest
 const float TREE_LINE = 1900.0f;     // m above sea level, the northern Alps' upper forest limit
 const float LAKE_WIND = 3.0f;        // m/s, the wind that roughens the lakes (sun_glint.glsl)
 
-// The land cover at a horizontal coordinate: (water distance, built-up fraction), from the near
-// level where the point lies inside it, else the far one; far from any water and unbuilt
-// outside both and without land cover.
-vec2 land_sample(vec2 xy, IN(TerrainParams) t, IN(LandCoverTexture) land) {
-  if (t.land == 0) return vec2(1.0e4f, 0.0f);
+// The land cover at a horizontal coordinate: (water distance, built-up fraction, the band within
+// which the distance is exact: 8 texels of the level read), from the near level where the point
+// lies inside it, else the far one; far from any water and unbuilt outside both and without
+// land cover.
+vec3 land_sample(vec2 xy, IN(TerrainParams) t, IN(LandCoverTexture) land) {
+  if (t.land == 0) return vec3(1.0e4f, 0.0f, 1.0e4f);
   float reach = max(abs(xy.x), abs(xy.y));
   // A texel short of the near level's edge, where its bilinear taps are still its own.
   float near_inside = t.land_near * (1.0f - 2.0f / t.land_texels);
-  if (reach < near_inside) return vec2(texture(land, vec3(0.5f + 0.5f * xy / t.land_near, 0.0f)));
-  if (reach < t.land_far) return vec2(texture(land, vec3(0.5f + 0.5f * xy / t.land_far, 1.0f)));
-  return vec2(1.0e4f, 0.0f);
+  float texel_per_extent = 2.0f / t.land_texels;
+  if (reach < near_inside)
+    return vec3(vec2(texture(land, vec3(0.5f + 0.5f * xy / t.land_near, 0.0f))), 8.0f * texel_per_extent * t.land_near);
+  if (reach < t.land_far)
+    return vec3(vec2(texture(land, vec3(0.5f + 0.5f * xy / t.land_far, 1.0f))), 8.0f * texel_per_extent * t.land_far);
+  return vec3(1.0e4f, 0.0f, 1.0e4f);
 }
 
-// The share of a pixel's footprint (m across) that lies in the water: the signed distance's
-// zero contour drawn with an edge as wide as the footprint, but never wider than half the
-// level's exact band (8 texels), beyond which the distance is clamped.
-float water_coverage(vec2 xy, float footprint, IN(TerrainParams) t, IN(LandCoverTexture) land) {
-  vec2 s = land_sample(xy, t, land);
-  float reach = max(abs(xy.x), abs(xy.y));
-  float extent = reach < t.land_near ? t.land_near : t.land_far;
-  float band = 8.0f * 2.0f * extent / t.land_texels;
-  float edge = clamp(footprint, 1.0f, 0.5f * band);
-  return clamp(0.5f - s.x / edge, 0.0f, 1.0f);
+// The share of a pixel's footprint (m across) that lies in the water, from a land_sample: the
+// signed distance's zero contour drawn with an edge as wide as the footprint, but never wider
+// than half the level's exact band, beyond which the distance is clamped.
+float water_coverage(vec3 cover, float footprint) {
+  float edge = clamp(footprint, 1.0f, 0.5f * cover.z);
+  return clamp(0.5f - cover.x / edge, 0.0f, 1.0f);
 }
 
 // How much of the detail of a pattern of period `size` a footprint (m) keeps: 1 when the
@@ -171,7 +171,7 @@ GroundSurface ground_surface(vec2 xy, float altitude, vec3 normal, vec3 up, floa
   float slope = 1.0f - dot(normal, up);  // 0 flat, 0.29 at 45 degrees
   vec3 ground =
       mix(field_albedo(xy, footprint, t.crop_stage), LAND_FOREST, forest_cover(xy, altitude, slope, footprint));
-  vec2 cover = land_sample(xy, t, land);
+  vec3 cover = land_sample(xy, t, land);
   ground = mix(ground, urban_albedo(xy, footprint), cover.y);
   // Rock above the meadows of the Alps and on their steep slopes (below about 1000 m steep
   // slopes are wooded: the Plateau's ravines), snow above the snow line.
@@ -182,7 +182,7 @@ GroundSurface ground_surface(vec2 xy, float altitude, vec3 normal, vec3 up, floa
   ground *= ground_texture(xy, footprint);
   GroundSurface surface;
   surface.albedo = ground;
-  surface.water = t.land != 0 ? water_coverage(xy, footprint, t, land) : 0.0f;
+  surface.water = t.land != 0 ? water_coverage(cover, footprint) : 0.0f;
   return surface;
 }
 

@@ -133,6 +133,8 @@ LandCoverGrid land_cover_grid(double latitude_deg, double longitude_deg, double 
   for (const GeoPolygon& lake : features.lakes) lakes.push_back(project(lake.rings, plane));
   std::vector<Ring> rivers;
   for (const GeoLine& river : features.rivers) rivers.push_back(project({river.points}, plane)[0]);
+  std::vector<std::vector<Ring>> municipalities;
+  for (const Settlement& s : features.settlements) municipalities.push_back(project(s.municipality.rings, plane));
 
   for (int level = 0; level < land_cover_levels; ++level) {
     const Lattice lattice{size, grid.extent_m[level], grid.texel_m(level)};
@@ -176,10 +178,11 @@ LandCoverGrid land_cover_grid(double latitude_deg, double longitude_deg, double 
     }
     // Built-up: inside the town's municipality, full within 60 % of its radius, none beyond it.
     std::fill(urban, urban + n, 0.0f);
-    for (const Settlement& s : features.settlements) {
-      const auto [cx, cy] = plane.of(s.town.centre.latitude_deg, s.town.centre.longitude_deg);
-      const double radius = s.town.radius_m;
-      fill_rings(project(s.municipality.rings, plane), lattice, [&](int i, int j) {
+    for (size_t t = 0; t < features.settlements.size(); ++t) {
+      const Town& town = features.settlements[t].town;
+      const auto [cx, cy] = plane.of(town.centre.latitude_deg, town.centre.longitude_deg);
+      const double radius = town.radius_m;
+      fill_rings(municipalities[t], lattice, [&](int i, int j) {
         const double d = std::hypot(lattice.centre(i) - cx, lattice.centre(j) - cy);
         const float f = static_cast<float>(std::clamp((radius - d) / (0.4 * radius), 0.0, 1.0));
         float& u = urban[static_cast<size_t>(j) * size + i];

@@ -12,15 +12,21 @@
 
 namespace nephele::regional {
 
-std::optional<double> ElevationRaster::at(double latitude_deg, double longitude_deg) const {
+std::optional<ElevationRaster::Cell> ElevationRaster::cell(double latitude_deg, double longitude_deg) const {
   const double v = (latitude_deg - south_deg) / step_deg;
   double u = std::fmod(longitude_deg - west_deg, 360.0);
   if (u < 0) u += 360.0;
   u /= step_deg;
   if (v < 0 || v > rows - 1 || u < 0 || u > columns - 1) return std::nullopt;
-  const int r = std::min(static_cast<int>(v), rows - 2), c = std::min(static_cast<int>(u), columns - 2);
-  const double fv = v - r, fu = u - c;
-  auto h = [&](int rr, int cc) { return double(heights[static_cast<size_t>(rr) * columns + cc]); };
+  return Cell{std::min(static_cast<int>(v), rows - 2), std::min(static_cast<int>(u), columns - 2), u, v};
+}
+
+std::optional<double> ElevationRaster::at(double latitude_deg, double longitude_deg) const {
+  const std::optional<Cell> k = cell(latitude_deg, longitude_deg);
+  if (!k) return std::nullopt;
+  const int r = k->row, c = k->column;
+  const double fv = k->v - r, fu = k->u - c;
+  auto h = [&](int rr, int cc) { return double(sample(rr, cc)); };
   return (1 - fv) * ((1 - fu) * h(r, c) + fu * h(r, c + 1)) + fv * ((1 - fu) * h(r + 1, c) + fu * h(r + 1, c + 1));
 }
 
@@ -97,9 +103,7 @@ TerrainDetail terrain_detail(const ElevationRaster& raster, double south_deg, do
                              double east_deg, double strength) {
   TerrainDetail detail;
   detail.strength = strength;
-  auto h = [&](int r, int c) {
-    return std::max(double(raster.heights[static_cast<size_t>(r) * raster.columns + c]), 0.0);
-  };
+  auto h = [&](int r, int c) { return std::max(double(raster.sample(r, c)), 0.0); };
   double sum1 = 0, sum2 = 0, ranges = 0;
   long n1 = 0, n2 = 0, cells = 0;
   for (int r = 0; r + 2 < raster.rows; ++r) {
@@ -155,15 +159,11 @@ double relief_elevation(const ElevationRaster& raster, const TerrainDetail& deta
                         double longitude_deg) {
   const double bilinear = std::max(raster.at(latitude_deg, longitude_deg).value_or(0.0), 0.0);
   if (detail.strength <= 0) return bilinear;
-  const double v = (latitude_deg - raster.south_deg) / raster.step_deg;
-  double u = std::fmod(longitude_deg - raster.west_deg, 360.0);
-  if (u < 0) u += 360.0;
-  u /= raster.step_deg;
-  if (v < 0 || v > raster.rows - 1 || u < 0 || u > raster.columns - 1) return bilinear;
-  const int r = std::min(static_cast<int>(v), raster.rows - 2), c = std::min(static_cast<int>(u), raster.columns - 2);
-  auto h = [&](int rr, int cc) {
-    return std::max(double(raster.heights[static_cast<size_t>(rr) * raster.columns + cc]), 0.0);
-  };
+  const std::optional<ElevationRaster::Cell> cell = raster.cell(latitude_deg, longitude_deg);
+  if (!cell) return bilinear;
+  const int r = cell->row, c = cell->column;
+  const double u = cell->u, v = cell->v;
+  auto h = [&](int rr, int cc) { return std::max(double(raster.sample(rr, cc)), 0.0); };
   // A sample is a summit when it is higher than its eight neighbours (those inside the raster).
   auto summit = [&](int rr, int cc) {
     for (int dr = -1; dr <= 1; ++dr)

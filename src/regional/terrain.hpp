@@ -25,6 +25,14 @@ struct ElevationRaster {
   // Bilinear between the four samples around the point (longitude taken modulo 360);
   // nullopt outside the lattice.
   std::optional<double> at(double latitude_deg, double longitude_deg) const;
+  // The lattice cell holding a point: its south-west sample (row, column) and the point's
+  // lattice coordinates u (columns from west_deg), v (rows from south_deg); nullopt outside.
+  struct Cell {
+    int row, column;
+    double u, v;
+  };
+  std::optional<Cell> cell(double latitude_deg, double longitude_deg) const;
+  float sample(int row, int column) const { return heights[static_cast<size_t>(row) * columns + column]; }
 };
 
 // The renderer's horizontal coordinate (m east and north, docs/terrain.md, Frame) of geographic

@@ -286,8 +286,9 @@ glsl::MarchParams march_params(const Camera& camera, const std::vector<regional:
   m.pixel_angle = static_cast<float>(pixel_angle);
   m.noise_texels = static_cast<float>(settings.noise_size);
   m.terrain = settings.terrain ? regional::terrain_params(*settings.terrain) : regional::no_terrain_params();
-  m.terrain.snow_line = static_cast<float>(regional::seasonal_snow_line_m(core::day_of_year(unix_seconds)));
-  m.terrain.crop_stage = static_cast<float>(regional::seasonal_crop_stage(core::day_of_year(unix_seconds)));
+  const int day = core::day_of_year(unix_seconds);
+  m.terrain.snow_line = static_cast<float>(regional::seasonal_snow_line_m(day));
+  m.terrain.crop_stage = static_cast<float>(regional::seasonal_crop_stage(day));
   m.convective_count = convective != nullptr ? convective->count() : 0;
   for (int c = 0; c < m.convective_count; ++c) m.convective[c] = convective->params(c);
   // The sky's map (crepuscular rays): the depth through all clouds from the lowest base.

@@ -35,8 +35,8 @@ vec4 probe_land_cover(mat4 x, IN(LandCoverTexture) land) {
   vec2 xy = vec2(x[1]);
   float footprint = x[0].y;
   if (f == PROBE_LAND_SAMPLE) {
-    vec2 s = land_sample(xy, t, land);
-    return vec4(s, water_coverage(xy, footprint, t, land), 0.0f);
+    vec3 s = land_sample(xy, t, land);
+    return vec4(s.x, s.y, water_coverage(s, footprint), s.z);
   }
   if (f == PROBE_LAND_PATTERNS) return vec4(field_albedo(xy, footprint, x[0].z), crop_albedo(x[0].z).y);
   if (f == PROBE_LAND_URBAN) return vec4(urban_albedo(xy, footprint), ground_texture(xy, footprint));
