@@ -196,6 +196,52 @@ TEST_CASE("an overcast layer shades the ground below it and no layer shades what
                            sources.convective) == 0.0f);
 }
 
+TEST_CASE("the ground in a cloud's shadow keeps the sky's light", "[render][shadow]") {
+  test::test_context();
+  const double time = shadow_test_time();
+  const WeatherField field = overcast_field({CoverageChannel::low});
+  render::RenderSettings settings;
+  settings.noise_size = 16;
+  settings.shadow_map_size = 0;  // the sky's light is what is tested, not the crepuscular rays
+  const render::NoiseVolume noise(settings.noise_size, settings.seed);
+  const glsl::MarchSources sources = host_sources(noise, field);
+  render::Camera cam = camera(false);
+  cam.pitch_deg = -30;  // the ground 1.7 km ahead, under the sheet, which the view does not cross
+  const glsl::MarchParams shaded =
+      render::march_params(cam, {overcast_sheet(CoverageChannel::low, 1500, "test")}, field, time, settings);
+  const glsl::MarchParams clear = render::march_params(cam, {}, field, time, settings);
+  auto pixel = [&](const glsl::MarchParams& params) {
+    int loops = 0;
+    float ground_distance = 0;
+    const glm::vec4 v =
+        glsl::render_pixel(glm::ivec2(cam.width / 2, cam.height / 2), glm::ivec2(cam.width, cam.height), params, loops,
+                           ground_distance, sources.noise, sources.weather, sources.terrain, sources.land,
+                           sources.convective, sources.shadows, sources.sky_shadow);
+    REQUIRE(ground_distance > 0.0f);
+    return glm::vec3(v);
+  };
+  // The sheet's optical depth (>= 6.3) leaves the shaded ground at most e^-6.3 of the sun: its
+  // light is the sky's. The sky's irradiance at the ground against the direct sun's: at least
+  // Rayleigh's downward half of the single scattering of a thin atmosphere, 0.5 tau_R(h) / mu
+  // (green, tau_R = 13.558e-6 /m x 8 km x e^(-h / 8 km), mu the sun's sine), less the
+  // attenuation e^(-tau / mu) < 20 % on the way.
+  const glm::vec3 up(0.0f, 0.0f, shaded.earth_radius + shaded.camera_altitude);
+  const float mu = shaded.sun.z;
+  const float direct =
+      glsl::solar_irradiance().y * glsl::transmittance_to_space(up, shaded.sun, shaded.earth_radius).y * mu;
+  const float tau_rayleigh = 13.558e-6f * 8000.0f * std::exp(-shaded.camera_altitude / 8000.0f);
+  INFO("sun " << std::asin(mu) * 180 / M_PI << " deg, sky " << shaded.ground_ambient.y << " W m^-2 nm^-1, direct "
+              << direct);
+  CHECK(shaded.ground_ambient.y / direct >= 0.8f * 0.5f * tau_rayleigh / mu);
+  // The shaded ground seen from the camera keeps that share of the sunlit ground's radiance
+  // (the short path's air adds to both; 10 % for the sheet's remaining sunlight and rounding).
+  const glm::vec3 dark = pixel(shaded), lit = pixel(clear);
+  const float share = shaded.ground_ambient.y / (direct + shaded.ground_ambient.y);
+  INFO("shaded " << dark.y << ", sunlit " << lit.y << ", sky's share " << share);
+  CHECK(dark.y >= 0.9f * share * lit.y);
+  CHECK(dark.y < lit.y);
+}
+
 TEST_CASE("a layer under an overcast layer reads the depth through it from its shadow map and gets less sunlight",
           "[render][shadow]") {
   test::test_context();

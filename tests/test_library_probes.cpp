@@ -553,12 +553,15 @@ TEST_CASE("implicit_field.glsl on the GPU agrees with the CPU", "[probe][model]"
   // |p| <= 2, frequency <= 4, lacunarity 2 over 3 octaves); a field value below 2 times
   // np <= 1 times that, plus the field's and the blend's arithmetic.
   constexpr float kTurbulence = 1.2f * kNoiseMean + kArithmetic;
-  constexpr float kBlended = 2 * kTurbulence + kField + 4 * kArithmetic;
+  // The erosion f' = (f - k) / (1 - k), k = e (1 - min(N, 1)) with e = 1/2 (the probe's):
+  // df'/df = 1 / (1 - k) <= 2 and |df'/dk| = (1 - f) / (1 - k)^2 <= 4, dk/dN = e.
+  constexpr float kBlended = 2 * (2 * kTurbulence + kField + 4 * kArithmetic) + 2 * kTurbulence + 4 * kArithmetic;
   Random r(31);
   std::vector<Case> cases;
-  const int functions[] = {PROBE_FIELD_PARTS, PROBE_PRIMITIVE_FIELD, PROBE_MODEL_TURBULENCE, PROBE_MODEL_BLENDS};
-  for (int k = 0; k < 96; ++k) {
-    const int f = functions[k % 4];
+  const int functions[] = {PROBE_FIELD_PARTS, PROBE_PRIMITIVE_FIELD, PROBE_MODEL_TURBULENCE, PROBE_MODEL_BLENDS,
+                           PROBE_EROSION};
+  for (int k = 0; k < 120; ++k) {
+    const int f = functions[k % 5];
     const vec4 a = vec4(r(-1.0f, 1.0f), r(-1.0f, 1.0f), r(-1.0f, 1.0f), r(0.0f, 0.3f));
     const vec4 b = vec4(r(-1.0f, 1.0f), r(-1.0f, 1.0f), r(-1.0f, 1.0f), r(0.25f, 1.0f));
     const vec4 kind = vec4(r(0.5f, 1.0f), float(k / 4 % 2), r(0.5f, 4.0f), r(0.0f, 1.0f));
@@ -569,6 +572,18 @@ TEST_CASE("implicit_field.glsl on the GPU agrees with the CPU", "[probe][model]"
     if (f == PROBE_PRIMITIVE_FIELD) cases.push_back({arguments(f, r.v(-1.0f, 1.0f), a, b, kind), kField});
     if (f == PROBE_MODEL_TURBULENCE) cases.push_back({arguments(f, r.v(-2.0f, 2.0f), a, b, kind), kTurbulence});
     if (f == PROBE_MODEL_BLENDS) cases.push_back({arguments(f, r.v(-2.0f, 2.0f), a, b, kind), kBlended});
+    // Erosion e <= 1/2 of a field in [0, 1] (the derivatives above); the levels' smoothsteps
+    // over MODEL_LEVEL_EDGE = 0.01 have slopes up to 150, so a height's rounding (kArithmetic)
+    // moves them by 150 such; the turbulence limited to 1 to 6 cycles per unit, its fade a
+    // smoothstep of slope below 3 / limit in the octave's frequency (the same rounding each side).
+    if (f == PROBE_EROSION) {
+      const float base = r(0.0f, 0.25f);
+      const vec4 parts(r(0.0f, 1.0f), base, base + r(0.05f, 0.25f), 0.0f);
+      const vec4 erode(r(-0.1f, 1.1f), r(0.0f, 1.5f), r(0.0f, 0.5f), 0.0f);
+      const vec4 at(r(0.0f, 1.0f), r(-2.0f, 2.0f), r(-2.0f, 2.0f), r(-2.0f, 2.0f));
+      cases.push_back({arguments(f, k % 2 ? parts : erode, at, vec4(r(0.0f, 0.5f), r(1.0f, 6.0f), 0.0f, 0.0f), kind),
+                       150 * kArithmetic + kBlended});
+    }
   }
   compare("implicit_field", probe_implicit_field, cases);
 }
@@ -792,6 +807,26 @@ TEST_CASE("atmosphere.glsl on the GPU agrees with the CPU", "[probe]") {
       }
       cases.push_back({mid, kSkyRelative * std::max(a.x, std::max(a.y, a.z)) + kTranscendental});
     }
+  }
+  // The skylight's second-order term alone (the sun hidden) over a level path of 2 km at 500 m:
+  // constant coefficients to 3e-4 (the sphere lifts the path's end by d^2 / 2R = 0.3 m, a
+  // 2.6e-4 change of the Mie density), so the closed form beta_s L (1 - e^(-beta_e d)) / beta_e.
+  {
+    const vec3 up(0.0f, 0.0f, 1.0f);
+    const float skylight = 0.05f, length = 2000.0f, h = 500.0f;
+    const mat4 x =
+        arguments(PROBE_SKYLIGHT, vec4(earth_radius, 0.0f, skylight, 0.0f), vec4(up * (earth_radius + h), length),
+                  vec4(1.0f, 0.0f, 0.0f, 0.0f), vec4(normalize(vec3(0.3f, 0.2f, 0.9f)), 8.0f));
+    const vec4 got = probe_atmosphere(x);
+    const vec3 scattering = rayleigh_scattering() * std::exp(-h / RAYLEIGH_SCALE_HEIGHT) +
+                            vec3(MIE_SCATTERING * std::exp(-h / MIE_SCALE_HEIGHT));
+    const vec3 extinction = air_extinction(h);
+    for (int c = 0; c < 3; ++c) {
+      const float expected =
+          1e3f * scattering[c] * skylight * (1.0f - std::exp(-extinction[c] * length)) / extinction[c];
+      CHECK(got[c] == Approx(expected).epsilon(5e-4));
+    }
+    cases.push_back({x, kSkyRelative * std::max(got.x, std::max(got.y, got.z)) + kTranscendental});
   }
   compare("atmosphere", probe_atmosphere, cases);
 }
@@ -1214,6 +1249,17 @@ TEST_CASE("cloud_march.glsl on the GPU agrees with the CPU", "[probe][march]") {
   // to the axis (0.6, 0.8), from 1000 m up, cloud base 1500 m and top 6000 m, extinction 0.01 / m
   // at density 1; volume 0 of the stack above, 0.05 (i + 2 j + 3 k) (0 to 0.9), whose texels step
   // by 0.05, 0.1 and 0.15 along x, y and z, 4 texels per unit of the volume coordinates q.
+  // One sample a voxel of the finest volume (6000 m / 4 texels = 1500 m), VIEW_REFINE per coarse
+  // step, at most CONVECTIVE_MAX_STEPS; samples spaced evenly there, quadratically elsewhere.
+  for (const float span : {100.0f, 2999.0f, 3001.0f, 45000.0f, 1.0e7f}) {
+    const float t = r(0.0f, 1.0f);
+    const mat4 x = arguments(PROBE_CONVECTIVE_STEPS, vec4(span, t, 0, 0));
+    const vec4 got = cpu(x);
+    CHECK(got.x == float(std::min(CONVECTIVE_MAX_STEPS, int(std::ceil(span / (VIEW_REFINE * 1500.0f))))));
+    CHECK(got.y == t);
+    CHECK(got.z == t * t);
+    cases.push_back({x, 0.0f});
+  }
   MarchParams mc = probe_march_params();
   mc.convective_count = 1;
   const ConvectiveParams& cloud = mc.convective[0];

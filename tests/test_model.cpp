@@ -243,3 +243,100 @@ TEST_CASE("the preview pass agrees with its CPU twin and shows the cloud in the 
   CHECK(alpha(s.width / 2, s.height / 2) > 0.9f);  // the column, seen through its middle
   CHECK(alpha(0, 0) == 0.0f);                      // the sky beside the box
 }
+
+TEST_CASE("the gradient noise's mean absolute value is the PERLIN_MEAN_ABS that replaces faded octaves",
+          "[fast][model]") {
+  // 200000 points: the standard error is sd(|n|) / sqrt(n) = 0.156 / 447 = 3.5e-4; 4 of them.
+  std::mt19937 rng(12);
+  std::uniform_real_distribution<float> u(-500.0f, 500.0f);
+  const int n = 200000;
+  double sum = 0;
+  for (int i = 0; i < n; ++i)
+    sum += std::abs(perlin_noise(vec3(u(rng), u(rng), u(rng)), ivec3(0), uvec3(std::uint32_t(i % 31), 1u, 2u)));
+  CHECK(std::abs(sum / n - PERLIN_MEAN_ABS) < 4 * 3.5e-4);
+}
+
+TEST_CASE("erosion gives a point's outline lobes between R and R + I where eq. 6 alone keeps the ball R + I",
+          "[fast][model]") {
+  model::CloudModel m;
+  m.primitives = {model::Primitive{}};
+  model::Primitive& p = m.primitives[0];
+  p.radius = 0.1f;
+  p.influence = 0.15f;
+  // The outline along direction u: where the density last exceeds 0, found by stepping out.
+  auto outline = [&](vec3 u) {
+    float last = 0.0f;
+    for (float r = 0.0f; r <= 0.3f; r += 0.0005f)
+      if (model::density_at(m, vec3(0.5f) + r * u) > 0.0f) last = r;
+    return last;
+  };
+  std::mt19937 rng(3);
+  std::normal_distribution<float> g;
+  std::vector<vec3> directions;
+  for (int i = 0; i < 200; ++i) directions.push_back(normalize(vec3(g(rng), g(rng), g(rng))));
+  // e = 0: eq. 6 scales the field, whose support is the ball R + I (to the step of 0.0005).
+  p.noise.erosion = 0.0f;
+  for (const vec3& u : directions) CHECK(outline(u) == Approx(0.25f).margin(0.0006f));
+  // e = 1/2, np = 1/2: where N = 0 the field (1 - np) b(x) must exceed k = e, so b(x) = 1 and the
+  // outline is at R; where N >= 1 nothing is eroded and it stays at R + I. Over 200 directions
+  // the outline must span at least a quarter of I and stay within [R, R + I].
+  p.noise.erosion = 0.5f;
+  float lowest = 1, highest = 0;
+  for (const vec3& u : directions) {
+    const float r = outline(u);
+    lowest = std::min(lowest, r);
+    highest = std::max(highest, r);
+  }
+  INFO("outline from " << lowest << " to " << highest);
+  CHECK(lowest >= 0.1f - 0.0006f);
+  CHECK(highest <= 0.25f + 0.0006f);
+  CHECK(highest - lowest >= 0.25f * 0.15f);
+}
+
+TEST_CASE("the examples' bases are flat at the condensation level and the cumulonimbus's top at the tropopause",
+          "[model][gpu]") {
+  test::test_context();
+  const int size = 64;
+  model::DensityVolume volume(size);
+  for (const auto& name : model::example_names()) {
+    const model::CloudModel m = model::example(name);
+    volume.compute(m);
+    const auto v = volume.read();
+    auto at = [&](int x, int y, int z) { return v[(size_t(z) * size + y) * size + x]; };
+    // Voxel centres (z + 0.5) / size: none below the base or above the top holds cloud.
+    const float voxel = 1.0f / size;
+    // Columns whose cloud starts in the lower half (the towers') and ends in the upper half.
+    int low = 0, high = 0, on_base = 0, under_top = 0;
+    const float middle = 0.5f * (m.base + m.top);
+    for (int y = 0; y < size; ++y)
+      for (int x = 0; x < size; ++x) {
+        int bottom = -1, top = -1;
+        for (int z = 0; z < size; ++z)
+          if (at(x, y, z) > 0.05f) {
+            if (bottom < 0) bottom = z;
+            top = z;
+          }
+        if (bottom < 0) continue;
+        const float zb = (bottom + 0.5f) * voxel, zt = (top + 0.5f) * voxel;
+        INFO(name << " column " << x << " " << y << " from " << zb << " to " << zt);
+        REQUIRE(zb >= m.base);
+        REQUIRE(zt <= m.top);
+        // The density reaches 0.05 within the smoothstep's edge (0.01) and a voxel of the base.
+        if (zb < middle) {
+          ++low;
+          on_base += zb <= m.base + glsl::MODEL_LEVEL_EDGE + voxel;
+        }
+        if (zt > middle) {
+          ++high;
+          under_top += zt >= m.top - glsl::MODEL_LEVEL_EDGE - voxel;
+        }
+      }
+    INFO(name << ": " << low << " columns from the lower half, " << on_base << " of them on the base; " << high
+              << " to the upper half, " << under_top << " of them at the top");
+    // A flat base: most towers' columns start at the condensation level (the rest are their
+    // rounded flanks); most of the anvil's columns end at the tropopause.
+    CHECK(low > 0);
+    CHECK(on_base >= low / 2);
+    if (name == "cumulonimbus") CHECK(under_top >= high / 2);
+  }
+}

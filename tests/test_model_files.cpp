@@ -74,7 +74,7 @@ TEST_CASE("cloud model files refuse every numeric key just outside the range the
       v.precision(10);  // as the message shows it (params::check_number)
       v << value;
       std::string text;
-      if (p == &cm::scale || p == &cm::extent)
+      if (p == &cm::scale || p == &cm::extent || p == &cm::base || p == &cm::top)
         text = cloud_file("\"" + key + "\": " + v.str() + ", ");
       else if (p == &cm::coordinate)
         text = cloud_file("", "", "\"position\": [0.5, " + v.str() + ", 0.5], ");

@@ -60,6 +60,7 @@ vec3 transmittance_to_space(vec3 p, vec3 d, float earth_radius) {
 struct SkyIntegral {
   vec3 rayleigh;  // the phase-weighted scattering coefficients at sea level
   float mie;
+  vec3 skylight;  // mean radiance of the light around the air besides the sun (0: single scattering)
   float ds;
   float split;
   vec3 radiance;
@@ -74,6 +75,7 @@ SkyIntegral sky_integral_begin(vec3 d, float distance, float split, vec3 sun, in
   float nu = dot(d, sun);
   s.rayleigh = rayleigh_scattering() * rayleigh_phase(nu);
   s.mie = MIE_SCATTERING * henyey_greenstein(nu, MIE_ASYMMETRY);
+  s.skylight = vec3(0.0f);
   s.ds = distance / float(steps);
   s.split = split;
   s.radiance = vec3(0.0f);
@@ -98,6 +100,11 @@ void sky_integral_step(INOUT(SkyIntegral) s, vec3 q, int i, vec3 sun, float eart
   vec3 extinction = max(air_extinction(h), vec3(1.0e-12f));
   vec3 source = (s.rayleigh * exp(-h / RAYLEIGH_SCALE_HEIGHT) + vec3(s.mie * exp(-h / MIE_SCALE_HEIGHT))) *
                 transmittance_to_space(q, sun, earth_radius) * solar_irradiance() * sun_visibility;
+  // Second-order scattering, isotropic approximation: the air scatters the mean radiance around
+  // it into the view whatever the phase function (its integral is 1). It keeps a cloud's shadow
+  // in the air from turning black, where the sun's single scattering is gone.
+  source += (rayleigh_scattering() * exp(-h / RAYLEIGH_SCALE_HEIGHT) + vec3(MIE_SCATTERING * exp(-h / MIE_SCALE_HEIGHT))) *
+            s.skylight;
   if (!s.split_done && s0 + ds > s.split) {
     // The split falls in this step: its first part, with the step's source, goes into the
     // split values.

@@ -506,6 +506,24 @@ float march_jitter(ivec2 pixel, int frame) {
   return fract(ign + 0.618034f * float(frame));
 }
 
+// Inside the convective span the samples follow the density volumes' voxels: one sample a voxel
+// of the finest volume (VIEW_REFINE per coarse step, spaced evenly), since a cloud's edge there
+// is about a voxel thick and a coarser march puts it wherever each pixel's jitter says (a moire
+// of dots on the towers); at most CONVECTIVE_MAX_STEPS coarse steps. Returns 0 without clouds.
+const int CONVECTIVE_MAX_STEPS = 512;
+int convective_steps(float span, IN(MarchParams) m, IN(ConvectiveVolumes) convective_volumes) {
+  if (m.convective_count == 0) return 0;
+  float voxel = 1.0e30f;
+  float n = float(textureSize(convective_volumes, 0).x);
+  for (int c = 0; c < m.convective_count; ++c) voxel = min(voxel, m.convective[c].extent / n);
+  return int(min(float(CONVECTIVE_MAX_STEPS), ceil(span / (float(VIEW_REFINE) * voxel))));
+}
+
+// Where sample fraction t in [0, 1] of a march interval lies, as a fraction of its length:
+// quadratic (s = t^2, short steps near the start of the interval, long ones far away, where a
+// pixel covers more ground anyway), or even in the convective span (convective_steps).
+float march_fraction(float t, bool even) { return even ? t : t * t; }
+
 // Marches the stretch [a, b] of the view ray d: layer `layer`'s density (-1: none) plus, when
 // `convective`, the convective clouds' (where the stretch lies in their boxes). jitter in [0, 1):
 // the offset of the samples within their steps; nu = cos(angle between d and the sun).
@@ -515,10 +533,10 @@ void march_interval(float a, float b, int layer, bool convective, vec3 d, vec3 c
                     IN(ShadowMaps) layer_shadows) {
   vec3 origin_from_centre = -centre;
   LayerParams l = m.layers[max(layer, 0)];
-  // Samples spaced quadratically: s_i = a + (b - a) t_i^2 puts short steps near the start of
-  // the interval and long ones far away, where a pixel covers more ground anyway.
-  // Long grazing intervals near the horizon get up to four times the samples.
+  // Samples spaced by march_fraction. Long grazing intervals near the horizon get up to four
+  // times the samples; the convective span at least a sample a voxel.
   int steps = m.view_steps * int(clamp((b - a) / 20000.0f, 1.0f, 4.0f));
+  if (convective) steps = max(steps, convective_steps(b - a, m, convective_volumes));
   float n = float(steps);
   // Sun light arriving at the layer through the clear atmosphere, once per interval.
   vec3 mid = origin_from_centre + (0.5f * (a + b)) * d;
@@ -535,8 +553,8 @@ void march_interval(float a, float b, int layer, bool convective, vec3 d, vec3 c
     float t0 = float(i) / n;
     float t1 = float(i + 1) / n;
     float t = (float(i) + jitter) / n;
-    float s = a + (b - a) * t * t;
-    float coarse = (b - a) * (t1 * t1 - t0 * t0);
+    float s = a + (b - a) * march_fraction(t, convective);
+    float coarse = (b - a) * (march_fraction(t1, convective) - march_fraction(t0, convective));
     bool cloudy = layer >= 0 && extinction_bound_at(s * d, centre, layer, max(coarse, s * m.pixel_angle), m,
                                                     noise_volume, weather_field) > 0.0f;
     if (convective) {
@@ -549,8 +567,8 @@ void march_interval(float a, float b, int layer, bool convective, vec3 d, vec3 c
       float u0 = t0 + (t1 - t0) * float(j) / float(VIEW_REFINE);
       float u1 = t0 + (t1 - t0) * float(j + 1) / float(VIEW_REFINE);
       float u = t0 + (t1 - t0) * (float(j) + jitter) / float(VIEW_REFINE);
-      float sj = a + (b - a) * u * u;
-      float ds = (b - a) * (u1 * u1 - u0 * u0);
+      float sj = a + (b - a) * march_fraction(u, convective);
+      float ds = (b - a) * (march_fraction(u1, convective) - march_fraction(u0, convective));
       result.loop_count += 1;
       vec3 p = sj * d;
       float sigma_layer = layer >= 0 ? density_at(p, centre, layer, max(ds, sj * m.pixel_angle), true, m,
@@ -684,6 +702,8 @@ vec4 render_pixel(ivec2 pixel, ivec2 size, IN(MarchParams) m, OUT(int) loop_coun
   // shadowed by the clouds (crepuscular rays).
   vec3 inscatter_total, inscatter_split, transmittance_total, transmittance_split;
   SkyIntegral sky = sky_integral_begin(d, ray_end, clouds.distance, m.sun, m.sky_steps);
+  // The light around the air near the ground: the sky's above, the ground's below.
+  sky.skylight = 0.5f * (m.ground_ambient / PI_F + m.ground_radiance);
   for (int i = 0; i < m.sky_steps; ++i) {
     vec3 q = sky_integral_point(sky, origin_from_centre, d, i);
     sky_integral_step(sky, q, i, m.sun, m.earth_radius, sky_sun_visibility(q + centre, centre, m, sky_shadow));
@@ -714,13 +734,13 @@ vec4 render_pixel(ivec2 pixel, ivec2 size, IN(MarchParams) m, OUT(int) loop_coun
     loop_count += cloud_shadow_loops;
     vec3 sunlight = solar_irradiance() * transmittance_to_space(point, m.sun, m.earth_radius) * (sunlit * shadow);
     vec3 sun_at_ground = sunlight * max(dot(normal, m.sun), 0.0f);
-    vec3 ground = (surface.albedo / PI_F) * (sun_at_ground + m.ambient);
+    vec3 ground = (surface.albedo / PI_F) * (sun_at_ground + m.ground_ambient);
     if (surface.water > 0.0f) {
       // The water's surface is level: the sky (its mean radiance, ambient / pi) and the sun's
       // glint on the wind-roughened facets (sun_glint.glsl) by Fresnel, the rest from below.
       vec3 sun_on_water = sunlight * max(dot(up, m.sun), 0.0f);
-      vec3 water = (WATER_ALBEDO / PI_F) * (sun_on_water + m.ambient) +
-                   water_fresnel(dot(up, -d)) * m.ambient / PI_F + sun_glint_brdf(up, -d, m.sun, LAKE_WIND) * sun_on_water;
+      vec3 water = (WATER_ALBEDO / PI_F) * (sun_on_water + m.ground_ambient) +
+                   water_fresnel(dot(up, -d)) * m.ground_ambient / PI_F + sun_glint_brdf(up, -d, m.sun, LAKE_WIND) * sun_on_water;
       ground = mix(ground, water, surface.water);
     }
     background = transmittance_total * ground;

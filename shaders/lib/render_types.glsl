@@ -65,7 +65,8 @@ struct MarchParams {
   int panorama;            // 1: 360 x 180 equirectangular view sphere instead
   float heading;           // panorama's centre, radians clockwise from north
   vec3 sun;                // unit direction towards the sun
-  vec3 ambient;            // sky irradiance on a horizontal surface
+  vec3 ambient;            // sky irradiance on a horizontal surface at the clouds (2 km)
+  vec3 ground_ambient;     // the same at the ground (the camera's altitude, at most 2 km)
   vec3 ground_radiance;    // radiance of the sunlit and skylit ground below the clouds
   int view_steps;
   int light_steps;

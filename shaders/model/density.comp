@@ -17,6 +17,8 @@ uniform int u_blend;
 uniform float u_scale;
 uniform vec4 u_noise_shape;
 uniform vec4 u_noise_extra;
+uniform vec2 u_levels;          // (base, top) of model_levels
+uniform float u_max_frequency;  // model_turbulence's octave limit for this volume's voxels
 
 void main() {
   int job = int(gl_WorkGroupID.x + gl_WorkGroupID.y * gl_NumWorkGroups.x);
@@ -30,9 +32,10 @@ void main() {
   vec3 p = (vec3(voxel) + 0.5f) / float(u_size);
   vec3 q = p / u_scale;
   float rho = 0.0f;
-  for (uint k = 0u; k < entry.z; ++k) rho = model_accumulate(rho, p, q, primitives[indices[entry.y + k]], u_blend);
+  for (uint k = 0u; k < entry.z; ++k)
+    rho = model_accumulate(rho, p, q, primitives[indices[entry.y + k]], u_blend, u_max_frequency);
   ModelNoise noise;
   noise.shape = u_noise_shape;
   noise.extra = u_noise_extra;
-  imageStore(u_density, voxel, vec4(model_finish(rho, q, u_blend, noise), 0.0f, 0.0f, 0.0f));
+  imageStore(u_density, voxel, vec4(model_finish(rho, p.z, q, u_blend, noise, u_levels, u_max_frequency), 0.0f, 0.0f, 0.0f));
 }

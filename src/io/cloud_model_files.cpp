@@ -56,8 +56,13 @@ class Reader {
         field = static_cast<std::decay_t<decltype(field)>>(number(p, w, name));
         known = true;
       });
-      if (!known)
-        k_.fail(name, "unknown key (allowed: octaves, frequency, amplitude, gain, lacunarity, fraction, seed)");
+      if (!known) {
+        std::string allowed;
+        visit_turbulence(t, [&](const params::Parameter& p, auto&) {
+          allowed += (allowed.empty() ? "" : ", ") + std::string(p.key);
+        });
+        k_.fail(name, "unknown key (allowed: " + allowed + ")");
+      }
     }
     return t;
   }
@@ -166,12 +171,16 @@ CloudModel parse_cloud_model(const std::string& text, const std::string& source)
       m.scale = float(r.number(cm::scale, v, key));
     else if (key == "extent")
       m.extent_m = r.number(cm::extent, v, key);
+    else if (key == "base")
+      m.base = float(r.number(cm::base, v, key));
+    else if (key == "top")
+      m.top = float(r.number(cm::top, v, key));
     else if (key == "noise")
       continue;
     else if (key == "primitives")
       primitives = &v;
     else
-      k.fail(key, "unknown key (allowed: description, blend, scale, extent, noise, primitives)");
+      k.fail(key, "unknown key (allowed: description, blend, scale, extent, base, top, noise, primitives)");
   }
   if (!primitives) k.fail("primitives", "missing (an array of primitives)");
   if (!primitives->is_array()) k.fail("primitives", "must be an array of primitives");
@@ -210,6 +219,8 @@ std::string write_cloud_model(const CloudModel& m) {
   root.set("blend", blend_name(m.blend));
   root.set("scale", m.scale);
   root.set("extent", m.extent_m);
+  root.set("base", m.base);
+  root.set("top", m.top);
   root.set("noise", noise_json(m.noise));
   json::Value::Array list;
   for (const Primitive& p : m.primitives) {

@@ -61,6 +61,15 @@ void validate(const CloudModel& m, const std::string& source) {
   const std::string head = source.empty() ? "" : source + ": ";
   check(cm::scale, m.scale, head + "scale");
   check(cm::extent, m.extent_m, head + "extent");
+  check(cm::base, m.base, head + "base");
+  check(cm::top, m.top, head + "top");
+  // Both cuts need room for their edges (model_levels: MODEL_LEVEL_EDGE each).
+  if (m.top - m.base < 2 * glsl::MODEL_LEVEL_EDGE)
+    throw ModelError(head + "top", text_of(m.top),
+                     "above base + " + text_of(2 * glsl::MODEL_LEVEL_EDGE) + " = " +
+                         text_of(m.base + 2 * glsl::MODEL_LEVEL_EDGE) + " (the base and the top each rise over " +
+                         text_of(glsl::MODEL_LEVEL_EDGE) + ")",
+                     "is too close to the base");
   check_turbulence(m.noise, head);
   if (m.primitives.empty()) throw ModelError(head + "primitives", "[]", "at least one primitive");
   if (m.primitives.size() > max_primitives)
@@ -89,7 +98,7 @@ void validate(const CloudModel& m, const std::string& source) {
 
 bool operator==(const Turbulence& a, const Turbulence& b) {
   return a.octaves == b.octaves && a.frequency == b.frequency && a.amplitude == b.amplitude && a.gain == b.gain &&
-         a.lacunarity == b.lacunarity && a.fraction == b.fraction && a.seed == b.seed;
+         a.lacunarity == b.lacunarity && a.fraction == b.fraction && a.erosion == b.erosion && a.seed == b.seed;
 }
 
 bool operator==(const Primitive& a, const Primitive& b) {
@@ -101,7 +110,7 @@ bool operator==(const Primitive& a, const Primitive& b) {
 glsl::ModelNoise pack(const Turbulence& t) {
   glsl::ModelNoise n;
   n.shape = glsl::vec4(float(t.octaves), t.frequency, t.amplitude, t.gain);
-  n.extra = glsl::vec4(t.lacunarity, t.fraction, float(t.seed), 0.0f);
+  n.extra = glsl::vec4(t.lacunarity, t.fraction, float(t.seed), t.erosion);
   return n;
 }
 
@@ -114,12 +123,18 @@ glsl::ModelPrimitive pack(const Primitive& p) {
   return g;
 }
 
-float density_at(const CloudModel& model, glsl::vec3 p) {
+float max_noise_frequency(const CloudModel& model, int size) { return 0.25f * float(size) * model.scale; }
+
+glsl::vec2 levels(const CloudModel& model) { return glsl::vec2(model.base, model.top); }
+
+float density_at(const CloudModel& model, glsl::vec3 p, int size) {
   const glsl::vec3 q = p / model.scale;
   const int blend = blend_code(model.blend);
+  const float max_frequency = max_noise_frequency(model, size);
   float rho = 0.0f;
-  for (const Primitive& prim : model.primitives) rho = glsl::model_accumulate(rho, p, q, pack(prim), blend);
-  return glsl::model_finish(rho, q, blend, pack(model.noise));
+  for (const Primitive& prim : model.primitives)
+    rho = glsl::model_accumulate(rho, p, q, pack(prim), blend, max_frequency);
+  return glsl::model_finish(rho, p.z, q, blend, pack(model.noise), levels(model), max_frequency);
 }
 
 }  // namespace nephele::model

@@ -31,6 +31,7 @@ struct Turbulence {
   float gain = params::cloud_model::gain.default_float();
   float lacunarity = params::cloud_model::lacunarity.default_float();
   float fraction = params::cloud_model::fraction.default_float();  // np
+  float erosion = params::cloud_model::erosion.default_float();    // e of model_erode
   std::uint32_t seed = params::cloud_model::seed.default_uint32();
 };
 
@@ -57,6 +58,7 @@ void visit_turbulence(T& t, F&& f) {
   f(cm::gain, t.gain);
   f(cm::lacunarity, t.lacunarity);
   f(cm::fraction, t.fraction);
+  f(cm::erosion, t.erosion);
   f(cm::seed, t.seed);
 }
 template <class P, class F>  // P: Primitive or const Primitive
@@ -82,6 +84,10 @@ struct CloudModel {
   Blend blend = Blend::per_primitive;
   float scale = params::cloud_model::scale.default_float();
   double extent_m = params::cloud_model::extent.default_number;
+  // The flat base (condensation level) and top (tropopause) in model units of z; 0 and 1 cut
+  // nothing (model_levels of implicit_field.glsl).
+  float base = params::cloud_model::base.default_float();
+  float top = params::cloud_model::top.default_float();
   Turbulence noise;  // eq. 5's global turbulence, and the default of each primitive's
   std::vector<Primitive> primitives;
 };
@@ -96,8 +102,16 @@ glsl::ModelPrimitive pack(const Primitive& p);
 // The distance from a skeleton beyond which the field is exactly 0: R + I.
 inline float reach(const Primitive& p) { return p.radius + p.influence; }
 
-// The density at model point p (unit cube) on the CPU, through the shared functions.
-float density_at(const CloudModel& model, glsl::vec3 p);
+// The turbulence's highest frequency (cycles per unit of noise coordinates) in a volume of
+// `size` voxels an edge: a quarter of the voxels per model unit, so no octave is finer than
+// 4 voxels a cycle (model_turbulence fades it from 8 voxels on). 0 for size 0: every octave.
+float max_noise_frequency(const CloudModel& model, int size);
+// The (base, top) levels that model_finish takes.
+glsl::vec2 levels(const CloudModel& model);
+
+// The density at model point p (unit cube) on the CPU, through the shared functions, as the
+// density volume of `size` voxels an edge holds it (0: with every octave of the turbulence).
+float density_at(const CloudModel& model, glsl::vec3 p, int size = 0);
 
 // The built-in examples (docs/model.md): names and models.
 const std::vector<std::string>& example_names();

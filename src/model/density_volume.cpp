@@ -131,6 +131,9 @@ void DensityVolume::run(const std::vector<int>& bricks) {
   program_->set("u_jobs", int(jobs.size()));
   program_->set("u_blend", blend_code(model_.blend));
   program_->set("u_scale", model_.scale);
+  program_->set("u_max_frequency", max_noise_frequency(model_, grid_.size));
+  const glsl::vec2 cut = levels(model_);
+  glProgramUniform2f(program_->id(), glGetUniformLocation(program_->id(), "u_levels"), cut.x, cut.y);
   const glsl::ModelNoise noise = pack(model_.noise);
   if (program_->has_uniform("u_noise_shape")) {
     glProgramUniform4fv(program_->id(), glGetUniformLocation(program_->id(), "u_noise_shape"), 1, &noise.shape.x);
@@ -162,7 +165,7 @@ std::vector<float> density_cpu(const CloudModel& model, int size) {
     for (int y = 0; y < size; ++y)
       for (int x = 0; x < size; ++x)
         values[(size_t(z) * size + y) * size + x] =
-            density_at(model, (glsl::vec3(glsl::ivec3(x, y, z)) + 0.5f) / float(size));
+            density_at(model, (glsl::vec3(glsl::ivec3(x, y, z)) + 0.5f) / float(size), size);
   return values;
 }
 

@@ -382,6 +382,11 @@ inline constexpr Parameter blend =
 inline constexpr Parameter scale =
     real("scale", 0.02, 1e-4, 1e4, "", "noise coordinates are model coordinates divided by this (0.02 in the paper)",
          command_and_file);
+inline constexpr Parameter base =
+    real("base", 0, 0, 1, "model units", "height of the flat base, the condensation level (0: none; docs/model.md)",
+         command_and_file);
+inline constexpr Parameter top = real(
+    "top", 1, 0, 1, "model units", "height of the flat top, the tropopause under an anvil (1: none)", command_and_file);
 inline constexpr Parameter extent = real(
     "extent", 2000, 1, 1e6, "metres", "edge of the modelled cube (the voxel size is extent / size)", command_and_file);
 inline constexpr Parameter description = text("description", "", "", "free text for people", model_file);
@@ -410,6 +415,10 @@ inline constexpr Parameter gain = real("gain", 0.5, 0, 1, "", "amplitude ratio g
 inline constexpr Parameter lacunarity =
     real("lacunarity", 2.0, 1, 4, "", "frequency ratio lc between octaves", model_file);
 inline constexpr Parameter fraction = real("fraction", 0.5, 0, 1, "", "noise fraction np", model_file);
+inline constexpr Parameter erosion =
+    real("erosion", 0.5, 0, 1, "",
+         "how deep the turbulence erodes the field's edge into lobes (Nubis's remap; 0: the paper's eq. 5 and 6 alone)",
+         model_file);
 inline constexpr Parameter seed = integer("seed", 1, 0, 16777215, "", "seed of the turbulence", model_file);
 inline constexpr Parameter view_model =
     text("model", "", "FILE|EXAMPLE",

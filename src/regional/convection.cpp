@@ -90,6 +90,9 @@ void vertical_span(const model::CloudModel& model, double& lowest, double& highe
     lowest = std::min(lowest, double(std::min(p.from.z, p.to.z) - p.radius));
     highest = std::max(highest, double(std::max(p.from.z, p.to.z) + p.radius));
   }
+  // The flat base and top cut the field (model_levels).
+  lowest = std::max(lowest, double(model.base));
+  highest = std::min(highest, double(model.top));
 }
 
 std::vector<ConvectiveCloud> place_convective_clouds(const WeatherField& field, double anchor_bearing_deg,

@@ -86,7 +86,8 @@ struct ConvectiveCloud {
 };
 
 // The lowest and highest points of the model's primitives' radii (model units; the field is 1
-// within a radius, so the visible cloud's base and top are about there).
+// within a radius, so the visible cloud's base and top are about there), within the model's
+// flat base and top.
 void vertical_span(const model::CloudModel& model, double& lowest, double& highest);
 
 // Deterministic from the seed: candidates at hashed bearings within spread_deg of

@@ -266,6 +266,9 @@ glsl::MarchParams march_params(const Camera& camera, const std::vector<regional:
   m.heading = static_cast<float>(camera.heading_deg * M_PI / 180);
   m.sun = glm::vec3(sun);
   m.ambient = ambient;
+  // The ground in view of a camera near it lies about at its altitude; a camera higher up sees
+  // ground far below it, taken at 2 km as the clouds' light is.
+  m.ground_ambient = sky_irradiance(glm::vec3(sun), earth_radius, std::clamp(camera.height_m, 0.0, 2000.0));
   {
     // Lambertian ground of albedo 0.15 under the camera, lit by the sun and the sky.
     using namespace glsl;
@@ -273,7 +276,7 @@ glsl::MarchParams march_params(const Camera& camera, const std::vector<regional:
     const vec3 sunlight = solar_irradiance() *
                           transmittance_to_space(ground, vec3(sun), static_cast<float>(earth_radius)) *
                           std::max(static_cast<float>(sun.z), 0.0f);
-    m.ground_radiance = (0.15f / PI_F) * (sunlight + ambient);
+    m.ground_radiance = (0.15f / PI_F) * (sunlight + m.ground_ambient);
   }
   m.view_steps = settings.view_steps;
   m.light_steps = settings.light_steps;

@@ -7,6 +7,7 @@ const int PROBE_AIR_EXTINCTION = 2;
 const int PROBE_TRANSMITTANCE_TO_SPACE = 3;
 const int PROBE_SKY_SINGLE_SCATTERING = 4;
 const int PROBE_SKY_INTEGRAL_STEPS = 5;  // sky_integral_begin, _point, _step, _end
+const int PROBE_SKYLIGHT = 6;  // the integral with the sun hidden and the skylight x[0].w (grey)
 #ifndef __cplusplus
 #include "../lib/atmosphere.glsl"
 #endif
@@ -30,6 +31,17 @@ vec4 probe_atmosphere(mat4 x) {
     vec3 total, split, transmittance, transmittance_split;
     sky_integral_end(s, total, split, transmittance, transmittance_split);
     return vec4((x[0].z == 0.0f ? total : split) * 1.0e3f, transmittance.y);
+  }
+  if (f == PROBE_SKYLIGHT) {
+    // From x[1] along x[2] over x[1].w metres in int(x[3].w) steps, the sun x[3] hidden at every
+    // step: the in-scattering of the skylight alone (scaled by 1e3) and the green transmittance.
+    SkyIntegral s = sky_integral_begin(vec3(x[2]), x[1].w, 0.0f, vec3(x[3]), int(x[3].w));
+    s.skylight = vec3(x[0].w);
+    for (int i = 0; i < int(x[3].w); ++i)
+      sky_integral_step(s, sky_integral_point(s, vec3(x[1]), vec3(x[2]), i), i, vec3(x[3]), earth_radius, 0.0f);
+    vec3 total, split, transmittance, transmittance_split;
+    sky_integral_end(s, total, split, transmittance, transmittance_split);
+    return vec4(total * 1.0e3f, transmittance.y);
   }
   // PROBE_SKY_SINGLE_SCATTERING: sky_single_scattering from x[1] along x[2] over x[1].w metres
   // (split at x[2].w) towards the sun x[3] with int(x[3].w) steps; x[0].z picks which of its four

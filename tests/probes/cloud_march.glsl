@@ -24,6 +24,7 @@ const int PROBE_SHADOW_MAP_TEXEL = 19;  // shadow_map_texel, layers_shadow_depth
 const int PROBE_SKY_SUN_VISIBILITY = 20;  // shadow_map_uv, sky_sun_visibility
 const int PROBE_VIEW_RAY_END = 21;
 const int PROBE_CONVECTIVE_DENSITY = 22;
+const int PROBE_CONVECTIVE_STEPS = 23;  // convective_steps over x[0].y metres, march_fraction(x[0].z)
 #ifndef __cplusplus
 // The renderer's textures and hooks (one convective volume here: its stack of one clamps as the
 // C++ twin's ConvectiveSource does).
@@ -66,6 +67,7 @@ MarchParams probe_march_params() {
   m.heading = 0.3f;
   m.sun = vec3(-0.5416752f, -0.5416752f, 0.6427876f);
   m.ambient = vec3(0.3f, 0.45f, 0.7f);
+  m.ground_ambient = vec3(0.35f, 0.5f, 0.75f);
   m.ground_radiance = vec3(0.05f, 0.05f, 0.045f);
   m.view_steps = 6;
   m.light_steps = 3;
@@ -216,6 +218,9 @@ vec4 probe_cloud_march(mat4 x, IN(NoiseVolume) noise_volume, IN(WeatherField) we
     return vec4(convective_density(convective_volumes, vec3(x[1]), int(x[0].y)), 0.0f, 0.0f, 0.0f);
   }
   m.convective_count = 1;
+  if (f == PROBE_CONVECTIVE_STEPS)
+    return vec4(float(convective_steps(x[0].y, m, convective_volumes)), march_fraction(x[0].z, true),
+                march_fraction(x[0].z, false), 0.0f);
   if (f == PROBE_CONVECTIVE_AT) {
     // The convective cloud at p: extinction, height fraction, inside its box, volume z.
     vec2 v = convective_at(p, centre, m, convective_volumes);

@@ -31,6 +31,7 @@ int run_model(const std::vector<std::string>& arguments) {
   std::string example, scene_path, out(cm::out.default_text), blend(cm::blend.default_text);
   int size = cm::size.default_int();
   double scale = cm::scale.default_number, extent = cm::extent.default_number;
+  double base = cm::base.default_number, top = cm::top.default_number;
   bool quiet = false, verbose = false, no_preview = false;
   std::string preview_size(cm::preview.default_text);
   Options options(
@@ -47,6 +48,8 @@ int run_model(const std::vector<std::string>& arguments) {
   options.bind(cm::blend, &blend);
   options.bind(cm::scale, &scale);
   options.bind(cm::extent, &extent);
+  options.bind(cm::base, &base);
+  options.bind(cm::top, &top);
   options.bind(cm::preview, &preview_size);
   options.bind(cm::no_preview, &no_preview);
   options.bind(params::run::quiet, &quiet);
@@ -61,6 +64,8 @@ int run_model(const std::vector<std::string>& arguments) {
   if (options.given(cm::blend)) m.blend = model::parse_blend(blend, "--blend");
   if (options.given(cm::scale)) m.scale = float(scale);
   if (options.given(cm::extent)) m.extent_m = extent;
+  if (options.given(cm::base)) m.base = float(base);
+  if (options.given(cm::top)) m.top = float(top);
   model::validate(m, example.empty() ? scene_path : "--example " + example);
   render::PreviewSettings preview;
   regional::parse_size(preview_size, preview.width, preview.height, "--preview");

@@ -176,6 +176,8 @@ void draw_model_panels(ViewState& state, std::string& error, const std::string& 
       changed = true;
     }
     changed |= model_widget(cm::scale, next.scale, "model");
+    changed |= model_widget(cm::base, next.base, "model");
+    changed |= model_widget(cm::top, next.top, "model");
     if (ImGui::TreeNode("noise (global, eq. 5)")) {
       changed |= turbulence_widgets(next.noise, "model");
       ImGui::TreePop();
