@@ -233,6 +233,9 @@ TEST_CASE("the ground in a cloud's shadow keeps the sky's light", "[render][shad
   INFO("sun " << std::asin(mu) * 180 / M_PI << " deg, sky " << shaded.ground_ambient.y << " W m^-2 nm^-1, direct "
               << direct);
   CHECK(shaded.ground_ambient.y / direct >= 0.8f * 0.5f * tau_rayleigh / mu);
+  // And at least the measured clear-sky diffuse share (Erbs et al. 1982) of the global irradiance.
+  const float f = render::clear_sky_diffuse_fraction;
+  CHECK(shaded.ground_ambient.y / (direct + shaded.ground_ambient.y) >= f * (1.0f - 1e-5f));
   // The shaded ground seen from the camera keeps that share of the sunlit ground's radiance
   // (the short path's air adds to both; 10 % for the sheet's remaining sunlight and rounding).
   const glm::vec3 dark = pixel(shaded), lit = pixel(clear);

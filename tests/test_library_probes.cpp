@@ -1313,6 +1313,32 @@ TEST_CASE("cloud_march.glsl on the GPU agrees with the CPU", "[probe][march]") {
     cases.push_back(
         {arguments(PROBE_CONVECTIVE_AT, vec4(0), convective_point(q)), std::max({q_error, sigma_error, h_error})});
   }
+  // The render-time detail erosion: strength 0 leaves every density as it is (bit for bit);
+  // otherwise it only takes density away, leaves 0 and 1 alone, and keeps the order of densities
+  // at one point (model_erode is monotonic in f). On the GPU within the detail's lookup (the
+  // filter's weights to 2^-8 of the largest texel step, as the layers' noise lookups) and the
+  // density's (stack_lookup) through the erosion's slopes, at most 1 / (1 - e)^2.
+  for (int k = 0; k < 12; ++k) {
+    const vec4 x(r(-3000.0f, 3000.0f), r(-3000.0f, 3000.0f), r(0.0f, 6000.0f), 0.0f);
+    const float footprint = k % 3 == 0 ? 0.0f : r(10.0f, 2000.0f), strength = k % 4 == 0 ? 0.0f : r(0.1f, 0.5f);
+    const float f = r(0.0f, 1.0f), g = std::min(f + r(0.0f, 0.3f), 1.0f);
+    auto detail = [&](float density) {
+      return cpu(arguments(PROBE_DETAIL_EROSION, vec4(strength, density, footprint, 0), x,
+                           convective_point(vec3(r(0.1f, 0.9f), r(0.1f, 0.9f), r(0.1f, 0.9f)))))
+          .x;
+    };
+    const float df = detail(f), dg = detail(g);
+    if (strength == 0.0f) CHECK(df == f);
+    CHECK(df <= f);
+    CHECK(df <= dg);
+    CHECK(detail(0.0f) == 0.0f);
+    CHECK(detail(1.0f) == 1.0f);
+    const float slope = 1.0f / ((1.0f - strength) * (1.0f - strength));
+    cases.push_back(
+        {arguments(PROBE_DETAIL_EROSION, vec4(strength, f, footprint, 0), x,
+                   convective_point(vec3(r(0.1f, 0.9f), r(0.1f, 0.9f), r(0.1f, 0.9f)))),
+         slope * (stack_lookup + test::max_texel_step_of(sources.noise, 1) / 256.0f) + kArithmetic + sigma_error});
+  }
   // convective_box and convective_span of rays from the camera towards the box (rising 0.2 to 0.33
   // rad, within 0.12 rad of north; limits 15 to 40 km, some ending inside) and from points around
   // and in it (rising or falling 0.21 to 1.2 rad, their horizontal part at least 0.3 rad from the

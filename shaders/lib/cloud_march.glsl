@@ -27,6 +27,7 @@
 #include "terrain.glsl"
 #include "land_cover.glsl"
 #include "sun_glint.glsl"
+#include "implicit_field.glsl"
 
 // Mesa's llvmpipe stops every loop of an invocation after 65535 iterations in all, so pixels
 // whose loops run (or would run) that long are cut short on that driver (docs/rendering.md);
@@ -196,6 +197,23 @@ float extinction_bound_at(vec3 p, vec3 centre, int layer, float footprint, IN(Ma
                           m);
 }
 
+// Detail of the heaped clouds below what their fields hold, Schneider's detail erosion at render
+// time: a convective volume holds its model's lobes down to 4 voxels (docs/model.md), whose
+// trilinear facets of 86 to 117 m show on a tower seen from 15 km, and the cumulus layer's
+// finest Webanck field has a period of 280 m. The marcher erodes their edges further with the
+// noise volume's detail channel (inverted Worley fBm, 8 cells and 3 octaves a period) over
+// DETAIL_PERIOD metres fixed to the cloud (250 m cells, octaves down to 60 m), by model_erode
+// with strength m.detail_erosion (0: the density as it is); a density of 1 or more (a cloud's
+// core) is left alone. The footprint (the sample's length) picks the noise's mip level, so a
+// distant cloud gets the detail's mean.
+const float DETAIL_PERIOD = 2000.0f;
+float detail_eroded(float density, vec3 x, float footprint, IN(MarchParams) m, IN(NoiseVolume) noise_volume) {
+  if (m.detail_erosion <= 0.0f || density <= 0.0f || density >= 1.0f) return density;
+  float lod = log2(max(footprint * m.noise_texels / DETAIL_PERIOD, 1.0f));
+  float detail = textureLod(noise_volume, x / DETAIL_PERIOD, lod).y;
+  return model_erode(density, detail, m.detail_erosion);
+}
+
 // Extinction (1/m) of a layer at p. fine: also read the detail noise (the light march does
 // without it).
 float density_at(vec3 p, vec3 centre, int layer, float footprint, bool fine, IN(MarchParams) m,
@@ -209,7 +227,13 @@ float density_at(vec3 p, vec3 centre, int layer, float footprint, bool fine, IN(
     // The light march subtracts delta's mean instead of reading the detail fields.
     float delta = fine ? webanck_detail(q, l.type, 1.0f - l.morph, l.noise_offset.x / 108000.0f,
                                         noise_volume) : q.detail;
-    return l.extinction * max(q.shape - delta, 0.0f) * q.gate;
+    float density = max(q.shape - delta, 0.0f);
+    // The cumulus's edges in view get the heaped clouds' detail, in metres of the wind's frame
+    // moving with the cells.
+    if (fine && l.type == CLOUD_CUMULUS)
+      density = detail_eroded(density, q.coordinates * 108000.0f - vec3(l.noise_offset.x, 0.0f, 0.0f), footprint, m,
+                              noise_volume);
+    return l.extinction * density * q.gate;
   }
   float detail = fine ? textureLod(noise_volume, q.coordinates * 4.0f, q.lod + 2.0f).y : q.detail;
   return l.extinction * cloud_density(l.type, q.h, q.c, q.shape, mix(q.detail, detail, 0.5f));
@@ -260,7 +284,9 @@ float convective_density(IN(ConvectiveVolumes) convective_volumes, vec3 q, int c
 
 // The extinction (1/m) of the convective clouds at p (x) and the height fraction, 0 at the
 // base and 1 at the top, of the cloud that holds most of it (y; the ambient light's height).
-vec2 convective_at(vec3 p, vec3 centre, IN(MarchParams) m, IN(ConvectiveVolumes) convective_volumes) {
+// footprint: the length the sample stands for (detail_eroded's level of detail).
+vec2 convective_at(vec3 p, vec3 centre, float footprint, IN(MarchParams) m, IN(NoiseVolume) noise_volume,
+                   IN(ConvectiveVolumes) convective_volumes) {
   float sigma = 0.0f;
   float h = 0.0f;
   float strongest = 0.0f;
@@ -268,7 +294,10 @@ vec2 convective_at(vec3 p, vec3 centre, IN(MarchParams) m, IN(ConvectiveVolumes)
     vec3 q = convective_coordinates(p, centre, c, m);
     if (!in_unit_cube(q)) continue;  // the box test before the texture
     ConvectiveParams v = m.convective[c];
-    float s = v.extinction * convective_density(convective_volumes, q, c);
+    // The detail's coordinates: metres in the cloud's volume, each cloud its own part of the noise.
+    vec3 x = q * v.extent + vec3(float(c) * 733.0f, float(c) * 1297.0f, 0.0f);
+    float s = v.extinction *
+              detail_eroded(convective_density(convective_volumes, q, c), x, footprint, m, noise_volume);
     sigma += s;
     if (s > strongest) {
       strongest = s;
@@ -322,20 +351,21 @@ const float CONVECTIVE_LIGHT_REACH = 20000.0f;
 
 // Optical depth from p towards the sun through the convective clouds, samples spaced as the
 // layers' light march (light_sample) up to where the last box along the sun ends.
-float convective_depth_to_sun(vec3 p, vec3 centre, IN(MarchParams) m, IN(ConvectiveVolumes) convective_volumes) {
+float convective_depth_to_sun(vec3 p, vec3 centre, IN(MarchParams) m, IN(NoiseVolume) noise_volume,
+                              IN(ConvectiveVolumes) convective_volumes) {
   vec2 span = convective_span(p, m.sun, centre, CONVECTIVE_LIGHT_REACH, m);
   float tau = 0.0f;
   if (span.x >= span.y) return tau;
   for (int i = 0; i < m.light_steps; ++i) {
     vec2 s = light_sample(i, m.light_steps, span.y);
-    tau += convective_at(p + s.x * m.sun, centre, m, convective_volumes).x * s.y;
+    tau += convective_at(p + s.x * m.sun, centre, s.y, m, noise_volume, convective_volumes).x * s.y;
   }
   return tau;
 }
 
 // The convective clouds' share of a ground point's shadow: 2 SHADOW_STEPS midpoint samples
 // where the sun ray crosses their boxes.
-float convective_shadow_depth(vec3 p, vec3 centre, INOUT(int) loop_count, IN(MarchParams) m,
+float convective_shadow_depth(vec3 p, vec3 centre, INOUT(int) loop_count, IN(MarchParams) m, IN(NoiseVolume) noise_volume,
                               IN(ConvectiveVolumes) convective_volumes) {
   loop_count += m.convective_count;
   vec2 span = convective_span(p, m.sun, centre, m.max_distance, m);
@@ -343,7 +373,8 @@ float convective_shadow_depth(vec3 p, vec3 centre, INOUT(int) loop_count, IN(Mar
   if (span.x >= span.y) return tau;
   float ds = (span.y - span.x) / float(2 * SHADOW_STEPS);
   for (int i = 0; i < 2 * SHADOW_STEPS; ++i)
-    tau += convective_at(p + (span.x + (float(i) + 0.5f) * ds) * m.sun, centre, m, convective_volumes).x * ds;
+    tau += convective_at(p + (span.x + (float(i) + 0.5f) * ds) * m.sun, centre, ds, m, noise_volume,
+                         convective_volumes).x * ds;
   loop_count += 2 * SHADOW_STEPS * (1 + m.convective_count);
   return tau;
 }
@@ -386,7 +417,7 @@ float shadow_depth(vec3 p, vec3 centre, int skip, float min_base, INOUT(int) loo
                    IN(MarchParams) m, IN(NoiseVolume) noise_volume, IN(WeatherField) weather_field,
                    IN(ConvectiveVolumes) convective_volumes) {
   float layers = layers_shadow_depth(p, centre, skip, min_base, loop_count, m, noise_volume, weather_field);
-  return layers + convective_shadow_depth(p, centre, loop_count, m, convective_volumes);
+  return layers + convective_shadow_depth(p, centre, loop_count, m, noise_volume, convective_volumes);
 }
 
 // ---- Shadows of higher layers on lower ones (docs/rendering.md, "Shadows between layers") ----
@@ -575,7 +606,7 @@ void march_interval(float a, float b, int layer, bool convective, vec3 d, vec3 c
                                                   noise_volume, weather_field) : 0.0f;
       vec2 cloud = vec2(0.0f);
       if (convective) {
-        cloud = convective_at(p, centre, m, convective_volumes);
+        cloud = convective_at(p, centre, max(ds, sj * m.pixel_angle), m, noise_volume, convective_volumes);
         result.loop_count += m.convective_count;
       }
       float sigma = sigma_layer + cloud.x;
@@ -590,7 +621,7 @@ void march_interval(float a, float b, int layer, bool convective, vec3 d, vec3 c
                                                    weather_field) + higher_layers_depth(p, centre, layer, m,
             layer_shadows);
         if (convective) {
-          tau += convective_depth_to_sun(p, centre, m, convective_volumes);
+          tau += convective_depth_to_sun(p, centre, m, noise_volume, convective_volumes);
           result.loop_count += m.light_steps * (1 + m.convective_count) + 2 * m.convective_count;
         }
       }

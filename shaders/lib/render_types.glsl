@@ -83,6 +83,7 @@ struct MarchParams {
   TerrainParams terrain;   // the ground (its heights are the third texture)
   ConvectiveParams convective[MAX_CONVECTIVE];  // volume c is layer c of the fourth texture
   int convective_count;
+  float detail_erosion;     // erosion of the heaped clouds' edges by the detail noise (cloud_march.glsl), 0: none
 };
 
 #endif

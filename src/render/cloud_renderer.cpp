@@ -121,6 +121,16 @@ glm::vec3 sky_irradiance(glm::vec3 sun, double earth_radius, double altitude_m) 
   return irradiance;
 }
 
+glm::vec3 ground_sky_irradiance(glm::vec3 sun, double earth_radius, double altitude_m) {
+  using namespace glsl;
+  const glm::vec3 sky = sky_irradiance(sun, earth_radius, altitude_m);
+  const vec3 ground(0.0f, 0.0f, static_cast<float>(earth_radius + altitude_m));
+  const float direct = solar_irradiance().y * transmittance_to_space(ground, sun, static_cast<float>(earth_radius)).y *
+                       std::max(sun.z, 0.0f);
+  const float measured = clear_sky_diffuse_fraction / (1.0f - clear_sky_diffuse_fraction) * direct;
+  return sky.y > 0.0f && sky.y < measured ? sky * (measured / sky.y) : sky;
+}
+
 namespace {
 
 GLuint make_volume_texture(int size) {
@@ -268,7 +278,7 @@ glsl::MarchParams march_params(const Camera& camera, const std::vector<regional:
   m.ambient = ambient;
   // The ground in view of a camera near it lies about at its altitude; a camera higher up sees
   // ground far below it, taken at 2 km as the clouds' light is.
-  m.ground_ambient = sky_irradiance(glm::vec3(sun), earth_radius, std::clamp(camera.height_m, 0.0, 2000.0));
+  m.ground_ambient = ground_sky_irradiance(glm::vec3(sun), earth_radius, std::clamp(camera.height_m, 0.0, 2000.0));
   {
     // Lambertian ground of albedo 0.15 under the camera, lit by the sun and the sky.
     using namespace glsl;
@@ -293,6 +303,7 @@ glsl::MarchParams march_params(const Camera& camera, const std::vector<regional:
   m.terrain.snow_line = static_cast<float>(regional::seasonal_snow_line_m(day));
   m.terrain.crop_stage = static_cast<float>(regional::seasonal_crop_stage(day));
   m.convective_count = convective != nullptr ? convective->count() : 0;
+  m.detail_erosion = detail_erosion_strength;
   for (int c = 0; c < m.convective_count; ++c) m.convective[c] = convective->params(c);
   // The sky's map (crepuscular rays): the depth through all clouds from the lowest base.
   m.sky_shadow_map = -1;

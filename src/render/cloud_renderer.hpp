@@ -20,6 +20,11 @@ namespace nephele::render {
 
 class ConvectiveVolumes;  // render/convective_volumes.hpp
 
+// The strength of the heaped clouds' render-time detail erosion (MarchParams::detail_erosion,
+// cloud_march.glsl): the detail noise takes up to a third of an edge's density, a little less
+// than the models' own erosion (0.5), which shapes the larger lobes.
+constexpr float detail_erosion_strength = 0.35f;
+
 struct Camera {
   double latitude_deg = 0, longitude_deg = 0, height_m = 0;  // WGS84, height above the ellipsoid
   double heading_deg = 0;                                    // clockwise from north
@@ -127,6 +132,19 @@ glm::dvec3 sun_direction_enu(double unix_seconds, double latitude_deg, double lo
 // Sky irradiance on a horizontal surface at an altitude (CPU twin of the shader's sky), used as
 // the clouds' ambient light.
 glm::vec3 sky_irradiance(glm::vec3 sun, double earth_radius, double altitude_m);
+
+// The clear sky's diffuse share of the global irradiance on a horizontal surface, measured:
+// Erbs, Klein and Duffie, "Estimation of the diffuse radiation fraction for hourly, daily and
+// monthly-average global radiation", Solar Energy 28(4), 1982: 0.165 at clearness indices above
+// 0.8 (the clearest skies; hazier ones have more).
+constexpr float clear_sky_diffuse_fraction = 0.165f;
+
+// The sky's irradiance on the ground at altitude_m: sky_irradiance's single scattering (its
+// colour) raised, where it is less, to the measured clear-sky diffuse share of the global
+// irradiance: D = f / (1 - f) x the direct sun's on the horizontal (green). Single scattering
+// through the clean model atmosphere (Mie optical depth 0.005) gives a third of that with the
+// sun high, which left cloud shadows near-black (docs/rendering.md).
+glm::vec3 ground_sky_irradiance(glm::vec3 sun, double earth_radius, double altitude_m);
 
 // The tileable shape and detail noise the marcher reads (render/noise_volume.comp,
 // mipmapped): size^3 texels, RGBA (shape and detail noise, rank-equalised; the G3 and W3

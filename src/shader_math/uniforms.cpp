@@ -87,6 +87,7 @@ void set_uniform(const gpu::ComputeProgram& program, const std::string& name, co
   program.set(name + ".ambient", params.ambient);
   program.set(name + ".ground_radiance", params.ground_radiance);
   program.set(name + ".ground_ambient", params.ground_ambient);
+  program.set(name + ".detail_erosion", params.detail_erosion);
   program.set(name + ".view_steps", params.view_steps);
   program.set(name + ".light_steps", params.light_steps);
   program.set(name + ".sky_steps", params.sky_steps);

@@ -24,6 +24,9 @@ const int PROBE_SHADOW_MAP_TEXEL = 19;  // shadow_map_texel, layers_shadow_depth
 const int PROBE_SKY_SUN_VISIBILITY = 20;  // shadow_map_uv, sky_sun_visibility
 const int PROBE_VIEW_RAY_END = 21;
 const int PROBE_CONVECTIVE_DENSITY = 22;
+// detail_eroded(x[0].z at x[1] with footprint x[0].w, strength x[0].y) and
+// convective_at(x[2], the same footprint and strength)
+const int PROBE_DETAIL_EROSION = 24;
 const int PROBE_CONVECTIVE_STEPS = 23;  // convective_steps over x[0].y metres, march_fraction(x[0].z)
 #ifndef __cplusplus
 // The renderer's textures and hooks (one convective volume here: its stack of one clamps as the
@@ -94,6 +97,7 @@ MarchParams probe_march_params() {
   // One convective cloud 20 km north, turned to (0.6, 0.8); marched only by PROBE_CONVECTIVE_AT to
   // PROBE_MARCH_CONVECTIVE_INTERVAL.
   m.convective_count = 0;
+  m.detail_erosion = 0.0f;
   for (int c = 0; c < MAX_CONVECTIVE; ++c) {
     m.convective[c].centre = vec2(0.0f, 20000.0f);
     m.convective[c].axis = vec2(0.6f, 0.8f);
@@ -218,12 +222,17 @@ vec4 probe_cloud_march(mat4 x, IN(NoiseVolume) noise_volume, IN(WeatherField) we
     return vec4(convective_density(convective_volumes, vec3(x[1]), int(x[0].y)), 0.0f, 0.0f, 0.0f);
   }
   m.convective_count = 1;
+  if (f == PROBE_DETAIL_EROSION) {
+    m.detail_erosion = x[0].y;
+    return vec4(detail_eroded(x[0].z, vec3(x[1]), x[0].w, m, noise_volume),
+                convective_at(vec3(x[2]), centre, x[0].w, m, noise_volume, convective_volumes), 0.0f);
+  }
   if (f == PROBE_CONVECTIVE_STEPS)
     return vec4(float(convective_steps(x[0].y, m, convective_volumes)), march_fraction(x[0].z, true),
                 march_fraction(x[0].z, false), 0.0f);
   if (f == PROBE_CONVECTIVE_AT) {
     // The convective cloud at p: extinction, height fraction, inside its box, volume z.
-    vec2 v = convective_at(p, centre, m, convective_volumes);
+    vec2 v = convective_at(p, centre, x[3].w, m, noise_volume, convective_volumes);
     vec3 q = convective_coordinates(p, centre, 0, m);
     return vec4(v.x, v.y, in_unit_cube(q) ? 1.0f : 0.0f, q.z);
   }
@@ -233,8 +242,8 @@ vec4 probe_cloud_march(mat4 x, IN(NoiseVolume) noise_volume, IN(WeatherField) we
   }
   if (f == PROBE_CONVECTIVE_SHADOW) {
     int loops = 0;
-    float shadow = convective_shadow_depth(p, centre, loops, m, convective_volumes);
-    return vec4(convective_depth_to_sun(p, centre, m, convective_volumes), shadow, float(loops), 0.0f);
+    float shadow = convective_shadow_depth(p, centre, loops, m, noise_volume, convective_volumes);
+    return vec4(convective_depth_to_sun(p, centre, m, noise_volume, convective_volumes), shadow, float(loops), 0.0f);
   }
   if (f == PROBE_MARCH_WITH_CONVECTIVE) {
     // The layers and the convective cloud marched together (limit x[0].z, jitter x[0].w), the
