@@ -1313,6 +1313,20 @@ TEST_CASE("cloud_march.glsl on the GPU agrees with the CPU", "[probe][march]") {
     cases.push_back(
         {arguments(PROBE_CONVECTIVE_AT, vec4(0), convective_point(q)), std::max({q_error, sigma_error, h_error})});
   }
+  // The clouds' diffuse light on the ground: none without cloud, T - e^-tau with the two-stream
+  // T = 1 / (1 + 3/4 (1 - g) tau mu), g = 0.85; for a thick cloud T alone (an overcast of vertical
+  // depth 15: 1 / 2.6875 = 0.372), falling with depth; never negative (T >= e^-tau for mu <= 1).
+  CHECK(cpu(arguments(PROBE_CLOUD_DIFFUSE_SHARE, vec4(0.0f, 0.7f, 0, 0))).x == 0.0f);
+  CHECK(cpu(arguments(PROBE_CLOUD_DIFFUSE_SHARE, vec4(30.0f, 0.5f, 0, 0))).x ==
+        Approx(1.0f / 2.6875f - std::exp(-30.0f)).epsilon(4 * kUlp));
+  float previous = 1.0f;
+  for (float tau : {2.0f, 5.0f, 20.0f, 100.0f, 1000.0f}) {
+    const float mu = r(0.05f, 1.0f), share = cpu(arguments(PROBE_CLOUD_DIFFUSE_SHARE, vec4(tau, 1.0f, 0, 0))).x;
+    CHECK(share <= previous);
+    CHECK(cpu(arguments(PROBE_CLOUD_DIFFUSE_SHARE, vec4(tau, mu, 0, 0))).x >= 0.0f);
+    previous = share;
+    cases.push_back({arguments(PROBE_CLOUD_DIFFUSE_SHARE, vec4(tau, mu, 0, 0)), kTranscendental});
+  }
   // The render-time detail erosion: strength 0 leaves every density as it is (bit for bit);
   // otherwise it only takes density away, leaves 0 and 1 alone, and keeps the order of densities
   // at one point (model_erode is monotonic in f). On the GPU within the detail's lookup (the

@@ -94,8 +94,9 @@ std::string mesa_cache_where_it_was() {
 TEST_CASE("render reuses the cached noise volume with the same image, and --no-cache leaves no cache", "[cache][cli]") {
   TemporaryDirectory cache_home(true), out(true), unused_home(true);
   const std::string arguments =
-      " render --view gurten --time 2026-06-21T08:00Z --size 32x18 --view-steps 6 --light-steps 2 --verbose --quiet "
-      "--out ";  // morning: no convective volumes to build, which the cache does not hold
+      " render --view gurten --time 2026-06-21T08:00Z --size 32x18 --view-steps 6 --light-steps 2 --terrain flat "
+      "--land-cover none --verbose --quiet --out ";  // morning: no convective volumes to build, which the cache does
+                                                     // not hold; no ground to load, which it does not hold either
   auto render = [&](const fs::path& home, const std::string& name, const std::string& extra = "") {
     return test::run_command(mesa_cache_where_it_was() + " XDG_CACHE_HOME=" + home.string() + " " + NEPHELE_EXECUTABLE +
                              arguments + (out.path / name).string() + extra);
@@ -336,8 +337,8 @@ namespace {
 Run render_with_cache(const fs::path& home, const fs::path& png) {
   return test::run_command("timeout 120 env " + mesa_cache_where_it_was() + " XDG_CACHE_HOME=" + home.string() + " " +
                            NEPHELE_EXECUTABLE +
-                           " render --view gurten --size 32x18 --view-steps 6 --light-steps 2 --verbose --quiet"
-                           " --out " +
+                           " render --view gurten --size 32x18 --view-steps 6 --light-steps 2 --terrain flat"
+                           " --land-cover none --verbose --quiet --out " +
                            png.string());
 }
 

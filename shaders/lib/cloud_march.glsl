@@ -641,6 +641,21 @@ void march_interval(float a, float b, int layer, bool convective, vec3 d, vec3 c
   }
 }
 
+// The share of the sun's horizontal irradiance that clouds of optical depth tau along the sun ray
+// (mu: the sun's sine) scatter down to the ground as diffuse light. A conservatively scattering
+// layer of vertical optical depth t lets through about T = 1 / (1 + 3/4 (1 - g) t) of the light
+// falling on it (the two-stream Eddington approximation; Bohren, "Multiple scattering of light
+// and some of its observable consequences", Am. J. Phys. 55, 1987), g = CLOUD_ASYMMETRY for
+// cloud droplets; e^-tau of that is the direct sun, the rest arrives diffuse, white. Taken
+// column by column along the sun ray (t = tau mu): an overcast of t = 15 leaves the ground a third
+// of the sun's light where the clear sky's alone was a sixth.
+const float CLOUD_ASYMMETRY = 0.85f;
+float cloud_diffuse_share(float tau, float mu) {
+  float vertical = tau * max(mu, 0.0f);
+  float through = 1.0f / (1.0f + 0.75f * (1.0f - CLOUD_ASYMMETRY) * vertical);
+  return max(through - exp(-tau), 0.0f);
+}
+
 // Marches the layers and the convective clouds along the unit view direction d. jitter in
 // [0, 1): the offset of the samples within their steps. The layers' intervals are marched in
 // order of their starts; the convective span's points are each marched once with the
@@ -729,18 +744,10 @@ vec4 render_pixel(ivec2 pixel, ivec2 size, IN(MarchParams) m, OUT(int) loop_coun
   // The sky's loops (a sun transmittance per step) and the ground's.
   loop_count = clouds.loop_count + 17 * m.sky_steps + 16 + ground_loops;
 
-  // The clear sky, split at the clouds' mean distance for aerial perspective, its sunlight
-  // shadowed by the clouds (crepuscular rays).
-  vec3 inscatter_total, inscatter_split, transmittance_total, transmittance_split;
-  SkyIntegral sky = sky_integral_begin(d, ray_end, clouds.distance, m.sun, m.sky_steps);
-  // The light around the air near the ground: the sky's above, the ground's below.
-  sky.skylight = 0.5f * (m.ground_ambient / PI_F + m.ground_radiance);
-  for (int i = 0; i < m.sky_steps; ++i) {
-    vec3 q = sky_integral_point(sky, origin_from_centre, d, i);
-    sky_integral_step(sky, q, i, m.sun, m.earth_radius, sky_sun_visibility(q + centre, centre, m, sky_shadow));
-  }
-  sky_integral_end(sky, inscatter_total, inscatter_split, transmittance_total, transmittance_split);
-  vec3 background = vec3(0.0f);
+  // The light around the air: the sky's (and, where the ray ends on the ground, what the clouds
+  // over that ground scatter down) above, the ground's below.
+  vec3 air_light = m.ground_ambient;
+  vec3 ground = vec3(0.0f);
   if (hits_ground) {
     // Lambertian ground (land_cover.glsl's albedo), lit by the sun and the sky; lakes and rivers
     // mirror the sky and the sun by Fresnel's law on top of the light from under their surface.
@@ -760,22 +767,37 @@ vec4 render_pixel(ivec2 pixel, ivec2 size, IN(MarchParams) m, OUT(int) loop_coun
     loop_count += shadow_loops;
     // The clouds' shadows: every layer between the ground and the sun.
     int cloud_shadow_loops = 0;
-    float shadow = exp(-shadow_depth(ray_end * d, centre, -1, -1.0e30f, cloud_shadow_loops, m, noise_volume,
-                                     weather_field, convective_volumes));
+    float cloud_depth = shadow_depth(ray_end * d, centre, -1, -1.0e30f, cloud_shadow_loops, m, noise_volume,
+                                     weather_field, convective_volumes);
+    float shadow = exp(-cloud_depth);
     loop_count += cloud_shadow_loops;
-    vec3 sunlight = solar_irradiance() * transmittance_to_space(point, m.sun, m.earth_radius) * (sunlit * shadow);
+    vec3 sun_above = solar_irradiance() * transmittance_to_space(point, m.sun, m.earth_radius);
+    vec3 sunlight = sun_above * (sunlit * shadow);
     vec3 sun_at_ground = sunlight * max(dot(normal, m.sun), 0.0f);
-    vec3 ground = (surface.albedo / PI_F) * (sun_at_ground + m.ground_ambient);
+    // The sky's light and what the clouds between the point and the sun scatter down.
+    vec3 diffuse = m.ground_ambient + sun_above * (max(m.sun.z, 0.0f) * cloud_diffuse_share(cloud_depth, m.sun.z));
+    air_light = diffuse;
+    ground = (surface.albedo / PI_F) * (sun_at_ground + diffuse);
     if (surface.water > 0.0f) {
       // The water's surface is level: the sky (its mean radiance, ambient / pi) and the sun's
       // glint on the wind-roughened facets (sun_glint.glsl) by Fresnel, the rest from below.
       vec3 sun_on_water = sunlight * max(dot(up, m.sun), 0.0f);
-      vec3 water = (WATER_ALBEDO / PI_F) * (sun_on_water + m.ground_ambient) +
-                   water_fresnel(dot(up, -d)) * m.ground_ambient / PI_F + sun_glint_brdf(up, -d, m.sun, LAKE_WIND) * sun_on_water;
+      vec3 water = (WATER_ALBEDO / PI_F) * (sun_on_water + diffuse) +
+                   water_fresnel(dot(up, -d)) * diffuse / PI_F + sun_glint_brdf(up, -d, m.sun, LAKE_WIND) * sun_on_water;
       ground = mix(ground, water, surface.water);
     }
-    background = transmittance_total * ground;
   }
+  // The clear sky, split at the clouds' mean distance for aerial perspective, its sunlight
+  // shadowed by the clouds (crepuscular rays).
+  vec3 inscatter_total, inscatter_split, transmittance_total, transmittance_split;
+  SkyIntegral sky = sky_integral_begin(d, ray_end, clouds.distance, m.sun, m.sky_steps);
+  sky.skylight = 0.5f * (air_light / PI_F + m.ground_radiance);
+  for (int i = 0; i < m.sky_steps; ++i) {
+    vec3 q = sky_integral_point(sky, origin_from_centre, d, i);
+    sky_integral_step(sky, q, i, m.sun, m.earth_radius, sky_sun_visibility(q + centre, centre, m, sky_shadow));
+  }
+  sky_integral_end(sky, inscatter_total, inscatter_split, transmittance_total, transmittance_split);
+  vec3 background = hits_ground ? transmittance_total * ground : vec3(0.0f);
   vec3 color = inscatter_split + transmittance_split * clouds.radiance +
                clouds.transmittance * (inscatter_total - inscatter_split + background);
   return vec4(color, 1.0f - clouds.transmittance);

@@ -27,6 +27,7 @@ const int PROBE_CONVECTIVE_DENSITY = 22;
 // detail_eroded(x[0].z at x[1] with footprint x[0].w, strength x[0].y) and
 // convective_at(x[2], the same footprint and strength)
 const int PROBE_DETAIL_EROSION = 24;
+const int PROBE_CLOUD_DIFFUSE_SHARE = 25;  // cloud_diffuse_share(x[0].y, x[0].z)
 const int PROBE_CONVECTIVE_STEPS = 23;  // convective_steps over x[0].y metres, march_fraction(x[0].z)
 #ifndef __cplusplus
 // The renderer's textures and hooks (one convective volume here: its stack of one clamps as the
@@ -222,6 +223,7 @@ vec4 probe_cloud_march(mat4 x, IN(NoiseVolume) noise_volume, IN(WeatherField) we
     return vec4(convective_density(convective_volumes, vec3(x[1]), int(x[0].y)), 0.0f, 0.0f, 0.0f);
   }
   m.convective_count = 1;
+  if (f == PROBE_CLOUD_DIFFUSE_SHARE) return vec4(cloud_diffuse_share(x[0].y, x[0].z), 0.0f, 0.0f, 0.0f);
   if (f == PROBE_DETAIL_EROSION) {
     m.detail_erosion = x[0].y;
     return vec4(detail_eroded(x[0].z, vec3(x[1]), x[0].w, m, noise_volume),
