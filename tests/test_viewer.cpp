@@ -8,10 +8,12 @@
 
 #include "apps/viewer/modeller.hpp"
 #include "apps/viewer/panels.hpp"
+#include "apps/viewer/view_source.hpp"
 #include "apps/viewer/view_state.hpp"
 #include "apps/viewer/viewer.hpp"
 #include "cli_support.hpp"
 #include "core/error.hpp"
+#include "gl_support.hpp"
 #include "params/field_binding.hpp"
 #include "params/table.hpp"
 #include "regional/sites.hpp"
@@ -200,6 +202,33 @@ TEST_CASE("modeller picking: a ray enters spheres and capsules where the geometr
   m.primitives = {far_one, near_one};
   CHECK(viewer::pick_primitive(m, along_x) == 1);
   CHECK(viewer::pick_primitive(m, {glsl::vec3(0, 1, 0), glsl::vec3(1, 0, 0)}) == -1);
+}
+
+TEST_CASE("the modeller's volume follows an edit of the flat base and top, not only of the primitives",
+          "[viewer][modeller][gpu]") {
+  test::test_context();
+  viewer::ViewState state = viewer::modeller_state(model::example("towering"));
+  viewer::ModelSource source(24);
+  source.render(state, 16, 16);
+  const auto voxels_below = [&](float level) {
+    const std::vector<float> v = source.volume()->read();
+    int cloudy = 0;
+    for (int z = 0; (z + 0.5f) / 24 < level; ++z)
+      for (int k = 0; k < 24 * 24; ++k) cloudy += v[size_t(z) * 24 * 24 + size_t(k)] > 0.0f;
+    return cloudy;
+  };
+  REQUIRE(voxels_below(0.4f) > 0);  // the towering cumulus's column starts at 0.18
+  // Raising the base is a change of the whole model: the volume is computed again, and nothing
+  // is left below the new base.
+  state.model.base = 0.4f;
+  const render::RenderResult raised = source.render(state, 16, 16);
+  CHECK(std::any_of(raised.timings_ms.begin(), raised.timings_ms.end(),
+                    [](const auto& t) { return t.first == "volume"; }));
+  CHECK(source.volume()->model().base == 0.4f);
+  CHECK(voxels_below(0.4f) == 0);
+  state.model.top = 0.6f;
+  source.render(state, 16, 16);
+  CHECK(source.volume()->model().top == 0.6f);
 }
 
 TEST_CASE("modeller picking: project() puts a point where cursor_ray() looks back through it",

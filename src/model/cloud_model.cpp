@@ -123,6 +123,11 @@ glsl::ModelPrimitive pack(const Primitive& p) {
   return g;
 }
 
+bool same_but_primitives(const CloudModel& a, const CloudModel& b) {
+  return a.primitives.size() == b.primitives.size() && a.blend == b.blend && a.scale == b.scale &&
+         a.extent_m == b.extent_m && a.base == b.base && a.top == b.top && a.noise == b.noise;
+}
+
 float max_noise_frequency(const CloudModel& model, int size) { return 0.25f * float(size) * model.scale; }
 
 glsl::vec2 levels(const CloudModel& model) { return glsl::vec2(model.base, model.top); }

@@ -92,6 +92,11 @@ struct CloudModel {
   std::vector<Primitive> primitives;
 };
 
+// Whether two models agree in everything but their primitives' values (blend, scale, extent,
+// levels, global noise and the number of primitives): then a density volume of one becomes the
+// other's by recomputing only the primitives that differ (DensityVolume::edit).
+bool same_but_primitives(const CloudModel& a, const CloudModel& b);
+
 // Checks every value against the table and the rule of eq. 3 (one weight for all primitives
 // in the Lipus blends); throws ModelError naming `source` and the primitive.
 void validate(const CloudModel& model, const std::string& source);

@@ -176,9 +176,7 @@ render::RenderResult ModelSource::render(const ViewState& state, int width, int 
   const model::CloudModel& shown = volume_->model();
   const model::CloudModel& wanted = state.model;
   int changed = -1, count = 0;
-  const bool same_frame = !shown.primitives.empty() && shown.primitives.size() == wanted.primitives.size() &&
-                          shown.blend == wanted.blend && shown.scale == wanted.scale &&
-                          shown.extent_m == wanted.extent_m && shown.noise == wanted.noise;
+  const bool same_frame = !shown.primitives.empty() && model::same_but_primitives(shown, wanted);
   if (same_frame)
     for (std::size_t i = 0; i < wanted.primitives.size(); ++i)
       if (shown.primitives[i] != wanted.primitives[i]) {
