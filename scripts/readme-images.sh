@@ -13,6 +13,7 @@
 #   docs/images/render_orbit_{36000,2000,400}.png  the same cover from 36000, 2000 and 400 km
 #   docs/images/gurten-thunderstorm.png      scenes/gurten-thunderstorm.json (convective clouds)
 #   docs/images/bantiger-fog.png             scenes/bantiger-fog.json (the sea of fog from the Bantiger)
+# With --orbit it makes the orbit view's images alone (about a minute).
 # With --report it also runs `nephele report` (about 35 minutes on two cores) and copies its
 # work-precision diagrams (error_vs_runtime*.svg, render_error_vs_runtime.svg,
 # moving_error_vs_runtime.svg; `nephele report moving` alone makes the last in about 4 minutes).
@@ -23,6 +24,27 @@ nephele=build/nephele
 [[ -x "$nephele" ]] || { echo "readme-images: build first (scripts/quickstart.sh)" >&2; exit 1; }
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
+
+orbit_images() {
+  # The orbit view's cover at 512 per face, of the moment the view shows (render alone makes 128).
+  "$nephele" generate --time 2026-06-21T17:00Z --files faces --quiet --out "$work/cover-orbit"
+  "$nephele" render --view orbit --cover "$work/cover-orbit" --altitude-km 12000 --time 2026-06-21T17:00Z --quiet \
+    --out "$work/render_orbit.png"
+  cp "$work/render_orbit.png" "$work/render_orbit.json" docs/images/
+  # The same cover from geostationary height (the full disk), 2000 km, and 400 km (the ISS's
+  # height) looking west-north-west towards the evening sun.
+  "$nephele" render --view orbit --cover "$work/cover-orbit" --altitude-km 36000 --time 2026-06-21T12:00Z --quiet \
+    --out "$work/render_orbit_36000.png"
+  "$nephele" render --view orbit --cover "$work/cover-orbit" --altitude-km 2000 --time 2026-06-21T17:00Z --quiet \
+    --out "$work/render_orbit_2000.png"
+  "$nephele" render --view orbit --cover "$work/cover-orbit" --altitude-km 400 --heading 290 --pitch -25 --fov 70 \
+    --time 2026-06-21T17:00Z --quiet --out "$work/render_orbit_400.png"
+  for km in 36000 2000 400; do cp "$work/render_orbit_$km.png" docs/images/; done
+}
+if [[ "${1:-}" == "--orbit" ]]; then
+  orbit_images
+  exit 0
+fi
 
 "$nephele" generate --out "$work/cover"
 cp "$work/cover/cover_equirect.png" docs/images/cover_equirect.png
@@ -40,20 +62,7 @@ cp "$work/render_gurten.png" "$work/render_gurten.json" docs/images/
 cp "$work/render_gurten_panorama.png" "$work/render_gurten_panorama.json" docs/images/
 "$nephele" render --view bantiger --quality final --no-cache --quiet --out "$work/render_bantiger.png"
 cp "$work/render_bantiger.png" "$work/render_bantiger.json" docs/images/
-# The orbit view's cover at 512 per face, of the moment the view shows (render alone makes 128).
-"$nephele" generate --time 2026-06-21T17:00Z --files faces --quiet --out "$work/cover-orbit"
-"$nephele" render --view orbit --cover "$work/cover-orbit" --altitude-km 12000 --time 2026-06-21T17:00Z --quiet \
-  --out "$work/render_orbit.png"
-cp "$work/render_orbit.png" "$work/render_orbit.json" docs/images/
-# The same cover from geostationary height (the full disk), 2000 km, and 400 km (the ISS's
-# height) looking west-north-west towards the evening sun.
-"$nephele" render --view orbit --cover "$work/cover-orbit" --altitude-km 36000 --time 2026-06-21T12:00Z --quiet \
-  --out "$work/render_orbit_36000.png"
-"$nephele" render --view orbit --cover "$work/cover-orbit" --altitude-km 2000 --time 2026-06-21T17:00Z --quiet \
-  --out "$work/render_orbit_2000.png"
-"$nephele" render --view orbit --cover "$work/cover-orbit" --altitude-km 400 --heading 290 --pitch -25 --fov 70 \
-  --time 2026-06-21T17:00Z --quiet --out "$work/render_orbit_400.png"
-for km in 36000 2000 400; do cp "$work/render_orbit_$km.png" docs/images/; done
+orbit_images
 "$nephele" render --scene scenes/gurten-thunderstorm.json --quality final --no-cache --quiet --out "$work/storm"
 cp "$work/storm/gurten-thunderstorm.png" docs/images/gurten-thunderstorm.png
 "$nephele" render --scene scenes/bantiger-fog.json --quality final --no-cache --quiet --out "$work/fog"

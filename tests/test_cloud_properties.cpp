@@ -5,7 +5,10 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <random>
 #include <vector>
+
+#include <glm/glm.hpp>
 
 #include "cover/coverage_threshold.hpp"
 #include "cover/global_cover.hpp"
@@ -13,6 +16,7 @@
 #include "gl_support.hpp"
 #include "shader_math/shader_math.hpp"
 #include "steady_cover.hpp"
+#include "studies/cover_statistics.hpp"
 
 using namespace nephele;
 
@@ -203,4 +207,141 @@ TEST_CASE("the remap's optical thickness follows each cloudy texel's rank in den
       REQUIRE(top[k] == 0.0f);
     }
   }
+}
+
+namespace {
+
+// A point of the 6371 km sphere `east` and `north` metres from 0 N 0 E along the tangent plane.
+glm::vec3 sphere_point(double east, double north) {
+  const double R = 6371000.0;
+  const glm::dvec3 d = glm::normalize(glm::dvec3(1.0, east / R, north / R));
+  return glm::vec3(R * d);
+}
+
+// The areas and perimeters (pixels, pixel edges to clear pixels) of the 4-connected cloudy
+// objects of an n x n image that do not touch its border (those are cut off by it).
+void object_areas_and_perimeters(const std::vector<char>& cloudy, int n, std::vector<double>& areas,
+                                 std::vector<double>& perimeters) {
+  std::vector<char> seen(cloudy.size(), 0);
+  for (int start = 0; start < n * n; ++start) {
+    if (!cloudy[start] || seen[start]) continue;
+    std::vector<int> stack{start};
+    seen[start] = 1;
+    long area = 0, perimeter = 0;
+    bool cut = false;
+    while (!stack.empty()) {
+      const int q = stack.back();
+      stack.pop_back();
+      ++area;
+      const int i = q % n, j = q / n;
+      cut = cut || i == 0 || j == 0 || i == n - 1 || j == n - 1;
+      for (const auto& [di, dj] : {std::pair{-1, 0}, std::pair{1, 0}, std::pair{0, -1}, std::pair{0, 1}}) {
+        const int x = i + di, y = j + dj;
+        if (x < 0 || y < 0 || x >= n || y >= n) continue;
+        const int r = y * n + x;
+        if (!cloudy[r]) {
+          ++perimeter;
+        } else if (!seen[r]) {
+          seen[r] = 1;
+          stack.push_back(r);
+        }
+      }
+    }
+    if (!cut) {
+      areas.push_back(double(area));
+      perimeters.push_back(double(perimeter));
+    }
+  }
+}
+
+}  // namespace
+
+TEST_CASE("the sub-texel cloud is the cover itself wherever a sample spans two texels", "[fast][properties]") {
+  const float texel = 20000.0f;
+  std::mt19937 random(5);
+  std::uniform_real_distribution<float> u(-1.0f, 1.0f), share(0.0f, 1.0f);
+  for (int k = 0; k < 200; ++k) {
+    const glm::vec3 p = 6371000.0f * glm::normalize(glm::vec3(u(random), u(random), u(random)));
+    const float c = k < 3 ? 0.5f * k : share(random);
+    // The first octave's wavelength is two texels; it fades out by a footprint of half of it.
+    const auto far = glsl::subtexel_cloud(p, c, texel, texel);
+    CHECK(far.cover == c);
+    CHECK(far.relief == 0.0f);
+    CHECK(far.field == 0.0f);
+    // Clear stays clear and overcast overcast, at any footprint.
+    CHECK(glsl::subtexel_cloud(p, 0.0f, texel, 10.0f).cover == 0.0f);
+    CHECK(glsl::subtexel_cloud(p, 1.0f, texel, 10.0f).cover == 1.0f);
+    // More cover never makes a point clearer.
+    CHECK(glsl::subtexel_cloud(p, std::min(c + 0.1f, 1.0f), texel, 300.0f).cover >=
+          glsl::subtexel_cloud(p, c, texel, 300.0f).cover);
+  }
+}
+
+TEST_CASE("the sub-texel cloud keeps the cover's share of the sky in expectation", "[properties]") {
+  // Cloudy where the field n lies below sigma Phi^-1(c): the share is c exactly for a normal n.
+  // The octave sum of gradient noise is near normal but not exactly; for a monotone function g
+  // into [0, 1], |E g(n) - E g(normal)| is at most the Kolmogorov distance between their
+  // distributions, measured here over the same points. Points spread over the whole sphere are
+  // some 100 first wavelengths (40 km) apart: independent, so the sampling error is the
+  // standard error of the shares.
+  const float texel = 20000.0f;
+  const int points = 20000;
+  std::mt19937 random(7);
+  std::normal_distribution<float> g;
+  std::vector<glm::vec3> where(points);
+  for (auto& p : where) p = 6371000.0f * glm::normalize(glm::vec3(g(random), g(random), g(random)));
+  // A footprint of 1 m resolves all 12 octaves: the whole field, standardised.
+  std::vector<double> field(points);
+  for (int k = 0; k < points; ++k) field[k] = glsl::subtexel_cloud(where[k], 0.5f, texel, 1.0f).field;
+  std::sort(field.begin(), field.end());
+  double kolmogorov = 0;
+  for (int k = 0; k < points; ++k)
+    kolmogorov = std::max({kolmogorov, std::abs(normal_cdf(field[k]) - double(k) / points),
+                           std::abs(normal_cdf(field[k]) - double(k + 1) / points)});
+  INFO("Kolmogorov distance of the standardised field from the normal " << kolmogorov);
+  CHECK(kolmogorov < 0.05);
+  for (float c : {0.05f, 0.3f, 0.5f, 0.8f, 0.97f})
+    for (float footprint : {1.0f, 2000.0f}) {  // sharp edges; the octaves below 4-8 km faded out
+      double sum = 0, squares = 0;
+      for (const auto& p : where) {
+        const double share = glsl::subtexel_cloud(p, c, texel, footprint).cover;
+        sum += share;
+        squares += share * share;
+      }
+      const double mean = sum / points, error = std::sqrt((squares / points - mean * mean) / points);
+      INFO("cover " << c << ", footprint " << footprint << " m: mean share " << mean << " +- " << error);
+      CHECK(std::abs(mean - c) <= kolmogorov + 4 * error + kQuantile);
+    }
+}
+
+TEST_CASE("the sub-texel cloud's edges have the perimeter dimension of cloud edges, about 4/3", "[properties]") {
+  // Level sets of a fractional Brownian field of Hurst exponent H have dimension 2 - H (Mandelbrot
+  // 1982): 4/3 for the field's H = 2/3, the dimension Lovejoy (1982) found for clouds from the
+  // relation of their perimeters P to their areas A, P ~ A^(D/2), which is measured here as
+  // `nephele stats` does (docs/climate.md): on a 1024 x 1024 grid of 100 m spacing (the footprint)
+  // under 5 km cover texels at a cover of 0.3 (isolated clouds), over the objects of 10 pixels and
+  // more that the grid does not cut. The field's octaves reach from 10 km down to 200-400 m (the
+  // finer ones fade out at this footprint), so the smallest objects' perimeters are smoother than
+  // the scaling's and pixels round them: a fit over about 2.5 decades of area is within 0.1 of
+  // the scaling's dimension (Lovejoy's own fit: 1.35 +- 0.05).
+  const int n = 1024;
+  const float texel = 5000.0f, spacing = 100.0f;
+  std::vector<char> cloudy(n * n);
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i)
+      cloudy[j * n + i] =
+          glsl::subtexel_cloud(sphere_point(i * spacing, j * spacing), 0.3f, texel, spacing).cover > 0.5f;
+  std::vector<double> areas, perimeters;
+  object_areas_and_perimeters(cloudy, n, areas, perimeters);
+  const auto fit = studies::fit_power_law(areas, perimeters, 10.0, 1e9);
+  INFO(fit.points << " objects, D = " << 2 * fit.slope);
+  REQUIRE(fit.points >= 100);
+  CHECK(std::abs(2 * fit.slope - 4.0 / 3.0) < 0.1);
+  // Without the detail (a footprint of two texels) the cover's smooth field draws no edges at all.
+  bool any_edge = false;
+  for (int i = 0; i < n && !any_edge; i += 8) {
+    const float c = glsl::subtexel_cloud(sphere_point(i * spacing, 0.0), 0.3f, texel, 2 * texel).cover;
+    any_edge = c != 0.3f;
+  }
+  CHECK(!any_edge);
 }

@@ -382,6 +382,21 @@ TEST_CASE("cloud_properties.glsl on the GPU agrees with the CPU", "[probe]") {
     cases.push_back({arguments(PROBE_COVERED_DEPTH, vec4(c, tau, 0, 0)),
                      std::max(kTranscendental, 64 * kUlp * covered_optical_depth(c, tau))});
   }
+  // The sub-texel cloud: up to 12 octaves of gradient noise at lattice coordinates up to 1e5 (6371
+  // km over 76 m), where the GPU's division and floor may round a position by a few ulp; the
+  // tolerance is the function's change when the point moves by 8 ulp of its radius (measured on
+  // the CPU, twice), plus the normal CDF's and the quantile's rounding.
+  for (int k = 0; k < 24; ++k) {
+    const vec3 p = 6371000.0f * normalize(vec3(r.v(-1.0f, 1.0f)));
+    const float c = k < 2 ? float(k) : r(0.0f, 1.0f);
+    const float texel = 20000.0f, footprint = std::exp(r(std::log(5.0f), std::log(40000.0f)));
+    const auto at = subtexel_cloud(p, c, texel, footprint);
+    const auto moved = subtexel_cloud(p * (1.0f + 8 * kUlp), c, texel, footprint);
+    const float change = std::max(
+        {std::abs(at.cover - moved.cover), std::abs(at.relief - moved.relief), std::abs(at.field - moved.field)});
+    cases.push_back({arguments(PROBE_SUBTEXEL_CLOUD, vec4(c, texel, footprint, 0), vec4(p, 0.0f)),
+                     2 * change + 16 * kTranscendental});
+  }
   compare("cloud_properties", probe_cloud_properties, cases);
 }
 

@@ -54,6 +54,12 @@ glm::dvec3 pattern(double latitude_deg, double longitude_deg) {
 
 render::CoverCube clear_cover(int size = 8) { return {size, std::vector<float>(6 * size * size, 0.0f)}; }
 
+// The same cover, optical thickness and cloud top (km) everywhere.
+render::CoverCube uniform_cover(int size, float cover, float tau, float top_km) {
+  const size_t texels = 6 * size * size;
+  return {size, std::vector<float>(texels, cover), std::vector<float>(texels, tau), std::vector<float>(texels, top_km)};
+}
+
 // A cover with coverage 1 within `radius_deg` of a point and 0 elsewhere (texel centres).
 render::CoverCube patch_cover(int size, double latitude_deg, double longitude_deg, double radius_deg) {
   render::CoverCube cover{size, {}};
@@ -261,26 +267,103 @@ TEST_CASE("orbit: thin cloud lets the ground through by its optical thickness, a
   // half floats of the cover's texture round tau and the cover by 2^-11 relative: 0.3 % of alpha,
   // and the B-spline of equal texels is exact.
   const int size = 16;
-  const size_t texels = 6 * size * size;
-  const render::CoverCube thin{size, std::vector<float>(texels, 0.15f), std::vector<float>(texels, 0.15f),
-                               std::vector<float>(texels, 3.0f)};
+  const render::CoverCube thin = uniform_cover(size, 0.15f, 0.15f, 3.0f);
+  // Without the sub-texel cloud (which draws where in the texel the cloud is; below) a pixel has
+  // the texel's mean.
   const auto camera = nadir_camera(10, 60, 2.0e6, 9, 5, 2);
   const auto planet = uniform_planet(0.05);
-  const glm::vec4 seen = pixel(render::render_orbit(camera, june_morning, planet, thin), 4, 2);
+  render::OrbitSettings smooth;
+  smooth.cloud_detail = 0;
+  const glm::vec4 seen = pixel(render::render_orbit(camera, june_morning, planet, thin, smooth), 4, 2);
   const double tau = -std::log(1 - 0.15 * (1 - std::exp(-0.15)));
   CHECK(seen.a == Approx(1 - std::exp(-tau)).epsilon(0.01));
   // The ground shows through: the pixel keeps at least the clear pixel's light times the view's
   // transmittance exp(-tau) and the sunlight's through the slab, exp(-tau / mu) (the light the
   // cloud scatters and the air before it only add).
-  const glm::vec4 clear = pixel(render::render_orbit(camera, june_morning, planet, clear_cover(size)), 4, 2);
+  const glm::vec4 clear = pixel(render::render_orbit(camera, june_morning, planet, clear_cover(size), smooth), 4, 2);
   const double mu = glm::dot(unit_of(10, 60), render::sun_direction_ecef(june_morning));
   REQUIRE(mu > 0.2);
   const double through = std::exp(-tau) * std::exp(-tau / mu);
   for (int c = 0; c < 3; ++c) CHECK(seen[c] >= through * clear[c] * (1 - 1e-3));
   // The same cover with tau 30 (thick): opaque.
-  const render::CoverCube thick{size, std::vector<float>(texels, 1.0f), std::vector<float>(texels, 30.0f),
-                                std::vector<float>(texels, 3.0f)};
-  CHECK(pixel(render::render_orbit(camera, june_morning, planet, thick), 4, 2).a > 0.99f);
+  const render::CoverCube thick = uniform_cover(size, 1.0f, 30.0f, 3.0f);
+  CHECK(pixel(render::render_orbit(camera, june_morning, planet, thick, smooth), 4, 2).a > 0.99f);
+}
+
+TEST_CASE("orbit: the sub-texel cloud draws clear and cloudy places and keeps the cover's opacity on average",
+          "[orbit][thickness]") {
+  test::test_context();
+  // A cover of 0.15 everywhere, tau 30 (opaque where cloudy): with the sub-texel cloud a nadir
+  // pixel's opacity is c' (1 - exp(-30)), c' its footprint's cloudy share, whose expectation is
+  // the cover's 0.15 (tests/test_cloud_properties.cpp). 160 x 90 pixels of 7 km from 1000 km under
+  // 39 km texels (the field's first wavelength): the image holds some 500 independent cells of
+  // that size, so its mean opacity is within 4 standard errors (the pixels' deviation over the
+  // root of that count) of 0.15; and it is no haze: clear and cloudy pixels both.
+  const int size = 256;
+  const render::CoverCube sparse = uniform_cover(size, 0.15f, 30.0f, 3.0f);
+  const auto camera = nadir_camera(10, 60, 1.0e6, 160, 90, 60);
+  const auto r = render::render_orbit(camera, june_morning, uniform_planet(0.05), sparse);
+  double sum = 0, squares = 0, low = 1, high = 0;
+  for (int y = 0; y < 90; ++y)
+    for (int x = 0; x < 160; ++x) {
+      const double a = pixel(r, x, y).a;
+      sum += a;
+      squares += a * a;
+      low = std::min(low, a);
+      high = std::max(high, a);
+    }
+  const double n = 160 * 90, mean = sum / n, deviation = std::sqrt(squares / n - mean * mean);
+  const double width_m = 2 * 1.0e6 * std::tan(30 * degree), cells = width_m * width_m * 90 / 160 / (39000.0 * 39000.0);
+  INFO("mean opacity " << mean << ", deviation " << deviation << ", " << cells << " cells, range " << low << ".."
+                       << high);
+  CHECK(std::abs(mean - 0.15) < 4 * deviation / std::sqrt(cells));
+  CHECK(low < 0.02);
+  CHECK(high > 0.9);
+}
+
+TEST_CASE("orbit: under a low sun the cloud tops' relief shows as texture, under a high sun hardly",
+          "[orbit][relief]") {
+  test::test_context();
+  // An overcast of tau 20 with its tops at 8 km (a 3.3 km deep slab, so the sub-texel field's
+  // relief moves its tops by some 0.15 x 3.3 km = 500 m per deviation) seen straight down from
+  // 400 km over 35 km. Shading by slopes s goes as s tan(zenith angle) of the sun: at 85 degrees
+  // (elevation 5) 11.4 s, at 30 degrees 0.58 s, twenty times less; the light that diffuses through
+  // the cloud evens both out alike. So the luminance's relative deviation under the low sun is at
+  // least twice that under the high sun (a margin of ten on the slopes' factor). Without the
+  // sub-texel cloud the flat overcast has the march's noise only (the per-pixel jitter of the
+  // segments, whose light paths are longest under a low sun): a fifth of the relief's texture at most.
+  const int size = 64;
+  const render::CoverCube overcast = uniform_cover(size, 1.0f, 20.0f, 8.0f);
+  const glm::dvec3 sun = render::sun_direction_ecef(june_morning);
+  const glm::dvec3 east = glm::normalize(glm::cross(glm::dvec3(0, 0, 1), sun));
+  auto point_at = [&](double zenith_deg) {
+    const glm::dvec3 u = std::cos(zenith_deg * degree) * sun + std::sin(zenith_deg * degree) * glm::cross(sun, east);
+    return std::pair{std::asin(u.z) / degree, std::atan2(u.y, u.x) / degree};
+  };
+  auto relative_deviation = [&](double zenith_deg, double detail) {
+    const auto [lat, lon] = point_at(zenith_deg);
+    render::OrbitSettings settings;
+    settings.cloud_detail = detail;
+    const auto r = render::render_orbit(nadir_camera(lat, lon, 4.0e5, 64, 64, 5), june_morning, uniform_planet(0.1),
+                                        overcast, settings);
+    double sum = 0, squares = 0;
+    for (int y = 0; y < 64; ++y)
+      for (int x = 0; x < 64; ++x) {
+        const double l = luminance(pixel(r, x, y));
+        sum += l;
+        squares += l * l;
+      }
+    const double mean = sum / 4096;
+    return std::sqrt(std::max(squares / 4096 - mean * mean, 0.0)) / mean;
+  };
+  const double low = relative_deviation(85, 1), high = relative_deviation(30, 1);
+  const double low_smooth = relative_deviation(85, 0), high_smooth = relative_deviation(30, 0);
+  INFO("relative deviation: low sun " << low << ", high sun " << high << "; without the detail " << low_smooth << ", "
+                                      << high_smooth);
+  CHECK(low > 2 * high);
+  CHECK(low > 0.02);
+  CHECK(low_smooth < 0.2 * low);
+  CHECK(high_smooth < 0.01);
 }
 
 TEST_CASE("orbit: a descent from 2000 km to 1 km changes luminance and cloud fraction smoothly", "[orbit][descent]") {

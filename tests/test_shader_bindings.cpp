@@ -57,7 +57,7 @@ TEST_CASE("the named binding points of the shaders are those the driver reports"
       {"render/orbit.comp", "day_texture", false, b::render_orbit::day_texture},
       {"render/orbit.comp", "night_texture", false, b::render_orbit::night_texture},
       {"render/orbit.comp", "cover_map", false, b::render_orbit::cover_map},
-      {"render/orbit.comp", "detail_noise", false, b::render_orbit::detail_noise},
+      {"render/orbit.comp", "water_texture", false, b::render_orbit::water_texture},
   };
   for (const Expected& e : expected) {
     INFO(e.shader << ": " << e.name);

@@ -6,6 +6,7 @@
 #ifndef NEPHELE_CLOUD_PROPERTIES_GLSL
 #define NEPHELE_CLOUD_PROPERTIES_GLSL
 #include "prelude.glsl"
+#include "perlin.glsl"
 
 // The standard normal quantile, Phi^-1(p) for p in (0, 1), by the rational approximation of
 // Abramowitz and Stegun (1964) 26.2.23 (Hastings): |error| < 4.5e-4 in z.
@@ -14,6 +15,16 @@ float normal_quantile(float p) {
   float t = sqrt(-2.0f * log(q));
   float z = t - (2.515517f + t * (0.802853f + t * 0.010328f)) / (1.0f + t * (1.432788f + t * (0.189269f + t * 0.001308f)));
   return p < 0.5f ? -z : z;
+}
+
+// The standard normal CDF, Phi(z) = (1 + erf(z / sqrt 2)) / 2, with erf from Abramowitz and
+// Stegun 7.1.26 (|error| <= 1.5e-7; GLSL has no erf).
+float normal_cdf(float z) {
+  float x = abs(z) * 0.70710678f;
+  float t = 1.0f / (1.0f + 0.3275911f * x);
+  float poly = t * (0.254829592f + t * (-0.284496736f + t * (1.421413741f + t * (-1.453152027f + t * 1.061405429f))));
+  float erf_x = 1.0f - poly * exp(-x * x);
+  return z >= 0.0f ? 0.5f + 0.5f * erf_x : 0.5f - 0.5f * erf_x;
 }
 
 // The ranks are kept 1/1000 from 0 and 1: the quantile's tails (|z| <= 3.09) bound tau within
@@ -120,6 +131,70 @@ float cloud_top_from_cover(float cover, float latitude) {
   types.cumulus = 0.0f;
   types.cirrus = 0.0f;
   return cover > 0.0f ? cloud_top_km(types, latitude, 0.0f, 0.0f) : 0.0f;
+}
+
+// Below a cover texel: the cover says what share of a texel is cloudy, not where. A renderer that
+// draws the texel's share as a uniform haze shows the texel grid and soft edges; real cloud
+// fields are cloudy or clear down to tens of metres with edges whose perimeter dimension is
+// about 4/3 (Lovejoy 1982, "Area-perimeter relation for rain and cloud areas", Science 216).
+// subtexel_cloud draws that: a fractional Brownian field n on the sphere, octaves of gradient
+// noise from two cover texels down, amplitude 2^-H per halving with Hurst exponent H = 2/3, since
+// the level sets of such a field have dimension 2 - H = 4/3 (Mandelbrot, "The Fractal Geometry of
+// Nature", 1982, ch. 28); a point is cloudy where n lies below its quantile at the cover,
+// n < sigma Phi^-1(c), so that the share c of every texel stays cloudy in expectation.
+// Band-limited: an octave fades out as the sample's footprint grows from a quarter to half its
+// wavelength, and the unresolved octaves (the faded ones and the infinite tail beyond the last
+// one drawn) are taken by their distribution: the cloudy share of the footprint is
+// Phi((sigma Phi^-1(c) - n_resolved) / sigma_unresolved). So it is the cover's own value, exactly,
+// wherever a sample spans more than two texels (nothing drawn), a sharp fractal edge close up,
+// and continuous in between: nothing switches with distance.
+const float SUBTEXEL_GAIN = 0.62996052f;  // 2^-(2/3)
+const float SUBTEXEL_FIRST_WAVELENGTH = 1.0f;  // texels
+const int SUBTEXEL_OCTAVES = 12;
+// The tops' relief takes the field's octaves of wavelengths up to this, with amplitudes
+// (wavelength / it)^(2/3): in metres, whatever the cover's texels (the cover's own top channel
+// holds the larger scales); convective cells and the tops' undulations are below some 10 km.
+const float SUBTEXEL_RELIEF_WAVELENGTH = 8000.0f;
+
+struct SubtexelCloud {
+  float cover;   // the cloudy share of the sample's footprint
+  float field;   // the resolved field in units of the whole field's deviation (mean 0, deviation <= 1)
+  float relief;  // the resolved octaves below SUBTEXEL_RELIEF_WAVELENGTH, in units of their whole
+                 // series' deviation, negated: > 0 in the cores of the clouds they draw
+};
+
+// At the point p on the planet (m, from its centre; points on one radius get the same value), for
+// a cover c, cover texels `texel` m wide and a sample `footprint` m wide.
+SubtexelCloud subtexel_cloud(vec3 p, float cover, float texel, float footprint) {
+  SubtexelCloud result;
+  result.cover = cover;
+  result.relief = 0.0f;
+  result.field = 0.0f;
+  float wavelength = SUBTEXEL_FIRST_WAVELENGTH * texel;
+  float amplitude = 1.0f;
+  float resolved = 0.0f, unresolved = 0.0f, relief = 0.0f;
+  bool any = false;
+  for (int k = 0; k < SUBTEXEL_OCTAVES; ++k) {
+    float kept = 1.0f - smoothstep(0.25f * wavelength, 0.5f * wavelength, footprint);
+    if (kept <= 0.0f) break;  // the finer octaves fade out earlier still
+    any = true;
+    float octave = kept * perlin_noise(p / wavelength, ivec3(0), uvec3(uint(k), 0x6d3bu, 0x2c1bu));
+    resolved += amplitude * octave;
+    if (wavelength <= SUBTEXEL_RELIEF_WAVELENGTH) relief += pow(wavelength / SUBTEXEL_RELIEF_WAVELENGTH, 0.6666667f) * octave;
+    unresolved += amplitude * amplitude * (1.0f - kept * kept);
+    amplitude *= SUBTEXEL_GAIN;
+    wavelength *= 0.5f;
+  }
+  if (!any) return result;
+  // Octaves from k on: sum of a_k^2 = a_k^2 / (1 - g^2); the whole field's variance is 1 / (1 - g^2).
+  float tail = 1.0f / (1.0f - SUBTEXEL_GAIN * SUBTEXEL_GAIN);
+  unresolved += amplitude * amplitude * tail;
+  float sigma = PERLIN_OCTAVE_SIGMA * sqrt(tail);
+  result.relief = -relief / sigma;
+  result.field = resolved / sigma;
+  if (cover > 0.0f && cover < 1.0f)
+    result.cover = normal_cdf((normal_quantile(cover) * sigma - resolved) / (PERLIN_OCTAVE_SIGMA * sqrt(unresolved)));
+  return result;
 }
 
 #endif

@@ -12,6 +12,13 @@
 // and local refinement, docs/noise.md); the bound leaves room for float rounding.
 const float PERLIN_BOUND = 1.03636f;
 
+// Standard deviation of one octave of perlin_noise over a uniformly distributed point:
+// Var = (2/3) E[sum_c w_c^2 |f - c|^2] (each gradient of the 12 has E[g g^T] = (2/3) I and the
+// corners' gradients are independent) = 2 A B^2 with B = int_0^1 (1 - F)^2 + F^2 = 181/231 and
+// A = int_0^1 (1 - F)^2 t^2 + F^2 (1 - t)^2 = 535/9009 for the quintic fade F:
+// Var = 35054270/480729249 (docs/layers.md).
+const float PERLIN_OCTAVE_SIGMA = 0.27003508f;
+
 // Perlin's quintic 6t^5 - 15t^4 + 10t^3: C2 across lattice planes.
 float perlin_fade(float t) {
   return t * t * t * (t * (t * 6.0f - 15.0f) + 10.0f);

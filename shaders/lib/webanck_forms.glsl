@@ -11,23 +11,7 @@
 #include "prelude.glsl"
 #include "tileable_noise.glsl"
 #include "cloud_density.glsl"
-
-// Standard deviation of one octave of perlin_noise over a uniformly distributed point:
-// Var = (2/3) E[sum_c w_c^2 |f - c|^2] (each gradient of the 12 has E[g g^T] = (2/3) I and the
-// corners' gradients are independent) = 2 A B^2 with B = int_0^1 (1 - F)^2 + F^2 = 181/231 and
-// A = int_0^1 (1 - F)^2 t^2 + F^2 (1 - t)^2 = 535/9009 for the quintic fade F:
-// Var = 35054270/480729249 (docs/layers.md).
-const float PERLIN_OCTAVE_SIGMA = 0.27003508f;
-
-// The standard normal CDF, Phi(z) = (1 + erf(z / sqrt 2)) / 2, with erf from Abramowitz and
-// Stegun 7.1.26 (|error| <= 1.5e-7; GLSL has no erf).
-float normal_cdf(float z) {
-  float x = abs(z) * 0.70710678f;
-  float t = 1.0f / (1.0f + 0.3275911f * x);
-  float poly = t * (0.254829592f + t * (-0.284496736f + t * (1.421413741f + t * (-1.453152027f + t * 1.061405429f))));
-  float erf_x = 1.0f - poly * exp(-x * x);
-  return z >= 0.0f ? 0.5f + 0.5f * erf_x : 0.5f - 0.5f * erf_x;
-}
+#include "cloud_properties.glsl"
 
 // Standard deviation of the weighted octave mean sum_k a_k n_k / sum_k a_k of independent
 // octaves (a_k = persistence^k) of a noise with deviation sigma: sigma sqrt(sum a^2) / sum a.

@@ -14,7 +14,6 @@ layout(rgba32f, binding = 0) uniform writeonly image2D radiance_image;
 layout(binding = 1) uniform sampler2D day_texture;    // equirect, linear RGB, row 0 = north
 layout(binding = 2) uniform sampler2D night_texture;  // equirect, linear RGB (city lights)
 layout(binding = 3) uniform samplerCube cover_map;    // (cover, tau, cloud top km, 0), GL face convention
-layout(binding = 4) uniform sampler3D detail_noise;   // 32^3 value noise in [0, 1], repeating
 layout(binding = 5) uniform sampler2D water_texture;  // equirect, fraction of open water (sun glint)
 
 #include "../lib/atmosphere.glsl"
@@ -45,6 +44,7 @@ uniform float u_cover_size;    // cover texels along a face edge
 uniform int u_cover_properties;  // 1: the cover map holds tau and cloud tops; 0: derived from the cover
 uniform float u_tau_median;      // the fallback's log-normal (the table's defaults)
 uniform float u_tau_spread;
+uniform float u_cloud_detail;   // 0: the cover's texels as they are; 1: the sub-texel cloud (cloud_slab)
 uniform float u_day_texel;     // arc length of one day-texture texel, m
 uniform int u_cloud_steps;
 uniform int u_shadow_steps;
@@ -77,8 +77,6 @@ vec4 shell_intervals(float b, float q_in, float q_out, float limit) {
   return vec4(a, max(a, inner.x), min(e, inner.y), e);
 }
 
-const float DETAIL_CELL = 1600.0f;  // m: the detail noise's coarse cell (the fine one is a quarter)
-
 float cover_lod(float footprint) { return max(log2(max(footprint, 1.0f) / u_cover_texel), 0.0f); }
 
 // The cover's channels (cover, tau, top km, 0) in direction n at mip level `lod`. Where a cover
@@ -95,17 +93,24 @@ vec4 cover_at(vec3 n, float lod) {
   return lod > 0.0f ? mix(smooth_cover, textureLod(cover_map, n, lod), lod) : smooth_cover;
 }
 
-// The cloud's slab in direction n: (base m, top m, extinction 1/m, the cloud's own extinction
-// 1/m), extinctions 0 where clear. The texel's cloud covers the share `cover` of it with optical
-// thickness tau; its mean transmittance 1 - c (1 - exp(-tau)) is that of a uniform slab of optical
-// depth covered_optical_depth(c, tau): thin cloud and the grey edges let the surface show
-// through, thick cloud is opaque. The light that diffuses through the cloud goes by the cloud's
-// own tau (the fourth component), not by that mean. The slab reaches from the type's top down by cloud_thickness_km. With `detail`
-// (the view's rays), close up, two octaves of value noise erode it (more where the cover is
-// thin); they fade out smoothly where a sample covers a noise cell, so nothing switches with
-// distance. The light's rays (shadows on the ground and in the cloud) take the slab as it is:
-// their optical depth is the cover's tau, which the erosion would only thin.
-vec4 cloud_slab(vec3 p, float footprint, bool detail) {
+// The relief of the clouds' tops: the sub-texel field raises the top by this share of the cloud's
+// depth per standard deviation (domes over the cores, lower towards the edges; a cumulonimbus of
+// 15 km gets overshooting tops of about 2 km, a stratocumulus deck of 300 m undulations of 45 m),
+// so that a low sun shows the tops' texture by their shadows on each other. The bases stay flat.
+const float TOP_RELIEF_SHARE = 0.15f;
+
+// The cloud's slab at p (m from the planet's centre): (base m, top m, extinction 1/m, the cloud's
+// own extinction 1/m), extinctions 0 where clear. The texel's cloud covers the share `cover` of it
+// with optical thickness tau; below the texel, subtexel_cloud (cloud_properties.glsl) says which
+// part of the sample's footprint is cloudy, with fractal edges down to the footprint's scale and
+// the cover's own value where a sample spans two texels. The sample's mean transmittance
+// 1 - c (1 - exp(-tau)) is that of a uniform slab of optical depth covered_optical_depth(c, tau):
+// thin cloud and the grey edges let the surface show through, thick cloud is opaque. The light
+// that diffuses through the cloud goes by the cloud's own tau (the fourth component), not by that
+// mean. The slab reaches from the type's top down by cloud_thickness_km, its top raised or lowered
+// by the field's relief. Every ray takes the slab at its own footprint: the view's at the pixel's,
+// the light's at its segments' lengths, so the shadows are as sharp as their rays resolve.
+vec4 cloud_slab(vec3 p, float footprint) {
   vec3 n = normalize(p);
   vec4 c = cover_at(n, cover_lod(footprint));
   if (u_cover_properties == 0) {
@@ -115,19 +120,15 @@ vec4 cloud_slab(vec3 p, float footprint, bool detail) {
   if (c.x <= 0.0f || c.y <= 0.0f) return vec4(0.0f);
   float top = 1000.0f * c.z;
   float thickness = 1000.0f * cloud_thickness_km(c.z, c.y);
-  float extinction = covered_optical_depth(c.x, c.y) / thickness;
-  float own = c.y / thickness;
-  float coarse = detail ? 1.0f - smoothstep(0.5f * DETAIL_CELL, 2.0f * DETAIL_CELL, footprint) : 0.0f;
-  if (coarse > 0.0f) {
-    float fine = 1.0f - smoothstep(0.125f * DETAIL_CELL, 0.5f * DETAIL_CELL, footprint);
-    float n1 = textureLod(detail_noise, p / (32.0f * DETAIL_CELL), 0.0f).r;
-    float n2 = textureLod(detail_noise, p / (8.0f * DETAIL_CELL) + vec3(0.37f), 0.0f).r;
-    float noise = 0.7f * n1 + 0.3f * mix(0.5f, n2, fine);
-    float erosion = clamp((noise - 0.45f * (1.0f - c.x) - 0.1f) * 3.0f, 0.0f, 1.0f);
-    extinction *= mix(1.0f, erosion, coarse);
-    own *= mix(1.0f, erosion, coarse);
+  float base = max(top - thickness, u_cloud_base);
+  float cover = c.x;
+  if (u_cloud_detail > 0.0f) {
+    SubtexelCloud detail = subtexel_cloud(n * u_radius, c.x, u_cover_texel, footprint);
+    cover = mix(c.x, detail.cover, u_cloud_detail);
+    top = max(top + u_cloud_detail * TOP_RELIEF_SHARE * thickness * detail.relief, base + 0.1f * thickness);
   }
-  return vec4(max(top - thickness, u_cloud_base), min(top, u_cloud_top), extinction, own);
+  float extinction = covered_optical_depth(cover, c.y) / thickness;
+  return vec4(base, min(top, u_cloud_top), extinction, c.y / thickness);
 }
 
 // The mean extinctions (1/m; cloud_slab's two) over the segment from p to p + dt d (relative to the
@@ -138,10 +139,10 @@ vec4 cloud_slab(vec3 p, float footprint, bool detail) {
 // evaluated: in the segment's part in the slab, at its middle or, in thick cloud, one mean free
 // path (1 / extinction) past where the segment enters it, which is where the light that leaves
 // the segment was scattered on average: the lit side of a thick cloud, not its dark inside.
-vec2 segment_extinction(vec3 p, vec3 d, float dt, float footprint, bool detail, out vec3 inside) {
+vec2 segment_extinction(vec3 p, vec3 d, float dt, float footprint, out vec3 inside) {
   vec3 middle = p + 0.5f * dt * d;
   inside = middle;
-  vec4 slab = cloud_slab(middle, footprint, detail);
+  vec4 slab = cloud_slab(middle, footprint);
   if (slab.z <= 0.0f || slab.y <= slab.x) return vec2(0.0f);
   float h0 = length(p) - u_radius, h1 = length(p + dt * d) - u_radius;
   float low = min(h0, h1), high = max(h0, h1);
@@ -184,7 +185,7 @@ vec2 optical_depth_to_sun(vec3 p, int steps, float footprint) {
     float s0 = start + span * t0 * t0, s1 = start + span * t1 * t1;
     // The light integrates the clouds across the segment: they are looked up at its length's
     // scale (one mipmapped fetch, not the B-spline's four, once that spans a cover texel).
-    depth += segment_extinction(p + s0 * u_sun, u_sun, s1 - s0, max(footprint, 0.5f * (s1 - s0)), false, inside) *
+    depth += segment_extinction(p + s0 * u_sun, u_sun, s1 - s0, max(footprint, 0.5f * (s1 - s0)), inside) *
              (s1 - s0);
   }
   return depth;
@@ -237,15 +238,16 @@ void main() {
   float weighted_distance = 0.0f, weight_sum = 0.0f;
   if (len0 + len1 > 0.0f) {
     // Each segment's slab integral is exact where the segment stays over one column, so a ray
-    // needs segments only as often as it moves across the cover: two per cover texel of its
-    // horizontal travel in the shell (a nadir ray from orbit: 2; near the limb: u_cloud_steps).
-    // Close to the clouds (the detail noise resolved) every step is taken.
+    // needs segments only as often as it moves across the cloud's detail: two per cover texel of
+    // its horizontal travel in the shell and, with the sub-texel cloud, two per finest wavelength
+    // it resolves there (four footprints at the shell's entry). A nadir ray from orbit takes 2,
+    // one near the limb or close to the clouds up to u_cloud_steps.
     vec3 entry = oc + shell.x * d;
     float across = sqrt(max(1.0f - pow(dot(d, normalize(entry)), 2.0f), 0.0f));
-    float near = shell.x * u_pixel_angle < 2.0f * DETAIL_CELL ? 1.0f : 0.0f;
-    int steps = near > 0.0f ? max(u_cloud_steps, 1)
-                            : clamp(int(ceil(2.0f * (len0 + len1) * across / u_cover_texel)) + 1, 2,
-                                    max(u_cloud_steps, 2));
+    float travel = (len0 + len1) * across;
+    float per_length = 2.0f / u_cover_texel;
+    if (u_cloud_detail > 0.0f) per_length = max(per_length, 0.25f / max(shell.x * u_pixel_angle, 1.0f));
+    int steps = clamp(int(ceil(travel * per_length)) + 1, 2, max(u_cloud_steps, 2));
     float dt = (len0 + len1) / float(steps);
     vec3 sun_at_cloud = vec3(-1.0f);  // sunlight at the shell, computed at the first dense sample
     float nu = dot(d, u_sun);
@@ -265,7 +267,7 @@ void main() {
         float segment = s1 - s0;
         vec3 p;
         float footprint = max(t * u_pixel_angle, 0.25f * dt);
-        float sigma = segment_extinction(oc + t * d, d, segment, footprint, true, p).x;
+        float sigma = segment_extinction(oc + t * d, d, segment, footprint, p).x;
         if (sigma <= 0.0f) continue;
         vec3 n = normalize(p);
         if (sun_at_cloud.x < 0.0f) sun_at_cloud = solar_irradiance() * transmittance_to_space(p, u_sun, u_radius);

@@ -76,6 +76,7 @@ const std::vector<const Parameter*>& all() {
       &scene::planet_radius_km,
       &scene::cloud_base_km,
       &scene::cloud_thickness_km,
+      &scene::cloud_detail,
       &noise_texture::preset,
       &noise_texture::type,
       &noise_texture::width,

@@ -324,6 +324,11 @@ inline constexpr Parameter cloud_thickness_km =
          "orbit view: the shell the clouds lie in above the lowest base, which clips their tops (base + thickness "
          "below 100 km)",
          render);
+inline constexpr Parameter cloud_detail =
+    real("cloud_detail", 1, 0, 1, "",
+         "orbit view: the clouds below the cover's texels, fractal edges and relief of their tops (1), or the texels "
+         "as smooth slabs (0)",
+         render);
 }  // namespace scene
 
 namespace noise_texture {

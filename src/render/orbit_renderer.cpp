@@ -60,6 +60,7 @@ void check_settings(const OrbitSettings& s) {
     bad("the cloud shell must lie within the atmosphere (" + std::to_string(atmosphere_top_km()) +
         " km) and have a thickness above 0");
   if (!(s.night_lights >= 0) || !(s.sea_wind_ms >= 0)) bad("negative night lights or sea wind");
+  if (!(s.cloud_detail >= 0 && s.cloud_detail <= 1)) bad("cloud detail outside 0..1");
   if (s.cloud_steps < 1 || s.cloud_steps > 1024 || s.shadow_steps < 0 || s.shadow_steps > 256 || s.sky_steps < 1 ||
       s.sky_steps > 256)
     bad("step counts out of range");
@@ -171,24 +172,6 @@ double lattice(int x, int y, int z) {
   return (h & 0xffffffu) / double(0xffffff);
 }
 
-// The clouds' close-up detail: 32^3 hashed values in [0, 1], repeating, trilinear (value noise).
-GLuint detail_texture() {
-  constexpr int n = 32;
-  std::vector<float> values(n * n * n);
-  for (int z = 0; z < n; ++z)
-    for (int y = 0; y < n; ++y)
-      for (int x = 0; x < n; ++x) values[(z * n + y) * n + x] = static_cast<float>(lattice(x, y, z + 1000));
-  GLuint id = 0;
-  glCreateTextures(GL_TEXTURE_3D, 1, &id);
-  glTextureStorage3D(id, 1, GL_R16F, n, n, n);
-  glTextureSubImage3D(id, 0, 0, 0, 0, n, n, n, GL_RED, GL_FLOAT, values.data());
-  glTextureParameteri(id, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-  glTextureParameteri(id, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-  for (GLenum wrap : {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T, GL_TEXTURE_WRAP_R})
-    glTextureParameteri(id, wrap, GL_REPEAT);
-  return id;
-}
-
 double value_noise(glm::dvec3 p) {
   const glm::dvec3 f = glm::floor(p), t = p - f;
   const glm::dvec3 w = t * t * (3.0 - 2.0 * t);
@@ -245,11 +228,11 @@ double framing_fov_deg(double altitude_m, double planet_radius_m, int width, int
 
 struct OrbitRenderer::Gl {
   gpu::ComputeProgram program{"render/orbit.comp"};
-  GLuint day = 0, night = 0, water = 0, cover = 0, detail = 0;
+  GLuint day = 0, night = 0, water = 0, cover = 0;
   int day_width = 1, cover_size = 1;
   bool cover_properties = false;  // the cover has its own tau and cloud tops
   ~Gl() {
-    for (GLuint id : {day, night, water, cover, detail})
+    for (GLuint id : {day, night, water, cover})
       if (id != 0) glDeleteTextures(1, &id);
   }
 };
@@ -276,7 +259,6 @@ OrbitRenderer::OrbitRenderer(const PlanetImages& planet, const CoverCube& cover,
   gl_->cover = cover_texture(cover);
   gl_->cover_size = cover.size;
   gl_->cover_properties = !cover.optical_thickness.empty();
-  gl_->detail = detail_texture();
 }
 
 OrbitRenderer::~OrbitRenderer() = default;
@@ -332,6 +314,7 @@ double OrbitRenderer::render_into(const OrbitCamera& camera, double unix_seconds
     p.set("u_cover_properties", gl_->cover_properties ? 1 : 0);
     p.set("u_tau_median", params::cover::tau_median.default_float());
     p.set("u_tau_spread", params::cover::tau_spread.default_float());
+    p.set("u_cloud_detail", static_cast<float>(s.cloud_detail));
     p.set("u_day_texel", static_cast<float>(2 * M_PI * R / gl_->day_width));
     p.set("u_cloud_steps", s.cloud_steps);
     p.set("u_shadow_steps", s.shadow_steps);
@@ -343,7 +326,6 @@ double OrbitRenderer::render_into(const OrbitCamera& camera, double unix_seconds
     glBindTextureUnit(orbit::night_texture, gl_->night);
     glBindTextureUnit(orbit::water_texture, gl_->water);
     glBindTextureUnit(orbit::cover_map, gl_->cover);
-    glBindTextureUnit(orbit::detail_noise, gl_->detail);
     p.dispatch_covering(camera.width, camera.height, 1);
     gpu::image_barrier();
   });

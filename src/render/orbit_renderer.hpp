@@ -47,6 +47,9 @@ struct OrbitSettings {
   // Wind over the sea (m/s) for the glint's facet slopes: 7 m/s, about the global ocean mean of
   // the 10 m wind (scatterometer climatologies: 7 to 7.5 m/s; docs/orbit_view.md).
   double sea_wind_ms = 7.0;
+  // The sub-texel cloud (fractal edges and top relief below the cover's texels, cloud_properties.glsl's
+  // subtexel_cloud): 1 draws it, 0 the cover's texels as smooth slabs, between a mix.
+  double cloud_detail = 1.0;
   int cloud_steps = 32;  // samples along a view ray through the shell
   int shadow_steps = 6;  // samples from the ground towards the sun
   int sky_steps = 12;    // samples of the atmosphere along a view ray

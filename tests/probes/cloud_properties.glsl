@@ -1,12 +1,13 @@
 // Probe of lib/cloud_properties.glsl (shared GLSL/C++ subset; tests/test_library_probes.cpp).
 // x[0] = (function, a, b, c), x[1] = (frontal, deep convection, cumulus, cirrus) weights,
 // x[2] = (latitude, cyclonic depth, surface bias, ...). The functions (x[0].x):
-const int PROBE_NORMAL_QUANTILE = 0;    // normal_quantile(a)
+const int PROBE_NORMAL_QUANTILE = 0;    // normal_quantile(a), normal_cdf(a) in y
 const int PROBE_TAU_FROM_RANK = 1;      // optical_thickness_from_rank(a, b, c), cloudy_rank(a, b) in y
 const int PROBE_TAU_FROM_COVER = 2;     // optical_thickness_from_cover(a, b, c)
 const int PROBE_CLOUD_TOP = 3;          // cloud_top_km(x[1], x[2]), tropopause_km(latitude) in y, cloud_thickness_km(a, b) in z
 const int PROBE_CLOUD_TOP_FROM_COVER = 4;  // cloud_top_from_cover(a, latitude)
 const int PROBE_COVERED_DEPTH = 5;         // covered_optical_depth(a, b)
+const int PROBE_SUBTEXEL_CLOUD = 6;        // subtexel_cloud(x[1].xyz, a, b, c): (cover, relief, field)
 #ifndef __cplusplus
 #include "../lib/cloud_properties.glsl"
 #endif
@@ -14,7 +15,7 @@ vec4 probe_cloud_properties(mat4 x) {
   int f = int(x[0].x);
   float a = x[0].y, b = x[0].z, c = x[0].w;
   float latitude = x[2].x;
-  if (f == PROBE_NORMAL_QUANTILE) return vec4(normal_quantile(a), 0.0f, 0.0f, 0.0f);
+  if (f == PROBE_NORMAL_QUANTILE) return vec4(normal_quantile(a), normal_cdf(a), 0.0f, 0.0f);
   if (f == PROBE_TAU_FROM_RANK) return vec4(optical_thickness_from_rank(a, b, c), cloudy_rank(a, b), 0.0f, 0.0f);
   if (f == PROBE_TAU_FROM_COVER) return vec4(optical_thickness_from_cover(a, b, c), 0.0f, 0.0f, 0.0f);
   if (f == PROBE_CLOUD_TOP) {
@@ -26,5 +27,9 @@ vec4 probe_cloud_properties(mat4 x) {
     return vec4(cloud_top_km(types, latitude, x[2].y, x[2].z), tropopause_km(latitude), cloud_thickness_km(a, b), 0.0f);
   }
   if (f == PROBE_COVERED_DEPTH) return vec4(covered_optical_depth(a, b), 0.0f, 0.0f, 0.0f);
+  if (f == PROBE_SUBTEXEL_CLOUD) {
+    SubtexelCloud cloud = subtexel_cloud(vec3(x[1]), a, b, c);
+    return vec4(cloud.cover, cloud.relief, cloud.field, 0.0f);
+  }
   return vec4(cloud_top_from_cover(a, latitude), 0.0f, 0.0f, 0.0f);  // PROBE_CLOUD_TOP_FROM_COVER
 }
