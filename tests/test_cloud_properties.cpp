@@ -271,6 +271,8 @@ TEST_CASE("the sub-texel cloud is the cover itself wherever a sample spans two t
     // Clear stays clear and overcast overcast, at any footprint.
     CHECK(glsl::subtexel_cloud(p, 0.0f, texel, 10.0f).cover == 0.0f);
     CHECK(glsl::subtexel_cloud(p, 1.0f, texel, 10.0f).cover == 1.0f);
+    // The relief's bound, which lets renderers skip columns above the highest possible top.
+    CHECK(std::abs(glsl::subtexel_cloud(p, c, texel, 1.0f).relief) < glsl::SUBTEXEL_RELIEF_BOUND);
     // More cover never makes a point clearer.
     CHECK(glsl::subtexel_cloud(p, std::min(c + 0.1f, 1.0f), texel, 300.0f).cover >=
           glsl::subtexel_cloud(p, c, texel, 300.0f).cover);

@@ -156,6 +156,10 @@ const int SUBTEXEL_OCTAVES = 12;
 // holds the larger scales); convective cells and the tops' undulations are below some 10 km.
 const float SUBTEXEL_RELIEF_WAVELENGTH = 8000.0f;
 
+// |relief| stays below this: its octaves' weights sum to at most 1 / (1 - 2^-2/3) = 2.70, each
+// octave's |n| to PERLIN_BOUND, over sigma = PERLIN_OCTAVE_SIGMA (1 - 2^-4/3)^-1/2 = 0.348: 8.05.
+const float SUBTEXEL_RELIEF_BOUND = 8.1f;
+
 struct SubtexelCloud {
   float cover;   // the cloudy share of the sample's footprint
   float field;   // the resolved field in units of the whole field's deviation (mean 0, deviation <= 1)

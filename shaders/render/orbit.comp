@@ -110,7 +110,10 @@ const float TOP_RELIEF_SHARE = 0.15f;
 // mean. The slab reaches from the type's top down by cloud_thickness_km, its top raised or lowered
 // by the field's relief. Every ray takes the slab at its own footprint: the view's at the pixel's,
 // the light's at its segments' lengths, so the shadows are as sharp as their rays resolve.
-vec4 cloud_slab(vec3 p, float footprint) {
+// `heights` (lowest, highest altitude, m) is the part of the column the caller needs: where it
+// lies wholly below the base or above the highest top the relief can raise, the slab is not
+// looked at further (the sub-texel cloud costs up to twelve octaves of noise) and is clear.
+vec4 cloud_slab(vec3 p, float footprint, vec2 heights) {
   vec3 n = normalize(p);
   vec4 c = cover_at(n, cover_lod(footprint));
   if (u_cover_properties == 0) {
@@ -121,6 +124,8 @@ vec4 cloud_slab(vec3 p, float footprint) {
   float top = 1000.0f * c.z;
   float thickness = 1000.0f * cloud_thickness_km(c.z, c.y);
   float base = max(top - thickness, u_cloud_base);
+  if (heights.y < base || heights.x > top + u_cloud_detail * TOP_RELIEF_SHARE * SUBTEXEL_RELIEF_BOUND * thickness)
+    return vec4(0.0f);
   float cover = c.x;
   if (u_cloud_detail > 0.0f) {
     SubtexelCloud detail = subtexel_cloud(n * u_radius, c.x, u_cover_texel, footprint);
@@ -142,10 +147,10 @@ vec4 cloud_slab(vec3 p, float footprint) {
 vec2 segment_extinction(vec3 p, vec3 d, float dt, float footprint, out vec3 inside) {
   vec3 middle = p + 0.5f * dt * d;
   inside = middle;
-  vec4 slab = cloud_slab(middle, footprint);
-  if (slab.z <= 0.0f || slab.y <= slab.x) return vec2(0.0f);
   float h0 = length(p) - u_radius, h1 = length(p + dt * d) - u_radius;
   float low = min(h0, h1), high = max(h0, h1);
+  vec4 slab = cloud_slab(middle, footprint, vec2(low, high));
+  if (slab.z <= 0.0f || slab.y <= slab.x) return vec2(0.0f);
   float overlap;
   if (high - low < 1.0e-3f * max(dt, 1.0f)) {
     float h = 0.5f * (low + high);
@@ -184,9 +189,12 @@ vec2 optical_depth_to_sun(vec3 p, int steps, float footprint) {
     // Quadratic spacing: short steps near p, where the light's shadow detail is.
     float s0 = start + span * t0 * t0, s1 = start + span * t1 * t1;
     // The light integrates the clouds across the segment: they are looked up at its length's
-    // scale (one mipmapped fetch, not the B-spline's four, once that spans a cover texel).
-    depth += segment_extinction(p + s0 * u_sun, u_sun, s1 - s0, max(footprint, 0.5f * (s1 - s0)), inside) *
-             (s1 - s0);
+    // scale (one mipmapped fetch, not the B-spline's four, once that spans a cover texel). The
+    // sub-texel cloud only in the first segment, where the tops' relief shades its neighbours;
+    // beyond it the cover's mean (its expectation) at half the cost of a light ray.
+    float scale = max(footprint, 0.5f * (s1 - s0));
+    if (i > 0) scale = max(scale, u_cover_texel);
+    depth += segment_extinction(p + s0 * u_sun, u_sun, s1 - s0, scale, inside) * (s1 - s0);
   }
   return depth;
 }

@@ -164,6 +164,20 @@ TEST_CASE("between 12 and 20 km the view cross-fades from the ground renderer to
     off += std::abs(mixed.radiance.pixels[k] - expected) > test::kUlp * (std::abs(expected) + 1e-30);
   }
   CHECK(off == 0);
+  auto mean_opacity = [](const core::ImageData& image) {
+    double sum = 0;
+    for (std::size_t k = 3; k < image.pixels.size(); k += 4) sum += image.pixels[k];
+    return sum / (image.width * image.height);
+  };
+  // The same cloud from both at the fade's middle: the share of the view that cloud hides (the
+  // mean opacity) agrees within 0.05 (issue 31's tolerance for "the same cloud": a fifth of the
+  // 0.23 seen here; both take the cloud from the same cover, the ground renderer through its
+  // layers, the orbit renderer through the slabs and the sub-texel cloud). Their brightness does
+  // not agree yet (the orbit renderer's view is about twice as bright at 16 km: docs/viewer.md).
+  INFO("at 16 km: ground renderer luminance " << mean_luminance(g.radiance) << ", opacity " << mean_opacity(g.radiance)
+                                              << "; orbit renderer " << mean_luminance(o.radiance) << ", "
+                                              << mean_opacity(o.radiance));
+  CHECK(std::abs(mean_opacity(g.radiance) - mean_opacity(o.radiance)) < 0.05);
   // Outside the band one renderer alone.
   state.camera.height_m = 20000;
   CHECK(largest_difference(view.render(state, kWidth, kHeight).radiance,
