@@ -256,15 +256,15 @@ void object_areas_and_perimeters(const std::vector<char>& cloudy, int n, std::ve
 
 }  // namespace
 
-TEST_CASE("the sub-texel cloud is the cover itself wherever a sample spans two texels", "[fast][properties]") {
+TEST_CASE("the sub-texel cloud is the cover itself wherever a sample spans half a texel", "[fast][properties]") {
   const float texel = 20000.0f;
   std::mt19937 random(5);
   std::uniform_real_distribution<float> u(-1.0f, 1.0f), share(0.0f, 1.0f);
   for (int k = 0; k < 200; ++k) {
     const glm::vec3 p = 6371000.0f * glm::normalize(glm::vec3(u(random), u(random), u(random)));
     const float c = k < 3 ? 0.5f * k : share(random);
-    // The first octave's wavelength is two texels; it fades out by a footprint of half of it.
-    const auto far = glsl::subtexel_cloud(p, c, texel, texel);
+    // The first octave's wavelength is one texel; it fades out by a footprint of half of it.
+    const auto far = glsl::subtexel_cloud(p, c, texel, 0.5f * texel);
     CHECK(far.cover == c);
     CHECK(far.relief == 0.0f);
     CHECK(far.field == 0.0f);

@@ -138,7 +138,7 @@ float cloud_top_from_cover(float cover, float latitude) {
 // fields are cloudy or clear down to tens of metres with edges whose perimeter dimension is
 // about 4/3 (Lovejoy 1982, "Area-perimeter relation for rain and cloud areas", Science 216).
 // subtexel_cloud draws that: a fractional Brownian field n on the sphere, octaves of gradient
-// noise from two cover texels down, amplitude 2^-H per halving with Hurst exponent H = 2/3, since
+// noise from one cover texel's wavelength down, amplitude 2^-H per halving with Hurst exponent H = 2/3, since
 // the level sets of such a field have dimension 2 - H = 4/3 (Mandelbrot, "The Fractal Geometry of
 // Nature", 1982, ch. 28); a point is cloudy where n lies below its quantile at the cover,
 // n < sigma Phi^-1(c), so that the share c of every texel stays cloudy in expectation.
@@ -146,11 +146,14 @@ float cloud_top_from_cover(float cover, float latitude) {
 // wavelength, and the unresolved octaves (the faded ones and the infinite tail beyond the last
 // one drawn) are taken by their distribution: the cloudy share of the footprint is
 // Phi((sigma Phi^-1(c) - n_resolved) / sigma_unresolved). So it is the cover's own value, exactly,
-// wherever a sample spans more than two texels (nothing drawn), a sharp fractal edge close up,
+// wherever a sample spans half a texel or more (nothing drawn), a sharp fractal edge close up,
 // and continuous in between: nothing switches with distance.
 const float SUBTEXEL_GAIN = 0.62996052f;  // 2^-(2/3)
+// One texel: the cover's own structure above it stays as filtered (two texels broke the systems'
+// interiors, cover 0.5-0.9, into clouds of two texels everywhere; half a texel left the edges
+// blurred between half a texel and one and a half).
 const float SUBTEXEL_FIRST_WAVELENGTH = 1.0f;  // texels
-const int SUBTEXEL_OCTAVES = 12;
+const int SUBTEXEL_OCTAVES = 12;               // to 1/2048 texel: 38 m under 78 km texels
 // The tops' relief takes the field's octaves of wavelengths up to this, with amplitudes
 // (wavelength / it)^(2/3): in metres, whatever the cover's texels (the cover's own top channel
 // holds the larger scales); convective cells and the tops' undulations are below some 10 km.

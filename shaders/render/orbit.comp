@@ -103,7 +103,7 @@ const float TOP_RELIEF_SHARE = 0.15f;
 // own extinction 1/m), extinctions 0 where clear. The texel's cloud covers the share `cover` of it
 // with optical thickness tau; below the texel, subtexel_cloud (cloud_properties.glsl) says which
 // part of the sample's footprint is cloudy, with fractal edges down to the footprint's scale and
-// the cover's own value where a sample spans two texels. The sample's mean transmittance
+// the cover's own value where a sample spans half a texel or more. The sample's mean transmittance
 // 1 - c (1 - exp(-tau)) is that of a uniform slab of optical depth covered_optical_depth(c, tau):
 // thin cloud and the grey edges let the surface show through, thick cloud is opaque. The light
 // that diffuses through the cloud goes by the cloud's own tau (the fourth component), not by that
@@ -247,7 +247,7 @@ void main() {
   if (len0 + len1 > 0.0f) {
     // Each segment's slab integral is exact where the segment stays over one column, so a ray
     // needs segments only as often as it moves across the cloud's detail: two per cover texel of
-    // its horizontal travel in the shell and, with the sub-texel cloud, two per finest wavelength
+    // its horizontal travel in the shell and, with the sub-texel cloud, one per finest wavelength
     // it resolves there (four footprints at the shell's entry). A nadir ray from orbit takes 2,
     // one near the limb or close to the clouds up to u_cloud_steps.
     vec3 entry = oc + shell.x * d;
