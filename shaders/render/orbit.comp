@@ -109,7 +109,8 @@ const float TOP_RELIEF_SHARE = 0.15f;
 // that diffuses through the cloud goes by the cloud's own tau (the fourth component), not by that
 // mean. The slab reaches from the type's top down by cloud_thickness_km, its top raised or lowered
 // by the field's relief. Every ray takes the slab at its own footprint: the view's at the pixel's,
-// the light's at its segments' lengths, so the shadows are as sharp as their rays resolve.
+// the light's at its first segment's length (beyond it, the cover's mean: optical_depth_to_sun),
+// so the shadows are as sharp as their rays resolve.
 // `heights` (lowest, highest altitude, m) is the part of the column the caller needs: where it
 // lies wholly below the base or above the highest top the relief can raise, the slab is not
 // looked at further (the sub-texel cloud costs up to twelve octaves of noise) and is clear.
