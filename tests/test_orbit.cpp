@@ -498,6 +498,7 @@ TEST_CASE("render --view orbit writes the image and refuses bad values naming th
       {"--lat 91", "--lat"},
       {"--lon -181", "--lon"},
       {"--cloud-base-km 50 --cloud-thickness-km 60", "--cloud-base-km"},
+      {"--cloud-detail 1.5", "--cloud-detail"},
       {"--earth-texture /nonexistent/earth.jpg", "--earth-texture"},
       {"--cover /nonexistent/cover", "--cover"},
       {"--at 46,7,800", "--at"},
