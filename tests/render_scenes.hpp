@@ -16,6 +16,7 @@ inline regional::Scene small_summer_scene(int width = 16, int height = 8) {
   scene.light_steps = 2;
   scene.sky_steps = 4;
   scene.cover_size = 8;
+  scene.shadow_map_size = 64;  // as coarse as the image (the default 512^2 is most of its time)
   scene.time = "2026-06-21T15:00Z";
   scene.weather = {std::string(NEPHELE_SOURCE_DIR) + "/scenes/weather/bern-summer.json",
                    std::string(NEPHELE_SOURCE_DIR) + "/scenes/weather/solothurn-summer.json"};

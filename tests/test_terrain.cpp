@@ -195,6 +195,32 @@ TEST_CASE("a camera below the smoothed ground is warned about, one on Gurten is 
   warning.clear();
   CHECK(io::load_terrain("etopo5", gurten_lat, gurten_lon, eye_height, &warning) != nullptr);
   CHECK(warning.empty());
+  // The same place 2 km up: the same ground (kept, not made again), and no warning.
+  const auto low = io::load_terrain("etopo5", 46.94806, 7.44750, 542.0);
+  warning.clear();
+  CHECK(io::load_terrain("etopo5", 46.94806, 7.44750, 2542.0, &warning) == low);
+  CHECK(warning.empty());
+}
+
+TEST_CASE("the height field about a camera is the same at any camera height", "[fast][terrain]") {
+  if (!have_etopo5()) FAIL("ferret-datasets is not installed (scripts/debian-packages.txt)");
+  // A point's east and north coordinates in the tangent plane do not change as its origin moves
+  // up the normal; the grid made 20 km up differs from the one at the ground only where the
+  // double altitude rounds to the other float (one ulp of the largest altitude at most) and by
+  // the frame's trigonometry (nanometres).
+  const auto at = [&](double height_m) {
+    return regional::terrain_grid(gurten_lat, gurten_lon, height_m, 6366000.0, raster(), regional::substitute_hills(),
+                                  64, 40000.0);
+  };
+  const regional::TerrainGrid ground = at(0.0), high = at(20000.0);
+  REQUIRE(ground.altitudes.size() == high.altitudes.size());
+  double worst = 0, largest = 0;
+  for (std::size_t k = 0; k < ground.altitudes.size(); ++k) {
+    worst = std::max(worst, double(std::abs(ground.altitudes[k] - high.altitudes[k])));
+    largest = std::max(largest, double(std::abs(ground.altitudes[k])));
+  }
+  REQUIRE(largest > 500.0);  // the Gurten's ground, not an empty grid
+  CHECK(worst <= largest * std::ldexp(1.0, -23) + 1e-6);
 }
 
 TEST_CASE("the substitute hills bring Gurten and Bantiger up to their summits", "[fast][terrain]") {

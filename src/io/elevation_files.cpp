@@ -94,8 +94,11 @@ regional::ElevationRaster read_etopo5(const std::string& path, double south_deg,
 
 namespace {
 
+// The grid does not depend on the camera's height: the tangent plane's east and north
+// coordinates of a point are the same at any height above its origin (regional::TangentPlane),
+// so it is made at height 0 and kept while the camera climbs or descends.
 std::shared_ptr<const regional::TerrainGrid> make_terrain(const std::string& setting, double latitude_deg,
-                                                          double longitude_deg, double height_m, std::string* warning,
+                                                          double longitude_deg, std::string* warning,
                                                           const std::string& field, const GroundOptions& options) {
   std::string path = setting;
   if (setting == "etopo5") {
@@ -112,29 +115,31 @@ std::shared_ptr<const regional::TerrainGrid> make_terrain(const std::string& set
   const regional::ElevationRaster raster = read_etopo5(path, latitude_deg - reach_deg, latitude_deg + reach_deg, field);
   std::string land_warning;
   std::shared_ptr<const regional::LandCoverGrid> land_cover =
-      load_land_cover(options.land_cover, latitude_deg, longitude_deg, height_m, &land_warning, options.land_field);
+      load_land_cover(options.land_cover, latitude_deg, longitude_deg, 0.0, &land_warning, options.land_field);
   const double reach_lon = reach_deg / std::max(std::cos(latitude_deg * M_PI / 180), 0.1);
   const regional::TerrainDetail detail =
       regional::terrain_detail(raster, latitude_deg - reach_deg, latitude_deg + reach_deg, longitude_deg - reach_lon,
                                longitude_deg + reach_lon, options.detail);
   auto made = std::make_shared<regional::TerrainGrid>(regional::terrain_grid(
-      latitude_deg, longitude_deg, height_m, render::osculating_earth_radius(latitude_deg), raster,
+      latitude_deg, longitude_deg, 0.0, render::osculating_earth_radius(latitude_deg), raster,
       regional::substitute_hills(), terrain_grid_size, terrain_grid_extent_m, land_cover.get(), detail));
   made->land = land_cover;
-  std::shared_ptr<const regional::TerrainGrid> grid = made;
-  // The camera stands where the four middle texels meet; below their mean it looks out from
-  // underground (ETOPO5 fills valleys: Bern's old town at 540 m lies under 700 m of it).
-  const std::size_t n = grid->size, middle = n / 2;
-  const double ground = (grid->altitudes[(middle - 1) * n + middle - 1] + grid->altitudes[(middle - 1) * n + middle] +
-                         grid->altitudes[middle * n + middle - 1] + grid->altitudes[middle * n + middle]) /
-                        4;
   if (warning) *warning = land_warning;
-  if (ground > height_m && warning)
-    *warning = (land_warning.empty() ? "" : land_warning + "; ") + "the camera at " +
-               std::to_string(int(std::lround(height_m))) + " m is below the terrain there (" +
-               std::to_string(int(std::lround(ground))) + " m, " + raster.source +
-               " smooths valleys): raise its height or use --terrain flat";
-  return grid;
+  return made;
+}
+
+// The camera stands where the four middle texels meet; below their mean it looks out from
+// underground (ETOPO5 fills valleys: Bern's old town at 540 m lies under 700 m of it).
+std::string underground_warning(const regional::TerrainGrid& grid, double height_m) {
+  const std::size_t n = grid.size, middle = n / 2;
+  const double ground = (grid.altitudes[(middle - 1) * n + middle - 1] + grid.altitudes[(middle - 1) * n + middle] +
+                         grid.altitudes[middle * n + middle - 1] + grid.altitudes[middle * n + middle]) /
+                        4;
+  if (ground <= height_m) return "";
+  const std::string raster = grid.source.substr(0, grid.source.find(" + "));  // without hills and lakes
+  return "the camera at " + std::to_string(int(std::lround(height_m))) + " m is below the terrain there (" +
+         std::to_string(int(std::lround(ground))) + " m, " + raster +
+         " smooths valleys): raise its height or use --terrain flat";
 }
 
 }  // namespace
@@ -144,14 +149,14 @@ std::shared_ptr<const regional::TerrainGrid> load_terrain(const std::string& set
                                                           const std::string& field, const GroundOptions& options) {
   if (setting == "flat") return nullptr;
   // The last ground made is kept for the process: the viewer's sources and the tests ask for
-  // the same place again and again (about 1.4 s each on two cores).
+  // the same place again and again (about 1.4 s each on two cores), at any height.
   static std::mutex mutex;
   static std::string last_key, last_warning;
   static std::shared_ptr<const regional::TerrainGrid> last;
   std::ostringstream key;
   key.precision(17);
   key << setting << '\n'
-      << latitude_deg << ' ' << longitude_deg << ' ' << height_m << '\n'
+      << latitude_deg << ' ' << longitude_deg << '\n'
       << field << '\n'
       << options.land_cover << '\n'
       << options.land_field << '\n'
@@ -159,11 +164,17 @@ std::shared_ptr<const regional::TerrainGrid> load_terrain(const std::string& set
   const std::lock_guard<std::mutex> lock(mutex);
   if (!last || key.str() != last_key) {
     std::string made_warning;
-    last = make_terrain(setting, latitude_deg, longitude_deg, height_m, &made_warning, field, options);
+    last = make_terrain(setting, latitude_deg, longitude_deg, &made_warning, field, options);
     last_key = key.str();
     last_warning = made_warning;
   }
-  if (warning) *warning = last_warning;
+  if (warning) {
+    *warning = last_warning;
+    if (last) {
+      const std::string below = underground_warning(*last, height_m);
+      if (!below.empty()) *warning = (warning->empty() ? "" : *warning + "; ") + below;
+    }
+  }
   return last;
 }
 

@@ -57,6 +57,7 @@ RenderSweepOptions RenderSweepOptions::qualities(bool quick) {
   o.reference_view = 96;
   o.reference_light = 12;
   o.reference_frames = 1;
+  o.share_shadow_maps = false;
   o.width = quick ? 64 : 1280;
   o.height = quick ? 36 : 720;
   return o;
@@ -130,14 +131,17 @@ std::vector<RenderErrorRow> render_error_sweep(const regional::Scene& scene, con
   // made once, shared by every render of the sweep (the camera is made again per size).
   const PreparedScene prepared = render::prepare_scene(base, io::read_scene_weather(base));
   const NoiseVolume noise(render::render_settings(base).noise_size, render::render_settings(base).seed);
+  const auto shadow_maps = options.share_shadow_maps ? std::make_shared<render::ShadowMapCache>() : nullptr;
   const auto render_variant = [&](const RenderVariant& v, double* time_ms, double* render_ms) {
     regional::Scene s = base;
     s.view_steps = v.view_steps;
     s.light_steps = v.light_steps;
     s.frames = v.frames;
     s.resolution_divisor = v.divisor;  // render_prepared marches fewer pixels and upsamples
+    render::RenderSettings settings = render::render_settings(s);
+    settings.shadow_cache = shadow_maps;
     const auto start = std::chrono::steady_clock::now();
-    const SceneRender r = render::render_prepared(prepared, s, &noise);
+    const SceneRender r = render::render_prepared(prepared, settings, &noise);
     if (render_ms != nullptr)
       *render_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     if (time_ms != nullptr)

@@ -25,8 +25,9 @@ struct RenderErrorRow {
   double display_rms = 0;  // RMS over pixels and RGB of the display values in [0, 1] (the PNG's)
   double rms_error = 0;    // RMS over pixels and RGB of the radiance, relative to the reference's mean
   double max_error = 0;    // largest absolute radiance difference, relative to the reference's mean
-  // Wall-clock time of the whole render (render::render_prepared): shadow maps, the clouds pass,
-  // the upsampling's guide and the upsampling; not the scene's preparation (weather, noise).
+  // Wall-clock time of the whole render (render::render_prepared): shadow maps (unless the sweep
+  // shares them), the clouds pass, the upsampling's guide and the upsampling; not the scene's
+  // preparation (weather, noise).
   double render_ms = 0;
 };
 
@@ -41,6 +42,10 @@ struct RenderSweepOptions {
   int reference_view = 192, reference_light = 24, reference_frames = 4;
   int width = 160, height = 90;
 
+  // The shadow maps depend on none of the variants' settings (render::shadow_map_key): made
+  // once for the whole sweep, so that render_ms is the march's and the upsampling's. The
+  // qualities make them in every render: their render_ms is what a user waits for.
+  bool share_shadow_maps = true;
   std::vector<RenderVariant> variants() const;
   // "192 view x 24 light steps over 4 frames": the reference, as help texts and reports name it.
   std::string reference_name() const;

@@ -61,9 +61,10 @@ render::RenderResult GroundSource::render(const ViewState& state, int width, int
                         gpu::time_pass([&] { prepared = render::prepare_scene(scene, stations_, cover_); }));
   std::ostringstream terrain_key;
   terrain_key.precision(17);
+  // Not the height: the ground is the same at any height (io::load_terrain), and climbing
+  // does not make it again.
   terrain_key << scene.terrain << ' ' << scene.land_cover << ' ' << scene.terrain_detail << ' '
-              << prepared.partial.camera.latitude_deg << ' ' << prepared.partial.camera.longitude_deg << ' '
-              << prepared.partial.camera.height_m;
+              << prepared.partial.camera.latitude_deg << ' ' << prepared.partial.camera.longitude_deg;
   if (terrain_key.str() != terrain_key_) {
     std::string warning;
     setup_ms.emplace_back("terrain", gpu::time_pass([&] {
