@@ -136,9 +136,8 @@ std::string underground_warning(const regional::TerrainGrid& grid, double height
                          grid.altitudes[middle * n + middle - 1] + grid.altitudes[middle * n + middle]) /
                         4;
   if (ground <= height_m) return "";
-  const std::string raster = grid.source.substr(0, grid.source.find(" + "));  // without hills and lakes
   return "the camera at " + std::to_string(int(std::lround(height_m))) + " m is below the terrain there (" +
-         std::to_string(int(std::lround(ground))) + " m, " + raster +
+         std::to_string(int(std::lround(ground))) + " m, " + grid.raster_source +
          " smooths valleys): raise its height or use --terrain flat";
 }
 

@@ -238,6 +238,7 @@ TerrainGrid terrain_grid(double latitude_deg, double longitude_deg, double heigh
   grid.size = size;
   grid.extent_m = extent_m;
   grid.source = raster.source;
+  grid.raster_source = raster.source;
   if (detail.strength > 0) {
     char text[96];
     std::snprintf(text, sizeof text, " + fractal detail (H %.2f, S %.0f m a cell, mean range %.0f m)", detail.hurst,

@@ -97,6 +97,7 @@ struct TerrainGrid {
   std::vector<float> altitudes;  // row j = 0 southmost, column i = 0 westmost
   float top_m = 0;               // highest altitude
   std::string source;            // raster and hills, for messages and the sidecar
+  std::string raster_source;     // the elevation data alone (what smooths valleys, in warnings)
   // terrain_ceilings(altitudes, size, ceiling_window): what lets the march step over ground it
   // is well above (the green channel of terrain.glsl's TerrainTexture).
   std::vector<float> ceilings;
