@@ -2,6 +2,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <vector>
 
 #include <GeographicLib/Geodesic.hpp>
 #include <GeographicLib/GeodesicLine.hpp>
@@ -13,6 +14,7 @@
 #include "regional/weather.hpp"
 #include "regional/weather_field.hpp"
 #include "render/sun_position.hpp"
+#include "shader_math/shader_math.hpp"
 
 using namespace nephele;
 using namespace nephele::regional;
@@ -188,4 +190,37 @@ TEST_CASE("rain under thick mid cloud gives the nimbostratus substitute, and sho
   CHECK(station_coverage(sample(0.2, 0, 0), {storm}).channel[int(CoverageChannel::convective)] == 1.0);
   CHECK(station_coverage(sample(0.2, 0, 0, 2.0), {}).channel[int(CoverageChannel::convective)] == 1.0);
   CHECK(station_coverage(sample(0.2, 0, 0, 1.9), {}).channel[int(CoverageChannel::convective)] == 0.0);
+}
+
+TEST_CASE("the cover under a point of the regional field is the cover at its latitude on the sphere",
+          "[fast][weather]") {
+  // A cover that grows linearly with the latitude of each texel's direction, 20 per radian
+  // (0.5 at 46.95 N): the field must read it at the direction (cos lat cos lon, cos lat sin lon,
+  // sin lat), as the orbit view draws the cover. The ellipsoid's normal at Bern points 0.19
+  // degrees further south, which would read 20 x 0.0033 = 0.066 less. Bilinear interpolation of
+  // 512-texel faces errs by at most f'' h^2 / 8 (h = 0.0031 rad, f'' of the order of the slope):
+  // 3e-5; the floats' rounding is smaller still, so 0.005 separates the two.
+  const int n = 512;
+  const double phi0 = 46.95 * M_PI / 180, slope = 20.0;
+  std::vector<float> cover(std::size_t(6) * n * n);
+  for (int face = 0; face < 6; ++face)
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i) {
+        const glsl::vec3 r =
+            glsl::normalize(glsl::cube_face_point(face, 2.0f * (i + 0.5f) / n - 1.0f, 2.0f * (j + 0.5f) / n - 1.0f));
+        cover[(std::size_t(face) * n + j) * n + i] = float(0.5 + slope * (std::asin(double(r.z)) - phi0));
+      }
+  const GeographicLib::LocalCartesian frame(46.95, 7.44, 0.0);
+  const WeatherField field = field_from_cover(cover, n, 1, frame, 16, 20000.0);
+  int checked = 0;
+  for (int row = 0; row < field.size; ++row)
+    for (int column = 0; column < field.size; ++column) {
+      double lat = 0, lon = 0;
+      ground_position(frame, field.east_of(column), field.north_of(row), lat, lon);
+      const double expected = 0.5 + slope * (lat * M_PI / 180 - phi0);
+      INFO("row " << row << " column " << column);
+      CHECK(field.at(int(CoverageChannel::low), column, row) == Approx(expected).margin(0.005));
+      ++checked;
+    }
+  CHECK(checked == 256);
 }

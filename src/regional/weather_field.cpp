@@ -1,7 +1,5 @@
 #include "regional/weather_field.hpp"
 
-#include <GeographicLib/Geocentric.hpp>
-
 #include <algorithm>
 #include <cmath>
 
@@ -69,15 +67,17 @@ WeatherField field_from_cover(const std::vector<float>& cover, int cover_size, s
   // cover's value keeps them thinner and more often broken.
   const float channel_scale[3] = {1.0f, 0.5f, 0.5f};
   WeatherField f{size, extent_m, std::vector<float>(static_cast<size_t>(coverage_channels) * size * size, 0.0f)};
-  const GeographicLib::Geocentric& earth = GeographicLib::Geocentric::WGS84();
   for (int row = 0; row < size; ++row)
     for (int column = 0; column < size; ++column) {
       double lat = 0, lon = 0;
       ground_position(frame, f.east_of(column), f.north_of(row), lat, lon);
       for (int k = 0; k < 3; ++k) {
-        double x = 0, y = 0, z = 0;
-        earth.Forward(lat, lon + channel_angle[k] * 180.0 / M_PI, 0.0, x, y, z);
-        const glsl::vec3 direction = glsl::normalize(glsl::vec3(float(x), float(y), float(z)));
+        // The cover's direction of a geographic latitude and longitude is the sphere's, as the
+        // orbit view, the cover's latitude profile and its equirect take it; the ellipsoid's
+        // point of that latitude lies in a direction 0.19 degrees (21 km) further south at Bern.
+        const double phi = lat * M_PI / 180, lambda = lon * M_PI / 180 + channel_angle[k];
+        const glsl::vec3 direction(float(std::cos(phi) * std::cos(lambda)), float(std::cos(phi) * std::sin(lambda)),
+                                   float(std::sin(phi)));
         const float c = channel_scale[k] * glsl::sample_cube_bilinear(direction, source).x;
         f.values[(static_cast<size_t>(channels_from_cover[k]) * size + row) * size + column] = c;
       }
