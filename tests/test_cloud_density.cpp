@@ -74,6 +74,27 @@ TEST_CASE("more coverage never thins a heaped cloud", "[fast][density]") {
   }
 }
 
+TEST_CASE("a sheet covers the share c of the sky, nothing at c = 0 and everything at c = 1", "[fast][density]") {
+  // The shape noise is uniform (the volume is rank-equalised): the sheet's mean over it is the
+  // integral of sheet_amount over [0, 1], which the symmetric ramp about 1 - c makes c itself.
+  // Midpoint rule over 20000 shapes: the ramp's second derivative is at most 6 / w^2 (w >= 0.02
+  // here), so the rule errs by at most 6 / w^2 / 24 h^2 = 1.6e-6 (h = 5e-5) plus float rounding.
+  const int n = 20000;
+  for (float c : {0.01f, 0.05f, 0.15f, 0.3f, 0.5f, 0.7f, 0.9f, 0.99f}) {
+    double mean = 0;
+    for (int k = 0; k < n; ++k) mean += sheet_amount(c, (k + 0.5f) / n) / n;
+    INFO("c " << c);
+    CHECK(mean == Approx(c).margin(1e-5));
+  }
+  for (int k = 0; k <= 100; ++k) {
+    const float shape = k / 100.0f;
+    CHECK(sheet_amount(0.0f, shape) == 0.0f);
+    if (shape > 0.0f) CHECK(sheet_amount(1.0f, shape) == 1.0f);
+    // More coverage never thins the sheet.
+    for (float c = 0.0f; c < 1.0f; c += 0.05f) CHECK(sheet_amount(c + 0.05f, shape) >= sheet_amount(c, shape));
+  }
+}
+
 TEST_CASE("the sea of fog is full below its undulating top and ends within the edge above it", "[fast][density]") {
   // Its top lies at 1 - 0.15 shape of the layer; the edge, 0.05 thick, ends there.
   for (float shape : {0.0f, 0.3f, 1.0f}) {

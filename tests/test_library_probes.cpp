@@ -472,7 +472,8 @@ TEST_CASE("cloud_density.glsl on the GPU agrees with the CPU", "[probe]") {
   std::vector<Case> cases;
   for (int f : {PROBE_HERMITE_STEP, PROBE_SHEET_PROFILE, PROBE_HEAPED_DENSITY, PROBE_SHEET_DENSITY,
                 PROBE_HERMITE_STEP_HALF_WIDTH, PROBE_CLOUD_DENSITY, PROBE_UNIFORM_FROM_MIX, PROBE_NOISE_PERIOD,
-                PROBE_CLOUD_PHASE, PROBE_SUN_SCATTERING, PROBE_LIGHT_SAMPLE, PROBE_FOG_DENSITY, PROBE_POWDER_FACTOR})
+                PROBE_CLOUD_PHASE, PROBE_SUN_SCATTERING, PROBE_LIGHT_SAMPLE, PROBE_FOG_DENSITY, PROBE_POWDER_FACTOR,
+                PROBE_SHEET_AMOUNT})
     for (int k = 0; k < 12; ++k) {
       vec4 a(r(0.0f, 1.0f), r(0.0f, 1.0f), r(0.0f, 1.0f), 0.0f);
       if (f == PROBE_LIGHT_SAMPLE) a = vec4(float(k), 12.0f, r(100.0f, 4000.0f), 0.0f);         // (i, n, length)
@@ -717,6 +718,11 @@ TEST_CASE("webanck_forms.glsl on the GPU agrees with the CPU", "[probe]") {
     cases.push_back({arguments(k % 2 ? PROBE_ALTO_FIELDS_EXACT : PROBE_CUMULUS_FIELDS_EXACT,
                                vec4(r(0.0f, 0.01f), float(k / 2 % 2), 0, 0), pn, vec4(0, 0, 0, float(k))),
                      webanck_field_tolerance(0.13f * 400.0f)});
+    // The coverage windows: paths and tables are a few products and sums of values below 2.
+    cases.push_back({arguments(PROBE_COVERAGE_WINDOWS, vec4(r(-0.5f, 2.5f), 0, 0, 0)), kArithmetic * 4.0f});
+    cases.push_back({arguments(PROBE_COVERAGE_WINDOWS, vec4(r(-0.1f, 1.1f), 1.0f, r(-0.1f, 1.1f), 0), r.v(0.0f, 1.0f),
+                               r.v(0.0f, 1.0f), vec4(r(0.0f, 1.0f), 0, 0, 0)),
+                     kArithmetic * 8.0f});
   }
   compare("webanck_forms", probe_webanck_forms, cases);
 }

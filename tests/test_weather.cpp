@@ -197,9 +197,11 @@ TEST_CASE("the cover under a point of the regional field is the cover at its lat
   // A cover that grows linearly with the latitude of each texel's direction, 20 per radian
   // (0.5 at 46.95 N): the field must read it at the direction (cos lat cos lon, cos lat sin lon,
   // sin lat), as the orbit view draws the cover. The ellipsoid's normal at Bern points 0.19
-  // degrees further south, which would read 20 x 0.0033 = 0.066 less. Bilinear interpolation of
-  // 512-texel faces errs by at most f'' h^2 / 8 (h = 0.0031 rad, f'' of the order of the slope):
-  // 3e-5; the floats' rounding is smaller still, so 0.005 separates the two.
+  // degrees further south, which would read 20 x 0.0033 = 0.066 less. The cubic B-spline filter of
+  // 512-texel faces errs by about f'' h^2 / 6 (its kernel's variance h^2 / 3; h = 0.0031 rad, f''
+  // of the order of the slope): 3e-5; the floats' rounding is smaller still, so 0.005 separates the two. The field's
+  // texels (12.5 km) span more than half a cover texel (19.6 km), where the sub-texel field draws the cover's own
+  // value, and cloud of this cover (tops at 3 km, tau 2-9) has its base below 2.5 km: all of it is in the low channel.
   const int n = 512;
   const double phi0 = 46.95 * M_PI / 180, slope = 20.0;
   std::vector<float> cover(std::size_t(6) * n * n);
@@ -211,7 +213,13 @@ TEST_CASE("the cover under a point of the regional field is the cover at its lat
         cover[(std::size_t(face) * n + j) * n + i] = float(0.5 + slope * (std::asin(double(r.z)) - phi0));
       }
   const GeographicLib::LocalCartesian frame(46.95, 7.44, 0.0);
-  const WeatherField field = field_from_cover(cover, n, 1, frame, 16, 20000.0);
+  CoverChannels channels;
+  channels.size = n;
+  channels.cover = &cover;
+  channels.tau_median = 4.0f;
+  channels.tau_spread = 1.2f;
+  channels.planet_radius_m = 6371000.0;
+  const WeatherField field = field_from_cover(channels, frame, 16, 100000.0);
   int checked = 0;
   for (int row = 0; row < field.size; ++row)
     for (int column = 0; column < field.size; ++column) {
@@ -223,4 +231,32 @@ TEST_CASE("the cover under a point of the regional field is the cover at its lat
       ++checked;
     }
   CHECK(checked == 256);
+}
+
+TEST_CASE("a cloud of the cover goes wholly into the channel of its base's level", "[fast][weather]") {
+  // cloud_thickness_km: tau 4 (below 3.6 + a little) keeps about 0.3 of the depth above 0.5 km.
+  for (const auto& [top, tau] : {std::pair{2.0f, 4.0f}, {3.5f, 4.0f}, {6.0f, 30.0f}, {12.0f, 2.0f}, {9.5f, 80.0f}}) {
+    const float base = top - glsl::cloud_thickness_km(top, tau);
+    const LevelShares s = level_shares(top, tau);
+    INFO("top " << top << " tau " << tau << " base " << base);
+    CHECK(s.low + s.mid + s.high == 1.0f);
+    CHECK(s.low == (base < 3.0f ? 1.0f : 0.0f));
+    CHECK(s.high == (base >= 8.0f ? 1.0f : 0.0f));
+  }
+}
+
+TEST_CASE("an overcast of the global cover is a stratus deck, not fog round the camera", "[fast][weather]") {
+  // A field overcast in the low channel everywhere: a station's sample like it (calm air, no wind
+  // given) would be radiation fog; the cover cannot tell fog from low cloud.
+  WeatherField field{8, 20000.0, std::vector<float>(std::size_t(coverage_channels) * 64, 0.0f)};
+  for (int k = 0; k < 64; ++k) field.values[std::size_t(CoverageChannel::low) * 64 + k] = 1.0f;
+  const WeatherSample s = sample_for_layers(field, 0);
+  CHECK(s.cloud_low == 1.0);
+  CHECK_FALSE(s.may_be_fog);
+  const auto layers = choose_layers(s, {}, LayerRules{});
+  REQUIRE(layers.size() == 1);
+  CHECK(layers[0].type == CloudType::stratus);
+  WeatherSample station = s;
+  station.may_be_fog = true;
+  CHECK(choose_layers(station, {}, LayerRules{}).at(0).type == CloudType::fog);
 }

@@ -36,10 +36,22 @@ float heaped_density(float h, float c, float shape, float detail, float top_roun
   return hermite_step(0.0f, 0.12f, eroded) * hermite_step(0.0f, 0.06f, h) * (1.0f - hermite_step(0.95f, 1.0f, h));
 }
 
-// Stratiform sheets: coverage modulated by the shape noise, a soft profile, faint texture.
+// How much of a sheet stands where the shape noise (uniform in [0, 1]) is `shape` under coverage
+// c: a ramp centred on the quantile 1 - c, so that the sheet's mean over the sky is c exactly and
+// its edges are frayed by the noise; the ramp (0.3 of the noise's range) narrows as c nears 0
+// or 1, so that no coverage draws nothing and full coverage an unbroken sheet. (An earlier form,
+// H(0.15, 0.55, c + (shape - 1/2) / 2), drew a fifth of the sky with some cloud at c = 0 and
+// nearly all of it at c = 1/2: the ground saw a veil where the orbit view saw clear sky.)
+float sheet_amount(float c, float shape) {
+  float cc = clamp(c, 0.0f, 1.0f);
+  float half_width = min(0.15f, min(cc, 1.0f - cc));
+  if (half_width <= 0.0f) return shape > 1.0f - cc ? 1.0f : 0.0f;
+  return hermite_step(1.0f - cc - half_width, 1.0f - cc + half_width, shape);
+}
+
+// Stratiform sheets: coverage through sheet_amount, a soft profile, faint texture.
 float sheet_density(float h, float c, float shape, float detail) {
-  float amount = hermite_step(0.15f, 0.55f, c + 0.5f * (shape - 0.5f));
-  return amount * sheet_profile(h, 0.25f) * (0.7f + 0.3f * detail);
+  return sheet_amount(c, shape) * sheet_profile(h, 0.25f) * (0.7f + 0.3f * detail);
 }
 
 // The sea of fog (a stratus deck under a winter inversion, docs/terrain.md): full density from

@@ -62,6 +62,7 @@ float coverage_at(vec3 p, int channel, IN(MarchParams) m, IN(WeatherField) weath
 // envelope in gate and p_n in coordinates; lod is then that of a field of frequency 1.
 struct ShapeSample {
   float h, c, shape, detail, lod, gate;
+  float erosion;  // Webanck's types: delta's weight at the coverage (webanck_forms.glsl's windows)
   vec3 coordinates;
 };
 
@@ -98,10 +99,9 @@ const int WEBANCK_BOUND = 0;
 const int WEBANCK_LIGHT = 1;
 const int WEBANCK_FULL = 2;
 
-// Webanck's phi from the baked fields, with the weather's coverage c moving the n2 (cumulus) or
-// n1 (alto) window: G3 is close to uniform, so n2 > 0.55 covers 45 % of space; the shift
-// 0.45 - c makes it c (exact paper form at c = 0.45, and for alto at c = 0.57). Cumulus tops are
-// rounded by raising the window with height (0.25 h), ours, not the paper's.
+// Webanck's phi from the baked fields, opened by the weather's coverage c through the forms'
+// coverage windows (webanck_forms.glsl: the share c of the columns holds cloud), with delta's
+// weight for that c in erosion and delta's mean times it in detail.
 void webanck_shape(INOUT(ShapeSample) q, int type, float k, float tau, int fields, IN(NoiseVolume) noise_volume) {
   vec3 pn = q.coordinates;
   vec3 offset = vec3(-tau, 0.0f, 0.0f);
@@ -114,15 +114,18 @@ void webanck_shape(INOUT(ShapeSample) q, int type, float k, float tau, int field
       n4 = baked_g3(pn + 2.0f * offset, 40.0f, 4, q.lod, noise_volume);
       n5 = baked_g3(pn + 3.0f * offset, 80.0f, 5, q.lod, noise_volume);
     }
-    q.shape = cumulus_phi(n2, n3, n4, n5, 0.45f - q.c + 0.25f * q.h);
-    q.detail = cumulus_delta(WEBANCK_W3_MEAN, WEBANCK_W3_MEAN, 0.5f, 0.5f);
-    q.gate = hermite_step(0.0f, 0.06f, q.h) * (1.0f - hermite_step(0.95f, 1.0f, q.h));
+    vec2 phi = cumulus_phi_at(vec4(n2, n3, n4, n5), q.c, q.h);
+    q.shape = phi.x;
+    q.erosion = phi.y;
+    q.detail = phi.y * cumulus_delta(WEBANCK_W3_MEAN, WEBANCK_W3_MEAN, 0.5f, 0.5f);
+    q.gate = cumulus_gate(q.h);
   } else {
     float n1 = baked_g3(vec3(0.35f * pn.x, pn.y, pn.z) + 2.0f * offset, 36.0f, 11, q.lod, noise_volume);
-    q.shape = alto_phi(k, n1 + (q.c - 0.57f));  // H(0.43 + s, 1 + s, n1), s = 0.57 - c
-    q.detail = alto_delta(k, 0.5f, WEBANCK_W3_MEAN);
-    // The sheet (k near 1) keeps the weather's coverage, its edges frayed by n1.
-    q.gate = mix(1.0f, hermite_step(0.15f, 0.55f, q.c + 0.5f * (n1 - 0.5f)), k) * sheet_profile(q.h, 0.25f);
+    vec2 phi = alto_phi_at(k, q.c, n1);
+    q.shape = phi.x;
+    q.erosion = phi.y;
+    q.detail = phi.y * alto_delta(k, 0.5f, WEBANCK_W3_MEAN);
+    q.gate = alto_gate(q.h);
   }
 }
 
@@ -135,11 +138,11 @@ float webanck_detail(IN(ShapeSample) q, int type, float k, float tau, IN(NoiseVo
     float n7 = baked_w3(pn + 0.8f * offset, 240.0f, 7, q.lod, noise_volume);
     float n8 = baked_g3(pn + 8.0f * offset, 288.0f, 8, q.lod, noise_volume);
     float n9 = baked_g3(pn + 8.0f * offset, 384.0f, 9, q.lod, noise_volume);
-    return cumulus_delta(n6, n7, n8, n9);
+    return q.erosion * cumulus_delta(n6, n7, n8, n9);
   }
   float n2 = baked_g3(pn + 8.0f * offset, 96.0f, 12, q.lod, noise_volume);
   float n3 = baked_w3(pn + 8.0f * offset, 400.0f, 13, q.lod, noise_volume);
-  return alto_delta(k, n2, n3);
+  return q.erosion * alto_delta(k, n2, n3);
 }
 
 // footprint: the length one sample stands for (the pixel's width at that distance, or the step),
@@ -156,6 +159,7 @@ ShapeSample shape_at(vec3 p, vec3 centre, int layer, float footprint, int fields
   q.detail = 0.0f;
   q.lod = 0.0f;
   q.gate = 1.0f;
+  q.erosion = 1.0f;
   q.coordinates = vec3(0.0f);
   if (q.c <= 0.0f || q.h < 0.0f || q.h > 1.0f) return q;
   if (webanck_type(l.type)) {

@@ -114,6 +114,97 @@ vec3 alto_fields_exact(vec3 pn, float tau, uint seed) {
   return vec3(n1, n2, n3);
 }
 
+// Coverage windows (docs/layers.md, "Coverage windows"): how the weather's coverage c opens the
+// forms so that the share c of the sky holds cloud, as the orbit view draws the cover. The paper's
+// forms have one coverage each (n2 > 0.55 and alto's fixed window); ours move along a path
+// p = 0 (no cloud) .. 2 (every column cloudy), and a table gives the p of each c. A column counts
+// as cloudy where its optical depth through the layer reaches 1; the columns' share, not the
+// points', is what a view from above sees, and the fields vary with height, so that a window
+// covering the share c of the points covers more of the columns (the sheet's 0.1 of the points
+// is 0.25 of the columns).
+
+// Piecewise-linear interpolation of 17 values at x = 0, 1/16, .., 1: the first sixteen in
+// a[i / 4][i % 4] (mat4's columns), the seventeenth in last. As the sum of the knots' hat
+// functions max(0, 1 - |t - i|), t = 16 x: four dot products, no indexing by a variable (which
+// made llvmpipe's compile of the marcher ten times slower).
+float knots17(mat4 a, float last, float x) {
+  float t = clamp(x, 0.0f, 1.0f) * 16.0f;
+  vec4 i = vec4(0.0f, 1.0f, 2.0f, 3.0f);
+  vec4 one = vec4(1.0f);
+  vec4 zero = vec4(0.0f);
+  return dot(a[0], max(zero, one - abs(vec4(t) - i))) + dot(a[1], max(zero, one - abs(vec4(t) - i - 4.0f))) +
+         dot(a[2], max(zero, one - abs(vec4(t) - i - 8.0f))) + dot(a[3], max(zero, one - abs(vec4(t) - i - 12.0f))) +
+         last * max(0.0f, 1.0f - abs(t - 16.0f));
+}
+
+// The cumulus's path: p in [0, 1] lowers n2's window from [1, 1.2] (nothing) to [-0.2, 0] (every
+// n2), p in [1, 2] then lowers delta's weight from 1 to 0 (k2 n3 alone caps the cover at about
+// 0.76 of the columns: merging cumulus erode less), and p in [2, 3] lifts phi by up to 1, above
+// the marcher's detail erosion (which leaves densities of 1 and more alone): an unbroken deck.
+// Returns (window shift, delta's weight, lift).
+vec3 cumulus_window(float p) {
+  return vec3(0.55f - 1.2f * clamp(p, 0.0f, 1.0f), 1.0f - clamp(p - 1.0f, 0.0f, 1.0f), clamp(p - 2.0f, 0.0f, 1.0f));
+}
+
+// Altocumulus's path: p in [0, 1] lowers n1's window from [1, 1.57] to [0, 0.57] (the paper's
+// [0.43, 1] at p = 0.57), p in [1, 2] on to [-0.57, 0] while delta's weight falls to 0.
+vec2 altocumulus_window(float p) {
+  return vec2(0.57f - clamp(p, 0.0f, 1.0f) - 0.57f * clamp(p - 1.0f, 0.0f, 1.0f), 1.0f - clamp(p - 1.0f, 0.0f, 1.0f));
+}
+
+// The tables: p at c = i / 16, by bisection on a Monte Carlo share of 3000 columns of the exact
+// fields through the rules' layers (cumulus 1500 m from 1000 m, alto 1500 m from 3500 m;
+// tests/test_webanck_coverage.cpp's hidden case [.calibration] prints them), the end knots (c = 0
+// and 1) extended from their neighbours. The cumulus's include the marcher's detail erosion of
+// its edges (cloud_march.glsl's detail_eroded at the renderer's strength, 0.35), which takes a
+// tenth of its cover. The sheet's is the points' coverage for sheet_amount.
+const mat4 CUMULUS_WINDOW_KNOTS =
+    mat4(0.1662f, 0.2308f, 0.2954f, 0.3620f, 0.4312f, 0.5047f, 0.5802f, 0.6630f,
+         0.7428f, 0.8145f, 0.8984f, 1.0021f, 1.2246f, 1.4305f, 1.6854f, 1.9345f);
+const mat4 ALTOCUMULUS_WINDOW_KNOTS =
+    mat4(0.2690f, 0.3269f, 0.3848f, 0.4367f, 0.4855f, 0.5328f, 0.5870f, 0.6429f,
+         0.7020f, 0.7652f, 0.8218f, 0.8867f, 0.9617f, 1.0474f, 1.1330f, 1.2481f);
+const mat4 ALTOSTRATUS_COVER_KNOTS =
+    mat4(0.0029f, 0.0245f, 0.0461f, 0.0716f, 0.0998f, 0.1311f, 0.1728f, 0.2236f,
+         0.2799f, 0.3397f, 0.4071f, 0.4734f, 0.5365f, 0.6132f, 0.6923f, 0.7887f);
+
+const float CUMULUS_WINDOW_LAST = 2.1835f;
+const float ALTOCUMULUS_WINDOW_LAST = 1.3632f;
+const float ALTOSTRATUS_COVER_LAST = 0.8851f;
+
+// The windows at coverage c; no coverage, no cloud (p = 0).
+vec3 cumulus_window_at(float c) {
+  return cumulus_window(c > 0.0f ? knots17(CUMULUS_WINDOW_KNOTS, CUMULUS_WINDOW_LAST, c) : 0.0f);
+}
+vec2 altocumulus_window_at(float c) {
+  return altocumulus_window(c > 0.0f ? knots17(ALTOCUMULUS_WINDOW_KNOTS, ALTOCUMULUS_WINDOW_LAST, c) : 0.0f);
+}
+float altostratus_cover_at(float c) {
+  return c > 0.0f ? knots17(ALTOSTRATUS_COVER_KNOTS, ALTOSTRATUS_COVER_LAST, c) : 0.0f;
+}
+
+// Cumulus's phi and delta's weight under coverage c at the height fraction h: the tops are rounded
+// by raising the window with height (0.25 h; ours, not the paper's).
+vec2 cumulus_phi_at(vec4 shape, float c, float h) {
+  vec3 w = cumulus_window_at(c);
+  return vec2(cumulus_phi(shape.x, shape.y, shape.z, shape.w, w.x + 0.25f * h) + w.z, w.y);
+}
+
+// The forms' envelopes over the layer's height fraction h: cumulus flat-based with a thin top
+// fade, alto a soft sheet.
+float cumulus_gate(float h) { return hermite_step(0.0f, 0.06f, h) * (1.0f - hermite_step(0.95f, 1.0f, h)); }
+float alto_gate(float h) { return sheet_profile(h, 0.25f); }
+
+// Alto's phi and delta's weight under coverage c, morph k (1 altostratus .. 0 altocumulus): the
+// sheet's part k by sheet_amount (its edges frayed by n1), the cells' part 1 - k through their
+// window; both grow with n1, so the two parts share their cloud. (The paper's sheet covers its
+// whole domain; gating the product phi by a mix of the two let k (1 - k) of the sky cloud where
+// the coverage was nil.)
+vec2 alto_phi_at(float k, float c, float n1) {
+  vec2 w = altocumulus_window_at(c);
+  return vec2(k * sheet_amount(altostratus_cover_at(c), n1) + (1.0f - k) * hermite_step(0.43f + w.x, 1.0f + w.x, n1), w.y);
+}
+
 // Densities max(0, phi - delta) from the fields.
 float cumulus_form(vec4 shape, vec4 detail, float shift) {
   return max(cumulus_phi(shape.x, shape.y, shape.z, shape.w, shift) -

@@ -17,7 +17,7 @@ double max_mid_cover(const std::vector<WeatherSample>& hours, double within_hour
 
 bool is_foggy(const WeatherSample& now) {
   // Radiation fog: low cover nearly total, calm air, no rain.
-  return now.cloud_low >= 0.95 && (!now.has_wind || now.wind_speed < 3.0) && now.precipitation < 0.1;
+  return now.may_be_fog && now.cloud_low >= 0.95 && (!now.has_wind || now.wind_speed < 3.0) && now.precipitation < 0.1;
 }
 
 }  // namespace
@@ -54,7 +54,7 @@ std::vector<CloudLayer> choose_layers(const WeatherSample& now, const std::vecto
   const bool nimbostratus = now.precipitation >= 0.5 && now.cloud_mid >= 0.8;
 
   // High layer, 8-12 km (Open-Meteo's split: above 8 km).
-  if (now.cloud_high >= 0.05) {
+  if (now.cloud_high >= layer_threshold) {
     const double mid_rise = max_mid_cover(ahead, 12, now.time) - now.cloud_mid;
     if (now.cloud_high >= 0.7 || mid_rise >= 0.3)
       layers.push_back(
@@ -67,7 +67,7 @@ std::vector<CloudLayer> choose_layers(const WeatherSample& now, const std::vecto
       layers.push_back({CloudType::cirrus, CoverageChannel::high, 8500, 10500, 1e-3f, 0, 0, 0, "high cover: fibres"});
   }
   // Mid layer, 3-8 km: Webanck et al.'s altostratus-altocumulus morph.
-  if (now.cloud_mid >= 0.05) {
+  if (now.cloud_mid >= layer_threshold) {
     float k = static_cast<float>(std::clamp((0.9 - now.cloud_mid) / 0.6, 0.0, 1.0));
     std::string why = "mid cover: k from cover (broken -> altocumulus, overcast -> altostratus)";
     if (rain_ahead > 0.2) {
@@ -82,7 +82,7 @@ std::vector<CloudLayer> choose_layers(const WeatherSample& now, const std::vecto
   }
   // Low layer, up to 3 km.
   const double low = nimbostratus ? std::max(now.cloud_low, 0.8) : now.cloud_low;
-  if (low >= 0.05 && !is_foggy(now)) {
+  if (low >= layer_threshold && !is_foggy(now)) {
     const float ground = static_cast<float>(rules.ground_m);
     if (low >= 0.9 || nimbostratus || (now.precipitation > 0.1 && low > 0.7))
       layers.push_back(

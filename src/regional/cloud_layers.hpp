@@ -48,6 +48,9 @@ struct StationCoverage {
   double channel[coverage_channels] = {0, 0, 0, 0, 0};
 };
 
+// The least cover of a channel that makes a layer (docs/layers.md).
+inline constexpr double layer_threshold = 0.05;
+
 // Layer types from the current hour and the hours ahead (up to 7 days), with the reason for
 // each choice. Thresholds are documented in docs/layers.md.
 std::vector<CloudLayer> choose_layers(const WeatherSample& now, const std::vector<WeatherSample>& ahead,

@@ -28,6 +28,10 @@ struct WeatherSample {
   double cape = 0, lifted_index = 0;
   int weather_code = 0;
   bool has_cape = false, has_lifted_index = false, has_weather_code = false;
+  // Whether nearly total low cover in calm air may be radiation fog. A satellite cover cannot
+  // tell fog from low cloud and says nothing of the wind: its samples (weather_field.hpp) set
+  // this false, and their overcast is a stratus deck, not fog round the camera.
+  bool may_be_fog = true;
 };
 
 struct WeatherSeries {

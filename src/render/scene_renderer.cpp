@@ -22,6 +22,10 @@ namespace {
 
 constexpr int field_size = 64;
 constexpr double field_extent_m = 160000.0;
+// A field from the global cover is finer: 1.25 km texels carry the orbit view's sub-texel cloud
+// (cloud_properties.glsl) down to a few km, so that the layers' clouds stand where the orbit view
+// draws its own (the Webanck forms' cells fill in below that); 5 km texels left only the share.
+constexpr int cover_field_size = 256;
 constexpr double look_ahead_hours = 168.0;  // the original system looked up to 7 days ahead
 
 regional::LayerRules layer_rules(const regional::Scene& scene) {
@@ -144,11 +148,20 @@ PreparedScene prepare_scene(const regional::Scene& scene, const std::vector<regi
     if (cover.texels.size() != std::size_t(6) * cover.size * cover.size || cover.size <= 0)
       throw std::logic_error("prepare_scene: a global cover of " + std::to_string(cover.texels.size()) +
                              " texels is not six faces of " + std::to_string(cover.size) + "^2");
-    field = regional::field_from_cover(cover.texels, cover.size, scene.seed, frame, field_size, field_extent_m);
+    // The fallbacks' log-normal and the sphere are the table's, as the orbit view's
+    // (orbit_renderer.cpp).
+    const regional::CoverChannels channels{cover.size,
+                                           &cover.texels,
+                                           &cover.optical_thickness,
+                                           &cover.cloud_top,
+                                           params::cover::tau_median.default_float(),
+                                           params::cover::tau_spread.default_float(),
+                                           params::scene::planet_radius_km.default_number * 1000.0};
+    field = regional::field_from_cover(channels, frame, cover_field_size, field_extent_m);
     out.passes.push_back("weather_field (global cover)");
     out.weather_source = "global cover";
     out.weather_at_camera = regional::sample_from_field(field, time);
-    out.layers = regional::choose_layers(out.weather_at_camera, {}, layer_rules(scene));
+    out.layers = regional::choose_layers(regional::sample_for_layers(field, time), {}, layer_rules(scene));
     regional::add_cover_convection(field, time, out.camera.longitude_deg);
     out.convection_reason =
         regional::convection_from_cover(out.weather_at_camera.cloud_low, time, out.camera.longitude_deg).reason;

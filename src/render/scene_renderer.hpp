@@ -16,9 +16,11 @@ struct SceneRender {
   Camera camera;
   std::vector<regional::CloudLayer> layers;
   RenderResult render;
-  std::vector<std::string> passes;            // every pass that ran, in order
-  std::string weather_source;                 // "stations" or "global cover"
-  regional::WeatherSample weather_at_camera;  // what the layer rules read
+  std::vector<std::string> passes;  // every pass that ran, in order
+  std::string weather_source;       // "stations" or "global cover"
+  // What the layer rules read: the nearest station's weather, or the cover's at the camera
+  // (the rules then read the region's: regional::sample_for_layers).
+  regional::WeatherSample weather_at_camera;
   // The towering cumulus and cumulonimbus placed where the weather calls for convection
   // (docs/convection.md), and what called for it at the camera (empty: no convection there).
   std::vector<regional::ConvectiveCloud> convective_clouds;

@@ -13,6 +13,7 @@ const int PROBE_SUN_SCATTERING = 9;
 const int PROBE_LIGHT_SAMPLE = 10;
 const int PROBE_FOG_DENSITY = 11;
 const int PROBE_POWDER_FACTOR = 12;
+const int PROBE_SHEET_AMOUNT = 13;  // sheet_amount(a, b)
 #ifndef __cplusplus
 #include "../lib/cloud_density.glsl"
 #endif
@@ -35,5 +36,6 @@ vec4 probe_cloud_density(mat4 x) {
   if (f == PROBE_LIGHT_SAMPLE) return vec4(light_sample(int(a), int(b), c), 0.0f, 0.0f);
   if (f == PROBE_FOG_DENSITY) return vec4(fog_density(a, b, c, d), 0.0f, 0.0f, 0.0f);
   if (f == PROBE_POWDER_FACTOR) return vec4(powder_factor(a, b, c), 0.0f, 0.0f, 0.0f);
+  if (f == PROBE_SHEET_AMOUNT) return vec4(sheet_amount(a, b), 0.0f, 0.0f, 0.0f);
   return vec4(sun_scattering(a, b), 0.0f, 0.0f, 0.0f);  // PROBE_SUN_SCATTERING
 }

@@ -8,6 +8,11 @@ const int PROBE_FORM_PROFILES = 4;  // cumulus_phi, cumulus_delta, alto_phi, alt
 const int PROBE_FORMS = 5;  // cumulus_form, alto_form
 const int PROBE_CUMULUS_FIELDS_EXACT = 6;
 const int PROBE_ALTO_FIELDS_EXACT = 7;
+// knots17(x[1..2] as a mat4's first columns, ...) and the windows: x[1] = the first eight knots,
+// (cumulus_window(a), altocumulus_window(a)) or, b >= 0.5, (cumulus_phi_at(x[2], c, x[1].x).x,
+// alto_phi_at(x[1].y, c, x[1].z).x, cumulus_gate(a) + alto_gate(a), altostratus_cover_at(c) +
+// knots17 of x[1], x[2] twice at c)
+const int PROBE_COVERAGE_WINDOWS = 8;
 #ifndef __cplusplus
 #include "../lib/webanck_forms.glsl"
 #endif
@@ -36,6 +41,12 @@ vec4 probe_webanck_forms(mat4 x) {
     vec4 detail;
     cumulus_fields_exact(vec3(x[1]), a, seed, shape, detail);
     return b < 0.5f ? shape : detail;
+  }
+  if (f == PROBE_COVERAGE_WINDOWS) {
+    if (b < 0.5f) return vec4(vec2(cumulus_window(a)) + vec2(cumulus_window(a).z), altocumulus_window(a));
+    mat4 knots = mat4(x[1], x[2], x[1], x[2]);
+    return vec4(cumulus_phi_at(x[2], c, x[1].x).x + cumulus_window_at(c).x + cumulus_window_at(c).z, alto_phi_at(x[1].y, c, x[1].z).x +
+                altocumulus_window_at(c).x, cumulus_gate(a) + alto_gate(a), altostratus_cover_at(c) + knots17(knots, x[3].x, c));
   }
   return vec4(alto_fields_exact(vec3(x[1]), a, seed), 0.0f);  // PROBE_ALTO_FIELDS_EXACT
 }
