@@ -47,6 +47,9 @@ viewer::ViewerOptions small_view() {
   scene.height = kHeight;
   scene.view_steps = 8;
   scene.light_steps = 2;
+  // Shadow maps of 64^2 (the scene's 512^2 were most of each render's time); no test here looks
+  // at shadows, and the one that compares with `nephele render` keeps the default.
+  scene.shadow_map_size = 64;
   return options;
 }
 
@@ -81,7 +84,9 @@ double largest_difference(const core::ImageData& a, const core::ImageData& b) {
 }  // namespace
 
 TEST_CASE("the window shows the image nephele render makes headless of the same view, to one 8-bit step", "[window]") {
-  Viewer v(small_view());
+  viewer::ViewerOptions options = small_view();
+  options.scene.shadow_map_size = params::scene::shadow_map_size.default_int();  // render's
+  Viewer v(options);
   v.set_panels_visible(false);
   v.set_capture(true);
   const int frames = refine(v);

@@ -20,6 +20,7 @@ std::vector<Binding> bindings(ViewState& s) {
                          {&sc::time, &s.time},
                          {&sc::view_steps, &s.view_steps},
                          {&sc::light_steps, &s.light_steps},
+                         {&sc::shadow_map_size, &s.shadow_map_size},
                          {&sc::exposure, &s.exposure},
                          {&sc::seed, &s.seed},
                          {&sc::cover_size, &s.cover_size},
@@ -58,7 +59,7 @@ void go_to_viewpoint(ViewState& state, const std::string& name) {
 
 ViewState state_of_scene(const regional::Scene& scene) {
   ViewState state;
-  // Time, seed, cover size, steps and exposure through the table's bindings of both structs;
+  // Time, seed, cover size, steps, shadow maps and exposure through the table's bindings of both structs;
   // the camera below (scene_camera, or the orbit viewpoint's) replaces the pitch and fov.
   regional::Scene source = scene;
   params::copy_bound_fields(regional::field_bindings(source), bindings(state));
@@ -84,7 +85,7 @@ regional::Scene scene_of(const ViewState& state, int width, int height) {
   scene.width = width;
   scene.height = height;
   scene.weather = state.weather;
-  // Position, heading, pitch, fov, time, seed, steps, exposure, cover size through the table.
+  // Position, heading, pitch, fov, time, seed, steps, shadow maps, exposure, cover size through the table.
   ViewState source = state;
   params::copy_bound_fields(bindings(source), regional::field_bindings(scene));
   return scene;

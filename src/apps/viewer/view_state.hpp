@@ -25,6 +25,7 @@ struct ViewState {
   int cover_size = params::scene::cover_size.default_int();
   int view_steps = params::scene::view_steps.default_int();
   int light_steps = params::scene::light_steps.default_int();
+  int shadow_map_size = params::scene::shadow_map_size.default_int();  // the scene's; a panel changes it
   double exposure = params::scene::exposure.default_number;
   float coverage = params::cover::coverage.default_float();
   int month = params::cover::month.default_int();  // the Earth profile's season (0: annual mean)
