@@ -536,6 +536,11 @@ TEST_CASE("worley_fbm.glsl on the GPU agrees with the CPU", "[probe]") {
     classic[0].x = float(PROBE_INVERTED_WORLEY_FBM);
     if (smooth) CHECK(probe_worley_fbm(x).w != probe_worley_fbm(classic).w);
   }
+  // The noise volume's detail parameters: 3 octaves from frequency 8, periodic.
+  for (int k = 0; k < 8; ++k)
+    cases.push_back({arguments(PROBE_NOISE_VOLUME_DETAIL, vec4(0.0f), r.v(0.0f, 1.0f), vec4(0.0f),
+                               vec4(float(k * 7919), 0.0f, 0.0f, 0.0f)),
+                     kFbm * 32.0f});
   compare("worley_fbm", probe_worley_fbm, cases);
 }
 

@@ -30,21 +30,15 @@ constexpr int kHeights = 32;  // midpoints through the layer
 // The exact fields at kHeights points of n columns at random positions of p_n (units of 108 km),
 // spread over 50 x 50 units (750 periods of the coarsest field, n2's), of one noise seed; and the
 // turbulence of the marcher's detail erosion of the cumulus (cloud_march.glsl's detail_eroded):
-// the noise volume's detail channel (noise_volume.comp: inverted Worley fBm of 8 cells and 3
-// octaves a period, rank-equalised) over DETAIL_PERIOD metres, here equalised over the samples.
+// the noise volume's detail channel (noise_volume_detail_fbm, which the host rank-equalises) over
+// DETAIL_PERIOD metres, here equalised over the samples.
 struct Columns {
   int n = 0;
   std::vector<vec4> shape, detail;  // cumulus n2..n5, n6..n9
   std::vector<vec3> alto;           // alto n1..n3
   std::vector<float> turbulence;    // at the cumulus's points
   Columns(int count, unsigned position_seed, uint noise_seed) : n(count) {
-    FbmParams volume_detail;
-    volume_detail.frequency = 8.0f;
-    volume_detail.octaves = 3;
-    volume_detail.lacunarity = 2.0f;
-    volume_detail.gain = 0.5f;
-    volume_detail.seed = noise_seed ^ 0x5bd1e995u;
-    volume_detail.period = ivec3(8);
+    const FbmParams volume_detail = noise_volume_detail_fbm(noise_seed);
     std::mt19937 rng(position_seed);
     std::uniform_real_distribution<float> u(0.0f, 50.0f);
     for (int i = 0; i < n; ++i) {

@@ -38,4 +38,18 @@ vec4 inverted_worley_fbm(vec3 p, IN(FbmParams) params) {
   return smooth_worley_fbm(p, params, 0.0f);
 }
 
+// The renderer's noise volume's detail channel (render/noise_volume.comp, G, before the host's
+// rank equalisation): inverted Worley fBm of 8 cells and 3 octaves of gain 1/2 a period, of its
+// own seed. The coverage windows' calibration evaluates the same (tests/test_webanck_coverage.cpp).
+FbmParams noise_volume_detail_fbm(uint seed) {
+  FbmParams fbm;  // members one by one: C++17 has no parenthesised aggregate initialisation
+  fbm.frequency = 8.0f;
+  fbm.octaves = 3;
+  fbm.lacunarity = 2.0f;
+  fbm.gain = 0.5f;
+  fbm.seed = seed ^ 0x5bd1e995u;
+  fbm.period = ivec3(8);
+  return fbm;
+}
+
 #endif

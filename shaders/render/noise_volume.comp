@@ -18,7 +18,7 @@ void main() {
   if (any(greaterThanEqual(voxel, ivec3(size)))) return;
   vec3 p = (vec3(voxel) + 0.5f) / float(size);
   FbmParams shape = FbmParams(4.0f, 3, 2.0f, 0.5f, u_seed, ivec3(4));
-  FbmParams detail = FbmParams(8.0f, 3, 2.0f, 0.5f, u_seed ^ 0x5bd1e995u, ivec3(8));
+  FbmParams detail = noise_volume_detail_fbm(u_seed);
   FbmParams g3 = FbmParams(4.0f, 3, 2.0f, 0.52f, u_seed ^ 0x27d4eb2fu, ivec3(4));
   FbmParams w3 = FbmParams(4.0f, 2, 3.0f, 0.33f, u_seed ^ 0x165667b1u, ivec3(4));
   float g3_mean = perlin_fbm_mean(p, g3);

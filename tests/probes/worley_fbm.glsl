@@ -3,6 +3,7 @@
 // gain), x[3] = (seed, period). The functions (x[0].x):
 const int PROBE_INVERTED_WORLEY_FBM = 0;
 const int PROBE_SMOOTH_WORLEY_FBM = 1;  // smooth_worley_fbm with lambda x[0].y
+const int PROBE_NOISE_VOLUME_DETAIL = 2;  // inverted_worley_fbm with noise_volume_detail_fbm(seed)
 #ifndef __cplusplus
 #include "../lib/worley_fbm.glsl"
 #endif
@@ -15,5 +16,6 @@ vec4 probe_worley_fbm(mat4 x) {
   params.seed = uint(x[3].x);
   params.period = ivec3(vec3(x[3].y, x[3].z, x[3].w));
   if (int(x[0].x) == PROBE_SMOOTH_WORLEY_FBM) return smooth_worley_fbm(vec3(x[1]), params, x[0].y);
+  if (int(x[0].x) == PROBE_NOISE_VOLUME_DETAIL) return inverted_worley_fbm(vec3(x[1]), noise_volume_detail_fbm(params.seed));
   return inverted_worley_fbm(vec3(x[1]), params);  // PROBE_INVERTED_WORLEY_FBM
 }
