@@ -45,6 +45,7 @@ namespace nephele::glsl {
 #include "probes/perlin.glsl"
 #include "probes/portable_math.glsl"
 #include "probes/ray_sphere.glsl"
+#include "probes/slab_scattering.glsl"
 #include "probes/sun_glint.glsl"
 #include "probes/terrain.glsl"
 #include "probes/tileable_noise.glsl"
@@ -260,6 +261,25 @@ TEST_CASE("sun_glint.glsl on the GPU agrees with the CPU", "[probe]") {
                      8 * kTranscendental * largest});
   }
   compare("sun_glint", probe_sun_glint, cases);
+}
+
+TEST_CASE("slab_scattering.glsl on the GPU agrees with the CPU", "[probe]") {
+  Random r(23);
+  std::vector<Case> cases;
+  for (int k = 0; k < 64; ++k) {
+    const float tau = k < 8 ? r(0.0f, 0.5f) : r(0.0f, 80.0f), mu0 = r(-0.1f, 1.0f);
+    const mat4 input = arguments(k % 3 == 2   ? PROBE_SLAB_SKY
+                                 : k % 3 == 1 ? PROBE_SLAB_SINGLE
+                                              : PROBE_SLAB_LIGHT,
+                                 vec4(tau, mu0, r(0.0f, 1.0f) * tau, 0), vec4(r(0.0f, 0.5f), r(0.0f, 2.0f), 0, 0));
+    // A few exponentials and divisions of values below 100 each, the linear source's slope a
+    // difference divided by b1 - a1 >= 0.004 (tau >= 0.2): 64 transcendental roundings of the
+    // largest output.
+    const vec4 cpu = probe_slab_scattering(input);
+    const float largest = std::max({1.0f, std::abs(cpu.x), std::abs(cpu.y), std::abs(cpu.z), std::abs(cpu.w)});
+    cases.push_back({input, 64 * kTranscendental * largest});
+  }
+  compare("slab_scattering", probe_slab_scattering, cases);
 }
 
 TEST_CASE("equirect_mapping.glsl on the GPU agrees with the CPU", "[probe]") {

@@ -5,9 +5,9 @@
 #ifndef NEPHELE_ATMOSPHERE_GLSL
 #define NEPHELE_ATMOSPHERE_GLSL
 #include "prelude.glsl"
+#include "portable_math.glsl"
 #include "ray_sphere.glsl"
 
-const float PI_F = 3.14159265358979f;
 const float ATMOSPHERE_THICKNESS = 100000.0f;
 const float RAYLEIGH_SCALE_HEIGHT = 8000.0f;
 const float MIE_SCALE_HEIGHT = 1200.0f;

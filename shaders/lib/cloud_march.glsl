@@ -27,6 +27,7 @@
 #include "terrain.glsl"
 #include "land_cover.glsl"
 #include "sun_glint.glsl"
+#include "slab_scattering.glsl"
 #include "implicit_field.glsl"
 
 // Mesa's llvmpipe stops every loop of an invocation after 65535 iterations in all, so pixels
@@ -646,17 +647,13 @@ void march_interval(float a, float b, int layer, bool convective, vec3 d, vec3 c
 }
 
 // The share of the sun's horizontal irradiance that clouds of optical depth tau along the sun ray
-// (mu: the sun's sine) scatter down to the ground as diffuse light. A conservatively scattering
-// layer of vertical optical depth t lets through about T = 1 / (1 + 3/4 (1 - g) t) of the light
-// falling on it (the two-stream Eddington approximation; Bohren, "Multiple scattering of light
-// and some of its observable consequences", Am. J. Phys. 55, 1987), g = CLOUD_ASYMMETRY for
-// cloud droplets; e^-tau of that is the direct sun, the rest arrives diffuse, white. Taken
-// column by column along the sun ray (t = tau mu): an overcast of t = 15 leaves the ground a third
-// of the sun's light where the clear sky's alone was a sixth.
-const float CLOUD_ASYMMETRY = 0.85f;
+// (mu: the sun's sine) scatter down to the ground as diffuse light: a conservatively scattering
+// layer of vertical optical depth t lets through about slab_diffuse_transmittance(t) of the light
+// falling on it (slab_scattering.glsl); e^-tau of that is the direct sun, the rest arrives
+// diffuse, white. Taken column by column along the sun ray (t = tau mu): an overcast of t = 15
+// leaves the ground a third of the sun's light where the clear sky's alone was a sixth.
 float cloud_diffuse_share(float tau, float mu) {
-  float vertical = tau * max(mu, 0.0f);
-  float through = 1.0f / (1.0f + 0.75f * (1.0f - CLOUD_ASYMMETRY) * vertical);
+  float through = slab_diffuse_transmittance(tau * max(mu, 0.0f));
   return max(through - exp(-tau), 0.0f);
 }
 

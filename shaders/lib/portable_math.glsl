@@ -4,6 +4,8 @@
 #define NEPHELE_PORTABLE_MATH_GLSL
 #include "prelude.glsl"
 
+const float PI_F = 3.14159265358979f;
+
 // arcsin by Abramowitz and Stegun, Handbook of Mathematical Functions (1964), 4.4.46:
 // asin x = pi/2 - sqrt(1 - x) (a0 + a1 x + ... + a7 x^7) for 0 <= x <= 1, |error| <= 2e-8,
 // extended to negative x by oddness. In float the evaluation adds a few ulp.

@@ -21,6 +21,7 @@ layout(binding = 5) uniform sampler2D water_texture;  // equirect, fraction of o
 #include "../lib/cube_bspline.glsl"
 #include "../lib/equirect_mapping.glsl"
 #include "../lib/hash.glsl"
+#include "../lib/slab_scattering.glsl"
 #include "../lib/sun_glint.glsl"
 
 uniform vec3 u_centre;         // planet centre relative to the camera, m
@@ -49,8 +50,6 @@ uniform float u_day_texel;     // arc length of one day-texture texel, m
 uniform int u_cloud_steps;
 uniform int u_shadow_steps;
 uniform int u_sky_steps;
-
-const float CLOUD_ALBEDO = 0.95f;
 
 // (near, far) distances to a sphere along unit d, from b = dot(camera - centre, d) and q; near >
 // far when the ray misses. The root of larger magnitude first, the other as q / root (Vieta):
@@ -145,9 +144,12 @@ vec4 cloud_slab(vec3 p, float footprint, vec2 heights) {
 // evaluated: in the segment's part in the slab, at its middle or, in thick cloud, one mean free
 // path (1 / extinction) past where the segment enters it, which is where the light that leaves
 // the segment was scattered on average: the lit side of a thick cloud, not its dark inside.
-vec2 segment_extinction(vec3 p, vec3 d, float dt, float footprint, out vec3 inside) {
+// `column` is (the slab's own optical thickness, the own and the mean optical depth of `inside`
+// below the slab's top), for the light of its multiple scattering (slab_source).
+vec2 segment_extinction(vec3 p, vec3 d, float dt, float footprint, out vec3 inside, out vec3 column) {
   vec3 middle = p + 0.5f * dt * d;
   inside = middle;
+  column = vec3(0.0f);
   float h0 = length(p) - u_radius, h1 = length(p + dt * d) - u_radius;
   float low = min(h0, h1), high = max(h0, h1);
   vec4 slab = cloud_slab(middle, footprint, vec2(low, high));
@@ -165,6 +167,8 @@ vec2 segment_extinction(vec3 p, vec3 d, float dt, float footprint, out vec3 insi
     float inside_length = overlap * dt;
     inside = p + (entry + min(0.5f * inside_length, 1.0f / slab.z)) * d;
   }
+  float below_top = clamp(slab.y - (length(inside) - u_radius), 0.0f, slab.y - slab.x);
+  column = vec3(slab.w * (slab.y - slab.x), slab.w * below_top, slab.z * below_top);
   return slab.zw * overlap;
 }
 
@@ -184,7 +188,7 @@ vec2 optical_depth_to_sun(vec3 p, int steps, float footprint) {
   }
   float span = max(length_to_top - start, 0.0f);
   vec2 depth = vec2(0.0f);
-  vec3 inside;
+  vec3 inside, column;
   for (int i = 0; i < steps; ++i) {
     float t0 = float(i) / float(steps), t1 = float(i + 1) / float(steps);
     // Quadratic spacing: short steps near p, where the light's shadow detail is.
@@ -195,23 +199,25 @@ vec2 optical_depth_to_sun(vec3 p, int steps, float footprint) {
     // beyond it the cover's mean (its expectation) at half the cost of a light ray.
     float scale = max(footprint, 0.5f * (s1 - s0));
     if (i > 0) scale = max(scale, u_cover_texel);
-    depth += segment_extinction(p + s0 * u_sun, u_sun, s1 - s0, scale, inside) * (s1 - s0);
+    depth += segment_extinction(p + s0 * u_sun, u_sun, s1 - s0, scale, inside, column) * (s1 - s0);
   }
   return depth;
 }
-
-// Share of the light that gets through a cloud layer of optical depth tau by multiple scattering
-// (two-stream, asymmetry 0.85: 1 / (1 + 0.75 x 0.15 tau)).
-float diffuse_transmission(float tau) { return 1.0f / (1.0f + 0.1125f * tau); }
 
 // The sunlight through the clouds of depths (mean, own): the direct beam by the mean, the rest
 // diffusing through the cloud by its own depth.
 float cloud_shadow(vec2 depth) {
   float direct = exp(-depth.x);
-  return direct + (1.0f - direct) * diffuse_transmission(depth.y);
+  return direct + (1.0f - direct) * slab_diffuse_transmittance(depth.y);
 }
 
-float hg(float nu, float g) { return henyey_greenstein(nu, g); }
+// The phase function of the view's single scattering (nu the cosine between the view ray and the
+// sun): the droplets' forward lobe (g = 0.85, the silver lining) and a tenth in a broad backward
+// lobe for the glory side, about 0.025 per steradian straight back, near the 0.02-0.04 of cloud
+// droplets' Mie phase function between 140 and 170 degrees (Hansen and Travis 1974). A stronger
+// backward lobe (0.3 of HG(-0.3): 0.07 per steradian) made thin cloud seen from above brighter by
+// its single scattering alone than the delta-Eddington slab's whole reflectance.
+float cloud_view_phase(float nu) { return 0.9f * henyey_greenstein(nu, 0.85f) + 0.1f * henyey_greenstein(nu, -0.3f); }
 
 // Ambient light of the sky (isotropic radiance) at a point with local up n: a blue share of the
 // sunlight that fades across the terminator.
@@ -260,7 +266,7 @@ void main() {
     float dt = (len0 + len1) / float(steps);
     vec3 sun_at_cloud = vec3(-1.0f);  // sunlight at the shell, computed at the first dense sample
     float nu = dot(d, u_sun);
-    float phase = 0.7f * hg(nu, 0.6f) + 0.3f * hg(nu, -0.3f);
+    float phase = cloud_view_phase(nu);
     // Segments between the boundaries (k + jitter) dt, k = 0 .. steps - 1, and the ends (so that
     // the boundaries do not line up between pixels); a segment across the gap between the two
     // intervals is taken in its two parts.
@@ -276,16 +282,20 @@ void main() {
         float segment = s1 - s0;
         vec3 p;
         float footprint = max(t * u_pixel_angle, 0.25f * dt);
-        float sigma = segment_extinction(oc + t * d, d, segment, footprint, p).x;
+        vec3 column;
+        float sigma = segment_extinction(oc + t * d, d, segment, footprint, p, column).x;
         if (sigma <= 0.0f) continue;
         vec3 n = normalize(p);
         if (sun_at_cloud.x < 0.0f) sun_at_cloud = solar_irradiance() * transmittance_to_space(p, u_sun, u_radius);
         vec2 tau_light = optical_depth_to_sun(p, 4, footprint);
-        // Single scattering plus the light that diffuses through the cloud (multiple scattering,
-        // isotropic), with the two-stream transmission 1 / (1 + 0.75 (1 - g) tau) of a cloud of
-        // asymmetry g = 0.85.
-        vec3 source = CLOUD_ALBEDO * (sun_at_cloud * (phase * exp(-tau_light.x) + 0.3f * diffuse_transmission(tau_light.y)) +
-                                      sky_ambient(n));
+        // Single scattering, plus the multiply scattered light of the sample's own slab
+        // (slab_source: the slab reflects and lets through what the delta-Eddington slab does),
+        // dimmed by the clouds between the slab's top and the sun, and the sky's light.
+        float mu0 = dot(n, u_sun);
+        vec2 diffuse = slab_source(column.x, mu0, cloud_view_phase(-mu0), cloud_view_phase(mu0));
+        vec2 above = max(tau_light - column.zy / max(mu0, SLAB_MIN_MU0), vec2(0.0f));
+        vec3 source = sun_at_cloud * (phase * exp(-tau_light.x) + slab_source_at(diffuse, column.y) * cloud_shadow(above)) +
+                      sky_ambient(n) * slab_sky_source(column.x);
         float step_transmittance = exp(-sigma * segment);
         float hit_distance = length(p - oc);
         cloud_light += cloud_transmittance * source * (1.0f - step_transmittance);

@@ -27,6 +27,7 @@ namespace nephele::glsl {
 #include "lib/perlin.glsl"
 #include "lib/portable_math.glsl"
 #include "lib/ray_sphere.glsl"
+#include "lib/slab_scattering.glsl"
 #include "lib/sun_glint.glsl"
 #include "lib/render_types.glsl"
 #include "lib/terrain.glsl"
