@@ -1,6 +1,8 @@
 #!/bin/sh
 # The measures of docs/climate.md ("Cloud objects", "Measured") for six seeds of the default
-# cover: `nephele generate` and `nephele stats` each, printed as the Markdown rows of its tables.
+# cover: `nephele generate` and `nephele stats` each, printed as the Markdown rows of its tables
+# (the cloud objects', then the optical thickness and cloud tops' of "Optical thickness and cloud
+# tops").
 # Usage: scripts/seed-table.sh [SIZE] [TIME] [extra generate options...]
 set -eu
 cd "$(dirname "$0")/.."
@@ -27,5 +29,14 @@ print("| %s | %d | %.2f (%.0f-%.0f) | %.3f | %.3f | %.2f | %.3f | %.3f | %.3f | 
     s["perimeter_dimension"]["dimension"], o["largest_share"], o["elongation_median"],
     o["mid_tone_share"], contrast, s["coverage_by_latitude"]["bands_10deg"]["max_abs_error"],
     float(sys.argv[4]) - float(sys.argv[3])))
+p = s["cloud_properties"]
+with open(sys.argv[1].rsplit("/", 3)[0] + "/properties.md", "a") as rows:
+    rows.write("| %s | %.3f | %.3f | %.3f | %.3f +- %.3f | %.3f | %.3f | %.3f | %.2f km |\n" % (
+        sys.argv[2], p["thin"], p["medium"], p["thick"], p["log_tau_mean"], p["log_tau_sd"], p["low"],
+        p["middle"], p["high"], p["top_mean_km"]))
 PY
 done
+echo
+echo "| seed | thin | medium | thick | ln tau | low | middle | high | mean top |"
+echo "|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
+cat "$work/properties.md"

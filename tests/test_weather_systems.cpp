@@ -175,6 +175,39 @@ TEST_CASE("the ITCZ's clusters stay in its belt and follow the season", "[fast][
   INFO("share of the line in clusters " << double(inside) / n);
   CHECK(inside > n / 10);
   CHECK(inside < 2 * n / 3);
+  // The clusters' anvils: wider than the clusters (more of the line under them), none 9 degrees
+  // off the line, and drawn out westward: of the line's stretches under an anvil but beside a
+  // cluster, more lie west of their nearest cluster than east of it.
+  std::vector<bool> cluster(n), anvil(n);
+  int anvils = 0;
+  for (int k = 0; k < n; ++k) {
+    const float lon = 2.0f * float(M_PI) * k / n;
+    const vec3 on(std::cos(line) * std::cos(lon), std::cos(line) * std::sin(lon), std::sin(line));
+    cluster[k] = glsl::itcz_clusters(on, line, line, annual.seed, 0.0f) > 0.5f;
+    anvil[k] = glsl::itcz_anvils(on, line, line, annual.seed, 0.0f) > 0.5f;
+    anvils += anvil[k];
+    const float off = line + 9.0f * float(M_PI) / 180.0f;
+    const vec3 away(std::cos(off) * std::cos(lon), std::cos(off) * std::sin(lon), std::sin(off));
+    CHECK(glsl::itcz_anvils(away, off, line, annual.seed, 0.0f) == 0.0f);
+  }
+  int west = 0, east = 0;
+  for (int k = 0; k < n; ++k) {
+    if (!anvil[k] || cluster[k]) continue;
+    for (int step = 1; step < n / 36; ++step) {  // within 10 degrees
+      if (cluster[(k + step) % n]) {             // the nearest cluster lies east: k is west of it
+        ++west;
+        break;
+      }
+      if (cluster[(k + n - step) % n]) {
+        ++east;
+        break;
+      }
+    }
+  }
+  INFO("share of the line under anvils " << double(anvils) / n << "; anvil beside a cluster: " << west << " west, "
+                                         << east << " east");
+  CHECK(anvils > inside);
+  CHECK(west > east);
 }
 
 TEST_CASE("trade cumulus are many small separate clouds in the trades and none at the equator or the poles",

@@ -129,6 +129,30 @@ float itcz_clusters(vec3 p, float latitude, float itcz_latitude, uint seed, floa
   return belt * cell_clouds(p, 6.0f, seed, 11u, 0.3f, 0.35f, 0.25f, edge);
 }
 
+// The anvils of the ITCZ's clusters: deep convection spreads out under the tropopause into a
+// shield of thin cirrus far wider than its convective core (Houze 2004, "Mesoscale convective
+// systems", Rev. Geophys. 42: anvils hundreds of kilometres across), drawn out westward by the
+// upper troposphere's easterlies over the ITCZ. Each cluster's anvil is an ellipse 1.5 times the
+// cluster's radius across, 1.4 times longer east-west, centred 0.15 cells west of the cluster,
+// in the same cells (itcz_clusters' lattice and hashes), so that an empty place has none.
+float itcz_anvils(vec3 p, float latitude, float itcz_latitude, uint seed, float edge) {
+  float belt = (latitude - itcz_latitude) / 0.07f;
+  belt = exp(-belt * belt);
+  if (belt < 0.02f) return 0.0f;
+  vec3 scaled = p * 6.0f;
+  vec4 f1 = worley_f1(scaled, ivec3(0), noise_key(seed, 11u));
+  ivec3 cell = ivec3(floor(scaled - vec3(f1) * f1.w));
+  vec3 h = hash_to_unit3(pcg3d(uvec3(cell) ^ noise_key(seed, 12u)));
+  if (h.y < 0.25f) return 0.0f;
+  float size = 1.5f * (0.3f + 0.35f * h.x);
+  vec3 offset = vec3(f1) * f1.w;  // from the cluster's feature point to p, in cells
+  vec3 east = normalize(vec3(-p.y, p.x, 0.0f) + vec3(1.0e-6f, 0.0f, 0.0f));
+  float east_of_centre = dot(offset, east) + 0.15f;
+  vec3 across = offset - dot(offset, east) * east;
+  float r = sqrt(east_of_centre * east_of_centre / (1.4f * 1.4f) + dot(across, across));
+  return belt * (1.0f - smoothstep(0.4f * size, size, r + 0.1f * edge));
+}
+
 // Trade cumulus: many small clouds up to 60-120 km across (the mesoscale clusters of the cumulus,
 // whose single clouds are far below a texel), about 110 km apart (60 cells per radius), 30 % of
 // the cells empty and the fields patchy where the cover's noise is low, between about 6 and 30 degrees of
@@ -169,14 +193,17 @@ float cyclone_systems(vec3 p, IN(WeatherSystems) systems, float edge) {
 }
 
 // The belts' weights in the density at p with the noise of `seed`: ITCZ clusters at full weight
-// (thick cloud), trade cumulus at 0.6, cirrus at 0.35 (thin: it rises little above the threshold
-// and stays grey); x the clusters, y the cumulus, z the cirrus.
+// (thick cloud), trade cumulus at 0.6, cirrus and the clusters' anvils at 0.35 (thin: they rise
+// little above the threshold and stay grey); x the clusters, y the cumulus, z the cirrus.
 const vec3 BELT_WEIGHTS = vec3(1.0f, 0.6f, 0.35f);
 vec3 belt_fields(vec3 p, float latitude, IN(WeatherSystems) systems, uint seed, float edge) {
   vec3 fields = vec3(0.0f);
   if (systems.itcz > 0.0f) fields.x = systems.itcz * itcz_clusters(p, latitude, systems.itcz_latitude, seed, edge);
   if (systems.trade_cumulus > 0.0f) fields.y = BELT_WEIGHTS.y * systems.trade_cumulus * trade_cumulus(p, latitude, seed, edge);
   if (systems.cirrus > 0.0f) fields.z = BELT_WEIGHTS.z * systems.cirrus * cirrus_streaks(p, latitude, seed);
+  // The clusters' anvils are cirrus: thin (the cirrus's weight) and high.
+  if (systems.itcz > 0.0f)
+    fields.z = max(fields.z, BELT_WEIGHTS.z * systems.itcz * itcz_anvils(p, latitude, systems.itcz_latitude, seed, edge));
   return fields;
 }
 // The belts' cloud from their weighted fields: the largest.

@@ -5,7 +5,7 @@ const int PROBE_BAND_PROFILE = 0;     // band_profile(a, b)
 const int PROBE_COMMA_CLOUD = 1;      // comma_cloud(vec2(a, b), c, x[3].x)
 const int PROBE_CYCLONE = 2;          // cyclone_frame(p, C).xy, cyclone_cloud(p, C, a) in z
 const int PROBE_CELL_CLOUDS = 3;      // cell_clouds(p, a, uint(b), 7, 0.2, 0.3, 0.3, c)
-const int PROBE_BELTS = 4;            // itcz_clusters(p, lat, a, uint(b), c), trade_cumulus, cirrus_streaks
+const int PROBE_BELTS = 4;            // itcz_clusters(p, lat, a, uint(b), c), trade_cumulus, cirrus_streaks, itcz_anvils
 const int PROBE_WEATHER_DENSITY = 5;  // weather_density, cyclone_systems, belt_systems (seed b + 1): cyclone C, the ITCZ at a, seed b, edge c
 const int PROBE_BELT_FIELDS = 6;      // belt_fields(p, lat, systems (the ITCZ at a), uint(b), c), belt_cloud of them in w
 #ifndef __cplusplus
@@ -37,7 +37,7 @@ vec4 probe_weather_systems(mat4 x) {
   if (f == PROBE_CELL_CLOUDS) return vec4(cell_clouds(p, x[0].y, seed, 7u, 0.2f, 0.3f, 0.3f, x[0].w), 0.0f, 0.0f, 0.0f);
   if (f == PROBE_BELTS)
     return vec4(itcz_clusters(p, latitude, x[0].y, seed, x[0].w), trade_cumulus(p, latitude, seed, x[0].w),
-                cirrus_streaks(p, latitude, seed), 0.0f);
+                cirrus_streaks(p, latitude, seed), itcz_anvils(p, latitude, x[0].y, seed, x[0].w));
   WeatherSystems systems;
   systems.cyclones[0] = probe_cyclone(x);
   systems.cyclone_count = 1;
