@@ -122,11 +122,24 @@ float cell_clouds(vec3 p, float frequency, uint seed, uint layer, float radius, 
 // through its middle), about 1000 km apart (6 cells per radius), a quarter of the places empty, within a Gaussian belt of 4 degrees around the line
 // (Waliser and Gautier 1993, "A satellite-derived climatology of the ITCZ", J. Climate 6;
 // Mapes and Houze 1993 for the clusters' sizes).
-float itcz_clusters(vec3 p, float latitude, float itcz_latitude, uint seed, float edge) {
+// The clusters' lattice (cells per radius, noise layer) and sizes, which their anvils share.
+const float ITCZ_CELLS = 6.0f;
+const uint ITCZ_LAYER = 11u;
+const float ITCZ_RADIUS = 0.3f;
+const float ITCZ_SPREAD = 0.35f;
+const float ITCZ_EMPTY = 0.25f;
+
+// The ITCZ's belt: a Gaussian of 4 degrees (0.07 rad) about its line; callers draw nothing where
+// it is below 0.02.
+float itcz_belt(float latitude, float itcz_latitude) {
   float belt = (latitude - itcz_latitude) / 0.07f;
-  belt = exp(-belt * belt);
+  return exp(-belt * belt);
+}
+
+float itcz_clusters(vec3 p, float latitude, float itcz_latitude, uint seed, float edge) {
+  float belt = itcz_belt(latitude, itcz_latitude);
   if (belt < 0.02f) return 0.0f;
-  return belt * cell_clouds(p, 6.0f, seed, 11u, 0.3f, 0.35f, 0.25f, edge);
+  return belt * cell_clouds(p, ITCZ_CELLS, seed, ITCZ_LAYER, ITCZ_RADIUS, ITCZ_SPREAD, ITCZ_EMPTY, edge);
 }
 
 // The anvils of the ITCZ's clusters: deep convection spreads out under the tropopause into a
@@ -136,15 +149,15 @@ float itcz_clusters(vec3 p, float latitude, float itcz_latitude, uint seed, floa
 // cluster's radius across, 1.4 times longer east-west, centred 0.15 cells west of the cluster,
 // in the same cells (itcz_clusters' lattice and hashes), so that an empty place has none.
 float itcz_anvils(vec3 p, float latitude, float itcz_latitude, uint seed, float edge) {
-  float belt = (latitude - itcz_latitude) / 0.07f;
-  belt = exp(-belt * belt);
+  float belt = itcz_belt(latitude, itcz_latitude);
   if (belt < 0.02f) return 0.0f;
-  vec3 scaled = p * 6.0f;
-  vec4 f1 = worley_f1(scaled, ivec3(0), noise_key(seed, 11u));
+  // The cluster's cell and hash as cell_clouds finds them.
+  vec3 scaled = p * ITCZ_CELLS;
+  vec4 f1 = worley_f1(scaled, ivec3(0), noise_key(seed, ITCZ_LAYER));
   ivec3 cell = ivec3(floor(scaled - vec3(f1) * f1.w));
-  vec3 h = hash_to_unit3(pcg3d(uvec3(cell) ^ noise_key(seed, 12u)));
-  if (h.y < 0.25f) return 0.0f;
-  float size = 1.5f * (0.3f + 0.35f * h.x);
+  vec3 h = hash_to_unit3(pcg3d(uvec3(cell) ^ noise_key(seed, ITCZ_LAYER + 1u)));
+  if (h.y < ITCZ_EMPTY) return 0.0f;
+  float size = 1.5f * (ITCZ_RADIUS + ITCZ_SPREAD * h.x);
   vec3 offset = vec3(f1) * f1.w;  // from the cluster's feature point to p, in cells
   vec3 east = normalize(vec3(-p.y, p.x, 0.0f) + vec3(1.0e-6f, 0.0f, 0.0f));
   float east_of_centre = dot(offset, east) + 0.15f;

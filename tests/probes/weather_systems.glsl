@@ -1,7 +1,7 @@
 // Probe of lib/weather_systems.glsl (shared GLSL/C++ subset; tests/test_library_probes.cpp).
 // x[0] = (function, a, b, c), x[1] = the point p (unit), x[2] = a cyclone's centre (xyz, made
 // unit here) and radius (w), x[3] = (wrap, strength, ...). The functions (x[0].x):
-const int PROBE_BAND_PROFILE = 0;     // band_profile(a, b)
+const int PROBE_BAND_PROFILE = 0;     // band_profile(a, b), itcz_belt(a, b)
 const int PROBE_COMMA_CLOUD = 1;      // comma_cloud(vec2(a, b), c, x[3].x)
 const int PROBE_CYCLONE = 2;          // cyclone_frame(p, C).xy, cyclone_cloud(p, C, a) in z
 const int PROBE_CELL_CLOUDS = 3;      // cell_clouds(p, a, uint(b), 7, 0.2, 0.3, 0.3, c)
@@ -28,7 +28,7 @@ vec4 probe_weather_systems(mat4 x) {
   vec3 p = vec3(x[1]);
   float latitude = portable_asin(clamp(p.z, -1.0f, 1.0f));
   uint seed = uint(x[0].z);
-  if (f == PROBE_BAND_PROFILE) return vec4(band_profile(x[0].y, x[0].z), 0.0f, 0.0f, 0.0f);
+  if (f == PROBE_BAND_PROFILE) return vec4(band_profile(x[0].y, x[0].z), itcz_belt(x[0].y, x[0].z), 0.0f, 0.0f);
   if (f == PROBE_COMMA_CLOUD) return vec4(comma_cloud(vec2(x[0].y, x[0].z), x[0].w, x[3].x), 0.0f, 0.0f, 0.0f);
   if (f == PROBE_CYCLONE) {
     Cyclone c = probe_cyclone(x);
