@@ -165,7 +165,13 @@ TEST_CASE("density and coverage passes agree with the CPU twin", "[pass]") {
         cyclone_systems(origin, systems, system_edge(noise)),
         belt_systems(origin, portable_asin(clamp(origin.z, -1.0f, 1.0f)), systems, systems.seed, system_edge(noise)));
     const float shaped = shaped_density(noise, curl[k].w, p.cyclone_cloudiness, 0.0f, 0.0f);
-    const float expected = with_systems(shaped, systems_value);
+    // The convective cells (none resolved by 16 texels a face: the modulation is 0 here).
+    const float latitude = portable_asin(clamp(origin.z, -1.0f, 1.0f));
+    const float deck = deck_strength(origin, latitude, systems.seed, 0.0f, 0.0f);
+    const float cells = systems.cells * cell_modulation(origin, cell_weights(deck, cold_sectors(origin, systems)),
+                                                        systems.seed, 2.0f / float(p.size));
+    REQUIRE(cells == 0.0f);
+    const float expected = with_cells(with_systems(shaped, systems_value), cells);
     // The systems' field in [0, 1] takes the noise's error through system_edge (1 / 0.148) and a
     // band's edge (offset 0.6 half widths per unit of edge, smoothstep slope 1.5 / 0.4 half widths)
     // at most 15 kDensity, taken as 20, plus its transcendental functions' rounding (atan, log, exp: kSystems); the

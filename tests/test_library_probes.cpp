@@ -354,7 +354,8 @@ TEST_CASE("cover_density.glsl on the GPU agrees with the CPU", "[probe]") {
                                vec4(0.0f), vec4(0.0f), vec4(0.0f, r(0.02f, 0.3f), 0.0f, 0.0f)),
                      kTranscendental});
     cases.push_back({arguments(PROBE_SYSTEM_EDGE, vec4(r(0.0f, 1.0f), 0, 0, 0)), kArithmetic});
-    cases.push_back({arguments(PROBE_WITH_SYSTEMS, vec4(r(0.0f, 1.5f), r(0.0f, 1.0f), 0, 0)), kArithmetic});
+    cases.push_back(
+        {arguments(PROBE_WITH_SYSTEMS, vec4(r(0.0f, 1.5f), r(0.0f, 1.0f), r(-0.5f, 0.5f), 0)), kArithmetic});
     // A sqrt and a division of values near 1 on top of the linear blend.
     cases.push_back(
         {arguments(PROBE_NOISE_BLEND, vec4(r(0.0f, 1.0f), r(0.0f, 1.0f), r(0.0f, 1.0f), 0)), kTranscendental});
@@ -459,6 +460,20 @@ TEST_CASE("weather_systems.glsl on the GPU agrees with the CPU", "[probe]") {
     cases.push_back(
         {arguments(PROBE_BELT_FIELDS, vec4(r(-0.1f, 0.2f), seed, r(-1.0f, 1.0f), 0), vec4(q, 0), cyclone, life),
          std::max(band, 12.5f * 70 * kFbm)});
+    // The cells: the point's scaling by 160 cells a radius rounds it by ulp(160) = 1.5e-5 of a cell;
+    // the border's plane distance takes about twice that and its division by a sine of at least 0.2
+    // five times, 1.5e-4 of a cell, through the closed pattern's smoothstep of slope 1.5 / 0.05 = 30:
+    // 5e-3. The deck's Perlin noise is smooth (its rounding below kFbm) through a ramp of slope 2.5.
+    const float cells = 5.0e-3f;
+    const vec3 deck_point = normalize(vec3(r.v(-1.0f, 1.0f)));
+    cases.push_back({arguments(PROBE_CELLS, vec4(r(-1.0f, 1.0f), seed, k % 2 == 0 ? 0.0f : 0.4f, 0),
+                               vec4(k % 3 == 0 ? deck_point : q, 0)),
+                     cells});
+    cases.push_back(
+        {arguments(PROBE_CELL_WEIGHTS, vec4(r(0.0f, 1.0f), r(0.0f, 1.0f), r(1e-4f, 0.02f), 0)), kArithmetic * 16});
+    cases.push_back({arguments(PROBE_COLD, vec4(r(-3.0f, 2.0f), seed, r(-3.5f, 1.0f), 0), vec4(p, 0), cyclone,
+                               vec4(life.x, life.y, r(0.0f, 1.0f), r(0.0f, 1.0f))),
+                     std::max(band, cells)});
   }
   compare("weather_systems", probe_weather_systems, cases);
 }

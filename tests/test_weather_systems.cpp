@@ -2,6 +2,8 @@
 // schedule of cyclones (src/cover/weather_systems.cpp).
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <random>
 #include <vector>
@@ -267,4 +269,203 @@ TEST_CASE("the moving flow's layer blend keeps the noise's mean and spread at ev
     CHECK(spread == Approx(spread0).epsilon(0.03));
     CHECK(mean == Approx(mean0).epsilon(0.01));
   }
+}
+
+namespace {
+
+// A patch of `n` x `n` points of the sphere around `centre`, `half` radians either side along
+// its local east and north.
+std::vector<vec3> patch(vec3 centre, float half, int n) {
+  const vec3 east = glm::normalize(glm::cross(vec3(0.0f, 0.0f, 1.0f), centre));
+  const vec3 north = glm::cross(centre, east);
+  std::vector<vec3> points;
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const float u = half * (2.0f * (i + 0.5f) / n - 1.0f), v = half * (2.0f * (j + 0.5f) / n - 1.0f);
+      points.push_back(glm::normalize(centre + u * east + v * north));
+    }
+  return points;
+}
+
+// The 4-connected components of the set pixels of an n x n mask: their sizes, and how many of
+// them keep off the mask's edge.
+struct Components {
+  std::vector<int> sizes;
+  int inside = 0;
+};
+Components components(const std::vector<bool>& mask, int n) {
+  std::vector<int> label(mask.size(), -1), sizes, stack;
+  std::vector<bool> edge;
+  for (int start = 0; start < n * n; ++start) {
+    if (!mask[start] || label[start] >= 0) continue;
+    const int id = static_cast<int>(sizes.size());
+    sizes.push_back(0);
+    edge.push_back(false);
+    stack.push_back(start);
+    label[start] = id;
+    while (!stack.empty()) {
+      const int k = stack.back();
+      stack.pop_back();
+      ++sizes[id];
+      const int i = k % n, j = k / n;
+      if (i == 0 || j == 0 || i == n - 1 || j == n - 1) edge[id] = true;
+      const int next[4][2] = {{i - 1, j}, {i + 1, j}, {i, j - 1}, {i, j + 1}};
+      for (const auto& q : next) {
+        if (q[0] < 0 || q[0] >= n || q[1] < 0 || q[1] >= n) continue;
+        const int m = q[1] * n + q[0];
+        if (mask[m] && label[m] < 0) label[m] = id, stack.push_back(m);
+      }
+    }
+  }
+  return {sizes, static_cast<int>(std::count(edge.begin(), edge.end(), false))};
+}
+
+// Parts and cells are counted where they keep off the patch's edge (the edge cuts the others).
+struct Topology {
+  double cloudy;         // share of the patch where the pattern exceeds 0.5
+  int cloud_parts;       // connected cloudy parts
+  double largest_cloud;  // the largest cloudy part's share of the cloud
+  int clear_parts;       // connected clear parts
+  double largest_clear;  // the largest clear part's share of the clear
+  int cells;             // Voronoi cells of the lattice within the patch
+};
+
+// A cell pattern's topology over a patch, with the cells its lattice (frequency, layer) puts there.
+template <class Pattern>
+Topology topology(Pattern pattern, float frequency, std::uint32_t seed, std::uint32_t layer) {
+  const int n = 500;
+  const auto points = patch(vec3(std::cos(0.38f), 0.0f, std::sin(0.38f)), 0.06f, n);
+  std::vector<bool> cloud(points.size()), clear(points.size());
+  std::vector<std::array<int, 3>> cells, edge_cells;
+  for (size_t k = 0; k < points.size(); ++k) {
+    cloud[k] = pattern(points[k]) > 0.5f;
+    clear[k] = !cloud[k];
+    const vec3 scaled = points[k] * frequency;
+    const glsl::vec4 f1 = glsl::worley_f1(scaled, glsl::ivec3(0), glsl::noise_key(seed, layer));
+    const glm::ivec3 cell(glm::floor(scaled - vec3(f1) * f1.w));
+    cells.push_back({cell.x, cell.y, cell.z});
+    const int i = static_cast<int>(k) % n, j = static_cast<int>(k) / n;
+    if (i == 0 || j == 0 || i == n - 1 || j == n - 1) edge_cells.push_back(cells.back());
+  }
+  for (auto* list : {&cells, &edge_cells}) {
+    std::sort(list->begin(), list->end());
+    list->erase(std::unique(list->begin(), list->end()), list->end());
+  }
+  Topology t{};
+  t.cells = static_cast<int>(cells.size() - edge_cells.size());
+  const auto clouds = components(cloud, n), clears = components(clear, n);
+  const double cloudy = std::count(cloud.begin(), cloud.end(), true);
+  t.cloudy = cloudy / points.size();
+  t.cloud_parts = clouds.inside;
+  t.largest_cloud = *std::max_element(clouds.sizes.begin(), clouds.sizes.end()) / cloudy;
+  t.clear_parts = clears.inside;
+  t.largest_clear = *std::max_element(clears.sizes.begin(), clears.sizes.end()) / (points.size() - cloudy);
+  return t;
+}
+
+}  // namespace
+
+TEST_CASE("closed cells hold the cloud in one cell each with the clear a network, open cells the opposite",
+          "[fast][systems]") {
+  const std::uint32_t seed = 777u;
+  const Topology closed =
+      topology([&](vec3 p) { return glsl::closed_cells(p, seed); }, glsl::CLOSED_CELLS, seed, glsl::CLOSED_CELLS_LAYER);
+  INFO("closed: cloudy " << closed.cloudy << ", " << closed.cloud_parts << " clouds in " << closed.cells
+                         << " cells, largest clear part " << closed.largest_clear);
+  // Each cell its own cloud: as many clouds as cells, to the few cells that the sphere cuts to
+  // slivers thinner than their rims.
+  CHECK(closed.cloud_parts == Approx(closed.cells).epsilon(0.05));
+  CHECK(closed.largest_clear > 0.95);
+  CHECK(closed.cloudy > 0.7);
+  const Topology open =
+      topology([&](vec3 p) { return glsl::open_cells(p, seed); }, glsl::OPEN_CELLS, seed, glsl::OPEN_CELLS_LAYER);
+  INFO("open: cloudy " << open.cloudy << ", " << open.clear_parts << " clear centres in " << open.cells
+                       << " cells, largest cloud part " << open.largest_cloud);
+  CHECK(open.clear_parts == Approx(open.cells).epsilon(0.05));
+  CHECK(open.largest_cloud > 0.95);
+  CHECK(open.cloudy < 0.6);
+}
+
+TEST_CASE("the cell patterns' means over the sphere are the constants the modulation subtracts", "[fast][systems]") {
+  std::mt19937 rng(5);
+  std::normal_distribution<float> g;
+  const int n = 100000;
+  double closed = 0, open = 0;
+  for (int k = 0; k < n; ++k) {
+    const vec3 p = glm::normalize(vec3(g(rng), g(rng), g(rng)));
+    closed += glsl::closed_cells(p, 9u);
+    open += glsl::open_cells(p, 9u);
+  }
+  // The sample's standard error: the patterns' spread (below 0.5) over sqrt(n), 0.0016; the cells'
+  // own number (a million on the sphere) adds less.
+  CHECK(closed / n == Approx(glsl::CLOSED_CELLS_MEAN).margin(0.005));
+  CHECK(open / n == Approx(glsl::OPEN_CELLS_MEAN).margin(0.005));
+}
+
+TEST_CASE("cells are drawn only where the cover resolves them, from 2.5 texels a cell", "[fast][systems]") {
+  for (int size : {64, 256, 512, 1024, 2048}) {
+    const float arc = 2.0f / float(size);
+    INFO("size " << size);
+    // The closed cells' spacing is size / 320 texels, the open ones' size / 160.
+    // smoothstep(2.5, 5, 3.2) = 3 t^2 - 2 t^3 = 0.1913 at t = 0.28.
+    const float closed = size <= 512 ? 0.0f : size >= 2048 ? 1.0f : 0.1913f;
+    const float open = size <= 256 ? 0.0f : size >= 1024 ? 1.0f : 0.1913f;
+    CHECK(glsl::cells_resolved(glsl::CLOSED_CELLS, arc) == Approx(closed).margin(1e-5));
+    CHECK(glsl::cells_resolved(glsl::OPEN_CELLS, arc) == Approx(open).margin(1e-5));
+  }
+}
+
+TEST_CASE("stratocumulus decks lie in patches of their belt, off the west coasts with a land mask", "[fast][systems]") {
+  const std::uint32_t seed = 4242u;
+  auto at = [](float lat_deg, float lon) {
+    const float lat = lat_deg * float(M_PI) / 180.0f;
+    return vec3(std::cos(lat) * std::cos(lon), std::cos(lat) * std::sin(lon), std::sin(lat));
+  };
+  for (float lat : {-60.0f, -42.0f, -3.0f, 0.0f, 3.0f, 42.0f, 60.0f})
+    for (int k = 0; k < 64; ++k) {
+      const vec3 p = at(lat, 0.1f * k);
+      CHECK(glsl::deck_strength(p, std::asin(p.z), seed, 0.0f, 0.0f) == 0.0f);
+    }
+  // Along 22 degrees: decks in separate patches covering part of the circle.
+  for (float lat : {-22.0f, 22.0f}) {
+    const int n = 3600;
+    int present = 0, patches = 0;
+    bool previous = false;
+    for (int k = 0; k < n; ++k) {
+      const vec3 p = at(lat, 2.0f * float(M_PI) * k / n);
+      const bool deck = glsl::deck_presence(glsl::deck_strength(p, std::asin(p.z), seed, 0.0f, 0.0f)) > 0.5f;
+      present += deck;
+      patches += deck && !previous;
+      previous = deck;
+    }
+    INFO("latitude " << lat << ": decks over " << double(present) / n << " of the circle in " << patches << " patches");
+    CHECK(double(present) / n > 0.2);
+    CHECK(double(present) / n < 0.8);
+    CHECK(patches >= 3);
+  }
+  // With a land mask the bias alone: full from 0.4, none over land (b < 0).
+  const vec3 p = at(22.0f, 0.0f);
+  CHECK(glsl::deck_strength(p, std::asin(p.z), seed, 0.2f, 0.4f) == Approx(0.5f));
+  CHECK(glsl::deck_strength(p, std::asin(p.z), seed, 0.7f, 0.4f) == 1.0f);
+  CHECK(glsl::deck_strength(p, std::asin(p.z), seed, -0.5f, 0.4f) == 0.0f);
+}
+
+TEST_CASE("decks are closed cells in their cores and open at their fringes and in the cold air behind cold fronts",
+          "[fast][systems]") {
+  CHECK(glsl::cell_weights(1.0f, 0.0f).x == 1.0f);
+  CHECK(glsl::cell_weights(1.0f, 0.0f).y == 0.0f);
+  CHECK(glsl::cell_weights(0.3f, 0.0f).x == 0.0f);
+  CHECK(glsl::cell_weights(0.3f, 0.0f).y == 1.0f);
+  CHECK(glsl::cell_weights(0.0f, 0.0f) == vec2(0.0f));
+  CHECK(glsl::cell_weights(0.0f, 0.8f).y == 0.8f);
+  // The cold sector in the cyclone's frame: from the cold front's tail (-0.7, -3) to the join
+  // (1, -0.6), "ahead" the unit vector (2.4, -1.7) / 2.94. Behind it by 1.5 radii half way along:
+  const vec2 half_way(0.15f, -1.8f), ahead = glm::normalize(vec2(2.4f, -1.7f));
+  CHECK(glsl::cold_sector(half_way - 1.5f * ahead) == 1.0f);
+  CHECK(glsl::cold_sector(half_way) == 0.0f);                 // the front's band
+  CHECK(glsl::cold_sector(half_way - 0.4f * ahead) == 0.0f);  // the dry slot
+  CHECK(glsl::cold_sector(half_way + 1.0f * ahead) == 0.0f);  // the warm sector ahead of the front
+  CHECK(glsl::cold_sector(half_way - 3.0f * ahead) == 0.0f);  // beyond the outbreak
+  CHECK(glsl::cold_sector(vec2(-1.5f, 0.5f)) == 0.0f);        // poleward of the low
+  CHECK(glsl::cold_sector(vec2(-0.4f, -0.4f)) == 0.0f);       // the head's hook
 }

@@ -2,7 +2,8 @@
 // Pass 4a: cloud density, inverted Worley fBm sampled through the warp, shaped by the flow's
 // cyclonic depth at the texel (the curl field's w: cyclones cloudy) and by the land/ocean bias
 // (--surface; a zero weight without one), plus the weather systems (weather_systems.glsl) with
-// edges frayed by the same noise. The pass also reduces the densities' range into
+// edges frayed by the same noise and the convective cells of the stratocumulus decks and of the
+// cyclones' cold air. The pass also reduces the densities' range into
 // DensityRange, which the calibration then needs no pass of its own to find: each invocation
 // walks a strip of u_strip texels down a column (as the reductions of coverage_histogram.comp)
 // and adds its strip's range with two atomics. (A reduction in shared memory needs a barrier,
@@ -49,12 +50,21 @@ vec3 belts_at(vec3 origin, uint seed, float edge) {
   return belt_fields(origin, portable_asin(clamp(origin.z, -1.0f, 1.0f)), u_systems, seed, edge);
 }
 
+// The stratocumulus deck's strength at a layer's origin (x) and the convective cells' modulation
+// there (y), with the cyclones' cold sectors `cold` and texels texel_arc radians across.
+vec2 cells_at(vec3 origin, uint seed, float surface, float cold, float texel_arc) {
+  float deck = deck_strength(origin, portable_asin(clamp(origin.z, -1.0f, 1.0f)), seed, surface, u_surface_weight);
+  if (u_systems.cells <= 0.0f) return vec2(deck, 0.0f);
+  return vec2(deck, u_systems.cells * cell_modulation(origin, cell_weights(deck, cold), seed, texel_arc));
+}
+
 void main() {
   int size = u_face_size;
   int i = int(gl_GlobalInvocationID.x), layer = int(gl_GlobalInvocationID.z);
   int first = u_tile_rows.x + int(gl_GlobalInvocationID.y) * u_strip;
   if (i >= size || first >= u_tile_rows.y) return;
   int last = min(u_tile_rows.y, first + u_strip);
+  float texel_arc = 2.0f / float(size);  // radians, at a face's centre (the largest texels)
   uint low = 0xFFFFFFFFu, high = 0u;
   for (int j = first; j < last; ++j) {
     ivec3 texel = ivec3(i, j, layer);
@@ -77,6 +87,7 @@ void main() {
     vec3 origin = normalize(warped);
     vec3 fields = belts_at(origin, u_systems.seed, edge);
     float belts = belt_cloud(fields);
+    vec3 older_origin = origin;
 #if MOVING_LAYERS
     vec3 young_fields = belts_at(normalize(young_warped), u_young_systems_seed, edge);
     belts = layer_blend(belts, belt_cloud(young_fields), u_young_share);
@@ -85,9 +96,15 @@ void main() {
 #endif
     float cyclones = cyclone_systems(origin, u_systems, edge);
     float systems = max(cyclones, belts);
+    // The cells as the belts, each layer its own, in the cold sectors of the cyclones as drawn.
+    float cold = u_systems.cells > 0.0f ? cold_sectors(origin, u_systems) : 0.0f;
+    vec2 cells = cells_at(older_origin, u_systems.seed, surface, cold, texel_arc);
+#if MOVING_LAYERS
+    cells = mix(cells, cells_at(normalize(young_warped), u_young_systems_seed, surface, cold, texel_arc), u_young_share);
+#endif
     float cyclonic = imageLoad(curl_field, texel).w;
-    float density =
-        with_systems(shaped_density(noise, cyclonic, u_cyclone_cloudiness, surface, u_surface_weight), systems);
+    float density = with_cells(
+        with_systems(shaped_density(noise, cyclonic, u_cyclone_cloudiness, surface, u_surface_weight), systems), cells.y);
     imageStore(density_field, texel, vec4(density, 0.0f, 0.0f, 0.0f));
     // The cloud's top by its types (the remap clears it where the texel stays clear).
     CloudTypes types;
@@ -96,7 +113,7 @@ void main() {
     types.cumulus = fields.y / BELT_WEIGHTS.y;
     types.cirrus = fields.z / BELT_WEIGHTS.z;
     float latitude = portable_asin(clamp(direction.z, -1.0f, 1.0f));
-    imageStore(cloud_top_field, texel, vec4(cloud_top_km(types, latitude, cyclonic, surface), 0.0f, 0.0f, 0.0f));
+    imageStore(cloud_top_field, texel, vec4(cloud_top_km(types, latitude, cyclonic, deck_presence(cells.x)), 0.0f, 0.0f, 0.0f));
     low = min(low, sortable_bits(density));
     high = max(high, sortable_bits(density));
   }

@@ -83,18 +83,18 @@ const float ANVIL_BELOW_TROPOPAUSE_KM = 1.0f;   // deep convection reaches the t
 
 // The cloud-top height (km above sea level) at a texel of geocentric `latitude` (radians) from
 // its types' weights, the flow's cyclonic depth (0 .. about 0.6: lifted layers in cyclones) and
-// the stratocumulus decks' surface bias b in [-1, 1] (> 0 off the west coasts; 0 without
-// --surface). The unorganised cloud's top, 3 km, is held at the trade inversion's 2 km between
-// about 8 and 35 degrees (the subtropics' subsiding air caps the cloud: Stevens 2005), sinks
-// towards the decks' 1.5 km with b and rises up to 3 km more with the cyclonic depth; each system
-// then replaces it by its weight, the higher types last, so that a system's top shows where it
-// lies over lower cloud.
-float cloud_top_km(IN(CloudTypes) types, float latitude, float cyclonic, float surface_bias) {
+// the stratocumulus decks' presence in [0, 1] (weather_systems.glsl's deck_presence: off the west
+// coasts with --surface, in patches of the decks' belt without). The unorganised cloud's top,
+// 3 km, is held at the trade inversion's 2 km between about 8 and 35 degrees (the subtropics'
+// subsiding air caps the cloud: Stevens 2005), sinks towards the decks' 1.5 km with their
+// presence and rises up to 3 km more with the cyclonic depth; each system then replaces it by its
+// weight, the higher types last, so that a system's top shows where it lies over lower cloud.
+float cloud_top_km(IN(CloudTypes) types, float latitude, float cyclonic, float deck) {
   float tropopause = tropopause_km(latitude);
   float a = abs(latitude);
   float inversion = smoothstep(0.1f, 0.18f, a) * (1.0f - smoothstep(0.55f, 0.65f, a));
   float layer = mix(TOP_LAYER_KM, TOP_CUMULUS_KM, inversion);
-  float top = mix(layer, TOP_STRATOCUMULUS_KM, clamp(surface_bias, 0.0f, 1.0f)) +
+  float top = mix(layer, TOP_STRATOCUMULUS_KM, clamp(deck, 0.0f, 1.0f)) +
               3.0f * clamp(cyclonic / 0.6f, 0.0f, 1.0f);
   top = mix(top, TOP_CUMULUS_KM, clamp(types.cumulus, 0.0f, 1.0f));
   top = mix(top, TOP_FRONTAL_KM, clamp(types.frontal, 0.0f, 1.0f));

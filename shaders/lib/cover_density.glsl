@@ -59,6 +59,12 @@ float with_systems(float density, float systems) {
   return density * (1.0f + 0.5f * systems);
 }
 
+// The density with the convective cells' modulation m (weather_systems.glsl's cell_modulation,
+// zero on average over a region of cells): a factor, as the systems', so that the cells keep the
+// noise's texture and move cloud from the closed cells' rims into their interiors and from the
+// open cells' centres onto their walls.
+float with_cells(float density, float modulation) { return density * (1.0f + modulation); }
+
 // The cover of a cloudy texel just above the threshold: cloud boundaries are steps of optical
 // thickness at a texel's scale, not ramps from nothing.
 const float COVER_EDGE = 0.1f;

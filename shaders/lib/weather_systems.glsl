@@ -14,6 +14,7 @@
 #include "portable_math.glsl"
 #include "worley.glsl"
 #include "worley_fbm.glsl"
+#include "perlin.glsl"
 
 #define MAX_CYCLONES 32
 
@@ -35,6 +36,7 @@ struct WeatherSystems {
   float itcz;           // strength of its convective clusters, 0: none
   float trade_cumulus;  // strength of the trade cumulus fields, 0: none
   float cirrus;         // strength of the cirrus streaks, 0: none
+  float cells;          // strength of the stratocumulus decks' and cold air's convective cells, 0: none
   uint seed;            // the belts' noise (cluster places, cumulus cells, cirrus); per cloud layer
 };
 
@@ -195,6 +197,149 @@ float cirrus_streaks(vec3 p, float latitude, uint seed) {
   noise.seed = seed ^ 0x2545F491u;
   noise.period = ivec3(0);
   return gate * smoothstep(0.55f, 0.8f, inverted_worley_fbm(vec3(p.x, p.y, 4.0f * p.z), noise).w);
+}
+
+// Mesoscale cellular convection (docs/climate.md, "Cells"): marine boundary-layer cloud organises
+// into cells some 30 times wider than the layer is deep (Agee, Chen and Dowell 1973, "A review of
+// mesoscale cellular convection", BAMS 54), 10-50 km in the subtropics (Wood and Hartmann 2006,
+// "Spatial variability of liquid water path in marine low cloud", J. Climate 19). Closed cells,
+// cloudy cells with narrow clear rims, fill the cores of the subtropical stratocumulus decks over
+// the coolest water; open cells, rings of cloud around clear centres, their fringes, where the
+// deck breaks up towards the trades (Wood 2012), and the cold air behind the cyclones' cold fronts,
+// where polar air streams over warmer sea. Both are Voronoi cells of a random lattice: closed
+// cells 160 per radius (about 37 km across where the sphere cuts a cell), open cells 80 (about
+// 75 km, in a deeper boundary layer).
+const float CLOSED_CELLS = 160.0f;
+const float OPEN_CELLS = 80.0f;
+const uint CLOSED_CELLS_LAYER = 17u;
+const uint OPEN_CELLS_LAYER = 18u;
+const uint DECK_PATCHES_LAYER = 19u;
+// The patterns' means over the sphere (tests/test_weather_systems.cpp measures them), which the
+// modulation subtracts so that the cells move cloud within a region rather than add it.
+const float CLOSED_CELLS_MEAN = 0.77f;
+const float OPEN_CELLS_MEAN = 0.46f;
+// The patterns' amplitudes in the density's factor 1 + m (cover_density.glsl's with_cells): the
+// closed cells' rims at 0.73 of the density against 1.08 inside (thinner, greyer cloud, clear
+// only where the deck is thin), the open cells' walls at 1.24 against their centres' 0.79; both
+// more than the noise's own spread of 16 %, so that the pattern prints where the cells are.
+const float CLOSED_CELLS_CONTRAST = 0.3f;
+const float OPEN_CELLS_CONTRAST = 0.25f;
+
+// The distance (cells) from `scaled` to the border of its Voronoi cell in the lattice `key`, within
+// the surface whose unit normal is `normal`: to the nearest of the lines where the bisector planes
+// between the cell's feature point a and its neighbours' b cut the surface's tangent plane. The
+// plane's distance (|p - b|^2 - |p - a|^2) / (2 |b - a|) is divided by the sine of its normal's
+// angle with the surface normal (at least 0.2), so that cells which the sphere cuts obliquely get
+// rims as wide as the others' (F2 - F1 narrows them towards nothing). Exact where the cell's point
+// and its Voronoi neighbours lie in the 27 cells around p (nearly everywhere).
+float cell_border(vec3 scaled, vec3 normal, uvec3 key) {
+  vec3 base = floor(scaled);
+  ivec3 cell = ivec3(base);
+  vec3 f = scaled - base;
+  vec3 to_feature[27];  // from p to each neighbour cell's feature point
+  int nearest = 0;
+  float f1 = 1.0e30f;
+  for (int k = 0; k < 27; ++k) {
+    ivec3 offset = ivec3(k % 3 - 1, (k / 3) % 3 - 1, k / 9 - 1);
+    to_feature[k] = vec3(offset) + wrapped_feature_offset(cell + offset, key) - f;
+    float d2 = dot(to_feature[k], to_feature[k]);
+    if (d2 < f1) {
+      f1 = d2;
+      nearest = k;
+    }
+  }
+  vec3 a = to_feature[nearest];
+  float border = 1.0e30f;
+  for (int k = 0; k < 27; ++k) {
+    if (k == nearest) continue;
+    vec3 ab = to_feature[k] - a;
+    float length_ab = length(ab);
+    float plane = (dot(to_feature[k], to_feature[k]) - f1) / (2.0f * length_ab);
+    float along_normal = dot(ab, normal) / length_ab;
+    float sine = sqrt(max(1.0f - along_normal * along_normal, 0.0f));
+    border = min(border, plane / max(sine, 0.2f));
+  }
+  return border;
+}
+
+// Closed cells at p: 1 inside the cells, 0 on their clear rims (within 0.03 of a cell of the border).
+float closed_cells(vec3 p, uint seed) {
+  return smoothstep(0.03f, 0.08f, cell_border(p * CLOSED_CELLS, p, noise_key(seed, CLOSED_CELLS_LAYER)));
+}
+
+// Open cells at p: 1 on the cloud walls along the cells' borders (within 0.08 of a cell), 0 in their
+// clear centres.
+float open_cells(vec3 p, uint seed) {
+  return 1.0f - smoothstep(0.08f, 0.16f, cell_border(p * OPEN_CELLS, p, noise_key(seed, OPEN_CELLS_LAYER)));
+}
+
+// How far a cover of texels `texel_arc` radians across resolves cells of `frequency` per radius:
+// 0 below 2.5 texels a cell, where a point sample of the pattern (walls and rims a quarter of a
+// cell wide) would alias into speckle and broken lines, 1 from five.
+float cells_resolved(float frequency, float texel_arc) {
+  return smoothstep(2.5f, 5.0f, 1.0f / (frequency * texel_arc));
+}
+
+// The strength of a stratocumulus deck at p in [0, 1]. With a land/ocean bias (surface_weight > 0)
+// its positive part, full from 0.4 (off the west coasts: cloud_properties' decks); without one,
+// patches some 2000 km across (Perlin noise of 3 cells per radius) in the decks' belt around 22
+// degrees, the belt of surface_bias.cpp (Klein and Hartmann 1993).
+float deck_strength(vec3 p, float latitude, uint seed, float surface, float surface_weight) {
+  if (surface_weight > 0.0f) return clamp(surface / 0.4f, 0.0f, 1.0f);
+  float belt = (abs(latitude) - 0.384f) / 0.157f;  // (|lat| - 22 degrees) / 9 degrees
+  float band = exp(-belt * belt);
+  if (band < 0.02f) return 0.0f;
+  float patches = perlin_noise(p * 3.0f, ivec3(0), noise_key(seed, DECK_PATCHES_LAYER));
+  return band * clamp((patches + 0.1f) / 0.4f, 0.0f, 1.0f);
+}
+
+// The cold air behind a cyclone's cold front, in its frame (head radii, as comma_cloud): from 0.6
+// to 2.5 radii behind the front's band, along its tail, equatorward of the low and beyond its
+// head, where open cells fill the polar air (the cold-air outbreak's "popcorn" behind the dry
+// slot).
+float cold_sector(vec2 xy) {
+  const vec2 tail_end = vec2(-0.7f, -3.0f);
+  const vec2 join = vec2(1.0f, -0.6f);
+  vec2 axis = join - tail_end;
+  float along = dot(xy - tail_end, axis) / dot(axis, axis);
+  vec2 ahead = normalize(vec2(axis.y, -axis.x));
+  float behind = -dot(xy - tail_end, ahead);
+  return smoothstep(0.6f, 1.0f, behind) * (1.0f - smoothstep(2.0f, 2.5f, behind)) * smoothstep(-0.1f, 0.2f, along) *
+         (1.0f - smoothstep(0.8f, 1.1f, along)) * (1.0f - smoothstep(-0.6f, 0.0f, xy.y)) *
+         smoothstep(0.8f, 1.2f, length(xy));
+}
+
+// The cyclones' cold sectors at p: the largest, by each one's strength.
+float cold_sectors(vec3 p, IN(WeatherSystems) systems) {
+  float cold = 0.0f;
+  for (int i = 0; i < systems.cyclone_count && i < MAX_CYCLONES; ++i) {
+    vec2 xy = cyclone_frame(p, systems.cyclones[i]);
+    if (dot(xy, xy) < 16.0f) cold = max(cold, systems.cyclones[i].strength * cold_sector(xy));
+  }
+  return cold;
+}
+
+// Where a deck of strength d is (its fringe from 0.1, whole from 0.3).
+float deck_presence(float deck) { return smoothstep(0.1f, 0.3f, deck); }
+
+// The weights of closed (x) and open (y) cells from a deck's strength d and the cold sectors':
+// a deck is there from d 0.1 (its fringe, open) and closed from d 0.4 to 0.8 (its core).
+vec2 cell_weights(float deck, float cold) {
+  float present = deck_presence(deck);
+  float closed = smoothstep(0.4f, 0.8f, deck);
+  return vec2(closed, max(present - closed, cold));
+}
+
+// The cells' modulation of the density at p, zero on average over a region of one weight: the
+// closed and the open pattern less their means, by their weights, faded out where the cover's
+// texels (texel_arc radians) do not resolve them.
+float cell_modulation(vec3 p, vec2 weights, uint seed, float texel_arc) {
+  float closed = weights.x * cells_resolved(CLOSED_CELLS, texel_arc);
+  float open = weights.y * cells_resolved(OPEN_CELLS, texel_arc);
+  float m = 0.0f;
+  if (closed > 0.0f) m += closed * CLOSED_CELLS_CONTRAST * (closed_cells(p, seed) - CLOSED_CELLS_MEAN);
+  if (open > 0.0f) m += open * OPEN_CELLS_CONTRAST * (open_cells(p, seed) - OPEN_CELLS_MEAN);
+  return m;
 }
 
 // The cyclones' cloud at p: the largest of their commas.

@@ -41,13 +41,14 @@ struct CoverParameters {
   float cyclone_cloudiness =
       params::cover::cyclone_cloudiness.default_float();  // weight of the cyclonic depth in the density
   // The weather systems (weather_systems.hpp) and the remap's softness (docs/climate.md).
-  int cyclones = params::cover::cyclones.default_int();                  // per hemisphere
-  float itcz = params::cover::itcz.default_float();                      // strength of the ITCZ's clusters
-  float trade_cumulus = params::cover::trade_cumulus.default_float();    // strength of the cumulus fields
-  float cirrus = params::cover::cirrus.default_float();                  // strength of the cirrus streaks
-  float cover_softness = params::cover::cover_softness.default_float();  // density scale of the remap
-  float tau_median = params::cover::tau_median.default_float();          // the cloud's optical thickness,
-  float tau_spread = params::cover::tau_spread.default_float();          // log-normal (cloud_properties.glsl)
+  int cyclones = params::cover::cyclones.default_int();                            // per hemisphere
+  float itcz = params::cover::itcz.default_float();                                // strength of the ITCZ's clusters
+  float trade_cumulus = params::cover::trade_cumulus.default_float();              // strength of the cumulus fields
+  float cirrus = params::cover::cirrus.default_float();                            // strength of the cirrus streaks
+  float stratocumulus_cells = params::cover::stratocumulus_cells.default_float();  // the decks' and cold air's cells
+  float cover_softness = params::cover::cover_softness.default_float();            // density scale of the remap
+  float tau_median = params::cover::tau_median.default_float();                    // the cloud's optical thickness,
+  float tau_spread = params::cover::tau_spread.default_float();                    // log-normal (cloud_properties.glsl)
   NoiseOctaves density{params::cover::density_frequency.default_float(), params::cover::density_octaves.default_int(),
                        params::cover::density_lacunarity.default_float(),
                        params::cover::density_gain.default_float()};  // Worley fBm of the cloud density
@@ -104,6 +105,7 @@ void visit_numeric_parameters(P& p, Visit&& visit) {
   visit(c::itcz, p.itcz);
   visit(c::trade_cumulus, p.trade_cumulus);
   visit(c::cirrus, p.cirrus);
+  visit(c::stratocumulus_cells, p.stratocumulus_cells);
   visit(c::cover_softness, p.cover_softness);
   visit(c::tau_median, p.tau_median);
   visit(c::tau_spread, p.tau_spread);

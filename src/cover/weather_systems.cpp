@@ -52,6 +52,7 @@ glsl::WeatherSystems weather_systems(const CoverParameters& p, double hours) {
   w.itcz = p.itcz;
   w.trade_cumulus = p.trade_cumulus;
   w.cirrus = p.cirrus;
+  w.cells = p.stratocumulus_cells;
   // The ITCZ's annual-mean line near 5 N (Waliser and Gautier 1993), moved with the profile's
   // seasonal shift there.
   w.itcz_latitude = static_cast<float>((5.0 + seasonal_shift_deg(5.0, p.month)) * degree);

@@ -82,6 +82,12 @@ inline constexpr Parameter trade_cumulus =
 inline constexpr Parameter cirrus = real(
     "cirrus", 1.0, 0.0, 1.0, "", "strength of the thin cirrus streaks along the westerlies and over the ITCZ (0: none)",
     cover_commands, "systems.cirrus");
+inline constexpr Parameter stratocumulus_cells =
+    real("stratocumulus_cells", 1.0, 0.0, 1.0, "",
+         "strength of the convective cells: closed in the stratocumulus decks' cores, open at their fringes and in "
+         "the cold air behind the cyclones' cold fronts; drawn where the cover resolves them (from 1024 per face "
+         "for the closed, 512 for the open; 0: none)",
+         cover_commands, "systems.stratocumulus_cells");
 inline constexpr Parameter cover_softness =
     real("cover_softness", 0.05, 0.0, 10.0, "density",
          "cover = 1 - exp(-(density - threshold) / softness): thick cloud saturates to a bright, sharp-edged 1 and "

@@ -8,6 +8,11 @@ const int PROBE_CELL_CLOUDS = 3;      // cell_clouds(p, a, uint(b), 7, 0.2, 0.3,
 const int PROBE_BELTS = 4;            // itcz_clusters(p, lat, a, uint(b), c), trade_cumulus, cirrus_streaks, itcz_anvils
 const int PROBE_WEATHER_DENSITY = 5;  // weather_density, cyclone_systems, belt_systems (seed b + 1): cyclone C, the ITCZ at a, seed b, edge c
 const int PROBE_BELT_FIELDS = 6;      // belt_fields(p, lat, systems (the ITCZ at a), uint(b), c), belt_cloud of them in w
+const int PROBE_CELLS = 7;            // closed_cells(p, uint(b)), open_cells, cell_border(p * 160, p, its key),
+                                      // deck_strength(p, lat, uint(b), a, c)
+const int PROBE_CELL_WEIGHTS = 8;     // cell_weights(a, b), deck_presence(a), cells_resolved(b * 100, c)
+const int PROBE_COLD = 9;             // cold_sector(vec2(a, c)), cold_sectors(p, cyclone C), cell_modulation(p,
+                                      // x[3].zw, uint(b), 1e-3)
 #ifndef __cplusplus
 #include "../lib/weather_systems.glsl"
 #endif
@@ -35,6 +40,12 @@ vec4 probe_weather_systems(mat4 x) {
     return vec4(cyclone_frame(p, c), cyclone_cloud(p, c, x[0].y), 0.0f);
   }
   if (f == PROBE_CELL_CLOUDS) return vec4(cell_clouds(p, x[0].y, seed, 7u, 0.2f, 0.3f, 0.3f, x[0].w), 0.0f, 0.0f, 0.0f);
+  if (f == PROBE_CELLS)
+    return vec4(closed_cells(p, seed), open_cells(p, seed),
+                cell_border(p * CLOSED_CELLS, p, noise_key(seed, CLOSED_CELLS_LAYER)),
+                deck_strength(p, latitude, seed, x[0].y, x[0].w));
+  if (f == PROBE_CELL_WEIGHTS)
+    return vec4(cell_weights(x[0].y, x[0].z), deck_presence(x[0].y), cells_resolved(x[0].z * 100.0f, x[0].w));
   if (f == PROBE_BELTS)
     return vec4(itcz_clusters(p, latitude, x[0].y, seed, x[0].w), trade_cumulus(p, latitude, seed, x[0].w),
                 cirrus_streaks(p, latitude, seed), itcz_anvils(p, latitude, x[0].y, seed, x[0].w));
@@ -45,7 +56,11 @@ vec4 probe_weather_systems(mat4 x) {
   systems.itcz = 1.0f;
   systems.trade_cumulus = 1.0f;
   systems.cirrus = 1.0f;
+  systems.cells = 1.0f;
   systems.seed = seed;
+  if (f == PROBE_COLD)
+    return vec4(cold_sector(vec2(x[0].y, x[0].w)), cold_sectors(p, systems),
+                cell_modulation(p, vec2(x[3].z, x[3].w), seed, 1.0e-3f), 0.0f);
   if (f == PROBE_BELT_FIELDS) {
     vec3 fields = belt_fields(p, latitude, systems, seed, x[0].w);
     return vec4(fields, belt_cloud(fields));
