@@ -834,6 +834,9 @@ TEST_CASE("atmosphere.glsl on the GPU agrees with the CPU", "[probe]") {
       cases.push_back({arguments(f, vec4(earth_radius, r(-1.0f, 1.0f), r(0.0f, 0.9f), 0)), kTranscendental});
     if (f == PROBE_AIR_EXTINCTION)
       cases.push_back({arguments(f, vec4(earth_radius, r(-100.0f, 30000.0f), 0, 0)), kTranscendental});
+    if (f == PROBE_AIR_EXTINCTION)  // sky_ambient: a dot product into a smoothstep of slope 1.5 / 0.47
+      cases.push_back({arguments(PROBE_SKY_AMBIENT, vec4(earth_radius, 0, 0, 0), vec4(up, 0), vec4(sun, 0)),
+                       4 * kArithmetic * 3.2f * 2.0f});
     if (f == PROBE_TRANSMITTANCE_TO_SPACE)
       cases.push_back({arguments(f, vec4(earth_radius, 0, 0, 0), p, vec4(d, 0)), kTransmittance});
     if (f == PROBE_SKY_SINGLE_SCATTERING) {
@@ -927,7 +930,7 @@ TEST_CASE("cube_bspline.glsl on the GPU agrees with the CPU", "[probe]") {
   // taps are not).
   const float size = 64.0f;
   constexpr float kTaps = 64 * 8 * kUlp;
-  while (cases.size() < 32 + 4 * 48) {
+  while (cases.size() < 32 + 5 * 48) {
     const vec3 d = normalize(vec3(r.v(-1.0f, 1.0f)));
     const int face = cube_face_of(d);
     const vec2 x = (0.5f * cube_face_coords(face, d) + 0.5f) * size - 0.5f;
@@ -935,6 +938,11 @@ TEST_CASE("cube_bspline.glsl on the GPU agrees with the CPU", "[probe]") {
     if (std::min({f.x, f.y, 1.0f - f.x, 1.0f - f.y}) < 1e-3f) continue;
     for (int function = PROBE_TAPS_00; function <= PROBE_TAPS_11; ++function)
       cases.push_back({arguments(function, vec4(size, 0, 0, 0), vec4(d, 0)), kTaps});
+    // The combination of values in [0, 1]: g's error (kTaps) times their differences (below 1)
+    // through two blends, and the blends' own roundings.
+    cases.push_back({arguments(PROBE_COMBINE, vec4(size, 0, 0, 0), vec4(d, 0),
+                               vec4(vec3(r.v(0.0f, 1.0f)), r(0.0f, 1.0f)), vec4(vec3(r.v(0.0f, 1.0f)), r(0.0f, 1.0f))),
+                     2 * kTaps + 4 * kArithmetic});
   }
   compare("cube_bspline", probe_cube_bspline, cases);
 }

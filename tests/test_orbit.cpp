@@ -298,8 +298,8 @@ TEST_CASE("orbit: a deck seen straight down reflects the delta-Eddington share o
   // the pixel's light is the sunlight at the tops, E T_sun, reflected by R(tau, mu0) over the
   // directions as R mu0 / pi (slab_scattering.glsl: the slab's source is solved for that nadir
   // radiance, its single scattering included), seen through the air above the tops, T_view,
-  // plus what the sky's light (orbit.comp's sky_ambient, at most E (0.030, 0.045, 0.075)) adds
-  // by the share the deck reflects, 1 - 1 / (1 + 0.1125 tau), plus the air's own light, at most
+  // plus what the sky's light (atmosphere.glsl's sky_ambient) adds by the share the deck
+  // reflects, 1 - slab_diffuse_transmittance(tau), plus the air's own light, at most
   // the clear view's over the black ground. The march's segments hold the source piecewise
   // constant: a few per cent of the sun's term (10 % allowed). Before, a deck reflected as if its
   // reflectance were above 1 whatever its tau: the "paper-white" clouds of issue 31.
@@ -328,8 +328,9 @@ TEST_CASE("orbit: a deck seen straight down reflects the delta-Eddington share o
       const glm::dvec3 sun_term =
           glm::dvec3(e.x * t_sun.x * t_view.x, e.y * t_sun.y * t_view.y, e.z * t_sun.z * t_view.z) *
           (reflectance * mu0 / M_PI);
-      const glm::dvec3 sky_term = glm::dvec3(e.x * 0.030 * t_view.x, e.y * 0.045 * t_view.y, e.z * 0.075 * t_view.z) *
-                                  (1 - 1 / (1 + 0.1125 * tau));
+      const glsl::vec3 sky = glsl::sky_ambient(glsl::vec3(glm::vec3(up)), glsl::vec3(glm::vec3(sun)));
+      const glm::dvec3 sky_term = glm::dvec3(sky.x * t_view.x, sky.y * t_view.y, sky.z * t_view.z) *
+                                  (1.0 - glsl::slab_diffuse_transmittance(float(tau)));
       const double low = 0.9 * luminance(glm::vec4(glm::vec3(sun_term), 0));
       const double high =
           1.1 * luminance(glm::vec4(glm::vec3(sun_term), 0)) + luminance(glm::vec4(glm::vec3(sky_term), 0)) + air;

@@ -19,6 +19,12 @@ const float MIE_ASYMMETRY = 0.8f;
 vec3 rayleigh_scattering() { return vec3(5.802e-6f, 13.558e-6f, 33.1e-6f); }
 vec3 solar_irradiance() { return vec3(1.474f, 1.8504f, 1.91198f); }
 
+// The orbit view's ambient light of the sky (isotropic radiance) at a point with local up n and
+// the sun towards `sun`: a blue share of the sunlight that fades across the terminator.
+vec3 sky_ambient(vec3 n, vec3 sun) {
+  return solar_irradiance() * vec3(0.030f, 0.045f, 0.075f) * smoothstep(-0.12f, 0.35f, dot(n, sun));
+}
+
 float rayleigh_phase(float nu) { return 3.0f / (16.0f * PI_F) * (1.0f + nu * nu); }
 
 // Henyey-Greenstein phase function, normalised over the sphere.

@@ -57,4 +57,9 @@ CubeBsplineTaps cube_bspline_taps(vec3 r, float size) {
   return taps;
 }
 
+// The filtered value from the bilinear lookups at the four taps.
+vec4 cube_bspline_combine(IN(CubeBsplineTaps) taps, vec4 c00, vec4 c10, vec4 c01, vec4 c11) {
+  return mix(mix(c00, c10, taps.g.x), mix(c01, c11, taps.g.x), taps.g.y);
+}
+
 #endif

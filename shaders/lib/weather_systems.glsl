@@ -52,6 +52,11 @@ vec2 cyclone_frame(vec3 p, IN(Cyclone) cyclone) {
   return vec2(dot(d, cyclone.east), dot(d, cyclone.pole)) / cyclone.radius;
 }
 
+// The cold front's band in the cyclone's frame (head radii): from its tail's end, three radii
+// equatorward and west of the low, to its join with the head east of the low.
+const vec2 COLD_FRONT_TAIL_END = vec2(-0.7f, -3.0f);
+const vec2 COLD_FRONT_JOIN = vec2(1.0f, -0.6f);
+
 // The comma cloud of a cyclone in its frame (head radii; the northern hemisphere's orientation),
 // after the conceptual model of satellite meteorology (Carlson 1980, "Airflow through midlatitude
 // cyclones and the comma cloud pattern", Mon. Wea. Rev. 108; Browning 1997): the cold front's
@@ -63,8 +68,8 @@ vec2 cyclone_frame(vec3 p, IN(Cyclone) cyclone) {
 // its narrow rear side where the noise is extreme), so that the edges are as ragged as the noise
 // and move with it.
 float comma_cloud(vec2 xy, float wrap, float edge) {
-  const vec2 tail_end = vec2(-0.7f, -3.0f);
-  const vec2 join = vec2(1.0f, -0.6f);
+  const vec2 tail_end = COLD_FRONT_TAIL_END;
+  const vec2 join = COLD_FRONT_JOIN;
   vec2 axis = join - tail_end;
   float along_tail = clamp(dot(xy - tail_end, axis) / dot(axis, axis), 0.0f, 1.0f);
   vec2 from_axis = xy - (tail_end + along_tail * axis);
@@ -189,13 +194,7 @@ float cirrus_streaks(vec3 p, float latitude, uint seed) {
   float a = abs(latitude);
   float gate = max(smoothstep(0.55f, 0.7f, a) * (1.0f - smoothstep(1.05f, 1.2f, a)), 1.0f - smoothstep(0.15f, 0.3f, a));
   if (gate <= 0.0f) return 0.0f;
-  FbmParams noise;
-  noise.frequency = 14.0f;
-  noise.octaves = 2;
-  noise.lacunarity = 2.0f;
-  noise.gain = 0.5f;
-  noise.seed = seed ^ 0x2545F491u;
-  noise.period = ivec3(0);
+  FbmParams noise = make_fbm_params(14.0f, 2, 2.0f, 0.5f, seed ^ 0x2545F491u, ivec3(0));
   return gate * smoothstep(0.55f, 0.8f, inverted_worley_fbm(vec3(p.x, p.y, 4.0f * p.z), noise).w);
 }
 
@@ -298,9 +297,8 @@ float deck_strength(vec3 p, float latitude, uint seed, float surface, float surf
 // head, where open cells fill the polar air (the cold-air outbreak's "popcorn" behind the dry
 // slot).
 float cold_sector(vec2 xy) {
-  const vec2 tail_end = vec2(-0.7f, -3.0f);
-  const vec2 join = vec2(1.0f, -0.6f);
-  vec2 axis = join - tail_end;
+  const vec2 tail_end = COLD_FRONT_TAIL_END;
+  vec2 axis = COLD_FRONT_JOIN - tail_end;
   float along = dot(xy - tail_end, axis) / dot(axis, axis);
   vec2 ahead = normalize(vec2(axis.y, -axis.x));
   float behind = -dot(xy - tail_end, ahead);

@@ -10,6 +10,7 @@
 #define NEPHELE_WEBANCK_FORMS_GLSL
 #include "prelude.glsl"
 #include "tileable_noise.glsl"
+#include "worley_fbm.glsl"
 #include "cloud_density.glsl"
 #include "cloud_properties.glsl"
 
@@ -37,14 +38,7 @@ float g3_from_mean(float mean, int octaves, float persistence) {
 
 // The fBm parameters of o octaves, persistence p, lacunarity l, base frequency f, not periodic.
 FbmParams webanck_octaves(int octaves, float persistence, float lacunarity, float frequency, uint seed) {
-  FbmParams fbm;
-  fbm.frequency = frequency;
-  fbm.octaves = octaves;
-  fbm.lacunarity = lacunarity;
-  fbm.gain = persistence;
-  fbm.seed = seed;
-  fbm.period = ivec3(0);
-  return fbm;
+  return make_fbm_params(frequency, octaves, lacunarity, persistence, seed, ivec3(0));
 }
 
 // G3(o, p, l, f, x): o octaves of gradient noise, persistence p, lacunarity l, base frequency

@@ -5,6 +5,18 @@
 #include "worley.glsl"
 #include "parameters.glsl"
 
+// The parameters of an fBm, member by member (C++17 has no parenthesised aggregate
+// initialisation, and the struct is parameters.glsl's, which holds no functions).
+FbmParams make_fbm_params(float frequency, int octaves, float lacunarity, float gain, uint seed, ivec3 period) {
+  FbmParams fbm;
+  fbm.frequency = frequency;
+  fbm.octaves = octaves;
+  fbm.lacunarity = lacunarity;
+  fbm.gain = gain;
+  fbm.seed = seed;
+  fbm.period = period;
+  return fbm;
+}
 
 // sum_k gain^k n_k(p frequency lacunarity^k) / sum_k gain^k and its gradient d/dp, where n_k
 // is 1 - F1 (smoothing 0) or smooth_worley with lambda = smoothing (worley.glsl).
@@ -42,14 +54,7 @@ vec4 inverted_worley_fbm(vec3 p, IN(FbmParams) params) {
 // rank equalisation): inverted Worley fBm of 8 cells and 3 octaves of gain 1/2 a period, of its
 // own seed. The coverage windows' calibration evaluates the same (tests/test_webanck_coverage.cpp).
 FbmParams noise_volume_detail_fbm(uint seed) {
-  FbmParams fbm;  // members one by one: C++17 has no parenthesised aggregate initialisation
-  fbm.frequency = 8.0f;
-  fbm.octaves = 3;
-  fbm.lacunarity = 2.0f;
-  fbm.gain = 0.5f;
-  fbm.seed = seed ^ 0x5bd1e995u;
-  fbm.period = ivec3(8);
-  return fbm;
+  return make_fbm_params(8.0f, 3, 2.0f, 0.5f, seed ^ 0x5bd1e995u, ivec3(8));
 }
 
 #endif

@@ -87,7 +87,7 @@ vec4 cover_at(vec3 n, float lod) {
   CubeBsplineTaps taps = cube_bspline_taps(n, u_cover_size);
   vec4 c00 = textureLod(cover_map, taps.d00, 0.0f), c10 = textureLod(cover_map, taps.d10, 0.0f);
   vec4 c01 = textureLod(cover_map, taps.d01, 0.0f), c11 = textureLod(cover_map, taps.d11, 0.0f);
-  vec4 smooth_cover = mix(mix(c00, c10, taps.g.x), mix(c01, c11, taps.g.x), taps.g.y);
+  vec4 smooth_cover = cube_bspline_combine(taps, c00, c10, c01, c11);
   // Close up (lod 0, most samples below 2000 km) the mipmapped lookup has no weight: not fetched.
   return lod > 0.0f ? mix(smooth_cover, textureLod(cover_map, n, lod), lod) : smooth_cover;
 }
@@ -219,13 +219,6 @@ float cloud_shadow(vec2 depth) {
 // its single scattering alone than the delta-Eddington slab's whole reflectance.
 float cloud_view_phase(float nu) { return 0.9f * henyey_greenstein(nu, 0.85f) + 0.1f * henyey_greenstein(nu, -0.3f); }
 
-// Ambient light of the sky (isotropic radiance) at a point with local up n: a blue share of the
-// sunlight that fades across the terminator.
-vec3 sky_ambient(vec3 n) {
-  float mu = dot(n, u_sun);
-  return solar_irradiance() * vec3(0.030f, 0.045f, 0.075f) * smoothstep(-0.12f, 0.35f, mu);
-}
-
 void main() {
   ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
   ivec2 size = imageSize(radiance_image);
@@ -295,7 +288,7 @@ void main() {
         vec2 diffuse = slab_source(column.x, mu0, cloud_view_phase(-mu0), cloud_view_phase(mu0));
         vec2 above = max(tau_light - column.zy / max(mu0, SLAB_MIN_MU0), vec2(0.0f));
         vec3 source = sun_at_cloud * (phase * exp(-tau_light.x) + slab_source_at(diffuse, column.y) * cloud_shadow(above)) +
-                      sky_ambient(n) * slab_sky_source(column.x);
+                      sky_ambient(n, u_sun) * slab_sky_source(column.x);
         float step_transmittance = exp(-sigma * segment);
         float hit_distance = length(p - oc);
         cloud_light += cloud_transmittance * source * (1.0f - step_transmittance);
@@ -324,7 +317,7 @@ void main() {
       float shadow = cloud_shadow(optical_depth_to_sun(g, u_shadow_steps, footprint));
       direct = solar_irradiance() * transmittance_to_space(g + 1.0f * n, u_sun, u_radius) * max(mu, 0.0f) * shadow;
     }
-    vec3 sky = PI_F * sky_ambient(n);
+    vec3 sky = PI_F * sky_ambient(n, u_sun);
     float night = 1.0f - smoothstep(-0.1f, 0.05f, mu);
     background = albedo / PI_F * (direct + sky) + u_night_lights * night * lights;
     // Sun glint: the sea's facets mirror the direct sunlight (already through air and cloud) into

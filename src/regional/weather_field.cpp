@@ -103,11 +103,9 @@ WeatherField field_from_cover(const CoverChannels& cover, const GeographicLib::L
       const glsl::vec3 n(float(std::cos(phi) * std::cos(lambda)), float(std::cos(phi) * std::sin(lambda)),
                          float(std::sin(phi)));
       const glsl::CubeBsplineTaps taps = glsl::cube_bspline_taps(n, float(cover.size));
-      const glsl::vec4 sample = glsl::mix(glsl::mix(glsl::sample_cube_bilinear(taps.d00, source),
-                                                    glsl::sample_cube_bilinear(taps.d10, source), taps.g.x),
-                                          glsl::mix(glsl::sample_cube_bilinear(taps.d01, source),
-                                                    glsl::sample_cube_bilinear(taps.d11, source), taps.g.x),
-                                          taps.g.y);
+      const glsl::vec4 sample = glsl::cube_bspline_combine(
+          taps, glsl::sample_cube_bilinear(taps.d00, source), glsl::sample_cube_bilinear(taps.d10, source),
+          glsl::sample_cube_bilinear(taps.d01, source), glsl::sample_cube_bilinear(taps.d11, source));
       const float c = std::clamp(sample.x, 0.0f, 1.0f);
       if (c <= 0.0f) continue;
       const float latitude = std::asin(std::clamp(n.z, -1.0f, 1.0f));

@@ -8,6 +8,7 @@ const int PROBE_TRANSMITTANCE_TO_SPACE = 3;
 const int PROBE_SKY_SINGLE_SCATTERING = 4;
 const int PROBE_SKY_INTEGRAL_STEPS = 5;  // sky_integral_begin, _point, _step, _end
 const int PROBE_SKYLIGHT = 6;  // the integral with the sun hidden and the skylight x[0].w (grey)
+const int PROBE_SKY_AMBIENT = 7;  // sky_ambient(x[1], x[2])
 #ifndef __cplusplus
 #include "../lib/atmosphere.glsl"
 #endif
@@ -16,6 +17,7 @@ vec4 probe_atmosphere(mat4 x) {
   float earth_radius = x[0].y;
   if (f == PROBE_RAYLEIGH) return vec4(rayleigh_scattering() * 1.0e5f, rayleigh_phase(x[0].z));
   if (f == PROBE_SUN_AND_HENYEY_GREENSTEIN) return vec4(solar_irradiance(), henyey_greenstein(x[0].z, x[0].w));
+  if (f == PROBE_SKY_AMBIENT) return vec4(sky_ambient(vec3(x[1]), vec3(x[2])), 0.0f);
   if (f == PROBE_AIR_EXTINCTION) return vec4(air_extinction(x[0].z) * 1.0e5f, 0.0f);
   if (f == PROBE_TRANSMITTANCE_TO_SPACE)
     return vec4(transmittance_to_space(vec3(x[1]), vec3(x[2]), earth_radius), 0.0f);

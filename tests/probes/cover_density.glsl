@@ -14,13 +14,7 @@ const int PROBE_NOISE_BLEND = 7;  // noise_blend(a, b, c)
 #endif
 vec4 probe_cover_density(mat4 x) {
   int f = int(x[0].x);
-  FbmParams params;  // members one by one: C++17 has no parenthesised aggregate initialisation
-  params.frequency = x[2].x;
-  params.octaves = int(x[2].y);
-  params.lacunarity = x[2].z;
-  params.gain = x[2].w;
-  params.seed = uint(x[3].x);
-  params.period = ivec3(0);
+  FbmParams params = make_fbm_params(x[2].x, int(x[2].y), x[2].z, x[2].w, uint(x[3].x), ivec3(0));
   if (f == PROBE_COVER_DENSITY) return vec4(cover_density(vec3(x[1]), params), 0.0f, 0.0f, 0.0f);
   if (f == PROBE_COVER_DENSITY_SHIFTED)
     return vec4(cover_density_shifted(vec3(x[1]), params, vec3(x[3].y, x[3].z, x[3].w)), 0.0f, 0.0f, 0.0f);

@@ -8,13 +8,8 @@ const int PROBE_NOISE_VOLUME_DETAIL = 2;  // inverted_worley_fbm with noise_volu
 #include "../lib/worley_fbm.glsl"
 #endif
 vec4 probe_worley_fbm(mat4 x) {
-  FbmParams params;  // members one by one: C++17 has no parenthesised aggregate initialisation
-  params.frequency = x[2].x;
-  params.octaves = int(x[2].y);
-  params.lacunarity = x[2].z;
-  params.gain = x[2].w;
-  params.seed = uint(x[3].x);
-  params.period = ivec3(vec3(x[3].y, x[3].z, x[3].w));
+  FbmParams params =
+      make_fbm_params(x[2].x, int(x[2].y), x[2].z, x[2].w, uint(x[3].x), ivec3(vec3(x[3].y, x[3].z, x[3].w)));
   if (int(x[0].x) == PROBE_SMOOTH_WORLEY_FBM) return smooth_worley_fbm(vec3(x[1]), params, x[0].y);
   if (int(x[0].x) == PROBE_NOISE_VOLUME_DETAIL) return inverted_worley_fbm(vec3(x[1]), noise_volume_detail_fbm(params.seed));
   return inverted_worley_fbm(vec3(x[1]), params);  // PROBE_INVERTED_WORLEY_FBM
