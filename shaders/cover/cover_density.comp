@@ -51,10 +51,11 @@ vec3 belts_at(vec3 origin, uint seed, float edge) {
 }
 
 // The stratocumulus deck's strength at a layer's origin (x) and the convective cells' modulation
-// there (y), with the cyclones' cold sectors `cold` and texels texel_arc radians across.
-vec2 cells_at(vec3 origin, uint seed, float surface, float cold, float texel_arc) {
+// there (y, where `drawn`), with the cyclones' cold sectors `cold` and texels texel_arc radians
+// across.
+vec2 cells_at(vec3 origin, uint seed, float surface, bool drawn, float cold, float texel_arc) {
   float deck = deck_strength(origin, portable_asin(clamp(origin.z, -1.0f, 1.0f)), seed, surface, u_surface_weight);
-  if (u_systems.cells <= 0.0f) return vec2(deck, 0.0f);
+  if (!drawn) return vec2(deck, 0.0f);
   return vec2(deck, u_systems.cells * cell_modulation(origin, cell_weights(deck, cold), seed, texel_arc));
 }
 
@@ -65,6 +66,8 @@ void main() {
   if (i >= size || first >= u_tile_rows.y) return;
   int last = min(u_tile_rows.y, first + u_strip);
   float texel_arc = 2.0f / float(size);  // radians, at a face's centre (the largest texels)
+  // Covers too coarse for the open cells (the larger) draw neither: no cold sectors to find.
+  bool cells_drawn = u_systems.cells > 0.0f && cells_resolved(OPEN_CELLS, texel_arc) > 0.0f;
   uint low = 0xFFFFFFFFu, high = 0u;
   for (int j = first; j < last; ++j) {
     ivec3 texel = ivec3(i, j, layer);
@@ -97,10 +100,11 @@ void main() {
     float cyclones = cyclone_systems(origin, u_systems, edge);
     float systems = max(cyclones, belts);
     // The cells as the belts, each layer its own, in the cold sectors of the cyclones as drawn.
-    float cold = u_systems.cells > 0.0f ? cold_sectors(origin, u_systems) : 0.0f;
-    vec2 cells = cells_at(older_origin, u_systems.seed, surface, cold, texel_arc);
+    float cold = cells_drawn ? cold_sectors(origin, u_systems) : 0.0f;
+    vec2 cells = cells_at(older_origin, u_systems.seed, surface, cells_drawn, cold, texel_arc);
 #if MOVING_LAYERS
-    cells = mix(cells, cells_at(normalize(young_warped), u_young_systems_seed, surface, cold, texel_arc), u_young_share);
+    cells = mix(cells, cells_at(normalize(young_warped), u_young_systems_seed, surface, cells_drawn, cold, texel_arc),
+                u_young_share);
 #endif
     float cyclonic = imageLoad(curl_field, texel).w;
     float density = with_cells(
