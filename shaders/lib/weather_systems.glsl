@@ -218,9 +218,10 @@ const uint DECK_PATCHES_LAYER = 19u;
 const float CLOSED_CELLS_MEAN = 0.77f;
 const float OPEN_CELLS_MEAN = 0.46f;
 // The patterns' amplitudes in the density's factor 1 + m (cover_density.glsl's with_cells): the
-// closed cells' rims at 0.73 of the density against 1.08 inside (thinner, greyer cloud, clear
-// only where the deck is thin), the open cells' walls at 1.24 against their centres' 0.79; both
-// more than the noise's own spread of 16 %, so that the pattern prints where the cells are.
+// closed cells' rims at 0.77 of the density against 1.07 inside (thinner, greyer cloud, clear
+// only where the deck is thin), the open cells' walls at 1.135 against their centres' 0.885;
+// both steps (0.30 and 0.25 of the density) more than the noise's own spread of 16 %, so that the
+// pattern prints where the cells are.
 const float CLOSED_CELLS_CONTRAST = 0.3f;
 const float OPEN_CELLS_CONTRAST = 0.25f;
 
