@@ -17,7 +17,9 @@
 #include "files/image_files.hpp"
 #include "io/cover_files.hpp"
 #include "io/planet_textures.hpp"
+#include "gpu/textures.hpp"
 #include "render/orbit_renderer.hpp"
+#include "render/orbit_tiles.hpp"
 #include "shader_math/shader_math.hpp"
 
 using namespace nephele;
@@ -717,4 +719,115 @@ TEST_CASE("orbit: a 64-texel cover shows no more of its texel grid than a 1024-t
     // them on the axes), where the 1024 cover's smooth oblique waves put fewer there (0.10).
     CHECK(share_coarse <= std::max(share_fine, 1.0 / 6.0) + 0.05);
   }
+}
+
+namespace {
+
+// Whether the ray of pixel (i, j) meets the sphere of `radius` about the planet's centre, in
+// double, with the shader's ray (orbit_tiles.hpp's TileView).
+bool pixel_meets_sphere(const render::TileView& v, int i, int j, double radius) {
+  const double x = (2.0 * (i + 0.5) / v.width - 1.0) * v.tan_half_fov;
+  const double y = (1.0 - 2.0 * (j + 0.5) / v.height) * (double(v.height) / v.width) * v.tan_half_fov;
+  const glm::dvec3 d = glm::normalize(v.forward + x * v.right + y * v.up);
+  const double b = glm::dot(v.position, d), q = glm::dot(v.position, v.position) - radius * radius;
+  return b * b - q >= 0 && (q < 0 || b < 0);  // a root ahead of the camera
+}
+
+render::TileView tile_view(const render::OrbitCamera& camera) {
+  const double R = render::OrbitSettings{}.planet_radius_m;
+  const render::OrbitFrame f = render::orbit_frame(camera, R);
+  return {f.position, f.forward, f.right, f.up, std::tan(camera.fov_deg * degree / 2), camera.width, camera.height};
+}
+
+}  // namespace
+
+TEST_CASE("orbit tiles: every pixel whose ray meets the air lies in a listed tile, and no tile far from one is listed",
+          "[fast][orbit]") {
+  const double R = render::OrbitSettings{}.planet_radius_m, air = R + render::atmosphere_top_km() * 1000;
+  struct Case {
+    const char* name;
+    render::OrbitCamera camera;
+  };
+  render::OrbitCamera disk = nadir_camera(0, 10, 3.6e7, 320, 180, 40);
+  render::OrbitCamera bern = nadir_camera(46.95, 7.44, 2.0e6, 320, 180, 70);
+  render::OrbitCamera horizon = nadir_camera(46.95, 7.44, 4.0e5, 333, 181, 60);
+  horizon.pitch_deg = -10;
+  horizon.heading_deg = 200;
+  render::OrbitCamera off_centre = nadir_camera(-30, 120, 1.0e7, 250, 250, 30);
+  off_centre.pitch_deg = -60;  // the disc's edge crosses the frame obliquely
+  for (const Case& c : {Case{"full disk", disk}, Case{"2000 km", bern}, Case{"400 km, horizon", horizon},
+                        Case{"10000 km, oblique", off_centre}}) {
+    INFO(c.name);
+    const render::TileView view = tile_view(c.camera);
+    const std::vector<glm::uvec2> listed = render::tiles_meeting_sphere(view, air);
+    const int columns = (view.width + 7) / 8, rows = (view.height + 7) / 8;
+    std::vector<char> in_list(size_t(columns) * rows, 0), meets(size_t(columns) * rows, 0);
+    for (glm::uvec2 t : listed) in_list[t.y * columns + t.x] = 1;
+    int missing = 0;
+    for (int j = 0; j < view.height; ++j)
+      for (int i = 0; i < view.width; ++i)
+        if (pixel_meets_sphere(view, i, j, air)) {
+          meets[(j / 8) * columns + i / 8] = 1;
+          missing += in_list[(j / 8) * columns + i / 8] ? 0 : 1;
+        }
+    CHECK(missing == 0);
+    // A listed tile's central ray is within the sphere's angle plus its own half-diagonal and
+    // a 2e-4 rad margin: it borders a tile with a pixel in the air.
+    int far = 0, listed_count = 0, meeting = 0;
+    for (int ty = 0; ty < rows; ++ty)
+      for (int tx = 0; tx < columns; ++tx) {
+        meeting += meets[ty * columns + tx];
+        if (!in_list[ty * columns + tx]) continue;
+        ++listed_count;
+        bool near = false;
+        for (int dy = -1; dy <= 1; ++dy)
+          for (int dx = -1; dx <= 1; ++dx) {
+            const int x = tx + dx, y = ty + dy;
+            near = near || (x >= 0 && y >= 0 && x < columns && y < rows && meets[y * columns + x]);
+          }
+        far += near ? 0 : 1;
+      }
+    CHECK(far == 0);
+    CHECK(listed_count == int(listed.size()));
+    CHECK(listed_count >= meeting);
+  }
+  SECTION("inside the air every tile is drawn") {
+    render::OrbitCamera low = nadir_camera(46.95, 7.44, 5.0e4, 100, 60, 60);
+    low.pitch_deg = 10;  // looking up: most rays leave the air without meeting the ground
+    CHECK(render::tiles_meeting_sphere(tile_view(low), air).size() == render::all_tiles(100, 60).size());
+  }
+  SECTION("the full disk from 36000 km leaves most of a 40-degree frame to space") {
+    const auto listed = render::tiles_meeting_sphere(tile_view(disk), air);
+    // The disc (with the air) spans 2 asin((R + 100 km) / D) = 17.6 deg of the 40: pi r^2 of
+    // the frame's 320 x 180 pixels with r = 320 tan(8.8 deg) / (2 tan(20 deg)) = 68 pixels, 25 %
+    // of the frame; the tiles along its edge add about its perimeter times a tile.
+    const double r = 160 * std::tan(std::asin(air / (R + 3.6e7))) / std::tan(20 * degree);
+    const double disc_tiles = M_PI * r * r / 64, edge_tiles = 2 * M_PI * r / 8;
+    CHECK(listed.size() >= disc_tiles);
+    CHECK(listed.size() <= disc_tiles + 1.5 * edge_tiles);
+  }
+}
+
+TEST_CASE("orbit: the tiles it leaves out are black clear space, the frame the same as drawing every tile", "[orbit]") {
+  test::test_context();
+  // 20000 km up over the subsolar point with a cloud patch: planet, limb and space in one frame.
+  const glm::dvec3 sun = render::sun_direction_ecef(june_morning);
+  const double lat = std::asin(sun.z) / degree, lon = std::atan2(sun.y, sun.x) / degree;
+  const auto camera = nadir_camera(lat, lon, 2.0e7, 96, 54, 50);
+  render::OrbitRenderer renderer(uniform_planet(0.1), patch_cover(16, lat, lon, 10.0));
+  auto frame = [&](const std::vector<glm::uvec2>& tiles) {
+    gpu::Texture image = gpu::Texture::plane(camera.width, camera.height, GL_RGBA32F);
+    renderer.render_tiles(camera, june_morning, image.id(), tiles);
+    return image.read();
+  };
+  const std::vector<glm::uvec2> in_air = renderer.tiles_in_air(camera), every = render::all_tiles(96, 54);
+  REQUIRE(in_air.size() < every.size() * 3 / 4);  // the view has space to leave out
+  const std::vector<float> culled = frame(in_air), whole = frame(every);
+  REQUIRE(culled.size() == whole.size());
+  size_t differing = 0;
+  for (size_t k = 0; k < whole.size(); ++k) differing += culled[k] == whole[k] ? 0 : 1;
+  CHECK(differing == 0);
+  // And the frame has both: lit planet and black space.
+  CHECK(*std::max_element(whole.begin(), whole.end()) > 0.0f);
+  CHECK(std::count(whole.begin(), whole.end(), 0.0f) > 0);
 }

@@ -58,6 +58,7 @@ TEST_CASE("the named binding points of the shaders are those the driver reports"
       {"render/orbit.comp", "night_texture", false, b::render_orbit::night_texture},
       {"render/orbit.comp", "cover_map", false, b::render_orbit::cover_map},
       {"render/orbit.comp", "water_texture", false, b::render_orbit::water_texture},
+      {"render/orbit.comp", "Tiles", true, b::render_orbit::tiles},
   };
   for (const Expected& e : expected) {
     INFO(e.shader << ": " << e.name);

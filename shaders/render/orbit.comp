@@ -4,7 +4,8 @@
 // a slab below its top, as thick as its type and tau make it), cloud shadows on the ground, city
 // lights on the night side and the single-scattering atmosphere of shaders/lib/atmosphere.glsl in
 // front of both.
-// One invocation per pixel. Positions are relative to the camera: the host computes the camera
+// One invocation per pixel, one work group per tile of 8 x 8 pixels listed in `tiles` (the tiles
+// whose rays can meet the air: src/render/orbit_tiles.cpp; the host clears the others). Positions are relative to the camera: the host computes the camera
 // and planet in double and hands over the planet's centre relative to the camera as float, and
 // for each sphere q = |camera - centre|^2 - r^2 (exact in double; in float it would cancel
 // catastrophically near the ground). Axes are Earth-centred, Earth-fixed (+Z north, +X latitude
@@ -15,6 +16,7 @@ layout(binding = 1) uniform sampler2D day_texture;    // equirect, linear RGB, r
 layout(binding = 2) uniform sampler2D night_texture;  // equirect, linear RGB (city lights)
 layout(binding = 3) uniform samplerCube cover_map;    // (cover, tau, cloud top km, 0), GL face convention
 layout(binding = 5) uniform sampler2D water_texture;  // equirect, fraction of open water (sun glint)
+layout(std430, binding = 6) readonly buffer Tiles { uvec2 tiles[]; };  // (column, row), tile units
 
 #include "../lib/atmosphere.glsl"
 #include "../lib/cloud_properties.glsl"
@@ -24,6 +26,8 @@ layout(binding = 5) uniform sampler2D water_texture;  // equirect, fraction of o
 #include "../lib/slab_scattering.glsl"
 #include "../lib/sun_glint.glsl"
 
+uniform int u_tile_count;      // entries of `tiles`
+uniform ivec2 u_image_size;    // the camera's pixels (the image may be larger)
 uniform vec3 u_centre;         // planet centre relative to the camera, m
 uniform float u_q_ground;      // |camera - centre|^2 - r^2 for the ground, cloud base, cloud top
 uniform float u_q_base;        // and atmosphere top spheres (double on the host), m^2
@@ -220,8 +224,10 @@ float cloud_shadow(vec2 depth) {
 float cloud_view_phase(float nu) { return 0.9f * henyey_greenstein(nu, 0.85f) + 0.1f * henyey_greenstein(nu, -0.3f); }
 
 void main() {
-  ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
-  ivec2 size = imageSize(radiance_image);
+  int tile = int(gl_WorkGroupID.x + gl_WorkGroupID.y * gl_NumWorkGroups.x);
+  if (tile >= u_tile_count) return;
+  ivec2 pixel = ivec2(tiles[tile]) * 8 + ivec2(gl_LocalInvocationID.xy);
+  ivec2 size = u_image_size;
   if (pixel.x >= size.x || pixel.y >= size.y) return;
   vec2 uv = (vec2(pixel) + 0.5f) / vec2(size);
   float aspect = float(size.y) / float(size.x);

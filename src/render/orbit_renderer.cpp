@@ -13,6 +13,7 @@
 #include "gpu/pass_timer.hpp"
 #include "gpu/textures.hpp"
 #include "params/table.hpp"
+#include "render/orbit_tiles.hpp"
 #include "render/sun_position.hpp"
 #include "shader_math/shader_math.hpp"
 
@@ -229,11 +230,13 @@ double framing_fov_deg(double altitude_m, double planet_radius_m, int width, int
 struct OrbitRenderer::Gl {
   gpu::ComputeProgram program{"render/orbit.comp"};
   GLuint day = 0, night = 0, water = 0, cover = 0;
+  GLuint tiles = 0;  // the frame's tiles to draw (orbit_tiles.hpp), uvec2 each
   int day_width = 1, cover_size = 1;
   bool cover_properties = false;  // the cover has its own tau and cloud tops
   ~Gl() {
     for (GLuint id : {day, night, water, cover})
       if (id != 0) glDeleteTextures(1, &id);
+    if (tiles != 0) glDeleteBuffers(1, &tiles);
   }
 };
 
@@ -277,7 +280,20 @@ void OrbitRenderer::set_cover(const CoverCube& cover) {
   gl_->cover_properties = !cover.optical_thickness.empty();
 }
 
+std::vector<glm::uvec2> OrbitRenderer::tiles_in_air(const OrbitCamera& camera) const {
+  check_camera(camera);
+  const OrbitFrame frame = orbit_frame(camera, settings_.planet_radius_m);
+  TileView view{frame.position, frame.forward, frame.right, frame.up, std::tan(camera.fov_deg * degree / 2),
+                camera.width,   camera.height};
+  return tiles_meeting_sphere(view, settings_.planet_radius_m + atmosphere_thickness_m);
+}
+
 double OrbitRenderer::render_into(const OrbitCamera& camera, double unix_seconds, unsigned rgba32f_texture) const {
+  return render_tiles(camera, unix_seconds, rgba32f_texture, tiles_in_air(camera));
+}
+
+double OrbitRenderer::render_tiles(const OrbitCamera& camera, double unix_seconds, unsigned rgba32f_texture,
+                                   const std::vector<glm::uvec2>& tiles) const {
   check_camera(camera);
   const OrbitSettings& s = settings_;
   const double R = s.planet_radius_m;
@@ -290,8 +306,18 @@ double OrbitRenderer::render_into(const OrbitCamera& camera, double unix_seconds
     return static_cast<float>((h - sphere_altitude) * (2 * R + h + sphere_altitude));
   };
   const gpu::ComputeProgram& p = gl_->program;
+  if (gl_->tiles == 0) glCreateBuffers(1, &gl_->tiles);
+  // At least one entry: a zero-sized storage buffer is an error.
+  glNamedBufferData(gl_->tiles, GLsizeiptr(std::max<size_t>(tiles.size(), 1) * sizeof(glm::uvec2)),
+                    tiles.empty() ? nullptr : tiles.data(), GL_STREAM_DRAW);
   return gpu::time_pass([&] {
+    // Space: the pixels of the tiles not drawn see neither air nor planet.
+    const float space[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+    glClearTexSubImage(rgba32f_texture, 0, 0, 0, 0, camera.width, camera.height, 1, GL_RGBA, GL_FLOAT, space);
+    if (tiles.empty()) return;
     p.use();
+    p.set("u_tile_count", static_cast<int>(tiles.size()));
+    p.set("u_image_size", glm::ivec2(camera.width, camera.height));
     p.set("u_centre", glm::vec3(-frame.position));
     p.set("u_q_ground", q(0.0));
     p.set("u_q_base", q(s.cloud_base_m));
@@ -326,7 +352,11 @@ double OrbitRenderer::render_into(const OrbitCamera& camera, double unix_seconds
     glBindTextureUnit(orbit::night_texture, gl_->night);
     glBindTextureUnit(orbit::water_texture, gl_->water);
     glBindTextureUnit(orbit::cover_map, gl_->cover);
-    p.dispatch_covering(camera.width, camera.height, 1);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, orbit::tiles, gl_->tiles);
+    // A work group per tile, in rows of at most 65535 groups (the dispatch's per-axis minimum).
+    const GLuint count = GLuint(tiles.size()), per_row = std::min<GLuint>(count, 65535u);
+    glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    glDispatchCompute(per_row, (count + per_row - 1) / per_row, 1);
     gpu::image_barrier();
   });
 }
@@ -338,9 +368,12 @@ RenderResult OrbitRenderer::render(const OrbitCamera& camera, double unix_second
   result.sun_direction =
       sun_direction_enu(unix_seconds, camera.latitude_deg, camera.longitude_deg, &result.sun_elevation_deg);
   gpu::Texture image = gpu::Texture::plane(camera.width, camera.height, GL_RGBA32F);
-  result.timings_ms.emplace_back("orbit", render_into(camera, unix_seconds, image.id()));
-  result.passes = {"orbit: ground, cloud shell (" + std::to_string(s.cloud_steps) + " steps), shadows (" +
-                   std::to_string(s.shadow_steps) + "), atmosphere (" + std::to_string(s.sky_steps) + ")"};
+  const std::vector<glm::uvec2> tiles = tiles_in_air(camera);
+  result.timings_ms.emplace_back("orbit", render_tiles(camera, unix_seconds, image.id(), tiles));
+  result.passes = {"orbit: " + std::to_string(tiles.size()) + " of " +
+                   std::to_string(all_tiles(camera.width, camera.height).size()) + " tiles, ground, cloud shell (" +
+                   std::to_string(s.cloud_steps) + " steps), shadows (" + std::to_string(s.shadow_steps) +
+                   "), atmosphere (" + std::to_string(s.sky_steps) + ")"};
   result.timings_ms.emplace_back("read back", gpu::time_pass([&] {
                                    result.radiance = {camera.width, camera.height, 4, image.read()};
                                  }));

@@ -103,7 +103,14 @@ class OrbitRenderer {
   RenderResult render(const OrbitCamera& camera, double unix_seconds) const;
   // The same frame into a texture the caller owns (GL_RGBA32F, 2D, at least camera.width x
   // camera.height; a window viewer draws it without reading it back). Returns milliseconds.
+  // Only the tiles whose rays can meet the air are drawn (tiles_in_air); the rest of the
+  // camera's pixels are cleared to 0, black clear space.
   double render_into(const OrbitCamera& camera, double unix_seconds, unsigned rgba32f_texture) const;
+  // The tiles render_into draws (orbit_tiles.hpp), and the frame drawing the given ones (e.g.
+  // all_tiles, to check that the others show space).
+  std::vector<glm::uvec2> tiles_in_air(const OrbitCamera& camera) const;
+  double render_tiles(const OrbitCamera& camera, double unix_seconds, unsigned rgba32f_texture,
+                      const std::vector<glm::uvec2>& tiles) const;
   const OrbitSettings& settings() const { return settings_; }
   void set_settings(const OrbitSettings& settings);  // same textures; checks as the constructor
   void set_cover(const CoverCube& cover);            // a new cover (e.g. regenerated), same checks
