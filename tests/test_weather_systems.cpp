@@ -415,6 +415,25 @@ TEST_CASE("cells are drawn only where the cover resolves them, from 2.5 texels a
   }
 }
 
+TEST_CASE("the density pass is compiled with the cell patterns a cover draws and no others", "[fast][systems]") {
+  cover::CoverParameters p;
+  // The boundaries: the open cells from 5 / (2 x 80 x 0.5) = 400 texels a face (2.5 texels a
+  // cell: 1 / (80 x 2 / N) > 2.5), the closed from 800 (at those two sizes exactly the fade's
+  // weight is float's rounding of 0, so the sizes beside them are judged).
+  for (int size : {64, 256, 399, 401, 512, 799, 801, 1024, 2048}) {
+    INFO("size " << size);
+    p.size = size;
+    p.stratocumulus_cells = 1.0f;
+    const cover::CellPatterns drawn = cover::cell_patterns_drawn(p);
+    CHECK(drawn.open == (size > 400));
+    CHECK(drawn.closed == (size > 800));
+    p.stratocumulus_cells = 0.0f;
+    const cover::CellPatterns none = cover::cell_patterns_drawn(p);
+    CHECK_FALSE(none.open);
+    CHECK_FALSE(none.closed);
+  }
+}
+
 TEST_CASE("stratocumulus decks lie in patches of their belt, off the west coasts with a land mask", "[fast][systems]") {
   const std::uint32_t seed = 4242u;
   auto at = [](float lat_deg, float lon) {

@@ -22,6 +22,16 @@ layout(r32f, binding = 5) uniform writeonly image2DArray cloud_top_field;  // km
 #if MOVING_LAYERS
 layout(rgba32f, binding = 4) uniform readonly image2DArray young_warp_field;
 #endif
+// CLOSED_CELLS_DRAWN and OPEN_CELLS_DRAWN (the host's cell_patterns_drawn, cover/weather_systems.hpp):
+// 1 where --stratocumulus-cells is above 0 and the cover's texels resolve the pattern. A pattern
+// left out costs nothing; one compiled in costs its Worley search at every texel on llvmpipe,
+// whatever its weight, since a branch not taken still runs for its whole group of lanes.
+#ifndef CLOSED_CELLS_DRAWN
+#define CLOSED_CELLS_DRAWN 1
+#endif
+#ifndef OPEN_CELLS_DRAWN
+#define OPEN_CELLS_DRAWN 1
+#endif
 #include "../lib/cover_density.glsl"
 #include "../lib/weather_systems.glsl"
 #include "../lib/cloud_properties.glsl"
@@ -51,12 +61,19 @@ vec3 belts_at(vec3 origin, uint seed, float edge) {
 }
 
 // The stratocumulus deck's strength at a layer's origin (x) and the convective cells' modulation
-// there (y, where `drawn`), with the cyclones' cold sectors `cold` and texels texel_arc radians
-// across.
-vec2 cells_at(vec3 origin, uint seed, float surface, bool drawn, float cold, float texel_arc) {
+// there (y: the patterns drawn), with the cyclones' cold sectors `cold` and texels texel_arc
+// radians across.
+vec2 cells_at(vec3 origin, uint seed, float surface, float cold, float texel_arc) {
   float deck = deck_strength(origin, portable_asin(clamp(origin.z, -1.0f, 1.0f)), seed, surface, u_surface_weight);
-  if (!drawn) return vec2(deck, 0.0f);
-  return vec2(deck, u_systems.cells * cell_modulation(origin, cell_weights(deck, cold), seed, texel_arc));
+  vec2 weights = cell_weights(deck, cold);
+  float m = 0.0f;
+#if CLOSED_CELLS_DRAWN
+  m += closed_cell_modulation(origin, weights.x, seed, texel_arc);
+#endif
+#if OPEN_CELLS_DRAWN
+  m += open_cell_modulation(origin, weights.y, seed, texel_arc);
+#endif
+  return vec2(deck, u_systems.cells * m);
 }
 
 void main() {
@@ -66,8 +83,6 @@ void main() {
   if (i >= size || first >= u_tile_rows.y) return;
   int last = min(u_tile_rows.y, first + u_strip);
   float texel_arc = 2.0f / float(size);  // radians, at a face's centre (the largest texels)
-  // Covers too coarse for the open cells (the larger) draw neither: no cold sectors to find.
-  bool cells_drawn = u_systems.cells > 0.0f && cells_resolved(OPEN_CELLS, texel_arc) > 0.0f;
   uint low = 0xFFFFFFFFu, high = 0u;
   for (int j = first; j < last; ++j) {
     ivec3 texel = ivec3(i, j, layer);
@@ -100,11 +115,15 @@ void main() {
     float cyclones = cyclone_systems(origin, u_systems, edge);
     float systems = max(cyclones, belts);
     // The cells as the belts, each layer its own, in the cold sectors of the cyclones as drawn.
-    float cold = cells_drawn ? cold_sectors(origin, u_systems) : 0.0f;
-    vec2 cells = cells_at(older_origin, u_systems.seed, surface, cells_drawn, cold, texel_arc);
+    // Only the open cells take the cold sectors: none to find where they are not drawn.
+#if OPEN_CELLS_DRAWN
+    float cold = cold_sectors(origin, u_systems);
+#else
+    float cold = 0.0f;
+#endif
+    vec2 cells = cells_at(older_origin, u_systems.seed, surface, cold, texel_arc);
 #if MOVING_LAYERS
-    cells = mix(cells, cells_at(normalize(young_warped), u_young_systems_seed, surface, cells_drawn, cold, texel_arc),
-                u_young_share);
+    cells = mix(cells, cells_at(normalize(young_warped), u_young_systems_seed, surface, cold, texel_arc), u_young_share);
 #endif
     float cyclonic = imageLoad(curl_field, texel).w;
     float density = with_cells(

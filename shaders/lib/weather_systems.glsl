@@ -332,13 +332,18 @@ vec2 cell_weights(float deck, float cold) {
 // The cells' modulation of the density at p, zero on average over a region of one weight: the
 // closed and the open pattern less their means, by their weights, faded out where the cover's
 // texels (texel_arc radians) do not resolve them.
+// Its two parts, so that a shader can leave out the pattern a cover does not resolve
+// (cover_density.comp: on llvmpipe a branch not taken still runs for its group of lanes).
+float closed_cell_modulation(vec3 p, float weight, uint seed, float texel_arc) {
+  float closed = weight * cells_resolved(CLOSED_CELLS, texel_arc);
+  return closed > 0.0f ? closed * CLOSED_CELLS_CONTRAST * (closed_cells(p, seed) - CLOSED_CELLS_MEAN) : 0.0f;
+}
+float open_cell_modulation(vec3 p, float weight, uint seed, float texel_arc) {
+  float open = weight * cells_resolved(OPEN_CELLS, texel_arc);
+  return open > 0.0f ? open * OPEN_CELLS_CONTRAST * (open_cells(p, seed) - OPEN_CELLS_MEAN) : 0.0f;
+}
 float cell_modulation(vec3 p, vec2 weights, uint seed, float texel_arc) {
-  float closed = weights.x * cells_resolved(CLOSED_CELLS, texel_arc);
-  float open = weights.y * cells_resolved(OPEN_CELLS, texel_arc);
-  float m = 0.0f;
-  if (closed > 0.0f) m += closed * CLOSED_CELLS_CONTRAST * (closed_cells(p, seed) - CLOSED_CELLS_MEAN);
-  if (open > 0.0f) m += open * OPEN_CELLS_CONTRAST * (open_cells(p, seed) - OPEN_CELLS_MEAN);
-  return m;
+  return closed_cell_modulation(p, weights.x, seed, texel_arc) + open_cell_modulation(p, weights.y, seed, texel_arc);
 }
 
 // The cyclones' cloud at p: the largest of their commas.

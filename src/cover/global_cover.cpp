@@ -29,6 +29,15 @@ double cover_gpu_bytes(int size, Flow flow) {
 
 namespace {
 bool moving(const CoverParameters& p) { return p.flow == Flow::moving; }
+
+// The density pass's variant: two cloud layers for the moving flow, and only the cell patterns
+// the cover draws (a pattern compiled in costs its search at every texel on llvmpipe).
+std::vector<std::pair<std::string, std::string>> density_defines(const CoverParameters& p) {
+  const CellPatterns cells = cell_patterns_drawn(p);
+  return {{"MOVING_LAYERS", moving(p) ? "1" : "0"},
+          {"CLOSED_CELLS_DRAWN", cells.closed ? "1" : "0"},
+          {"OPEN_CELLS_DRAWN", cells.open ? "1" : "0"}};
+}
 }  // namespace
 
 CoverParameters resolved_curl(CoverParameters p) {
@@ -62,7 +71,7 @@ GlobalCover::GlobalCover(const CoverParameters& parameters, std::optional<CubeRe
       curl_program_("cover/curl.comp", {{"CURL_FROM_SPLINE", parameters_.curl_mode == CurlMode::spline ? "1" : "0"},
                                         {"CURL_MOVING", moving(parameters) ? "1" : "0"}}),
       warp_program_("cover/warp.comp", cover::warp_defines(parameters_.integrator, parameters_.curl_mode)),
-      density_program_("cover/cover_density.comp", {{"MOVING_LAYERS", moving(parameters) ? "1" : "0"}}),
+      density_program_("cover/cover_density.comp", density_defines(parameters)),
       clock_(moving(parameters) ? frame_clock(parameters, hours_since_epoch(parameters.time)) : FrameClock{}),
       coverage_(parameters_) {
   if (region_.face_size != parameters_.size)

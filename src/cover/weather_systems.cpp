@@ -95,4 +95,12 @@ std::uint32_t layer_systems_seed(const CoverParameters& p, std::int64_t layer, i
   return glsl::pcg3d(glsl::uvec3(layer_density_params(p, layer, layers_in_loop).seed, 0x57A7E5u, 0u)).x;
 }
 
+CellPatterns cell_patterns_drawn(const CoverParameters& p) {
+  // As the shader computes it: texels 2 / size radians across at a face's centre, in float.
+  const float texel_arc = 2.0f / static_cast<float>(p.size);
+  const bool cells = p.stratocumulus_cells > 0.0f;
+  return {cells && glsl::cells_resolved(glsl::CLOSED_CELLS, texel_arc) > 0.0f,
+          cells && glsl::cells_resolved(glsl::OPEN_CELLS, texel_arc) > 0.0f};
+}
+
 }  // namespace nephele::cover

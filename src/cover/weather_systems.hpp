@@ -34,6 +34,15 @@ float cyclone_wrap(double age_fraction);
 // jitter is below its spacing), so the table's 15 fill MAX_CYCLONES at most.
 glsl::WeatherSystems weather_systems(const CoverParameters& p, double hours);
 
+// The convective cells' patterns a cover draws (cover_density.comp's CLOSED_CELLS_DRAWN and
+// OPEN_CELLS_DRAWN): with --stratocumulus-cells above 0, those its texels resolve at a face's
+// centre (weather_systems.glsl's cells_resolved above 0: the open cells from about 400 texels a
+// face, the closed from about 800). The density pass is compiled without the others.
+struct CellPatterns {
+  bool closed = false, open = false;
+};
+CellPatterns cell_patterns_drawn(const CoverParameters& p);
+
 // The belts' noise of the moving flow's cloud layer `layer` (cover/moving_flow.hpp): its own, as
 // the layer's density noise is (derived from that noise's seed), so that the ITCZ's clusters, the
 // cumulus and the cirrus fade in and out with the layers instead of jumping between them.

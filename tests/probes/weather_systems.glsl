@@ -13,6 +13,7 @@ const int PROBE_CELLS = 7;            // closed_cells(p, uint(b)), open_cells, c
 const int PROBE_CELL_WEIGHTS = 8;     // cell_weights(a, b), deck_presence(a), cells_resolved(b * 100, c)
 const int PROBE_COLD = 9;             // cold_sector(vec2(a, c)), cold_sectors(p, cyclone C), cell_modulation(p,
                                       // x[3].zw, uint(b), 1e-3)
+const int PROBE_CELL_PARTS = 10;      // closed_cell_modulation(p, a, uint(b), c), open_cell_modulation(p, a, uint(b), c)
 #ifndef __cplusplus
 #include "../lib/weather_systems.glsl"
 #endif
@@ -44,6 +45,9 @@ vec4 probe_weather_systems(mat4 x) {
     return vec4(closed_cells(p, seed), open_cells(p, seed),
                 cell_border(p * CLOSED_CELLS, p, noise_key(seed, CLOSED_CELLS_LAYER)),
                 deck_strength(p, latitude, seed, x[0].y, x[0].w));
+  if (f == PROBE_CELL_PARTS)
+    return vec4(closed_cell_modulation(p, x[0].y, seed, x[0].w), open_cell_modulation(p, x[0].y, seed, x[0].w), 0.0f,
+                0.0f);
   if (f == PROBE_CELL_WEIGHTS)
     return vec4(cell_weights(x[0].y, x[0].z), deck_presence(x[0].y), cells_resolved(x[0].z * 100.0f, x[0].w));
   if (f == PROBE_BELTS)
