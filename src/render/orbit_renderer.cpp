@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/mip_levels.hpp"
 #include "gpu/shader_bindings.hpp"
 #include "gpu/compute_program.hpp"
 #include "gpu/pass_timer.hpp"
@@ -83,16 +84,21 @@ void check_cover(const CoverCube& cover) {
     throw std::invalid_argument("orbit renderer: the cover's tau and cloud tops need a value per texel, or none");
 }
 
-// An equirect texture of `format` with every mip level: `upload` fills level 0, then the levels
-// are made and it is filtered trilinearly, repeating in longitude and clamped in latitude.
+// An equirect texture of `format` with every mip level, from `channels` floats a texel (level 0):
+// `upload(level, width, height, texels)` fills a level; the levels are made on the CPU
+// (core/mip_levels.hpp). It is filtered trilinearly, repeating in longitude and clamped in
+// latitude.
 template <class Upload>
-GLuint equirect_texture_of(const core::ImageData& image, GLenum format, Upload&& upload) {
+GLuint equirect_texture_of(int width, int height, int channels, const std::vector<float>& level0, GLenum format,
+                           Upload&& upload) {
   GLuint id = 0;
   glCreateTextures(GL_TEXTURE_2D, 1, &id);
-  const int levels = 1 + static_cast<int>(std::floor(std::log2(std::max(image.width, image.height))));
-  glTextureStorage2D(id, levels, format, image.width, image.height);
-  upload(id);
-  glGenerateTextureMipmap(id);
+  const int levels = 1 + static_cast<int>(std::floor(std::log2(std::max(width, height))));
+  glTextureStorage2D(id, levels, format, width, height);
+  upload(id, 0, width, height, level0);
+  const std::vector<std::vector<float>> chain = core::mip_levels(level0, width, height, channels, levels);
+  for (int level = 1; level < levels; ++level)
+    upload(id, level, std::max(1, width >> level), std::max(1, height >> level), chain[size_t(level - 1)]);
   glTextureParameteri(id, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
   glTextureParameteri(id, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
   glTextureParameteri(id, GL_TEXTURE_WRAP_S, GL_REPEAT);
@@ -101,27 +107,31 @@ GLuint equirect_texture_of(const core::ImageData& image, GLenum format, Upload&&
 }
 
 GLuint equirect_texture(const core::ImageData& image) {
-  return equirect_texture_of(image, GL_RGBA16F, [&](GLuint id) {
-    std::vector<float> rgba(static_cast<size_t>(image.width) * image.height * 4, 1.0f);
-    for (size_t k = 0, n = static_cast<size_t>(image.width) * image.height; k < n; ++k)
-      for (int c = 0; c < 3; ++c) rgba[4 * k + c] = image.pixels[k * image.channels + std::min(c, image.channels - 1)];
-    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-    glTextureSubImage2D(id, 0, 0, 0, image.width, image.height, GL_RGBA, GL_FLOAT, rgba.data());
-  });
+  std::vector<float> rgba(static_cast<size_t>(image.width) * image.height * 4, 1.0f);
+  for (size_t k = 0, n = static_cast<size_t>(image.width) * image.height; k < n; ++k)
+    for (int c = 0; c < 3; ++c) rgba[4 * k + c] = image.pixels[k * image.channels + std::min(c, image.channels - 1)];
+  return equirect_texture_of(image.width, image.height, 4, rgba, GL_RGBA16F,
+                             [](GLuint id, int level, int width, int height, const std::vector<float>& texels) {
+                               glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+                               glTextureSubImage2D(id, level, 0, 0, width, height, GL_RGBA, GL_FLOAT, texels.data());
+                             });
 }
 
 // A one-channel equirect (the water fraction) as an 8-bit texture: a quarter of the upload of
 // equirect_texture's RGBA16F.
 GLuint fraction_texture(const core::ImageData& image) {
-  return equirect_texture_of(image, GL_R8, [&](GLuint id) {
-    std::vector<unsigned char> bytes(static_cast<size_t>(image.width) * image.height);
-    for (size_t k = 0; k < bytes.size(); ++k)
-      bytes[k] =
-          static_cast<unsigned char>(std::lround(255.0f * std::clamp(image.pixels[k * image.channels], 0.0f, 1.0f)));
-    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    glTextureSubImage2D(id, 0, 0, 0, image.width, image.height, GL_RED, GL_UNSIGNED_BYTE, bytes.data());
-    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-  });
+  std::vector<float> fraction(static_cast<size_t>(image.width) * image.height);
+  for (size_t k = 0; k < fraction.size(); ++k) fraction[k] = std::clamp(image.pixels[k * image.channels], 0.0f, 1.0f);
+  return equirect_texture_of(image.width, image.height, 1, fraction, GL_R8,
+                             [](GLuint id, int level, int width, int height, const std::vector<float>& texels) {
+                               std::vector<unsigned char> bytes(texels.size());
+                               for (size_t k = 0; k < bytes.size(); ++k)
+                                 bytes[k] = static_cast<unsigned char>(std::lround(255.0f * texels[k]));
+                               glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+                               glTextureSubImage2D(id, level, 0, 0, width, height, GL_RED, GL_UNSIGNED_BYTE,
+                                                   bytes.data());
+                               glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+                             });
 }
 
 // The texels as the orbit shader reads them: (cover, tau, cloud top km, 0). Clear texels take the
@@ -155,7 +165,17 @@ GLuint cover_texture(const CoverCube& cover) {
   // Rows from t = 0 in file order: what glTexSubImage expects for a cube face (cubemaps/README.md).
   const std::vector<float> rgba = cover_channels(cover);
   glTextureSubImage3D(id, 0, 0, 0, 0, cover.size, cover.size, 6, GL_RGBA, GL_FLOAT, rgba.data());
-  glGenerateTextureMipmap(id);
+  // The levels of each face on the CPU (core/mip_levels.hpp), as OpenGL makes them: per face.
+  const size_t face_floats = 4 * static_cast<size_t>(cover.size) * cover.size;
+  for (int face = 0; face < 6; ++face) {
+    const std::vector<float> level0(rgba.begin() + static_cast<std::ptrdiff_t>(face * face_floats),
+                                    rgba.begin() + static_cast<std::ptrdiff_t>((face + 1) * face_floats));
+    const std::vector<std::vector<float>> chain = core::mip_levels(level0, cover.size, cover.size, 4, levels);
+    for (int level = 1; level < levels; ++level) {
+      const int size = std::max(1, cover.size >> level);
+      glTextureSubImage3D(id, level, 0, 0, face, size, size, 1, GL_RGBA, GL_FLOAT, chain[size_t(level - 1)].data());
+    }
+  }
   glTextureParameteri(id, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
   glTextureParameteri(id, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
   glTextureParameteri(id, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
