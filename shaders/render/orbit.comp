@@ -269,11 +269,15 @@ void main() {
     // Segments between the boundaries (k + jitter) dt, k = 0 .. steps - 1, and the ends (so that
     // the boundaries do not line up between pixels); a segment across the gap between the two
     // intervals is taken in its two parts.
+    // On llvmpipe a `continue` or an `if` skips nothing for a group of lanes (they run masked), but
+    // a loop ends when its last lane does: so the work that a ray may not need is bounded by trip
+    // counts (the second interval's part, the light's steps), which leave the image as it was.
     float total = len0 + len1;
+    int parts = len1 > 0.0f ? 2 : 1;
     for (int i = 0; i <= steps && cloud_transmittance > 0.005f; ++i) {
       float a = i == 0 ? 0.0f : min((float(i) - 1.0f + jitter) * dt, total);
       float e = i == steps ? total : min((float(i) + jitter) * dt, total);
-      for (int part = 0; part < 2; ++part) {
+      for (int part = 0; part < parts; ++part) {
         float s0 = part == 0 ? a : max(a, len0);
         float s1 = part == 0 ? min(e, len0) : e;
         if (s1 <= s0) continue;
@@ -286,7 +290,7 @@ void main() {
         if (sigma <= 0.0f) continue;
         vec3 n = normalize(p);
         if (sun_at_cloud.x < 0.0f) sun_at_cloud = solar_irradiance() * transmittance_to_space(p, u_sun, u_radius);
-        vec2 tau_light = optical_depth_to_sun(p, 4, footprint);
+        vec2 tau_light = optical_depth_to_sun(p, sigma > 0.0f ? 4 : 0, footprint);
         // Single scattering, plus the multiply scattered light of the sample's own slab
         // (slab_source: the slab reflects and lets through what the delta-Eddington slab does),
         // dimmed by the clouds between the slab's top and the sun, and the sky's light.
@@ -320,7 +324,7 @@ void main() {
     vec3 direct = vec3(0.0f);
     if (mu > -0.02f) {
       // Cloud shadow: the shell's optical depth towards the sun; some light diffuses through.
-      float shadow = cloud_shadow(optical_depth_to_sun(g, u_shadow_steps, footprint));
+      float shadow = cloud_shadow(optical_depth_to_sun(g, hits_ground && mu > -0.02f ? u_shadow_steps : 0, footprint));
       direct = solar_irradiance() * transmittance_to_space(g + 1.0f * n, u_sun, u_radius) * max(mu, 0.0f) * shadow;
     }
     vec3 sky = PI_F * sky_ambient(n, u_sun);
@@ -337,7 +341,7 @@ void main() {
     vec3 start = oc + air_start * d;
     vec3 inscatter_total, inscatter_split, transmittance_total, transmittance_split;
     float split = weight_sum > 0.0f ? cloud_distance - air_start : 0.0f;
-    sky_single_scattering(start, d, ray_end - air_start, split, u_sun, u_radius, u_sky_steps, inscatter_total,
+    sky_single_scattering(start, d, ray_end - air_start, split, u_sun, u_radius, in_air && ray_end > air_start ? u_sky_steps : 0, inscatter_total,
                           inscatter_split, transmittance_total, transmittance_split);
     radiance = inscatter_split + transmittance_split * cloud_light +
                cloud_transmittance * (inscatter_total - inscatter_split + transmittance_total * background);
