@@ -539,9 +539,9 @@ TEST_CASE("worley.glsl on the GPU agrees with the CPU", "[probe]") {
   const vec4 key = vec4(std::floor(r(0.0f, 16777215.0f)), std::floor(r(0.0f, 16777215.0f)), 12345.0f, 0.0f);
   const int functions[] = {
       PROBE_WRAP_CELL,     PROBE_FEATURE_OFFSET,     PROBE_WORLEY_CANDIDATE, PROBE_WRAPPED_FEATURE_OFFSET,
-      PROBE_SMOOTH_WORLEY, PROBE_WRAPPED_NEIGHBOURS, PROBE_WORLEY_F1};
-  for (int k = 0; k < 98; ++k) {
-    const int f = functions[k % 7];
+      PROBE_SMOOTH_WORLEY, PROBE_WRAPPED_NEIGHBOURS, PROBE_WORLEY_F1,        PROBE_NEAREST_CELL};
+  for (int k = 0; k < 112; ++k) {
+    const int f = functions[k % 8];
     const bool integer = f == PROBE_WRAP_CELL || f == PROBE_FEATURE_OFFSET || f == PROBE_WRAPPED_FEATURE_OFFSET ||
                          f == PROBE_WRAPPED_NEIGHBOURS;
     const vec4 period = (k / 4) % 2 ? vec4(5.0f, 7.0f, 3.0f, 0.0f) : vec4(0.0f);
@@ -550,6 +550,8 @@ TEST_CASE("worley.glsl on the GPU agrees with the CPU", "[probe]") {
                 : (f == PROBE_WORLEY_CANDIDATE ? r.v(0.0f, 1.0f) : r.v(-20.0f, 20.0f));
     vec4 a(r(0.5f, 3.0f), float(k % 3 - 1), float((k / 3) % 3 - 1), 0.0f);
     if (f == PROBE_SMOOTH_WORLEY) a.y = r(0.05f, 1.0f);  // smooth_worley's lambda
+    // nearest_cell is an integer cell, exact unless the nearest feature point lies within
+    // kWorley of a cell's face (a chance of about 6 kWorley a case); its F1 (w) within kWorley.
     cases.push_back({arguments(f, a, p, period, key), integer                    ? kExact
                                                       : f == PROBE_SMOOTH_WORLEY ? kSmoothWorley
                                                                                  : kWorley});

@@ -342,7 +342,7 @@ Topology topology(Pattern pattern, float frequency, std::uint32_t seed, std::uin
     clear[k] = !cloud[k];
     const vec3 scaled = points[k] * frequency;
     const glsl::vec4 f1 = glsl::worley_f1(scaled, glsl::ivec3(0), glsl::noise_key(seed, layer));
-    const glm::ivec3 cell(glm::floor(scaled - vec3(f1) * f1.w));
+    const glm::ivec3 cell = glsl::nearest_cell(scaled, f1);
     cells.push_back({cell.x, cell.y, cell.z});
     const int i = static_cast<int>(k) % n, j = static_cast<int>(k) / n;
     if (i == 0 || j == 0 || i == n - 1 || j == n - 1) edge_cells.push_back(cells.back());

@@ -118,7 +118,7 @@ float cell_clouds(vec3 p, float frequency, uint seed, uint layer, float radius, 
   vec3 scaled = p * frequency;
   vec4 f1 = worley_f1(scaled, ivec3(0), noise_key(seed, layer));
   // The nearest feature point's cell names the cloud.
-  ivec3 cell = ivec3(floor(scaled - vec3(f1) * f1.w));
+  ivec3 cell = nearest_cell(scaled, f1);
   vec3 h = hash_to_unit3(pcg3d(uvec3(cell) ^ noise_key(seed, layer + 1u)));
   if (h.y < empty) return 0.0f;
   float size = radius + spread * h.x;
@@ -161,7 +161,7 @@ float itcz_anvils(vec3 p, float latitude, float itcz_latitude, uint seed, float 
   // The cluster's cell and hash as cell_clouds finds them.
   vec3 scaled = p * ITCZ_CELLS;
   vec4 f1 = worley_f1(scaled, ivec3(0), noise_key(seed, ITCZ_LAYER));
-  ivec3 cell = ivec3(floor(scaled - vec3(f1) * f1.w));
+  ivec3 cell = nearest_cell(scaled, f1);
   vec3 h = hash_to_unit3(pcg3d(uvec3(cell) ^ noise_key(seed, ITCZ_LAYER + 1u)));
   if (h.y < ITCZ_EMPTY) return 0.0f;
   float size = 1.5f * (ITCZ_RADIUS + ITCZ_SPREAD * h.x);

@@ -104,6 +104,11 @@ vec4 worley_f1(vec3 p, ivec3 period, uvec3 key) {
   return vec4(gradient, distance);
 }
 
+// The lattice cell of the feature point nearest to p (worley_f1's result f1 at p): p less the
+// vector from that point to p, floored. It names a cell's cloud (weather_systems.glsl) and counts
+// cells in tests.
+ivec3 nearest_cell(vec3 p, vec4 f1) { return ivec3(floor(p - vec3(f1) * f1.w)); }
+
 // Smooth inverted Worley noise, the flow's potential (docs/numerics.md, "Smooth potential").
 // Each feature point carries a bump K(r) = (1 - r^2)^5 for r < 1 cell, 0 beyond; the bumps
 // are combined by a smooth maximum (log-sum-exp with exact zeros for absent points),

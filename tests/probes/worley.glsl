@@ -8,6 +8,7 @@ const int PROBE_WRAPPED_FEATURE_OFFSET = 3;
 const int PROBE_SMOOTH_WORLEY = 4;
 const int PROBE_WRAPPED_NEIGHBOURS = 5;  // wrapped_neighbours, wrap_axis, wrap_step
 const int PROBE_WORLEY_F1 = 6;
+const int PROBE_NEAREST_CELL = 7;  // nearest_cell(p, worley_f1(p, ...)), F1 in w
 #ifndef __cplusplus
 #include "../lib/worley.glsl"
 #endif
@@ -32,6 +33,10 @@ vec4 probe_worley(mat4 x) {
     // The three wrapped neighbours along x, and one step from the wrapped y along x[0].z.
     int y = wrap_axis(int(x[1].y), period.y);
     return vec4(vec3(wrapped_neighbours(int(x[1].x), period.x)), float(wrap_step(y, int(x[0].z), period.y)));
+  }
+  if (f == PROBE_NEAREST_CELL) {
+    vec4 f1 = worley_f1(vec3(x[1]), period, key);
+    return vec4(vec3(nearest_cell(vec3(x[1]), f1)), f1.w);
   }
   return worley_f1(vec3(x[1]), period, key);  // PROBE_WORLEY_F1
 }
