@@ -324,6 +324,7 @@ void main() {
     vec3 direct = vec3(0.0f);
     if (mu > -0.02f) {
       // Cloud shadow: the shell's optical depth towards the sun; some light diffuses through.
+      // The steps repeat the branches' conditions: on llvmpipe only a loop's count skips work.
       float shadow = cloud_shadow(optical_depth_to_sun(g, hits_ground && mu > -0.02f ? u_shadow_steps : 0, footprint));
       direct = solar_irradiance() * transmittance_to_space(g + 1.0f * n, u_sun, u_radius) * max(mu, 0.0f) * shadow;
     }
@@ -341,6 +342,7 @@ void main() {
     vec3 start = oc + air_start * d;
     vec3 inscatter_total, inscatter_split, transmittance_total, transmittance_split;
     float split = weight_sum > 0.0f ? cloud_distance - air_start : 0.0f;
+    // No steps outside the air, as the ground's shadow: the branch alone skips nothing on llvmpipe.
     sky_single_scattering(start, d, ray_end - air_start, split, u_sun, u_radius, in_air && ray_end > air_start ? u_sky_steps : 0, inscatter_total,
                           inscatter_split, transmittance_total, transmittance_split);
     radiance = inscatter_split + transmittance_split * cloud_light +
