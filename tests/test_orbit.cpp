@@ -17,6 +17,7 @@
 #include "files/image_files.hpp"
 #include "io/cover_files.hpp"
 #include "io/planet_textures.hpp"
+#include "gpu/compute_program.hpp"
 #include "gpu/textures.hpp"
 #include "render/orbit_renderer.hpp"
 #include "render/orbit_tiles.hpp"
@@ -760,15 +761,16 @@ TEST_CASE("orbit tiles: every pixel whose ray meets the air lies in a listed til
     INFO(c.name);
     const render::TileView view = tile_view(c.camera);
     const std::vector<glm::uvec2> listed = render::tiles_meeting_sphere(view, air);
-    const int columns = (view.width + 7) / 8, rows = (view.height + 7) / 8;
+    const glm::ivec2 grid = render::tile_grid(view.width, view.height);
+    const int columns = grid.x, rows = grid.y, tile = render::ORBIT_TILE;
     std::vector<char> in_list(size_t(columns) * rows, 0), meets(size_t(columns) * rows, 0);
     for (glm::uvec2 t : listed) in_list[t.y * columns + t.x] = 1;
     int missing = 0;
     for (int j = 0; j < view.height; ++j)
       for (int i = 0; i < view.width; ++i)
         if (pixel_meets_sphere(view, i, j, air)) {
-          meets[(j / 8) * columns + i / 8] = 1;
-          missing += in_list[(j / 8) * columns + i / 8] ? 0 : 1;
+          meets[(j / tile) * columns + i / tile] = 1;
+          missing += in_list[(j / tile) * columns + i / tile] ? 0 : 1;
         }
     CHECK(missing == 0);
     // A listed tile's central ray is within the sphere's angle plus its own half-diagonal and
@@ -823,6 +825,13 @@ TEST_CASE("orbit: the tiles it leaves out are black clear space, the frame the s
   const std::vector<glm::uvec2> in_air = renderer.tiles_in_air(camera), every = render::all_tiles(96, 54);
   REQUIRE(in_air.size() < every.size() * 3 / 4);  // the view has space to leave out
   const std::vector<float> culled = frame(in_air), whole = frame(every);
+  // The shader's work group is the host's tile.
+  const gpu::ComputeProgram program("render/orbit.comp");
+  GLint group[3] = {0, 0, 0};
+  glGetProgramiv(program.id(), GL_COMPUTE_WORK_GROUP_SIZE, group);
+  CHECK(group[0] == render::ORBIT_TILE);
+  CHECK(group[1] == render::ORBIT_TILE);
+  CHECK(group[2] == 1);
   REQUIRE(culled.size() == whole.size());
   size_t differing = 0;
   for (size_t k = 0; k < whole.size(); ++k) differing += culled[k] == whole[k] ? 0 : 1;

@@ -4,13 +4,15 @@
 // a slab below its top, as thick as its type and tau make it), cloud shadows on the ground, city
 // lights on the night side and the single-scattering atmosphere of shaders/lib/atmosphere.glsl in
 // front of both.
-// One invocation per pixel, one work group per tile of 8 x 8 pixels listed in `tiles` (the tiles
-// whose rays can meet the air: src/render/orbit_tiles.cpp; the host clears the others). Positions are relative to the camera: the host computes the camera
-// and planet in double and hands over the planet's centre relative to the camera as float, and
+// One invocation per pixel, one work group per tile of ORBIT_TILE x ORBIT_TILE pixels listed in
+// `tiles` (the tiles whose rays can meet the air: src/render/orbit_tiles.cpp, whose ORBIT_TILE is
+// this one; the host clears the others). Positions are relative to the camera: the host computes
+// the camera and planet in double and hands over the planet's centre relative to the camera as float, and
 // for each sphere q = |camera - centre|^2 - r^2 (exact in double; in float it would cancel
 // catastrophically near the ground). Axes are Earth-centred, Earth-fixed (+Z north, +X latitude
 // 0 longitude 0), as the cover's cube map is.
-layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
+const int ORBIT_TILE = 8;
+layout(local_size_x = ORBIT_TILE, local_size_y = ORBIT_TILE, local_size_z = 1) in;
 layout(rgba32f, binding = 0) uniform writeonly image2D radiance_image;
 layout(binding = 1) uniform sampler2D day_texture;    // equirect, linear RGB, row 0 = north
 layout(binding = 2) uniform sampler2D night_texture;  // equirect, linear RGB (city lights)
@@ -226,7 +228,7 @@ float cloud_view_phase(float nu) { return 0.9f * henyey_greenstein(nu, 0.85f) + 
 void main() {
   int tile = int(gl_WorkGroupID.x + gl_WorkGroupID.y * gl_NumWorkGroups.x);
   if (tile >= u_tile_count) return;
-  ivec2 pixel = ivec2(tiles[tile]) * 8 + ivec2(gl_LocalInvocationID.xy);
+  ivec2 pixel = ivec2(tiles[tile]) * ORBIT_TILE + ivec2(gl_LocalInvocationID.xy);
   ivec2 size = u_image_size;
   if (pixel.x >= size.x || pixel.y >= size.y) return;
   vec2 uv = (vec2(pixel) + 0.5f) / vec2(size);
@@ -325,7 +327,8 @@ void main() {
     if (mu > -0.02f) {
       // Cloud shadow: the shell's optical depth towards the sun; some light diffuses through.
       // The steps repeat the branches' conditions: on llvmpipe only a loop's count skips work.
-      float shadow = cloud_shadow(optical_depth_to_sun(g, hits_ground && mu > -0.02f ? u_shadow_steps : 0, footprint));
+      int shadow_steps = hits_ground && mu > -0.02f ? u_shadow_steps : 0;
+      float shadow = cloud_shadow(optical_depth_to_sun(g, shadow_steps, footprint));
       direct = solar_irradiance() * transmittance_to_space(g + 1.0f * n, u_sun, u_radius) * max(mu, 0.0f) * shadow;
     }
     vec3 sky = PI_F * sky_ambient(n, u_sun);
@@ -343,7 +346,8 @@ void main() {
     vec3 inscatter_total, inscatter_split, transmittance_total, transmittance_split;
     float split = weight_sum > 0.0f ? cloud_distance - air_start : 0.0f;
     // No steps outside the air, as the ground's shadow: the branch alone skips nothing on llvmpipe.
-    sky_single_scattering(start, d, ray_end - air_start, split, u_sun, u_radius, in_air && ray_end > air_start ? u_sky_steps : 0, inscatter_total,
+    int sky_steps = in_air && ray_end > air_start ? u_sky_steps : 0;
+    sky_single_scattering(start, d, ray_end - air_start, split, u_sun, u_radius, sky_steps, inscatter_total,
                           inscatter_split, transmittance_total, transmittance_split);
     radiance = inscatter_split + transmittance_split * cloud_light +
                cloud_transmittance * (inscatter_total - inscatter_split + transmittance_total * background);

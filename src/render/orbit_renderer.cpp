@@ -389,11 +389,11 @@ RenderResult OrbitRenderer::render(const OrbitCamera& camera, double unix_second
       sun_direction_enu(unix_seconds, camera.latitude_deg, camera.longitude_deg, &result.sun_elevation_deg);
   gpu::Texture image = gpu::Texture::plane(camera.width, camera.height, GL_RGBA32F);
   const std::vector<glm::uvec2> tiles = tiles_in_air(camera);
+  const glm::ivec2 grid = tile_grid(camera.width, camera.height);
   result.timings_ms.emplace_back("orbit", render_tiles(camera, unix_seconds, image.id(), tiles));
-  result.passes = {"orbit: " + std::to_string(tiles.size()) + " of " +
-                   std::to_string(all_tiles(camera.width, camera.height).size()) + " tiles, ground, cloud shell (" +
-                   std::to_string(s.cloud_steps) + " steps), shadows (" + std::to_string(s.shadow_steps) +
-                   "), atmosphere (" + std::to_string(s.sky_steps) + ")"};
+  result.passes = {"orbit: " + std::to_string(tiles.size()) + " of " + std::to_string(grid.x * grid.y) +
+                   " tiles, ground, cloud shell (" + std::to_string(s.cloud_steps) + " steps), shadows (" +
+                   std::to_string(s.shadow_steps) + "), atmosphere (" + std::to_string(s.sky_steps) + ")"};
   result.timings_ms.emplace_back("read back", gpu::time_pass([&] {
                                    result.radiance = {camera.width, camera.height, 4, image.read()};
                                  }));

@@ -20,12 +20,16 @@ double angle_between(glm::dvec3 a, glm::dvec3 b) {
 
 }  // namespace
 
+glm::ivec2 tile_grid(int width, int height) {
+  return {(width + ORBIT_TILE - 1) / ORBIT_TILE, (height + ORBIT_TILE - 1) / ORBIT_TILE};
+}
+
 std::vector<glm::uvec2> all_tiles(int width, int height) {
   std::vector<glm::uvec2> tiles;
-  const int columns = (width + ORBIT_TILE - 1) / ORBIT_TILE, rows = (height + ORBIT_TILE - 1) / ORBIT_TILE;
-  tiles.reserve(static_cast<size_t>(columns) * static_cast<size_t>(std::max(rows, 0)));
-  for (int y = 0; y < rows; ++y)
-    for (int x = 0; x < columns; ++x) tiles.emplace_back(unsigned(x), unsigned(y));
+  const glm::ivec2 grid = tile_grid(width, height);
+  tiles.reserve(static_cast<size_t>(std::max(grid.x, 0)) * static_cast<size_t>(std::max(grid.y, 0)));
+  for (int y = 0; y < grid.y; ++y)
+    for (int x = 0; x < grid.x; ++x) tiles.emplace_back(unsigned(x), unsigned(y));
   return tiles;
 }
 
@@ -42,10 +46,9 @@ std::vector<glm::uvec2> tiles_meeting_sphere(const TileView& view, double radius
     return glm::normalize(view.forward + x * view.right + y * view.up);
   };
   std::vector<glm::uvec2> tiles;
-  const int columns = (view.width + ORBIT_TILE - 1) / ORBIT_TILE;
-  const int rows = (view.height + ORBIT_TILE - 1) / ORBIT_TILE;
-  for (int ty = 0; ty < rows; ++ty)
-    for (int tx = 0; tx < columns; ++tx) {
+  const glm::ivec2 grid = tile_grid(view.width, view.height);
+  for (int ty = 0; ty < grid.y; ++ty)
+    for (int tx = 0; tx < grid.x; ++tx) {
       // The tile's pixel centres span [x0, x1] x [y0, y1]; on the image plane the rays within an
       // angle of the central one form a convex region, so its corners bound the whole tile.
       const double x0 = tx * ORBIT_TILE + 0.5, x1 = std::min((tx + 1) * ORBIT_TILE, view.width) - 0.5;

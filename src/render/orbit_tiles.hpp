@@ -11,8 +11,12 @@
 
 namespace nephele::render {
 
-// orbit.comp's work group: one tile of ORBIT_TILE x ORBIT_TILE pixels.
+// orbit.comp's work group: one tile of ORBIT_TILE x ORBIT_TILE pixels (its own ORBIT_TILE;
+// tests/test_orbit.cpp checks that the compiled program's work group is this).
 inline constexpr int ORBIT_TILE = 8;
+
+// The tiles across (x) and down (y) a width x height image, the last ones partly outside it.
+glm::ivec2 tile_grid(int width, int height);
 
 // The view as orbit.comp sets up its rays: the camera `position` (m, from the planet's centre),
 // the unit vectors forward, right and up, tan of half the horizontal field of view and the image
