@@ -205,13 +205,14 @@ TEST_CASE("report --quick writes the CSV the diagram and the summary and the not
   CHECK(executed.find("runs from") != std::string::npos);
 }
 
-TEST_CASE("report --quick writes the render error CSV and diagram and a render section in the summary",
+TEST_CASE("report render writes the render error CSV and diagram its summary section and the qualities",
           "[report][render][cli]") {
-  // The warp part made as small as it goes; the render part is the quick one (view 8, 16, 48 x
-  // light 2, 12, the defaults over 2 frames and at 1/2 resolution, against 96 x 12 steps over 2
-  // frames), at a frame size of its own.
+  // The quick render sweep alone (view 8, 16, 48 x light 2, 12, the defaults over 2 frames and at
+  // 1/2 resolution, against 96 x 12 steps over 2 frames), at a frame size of its own: `report`
+  // without `render` writes the same files beside the warp part's (whose files the test above
+  // reads from a run with --no-render).
   TemporaryDirectory out;
-  const Run r = run("report " + small_warp + " --render-size 24x12 --out " + out.path.string());
+  const Run r = run("report render --quick --render-size 24x12 --out " + out.path.string());
   INFO(r.output);
   REQUIRE(r.exit_code == 0);
   CHECK(r.output.find("render sweep") != std::string::npos);
@@ -258,34 +259,24 @@ TEST_CASE("report --quick writes the render error CSV and diagram and a render s
   CHECK(svg.find(">48x12 2f</text>") != std::string::npos);
   CHECK(svg.find(">48x12 1/2</text>") != std::string::npos);
   const std::string summary = read_file(out.path / "summary.md");
-  CHECK(summary.find("Best speed-up at equal error") != std::string::npos);  // the warp part is still there
-  CHECK(summary.find("## Render: image error against run time") != std::string::npos);
+  CHECK(summary.find("## Render: image error against run time") == 0);
+  CHECK(summary.find("speed-up") == std::string::npos);  // no warp part
   CHECK(summary.find("Defaults (the final quality, `--quality final`, and the library's): 48 view x 12 light steps, "
                      "display rms") != std::string::npos);
   CHECK(summary.find("Cheapest within 1.5x the default's error") != std::string::npos);
   CHECK(summary.find("Most accurate within the default's time") != std::string::npos);
+  CHECK_FALSE(fs::exists(out.path / "error_vs_runtime.csv"));
 
-  // `report render`: the render sweep alone, no warp files.
-  TemporaryDirectory render_only;
-  const Run only = run("report render --quick --render-size 16x8 --out " + render_only.path.string());
-  INFO(only.output);
-  REQUIRE(only.exit_code == 0);
-  CHECK(fs::exists(render_only.path / "render_error.csv"));
-  CHECK(fs::exists(render_only.path / "render_error_vs_runtime.svg"));
-  CHECK_FALSE(fs::exists(render_only.path / "error_vs_runtime.csv"));
   // The qualities of render --quality, each with its target and whether it meets it.
-  std::stringstream quality_lines(read_file(render_only.path / "render_quality.csv"));
+  std::stringstream quality_lines(read_file(out.path / "render_quality.csv"));
   std::string quality_line;
   std::getline(quality_lines, quality_line);
   CHECK(quality_line.rfind("quality,target_display_rms,", 0) == 0);
   int qualities = 0;
   while (std::getline(quality_lines, quality_line)) ++qualities;
   CHECK(qualities == 3);
-  const std::string only_summary = read_file(render_only.path / "summary.md");
-  CHECK(only_summary.find("## Render: image error against run time") == 0);
-  CHECK(only_summary.find("speed-up") == std::string::npos);
-  CHECK(only_summary.find("## Render: qualities") != std::string::npos);
-  CHECK(only_summary.find("| default | 16 view x 4 light steps, 1/4 resolution | 0.01 |") != std::string::npos);
+  CHECK(summary.find("## Render: qualities") != std::string::npos);
+  CHECK(summary.find("| default | 16 view x 4 light steps, 1/4 resolution | 0.01 |") != std::string::npos);
 
   // --no-render writes neither render file.
   const TemporaryDirectory& skipped = no_render_report().out;
