@@ -29,8 +29,10 @@ trap 'rm -rf "$work"' EXIT
 orbit_images() {
   # The orbit view's cover at 512 per face, of the moment the view shows (render alone makes 128).
   "$nephele" generate --time 2026-06-21T17:00Z --files faces --quiet --out "$work/cover-orbit"
-  "$nephele" render --view orbit --cover "$work/cover-orbit" --altitude-km 12000 --time 2026-06-21T17:00Z --quiet \
-    --out "$work/render_orbit.png"
+  # Run from the work folder so that the sidecar records the cover as `cover-orbit`, not a
+  # temporary path.
+  (cd "$work" && "$repo_root/$nephele" render --view orbit --cover cover-orbit --altitude-km 12000 \
+    --time 2026-06-21T17:00Z --quiet --out render_orbit.png)
   cp "$work/render_orbit.png" "$work/render_orbit.json" docs/images/
   # The same cover from geostationary height (the full disk), 2000 km, and 400 km (the ISS's
   # height) looking west-north-west towards the evening sun.

@@ -18,6 +18,7 @@
 #include "model/density_volume.hpp"
 #include "regional/terrain.hpp"
 #include "render/cloud_renderer.hpp"
+#include "render/sky_table.hpp"
 #include "cover/curl_spline.hpp"
 #include "shader_math/shader_math.hpp"
 
@@ -75,6 +76,19 @@ void filter_linear_clamped(GLuint texture) {
   glTextureParameteri(texture, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
   for (GLenum wrap : {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T, GL_TEXTURE_WRAP_R})
     glTextureParameteri(texture, wrap, GL_CLAMP_TO_EDGE);
+}
+
+// A 2D float texture of width x height texels of `format` (GL_RG, GL_RGBA) from `texels`,
+// bilinear and clamped, bound to texture unit `unit` (the caller deletes it).
+GLuint bound_linear_texture_2d(int width, int height, GLenum internal_format, GLenum format, const float* texels,
+                               GLuint unit) {
+  GLuint texture = 0;
+  glCreateTextures(GL_TEXTURE_2D, 1, &texture);
+  glTextureStorage2D(texture, 1, internal_format, width, height);
+  glTextureSubImage2D(texture, 0, 0, 0, width, height, format, GL_FLOAT, texels);
+  filter_linear_clamped(texture);
+  glBindTextureUnit(unit, texture);
+  return texture;
 }
 
 // The float tolerances kUlp, kExact, kArithmetic and kTranscendental: library_probes.hpp.
@@ -824,8 +838,20 @@ TEST_CASE("curl_flow.glsl on the GPU agrees with the CPU", "[probe]") {
 }
 
 TEST_CASE("atmosphere.glsl on the GPU agrees with the CPU", "[probe]") {
+  test::test_context();
   Random r(21);
   const float earth_radius = 6360000.0f;
+  // The multiple-scattering table as the orbit view makes it, on texture unit 4 for the GPU.
+  const int n = MULTIPLE_SCATTERING_TABLE_SIZE;
+  const std::vector<vec4> table = render::multiple_scattering_table(earth_radius, render::kPlanetAlbedo);
+  const TableSource table_source{n, n, table.data()};
+  const GLuint table_texture = bound_linear_texture_2d(n, n, GL_RGBA32F, GL_RGBA, &table[0].x, 4);
+  auto probe_atmosphere = [&](const mat4& x) { return ::probe_atmosphere(x, table_source); };
+  // The table read bilinearly: GPUs weigh the taps with 8 fractional bits, so a read errs by up
+  // to 1/512 of the difference between neighbouring texels, below 1/16 of the largest value.
+  float table_largest = 0.0f;
+  for (const vec4& t : table) table_largest = std::max(table_largest, std::max(t.x, std::max(t.y, t.z)));
+  const float table_read = 1e3f * table_largest / 16.0f / 512.0f;
   std::vector<Case> cases;
   const int functions[] = {PROBE_RAYLEIGH, PROBE_SUN_AND_HENYEY_GREENSTEIN, PROBE_AIR_EXTINCTION,
                            PROBE_TRANSMITTANCE_TO_SPACE, PROBE_SKY_SINGLE_SCATTERING};
@@ -900,7 +926,47 @@ TEST_CASE("atmosphere.glsl on the GPU agrees with the CPU", "[probe]") {
     }
     cases.push_back({x, kSkyRelative * std::max(got.x, std::max(got.y, got.z)) + kTranscendental});
   }
+  // Ozone, the air's scattering and the aerosols' phase function.
+  for (int k = 0; k < 8; ++k) {
+    cases.push_back({arguments(PROBE_OZONE, vec4(earth_radius, r(0.0f, 50000.0f), 0, 0)), kArithmetic});
+    cases.push_back({arguments(PROBE_AIR_SCATTERING_AND_CORNETTE_SHANKS, vec4(earth_radius, r(-100.0f, 30000.0f), 0, 0),
+                               vec4(r(-1.0f, 1.0f), r(0.0f, 0.9f), 0, 0)),
+                     kTranscendental * 10.0f});
+  }
+  // Multiple scattering: the table's function (sums of terms each within kSkyRelative, the
+  // series' 1 / (1 - f) with f below 0.5 doubling it), its texels and its reads; the sky with it.
+  for (int k = 0; k < 4; ++k) {
+    const mat4 transfer = arguments(PROBE_MULTIPLE_SCATTERING_TRANSFER,
+                                    vec4(earth_radius, r(0.0f, 60000.0f), r(-0.3f, 1.0f), 0), vec4(0.3f, 0, 0, 0));
+    const vec4 t = ::probe_atmosphere(transfer, table_source);
+    cases.push_back({transfer, 2.0f * kSkyRelative * std::max(t.x, std::max(t.y, t.z)) + kTranscendental});
+    const int i = int(r(0.0f, float(n - 1))), j = int(r(0.0f, float(n - 1)));
+    const mat4 entry = arguments(PROBE_MULTIPLE_SCATTERING_TABLE_ENTRY, vec4(earth_radius, float(i), float(j), 0),
+                                 vec4(render::kPlanetAlbedo, 0, 0, 0));
+    // The entry is the texel the table holds.
+    const vec4 e = ::probe_atmosphere(entry, table_source);
+    CHECK(vec3(e) == vec3(table[size_t(j) * n + i]) * 1e3f);
+    cases.push_back({entry, 2.0f * kSkyRelative * std::max(e.x, std::max(e.y, e.z)) + kTranscendental});
+  }
+  for (int k = 0; k < 16; ++k) {
+    const vec3 up = normalize(vec3(r.v(-1.0f, 1.0f)) + vec3(1e-3f));
+    const vec3 sun = normalize(vec3(r.v(-1.0f, 1.0f)));
+    cases.push_back({arguments(PROBE_MULTIPLE_SCATTERING, vec4(earth_radius, 0, 0, 0),
+                               vec4(up * (earth_radius + r(0.0f, 99000.0f)), 0), vec4(sun, 0)),
+                     table_read + kArithmetic});
+    const vec3 d = normalize(vec3(r.v(-1.0f, 1.0f)) + 0.5f * up);
+    const vec4 p(up * (earth_radius + r(0.0f, 20000.0f)), r(1000.0f, 200000.0f));
+    const mat4 x = arguments(PROBE_SKY_SCATTERING, vec4(earth_radius, float(k % 4), 0, 0), p, vec4(d, r(0.0f, p.w)),
+                             vec4(sun, 8.0f));
+    const vec4 cpu = probe_atmosphere(x);
+    // Radiances: the single scattering's error and each sample's table read over its step
+    // (at most the step's scattering share, 1 - e^(-sigma ds) < 1, times 1e3 for the probe's scale).
+    cases.push_back(
+        {x, k % 4 < 2 ? kSkyRelative * std::max(cpu.x, std::max(cpu.y, cpu.z)) + 8.0f * table_read + kTranscendental
+                      : kTransmittance});
+  }
   compare("atmosphere", probe_atmosphere, cases);
+  glDeleteTextures(1, &table_texture);
 }
 
 TEST_CASE("cube_sampling.glsl on the GPU agrees with the CPU", "[probe]") {
@@ -1597,12 +1663,7 @@ TEST_CASE("terrain.glsl on the GPU agrees with the CPU", "[probe][terrain]") {
   const std::vector<float> ceilings = regional::terrain_ceilings(heights, size, 3);
   std::vector<float> texels;
   for (size_t k = 0; k < heights.size(); ++k) texels.insert(texels.end(), {heights[k], ceilings[k]});
-  GLuint texture = 0;
-  glCreateTextures(GL_TEXTURE_2D, 1, &texture);
-  glTextureStorage2D(texture, 1, GL_RG32F, size, size);
-  glTextureSubImage2D(texture, 0, 0, 0, size, size, GL_RG, GL_FLOAT, texels.data());
-  filter_linear_clamped(texture);
-  glBindTextureUnit(4, texture);
+  const GLuint texture = bound_linear_texture_2d(size, size, GL_RG32F, GL_RG, texels.data(), 4);
   const TerrainSource source{{size, 1, heights.data()}, {size, 1, ceilings.data()}};
   auto cpu = [&](const mat4& x) { return probe_terrain(x, source); };
 

@@ -1,7 +1,7 @@
 // Clear-sky atmosphere: Rayleigh and Mie single scattering on a spherical Earth.
 // Coefficients from Bruneton's 2017 reference implementation ("Precomputed Atmospheric
-// Scattering: a New Implementation") and Hillaire, "A Scalable and Production Ready Sky and
-// Atmosphere Rendering Technique" (EGSR 2020); ozone is left out.
+// Scattering: a New Implementation", his demo's Earth) and Hillaire, "A Scalable and Production
+// Ready Sky and Atmosphere Rendering Technique" (EGSR 2020), with its multiple scattering.
 #ifndef NEPHELE_ATMOSPHERE_GLSL
 #define NEPHELE_ATMOSPHERE_GLSL
 #include "prelude.glsl"
@@ -17,6 +17,13 @@ const float MIE_ASYMMETRY = 0.8f;
 
 // Rayleigh scattering at 680, 550, 440 nm (1/m) and the solar irradiance there (W m^-2 nm^-1).
 vec3 rayleigh_scattering() { return vec3(5.802e-6f, 13.558e-6f, 33.1e-6f); }
+// Ozone's absorption (1/m) where it is densest: 300 Dobson units (8.06e22 molecules/m^2) over
+// the tent of ozone_density (15 km), times the cross sections at 680, 550, 440 nm (1.209e-25,
+// 3.5e-25, 1.582e-26 m^2; Bruneton 2017). The Chappuis band takes green and red: the zenith
+// stays blue at twilight and the limb's blue is deeper.
+vec3 ozone_absorption() { return vec3(0.650e-6f, 1.881e-6f, 0.085e-6f); }
+// Ozone's density relative to its peak: a tent from 10 km up to 25 km and down to 40 km.
+float ozone_density(float h) { return max(0.0f, 1.0f - abs(h - 25000.0f) / 15000.0f); }
 vec3 solar_irradiance() { return vec3(1.474f, 1.8504f, 1.91198f); }
 
 // The orbit view's ambient light of the sky (isotropic radiance) at a point with local up n and
@@ -33,10 +40,25 @@ float henyey_greenstein(float nu, float g) {
   return (1.0f - g * g) / (4.0f * PI_F * denominator * sqrt(max(denominator, 1.0e-8f)));
 }
 
+// Cornette and Shanks' phase function for the air's aerosols (1992, "Physically reasonable
+// analytic expression for the single-scattering phase function", Appl. Opt. 31; Bruneton 2017's
+// Mie phase): Henyey-Greenstein's forward lobe with Rayleigh's 1 + nu^2, normalised over the sphere.
+float cornette_shanks(float nu, float g) {
+  float denominator = 1.0f + g * g - 2.0f * g * nu;
+  return 3.0f / (8.0f * PI_F) * (1.0f - g * g) / (2.0f + g * g) * (1.0f + nu * nu) /
+         (denominator * sqrt(max(denominator, 1.0e-8f)));
+}
+
 // Extinction (1/m) at altitude h.
 vec3 air_extinction(float h) {
   return rayleigh_scattering() * exp(-max(h, 0.0f) / RAYLEIGH_SCALE_HEIGHT) +
-         vec3(MIE_EXTINCTION * exp(-max(h, 0.0f) / MIE_SCALE_HEIGHT));
+         vec3(MIE_EXTINCTION * exp(-max(h, 0.0f) / MIE_SCALE_HEIGHT)) + ozone_absorption() * ozone_density(h);
+}
+
+// Scattering (1/m) at altitude h, Rayleigh and Mie together.
+vec3 air_scattering(float h) {
+  return rayleigh_scattering() * exp(-max(h, 0.0f) / RAYLEIGH_SCALE_HEIGHT) +
+         vec3(MIE_SCATTERING * exp(-max(h, 0.0f) / MIE_SCALE_HEIGHT));
 }
 
 // Transmittance from point p (relative to the Earth's centre, radius R) to the top of the
@@ -61,6 +83,70 @@ vec3 transmittance_to_space(vec3 p, vec3 d, float earth_radius) {
   return exp(-depth);
 }
 
+// Multiple scattering (Hillaire 2020, section 5.5): the light that the air scatters more than
+// once, as an isotropic radiance Psi at altitude h with the sun at cosine mu_sun from the zenith;
+// a view ray's sample adds its scattering times Psi. The second order L2 is the single scattering
+// (isotropic phase) and the sunlit ground (Lambertian, ground_albedo) seen along 64 directions
+// of a sphere, 20 steps each; the orders above follow as the geometric series of the share f of
+// isotropic light that the air around the point scatters back to it: Psi = L2 / (1 - f).
+// Tabulated once (multiple_scattering_table_entry) and read at each sample (multiple_scattering).
+const int MULTIPLE_SCATTERING_TABLE_SIZE = 32;  // texels per side: mu_sun across, altitude up
+vec3 multiple_scattering_transfer(float h, float mu_sun, float earth_radius, float ground_albedo) {
+  vec3 x = vec3(0.0f, 0.0f, earth_radius + h);
+  vec3 sun = vec3(sqrt(max(0.0f, 1.0f - mu_sun * mu_sun)), 0.0f, mu_sun);
+  vec3 second = vec3(0.0f);
+  vec3 transfer = vec3(0.0f);
+  const int rings = 8;
+  const int steps = 20;
+  for (int i = 0; i < rings * rings; ++i) {
+    // Equal areas: cosines uniform in [-1, 1], azimuths uniform.
+    float cos_theta = 1.0f - 2.0f * (float(i / rings) + 0.5f) / float(rings);
+    float phi = 2.0f * PI_F * (float(i % rings) + 0.5f) / float(rings);
+    float sin_theta = sqrt(max(0.0f, 1.0f - cos_theta * cos_theta));
+    vec3 w = vec3(sin_theta * cos(phi), sin_theta * sin(phi), cos_theta);
+    vec2 ground = ray_sphere(x, w, vec3(0.0f), earth_radius);
+    vec2 top = ray_sphere(x, w, vec3(0.0f), earth_radius + ATMOSPHERE_THICKNESS);
+    bool meets_ground = ground.x < ground.y && ground.x > 0.0f;
+    float ds = (meets_ground ? ground.x : max(top.y, 0.0f)) / float(steps);
+    vec3 light = vec3(0.0f);
+    vec3 transmittance = vec3(1.0f);
+    for (int k = 0; k < steps; ++k) {
+      vec3 q = x + ((float(k) + 0.5f) * ds) * w;
+      float hq = length(q) - earth_radius;
+      vec3 extinction = max(air_extinction(hq), vec3(1.0e-12f));
+      vec3 scattering = air_scattering(hq);
+      vec3 step_share = (vec3(1.0f) - exp(-extinction * ds)) / extinction;
+      light += transmittance * scattering * transmittance_to_space(q, sun, earth_radius) * step_share / (4.0f * PI_F);
+      transfer += transmittance * scattering * step_share / float(rings * rings);
+      transmittance *= exp(-extinction * ds);
+    }
+    if (meets_ground) {
+      vec3 g = x + (ds * float(steps)) * w;
+      vec3 n = normalize(g);
+      light += transmittance * transmittance_to_space(g + n, sun, earth_radius) * max(dot(n, sun), 0.0f) *
+               ground_albedo / PI_F;
+    }
+    second += light / float(rings * rings);
+  }
+  return solar_irradiance() * second / (vec3(1.0f) - transfer);
+}
+
+// The table's texel (i, j): mu_sun from -1 to 1 across, altitude from 0 to the air's top up.
+vec3 multiple_scattering_table_entry(int i, int j, float earth_radius, float ground_albedo) {
+  float n = float(MULTIPLE_SCATTERING_TABLE_SIZE - 1);
+  return multiple_scattering_transfer(ATMOSPHERE_THICKNESS * float(j) / n, 2.0f * float(i) / n - 1.0f, earth_radius,
+                                      ground_albedo);
+}
+
+// Psi at point q (from the Earth's centre) with the sun towards `sun`, from the table: texel
+// centres at the table's nodes, bilinear between them.
+vec3 multiple_scattering(IN(ScatteringTable) table, vec3 q, vec3 sun, float earth_radius) {
+  float r = length(q);
+  float n = float(MULTIPLE_SCATTERING_TABLE_SIZE);
+  vec2 node = vec2(0.5f * (dot(q, sun) / r + 1.0f), clamp((r - earth_radius) / ATMOSPHERE_THICKNESS, 0.0f, 1.0f));
+  return vec3(textureLod(table, (node * (n - 1.0f) + vec2(0.5f)) / n, 0.0f));
+}
+
 // The clear-sky integral along a view ray, step by step, so that a caller may shadow the sun
 // at each sample (cloud_march.glsl: crepuscular rays). Midpoint rule in `steps` steps of ds.
 struct SkyIntegral {
@@ -80,7 +166,7 @@ SkyIntegral sky_integral_begin(vec3 d, float distance, float split, vec3 sun, in
   SkyIntegral s;
   float nu = dot(d, sun);
   s.rayleigh = rayleigh_scattering() * rayleigh_phase(nu);
-  s.mie = MIE_SCATTERING * henyey_greenstein(nu, MIE_ASYMMETRY);
+  s.mie = MIE_SCATTERING * cornette_shanks(nu, MIE_ASYMMETRY);
   s.skylight = vec3(0.0f);
   s.ds = distance / float(steps);
   s.split = split;
@@ -109,8 +195,7 @@ void sky_integral_step(INOUT(SkyIntegral) s, vec3 q, int i, vec3 sun, float eart
   // Second-order scattering, isotropic approximation: the air scatters the mean radiance around
   // it into the view whatever the phase function (its integral is 1). It keeps a cloud's shadow
   // in the air from turning black, where the sun's single scattering is gone.
-  source += (rayleigh_scattering() * exp(-h / RAYLEIGH_SCALE_HEIGHT) + vec3(MIE_SCATTERING * exp(-h / MIE_SCALE_HEIGHT))) *
-            s.skylight;
+  source += air_scattering(h) * s.skylight;
   if (!s.split_done && s0 + ds > s.split) {
     // The split falls in this step: its first part, with the step's source, goes into the
     // split values.
@@ -143,6 +228,20 @@ void sky_single_scattering(vec3 o, vec3 d, float distance, float split, vec3 sun
                            OUT(vec3) transmittance_total, OUT(vec3) transmittance_split) {
   SkyIntegral s = sky_integral_begin(d, distance, split, sun, steps);
   for (int i = 0; i < steps; ++i) sky_integral_step(s, sky_integral_point(s, o, d, i), i, sun, earth_radius, 1.0f);
+  sky_integral_end(s, inscatter_total, inscatter_split, transmittance_total, transmittance_split);
+}
+
+// The sky along a view ray as sky_single_scattering, with the multiple scattering of `table`
+// (multiple_scattering) added at each sample: the orbit view's sky.
+void sky_scattering(IN(ScatteringTable) table, vec3 o, vec3 d, float distance, float split, vec3 sun,
+                    float earth_radius, int steps, OUT(vec3) inscatter_total, OUT(vec3) inscatter_split,
+                    OUT(vec3) transmittance_total, OUT(vec3) transmittance_split) {
+  SkyIntegral s = sky_integral_begin(d, distance, split, sun, steps);
+  for (int i = 0; i < steps; ++i) {
+    vec3 q = sky_integral_point(s, o, d, i);
+    s.skylight = multiple_scattering(table, q, sun, earth_radius);
+    sky_integral_step(s, q, i, sun, earth_radius, 1.0f);
+  }
   sky_integral_end(s, inscatter_total, inscatter_split, transmittance_total, transmittance_split);
 }
 

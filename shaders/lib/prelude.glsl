@@ -15,6 +15,7 @@
 #define WeatherField sampler2DArray  // a layer per coverage channel
 #define ConvectiveVolumes sampler3D  // the convective clouds' density volumes stacked along z
 #define ShadowMaps sampler2DArray    // a layer per shadow map
+#define ScatteringTable sampler2D    // the air's multiple scattering by sun angle and altitude (atmosphere.glsl)
 // Images read with imageLoad. GLSL takes no format and no `in` on an image parameter: the
 // argument's format applies (GLSL 4.50 section 4.4.6.2), and readonly is part of the type here.
 #define CubeImage readonly imageCube         // a cube map, face = layer (cube_sampling.glsl)

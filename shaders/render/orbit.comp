@@ -2,8 +2,8 @@
 // The orbit view (docs/orbit_view.md): a textured planet, volumetric clouds whose columns follow
 // the global cover's cube map (cover, optical thickness and cloud-top height: each texel's cloud
 // a slab below its top, as thick as its type and tau make it), cloud shadows on the ground, city
-// lights on the night side and the single-scattering atmosphere of shaders/lib/atmosphere.glsl in
-// front of both.
+// lights on the night side and the atmosphere of shaders/lib/atmosphere.glsl (single scattering
+// and the table of multiple scattering) in front of both.
 // One invocation per pixel, one work group per tile of ORBIT_TILE x ORBIT_TILE pixels listed in
 // `tiles` (the tiles whose rays can meet the air: src/render/orbit_tiles.cpp, whose ORBIT_TILE is
 // this one; the host clears the others). Positions are relative to the camera: the host computes
@@ -17,6 +17,7 @@ layout(rgba32f, binding = 0) uniform writeonly image2D radiance_image;
 layout(binding = 1) uniform sampler2D day_texture;    // equirect, linear RGB, row 0 = north
 layout(binding = 2) uniform sampler2D night_texture;  // equirect, linear RGB (city lights)
 layout(binding = 3) uniform samplerCube cover_map;    // (cover, tau, cloud top km, 0), GL face convention
+layout(binding = 4) uniform sampler2D sky_table;      // the air's multiple scattering (atmosphere.glsl)
 layout(binding = 5) uniform sampler2D water_texture;  // equirect, fraction of open water (sun glint)
 layout(std430, binding = 6) readonly buffer Tiles { uvec2 tiles[]; };  // (column, row), tile units
 
@@ -347,8 +348,8 @@ void main() {
     float split = weight_sum > 0.0f ? cloud_distance - air_start : 0.0f;
     // No steps outside the air, as the ground's shadow: the branch alone skips nothing on llvmpipe.
     int sky_steps = in_air && ray_end > air_start ? u_sky_steps : 0;
-    sky_single_scattering(start, d, ray_end - air_start, split, u_sun, u_radius, sky_steps, inscatter_total,
-                          inscatter_split, transmittance_total, transmittance_split);
+    sky_scattering(sky_table, start, d, ray_end - air_start, split, u_sun, u_radius, sky_steps, inscatter_total,
+                   inscatter_split, transmittance_total, transmittance_split);
     radiance = inscatter_split + transmittance_split * cloud_light +
                cloud_transmittance * (inscatter_total - inscatter_split + transmittance_total * background);
   } else {

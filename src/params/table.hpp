@@ -172,7 +172,7 @@ constexpr unsigned render_scene_view = render_and_scene | viewer;  // also optio
 inline constexpr Parameter view = text("view", "gurten", "gurten|bantiger|orbit",
                                        "viewpoint: gurten (towards Solothurn), bantiger (towards Fribourg), or orbit "
                                        "(the planet from --lat, --lon, --altitude-km; docs/orbit_view.md)",
-                                       render_scene_view);
+                                       render_scene_view | bench_view);
 inline constexpr Parameter at =
     text("at", "", "LAT,LON,HEIGHT",
          "camera position (WGS84 degrees, degrees, metres above the ellipsoid) instead of a view", render);

@@ -15,6 +15,7 @@
 #include "gpu/textures.hpp"
 #include "params/table.hpp"
 #include "render/orbit_tiles.hpp"
+#include "render/sky_table.hpp"
 #include "render/sun_position.hpp"
 #include "shader_math/shader_math.hpp"
 
@@ -250,11 +251,13 @@ double framing_fov_deg(double altitude_m, double planet_radius_m, int width, int
 struct OrbitRenderer::Gl {
   gpu::ComputeProgram program{"render/orbit.comp"};
   GLuint day = 0, night = 0, water = 0, cover = 0;
+  GLuint sky_table = 0;  // the air's multiple scattering for the planet's radius
+  double sky_table_radius = 0;
   GLuint tiles = 0;  // the frame's tiles to draw (orbit_tiles.hpp), uvec2 each
   int day_width = 1, cover_size = 1;
   bool cover_properties = false;  // the cover has its own tau and cloud tops
   ~Gl() {
-    for (GLuint id : {day, night, water, cover})
+    for (GLuint id : {day, night, water, cover, sky_table})
       if (id != 0) glDeleteTextures(1, &id);
     if (tiles != 0) glDeleteBuffers(1, &tiles);
   }
@@ -282,13 +285,22 @@ OrbitRenderer::OrbitRenderer(const PlanetImages& planet, const CoverCube& cover,
   gl_->cover = cover_texture(cover);
   gl_->cover_size = cover.size;
   gl_->cover_properties = !cover.optical_thickness.empty();
+  update_sky_table();
 }
 
 OrbitRenderer::~OrbitRenderer() = default;
 
+void OrbitRenderer::update_sky_table() {
+  if (gl_->sky_table != 0 && gl_->sky_table_radius == settings_.planet_radius_m) return;
+  if (gl_->sky_table != 0) glDeleteTextures(1, &gl_->sky_table);
+  gl_->sky_table = multiple_scattering_texture(static_cast<float>(settings_.planet_radius_m), kPlanetAlbedo);
+  gl_->sky_table_radius = settings_.planet_radius_m;
+}
+
 void OrbitRenderer::set_settings(const OrbitSettings& settings) {
   check_settings(settings);
   settings_ = settings;
+  update_sky_table();
 }
 
 void OrbitRenderer::set_cover(const CoverCube& cover) {
@@ -372,6 +384,7 @@ double OrbitRenderer::render_tiles(const OrbitCamera& camera, double unix_second
     glBindTextureUnit(orbit::night_texture, gl_->night);
     glBindTextureUnit(orbit::water_texture, gl_->water);
     glBindTextureUnit(orbit::cover_map, gl_->cover);
+    glBindTextureUnit(orbit::sky_table, gl_->sky_table);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, orbit::tiles, gl_->tiles);
     // A work group per tile, in rows of at most 65535 groups (the dispatch's per-axis minimum).
     const GLuint count = GLuint(tiles.size()), per_row = std::min<GLuint>(count, 65535u);
@@ -381,14 +394,14 @@ double OrbitRenderer::render_tiles(const OrbitCamera& camera, double unix_second
   });
 }
 
-RenderResult OrbitRenderer::render(const OrbitCamera& camera, double unix_seconds) const {
+RenderResult OrbitRenderer::render(const OrbitCamera& camera, double unix_seconds, int first_row, int row_count) const {
   check_camera(camera);
   RenderResult result;
   const OrbitSettings& s = settings_;
   result.sun_direction =
       sun_direction_enu(unix_seconds, camera.latitude_deg, camera.longitude_deg, &result.sun_elevation_deg);
   gpu::Texture image = gpu::Texture::plane(camera.width, camera.height, GL_RGBA32F);
-  const std::vector<glm::uvec2> tiles = tiles_in_air(camera);
+  const std::vector<glm::uvec2> tiles = tiles_in_rows(tiles_in_air(camera), first_row, row_count);
   const glm::ivec2 grid = tile_grid(camera.width, camera.height);
   result.timings_ms.emplace_back("orbit", render_tiles(camera, unix_seconds, image.id(), tiles));
   result.passes = {"orbit: " + std::to_string(tiles.size()) + " of " + std::to_string(grid.x * grid.y) +

@@ -99,8 +99,10 @@ class OrbitRenderer {
   OrbitRenderer& operator=(const OrbitRenderer&) = delete;
 
   // One frame: RGBA float linear radiance (A = cloud opacity), the passes and their times, the
-  // sun at the sub-camera point. Throws std::invalid_argument for a camera out of range.
-  RenderResult render(const OrbitCamera& camera, double unix_seconds) const;
+  // sun at the sub-camera point. Throws std::invalid_argument for a camera out of range. With
+  // row_count > 0 only the tiles that hold rows [first_row, first_row + row_count) are drawn (a
+  // band of the viewer's refinement); the other rows are 0.
+  RenderResult render(const OrbitCamera& camera, double unix_seconds, int first_row = 0, int row_count = 0) const;
   // The same frame into a texture the caller owns (GL_RGBA32F, 2D, at least camera.width x
   // camera.height; a window viewer draws it without reading it back). Returns milliseconds.
   // Only the tiles whose rays can meet the air are drawn (tiles_in_air); the rest of the
@@ -116,6 +118,7 @@ class OrbitRenderer {
   void set_cover(const CoverCube& cover);            // a new cover (e.g. regenerated), same checks
 
  private:
+  void update_sky_table();  // makes the multiple-scattering table anew when the radius changed
   struct Gl;
   std::unique_ptr<Gl> gl_;
   OrbitSettings settings_;

@@ -63,4 +63,14 @@ std::vector<glm::uvec2> tiles_meeting_sphere(const TileView& view, double radius
   return tiles;
 }
 
+std::vector<glm::uvec2> tiles_in_rows(const std::vector<glm::uvec2>& tiles, int first_row, int row_count) {
+  if (row_count <= 0) return tiles;
+  std::vector<glm::uvec2> kept;
+  for (const glm::uvec2& tile : tiles) {
+    const int top = int(tile.y) * ORBIT_TILE;
+    if (top < first_row + row_count && top + ORBIT_TILE > first_row) kept.push_back(tile);
+  }
+  return kept;
+}
+
 }  // namespace nephele::render

@@ -39,4 +39,8 @@ std::vector<glm::uvec2> tiles_meeting_sphere(const TileView& view, double radius
 // Every tile of a width x height image (the whole frame), in row order.
 std::vector<glm::uvec2> all_tiles(int width, int height);
 
+// The tiles of `tiles` that hold a pixel of the image rows [first_row, first_row + row_count)
+// (a band of the viewer's refinement), in their order; all of them when row_count is 0.
+std::vector<glm::uvec2> tiles_in_rows(const std::vector<glm::uvec2>& tiles, int first_row, int row_count);
+
 }  // namespace nephele::render

@@ -88,6 +88,18 @@ struct DensitySource {
 using DensityVolume = DensitySource;
 inline vec4 texture(IN(DensitySource) density, vec3 uvw) { return vec4(density.sample(uvw)); }
 
+// A small 2D table of vec4 in host memory (atmosphere.glsl's ScatteringTable): texels[row * width
+// + column], rows from t = 0, sampled as GLSL's textureLod() at level 0 with GL_LINEAR filtering
+// and GL_CLAMP_TO_EDGE wrapping.
+struct TableSource {
+  int width = 0;
+  int height = 0;
+  const vec4* texels = nullptr;
+  vec4 sample(vec2 uv) const;
+};
+using ScatteringTable = TableSource;
+inline vec4 textureLod(IN(TableSource) table, vec2 uv, float) { return table.sample(uv); }
+
 // The convective clouds' density volumes (cloud_march.glsl's ConvectiveVolumes): `count`
 // volumes of size^3 floats one after the other, as the z-layers of one 3D texture of size x size
 // x (count size) on the GPU. texture() samples the stack with GL_LINEAR and GL_CLAMP_TO_EDGE; the

@@ -75,6 +75,13 @@ float LayeredSource::sample(vec2 uv, int layer) const {
               ty.weight);
 }
 
+vec4 TableSource::sample(vec2 uv) const {
+  const Taps tx = clamp_taps(uv.x, width), ty = clamp_taps(uv.y, height);
+  auto at = [&](int i, int j) { return texels[static_cast<size_t>(j) * width + i]; };
+  return lerp(lerp(at(tx.i0, ty.i0), at(tx.i1, ty.i0), tx.weight), lerp(at(tx.i0, ty.i1), at(tx.i1, ty.i1), tx.weight),
+              ty.weight);
+}
+
 float DensitySource::sample(vec3 uvw) const {
   auto at = [&](int i, int j, int k) { return values[(static_cast<size_t>(k) * size + j) * size + i]; };
   return trilinear(at, clamp_taps(uvw.x, size), clamp_taps(uvw.y, size), clamp_taps(uvw.z, size));

@@ -1,5 +1,6 @@
 // Probe of lib/atmosphere.glsl (shared GLSL/C++ subset; tests/test_library_probes.cpp).
-// Lengths in metres; x[0] = (function, earth radius, a, b), x[1..3] points and directions.
+// Lengths in metres; x[0] = (function, earth radius, a, b), x[1..3] points and directions. The
+// GLSL side reads the multiple-scattering table bound to texture unit 4.
 // The functions (x[0].x):
 const int PROBE_RAYLEIGH = 0;  // rayleigh_scattering, rayleigh_phase
 const int PROBE_SUN_AND_HENYEY_GREENSTEIN = 1;  // solar_irradiance, henyey_greenstein
@@ -9,16 +10,32 @@ const int PROBE_SKY_SINGLE_SCATTERING = 4;
 const int PROBE_SKY_INTEGRAL_STEPS = 5;  // sky_integral_begin, _point, _step, _end
 const int PROBE_SKYLIGHT = 6;  // the integral with the sun hidden and the skylight x[0].w (grey)
 const int PROBE_SKY_AMBIENT = 7;  // sky_ambient(x[1], x[2])
+const int PROBE_OZONE = 8;  // ozone_absorption (scaled by 1e6), ozone_density(a)
+const int PROBE_AIR_SCATTERING_AND_CORNETTE_SHANKS = 9;  // air_scattering(a) (1e5), cornette_shanks(x[1].x, x[1].y)
+const int PROBE_MULTIPLE_SCATTERING_TRANSFER = 10;  // at altitude a, sun cosine b, albedo x[1].x (1e3)
+const int PROBE_MULTIPLE_SCATTERING_TABLE_ENTRY = 11;  // texel (a, b), albedo x[1].x (1e3)
+const int PROBE_MULTIPLE_SCATTERING = 12;  // the table at point x[1], sun x[2] (1e3)
+const int PROBE_SKY_SCATTERING = 13;  // sky_scattering as PROBE_SKY_SINGLE_SCATTERING
 #ifndef __cplusplus
+layout(binding = 4) uniform sampler2D probe_sky_table;
 #include "../lib/atmosphere.glsl"
 #endif
-vec4 probe_atmosphere(mat4 x) {
+vec4 probe_atmosphere(mat4 x, IN(ScatteringTable) table) {
   int f = int(x[0].x);
   float earth_radius = x[0].y;
   if (f == PROBE_RAYLEIGH) return vec4(rayleigh_scattering() * 1.0e5f, rayleigh_phase(x[0].z));
   if (f == PROBE_SUN_AND_HENYEY_GREENSTEIN) return vec4(solar_irradiance(), henyey_greenstein(x[0].z, x[0].w));
   if (f == PROBE_SKY_AMBIENT) return vec4(sky_ambient(vec3(x[1]), vec3(x[2])), 0.0f);
   if (f == PROBE_AIR_EXTINCTION) return vec4(air_extinction(x[0].z) * 1.0e5f, 0.0f);
+  if (f == PROBE_OZONE) return vec4(ozone_absorption() * 1.0e6f, ozone_density(x[0].z));
+  if (f == PROBE_AIR_SCATTERING_AND_CORNETTE_SHANKS)
+    return vec4(air_scattering(x[0].z) * 1.0e5f, cornette_shanks(x[1].x, x[1].y));
+  if (f == PROBE_MULTIPLE_SCATTERING_TRANSFER)
+    return vec4(multiple_scattering_transfer(x[0].z, x[0].w, earth_radius, x[1].x) * 1.0e3f, 0.0f);
+  if (f == PROBE_MULTIPLE_SCATTERING_TABLE_ENTRY)
+    return vec4(multiple_scattering_table_entry(int(x[0].z), int(x[0].w), earth_radius, x[1].x) * 1.0e3f, 0.0f);
+  if (f == PROBE_MULTIPLE_SCATTERING)
+    return vec4(multiple_scattering(table, vec3(x[1]), vec3(x[2]), earth_radius) * 1.0e3f, 0.0f);
   if (f == PROBE_TRANSMITTANCE_TO_SPACE)
     return vec4(transmittance_to_space(vec3(x[1]), vec3(x[2]), earth_radius), 0.0f);
   if (f == PROBE_SKY_INTEGRAL_STEPS) {
@@ -48,15 +65,23 @@ vec4 probe_atmosphere(mat4 x) {
   // PROBE_SKY_SINGLE_SCATTERING: sky_single_scattering from x[1] along x[2] over x[1].w metres
   // (split at x[2].w) towards the sun x[3] with int(x[3].w) steps; x[0].z picks which of its four
   // results to return (radiances scaled by 1e3 to order one).
+  // PROBE_SKY_SCATTERING: the same with the table's multiple scattering.
   vec3 inscatter_total;
   vec3 inscatter_split;
   vec3 transmittance_total;
   vec3 transmittance_split;
-  sky_single_scattering(vec3(x[1]), vec3(x[2]), x[1].w, x[2].w, vec3(x[3]), earth_radius, int(x[3].w),
-                        inscatter_total, inscatter_split, transmittance_total, transmittance_split);
+  if (f == PROBE_SKY_SCATTERING)
+    sky_scattering(table, vec3(x[1]), vec3(x[2]), x[1].w, x[2].w, vec3(x[3]), earth_radius, int(x[3].w),
+                   inscatter_total, inscatter_split, transmittance_total, transmittance_split);
+  else
+    sky_single_scattering(vec3(x[1]), vec3(x[2]), x[1].w, x[2].w, vec3(x[3]), earth_radius, int(x[3].w),
+                          inscatter_total, inscatter_split, transmittance_total, transmittance_split);
   int part = int(x[0].z);
   if (part == 0) return vec4(inscatter_total * 1.0e3f, 0.0f);
   if (part == 1) return vec4(inscatter_split * 1.0e3f, 0.0f);
   if (part == 2) return vec4(transmittance_total, 0.0f);
   return vec4(transmittance_split, 0.0f);
 }
+#ifndef __cplusplus
+vec4 probe_atmosphere(mat4 x) { return probe_atmosphere(x, probe_sky_table); }
+#endif

@@ -451,6 +451,25 @@ TEST_CASE("nephele view COVER_DIR --record DIR --frames N shows a generated cove
     CHECK(image.height == 27);
   }
   CHECK_FALSE(std::filesystem::exists(frames / "frame_000003.png"));
+  // --view orbit: the planet from 2000 km, looking down. Its disc's angular radius is
+  // asin(6371 / 8371) = 49.6 degrees (50.3 with the air), and with 100 degrees across the corner
+  // pixels look 53 degrees off the centre: black space in the corners, a lit centre (16:00 UTC
+  // over Bern, the default time), where the ground view would show sky above and ground below.
+  const auto orbit_frames = out.path / "orbit";
+  const auto orbit =
+      test::run("view " + cover.string() + " --view orbit --fov 100 --size 48x27 --frames 1 --no-cache " + "--record " +
+                orbit_frames.string());
+  INFO(orbit.output);
+  REQUIRE(orbit.exit_code == 0);
+  const core::ImageData planet = files::read_image(orbit_frames / "frame_000000.png");
+  REQUIRE(planet.width == 48);
+  auto grey = [&](int x, int y) {
+    const size_t k = (static_cast<size_t>(y) * planet.width + x) * planet.channels;
+    return (planet.pixels[k] + planet.pixels[k + 1] + planet.pixels[k + 2]) / 3.0f;
+  };
+  CHECK(grey(0, 0) == 0.0f);
+  CHECK(grey(47, 0) == 0.0f);
+  CHECK(grey(24, 13) > 0.1f);
   // A directory that is not a cover is bad input naming COVER_DIR.
   const auto bad = test::run("view " + out.path.string() + " --size 48x27 --frames 1 --no-cache");
   CHECK(bad.exit_code == 2);

@@ -103,7 +103,8 @@ render::RenderResult GroundSource::render(const ViewState& state, int width, int
 OrbitSource::OrbitSource(const std::filesystem::path& cover_dir) : cover_dir_(cover_dir) {}
 OrbitSource::~OrbitSource() = default;
 
-render::RenderResult OrbitSource::render(const ViewState& state, int width, int height, int, int, bool) {
+render::RenderResult OrbitSource::render(const ViewState& state, int width, int height, int first_row, int row_count,
+                                         bool) {
   std::vector<std::pair<std::string, double>> setup_ms;
   // The cover: the files once, or made again when the panels change its parameters.
   const std::string key = cover_dir_.empty() ? cover_key(cover_of(state)) : cover_dir_.string();
@@ -137,7 +138,7 @@ render::RenderResult OrbitSource::render(const ViewState& state, int width, int 
   camera.altitude_m = std::clamp(state.camera.height_m, 1.0, params::scene::altitude_km.max * 1000.0);
   camera.width = width;
   camera.height = height;
-  render::RenderResult result = renderer_->render(camera, core::parse_utc_time(state.time));
+  render::RenderResult result = renderer_->render(camera, core::parse_utc_time(state.time), first_row, row_count);
   result.timings_ms.insert(result.timings_ms.begin(), setup_ms.begin(), setup_ms.end());
   return result;
 }

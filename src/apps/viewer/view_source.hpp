@@ -89,7 +89,8 @@ class OrbitSource : public ViewSource {
   explicit OrbitSource(const std::filesystem::path& cover_dir);
   ~OrbitSource() override;
   std::string name() const override { return "orbit"; }
-  // Renders the whole image (the orbit view has no bands; `first_row`, `row_count` are ignored).
+  // Renders the tiles that hold rows [first_row, first_row + row_count) (all with row_count 0);
+  // `coarse` is ignored (the orbit pass's steps follow the pixel's footprint).
   render::RenderResult render(const ViewState& state, int width, int height, int first_row = 0, int row_count = 0,
                               bool coarse = false) override;
 
@@ -101,7 +102,7 @@ class OrbitSource : public ViewSource {
 
 // The view nephele view shows: the orbit renderer where orbit_share(state) is 1, the ground's
 // where it is 0, and between (12 to 20 km) both with their radiance mixed by the share. In
-// that band a frame costs both renders (the orbit one whole for each band of rows).
+// that band a frame costs both renders.
 class ViewSwitch : public ViewSource {
  public:
   ViewSwitch(const std::filesystem::path& cover_dir, const std::filesystem::path& cache_directory);

@@ -1,0 +1,45 @@
+#include "render/sky_table.hpp"
+
+#include "core/parallel_rows.hpp"
+#include "gpu/compute_program.hpp"
+#include "gpu/shader_bindings.hpp"
+#include "gpu/textures.hpp"
+
+namespace nephele::render {
+
+std::vector<glsl::vec4> multiple_scattering_table(float earth_radius, float ground_albedo) {
+  const int n = glsl::MULTIPLE_SCATTERING_TABLE_SIZE;
+  std::vector<glsl::vec4> table(static_cast<size_t>(n) * n);
+  // 1024 texels of 64 directions x 20 steps each: about 0.4 s on two cores.
+  core::parallel_rows(n, [&](int begin, int end) {
+    for (int j = begin; j < end; ++j) {
+      for (int i = 0; i < n; ++i) {
+        table[static_cast<size_t>(j) * n + i] =
+            glsl::vec4(glsl::multiple_scattering_table_entry(i, j, earth_radius, ground_albedo), 1.0f);
+      }
+    }
+  });
+  return table;
+}
+
+GLuint multiple_scattering_texture(float earth_radius, float ground_albedo) {
+  const int n = glsl::MULTIPLE_SCATTERING_TABLE_SIZE;
+  GLuint id = 0;
+  glCreateTextures(GL_TEXTURE_2D, 1, &id);
+  glTextureStorage2D(id, 1, GL_RGBA32F, n, n);
+  glTextureParameteri(id, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTextureParameteri(id, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTextureParameteri(id, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTextureParameteri(id, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  const gpu::ComputeProgram program("render/sky_table.comp");
+  program.use();
+  program.set("u_radius", earth_radius);
+  program.set("u_ground_albedo", ground_albedo);
+  glBindImageTexture(shader_bindings::render_sky_table::table_image, id, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+  program.dispatch_covering(n, n, 1);
+  gpu::image_barrier();
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+  return id;
+}
+
+}  // namespace nephele::render
