@@ -11,6 +11,7 @@
 
 #include "case_tags.hpp"
 #include "cli_support.hpp"
+#include "core/json.hpp"
 #include "core/time.hpp"
 #include "cover/global_cover.hpp"
 #include "gl_support.hpp"
@@ -19,6 +20,7 @@
 #include "io/planet_textures.hpp"
 #include "gpu/compute_program.hpp"
 #include "gpu/textures.hpp"
+#include "render/exposure.hpp"
 #include "render/orbit_renderer.hpp"
 #include "render/orbit_tiles.hpp"
 #include "shader_math/shader_math.hpp"
@@ -552,6 +554,19 @@ TEST_CASE("render --view orbit writes the image and refuses bad values naming th
   CHECK(ok.exit_code == 0);
   CHECK(std::filesystem::exists(file));
   CHECK(std::filesystem::exists(out.path / "orbit.json"));
+  // Without --exposure the frame is metered: an exposure within a factor 4 of the usual 2.5; with
+  // it, the one given.
+  const json::Value metered = json::parse(test::read_file(out.path / "orbit.json"));
+  CHECK(metered.at("metering").as_string() == "highlights");
+  CHECK(metered.at("exposure").as_number() >= 0.625);
+  CHECK(metered.at("exposure").as_number() <= 10.0);
+  REQUIRE(
+      test::run("render --view orbit --lat 10 --lon 20 --altitude-km 5000 --size 32x18 --exposure 3 --quiet --out " +
+                file)
+          .exit_code == 0);
+  const json::Value given = json::parse(test::read_file(out.path / "orbit.json"));
+  CHECK(given.at("metering").as_string() == "given");
+  CHECK(given.at("exposure").as_number() == 3.0);
   const std::vector<std::pair<std::string, std::string>> bad = {
       {"--altitude-km 0", "--altitude-km"},
       {"--altitude-km 50000", "--altitude-km"},
@@ -871,4 +886,23 @@ TEST_CASE("orbit tiles: a band of rows keeps the tiles that hold one of its rows
   CHECK(rows_of(render::tiles_in_rows(every, 8, 8)) == std::vector<unsigned>{1});
   CHECK(rows_of(render::tiles_in_rows(every, 29, 1)) == std::vector<unsigned>{3});
   CHECK(render::tiles_in_rows(every, 8, 8).size() == 5);
+}
+
+TEST_CASE("orbit metering: the lit pixels' 99th luminance percentile goes to the filmic curve's x = 1",
+          "[fast][orbit]") {
+  // 1000 lit pixels of luminance 0.001 k (grey: R = G = B) and 500 black ones (space).
+  core::ImageData image{1500, 1, 4, std::vector<float>(6000, 0.0f)};
+  for (int k = 1; k <= 1000; ++k)
+    for (int c = 0; c < 3; ++c) image.pixels[size_t(k - 1) * 4 + c] = 0.001f * float(k);
+  // The element at 0.99 (n - 1) = 989 of the sorted lit luminances: 0.990 (weights sum to 1).
+  CHECK(render::highlight_exposure(image, 2.5) == Approx(1.0 / 0.990).epsilon(1e-6));
+  // Clamped to a factor 4 around the usual: a dim frame (night, a few faint clouds) ...
+  for (float& v : image.pixels) v *= 0.01f;
+  CHECK(render::highlight_exposure(image, 2.5) == Approx(10.0));
+  // ... and a bright one.
+  for (float& v : image.pixels) v *= 1e4f;
+  CHECK(render::highlight_exposure(image, 2.5) == Approx(0.625));
+  // Nothing lit: the usual.
+  const core::ImageData space{4, 4, 4, std::vector<float>(64, 0.0f)};
+  CHECK(render::highlight_exposure(space, 2.5) == 2.5);
 }

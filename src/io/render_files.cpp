@@ -153,6 +153,7 @@ json::Value orbit_sidecar(const render::RenderResult& result, const OrbitRecord&
   root.set("water_mask", record.water);
   root.set("cover", record.cover);
   root.set("exposure", record.exposure);
+  root.set("metering", record.metering);
   return root;
 }
 

@@ -36,6 +36,8 @@ struct OrbitRecord {
   std::string earth_texture, night_texture, cover;  // where each came from
   std::string water = "none";                       // the sun glint's water mask: ETOPO5's file, "procedural" or "none"
   double exposure = 1;
+  // How the exposure was chosen: "given" (--exposure) or "highlights" (render::highlight_exposure).
+  std::string metering = "given";
 };
 json::Value orbit_sidecar(const render::RenderResult& result, const OrbitRecord& record);
 

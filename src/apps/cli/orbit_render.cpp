@@ -21,6 +21,7 @@
 #include "io/render_files.hpp"
 #include "params/table.hpp"
 #include "regional/scene.hpp"
+#include "render/exposure.hpp"
 #include "render/orbit_renderer.hpp"
 #include "render/render_limits.hpp"
 #include "render/scene_renderer.hpp"
@@ -148,7 +149,9 @@ int run_orbit_render(const OrbitOptions& orbit) {
   record.night_texture = textures.night_source;
   record.water = textures.water_source;
   record.cover = cover_source;
-  record.exposure = orbit.exposure;
+  record.exposure =
+      orbit.exposure ? *orbit.exposure : render::highlight_exposure(result.radiance, orbit_default_exposure);
+  record.metering = orbit.exposure ? "given" : "highlights";
   io::write_orbit_outputs(result, record, out);
   progress.finish();
   if (orbit.verbose) {

@@ -11,7 +11,8 @@
 
 namespace nephele::cli {
 
-// --exposure of the orbit view when none is given.
+// The orbit view's usual exposure: the metering's centre (render::highlight_exposure keeps
+// within a factor 4 of it), and the viewer's.
 constexpr double orbit_default_exposure = 2.5;
 
 struct OrbitOptions {
@@ -23,7 +24,7 @@ struct OrbitOptions {
   std::optional<double> heading, pitch, fov;
   std::uint32_t seed = 1;
   std::string flow{params::cover::flow.default_text};  // the generated cover's (without --cover)
-  double exposure = 4;
+  std::optional<double> exposure;                      // --exposure; without it metered (render::highlight_exposure)
   bool verbose = false, quiet = false;
 };
 

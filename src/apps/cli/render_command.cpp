@@ -100,8 +100,8 @@ int run_render(const std::vector<std::string>& arguments) {
         throw UsageError("--flow: the flow of a generated cover; --cover " + orbit.cover + " gives the cover");
       orbit.flow = scene_options.flow();
     }
-    // Clouds seen from above reflect most of the sunlight: a lower default exposure than the ground views'.
-    orbit.exposure = options.given(s::exposure) ? scene_options.exposure() : orbit_default_exposure;
+    // Without --exposure the frame is metered for its highlights (render::highlight_exposure).
+    if (options.given(s::exposure)) orbit.exposure = scene_options.exposure();
     orbit.verbose = verbose;
     orbit.quiet = quiet;
     if (options.given(s::heading)) orbit.heading = scene_options.heading();
