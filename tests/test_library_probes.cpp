@@ -485,6 +485,11 @@ TEST_CASE("weather_systems.glsl on the GPU agrees with the CPU", "[probe]") {
                      cells});
     cases.push_back(
         {arguments(PROBE_CELL_WEIGHTS, vec4(r(0.0f, 1.0f), r(0.0f, 1.0f), r(1e-4f, 0.02f), 0)), kArithmetic * 16});
+    // Pockets: cell_clouds at 12 cells a radius (within the cell clouds' tolerance above) through
+    // a smoothstep of slope 1.5 / 0.4; the weights move by it times a weight below 1.
+    cases.push_back(
+        {arguments(PROBE_POCKETS, vec4(r(0.0f, 1.0f), seed, 0, r(0.0f, 1.0f)), vec4(k % 2 ? q : deck_point, 0)),
+         3.75f * 12.5f * 50 * kFbm});
     // Each pattern's part of the modulation: the pattern's rounding (cells) times its contrast and
     // weight, both below 1; texels from 1e-4 to 4e-3 rad take the fade (cells_resolved) from full
     // to nothing.

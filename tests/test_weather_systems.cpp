@@ -488,3 +488,43 @@ TEST_CASE("decks are closed cells in their cores and open at their fringes and i
   CHECK(glsl::cold_sector(vec2(-1.5f, 0.5f)) == 0.0f);        // poleward of the low
   CHECK(glsl::cold_sector(vec2(-0.4f, -0.4f)) == 0.0f);       // the head's hook
 }
+
+TEST_CASE("pockets of open cells are separate, sharp and larger than 1e4 km2, and turn closed cells open",
+          "[fast][systems]") {
+  // A patch 7600 km square at 22 degrees, 240 x 240 points (32 km apart).
+  const int n = 240;
+  const float half = 0.6f, radius_km = 6371.0f;
+  const double pixel_km2 = std::pow(2.0 * half * radius_km / n, 2.0);
+  const auto points = patch(vec3(std::cos(0.384f), 0.0f, std::sin(0.384f)), half, n);
+  std::vector<bool> inside(points.size());
+  int partial = 0;
+  for (size_t k = 0; k < points.size(); ++k) {
+    const float pocket = glsl::open_cell_pockets(points[k], 1u);
+    inside[k] = pocket > 0.5f;
+    partial += pocket > 0.05f && pocket < 0.95f ? 1 : 0;
+  }
+  const auto parts = components(inside, n);
+  const double share = double(std::count(inside.begin(), inside.end(), true)) / double(points.size());
+  INFO("pockets " << parts.sizes.size() << " (" << parts.inside << " inside), share " << share << ", partial "
+                  << double(partial) / double(points.size()));
+  // Pockets some 530 km apart at half of the places: tens of them, on a few percent of the area.
+  CHECK(parts.inside >= 20);
+  CHECK(share > 0.03);
+  CHECK(share < 0.3);
+  // Pockets are larger than 1e4 km^2 (Smalley et al. 2022); the frayed borders break off a few
+  // small fragments, which must hold little of the pockets' area.
+  long small_area = 0, area = 0;
+  for (int size : parts.sizes) {
+    area += size;
+    small_area += size * pixel_km2 < 1.0e4 ? size : 0;
+  }
+  INFO("area below 1e4 km2: " << small_area << " of " << area << " points");
+  CHECK(small_area * 10 <= area);
+  // Sharp: the border's ramp (a tenth of a pocket) holds far fewer points than the pockets.
+  CHECK(double(partial) / double(points.size()) < 0.5 * share);
+  // In a pocket the deck's closed cells are open ones, outside it they stay.
+  const glsl::vec2 in_pocket = glsl::with_pockets(glsl::vec2(0.8f, 0.1f), 1.0f);
+  CHECK(in_pocket.x == 0.0f);
+  CHECK(in_pocket.y == Approx(0.9f));
+  CHECK(glsl::with_pockets(glsl::vec2(0.8f, 0.1f), 0.0f) == glsl::vec2(0.8f, 0.1f));
+}

@@ -67,6 +67,13 @@ vec2 cells_at(vec3 origin, uint seed, float surface, float cold, float texel_arc
   float deck = deck_strength(origin, portable_asin(clamp(origin.z, -1.0f, 1.0f)), seed, surface, u_surface_weight);
   vec2 weights = cell_weights(deck, cold);
   float m = 0.0f;
+#if OPEN_CELLS_DRAWN
+  // Pockets of open cells in the decks' closed cores, thinner than the deck (without the open
+  // pattern they draw nothing).
+  float pocket = open_cell_pockets(origin, seed);
+  m -= POCKET_THINNING * pocket * weights.x;
+  weights = with_pockets(weights, pocket);
+#endif
 #if CLOSED_CELLS_DRAWN
   m += closed_cell_modulation(origin, weights.x, seed, texel_arc);
 #endif

@@ -329,6 +329,29 @@ vec2 cell_weights(float deck, float cold) {
   return vec2(closed, max(present - closed, cold));
 }
 
+// Pockets of open cells (Stevens et al. 2005, "Pockets of open cells and drizzle in marine
+// stratocumulus", BAMS 86): regions of open cells inside a closed deck, sharply bordered, with
+// cell interiors depleted of cloud water or clear, long-lived and larger than 1e4 km^2 (Smalley
+// et al. 2022, "A Lagrangian analysis of pockets of open cells over the southeastern Pacific",
+// ACP 22). Here the places where gradient noise of 8 cells per radius (a wavelength of about 800
+// km), frayed by a quarter as much of 32, exceeds 1.65 deviations: irregular pockets a few
+// hundred km across on about 5 % of the sphere; 1 inside, 0 outside, the step a tenth of a
+// deviation wide. Inside, the deck's closed weight goes to the open cells (with_pockets) and the
+// density thins by POCKET_THINNING of it, so the pockets are darker than the deck around them.
+const uint POCKETS_LAYER = 20u;  // and 21 (the borders' noise)
+const float POCKET_THINNING = 0.2f;
+float open_cell_pockets(vec3 p, uint seed) {
+  float n = perlin_noise(p * 8.0f, ivec3(0), noise_key(seed, POCKETS_LAYER)) +
+            0.25f * perlin_noise(p * 32.0f, ivec3(0), noise_key(seed, POCKETS_LAYER + 1u));
+  float threshold = 1.65f * PERLIN_OCTAVE_SIGMA * 1.0308f;  // the sum's deviation: sqrt(1 + 1/16)
+  return smoothstep(threshold - 0.05f * PERLIN_OCTAVE_SIGMA, threshold + 0.05f * PERLIN_OCTAVE_SIGMA, n);
+}
+
+// The cell weights (closed, open) with the closed cells of a pocket (share `pocket`) turned open.
+vec2 with_pockets(vec2 weights, float pocket) {
+  return vec2(weights.x * (1.0f - pocket), min(1.0f, weights.y + weights.x * pocket));
+}
+
 // The cells' modulation of the density at p, zero on average over a region of one weight: the
 // closed and the open pattern less their means, by their weights, faded out where the cover's
 // texels (texel_arc radians) do not resolve them.
