@@ -37,8 +37,7 @@ GLuint multiple_scattering_texture(float earth_radius, float ground_albedo) {
   program.set("u_ground_albedo", ground_albedo);
   glBindImageTexture(shader_bindings::render_sky_table::table_image, id, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
   program.dispatch_covering(n, n, 1);
-  gpu::image_barrier();
-  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+  gpu::image_barrier();  // includes the texture fetches of the orbit pass that reads it
   return id;
 }
 
