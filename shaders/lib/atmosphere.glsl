@@ -115,10 +115,11 @@ vec3 multiple_scattering_transfer(float h, float mu_sun, float earth_radius, flo
       float hq = length(q) - earth_radius;
       vec3 extinction = max(air_extinction(hq), vec3(1.0e-12f));
       vec3 scattering = air_scattering(hq);
-      vec3 step_share = (vec3(1.0f) - exp(-extinction * ds)) / extinction;
+      vec3 step_transmittance = exp(-extinction * ds);
+      vec3 step_share = (vec3(1.0f) - step_transmittance) / extinction;
       light += transmittance * scattering * transmittance_to_space(q, sun, earth_radius) * step_share / (4.0f * PI_F);
       transfer += transmittance * scattering * step_share / float(rings * rings);
-      transmittance *= exp(-extinction * ds);
+      transmittance *= step_transmittance;
     }
     if (meets_ground) {
       vec3 g = x + (ds * float(steps)) * w;
