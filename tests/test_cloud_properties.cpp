@@ -80,19 +80,26 @@ TEST_CASE("cloud tops follow the cloud type: decks low, fronts middle, cirrus hi
   const float deg = static_cast<float>(M_PI / 180.0);
   CHECK(glsl::tropopause_km(0.0f) == Approx(16.0f));
   CHECK(glsl::tropopause_km(90.0f * deg) == Approx(9.0f).margin(1e-5));
-  CHECK(top(0, 0, 0, 0, 45 * deg, 0, 0) == Approx(3.0f));                                  // unorganised layer cloud
-  CHECK(top(0, 0, 0, 0, 20 * deg, 0, 0) == Approx(2.0f));                                  // under the trade inversion
-  CHECK(top(0, 0, 0, 0, 20 * deg, 0, 1) == Approx(1.5f));                                  // a stratocumulus deck
-  CHECK(top(0, 0, 0, 0, 50 * deg, 0.6f, 0) == Approx(6.0f));                               // lifted in a cyclone
+  CHECK(top(0, 0, 0, 0, 45 * deg, 0, 0) == Approx(2.0f));  // boundary-layer cloud
+  CHECK(top(0, 0, 0, 0, 20 * deg, 0, 0) == Approx(2.0f));  // under the trade inversion
+  CHECK(top(0, 0, 0, 0, 20 * deg, 0, 1) == Approx(1.5f));  // a stratocumulus deck
+  // The cyclones' ascent deepens it: to the cirrus level at the deepest, ISCCP's middle class
+  // (3.2-6.5 km) half way.
+  CHECK(top(0, 0, 0, 0, 50 * deg, glsl::ASCENT_ONSET, 0) == Approx(2.0f));
+  CHECK(top(0, 0, 0, 0, 50 * deg, 0.6f, 0) == Approx(glsl::tropopause_km(50 * deg) - 2.0f));
+  const float half_way = top(0, 0, 0, 0, 50 * deg, 0.5f * (glsl::ASCENT_ONSET + glsl::ASCENT_FULL), 0);
+  CHECK(half_way == Approx(0.5f * (2.0f + glsl::tropopause_km(50 * deg) - 2.0f)));
+  CHECK(half_way > 3.2f);
+  CHECK(half_way < 6.5f);
   CHECK(top(0, 0, 1, 0, 15 * deg, 0, 0) == Approx(2.0f));                                  // trade cumulus
   CHECK(top(1, 0, 0, 0, 50 * deg, 0, 0) == Approx(8.0f));                                  // the comma's shield
   CHECK(top(0, 1, 0, 0, 5 * deg, 0, 0) == Approx(glsl::tropopause_km(5 * deg) - 1.0f));    // anvils
   CHECK(top(0, 0, 0, 1, 50 * deg, 0, 0) == Approx(glsl::tropopause_km(50 * deg) - 2.0f));  // cirrus
   // A system over lower cloud shows its own top where it is whole, and the higher type wins.
   CHECK(top(1, 0, 0, 1, 50 * deg, 0, 0) == Approx(glsl::tropopause_km(50 * deg) - 2.0f));
-  CHECK(top(0.5f, 0, 0, 0, 50 * deg, 0, 0) == Approx(5.5f));
+  CHECK(top(0.5f, 0, 0, 0, 50 * deg, 0, 0) == Approx(5.0f));
   CHECK(glsl::cloud_top_from_cover(0.0f, 0.0f) == 0.0f);
-  CHECK(glsl::cloud_top_from_cover(0.5f, 45 * deg) == Approx(3.0f));
+  CHECK(glsl::cloud_top_from_cover(0.5f, 45 * deg) == Approx(2.0f));
   CHECK(glsl::cloud_top_from_cover(1.0f, 45 * deg) == Approx(8.0f));
 }
 

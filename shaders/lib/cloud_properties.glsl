@@ -76,29 +76,38 @@ float tropopause_km(float latitude) {
 // about 3.2 km; middle 680-440 hPa, to 6.5 km; high above) and the types' typical tops:
 const float TOP_STRATOCUMULUS_KM = 1.5f;  // subtropical decks under the trade inversion, 1-2 km (Wood 2012)
 const float TOP_CUMULUS_KM = 2.0f;        // trade cumulus, 1.5-2.5 km (Nuijens et al. 2014)
-const float TOP_LAYER_KM = 3.0f;          // the noise's unorganised cloud: low and middle layers
+const float TOP_BOUNDARY_LAYER_KM = 2.0f;  // the noise's unorganised cloud where the air does not rise:
+                                          // the marine boundary layer's cloud, 1-2.5 km (Wood 2012)
 const float TOP_FRONTAL_KM = 8.0f;        // nimbostratus under the cirrostratus of the comma head, 6-9 km
 const float CIRRUS_BELOW_TROPOPAUSE_KM = 2.0f;  // cirrus 9-12 km at mid-latitudes, 14 in the tropics
 const float ANVIL_BELOW_TROPOPAUSE_KM = 1.0f;   // deep convection reaches the tropopause
 
+// The cyclonic depths between which the cyclones' ascent deepens the boundary-layer cloud to the
+// cirrus level, by a smoothstep: weak ascent stays under the boundary layer's inversion, strong
+// ascent fills the troposphere, so that tops are mostly low or high with fewer in between, as in
+// the storm tracks. Chosen so that the default covers' height classes come near ISCCP's shares
+// (docs/climate.md, "Optical thickness and cloud tops").
+const float ASCENT_ONSET = 0.05f;
+const float ASCENT_FULL = 0.45f;
+
 // The cloud-top height (km above sea level) at a texel of geocentric `latitude` (radians) from
-// its types' weights, the flow's cyclonic depth (0 .. about 0.6: lifted layers in cyclones) and
+// its types' weights, the flow's cyclonic depth (0 .. about 0.6: the ascent of the cyclones) and
 // the stratocumulus decks' presence in [0, 1] (weather_systems.glsl's deck_presence: off the west
-// coasts with --surface, in patches of the decks' belt without). The unorganised cloud's top,
-// 3 km, is held at the trade inversion's 2 km between about 8 and 35 degrees (the subtropics'
-// subsiding air caps the cloud: Stevens 2005), sinks towards the decks' 1.5 km with their
-// presence and rises up to 3 km more with the cyclonic depth; each system then replaces it by its
-// weight, the higher types last, so that a system's top shows where it lies over lower cloud.
+// coasts with --surface, in patches of the decks' belt without). The unorganised cloud is
+// boundary-layer cloud (2 km) where the air does not rise, sinking towards the decks' 1.5 km with
+// their presence; the cyclones' ascent deepens it with their cyclonic depth up to the cirrus
+// level under the tropopause (ASCENT_ONSET to ASCENT_FULL), as the cloud of a storm's ascent
+// fills the troposphere: altostratus and nimbostratus in between (ISCCP's middle class),
+// cirrostratus tops in the deepest. Each system then replaces it by its weight, the higher types last, so
+// that a system's top shows where it lies over lower cloud.
 float cloud_top_km(IN(CloudTypes) types, float latitude, float cyclonic, float deck) {
   float tropopause = tropopause_km(latitude);
-  float a = abs(latitude);
-  float inversion = smoothstep(0.1f, 0.18f, a) * (1.0f - smoothstep(0.55f, 0.65f, a));
-  float layer = mix(TOP_LAYER_KM, TOP_CUMULUS_KM, inversion);
-  float top = mix(layer, TOP_STRATOCUMULUS_KM, clamp(deck, 0.0f, 1.0f)) +
-              3.0f * clamp(cyclonic / 0.6f, 0.0f, 1.0f);
+  float cirrus = tropopause - CIRRUS_BELOW_TROPOPAUSE_KM;
+  float top = mix(TOP_BOUNDARY_LAYER_KM, TOP_STRATOCUMULUS_KM, clamp(deck, 0.0f, 1.0f));
+  top = mix(top, cirrus, smoothstep(ASCENT_ONSET, ASCENT_FULL, cyclonic));
   top = mix(top, TOP_CUMULUS_KM, clamp(types.cumulus, 0.0f, 1.0f));
   top = mix(top, TOP_FRONTAL_KM, clamp(types.frontal, 0.0f, 1.0f));
-  top = mix(top, tropopause - CIRRUS_BELOW_TROPOPAUSE_KM, clamp(types.cirrus, 0.0f, 1.0f));
+  top = mix(top, cirrus, clamp(types.cirrus, 0.0f, 1.0f));
   return mix(top, tropopause - ANVIL_BELOW_TROPOPAUSE_KM, clamp(types.deep_convection, 0.0f, 1.0f));
 }
 

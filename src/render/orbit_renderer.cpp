@@ -136,7 +136,7 @@ GLuint fraction_texture(const core::ImageData& image) {
 }
 
 // The texels as the orbit shader reads them: (cover, tau, cloud top km, 0). Clear texels take the
-// unorganised cloud's top (TOP_LAYER_KM), so that the filtered tops at a cloud's edge blend
+// unorganised cloud's top (TOP_BOUNDARY_LAYER_KM), so that the filtered tops at a cloud's edge blend
 // towards a cloud's height and not towards the ground. Without the cover's own tau and tops the
 // shader derives both from the filtered coverage (cloud_properties.glsl's fallbacks): derived
 // per texel and then filtered, they would carry the texel grid into the image.
@@ -149,7 +149,7 @@ std::vector<float> cover_channels(const CoverCube& cover) {
     rgba[4 * k] = c;
     if (own) {
       rgba[4 * k + 1] = cover.optical_thickness[k];
-      rgba[4 * k + 2] = c > 0.0f ? cover.cloud_top[k] : glsl::TOP_LAYER_KM;
+      rgba[4 * k + 2] = c > 0.0f ? cover.cloud_top[k] : glsl::TOP_BOUNDARY_LAYER_KM;
     }
   }
   return rgba;
