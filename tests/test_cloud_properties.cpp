@@ -323,6 +323,60 @@ TEST_CASE("the sub-texel cloud keeps the cover's share of the sky in expectation
     }
 }
 
+TEST_CASE("the sub-texel cloud's optical thickness is log-normal inside, keeping the texel's reflectance on average",
+          "[properties]") {
+  // ln tau = ln tau_texel + spread u - c, u the relief's octaves standardised (`undulation`): over
+  // 20000 points of the sphere (the octaves of 8 km and less are independent between them) u has
+  // mean 0 and, wholly resolved, deviation 1, so ln tau has the deviation `spread` and the mean
+  // ln tau_texel - c, c = (2 T - 1) spread^2 / 2 (T the slab's diffuse transmittance at tau_texel):
+  // within 4 standard errors and the octave deviation's own accuracy (PERLIN_OCTAVE_SIGMA, 3 %).
+  // Its correlation with the field that decides the cloudy share is g^k0 for relief octaves from
+  // the k0-th on (the field's amplitudes g^k, the relief's weights falling by the same g): under
+  // 20 km texels they start at the 5 km octave, k0 = 2, so 2^(-4/3) = 0.397, negative (thick where
+  // the field is low, in the cores), within 4 standard errors of a correlation, (1 - rho^2) /
+  // sqrt(n), and the octave sum's small departure from the normal. Where none of its octaves is
+  // resolved the thickness is the texel's.
+  const float texel = 20000.0f, spread = 0.84f;
+  const int points = 20000;
+  std::mt19937 random(13);
+  std::normal_distribution<float> g;
+  std::vector<glm::vec3> where(points);
+  for (auto& p : where) p = 6371000.0f * glm::normalize(glm::vec3(g(random), g(random), g(random)));
+  for (float tau : {1.0f, 8.0f, 50.0f}) {
+    double sum = 0, squares = 0, cross = 0, field_squares = 0, share = 0;
+    for (int k = 0; k < points; ++k) {
+      const auto detail = glsl::subtexel_cloud(where[k], 0.5f, texel, 1.0f);
+      const double l = std::log(double(glsl::subtexel_optical_thickness(tau, detail, spread))) - std::log(tau);
+      sum += l;
+      squares += l * l;
+      cross += l * detail.field;
+      field_squares += double(detail.field) * detail.field;
+      share += detail.undulation_share / points;
+      const auto far = glsl::subtexel_cloud(where[k], 0.5f, texel, 9000.0f);  // every octave of 10 km and less faded
+      if (k < 200) CHECK(glsl::subtexel_optical_thickness(tau, far, spread) == tau);
+    }
+    const double mean = sum / points, deviation = std::sqrt(squares / points - mean * mean);
+    // The field's mean is 0 (gradient noise), so the covariance is the mean product.
+    const double correlation = (cross / points) / (deviation * std::sqrt(field_squares / points));
+    const double c = (2 * glsl::slab_diffuse_transmittance(tau) - 1) * 0.5 * spread * spread * share;
+    INFO("tau " << tau << ": ln tau about the texel's: mean " << mean << " (expected " << -c << "), deviation "
+                << deviation << " (spread " << spread << "), correlation with the field " << correlation
+                << ", resolved share " << share);
+    CHECK(share == Approx(1.0).margin(1e-6));
+    CHECK(std::abs(mean + c) < 4 * spread / std::sqrt(double(points)));
+    CHECK(std::abs(deviation - spread) < spread * (4 / std::sqrt(2.0 * points) + 0.03));
+    const double rho = std::pow(2.0, -4.0 / 3.0);
+    CHECK(std::abs(correlation + rho) < 4 * (1 - rho * rho) / std::sqrt(double(points)) + 0.02);
+  }
+  glsl::SubtexelCloud flat;
+  flat.cover = 1.0f;
+  flat.field = flat.relief = flat.undulation = flat.undulation_share = 0.0f;
+  CHECK(glsl::subtexel_optical_thickness(8.0f, flat, spread) == 8.0f);
+  flat.undulation = 1.0f;
+  CHECK(glsl::subtexel_optical_thickness(8.0f, flat, 0.0f) == 8.0f);  // no spread: uniform
+  CHECK(glsl::subtexel_optical_thickness(8.0f, flat, spread) == Approx(8.0f * std::exp(spread)).epsilon(1e-6));
+}
+
 TEST_CASE("the sub-texel cloud's edges have the perimeter dimension of cloud edges, about 4/3", "[properties]") {
   // Level sets of a fractional Brownian field of Hurst exponent H have dimension 2 - H (Mandelbrot
   // 1982): 4/3 for the field's H = 2/3, the dimension Lovejoy (1982) found for clouds from the

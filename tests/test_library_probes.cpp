@@ -427,10 +427,26 @@ TEST_CASE("cloud_properties.glsl on the GPU agrees with the CPU", "[probe]") {
     const float texel = 20000.0f, footprint = std::exp(r(std::log(5.0f), std::log(40000.0f)));
     const auto at = subtexel_cloud(p, c, texel, footprint);
     const auto moved = subtexel_cloud(p * (1.0f + 8 * kUlp), c, texel, footprint);
-    const float change = std::max(
-        {std::abs(at.cover - moved.cover), std::abs(at.relief - moved.relief), std::abs(at.field - moved.field)});
+    const float change = std::max({std::abs(at.cover - moved.cover), std::abs(at.relief - moved.relief),
+                                   std::abs(at.field - moved.field), std::abs(at.undulation - moved.undulation),
+                                   std::abs(at.undulation_share - moved.undulation_share)});
     cases.push_back({arguments(PROBE_SUBTEXEL_CLOUD, vec4(c, texel, footprint, 0), vec4(p, 0.0f)),
                      2 * change + 16 * kTranscendental});
+  }
+  // The sub-texel optical thickness: an exp of up to 2 x 8 + 2 (GLSL: 3 + 2 |x| ulp), a division
+  // and a product: 48 ulp relative.
+  for (int k = 0; k < 16; ++k) {
+    const float tau = std::exp(r(std::log(0.1f), std::log(200.0f))), undulation = r(-8.0f, 8.0f);
+    const float spread = k == 0 ? 0.0f : r(0.0f, 2.0f);
+    SubtexelCloud detail;
+    detail.cover = 1.0f;
+    detail.field = 0.0f;
+    detail.relief = 0.0f;
+    detail.undulation = undulation;
+    detail.undulation_share = r(0.0f, 1.0f);
+    cases.push_back({arguments(PROBE_SUBTEXEL_TAU, vec4(tau, undulation, spread, 0),
+                               vec4(detail.undulation_share, 0.0f, 0.0f, 0.0f)),
+                     std::max(48 * kUlp * subtexel_optical_thickness(tau, detail, spread), kArithmetic)});
   }
   compare("cloud_properties", probe_cloud_properties, cases);
 }

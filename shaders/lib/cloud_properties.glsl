@@ -7,6 +7,7 @@
 #define NEPHELE_CLOUD_PROPERTIES_GLSL
 #include "prelude.glsl"
 #include "perlin.glsl"
+#include "slab_scattering.glsl"
 
 // The standard normal quantile, Phi^-1(p) for p in (0, 1), by the rational approximation of
 // Abramowitz and Stegun (1964) 26.2.23 (Hastings): |error| < 4.5e-4 in z.
@@ -177,6 +178,9 @@ struct SubtexelCloud {
   float field;   // the resolved field in units of the whole field's deviation (mean 0, deviation <= 1)
   float relief;  // the resolved octaves below SUBTEXEL_RELIEF_WAVELENGTH, in units of their whole
                  // series' deviation, negated: > 0 in the cores of the clouds they draw
+  float undulation;  // the same resolved octaves as `relief`, standardised by the deviation of all of
+                     // them (mean 0, deviation <= 1): subtexel_optical_thickness's
+  float undulation_share;  // the share of those octaves' variance that `undulation` holds
 };
 
 // At the point p on the planet (m, from its centre; points on one radius get the same value), for
@@ -186,31 +190,75 @@ SubtexelCloud subtexel_cloud(vec3 p, float cover, float texel, float footprint) 
   result.cover = cover;
   result.relief = 0.0f;
   result.field = 0.0f;
+  result.undulation = 0.0f;
+  result.undulation_share = 0.0f;
   float wavelength = SUBTEXEL_FIRST_WAVELENGTH * texel;
   float amplitude = 1.0f;
-  float resolved = 0.0f, unresolved = 0.0f, relief = 0.0f;
-  bool any = false;
+  float resolved = 0.0f, unresolved = 0.0f, relief = 0.0f, relief_weights = 0.0f, relief_drawn = 0.0f;
+  int drawn = 0;
   for (int k = 0; k < SUBTEXEL_OCTAVES; ++k) {
     float kept = 1.0f - smoothstep(0.25f * wavelength, 0.5f * wavelength, footprint);
     if (kept <= 0.0f) break;  // the finer octaves fade out earlier still
-    any = true;
+    drawn = k + 1;
     float octave = kept * perlin_noise(p / wavelength, ivec3(0), uvec3(uint(k), 0x6d3bu, 0x2c1bu));
     resolved += amplitude * octave;
-    if (wavelength <= SUBTEXEL_RELIEF_WAVELENGTH) relief += pow(wavelength / SUBTEXEL_RELIEF_WAVELENGTH, 0.6666667f) * octave;
+    if (wavelength <= SUBTEXEL_RELIEF_WAVELENGTH) {
+      float w = pow(wavelength / SUBTEXEL_RELIEF_WAVELENGTH, 0.6666667f);
+      relief += w * octave;
+      relief_weights += w * w;
+      relief_drawn += w * w * kept * kept;
+    }
     unresolved += amplitude * amplitude * (1.0f - kept * kept);
     amplitude *= SUBTEXEL_GAIN;
     wavelength *= 0.5f;
   }
-  if (!any) return result;
+  if (drawn == 0) return result;
+  // The relief's octaves not drawn, for the deviation of all of them (their weights only).
+  float rest = wavelength;
+  for (int k = drawn; k < SUBTEXEL_OCTAVES; ++k) {
+    if (rest <= SUBTEXEL_RELIEF_WAVELENGTH) relief_weights += pow(rest / SUBTEXEL_RELIEF_WAVELENGTH, 1.3333333f);
+    rest *= 0.5f;
+  }
   // Octaves from k on: sum of a_k^2 = a_k^2 / (1 - g^2); the whole field's variance is 1 / (1 - g^2).
   float tail = 1.0f / (1.0f - SUBTEXEL_GAIN * SUBTEXEL_GAIN);
   unresolved += amplitude * amplitude * tail;
   float sigma = PERLIN_OCTAVE_SIGMA * sqrt(tail);
   result.relief = -relief / sigma;
   result.field = resolved / sigma;
+  if (relief_weights > 0.0f) {
+    result.undulation = -relief / (PERLIN_OCTAVE_SIGMA * sqrt(relief_weights));
+    result.undulation_share = relief_drawn / relief_weights;
+  }
   if (cover > 0.0f && cover < 1.0f)
     result.cover = normal_cdf((normal_quantile(cover) * sigma - resolved) / (PERLIN_OCTAVE_SIGMA * sqrt(unresolved)));
   return result;
+}
+
+// The optical thickness of the sub-texel cloud at a sample. The cover gives a texel's cloud one
+// tau, but real cloud is far from uniform inside: its optical thickness varies about log-normally,
+// with a deviation of ln tau that makes the plane-parallel albedo bias (Cahalan et al. 1994, "The
+// albedo of fractal stratocumulus clouds", J. Atmos. Sci. 51: the reduction factor chi =
+// exp(mean ln tau) / mean tau about 0.7 for marine stratocumulus, a deviation of sqrt(-2 ln chi) =
+// 0.84), and seen from orbit only 1.4 % of 8.8 km cloudy regions are uniform within 5 % in
+// reflectivity (Genkova and Davies 2003, "Spatial heterogeneity of reflected radiance from globally
+// distributed clouds", GRL 30). Here ln tau varies with the tops' relief, the field's octaves of
+// 8 km and less standardised (`undulation` u): the domes are thicker, the hollows between them
+// thinner, at the scales of cells and tops. Those octaves decide less of where a texel's cloud
+// ends than the larger ones (the undulation's correlation with the field is g^k0 for relief
+// octaves from the k0-th: 0.40 under 20 km texels, 0.16 under 78 km), so the edges are only a
+// little thinner than the cores.
+// The texel's tau is the tau of a uniform cloud that reflects as much as its varied cloud, which
+// is what a retrieval such as ISCCP's gives for a pixel; so whether a view resolves the variation
+// or not, the cloud reflects the same on average. With the two-stream reflectance R = x / (1 + x),
+// x = 3/4 (1 - g) tau, as a function f of ln tau, f'' / f' = (1 - x) / (1 + x) = 2 T - 1 with T
+// the slab's diffuse transmittance; ln tau + spread u - c keeps E[f] to second order in the
+// resolved variance v spread^2 when c = (2 T - 1) v spread^2 / 2: the arithmetic mean for thin
+// cloud (R linear in tau), the geometric mean (Cahalan et al.'s effective thickness) at x = 1,
+// and a little thicker for thick cloud, whose reflectance saturates.
+float subtexel_optical_thickness(float tau, IN(SubtexelCloud) detail, float spread) {
+  float variance = spread * spread * detail.undulation_share;
+  float correction = (2.0f * slab_diffuse_transmittance(tau) - 1.0f) * 0.5f * variance;
+  return tau * exp(spread * detail.undulation - correction);
 }
 
 #endif

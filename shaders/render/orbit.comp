@@ -53,6 +53,7 @@ uniform int u_cover_properties;  // 1: the cover map holds tau and cloud tops; 0
 uniform float u_tau_median;      // the fallback's log-normal (the table's defaults)
 uniform float u_tau_spread;
 uniform float u_cloud_detail;   // 0: the cover's texels as they are; 1: the sub-texel cloud (cloud_slab)
+uniform float u_cloud_tau_spread;  // deviation of ln tau inside a texel's cloud (subtexel_optical_thickness)
 uniform float u_day_texel;     // arc length of one day-texture texel, m
 uniform int u_cloud_steps;
 uniform int u_shadow_steps;
@@ -109,7 +110,9 @@ const float TOP_RELIEF_SHARE = 0.15f;
 // own extinction 1/m), extinctions 0 where clear. The texel's cloud covers the share `cover` of it
 // with optical thickness tau; below the texel, subtexel_cloud (cloud_properties.glsl) says which
 // part of the sample's footprint is cloudy, with fractal edges down to the footprint's scale and
-// the cover's own value where a sample spans half a texel or more. The sample's mean transmittance
+// the cover's own value where a sample spans half a texel or more, and how thick its cloud is
+// there (subtexel_optical_thickness: thicker under the tops' domes, the texel's tau as the
+// geometric mean). The sample's mean transmittance
 // 1 - c (1 - exp(-tau)) is that of a uniform slab of optical depth covered_optical_depth(c, tau):
 // thin cloud and the grey edges let the surface show through, thick cloud is opaque. The light
 // that diffuses through the cloud goes by the cloud's own tau (the fourth component), not by that
@@ -133,14 +136,15 @@ vec4 cloud_slab(vec3 p, float footprint, vec2 heights) {
   float base = max(top - thickness, u_cloud_base);
   if (heights.y < base || heights.x > top + u_cloud_detail * TOP_RELIEF_SHARE * SUBTEXEL_RELIEF_BOUND * thickness)
     return vec4(0.0f);
-  float cover = c.x;
+  float cover = c.x, tau = c.y;
   if (u_cloud_detail > 0.0f) {
     SubtexelCloud detail = subtexel_cloud(n * u_radius, c.x, u_cover_texel, footprint);
     cover = mix(c.x, detail.cover, u_cloud_detail);
+    tau = mix(c.y, subtexel_optical_thickness(c.y, detail, u_cloud_tau_spread), u_cloud_detail);
     top = max(top + u_cloud_detail * TOP_RELIEF_SHARE * thickness * detail.relief, base + 0.1f * thickness);
   }
-  float extinction = covered_optical_depth(cover, c.y) / thickness;
-  return vec4(base, min(top, u_cloud_top), extinction, c.y / thickness);
+  float extinction = covered_optical_depth(cover, tau) / thickness;
+  return vec4(base, min(top, u_cloud_top), extinction, tau / thickness);
 }
 
 // The mean extinctions (1/m; cloud_slab's two) over the segment from p to p + dt d (relative to the

@@ -148,6 +148,7 @@ json::Value orbit_sidecar(const render::RenderResult& result, const OrbitRecord&
   root.set("cloud_base_m", record.settings.cloud_base_m);
   root.set("cloud_thickness_m", record.settings.cloud_thickness_m);
   root.set("cloud_detail", record.settings.cloud_detail);
+  root.set("cloud_tau_spread", record.settings.cloud_tau_spread);
   root.set("earth_texture", record.earth_texture);
   root.set("night_texture", record.night_texture);
   root.set("water_mask", record.water);

@@ -78,6 +78,7 @@ const std::vector<const Parameter*>& all() {
       &scene::cloud_base_km,
       &scene::cloud_thickness_km,
       &scene::cloud_detail,
+      &scene::cloud_tau_spread,
       &noise_texture::preset,
       &noise_texture::type,
       &noise_texture::width,

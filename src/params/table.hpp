@@ -338,6 +338,11 @@ inline constexpr Parameter cloud_detail =
          "orbit view: the clouds below the cover's texels, fractal edges and relief of their tops (1), or the texels "
          "as smooth slabs (0)",
          render);
+inline constexpr Parameter cloud_tau_spread =
+    real("cloud_tau_spread", 0, 0, 2, "",
+         "orbit view: the deviation of ln tau inside a cover texel's cloud, drawn with the sub-texel cloud (0: "
+         "uniform; 0.84: the plane-parallel albedo bias of marine stratocumulus, Cahalan et al. 1994)",
+         render);
 }  // namespace scene
 
 namespace noise_texture {

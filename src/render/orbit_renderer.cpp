@@ -64,6 +64,7 @@ void check_settings(const OrbitSettings& s) {
         " km) and have a thickness above 0");
   if (!(s.night_lights >= 0) || !(s.sea_wind_ms >= 0)) bad("negative night lights or sea wind");
   if (!(s.cloud_detail >= 0 && s.cloud_detail <= 1)) bad("cloud detail outside 0..1");
+  if (!(s.cloud_tau_spread >= 0 && s.cloud_tau_spread <= 2)) bad("cloud tau spread outside 0..2");
   if (s.cloud_steps < 1 || s.cloud_steps > 1024 || s.shadow_steps < 0 || s.shadow_steps > 256 || s.sky_steps < 1 ||
       s.sky_steps > 256)
     bad("step counts out of range");
@@ -373,6 +374,7 @@ double OrbitRenderer::render_tiles(const OrbitCamera& camera, double unix_second
     p.set("u_tau_median", params::cover::tau_median.default_float());
     p.set("u_tau_spread", params::cover::tau_spread.default_float());
     p.set("u_cloud_detail", static_cast<float>(s.cloud_detail));
+    p.set("u_cloud_tau_spread", static_cast<float>(s.cloud_tau_spread));
     p.set("u_day_texel", static_cast<float>(2 * M_PI * R / gl_->day_width));
     p.set("u_cloud_steps", s.cloud_steps);
     p.set("u_shadow_steps", s.shadow_steps);

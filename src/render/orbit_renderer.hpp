@@ -12,6 +12,7 @@
 
 #include "core/image.hpp"
 #include "params/field_binding.hpp"
+#include "params/table.hpp"
 #include "render/cloud_renderer.hpp"
 
 namespace nephele::render {
@@ -50,6 +51,9 @@ struct OrbitSettings {
   // The sub-texel cloud (fractal edges and top relief below the cover's texels, cloud_properties.glsl's
   // subtexel_cloud): 1 draws it, 0 the cover's texels as smooth slabs, between a mix.
   double cloud_detail = 1.0;
+  // The deviation of ln tau inside a cover texel's cloud, drawn with the sub-texel cloud
+  // (cloud_properties.glsl's subtexel_optical_thickness; the parameter table's cloud_tau_spread).
+  double cloud_tau_spread = params::scene::cloud_tau_spread.default_number;
   int cloud_steps = 32;  // samples along a view ray through the shell
   int shadow_steps = 6;  // samples from the ground towards the sun
   int sky_steps = 12;    // samples of the atmosphere along a view ray

@@ -7,7 +7,8 @@ const int PROBE_TAU_FROM_COVER = 2;     // optical_thickness_from_cover(a, b, c)
 const int PROBE_CLOUD_TOP = 3;          // cloud_top_km(x[1], x[2]), tropopause_km(latitude) in y, cloud_thickness_km(a, b) in z
 const int PROBE_CLOUD_TOP_FROM_COVER = 4;  // cloud_top_from_cover(a, latitude)
 const int PROBE_COVERED_DEPTH = 5;         // covered_optical_depth(a, b)
-const int PROBE_SUBTEXEL_CLOUD = 6;        // subtexel_cloud(x[1].xyz, a, b, c): (cover, relief, field)
+const int PROBE_SUBTEXEL_CLOUD = 6;        // subtexel_cloud(x[1].xyz, a, b, c): (cover, relief, field, undulation)
+const int PROBE_SUBTEXEL_TAU = 7;          // subtexel_optical_thickness(a, a detail of undulation b and share x[1].x, c)
 #ifndef __cplusplus
 #include "../lib/cloud_properties.glsl"
 #endif
@@ -29,7 +30,16 @@ vec4 probe_cloud_properties(mat4 x) {
   if (f == PROBE_COVERED_DEPTH) return vec4(covered_optical_depth(a, b), 0.0f, 0.0f, 0.0f);
   if (f == PROBE_SUBTEXEL_CLOUD) {
     SubtexelCloud cloud = subtexel_cloud(vec3(x[1]), a, b, c);
-    return vec4(cloud.cover, cloud.relief, cloud.field, 0.0f);
+    return vec4(cloud.cover, cloud.relief, cloud.field, cloud.undulation);
+  }
+  if (f == PROBE_SUBTEXEL_TAU) {
+    SubtexelCloud detail;
+    detail.cover = 1.0f;
+    detail.field = 0.0f;
+    detail.relief = 0.0f;
+    detail.undulation = b;
+    detail.undulation_share = x[1].x;
+    return vec4(subtexel_optical_thickness(a, detail, c), 0.0f, 0.0f, 0.0f);
   }
   return vec4(cloud_top_from_cover(a, latitude), 0.0f, 0.0f, 0.0f);  // PROBE_CLOUD_TOP_FROM_COVER
 }

@@ -38,6 +38,7 @@ void bind_orbit_options(Options& options, OrbitOptions& orbit) {
   orbit.cloud_base_km = s::cloud_base_km.default_number;
   orbit.cloud_thickness_km = s::cloud_thickness_km.default_number;
   orbit.cloud_detail = s::cloud_detail.default_number;
+  orbit.cloud_tau_spread = s::cloud_tau_spread.default_number;
   options.bind(s::lat, &orbit.lat);
   options.bind(s::lon, &orbit.lon);
   options.bind(s::altitude_km, &orbit.altitude_km);
@@ -48,6 +49,7 @@ void bind_orbit_options(Options& options, OrbitOptions& orbit) {
   options.bind(s::cloud_base_km, &orbit.cloud_base_km);
   options.bind(s::cloud_thickness_km, &orbit.cloud_thickness_km);
   options.bind(s::cloud_detail, &orbit.cloud_detail);
+  options.bind(s::cloud_tau_spread, &orbit.cloud_tau_spread);
 }
 
 const std::vector<const params::Parameter*>& orbit_only_parameters() {
@@ -60,7 +62,8 @@ const std::vector<const params::Parameter*>& orbit_only_parameters() {
                                                              &s::planet_radius_km,
                                                              &s::cloud_base_km,
                                                              &s::cloud_thickness_km,
-                                                             &s::cloud_detail};
+                                                             &s::cloud_detail,
+                                                             &s::cloud_tau_spread};
   return list;
 }
 
@@ -107,6 +110,7 @@ int run_orbit_render(const OrbitOptions& orbit) {
   settings.cloud_base_m = orbit.cloud_base_km * 1000.0;
   settings.cloud_thickness_m = orbit.cloud_thickness_km * 1000.0;
   settings.cloud_detail = orbit.cloud_detail;
+  settings.cloud_tau_spread = orbit.cloud_tau_spread;
 
   // Files named by options are read before the context: a missing one exits 2 quickly.
   std::optional<render::CoverCube> cover;

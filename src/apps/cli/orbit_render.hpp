@@ -18,7 +18,8 @@ constexpr double orbit_default_exposure = 2.5;
 struct OrbitOptions {
   double lat = 0, lon = 0, altitude_km = 0;  // from the table's defaults (bind_orbit_options)
   std::string cover, earth_texture, night_texture;
-  double planet_radius_km = 0, cloud_base_km = 0, cloud_thickness_km = 0, cloud_detail = 1;
+  double planet_radius_km = 0, cloud_base_km = 0, cloud_thickness_km = 0, cloud_detail = 1,
+         cloud_tau_spread = 0;  // bind_orbit_options sets the table's defaults
   // Shared with the ground views (set by run_render).
   std::string time, size, out;
   std::optional<double> heading, pitch, fov;
