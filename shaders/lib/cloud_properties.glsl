@@ -194,7 +194,7 @@ SubtexelCloud subtexel_cloud(vec3 p, float cover, float texel, float footprint) 
   result.undulation_share = 0.0f;
   float wavelength = SUBTEXEL_FIRST_WAVELENGTH * texel;
   float amplitude = 1.0f;
-  float resolved = 0.0f, unresolved = 0.0f, relief = 0.0f, relief_weights = 0.0f, relief_drawn = 0.0f;
+  float resolved = 0.0f, unresolved = 0.0f, relief = 0.0f, relief_drawn = 0.0f;
   int drawn = 0;
   for (int k = 0; k < SUBTEXEL_OCTAVES; ++k) {
     float kept = 1.0f - smoothstep(0.25f * wavelength, 0.5f * wavelength, footprint);
@@ -205,7 +205,6 @@ SubtexelCloud subtexel_cloud(vec3 p, float cover, float texel, float footprint) 
     if (wavelength <= SUBTEXEL_RELIEF_WAVELENGTH) {
       float w = pow(wavelength / SUBTEXEL_RELIEF_WAVELENGTH, 0.6666667f);
       relief += w * octave;
-      relief_weights += w * w;
       relief_drawn += w * w * kept * kept;
     }
     unresolved += amplitude * amplitude * (1.0f - kept * kept);
@@ -213,12 +212,17 @@ SubtexelCloud subtexel_cloud(vec3 p, float cover, float texel, float footprint) 
     wavelength *= 0.5f;
   }
   if (drawn == 0) return result;
-  // The relief's octaves not drawn, for the deviation of all of them (their weights only).
-  float rest = wavelength;
-  for (int k = drawn; k < SUBTEXEL_OCTAVES; ++k) {
-    if (rest <= SUBTEXEL_RELIEF_WAVELENGTH) relief_weights += pow(rest / SUBTEXEL_RELIEF_WAVELENGTH, 1.3333333f);
-    rest *= 0.5f;
-  }
+  // The squared weights of all the relief's octaves, drawn or not: the weights fall by g from the
+  // first octave of SUBTEXEL_RELIEF_WAVELENGTH and less, a geometric series of ratio g^2.
+  float first_wavelength = SUBTEXEL_FIRST_WAVELENGTH * texel;
+  float first = max(ceil(log2(first_wavelength / SUBTEXEL_RELIEF_WAVELENGTH)), 0.0f);
+  float relief_octaves = float(SUBTEXEL_OCTAVES) - first;
+  float g2 = SUBTEXEL_GAIN * SUBTEXEL_GAIN;
+  float relief_weights =
+      relief_octaves > 0.0f
+          ? pow(first_wavelength * exp2(-first) / SUBTEXEL_RELIEF_WAVELENGTH, 1.3333333f) * (1.0f - pow(g2, relief_octaves)) /
+                (1.0f - g2)
+          : 0.0f;
   // Octaves from k on: sum of a_k^2 = a_k^2 / (1 - g^2); the whole field's variance is 1 / (1 - g^2).
   float tail = 1.0f / (1.0f - SUBTEXEL_GAIN * SUBTEXEL_GAIN);
   unresolved += amplitude * amplitude * tail;
