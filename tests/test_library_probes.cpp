@@ -433,6 +433,21 @@ TEST_CASE("cloud_properties.glsl on the GPU agrees with the CPU", "[probe]") {
     cases.push_back({arguments(PROBE_SUBTEXEL_CLOUD, vec4(c, texel, footprint, 0), vec4(p, 0.0f)),
                      2 * change + 16 * kTranscendental});
   }
+  // The relief's resolved share, a ratio of the drawn octaves' squared weights to the closed form of
+  // all of theirs (a log2, a ceil, an exp2 and two powers), under texels of 2 to 200 km so that the
+  // relief's first octave falls at every place of the series: the change under 8 ulp of the point's
+  // radius and of the texel (measured on the CPU, twice), plus the powers' rounding.
+  for (int k = 0; k < 24; ++k) {
+    const vec3 p = 6371000.0f * normalize(vec3(r.v(-1.0f, 1.0f)));
+    const float texel = std::exp(r(std::log(2000.0f), std::log(200000.0f)));
+    const float footprint = std::exp(r(std::log(5.0f), std::log(40000.0f)));
+    const float share = subtexel_cloud(p, 0.5f, texel, footprint).undulation_share;
+    const float change =
+        std::max(std::abs(share - subtexel_cloud(p * (1.0f + 8 * kUlp), 0.5f, texel, footprint).undulation_share),
+                 std::abs(share - subtexel_cloud(p, 0.5f, texel * (1.0f + 8 * kUlp), footprint).undulation_share));
+    cases.push_back({arguments(PROBE_SUBTEXEL_SHARE, vec4(0.5f, texel, footprint, 0), vec4(p, 0.0f)),
+                     2 * change + 16 * kTranscendental});
+  }
   // The sub-texel optical thickness: an exp of up to 2 x 8 + 2 (GLSL: 3 + 2 |x| ulp), a division
   // and a product: 48 ulp relative.
   for (int k = 0; k < 16; ++k) {

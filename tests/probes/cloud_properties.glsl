@@ -9,6 +9,7 @@ const int PROBE_CLOUD_TOP_FROM_COVER = 4;  // cloud_top_from_cover(a, latitude)
 const int PROBE_COVERED_DEPTH = 5;         // covered_optical_depth(a, b)
 const int PROBE_SUBTEXEL_CLOUD = 6;        // subtexel_cloud(x[1].xyz, a, b, c): (cover, relief, field, undulation)
 const int PROBE_SUBTEXEL_TAU = 7;          // subtexel_optical_thickness(a, a detail of undulation b and share x[1].x, c)
+const int PROBE_SUBTEXEL_SHARE = 8;        // subtexel_cloud(x[1].xyz, a, b, c).undulation_share
 #ifndef __cplusplus
 #include "../lib/cloud_properties.glsl"
 #endif
@@ -32,6 +33,7 @@ vec4 probe_cloud_properties(mat4 x) {
     SubtexelCloud cloud = subtexel_cloud(vec3(x[1]), a, b, c);
     return vec4(cloud.cover, cloud.relief, cloud.field, cloud.undulation);
   }
+  if (f == PROBE_SUBTEXEL_SHARE) return vec4(subtexel_cloud(vec3(x[1]), a, b, c).undulation_share, 0.0f, 0.0f, 0.0f);
   if (f == PROBE_SUBTEXEL_TAU) {
     SubtexelCloud detail;
     detail.cover = 1.0f;
