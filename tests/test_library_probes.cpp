@@ -882,12 +882,29 @@ TEST_CASE("atmosphere.glsl on the GPU agrees with the CPU", "[probe]") {
   const std::vector<vec4> table = render::multiple_scattering_table(earth_radius, render::kPlanetAlbedo);
   const TableSource table_source{n, n, table.data()};
   const GLuint table_texture = bound_linear_texture_2d(n, n, GL_RGBA32F, GL_RGBA, &table[0].x, 4);
-  auto probe_atmosphere = [&](const mat4& x) { return ::probe_atmosphere(x, table_source); };
+  // The transmittance table on unit 5.
+  const int tw = TRANSMITTANCE_TABLE_WIDTH, th = TRANSMITTANCE_TABLE_HEIGHT;
+  const std::vector<vec4> transmittance = render::transmittance_table(earth_radius);
+  const TableSource transmittance_source{tw, th, transmittance.data()};
+  const GLuint transmittance_texture = bound_linear_texture_2d(tw, th, GL_RGBA32F, GL_RGBA, &transmittance[0].x, 5);
+  auto probe_atmosphere = [&](const mat4& x) { return ::probe_atmosphere(x, table_source, transmittance_source); };
   // The table read bilinearly: GPUs weigh the taps with 8 fractional bits, so a read errs by up
   // to 1/512 of the difference between neighbouring texels, below 1/16 of the largest value.
   float table_largest = 0.0f;
   for (const vec4& t : table) table_largest = std::max(table_largest, std::max(t.x, std::max(t.y, t.z)));
   const float table_read = 1e3f * table_largest / 16.0f / 512.0f;
+  // The same for the transmittance table: 1/512 of its largest step between neighbouring texels.
+  float transmittance_step = 0.0f;
+  for (int j = 0; j < th; ++j)
+    for (int i = 0; i < tw; ++i)
+      for (int c = 0; c < 3; ++c) {
+        const float t = transmittance[size_t(j) * tw + i][c];
+        if (i + 1 < tw)
+          transmittance_step = std::max(transmittance_step, std::abs(transmittance[size_t(j) * tw + i + 1][c] - t));
+        if (j + 1 < th)
+          transmittance_step = std::max(transmittance_step, std::abs(transmittance[size_t(j + 1) * tw + i][c] - t));
+      }
+  const float transmittance_read = transmittance_step / 512.0f;
   std::vector<Case> cases;
   const int functions[] = {PROBE_RAYLEIGH, PROBE_SUN_AND_HENYEY_GREENSTEIN, PROBE_AIR_EXTINCTION,
                            PROBE_TRANSMITTANCE_TO_SPACE, PROBE_SKY_SINGLE_SCATTERING};
@@ -972,15 +989,16 @@ TEST_CASE("atmosphere.glsl on the GPU agrees with the CPU", "[probe]") {
   // Multiple scattering: the table's function (sums of terms each within kSkyRelative, the
   // series' 1 / (1 - f) with f below 0.5 doubling it), its texels and its reads; the sky with it.
   for (int k = 0; k < 4; ++k) {
-    const mat4 transfer = arguments(PROBE_MULTIPLE_SCATTERING_TRANSFER,
-                                    vec4(earth_radius, r(0.0f, 60000.0f), r(-0.3f, 1.0f), 0), vec4(0.3f, 0, 0, 0));
-    const vec4 t = ::probe_atmosphere(transfer, table_source);
+    const mat4 transfer =
+        arguments(PROBE_MULTIPLE_SCATTERING_TRANSFER, vec4(earth_radius, r(0.0f, 60000.0f), r(-0.3f, 1.0f), 0),
+                  vec4(0.3f, float(4 << (k % 2)), float(4 + k), 10.0f));
+    const vec4 t = probe_atmosphere(transfer);
     cases.push_back({transfer, 2.0f * kSkyRelative * std::max(t.x, std::max(t.y, t.z)) + kTranscendental});
     const int i = int(r(0.0f, float(n - 1))), j = int(r(0.0f, float(n - 1)));
     const mat4 entry = arguments(PROBE_MULTIPLE_SCATTERING_TABLE_ENTRY, vec4(earth_radius, float(i), float(j), 0),
                                  vec4(render::kPlanetAlbedo, 0, 0, 0));
     // The entry is the texel the table holds.
-    const vec4 e = ::probe_atmosphere(entry, table_source);
+    const vec4 e = probe_atmosphere(entry);
     CHECK(vec3(e) == vec3(table[size_t(j) * n + i]) * 1e3f);
     cases.push_back({entry, 2.0f * kSkyRelative * std::max(e.x, std::max(e.y, e.z)) + kTranscendental});
   }
@@ -995,14 +1013,63 @@ TEST_CASE("atmosphere.glsl on the GPU agrees with the CPU", "[probe]") {
     const mat4 x = arguments(PROBE_SKY_SCATTERING, vec4(earth_radius, float(k % 4), 0, 0), p, vec4(d, r(0.0f, p.w)),
                              vec4(sun, 8.0f));
     const vec4 cpu = probe_atmosphere(x);
-    // Radiances: the single scattering's error and each sample's table read over its step
-    // (at most the step's scattering share, 1 - e^(-sigma ds) < 1, times 1e3 for the probe's scale).
+    // Radiances: the single scattering's error, each sample's table read over its step (at most
+    // the step's scattering share, 1 - e^(-sigma ds) < 1, times 1e3 for the probe's scale) and its
+    // sunlight's read of the transmittance table, which errs by transmittance_read times the
+    // sample's source under an unattenuated sun: bounded by the radiance of the same samples with
+    // the sun's transmittance 1.
+    SkyIntegral unit = sky_integral_begin(d, p.w, 0.0f, sun, 8);
+    for (int i = 0; i < 8; ++i) {
+      const vec3 q = sky_integral_point(unit, vec3(p), d, i);
+      unit.skylight = multiple_scattering(table_source, q, sun, earth_radius);
+      sky_integral_step_in_sunlight(unit, q, i, vec3(1.0f), earth_radius, 1.0f);
+    }
+    const float unit_largest = 1e3f * std::max(unit.radiance.x, std::max(unit.radiance.y, unit.radiance.z));
+    cases.push_back({x, k % 4 < 2 ? kSkyRelative * std::max(cpu.x, std::max(cpu.y, cpu.z)) + 8.0f * table_read +
+                                        transmittance_read * unit_largest + kTranscendental
+                                  : kTransmittance});
+  }
+  // The transmittance table: its function (each texel's 256 steps: kTransmittance, as 16), its
+  // texels, its coordinates and its reads (kArithmetic on coordinates below 1, a read's weights as
+  // above) away from the horizon, where rounding may decide either way whether a ray meets the ground.
+  for (int k = 0; k < 8; ++k) {
+    const int i = int(r(0.0f, float(tw - 1))), j = int(r(0.0f, float(th - 1)));
+    const mat4 entry = arguments(PROBE_TRANSMITTANCE_TABLE_ENTRY, vec4(earth_radius, float(i), float(j), 0));
+    CHECK(vec3(probe_atmosphere(entry)) == vec3(transmittance[size_t(j) * tw + i]));
+    cases.push_back({entry, kTransmittance});
+    cases.push_back({arguments(PROBE_TRANSMITTANCE_TABLE_UV,
+                               vec4(earth_radius, earth_radius + r(0.0f, ATMOSPHERE_THICKNESS), r(-0.3f, 1.0f), 0)),
+                     4 * kArithmetic});
+  }
+  for (int k = 0; k < 8; ++k) {
+    const vec3 up = normalize(vec3(r.v(-1.0f, 1.0f)) + vec3(1e-3f));
+    const vec3 d = normalize(vec3(r.v(-1.0f, 1.0f)) + 0.6f * up);
+    const vec3 sun = normalize(vec3(r.v(-1.0f, 1.0f)) + up);
+    const vec4 p(up * (earth_radius + r(0.0f, 20000.0f)), r(1000.0f, 200000.0f));
+    // The optical depth (relative kDepthRelative, scaled by 1e3 to order one), the table's
+    // coordinate of a texel count (a multiply-add below 1) and the sky's steps in a given sunlight
+    // (as the sky's: relative kSkyRelative).
+    const mat4 depth =
+        arguments(PROBE_OPTICAL_DEPTH_TO_TOP, vec4(earth_radius, float(8 << (k % 4)), 0, 0), vec4(p), vec4(d, 0));
+    const vec4 tau = probe_atmosphere(depth);
+    cases.push_back({depth, kDepthRelative * std::max(tau.x, std::max(tau.y, tau.z)) + kTranscendental});
     cases.push_back(
-        {x, k % 4 < 2 ? kSkyRelative * std::max(cpu.x, std::max(cpu.y, cpu.z)) + 8.0f * table_read + kTranscendental
-                      : kTransmittance});
+        {arguments(PROBE_TABLE_COORDINATE, vec4(earth_radius, r(0.0f, 1.0f), float(16 << (k % 4)), 0)), kArithmetic});
+    const mat4 lit = arguments(PROBE_SKY_STEPS_IN_SUNLIGHT, vec4(earth_radius, float(k % 2), r(0.0f, 1.0f), 0), p,
+                               vec4(d, r(0.0f, p.w)), vec4(sun, 8.0f));
+    const vec4 radiance = probe_atmosphere(lit);
+    cases.push_back({lit, kSkyRelative * std::max(radiance.x, std::max(radiance.y, radiance.z)) + kTranscendental});
+  }
+  for (int k = 0; k < 16; ++k) {
+    const vec3 up = normalize(vec3(r.v(-1.0f, 1.0f)) + vec3(1e-3f));
+    const vec3 d = normalize(vec3(r.v(-1.0f, 1.0f)) + 0.6f * up);
+    const vec3 p = up * (earth_radius + r(0.0f, 99000.0f));
+    cases.push_back({arguments(PROBE_TRANSMITTANCE_FROM_TABLE, vec4(earth_radius, 0, 0, 0), vec4(p, 0), vec4(d, 0)),
+                     transmittance_read + 4 * kArithmetic * float(tw) * transmittance_step});
   }
   compare("atmosphere", probe_atmosphere, cases);
   glDeleteTextures(1, &table_texture);
+  glDeleteTextures(1, &transmittance_texture);
 }
 
 TEST_CASE("cube_sampling.glsl on the GPU agrees with the CPU", "[probe]") {

@@ -61,17 +61,13 @@ vec3 air_scattering(float h) {
          vec3(MIE_SCATTERING * exp(-max(h, 0.0f) / MIE_SCALE_HEIGHT));
 }
 
-// Transmittance from point p (relative to the Earth's centre, radius R) to the top of the
-// atmosphere along unit direction d; zero when the ray meets the ground (a ray from the
-// surface or above meets it when it points down and the line crosses the sphere). Midpoint rule
-// in t with s = L t^2: short steps low down, where the air is dense (the Mie scale height is only
-// 1.2 km of the 100 km path).
-vec3 transmittance_to_space(vec3 p, vec3 d, float earth_radius) {
-  vec2 ground = ray_sphere(p, d, vec3(0.0f), earth_radius);
-  if (ground.x < ground.y && ground.y > 0.0f && dot(p, d) < 0.0f) return vec3(0.0f);
+// The air's optical depth (per colour) from point p (relative to the Earth's centre, radius R) to
+// the top of the atmosphere along unit direction d, through the planet if the ray meets it.
+// Midpoint rule in `steps` steps of t with s = L t^2: short steps low down, where the air is dense
+// (the Mie scale height is only 1.2 km of the 100 km path).
+vec3 optical_depth_to_top(vec3 p, vec3 d, float earth_radius, int steps) {
   vec2 top = ray_sphere(p, d, vec3(0.0f), earth_radius + ATMOSPHERE_THICKNESS);
   float length_to_top = max(top.y, 0.0f);
-  const int steps = 16;
   vec3 depth = vec3(0.0f);
   for (int i = 0; i < steps; ++i) {
     float t0 = float(i) / float(steps);
@@ -80,71 +76,178 @@ vec3 transmittance_to_space(vec3 p, vec3 d, float earth_radius) {
     vec3 q = p + (length_to_top * t * t) * d;
     depth += air_extinction(length(q) - earth_radius) * (length_to_top * (t1 * t1 - t0 * t0));
   }
-  return exp(-depth);
+  return depth;
+}
+
+// Transmittance from p to the top of the atmosphere along d; zero when the ray meets the ground
+// (a ray from the surface or above meets it when it points down and the line crosses the
+// sphere). 16 steps of optical_depth_to_top.
+vec3 transmittance_to_space(vec3 p, vec3 d, float earth_radius) {
+  vec2 ground = ray_sphere(p, d, vec3(0.0f), earth_radius);
+  if (ground.x < ground.y && ground.y > 0.0f && dot(p, d) < 0.0f) return vec3(0.0f);
+  return exp(-optical_depth_to_top(p, d, earth_radius, 16));
+}
+
+// The same from a table (Bruneton 2017, "Precomputed Atmospheric Scattering: a New
+// Implementation", his transmittance texture): the transmittance to the top from radius r along
+// a direction at cosine mu from the zenith, for every r in the air and every mu above the
+// horizon, made once (transmittance_table_entry) and read with one bilinear lookup
+// (transmittance_from_table) where transmittance_to_space integrates 16 steps of three
+// exponentials each: the orbit view's sky takes it at each of its samples. The table's axes are
+// Bruneton's: across, the distance d to the top between its least (straight up, top - r) and its
+// largest (towards the horizon, rho + H), so that the horizon is always the last column; up,
+// rho / H with rho = sqrt(r^2 - R^2) and H its value at the top, which gives the dense low air
+// most of the rows (altitude rho^2 / 2R: the first eighth of the rows holds the lowest 1.6 km).
+const int TRANSMITTANCE_TABLE_WIDTH = 256;
+const int TRANSMITTANCE_TABLE_HEIGHT = 64;
+// The steps of each entry's optical depth: the midpoint rule's error falls as 1/n^2, to 1/256 of
+// the 16 steps' (up to 0.65 % of the depth; docs/orbit_view.md, "The transmittance table").
+const int TRANSMITTANCE_TABLE_STEPS = 256;
+
+// A texture coordinate whose texel centres span x in [0, 1] over n texels.
+float table_coordinate(float x, int n) { return 0.5f / float(n) + x * (1.0f - 1.0f / float(n)); }
+
+// The table's coordinates of (r, mu); r within [R, R + ATMOSPHERE_THICKNESS]. Lengths as
+// differences of nearby radii, (top - r)(top + r) rather than top^2 - r^2, so that float keeps
+// metres at the ground.
+vec2 transmittance_table_uv(float r, float mu, float earth_radius) {
+  float top = earth_radius + ATMOSPHERE_THICKNESS;
+  float H = sqrt(ATMOSPHERE_THICKNESS * (top + earth_radius));
+  float rho = sqrt(max((r - earth_radius) * (r + earth_radius), 0.0f));
+  float d = max(-r * mu + sqrt(max((top - r) * (top + r) + r * r * mu * mu, 0.0f)), 0.0f);
+  float d_min = top - r, d_max = rho + H;
+  return vec2(table_coordinate((d - d_min) / (d_max - d_min), TRANSMITTANCE_TABLE_WIDTH),
+              table_coordinate(rho / H, TRANSMITTANCE_TABLE_HEIGHT));
+}
+
+// The table's texel (i, j): the (r, mu) of its centre, inverting transmittance_table_uv, and the
+// transmittance along that ray in TRANSMITTANCE_TABLE_STEPS steps (the last column grazes the
+// ground: its ray crosses the whole air near the surface and is dark, as the horizon's sun).
+vec3 transmittance_table_entry(int i, int j, float earth_radius) {
+  float top = earth_radius + ATMOSPHERE_THICKNESS;
+  float H = sqrt(ATMOSPHERE_THICKNESS * (top + earth_radius));
+  float rho = H * float(j) / float(TRANSMITTANCE_TABLE_HEIGHT - 1);
+  float r = sqrt(rho * rho + earth_radius * earth_radius);
+  float d_min = top - r, d_max = rho + H;
+  float d = d_min + (d_max - d_min) * float(i) / float(TRANSMITTANCE_TABLE_WIDTH - 1);
+  float mu = d <= 0.0f ? 1.0f : clamp((H * H - rho * rho - d * d) / (2.0f * r * d), -1.0f, 1.0f);
+  vec3 p = vec3(0.0f, 0.0f, r);
+  vec3 direction = vec3(sqrt(max(1.0f - mu * mu, 0.0f)), 0.0f, mu);
+  return exp(-optical_depth_to_top(p, direction, earth_radius, TRANSMITTANCE_TABLE_STEPS));
+}
+
+// The transmittance from p (inside the air; its radius is clamped to it) along unit d to the top
+// of the atmosphere, from the table; zero where the ray meets the ground, as
+// transmittance_to_space: the ray points down and r^2 mu^2 >= r^2 - R^2, the latter as
+// (r - R)(r + R) so that float decides it to a metre at the surface.
+vec3 transmittance_from_table(IN(TransmittanceTable) table, vec3 p, vec3 d, float earth_radius) {
+  float r = length(p);
+  float r_mu = dot(p, d);
+  if (r_mu < 0.0f && r_mu * r_mu >= (r - earth_radius) * (r + earth_radius)) return vec3(0.0f);
+  float inside = clamp(r, earth_radius, earth_radius + ATMOSPHERE_THICKNESS);
+  return vec3(textureLod(table, transmittance_table_uv(inside, r_mu / r, earth_radius), 0.0f));
 }
 
 // Multiple scattering (Hillaire 2020, section 5.5): the light that the air scatters more than
 // once, as an isotropic radiance Psi at altitude h with the sun at cosine mu_sun from the zenith;
 // a view ray's sample adds its scattering times Psi. The second order L2 is the single scattering
-// (isotropic phase) and the sunlit ground (Lambertian, ground_albedo) seen along 64 directions
-// of a sphere, 20 steps each; the orders above follow as the geometric series of the share f of
-// isotropic light that the air around the point scatters back to it: Psi = L2 / (1 - f).
-// Tabulated once (multiple_scattering_table_entry) and read at each sample (multiple_scattering).
+// (isotropic phase) and the sunlit ground (Lambertian, ground_albedo) seen along the directions
+// of a sphere, the sunlight at each step through the air of the transmittance table; the orders
+// above follow as the geometric series of the share f of isotropic light that the air around the
+// point scatters back to it: Psi = L2 / (1 - f). Tabulated once (multiple_scattering_table_entry)
+// and read at each sample (multiple_scattering).
+// The sphere's integral is split at the horizon's dip, cos = -sqrt(1 - R^2 / r^2): the rays just
+// above it cross the most air and carry most of the light, those just below end on the ground
+// nearby, so the integrand is steepest there. Each side takes `rings` / 2 rings of cosines spaced
+// quadratically towards the dip, times `azimuths` azimuths, and each ray `steps` steps spaced
+// quadratically from x, where the air is densest along it. At the table's counts
+// (MULTIPLE_SCATTERING_RINGS, _AZIMUTHS, _STEPS) within 1.3 % of the converged integral (2.5 % at
+// 60 km towards a setting sun) where Hillaire's 64 directions of uniform cosines, 20 steps each,
+// erred from -32 % to +206 %, for the same cost once the sunlight comes from the table
+// (docs/orbit_view.md).
 const int MULTIPLE_SCATTERING_TABLE_SIZE = 32;  // texels per side: mu_sun across, altitude up
-vec3 multiple_scattering_transfer(float h, float mu_sun, float earth_radius, float ground_albedo) {
-  vec3 x = vec3(0.0f, 0.0f, earth_radius + h);
+const int MULTIPLE_SCATTERING_RINGS = 16;
+const int MULTIPLE_SCATTERING_AZIMUTHS = 8;
+const int MULTIPLE_SCATTERING_STEPS = 40;
+vec3 multiple_scattering_transfer(IN(TransmittanceTable) transmittance, float h, float mu_sun, float earth_radius,
+                                  float ground_albedo, int rings, int azimuths, int steps) {
+  float r = earth_radius + h;
+  vec3 x = vec3(0.0f, 0.0f, r);
   vec3 sun = vec3(sqrt(max(0.0f, 1.0f - mu_sun * mu_sun)), 0.0f, mu_sun);
+  float dip = -sqrt(max(h * (r + earth_radius), 0.0f)) / r;
+  int half_rings = rings / 2;
   vec3 second = vec3(0.0f);
   vec3 transfer = vec3(0.0f);
-  const int rings = 8;
-  const int steps = 20;
-  for (int i = 0; i < rings * rings; ++i) {
-    // Equal areas: cosines uniform in [-1, 1], azimuths uniform.
-    float cos_theta = 1.0f - 2.0f * (float(i / rings) + 0.5f) / float(rings);
-    float phi = 2.0f * PI_F * (float(i % rings) + 0.5f) / float(rings);
+  for (int i = 0; i < half_rings * 2 * azimuths; ++i) {
+    // Ring k of a side at the cosine dip +- span t^2 (t the ring's middle share), its share of
+    // the sphere span (t1^2 - t0^2) / 2 over the azimuths.
+    int ring = i / azimuths;
+    bool above = ring < half_rings;
+    float k = float(above ? ring : ring - half_rings);
+    float t0 = k / float(half_rings), t1 = (k + 1.0f) / float(half_rings);
+    float t = 0.5f * (t0 + t1);
+    float span = above ? 1.0f - dip : 1.0f + dip;
+    float cos_theta = above ? dip + span * t * t : dip - span * t * t;
+    float weight = 0.5f * span * (t1 * t1 - t0 * t0) / float(azimuths);
+    float phi = 2.0f * PI_F * (float(i % azimuths) + 0.5f) / float(azimuths);
     float sin_theta = sqrt(max(0.0f, 1.0f - cos_theta * cos_theta));
     vec3 w = vec3(sin_theta * cos(phi), sin_theta * sin(phi), cos_theta);
     vec2 ground = ray_sphere(x, w, vec3(0.0f), earth_radius);
     vec2 top = ray_sphere(x, w, vec3(0.0f), earth_radius + ATMOSPHERE_THICKNESS);
-    bool meets_ground = ground.x < ground.y && ground.x > 0.0f;
-    float ds = (meets_ground ? ground.x : max(top.y, 0.0f)) / float(steps);
+    // A downward ray meets the ground (at once from the table's lowest row, x on the ground, where
+    // the nearer root rounds to either side of 0): as transmittance_to_space's test.
+    bool meets_ground = ground.x < ground.y && ground.y > 0.0f && dot(x, w) < 0.0f;
+    float length_along = meets_ground ? max(ground.x, 0.0f) : max(top.y, 0.0f);
     vec3 light = vec3(0.0f);
-    vec3 transmittance = vec3(1.0f);
-    for (int k = 0; k < steps; ++k) {
-      vec3 q = x + ((float(k) + 0.5f) * ds) * w;
+    vec3 transmitted = vec3(1.0f);  // along the direction, from x to the step
+    for (int j = 0; j < steps; ++j) {
+      float a0 = float(j) / float(steps), a1 = float(j + 1) / float(steps);
+      float a = 0.5f * (a0 + a1);
+      float ds = length_along * (a1 * a1 - a0 * a0);
+      vec3 q = x + (length_along * a * a) * w;
       float hq = length(q) - earth_radius;
       vec3 extinction = max(air_extinction(hq), vec3(1.0e-12f));
       vec3 scattering = air_scattering(hq);
       vec3 step_transmittance = exp(-extinction * ds);
       vec3 step_share = (vec3(1.0f) - step_transmittance) / extinction;
-      light += transmittance * scattering * transmittance_to_space(q, sun, earth_radius) * step_share / (4.0f * PI_F);
-      transfer += transmittance * scattering * step_share / float(rings * rings);
-      transmittance *= step_transmittance;
+      light += transmitted * scattering * transmittance_from_table(transmittance, q, sun, earth_radius) * step_share /
+               (4.0f * PI_F);
+      transfer += transmitted * scattering * step_share * weight;
+      transmitted *= step_transmittance;
     }
     if (meets_ground) {
-      vec3 g = x + (ds * float(steps)) * w;
+      vec3 g = x + length_along * w;
       vec3 n = normalize(g);
-      light += transmittance * transmittance_to_space(g + n, sun, earth_radius) * max(dot(n, sun), 0.0f) *
+      light += transmitted * transmittance_from_table(transmittance, g + n, sun, earth_radius) * max(dot(n, sun), 0.0f) *
                ground_albedo / PI_F;
     }
-    second += light / float(rings * rings);
+    second += light * weight;
   }
   return solar_irradiance() * second / (vec3(1.0f) - transfer);
 }
 
-// The table's texel (i, j): mu_sun from -1 to 1 across, altitude from 0 to the air's top up.
-vec3 multiple_scattering_table_entry(int i, int j, float earth_radius, float ground_albedo) {
+// The table's texel (i, j): mu_sun from -1 to 1 across; up, the altitude from 0 to the air's top
+// as the square of the row's share, (j / n)^2 ATMOSPHERE_THICKNESS, so that the rows crowd where
+// the air is dense and Psi changes fastest (rows at 0, 0.10, 0.42, 0.94 km ... against 3.2 km
+// apart: read between linear rows, Psi in the lowest 2 km came out up to 5 % low, now within 3 %
+// everywhere; docs/orbit_view.md).
+vec3 multiple_scattering_table_entry(IN(TransmittanceTable) transmittance, int i, int j, float earth_radius,
+                                     float ground_albedo) {
   float n = float(MULTIPLE_SCATTERING_TABLE_SIZE - 1);
-  return multiple_scattering_transfer(ATMOSPHERE_THICKNESS * float(j) / n, 2.0f * float(i) / n - 1.0f, earth_radius,
-                                      ground_albedo);
+  float row = float(j) / n;
+  return multiple_scattering_transfer(transmittance, ATMOSPHERE_THICKNESS * row * row, 2.0f * float(i) / n - 1.0f,
+                                      earth_radius, ground_albedo, MULTIPLE_SCATTERING_RINGS,
+                                      MULTIPLE_SCATTERING_AZIMUTHS, MULTIPLE_SCATTERING_STEPS);
 }
 
 // Psi at point q (from the Earth's centre) with the sun towards `sun`, from the table: texel
-// centres at the table's nodes, bilinear between them.
+// centres at the table's nodes (the rows' altitudes the squares of their shares), bilinear
+// between them.
 vec3 multiple_scattering(IN(ScatteringTable) table, vec3 q, vec3 sun, float earth_radius) {
   float r = length(q);
   float n = float(MULTIPLE_SCATTERING_TABLE_SIZE);
-  vec2 node = vec2(0.5f * (dot(q, sun) / r + 1.0f), clamp((r - earth_radius) / ATMOSPHERE_THICKNESS, 0.0f, 1.0f));
+  vec2 node =
+      vec2(0.5f * (dot(q, sun) / r + 1.0f), sqrt(clamp((r - earth_radius) / ATMOSPHERE_THICKNESS, 0.0f, 1.0f)));
   return vec3(textureLod(table, (node * (n - 1.0f) + vec2(0.5f)) / n, 0.0f));
 }
 
@@ -185,14 +288,16 @@ vec3 sky_integral_point(IN(SkyIntegral) s, vec3 o, vec3 d, int i) {
   return o + (s0 + 0.5f * s.ds) * d;
 }
 
-// Step i with its sample q; the sun's direct light reaches q times sun_visibility (1: clear).
-void sky_integral_step(INOUT(SkyIntegral) s, vec3 q, int i, vec3 sun, float earth_radius, float sun_visibility) {
+// Step i with its sample q, where the sunlight arrives through the air with sun_transmittance
+// (transmittance_to_space or transmittance_from_table) times sun_visibility (1: clear).
+void sky_integral_step_in_sunlight(INOUT(SkyIntegral) s, vec3 q, int i, vec3 sun_transmittance, float earth_radius,
+                                   float sun_visibility) {
   float s0 = float(i) * s.ds;
   float ds = s.ds;
   float h = length(q) - earth_radius;
   vec3 extinction = max(air_extinction(h), vec3(1.0e-12f));
   vec3 source = (s.rayleigh * exp(-h / RAYLEIGH_SCALE_HEIGHT) + vec3(s.mie * exp(-h / MIE_SCALE_HEIGHT))) *
-                transmittance_to_space(q, sun, earth_radius) * solar_irradiance() * sun_visibility;
+                sun_transmittance * solar_irradiance() * sun_visibility;
   // Second-order scattering, isotropic approximation: the air scatters the mean radiance around
   // it into the view whatever the phase function (its integral is 1). It keeps a cloud's shadow
   // in the air from turning black, where the sun's single scattering is gone.
@@ -210,6 +315,12 @@ void sky_integral_step(INOUT(SkyIntegral) s, vec3 q, int i, vec3 sun, float eart
   vec3 step_transmittance = exp(-extinction * ds);
   s.radiance += s.transmittance * source * (vec3(1.0f) - step_transmittance) / extinction;
   s.transmittance *= step_transmittance;
+}
+
+// Step i with its sample q; the sun's direct light reaches q through the air (16 steps of
+// transmittance_to_space) times sun_visibility (1: clear).
+void sky_integral_step(INOUT(SkyIntegral) s, vec3 q, int i, vec3 sun, float earth_radius, float sun_visibility) {
+  sky_integral_step_in_sunlight(s, q, i, transmittance_to_space(q, sun, earth_radius), earth_radius, sun_visibility);
 }
 
 void sky_integral_end(IN(SkyIntegral) s, OUT(vec3) inscatter_total, OUT(vec3) inscatter_split,
@@ -233,15 +344,17 @@ void sky_single_scattering(vec3 o, vec3 d, float distance, float split, vec3 sun
 }
 
 // The sky along a view ray as sky_single_scattering, with the multiple scattering of `table`
-// (multiple_scattering) added at each sample: the orbit view's sky.
-void sky_scattering(IN(ScatteringTable) table, vec3 o, vec3 d, float distance, float split, vec3 sun,
-                    float earth_radius, int steps, OUT(vec3) inscatter_total, OUT(vec3) inscatter_split,
-                    OUT(vec3) transmittance_total, OUT(vec3) transmittance_split) {
+// (multiple_scattering) added at each sample and the sunlight's way through the air read from
+// `transmittance` (transmittance_from_table): the orbit view's sky.
+void sky_scattering(IN(ScatteringTable) table, IN(TransmittanceTable) transmittance, vec3 o, vec3 d, float distance,
+                    float split, vec3 sun, float earth_radius, int steps, OUT(vec3) inscatter_total,
+                    OUT(vec3) inscatter_split, OUT(vec3) transmittance_total, OUT(vec3) transmittance_split) {
   SkyIntegral s = sky_integral_begin(d, distance, split, sun, steps);
   for (int i = 0; i < steps; ++i) {
     vec3 q = sky_integral_point(s, o, d, i);
     s.skylight = multiple_scattering(table, q, sun, earth_radius);
-    sky_integral_step(s, q, i, sun, earth_radius, 1.0f);
+    sky_integral_step_in_sunlight(s, q, i, transmittance_from_table(transmittance, q, sun, earth_radius),
+                                  earth_radius, 1.0f);
   }
   sky_integral_end(s, inscatter_total, inscatter_split, transmittance_total, transmittance_split);
 }

@@ -5,6 +5,17 @@
 #define IN(T) in T
 #define OUT(T) out T
 #define INOUT(T) inout T
+// A branch that a group of lanes can skip. SIMD CPU drivers (llvmpipe) run an `if`'s body for the
+// whole group of lanes with those whose condition fails masked, so a branch rarely taken costs as
+// much as one always taken; a loop ends when its last lane leaves it. Written as
+//   for (int pass = FIRST_PASS(condition); pass < ONE_PASS; ++pass) { ... }
+// the body runs once where the condition holds and not at all for a group where it holds for no
+// lane. ONE_PASS is 1 plus a uniform never set (uniforms start at 0, GLSL 4.50 section 4.3.5): a
+// bound the compiler cannot know, which keeps it from unrolling the loop back into an `if`. On a
+// GPU it is a branch as any other.
+uniform int u_unset_zero;
+#define FIRST_PASS(condition) ((condition) ? 0 : 1)
+#define ONE_PASS (1 + u_unset_zero)
 // The textures a library function reads, named by what they hold and passed as parameters
 // (Bruneton's precomputed_atmospheric_scattering does the same): GLSL samplers here; in C++
 // classes that GLSL's texture functions are overloaded for (src/shader_math/hooks.hpp).
@@ -16,6 +27,7 @@
 #define ConvectiveVolumes sampler3D  // the convective clouds' density volumes stacked along z
 #define ShadowMaps sampler2DArray    // a layer per shadow map
 #define ScatteringTable sampler2D    // the air's multiple scattering by sun angle and altitude (atmosphere.glsl)
+#define TransmittanceTable sampler2D  // the air's transmittance to its top by altitude and angle (atmosphere.glsl)
 // Images read with imageLoad. GLSL takes no format and no `in` on an image parameter: the
 // argument's format applies (GLSL 4.50 section 4.4.6.2), and readonly is part of the type here.
 #define CubeImage readonly imageCube         // a cube map, face = layer (cube_sampling.glsl)

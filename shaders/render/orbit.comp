@@ -3,7 +3,8 @@
 // the global cover's cube map (cover, optical thickness and cloud-top height: each texel's cloud
 // a slab below its top, as thick as its type and tau make it), cloud shadows on the ground, city
 // lights on the night side and the atmosphere of shaders/lib/atmosphere.glsl (single scattering
-// and the table of multiple scattering) in front of both.
+// and the table of multiple scattering) in front of both, the sunlight everywhere through the air
+// of the transmittance table.
 // One invocation per pixel, one work group per tile of ORBIT_TILE x ORBIT_TILE pixels listed in
 // `tiles` (the tiles whose rays can meet the air: src/render/orbit_tiles.cpp, whose ORBIT_TILE is
 // this one; the host clears the others). Positions are relative to the camera: the host computes
@@ -20,6 +21,7 @@ layout(binding = 3) uniform samplerCube cover_map;    // (cover, tau, cloud top 
 layout(binding = 4) uniform sampler2D sky_table;      // the air's multiple scattering (atmosphere.glsl)
 layout(binding = 5) uniform sampler2D water_texture;  // equirect, fraction of open water (sun glint)
 layout(std430, binding = 6) readonly buffer Tiles { uvec2 tiles[]; };  // (column, row), tile units
+layout(binding = 7) uniform sampler2D transmittance_table;  // the air's transmittance to its top (atmosphere.glsl)
 
 #include "../lib/atmosphere.glsl"
 #include "../lib/cloud_properties.glsl"
@@ -89,15 +91,21 @@ float cover_lod(float footprint) { return max(log2(max(footprint, 1.0f) / u_cove
 // The cover's channels (cover, tau, top km, 0) in direction n at mip level `lod`. Where a cover
 // texel spans more than a sample (lod < 1) the base level is filtered by the cubic B-spline
 // (cube_bspline.glsl): trilinear lookups alone show the texel grid as a staircase of straight
-// edges from low orbit. Between lod 0 and 1 the two are blended, so nothing switches with distance.
-vec4 cover_at(vec3 n, float lod) {
-  if (lod >= 1.0f) return textureLod(cover_map, n, lod);
-  CubeBsplineTaps taps = cube_bspline_taps(n, u_cover_size);
-  vec4 c00 = textureLod(cover_map, taps.d00, 0.0f), c10 = textureLod(cover_map, taps.d10, 0.0f);
-  vec4 c01 = textureLod(cover_map, taps.d01, 0.0f), c11 = textureLod(cover_map, taps.d11, 0.0f);
-  vec4 smooth_cover = cube_bspline_combine(taps, c00, c10, c01, c11);
-  // Close up (lod 0, most samples below 2000 km) the mipmapped lookup has no weight: not fetched.
-  return lod > 0.0f ? mix(smooth_cover, textureLod(cover_map, n, lod), lod) : smooth_cover;
+// edges from low orbit. Between lod 0 and 1 the two are blended, so nothing switches with
+// distance. Samples that are never seen as edges (`smoothed` false: the light's segments beyond
+// its first, which only dim it) take the trilinear lookup alone: the B-spline's four cube lookups
+// are most of a cloud sample's cost on llvmpipe.
+vec4 cover_at(vec3 n, float lod, bool smoothed) {
+  vec4 mipmapped = textureLod(cover_map, n, lod);
+  vec4 result = mipmapped;
+  // A branch that groups of lanes which need no B-spline skip (prelude.glsl).
+  for (int pass = FIRST_PASS(smoothed && lod < 1.0f); pass < ONE_PASS; ++pass) {
+    CubeBsplineTaps taps = cube_bspline_taps(n, u_cover_size);
+    vec4 c00 = textureLod(cover_map, taps.d00, 0.0f), c10 = textureLod(cover_map, taps.d10, 0.0f);
+    vec4 c01 = textureLod(cover_map, taps.d01, 0.0f), c11 = textureLod(cover_map, taps.d11, 0.0f);
+    result = mix(cube_bspline_combine(taps, c00, c10, c01, c11), mipmapped, lod);
+  }
+  return result;
 }
 
 // The relief of the clouds' tops: the sub-texel field raises the top by this share of the cloud's
@@ -123,9 +131,10 @@ const float TOP_RELIEF_SHARE = 0.15f;
 // `heights` (lowest, highest altitude, m) is the part of the column the caller needs: where it
 // lies wholly below the base or above the highest top the relief can raise, the slab is not
 // looked at further (the sub-texel cloud costs up to twelve octaves of noise) and is clear.
-vec4 cloud_slab(vec3 p, float footprint, vec2 heights) {
+// `smoothed`: the cover filtered by the B-spline where its texels are resolved (cover_at).
+vec4 cloud_slab(vec3 p, float footprint, vec2 heights, bool smoothed) {
   vec3 n = normalize(p);
-  vec4 c = cover_at(n, cover_lod(footprint));
+  vec4 c = cover_at(n, cover_lod(footprint), smoothed);
   if (u_cover_properties == 0) {
     c.y = optical_thickness_from_cover(c.x, u_tau_median, u_tau_spread);
     c.z = cloud_top_from_cover(c.x, asin(clamp(n.z, -1.0f, 1.0f)));
@@ -157,13 +166,13 @@ vec4 cloud_slab(vec3 p, float footprint, vec2 heights) {
 // the segment was scattered on average: the lit side of a thick cloud, not its dark inside.
 // `column` is (the slab's own optical thickness, the own and the mean optical depth of `inside`
 // below the slab's top), for the light of its multiple scattering (slab_source).
-vec2 segment_extinction(vec3 p, vec3 d, float dt, float footprint, out vec3 inside, out vec3 column) {
+vec2 segment_extinction(vec3 p, vec3 d, float dt, float footprint, bool smoothed, out vec3 inside, out vec3 column) {
   vec3 middle = p + 0.5f * dt * d;
   inside = middle;
   column = vec3(0.0f);
   float h0 = length(p) - u_radius, h1 = length(p + dt * d) - u_radius;
   float low = min(h0, h1), high = max(h0, h1);
-  vec4 slab = cloud_slab(middle, footprint, vec2(low, high));
+  vec4 slab = cloud_slab(middle, footprint, vec2(low, high), smoothed);
   if (slab.z <= 0.0f || slab.y <= slab.x) return vec2(0.0f);
   float overlap;
   if (high - low < 1.0e-3f * max(dt, 1.0f)) {
@@ -205,12 +214,12 @@ vec2 optical_depth_to_sun(vec3 p, int steps, float footprint) {
     // Quadratic spacing: short steps near p, where the light's shadow detail is.
     float s0 = start + span * t0 * t0, s1 = start + span * t1 * t1;
     // The light integrates the clouds across the segment: they are looked up at its length's
-    // scale (one mipmapped fetch, not the B-spline's four, once that spans a cover texel). The
-    // sub-texel cloud only in the first segment, where the tops' relief shades its neighbours;
-    // beyond it the cover's mean (its expectation) at half the cost of a light ray.
+    // scale. The B-spline and the sub-texel cloud only in the first segment, where the tops'
+    // relief shades its neighbours and the shadows' edges are drawn; beyond it the cover's mean
+    // (its expectation) by one trilinear lookup, at a fraction of the cost of a light ray.
     float scale = max(footprint, 0.5f * (s1 - s0));
     if (i > 0) scale = max(scale, u_cover_texel);
-    depth += segment_extinction(p + s0 * u_sun, u_sun, s1 - s0, scale, inside, column) * (s1 - s0);
+    depth += segment_extinction(p + s0 * u_sun, u_sun, s1 - s0, scale, i == 0, inside, column) * (s1 - s0);
   }
   return depth;
 }
@@ -293,10 +302,10 @@ void main() {
         vec3 p;
         float footprint = max(t * u_pixel_angle, 0.25f * dt);
         vec3 column;
-        float sigma = segment_extinction(oc + t * d, d, segment, footprint, p, column).x;
+        float sigma = segment_extinction(oc + t * d, d, segment, footprint, true, p, column).x;
         if (sigma <= 0.0f) continue;
         vec3 n = normalize(p);
-        if (sun_at_cloud.x < 0.0f) sun_at_cloud = solar_irradiance() * transmittance_to_space(p, u_sun, u_radius);
+        if (sun_at_cloud.x < 0.0f) sun_at_cloud = solar_irradiance() * transmittance_from_table(transmittance_table, p, u_sun, u_radius);
         vec2 tau_light = optical_depth_to_sun(p, sigma > 0.0f ? 4 : 0, footprint);
         // Single scattering, plus the multiply scattered light of the sample's own slab
         // (slab_source: the slab reflects and lets through what the delta-Eddington slab does),
@@ -334,7 +343,8 @@ void main() {
       // The steps repeat the branches' conditions: on llvmpipe only a loop's count skips work.
       int shadow_steps = hits_ground && mu > -0.02f ? u_shadow_steps : 0;
       float shadow = cloud_shadow(optical_depth_to_sun(g, shadow_steps, footprint));
-      direct = solar_irradiance() * transmittance_to_space(g + 1.0f * n, u_sun, u_radius) * max(mu, 0.0f) * shadow;
+      direct = solar_irradiance() * transmittance_from_table(transmittance_table, g + 1.0f * n, u_sun, u_radius) *
+               max(mu, 0.0f) * shadow;
     }
     vec3 sky = PI_F * sky_ambient(n, u_sun);
     float night = 1.0f - smoothstep(-0.1f, 0.05f, mu);
@@ -352,8 +362,8 @@ void main() {
     float split = weight_sum > 0.0f ? cloud_distance - air_start : 0.0f;
     // No steps outside the air, as the ground's shadow: the branch alone skips nothing on llvmpipe.
     int sky_steps = in_air && ray_end > air_start ? u_sky_steps : 0;
-    sky_scattering(sky_table, start, d, ray_end - air_start, split, u_sun, u_radius, sky_steps, inscatter_total,
-                   inscatter_split, transmittance_total, transmittance_split);
+    sky_scattering(sky_table, transmittance_table, start, d, ray_end - air_start, split, u_sun, u_radius, sky_steps,
+                   inscatter_total, inscatter_split, transmittance_total, transmittance_split);
     radiance = inscatter_split + transmittance_split * cloud_light +
                cloud_transmittance * (inscatter_total - inscatter_split + transmittance_total * background);
   } else {

@@ -35,6 +35,24 @@ std::vector<float> next_mip_level(const std::vector<float>& texels, int width, i
       texels.size() != static_cast<size_t>(width) * static_cast<size_t>(height) * static_cast<size_t>(channels))
     throw std::invalid_argument("next_mip_level: the texels do not match width x height x channels");
   const int w = std::max(1, width / 2), h = std::max(1, height / 2);
+  if (width % 2 == 0 && height % 2 == 0) {
+    // Even sizes: each texel the mean of the 2 x 2 below it, summed in double as the general
+    // path's weights of 1/2 (the same float), without its weight tables.
+    std::vector<float> out(static_cast<size_t>(w) * h * channels);
+    for (int y = 0; y < h; ++y) {
+      const float* upper = &texels[static_cast<size_t>(2 * y) * width * channels];
+      const float* lower = upper + static_cast<size_t>(width) * channels;
+      float* target = &out[static_cast<size_t>(y) * w * channels];
+      for (int x = 0; x < w; ++x)
+        for (int c = 0; c < channels; ++c) {
+          const size_t left = static_cast<size_t>(2 * x) * channels + c, right = left + channels;
+          target[static_cast<size_t>(x) * channels + c] =
+              static_cast<float>(0.5 * (0.5 * (double(upper[left]) + double(upper[right])) +
+                                        0.5 * (double(lower[left]) + double(lower[right]))));
+        }
+    }
+    return out;
+  }
   const AxisWeights across = axis_weights(width, w), down = axis_weights(height, h);
   // Rows first (each source row reduced to w texels), then columns.
   std::vector<double> rows(static_cast<size_t>(w) * height * channels, 0.0);

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <algorithm>
+#include <array>
 #include <system_error>
 
 #include "core/error.hpp"
@@ -24,10 +25,30 @@ core::ImageData read_equirect(const std::string& path, const std::string& option
                            std::string("could not be read: ") + e.what());
   }
   if (image.width < 2) throw core::InputError(option, path, "an image of at least 2 x 1 pixels", "is too small");
-  // Integer formats hold display-encoded (sRGB) colour; float formats hold linear values.
-  if (!header.float_samples)
-    for (size_t k = 0; k < image.pixels.size(); ++k)
-      if (k % size_t(image.channels) < 3) image.pixels[k] = srgb_to_linear(image.pixels[k]);
+  // Integer formats hold display-encoded (sRGB) colour; float formats hold linear values. An 8-bit
+  // image has 256 values: each decoded once (the decoder's float for code n, and its linear value,
+  // kept under n) instead of a pow per sample; other values are decoded as they come.
+  if (!header.float_samples) {
+    std::array<float, 256> code_value, linear;
+    std::array<bool, 256> known{};
+    for (size_t k = 0; k < image.pixels.size(); ++k) {
+      if (k % size_t(image.channels) >= 3) continue;
+      const float v = image.pixels[k];
+      const long n = std::lround(v * 255.0f);
+      if (n < 0 || n > 255) {
+        image.pixels[k] = srgb_to_linear(v);
+      } else if (known[size_t(n)] && code_value[size_t(n)] == v) {
+        image.pixels[k] = linear[size_t(n)];
+      } else {
+        image.pixels[k] = srgb_to_linear(v);
+        if (!known[size_t(n)]) {
+          known[size_t(n)] = true;
+          code_value[size_t(n)] = v;
+          linear[size_t(n)] = image.pixels[k];
+        }
+      }
+    }
+  }
   return image;
 }
 
@@ -42,16 +63,27 @@ core::ImageData etopo5_water(const std::string& path) {
   core::ImageData water{width, height, 1, std::vector<float>(std::size_t(width) * height, 0.0f)};
   const double per_degree = 1.0 / raster.step_deg;
   const int wrap = static_cast<int>(std::lround(360.0 * per_degree));
+  // The grid's rows depend on the pixel's row alone and its columns on its column alone: found
+  // once for each, not for each of the 16 points of every pixel.
+  std::vector<int> rows(std::size_t(height) * 4), columns(std::size_t(width) * 4);
+  for (int j = 0; j < height; ++j)
+    for (int k = 0; k < 4; ++k) {
+      const double lat = 90.0 - (j + 0.125 + 0.25 * k) * 180.0 / height;
+      rows[std::size_t(j) * 4 + k] =
+          std::clamp(static_cast<int>(std::lround((lat - raster.south_deg) * per_degree)), 0, raster.rows - 1);
+    }
+  for (int i = 0; i < width; ++i)
+    for (int k = 0; k < 4; ++k) {
+      const double lon = -180.0 + (i + 0.125 + 0.25 * k) * 360.0 / width;
+      const int column = static_cast<int>(std::lround((lon - raster.west_deg) * per_degree)) % wrap;
+      columns[std::size_t(i) * 4 + k] = (column + wrap) % wrap;
+    }
   for (int j = 0; j < height; ++j)
     for (int i = 0; i < width; ++i) {
       int wet = 0;
       for (int k = 0; k < 16; ++k) {
-        const double lat = 90.0 - (j + 0.125 + 0.25 * (k / 4)) * 180.0 / height;
-        const double lon = -180.0 + (i + 0.125 + 0.25 * (k % 4)) * 360.0 / width;
-        const int row =
-            std::clamp(static_cast<int>(std::lround((lat - raster.south_deg) * per_degree)), 0, raster.rows - 1);
-        const int column = static_cast<int>(std::lround((lon - raster.west_deg) * per_degree)) % wrap;
-        if (raster.heights[std::size_t(row) * raster.columns + (column + wrap) % wrap] < 0.0f) ++wet;
+        const int row = rows[std::size_t(j) * 4 + k / 4], column = columns[std::size_t(i) * 4 + k % 4];
+        if (raster.heights[std::size_t(row) * raster.columns + column] < 0.0f) ++wet;
       }
       water.pixels[std::size_t(j) * width + i] = float(wet) / 16.0f;
     }

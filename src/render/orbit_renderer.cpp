@@ -252,13 +252,14 @@ double framing_fov_deg(double altitude_m, double planet_radius_m, int width, int
 struct OrbitRenderer::Gl {
   gpu::ComputeProgram program{"render/orbit.comp"};
   GLuint day = 0, night = 0, water = 0, cover = 0;
-  GLuint sky_table = 0;  // the air's multiple scattering for the planet's radius
+  GLuint sky_table = 0;      // the air's multiple scattering for the planet's radius
+  GLuint transmittance = 0;  // and its transmittance
   double sky_table_radius = 0;
   GLuint tiles = 0;  // the frame's tiles to draw (orbit_tiles.hpp), uvec2 each
   int day_width = 1, cover_size = 1;
   bool cover_properties = false;  // the cover has its own tau and cloud tops
   ~Gl() {
-    for (GLuint id : {day, night, water, cover, sky_table})
+    for (GLuint id : {day, night, water, cover, sky_table, transmittance})
       if (id != 0) glDeleteTextures(1, &id);
     if (tiles != 0) glDeleteBuffers(1, &tiles);
   }
@@ -294,7 +295,10 @@ OrbitRenderer::~OrbitRenderer() = default;
 void OrbitRenderer::update_sky_table() {
   if (gl_->sky_table != 0 && gl_->sky_table_radius == settings_.planet_radius_m) return;
   if (gl_->sky_table != 0) glDeleteTextures(1, &gl_->sky_table);
-  gl_->sky_table = multiple_scattering_texture(static_cast<float>(settings_.planet_radius_m), kPlanetAlbedo);
+  if (gl_->transmittance != 0) glDeleteTextures(1, &gl_->transmittance);
+  gl_->transmittance = transmittance_texture(static_cast<float>(settings_.planet_radius_m));
+  gl_->sky_table =
+      multiple_scattering_texture(gl_->transmittance, static_cast<float>(settings_.planet_radius_m), kPlanetAlbedo);
   gl_->sky_table_radius = settings_.planet_radius_m;
 }
 
@@ -387,6 +391,7 @@ double OrbitRenderer::render_tiles(const OrbitCamera& camera, double unix_second
     glBindTextureUnit(orbit::water_texture, gl_->water);
     glBindTextureUnit(orbit::cover_map, gl_->cover);
     glBindTextureUnit(orbit::sky_table, gl_->sky_table);
+    glBindTextureUnit(orbit::transmittance_table, gl_->transmittance);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, orbit::tiles, gl_->tiles);
     // A work group per tile, in rows of at most 65535 groups (the dispatch's per-axis minimum).
     const GLuint count = GLuint(tiles.size()), per_row = std::min<GLuint>(count, 65535u);

@@ -122,7 +122,7 @@ class OrbitRenderer {
   void set_cover(const CoverCube& cover);            // a new cover (e.g. regenerated), same checks
 
  private:
-  void update_sky_table();  // makes the multiple-scattering table anew when the radius changed
+  void update_sky_table();  // makes the air's tables anew when the radius changed
   struct Gl;
   std::unique_ptr<Gl> gl_;
   OrbitSettings settings_;

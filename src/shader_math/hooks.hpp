@@ -88,9 +88,9 @@ struct DensitySource {
 using DensityVolume = DensitySource;
 inline vec4 texture(IN(DensitySource) density, vec3 uvw) { return vec4(density.sample(uvw)); }
 
-// A small 2D table of vec4 in host memory (atmosphere.glsl's ScatteringTable): texels[row * width
-// + column], rows from t = 0, sampled as GLSL's textureLod() at level 0 with GL_LINEAR filtering
-// and GL_CLAMP_TO_EDGE wrapping.
+// A small 2D table of vec4 in host memory (atmosphere.glsl's ScatteringTable and
+// TransmittanceTable): texels[row * width + column], rows from t = 0, sampled as GLSL's
+// textureLod() at level 0 with GL_LINEAR filtering and GL_CLAMP_TO_EDGE wrapping.
 struct TableSource {
   int width = 0;
   int height = 0;
@@ -98,6 +98,7 @@ struct TableSource {
   vec4 sample(vec2 uv) const;
 };
 using ScatteringTable = TableSource;
+using TransmittanceTable = TableSource;
 inline vec4 textureLod(IN(TableSource) table, vec2 uv, float) { return table.sample(uv); }
 
 // The convective clouds' density volumes (cloud_march.glsl's ConvectiveVolumes): `count`
