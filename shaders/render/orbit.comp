@@ -300,9 +300,15 @@ void main() {
         float t = s0 < len0 ? shell.x + s0 : shell.z + (s0 - len0);
         float segment = s1 - s0;
         vec3 p;
-        float footprint = max(t * u_pixel_angle, 0.25f * dt);
+        // The pixel's footprint on the cloud: across the ray t alpha, and along the surface that
+        // over the cosine of the ray's incidence, which near the horizon is many times longer.
+        // The sub-texel cloud is filtered by the longer (as GPUs choose a texture's level by the
+        // larger axis): by the shorter, the octaves between the two would alias into speckle.
+        vec3 at = oc + t * d;
+        float incidence = max(abs(dot(d, at)) / length(at), 0.05f);
+        float footprint = max(t * u_pixel_angle / incidence, 0.25f * dt);
         vec3 column;
-        float sigma = segment_extinction(oc + t * d, d, segment, footprint, true, p, column).x;
+        float sigma = segment_extinction(at, d, segment, footprint, true, p, column).x;
         if (sigma <= 0.0f) continue;
         vec3 n = normalize(p);
         if (sun_at_cloud.x < 0.0f) sun_at_cloud = solar_irradiance() * transmittance_from_table(transmittance_table, p, u_sun, u_radius);
