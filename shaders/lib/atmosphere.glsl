@@ -245,10 +245,10 @@ vec3 multiple_scattering_table_entry(IN(TransmittanceTable) transmittance, int i
 // between them.
 vec3 multiple_scattering(IN(ScatteringTable) table, vec3 q, vec3 sun, float earth_radius) {
   float r = length(q);
-  float n = float(MULTIPLE_SCATTERING_TABLE_SIZE);
-  vec2 node =
-      vec2(0.5f * (dot(q, sun) / r + 1.0f), sqrt(clamp((r - earth_radius) / ATMOSPHERE_THICKNESS, 0.0f, 1.0f)));
-  return vec3(textureLod(table, (node * (n - 1.0f) + vec2(0.5f)) / n, 0.0f));
+  const int n = MULTIPLE_SCATTERING_TABLE_SIZE;
+  vec2 uv = vec2(table_coordinate(0.5f * (dot(q, sun) / r + 1.0f), n),
+                 table_coordinate(sqrt(clamp((r - earth_radius) / ATMOSPHERE_THICKNESS, 0.0f, 1.0f)), n));
+  return vec3(textureLod(table, uv, 0.0f));
 }
 
 // The clear-sky integral along a view ray, step by step, so that a caller may shadow the sun
