@@ -13,7 +13,7 @@ std::vector<glsl::vec4> multiple_scattering_table(float earth_radius, float grou
   const glsl::TransmittanceTable transmittance{glsl::TRANSMITTANCE_TABLE_WIDTH, glsl::TRANSMITTANCE_TABLE_HEIGHT,
                                                transmittances.data()};
   std::vector<glsl::vec4> table(static_cast<size_t>(n) * n);
-  // 1024 texels of 64 directions x 20 steps each.
+  // 1024 texels of MULTIPLE_SCATTERING_RINGS x _AZIMUTHS directions of _STEPS steps each (128 x 40).
   core::parallel_rows(n, [&](int begin, int end) {
     for (int j = begin; j < end; ++j) {
       for (int i = 0; i < n; ++i) {
