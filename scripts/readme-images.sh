@@ -2,7 +2,7 @@
 # Regenerates the README's pictures in docs/images from today's code (after a build in build/):
 #   docs/images/cover_equirect.png           nephele generate (defaults), the equirect preview
 #   docs/images/cover_stats.png              nephele stats of that cover (coverage by latitude, spectrum, D)
-#   docs/images/cover_equirect_surface.png   nephele generate --surface etopo5 (the land/ocean mask)
+#   docs/images/cover_equirect_no_surface.png  nephele generate --surface none (no land/ocean mask)
 #   docs/images/cover_cells.png              a 1024 cover's equirect, 11-46 N, 74 W-15 E (docs/climate.md, "Cells")
 #   docs/images/cover_sequence.gif           nephele generate --sequence 24 --interval 3 (a day of the moving cover)
 #   docs/images/cover_motion.svg             nephele stats of that sequence (speeds by band, decorrelation)
@@ -57,8 +57,8 @@ cp "$work/stats/stats.png" docs/images/cover_stats.png
 cp "$work/sequence/sequence.gif" docs/images/cover_sequence.gif
 "$nephele" stats "$work/sequence" --out "$work/motion"
 cp "$work/motion/motion.svg" docs/images/cover_motion.svg
-"$nephele" generate --surface etopo5 --files png --quiet --out "$work/cover-surface"
-cp "$work/cover-surface/cover_equirect.png" docs/images/cover_equirect_surface.png
+"$nephele" generate --surface none --files png --quiet --out "$work/cover-bare"
+cp "$work/cover-bare/cover_equirect.png" docs/images/cover_equirect_no_surface.png
 # The convective cells show from 1024 texels a face: a crop of the 4096 x 2048 equirect's Y.
 "$nephele" generate --size 1024 --time 2026-06-21T12:00Z --files equirect --quiet --out "$work/cover-cells"
 oiiotool "$work/cover-cells/cover_equirect.exr" --ch 0,0,0 --cut 1024x400+1200+500 -d uint8 -o docs/images/cover_cells.png

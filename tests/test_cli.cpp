@@ -339,6 +339,8 @@ TEST_CASE("render --quality final renders at full resolution with the final step
   CHECK(sidecar.at("steps").at("view").as_number() == final_quality.view_steps);
   CHECK(sidecar.at("steps").at("light").as_number() == 3);
   CHECK(sidecar.at("steps").at("resolution_divisor").as_number() == 1);
+  // The scene's cover, made with the default land/ocean mask, as generate would make it again.
+  CHECK(sidecar.at("global_cover").at("surface").as_string() == "etopo5");
 }
 
 TEST_CASE("render rejects bad input with code 2 naming the key or option", "[cli][render]") {
@@ -372,7 +374,12 @@ TEST_CASE("render rejects bad input with code 2 naming the key or option", "[cli
       {"render --view gurten --quality best" + png, "--quality"},
       {"render --scene " + (out.path / "quality.json").string() + " --out " + out.path.string(),
        "'quality': 'best' is not a quality (allowed: draft|default|final)"},
+      {"render --view gurten --surface " + (out.path / "absent.png").string() + png, "--surface"},
+      {"render --scene " + (out.path / "surface.json").string() + " --out " + out.path.string(),
+       "surface.json: 'surface'"},
+      {"render --view orbit --cover " + out.path.string() + " --surface none" + png, "--surface"},
   };
+  std::ofstream(out.path / "surface.json") << R"({"view": "gurten", "surface": "absent.png", "outputs": ["a.png"]})";
   std::ofstream(out.path / "quality.json") << R"({"view": "gurten", "quality": "best", "outputs": ["a.png"]})";
   for (const auto& [arguments, expected] : cases) {
     const Run r = run(arguments);

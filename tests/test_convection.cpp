@@ -214,7 +214,7 @@ TEST_CASE("a scene without convection computes no convective volume and one with
   scene.weather = {"bern.json"};
   auto passes_with = [&](const std::string& cape) {
     const WeatherSeries w = io::parse_weather(open_meteo(R"(, "cape": )" + cape), "bern.json");
-    render::PreparedScene prepared = render::prepare_scene(scene, {w});
+    render::PreparedScene prepared = render::prepare_scene(scene, {w}, nullptr);
     const render::SceneRender r = render::render_prepared(prepared, scene);
     return std::make_pair(r, prepared.convective != nullptr);
   };

@@ -525,6 +525,10 @@ TEST_CASE("weather_systems.glsl on the GPU agrees with the CPU", "[probe]") {
     // weight, both below 1; texels from 1e-4 to 4e-3 rad take the fade (cells_resolved) from full
     // to nothing.
     cases.push_back({arguments(PROBE_CELL_PARTS, vec4(r(0.0f, 1.0f), seed, 0, r(1e-4f, 4e-3f)), vec4(q, 0)), cells});
+    // The belts over a surface: one smoothstep (arithmetic) times a field below 1.
+    cases.push_back({arguments(PROBE_BELTS_SURFACE, vec4(r(-1.0f, 1.0f), 0, 0, 0),
+                               vec4(r(0.0f, 1.0f), r(0.0f, 0.6f), r(0.0f, 0.35f), 0)),
+                     kArithmetic * 16});
     cases.push_back({arguments(PROBE_COLD, vec4(r(-3.0f, 2.0f), seed, r(-3.5f, 1.0f), 0), vec4(p, 0), cyclone,
                                vec4(life.x, life.y, r(0.0f, 1.0f), r(0.0f, 1.0f))),
                      std::max(band, cells)});

@@ -194,7 +194,7 @@ TEST_CASE("a resolution divisor renders the smaller image and upsamples it to th
   Scene scene = small_summer_scene();
   const auto stations = io::read_scene_weather(scene);
   scene.resolution_divisor = 2;
-  const auto divided = render::render_scene(scene, stations);
+  const auto divided = render::render_scene(scene, stations, nullptr);
   CHECK(contains(divided.passes, "upsample 1/2 guided by the ground distance"));
   CHECK(divided.render.radiance.width == 16);
   CHECK(divided.render.radiance.height == 8);
@@ -204,7 +204,7 @@ TEST_CASE("a resolution divisor renders the smaller image and upsamples it to th
   half.resolution_divisor = 1;
   half.width = 8;
   half.height = 4;
-  const auto small = render::render_scene(half, stations);
+  const auto small = render::render_scene(half, stations, nullptr);
   CHECK_FALSE(contains(small.passes, "upsample 1/2 guided by the ground distance"));
   // The guides: the marched image's ground distance at every pixel, the full size's only near an
   // edge of it (NaN elsewhere), each -1 (sky) or a distance.
@@ -228,12 +228,12 @@ TEST_CASE("a resolution divisor renders the smaller image and upsamples it to th
 TEST_CASE("a scene with weather files does not generate the global cover and one without does", "[render]") {
   test::test_context();
   Scene scene = small_summer_scene();
-  const auto with_weather = render::render_scene(scene, io::read_scene_weather(scene));
+  const auto with_weather = render::render_scene(scene, io::read_scene_weather(scene), nullptr);
   CHECK_FALSE(contains(with_weather.passes, "global_cover"));
   CHECK(contains(with_weather.passes, "weather_field (2 stations)"));
   CHECK(contains(with_weather.passes, "march layer cumulus"));
   scene.weather.clear();
-  const auto from_cover = render::render_scene(scene, io::read_scene_weather(scene));
+  const auto from_cover = render::render_scene(scene, io::read_scene_weather(scene), nullptr);
   CHECK(with_weather.passes.front() != from_cover.passes.front());
   CHECK(from_cover.passes.front() == "global_cover");
   CHECK(contains(from_cover.passes, "weather_field (global cover)"));
@@ -248,7 +248,7 @@ TEST_CASE("a scene's global cover is that of its time with the moving flow and o
   auto cover_at = [&](const std::string& flow, const std::string& time) {
     scene.cover_flow = flow;
     scene.time = time;
-    const cover::CoverParameters p = render::scene_cover_parameters(scene);
+    const cover::CoverParameters p = render::scene_cover_parameters(scene, nullptr);
     CHECK(p.time == time);
     CHECK(cover::flow_name(p.flow) == flow);
     return render::make_global_cover(p).texels;
@@ -377,7 +377,7 @@ TEST_CASE("the powder term darkens clouds seen with the sun behind, and at stren
     Scene s = scene;
     s.heading_deg = heading;
     s.powder = powder;
-    const auto r = render::render_scene(s, stations).render.radiance;
+    const auto r = render::render_scene(s, stations, nullptr).render.radiance;
     double sum = 0;
     int count = 0;
     for (std::size_t k = 0; k < r.pixels.size(); k += 4)

@@ -122,7 +122,7 @@ TEST_CASE(
   test::test_context();
   const regional::Scene scene = test::small_summer_scene(32, 18);
   const auto stations = io::read_scene_weather(scene);
-  const render::PreparedScene prepared = render::prepare_scene(scene, stations);
+  const render::PreparedScene prepared = render::prepare_scene(scene, stations, nullptr);
   render::RenderSettings settings = render::render_settings(scene);
   const core::ImageData whole = render::render_prepared(prepared, settings).render.radiance;
   settings.march_stride = 2;

@@ -84,7 +84,7 @@ TEST_CASE("ETOPO5's bias clears the Sahara and puts decks off California, Peru a
           "[fast][surface][terrain]") {
   if (!std::filesystem::exists(io::etopo5_default_path))
     FAIL("ferret-datasets is not installed (scripts/debian-packages.txt)");
-  const auto mask = io::surface_from_option("etopo5");
+  const auto mask = io::surface_from_option("etopo5", nullptr);
   REQUIRE(mask != nullptr);
   const auto bias = cover::surface_bias(*mask);
   CHECK(bias_at(bias, 23.0, 10.0) < -0.7);             // central Sahara
@@ -125,13 +125,19 @@ TEST_CASE("the density pass moves clouds from a continent's desert to the deck o
   CHECK(deck_with > deck_without + 0.1);
 }
 
-TEST_CASE("generate records the surface in cover.json and refuses a bad mask naming --surface",
-          "[surface][cli][bad-input]") {
+TEST_CASE(
+    "generate takes ETOPO5's mask by default and records the surface in cover.json and refuses a bad mask "
+    "naming --surface",
+    "[surface][cli][bad-input]") {
   test::TemporaryDirectory directory(true);
   const auto out = directory.path / "cover";
-  const auto none = test::run("generate --size 8 --curl-size 8 --files png --out " + out.string());
+  const auto earth = test::run("generate --size 8 --curl-size 8 --files png --out " + out.string());
+  REQUIRE(earth.exit_code == 0);
+  CHECK(test::read_file(out / "cover.json").find("\"surface\": \"etopo5\"") != std::string::npos);
+  const auto none = test::run("generate --size 8 --curl-size 8 --files png --surface none --out " +
+                              (directory.path / "bare").string());
   REQUIRE(none.exit_code == 0);
-  CHECK(test::read_file(out / "cover.json").find("\"surface\": \"none\"") != std::string::npos);
+  CHECK(test::read_file(directory.path / "bare" / "cover.json").find("\"surface\": \"none\"") != std::string::npos);
   const auto missing = test::run("generate --size 8 --surface " + (directory.path / "absent.png").string() + " --out " +
                                  (directory.path / "x").string());
   CHECK(missing.exit_code == 2);

@@ -238,6 +238,24 @@ TEST_CASE("trade cumulus are many small separate clouds in the trades and none a
   }
 }
 
+TEST_CASE("trade cumulus fade over the deserts and stay over the ocean, the other belts stay everywhere",
+          "[fast][systems]") {
+  const vec3 fields(0.9f, 0.6f, 0.3f);
+  // No mask (bias 0) and the decks' ocean (positive bias): unchanged, to the bit.
+  for (float ocean : {0.0f, 0.3f, 1.0f}) CHECK(glsl::belts_over_surface(fields, ocean) == fields);
+  // Inside a desert (bias -0.4 and below: the Sahara's interior about -1): no cumulus, the
+  // clusters and the cirrus untouched.
+  for (float desert : {-0.4f, -1.0f}) CHECK(glsl::belts_over_surface(fields, desert) == vec3(0.9f, 0.0f, 0.3f));
+  // Half way, smoothstep's middle: half the cumulus; and the fade is monotonic.
+  CHECK(glsl::belts_over_surface(fields, -0.2f).y == Approx(0.3f).margin(1e-6));
+  float previous = fields.y;
+  for (int k = 1; k <= 40; ++k) {
+    const float y = glsl::belts_over_surface(fields, -0.01f * k).y;
+    CHECK(y <= previous);
+    previous = y;
+  }
+}
+
 TEST_CASE("the moving flow's layer blend keeps the noise's mean and spread at every share", "[fast][systems]") {
   cover::CoverParameters p;
   const glsl::FbmParams older = cover::layer_density_params(p, 4, 0), younger = cover::layer_density_params(p, 5, 0);

@@ -110,11 +110,11 @@ void main() {
     // blended as it.
     float edge = system_edge(noise);
     vec3 origin = normalize(warped);
-    vec3 fields = belts_at(origin, u_systems.seed, edge);
+    vec3 fields = belts_over_surface(belts_at(origin, u_systems.seed, edge), surface);
     float belts = belt_cloud(fields);
     vec3 older_origin = origin;
 #if MOVING_LAYERS
-    vec3 young_fields = belts_at(normalize(young_warped), u_young_systems_seed, edge);
+    vec3 young_fields = belts_over_surface(belts_at(normalize(young_warped), u_young_systems_seed, edge), surface);
     belts = layer_blend(belts, belt_cloud(young_fields), u_young_share);
     fields = mix(fields, young_fields, u_young_share);
     origin = normalize(mix(warped, young_warped, u_young_share));

@@ -391,6 +391,14 @@ vec3 belt_fields(vec3 p, float latitude, IN(WeatherSystems) systems, uint seed, 
     fields.z = max(fields.z, BELT_WEIGHTS.z * systems.itcz * itcz_anvils(p, latitude, systems.itcz_latitude, seed, edge));
   return fields;
 }
+// The belts' fields over the surface of land/ocean bias `surface` (surface_bias.cpp; 0 without
+// a mask): trade cumulus grow in the marine boundary layer (Nuijens et al. 2014), so over the
+// subtropical deserts, whose bias is minus their desert weight (about -1 inside the Sahara, -0.3
+// in the Sahel in June), their field fades to nothing at a bias of -0.4.
+vec3 belts_over_surface(vec3 fields, float surface) {
+  fields.y *= 1.0f - smoothstep(0.0f, 0.4f, -surface);
+  return fields;
+}
 // The belts' cloud from their weighted fields: the largest.
 float belt_cloud(vec3 fields) { return max(max(fields.x, fields.y), max(fields.z, 0.0f)); }
 float belt_systems(vec3 p, float latitude, IN(WeatherSystems) systems, uint seed, float edge) {

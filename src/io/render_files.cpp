@@ -34,6 +34,7 @@ json::Value scene_sidecar(const SceneRender& r, const regional::Scene& scene) {
     cover.set("size", scene.cover_size);
     cover.set("seed", static_cast<double>(scene.seed));
     cover.set("flow", scene.cover_flow);
+    cover.set("surface", scene.cover_surface);
     cover.set("time", scene.time);
     root.set("global_cover", cover);
   }

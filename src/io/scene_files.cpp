@@ -121,6 +121,11 @@ Scene parse_scene(const std::string& text, const std::string& source, const std:
       s.cover_size = k.integer(v, key);
     } else if (key == "flow") {
       s.cover_flow = k.string(v, key);
+    } else if (key == "surface") {
+      const std::string t = k.string(v, key);
+      const bool word = t == "etopo5" || t == "none";
+      s.cover_surface =
+          word || std::filesystem::path(t).is_absolute() ? t : (std::filesystem::path(base_directory) / t).string();
     } else if (key == "outputs") {
       s.outputs = k.strings(v, key);
     } else if (key == "description") {

@@ -1,7 +1,10 @@
 #include "io/surface_files.hpp"
 
 #include <filesystem>
+#include <map>
+#include <mutex>
 #include <stdexcept>
+#include <utility>
 
 #include "core/error.hpp"
 #include "io/elevation_files.hpp"
@@ -11,11 +14,9 @@ namespace nephele::io {
 
 namespace {
 
-const std::string field = "--surface";
-
 // Land fraction of each half-degree cell from 6 x 6 bilinear samples of the elevation (the
 // 5-minute lattice's spacing): land where above sea level.
-cover::SurfaceMask etopo5_mask(const std::string& path) {
+cover::SurfaceMask etopo5_mask(const std::string& path, const std::string& field) {
   const regional::ElevationRaster raster = read_etopo5(path, -90.0, 90.0, field);
   cover::SurfaceMask mask{cover::surface_bias_columns, cover::surface_bias_rows, {}, path};
   mask.land.resize(static_cast<size_t>(mask.columns) * mask.rows);
@@ -34,7 +35,7 @@ cover::SurfaceMask etopo5_mask(const std::string& path) {
   return mask;
 }
 
-cover::SurfaceMask image_mask(const std::string& path) {
+cover::SurfaceMask image_mask(const std::string& path, const std::string& field) {
   std::error_code error;
   if (!std::filesystem::exists(path, error))
     throw core::InputError(field, path, "an existing ETOPO5 netCDF or image file, or none or etopo5", "no such file");
@@ -60,12 +61,32 @@ cover::SurfaceMask image_mask(const std::string& path) {
 
 }  // namespace
 
-std::shared_ptr<const cover::SurfaceMask> surface_from_option(const std::string& value) {
+std::shared_ptr<const cover::SurfaceMask> surface_from_option(const std::string& value, std::string* warning,
+                                                              const std::string& field) {
   if (value == "none") return nullptr;
-  if (value == "etopo5") return std::make_shared<const cover::SurfaceMask>(etopo5_mask(etopo5_default_path));
-  const std::string extension = std::filesystem::path(value).extension().string();
-  if (extension == ".cdf" || extension == ".nc") return std::make_shared<const cover::SurfaceMask>(etopo5_mask(value));
-  return std::make_shared<const cover::SurfaceMask>(image_mask(value));
+  std::error_code error;
+  if (value == "etopo5" && warning && !std::filesystem::is_regular_file(etopo5_default_path, error)) {
+    *warning = field + ": " + etopo5_default_path +
+               " not found (Debian's ferret-datasets): the cover has no land/ocean mask, as with none";
+    return nullptr;
+  }
+  static std::mutex guard;
+  static std::map<std::string, std::shared_ptr<const cover::SurfaceMask>> loaded;
+  const std::lock_guard<std::mutex> lock(guard);
+  if (const auto found = loaded.find(value); found != loaded.end()) return found->second;
+  const std::string path = value == "etopo5" ? std::string(etopo5_default_path) : value;
+  const std::string extension = std::filesystem::path(path).extension().string();
+  cover::SurfaceMask mask =
+      extension == ".cdf" || extension == ".nc" ? etopo5_mask(path, field) : image_mask(path, field);
+  mask.source = value;  // "etopo5" for the packaged file, the path otherwise (cover.json's record)
+  const auto shared = std::make_shared<const cover::SurfaceMask>(std::move(mask));
+  loaded.emplace(value, shared);
+  return shared;
+}
+
+std::shared_ptr<const cover::SurfaceMask> scene_surface(const regional::Scene& scene, std::string* warning,
+                                                        const std::string& field) {
+  return scene.weather.empty() ? surface_from_option(scene.cover_surface, warning, field) : nullptr;
 }
 
 }  // namespace nephele::io

@@ -115,11 +115,12 @@ inline constexpr Parameter density_lacunarity = real(
 inline constexpr Parameter density_gain =
     real("density_gain", 0.75, 0.0, 1.0, "", "amplitude ratio between octaves", cover_commands, "density.gain");
 inline constexpr Parameter surface =
-    text("surface", "none", "none|etopo5|FILE",
+    text("surface", "etopo5", "none|etopo5|FILE",
          "land/ocean mask that moves clouds from the subtropical deserts to the stratocumulus decks off the west "
-         "coasts: none, etopo5 (ferret-datasets), an ETOPO5 netCDF file (.cdf, .nc), or an equirect image whose first "
-         "channel is the land fraction (longitude -180 at the left, north up; docs/climate.md)",
-         generate | cover_sidecar);
+         "coasts: etopo5 (ferret-datasets; none with a warning where it is not installed), none (an Earth without "
+         "continents), an ETOPO5 netCDF file (.cdf, .nc), or an equirect image whose first channel is the land "
+         "fraction (longitude -180 at the left, north up; docs/climate.md)",
+         generate | cover_sidecar | render | scene_file | viewer);
 inline constexpr Parameter surface_weight =
     real("surface_weight", 0.4, 0.0, 1.0, "",
          "k in density * (1 + k b), b the land/ocean bias in [-1, 1] (with --surface)", generate | cover_sidecar);

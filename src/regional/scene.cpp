@@ -60,7 +60,8 @@ std::vector<params::FieldBinding> field_bindings(Scene& s) {
           {&sc::fog_top, &s.fog_top_m},
           {&sc::exposure, &s.exposure},
           {&sc::cover_size, &s.cover_size},
-          {&params::cover::flow, &s.cover_flow}};
+          {&params::cover::flow, &s.cover_flow},
+          {&params::cover::surface, &s.cover_surface}};
 }
 
 void give_step(Scene& s, const params::Parameter& step, int value) {

@@ -57,6 +57,8 @@ struct Scene {
   int cover_size = params::scene::cover_size.default_int();  // global cover size when no weather is given
   // The global cover's flow (cover/flow_kind.hpp); a moving cover is that of `time`.
   std::string cover_flow{params::cover::flow.default_text};
+  // Its land/ocean mask (--surface: none, etopo5 or a file), loaded by the caller (io).
+  std::string cover_surface{params::cover::surface.default_text};
   std::vector<std::string> outputs;  // file names (png, exr); --scene renders into --out DIR
 };
 

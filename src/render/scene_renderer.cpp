@@ -10,6 +10,7 @@
 #include <map>
 #include <memory>
 #include <stdexcept>
+#include <utility>
 
 #include "cover/global_cover.hpp"
 #include "regional/sites.hpp"
@@ -44,8 +45,10 @@ GlobalCoverFaces make_global_cover(const cover::CoverParameters& parameters) {
 }
 
 cover::CoverParameters view_cover_parameters(int size, std::uint32_t seed, const std::string& flow,
-                                             const std::string& time) {
+                                             const std::string& time,
+                                             std::shared_ptr<const cover::SurfaceMask> surface) {
   cover::CoverParameters parameters;
+  parameters.surface = std::move(surface);
   parameters.size = size;
   parameters.seed = seed;
   const std::optional<cover::Flow> kind = cover::parse_flow(flow);
@@ -55,13 +58,16 @@ cover::CoverParameters view_cover_parameters(int size, std::uint32_t seed, const
   return parameters;
 }
 
-cover::CoverParameters scene_cover_parameters(const regional::Scene& scene) {
-  return view_cover_parameters(scene.cover_size, scene.seed, scene.cover_flow, scene.time);
+cover::CoverParameters scene_cover_parameters(const regional::Scene& scene,
+                                              std::shared_ptr<const cover::SurfaceMask> surface) {
+  return view_cover_parameters(scene.cover_size, scene.seed, scene.cover_flow, scene.time, std::move(surface));
 }
 
-PreparedScene prepare_scene(const regional::Scene& scene, const std::vector<regional::WeatherSeries>& weather) {
+PreparedScene prepare_scene(const regional::Scene& scene, const std::vector<regional::WeatherSeries>& weather,
+                            std::shared_ptr<const cover::SurfaceMask> surface) {
   if (!weather.empty()) return prepare_scene(scene, weather, GlobalCoverFaces{});
-  PreparedScene prepared = prepare_scene(scene, weather, make_global_cover(scene_cover_parameters(scene)));
+  PreparedScene prepared =
+      prepare_scene(scene, weather, make_global_cover(scene_cover_parameters(scene, std::move(surface))));
   prepared.partial.passes.insert(prepared.partial.passes.begin(), "global_cover");
   return prepared;
 }
@@ -219,8 +225,9 @@ SceneRender render_prepared(const PreparedScene& prepared, const RenderSettings&
   return out;
 }
 
-SceneRender render_scene(const regional::Scene& scene, const std::vector<regional::WeatherSeries>& stations) {
-  return render_prepared(prepare_scene(scene, stations), scene);
+SceneRender render_scene(const regional::Scene& scene, const std::vector<regional::WeatherSeries>& stations,
+                         std::shared_ptr<const cover::SurfaceMask> surface) {
+  return render_prepared(prepare_scene(scene, stations, std::move(surface)), scene);
 }
 
 }  // namespace nephele::render

@@ -1,5 +1,6 @@
 #pragma once
 // A scene from weather (or the global cover) to an image: the passes a scene needs, no more.
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -56,17 +57,23 @@ struct GlobalCoverFaces {
 GlobalCoverFaces make_global_cover(const cover::CoverParameters& parameters);
 // The cover a view makes when it names no weather: `size` texels per face, the seed, and the
 // flow ("steady" or "moving", the table's words) at the view's ISO 8601 `time`, so that a
-// moving cover is that of the moment the sun lights; the rest defaults. render, its orbit view
-// and nephele view all make their cover here.
+// moving cover is that of the moment the sun lights, and the land/ocean mask `surface` (the
+// view's --surface as io::surface_from_option loads it; null: none); the rest defaults.
+// render, its orbit view and nephele view all make their cover here.
 cover::CoverParameters view_cover_parameters(int size, std::uint32_t seed, const std::string& flow,
-                                             const std::string& time);
-// The same for a scene: its cover_size, seed, cover_flow and time.
-cover::CoverParameters scene_cover_parameters(const regional::Scene& scene);
+                                             const std::string& time,
+                                             std::shared_ptr<const cover::SurfaceMask> surface);
+// The same for a scene: its cover_size, seed, cover_flow and time, and the mask of its
+// cover_surface.
+cover::CoverParameters scene_cover_parameters(const regional::Scene& scene,
+                                              std::shared_ptr<const cover::SurfaceMask> surface);
 
 // Need a current OpenGL 4.5 context. Throw regional::WeatherError / SceneError for bad input.
 // `stations`: the weather of the scene's files (io::read_scene_weather), one per file in its
-// order; empty when the scene names none (the global cover is then the weather).
-PreparedScene prepare_scene(const regional::Scene& scene, const std::vector<regional::WeatherSeries>& stations);
+// order; empty when the scene names none (the global cover, with the land/ocean mask
+// `surface` of the scene's cover_surface, is then the weather).
+PreparedScene prepare_scene(const regional::Scene& scene, const std::vector<regional::WeatherSeries>& stations,
+                            std::shared_ptr<const cover::SurfaceMask> surface);
 // The same with a cover made before (the viewer keeps one while the camera moves); it is read
 // only when `stations` is empty. The seed of the layers' rotations is the scene's.
 PreparedScene prepare_scene(const regional::Scene& scene, const std::vector<regional::WeatherSeries>& stations,
@@ -79,6 +86,8 @@ SceneRender render_prepared(const PreparedScene& prepared, const regional::Scene
 // The same with settings of its own (the viewer's bands of rows).
 SceneRender render_prepared(const PreparedScene& prepared, const RenderSettings& settings,
                             const NoiseVolume* noise = nullptr);
-SceneRender render_scene(const regional::Scene& scene, const std::vector<regional::WeatherSeries>& stations);
+// prepare_scene and render_prepared in one.
+SceneRender render_scene(const regional::Scene& scene, const std::vector<regional::WeatherSeries>& stations,
+                         std::shared_ptr<const cover::SurfaceMask> surface);
 
 }  // namespace nephele::render

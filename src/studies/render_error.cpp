@@ -6,6 +6,7 @@
 #include <iostream>
 #include <stdexcept>
 
+#include "io/surface_files.hpp"
 #include "io/weather_files.hpp"
 #include "params/render_quality.hpp"
 #include "render/scene_renderer.hpp"
@@ -129,7 +130,9 @@ std::vector<RenderErrorRow> render_error_sweep(const regional::Scene& scene, con
   base.frames = 1;
   // The weather and the noise volume depend neither on the step counts nor on the frame size:
   // made once, shared by every render of the sweep (the camera is made again per size).
-  const PreparedScene prepared = render::prepare_scene(base, io::read_scene_weather(base));
+  std::string surface_warning;  // the default etopo5 not installed: the sweep's cover has no mask
+  const PreparedScene prepared =
+      render::prepare_scene(base, io::read_scene_weather(base), io::scene_surface(base, &surface_warning, "surface"));
   const NoiseVolume noise(render::render_settings(base).noise_size, render::render_settings(base).seed);
   const auto shadow_maps = options.share_shadow_maps ? std::make_shared<render::ShadowMapCache>() : nullptr;
   const auto render_variant = [&](const RenderVariant& v, double* time_ms, double* render_ms) {

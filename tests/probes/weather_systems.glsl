@@ -15,6 +15,7 @@ const int PROBE_COLD = 9;             // cold_sector(vec2(a, c)), cold_sectors(p
                                       // x[3].zw, uint(b), 1e-3)
 const int PROBE_CELL_PARTS = 10;      // closed_cell_modulation(p, a, uint(b), c), open_cell_modulation(p, a, uint(b), c)
 const int PROBE_POCKETS = 11;         // open_cell_pockets(p, uint(b)), with_pockets(vec2(a, c), it) in y, z
+const int PROBE_BELTS_SURFACE = 12;   // belts_over_surface(x[1].xyz, a)
 #ifndef __cplusplus
 #include "../lib/weather_systems.glsl"
 #endif
@@ -49,6 +50,7 @@ vec4 probe_weather_systems(mat4 x) {
   if (f == PROBE_CELL_PARTS)
     return vec4(closed_cell_modulation(p, x[0].y, seed, x[0].w), open_cell_modulation(p, x[0].y, seed, x[0].w), 0.0f,
                 0.0f);
+  if (f == PROBE_BELTS_SURFACE) return vec4(belts_over_surface(p, x[0].y), 0.0f);
   if (f == PROBE_POCKETS) {
     float pocket = open_cell_pockets(p, seed);
     vec2 weights = with_pockets(vec2(x[0].y, x[0].w), pocket);

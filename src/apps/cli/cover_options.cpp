@@ -7,6 +7,7 @@
 #include "params/values.hpp"
 
 #include <cmath>
+#include <iostream>
 #include <sstream>
 
 namespace nephele::cli {
@@ -107,7 +108,11 @@ void ProfileOption::apply(cover::CoverParameters& p) const {
 
 void SurfaceOption::add(Options& o) { o.bind(params::cover::surface, &value_); }
 
-void SurfaceOption::apply(cover::CoverParameters& p) const { p.surface = io::surface_from_option(value_); }
+void SurfaceOption::apply(cover::CoverParameters& p) const {
+  std::string warning;
+  p.surface = io::surface_from_option(value_, &warning);
+  if (!warning.empty()) std::cerr << "warning: " << warning << "\n";
+}
 
 void CoverFileOption::add(Options& options) {
   options.bind(params::run::cover_files, &files_);

@@ -62,7 +62,8 @@ class ProfileOption {
 class SurfaceOption {
  public:
   void add(Options& options);
-  void apply(cover::CoverParameters& p) const;  // throws core::InputError (exit 2)
+  // Throws core::InputError (exit 2); the default etopo5 without its package warns on stderr.
+  void apply(cover::CoverParameters& p) const;
 
  private:
   std::string value_{params::cover::surface.default_text};

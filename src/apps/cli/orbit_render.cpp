@@ -19,6 +19,7 @@
 #include "files/atomic_output.hpp"
 #include "io/planet_textures.hpp"
 #include "io/render_files.hpp"
+#include "io/surface_files.hpp"
 #include "params/table.hpp"
 #include "regional/scene.hpp"
 #include "render/exposure.hpp"
@@ -130,8 +131,11 @@ int run_orbit_render(const OrbitOptions& orbit) {
   std::string cover_source = orbit.cover;
   if (!cover) {
     progress.update(0, "global cover");
+    std::string warning;
     const cover::CoverParameters parameters =
-        render::view_cover_parameters(s::cover_size.default_int(), orbit.seed, orbit.flow, time_text);
+        render::view_cover_parameters(s::cover_size.default_int(), orbit.seed, orbit.flow, time_text,
+                                      io::surface_from_option(orbit.surface, &warning));
+    if (!warning.empty()) std::cerr << "warning: " << warning << "\n";
     timings.emplace_back("global cover", gpu::time_pass([&] {
                            cover::GlobalCover generated(parameters);
                            generated.run();
@@ -140,7 +144,8 @@ int run_orbit_render(const OrbitOptions& orbit) {
                                                      generated.cloud_top_field().read()};
                          }));
     cover_source = "generated (seed " + std::to_string(orbit.seed) + ", " + std::to_string(parameters.size) +
-                   " texels per face, flow " + orbit.flow + ")";
+                   " texels per face, flow " + orbit.flow + ", surface " +
+                   (parameters.surface ? parameters.surface->source : std::string("none")) + ")";
   }
   progress.update(1, "orbit view");
   render::RenderResult result = render::render_orbit(camera, unix_seconds, textures.images, *cover, settings);
@@ -187,8 +192,11 @@ int bench_orbit(const std::vector<std::string>& arguments) {
   io::PlanetTextures textures = io::read_planet_textures("");
   for (const auto& w : textures.warnings) std::cerr << "warning: " << w << "\n";
   const std::string time_text(s::time.default_text);
+  std::string warning;
   const cover::CoverParameters parameters = render::view_cover_parameters(
-      s::cover_size.default_int(), s::seed.default_uint32(), std::string(params::cover::flow.default_text), time_text);
+      s::cover_size.default_int(), s::seed.default_uint32(), std::string(params::cover::flow.default_text), time_text,
+      io::surface_from_option(std::string(params::cover::surface.default_text), &warning));
+  if (!warning.empty()) std::cerr << "warning: " << warning << "\n";
   cover::GlobalCover generated(parameters);
   generated.run();
   render::OrbitRenderer renderer(

@@ -24,8 +24,9 @@ struct OrbitOptions {
   std::string time, size, out;
   std::optional<double> heading, pitch, fov;
   std::uint32_t seed = 1;
-  std::string flow{params::cover::flow.default_text};  // the generated cover's (without --cover)
-  std::optional<double> exposure;                      // --exposure; without it metered (render::highlight_exposure)
+  std::string flow{params::cover::flow.default_text};        // the generated cover's (without --cover)
+  std::string surface{params::cover::surface.default_text};  // its land/ocean mask
+  std::optional<double> exposure;  // --exposure; without it metered (render::highlight_exposure)
   bool verbose = false, quiet = false;
 };
 

@@ -25,6 +25,7 @@
 #include "regional/weather.hpp"
 #include "io/render_files.hpp"
 #include "io/scene_files.hpp"
+#include "io/surface_files.hpp"
 #include "io/weather_files.hpp"
 #include "render/scene_renderer.hpp"
 #include "apps/cli/orbit_render.hpp"
@@ -99,6 +100,12 @@ int run_render(const std::vector<std::string>& arguments) {
       if (!orbit.cover.empty())
         throw UsageError("--flow: the flow of a generated cover; --cover " + orbit.cover + " gives the cover");
       orbit.flow = scene_options.flow();
+    }
+    if (!scene_options.surface().empty()) {
+      if (!orbit.cover.empty())
+        throw UsageError("--surface: the land/ocean mask of a generated cover; --cover " + orbit.cover +
+                         " gives the cover");
+      orbit.surface = scene_options.surface();
     }
     // Without --exposure the frame is metered for its highlights (render::highlight_exposure).
     if (options.given(s::exposure)) orbit.exposure = scene_options.exposure();
@@ -200,7 +207,14 @@ int run_render(const std::vector<std::string>& arguments) {
   // Weather (with the global cover when no files are given), the march, the files.
   core::Progress progress("render", 3, core::Progress::for_stderr(quiet));
   progress.update(0, "weather");
-  render::PreparedScene prepared = render::prepare_scene(scene, io::read_scene_weather(scene));
+  std::string surface_warning;
+  const auto surface = io::scene_surface(
+      scene, &surface_warning, typed.count("surface") || scene_file.empty() ? "--surface" : scene_file + ": 'surface'");
+  if (!surface_warning.empty()) {
+    std::cerr << "warning: " << surface_warning << "\n";
+    scene.cover_surface = "none";  // the render's sidecar records the cover it made
+  }
+  render::PreparedScene prepared = render::prepare_scene(scene, io::read_scene_weather(scene), surface);
   std::string terrain_warning;
   const std::string terrain_field =
       options.given(s::terrain) || scene_file.empty() ? s::terrain.option() : scene_file + ": 'terrain'";

@@ -27,6 +27,7 @@ SceneOptions::SceneOptions(Options& options)
   options.bind(s::exposure, &exposure_);
   options.bind(s::seed, &seed_);
   options.bind(params::cover::flow, &flow_);
+  options.bind(params::cover::surface, &surface_);
 }
 
 regional::Scene SceneOptions::scene(regional::KeyOptions& typed) const {
@@ -54,6 +55,10 @@ regional::Scene SceneOptions::scene(regional::KeyOptions& typed) const {
   if (!flow_.empty()) {
     scene.cover_flow = flow_;
     typed["flow"] = "--flow";
+  }
+  if (!surface_.empty()) {
+    scene.cover_surface = surface_;
+    typed["surface"] = "--surface";
   }
   if (!time_.empty()) {
     scene.time = time_;

@@ -12,7 +12,7 @@ namespace nephele::cli {
 class SceneOptions {
  public:
   // Binds --scene, --view, --heading, --pitch, --fov, --time, --size, --quality, --view-steps,
-  // --light-steps, --exposure, --seed and --flow to `options` (whose command must take them).
+  // --light-steps, --exposure, --seed, --flow and --surface to `options` (whose command must take them).
   explicit SceneOptions(Options& options);
   // After options.parse: the scene file's scene (or the defaults) with each given option over
   // it, the step settings not given by name from the quality (regional::apply_render_quality).
@@ -23,7 +23,8 @@ class SceneOptions {
   // The raw option values, for views that are not a regional scene (render --view orbit).
   const std::string& view() const { return view_; }
   const std::string& time() const { return time_; }
-  const std::string& flow() const { return flow_; }  // empty unless given
+  const std::string& flow() const { return flow_; }        // empty unless given
+  const std::string& surface() const { return surface_; }  // empty unless given
   const std::string& size() const { return size_; }
   double heading() const { return heading_; }
   double pitch() const { return pitch_; }
@@ -34,7 +35,7 @@ class SceneOptions {
  private:
   const Options& options_;
   regional::Scene defaults_;
-  std::string scene_file_, view_, time_, size_, quality_, flow_;
+  std::string scene_file_, view_, time_, size_, quality_, flow_, surface_;
   double heading_ = 0, pitch_, fov_, exposure_;
   int view_steps_, light_steps_;
   std::uint32_t seed_;

@@ -13,6 +13,7 @@
 #include "io/cloud_model_files.hpp"
 #include "files/float_cache.hpp"
 #include "io/noise_cache.hpp"
+#include "io/surface_files.hpp"
 #include "model/bricks.hpp"
 #include "params/table.hpp"
 
@@ -88,6 +89,17 @@ int run_view(const std::vector<std::string>& arguments) {
   const std::string& scene_file = scene_options.scene_file();
   if (options.given(params::scene::cover_size)) scene.cover_size = cover_size;
   validate_view_scene(scene, scene_file.empty() ? "flags" : scene_file, typed);
+  if (cover_dir.empty()) {
+    // The land/ocean mask read (and checked) once here; the viewer's covers take it from
+    // io::surface_from_option's store.
+    std::string warning;
+    io::scene_surface(scene, &warning,
+                      typed.count("surface") || scene_file.empty() ? "--surface" : scene_file + ": 'surface'");
+    if (!warning.empty()) {
+      std::cerr << "warning: " << warning << "\n";
+      scene.cover_surface = "none";
+    }
+  }
 
   viewer::ViewerOptions view_options;
   view_options.scene = scene;

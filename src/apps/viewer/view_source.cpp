@@ -21,7 +21,8 @@ std::string cover_key(const cover::CoverParameters& p) {
   key.precision(17);
   cover::visit_numeric_parameters(
       p, [&](const params::Parameter& parameter, auto value) { key << parameter.key << '=' << value << ' '; });
-  key << cover::integrator_name(p.integrator) << ' ' << cover::flow_name(p.flow);
+  key << cover::integrator_name(p.integrator) << ' ' << cover::flow_name(p.flow) << ' '
+      << (p.surface ? p.surface->source : std::string("none"));
   // The steady cover is the same at every time: moving the sun does not make it again.
   if (p.flow == cover::Flow::moving) key << ' ' << p.time;
   return key.str();

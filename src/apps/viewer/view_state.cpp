@@ -7,6 +7,7 @@
 
 #include "core/time.hpp"
 #include "cover/integrators.hpp"
+#include "io/surface_files.hpp"
 #include "regional/sites.hpp"
 #include "render/scene_renderer.hpp"
 
@@ -30,6 +31,7 @@ std::vector<Binding> bindings(ViewState& s) {
                          {&co::step, &s.step},
                          {&co::integrator, &s.integrator},
                          {&co::flow, &s.flow},
+                         {&co::surface, &s.surface},
                          {&params::run::time_step, &s.time_step_hours}});
   return out;
 }
@@ -38,7 +40,8 @@ bool option_only(const params::Parameter& p) {
   // --quality sets the steps the panels then show (regional::apply_render_quality).
   return &p == &params::scene::size || &p == &params::scene::scene_path || &p == &params::scene::quality ||
          &p == &params::run::view_record || &p == &params::run::view_frames || &p == &params::run::no_cache ||
-         &p == &params::cloud_model::view_model || &p == &params::cloud_model::view_model_size;
+         &p == &params::cloud_model::view_model || &p == &params::cloud_model::view_model_size ||
+         &p == &params::cover::surface;  // a file, read and checked before the window opens
 }
 
 void go_to_viewpoint(ViewState& state, const std::string& name) {
@@ -92,7 +95,10 @@ regional::Scene scene_of(const ViewState& state, int width, int height) {
 }
 
 cover::CoverParameters cover_of(const ViewState& state) {
-  cover::CoverParameters p = render::view_cover_parameters(state.cover_size, state.seed, state.flow, state.time);
+  // The mask as nephele view read it at the start (io's store; "none" where etopo5 was missing).
+  std::string unused_warning;
+  cover::CoverParameters p = render::view_cover_parameters(state.cover_size, state.seed, state.flow, state.time,
+                                                           io::surface_from_option(state.surface, &unused_warning));
   p.coverage = state.coverage;
   p.month = state.month;
   p.iterations = state.iterations;

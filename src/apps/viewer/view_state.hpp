@@ -33,6 +33,7 @@ struct ViewState {
   float step = params::cover::step.default_float();
   std::string integrator{params::cover::integrator.default_text};
   std::string flow{params::cover::flow.default_text};              // moving: the cover of `time`
+  std::string surface{params::cover::surface.default_text};        // the cover's land/ocean mask (--surface)
   double time_step_hours = params::run::time_step.default_number;  // the time keys' and playback's step
   bool playing = false;                                            // T: the time moves by time_step_hours each frame
   std::vector<std::string> weather;  // station files of --scene (the global cover when empty)
