@@ -1033,3 +1033,55 @@ TEST_CASE("orbit metering: the lit pixels' 99th luminance percentile goes to the
   const core::ImageData space{4, 4, 4, std::vector<float>(64, 0.0f)};
   CHECK(render::highlight_exposure(space, 2.5) == 2.5);
 }
+
+TEST_CASE("orbit metering never exposes brighter than a white surface under the frame's highest sun needs",
+          "[fast][orbit]") {
+  // The first case's frame (highlight exposure 1 / 0.990) under a white surface of luminance
+  // 1.25: the bound 1 / 1.25 is lower and wins; under one of 0.5 (a low sun) the highlights do.
+  core::ImageData image{1000, 1, 4, std::vector<float>(4000, 0.0f)};
+  for (int k = 1; k <= 1000; ++k)
+    for (int c = 0; c < 3; ++c) image.pixels[size_t(k - 1) * 4 + c] = 0.001f * float(k);
+  CHECK(render::highlight_exposure(image, 2.5, 1.25) == Approx(0.8).epsilon(1e-12));
+  CHECK(render::highlight_exposure(image, 2.5, 0.5) == Approx(1.0 / 0.990).epsilon(1e-6));
+  CHECK(render::highlight_exposure(image, 2.5, 0.0) == Approx(1.0 / 0.990).epsilon(1e-6));
+
+  // The reading: a narrow view straight down on the point below the sun reads the white surface
+  // under the zenith sun, seen through the air; a view of the night side reads nothing.
+  const double R = 6371000.0, time = core::parse_utc_time("2026-06-21T12:00Z");
+  const glm::dvec3 sun = render::sun_direction_ecef(time);
+  const auto looking_down_at = [&](double latitude, double longitude) {
+    render::OrbitCamera camera;
+    camera.latitude_deg = latitude;
+    camera.longitude_deg = longitude;
+    camera.altitude_m = 2e6;
+    camera.fov_deg = 0.5;  // +-9 km of ground: the sun's cosine there is 1 to 1e-6
+    camera.width = 64;
+    camera.height = 36;
+    return render::sunlit_white_luminance(camera, time, R);
+  };
+  const double below_sun_lat = std::asin(sun.z) * 180 / M_PI, below_sun_lon = std::atan2(sun.y, sun.x) * 180 / M_PI;
+  const auto white_under = [&](double mu) {
+    // A point whose sun has cosine mu (the sun's direction tilted away from it; the reading
+    // depends on mu alone).
+    const glsl::vec3 s(sun),
+        n = normalize(glsl::vec3(sun) + float(std::sqrt(1 - mu * mu) / mu) * normalize(cross(s, glsl::vec3(0, 0, 1))));
+    // Seen from straight above: through the air's transmittance towards the zenith.
+    const glsl::vec3 w =
+        (glsl::solar_irradiance() * glsl::transmittance_to_space(n * float(R + 1), s, float(R)) * float(mu / M_PI) +
+         glsl::sky_ambient(n, s)) *
+        glsl::transmittance_to_space(n * float(R + 1), n, float(R));
+    return 0.2126 * w.x + 0.7152 * w.y + 0.0722 * w.z;
+  };
+  const double zenith = looking_down_at(below_sun_lat, below_sun_lon);
+  INFO("white under the zenith sun " << zenith);
+  CHECK(zenith == Approx(white_under(1.0)).epsilon(1e-4));
+  // About the sun's irradiance over pi times the air's transmittance twice (0.7-0.9 each).
+  CHECK(zenith > 0.4 * 1.85 / M_PI);
+  CHECK(zenith < 1.85 / M_PI + 0.1);
+  CHECK(looking_down_at(-below_sun_lat, below_sun_lon + 180) == 0.0);
+  // 60 degrees of arc from the point below the sun (along its meridian), the sun 30 degrees
+  // high: the reading of mu = 0.5, within the view's +-9 km (1.4e-3 rad of arc: 0.25 % of mu).
+  const double sixty = looking_down_at(below_sun_lat - 60, below_sun_lon);
+  CHECK(sixty == Approx(white_under(0.5)).epsilon(0.01));
+  CHECK(sixty < 0.6 * zenith);
+}

@@ -290,8 +290,8 @@ inline constexpr Parameter land_cover =
          render_and_scene);
 inline constexpr Parameter exposure =
     real("exposure", 4.0, 1e-6, 1e6, "",
-         "exposure before tone mapping (PNG); without it --view orbit meters the frame's highlights "
-         "(docs/orbit_view.md)",
+         "exposure before tone mapping (PNG); without it --view orbit meters the frame's highlights, never "
+         "brighter than a sunlit white surface in view needs (docs/orbit_view.md)",
          render_scene_view);
 inline constexpr Parameter seed =
     integer("seed", 1, 0, 4294967295.0, "", "seed of the global cover and the cloud noise", render_scene_view);

@@ -15,8 +15,12 @@ inline constexpr double kHighlightKey = 1.0;
 inline constexpr double kLitLuminance = 1e-4;
 
 // kHighlightKey over the kHighlightPercentile-th luminance (Rec. 709 weights of R, G, B) of the
-// lit pixels, clamped to [fallback / 4, fallback * 4] so that a frame of night or of a few
-// clouds is not pushed far from the usual; `fallback` when no pixel is lit.
-double highlight_exposure(const core::ImageData& radiance, double fallback);
+// lit pixels, at most kHighlightKey over `sunlit_white` (the luminance of a white surface under
+// the frame's highest sun, render::sunlit_white_luminance; 0: no such bound), so that a frame
+// of thin cloud and land is exposed as a camera set for sunlit cloud would show it, not
+// brightened until its dim highlights reach the shoulder; clamped to [fallback / 4,
+// fallback * 4] so that a frame of night or of a few clouds is not pushed far from the usual;
+// `fallback` when no pixel is lit.
+double highlight_exposure(const core::ImageData& radiance, double fallback, double sunlit_white = 0.0);
 
 }  // namespace nephele::render

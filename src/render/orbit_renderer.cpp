@@ -249,6 +249,40 @@ double framing_fov_deg(double altitude_m, double planet_radius_m, int width, int
   return std::clamp(horizontal, 10.0, 120.0);
 }
 
+double sunlit_white_luminance(const OrbitCamera& camera, double unix_seconds, double planet_radius_m) {
+  const OrbitFrame frame = orbit_frame(camera, planet_radius_m);
+  const glsl::vec3 sun(sun_direction_ecef(unix_seconds));
+  const float R = static_cast<float>(planet_radius_m);
+  const double tan_half = std::tan(camera.fov_deg * degree / 2), aspect = double(camera.height) / camera.width;
+  const int columns = 64, rows = 36;
+  double brightest = 0.0;
+  for (int j = 0; j < rows; ++j)
+    for (int i = 0; i < columns; ++i) {
+      // The ray through the grid cell's centre, as orbit.comp makes a pixel's (project_to_pixel's inverse).
+      const double x = 2.0 * (i + 0.5) / columns - 1.0, y = 1.0 - 2.0 * (j + 0.5) / rows;
+      const glm::dvec3 d =
+          glm::normalize(frame.forward + x * tan_half * frame.right + y * tan_half * aspect * frame.up);
+      // The nearer root of |position + t d| = R.
+      const double b = glm::dot(frame.position, d);
+      const double c = glm::dot(frame.position, frame.position) - planet_radius_m * planet_radius_m;
+      const double discriminant = b * b - c;
+      if (discriminant < 0.0) continue;
+      const double t = -b - std::sqrt(discriminant);
+      if (t <= 0.0) continue;
+      const glsl::vec3 n(glm::normalize(frame.position + t * d));
+      const float mu = dot(n, sun);
+      if (mu <= 0.0f) continue;
+      // The surface's radiance, and what of it reaches the camera through the air (the path
+      // towards the camera, outside the air or in it: its transmittance to space is the bound).
+      const glsl::vec3 p = n * (R + 1.0f);
+      const glsl::vec3 white = glsl::solar_irradiance() * glsl::transmittance_to_space(p, sun, R) * (mu / glsl::PI_F) +
+                               glsl::sky_ambient(n, sun);
+      const glsl::vec3 seen = white * glsl::transmittance_to_space(p, glsl::vec3(-d), R);
+      brightest = std::max(brightest, 0.2126 * seen.x + 0.7152 * seen.y + 0.0722 * seen.z);
+    }
+  return brightest;
+}
+
 struct OrbitRenderer::Gl {
   gpu::ComputeProgram program{"render/orbit.comp"};
   GLuint day = 0, night = 0, water = 0, cover = 0;

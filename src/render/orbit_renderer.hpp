@@ -92,6 +92,14 @@ glm::dvec2 project_to_pixel(const OrbitCamera& camera, double planet_radius_m, g
 // The horizontal field of view that shows the whole planet disc with a margin when looking at
 // its centre (clamped to 10..120 degrees): the default of `render --view orbit`.
 double framing_fov_deg(double altitude_m, double planet_radius_m, int width, int height);
+// The brightest a white surface could look in the frame: the luminance (Rec. 709 weights,
+// W m^-2 sr^-1 nm^-1) of a white Lambertian surface on the ground, lit by the sun through the
+// air (the transmittance of atmosphere.glsl) and by the sky's ambient light, times the air's
+// transmittance from it towards the camera, largest over the ground points of a grid of
+// 64 x 36 of the frame's rays; 0 where none of them meets sunlit ground. What an incident-light
+// meter gives a photographer; render::highlight_exposure never exposes brighter than this
+// surface needs.
+double sunlit_white_luminance(const OrbitCamera& camera, double unix_seconds, double planet_radius_m);
 
 class OrbitRenderer {
  public:

@@ -159,7 +159,10 @@ int run_orbit_render(const OrbitOptions& orbit) {
   record.water = textures.water_source;
   record.cover = cover_source;
   record.exposure =
-      orbit.exposure ? *orbit.exposure : render::highlight_exposure(result.radiance, orbit_default_exposure);
+      orbit.exposure
+          ? *orbit.exposure
+          : render::highlight_exposure(result.radiance, orbit_default_exposure,
+                                       render::sunlit_white_luminance(camera, unix_seconds, settings.planet_radius_m));
   record.metering = orbit.exposure ? "given" : "highlights";
   io::write_orbit_outputs(result, record, out);
   progress.finish();
