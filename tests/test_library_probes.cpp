@@ -525,6 +525,24 @@ TEST_CASE("weather_systems.glsl on the GPU agrees with the CPU", "[probe]") {
     // weight, both below 1; texels from 1e-4 to 4e-3 rad take the fade (cells_resolved) from full
     // to nothing.
     cases.push_back({arguments(PROBE_CELL_PARTS, vec4(r(0.0f, 1.0f), seed, 0, r(1e-4f, 4e-3f)), vec4(q, 0)), cells});
+    // The streets: the phasor's phases (cycles below 16, eight roundings of ulp(16) = 2^-20 before
+    // the fract, 2 pi times that after) and their sine and cosine err by e; the rows divide the
+    // sum by its length, which amplifies e by 2 / |sum|, through a smoothstep of slope 1.25; the
+    // modulation takes the rows times 0.3.
+    {
+      const vec3 wind = vec3(r.v(-1.0f, 1.0f));
+      const vec3 along = wind - dot(wind, q) * q;
+      const vec3 across = cross(q, along) / length(along);
+      const float e = 8.0f * 6.2832f / 1048576.0f + kTranscendental;
+      const float magnitude = length(glsl::street_phasor(q, across, std::uint32_t(seed)));
+      const float rows = magnitude > 10.0f * e ? 2.5f * e / (magnitude - e) : 1.0f;
+      cases.push_back({arguments(PROBE_STREETS, vec4(r(0.0f, 1.0f), seed, 0, r(1e-4f, 4e-3f)), vec4(q, 0), vec4(0.0f),
+                                 vec4(wind, 0)),
+                       std::max(e, rows)});
+    }
+    // The distance behind the cold front (a normalize and a dot product on values below 4) and the
+    // streets' share of it (a smoothstep of slope 3 per radius).
+    cases.push_back({arguments(PROBE_COLD_FRONT, vec4(r(-3.0f, 2.0f), 0, r(-3.5f, 1.0f), 0)), 3 * 16 * kArithmetic});
     // The belts over a surface: one smoothstep (arithmetic) times a field below 1.
     cases.push_back({arguments(PROBE_BELTS_SURFACE, vec4(r(-1.0f, 1.0f), 0, 0, 0),
                                vec4(r(0.0f, 1.0f), r(0.0f, 0.6f), r(0.0f, 0.35f), 0)),

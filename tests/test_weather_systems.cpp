@@ -438,18 +438,28 @@ TEST_CASE("the density pass is compiled with the cell patterns a cover draws and
   // The boundaries: the open cells from 5 / (2 x 80 x 0.5) = 400 texels a face (2.5 texels a
   // cell: 1 / (80 x 2 / N) > 2.5), the closed from 800 (at those two sizes exactly the fade's
   // weight is float's rounding of 0, so the sizes beside them are judged).
-  for (int size : {64, 256, 399, 401, 512, 799, 801, 1024, 2048}) {
+  // The streets from 5 x 531 / 2 = 1327.5 x 2 = 2655 texels a face (2.5 texels a row).
+  for (int size : {64, 256, 399, 401, 512, 799, 801, 1024, 2048, 2654, 2656, 4096}) {
     INFO("size " << size);
     p.size = size;
     p.stratocumulus_cells = 1.0f;
+    p.cloud_streets = 1.0f;
     const cover::CellPatterns drawn = cover::cell_patterns_drawn(p);
     CHECK(drawn.open == (size > 400));
     CHECK(drawn.closed == (size > 800));
+    CHECK(drawn.streets == (size > 2655));
     p.stratocumulus_cells = 0.0f;
+    p.cloud_streets = 0.0f;
     const cover::CellPatterns none = cover::cell_patterns_drawn(p);
     CHECK_FALSE(none.open);
     CHECK_FALSE(none.closed);
+    CHECK_FALSE(none.streets);
   }
+  // No cyclones, no cold air: no streets.
+  p.size = 4096;
+  p.cloud_streets = 1.0f;
+  p.cyclones = 0;
+  CHECK_FALSE(cover::cell_patterns_drawn(p).streets);
 }
 
 TEST_CASE("stratocumulus decks lie in patches of their belt, off the west coasts with a land mask", "[fast][systems]") {
@@ -505,6 +515,113 @@ TEST_CASE("decks are closed cells in their cores and open at their fringes and i
   CHECK(glsl::cold_sector(half_way - 3.0f * ahead) == 0.0f);  // beyond the outbreak
   CHECK(glsl::cold_sector(vec2(-1.5f, 0.5f)) == 0.0f);        // poleward of the low
   CHECK(glsl::cold_sector(vec2(-0.4f, -0.4f)) == 0.0f);       // the head's hook
+}
+
+TEST_CASE("the cold air furthest behind the front is in streets and the rest in open cells", "[fast][systems]") {
+  const vec2 half_way(0.15f, -1.8f), ahead = glm::normalize(vec2(2.4f, -1.7f));
+  CHECK(glsl::behind_cold_front(half_way - 1.5f * ahead) == Approx(1.5f).margin(1e-5));
+  CHECK(glsl::street_share(half_way - 1.0f * ahead) == 0.0f);  // near the front: open cells
+  CHECK(glsl::street_share(half_way - 2.0f * ahead) == 1.0f);  // far behind: streets
+  // cold_air's x is the cold sector as cold_sectors has it, its y the streets' share there.
+  glsl::WeatherSystems systems{};
+  systems.cyclone_count = 1;
+  glsl::Cyclone& c = systems.cyclones[0];
+  c.centre = glm::normalize(vec3(1.0f, 0.0f, 1.2f));
+  c.east = vec3(0.0f, 1.0f, 0.0f);
+  c.pole = glm::cross(c.centre, c.east);
+  c.radius = 0.2f;
+  c.strength = 0.8f;
+  for (float behind : {0.8f, 1.2f, 1.55f, 2.0f, 2.3f}) {
+    const vec2 xy = half_way - behind * ahead;
+    const vec3 p = glm::normalize(c.centre + c.radius * (xy.x * c.east + xy.y * c.pole));
+    const vec2 air = glsl::cold_air(p, systems);
+    const vec2 frame = glsl::cyclone_frame(p, c);
+    INFO("behind " << behind);
+    CHECK(air.x == Approx(0.8f * glsl::cold_sector(frame)).margin(1e-6));
+    CHECK(air.x == glsl::cold_sectors(p, systems));
+    CHECK(air.y == Approx(glsl::street_share(frame)).margin(1e-6));
+  }
+}
+
+namespace {
+
+// The streets' rows over a patch `half` radians either side of `centre`, n x n points, with the
+// wind along the patch's east: 1 where a row is (street_rows above 0.5).
+std::vector<bool> street_patch(vec3 centre, float half, int n, std::uint32_t seed) {
+  std::vector<bool> rows;
+  for (const vec3& p : patch(centre, half, n)) {
+    const vec3 east = glm::normalize(glm::cross(vec3(0.0f, 0.0f, 1.0f), p));
+    rows.push_back(glsl::street_rows(p, glm::cross(p, east), seed) > 0.5f);
+  }
+  return rows;
+}
+
+}  // namespace
+
+TEST_CASE("cloud streets are long rows along the wind, 12 km apart, that end and merge", "[fast][systems]") {
+  // A patch 400 km square at 60 N, 800 x 800 points (0.5 km apart), the wind from the west.
+  const int n = 800;
+  const float half = 200.0f / 6371.0f;
+  const double spacing_km = 6371.0 / glsl::STREETS, pixel_km = 400.0 / n;
+  const vec3 centre(std::cos(1.047f), 0.0f, std::sin(1.047f));
+  const std::vector<bool> rows = street_patch(centre, half, n, 31u);
+  // Along each north-south line, the rows crossed: the patch over the spacing, 33, on average,
+  // to the few that end or merge on the way.
+  double crossings = 0;
+  for (int i = 0; i < n; i += 40) {
+    int count = 0;
+    for (int j = 1; j < n; ++j) count += rows[size_t(j) * n + i] && !rows[size_t(j - 1) * n + i];
+    crossings += count;
+  }
+  crossings /= n / 40;
+  INFO("rows crossed per 400 km: " << crossings << " (spacing " << spacing_km << " km)");
+  CHECK(crossings == Approx(400.0 / spacing_km).epsilon(0.15));
+  // Along the wind a point stays on its row or off it (correlation of the row mask at 20 km above
+  // 0.6), across it the rows alternate: at half the spacing the mask is anti-correlated, at the
+  // spacing correlated again.
+  const auto correlation = [&](int di, int dj) {
+    double same = 0, count = 0;
+    for (int j = 0; j + dj < n; ++j)
+      for (int i = 0; i + di < n; ++i) {
+        same += rows[size_t(j) * n + i] == rows[size_t(j + dj) * n + i + di] ? 1.0 : -1.0;
+        ++count;
+      }
+    return same / count;
+  };
+  const int along = int(std::lround(20.0 / pixel_km)), across_half = int(std::lround(spacing_km / 2 / pixel_km)),
+            across = int(std::lround(spacing_km / pixel_km));
+  INFO("correlation along 20 km " << correlation(along, 0) << ", across half a spacing " << correlation(0, across_half)
+                                  << ", across a spacing " << correlation(0, across));
+  CHECK(correlation(along, 0) > 0.6);
+  CHECK(correlation(0, across_half) < -0.4);
+  CHECK(correlation(0, across) > 0.3);
+  // The rows are long: the separate rows inside the patch are few against those an unbroken
+  // patch of 20 km rows would hold (400 / 12 rows x 20 per 400 km = 660).
+  const auto parts = components(rows, n);
+  INFO(parts.inside << " rows inside the patch");
+  CHECK(parts.inside < 200);
+}
+
+TEST_CASE("the streets' mean over the sphere is the constant their modulation subtracts", "[fast][systems]") {
+  std::mt19937 rng(7);
+  std::normal_distribution<float> g;
+  const int n = 100000;
+  double sum = 0;
+  for (int k = 0; k < n; ++k) {
+    const vec3 p = glm::normalize(vec3(g(rng), g(rng), g(rng)));
+    const vec3 across = glm::normalize(glm::cross(p, vec3(g(rng), g(rng), g(rng))));
+    sum += glsl::street_rows(p, across, 3u);
+  }
+  // The standard error: a spread below 0.5 over sqrt(n), 0.0016.
+  CHECK(sum / n == Approx(glsl::STREETS_MEAN).margin(0.005));
+  // No wind or no weight: nothing; a resolved pattern's modulation is within its contrast.
+  const vec3 p = glm::normalize(vec3(0.3f, 0.4f, 0.8f));
+  CHECK(glsl::street_modulation(p, vec3(0.0f), 1.0f, 3u, 1e-4f) == 0.0f);
+  CHECK(glsl::street_modulation(p, vec3(0.0f, 1.0f, 0.0f), 0.0f, 3u, 1e-4f) == 0.0f);
+  CHECK(std::abs(glsl::street_modulation(p, vec3(0.0f, 1.0f, 0.0f), 1.0f, 3u, 1e-4f)) <=
+        0.5f * glsl::STREET_CONTRAST + 1e-6f);
+  // Unresolved (texels of 2 / 2048 radians: 2.5 texels a row is 2655 per face): nothing.
+  CHECK(glsl::street_modulation(p, vec3(0.0f, 1.0f, 0.0f), 1.0f, 3u, 2.0f / 2048.0f) == 0.0f);
 }
 
 TEST_CASE("pockets of open cells are separate, sharp and larger than 1e4 km2, and turn closed cells open",

@@ -3,7 +3,7 @@
 // cyclonic depth at the texel (the curl field's w: cyclones cloudy) and by the land/ocean bias
 // (--surface; a zero weight without one), plus the weather systems (weather_systems.glsl) with
 // edges frayed by the same noise and the convective cells of the stratocumulus decks and of the
-// cyclones' cold air. The pass also reduces the densities' range into
+// cyclones' cold air, and that cold air's cloud streets. The pass also reduces the densities' range into
 // DensityRange, which the calibration then needs no pass of its own to find: each invocation
 // walks a strip of u_strip texels down a column (as the reductions of coverage_histogram.comp)
 // and adds its strip's range with two atomics. (A reduction in shared memory needs a barrier,
@@ -31,6 +31,11 @@ layout(rgba32f, binding = 4) uniform readonly image2DArray young_warp_field;
 #endif
 #ifndef OPEN_CELLS_DRAWN
 #define OPEN_CELLS_DRAWN 1
+#endif
+// STREETS_DRAWN: the cold air's cloud streets, where --cloud-streets is above 0 and the texels
+// resolve them (from about 2700 per face).
+#ifndef STREETS_DRAWN
+#define STREETS_DRAWN 1
 #endif
 #include "../lib/cover_density.glsl"
 #include "../lib/weather_systems.glsl"
@@ -122,19 +127,32 @@ void main() {
     float cyclones = cyclone_systems(origin, u_systems, edge);
     float systems = max(cyclones, belts);
     // The cells as the belts, each layer its own, in the cold sectors of the cyclones as drawn.
-    // Only the open cells take the cold sectors: none to find where they are not drawn.
-#if OPEN_CELLS_DRAWN
-    float cold = cold_sectors(origin, u_systems);
+    // Only the open cells and the streets take the cold sectors: none to find where they are not
+    // drawn.
+#if OPEN_CELLS_DRAWN || STREETS_DRAWN
+    vec2 cold_sector_air = cold_air(origin, u_systems);
 #else
-    float cold = 0.0f;
+    vec2 cold_sector_air = vec2(0.0f);
+#endif
+    vec4 curl = imageLoad(curl_field, texel);
+#if STREETS_DRAWN
+    // The streets take their share of the cold air from the open cells, and lie along the flow's
+    // wind at the texel (the rolls align with the present low-level wind, wherever the air came from).
+    float cold = cold_sector_air.x * (1.0f - cold_sector_air.y);
+    float streets = street_modulation(direction, curl.xyz, u_systems.streets * cold_sector_air.x * cold_sector_air.y,
+                                      u_systems.seed, texel_arc);
+#else
+    float cold = cold_sector_air.x;
+    float streets = 0.0f;
 #endif
     vec2 cells = cells_at(older_origin, u_systems.seed, surface, cold, texel_arc);
 #if MOVING_LAYERS
     cells = mix(cells, cells_at(normalize(young_warped), u_young_systems_seed, surface, cold, texel_arc), u_young_share);
 #endif
-    float cyclonic = imageLoad(curl_field, texel).w;
-    float density = with_cells(
-        with_systems(shaped_density(noise, cyclonic, u_cyclone_cloudiness, surface, u_surface_weight), systems), cells.y);
+    float cyclonic = curl.w;
+    float density =
+        with_cells(with_systems(shaped_density(noise, cyclonic, u_cyclone_cloudiness, surface, u_surface_weight), systems),
+                   cells.y + streets);
     imageStore(density_field, texel, vec4(density, 0.0f, 0.0f, 0.0f));
     // The cloud's top by its types (the remap clears it where the texel stays clear).
     CloudTypes types;

@@ -37,6 +37,7 @@ struct WeatherSystems {
   float trade_cumulus;  // strength of the trade cumulus fields, 0: none
   float cirrus;         // strength of the cirrus streaks, 0: none
   float cells;          // strength of the stratocumulus decks' and cold air's convective cells, 0: none
+  float streets;        // strength of the cold air's cloud streets, 0: none
   uint seed;            // the belts' noise (cluster places, cumulus cells, cirrus); per cloud layer
 };
 
@@ -213,6 +214,7 @@ const float OPEN_CELLS = 80.0f;
 const uint CLOSED_CELLS_LAYER = 17u;
 const uint OPEN_CELLS_LAYER = 18u;
 const uint DECK_PATCHES_LAYER = 19u;
+const uint STREETS_LAYER = 22u;  // the streets' phases (after the pockets' 20 and 21)
 // The patterns' means over the sphere (tests/test_weather_systems.cpp measures them), which the
 // modulation subtracts so that the cells move cloud within a region rather than add it.
 const float CLOSED_CELLS_MEAN = 0.77f;
@@ -293,29 +295,106 @@ float deck_strength(vec3 p, float latitude, uint seed, float surface, float surf
   return band * clamp((patches + 0.1f) / 0.4f, 0.0f, 1.0f);
 }
 
+// The distance behind the cold front's band in the cyclone's frame (head radii; negative ahead).
+float behind_cold_front(vec2 xy) {
+  vec2 axis = COLD_FRONT_JOIN - COLD_FRONT_TAIL_END;
+  vec2 ahead = normalize(vec2(axis.y, -axis.x));
+  return -dot(xy - COLD_FRONT_TAIL_END, ahead);
+}
+
 // The cold air behind a cyclone's cold front, in its frame (head radii, as comma_cloud): from 0.6
 // to 2.5 radii behind the front's band, along its tail, equatorward of the low and beyond its
 // head, where open cells fill the polar air (the cold-air outbreak's "popcorn" behind the dry
-// slot).
+// slot) and, furthest behind the front, cloud streets (street_share).
 float cold_sector(vec2 xy) {
   const vec2 tail_end = COLD_FRONT_TAIL_END;
   vec2 axis = COLD_FRONT_JOIN - tail_end;
   float along = dot(xy - tail_end, axis) / dot(axis, axis);
-  vec2 ahead = normalize(vec2(axis.y, -axis.x));
-  float behind = -dot(xy - tail_end, ahead);
+  float behind = behind_cold_front(xy);
   return smoothstep(0.6f, 1.0f, behind) * (1.0f - smoothstep(2.0f, 2.5f, behind)) * smoothstep(-0.1f, 0.2f, along) *
          (1.0f - smoothstep(0.8f, 1.1f, along)) * (1.0f - smoothstep(-0.6f, 0.0f, xy.y)) *
          smoothstep(0.8f, 1.2f, length(xy));
 }
 
-// The cyclones' cold sectors at p: the largest, by each one's strength.
-float cold_sectors(vec3 p, IN(WeatherSystems) systems) {
-  float cold = 0.0f;
+// The share of a cold sector's air in cloud streets at xy (the cyclone's frame): the air
+// furthest behind the front, which has crossed the least warm sea since it left the cold ground,
+// is in rolls; from 1.3 to 1.8 head radii behind the front they give way to the open cells that
+// fill the rest, nearer the front (streets turn into cells downstream: Liu et al. 2004,
+// "Simulation of cloud streets and cellular convection in a cold-air outbreak", GRL 31; the
+// life cycle of EUMeTrain's satellite manual).
+float street_share(vec2 xy) { return smoothstep(1.3f, 1.8f, behind_cold_front(xy)); }
+
+// The cyclones' cold air at p: x the largest cold sector, by each one's strength; y the share of
+// its air in streets (street_share).
+vec2 cold_air(vec3 p, IN(WeatherSystems) systems) {
+  vec2 air = vec2(0.0f);
   for (int i = 0; i < systems.cyclone_count && i < MAX_CYCLONES; ++i) {
     vec2 xy = cyclone_frame(p, systems.cyclones[i]);
-    if (dot(xy, xy) < 16.0f) cold = max(cold, systems.cyclones[i].strength * cold_sector(xy));
+    if (dot(xy, xy) < 16.0f) {
+      float cold = systems.cyclones[i].strength * cold_sector(xy);
+      if (cold > air.x) air = vec2(cold, street_share(xy));
+    }
   }
-  return cold;
+  return air;
+}
+float cold_sectors(vec3 p, IN(WeatherSystems) systems) { return cold_air(p, systems).x; }
+
+// Cloud streets: rows of cumulus along the low-level wind over horizontal roll vortices in the
+// boundary layer (Etling and Brown 1993, "Roll vortices in the planetary boundary layer: a
+// review", Boundary-Layer Meteorol. 65), their spacing two to six boundary-layer depths; in
+// satellite images of cold-air outbreaks parallel bands 20-200 km long and 2-10 km wide, wider
+// away from the coast (EUMeTrain, "Cloud structure in satellite images"). Here 12 km apart
+// (STREETS rows per radius: a 2 km deep layer, aspect ratio 6, as the cold air far from the
+// coast has), drawn where the cover's texels resolve them (cells_resolved: from about 2700 texels
+// a face).
+const float STREETS = 531.0f;
+// Phase anchors per radius (about 100 km apart): the streets' length before two merge or one ends.
+const float STREET_ANCHORS = 64.0f;
+// street_rows' mean over any region (its phase is uniform, its profile odd about 0.5).
+const float STREETS_MEAN = 0.5f;
+// The modulation's step: as the closed cells', cloud from between the rows onto them.
+const float STREET_CONTRAST = 0.3f;
+
+// Rows across `across` (a unit tangent at the unit vector p, perpendicular to the wind): 1 on a
+// row, 0 between. A phasor noise (Tricard et al. 2019, "Procedural phasor noise", ACM TOG 38(4)):
+// each anchor of a lattice of STREET_ANCHORS per radius carries a plane wave across the wind with
+// a phase of its own; the waves summed as complex numbers with weights of a smooth partition of
+// unity keep one phase and full contrast between anchors, and where neighbours' phases disagree a
+// row ends or two merge into one, as streets do. street_phasor is the sum, street_rows the rows.
+vec2 street_phasor(vec3 p, vec3 across, uint seed) {
+  vec3 x = p * STREET_ANCHORS;
+  vec3 base = floor(x);
+  vec3 f = x - base;
+  vec3 w = f * f * f * (f * (f * 6.0f - 15.0f) + 10.0f);
+  uvec3 key = noise_key(seed, STREETS_LAYER);
+  vec2 sum = vec2(0.0f);
+  for (int k = 0; k < 8; ++k) {
+    vec3 corner = vec3(float(k & 1), float((k >> 1) & 1), float((k >> 2) & 1));
+    vec3 anchor = base + corner;
+    float weight = mix(1.0f - w.x, w.x, corner.x) * mix(1.0f - w.y, w.y, corner.y) * mix(1.0f - w.z, w.z, corner.z);
+    float own = hash_to_unit3(pcg3d(uvec3(ivec3(anchor)) ^ key)).x;
+    // Whole cycles dropped before the sine and cosine, whose accuracy falls with the argument.
+    float phase = 2.0f * PI_F * fract((STREETS / STREET_ANCHORS) * dot(x - anchor, across) + own);
+    sum += weight * vec2(cos(phase), sin(phase));
+  }
+  return sum;
+}
+float street_rows(vec3 p, vec3 across, uint seed) {
+  vec2 sum = street_phasor(p, across, seed);
+  float magnitude = length(sum);
+  float wave = magnitude > 1.0e-6f ? sum.x / magnitude : 0.0f;
+  return smoothstep(-0.6f, 0.6f, wave);
+}
+
+// The streets' part of the density's modulation (with_cells' m) at p: `wind` the flow's velocity
+// there, `weight` the cold air's share in streets (cold_air's x times y) times their strength,
+// texels texel_arc radians across. Zero on average, as the cells'.
+float street_modulation(vec3 p, vec3 wind, float weight, uint seed, float texel_arc) {
+  float w = weight * cells_resolved(STREETS, texel_arc);
+  vec3 along = wind - dot(wind, p) * p;
+  float speed = length(along);
+  if (w <= 0.0f || speed < 1.0e-6f) return 0.0f;
+  return STREET_CONTRAST * w * (street_rows(p, cross(p, along) / speed, seed) - STREETS_MEAN);
 }
 
 // Where a deck of strength d is (its fringe from 0.1, whole from 0.3).

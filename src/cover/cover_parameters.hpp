@@ -46,6 +46,7 @@ struct CoverParameters {
   float trade_cumulus = params::cover::trade_cumulus.default_float();              // strength of the cumulus fields
   float cirrus = params::cover::cirrus.default_float();                            // strength of the cirrus streaks
   float stratocumulus_cells = params::cover::stratocumulus_cells.default_float();  // the decks' and cold air's cells
+  float cloud_streets = params::cover::cloud_streets.default_float();              // the cold air's streets
   float cover_softness = params::cover::cover_softness.default_float();            // density scale of the remap
   float tau_median = params::cover::tau_median.default_float();                    // the cloud's optical thickness,
   float tau_spread = params::cover::tau_spread.default_float();                    // log-normal (cloud_properties.glsl)
@@ -106,6 +107,7 @@ void visit_numeric_parameters(P& p, Visit&& visit) {
   visit(c::trade_cumulus, p.trade_cumulus);
   visit(c::cirrus, p.cirrus);
   visit(c::stratocumulus_cells, p.stratocumulus_cells);
+  visit(c::cloud_streets, p.cloud_streets);
   visit(c::cover_softness, p.cover_softness);
   visit(c::tau_median, p.tau_median);
   visit(c::tau_spread, p.tau_spread);

@@ -36,7 +36,8 @@ std::vector<std::pair<std::string, std::string>> density_defines(const CoverPara
   const CellPatterns cells = cell_patterns_drawn(p);
   return {{"MOVING_LAYERS", moving(p) ? "1" : "0"},
           {"CLOSED_CELLS_DRAWN", cells.closed ? "1" : "0"},
-          {"OPEN_CELLS_DRAWN", cells.open ? "1" : "0"}};
+          {"OPEN_CELLS_DRAWN", cells.open ? "1" : "0"},
+          {"STREETS_DRAWN", cells.streets ? "1" : "0"}};
 }
 }  // namespace
 

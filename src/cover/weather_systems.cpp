@@ -53,6 +53,7 @@ glsl::WeatherSystems weather_systems(const CoverParameters& p, double hours) {
   w.trade_cumulus = p.trade_cumulus;
   w.cirrus = p.cirrus;
   w.cells = p.stratocumulus_cells;
+  w.streets = p.cloud_streets;
   // The ITCZ's annual-mean line near 5 N (Waliser and Gautier 1993), moved with the profile's
   // seasonal shift there.
   w.itcz_latitude = static_cast<float>((5.0 + seasonal_shift_deg(5.0, p.month)) * degree);
@@ -100,7 +101,8 @@ CellPatterns cell_patterns_drawn(const CoverParameters& p) {
   const float texel_arc = 2.0f / static_cast<float>(p.size);
   const bool cells = p.stratocumulus_cells > 0.0f;
   return {cells && glsl::cells_resolved(glsl::CLOSED_CELLS, texel_arc) > 0.0f,
-          cells && glsl::cells_resolved(glsl::OPEN_CELLS, texel_arc) > 0.0f};
+          cells && glsl::cells_resolved(glsl::OPEN_CELLS, texel_arc) > 0.0f,
+          p.cloud_streets > 0.0f && p.cyclones > 0 && glsl::cells_resolved(glsl::STREETS, texel_arc) > 0.0f};
 }
 
 }  // namespace nephele::cover

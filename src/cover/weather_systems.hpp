@@ -37,9 +37,10 @@ glsl::WeatherSystems weather_systems(const CoverParameters& p, double hours);
 // The convective cells' patterns a cover draws (cover_density.comp's CLOSED_CELLS_DRAWN and
 // OPEN_CELLS_DRAWN): with --stratocumulus-cells above 0, those its texels resolve at a face's
 // centre (weather_systems.glsl's cells_resolved above 0: the open cells from about 400 texels a
-// face, the closed from about 800). The density pass is compiled without the others.
+// face, the closed from about 800), and with --cloud-streets above 0 and cyclones to have cold
+// air, the streets where resolved (from about 2700). The density pass is compiled without the others.
 struct CellPatterns {
-  bool closed = false, open = false;
+  bool closed = false, open = false, streets = false;
 };
 CellPatterns cell_patterns_drawn(const CoverParameters& p);
 

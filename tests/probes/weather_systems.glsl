@@ -12,10 +12,13 @@ const int PROBE_CELLS = 7;            // closed_cells(p, uint(b)), open_cells, c
                                       // deck_strength(p, lat, uint(b), a, c)
 const int PROBE_CELL_WEIGHTS = 8;     // cell_weights(a, b), deck_presence(a), cells_resolved(b * 100, c)
 const int PROBE_COLD = 9;             // cold_sector(vec2(a, c)), cold_sectors(p, cyclone C), cell_modulation(p,
-                                      // x[3].zw, uint(b), 1e-3)
+                                      // x[3].zw, uint(b), 1e-3), cold_air(p, C).y
 const int PROBE_CELL_PARTS = 10;      // closed_cell_modulation(p, a, uint(b), c), open_cell_modulation(p, a, uint(b), c)
 const int PROBE_POCKETS = 11;         // open_cell_pockets(p, uint(b)), with_pockets(vec2(a, c), it) in y, z
 const int PROBE_BELTS_SURFACE = 12;   // belts_over_surface(x[1].xyz, a)
+const int PROBE_STREETS = 13;         // street_phasor(p, across, uint(b)), street_rows, street_modulation(p, x[3].xyz,
+                                      // a, uint(b), c); across the unit tangent across the wind x[3].xyz
+const int PROBE_COLD_FRONT = 14;      // behind_cold_front(vec2(a, c)), street_share(vec2(a, c))
 #ifndef __cplusplus
 #include "../lib/weather_systems.glsl"
 #endif
@@ -51,6 +54,15 @@ vec4 probe_weather_systems(mat4 x) {
     return vec4(closed_cell_modulation(p, x[0].y, seed, x[0].w), open_cell_modulation(p, x[0].y, seed, x[0].w), 0.0f,
                 0.0f);
   if (f == PROBE_BELTS_SURFACE) return vec4(belts_over_surface(p, x[0].y), 0.0f);
+  if (f == PROBE_COLD_FRONT)
+    return vec4(behind_cold_front(vec2(x[0].y, x[0].w)), street_share(vec2(x[0].y, x[0].w)), 0.0f, 0.0f);
+  if (f == PROBE_STREETS) {
+    vec3 wind = vec3(x[3]);
+    vec3 along = wind - dot(wind, p) * p;
+    vec3 across = cross(p, along) / length(along);
+    return vec4(street_phasor(p, across, seed), street_rows(p, across, seed),
+                street_modulation(p, wind, x[0].y, seed, x[0].w));
+  }
   if (f == PROBE_POCKETS) {
     float pocket = open_cell_pockets(p, seed);
     vec2 weights = with_pockets(vec2(x[0].y, x[0].w), pocket);
@@ -72,7 +84,7 @@ vec4 probe_weather_systems(mat4 x) {
   systems.seed = seed;
   if (f == PROBE_COLD)
     return vec4(cold_sector(vec2(x[0].y, x[0].w)), cold_sectors(p, systems),
-                cell_modulation(p, vec2(x[3].z, x[3].w), seed, 1.0e-3f), 0.0f);
+                cell_modulation(p, vec2(x[3].z, x[3].w), seed, 1.0e-3f), cold_air(p, systems).y);
   if (f == PROBE_BELT_FIELDS) {
     vec3 fields = belt_fields(p, latitude, systems, seed, x[0].w);
     return vec4(fields, belt_cloud(fields));
