@@ -253,15 +253,14 @@ double sunlit_white_luminance(const OrbitCamera& camera, double unix_seconds, do
   const OrbitFrame frame = orbit_frame(camera, planet_radius_m);
   const glsl::vec3 sun(sun_direction_ecef(unix_seconds));
   const float R = static_cast<float>(planet_radius_m);
-  const double tan_half = std::tan(camera.fov_deg * degree / 2), aspect = double(camera.height) / camera.width;
+  const TileView view{frame.position, frame.forward, frame.right, frame.up, std::tan(camera.fov_deg * degree / 2),
+                      camera.width,   camera.height};
   const int columns = 64, rows = 36;
   double brightest = 0.0;
   for (int j = 0; j < rows; ++j)
     for (int i = 0; i < columns; ++i) {
-      // The ray through the grid cell's centre, as orbit.comp makes a pixel's (project_to_pixel's inverse).
-      const double x = 2.0 * (i + 0.5) / columns - 1.0, y = 1.0 - 2.0 * (j + 0.5) / rows;
-      const glm::dvec3 d =
-          glm::normalize(frame.forward + x * tan_half * frame.right + y * tan_half * aspect * frame.up);
+      // The ray through the grid cell's centre, as orbit.comp makes a pixel's.
+      const glm::dvec3 d = view_ray(view, (i + 0.5) / columns * camera.width, (j + 0.5) / rows * camera.height);
       // The nearer root of |position + t d| = R.
       const double b = glm::dot(frame.position, d);
       const double c = glm::dot(frame.position, frame.position) - planet_radius_m * planet_radius_m;

@@ -33,18 +33,19 @@ std::vector<glm::uvec2> all_tiles(int width, int height) {
   return tiles;
 }
 
+glm::dvec3 view_ray(const TileView& view, double px, double py) {
+  const double aspect = double(view.height) / double(view.width);
+  const double x = (2.0 * px / view.width - 1.0) * view.tan_half_fov;
+  const double y = (1.0 - 2.0 * py / view.height) * aspect * view.tan_half_fov;
+  return glm::normalize(view.forward + x * view.right + y * view.up);
+}
+
 std::vector<glm::uvec2> tiles_meeting_sphere(const TileView& view, double radius_m) {
   const double distance = glm::length(view.position);
   if (!(distance > radius_m)) return all_tiles(view.width, view.height);
   const glm::dvec3 centre = -view.position / distance;
   const double sphere_angle = std::asin(radius_m / distance);
-  const double aspect = double(view.height) / double(view.width);
-  // The ray through the point (px, py) of the image, in pixels from its top left corner.
-  auto ray = [&](double px, double py) {
-    const double x = (2.0 * px / view.width - 1.0) * view.tan_half_fov;
-    const double y = (1.0 - 2.0 * py / view.height) * aspect * view.tan_half_fov;
-    return glm::normalize(view.forward + x * view.right + y * view.up);
-  };
+  const auto ray = [&](double px, double py) { return view_ray(view, px, py); };
   std::vector<glm::uvec2> tiles;
   const glm::ivec2 grid = tile_grid(view.width, view.height);
   for (int ty = 0; ty < grid.y; ++ty)

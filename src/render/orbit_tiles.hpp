@@ -28,6 +28,10 @@ struct TileView {
   int width = 1, height = 1;
 };
 
+// The unit ray through the point (px, py) of the image, in pixels from its top left corner (a
+// pixel's centre at + 0.5).
+glm::dvec3 view_ray(const TileView& view, double px, double py);
+
 // The tiles (column, row; tile units, row 0 at the top) that hold a pixel whose ray can meet the
 // sphere of `radius_m` about the planet's centre, in row order. Conservative: a tile is kept where
 // the angle between its central ray and the sphere's centre is at most the sphere's angular radius
