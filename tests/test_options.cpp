@@ -1,6 +1,7 @@
 // The parameter table and the command-line options made from it.
 #include <catch2/catch.hpp>
 
+#include <filesystem>
 #include <map>
 #include <sstream>
 #include <set>
@@ -247,6 +248,24 @@ TEST_CASE("scene files refuse every numeric key just outside the range the table
       }
     }
   }
+}
+
+TEST_CASE("a scene file's terrain land cover and surface keep their words and resolve files against its folder",
+          "[fast][cli]") {
+  const regional::Scene words =
+      io::parse_scene(R"({"terrain": "flat", "land_cover": "none", "surface": "etopo5"})", "scenes/a.json", "scenes");
+  CHECK(words.terrain == "flat");
+  CHECK(words.land_cover == "none");
+  CHECK(words.cover_surface == "etopo5");
+  const regional::Scene files =
+      io::parse_scene(R"({"terrain": "relief.cdf", "land_cover": "/data/maps.json", "surface": "mask.png"})",
+                      "scenes/a.json", "scenes");
+  CHECK(files.terrain == (std::filesystem::path("scenes") / "relief.cdf").string());
+  CHECK(files.land_cover == "/data/maps.json");
+  CHECK(files.cover_surface == (std::filesystem::path("scenes") / "mask.png").string());
+  // A word of another key is a file here ("flat" is no land/ocean mask).
+  CHECK(io::parse_scene(R"({"surface": "flat"})", "scenes/a.json", "scenes").cover_surface ==
+        (std::filesystem::path("scenes") / "flat").string());
 }
 
 TEST_CASE("a panorama without a size is the 2:1 view sphere, in a scene file as with --panorama", "[fast][cli]") {

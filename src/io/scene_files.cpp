@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <string>
+#include <string_view>
 
 #include "core/input_file.hpp"
 #include "core/json.hpp"
@@ -27,6 +29,19 @@ std::string scene_keys() {
       if (p == &params::scene::view) keys += ", at";
     }
   return keys;
+}
+
+// A setting that is one of the parameter's words or a file ("etopo5|flat|FILE"): a word as it is,
+// a path resolved against the scene file's folder.
+std::string word_or_path(const params::Parameter& p, const std::string& value, const std::string& base_directory) {
+  const std::string_view allowed = p.allowed;
+  for (std::size_t begin = 0; begin <= allowed.size();) {
+    const std::size_t end = std::min(allowed.find('|', begin), allowed.size());
+    const std::string_view word = allowed.substr(begin, end - begin);
+    if (word != "FILE" && word == value) return value;
+    begin = end + 1;
+  }
+  return std::filesystem::path(value).is_absolute() ? value : (std::filesystem::path(base_directory) / value).string();
 }
 
 }  // namespace
@@ -104,17 +119,11 @@ Scene parse_scene(const std::string& text, const std::string& source, const std:
     } else if (key == "powder") {
       s.powder = k.number(v, key);
     } else if (key == "terrain") {
-      const std::string t = k.string(v, key);
-      const bool word = t == "etopo5" || t == "flat";
-      s.terrain =
-          word || std::filesystem::path(t).is_absolute() ? t : (std::filesystem::path(base_directory) / t).string();
+      s.terrain = word_or_path(params::scene::terrain, k.string(v, key), base_directory);
     } else if (key == "terrain_detail") {
       s.terrain_detail = k.number(v, key);
     } else if (key == "land_cover") {
-      const std::string t = k.string(v, key);
-      const bool word = t == "swiss-maps" || t == "none";
-      s.land_cover =
-          word || std::filesystem::path(t).is_absolute() ? t : (std::filesystem::path(base_directory) / t).string();
+      s.land_cover = word_or_path(params::scene::land_cover, k.string(v, key), base_directory);
     } else if (key == "exposure") {
       s.exposure = k.number(v, key);
     } else if (key == "cover_size") {
@@ -122,10 +131,7 @@ Scene parse_scene(const std::string& text, const std::string& source, const std:
     } else if (key == "flow") {
       s.cover_flow = k.string(v, key);
     } else if (key == "surface") {
-      const std::string t = k.string(v, key);
-      const bool word = t == "etopo5" || t == "none";
-      s.cover_surface =
-          word || std::filesystem::path(t).is_absolute() ? t : (std::filesystem::path(base_directory) / t).string();
+      s.cover_surface = word_or_path(params::cover::surface, k.string(v, key), base_directory);
     } else if (key == "outputs") {
       s.outputs = k.strings(v, key);
     } else if (key == "description") {
