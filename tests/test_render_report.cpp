@@ -440,8 +440,9 @@ TEST_CASE("the render error sweep is exactly zero at the reference's own step co
   scene.cover_size = 16;
   // A seed whose 16-texel cover (Earth profile, 8 density octaves at gain 0.75) has clouds in
   // this small view: with none in view every step count renders the same sky and the sweep has
-  // nothing to measure (seeds 2, 8 and 12 have none).
-  scene.seed = 4;
+  // nothing to measure (seeds 2, 8 and 12 have none, and seed 4 since the cyclones keep to the
+  // oceans' storm tracks).
+  scene.seed = 1;
   studies::RenderSweepOptions options;
   options.view_steps = {6, 12};
   options.light_steps = {3};

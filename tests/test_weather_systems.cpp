@@ -5,10 +5,12 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <memory>
 #include <random>
 #include <vector>
 
 #include "cover/moving_flow.hpp"
+#include "cover/surface_bias.hpp"
 #include "cover/weather_systems.hpp"
 #include "shader_math/shader_math.hpp"
 
@@ -131,6 +133,57 @@ TEST_CASE("a cyclone drifts east at its speed from one frame to the next, comput
   const glsl::WeatherSystems again = cover::weather_systems(p, t);
   REQUIRE(again.cyclone_count == a.cyclone_count);
   for (int i = 0; i < a.cyclone_count; ++i) CHECK(again.cyclones[i].centre == a.cyclones[i].centre);
+}
+
+namespace {
+
+// The share of the mature cyclones (strength 1) of one hemisphere whose centre lies in
+// 0-180 E, over `moments` moments 37 hours apart.
+double mature_share_east(const cover::CoverParameters& p, bool north, int moments, int* count) {
+  int east = 0;
+  *count = 0;
+  for (int k = 0; k < moments; ++k) {
+    const glsl::WeatherSystems w = cover::weather_systems(p, 37.0 * k);
+    for (int i = 0; i < w.cyclone_count; ++i) {
+      const glsl::Cyclone& c = w.cyclones[i];
+      if ((c.centre.z > 0.0f) != north || c.strength < 1.0f) continue;
+      ++*count;
+      east += c.centre.y > 0.0f;
+    }
+  }
+  return double(east) / *count;
+}
+
+}  // namespace
+
+TEST_CASE("with a land mask the cyclones mature over the ocean and without one at any longitude",
+          "[fast][systems][surface]") {
+  // A planet whose northern half is land west of Greenwich and ocean east of it; the south is ocean.
+  cover::SurfaceMask mask{cover::surface_bias_columns, cover::surface_bias_rows, {}, "half"};
+  for (int j = 0; j < mask.rows; ++j)
+    for (int i = 0; i < mask.columns; ++i) mask.land.push_back(j < mask.rows / 2 && i < mask.columns / 2 ? 1.0f : 0.0f);
+  // A track's mature life spans about 30 degrees of longitude (13-43 degrees east of its genesis
+  // at 40 N), so the ocean's share of a track is 1 on 150 degrees of genesis longitudes, 0 on
+  // 150 and a ramp between on each 30-degree coast (widened by the 5-degree core). Kept with
+  // probability w, the mature centres lie over the ocean with E[w^2] / E[w] = 160 / 165 = 0.97
+  // (eight refusals in a row: (1 - 165 / 360)^8 < 1 %).
+  CHECK(cover::mature_ocean_share(mask, 40.0, 30.0) == 1.0);
+  CHECK(cover::mature_ocean_share(mask, 40.0, -120.0) == 0.0);
+  CHECK(cover::mature_ocean_share(mask, -40.0, -120.0) == 1.0);
+  cover::CoverParameters p;
+  int count = 0;
+  const double bare_north = mature_share_east(p, true, 600, &count);
+  INFO("no mask: " << bare_north << " of " << count << " in the east");
+  // About 1500 mature cyclones, each counted in about 1.5 moments: a binomial of 0.5 spreads by
+  // 0.016; 0.1 is six of that.
+  CHECK(std::abs(bare_north - 0.5) < 0.1);
+  p.surface = std::make_shared<const cover::SurfaceMask>(mask);
+  const double masked_north = mature_share_east(p, true, 600, &count);
+  INFO("mask: " << masked_north << " of " << count << " in the east (the ocean)");
+  CHECK(masked_north > 0.9);
+  // The south is all ocean: its cyclones are placed as without a mask.
+  const double masked_south = mature_share_east(p, false, 600, &count);
+  CHECK(std::abs(masked_south - 0.5) < 0.1);
 }
 
 TEST_CASE("with --loop the cyclones repeat after the loop", "[fast][systems]") {

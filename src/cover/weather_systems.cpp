@@ -37,7 +37,63 @@ glsl::Cyclone make_cyclone(double latitude_deg, double longitude_deg, double rad
   return c;
 }
 
+// A cyclone's centre `age` hours after its genesis at (latitude, longitude), degrees, in its own
+// hemisphere's latitude (positive): east at its speed along the mean latitude of its way so far,
+// poleward by its drift.
+struct TrackPoint {
+  double latitude, longitude;
+};
+TrackPoint track_point(double genesis_lat, double genesis_lon, double age) {
+  const double a = age / cyclone_lifetime_hours;
+  const double mean_cos = std::cos((genesis_lat + 0.5 * cyclone_poleward_deg * a) * degree);
+  const double east_deg = cyclone_speed_m_s * 3.6 * age / (earth_radius_km * mean_cos) / degree;
+  return {genesis_lat + cyclone_poleward_deg * a, genesis_lon + east_deg};
+}
+
+// The mask's land fraction in the cell holding (latitude, longitude), degrees.
+double land_at(const SurfaceMask& mask, double latitude, double longitude) {
+  const double turn = (longitude + 180.0) / 360.0;
+  const int column = static_cast<int>(std::floor((turn - std::floor(turn)) * mask.columns)) % mask.columns;
+  const int row = std::clamp(static_cast<int>(std::floor((90.0 - latitude) / 180.0 * mask.rows)), 0, mask.rows - 1);
+  return mask.land[static_cast<size_t>(row) * mask.columns + column];
+}
+
+// A genesis longitude over a mask: candidate k (360 first for k = 0, 360 r_k.y after) is taken
+// with probability s, the ocean's share of its mature track (r_k.x < s); after eight refusals,
+// the candidate of the largest share. `random(k)` gives r_k, three uniform numbers of the slot.
+template <typename Random>
+double genesis_longitude(const SurfaceMask& mask, double genesis_lat, double first, Random random) {
+  constexpr int tries = 8;
+  double best = 360.0 * first, best_share = -1.0;
+  for (int k = 0; k < tries; ++k) {
+    const glsl::vec3 r = random(k);
+    const double longitude = 360.0 * (k == 0 ? first : r.y);
+    const double share = mature_ocean_share(mask, genesis_lat, longitude);
+    if (r.x < share) return longitude;
+    if (share > best_share) best = longitude, best_share = share;
+  }
+  return best;
+}
+
 }  // namespace
+
+double mature_ocean_share(const SurfaceMask& mask, double genesis_lat, double genesis_lon) {
+  // Eight moments of the mature life (strength 1: ages 0.2-0.67 of the lifetime), each the
+  // centre and four points 5 degrees (about 550 km, half the smallest head radius) around it.
+  constexpr int moments = 8;
+  constexpr double core_deg = 5.0;
+  const double sign = genesis_lat >= 0.0 ? 1.0 : -1.0;
+  double ocean = 0.0;
+  for (int k = 0; k < moments; ++k) {
+    const double a = 0.2 + (k + 0.5) / moments * (0.67 - 0.2);
+    const TrackPoint c = track_point(std::abs(genesis_lat), genesis_lon, a * cyclone_lifetime_hours);
+    const double lat = sign * c.latitude, east = core_deg / std::cos(c.latitude * degree);
+    ocean += 5.0 - land_at(mask, lat, c.longitude) - land_at(mask, lat + core_deg, c.longitude) -
+             land_at(mask, lat - core_deg, c.longitude) - land_at(mask, lat, c.longitude + east) -
+             land_at(mask, lat, c.longitude - east);
+  }
+  return ocean / (5.0 * moments);
+}
 
 float cyclone_strength(double a) {
   return static_cast<float>(glm::smoothstep(0.0, 0.2, a)) * (1.0f - static_cast<float>(glm::smoothstep(0.67, 1.0, a)));
@@ -81,12 +137,14 @@ glsl::WeatherSystems weather_systems(const CoverParameters& p, double hours) {
       const double a = age / lifetime;
       // In the south the tracks move with the season as the north's do (the profile's shift).
       const double genesis_lat = (hemisphere == 0 ? track_deg : 76.0 - track_deg) + 12.0 * (u.y - 0.5);
-      const double latitude = genesis_lat + cyclone_poleward_deg * a;
-      const double mean_cos = std::cos((genesis_lat + 0.5 * cyclone_poleward_deg * a) * degree);
-      const double east_deg = cyclone_speed_m_s * 3.6 * age / (earth_radius_km * mean_cos) / degree;
-      const double longitude = 360.0 * u.z + east_deg;
+      const double genesis_lon =
+          p.surface ? genesis_longitude(*p.surface, hemisphere == 0 ? genesis_lat : -genesis_lat, u.z,
+                                        [&](int k) { return slot_random(seed, named, hemisphere, 0x2C1B3C6Du + k); })
+                    : 360.0 * u.z;
+      const TrackPoint c = track_point(genesis_lat, genesis_lon, age);
       const double radius_km = (900.0 + 600.0 * v.x) * (0.7 + 0.3 * cyclone_strength(a));
-      w.cyclones[w.cyclone_count++] = make_cyclone(hemisphere == 0 ? latitude : -latitude, longitude, radius_km, a);
+      w.cyclones[w.cyclone_count++] =
+          make_cyclone(hemisphere == 0 ? c.latitude : -c.latitude, c.longitude, radius_km, a);
     }
   }
   return w;

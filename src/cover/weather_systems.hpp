@@ -26,10 +26,18 @@ constexpr double cyclone_poleward_deg = 10.0;
 float cyclone_strength(double age_fraction);
 float cyclone_wrap(double age_fraction);
 
+// The ocean's share (1 - the mask's land fraction) along the mature life (ages 0.2-0.67 of the
+// lifetime, strength 1) of a cyclone born at (genesis_lat, genesis_lon), degrees (negative
+// latitudes: the south), sampled at its centre and 5 degrees around it.
+double mature_ocean_share(const SurfaceMask& mask, double genesis_lat, double genesis_lon);
+
 // The systems at `hours` since the flow's epoch (cover/moving_flow.hpp): p.cyclones per
 // hemisphere on average (a Poisson-like schedule: genesis every lifetime / p.cyclones hours with
 // a seeded jitter), each from its genesis place in the storm track (38 +- 6 degrees, moved with
-// --month as the profile's storm tracks) drifting east and poleward. With --loop the schedule
+// --month as the profile's storm tracks) drifting east and poleward. With a land mask
+// (p.surface) a genesis longitude is kept with the probability mature_ocean_share, so that the
+// cyclones grow and mature over the oceans' storm tracks (Hoskins and Hodges 2002) and not over
+// the continents' interiors; without one, any longitude. With --loop the schedule
 // repeats after the loop, so the cover does. At most n + 1 are alive per hemisphere (a slot's
 // jitter is below its spacing), so the table's 15 fill MAX_CYCLONES at most.
 glsl::WeatherSystems weather_systems(const CoverParameters& p, double hours);
