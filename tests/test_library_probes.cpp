@@ -37,6 +37,7 @@ namespace nephele::glsl {
 #include "probes/curl_flow.glsl"
 #include "probes/curl_spline.glsl"
 #include "probes/equirect_mapping.glsl"
+#include "probes/ground_relief.glsl"
 #include "probes/hash.glsl"
 #include "probes/implicit_field.glsl"
 #include "probes/land_cover.glsl"
@@ -274,7 +275,36 @@ TEST_CASE("sun_glint.glsl on the GPU agrees with the CPU", "[probe]") {
     cases.push_back({arguments(PROBE_SUN_GLINT, vec4(wind, cos_i, tan2, 0), vec4(up, 0), vec4(view, 0), vec4(sun, 0)),
                      8 * kTranscendental * largest});
   }
+  for (int k = 0; k < 32; ++k) {
+    // Points on the Earth's sphere; the wind is a length of Perlin sums of values below 2.
+    // Perlin's lattice coordinates reach 64 (6.4e6 m / 1e5 m): their fractions keep 2^-17
+    // relative, and the fade and gradients move the octaves by a few times that. Relative to
+    // the mean wind times the normalisation 1 / (0.31 x 1.25) = 2.6: 64 ulps of 64 and the sqrt.
+    const vec3 p = 6.371e6f * normalize(vec3(r.v(-1.0f, 1.0f)));
+    const float mean = r(2.0f, 12.0f);
+    cases.push_back({arguments(PROBE_SEA_WIND, vec4(mean, 0, 0, 0), vec4(p, 0)), 64 * 64 * kUlp * 2.6f * mean});
+  }
   compare("sun_glint", probe_sun_glint, cases);
+}
+
+TEST_CASE("ground_relief.glsl on the GPU agrees with the CPU", "[probe]") {
+  Random r(23);
+  std::vector<Case> cases;
+  for (int k = 0; k < 64; ++k) {
+    // Slopes up to 0.5 (27 degrees, steeper than any 9 km cell of ETOPO5), verticals anywhere but
+    // within 1e-3 of the poles (the pole's own case below), suns anywhere.
+    const vec3 up = normalize(vec3(r.v(-1.0f, 1.0f)));
+    if (std::abs(up.z) > 0.999f) continue;
+    const vec3 sun = normalize(vec3(r.v(-1.0f, 1.0f)));
+    // A normalisation, a cross product and a dot of unit-sized values: arithmetic of a few ulps,
+    // with normalize's square root.
+    cases.push_back(
+        {arguments(PROBE_GROUND_RELIEF, vec4(r(-0.5f, 0.5f), r(-0.5f, 0.5f), 0, 0), vec4(up, 0), vec4(sun, 0)),
+         8 * kTranscendental});
+  }
+  cases.push_back({arguments(PROBE_GROUND_RELIEF, vec4(0.3f, -0.2f, 0, 0), vec4(0, 0, 1, 0), vec4(0.6f, 0, 0.8f, 0)),
+                   8 * kTranscendental});
+  compare("ground_relief", probe_ground_relief, cases);
 }
 
 TEST_CASE("slab_scattering.glsl on the GPU agrees with the CPU", "[probe]") {

@@ -789,6 +789,43 @@ TEST_CASE("orbit: over an all-water planet the sun glints where the sea mirrors 
   CHECK(luminance(pixel(dry, bx, by)) < 0.5 * brightest);
 }
 
+TEST_CASE("orbit: ground sloping towards a low sun is brighter and away from it darker, by the sines of the incidence",
+          "[orbit][relief]") {
+  test::test_context();
+  // Straight down 200 km above a point 60 degrees from the subsolar point (the sun 30 degrees
+  // high), over clear grey ground whose slope everywhere faces the sun, is flat, or faces away.
+  const glm::dvec3 sun = render::sun_direction_ecef(june_morning);
+  const double sun_lat = std::asin(sun.z) / degree, sun_lon = std::atan2(sun.y, sun.x) / degree;
+  const double lat = sun_lat - 60, lon = sun_lon;
+  const glm::dvec3 up(std::cos(lat * degree) * std::cos(lon * degree), std::cos(lat * degree) * std::sin(lon * degree),
+                      std::sin(lat * degree));
+  const glm::dvec3 east = glm::normalize(glm::dvec3(-up.y, up.x, 0.0)), north = glm::cross(up, east);
+  const double elevation = std::asin(glm::dot(up, sun));
+  const glm::dvec2 towards_sun = glm::normalize(glm::dvec2(glm::dot(sun, east), glm::dot(sun, north)));
+  const double tan_beta = 0.2, beta = std::atan(tan_beta);
+  const auto camera = nadir_camera(lat, lon, 2.0e5, 17, 9);  // odd size: the centre pixel is the nadir
+  auto nadir = [&](double rise_towards_sun) {
+    render::PlanetImages planet = uniform_planet(0.3);
+    const glm::dvec2 slopes = rise_towards_sun * tan_beta * towards_sun;
+    planet.relief = {1, 1, 2, {float(slopes.x), float(slopes.y)}};
+    return luminance(pixel(render::render_orbit(camera, june_morning, planet, clear_cover()), 8, 4));
+  };
+  const double facing = nadir(-1.0), flat = nadir(0.0), away = nadir(1.0);
+  // The relief changes only the direct sunlight's incidence, sin(e) on flat ground: sin(e + beta)
+  // facing the sun, sin(e - beta) facing away. Albedo, sunlight, air and the sky's light are the
+  // same in the three renders and cancel in the ratio of the differences. Tolerance: the slopes'
+  // half floats (0.2 to 1e-4) move the cosines by 1e-4 against differences of 0.16 and 0.18:
+  // 1e-3 of the ratio; 0.01 covers it ten times over. A slope's sign or axis swapped gives a
+  // ratio of 1.12 or none.
+  const double expected =
+      (std::sin(elevation + beta) - std::sin(elevation)) / (std::sin(elevation) - std::sin(elevation - beta));
+  INFO("sun " << elevation / degree << " deg high; luminance facing " << facing << ", flat " << flat << ", away "
+              << away << "; expected ratio " << expected);
+  REQUIRE(std::abs(elevation / degree - 30.0) < 0.5);
+  REQUIRE(flat - away > 0.0);
+  CHECK((facing - flat) / (flat - away) == Approx(expected).epsilon(0.01));
+}
+
 namespace {
 
 // A cover of `size` texels a face whose coverage is a smooth field with cloud-like edges:

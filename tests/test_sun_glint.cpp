@@ -3,6 +3,7 @@
 // peak at the mirror direction and the reflectance it sums to.
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <random>
 
 #include "shader_math/shader_math.hpp"
 
@@ -96,4 +97,47 @@ TEST_CASE("the glint BRDF is reciprocal, peaks in the mirror direction and refle
           glsl::sun_glint_brdf(up, direction(z, (j + 0.5) * da), overhead, wind) * std::cos(z) * std::sin(z) * dz * da;
   }
   CHECK(reflectance == Approx(0.02048).epsilon(5e-3));
+}
+
+TEST_CASE("the sea's wind varies from place to place about its mean, calm in places, as a Rayleigh speed",
+          "[fast][sun_glint]") {
+  // Points over the whole sphere: the first octave's 400 km cells number about 3200 on the
+  // Earth, so the sample's mean wanders by the speed's deviation (0.52 of the mean for Rayleigh)
+  // over sqrt(3200): 1 %.
+  std::mt19937 random(5);
+  std::normal_distribution<double> normal;
+  const double mean_wind = 7.0, radius = 6.371e6;
+  const int n = 20000;
+  double sum = 0;
+  int calm = 0;
+  for (int k = 0; k < n; ++k) {
+    const glm::dvec3 p = radius * glm::normalize(glm::dvec3(normal(random), normal(random), normal(random)));
+    const double u = glsl::sea_wind_speed(glsl::vec3(p), float(mean_wind));
+    REQUIRE(u >= 0.0);
+    sum += u;
+    calm += u < 0.5 * mean_wind;
+  }
+  const double mean = sum / n, calm_share = double(calm) / n;
+  INFO("mean " << mean << " m/s, share below half the mean " << calm_share);
+  // The components' deviation is Perlin's analytic one, so E[u^2] = 4 / pi mean^2 holds; the mean
+  // itself is Rayleigh's (the asked mean) for Gaussian components and at most sqrt(E[u^2]) =
+  // 1.128 times it (Jensen) for any others: Perlin sums are lighter-tailed than Gaussian, so
+  // between the two, with the sample's 1 % either side.
+  CHECK(mean > 0.97 * mean_wind);
+  CHECK(mean < 1.128 * 1.01 * mean_wind);
+  // Rayleigh: P(u < m / 2) = 1 - exp(-pi / 16) = 0.178; calm patches exist but are a minority.
+  CHECK(calm_share > 0.05);
+  CHECK(calm_share < 0.3);
+}
+
+TEST_CASE("the sea's wind changes little over a kilometre, a hundredth of its shortest wavelength",
+          "[fast][sun_glint]") {
+  const glm::dvec3 a = 6.371e6 * glm::normalize(glm::dvec3(0.3, -0.4, 0.8));
+  const glm::dvec3 east = glm::normalize(glm::cross(glm::dvec3(0, 0, 1), a));
+  const float u0 = glsl::sea_wind_speed(glsl::vec3(a), 7.0f);
+  // 1 km on, a hundredth of the 100 km octave: the speed moves by at most its gradient times 1 km.
+  // Each octave's noise changes by at most about 2 PERLIN_BOUND per lattice cell; summed with the
+  // normalisation 7 / (0.31 x 1.25) = 18 m/s per unit, the bound is a few tenths of a m/s per km.
+  const float u1 = glsl::sea_wind_speed(glsl::vec3(a + 1000.0 * east), 7.0f);
+  CHECK(std::abs(u1 - u0) < 0.5f);
 }

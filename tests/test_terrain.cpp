@@ -10,7 +10,9 @@
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <random>
+#include <vector>
 
 #include "core/error.hpp"
 #include "gl_support.hpp"
@@ -168,6 +170,38 @@ TEST_CASE("ETOPO5 reads Bern's plateau, the Bernese Alps and the Atlantic where 
   CHECK(r.at(46.0, -0.01).has_value());
   const regional::ElevationRaster ocean = io::read_etopo5(io::etopo5_default_path, -1.0, 1.0);
   CHECK(*ocean.at(0.0, -30.0) < -2000.0);
+}
+
+TEST_CASE("a raster's heights a row at a time are at()'s to the bit, inside and outside the lattice",
+          "[fast][terrain]") {
+  // A lattice of 5 x 7 samples from 10 S, 20 W, 2 degrees apart (up to 2 N, 8 W), heights from a
+  // hash; points inside, on its last row and column, beyond it and wrapped by 360 degrees.
+  regional::ElevationRaster raster;
+  raster.south_deg = -10;
+  raster.west_deg = -20;
+  raster.step_deg = 2;
+  raster.rows = 5;
+  raster.columns = 7;
+  for (int k = 0; k < raster.rows * raster.columns; ++k) raster.heights.push_back(float((k * 7919) % 101) - 30.0f);
+  std::mt19937 random(3);
+  std::uniform_real_distribution<double> lon(-25.0, -5.0), lat(-12.0, 4.0);
+  std::vector<double> longitudes{-20.0, -8.0, 340.0, -8.0001, -20.0001};
+  for (int k = 0; k < 40; ++k) longitudes.push_back(lon(random));
+  const regional::ElevationRaster::Columns columns = raster.columns_at(longitudes);
+  std::vector<double> row(longitudes.size());
+  std::vector<double> latitudes{-10.0, 2.0, 2.0001, -10.0001};
+  for (int k = 0; k < 20; ++k) latitudes.push_back(lat(random));
+  int inside = 0;
+  for (double latitude : latitudes) {
+    raster.row_at(latitude, columns, -999.0, row.data());
+    for (size_t k = 0; k < longitudes.size(); ++k) {
+      INFO("latitude " << latitude << " longitude " << longitudes[k]);
+      const std::optional<double> expected = raster.at(latitude, longitudes[k]);
+      CHECK(row[k] == expected.value_or(-999.0));
+      inside += expected.has_value();
+    }
+  }
+  CHECK(inside > 100);  // most points lie inside: the comparison is not of -999 alone
 }
 
 TEST_CASE("an elevation file that is not ETOPO5 is bad input naming the option and the file", "[fast][terrain]") {

@@ -8,8 +8,38 @@
 #ifndef NEPHELE_SUN_GLINT_GLSL
 #define NEPHELE_SUN_GLINT_GLSL
 #include "prelude.glsl"
+#include "perlin.glsl"
 
 const float WATER_REFRACTIVE_INDEX = 1.334f;
+
+// The wind over the sea varies from place to place, and the glint with it: calm water mirrors
+// the sun in a small bright spot, a rough sea spreads it wide and dim. The wind field here is a
+// vector of two independent fBm of Perlin noise (three octaves, 400 to 100 km, the amplitude
+// falling by 2^(-5/6) an octave: the mesoscale wind's k^(-5/3) spectrum, Nastrom and Gage 1985),
+// whose length is the speed. For Gaussian components of zero mean the speed is Rayleigh
+// distributed, the Weibull distribution of shape 2 that sea-surface wind speeds roughly follow
+// (Monahan 2006); scaled so that its mean is the given mean wind.
+const int SEA_WIND_OCTAVES = 3;
+const float SEA_WIND_WAVELENGTH = 400000.0f;  // m, the first octave's
+const float SEA_WIND_GAIN = 0.56123f;         // 2^(-5/6)
+
+// The wind speed (m/s) over the sea at p (m from the planet's centre; points on one radius get
+// the same value), for a mean wind `mean_wind`.
+float sea_wind_speed(vec3 p, float mean_wind) {
+  vec2 wind = vec2(0.0f);
+  float amplitude = 1.0f, variance = 0.0f, wavelength = SEA_WIND_WAVELENGTH;
+  for (int k = 0; k < SEA_WIND_OCTAVES; ++k) {
+    vec3 q = p / wavelength;
+    wind += amplitude * vec2(perlin_noise(q, ivec3(0), uvec3(uint(k), 0x51a7u, 0x3e11u)),
+                             perlin_noise(q, ivec3(0), uvec3(uint(k), 0x51a7u, 0x9d2fu)));
+    variance += amplitude * amplitude;
+    amplitude *= SEA_WIND_GAIN;
+    wavelength *= 0.5f;
+  }
+  // Rayleigh: a Gaussian vector of component deviation sigma has mean length sigma sqrt(pi / 2).
+  float sigma = PERLIN_OCTAVE_SIGMA * sqrt(variance);
+  return mean_wind * length(wind) / (sigma * 1.2533141f);
+}
 
 // The mean square slope of the sea surface (both directions together) at wind speed `wind` m/s.
 float sea_slope_variance(float wind) { return 0.003f + 0.00512f * max(wind, 0.0f); }

@@ -22,11 +22,13 @@ layout(binding = 4) uniform sampler2D sky_table;      // the air's multiple scat
 layout(binding = 5) uniform sampler2D water_texture;  // equirect, fraction of open water (sun glint)
 layout(std430, binding = 6) readonly buffer Tiles { uvec2 tiles[]; };  // (column, row), tile units
 layout(binding = 7) uniform sampler2D transmittance_table;  // the air's transmittance to its top (atmosphere.glsl)
+layout(binding = 8) uniform sampler2D relief_texture;  // equirect, the ground's slopes (east, north), m/m
 
 #include "../lib/atmosphere.glsl"
 #include "../lib/cloud_properties.glsl"
 #include "../lib/cube_bspline.glsl"
 #include "../lib/equirect_mapping.glsl"
+#include "../lib/ground_relief.glsl"
 #include "../lib/hash.glsl"
 #include "../lib/slab_scattering.glsl"
 #include "../lib/sun_glint.glsl"
@@ -48,7 +50,7 @@ uniform float u_tan_half_fov;
 uniform float u_pixel_angle;   // radians per pixel
 uniform vec3 u_sun;            // unit direction towards the sun
 uniform float u_night_lights;  // radiance of a city-light texel of value 1
-uniform float u_sea_wind;      // wind over the sea, m/s (the glint's facet slopes)
+uniform float u_sea_wind;      // mean wind over the sea, m/s (the glint's facet slopes; sea_wind_speed)
 uniform float u_cover_texel;   // arc length of one cover texel on the ground, m
 uniform float u_cover_size;    // cover texels along a face edge
 uniform int u_cover_properties;  // 1: the cover map holds tau and cloud tops; 0: derived from the cover
@@ -57,6 +59,7 @@ uniform float u_tau_spread;
 uniform float u_cloud_detail;   // 0: the cover's texels as they are; 1: the sub-texel cloud (cloud_slab)
 uniform float u_cloud_tau_spread;  // deviation of ln tau inside a texel's cloud (subtexel_optical_thickness)
 uniform float u_day_texel;     // arc length of one day-texture texel, m
+uniform float u_relief_texel;  // and of one relief texel
 uniform int u_cloud_steps;
 uniform int u_shadow_steps;
 uniform int u_sky_steps;
@@ -349,8 +352,10 @@ void main() {
       // The steps repeat the branches' conditions: on llvmpipe only a loop's count skips work.
       int shadow_steps = hits_ground && mu > -0.02f ? u_shadow_steps : 0;
       float shadow = cloud_shadow(optical_depth_to_sun(g, shadow_steps, footprint));
+      // The sun's incidence on the relief's slopes (flat: max(mu, 0)), filtered as the day map.
+      vec2 slopes = textureLod(relief_texture, tex, max(log2(footprint / u_relief_texel), 0.0f)).rg;
       direct = solar_irradiance() * transmittance_from_table(transmittance_table, g + 1.0f * n, u_sun, u_radius) *
-               max(mu, 0.0f) * shadow;
+               relief_sun_cosine(n, slopes, u_sun) * shadow;
     }
     vec3 sky = PI_F * sky_ambient(n, u_sun);
     float night = 1.0f - smoothstep(-0.1f, 0.05f, mu);
@@ -358,7 +363,8 @@ void main() {
     // Sun glint: the sea's facets mirror the direct sunlight (already through air and cloud) into
     // the view, radiance = BRDF x irradiance on the horizontal.
     float water = textureLod(water_texture, tex, day_lod).r;
-    if (water > 0.0f && mu > 0.0f) background += water * sun_glint_brdf(n, -d, u_sun, u_sea_wind) * direct;
+    if (water > 0.0f && mu > 0.0f)
+      background += water * sun_glint_brdf(n, -d, u_sun, sea_wind_speed(g, u_sea_wind)) * direct;
   }
 
   vec3 radiance;

@@ -19,6 +19,7 @@ struct PlanetTextures {
   std::string day_source;             // the file, or "procedural"
   std::string night_source;           // the file, or "none"
   std::string water_source;           // ETOPO5's file, "procedural" or "none" (no sun glint)
+  std::string relief_source;          // ETOPO5's file or "none" (flat ground)
   std::vector<std::string> warnings;  // e.g. the default maps are missing: procedural fallback
 };
 
@@ -26,8 +27,9 @@ struct PlanetTextures {
 // missing a procedural ocean/land map with a warning. `night`: city lights, "" means the xplanet
 // map when `day` is also the default (else none). A named file that cannot be read throws
 // core::InputError naming `option`. 8-bit images are taken as sRGB, float images as linear.
-// With the default day map the water where the sun glints comes from ETOPO5 (ferret-datasets:
-// below sea level is water), a warning saying so when it is missing; a named day map gets none.
+// With the default day map the water where the sun glints and the ground's relief come from
+// ETOPO5 (ferret-datasets: below sea level is water), a warning saying so when it is missing; a
+// named day map gets neither.
 PlanetTextures read_planet_textures(const std::string& day, const std::string& night = "",
                                     const std::string& option = "--earth-texture");
 

@@ -153,6 +153,7 @@ json::Value orbit_sidecar(const render::RenderResult& result, const OrbitRecord&
   root.set("earth_texture", record.earth_texture);
   root.set("night_texture", record.night_texture);
   root.set("water_mask", record.water);
+  root.set("relief", record.relief);
   root.set("cover", record.cover);
   root.set("exposure", record.exposure);
   root.set("metering", record.metering);

@@ -35,6 +35,7 @@ struct OrbitRecord {
   std::string time;
   std::string earth_texture, night_texture, cover;  // where each came from
   std::string water = "none";                       // the sun glint's water mask: ETOPO5's file, "procedural" or "none"
+  std::string relief = "none";                      // the ground's relief: ETOPO5's file or "none"
   double exposure = 1;
   // How the exposure was chosen: "given" (--exposure) or "highlights" (render::highlight_exposure).
   std::string metering = "given";

@@ -22,19 +22,25 @@ cover::SurfaceMask etopo5_mask(const std::string& path, const std::string& field
   cover::SurfaceMask mask{cover::surface_bias_columns, cover::surface_bias_rows, {}, path};
   mask.land.resize(static_cast<size_t>(mask.columns) * mask.rows);
   const int samples = 6;
-  // 9.3 million bilinear samples: rows shared by the hardware threads (each writes its own).
+  // 9.3 million bilinear samples on a grid of 6 columns and rows per cell (each longitude's lattice
+  // cell found once): rows shared by the hardware threads (each writes its own).
+  std::vector<double> longitudes;
+  for (int i = 0; i < mask.columns; ++i)
+    for (int a = 0; a < samples; ++a) longitudes.push_back(-180.0 + (i + (a + 0.5) / samples) * 360.0 / mask.columns);
+  const regional::ElevationRaster::Columns columns = raster.columns_at(longitudes);
   core::parallel_rows(mask.rows, [&](int begin, int end) {
-    for (int j = begin; j < end; ++j)
-      for (int i = 0; i < mask.columns; ++i) {
-        int land = 0;
-        for (int b = 0; b < samples; ++b)
-          for (int a = 0; a < samples; ++a) {
-            const double latitude = 90.0 - (j + (b + 0.5) / samples) * 180.0 / mask.rows;
-            const double longitude = -180.0 + (i + (a + 0.5) / samples) * 360.0 / mask.columns;
-            land += raster.at(latitude, longitude).value_or(0.0) > 0.0;
-          }
-        mask.land[static_cast<size_t>(j) * mask.columns + i] = static_cast<float>(land) / (samples * samples);
+    std::vector<int> land(static_cast<size_t>(mask.columns));
+    std::vector<double> heights(longitudes.size());
+    for (int j = begin; j < end; ++j) {
+      std::fill(land.begin(), land.end(), 0);
+      for (int b = 0; b < samples; ++b) {
+        raster.row_at(90.0 - (j + (b + 0.5) / samples) * 180.0 / mask.rows, columns, 0.0, heights.data());
+        for (size_t k = 0; k < heights.size(); ++k) land[k / samples] += heights[k] > 0.0;
       }
+      for (int i = 0; i < mask.columns; ++i)
+        mask.land[static_cast<size_t>(j) * mask.columns + i] =
+            static_cast<float>(land[size_t(i)]) / (samples * samples);
+    }
   });
   return mask;
 }

@@ -30,6 +30,44 @@ std::optional<double> ElevationRaster::at(double latitude_deg, double longitude_
   return (1 - fv) * ((1 - fu) * h(r, c) + fu * h(r, c + 1)) + fv * ((1 - fu) * h(r + 1, c) + fu * h(r + 1, c + 1));
 }
 
+ElevationRaster::Columns ElevationRaster::columns_at(const std::vector<double>& longitudes_deg) const {
+  Columns out;
+  out.column.reserve(longitudes_deg.size());
+  out.u.reserve(longitudes_deg.size());
+  for (double longitude : longitudes_deg) {
+    // As cell() takes a longitude; the latitude is checked by row_at.
+    double u = std::fmod(longitude - west_deg, 360.0);
+    if (u < 0) u += 360.0;
+    u /= step_deg;
+    const bool inside = u >= 0 && u <= columns - 1;
+    out.column.push_back(inside ? std::min(static_cast<int>(u), columns - 2) : -1);
+    out.u.push_back(u);
+  }
+  return out;
+}
+
+void ElevationRaster::row_at(double latitude_deg, const Columns& columns_of, double outside, double* out) const {
+  const size_t n = columns_of.column.size();
+  const double v = (latitude_deg - south_deg) / step_deg;
+  if (v < 0 || v > rows - 1) {
+    std::fill(out, out + n, outside);
+    return;
+  }
+  const int r = std::min(static_cast<int>(v), rows - 2);
+  const double fv = v - r;
+  for (size_t k = 0; k < n; ++k) {
+    const int c = columns_of.column[k];
+    if (c < 0) {
+      out[k] = outside;
+      continue;
+    }
+    // at()'s expression, term by term, so that the values agree to the bit.
+    const double fu = columns_of.u[k] - c;
+    auto h = [&](int rr, int cc) { return double(sample(rr, cc)); };
+    out[k] = (1 - fv) * ((1 - fu) * h(r, c) + fu * h(r, c + 1)) + fv * ((1 - fu) * h(r + 1, c) + fu * h(r + 1, c + 1));
+  }
+}
+
 std::pair<double, double> TangentPlane::of(double latitude_deg, double longitude_deg, double ellipsoid_height_m) const {
   double x, y, z;
   frame_.Forward(latitude_deg, longitude_deg, ellipsoid_height_m, x, y, z);

@@ -33,6 +33,16 @@ struct ElevationRaster {
   };
   std::optional<Cell> cell(double latitude_deg, double longitude_deg) const;
   float sample(int row, int column) const { return heights[static_cast<size_t>(row) * columns + column]; }
+  // The same heights as at() for a grid of points whose rows share their latitude and whose
+  // columns share their longitude: each longitude's cell found once (columns_at), then a row at
+  // a time (row_at), `outside` where at() gives nullopt. A global mask's millions of samples
+  // take a tenth of the time of as many at() calls.
+  struct Columns {
+    std::vector<int> column;  // the cell's western sample, -1 outside the lattice
+    std::vector<double> u;    // the lattice coordinate (columns from west_deg)
+  };
+  Columns columns_at(const std::vector<double>& longitudes_deg) const;
+  void row_at(double latitude_deg, const Columns& columns, double outside, double* out) const;
 };
 
 // The renderer's horizontal coordinate (m east and north, docs/terrain.md, Frame) of geographic

@@ -136,6 +136,19 @@ GLuint fraction_texture(const core::ImageData& image) {
                              });
 }
 
+// The ground's slopes (east, north; ground_relief.glsl) as a two-channel half-float texture: slopes
+// need three digits (ETOPO5's steepest 9 km cells rise by about 0.3 a metre).
+GLuint relief_texture(const core::ImageData& image) {
+  std::vector<float> slopes(static_cast<size_t>(image.width) * image.height * 2);
+  for (size_t k = 0; k < slopes.size() / 2; ++k)
+    for (int c = 0; c < 2; ++c) slopes[2 * k + c] = image.pixels[k * image.channels + std::min(c, image.channels - 1)];
+  return equirect_texture_of(image.width, image.height, 2, slopes, GL_RG16F,
+                             [](GLuint id, int level, int width, int height, const std::vector<float>& texels) {
+                               glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+                               glTextureSubImage2D(id, level, 0, 0, width, height, GL_RG, GL_FLOAT, texels.data());
+                             });
+}
+
 // The texels as the orbit shader reads them: (cover, tau, cloud top km, 0). Clear texels take the
 // unorganised cloud's top (TOP_BOUNDARY_LAYER_KM), so that the filtered tops at a cloud's edge blend
 // towards a cloud's height and not towards the ground. Without the cover's own tau and tops the
@@ -284,15 +297,15 @@ double sunlit_white_luminance(const OrbitCamera& camera, double unix_seconds, do
 
 struct OrbitRenderer::Gl {
   gpu::ComputeProgram program{"render/orbit.comp"};
-  GLuint day = 0, night = 0, water = 0, cover = 0;
+  GLuint day = 0, night = 0, water = 0, relief = 0, cover = 0;
   GLuint sky_table = 0;      // the air's multiple scattering for the planet's radius
   GLuint transmittance = 0;  // and its transmittance
   double sky_table_radius = 0;
   GLuint tiles = 0;  // the frame's tiles to draw (orbit_tiles.hpp), uvec2 each
-  int day_width = 1, cover_size = 1;
+  int day_width = 1, relief_width = 1, cover_size = 1;
   bool cover_properties = false;  // the cover has its own tau and cloud tops
   ~Gl() {
-    for (GLuint id : {day, night, water, cover, sky_table, transmittance})
+    for (GLuint id : {day, night, water, relief, cover, sky_table, transmittance})
       if (id != 0) glDeleteTextures(1, &id);
     if (tiles != 0) glDeleteBuffers(1, &tiles);
   }
@@ -317,6 +330,12 @@ OrbitRenderer::OrbitRenderer(const PlanetImages& planet, const CoverCube& cover,
       water.pixels.size() != static_cast<size_t>(water.width) * water.height * water.channels)
     water = {1, 1, 1, {0.0f}};
   gl_->water = fraction_texture(water);
+  core::ImageData relief = planet.relief;
+  if (relief.width < 1 || relief.height < 1 || relief.channels < 2 ||
+      relief.pixels.size() != static_cast<size_t>(relief.width) * relief.height * relief.channels)
+    relief = {1, 1, 2, {0.0f, 0.0f}};  // flat
+  gl_->relief = relief_texture(relief);
+  gl_->relief_width = relief.width;
   gl_->cover = cover_texture(cover);
   gl_->cover_size = cover.size;
   gl_->cover_properties = !cover.optical_thickness.empty();
@@ -413,6 +432,7 @@ double OrbitRenderer::render_tiles(const OrbitCamera& camera, double unix_second
     p.set("u_cloud_detail", static_cast<float>(s.cloud_detail));
     p.set("u_cloud_tau_spread", static_cast<float>(s.cloud_tau_spread));
     p.set("u_day_texel", static_cast<float>(2 * M_PI * R / gl_->day_width));
+    p.set("u_relief_texel", static_cast<float>(2 * M_PI * R / gl_->relief_width));
     p.set("u_cloud_steps", s.cloud_steps);
     p.set("u_shadow_steps", s.shadow_steps);
     p.set("u_sky_steps", s.sky_steps);
@@ -422,6 +442,7 @@ double OrbitRenderer::render_tiles(const OrbitCamera& camera, double unix_second
     glBindTextureUnit(orbit::day_texture, gl_->day);
     glBindTextureUnit(orbit::night_texture, gl_->night);
     glBindTextureUnit(orbit::water_texture, gl_->water);
+    glBindTextureUnit(orbit::relief_texture, gl_->relief);
     glBindTextureUnit(orbit::cover_map, gl_->cover);
     glBindTextureUnit(orbit::sky_table, gl_->sky_table);
     glBindTextureUnit(orbit::transmittance_table, gl_->transmittance);

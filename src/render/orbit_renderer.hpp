@@ -45,8 +45,9 @@ struct OrbitSettings {
   double cloud_base_m = 300;
   double cloud_thickness_m = 15700;
   double night_lights = 0.08;  // radiance (W m^-2 sr^-1 nm^-1) of a city-light texel of value 1
-  // Wind over the sea (m/s) for the glint's facet slopes: 7 m/s, about the global ocean mean of
-  // the 10 m wind (scatterometer climatologies: 7 to 7.5 m/s; docs/orbit_view.md).
+  // The mean wind over the sea (m/s) for the glint's facet slopes: 7 m/s, about the global ocean
+  // mean of the 10 m wind (scatterometer climatologies: 7 to 7.5 m/s; docs/orbit_view.md). The
+  // wind varies about it from place to place (sun_glint.glsl's sea_wind_speed).
   double sea_wind_ms = 7.0;
   // The sub-texel cloud (fractal edges and top relief below the cover's texels, cloud_properties.glsl's
   // subtexel_cloud): 1 draws it, 0 the cover's texels as smooth slabs, between a mix.
@@ -66,6 +67,10 @@ struct PlanetImages {
   // The fraction of each pixel that is open water (one channel, the same equirect layout), where
   // the sun glints (shaders/lib/sun_glint.glsl); empty: no glint.
   core::ImageData water;
+  // The ground's slopes (two channels: metres of rise per metre towards the east and the north,
+  // the same equirect layout), which turn the ground towards or away from the sun
+  // (shaders/lib/ground_relief.glsl); empty: flat ground.
+  core::ImageData relief;
 };
 
 // The global cover as a cube map: faces +X, -X, +Y, -Y, +Z, -Z, size x size floats each, rows

@@ -17,6 +17,7 @@ namespace nephele::glsl {
 #include "lib/equirect_mapping.glsl"
 #include "lib/hash.glsl"
 #include "lib/implicit_field.glsl"
+#include "lib/ground_relief.glsl"
 #include "lib/land_cover.glsl"
 #include "lib/latitude_bands.glsl"
 #include "lib/model_march.glsl"

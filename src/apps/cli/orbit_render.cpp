@@ -157,6 +157,7 @@ int run_orbit_render(const OrbitOptions& orbit) {
   record.earth_texture = textures.day_source;
   record.night_texture = textures.night_source;
   record.water = textures.water_source;
+  record.relief = textures.relief_source;
   record.cover = cover_source;
   record.exposure =
       orbit.exposure
