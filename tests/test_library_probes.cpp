@@ -569,6 +569,12 @@ TEST_CASE("weather_systems.glsl on the GPU agrees with the CPU", "[probe]") {
       cases.push_back({arguments(PROBE_STREETS, vec4(r(0.0f, 1.0f), seed, 0, r(1e-4f, 4e-3f)), vec4(q, 0), vec4(0.0f),
                                  vec4(wind, 0)),
                        std::max(e, rows)});
+      // The pearls: Perlin noise at lattice coordinates below 531 (ulp 2^-14), whose fractions and
+      // fades move its value by a few gradients (below 2) of 8 such ulps: 1e-3, through a
+      // smoothstep of slope 1.5 / 0.1 = 15. The clouds: the rows' error plus the pearls'.
+      const float pearls = 15.0f * 16.0f / 16384.0f;
+      cases.push_back({arguments(PROBE_STREET_PEARLS, vec4(0, seed, 0, 0), vec4(q, 0), vec4(0.0f), vec4(wind, 0)),
+                       pearls + std::max(e, rows)});
     }
     // The distance behind the cold front (a normalize and a dot product on values below 4) and the
     // streets' share of it (a smoothstep of slope 3 per radius).

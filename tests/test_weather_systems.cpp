@@ -655,6 +655,64 @@ TEST_CASE("cloud streets are long rows along the wind, 12 km apart, that end and
   CHECK(parts.inside < 200);
 }
 
+TEST_CASE("a street is a string of separate clouds, placed independently on neighbouring rows", "[fast][systems]") {
+  // The same 400 km patch at 60 N, wind from the west; a cloud where street_clouds is above 1/2.
+  const int n = 800;
+  const float half = 200.0f / 6371.0f;
+  const double pixel_km = 400.0 / n, spacing_km = 6371.0 / glsl::STREETS;
+  const vec3 centre(std::cos(1.047f), 0.0f, std::sin(1.047f));
+  std::vector<bool> clouds;
+  for (const vec3& p : patch(centre, half, n)) {
+    const vec3 east = glm::normalize(glm::cross(vec3(0.0f, 0.0f, 1.0f), p));
+    clouds.push_back(glsl::street_clouds(p, glm::cross(p, east), 31u) > 0.5f);
+  }
+  const std::vector<bool> rows = street_patch(centre, half, n, 31u);
+  // Along the wind (rows of the patch), the runs of cloud: each pearl's length. Perlin noise is 0
+  // at every lattice point and changes sign about once a lattice spacing (12 km) along a line:
+  // runs of a third to 4/3 of it on average. The rows alone run for tens of km.
+  double length = 0, row_length = 0;
+  int runs = 0, row_runs = 0;
+  for (int j = 0; j < n; j += 8)
+    for (int i = 0; i < n; ++i) {
+      const size_t k = size_t(j) * n + i;
+      if (clouds[k]) length += pixel_km;
+      if (clouds[k] && (i == 0 || !clouds[k - 1])) ++runs;
+      if (rows[k]) row_length += pixel_km;
+      if (rows[k] && (i == 0 || !rows[k - 1])) ++row_runs;
+    }
+  const double pearl_km = length / runs, row_km = row_length / row_runs;
+  INFO("mean cloud " << pearl_km << " km along the wind, the rows' runs " << row_km << " km");
+  CHECK(pearl_km > spacing_km / 3);
+  CHECK(pearl_km < 4 * spacing_km / 3);
+  CHECK(row_km > 4.0 * pearl_km);
+  // Many separate clouds: each row of the patch (33 across it, 100 km long on average) broken into
+  // pearls, against the rows' own parts.
+  const auto parts = components(clouds, n);
+  const auto row_parts = components(rows, n);
+  INFO(parts.sizes.size() << " clouds in the patch against " << row_parts.sizes.size() << " rows");
+  CHECK(parts.sizes.size() > 3 * row_parts.sizes.size());
+  // Of the pairs of points `shift` pixels apart across the wind with a cloud at either end, the
+  // share with a cloud at both.
+  const auto both_cloudy = [&](int shift) {
+    double both = 0, either = 0;
+    for (int j = 0; j + shift < n; ++j)
+      for (int i = 0; i < n; ++i) {
+        const bool a = clouds[size_t(j) * n + i], b = clouds[size_t(j + shift) * n + i];
+        if (a || b) both += a && b, ++either;
+      }
+    return both / either;
+  };
+  // Still in rows: half a spacing off a row's crest is between rows, so rarely both.
+  const double half_spacing = both_cloudy(int(std::lround(spacing_km / 2 / pixel_km)));
+  // A whole spacing across, from one row's clouds to the next row's: pearls aligned across the
+  // rows (a lattice) would put a cloud at both ends nearly always; placed independently, with
+  // a share q of each crest cloudy, q^2 / (2 q - q^2) of such pairs, 1/3 for q = 1/2.
+  const double spacing = both_cloudy(int(std::lround(spacing_km / pixel_km)));
+  INFO("both cloudy: " << half_spacing << " half a spacing apart, " << spacing << " a spacing apart");
+  CHECK(half_spacing < 0.1);
+  CHECK(spacing < 0.5);
+}
+
 TEST_CASE("the streets' mean over the sphere is the constant their modulation subtracts", "[fast][systems]") {
   std::mt19937 rng(7);
   std::normal_distribution<float> g;
@@ -663,7 +721,7 @@ TEST_CASE("the streets' mean over the sphere is the constant their modulation su
   for (int k = 0; k < n; ++k) {
     const vec3 p = glm::normalize(vec3(g(rng), g(rng), g(rng)));
     const vec3 across = glm::normalize(glm::cross(p, vec3(g(rng), g(rng), g(rng))));
-    sum += glsl::street_rows(p, across, 3u);
+    sum += glsl::street_clouds(p, across, 3u);
   }
   // The standard error: a spread below 0.5 over sqrt(n), 0.0016.
   CHECK(sum / n == Approx(glsl::STREETS_MEAN).margin(0.005));
@@ -671,8 +729,9 @@ TEST_CASE("the streets' mean over the sphere is the constant their modulation su
   const vec3 p = glm::normalize(vec3(0.3f, 0.4f, 0.8f));
   CHECK(glsl::street_modulation(p, vec3(0.0f), 1.0f, 3u, 1e-4f) == 0.0f);
   CHECK(glsl::street_modulation(p, vec3(0.0f, 1.0f, 0.0f), 0.0f, 3u, 1e-4f) == 0.0f);
+  // The clouds lie in [0, 1] about their mean 1/4.
   CHECK(std::abs(glsl::street_modulation(p, vec3(0.0f, 1.0f, 0.0f), 1.0f, 3u, 1e-4f)) <=
-        0.5f * glsl::STREET_CONTRAST + 1e-6f);
+        0.75f * glsl::STREET_CONTRAST + 1e-6f);
   // Unresolved (texels of 2 / 2048 radians: 2.5 texels a row is 2655 per face): nothing.
   CHECK(glsl::street_modulation(p, vec3(0.0f, 1.0f, 0.0f), 1.0f, 3u, 2.0f / 2048.0f) == 0.0f);
 }

@@ -215,6 +215,7 @@ const uint CLOSED_CELLS_LAYER = 17u;
 const uint OPEN_CELLS_LAYER = 18u;
 const uint DECK_PATCHES_LAYER = 19u;
 const uint STREETS_LAYER = 22u;  // the streets' phases (after the pockets' 20 and 21)
+const uint STREET_PEARLS_LAYER = 23u;  // the clouds along them
 // The patterns' means over the sphere (tests/test_weather_systems.cpp measures them), which the
 // modulation subtracts so that the cells move cloud within a region rather than add it.
 const float CLOSED_CELLS_MEAN = 0.77f;
@@ -350,8 +351,17 @@ float cold_sectors(vec3 p, IN(WeatherSystems) systems) { return cold_air(p, syst
 const float STREETS = 531.0f;
 // Phase anchors per radius (about 100 km apart): the streets' length before two merge or one ends.
 const float STREET_ANCHORS = 64.0f;
-// street_rows' mean over any region (its phase is uniform, its profile odd about 0.5).
-const float STREETS_MEAN = 0.5f;
+// A street is not a continuous band but a row of separate cumulus, "pearls on a string", each
+// over a thermal where the rolls' updrafts converge, spaced along the row at about the rows'
+// own spacing (Etling and Brown 1993; Atkinson and Zhang 1996, "Mesoscale shallow convection
+// in the atmosphere", Rev. Geophys. 34). Here the row is cut by the positive lobes of Perlin
+// noise of a lattice as fine as the rows (street_pearls): clouds 5-10 km long along the row
+// with gaps between them, placed independently on neighbouring rows.
+const float STREET_PEARLS = STREETS;
+// street_clouds' mean over any region: the rows' 1/2 (their phase is uniform, their profile odd
+// about 1/2) times the pearls' 1/2 (Perlin noise is symmetric about 0, their profile odd about
+// 1/2), the two independent.
+const float STREETS_MEAN = 0.25f;
 // The modulation's step: as the closed cells', cloud from between the rows onto them.
 const float STREET_CONTRAST = 0.3f;
 
@@ -385,6 +395,13 @@ float street_rows(vec3 p, vec3 across, uint seed) {
   float wave = magnitude > 1.0e-6f ? sum.x / magnitude : 0.0f;
   return smoothstep(-0.6f, 0.6f, wave);
 }
+// The pearls: 1 in the positive lobes of the noise, 0 in the negative, with edges a third of the
+// noise's deviation (PERLIN_OCTAVE_SIGMA, 0.27) wide.
+float street_pearls(vec3 p, uint seed) {
+  return smoothstep(-0.05f, 0.05f, perlin_noise(p * STREET_PEARLS, ivec3(0), noise_key(seed, STREET_PEARLS_LAYER)));
+}
+// The streets' clouds: 1 on a pearl of a row, 0 between rows and between pearls.
+float street_clouds(vec3 p, vec3 across, uint seed) { return street_rows(p, across, seed) * street_pearls(p, seed); }
 
 // The streets' part of the density's modulation (with_cells' m) at p: `wind` the flow's velocity
 // there, `weight` the cold air's share in streets (cold_air's x times y) times their strength,
@@ -394,7 +411,7 @@ float street_modulation(vec3 p, vec3 wind, float weight, uint seed, float texel_
   vec3 along = wind - dot(wind, p) * p;
   float speed = length(along);
   if (w <= 0.0f || speed < 1.0e-6f) return 0.0f;
-  return STREET_CONTRAST * w * (street_rows(p, cross(p, along) / speed, seed) - STREETS_MEAN);
+  return STREET_CONTRAST * w * (street_clouds(p, cross(p, along) / speed, seed) - STREETS_MEAN);
 }
 
 // Where a deck of strength d is (its fringe from 0.1, whole from 0.3).

@@ -19,6 +19,7 @@ const int PROBE_BELTS_SURFACE = 12;   // belts_over_surface(x[1].xyz, a)
 const int PROBE_STREETS = 13;         // street_phasor(p, across, uint(b)), street_rows, street_modulation(p, x[3].xyz,
                                       // a, uint(b), c); across the unit tangent across the wind x[3].xyz
 const int PROBE_COLD_FRONT = 14;      // behind_cold_front(vec2(a, c)), street_share(vec2(a, c))
+const int PROBE_STREET_PEARLS = 15;   // street_pearls(p, uint(b)), street_clouds(p, across, uint(b)); across as PROBE_STREETS
 #ifndef __cplusplus
 #include "../lib/weather_systems.glsl"
 #endif
@@ -62,6 +63,12 @@ vec4 probe_weather_systems(mat4 x) {
     vec3 across = cross(p, along) / length(along);
     return vec4(street_phasor(p, across, seed), street_rows(p, across, seed),
                 street_modulation(p, wind, x[0].y, seed, x[0].w));
+  }
+  if (f == PROBE_STREET_PEARLS) {
+    vec3 wind = vec3(x[3]);
+    vec3 along = wind - dot(wind, p) * p;
+    vec3 across = cross(p, along) / length(along);
+    return vec4(street_pearls(p, seed), street_clouds(p, across, seed), 0.0f, 0.0f);
   }
   if (f == PROBE_POCKETS) {
     float pocket = open_cell_pockets(p, seed);
