@@ -355,8 +355,8 @@ const float STREET_ANCHORS = 64.0f;
 // over a thermal where the rolls' updrafts converge, spaced along the row at about the rows'
 // own spacing (Etling and Brown 1993; Atkinson and Zhang 1996, "Mesoscale shallow convection
 // in the atmosphere", Rev. Geophys. 34). Here the row is cut by the positive lobes of Perlin
-// noise of a lattice as fine as the rows (street_pearls): clouds 5-10 km long along the row
-// with gaps between them, placed independently on neighbouring rows.
+// noise of a lattice as fine as the rows (street_pearls): clouds about the lattice's 12 km long
+// along the row with gaps between them, placed independently on neighbouring rows.
 const float STREET_PEARLS = STREETS;
 // street_clouds' mean over any region: the rows' 1/2 (their phase is uniform, their profile odd
 // about 1/2) times the pearls' 1/2 (Perlin noise is symmetric about 0, their profile odd about

@@ -110,8 +110,8 @@ core::ImageData etopo5_relief(const regional::ElevationRaster& raster) {
         ground[std::size_t(j) * width + i] = float(std::max(heights[std::size_t(i)], 0.0));
     }
   });
-  constexpr double earth_radius_m = 6371000.0;
-  const double step = M_PI / height * earth_radius_m;  // metres between rows (and columns at the equator)
+  // Metres between rows (and columns at the equator) on the Earth's mean radius, the renderer's.
+  const double step = M_PI / height * render::OrbitSettings{}.planet_radius_m;
   core::ImageData relief{width, height, 2, std::vector<float>(std::size_t(width) * height * 2, 0.0f)};
   core::parallel_rows(height, [&](int begin, int end) {
     for (int j = begin; j < end; ++j) {
