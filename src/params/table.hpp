@@ -90,9 +90,9 @@ inline constexpr Parameter stratocumulus_cells =
          cover_commands, "systems.stratocumulus_cells");
 inline constexpr Parameter cloud_streets =
     real("cloud_streets", 1.0, 0.0, 1.0, "",
-         "strength of the cloud streets, rows of cumulus along the wind 12 km apart in the cold air furthest behind "
-         "the cyclones' cold fronts, upstream of its open cells; drawn where the cover resolves them (from about 2700 "
-         "per face; 0: none)",
+         "strength of the cloud streets, rows of separate cumulus along the wind 12 km apart in the cold air furthest "
+         "behind the cyclones' cold fronts, upstream of its open cells; drawn where the cover resolves them (from "
+         "about 2700 per face; 0: none)",
          cover_commands, "systems.cloud_streets");
 inline constexpr Parameter cover_softness =
     real("cover_softness", 0.05, 0.0, 10.0, "density",
