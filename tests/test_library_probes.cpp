@@ -583,6 +583,10 @@ TEST_CASE("weather_systems.glsl on the GPU agrees with the CPU", "[probe]") {
     cases.push_back({arguments(PROBE_BELTS_SURFACE, vec4(r(-1.0f, 1.0f), 0, 0, 0),
                                vec4(r(0.0f, 1.0f), r(0.0f, 0.6f), r(0.0f, 0.35f), 0)),
                      kArithmetic * 16});
+    // The cyclones near p: a set of bits, 0 or 1 for the one cyclone (exact but within rounding of
+    // its reach, which random points miss); a neighbour's feature point, hashed integers scaled
+    // into [0, 1) plus the offset: exact.
+    cases.push_back({arguments(PROBE_NEAR, vec4(0, seed, float(k % 27), 0), vec4(p, 0), cyclone, life), 0.0f});
     cases.push_back({arguments(PROBE_COLD, vec4(r(-3.0f, 2.0f), seed, r(-3.5f, 1.0f), 0), vec4(p, 0), cyclone,
                                vec4(life.x, life.y, r(0.0f, 1.0f), r(0.0f, 1.0f))),
                      std::max(band, cells)});
@@ -647,17 +651,25 @@ TEST_CASE("worley.glsl on the GPU agrees with the CPU", "[probe]") {
   const vec4 key = vec4(std::floor(r(0.0f, 16777215.0f)), std::floor(r(0.0f, 16777215.0f)), 12345.0f, 0.0f);
   const int functions[] = {
       PROBE_WRAP_CELL,     PROBE_FEATURE_OFFSET,     PROBE_WORLEY_CANDIDATE, PROBE_WRAPPED_FEATURE_OFFSET,
-      PROBE_SMOOTH_WORLEY, PROBE_WRAPPED_NEIGHBOURS, PROBE_WORLEY_F1,        PROBE_NEAREST_CELL};
-  for (int k = 0; k < 112; ++k) {
-    const int f = functions[k % 8];
+      PROBE_SMOOTH_WORLEY, PROBE_WRAPPED_NEIGHBOURS, PROBE_WORLEY_F1,        PROBE_NEAREST_CELL,
+      PROBE_F1_SEARCHED,   PROBE_NEIGHBOUR_OFFSET,   PROBE_WIDER_SEARCH,     PROBE_WORLEY_RESULT,
+      PROBE_WORLEY_CELL};
+  for (int k = 0; k < 182; ++k) {
+    const int f = functions[k % 13];
     const bool integer = f == PROBE_WRAP_CELL || f == PROBE_FEATURE_OFFSET || f == PROBE_WRAPPED_FEATURE_OFFSET ||
-                         f == PROBE_WRAPPED_NEIGHBOURS;
+                         f == PROBE_WRAPPED_NEIGHBOURS || f == PROBE_NEIGHBOUR_OFFSET;
     const vec4 period = (k / 4) % 2 ? vec4(5.0f, 7.0f, 3.0f, 0.0f) : vec4(0.0f);
     const vec4 p =
         integer ? vec4(std::floor(r(-40.0f, 40.0f)), std::floor(r(-40.0f, 40.0f)), std::floor(r(-40.0f, 40.0f)), 0)
                 : (f == PROBE_WORLEY_CANDIDATE ? r.v(0.0f, 1.0f) : r.v(-20.0f, 20.0f));
     vec4 a(r(0.5f, 3.0f), float(k % 3 - 1), float((k / 3) % 3 - 1), 0.0f);
     if (f == PROBE_SMOOTH_WORLEY) a.y = r(0.05f, 1.0f);  // smooth_worley's lambda
+    // The cells searched: all or none (then no F1: gradient 0, distance capped by the probe).
+    if (f == PROBE_F1_SEARCHED) a.z = (k / 13) % 2 ? float(NEIGHBOUR_CELLS) : 0.0f;
+    if (f == PROBE_NEIGHBOUR_OFFSET) a.z = float(k % 27);
+    // The wider search from a best squared distance of 4 (beyond any point of the shell, which
+    // then finds the nearest) or 1e30; the result from a squared distance in [0.5, 3].
+    if (f == PROBE_WIDER_SEARCH) a.x = (k / 13) % 2 ? 4.0f : 1.0e30f;
     // nearest_cell is an integer cell, exact unless the nearest feature point lies within
     // kWorley of a cell's face (a chance of about 6 kWorley a case); its F1 (w) within kWorley.
     cases.push_back({arguments(f, a, p, period, key), integer                    ? kExact

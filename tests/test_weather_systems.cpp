@@ -439,8 +439,8 @@ Topology topology(Pattern pattern, float frequency, std::uint32_t seed, std::uin
 TEST_CASE("closed cells hold the cloud in one cell each with the clear a network, open cells the opposite",
           "[fast][systems]") {
   const std::uint32_t seed = 777u;
-  const Topology closed =
-      topology([&](vec3 p) { return glsl::closed_cells(p, seed); }, glsl::CLOSED_CELLS, seed, glsl::CLOSED_CELLS_LAYER);
+  const Topology closed = topology([&](vec3 p) { return glsl::closed_cells(p, seed, glsl::NEIGHBOUR_CELLS); },
+                                   glsl::CLOSED_CELLS, seed, glsl::CLOSED_CELLS_LAYER);
   INFO("closed: cloudy " << closed.cloudy << ", " << closed.cloud_parts << " clouds in " << closed.cells
                          << " cells, largest clear part " << closed.largest_clear);
   // Each cell its own cloud: as many clouds as cells, to the few cells that the sphere cuts to
@@ -448,8 +448,8 @@ TEST_CASE("closed cells hold the cloud in one cell each with the clear a network
   CHECK(closed.cloud_parts == Approx(closed.cells).epsilon(0.05));
   CHECK(closed.largest_clear > 0.95);
   CHECK(closed.cloudy > 0.7);
-  const Topology open =
-      topology([&](vec3 p) { return glsl::open_cells(p, seed); }, glsl::OPEN_CELLS, seed, glsl::OPEN_CELLS_LAYER);
+  const Topology open = topology([&](vec3 p) { return glsl::open_cells(p, seed, glsl::NEIGHBOUR_CELLS); },
+                                 glsl::OPEN_CELLS, seed, glsl::OPEN_CELLS_LAYER);
   INFO("open: cloudy " << open.cloudy << ", " << open.clear_parts << " clear centres in " << open.cells
                        << " cells, largest cloud part " << open.largest_cloud);
   CHECK(open.clear_parts == Approx(open.cells).epsilon(0.05));
@@ -464,8 +464,8 @@ TEST_CASE("the cell patterns' means over the sphere are the constants the modula
   double closed = 0, open = 0;
   for (int k = 0; k < n; ++k) {
     const vec3 p = glm::normalize(vec3(g(rng), g(rng), g(rng)));
-    closed += glsl::closed_cells(p, 9u);
-    open += glsl::open_cells(p, 9u);
+    closed += glsl::closed_cells(p, 9u, glsl::NEIGHBOUR_CELLS);
+    open += glsl::open_cells(p, 9u, glsl::NEIGHBOUR_CELLS);
   }
   // The sample's standard error: the patterns' spread (below 0.5) over sqrt(n), 0.0016; the cells'
   // own number (a million on the sphere) adds less.
@@ -594,6 +594,69 @@ TEST_CASE("the cold air furthest behind the front is in streets and the rest in 
     CHECK(air.x == glsl::cold_sectors(p, systems));
     CHECK(air.y == Approx(glsl::street_share(frame)).margin(1e-6));
   }
+}
+
+TEST_CASE("the loops over the cyclones near a point give what loops over every cyclone give", "[fast][systems]") {
+  // cyclone_systems and cold_air visit only cyclones_near's cyclones, so that SIMD lanes skip the
+  // others (prelude.glsl, SKIPPABLE); a cyclone outside the set contributes nothing, so the
+  // results equal the full loops' exactly.
+  cover::CoverParameters p;
+  p.cyclones = 15;  // the most per hemisphere: 30 cyclones of a 32-bit set
+  const glsl::WeatherSystems systems = cover::weather_systems(p, 5000.0);
+  REQUIRE(systems.cyclone_count >= 20);
+  std::mt19937 rng(3);
+  std::normal_distribution<float> normal;
+  int near_total = 0, points_near = 0;
+  const int points = 20000;
+  for (int k = 0; k < points; ++k) {
+    const vec3 q = glm::normalize(vec3(normal(rng), normal(rng), normal(rng)));
+    const float edge = std::uniform_real_distribution<float>(-1.0f, 1.0f)(rng);
+    float cloud = 0.0f;
+    vec2 air(0.0f);
+    for (int i = 0; i < systems.cyclone_count; ++i) {
+      const glsl::Cyclone& c = systems.cyclones[i];
+      cloud = std::max(cloud, glsl::cyclone_cloud(q, c, edge));
+      const vec2 xy = glsl::cyclone_frame(q, c);
+      if (glm::dot(xy, xy) < 16.0f && c.strength * glsl::cold_sector(xy) > air.x)
+        air = vec2(c.strength * glsl::cold_sector(xy), glsl::street_share(xy));
+    }
+    INFO("point " << k);
+    REQUIRE(glsl::cyclone_systems(q, systems, edge) == cloud);
+    REQUIRE(glsl::cold_air(q, systems) == air);
+    const int near = glm::bitCount(glsl::cyclones_near(q, systems));
+    near_total += near;
+    points_near += near > 0 ? 1 : 0;
+  }
+  // cyclones_near holds a point within 4 head radii in the frame, |xy| = sin(angle) / radius <= 4,
+  // and within 60 degrees: a cap of angle min(asin(4 radius), 60 degrees), (1 - cos) / 2 of the
+  // sphere. The mean size of the set is the caps' sum (caps of different cyclones overlap, which
+  // leaves a sum of independent indicators unbiased); its standard error over the points is below
+  // sqrt(sum / points) (each indicator's variance is below its mean).
+  double expected = 0.0;
+  for (int i = 0; i < systems.cyclone_count; ++i)
+    expected +=
+        (1.0 - std::cos(std::min(std::asin(std::min(4.0 * systems.cyclones[i].radius, 1.0)), M_PI / 3.0))) / 2.0;
+  const double mean = double(near_total) / points;
+  CHECK(std::abs(mean - expected) < 4.0 * std::sqrt(expected / points));
+  // The loops go through that many cyclones (for the busiest lane of a group) instead of all.
+  CHECK(mean < 0.25 * systems.cyclone_count);
+  WARN("cyclones near a point: " << mean << " on average (caps " << expected << ") of " << systems.cyclone_count
+                                 << ", any near " << double(points_near) / points << " of the sphere");
+}
+
+TEST_CASE("the cells' searches and the pockets' octaves left out give the patterns far from any cell",
+          "[fast][systems]") {
+  // SKIPPABLE's count 0 where the modulation's weight is 0: no border (1e30), so closed cells are
+  // whole (1) and open cells clear (0), and no pocket (0), which with_pockets leaves as it found.
+  const vec3 q = glm::normalize(vec3(0.3f, -0.5f, 0.8f));
+  CHECK(glsl::cell_border(q * glsl::CLOSED_CELLS, q, glsl::noise_key(1u, glsl::CLOSED_CELLS_LAYER), 0) == 1.0e30f);
+  CHECK(glsl::closed_cells(q, 1u, 0) == 1.0f);
+  CHECK(glsl::open_cells(q, 1u, 0) == 0.0f);
+  CHECK(glsl::open_cell_pockets(q, 1u, 0) == 0.0f);
+  CHECK(glsl::with_pockets(vec2(0.0f, 0.4f), 0.0f) == vec2(0.0f, 0.4f));
+  // And the modulations, which choose the count themselves, are zero where their weight is.
+  CHECK(glsl::closed_cell_modulation(q, 0.0f, 1u, 1.0e-4f) == 0.0f);
+  CHECK(glsl::open_cell_modulation(q, 0.0f, 1u, 1.0e-4f) == 0.0f);
 }
 
 namespace {
@@ -746,7 +809,7 @@ TEST_CASE("pockets of open cells are separate, sharp and larger than 1e4 km2, an
   std::vector<bool> inside(points.size());
   int partial = 0;
   for (size_t k = 0; k < points.size(); ++k) {
-    const float pocket = glsl::open_cell_pockets(points[k], 1u);
+    const float pocket = glsl::open_cell_pockets(points[k], 1u, glsl::POCKET_OCTAVES);
     inside[k] = pocket > 0.5f;
     partial += pocket > 0.05f && pocket < 0.95f ? 1 : 0;
   }

@@ -75,7 +75,7 @@ vec2 cells_at(vec3 origin, uint seed, float surface, float cold, float texel_arc
 #if OPEN_CELLS_DRAWN
   // Pockets of open cells in the decks' closed cores, thinner than the deck (without the open
   // pattern they draw nothing).
-  float pocket = open_cell_pockets(origin, seed);
+  float pocket = open_cell_pockets(origin, seed, SKIPPABLE(weights.x > 0.0f, POCKET_OCTAVES));
   m -= POCKET_THINNING * pocket * weights.x;
   weights = with_pockets(weights, pocket);
 #endif

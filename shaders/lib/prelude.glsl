@@ -5,17 +5,15 @@
 #define IN(T) in T
 #define OUT(T) out T
 #define INOUT(T) inout T
-// A branch that a group of lanes can skip. SIMD CPU drivers (llvmpipe) run an `if`'s body for the
+// Work that a group of SIMD lanes can skip. SIMD CPU drivers (llvmpipe) run an `if`'s body for the
 // whole group of lanes with those whose condition fails masked, so a branch rarely taken costs as
-// much as one always taken; a loop ends when its last lane leaves it. Written as
-//   for (int pass = FIRST_PASS(condition); pass < ONE_PASS; ++pass) { ... }
-// the body runs once where the condition holds and not at all for a group where it holds for no
-// lane. ONE_PASS is 1 plus a uniform never set (uniforms start at 0, GLSL 4.50 section 4.3.5): a
-// bound the compiler cannot know, which keeps it from unrolling the loop back into an `if`. On a
-// GPU it is a branch as any other.
-uniform int u_unset_zero;
-#define FIRST_PASS(condition) ((condition) ? 0 : 1)
-#define ONE_PASS (1 + u_unset_zero)
+// much as one always taken; a loop, though, ends when its last lane leaves it, after one pass with
+// every lane masked where none enters. Costly work is therefore a loop whose count is
+// SKIPPABLE(condition, count): `count` where the condition holds, 0 elsewhere, so that a group
+// where it holds for no lane pays one masked pass instead of `count` (the cells' 27-cell searches
+// of weather_systems.glsl). A loop with a constant count gains nothing: the compiler unrolls it
+// into straight code, which every group runs. On a GPU it is a branch as any other.
+#define SKIPPABLE(condition, count) ((condition) ? (count) : 0)
 // The textures a library function reads, named by what they hold and passed as parameters
 // (Bruneton's precomputed_atmospheric_scattering does the same): GLSL samplers here; in C++
 // classes that GLSL's texture functions are overloaded for (src/shader_math/hooks.hpp).

@@ -111,13 +111,27 @@ float cyclone_cloud(vec3 p, IN(Cyclone) cyclone, float edge) {
   return cyclone.strength * comma_cloud(xy, cyclone.wrap, edge);
 }
 
+// The cyclones whose comma may reach p, within 4 head radii (cyclone_cloud's reach): bit i for
+// cyclone i. The loops over the cyclones visit only these (for each set bit, lowest first), so
+// that SIMD lanes (llvmpipe) pass through a loop as often as their busiest lane needs, a cyclone
+// or two, rather than through every cyclone's comma at every texel.
+uint cyclones_near(vec3 p, IN(WeatherSystems) systems) {
+  uint near = 0u;
+  for (int i = 0; i < systems.cyclone_count && i < MAX_CYCLONES; ++i) {
+    vec2 xy = cyclone_frame(p, systems.cyclones[i]);
+    if (dot(xy, xy) <= 16.0f) near |= 1u << uint(i);
+  }
+  return near;
+}
+
 // Round clouds in cells of a random lattice (Worley F1): a cell's cloud has a radius of `radius`
 // plus up to `spread` (in cells) by the cell's hash, and one cell in `empty` has none. The edge
-// is as steep as band_profile's and moved by `edge` (a tenth of a cell at most).
+// is as steep as band_profile's and moved by `edge` (a tenth of a cell at most). `searched` as
+// worley_f1_searched's: 0 where the caller draws no cloud (none then).
 float cell_clouds(vec3 p, float frequency, uint seed, uint layer, float radius, float spread, float empty,
-                  float edge) {
+                  float edge, int searched) {
   vec3 scaled = p * frequency;
-  vec4 f1 = worley_f1(scaled, ivec3(0), noise_key(seed, layer));
+  vec4 f1 = worley_f1_searched(scaled, ivec3(0), noise_key(seed, layer), searched);
   // The nearest feature point's cell names the cloud.
   ivec3 cell = nearest_cell(scaled, f1);
   vec3 h = hash_to_unit3(pcg3d(uvec3(cell) ^ noise_key(seed, layer + 1u)));
@@ -146,8 +160,9 @@ float itcz_belt(float latitude, float itcz_latitude) {
 
 float itcz_clusters(vec3 p, float latitude, float itcz_latitude, uint seed, float edge) {
   float belt = itcz_belt(latitude, itcz_latitude);
-  if (belt < 0.02f) return 0.0f;
-  return belt * cell_clouds(p, ITCZ_CELLS, seed, ITCZ_LAYER, ITCZ_RADIUS, ITCZ_SPREAD, ITCZ_EMPTY, edge);
+  float clusters = cell_clouds(p, ITCZ_CELLS, seed, ITCZ_LAYER, ITCZ_RADIUS, ITCZ_SPREAD, ITCZ_EMPTY, edge,
+                               SKIPPABLE(belt >= 0.02f, NEIGHBOUR_CELLS));
+  return belt < 0.02f ? 0.0f : belt * clusters;
 }
 
 // The anvils of the ITCZ's clusters: deep convection spreads out under the tropopause into a
@@ -158,10 +173,10 @@ float itcz_clusters(vec3 p, float latitude, float itcz_latitude, uint seed, floa
 // in the same cells (itcz_clusters' lattice and hashes), so that an empty place has none.
 float itcz_anvils(vec3 p, float latitude, float itcz_latitude, uint seed, float edge) {
   float belt = itcz_belt(latitude, itcz_latitude);
-  if (belt < 0.02f) return 0.0f;
   // The cluster's cell and hash as cell_clouds finds them.
   vec3 scaled = p * ITCZ_CELLS;
-  vec4 f1 = worley_f1(scaled, ivec3(0), noise_key(seed, ITCZ_LAYER));
+  vec4 f1 = worley_f1_searched(scaled, ivec3(0), noise_key(seed, ITCZ_LAYER), SKIPPABLE(belt >= 0.02f, NEIGHBOUR_CELLS));
+  if (belt < 0.02f) return 0.0f;
   ivec3 cell = nearest_cell(scaled, f1);
   vec3 h = hash_to_unit3(pcg3d(uvec3(cell) ^ noise_key(seed, ITCZ_LAYER + 1u)));
   if (h.y < ITCZ_EMPTY) return 0.0f;
@@ -181,9 +196,9 @@ float itcz_anvils(vec3 p, float latitude, float itcz_latitude, uint seed, float 
 // distribution and variability of low-level cloud in the North Atlantic trades", QJRMS 140).
 float trade_cumulus(vec3 p, float latitude, uint seed, float edge) {
   float a = abs(latitude);
-  float belt = smoothstep(0.06f, 0.14f, a) * (1.0f - smoothstep(0.45f, 0.58f, a));
-  if (belt <= 0.0f) return 0.0f;
-  return belt * smoothstep(-0.4f, 0.2f, edge) * cell_clouds(p, 60.0f, seed, 13u, 0.3f, 0.25f, 0.3f, edge);
+  float belt = smoothstep(0.06f, 0.14f, a) * (1.0f - smoothstep(0.45f, 0.58f, a)) * smoothstep(-0.4f, 0.2f, edge);
+  float clouds = cell_clouds(p, 60.0f, seed, 13u, 0.3f, 0.25f, 0.3f, edge, SKIPPABLE(belt > 0.0f, NEIGHBOUR_CELLS));
+  return belt > 0.0f ? belt * clouds : 0.0f;
 }
 
 // Cirrus streaks: Worley fBm (14 cells per radius, 2 octaves) of the point with its z (north)
@@ -194,8 +209,10 @@ float trade_cumulus(vec3 p, float latitude, uint seed, float edge) {
 float cirrus_streaks(vec3 p, float latitude, uint seed) {
   float a = abs(latitude);
   float gate = max(smoothstep(0.55f, 0.7f, a) * (1.0f - smoothstep(1.05f, 1.2f, a)), 1.0f - smoothstep(0.15f, 0.3f, a));
+  // Two octaves where the gate is open, none elsewhere (SKIPPABLE: a group of lanes outside the
+  // belts runs one masked octave).
+  FbmParams noise = make_fbm_params(14.0f, SKIPPABLE(gate > 0.0f, 2), 2.0f, 0.5f, seed ^ 0x2545F491u, ivec3(0));
   if (gate <= 0.0f) return 0.0f;
-  FbmParams noise = make_fbm_params(14.0f, 2, 2.0f, 0.5f, seed ^ 0x2545F491u, ivec3(0));
   return gate * smoothstep(0.55f, 0.8f, inverted_worley_fbm(vec3(p.x, p.y, 4.0f * p.z), noise).w);
 }
 
@@ -228,6 +245,13 @@ const float OPEN_CELLS_MEAN = 0.46f;
 const float CLOSED_CELLS_CONTRAST = 0.3f;
 const float OPEN_CELLS_CONTRAST = 0.25f;
 
+// The feature point of the k-th of the NEIGHBOUR_CELLS cells around `cell` (worley.glsl's
+// neighbour_offset), from the cell's lower corner.
+vec3 neighbour_feature(ivec3 cell, int k, uvec3 key) {
+  ivec3 offset = neighbour_offset(k);
+  return vec3(offset) + wrapped_feature_offset(cell + offset, key);
+}
+
 // The distance (cells) from `scaled` to the border of its Voronoi cell in the lattice `key`, within
 // the surface whose unit normal is `normal`: to the nearest of the lines where the bisector planes
 // between the cell's feature point a and its neighbours' b cut the surface's tangent plane. The
@@ -235,29 +259,34 @@ const float OPEN_CELLS_CONTRAST = 0.25f;
 // angle with the surface normal (at least 0.2), so that cells which the sphere cuts obliquely get
 // rims as wide as the others' (F2 - F1 narrows them towards nothing). Exact where the cell's point
 // and its Voronoi neighbours lie in the 27 cells around p (nearly everywhere).
-float cell_border(vec3 scaled, vec3 normal, uvec3 key) {
+// `searched`: the neighbour cells searched, NEIGHBOUR_CELLS; 0 where the caller needs no border
+// (it gets 1e30, far from any), which lets a group of SIMD lanes none of which needs it skip the
+// search (prelude.glsl, SKIPPABLE).
+float cell_border(vec3 scaled, vec3 normal, uvec3 key, int searched) {
   vec3 base = floor(scaled);
   ivec3 cell = ivec3(base);
   vec3 f = scaled - base;
-  vec3 to_feature[27];  // from p to each neighbour cell's feature point
   int nearest = 0;
   float f1 = 1.0e30f;
-  for (int k = 0; k < 27; ++k) {
-    ivec3 offset = ivec3(k % 3 - 1, (k / 3) % 3 - 1, k / 9 - 1);
-    to_feature[k] = vec3(offset) + wrapped_feature_offset(cell + offset, key) - f;
-    float d2 = dot(to_feature[k], to_feature[k]);
+  vec3 a = vec3(0.0f);
+  for (int k = 0; k < searched; ++k) {
+    vec3 to_feature = neighbour_feature(cell, k, key) - f;
+    float d2 = dot(to_feature, to_feature);
     if (d2 < f1) {
       f1 = d2;
       nearest = k;
+      a = to_feature;
     }
   }
-  vec3 a = to_feature[nearest];
   float border = 1.0e30f;
-  for (int k = 0; k < 27; ++k) {
+  // The neighbours' points again rather than kept from the first loop: an array indexed by the
+  // loop's counter would live in memory on llvmpipe, and the hash costs less.
+  for (int k = 0; k < searched; ++k) {
     if (k == nearest) continue;
-    vec3 ab = to_feature[k] - a;
+    vec3 to_feature = neighbour_feature(cell, k, key) - f;
+    vec3 ab = to_feature - a;
     float length_ab = length(ab);
-    float plane = (dot(to_feature[k], to_feature[k]) - f1) / (2.0f * length_ab);
+    float plane = (dot(to_feature, to_feature) - f1) / (2.0f * length_ab);
     float along_normal = dot(ab, normal) / length_ab;
     float sine = sqrt(max(1.0f - along_normal * along_normal, 0.0f));
     border = min(border, plane / max(sine, 0.2f));
@@ -265,15 +294,16 @@ float cell_border(vec3 scaled, vec3 normal, uvec3 key) {
   return border;
 }
 
-// Closed cells at p: 1 inside the cells, 0 on their clear rims (within 0.03 of a cell of the border).
-float closed_cells(vec3 p, uint seed) {
-  return smoothstep(0.03f, 0.08f, cell_border(p * CLOSED_CELLS, p, noise_key(seed, CLOSED_CELLS_LAYER)));
+// Closed cells at p: 1 inside the cells, 0 on their clear rims (within 0.03 of a cell of the border);
+// `searched` as cell_border's (1 where 0).
+float closed_cells(vec3 p, uint seed, int searched) {
+  return smoothstep(0.03f, 0.08f, cell_border(p * CLOSED_CELLS, p, noise_key(seed, CLOSED_CELLS_LAYER), searched));
 }
 
 // Open cells at p: 1 on the cloud walls along the cells' borders (within 0.08 of a cell), 0 in their
-// clear centres.
-float open_cells(vec3 p, uint seed) {
-  return 1.0f - smoothstep(0.08f, 0.16f, cell_border(p * OPEN_CELLS, p, noise_key(seed, OPEN_CELLS_LAYER)));
+// clear centres; `searched` as cell_border's (0 where 0).
+float open_cells(vec3 p, uint seed, int searched) {
+  return 1.0f - smoothstep(0.08f, 0.16f, cell_border(p * OPEN_CELLS, p, noise_key(seed, OPEN_CELLS_LAYER), searched));
 }
 
 // How far a cover of texels `texel_arc` radians across resolves cells of `frequency` per radius:
@@ -329,7 +359,8 @@ float street_share(vec2 xy) { return smoothstep(1.3f, 1.8f, behind_cold_front(xy
 // its air in streets (street_share).
 vec2 cold_air(vec3 p, IN(WeatherSystems) systems) {
   vec2 air = vec2(0.0f);
-  for (int i = 0; i < systems.cyclone_count && i < MAX_CYCLONES; ++i) {
+  for (uint near = cyclones_near(p, systems); near != 0u; near &= near - 1u) {
+    int i = findLSB(near);
     vec2 xy = cyclone_frame(p, systems.cyclones[i]);
     if (dot(xy, xy) < 16.0f) {
       float cold = systems.cyclones[i].strength * cold_sector(xy);
@@ -432,13 +463,18 @@ vec2 cell_weights(float deck, float cold) {
 // ACP 22). Here the places where gradient noise of 8 cells per radius (a wavelength of about 800
 // km), frayed by a quarter as much of 32, exceeds 1.65 deviations: irregular pockets a few
 // hundred km across on about 5 % of the sphere; 1 inside, 0 outside, the step a tenth of a
-// deviation wide. Inside, the deck's closed weight goes to the open cells (with_pockets) and the
+// deviation wide. `octaves`: POCKET_OCTAVES, or 0 where no pocket is needed (none then; SKIPPABLE). Inside, the deck's closed weight goes to the open cells (with_pockets) and the
 // density thins by POCKET_THINNING of it, so the pockets are darker than the deck around them.
 const uint POCKETS_LAYER = 20u;  // and 21 (the borders' noise)
 const float POCKET_THINNING = 0.2f;
-float open_cell_pockets(vec3 p, uint seed) {
-  float n = perlin_noise(p * 8.0f, ivec3(0), noise_key(seed, POCKETS_LAYER)) +
-            0.25f * perlin_noise(p * 32.0f, ivec3(0), noise_key(seed, POCKETS_LAYER + 1u));
+const int POCKET_OCTAVES = 2;
+float open_cell_pockets(vec3 p, uint seed, int octaves) {
+  float n = 0.0f, amplitude = 1.0f, frequency = 8.0f;
+  for (int octave = 0; octave < octaves; ++octave) {
+    n += amplitude * perlin_noise(p * frequency, ivec3(0), noise_key(seed, POCKETS_LAYER + uint(octave)));
+    amplitude *= 0.25f;
+    frequency *= 4.0f;
+  }
   float threshold = 1.65f * PERLIN_OCTAVE_SIGMA * 1.0308f;  // the sum's deviation: sqrt(1 + 1/16)
   return smoothstep(threshold - 0.05f * PERLIN_OCTAVE_SIGMA, threshold + 0.05f * PERLIN_OCTAVE_SIGMA, n);
 }
@@ -455,11 +491,13 @@ vec2 with_pockets(vec2 weights, float pocket) {
 // (cover_density.comp: on llvmpipe a branch not taken still runs for its group of lanes).
 float closed_cell_modulation(vec3 p, float weight, uint seed, float texel_arc) {
   float closed = weight * cells_resolved(CLOSED_CELLS, texel_arc);
-  return closed > 0.0f ? closed * CLOSED_CELLS_CONTRAST * (closed_cells(p, seed) - CLOSED_CELLS_MEAN) : 0.0f;
+  float cells = closed_cells(p, seed, SKIPPABLE(closed > 0.0f, NEIGHBOUR_CELLS));
+  return closed > 0.0f ? closed * CLOSED_CELLS_CONTRAST * (cells - CLOSED_CELLS_MEAN) : 0.0f;
 }
 float open_cell_modulation(vec3 p, float weight, uint seed, float texel_arc) {
   float open = weight * cells_resolved(OPEN_CELLS, texel_arc);
-  return open > 0.0f ? open * OPEN_CELLS_CONTRAST * (open_cells(p, seed) - OPEN_CELLS_MEAN) : 0.0f;
+  float cells = open_cells(p, seed, SKIPPABLE(open > 0.0f, NEIGHBOUR_CELLS));
+  return open > 0.0f ? open * OPEN_CELLS_CONTRAST * (cells - OPEN_CELLS_MEAN) : 0.0f;
 }
 float cell_modulation(vec3 p, vec2 weights, uint seed, float texel_arc) {
   return closed_cell_modulation(p, weights.x, seed, texel_arc) + open_cell_modulation(p, weights.y, seed, texel_arc);
@@ -468,8 +506,8 @@ float cell_modulation(vec3 p, vec2 weights, uint seed, float texel_arc) {
 // The cyclones' cloud at p: the largest of their commas.
 float cyclone_systems(vec3 p, IN(WeatherSystems) systems, float edge) {
   float cloud = 0.0f;
-  for (int i = 0; i < systems.cyclone_count && i < MAX_CYCLONES; ++i)
-    cloud = max(cloud, cyclone_cloud(p, systems.cyclones[i], edge));
+  for (uint near = cyclones_near(p, systems); near != 0u; near &= near - 1u)
+    cloud = max(cloud, cyclone_cloud(p, systems.cyclones[findLSB(near)], edge));
   return cloud;
 }
 

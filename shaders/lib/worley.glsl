@@ -66,42 +66,88 @@ void worley_candidate(ivec3 cell, ivec3 offset, vec3 f, ivec3 period, uvec3 key,
   worley_nearer(feature_offset(cell + offset, period, key), offset, f, best, best_delta);
 }
 
-// F1 (distance to the nearest feature point) at p, in cell units, with dF1/dp.
-// Returns vec4(gradient, F1). The gradient is the unit vector from the nearest feature point
-// to p; it jumps across Voronoi cell borders and is set to zero exactly on a feature point.
-// The 27 neighbour cells are exact whenever F1 <= 1 (every point outside them is at least 1
-// away); otherwise, rarely, the 5x5x5 block is searched, which is always exact because F1 is
-// at most sqrt(3) < 2.
-vec4 worley_f1(vec3 p, ivec3 period, uvec3 key) {
-  vec3 base = floor(p);
-  ivec3 cell = ivec3(base);
-  vec3 f = p - base;
-  float best = 1.0e30f;
-  vec3 best_delta = vec3(0.0f);
-  ivec3 xs = wrapped_neighbours(cell.x, period.x), ys = wrapped_neighbours(cell.y, period.y),
-        zs = wrapped_neighbours(cell.z, period.z);
-  for (int k = -1; k <= 1; ++k) {
-    for (int j = -1; j <= 1; ++j) {
-      for (int i = -1; i <= 1; ++i) {
-        vec3 feature = wrapped_feature_offset(ivec3(xs[i + 1], ys[j + 1], zs[k + 1]), key);
-        worley_nearer(feature, ivec3(i, j, k), f, best, best_delta);
-      }
-    }
-  }
-  if (best > 1.0f) {
-    for (int k = -2; k <= 2; ++k) {
-      for (int j = -2; j <= 2; ++j) {
-        for (int i = -2; i <= 2; ++i) {
-          if (max(max(abs(i), abs(j)), abs(k)) == 2) {
-            worley_candidate(cell, ivec3(i, j, k), f, period, key, best, best_delta);
-          }
+// The 5x5x5 block's outer shell around p's cell (p at f within it), which F1 needs where the 27
+// cells around it found no point within 1 (rarely: every point outside them is at least 1 away,
+// and F1 is at most sqrt(3) < 2).
+void worley_wider_search(ivec3 cell, vec3 f, ivec3 period, uvec3 key, INOUT(float) best, INOUT(vec3) best_delta) {
+  for (int k = -2; k <= 2; ++k) {
+    for (int j = -2; j <= 2; ++j) {
+      for (int i = -2; i <= 2; ++i) {
+        if (max(max(abs(i), abs(j)), abs(k)) == 2) {
+          worley_candidate(cell, ivec3(i, j, k), f, period, key, best, best_delta);
         }
       }
     }
   }
+}
+
+// p's lattice cell, p's place in it, and the wrapped indices of the cells either side on each
+// axis (wrapped_neighbours), which the 27-cell searches visit.
+struct WorleyCell {
+  ivec3 cell;
+  vec3 f;
+  ivec3 xs;
+  ivec3 ys;
+  ivec3 zs;
+};
+WorleyCell worley_cell(vec3 p, ivec3 period) {
+  vec3 base = floor(p);
+  WorleyCell c;
+  c.cell = ivec3(base);
+  c.f = p - base;
+  c.xs = wrapped_neighbours(c.cell.x, period.x);
+  c.ys = wrapped_neighbours(c.cell.y, period.y);
+  c.zs = wrapped_neighbours(c.cell.z, period.z);
+  return c;
+}
+
+// F1 and its gradient from the nearest point's squared distance and the vector from it to p.
+vec4 worley_result(float best, vec3 best_delta) {
   float distance = sqrt(best);
   vec3 gradient = distance > 0.0f ? best_delta / distance : vec3(0.0f);
   return vec4(gradient, distance);
+}
+
+// F1 (distance to the nearest feature point) at p, in cell units, with dF1/dp.
+// Returns vec4(gradient, F1). The gradient is the unit vector from the nearest feature point
+// to p; it jumps across Voronoi cell borders and is set to zero exactly on a feature point.
+// The 27 neighbour cells are exact whenever F1 <= 1; otherwise the wider search.
+vec4 worley_f1(vec3 p, ivec3 period, uvec3 key) {
+  WorleyCell c = worley_cell(p, period);
+  float best = 1.0e30f;
+  vec3 best_delta = vec3(0.0f);
+  for (int k = -1; k <= 1; ++k) {
+    for (int j = -1; j <= 1; ++j) {
+      for (int i = -1; i <= 1; ++i) {
+        vec3 feature = wrapped_feature_offset(ivec3(c.xs[i + 1], c.ys[j + 1], c.zs[k + 1]), key);
+        worley_nearer(feature, ivec3(i, j, k), c.f, best, best_delta);
+      }
+    }
+  }
+  if (best > 1.0f) worley_wider_search(c.cell, c.f, period, key, best, best_delta);
+  return worley_result(best, best_delta);
+}
+
+// The neighbour cells of a Worley search: the 27 around p's cell, the k-th at this offset
+// (k in [0, 27), x fastest).
+const int NEIGHBOUR_CELLS = 27;
+ivec3 neighbour_offset(int k) { return ivec3(k % 3 - 1, (k / 3) % 3 - 1, k / 9 - 1); }
+
+// worley_f1 with a search a group of SIMD lanes can skip: the first `searched` of the neighbour
+// cells, NEIGHBOUR_CELLS, or 0 where the caller needs no F1 (distance 1e15, gradient 0; prelude.glsl,
+// SKIPPABLE). The same F1 where all are searched, from one loop of a count the compiler cannot
+// know (worley_f1's three nested constant loops, unrolled, are faster where every lane needs F1).
+vec4 worley_f1_searched(vec3 p, ivec3 period, uvec3 key, int searched) {
+  WorleyCell c = worley_cell(p, period);
+  float best = 1.0e30f;
+  vec3 best_delta = vec3(0.0f);
+  for (int k = 0; k < searched; ++k) {
+    ivec3 offset = neighbour_offset(k);
+    vec3 feature = wrapped_feature_offset(ivec3(c.xs[offset.x + 1], c.ys[offset.y + 1], c.zs[offset.z + 1]), key);
+    worley_nearer(feature, offset, c.f, best, best_delta);
+  }
+  if (best > 1.0f && searched > 0) worley_wider_search(c.cell, c.f, period, key, best, best_delta);
+  return worley_result(best, best_delta);
 }
 
 // The lattice cell of the feature point nearest to p (worley_f1's result f1 at p): p less the

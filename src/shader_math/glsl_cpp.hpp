@@ -12,9 +12,8 @@
 #define IN(T) const T&
 #define OUT(T) T&
 #define INOUT(T) T&
-// A branch a group of SIMD lanes can skip (prelude.glsl): here a plain one.
-#define FIRST_PASS(condition) ((condition) ? 0 : 1)
-#define ONE_PASS 1
+// Work a group of SIMD lanes can skip (prelude.glsl): here a plain loop count.
+#define SKIPPABLE(condition, count) ((condition) ? (count) : 0)
 
 namespace nephele::glsl {
 using namespace glm;

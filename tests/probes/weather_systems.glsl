@@ -20,6 +20,8 @@ const int PROBE_STREETS = 13;         // street_phasor(p, across, uint(b)), stre
                                       // a, uint(b), c); across the unit tangent across the wind x[3].xyz
 const int PROBE_COLD_FRONT = 14;      // behind_cold_front(vec2(a, c)), street_share(vec2(a, c))
 const int PROBE_STREET_PEARLS = 15;   // street_pearls(p, uint(b)), street_clouds(p, across, uint(b)); across as PROBE_STREETS
+const int PROBE_NEAR = 16;            // cyclones_near(p, cyclone C), neighbour_feature(floor(p * 160), int(c), the
+                                      // closed cells' key of seed b) in yzw
 #ifndef __cplusplus
 #include "../lib/weather_systems.glsl"
 #endif
@@ -46,10 +48,10 @@ vec4 probe_weather_systems(mat4 x) {
     Cyclone c = probe_cyclone(x);
     return vec4(cyclone_frame(p, c), cyclone_cloud(p, c, x[0].y), 0.0f);
   }
-  if (f == PROBE_CELL_CLOUDS) return vec4(cell_clouds(p, x[0].y, seed, 7u, 0.2f, 0.3f, 0.3f, x[0].w), 0.0f, 0.0f, 0.0f);
+  if (f == PROBE_CELL_CLOUDS) return vec4(cell_clouds(p, x[0].y, seed, 7u, 0.2f, 0.3f, 0.3f, x[0].w, NEIGHBOUR_CELLS), 0.0f, 0.0f, 0.0f);
   if (f == PROBE_CELLS)
-    return vec4(closed_cells(p, seed), open_cells(p, seed),
-                cell_border(p * CLOSED_CELLS, p, noise_key(seed, CLOSED_CELLS_LAYER)),
+    return vec4(closed_cells(p, seed, NEIGHBOUR_CELLS), open_cells(p, seed, NEIGHBOUR_CELLS),
+                cell_border(p * CLOSED_CELLS, p, noise_key(seed, CLOSED_CELLS_LAYER), NEIGHBOUR_CELLS),
                 deck_strength(p, latitude, seed, x[0].y, x[0].w));
   if (f == PROBE_CELL_PARTS)
     return vec4(closed_cell_modulation(p, x[0].y, seed, x[0].w), open_cell_modulation(p, x[0].y, seed, x[0].w), 0.0f,
@@ -71,7 +73,7 @@ vec4 probe_weather_systems(mat4 x) {
     return vec4(street_pearls(p, seed), street_clouds(p, across, seed), 0.0f, 0.0f);
   }
   if (f == PROBE_POCKETS) {
-    float pocket = open_cell_pockets(p, seed);
+    float pocket = open_cell_pockets(p, seed, POCKET_OCTAVES);
     vec2 weights = with_pockets(vec2(x[0].y, x[0].w), pocket);
     return vec4(pocket, weights.x, weights.y, 0.0f);
   }
@@ -89,6 +91,9 @@ vec4 probe_weather_systems(mat4 x) {
   systems.cirrus = 1.0f;
   systems.cells = 1.0f;
   systems.seed = seed;
+  if (f == PROBE_NEAR)
+    return vec4(float(cyclones_near(p, systems)),
+                neighbour_feature(ivec3(floor(p * CLOSED_CELLS)), int(x[0].w), noise_key(seed, CLOSED_CELLS_LAYER)));
   if (f == PROBE_COLD)
     return vec4(cold_sector(vec2(x[0].y, x[0].w)), cold_sectors(p, systems),
                 cell_modulation(p, vec2(x[3].z, x[3].w), seed, 1.0e-3f), cold_air(p, systems).y);

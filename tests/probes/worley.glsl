@@ -9,6 +9,11 @@ const int PROBE_SMOOTH_WORLEY = 4;
 const int PROBE_WRAPPED_NEIGHBOURS = 5;  // wrapped_neighbours, wrap_axis, wrap_step
 const int PROBE_WORLEY_F1 = 6;
 const int PROBE_NEAREST_CELL = 7;  // nearest_cell(p, worley_f1(p, ...)), F1 in w
+const int PROBE_F1_SEARCHED = 8;  // worley_f1_searched(p, ..., int(c)), F1 capped at 1e3 (1e15 where none searched)
+const int PROBE_NEIGHBOUR_OFFSET = 9;  // neighbour_offset(int(c))
+const int PROBE_WIDER_SEARCH = 10;     // worley_wider_search(floor(p), fract(p), ..., best a): (delta, best)
+const int PROBE_WORLEY_RESULT = 11;    // worley_result(a, x[1].xyz)
+const int PROBE_WORLEY_CELL = 12;      // worley_cell(p, period): cell in xyz, f.x + xs.x + ys.z + zs.y in w
 #ifndef __cplusplus
 #include "../lib/worley.glsl"
 #endif
@@ -37,6 +42,23 @@ vec4 probe_worley(mat4 x) {
   if (f == PROBE_NEAREST_CELL) {
     vec4 f1 = worley_f1(vec3(x[1]), period, key);
     return vec4(vec3(nearest_cell(vec3(x[1]), f1)), f1.w);
+  }
+  if (f == PROBE_F1_SEARCHED) {
+    vec4 f1 = worley_f1_searched(vec3(x[1]), period, key, int(x[0].w));
+    return vec4(vec3(f1), min(f1.w, 1.0e3f));
+  }
+  if (f == PROBE_NEIGHBOUR_OFFSET) return vec4(vec3(neighbour_offset(int(x[0].w))), 0.0f);
+  if (f == PROBE_WIDER_SEARCH) {
+    float best = x[0].y;
+    vec3 best_delta = vec3(0.0f);
+    vec3 p = vec3(x[1]);
+    worley_wider_search(ivec3(floor(p)), p - floor(p), period, key, best, best_delta);
+    return vec4(best_delta, best);
+  }
+  if (f == PROBE_WORLEY_RESULT) return worley_result(x[0].y, vec3(x[1]));
+  if (f == PROBE_WORLEY_CELL) {
+    WorleyCell c = worley_cell(vec3(x[1]), period);
+    return vec4(vec3(c.cell), c.f.x + float(c.xs.x + c.ys.z + c.zs.y));
   }
   return worley_f1(vec3(x[1]), period, key);  // PROBE_WORLEY_F1
 }
