@@ -529,7 +529,8 @@ inline constexpr Parameter verbose = flag("verbose", "print the renderer, the pa
 inline constexpr Parameter bench_cover_sizes =
     text("sizes", "256,512,1024", "N,N,... (1 to 16384)", "comma-separated cube face sizes", bench_cover);
 inline constexpr Parameter bench_cover_repeat =
-    integer("repeat", 3, 1, 100, "runs", "runs per size; the median is printed", bench_cover);
+    integer("repeat", 3, 1, 100, "runs",
+            "timed runs per size, after a first run that compiles the shaders; the median is printed", bench_cover);
 inline constexpr Parameter bench_noise_size =
     integer("size", 128, 8, 1024, "texels", "grid edge of the point-rate figures", bench_noise);
 inline constexpr Parameter bench_noise_repeat =

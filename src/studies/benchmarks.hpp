@@ -23,8 +23,12 @@ struct CoverBenchRow {
   std::vector<double> device_ms;  // per pass of cover_bench_passes(): GL_TIME_ELAPSED, else wall clock
   bool wall_fallback = false;     // the driver gave no device time for some pass
   double wall_ms = 0, read_ms = 0, encode_ms = 0, megabytes = 0;  // medians
+  // The first run's passes (wall clock), left out of the medians: the driver compiles the shaders
+  // there, or reads them from its disk cache (llvmpipe: seconds when they are not cached).
+  double first_ms = 0;
 };
-// Runs the cover of `parameters` at `size` `repeat` times. Needs a current OpenGL 4.5 context.
+// Runs the cover of `parameters` at `size` once and then `repeat` times for the medians. Needs a
+// current OpenGL 4.5 context.
 CoverBenchRow bench_cover_size(cover::CoverParameters parameters, int size, int repeat);
 
 // --- bench noise

@@ -55,18 +55,20 @@ int bench_cover(const std::vector<std::string>& arguments) {
     curl += (curl.empty() ? "" : ", ") + std::to_string(size) + ": " + cover::curl_mode_name(at.curl_mode) +
             (at.curl_mode == cover::CurlMode::spline ? " of " + std::to_string(at.curl_size) + " nodes" : "");
   }
-  std::printf("K = %d steps, curl %s (%s); potential %d octaves, density %d octaves; median of %d runs\n",
+  std::printf("K = %d steps, curl %s (%s); potential %d octaves, density %d octaves; median of %d runs after a first\n",
               parameters.iterations, cover::curl_mode_name(parameters.curl_mode), curl.c_str(),
               parameters.potential.octaves, parameters.density.octaves, repeat);
   std::printf(
       "device ms: GPU time of each pass by GL_TIME_ELAPSED queries (equirect: its dispatches), or\n"
       "the wall clock between glFinish calls where the driver reports none (llvmpipe);\n"
       "host ms: wall clock of the whole cover, of reading the cube map back, and of encoding the six\n"
-      "faces and the equirect map as float32 ZIP EXR in memory (in parallel, as generate does)\n");
+      "faces and the equirect map as float32 ZIP EXR in memory (in parallel, as generate does);\n"
+      "first: the whole cover's first run, left out of the medians: the driver compiles the shaders\n"
+      "there or reads them from its cache (llvmpipe: seconds when they are not cached)\n");
   const auto& passes = studies::cover_bench_passes();
   std::printf("%6s", "size");
   for (const auto& p : passes) std::printf(" %9s", p.c_str());
-  std::printf(" %9s %10s | %9s %9s %9s %8s\n", "device", "Mtexel/s", "wall", "read", "encode", "MB/s");
+  std::printf(" %9s %10s | %9s %9s %9s %9s %8s\n", "device", "Mtexel/s", "first", "wall", "read", "encode", "MB/s");
   for (int size : sizes) {
     const studies::CoverBenchRow row = studies::bench_cover_size(parameters, size, repeat);
     double total = 0;
@@ -76,8 +78,8 @@ int bench_cover(const std::vector<std::string>& arguments) {
       std::printf(" %9.1f", ms);
     }
     const double texels = 6.0 * size * size;
-    std::printf(" %9.1f %10.1f | %9.1f %9.1f %9.1f %8.1f%s\n", total, texels / (total * 1e3), row.wall_ms, row.read_ms,
-                row.encode_ms, row.megabytes / (row.encode_ms / 1e3),
+    std::printf(" %9.1f %10.1f | %9.1f %9.1f %9.1f %9.1f %8.1f%s\n", total, texels / (total * 1e3), row.first_ms,
+                row.wall_ms, row.read_ms, row.encode_ms, row.megabytes / (row.encode_ms / 1e3),
                 row.wall_fallback ? "  (no device time from the driver: wall clock)" : "");
     std::fflush(stdout);
   }
