@@ -279,8 +279,8 @@ float cell_border(vec3 scaled, vec3 normal, uvec3 key, int searched) {
     }
   }
   float border = 1.0e30f;
-  // The neighbours' points again rather than kept from the first loop: an array indexed by the
-  // loop's counter would live in memory on llvmpipe, and the hash costs less.
+  // The neighbours' points hashed again rather than kept from the first loop in an array, which a
+  // loop of a count the compiler cannot know would index in memory.
   for (int k = 0; k < searched; ++k) {
     if (k == nearest) continue;
     vec3 to_feature = neighbour_feature(cell, k, key) - f;
