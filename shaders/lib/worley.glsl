@@ -167,19 +167,15 @@ ivec3 nearest_cell(vec3 p, vec4 f1) { return ivec3(floor(p - vec3(f1) * f1.w)); 
 // finite in float (lambda > 0.0118). Returns vec4(dW/dp, W); W lies in [0, 1 + lambda ln 27].
 vec4 smooth_worley(vec3 p, ivec3 period, uvec3 key, float smoothing) {
   float lambda = max(smoothing, 0.02f);
-  vec3 base = floor(p);
-  ivec3 cell = ivec3(base);
-  vec3 f = p - base;
+  WorleyCell c = worley_cell(p, period);
   float sum = 0.0f;
   vec3 gradient = vec3(0.0f);
-  ivec3 xs = wrapped_neighbours(cell.x, period.x), ys = wrapped_neighbours(cell.y, period.y),
-        zs = wrapped_neighbours(cell.z, period.z);
   for (int k = -1; k <= 1; ++k) {
     for (int j = -1; j <= 1; ++j) {
       for (int i = -1; i <= 1; ++i) {
         ivec3 offset = ivec3(i, j, k);
-        vec3 feature = wrapped_feature_offset(ivec3(xs[i + 1], ys[j + 1], zs[k + 1]), key);
-        vec3 delta = f - (vec3(offset) + feature);
+        vec3 feature = wrapped_feature_offset(ivec3(c.xs[i + 1], c.ys[j + 1], c.zs[k + 1]), key);
+        vec3 delta = c.f - (vec3(offset) + feature);
         float r2 = dot(delta, delta);
         if (r2 < 1.0f) {
           float s = 1.0f - r2;
