@@ -198,7 +198,7 @@ TEST_CASE("generate --sequence writes each frame as a whole cover set with a lis
 
 TEST_CASE("bench cover names the curl each size runs with under curl mode auto", "[cli][moving]") {
   // The moving flow's defaults: procedural while 12 size^2 < 7 x 64^2 (up to 48 per face), then
-  // a spline of max(64, size / 2) nodes (cover::resolved_curl).
+  // a spline of max(64, size / 2) nodes, at most 128 at the default step (cover::resolved_curl).
   const Run r = run("bench cover --sizes 8,64 --repeat 1");
   INFO(r.output);
   REQUIRE(r.exit_code == 0);

@@ -122,13 +122,15 @@ TEST_CASE("curl mode auto takes spline for the steady flow and for the moving fl
     CHECK(cover::resolved_curl_mode(p) == cover::CurlMode::spline);
   }
   // Moving, defaults (T = 0.3, h = 0.15, nodes h/2 apart over 3T/2: 7 grids of g^2 per face,
-  // g = min(256, max(64, size / 2)); trajectories of 2 + 1 steps of 4 stages: 12 size^2):
-  // procedural while 12 size^2 < 7 x 64^2, up to 48; a spline above, on a grid of size / 2.
+  // g = min(256, 128, max(64, size / 2)); trajectories of 2 + 1 steps of 4 stages: 12 size^2):
+  // procedural while 12 size^2 < 7 x 64^2, up to 48; a spline above, on a grid of size / 2 up
+  // to 128, the finest whose error is not dominated by the grids' spacing in time at h = 0.15.
   p.flow = cover::Flow::moving;
   const std::tuple<int, cover::CurlMode, int> expected[] = {
       {32, cover::CurlMode::procedural, 256}, {48, cover::CurlMode::procedural, 256},
       {49, cover::CurlMode::spline, 64},      {128, cover::CurlMode::spline, 64},
-      {300, cover::CurlMode::spline, 150},    {1024, cover::CurlMode::spline, 256}};
+      {200, cover::CurlMode::spline, 100},    {300, cover::CurlMode::spline, 128},
+      {1024, cover::CurlMode::spline, 128}};
   for (const auto& [size, mode, grid] : expected) {
     p.size = size;
     INFO("size " << size);
@@ -136,6 +138,16 @@ TEST_CASE("curl mode auto takes spline for the steady flow and for the moving fl
     CHECK(resolved.curl_mode == mode);
     CHECK(resolved.curl_size == grid);
   }
+  // Steps below 0.03, whose grids in time err less than a 128-node spline in space, take up to
+  // 256 nodes: 16 steps of 0.019 over the same window.
+  p.iterations = 16;
+  p.step = 0.019f;
+  p.size = 1024;
+  CHECK(cover::resolved_curl(p).curl_size == 256);
+  p.size = 300;
+  CHECK(cover::resolved_curl(p).curl_size == 150);
+  p.iterations = 2;
+  p.step = 0.15f;
   // A smaller --curl-size caps the grid; a mode given by name is kept with its grid.
   p.size = 1024;
   p.curl_size = 100;

@@ -41,16 +41,23 @@ std::vector<std::pair<std::string, std::string>> density_defines(const CoverPara
 }
 }  // namespace
 
+int moving_grid_limit(double step) {
+  // The spline's error is mostly its grids' spacing in time (h/2): at h = 0.15 (the default) the
+  // older layer's points err by 5.3e-4 rad at most with 128 nodes and with 256, at 0.0375 by 7.4e-5
+  // and 7.5e-5, at 0.019 by 5.8e-5 and 1.7e-5 (docs/numerics.md, 8b). Finer grids than 128 pay
+  // four times the evaluations for nothing until the step is below about 0.03.
+  return step >= 0.03 ? 128 : 256;
+}
+
 CoverParameters resolved_curl(CoverParameters p) {
   if (p.curl_mode != CurlMode::automatic) return p;
   if (!moving(p)) {
     p.curl_mode = CurlMode::spline;
     return p;
   }
-  // The grid: half the cover's texels per edge, at least 64 and at most --curl-size. Its error
-  // is that of the interpolation in time at 128 nodes and up, 7.6e-4 rad at 64, 5.5e-4 rad at
-  // 128 and 256 (docs/numerics.md, 8b): a tenth of a texel or less at every size up to 1024.
-  const int grid = std::min(p.curl_size, std::max(64, p.size / 2));
+  // The grid: half the cover's texels per edge, at least 64, at most --curl-size and at most
+  // the finest grid worth its cost at the step (moving_grid_limit).
+  const int grid = std::min({p.curl_size, moving_grid_limit(p.step), std::max(64, p.size / 2)});
   // Curl evaluations: the spline's time nodes (a window of 3T/2, the most a frame spans), each a
   // grid of 6 grid^2, against four RK4 stages per step of each of 6 size^2 trajectories. Both
   // cost about the same per evaluation (llvmpipe: 0.6 us; docs/algorithm.md). The counts do not

@@ -141,8 +141,12 @@ class GlobalCover {
 // Bytes of GPU memory the passes allocate for a cube face size (plus the equirect export).
 // The curl mode and grid a cover runs with: `p` as given, or for curl mode automatic the spline
 // (steady flow), or for the moving flow the cheaper of procedural and a spline on a grid of
-// min(curl_size, max(64, size / 2)) nodes per face edge, by their counts of curl evaluations.
+// min(curl_size, moving_grid_limit(step), max(64, size / 2)) nodes per face edge, by their
+// counts of curl evaluations.
 CoverParameters resolved_curl(CoverParameters p);
+// The moving flow's finest spline grid worth its cost at the warp step h: 128 nodes per face
+// edge for h >= 0.03, where the error in time dominates, else 256.
+int moving_grid_limit(double step);
 CurlMode resolved_curl_mode(const CoverParameters& p);
 double cover_gpu_bytes(int size, Flow flow = Flow::steady);
 

@@ -136,8 +136,9 @@ inline constexpr Parameter curl_mode =
     text("curl_mode", "auto", "auto|sampled|procedural|spline",
          "velocity of the warp: sampled (bilinear from the curl cube map), procedural (exact point) or spline (C2 "
          "cubic B-spline of a curl grid of --curl-size per face); auto: spline for the steady flow, and for the "
-         "moving flow the cheaper of procedural and a spline on min(--curl-size, max(64, size / 2)) nodes, by "
-         "their count of curl evaluations (procedural up to 48 texels per face)",
+         "moving flow the cheaper of procedural and a spline on min(--curl-size, max(64, size / 2)) nodes, at most "
+         "128 for steps from 0.03 (finer grids gain nothing there), by their count of curl evaluations (procedural "
+         "up to 48 texels per face)",
          generate | bench_cover | cover_sidecar);
 inline constexpr Parameter curl_size =
     integer("curl_size", 256, 4, 1024, "nodes",
