@@ -1281,6 +1281,13 @@ TEST_CASE("curl_spline.glsl on the GPU agrees with the CPU", "[probe][spline]") 
                                vec4(r(-1.0f, 2.0f), angle, 0, 0), vec4(w, 0)),
                      2 * kTurned + kProjected + 2 * kArithmetic});
   }
+  // The warp grid's point: the spline of the nodes' directions (xyz near a unit vector, at least
+  // 0.9 long between neighbouring nodes) renormalised, which divides the sample's error by that
+  // length and adds the normalisation's few operations.
+  for (int k = 0; k < 8; ++k) {
+    const vec3 w = normalize(vec3(r.v(-1.0f, 1.0f)) + vec3(1e-3f));
+    cases.push_back({arguments(PROBE_WARP_GRID_POINT, vec4(0.0f), vec4(w, 0)), 3 * kSample + kArithmetic});
+  }
   compare(
       "curl_spline", [&](const mat4& x) { return probe_curl_spline(x, source); }, cases, nodes,
       gpu::ProbeData::array_image);

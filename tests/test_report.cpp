@@ -178,13 +178,14 @@ TEST_CASE("report --quick writes the CSV the diagram and the summary and the not
   int moving_rows = 0;
   while (std::getline(moving, line)) {
     const auto fields = split(line, ',');
-    REQUIRE(fields.size() == 12);
+    REQUIRE(fields.size() == 13);
     CHECK(fields[11] == "1");
     for (size_t k = 4; k < 11; ++k) REQUIRE(std::isfinite(std::stod(fields[k])));
     if (fields[1] == "procedural") procedural_error[fields[0] + fields[3]] = std::stod(fields[10]);
     ++moving_rows;
   }
-  CHECK(moving_rows == 12);  // 3 step counts x (procedural, spline 32), 3 windows x the two
+  // 3 step counts x (procedural, spline 32), 3 windows x the two, and one warp grid (8 nodes).
+  CHECK(moving_rows == 13);
   CHECK(procedural_error["step4"] * 8 <= procedural_error["step1"]);
   CHECK(procedural_error["window4"] > procedural_error["window1"]);
   CHECK(summary.find("## The moving flow: error against run time and window") != std::string::npos);

@@ -151,6 +151,17 @@ TEST_CASE("a cover in tiles equals the whole map's to the bit: the moving flow w
   check_tiles_match_whole(p, {6, 24, 180});
 }
 
+TEST_CASE("a cover in tiles equals the whole map's to the bit: the moving flow from a warp grid coarser than the cover",
+          "[tiles]") {
+  // Every tile reads the same whole-cube grid, traced once per frame (cover::warp_grid_cells).
+  cover::CoverParameters p;
+  p.size = 30;
+  p.curl_size = 32;
+  p.warp_grid = 12;
+  REQUIRE(cover::warp_grid_cells(p) == 12);
+  check_tiles_match_whole(p, {6, 24});
+}
+
 TEST_CASE("a cover in tiles equals the whole map's to the bit: the steady spline warp, a flat profile, land bias",
           "[tiles]") {
   cover::CoverParameters p = test::steady_cover();

@@ -6,12 +6,19 @@
 // moving flow"). Variants: MOVING_SPLINE 1 (curl mode spline, the default) reads the flow from
 // the splines of its grids at time nodes (binding 4, made by curl_spline.comp's moving variant),
 // mixed linearly between nodes; 0 evaluates the flow itself at every stage (curl mode procedural).
+// WARP_GRID 1 (covers finer than --warp-grid): the trajectories start at the nodes of the warp
+// grid, u_grid_cells per face edge with SPLINE_MARGIN + 1 beyond each edge as the curl's samples
+// (curl_spline.glsl), and both outputs are 6-layer arrays of those samples; the curl spline's
+// prefilter and warp_from_grid.comp then bring them to the texels.
 layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
 layout(rgba32f, binding = 0) uniform readonly image2DArray identity_field;
 layout(rgba32f, binding = 2) uniform writeonly image2DArray warp_field;
 layout(rgba32f, binding = 3) uniform writeonly image2DArray young_warp_field;
 #ifndef MOVING_SPLINE
 #define MOVING_SPLINE 1
+#endif
+#ifndef WARP_GRID
+#define WARP_GRID 0
 #endif
 
 // Both variants' libraries before the #if: the host expands each file once (the first include
@@ -41,6 +48,9 @@ uniform float u_old_age;  // the older layer's age (flow units)
 uniform float u_young_age;
 uniform int u_young_steps;  // RK4 steps back to the younger layer's age
 uniform int u_older_steps;  // and on from there to the older layer's
+#if WARP_GRID
+uniform int u_grid_cells;  // the warp grid's nodes per face edge inside the face
+#endif
 #if !MOVING_SPLINE
 uniform vec3 u_noise_offset;  // reduced modulo the lattice period by the host
 #define FLOW_SOURCE MovingCurl(u_curl, u_noise_offset, u_motion)
@@ -50,7 +60,11 @@ void main() {
   ivec3 texel = ivec3(gl_GlobalInvocationID);
   ivec3 extent = imageSize(warp_field);
   if (texel.x >= extent.x || texel.y >= extent.y) return;
+#if WARP_GRID
+  vec3 x = curl_spline_node(texel.z, texel.x, texel.y, SPLINE_MARGIN + 1, u_grid_cells);
+#else
   vec3 x = imageLoad(identity_field, texel).xyz;
+#endif
   // One trajectory: back to the younger layer's birth, then on to the older layer's.
   vec3 young = back_trajectory(x, u_time, u_young_age, u_young_steps, FLOW_SOURCE);
   vec3 old = back_trajectory(young, u_time - u_young_age, u_old_age - u_young_age, u_older_steps, FLOW_SOURCE);

@@ -89,6 +89,15 @@ vec4 sample_curl_spline(vec3 w, SplineImage spline) {
   return sample_curl_spline_node(w, spline, 0);
 }
 
+// The moving flow's warp grid (--warp-grid; shaders/cover/moving_warp.comp's WARP_GRID variant):
+// the back-trajectories' ends from the nodes of a grid as the curl's, prefiltered as its samples,
+// for the older layer in layers 0-5 (`layer` 0) and the younger's in 6-11 (1). A texel's end is
+// their spline at its direction x, renormalised onto the sphere: the quasi-interpolant errs by
+// O(h^4) as the curl's spline does (docs/numerics.md, 8b, "The warp grid").
+vec3 warp_grid_point(vec3 x, SplineImage grid, int layer) {
+  return normalize(vec3(sample_curl_spline_node(x, grid, layer)));
+}
+
 // The warp's velocity: the spline's value projected onto the tangent plane at w. The spline
 // approximates the curl, which is tangent at w, so its normal part is no larger than its error
 // (O(h^4)); the projection removes that part, as the procedural curl has none, and cannot

@@ -23,7 +23,9 @@ double cover_gpu_bytes(int size, Flow flow) {
   // calibration and diagnosis their tables and partial sums.
   const double equirect = std::min(8.0 * size * size, double(default_equirect_tile) * default_equirect_tile) * 4.0;
   // Curl mode spline adds its grid, at most 6 x 16 x 2 x 1030^2 bytes (200 MiB) for the
-  // largest --curl-size (1024), 13 MiB for the default 256: not counted.
+  // largest --curl-size (1024), 13 MiB for the default 256; the moving flow's warp grid, above
+  // --warp-grid texels per face edge, 12 x 16 x (warp_grid + 4)^2 bytes and as much while it is
+  // traced (at most 2 x 203 MiB for the largest, 1024; 2 x 51 MiB for the default 512): not counted.
   return cubes + equirect + reduction_gpu_bytes(size);
 }
 
@@ -43,9 +45,9 @@ std::vector<std::pair<std::string, std::string>> density_defines(const CoverPara
 
 int moving_grid_limit(double step) {
   // The spline's error is mostly its grids' spacing in time (h/2): at h = 0.15 (the default) the
-  // older layer's points err by 5.3e-4 rad at most with 128 nodes and with 256, at 0.0375 by 7.4e-5
-  // and 7.5e-5, at 0.019 by 5.8e-5 and 1.7e-5 (docs/numerics.md, 8b). Finer grids than 128 pay
-  // four times the evaluations for nothing until the step is below about 0.03.
+  // older layer's points err by 1.9e-3 rad at most with 128 nodes and 1.8e-3 with 256, at 0.0375
+  // by 1.7e-4 with both, at 0.019 by 9.5e-5 and 3.5e-5 (docs/numerics.md, 8b, 2026-11-30). Finer
+  // grids than 128 pay four times the evaluations for nothing until the step is below about 0.03.
   return step >= 0.03 ? 128 : 256;
 }
 
@@ -147,6 +149,7 @@ void GlobalCover::set_time(const std::string& iso_time) {
   parameters_.time = iso_time;
   clock_ = frame_clock(parameters_, hours_since_epoch(iso_time));
   splines_current_ = false;  // run_moving_splines keeps the grids of nodes the new window shares
+  warp_grid_current_ = false;
 }
 
 void GlobalCover::run_moving_splines() {
@@ -155,13 +158,10 @@ void GlobalCover::run_moving_splines() {
     const int cells = parameters_.curl_size;
     const int margin = glsl::SPLINE_MARGIN;
     const int extent = cells + 2 * margin;
-    if (!moving_spline_programs_[0]) {
-      for (int prefilter = 0; prefilter < 2; ++prefilter)
-        moving_spline_programs_[prefilter] = std::make_unique<gpu::ComputeProgram>(
-            "cover/curl_spline.comp",
-            std::vector<std::pair<std::string, std::string>>{{"CURL_SPLINE_PREFILTER", prefilter ? "1" : "0"},
-                                                             {"CURL_SPLINE_MOVING", "1"}});
-    }
+    if (!moving_spline_programs_[0])
+      moving_spline_programs_[0] = std::make_unique<gpu::ComputeProgram>(
+          "cover/curl_spline.comp", std::vector<std::pair<std::string, std::string>>{{"CURL_SPLINE_PREFILTER", "0"},
+                                                                                     {"CURL_SPLINE_MOVING", "1"}});
     // The grids of the window's nodes; those the last frame made are copied, not made again
     // (a node's grid depends on its index only: node_time).
     gpu::Texture grids = gpu::Texture::layered(extent, extent, 6 * clock.nodes, GL_RGBA32F);
@@ -169,7 +169,7 @@ void GlobalCover::run_moving_splines() {
     const int samples_extent = cells + 2 * (margin + 1);
     gpu::Texture samples;
     const gpu::ComputeProgram& sampler = *moving_spline_programs_[0];
-    const gpu::ComputeProgram& prefilter = *moving_spline_programs_[1];
+    const gpu::ComputeProgram& prefilter = moving_prefilter_program();
     glsl::set_uniform(sampler, "u_curl", curl_params(parameters_));
     sampler.set("u_noise_offset", potential_offset(parameters_));
     sampler.set("u_cells", cells);
@@ -201,17 +201,31 @@ void GlobalCover::run_moving_splines() {
   });
 }
 
+const gpu::ComputeProgram& GlobalCover::moving_prefilter_program() {
+  if (!moving_spline_programs_[1])
+    moving_spline_programs_[1] = std::make_unique<gpu::ComputeProgram>(
+        "cover/curl_spline.comp",
+        std::vector<std::pair<std::string, std::string>>{{"CURL_SPLINE_PREFILTER", "1"}, {"CURL_SPLINE_MOVING", "1"}});
+  return *moving_spline_programs_[1];
+}
+
+int warp_grid_cells(const CoverParameters& p) {
+  return moving(p) && p.warp_grid > 0 && p.warp_grid < p.size ? p.warp_grid : 0;
+}
+
 void GlobalCover::run_moving_warp() {
   const FrameClock& clock = clock_;
   const bool spline = parameters_.curl_mode == CurlMode::spline;
   if (spline && !splines_current_) run_moving_splines();
+  const int grid = warp_grid_cells(parameters_);
   timed("warp", [&] {
-    if (!moving_warp_program_)
-      moving_warp_program_ = std::make_unique<gpu::ComputeProgram>(
-          "cover/moving_warp.comp",
-          std::vector<std::pair<std::string, std::string>>{{"MOVING_SPLINE", spline ? "1" : "0"}});
+    std::unique_ptr<gpu::ComputeProgram>& made = moving_warp_programs_[grid > 0 ? 1 : 0];
+    if (!made)
+      made = std::make_unique<gpu::ComputeProgram>(
+          "cover/moving_warp.comp", std::vector<std::pair<std::string, std::string>>{
+                                        {"MOVING_SPLINE", spline ? "1" : "0"}, {"WARP_GRID", grid > 0 ? "1" : "0"}});
     if (!young_warp_field_.id()) young_warp_field_ = make_field(GL_RGBA32F);
-    const gpu::ComputeProgram& program = *moving_warp_program_;
+    const gpu::ComputeProgram& program = *made;
     namespace warp = shader_bindings::cover_moving_warp;
     glsl::set_uniform(program, "u_curl", curl_params(parameters_));
     glsl::set_uniform(program, "u_motion", clock.motion);
@@ -227,12 +241,53 @@ void GlobalCover::run_moving_warp() {
     program.set("u_young_age", clock.young_age);
     program.set("u_young_steps", clock.young_steps);
     program.set("u_older_steps", clock.older_steps);
+    if (grid > 0) {
+      trace_warp_grid(program, grid);
+      return;
+    }
     identity_field_.bind_image_layers(warp::identity_field, GL_READ_ONLY);
     warp_field_.bind_image_layers(warp::warp_field, GL_WRITE_ONLY);
     young_warp_field_.bind_image_layers(warp::young_warp_field, GL_WRITE_ONLY);
     dispatch_texels(program);
     gpu::image_barrier();
   });
+}
+
+void GlobalCover::trace_warp_grid(const gpu::ComputeProgram& tracer, int cells) {
+  // The grid is the whole cube's, the same for every tile of a frame: traced once per time.
+  if (!warp_grid_current_) {
+    namespace warp = shader_bindings::cover_moving_warp;
+    const int margin = glsl::SPLINE_MARGIN;
+    const int extent = cells + 2 * margin;
+    // The samples reach one node further than the coefficients: the prefilter's neighbours.
+    const int samples_extent = cells + 2 * (margin + 1);
+    const gpu::Texture older = gpu::Texture::layered(samples_extent, samples_extent, 6, GL_RGBA32F);
+    const gpu::Texture younger = gpu::Texture::layered(samples_extent, samples_extent, 6, GL_RGBA32F);
+    tracer.set("u_grid_cells", cells);
+    older.bind_image(warp::warp_field, GL_WRITE_ONLY);
+    younger.bind_image(warp::young_warp_field, GL_WRITE_ONLY);
+    tracer.dispatch_covering(samples_extent, samples_extent, 6);
+    gpu::image_barrier();
+    if (warp_grid_.width() != extent) warp_grid_ = gpu::Texture::layered(extent, extent, 12, GL_RGBA32F);
+    const gpu::ComputeProgram& prefilter = moving_prefilter_program();
+    warp_grid_.bind_image(shader_bindings::cover_curl_spline::coefficients, GL_WRITE_ONLY);
+    for (int layer = 0; layer < 2; ++layer) {
+      (layer ? younger : older).bind_image(shader_bindings::cover_curl_spline::samples, GL_READ_ONLY);
+      prefilter.set("u_first_layer", 6 * layer);
+      prefilter.dispatch_covering(extent, extent, 6);
+      gpu::image_barrier();
+    }
+    warp_grid_current_ = true;
+  }
+  if (!warp_from_grid_program_)
+    warp_from_grid_program_ = std::make_unique<gpu::ComputeProgram>("cover/warp_from_grid.comp");
+  namespace from_grid = shader_bindings::cover_warp_from_grid;
+  identity_field_.bind_image_layers(from_grid::identity_field, GL_READ_ONLY);
+  warp_grid_.bind_image(from_grid::warp_grid, GL_READ_ONLY);
+  warp_field_.bind_image_layers(from_grid::warp_field, GL_WRITE_ONLY);
+  young_warp_field_.bind_image_layers(from_grid::young_warp_field, GL_WRITE_ONLY);
+  dispatch_texels(*warp_from_grid_program_);
+  gpu::image_barrier();
 }
 
 void GlobalCover::run_identity() {

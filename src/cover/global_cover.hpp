@@ -101,6 +101,11 @@ class GlobalCover {
  private:
   template <class Work>
   void timed(const std::string& pass, Work&& work);
+  // The moving warp from the warp grid of `cells` nodes per face edge: the trajectories from its
+  // nodes by `tracer` (moving_warp.comp's WARP_GRID variant, uniforms set), once per frame, then
+  // their spline at the region's texels.
+  void trace_warp_grid(const gpu::ComputeProgram& tracer, int cells);
+  const gpu::ComputeProgram& moving_prefilter_program();  // curl_spline.comp's moving prefilter
   // start_velocity_in_curl: the curl map holds the velocity at `starts` (run_warp(true) only).
   void dispatch_warp(const gpu::Texture& starts, const gpu::Texture& warped, bool start_velocity_in_curl = false);
   // A map of the region: a cube map, or a 2D array of the tile's rows; make_fields (re)makes
@@ -120,7 +125,9 @@ class GlobalCover {
   gpu::ComputeProgram warp_program_;     // the integrator's and curl mode's variant
   gpu::ComputeProgram density_program_;  // with MOVING_LAYERS for --flow moving
   FrameClock clock_;                     // --flow moving: the frame's clock at parameters_.time (set_time renews it)
-  std::unique_ptr<gpu::ComputeProgram> moving_warp_program_;        // --flow moving
+  std::unique_ptr<gpu::ComputeProgram>
+      moving_warp_programs_[2];                                  // --flow moving: per texel, from the warp grid's nodes
+  std::unique_ptr<gpu::ComputeProgram> warp_from_grid_program_;  // the warp grid's spline at the texels
   std::unique_ptr<gpu::ComputeProgram> moving_spline_programs_[2];  // its samples, their prefilter
   gpu::Texture flow_splines_;            // --flow moving, curl mode spline: 6 layers per time node
   std::int64_t splines_first_node_ = 0;  // the absolute index of flow_splines_'s first node
@@ -129,6 +136,10 @@ class GlobalCover {
   gpu::Texture identity_field_, curl_field_, warp_field_, density_field_, cover_field_;
   gpu::Texture optical_thickness_field_, cloud_top_field_;
   gpu::Texture young_warp_field_;  // --flow moving: the younger cloud layer's warp
+  // --flow moving finer than --warp-grid: the trajectories' prefiltered ends at the grid's nodes,
+  // 12 layers (the older layer's faces, then the younger's), and whether they are the frame's.
+  gpu::Texture warp_grid_;
+  bool warp_grid_current_ = false;
   gpu::Texture spline_coefficients_;
   gpu::Texture surface_bias_;  // 720 x 360 R32F with --surface, else 1 x 1 zero
   CoverageRemap coverage_;
@@ -147,6 +158,9 @@ CoverParameters resolved_curl(CoverParameters p);
 // The moving flow's finest spline grid worth its cost at the warp step h: 128 nodes per face
 // edge for h >= 0.03, where the error in time dominates, else 256.
 int moving_grid_limit(double step);
+// The warp grid's nodes per face edge a cover traces its back-trajectories from: --warp-grid for
+// the moving flow when the cover has more texels per face edge, else 0 (from every texel).
+int warp_grid_cells(const CoverParameters& p);
 CurlMode resolved_curl_mode(const CoverParameters& p);
 double cover_gpu_bytes(int size, Flow flow = Flow::steady);
 

@@ -94,7 +94,8 @@ json::Value cover_parameters_json(const cover::CoverParameters& p) {
     if (!adaptive && (&parameter == &params::cover::tolerance || &parameter == &params::cover::max_substeps)) return;
     if (p.curl_mode != cover::CurlMode::spline && &parameter == &params::cover::curl_size) return;
     if (p.flow == cover::Flow::steady &&
-        (&parameter == &params::cover::vortex_lifetime || &parameter == &params::cover::loop))
+        (&parameter == &params::cover::vortex_lifetime || &parameter == &params::cover::loop ||
+         &parameter == &params::cover::warp_grid))
       return;
     set_path(parameters, std::string(parameter.sidecar_path()), json_number(value));
     if (&parameter == &params::cover::coverage) parameters.set(std::string(params::cover::profile.key), p.profile.name);

@@ -140,6 +140,12 @@ inline constexpr Parameter curl_mode =
          "128 for steps from 0.03 (finer grids gain nothing there), by their count of curl evaluations (procedural "
          "up to 48 texels per face)",
          generate | bench_cover | cover_sidecar);
+inline constexpr Parameter warp_grid =
+    integer("warp_grid", 512, 0, 1024, "nodes",
+            "--flow moving: covers of more texels per face edge than this trace the back-trajectories from a grid of "
+            "this many nodes per face edge and interpolate them to every texel by a cubic spline (0: from every "
+            "texel; docs/numerics.md, 8b)",
+            cover_commands);
 inline constexpr Parameter curl_size =
     integer("curl_size", 256, 4, 1024, "nodes",
             "curl mode spline: curl samples per cube face edge that the spline interpolates (independent of --size)",

@@ -70,6 +70,7 @@ struct Config {
   int curl_size;
   int iterations;
   float step;
+  int warp_grid = 0;  // the trajectories from a grid of this many nodes per face edge (0: every texel)
 };
 
 MovingPrecisionRow run_config(const MovingPrecisionOptions& o, const Config& c,
@@ -82,12 +83,14 @@ MovingPrecisionRow run_config(const MovingPrecisionOptions& o, const Config& c,
   p.step = c.step;
   p.curl_mode = c.mode;
   if (c.mode == cover::CurlMode::spline) p.curl_size = c.curl_size;
+  p.warp_grid = c.warp_grid;
   MovingPrecisionRow row;
   row.sweep = c.sweep;
   row.curl_mode = cover::curl_mode_name(c.mode);
   row.curl_size = c.mode == cover::CurlMode::spline ? c.curl_size : 0;
   row.iterations = c.iterations;
   row.step = c.step;
+  row.warp_grid = cover::warp_grid_cells(p);
   const cover::FrameClock clock = cover::frame_clock(p, cover::hours_since_epoch(p.time));
   row.window_hours = clock.old_age * cover::flow_hours_per_unit;
   std::vector<double> times;
@@ -136,7 +139,8 @@ MovingPrecisionRow run_config(const MovingPrecisionOptions& o, const Config& c,
 }
 
 std::string series_name(const MovingPrecisionRow& r) {
-  return r.curl_mode == "spline" ? "spline " + std::to_string(r.curl_size) : r.curl_mode;
+  const std::string curl = r.curl_mode == "spline" ? "spline " + std::to_string(r.curl_size) : r.curl_mode;
+  return r.warp_grid > 0 ? curl + ", warp grid" : curl;
 }
 
 const char* series_colour(std::size_t k) {
@@ -154,11 +158,11 @@ cover::CoverParameters with_frame_time(cover::CoverParameters p) {
 }  // namespace
 
 MovingPrecisionOptions MovingPrecisionOptions::full(const cover::CoverParameters& base) {
-  return {with_frame_time(base), 128, 384, 32, {1, 2, 4, 8, 16}, {1, 2, 4, 8, 16}, {64, 128, 256}, 3};
+  return {with_frame_time(base), 128, 384, 32, {1, 2, 4, 8, 16}, {1, 2, 4, 8, 16}, {64, 128, 256}, {16, 32, 64}, 3};
 }
 
 MovingPrecisionOptions MovingPrecisionOptions::quick(const cover::CoverParameters& base) {
-  return {with_frame_time(base), 16, 24, 8, {1, 2, 4}, {1, 2, 4}, {32}, 1};
+  return {with_frame_time(base), 16, 24, 8, {1, 2, 4}, {1, 2, 4}, {32}, {8}, 1};
 }
 
 std::vector<MovingPrecisionRow> moving_precision_sweep(const MovingPrecisionOptions& o,
@@ -177,6 +181,11 @@ std::vector<MovingPrecisionRow> moving_precision_sweep(const MovingPrecisionOpti
     if (!o.curl_sizes.empty())
       configs.push_back({"window", cover::CurlMode::spline, o.curl_sizes.back(), k, o.base.step});
   }
+  // The warp grid: the defaults' K and h and the finest curl grid, the trajectories from coarser
+  // and coarser grids of nodes.
+  for (int g : o.warp_grids)
+    if (!o.curl_sizes.empty())
+      configs.push_back({"grid", cover::CurlMode::spline, o.curl_sizes.back(), o.base.iterations, o.base.step, g});
   std::map<std::pair<int, float>, Layers> references;
   std::vector<MovingPrecisionRow> rows;
   for (const Config& c : configs) {
@@ -189,9 +198,10 @@ std::vector<MovingPrecisionRow> moving_precision_sweep(const MovingPrecisionOpti
 std::string moving_precision_line(const MovingPrecisionRow& r) {
   char line[256];
   std::snprintf(line, sizeof line,
-                "%-6s %-10s %4d K %2d h %.4f W %6.1f h: %8.1f ms, young rms %.2e max %.2e, old rms %.2e max %.2e%s",
-                r.sweep.c_str(), r.curl_mode.c_str(), r.curl_size, r.iterations, r.step, r.window_hours, r.time_ms,
-                r.young_rms, r.young_max, r.old_rms, r.old_max, r.finite ? "" : " NOT FINITE");
+                "%-6s %-10s %4d K %2d h %.4f W %6.1f h grid %4d: %8.1f ms, young rms %.2e max %.2e, old rms %.2e max "
+                "%.2e%s",
+                r.sweep.c_str(), r.curl_mode.c_str(), r.curl_size, r.iterations, r.step, r.window_hours, r.warp_grid,
+                r.time_ms, r.young_rms, r.young_max, r.old_rms, r.old_max, r.finite ? "" : " NOT FINITE");
   return line;
 }
 
@@ -199,11 +209,11 @@ std::string moving_precision_csv(const std::vector<MovingPrecisionRow>& rows) {
   std::ostringstream s;
   s.precision(6);
   s << "sweep,curl_mode,curl_size,iterations,step,window_hours,time_ms,young_err_rms,young_err_max,old_err_rms,"
-       "old_err_max,finite\n";
+       "old_err_max,finite,warp_grid\n";
   for (const auto& r : rows)
     s << r.sweep << ',' << r.curl_mode << ',' << r.curl_size << ',' << r.iterations << ',' << r.step << ','
       << r.window_hours << ',' << r.time_ms << ',' << r.young_rms << ',' << r.young_max << ',' << r.old_rms << ','
-      << r.old_max << ',' << (r.finite ? 1 : 0) << '\n';
+      << r.old_max << ',' << (r.finite ? 1 : 0) << ',' << r.warp_grid << '\n';
   return s.str();
 }
 
@@ -222,7 +232,7 @@ std::string moving_precision_svg(const std::vector<MovingPrecisionRow>& rows, co
   for (int p = 0; p < 2; ++p) {
     std::vector<double> xs, ys;
     for (const auto& r : rows)
-      if (r.sweep == panels[p].sweep) {
+      if (r.sweep == panels[p].sweep || (p == 0 && r.sweep == "grid")) {
         xs.push_back(r.*(panels[p].x));
         ys.push_back(r.old_max);
       }
@@ -232,7 +242,8 @@ std::string moving_precision_svg(const std::vector<MovingPrecisionRow>& rows, co
     for (std::size_t n = 0; n < names.size(); ++n) {
       std::vector<const MovingPrecisionRow*> series;
       for (const auto& r : rows)
-        if (r.sweep == panels[p].sweep && series_name(r) == names[n]) series.push_back(&r);
+        if ((r.sweep == panels[p].sweep || (p == 0 && r.sweep == "grid")) && series_name(r) == names[n])
+          series.push_back(&r);
       if (series.empty()) continue;
       std::sort(series.begin(), series.end(), [&](auto a, auto b) { return a->*(panels[p].x) < b->*(panels[p].x); });
       std::vector<std::pair<double, double>> points;
@@ -241,7 +252,7 @@ std::string moving_precision_svg(const std::vector<MovingPrecisionRow>& rows, co
       for (std::size_t k = 0; k < series.size(); ++k) {
         marker(s, 0, points[k].first, points[k].second, series_colour(n));
         // The defaults: K = 2 steps of 0.15.
-        if (series[k]->iterations == 2 && std::abs(series[k]->step - 0.15) < 1e-6)
+        if (series[k]->iterations == 2 && std::abs(series[k]->step - 0.15) < 1e-6 && series[k]->sweep != "grid")
           ring(s, points[k].first, points[k].second);
       }
     }
@@ -266,13 +277,15 @@ std::string moving_precision_markdown(const std::vector<MovingPrecisionRow>& row
                 "distance in radians (a texel at 1024 per face is 1.5e-3 rad).\n\n",
                 o.base.time.c_str(), o.size, sample_texels(o.size, o.samples).size(), o.reference_factor);
   s << line;
-  s << "| sweep | curl | K | h | window (h) | time (ms) | younger rms | younger max | older rms | older max | finite "
-       "|\n";
-  s << "|---|---|---|---|---|---|---|---|---|---|---|\n";
+  s << "| sweep | curl | warp grid | K | h | window (h) | time (ms) | younger rms | younger max | older rms | older "
+       "max "
+       "| finite |\n";
+  s << "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const auto& r : rows) {
-    std::snprintf(line, sizeof line, "| %s | %s | %d | %.4g | %.1f | %.1f | %.2e | %.2e | %.2e | %.2e | %s |\n",
-                  r.sweep.c_str(), series_name(r).c_str(), r.iterations, r.step, r.window_hours, r.time_ms, r.young_rms,
-                  r.young_max, r.old_rms, r.old_max, r.finite ? "yes" : "NO");
+    std::snprintf(line, sizeof line, "| %s | %s | %s | %d | %.4g | %.1f | %.1f | %.2e | %.2e | %.2e | %.2e | %s |\n",
+                  r.sweep.c_str(), series_name(r).c_str(),
+                  r.warp_grid > 0 ? std::to_string(r.warp_grid).c_str() : "every texel", r.iterations, r.step,
+                  r.window_hours, r.time_ms, r.young_rms, r.young_max, r.old_rms, r.old_max, r.finite ? "yes" : "NO");
     s << line;
   }
   s << "\n";

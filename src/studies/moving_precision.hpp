@@ -6,7 +6,8 @@
 // on the CPU through the procedural flow (the C++ twin of shaders/lib/moving_flow.glsl) with
 // `reference_factor` times as many RK4 steps. Two sweeps: the step h at a fixed window (the
 // error RK4 and the splines make), and the window W = 3T/2 at a fixed step (how the error grows
-// with the trajectories' length: the flow's stretching).
+// with the trajectories' length: the flow's stretching). A third, the warp grid (--warp-grid): the
+// defaults' trajectories from coarser and coarser grids of nodes, interpolated to the texels.
 #include <functional>
 #include <string>
 #include <vector>
@@ -23,6 +24,7 @@ struct MovingPrecisionOptions {
   std::vector<int> steps{1, 2, 4, 8};         // RK4 steps per T at T = base's K h (the step sweep)
   std::vector<int> windows{1, 2, 4, 8};       // K at the base's h (the window sweep: T = K h)
   std::vector<int> curl_sizes{64, 128, 256};  // spline grids; procedural is always run
+  std::vector<int> warp_grids{16, 32};        // warp grids (the grid sweep: the defaults' K and h, the finest spline)
   int repeat = 1;                             // timed runs per configuration (the median is kept)
 
   static MovingPrecisionOptions full(const cover::CoverParameters& base);
@@ -30,9 +32,10 @@ struct MovingPrecisionOptions {
 };
 
 struct MovingPrecisionRow {
-  std::string sweep;                    // "step" or "window"
+  std::string sweep;                    // "step", "window" or "grid"
   std::string curl_mode;                // "procedural" or "spline"
   int curl_size = 0;                    // spline only
+  int warp_grid = 0;                    // the trajectories' grid, nodes per face edge (0: every texel)
   int iterations = 0;                   // K: T = K h
   double step = 0;                      // h, flow units
   double window_hours = 0;              // the older layer's age at this frame (at most 3T/2)
