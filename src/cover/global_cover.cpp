@@ -169,7 +169,6 @@ void GlobalCover::run_moving_splines() {
     const int samples_extent = cells + 2 * (margin + 1);
     gpu::Texture samples;
     const gpu::ComputeProgram& sampler = *moving_spline_programs_[0];
-    const gpu::ComputeProgram& prefilter = moving_prefilter_program();
     glsl::set_uniform(sampler, "u_curl", curl_params(parameters_));
     sampler.set("u_noise_offset", potential_offset(parameters_));
     sampler.set("u_cells", cells);
@@ -188,11 +187,7 @@ void GlobalCover::run_moving_splines() {
       samples.bind_image(shader_bindings::cover_curl_spline::samples, GL_WRITE_ONLY);
       sampler.dispatch_covering(samples_extent, samples_extent, 6);
       gpu::image_barrier();
-      samples.bind_image(shader_bindings::cover_curl_spline::samples, GL_READ_ONLY);
-      grids.bind_image(shader_bindings::cover_curl_spline::coefficients, GL_WRITE_ONLY);
-      prefilter.set("u_first_layer", 6 * k);
-      prefilter.dispatch_covering(extent, extent, 6);
-      gpu::image_barrier();
+      prefilter_faces(samples, grids, 6 * k);
     }
     flow_splines_ = std::move(grids);
     splines_first_node_ = clock.first_node;
@@ -201,12 +196,17 @@ void GlobalCover::run_moving_splines() {
   });
 }
 
-const gpu::ComputeProgram& GlobalCover::moving_prefilter_program() {
+void GlobalCover::prefilter_faces(const gpu::Texture& samples, const gpu::Texture& coefficients, int first_layer) {
   if (!moving_spline_programs_[1])
     moving_spline_programs_[1] = std::make_unique<gpu::ComputeProgram>(
         "cover/curl_spline.comp",
         std::vector<std::pair<std::string, std::string>>{{"CURL_SPLINE_PREFILTER", "1"}, {"CURL_SPLINE_MOVING", "1"}});
-  return *moving_spline_programs_[1];
+  const gpu::ComputeProgram& prefilter = *moving_spline_programs_[1];
+  samples.bind_image(shader_bindings::cover_curl_spline::samples, GL_READ_ONLY);
+  coefficients.bind_image(shader_bindings::cover_curl_spline::coefficients, GL_WRITE_ONLY);
+  prefilter.set("u_first_layer", first_layer);
+  prefilter.dispatch_covering(coefficients.width(), coefficients.height(), 6);
+  gpu::image_barrier();
 }
 
 int warp_grid_cells(const CoverParameters& p) {
@@ -269,14 +269,8 @@ void GlobalCover::trace_warp_grid(const gpu::ComputeProgram& tracer, int cells) 
     tracer.dispatch_covering(samples_extent, samples_extent, 6);
     gpu::image_barrier();
     if (warp_grid_.width() != extent) warp_grid_ = gpu::Texture::layered(extent, extent, 12, GL_RGBA32F);
-    const gpu::ComputeProgram& prefilter = moving_prefilter_program();
-    warp_grid_.bind_image(shader_bindings::cover_curl_spline::coefficients, GL_WRITE_ONLY);
-    for (int layer = 0; layer < 2; ++layer) {
-      (layer ? younger : older).bind_image(shader_bindings::cover_curl_spline::samples, GL_READ_ONLY);
-      prefilter.set("u_first_layer", 6 * layer);
-      prefilter.dispatch_covering(extent, extent, 6);
-      gpu::image_barrier();
-    }
+    prefilter_faces(older, warp_grid_, 0);
+    prefilter_faces(younger, warp_grid_, 6);
     warp_grid_current_ = true;
   }
   if (!warp_from_grid_program_)

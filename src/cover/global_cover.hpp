@@ -105,7 +105,9 @@ class GlobalCover {
   // nodes by `tracer` (moving_warp.comp's WARP_GRID variant, uniforms set), once per frame, then
   // their spline at the region's texels.
   void trace_warp_grid(const gpu::ComputeProgram& tracer, int cells);
-  const gpu::ComputeProgram& moving_prefilter_program();  // curl_spline.comp's moving prefilter
+  // curl_spline.comp's moving prefilter: six faces of `samples` into layers first_layer ..
+  // first_layer + 5 of `coefficients` (2D arrays; the samples one node wider on each side).
+  void prefilter_faces(const gpu::Texture& samples, const gpu::Texture& coefficients, int first_layer);
   // start_velocity_in_curl: the curl map holds the velocity at `starts` (run_warp(true) only).
   void dispatch_warp(const gpu::Texture& starts, const gpu::Texture& warped, bool start_velocity_in_curl = false);
   // A map of the region: a cube map, or a 2D array of the tile's rows; make_fields (re)makes
