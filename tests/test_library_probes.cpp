@@ -408,6 +408,8 @@ TEST_CASE("cover_density.glsl on the GPU agrees with the CPU", "[probe]") {
                      kArithmetic});
     // The two layers' blend: two products and a sum of values below 1.
     cases.push_back({arguments(PROBE_LAYER_BLEND, vec4(r(0.0f, 1.0f), r(0.0f, 1.0f), r(0.0f, 1.0f), 0)), kArithmetic});
+    // The trades' squash: a clamp, two products and two sums of values below 2.
+    cases.push_back({arguments(PROBE_WITH_SHALLOW_TRADES, vec4(r(0.0f, 1.5f), r(0.0f, 1.0f), 0, 0)), kArithmetic});
   }
   compare("cover_density", probe_cover_density, cases);
   // d (1 + k c)(1 + k_s b) by hand: 0.8 (1 + 0.5 x 0.6)(1 - 0.5 x 0.4) = 0.832; zero weights leave d.
@@ -439,6 +441,10 @@ TEST_CASE("cloud_properties.glsl on the GPU agrees with the CPU", "[probe]") {
         {arguments(PROBE_CLOUD_TOP, vec4(r(0.0f, 16.0f), r(0.0f, 100.0f), 0, 0), types, place), 4 * kTranscendental});
     cases.push_back(
         {arguments(PROBE_CLOUD_TOP_FROM_COVER, vec4(r(0.0f, 1.0f), 0, 0, 0), vec4(0.0f), place), 4 * kTranscendental});
+    // The trades' regime: maxima, a smoothstep of |latitude| (a few operations on values below 2)
+    // and two products of values in [0, 1]: kArithmetic.
+    cases.push_back(
+        {arguments(PROBE_SHALLOW_TRADES, vec4(r(0.0f, 1.0f), r(0.0f, 1.0f), 0, 0), types, place), kArithmetic});
   }
   // An exp and a log of the transmittance (relative 3 ulp each) give the depth to about 8 ulp of
   // its value plus the log's absolute error near 1.
@@ -509,6 +515,10 @@ TEST_CASE("weather_systems.glsl on the GPU agrees with the CPU", "[probe]") {
     // band_profile: arithmetic; itcz_belt (y): one exp of -((a - b) / 0.07)^2, a value in [0, 1].
     cases.push_back({arguments(PROBE_BAND_PROFILE, vec4(r(-1.0f, 1.0f), r(0.1f, 1.0f), 0, 0)),
                      std::max(kArithmetic * 16, kTranscendental)});
+    // frontal_reach: a smoothstep of |z| over 0.167 (slope up to 9): kArithmetic scaled by it.
+    cases.push_back(
+        {arguments(PROBE_FRONTAL_REACH, vec4(0.0f), vec4(normalize(vec3(r.v(-1.0f, 1.0f)) + vec3(1e-3f)), 0.0f)),
+         16 * kArithmetic});
     const vec4 wrap(r(1.5f, 4.0f), 0, 0, 0);
     cases.push_back({arguments(PROBE_COMMA_CLOUD, vec4(r(-3.0f, 3.0f), r(-3.5f, 2.5f), wrap.x, 0), vec4(0.0f),
                                vec4(0.0f), vec4(r(-1.0f, 1.0f), 0, 0, 0)),

@@ -261,7 +261,11 @@ TEST_CASE("a looped moving cover repeats after its loop, and differs within it",
   // 13.3 h rounded) and time nodes of 24 h / 4 fit the day; the noise of generation and layer k
   // is that of k mod their count, so the flow and the clouds at t + 24 h are those at t. The
   // times of the flow count from the frame's own generation origin, a whole number of
-  // generations further on, so the frames agree to the rounding of those times.
+  // generations further on, so the frames agree to the rounding of those times. That rounding
+  // moves a density now and then across an edge of the calibration's fine bins (range / 256^2,
+  // about 1.5e-5 of density), which moves its band's threshold by up to a bin and the band's
+  // covers by up to a bin over the softness (3e-4), most bands not at all: an RMS below 1e-4,
+  // against more than 0.05 half a loop apart.
   cover::CoverParameters day = moving(32, "2026-06-21T05:00Z");
   day.loop_hours = 24;
   cover::CoverParameters next = day;
@@ -270,6 +274,6 @@ TEST_CASE("a looped moving cover repeats after its loop, and differs within it",
   half.time = "2026-06-21T17:00Z";
   const std::vector<float> a = cover_at(day), b = cover_at(next), c = cover_at(half);
   INFO("RMS differences: a loop apart " << rms_difference(a, b) << ", half a loop apart " << rms_difference(a, c));
-  CHECK(rms_difference(a, b) <= 1e-5);
+  CHECK(rms_difference(a, b) <= 1e-4);
   CHECK(rms_difference(a, c) > 0.05);
 }

@@ -58,6 +58,23 @@ TEST_CASE("a comma cloud covers the cold front and the head and leaves the dry s
   CHECK(glsl::comma_cloud(vec2(0.15f, -1.8f), wrap, -1.0f) < 0.5f);
 }
 
+TEST_CASE("fronts reach the subtropics but not the deep tropics: all their cloud from 22 degrees, none within 12",
+          "[fast][systems]") {
+  const auto at = [](float latitude_deg) {
+    const float lat = latitude_deg * float(M_PI) / 180.0f;
+    return glsl::frontal_reach(vec3(std::cos(lat), 0.0f, std::sin(lat)));
+  };
+  for (float lat : {22.0f, 30.0f, 60.0f, -22.0f, -45.0f}) CHECK(at(lat) == 1.0f);
+  for (float lat : {12.0f, 5.0f, 0.0f, -12.0f}) CHECK(at(lat) == 0.0f);
+  float previous = 0.0f;
+  for (int k = 0; k <= 100; ++k) {
+    const float reach = at(12.0f + 0.1f * k);
+    CHECK(reach >= previous);
+    CHECK(at(-12.0f - 0.1f * k) == reach);
+    previous = reach;
+  }
+}
+
 TEST_CASE("a band's edge is sharp: from all to nothing over 0.4 of its half width", "[fast][systems]") {
   CHECK(glsl::band_profile(0.0f, 1.0f) == 1.0f);
   CHECK(glsl::band_profile(0.6f, 1.0f) == 1.0f);
@@ -621,7 +638,7 @@ TEST_CASE("the loops over the cyclones near a point give what loops over every c
         air = vec2(c.strength * glsl::cold_sector(xy), glsl::street_share(xy));
     }
     INFO("point " << k);
-    REQUIRE(glsl::cyclone_systems(q, systems, edge) == cloud);
+    REQUIRE(glsl::cyclone_systems(q, systems, edge) == cloud * glsl::frontal_reach(q));
     REQUIRE(glsl::cold_air(q, systems) == air);
     const int near = glm::bitCount(glsl::cyclones_near(q, systems));
     near_total += near;
@@ -837,4 +854,45 @@ TEST_CASE("pockets of open cells are separate, sharp and larger than 1e4 km2, an
   CHECK(in_pocket.x == 0.0f);
   CHECK(in_pocket.y == Approx(0.9f));
   CHECK(glsl::with_pockets(glsl::vec2(0.8f, 0.1f), 0.0f) == glsl::vec2(0.8f, 0.1f));
+}
+
+TEST_CASE("the trades' shallow regime shrinks the noise about its mean and leaves the systems and the mid-latitudes",
+          "[fast][systems]") {
+  // The squash: weight 0 is the identity, weight 1 keeps the mean and shrinks every deviation to
+  // SHALLOW_CONTRAST of it, and any weight keeps the order of the densities.
+  for (float d : {0.2f, 0.47f, 0.6f, 0.9f}) {
+    CHECK(glsl::with_shallow_trades(d, 0.0f) == d);
+    CHECK(glsl::with_shallow_trades(d, 1.0f) - glsl::NOISE_MEAN ==
+          Approx(glsl::SHALLOW_CONTRAST * (d - glsl::NOISE_MEAN)).margin(1e-6));
+  }
+  for (float w : {0.0f, 0.3f, 1.0f})
+    for (int k = 1; k < 100; ++k)
+      CHECK(glsl::with_shallow_trades(0.01f * k, w) > glsl::with_shallow_trades(0.01f * (k - 1), w));
+  // The weight: the whole regime in the tropics where nothing organises the cloud, none beyond 33
+  // degrees, none in a comma cloud, an ITCZ cluster or a deck, and the cumulus clumps and cirrus
+  // are part of it.
+  glsl::CloudTypes none{};
+  const float degree = float(M_PI) / 180.0f;
+  CHECK(glsl::shallow_trades_weight(none, 10.0f * degree, 0.0f, 1.0f) == 1.0f);
+  CHECK(glsl::shallow_trades_weight(none, -25.0f * degree, 0.0f, 1.0f) == 1.0f);
+  CHECK(glsl::shallow_trades_weight(none, 34.0f * degree, 0.0f, 1.0f) == 0.0f);
+  CHECK(glsl::shallow_trades_weight(none, 10.0f * degree, 0.0f, 0.0f) == 0.0f);  // --shallow-trades 0
+  CHECK(glsl::shallow_trades_weight(none, 10.0f * degree, 1.0f, 1.0f) == 0.0f);  // a deck
+  glsl::CloudTypes front = none, cluster = none, clump = none;
+  front.frontal = 1.0f;
+  cluster.deep_convection = 1.0f;
+  clump.cumulus = 1.0f;
+  clump.cirrus = 1.0f;
+  CHECK(glsl::shallow_trades_weight(front, 20.0f * degree, 0.0f, 1.0f) == 0.0f);
+  CHECK(glsl::shallow_trades_weight(cluster, 5.0f * degree, 0.0f, 1.0f) == 0.0f);
+  CHECK(glsl::shallow_trades_weight(clump, 15.0f * degree, 0.0f, 1.0f) == 1.0f);
+  // Half a front's weight, half the regime; the belt falls monotonically from 26 to 33 degrees.
+  front.frontal = 0.5f;
+  CHECK(glsl::shallow_trades_weight(front, 20.0f * degree, 0.0f, 1.0f) == Approx(0.5f).margin(1e-6));
+  float previous = 1.0f;
+  for (int k = 0; k <= 70; ++k) {
+    const float belt = glsl::trades_belt((26.0f + 0.1f * k) * degree);
+    CHECK(belt <= previous);
+    previous = belt;
+  }
 }

@@ -150,18 +150,22 @@ void main() {
     cells = mix(cells, cells_at(normalize(young_warped), u_young_systems_seed, surface, cold, texel_arc), u_young_share);
 #endif
     float cyclonic = curl.w;
-    float density =
-        with_cells(with_systems(shaped_density(noise, cyclonic, u_cyclone_cloudiness, surface, u_surface_weight), systems),
-                   cells.y + streets);
-    imageStore(density_field, texel, vec4(density, 0.0f, 0.0f, 0.0f));
-    // The cloud's top by its types (the remap clears it where the texel stays clear).
     CloudTypes types;
     types.frontal = cyclones;
     types.deep_convection = fields.x / BELT_WEIGHTS.x;
     types.cumulus = fields.y / BELT_WEIGHTS.y;
     types.cirrus = fields.z / BELT_WEIGHTS.z;
     float latitude = portable_asin(clamp(direction.z, -1.0f, 1.0f));
-    imageStore(cloud_top_field, texel, vec4(cloud_top_km(types, latitude, cyclonic, deck_presence(cells.x)), 0.0f, 0.0f, 0.0f));
+    float deck = deck_presence(cells.x);
+    // In the trades the cloud no system organises is shallow cumulus or thin cirrus: grey between
+    // the systems. Squashed with the flow's factor, whose smooth field would otherwise be all the
+    // texture left there, and before the surface's, which keeps the deserts clear.
+    float lifted = shaped_density(with_systems(noise, systems), cyclonic, u_cyclone_cloudiness, 0.0f, 0.0f);
+    float shallow = with_shallow_trades(lifted, shallow_trades_weight(types, latitude, deck, u_systems.shallow_trades));
+    float density = with_cells(shaped_density(shallow, 0.0f, 0.0f, surface, u_surface_weight), cells.y + streets);
+    imageStore(density_field, texel, vec4(density, 0.0f, 0.0f, 0.0f));
+    // The cloud's top by its types (the remap clears it where the texel stays clear).
+    imageStore(cloud_top_field, texel, vec4(cloud_top_km(types, latitude, cyclonic, deck), 0.0f, 0.0f, 0.0f));
     low = min(low, sortable_bits(density));
     high = max(high, sortable_bits(density));
   }

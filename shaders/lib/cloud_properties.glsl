@@ -112,6 +112,30 @@ float cloud_top_km(IN(CloudTypes) types, float latitude, float cyclonic, float d
   return mix(top, tropopause - ANVIL_BELOW_TROPOPAUSE_KM, clamp(types.deep_convection, 0.0f, 1.0f));
 }
 
+// How far a texel's cloud is organised by a weather system into bright, thick cloud, in [0, 1]: the
+// largest of the comma clouds' and the ITCZ's clusters' weights and a deck's presence. Not among
+// them: the trade cumulus clusters, clumps of small cumulus a little brighter than the field around
+// them but themselves broken ("gravel" and "flowers", Stevens et al. 2020); the cirrus streaks,
+// thin cloud; and the flow's cyclonic depth, whose vortices in the tropics are no weather system
+// (the tropics' deep convection is the ITCZ's clusters): cloud its ascent lifts there is thin cirrus.
+float organised_cloud(IN(CloudTypes) types, float deck) {
+  return clamp(max(max(types.frontal, types.deep_convection), deck), 0.0f, 1.0f);
+}
+
+// The trades' belt: the tropics to the subtropical highs' poleward edge, full to 26 degrees and
+// gone from 33 (the trade cumulus fields' poleward edge, weather_systems.glsl), where the air
+// sinks or rises only in the systems (the Hadley circulation's trade-wind branch; Riehl 1954).
+float trades_belt(float latitude) { return 1.0f - smoothstep(0.45f, 0.58f, abs(latitude)); }
+
+// The weight of the trades' shallow cumulus regime at a texel, in [0, 1]: in the trades' belt,
+// where no system organises the cloud, times the regime's strength (--shallow-trades). There the
+// cloud of a 10-100 km texel is a field of small cumulus over much clear sea, which covers a
+// fifth to a third of it (Nuijens et al. 2014; "sugar" and "gravel" of Stevens et al. 2020), not
+// a bright sheet (cover_density.glsl's with_shallow_trades).
+float shallow_trades_weight(IN(CloudTypes) types, float latitude, float deck, float strength) {
+  return clamp(strength, 0.0f, 1.0f) * trades_belt(latitude) * (1.0f - organised_cloud(types, deck));
+}
+
 // The geometric thickness (km) of a cloud with its top at top_km and optical thickness tau: from a
 // third of the depth above 0.5 km (the lowest cloud bases) for thin cloud to all of it for
 // thick (tau 60 and more), since a cloud's optical thickness grows with its depth (as H^(5/3) for

@@ -65,6 +65,22 @@ float with_systems(float density, float systems) {
 // open cells' centres onto their walls.
 float with_cells(float density, float modulation) { return density * (1.0f + modulation); }
 
+// The trades' shallow cumulus (cloud_properties.glsl's shallow_trades_weight w): the noise about its
+// mean shrunk to SHALLOW_CONTRAST of its spread where w = 1, so that the calibration, which ranks the
+// densities, still finds cloud there (the band's share of cloudy texels does not change) but little
+// of it rises far above the threshold: the remap leaves it grey, a partly cloudy texel, and its rank
+// gives it a small optical thickness, while the systems around keep their contrast and stay bright.
+// Applied to the noise lifted by the systems (with_systems), so that the thin systems (the cirrus
+// streaks) stay grey there too, and before the factors of the surface and the flow, so that deserts
+// stay clear. A rank-preserving map where w is the same: the cloud's texture and edges stay.
+// 0.3: the noise's cloud, up to about two spreads above a threshold near the mean, then rises at most
+// 0.044 above it, which the default softness (0.05) maps to covers 0.1-0.6, most below 0.35, as the
+// trades' cumulus cover a fifth to a third of the sky (Nuijens et al. 2014).
+const float SHALLOW_CONTRAST = 0.08f;
+float with_shallow_trades(float noise, float weight) {
+  return noise - clamp(weight, 0.0f, 1.0f) * (1.0f - SHALLOW_CONTRAST) * (noise - NOISE_MEAN);
+}
+
 // The cover of a cloudy texel just above the threshold: cloud boundaries are steps of optical
 // thickness at a texel's scale, not ramps from nothing.
 const float COVER_EDGE = 0.1f;

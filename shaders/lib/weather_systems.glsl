@@ -36,6 +36,7 @@ struct WeatherSystems {
   float itcz;           // strength of its convective clusters, 0: none
   float trade_cumulus;  // strength of the trade cumulus fields, 0: none
   float cirrus;         // strength of the cirrus streaks, 0: none
+  float shallow_trades;  // strength of the trades' shallow unorganised cloud (cloud_properties.glsl), 0: none
   float cells;          // strength of the stratocumulus decks' and cold air's convective cells, 0: none
   float streets;        // strength of the cold air's cloud streets, 0: none
   uint seed;            // the belts' noise (cluster places, cumulus cells, cirrus); per cloud layer
@@ -503,12 +504,21 @@ float cell_modulation(vec3 p, vec2 weights, uint seed, float texel_arc) {
   return closed_cell_modulation(p, weights.x, seed, texel_arc) + open_cell_modulation(p, weights.y, seed, texel_arc);
 }
 
-// The cyclones' cloud at p: the largest of their commas.
+// How much of a front's cloud survives at p: all of it poleward of 22 degrees, none equatorward of
+// 12. A cold front lives on the temperature contrast across it, which fades over the warm
+// subtropical sea; its trailing end decays into a shear line of broken low cloud in the trades
+// (frontolysis; Bluestein 1993, "Synoptic-Dynamic Meteorology in Midlatitudes" II, on fronts'
+// decay), so the commas' tails, three head radii long, stop short of the deep tropics instead of
+// reaching the equator from the storm tracks' southern edge. By sin(latitude), |p.z|: sin 12 degrees is
+// 0.2079 (below 0.208), sin 22 degrees 0.3746.
+float frontal_reach(vec3 p) { return smoothstep(0.208f, 0.3746f, abs(p.z)); }
+
+// The cyclones' cloud at p: the largest of their commas, as far as fronts reach (frontal_reach).
 float cyclone_systems(vec3 p, IN(WeatherSystems) systems, float edge) {
   float cloud = 0.0f;
   for (uint near = cyclones_near(p, systems); near != 0u; near &= near - 1u)
     cloud = max(cloud, cyclone_cloud(p, systems.cyclones[findLSB(near)], edge));
-  return cloud;
+  return cloud * frontal_reach(p);
 }
 
 // The belts' weights in the density at p with the noise of `seed`: ITCZ clusters at full weight

@@ -45,6 +45,7 @@ struct CoverParameters {
   float itcz = params::cover::itcz.default_float();                                // strength of the ITCZ's clusters
   float trade_cumulus = params::cover::trade_cumulus.default_float();              // strength of the cumulus fields
   float cirrus = params::cover::cirrus.default_float();                            // strength of the cirrus streaks
+  float shallow_trades = params::cover::shallow_trades.default_float();            // the trades' unorganised cloud thin
   float stratocumulus_cells = params::cover::stratocumulus_cells.default_float();  // the decks' and cold air's cells
   float cloud_streets = params::cover::cloud_streets.default_float();              // the cold air's streets
   float cover_softness = params::cover::cover_softness.default_float();            // density scale of the remap
@@ -108,6 +109,7 @@ void visit_numeric_parameters(P& p, Visit&& visit) {
   visit(c::itcz, p.itcz);
   visit(c::trade_cumulus, p.trade_cumulus);
   visit(c::cirrus, p.cirrus);
+  visit(c::shallow_trades, p.shallow_trades);
   visit(c::stratocumulus_cells, p.stratocumulus_cells);
   visit(c::cloud_streets, p.cloud_streets);
   visit(c::cover_softness, p.cover_softness);

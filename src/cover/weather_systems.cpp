@@ -108,6 +108,7 @@ glsl::WeatherSystems weather_systems(const CoverParameters& p, double hours) {
   w.itcz = p.itcz;
   w.trade_cumulus = p.trade_cumulus;
   w.cirrus = p.cirrus;
+  w.shallow_trades = p.shallow_trades;
   w.cells = p.stratocumulus_cells;
   w.streets = p.cloud_streets;
   // The ITCZ's annual-mean line near 5 N (Waliser and Gautier 1993), moved with the profile's

@@ -26,6 +26,7 @@ const std::vector<const Parameter*>& all() {
       &cover::itcz,
       &cover::trade_cumulus,
       &cover::cirrus,
+      &cover::shallow_trades,
       &cover::stratocumulus_cells,
       &cover::cover_softness,
       &cover::tau_median,

@@ -82,6 +82,11 @@ inline constexpr Parameter trade_cumulus =
 inline constexpr Parameter cirrus = real(
     "cirrus", 1.0, 0.0, 1.0, "", "strength of the thin cirrus streaks along the westerlies and over the ITCZ (0: none)",
     cover_commands, "systems.cirrus");
+inline constexpr Parameter shallow_trades =
+    real("shallow_trades", 1.0, 0.0, 1.0, "",
+         "strength of the trades' shallow cumulus: within 30 degrees of the equator the cloud no system organises is "
+         "thin and grey between the bright systems (0: as bright as the systems)",
+         cover_commands, "systems.shallow_trades");
 inline constexpr Parameter stratocumulus_cells =
     real("stratocumulus_cells", 1.0, 0.0, 1.0, "",
          "strength of the convective cells: closed in the stratocumulus decks' cores, open at their fringes and in "

@@ -55,6 +55,7 @@ void set_uniform(const gpu::ComputeProgram& program, const std::string& name, co
   program.set(name + ".itcz", systems.itcz);
   program.set(name + ".trade_cumulus", systems.trade_cumulus);
   program.set(name + ".cirrus", systems.cirrus);
+  program.set(name + ".shallow_trades", systems.shallow_trades);
   program.set(name + ".cells", systems.cells);
   program.set(name + ".streets", systems.streets);
   program.set(name + ".seed", static_cast<unsigned>(systems.seed));

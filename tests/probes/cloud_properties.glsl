@@ -10,9 +10,19 @@ const int PROBE_COVERED_DEPTH = 5;         // covered_optical_depth(a, b)
 const int PROBE_SUBTEXEL_CLOUD = 6;        // subtexel_cloud(x[1].xyz, a, b, c): (cover, relief, field, undulation)
 const int PROBE_SUBTEXEL_TAU = 7;          // subtexel_optical_thickness(a, a detail of undulation b and share x[1].x, c)
 const int PROBE_SUBTEXEL_SHARE = 8;        // subtexel_cloud(x[1].xyz, a, b, c).undulation_share
+const int PROBE_SHALLOW_TRADES = 9;  // organised_cloud(x[1], a), trades_belt(latitude) in y, shallow_trades_weight(x[1], latitude, a, b) in z
 #ifndef __cplusplus
 #include "../lib/cloud_properties.glsl"
 #endif
+// The cloud types' weights of x[1].
+CloudTypes probe_cloud_types(mat4 x) {
+  CloudTypes types;
+  types.frontal = x[1].x;
+  types.deep_convection = x[1].y;
+  types.cumulus = x[1].z;
+  types.cirrus = x[1].w;
+  return types;
+}
 vec4 probe_cloud_properties(mat4 x) {
   int f = int(x[0].x);
   float a = x[0].y, b = x[0].z, c = x[0].w;
@@ -21,12 +31,12 @@ vec4 probe_cloud_properties(mat4 x) {
   if (f == PROBE_TAU_FROM_RANK) return vec4(optical_thickness_from_rank(a, b, c), cloudy_rank(a, b), 0.0f, 0.0f);
   if (f == PROBE_TAU_FROM_COVER) return vec4(optical_thickness_from_cover(a, b, c), 0.0f, 0.0f, 0.0f);
   if (f == PROBE_CLOUD_TOP) {
-    CloudTypes types;
-    types.frontal = x[1].x;
-    types.deep_convection = x[1].y;
-    types.cumulus = x[1].z;
-    types.cirrus = x[1].w;
+    CloudTypes types = probe_cloud_types(x);
     return vec4(cloud_top_km(types, latitude, x[2].y, x[2].z), tropopause_km(latitude), cloud_thickness_km(a, b), 0.0f);
+  }
+  if (f == PROBE_SHALLOW_TRADES) {
+    CloudTypes types = probe_cloud_types(x);
+    return vec4(organised_cloud(types, a), trades_belt(latitude), shallow_trades_weight(types, latitude, a, b), 0.0f);
   }
   if (f == PROBE_COVERED_DEPTH) return vec4(covered_optical_depth(a, b), 0.0f, 0.0f, 0.0f);
   if (f == PROBE_SUBTEXEL_CLOUD) {

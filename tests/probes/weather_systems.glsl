@@ -22,6 +22,7 @@ const int PROBE_COLD_FRONT = 14;      // behind_cold_front(vec2(a, c)), street_s
 const int PROBE_STREET_PEARLS = 15;   // street_pearls(p, uint(b)), street_clouds(p, across, uint(b)); across as PROBE_STREETS
 const int PROBE_NEAR = 16;            // cyclones_near(p, cyclone C), neighbour_feature(floor(p * 160), int(c), the
                                       // closed cells' key of seed b) in yzw
+const int PROBE_FRONTAL_REACH = 17;   // frontal_reach(p)
 #ifndef __cplusplus
 #include "../lib/weather_systems.glsl"
 #endif
@@ -56,6 +57,7 @@ vec4 probe_weather_systems(mat4 x) {
   if (f == PROBE_CELL_PARTS)
     return vec4(closed_cell_modulation(p, x[0].y, seed, x[0].w), open_cell_modulation(p, x[0].y, seed, x[0].w), 0.0f,
                 0.0f);
+  if (f == PROBE_FRONTAL_REACH) return vec4(frontal_reach(p), 0.0f, 0.0f, 0.0f);
   if (f == PROBE_BELTS_SURFACE) return vec4(belts_over_surface(p, x[0].y), 0.0f);
   if (f == PROBE_COLD_FRONT)
     return vec4(behind_cold_front(vec2(x[0].y, x[0].w)), street_share(vec2(x[0].y, x[0].w)), 0.0f, 0.0f);
