@@ -260,6 +260,7 @@ TEST_CASE("the profile's remap pass gives the CPU's cover at the smooth threshol
   REQUIRE(cover.band_calibration());
   const cover::BandCalibration& c = *cover.band_calibration();
   const std::vector<float> density = cover.density_field().read(), covered = cover.cover_field().read();
+  const std::vector<float> contrast = cover.cover_contrast_field().read();
   // The band coordinate errs by 32 kArithmetic-like units (latitude_bands probe: 2.2e-4 of a
   // band); times the largest Catmull-Rom slope, 1.5 x the largest step between neighbouring
   // thresholds, plus the blend's and the ramp's rounding (a few ulp of values below 1).
@@ -271,9 +272,10 @@ TEST_CASE("the profile's remap pass gives the CPU's cover at the smooth threshol
     const int face = static_cast<int>(k / per_face), j = static_cast<int>(k % per_face / 32),
               i = static_cast<int>(k % 32);
     const float t = cover::smooth_band_threshold(c.thresholds, glsl::texel_direction(face, i, j, 32));
-    const float expected = glsl::cover_from_density(density[k], t, c.density_max, p.cover_softness);
-    // The remap's slope is (1 - COVER_EDGE) / softness; within the threshold's error of the
-    // threshold a texel may fall on either side of the edge's step.
+    const float expected = glsl::cover_from_density(glsl::contrasted_density(density[k], t, contrast[k]), t,
+                                                    c.density_max, p.cover_softness);
+    // The remap's slope is (1 - COVER_EDGE) / softness (times the contrast, at most 1); within the
+    // threshold's error of the threshold a texel may fall on either side of the edge's step.
     if (std::abs(density[k] - t) <= threshold_error) continue;
     REQUIRE(std::abs(covered[k] - expected) <= threshold_error * (1.0 - glsl::COVER_EDGE) / p.cover_softness + 1e-6);
   }

@@ -51,17 +51,19 @@ TiledResult run_tiled(const cover::CoverParameters& p, int count) {
   TiledResult result;
   result.cover.assign(6 * static_cast<size_t>(p.size) * p.size, -1.0f);
   const auto load_cloud_top = [&](int index) { return tiles[static_cast<size_t>(index)].cloud_top; };
+  const auto load_contrast = [&](int index) { return tiles[static_cast<size_t>(index)].cover_contrast; };
   result.optical_thickness = result.cloud_top = result.cover;
-  result.calibration = coverage.remap(load, load_cloud_top, [&](int index, const cover::CoverPlanes& planes) {
-    const cover::CubeRegion region = cover::owned_region(tiling.tile(index));
-    const size_t offset = (static_cast<size_t>(region.face) * p.size + region.first_row) * p.size;
-    REQUIRE(planes.cover.size() == static_cast<size_t>(region.owned_texels()));
-    std::copy(planes.cover.begin(), planes.cover.end(), result.cover.begin() + static_cast<std::ptrdiff_t>(offset));
-    std::copy(planes.optical_thickness.begin(), planes.optical_thickness.end(),
-              result.optical_thickness.begin() + static_cast<std::ptrdiff_t>(offset));
-    std::copy(planes.cloud_top.begin(), planes.cloud_top.end(),
-              result.cloud_top.begin() + static_cast<std::ptrdiff_t>(offset));
-  });
+  result.calibration =
+      coverage.remap(load, load_cloud_top, load_contrast, [&](int index, const cover::CoverPlanes& planes) {
+        const cover::CubeRegion region = cover::owned_region(tiling.tile(index));
+        const size_t offset = (static_cast<size_t>(region.face) * p.size + region.first_row) * p.size;
+        REQUIRE(planes.cover.size() == static_cast<size_t>(region.owned_texels()));
+        std::copy(planes.cover.begin(), planes.cover.end(), result.cover.begin() + static_cast<std::ptrdiff_t>(offset));
+        std::copy(planes.optical_thickness.begin(), planes.optical_thickness.end(),
+                  result.optical_thickness.begin() + static_cast<std::ptrdiff_t>(offset));
+        std::copy(planes.cloud_top.begin(), planes.cloud_top.end(),
+                  result.cloud_top.begin() + static_cast<std::ptrdiff_t>(offset));
+      });
   result.bands = coverage.bands();
   const cover::TexelWeightUnits units = cover::texel_weight_units(p.size);
   result.diagnostics =
@@ -296,15 +298,17 @@ TEST_CASE("a damaged tile part is made again by the next run and named by assemb
   const test::Run again = test::run(make);
   REQUIRE(again.exit_code == 0);
   CHECK_THAT(again.output, Catch::Contains("5 already complete, kept"));
-  // The same densities and cloud tops (the header's timings are the new run's): the last 2 x 8 x 8
-  // floats.
+  // The same densities, cloud tops and cover contrasts (the header's timings are the new run's):
+  // the last 3 x 8 x 8 floats.
   const std::string made = test::read_file(part);
-  const size_t data = 2 * 8 * 8 * sizeof(float);
+  const size_t block = 8 * 8 * sizeof(float), data = 3 * block;
   REQUIRE(made.size() >= data);
   CHECK(made.substr(made.size() - data) == whole.substr(whole.size() - data));
-  // A flipped density byte, then a flipped cloud-top byte: the header's hashes tell, and
-  // assemble names the file.
-  for (const auto& [back, what] : {std::pair<size_t, const char*>{data / 2 + 3, "densities"}, {3, "cloud tops"}}) {
+  // A flipped density byte, then a flipped cloud-top and cover-contrast byte: the header's hashes
+  // tell, and assemble names the file.
+  for (const auto& [back, what] : {std::pair<size_t, const char*>{2 * block + 3, "densities"},
+                                   {block + 3, "cloud tops"},
+                                   {3, "cover contrasts"}}) {
     std::string flipped = whole;
     flipped[flipped.size() - back] ^= 0x40;
     files::write_file(part, flipped.data(), flipped.size());

@@ -856,18 +856,23 @@ TEST_CASE("pockets of open cells are separate, sharp and larger than 1e4 km2, an
   CHECK(glsl::with_pockets(glsl::vec2(0.8f, 0.1f), 0.0f) == glsl::vec2(0.8f, 0.1f));
 }
 
-TEST_CASE("the trades' shallow regime shrinks the noise about its mean and leaves the systems and the mid-latitudes",
+TEST_CASE("the trades' shallow regime shrinks the cloud's excess and leaves the systems and the mid-latitudes",
           "[fast][systems]") {
-  // The squash: weight 0 is the identity, weight 1 keeps the mean and shrinks every deviation to
-  // SHALLOW_CONTRAST of it, and any weight keeps the order of the densities.
-  for (float d : {0.2f, 0.47f, 0.6f, 0.9f}) {
-    CHECK(glsl::with_shallow_trades(d, 0.0f) == d);
-    CHECK(glsl::with_shallow_trades(d, 1.0f) - glsl::NOISE_MEAN ==
-          Approx(glsl::SHALLOW_CONTRAST * (d - glsl::NOISE_MEAN)).margin(1e-6));
-  }
-  for (float w : {0.0f, 0.3f, 1.0f})
-    for (int k = 1; k < 100; ++k)
-      CHECK(glsl::with_shallow_trades(0.01f * k, w) > glsl::with_shallow_trades(0.01f * (k - 1), w));
+  // The contrast: 1 without the regime, SHALLOW_CONTRAST with all of it, linear between; a
+  // cloudy texel's excess over the threshold shrinks by it, a clear texel keeps its density, and
+  // any contrast keeps the order of the cloudy densities.
+  CHECK(glsl::cover_contrast(0.0f) == 1.0f);
+  CHECK(glsl::cover_contrast(1.0f) == Approx(glsl::SHALLOW_CONTRAST).margin(1e-7));
+  CHECK(glsl::cover_contrast(0.5f) == Approx(0.5f * (1.0f + glsl::SHALLOW_CONTRAST)).margin(1e-7));
+  const float threshold = 0.45f;
+  for (float d : {0.2f, 0.45f}) CHECK(glsl::contrasted_density(d, threshold, glsl::SHALLOW_CONTRAST) == d);
+  for (float d : {0.5f, 0.6f, 0.9f})
+    CHECK(glsl::contrasted_density(d, threshold, glsl::SHALLOW_CONTRAST) - threshold ==
+          Approx(glsl::SHALLOW_CONTRAST * (d - threshold)).margin(1e-7));
+  for (float c : {0.08f, 0.5f, 1.0f})
+    for (int k = 46; k < 100; ++k)
+      CHECK(glsl::contrasted_density(0.01f * k, threshold, c) >
+            glsl::contrasted_density(0.01f * (k - 1), threshold, c));
   // The weight: the whole regime in the tropics where nothing organises the cloud, none beyond 33
   // degrees, none in a comma cloud, an ITCZ cluster or a deck, and the cumulus clumps and cirrus
   // are part of it.

@@ -14,6 +14,8 @@ layout(r32f, binding = 1) uniform writeonly image2DArray density_field;
 layout(rgba32f, binding = 2) uniform readonly image2DArray curl_field;
 layout(binding = 3) uniform sampler2D surface_bias;  // equirect, row 0 north, longitude -180 at s = 0
 layout(r32f, binding = 5) uniform writeonly image2DArray cloud_top_field;  // km above sea level
+// The share of a cloudy texel's excess over the threshold that its cover shows (cover_density.glsl).
+layout(r32f, binding = 6) uniform writeonly image2DArray cover_contrast_field;
 // MOVING_LAYERS 1 (--flow moving): two cloud layers of their own noise, warp_field the older's
 // points and young_warp_field the younger's, blended with the younger's share u_young_share.
 #ifndef MOVING_LAYERS
@@ -157,13 +159,14 @@ void main() {
     types.cirrus = fields.z / BELT_WEIGHTS.z;
     float latitude = portable_asin(clamp(direction.z, -1.0f, 1.0f));
     float deck = deck_presence(cells.x);
-    // In the trades the cloud no system organises is shallow cumulus or thin cirrus: grey between
-    // the systems. Squashed with the flow's factor, whose smooth field would otherwise be all the
-    // texture left there, and before the surface's, which keeps the deserts clear.
-    float lifted = shaped_density(with_systems(noise, systems), cyclonic, u_cyclone_cloudiness, 0.0f, 0.0f);
-    float shallow = with_shallow_trades(lifted, shallow_trades_weight(types, latitude, deck, u_systems.shallow_trades));
-    float density = with_cells(shaped_density(shallow, 0.0f, 0.0f, surface, u_surface_weight), cells.y + streets);
+    float density =
+        with_cells(with_systems(shaped_density(noise, cyclonic, u_cyclone_cloudiness, surface, u_surface_weight), systems),
+                   cells.y + streets);
     imageStore(density_field, texel, vec4(density, 0.0f, 0.0f, 0.0f));
+    // In the trades the cloud no system organises is shallow cumulus or thin cirrus: dim between
+    // the systems.
+    float contrast = cover_contrast(shallow_trades_weight(types, latitude, deck, u_systems.shallow_trades));
+    imageStore(cover_contrast_field, texel, vec4(contrast, 0.0f, 0.0f, 0.0f));
     // The cloud's top by its types (the remap clears it where the texel stays clear).
     imageStore(cloud_top_field, texel, vec4(cloud_top_km(types, latitude, cyclonic, deck), 0.0f, 0.0f, 0.0f));
     low = min(low, sortable_bits(density));

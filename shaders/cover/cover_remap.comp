@@ -7,12 +7,15 @@
 // (as the reductions of coverage_histogram.comp).
 // The pass also writes the cloud's optical thickness, log-normal by the texel's rank in density
 // among its band's cloudy texels (cloud_properties.glsl, band_tails.glsl), and clears the density
-// pass's cloud-top height where the texel stays clear: both 0 there.
+// pass's cloud-top height where the texel stays clear: both 0 there. A cloudy texel's cover shows the
+// share of its excess over the threshold that the density pass's contrast gives (dim shallow
+// cumulus in the trades: cover_density.glsl's cover_contrast).
 layout(local_size_x = 64, local_size_y = 1, local_size_z = 1) in;
 layout(r32f, binding = 0) uniform readonly image2DArray density_field;
 layout(r32f, binding = 1) uniform writeonly image2DArray cover_field;
 layout(r32f, binding = 2) uniform writeonly image2DArray optical_thickness_field;
 layout(r32f, binding = 3) uniform image2DArray cloud_top_field;  // km; the density pass's
+layout(r32f, binding = 4) uniform readonly image2DArray cover_contrast_field;  // the density pass's
 #include "../lib/cover_density.glsl"
 #include "../lib/cloud_properties.glsl"
 #include "band_tails.glsl"
@@ -59,7 +62,9 @@ void main() {
         run_units += texel_weight(at.x, at.y, size);
       }
     }
-    imageStore(cover_field, texel, vec4(cover_from_density(density, threshold, u_density_max, u_softness), 0.0f, 0.0f, 0.0f));
+    float contrast = imageLoad(cover_contrast_field, texel).x;
+    float cover = cover_from_density(contrasted_density(density, threshold, contrast), threshold, u_density_max, u_softness);
+    imageStore(cover_field, texel, vec4(cover, 0.0f, 0.0f, 0.0f));
     bool cloudy = density > threshold;
     float tau = cloudy ? optical_thickness_from_rank(
                              cloudy_rank(density_tail(direction, density), density_tail(direction, threshold)),

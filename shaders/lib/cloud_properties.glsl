@@ -131,7 +131,7 @@ float trades_belt(float latitude) { return 1.0f - smoothstep(0.45f, 0.58f, abs(l
 // where no system organises the cloud, times the regime's strength (--shallow-trades). There the
 // cloud of a 10-100 km texel is a field of small cumulus over much clear sea, which covers a
 // fifth to a third of it (Nuijens et al. 2014; "sugar" and "gravel" of Stevens et al. 2020), not
-// a bright sheet (cover_density.glsl's with_shallow_trades).
+// a bright sheet (cover_density.glsl's cover_contrast).
 float shallow_trades_weight(IN(CloudTypes) types, float latitude, float deck, float strength) {
   return clamp(strength, 0.0f, 1.0f) * trades_belt(latitude) * (1.0f - organised_cloud(types, deck));
 }

@@ -65,20 +65,21 @@ float with_systems(float density, float systems) {
 // open cells' centres onto their walls.
 float with_cells(float density, float modulation) { return density * (1.0f + modulation); }
 
-// The trades' shallow cumulus (cloud_properties.glsl's shallow_trades_weight w): the noise about its
-// mean shrunk to SHALLOW_CONTRAST of its spread where w = 1, so that the calibration, which ranks the
-// densities, still finds cloud there (the band's share of cloudy texels does not change) but little
-// of it rises far above the threshold: the remap leaves it grey, a partly cloudy texel, and its rank
-// gives it a small optical thickness, while the systems around keep their contrast and stay bright.
-// Applied to the noise lifted by the systems (with_systems), so that the thin systems (the cirrus
-// streaks) stay grey there too, and before the factors of the surface and the flow, so that deserts
-// stay clear. A rank-preserving map where w is the same: the cloud's texture and edges stay.
-// 0.3: the noise's cloud, up to about two spreads above a threshold near the mean, then rises at most
-// 0.044 above it, which the default softness (0.05) maps to covers 0.1-0.6, most below 0.35, as the
-// trades' cumulus cover a fifth to a third of the sky (Nuijens et al. 2014).
+// The share of a cloudy texel's excess of density over the threshold that its cover shows: 1 where
+// a system organises the cloud, SHALLOW_CONTRAST in the trades' shallow cumulus, from their weight w
+// (cloud_properties.glsl's shallow_trades_weight): 1 - w (1 - SHALLOW_CONTRAST). The density pass
+// writes it beside the density, and the remap shrinks the excess by it (contrasted_density): which
+// texels are cloudy, and so every band's coverage, the shapes and the optical thickness's ranks, are
+// the density's, and only the brightness of the cloud changes. 0.08: the noise's cloud a spread
+// (0.074) above the threshold then gets cover 1 - 0.9 exp(-0.08 x 0.074 / 0.05) = 0.20 at the
+// default softness, two spreads 0.29, as the trades' low cloud amount of 20-30 % (Brueck et al. 2015).
 const float SHALLOW_CONTRAST = 0.08f;
-float with_shallow_trades(float noise, float weight) {
-  return noise - clamp(weight, 0.0f, 1.0f) * (1.0f - SHALLOW_CONTRAST) * (noise - NOISE_MEAN);
+float cover_contrast(float shallow_weight) { return 1.0f - clamp(shallow_weight, 0.0f, 1.0f) * (1.0f - SHALLOW_CONTRAST); }
+
+// The density whose cover the remap gives a cloudy texel: the threshold plus the excess times the
+// contrast (cover_contrast); the density itself where the texel is clear or the contrast 1.
+float contrasted_density(float density, float threshold, float contrast) {
+  return density > threshold ? threshold + contrast * (density - threshold) : density;
 }
 
 // The cover of a cloudy texel just above the threshold: cloud boundaries are steps of optical

@@ -52,9 +52,11 @@ void CoverageRemap::begin_remap() const {
   }
 }
 
-void CoverageRemap::remap(const gpu::Texture& density, const CoverFields& fields, const CubeRegion& region) const {
+void CoverageRemap::remap(const gpu::Texture& density, const gpu::Texture& contrast, const CoverFields& fields,
+                          const CubeRegion& region) const {
   namespace remap = shader_bindings::cover_cover_remap;
   density.bind_image_layers(remap::density_field, GL_READ_ONLY);
+  contrast.bind_image_layers(remap::cover_contrast_field, GL_READ_ONLY);
   fields.cover.bind_image_layers(remap::cover_field, GL_WRITE_ONLY);
   fields.optical_thickness.bind_image_layers(remap::optical_thickness_field, GL_WRITE_ONLY);
   fields.cloud_top.bind_image_layers(remap::cloud_top_field, GL_READ_WRITE);

@@ -34,7 +34,9 @@ class CoverageRemap {
   // The optical thickness follows the rank of a texel's density among its band's cloudy texels,
   // from the calibration's coarse histograms (one more histogram for --profile flat).
   void begin_remap() const;
-  void remap(const gpu::Texture& density, const CoverFields& fields, const CubeRegion& region) const;
+  // `contrast`: the density pass's cover contrast of the same region (cover_density.glsl).
+  void remap(const gpu::Texture& density, const gpu::Texture& contrast, const CoverFields& fields,
+             const CubeRegion& region) const;
   const CoverageCalibration& finish_remap();
 
   const CoverageCalibration& result() const { return result_; }

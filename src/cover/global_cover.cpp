@@ -13,12 +13,12 @@ namespace nephele::cover {
 
 double cover_gpu_bytes(int size, Flow flow) {
   const double texels = 6.0 * size * size;
-  // identity, curl, warp; density, cover, optical thickness, cloud top; and two RGBA32F cubes the
+  // identity, curl, warp; density, cover contrast, cover, optical thickness, cloud top; and two RGBA32F cubes the
   // warp pass adds for long or adaptive integrations (a scratch map and the adaptive state).
   // --flow moving adds the younger cloud layer's warp (RGBA32F) and its flow grids, 6 x 16 x
   // (curl_size + 4)^2 bytes a time node (8 nodes at the defaults: 52 MiB; not counted, as the
   // steady spline's grid).
-  const double cubes = texels * (16.0 * (flow == Flow::moving ? 6 : 5) + 4.0 * 4);
+  const double cubes = texels * (16.0 * (flow == Flow::moving ? 6 : 5) + 4.0 * 5);
   // The equirect export holds one R32F tile of the 4 size x 2 size map at a time; the
   // calibration and diagnosis their tables and partial sums.
   const double equirect = std::min(8.0 * size * size, double(default_equirect_tile) * default_equirect_tile) * 4.0;
@@ -100,6 +100,7 @@ void GlobalCover::make_fields() {
   cover_field_ = make_field(GL_R32F);
   optical_thickness_field_ = make_field(GL_R32F);
   cloud_top_field_ = make_field(GL_R32F);
+  cover_contrast_field_ = make_field(GL_R32F);
   if (young_warp_field_.id()) young_warp_field_ = make_field(GL_RGBA32F);
 }
 
@@ -516,6 +517,7 @@ void GlobalCover::run_density() {
     warp_field_.bind_image_layers(density::warp_field, GL_READ_ONLY);
     density_field_.bind_image_layers(density::density_field, GL_WRITE_ONLY);
     cloud_top_field_.bind_image_layers(density::cloud_top_field, GL_WRITE_ONLY);
+    cover_contrast_field_.bind_image_layers(density::cover_contrast_field, GL_WRITE_ONLY);
     curl_field_.bind_image_layers(density::curl_field, GL_READ_ONLY);
     glBindTextureUnit(density::surface_bias, surface_bias_.id());
     // The pass also reduces the density range for the calibration; an invocation per strip of
@@ -540,7 +542,8 @@ CoverageCalibration GlobalCover::run_coverage() {
   });
   timed("coverage", [&] {
     coverage_.begin_remap();
-    coverage_.remap(density_field_, {cover_field_, optical_thickness_field_, cloud_top_field_}, region_);
+    coverage_.remap(density_field_, cover_contrast_field_, {cover_field_, optical_thickness_field_, cloud_top_field_},
+                    region_);
     coverage_.finish_remap();
   });
   return coverage_.result();

@@ -90,6 +90,9 @@ class GlobalCover {
   // (cloud_properties.glsl; after run_coverage, the top's clear texels after it too).
   const gpu::Texture& optical_thickness_field() const { return optical_thickness_field_; }
   const gpu::Texture& cloud_top_field() const { return cloud_top_field_; }
+  // The share of a cloudy texel's density excess that its cover shows (cover_density.glsl's
+  // cover_contrast: below 1 in the trades' shallow cumulus), from the density pass.
+  const gpu::Texture& cover_contrast_field() const { return cover_contrast_field_; }
   const CoverageCalibration& calibration() const { return coverage_.result(); }
   // The latitude profile's calibration (absent with --profile flat, whose threshold is
   // calibration().threshold).
@@ -136,7 +139,7 @@ class GlobalCover {
   int splines_nodes_ = 0;
   bool splines_current_ = false;  // flow_splines_ holds the window of the cover's time
   gpu::Texture identity_field_, curl_field_, warp_field_, density_field_, cover_field_;
-  gpu::Texture optical_thickness_field_, cloud_top_field_;
+  gpu::Texture optical_thickness_field_, cloud_top_field_, cover_contrast_field_;
   gpu::Texture young_warp_field_;  // --flow moving: the younger cloud layer's warp
   // --flow moving finer than --warp-grid: the trajectories' prefiltered ends at the grid's nodes,
   // 12 layers (the older layer's faces, then the younger's), and whether they are the frame's.

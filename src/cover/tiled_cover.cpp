@@ -49,6 +49,7 @@ TileDensity TileRunner::run(int index) {
   };
   tile.density = owned(all);
   tile.cloud_top = owned(cover_->cloud_top_field().read());
+  tile.cover_contrast = owned(cover_->cover_contrast_field().read());
   tile.timings.assign(cover_->timings().begin() + static_cast<std::ptrdiff_t>(before), cover_->timings().end());
   return tile;
 }
@@ -64,6 +65,7 @@ const gpu::Texture& TiledCoverage::upload(int index, const std::vector<float>& d
     cover_ = gpu::Texture::layered(region.face_size, region.rows, 1, GL_R32F);
     optical_thickness_ = gpu::Texture::layered(region.face_size, region.rows, 1, GL_R32F);
     cloud_top_ = gpu::Texture::layered(region.face_size, region.rows, 1, GL_R32F);
+    contrast_ = gpu::Texture::layered(region.face_size, region.rows, 1, GL_R32F);
   }
   density_.write(density);
   return density_;
@@ -81,6 +83,7 @@ const CoverageCalibration& TiledCoverage::calibrate(std::pair<float, float> rang
 }
 
 const CoverageCalibration& TiledCoverage::remap(const LoadTileDensity& load, const LoadTileDensity& load_cloud_top,
+                                                const LoadTileDensity& load_contrast,
                                                 const std::function<void(int index, const CoverPlanes& cover)>& take) {
   coverage_.begin_remap();
   for (int index = 0; index < tiling_.count; ++index) {
@@ -89,7 +92,10 @@ const CoverageCalibration& TiledCoverage::remap(const LoadTileDensity& load, con
     const std::vector<float> tops = load_cloud_top(index);
     check_tile_values(index, tops, region, "cloud tops");
     cloud_top_.write(tops);
-    coverage_.remap(density, {cover_, optical_thickness_, cloud_top_}, region);
+    const std::vector<float> contrasts = load_contrast(index);
+    check_tile_values(index, contrasts, region, "cover contrasts");
+    contrast_.write(contrasts);
+    coverage_.remap(density, contrast_, {cover_, optical_thickness_, cloud_top_}, region);
     take(index, CoverPlanes{cover_.read(), optical_thickness_.read(), cloud_top_.read()});
   }
   return coverage_.finish_remap();

@@ -17,9 +17,10 @@ namespace nephele::cover {
 // What a tile's passes leave for the coverage: its densities and its share of the reductions.
 struct TileDensity {
   int index = 0;
-  CubeRegion region;             // the tile with its halo
-  std::vector<float> density;    // its owned rows, row by row from the first (N texels a row)
-  std::vector<float> cloud_top;  // the density pass's cloud-top heights there, km (cloud_properties.glsl)
+  CubeRegion region;                  // the tile with its halo
+  std::vector<float> density;         // its owned rows, row by row from the first (N texels a row)
+  std::vector<float> cloud_top;       // the density pass's cloud-top heights there, km (cloud_properties.glsl)
+  std::vector<float> cover_contrast;  // and its cover contrast (cover_density.glsl)
   float density_min = 0.0f, density_max = 0.0f;
   DiagnosisSums diagnosis;
   std::vector<PassTiming> timings;
@@ -64,8 +65,9 @@ class TiledCoverage {
   // the tiles per histogram), with the range the tiles' density passes reduced.
   const CoverageCalibration& calibrate(std::pair<float, float> range, const LoadTileDensity& load);
   // Each tile's fields in turn (its owned rows, as TileDensity::density) to `take`, from its
-  // densities and cloud tops; then the achieved fractions.
+  // densities, cloud tops and cover contrasts; then the achieved fractions.
   const CoverageCalibration& remap(const LoadTileDensity& load, const LoadTileDensity& load_cloud_top,
+                                   const LoadTileDensity& load_contrast,
                                    const std::function<void(int index, const CoverPlanes& cover)>& take);
   const CoverageCalibration& calibration() const { return coverage_.result(); }
   const std::optional<BandCalibration>& bands() const { return coverage_.bands(); }
@@ -76,7 +78,7 @@ class TiledCoverage {
   CoverParameters parameters_;
   CubeTiling tiling_;
   CoverageRemap coverage_;
-  gpu::Texture density_, cover_, optical_thickness_, cloud_top_;
+  gpu::Texture density_, cover_, optical_thickness_, cloud_top_, contrast_;
 };
 
 }  // namespace nephele::cover

@@ -148,6 +148,9 @@ AssembledCover write_assembled_cover(files::OutputSet& outputs, const std::vecto
   const cover::LoadTileDensity load_cloud_top = [&](int index) {
     return read_tile_cloud_tops(parts[static_cast<size_t>(index)]);
   };
+  const cover::LoadTileDensity load_contrast = [&](int index) {
+    return read_tile_cover_contrasts(parts[static_cast<size_t>(index)]);
+  };
   say("calibrate");
   auto start = Clock::now();
   coverage.calibrate(range, load);
@@ -183,7 +186,7 @@ AssembledCover write_assembled_cover(files::OutputSet& outputs, const std::vecto
   }
   double face_ms = 0.0;
   start = Clock::now();
-  coverage.remap(load, load_cloud_top, [&](int index, const CoverPlanes& planes) {
+  coverage.remap(load, load_cloud_top, load_contrast, [&](int index, const CoverPlanes& planes) {
     const cover::CubeRegion region = cover::owned_region(tiling.tile(index));
     say("tile " + std::to_string(index + 1) + " of " + std::to_string(count));
     const std::vector<float>& cover = planes.cover;

@@ -18,7 +18,7 @@
 namespace nephele::io {
 namespace {
 
-constexpr char magic[8] = {'N', 'E', 'P', 'H', 'T', 'I', 'L', '2'};
+constexpr char magic[8] = {'N', 'E', 'P', 'H', 'T', 'I', 'L', '3'};
 constexpr std::uint64_t max_header_bytes = 1u << 20;
 
 // 64-bit integers as decimal text: JSON numbers (doubles) hold 53 bits.
@@ -105,7 +105,7 @@ void write_tile_part(const std::filesystem::path& directory, const cover::TileDe
   const cover::CubeRegion& r = tile.region;
   const std::uint64_t bytes = tile.density.size() * sizeof(float);
   json::Value header;
-  header.set("format", "nephele tile part 2");
+  header.set("format", "nephele tile part 3");
   header.set("tile", tile.index);
   header.set("tiles", tile_count);
   header.set("face_size", r.face_size);
@@ -125,9 +125,10 @@ void write_tile_part(const std::filesystem::path& directory, const cover::TileDe
   header.set("timings_ms", timings);
   header.set("density_bytes", u64_text(bytes));
   header.set("density_hash", u64_text(core::block_hash(tile.density.data(), bytes)));
-  if (tile.cloud_top.size() != tile.density.size())
-    throw std::invalid_argument("write_tile_part: a cloud top per density");
+  if (tile.cloud_top.size() != tile.density.size() || tile.cover_contrast.size() != tile.density.size())
+    throw std::invalid_argument("write_tile_part: a cloud top and a cover contrast per density");
   header.set("cloud_top_hash", u64_text(core::block_hash(tile.cloud_top.data(), bytes)));
+  header.set("contrast_hash", u64_text(core::block_hash(tile.cover_contrast.data(), bytes)));
   header.set("cover", identity);
   const std::string text = json::write(header);
   const std::uint64_t length = text.size();
@@ -135,7 +136,8 @@ void write_tile_part(const std::filesystem::path& directory, const cover::TileDe
                                                                {&length, sizeof length},
                                                                {text.data(), text.size()},
                                                                {tile.density.data(), bytes},
-                                                               {tile.cloud_top.data(), bytes}});
+                                                               {tile.cloud_top.data(), bytes},
+                                                               {tile.cover_contrast.data(), bytes}});
 }
 
 TilePart read_tile_header(const std::filesystem::path& path) {
@@ -145,8 +147,8 @@ TilePart read_tile_header(const std::filesystem::path& path) {
   char head[16];
   if (!in.read(head, sizeof head) || std::memcmp(head, magic, sizeof magic) != 0)
     throw core::InputFileError(shown +
-                               ": not a nephele tile part (no NEPHTIL2 magic; older parts (NEPHTIL1) hold no cloud "
-                               "tops: generate them again)");
+                               ": not a nephele tile part (no NEPHTIL3 magic; older parts (NEPHTIL1, NEPHTIL2) hold no "
+                               "cloud tops or cover contrasts: generate them again)");
   std::uint64_t length = 0;
   std::memcpy(&length, head + 8, sizeof length);
   if (length == 0 || length > max_header_bytes || 16 + length > file_bytes)
@@ -204,11 +206,13 @@ TilePart read_tile_header(const std::filesystem::path& path) {
   const std::uint64_t bytes = h.u64(root, "density_bytes");
   if (bytes != static_cast<std::uint64_t>(r.owned_texels()) * sizeof(float))
     h.fail("density_bytes", "is not the tile's " + std::to_string(r.owned_texels()) + " float32 densities");
-  if (file_bytes != part.data_offset + 2 * bytes)
+  if (file_bytes != part.data_offset + 3 * bytes)
     throw core::InputFileError(shown + ": " + std::to_string(file_bytes - part.data_offset) +
-                               " bytes of densities and cloud tops, not twice the header's " + std::to_string(bytes));
+                               " bytes of densities, cloud tops and cover contrasts, not three times the header's " +
+                               std::to_string(bytes));
   part.density_hash = h.u64(root, "density_hash");
   part.cloud_top_hash = h.u64(root, "cloud_top_hash");
+  part.contrast_hash = h.u64(root, "contrast_hash");
   part.identity = h.at(root, "cover");
   return part;
 }
@@ -260,6 +264,10 @@ std::vector<float> read_tile_densities(const TilePart& part) {
 
 std::vector<float> read_tile_cloud_tops(const TilePart& part) {
   return read_tile_block(part, 1, part.cloud_top_hash, "cloud tops", "cloud_top_hash");
+}
+
+std::vector<float> read_tile_cover_contrasts(const TilePart& part) {
+  return read_tile_block(part, 2, part.contrast_hash, "cover contrasts", "contrast_hash");
 }
 
 }  // namespace nephele::io

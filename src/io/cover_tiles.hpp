@@ -3,13 +3,14 @@
 // docs/scale.md; the format in docs/formats.md, "Tile parts"). One file per tile,
 // tile_NNNNNN.part, written whole or not at all (files::replace_file), so that the tasks of a
 // job array share the directory and a task run again replaces its parts:
-//   8 bytes   "NEPHTIL2"
+//   8 bytes   "NEPHTIL3"
 //   8 bytes   L, the header's length (unsigned, little-endian)
 //   L bytes   the header, JSON: the tile's place, its density range and diagnosis sums, its
-//             timings, the densities' byte count, the block hashes of the densities and the
-//             cloud tops, and the cover it belongs to
+//             timings, the densities' byte count, the block hashes of the densities, the
+//             cloud tops and the cover contrasts, and the cover it belongs to
 //   B bytes   the tile's owned densities, float32 little-endian, row by row (face_size a row)
 //   B bytes   their cloud-top heights (km), the same way
+//   B bytes   their cover contrasts (cover_density.glsl), the same way
 #include <cstdint>
 #include <filesystem>
 #include <optional>
@@ -39,6 +40,7 @@ struct TilePart {
   json::Value identity;
   std::uint64_t density_hash = 0;
   std::uint64_t cloud_top_hash = 0;
+  std::uint64_t contrast_hash = 0;
   std::uint64_t data_offset = 0;
 };
 
@@ -51,7 +53,8 @@ std::optional<TilePart> find_tile_part(const std::filesystem::path& directory, i
 TilePart read_tile_header(const std::filesystem::path& path);
 // The densities of a part, checked against the header's hash; throws core::InputFileError.
 std::vector<float> read_tile_densities(const TilePart& part);
-// Its cloud-top heights, checked the same way.
+// Its cloud-top heights and cover contrasts, checked the same way.
 std::vector<float> read_tile_cloud_tops(const TilePart& part);
+std::vector<float> read_tile_cover_contrasts(const TilePart& part);
 
 }  // namespace nephele::io
