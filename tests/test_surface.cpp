@@ -47,18 +47,62 @@ bool continent(double latitude, double longitude) {
 }  // namespace
 
 TEST_CASE("the surface bias is zero over open ocean and the desert weight over wide land", "[fast][surface]") {
-  // The filters (weights summing to 1) keep a constant field: 0 for all ocean. All land gives
-  // -S(lat) blurred along latitude by a 2.2-degree kernel: at the peak (24 degrees) S'' =
-  // -2/64 per degree^2 lowers it by about |S''| sigma^2 / 2 = 0.08 (0.1 allowed); at 60
-  // degrees S = exp(-20), and the kernel reaches 7 degrees at most: below 1e-4.
+  // The filters (weights summing to 1) keep a constant field: 0 for all ocean. All land, every
+  // cell infinitely far from the sea, gives -max(S(lat), S_interior(lat)) blurred along latitude
+  // by a 2.2-degree kernel: at the peaks (24 and 43 degrees) the curvature 2/64 per degree^2
+  // lowers it by about sigma^2 / 32 = 0.08 (0.1 allowed); at 70 degrees both weights are below
+  // exp(-11), and the kernel reaches 7 degrees at most: below 1e-4.
   const auto ocean = cover::surface_bias(synthetic([](double, double) { return false; }));
   for (float b : ocean) REQUIRE(b == 0.0f);
   const auto land = cover::surface_bias(synthetic([](double, double) { return true; }));
   CHECK(bias_at(land, 24.25, 0) == Approx(-1.0).margin(0.1));
   CHECK(bias_at(land, -24.25, 100) == Approx(-1.0).margin(0.1));
-  CHECK(std::abs(bias_at(land, 60.25, 0)) < 1e-4);
+  CHECK(bias_at(land, 43.25, 200) == Approx(-1.0).margin(0.1));
+  CHECK(std::abs(bias_at(land, 70.25, 0)) < 1e-4);
   CHECK(cover::desert_weight(24.0) == 1.0);
   CHECK(cover::deck_weight(-22.0) == 1.0);
+  CHECK(cover::interior_weight(-43.0) == 1.0);
+  CHECK(cover::inland(500.0) == 0.0);
+  CHECK(cover::inland(1000.0) == 0.5);
+  CHECK(cover::inland(1500.0) == 1.0);
+}
+
+TEST_CASE("the distance to the ocean is the path through the grid, exact along a latitude circle", "[fast][surface]") {
+  // Ocean west of Greenwich, land east of it: along the equator and along 60 N the nearest ocean
+  // cell lies due west, so the distance is the east-west arc to the coast's ocean cell centre,
+  // R cos(lat) dlon, exact for a path along the row (to within the half-cell where the coast
+  // falls: 0.25 degrees of longitude); a path leaving the row is no shorter on a grid of
+  // eight neighbours.
+  const auto grid = synthetic([](double, double longitude) { return longitude > 0 && longitude < 180; });
+  const auto distance = cover::ocean_distance_km(grid);
+  const auto at = [&](double latitude, double longitude) { return bias_at(distance, latitude, longitude); };
+  const double degree_km = 6371.0 * M_PI / 180.0;
+  for (double latitude : {0.25, 60.25}) {
+    const double per_degree = degree_km * std::cos(latitude * M_PI / 180.0);
+    for (double east : {10.25, 40.25}) {
+      INFO("latitude " << latitude << ", " << east << " degrees east of the coast");
+      CHECK(at(latitude, east) == Approx((east + 0.25) * per_degree).margin(0.5 * per_degree));
+    }
+  }
+  CHECK(at(0.25, -10.25) == 0.0f);  // the ocean itself
+  // No ocean at all: infinitely far.
+  for (float d : cover::ocean_distance_km(synthetic([](double, double) { return true; }))) REQUIRE(std::isinf(d));
+}
+
+TEST_CASE("a continent's mid-latitude interior is dry far from the sea and not near its coasts", "[fast][surface]") {
+  // A continent from 0 to 120 E, 20 to 70 N: at 45 N 60 E the sea is 25 degrees away (2780 km),
+  // so the whole interior weight S_interior(45) = exp(-1/16) = 0.94 clears it, less the blur's
+  // rounding of the weight's peak (its curvature 0.026 per degree^2 times sigma^2 / 2 = 2.4:
+  // 0.06; 0.08 allowed, as for the deserts' peak); 3 degrees from its
+  // west coast (236 km) the inland factor is 0 within the blur's reach (7 degrees at most, where
+  // the coast is 550 km away at most: inland below 0.01), and south of 30 N the subtropical
+  // desert weight takes over as before.
+  const auto bias = cover::surface_bias(synthetic([](double latitude, double longitude) {
+    return longitude >= 0 && longitude <= 120 && latitude >= 20 && latitude <= 70;
+  }));
+  CHECK(bias_at(bias, 45.0, 60.0) == Approx(-cover::interior_weight(45.0)).margin(0.08));
+  CHECK(std::abs(bias_at(bias, 45.0, 3.0)) < 0.02);
+  CHECK(bias_at(bias, 50.0, 60.0) < bias_at(bias, 50.0, 10.0));
 }
 
 TEST_CASE("a continent gets a desert inside and a deck off its west coast, none off its east coast",
@@ -75,9 +119,11 @@ TEST_CASE("a continent gets a desert inside and a deck off its west coast, none 
   CHECK(std::abs(bias_at(bias, 22.0, 70.0)) < 1e-6);
   CHECK(std::abs(bias_at(bias, 0.0, -120.0)) < 1e-6);
   // Beyond the subtropics the desert weight fades: inside the land at 40 N, S(40) = exp(-4) =
-  // 0.018, raised by the blur where S is convex (S'' = 14/64 S per degree^2 there, times
-  // sigma^2 / 2 = 2.5: +0.01, and more from the kernel's tails): below 0.04.
-  CHECK(std::abs(bias_at(bias, 40.0, 30.0)) < 0.04);
+  // 0.018 (raised by the blur where S is convex: +0.01), and the land there is 5 degrees (556 km)
+  // from the north coast, where the interior term is 0.87 inland(556 km) = 0.008; the blur mixes
+  // in the drier interior within 7 degrees to the south (at 35 N, 1112 km inland, 0.37 x 0.66 =
+  // 0.24, with a weight of a few per cent): below 0.1.
+  CHECK(std::abs(bias_at(bias, 40.0, 30.0)) < 0.1);
 }
 
 TEST_CASE("ETOPO5's bias clears the Sahara and puts decks off California, Peru and Namibia",
@@ -93,7 +139,10 @@ TEST_CASE("ETOPO5's bias clears the Sahara and puts decks off California, Peru a
   CHECK(bias_at(bias, -18.0, -78.0) > 0.2);            // off Peru
   CHECK(bias_at(bias, -20.0, 9.0) > 0.2);              // off Namibia
   CHECK(std::abs(bias_at(bias, 0.0, -150.0)) < 0.05);  // mid-Pacific
-  CHECK(std::abs(bias_at(bias, 50.0, 10.0)) < 0.05);   // central Europe: beyond the subtropics
+  CHECK(std::abs(bias_at(bias, 50.0, 10.0)) < 0.05);   // central Europe: the sea within 500 km
+  CHECK(bias_at(bias, 39.0, 83.0) < -0.6);             // the Taklamakan, 2000 km and more from any sea
+  CHECK(bias_at(bias, 48.0, 72.0) < -0.5);             // the Kazakh steppe
+  CHECK(std::abs(bias_at(bias, 62.0, 100.0)) < 0.05);  // central Siberia: beyond the dry belt
 }
 
 TEST_CASE("the density pass moves clouds from a continent's desert to the deck off its coast", "[surface][pass]") {

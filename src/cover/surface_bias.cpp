@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <queue>
+#include <utility>
 
 namespace nephele::cover {
 
@@ -61,14 +64,63 @@ double deck_weight(double latitude_deg) {
   return std::exp(-u * u);
 }
 
+double interior_weight(double latitude_deg) {
+  const double u = (std::abs(latitude_deg) - 43.0) / 8.0;
+  return std::exp(-u * u);
+}
+
+double inland(double ocean_distance_km) {
+  const double t = std::clamp((ocean_distance_km - 500.0) / 1000.0, 0.0, 1.0);
+  return t * t * (3.0 - 2.0 * t);
+}
+
+std::vector<float> ocean_distance_km(const SurfaceMask& grid) {
+  const int columns = grid.columns, rows = grid.rows;
+  constexpr double radius_km = 6371.0;
+  const double dlat = M_PI / rows * radius_km, dlon = 2.0 * M_PI / columns * radius_km;
+  // The steps' lengths from row j to row j + dj (dj = -1, 0, 1) and one column east or west, at
+  // the mean latitude of the two rows: step[3 j + dj + 1].
+  std::vector<double> step(3 * static_cast<size_t>(rows));
+  for (int j = 0; j < rows; ++j)
+    for (int dj = -1; dj <= 1; ++dj) {
+      const int jj = std::clamp(j + dj, 0, rows - 1);
+      const double east = dlon * std::cos((latitude_of_row(j, rows) + latitude_of_row(jj, rows)) * 0.5 * M_PI / 180.0);
+      step[3 * static_cast<size_t>(j) + dj + 1] = std::sqrt(east * east + (dj != 0 ? dlat * dlat : 0.0));
+    }
+  std::vector<double> distance(static_cast<size_t>(columns) * rows, std::numeric_limits<double>::infinity());
+  using Entry = std::pair<double, std::size_t>;
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
+  for (std::size_t k = 0; k < distance.size(); ++k)
+    if (grid.land[k] < 0.5f) distance[k] = 0.0, queue.push({0.0, k});
+  while (!queue.empty()) {
+    const auto [d, k] = queue.top();
+    queue.pop();
+    if (d > distance[k]) continue;
+    const int j = static_cast<int>(k / columns), i = static_cast<int>(k % columns);
+    for (int dj = -1; dj <= 1; ++dj) {
+      const int jj = j + dj;
+      if (jj < 0 || jj >= rows) continue;
+      for (int di = -1; di <= 1; ++di) {
+        if (di == 0 && dj == 0) continue;
+        const std::size_t n = static_cast<std::size_t>(jj) * columns + (i + di + columns) % columns;
+        const double through = d + (di == 0 ? dlat : step[3 * static_cast<size_t>(j) + dj + 1]);
+        if (through < distance[n]) distance[n] = through, queue.push({through, n});
+      }
+    }
+  }
+  return std::vector<float>(distance.begin(), distance.end());
+}
+
 std::vector<float> surface_bias(const SurfaceMask& mask) {
   const int columns = surface_bias_columns, rows = surface_bias_rows;
   const SurfaceMask grid = mask.columns == columns && mask.rows == rows ? mask : resample_surface(mask, columns, rows);
   const int reach = columns * 15 / 360;  // 15 degrees of longitude in cells
   std::vector<float> bias(static_cast<size_t>(columns) * rows);
+  const std::vector<float> distance = ocean_distance_km(grid);
   for (int j = 0; j < rows; ++j) {
     const double latitude = latitude_of_row(j, rows);
-    const double desert = desert_weight(latitude), deck = deck_weight(latitude);
+    const double subtropics = desert_weight(latitude), interior = interior_weight(latitude),
+                 deck = deck_weight(latitude);
     const float* row = &grid.land[static_cast<size_t>(j) * columns];
     for (int i = 0; i < columns; ++i) {
       const double land = row[i];
@@ -77,6 +129,7 @@ std::vector<float> surface_bias(const SurfaceMask& mask) {
         east = std::max(east, row[(i + d) % columns] * (1.0 - double(d) / reach));
         west += (1.0 - row[(i - d + columns) % columns]) / reach;
       }
+      const double desert = std::max(subtropics, interior * inland(distance[static_cast<size_t>(j) * columns + i]));
       bias[static_cast<size_t>(j) * columns + i] =
           static_cast<float>((1.0 - land) * deck * east * west - land * desert);
     }

@@ -32,9 +32,20 @@ SurfaceMask resample_surface(const SurfaceMask& mask, int columns, int rows);
 // exp(-((|lat| - 24) / 8)^2) and exp(-((|lat| - 22) / 9)^2) (docs/climate.md gives sources).
 double desert_weight(double latitude_deg);
 double deck_weight(double latitude_deg);
+// The mid-latitude continental interiors' weight at |latitude| (degrees), exp(-((|lat| - 43) / 8)^2),
+// and how far inland a cell is by its distance to the nearest ocean cell, smoothstep(500, 1500 km):
+// the dry interiors of Central Asia and of the American Great Basin and Plains, far from the sea
+// that moistens the air (docs/climate.md, "Land and ocean").
+double interior_weight(double latitude_deg);
+double inland(double ocean_distance_km);
+// Each cell's great-circle-like distance (km, on the 6371 km sphere) to the nearest cell whose land
+// fraction is below 1/2, along paths through the grid's eight neighbours (a Dijkstra search;
+// longitude wraps); a grid without ocean gives infinity everywhere.
+std::vector<float> ocean_distance_km(const SurfaceMask& grid);
 
 // b = deck - desert on the bias grid (surface_bias_columns x surface_bias_rows, the mask's
-// convention): desert = land S_desert(lat); deck = (1 - land) S_deck(lat) E W, E the largest
+// convention): desert = land max(S_desert(lat), S_interior(lat) inland(distance to the ocean));
+// deck = (1 - land) S_deck(lat) E W, E the largest
 // land fraction within 15 degrees of longitude to the east weighted by 1 - distance / 15 deg
 // (the ocean off a west coast), W the mean ocean fraction over 15 degrees to the west (open
 // ocean there: no decks in inland seas such as the Persian Gulf or the Red Sea); then three
