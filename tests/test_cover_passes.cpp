@@ -198,10 +198,10 @@ TEST_CASE("density and coverage passes agree with the CPU twin", "[pass]") {
             Approx(expected_contrast).epsilon(0).margin(systems_error + kSystems + 12 * test::kPortableAsin));
     // The remap's exp: its argument's error over the softness (kCoverRemap of the subtraction and
     // the contrast's product, divided by s) and the exp's own rounding, at the GPU's contrast.
-    REQUIRE(covered[k] == Approx(cover_from_density(contrasted_density(density[k], c.threshold, contrast[k]),
-                                                    c.threshold, c.density_max, p.cover_softness))
-                              .epsilon(0)
-                              .margin(2 * kCoverRemap / p.cover_softness + 4 * kUlp));
+    REQUIRE(covered[k] ==
+            Approx(contrasted_cover(density[k], c.threshold, c.density_max, p.cover_softness, contrast[k]))
+                .epsilon(0)
+                .margin(2 * kCoverRemap / p.cover_softness + 4 * kUlp));
   }
 }
 

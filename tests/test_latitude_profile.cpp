@@ -272,8 +272,7 @@ TEST_CASE("the profile's remap pass gives the CPU's cover at the smooth threshol
     const int face = static_cast<int>(k / per_face), j = static_cast<int>(k % per_face / 32),
               i = static_cast<int>(k % 32);
     const float t = cover::smooth_band_threshold(c.thresholds, glsl::texel_direction(face, i, j, 32));
-    const float expected = glsl::cover_from_density(glsl::contrasted_density(density[k], t, contrast[k]), t,
-                                                    c.density_max, p.cover_softness);
+    const float expected = glsl::contrasted_cover(density[k], t, c.density_max, p.cover_softness, contrast[k]);
     // The remap's slope is (1 - COVER_EDGE) / softness (times the contrast, at most 1); within the
     // threshold's error of the threshold a texel may fall on either side of the edge's step.
     if (std::abs(density[k] - t) <= threshold_error) continue;

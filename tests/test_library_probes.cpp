@@ -408,9 +408,11 @@ TEST_CASE("cover_density.glsl on the GPU agrees with the CPU", "[probe]") {
                      kArithmetic});
     // The two layers' blend: two products and a sum of values below 1.
     cases.push_back({arguments(PROBE_LAYER_BLEND, vec4(r(0.0f, 1.0f), r(0.0f, 1.0f), r(0.0f, 1.0f), 0)), kArithmetic});
-    // The cover contrast and the contrasted density: a clamp, a product and a sum or two of values
-    // below 2.
-    cases.push_back({arguments(PROBE_CONTRAST, vec4(r(0.0f, 1.0f), r(0.0f, 1.0f), r(0.0f, 1.0f), 0)), kArithmetic});
+    // The cover contrast (a clamp, a product and a sum) and the contrasted cover: as the cover with a
+    // softness, with one more product in the exp's argument.
+    cases.push_back({arguments(PROBE_CONTRAST, vec4(r(0.0f, 1.0f), r(0.0f, 0.5f), r(0.5f, 1.0f), 0), vec4(0.0f),
+                               vec4(0.0f), vec4(0.0f, r(0.02f, 0.3f), r(0.0f, 1.0f), 0.0f)),
+                     kTranscendental});
   }
   compare("cover_density", probe_cover_density, cases);
   // d (1 + k c)(1 + k_s b) by hand: 0.8 (1 + 0.5 x 0.6)(1 - 0.5 x 0.4) = 0.832; zero weights leave d.

@@ -864,15 +864,27 @@ TEST_CASE("the trades' shallow regime shrinks the cloud's excess and leaves the 
   CHECK(glsl::cover_contrast(0.0f) == 1.0f);
   CHECK(glsl::cover_contrast(1.0f) == Approx(glsl::SHALLOW_CONTRAST).margin(1e-7));
   CHECK(glsl::cover_contrast(0.5f) == Approx(0.5f * (1.0f + glsl::SHALLOW_CONTRAST)).margin(1e-7));
-  const float threshold = 0.45f;
-  for (float d : {0.2f, 0.45f}) CHECK(glsl::contrasted_density(d, threshold, glsl::SHALLOW_CONTRAST) == d);
+  // The contrasted cover: 0 where clear, the plain cover where the contrast is 1 (to the bit), and
+  // where it is below 1 the cover of the excess shrunk by it, still cloudy however small the
+  // excess, and in the order of the densities.
+  const float threshold = 0.45f, softness = 0.05f;
+  for (float d : {0.2f, 0.45f}) CHECK(glsl::contrasted_cover(d, threshold, 1.0f, softness, 0.08f) == 0.0f);
+  for (float d : {0.4500001f, 0.5f, 0.6f, 0.9f}) {
+    CHECK(glsl::contrasted_cover(d, threshold, 1.0f, softness, 1.0f) ==
+          glsl::cover_from_density(d, threshold, 1.0f, softness));
+    CHECK(glsl::contrasted_cover(d, threshold, 1.0f, softness, 0.08f) >= glsl::COVER_EDGE);
+  }
   for (float d : {0.5f, 0.6f, 0.9f})
-    CHECK(glsl::contrasted_density(d, threshold, glsl::SHALLOW_CONTRAST) - threshold ==
-          Approx(glsl::SHALLOW_CONTRAST * (d - threshold)).margin(1e-7));
+    CHECK(
+        glsl::contrasted_cover(d, threshold, 1.0f, softness, 0.08f) ==
+        Approx(glsl::cover_from_density(threshold + 0.08f * (d - threshold), threshold, 1.0f, softness)).margin(1e-6));
+  // Shrinking the density itself would lose a cloudy texel this close to the threshold (the sum
+  // rounds to the threshold); shrinking its excess keeps it cloudy.
+  CHECK(glsl::cover_from_density(threshold + 0.08f * (0.4500001f - threshold), threshold, 1.0f, softness) == 0.0f);
   for (float c : {0.08f, 0.5f, 1.0f})
-    for (int k = 46; k < 100; ++k)
-      CHECK(glsl::contrasted_density(0.01f * k, threshold, c) >
-            glsl::contrasted_density(0.01f * (k - 1), threshold, c));
+    for (int k = 47; k < 100; ++k)
+      CHECK(glsl::contrasted_cover(0.01f * k, threshold, 1.0f, softness, c) >
+            glsl::contrasted_cover(0.01f * (k - 1), threshold, 1.0f, softness, c));
   // The weight: the whole regime in the tropics where nothing organises the cloud, none beyond 33
   // degrees, none in a comma cloud, an ITCZ cluster or a deck, and the cumulus clumps and cirrus
   // are part of it.

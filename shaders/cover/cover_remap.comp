@@ -63,7 +63,7 @@ void main() {
       }
     }
     float contrast = imageLoad(cover_contrast_field, texel).x;
-    float cover = cover_from_density(contrasted_density(density, threshold, contrast), threshold, u_density_max, u_softness);
+    float cover = contrasted_cover(density, threshold, u_density_max, u_softness, contrast);
     imageStore(cover_field, texel, vec4(cover, 0.0f, 0.0f, 0.0f));
     bool cloudy = density > threshold;
     float tau = cloudy ? optical_thickness_from_rank(

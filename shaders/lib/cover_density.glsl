@@ -68,7 +68,7 @@ float with_cells(float density, float modulation) { return density * (1.0f + mod
 // The share of a cloudy texel's excess of density over the threshold that its cover shows: 1 where
 // a system organises the cloud, SHALLOW_CONTRAST in the trades' shallow cumulus, from their weight w
 // (cloud_properties.glsl's shallow_trades_weight): 1 - w (1 - SHALLOW_CONTRAST). The density pass
-// writes it beside the density, and the remap shrinks the excess by it (contrasted_density): which
+// writes it beside the density, and the remap shrinks the excess by it (contrasted_cover): which
 // texels are cloudy, and so every band's coverage, the shapes and the optical thickness's ranks, are
 // the density's, and only the brightness of the cloud changes. 0.08: the noise's cloud a spread
 // (0.074) above the threshold then gets cover 1 - 0.9 exp(-0.08 x 0.074 / 0.05) = 0.20 at the
@@ -76,27 +76,32 @@ float with_cells(float density, float modulation) { return density * (1.0f + mod
 const float SHALLOW_CONTRAST = 0.08f;
 float cover_contrast(float shallow_weight) { return 1.0f - clamp(shallow_weight, 0.0f, 1.0f) * (1.0f - SHALLOW_CONTRAST); }
 
-// The density whose cover the remap gives a cloudy texel: the threshold plus the excess times the
-// contrast (cover_contrast); the density itself where the texel is clear or the contrast 1.
-float contrasted_density(float density, float threshold, float contrast) {
-  return density > threshold ? threshold + contrast * (density - threshold) : density;
-}
-
 // The cover of a cloudy texel just above the threshold: cloud boundaries are steps of optical
 // thickness at a texel's scale, not ramps from nothing.
 const float COVER_EDGE = 0.1f;
 
+// The cover of a cloudy texel whose density exceeds the threshold by `excess` > 0: with softness
+// s > 0, 1 - (1 - e) exp(-excess / s), e the COVER_EDGE: cloud more than a few s above the
+// threshold (the weather systems' bands) saturates towards 1 and ends in a sharp edge, cloud just
+// above it (thin cirrus, the noise's fringes) stays grey. With s = 0 the linear ramp of earlier
+// versions over `span`, the threshold's distance to the largest density (0 or less: no cover).
+float cover_from_excess(float excess, float span, float softness) {
+  if (softness > 0.0f) return 1.0f - (1.0f - COVER_EDGE) * exp(-excess / softness);
+  return span > 0.0f ? clamp(excess / span, 0.0f, 1.0f) : 0.0f;
+}
+
 // Cover from density with the calibrated threshold: texels with density above the threshold, and
-// only those, are cloudy (cover > 0). With softness s > 0, 1 - (1 - e) exp(-(d - t) / s), e the
-// COVER_EDGE: cloud more than a few s above the threshold (the weather systems' bands) saturates
-// towards 1 and ends in a sharp edge, cloud just above it (thin cirrus, the noise's fringes)
-// stays grey. With s = 0 the linear ramp from the threshold (0) to the largest density (1) of
-// earlier versions.
+// only those, are cloudy (cover > 0; cover_from_excess).
 float cover_from_density(float density, float threshold, float density_max, float softness) {
-  if (softness > 0.0f)
-    return density > threshold ? 1.0f - (1.0f - COVER_EDGE) * exp(-(density - threshold) / softness) : 0.0f;
-  float span = density_max - threshold;
-  return span > 0.0f ? clamp((density - threshold) / span, 0.0f, 1.0f) : 0.0f;
+  return density > threshold ? cover_from_excess(density - threshold, density_max - threshold, softness) : 0.0f;
+}
+
+// The same with the excess shrunk by the density pass's cover contrast (cover_contrast): a cloudy
+// texel stays cloudy, its cover dimmer where the contrast is below 1, and equal to
+// cover_from_density's to the bit where it is 1.
+float contrasted_cover(float density, float threshold, float density_max, float softness, float contrast) {
+  return density > threshold ? cover_from_excess(contrast * (density - threshold), density_max - threshold, softness)
+                             : 0.0f;
 }
 
 #endif
