@@ -186,11 +186,7 @@ TEST_CASE("density and coverage passes agree with the CPU twin", "[pass]") {
     // so the comma's and the clusters'), the deck's presence (its Perlin noise's rounding, about
     // 1e-6, through the smoothstep's slope 7.5: within kSystems) and the latitude's (kPortableAsin
     // through the belt's slope 1.5 / 0.13); the contrast 0.92 of it.
-    CloudTypes types;
-    types.frontal = cyclones;
-    types.deep_convection = belts.x / BELT_WEIGHTS.x;
-    types.cumulus = belts.y / BELT_WEIGHTS.y;
-    types.cirrus = belts.z / BELT_WEIGHTS.z;
+    const CloudTypes types = cloud_types(cyclones, belts);
     const float here = portable_asin(clamp(vec3(identity[k]).z, -1.0f, 1.0f));
     const float expected_contrast =
         cover_contrast(shallow_trades_weight(types, here, deck_presence(deck), systems.shallow_trades));

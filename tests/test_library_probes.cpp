@@ -518,6 +518,10 @@ TEST_CASE("weather_systems.glsl on the GPU agrees with the CPU", "[probe]") {
     // band_profile: arithmetic; itcz_belt (y): one exp of -((a - b) / 0.07)^2, a value in [0, 1].
     cases.push_back({arguments(PROBE_BAND_PROFILE, vec4(r(-1.0f, 1.0f), r(0.1f, 1.0f), 0, 0)),
                      std::max(kArithmetic * 16, kTranscendental)});
+    // cloud_types: three divisions by the belts' weights (at least 0.35) of values below 1.
+    cases.push_back({arguments(PROBE_CLOUD_TYPES, vec4(r(0.0f, 1.0f), 0, 0, 0),
+                               vec4(r(0.0f, 1.0f), r(0.0f, 0.6f), r(0.0f, 0.35f), 0.0f)),
+                     4 * kArithmetic});
     // frontal_reach: a smoothstep of |z| over 0.167 (slope up to 9): kArithmetic scaled by it.
     cases.push_back(
         {arguments(PROBE_FRONTAL_REACH, vec4(0.0f), vec4(normalize(vec3(r.v(-1.0f, 1.0f)) + vec3(1e-3f)), 0.0f)),

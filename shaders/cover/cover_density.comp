@@ -152,11 +152,7 @@ void main() {
     cells = mix(cells, cells_at(normalize(young_warped), u_young_systems_seed, surface, cold, texel_arc), u_young_share);
 #endif
     float cyclonic = curl.w;
-    CloudTypes types;
-    types.frontal = cyclones;
-    types.deep_convection = fields.x / BELT_WEIGHTS.x;
-    types.cumulus = fields.y / BELT_WEIGHTS.y;
-    types.cirrus = fields.z / BELT_WEIGHTS.z;
+    CloudTypes types = cloud_types(cyclones, fields);
     float latitude = portable_asin(clamp(direction.z, -1.0f, 1.0f));
     float deck = deck_presence(cells.x);
     float density =

@@ -15,6 +15,7 @@
 #include "worley.glsl"
 #include "worley_fbm.glsl"
 #include "perlin.glsl"
+#include "cloud_properties.glsl"
 
 #define MAX_CYCLONES 32
 
@@ -545,6 +546,16 @@ vec3 belts_over_surface(vec3 fields, float surface) {
 }
 // The belts' cloud from their weighted fields: the largest.
 float belt_cloud(vec3 fields) { return max(max(fields.x, fields.y), max(fields.z, 0.0f)); }
+// The cloud types at a texel from the cyclones' cloud and the belts' weighted fields, each divided
+// by its weight so that a system's core is 1 (cloud_properties.glsl's CloudTypes).
+CloudTypes cloud_types(float cyclones, vec3 fields) {
+  CloudTypes types;
+  types.frontal = cyclones;
+  types.deep_convection = fields.x / BELT_WEIGHTS.x;
+  types.cumulus = fields.y / BELT_WEIGHTS.y;
+  types.cirrus = fields.z / BELT_WEIGHTS.z;
+  return types;
+}
 float belt_systems(vec3 p, float latitude, IN(WeatherSystems) systems, uint seed, float edge) {
   return belt_cloud(belt_fields(p, latitude, systems, seed, edge));
 }

@@ -32,8 +32,9 @@ double whole_cover_bytes(int size, Flow flow) { return cover_gpu_bytes(size, flo
 double tile_bytes(int size, int rows, Flow flow) {
   const double texels = double(size) * rows;
   // identity, curl, warp (and the moving flow's younger warp), a scratch map and the adaptive
-  // state: RGBA32F; density and cover: R32F; the densities read back and copied: 2 x 4 bytes.
-  const double maps = texels * (16.0 * (flow == Flow::moving ? 6 : 5) + 4.0 * 2 + 8.0);
+  // state: RGBA32F; density, cover contrast, cover, optical thickness and cloud top: R32F; the
+  // densities, cloud tops and cover contrasts read back and copied (TileDensity): 3 x 2 x 4 bytes.
+  const double maps = texels * (16.0 * (flow == Flow::moving ? 6 : 5) + 4.0 * 5 + 3 * 8.0);
   // The texel weight tables of the calibration and the diagnosis, ((N + 1) / 2)^2 / 2 words
   // each, and the diagnosis's partial records (6 doubles a strip of a column).
   const double half = (size + 1) / 2;

@@ -23,6 +23,7 @@ const int PROBE_STREET_PEARLS = 15;   // street_pearls(p, uint(b)), street_cloud
 const int PROBE_NEAR = 16;            // cyclones_near(p, cyclone C), neighbour_feature(floor(p * 160), int(c), the
                                       // closed cells' key of seed b) in yzw
 const int PROBE_FRONTAL_REACH = 17;   // frontal_reach(p)
+const int PROBE_CLOUD_TYPES = 18;     // cloud_types(a, p): (frontal, deep convection, cumulus, cirrus)
 #ifndef __cplusplus
 #include "../lib/weather_systems.glsl"
 #endif
@@ -58,6 +59,10 @@ vec4 probe_weather_systems(mat4 x) {
     return vec4(closed_cell_modulation(p, x[0].y, seed, x[0].w), open_cell_modulation(p, x[0].y, seed, x[0].w), 0.0f,
                 0.0f);
   if (f == PROBE_FRONTAL_REACH) return vec4(frontal_reach(p), 0.0f, 0.0f, 0.0f);
+  if (f == PROBE_CLOUD_TYPES) {
+    CloudTypes types = cloud_types(x[0].y, p);
+    return vec4(types.frontal, types.deep_convection, types.cumulus, types.cirrus);
+  }
   if (f == PROBE_BELTS_SURFACE) return vec4(belts_over_surface(p, x[0].y), 0.0f);
   if (f == PROBE_COLD_FRONT)
     return vec4(behind_cold_front(vec2(x[0].y, x[0].w)), street_share(vec2(x[0].y, x[0].w)), 0.0f, 0.0f);
