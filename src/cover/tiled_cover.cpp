@@ -89,12 +89,14 @@ const CoverageCalibration& TiledCoverage::remap(const LoadTileDensity& load, con
   for (int index = 0; index < tiling_.count; ++index) {
     const gpu::Texture& density = upload(index, load(index));
     const CubeRegion region = owned_region(tiling_.tile(index));
-    const std::vector<float> tops = load_cloud_top(index);
-    check_tile_values(index, tops, region, "cloud tops");
-    cloud_top_.write(tops);
-    const std::vector<float> contrasts = load_contrast(index);
-    check_tile_values(index, contrasts, region, "cover contrasts");
-    contrast_.write(contrasts);
+    // The density pass's other planes of the tile, one value per owned texel.
+    const auto write_plane = [&](const gpu::Texture& texture, const LoadTileDensity& load_plane, const char* what) {
+      const std::vector<float> values = load_plane(index);
+      check_tile_values(index, values, region, what);
+      texture.write(values);
+    };
+    write_plane(cloud_top_, load_cloud_top, "cloud tops");
+    write_plane(contrast_, load_contrast, "cover contrasts");
     coverage_.remap(density, contrast_, {cover_, optical_thickness_, cloud_top_}, region);
     take(index, CoverPlanes{cover_.read(), optical_thickness_.read(), cloud_top_.read()});
   }
