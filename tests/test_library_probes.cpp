@@ -515,9 +515,8 @@ TEST_CASE("weather_systems.glsl on the GPU agrees with the CPU", "[probe]") {
   // narrowest width) bounds both.
   const float band = 8 * kTranscendental * 45 * 4;
   for (int k = 0; k < 48; ++k) {
-    // band_profile: arithmetic; itcz_belt (y): one exp of -((a - b) / 0.07)^2, a value in [0, 1].
-    cases.push_back({arguments(PROBE_BAND_PROFILE, vec4(r(-1.0f, 1.0f), r(0.1f, 1.0f), 0, 0)),
-                     std::max(kArithmetic * 16, kTranscendental)});
+    // band_profile: arithmetic.
+    cases.push_back({arguments(PROBE_BAND_PROFILE, vec4(r(-1.0f, 1.0f), r(0.1f, 1.0f), 0, 0)), kArithmetic * 16});
     // cloud_types: three divisions by the belts' weights (at least 0.35) of values below 1.
     cases.push_back({arguments(PROBE_CLOUD_TYPES, vec4(r(0.0f, 1.0f), 0, 0, 0),
                                vec4(r(0.0f, 1.0f), r(0.0f, 0.6f), r(0.0f, 0.35f), 0.0f)),
@@ -546,6 +545,27 @@ TEST_CASE("weather_systems.glsl on the GPU agrees with the CPU", "[probe]") {
         {arguments(PROBE_CELL_CLOUDS, vec4(r(5.0f, 50.0f), seed, r(-1.0f, 1.0f), 0), vec4(q, 0)), 12.5f * 50 * kFbm});
     cases.push_back(
         {arguments(PROBE_BELTS, vec4(r(-0.1f, 0.2f), seed, r(-1.0f, 1.0f), 0), vec4(q, 0)), 12.5f * 70 * kFbm});
+    // The convective systems' radius: a few operations and a square root on values below 1; their
+    // cloud a smoothstep of slope 1.5 / 0.15 = 10; their presence an asin and an exp of an offset
+    // divided by widths down to 0.07 (14 per unit of sine).
+    cases.push_back({arguments(PROBE_CONVECTIVE, vec4(r(0.0f, 1.0f), r(0.05f, 0.2f), r(0.3f, 0.6f), 0), vec4(q, 0),
+                               vec4(0.0f), vec4(r(0.0f, 1.5f), r(-1.0f, 1.0f), r(-0.2f, 0.2f), r(0.07f, 0.2f))),
+                     std::max(16 * kArithmetic, 16 * kTranscendental)});
+    // The distances: the point scaled by up to 32 cells a radius rounds by ulp(32) = 3.8e-6 of a
+    // cell, the differences to the points and the length add a few such, and the division by a
+    // radius of at least 0.12 multiplies them by 8: 2e-4 relative, on distances of up to 15 radii
+    // (1.8 cells over 0.12; none is 1e30 on both sides alike): 3e-3. The systems' cloud takes the
+    // error of distances near 1 through convective_cloud's slope of 10 per radius: 2e-3.
+    cases.push_back({arguments(PROBE_CONVECTIVE_DISTANCES, vec4(k % 2 ? 8.0f : 32.0f, seed, r(-0.1f, 0.2f), 0),
+                               vec4(normalize(vec3(q.x, q.y, 0.4f * q.z)), 0), vec4(0.0f),
+                               vec4(r(-1.0f, 1.0f), float(k % 3 != 0), float(k % 4 == 1), 0)),
+                     3.0e-3f});
+    // The warp: two Perlin values (smooth: their rounding below kFbm) times 0.008 along unit
+    // tangents, renormalised: kArithmetic-sized.
+    cases.push_back({arguments(PROBE_CONVECTIVE_WARP, vec4(0, seed, 0, 0), vec4(q, 0)), 4 * kArithmetic});
+    // The cells searched: integers, exact.
+    cases.push_back(
+        {arguments(PROBE_SEARCHED_OFFSET, vec4(float(k % 27), 0, 0, k % 2 ? 8.0f : 27.0f), vec4(q, 0)), 0.0f});
     cases.push_back(
         {arguments(PROBE_WEATHER_DENSITY, vec4(r(-0.1f, 0.2f), seed, r(-1.0f, 1.0f), 0), vec4(q, 0), cyclone, life),
          std::max(band, 12.5f * 70 * kFbm)});

@@ -126,18 +126,26 @@ TEST_CASE("a continent gets a desert inside and a deck off its west coast, none 
   CHECK(std::abs(bias_at(bias, 40.0, 30.0)) < 0.1);
 }
 
-TEST_CASE("ETOPO5's bias clears the Sahara and puts decks off California, Peru and Namibia",
-          "[fast][surface][terrain]") {
+TEST_CASE(
+    "ETOPO5's bias clears the Sahara and puts decks off the west coasts and none on seas with a coast to their west",
+    "[fast][surface][terrain]") {
   if (!std::filesystem::exists(io::etopo5_default_path))
     FAIL("ferret-datasets is not installed (scripts/debian-packages.txt)");
   const auto mask = io::surface_from_option("etopo5", nullptr);
   REQUIRE(mask != nullptr);
   const auto bias = cover::surface_bias(*mask);
-  CHECK(bias_at(bias, 23.0, 10.0) < -0.7);             // central Sahara
-  CHECK(bias_at(bias, -25.0, 135.0) < -0.7);           // central Australia
-  CHECK(bias_at(bias, 28.0, -120.0) > 0.2);            // off Baja California
-  CHECK(bias_at(bias, -18.0, -78.0) > 0.2);            // off Peru
-  CHECK(bias_at(bias, -20.0, 9.0) > 0.2);              // off Namibia
+  CHECK(bias_at(bias, 23.0, 10.0) < -0.7);    // central Sahara
+  CHECK(bias_at(bias, -25.0, 135.0) < -0.7);  // central Australia
+  CHECK(bias_at(bias, 28.0, -120.0) > 0.2);   // off Baja California
+  CHECK(bias_at(bias, -18.0, -78.0) > 0.2);   // off Peru
+  CHECK(bias_at(bias, -20.0, 9.0) > 0.2);     // off Namibia
+  CHECK(bias_at(bias, 25.0, -18.0) > 0.2);    // off the Canaries
+  CHECK(bias_at(bias, -25.0, 110.0) > 0.2);   // off Western Australia
+  // No decks on seas with a coast close to their west (land to their east as the decks' oceans):
+  CHECK(bias_at(bias, 15.0, 65.0) < 0.05);             // the Arabian Sea
+  CHECK(bias_at(bias, 15.0, 88.0) < 0.05);             // the Bay of Bengal
+  CHECK(bias_at(bias, -20.0, 40.0) < 0.05);            // the Mozambique Channel
+  CHECK(bias_at(bias, 25.0, -90.0) < 0.05);            // the Gulf of Mexico
   CHECK(std::abs(bias_at(bias, 0.0, -150.0)) < 0.05);  // mid-Pacific
   CHECK(std::abs(bias_at(bias, 50.0, 10.0)) < 0.05);   // central Europe: the sea within 500 km
   CHECK(bias_at(bias, 39.0, 83.0) < -0.6);             // the Taklamakan, 2000 km and more from any sea

@@ -231,8 +231,8 @@ TEST_CASE("the ITCZ's clusters stay in its belt and follow the season", "[fast][
   CHECK(cover::weather_systems(p, 0.0).itcz_latitude > annual.itcz_latitude);
   p.month = 2;
   CHECK(cover::weather_systems(p, 0.0).itcz_latitude < annual.itcz_latitude);
-  // Along the ITCZ's line, a broken line: between a tenth and two thirds of it is in a cluster; 9
-  // degrees off it (the belt's Gaussian below 2 %), none.
+  // Along the ITCZ's line, a broken line: between a tenth and two thirds of it is in a cluster;
+  // beyond the systems' reach off it, none.
   const float line = annual.itcz_latitude;
   int inside = 0;
   const int n = 3600;
@@ -240,15 +240,38 @@ TEST_CASE("the ITCZ's clusters stay in its belt and follow the season", "[fast][
     const float lon = 2.0f * float(M_PI) * k / n;
     const vec3 on(std::cos(line) * std::cos(lon), std::cos(line) * std::sin(lon), std::sin(line));
     if (glsl::itcz_clusters(on, line, line, annual.seed, 0.0f) > 0.5f) ++inside;
-    const float off = line + 9.0f * float(M_PI) / 180.0f;
+    const float off = line + (k % 2 ? 1.0f : -1.0f) * glsl::ITCZ_REACH;
     const vec3 away(std::cos(off) * std::cos(lon), std::cos(off) * std::sin(lon), std::sin(off));
     CHECK(glsl::itcz_clusters(away, off, line, annual.seed, 0.0f) == 0.0f);
   }
   INFO("share of the line in clusters " << double(inside) / n);
   CHECK(inside > n / 10);
   CHECK(inside < 2 * n / 3);
-  // The clusters' anvils: wider than the clusters (more of the line under them), none 9 degrees
-  // off the line, and drawn out westward: of the line's stretches under an anvil but beside a
+  // Systems of many sizes along the line (its chords through them, 11 km a step): single towers
+  // and small clusters under 150 km, mesoscale systems over 500 km, and more of the small than of
+  // the large (equal areas per interval of size: the small ones are many).
+  {
+    const double step_km = 2.0 * M_PI * 6371.0 * std::cos(line) / n;
+    std::vector<double> chords;
+    int start = -1;
+    for (int k = 0; k <= n; ++k) {
+      const float lon = 2.0f * float(M_PI) * (k % n) / n;
+      const vec3 on(std::cos(line) * std::cos(lon), std::cos(line) * std::sin(lon), std::sin(line));
+      const bool cloudy = k < n && glsl::itcz_clusters(on, line, line, annual.seed, 0.0f) > 0.5f;
+      if (cloudy && start < 0) start = k;
+      if (!cloudy && start >= 0) chords.push_back((k - start) * step_km), start = -1;
+    }
+    const auto count = [&](double from, double to) {
+      return std::count_if(chords.begin(), chords.end(), [&](double c) { return c >= from && c < to; });
+    };
+    INFO(chords.size() << " systems on the line: " << count(0, 150) << " under 150 km, " << count(500, 1e9)
+                       << " over 500 km");
+    CHECK(count(0, 150) > 0);
+    CHECK(count(500, 1e9) > 0);
+    CHECK(count(0, 250) > count(500, 1e9));
+  }
+  // The clusters' anvils: wider than the clusters (more of the line under them), none beyond the
+  // reach, and drawn out westward: of the line's stretches under an anvil but beside a
   // cluster, more lie west of their nearest cluster than east of it.
   std::vector<bool> cluster(n), anvil(n);
   int anvils = 0;
@@ -258,7 +281,7 @@ TEST_CASE("the ITCZ's clusters stay in its belt and follow the season", "[fast][
     cluster[k] = glsl::itcz_clusters(on, line, line, annual.seed, 0.0f) > 0.5f;
     anvil[k] = glsl::itcz_anvils(on, line, line, annual.seed, 0.0f) > 0.5f;
     anvils += anvil[k];
-    const float off = line + 9.0f * float(M_PI) / 180.0f;
+    const float off = line + (k % 2 ? 1.0f : -1.0f) * glsl::ITCZ_REACH;
     const vec3 away(std::cos(off) * std::cos(lon), std::cos(off) * std::sin(lon), std::sin(off));
     CHECK(glsl::itcz_anvils(away, off, line, annual.seed, 0.0f) == 0.0f);
   }
@@ -280,6 +303,26 @@ TEST_CASE("the ITCZ's clusters stay in its belt and follow the season", "[fast][
                                          << east << " east");
   CHECK(anvils > inside);
   CHECK(west > east);
+}
+
+TEST_CASE("convective systems' radii cover equal areas in each logarithmic interval of size", "[fast][systems]") {
+  // The radii of uniform hashes (midpoints of 100000 equal steps) between 0.2 and 0.55: the area
+  // sum_r r^2 below the range's geometric mean equals the sum above it, as an r^-3 density gives
+  // (each half of ln r carries half the area); the midpoint rule's error is of order 1e-10.
+  const float r_min = 0.2f, r_max = 0.55f, middle = std::sqrt(r_min * r_max);
+  double below = 0, above = 0;
+  const int n = 100000;
+  for (int k = 0; k < n; ++k) {
+    const float r = glsl::equal_area_radius((k + 0.5f) / n, r_min, r_max);
+    REQUIRE(r >= r_min * (1 - 1e-6f));
+    REQUIRE(r <= r_max * (1 + 1e-6f));
+    (r < middle ? below : above) += double(r) * r;
+  }
+  INFO("area below the geometric mean " << below << ", above " << above);
+  CHECK(below == Approx(above).epsilon(1e-3));
+  // The extremes: u = 0 gives r_min, u -> 1 gives r_max.
+  CHECK(glsl::equal_area_radius(0.0f, r_min, r_max) == Approx(r_min).epsilon(1e-6));
+  CHECK(glsl::equal_area_radius(1.0f, r_min, r_max) == Approx(r_max).epsilon(1e-5));
 }
 
 TEST_CASE("trade cumulus are many small separate clouds in the trades and none at the equator or the poles",

@@ -142,53 +142,162 @@ float cell_clouds(vec3 p, float frequency, uint seed, uint layer, float radius, 
   return 1.0f - smoothstep(0.6f * size, size, f1.w + 0.1f * edge);
 }
 
-// The ITCZ: clusters of deep convection 300-700 km across (where the sphere cuts a cell's ball
-// through its middle), about 1000 km apart (6 cells per radius), a quarter of the places empty, within a Gaussian belt of 4 degrees around the line
-// (Waliser and Gautier 1993, "A satellite-derived climatology of the ITCZ", J. Climate 6;
-// Mapes and Houze 1993 for the clusters' sizes).
-// The clusters' lattice (cells per radius, noise layer) and sizes, which their anvils share.
-const float ITCZ_CELLS = 6.0f;
-const uint ITCZ_LAYER = 11u;
-const float ITCZ_RADIUS = 0.3f;
-const float ITCZ_SPREAD = 0.35f;
-const float ITCZ_EMPTY = 0.25f;
-
-// The ITCZ's belt: a Gaussian of 4 degrees (0.07 rad) about its line; callers draw nothing where
-// it is below 0.02.
-float itcz_belt(float latitude, float itcz_latitude) {
-  float belt = (latitude - itcz_latitude) / 0.07f;
-  return exp(-belt * belt);
+// The radius of a convective system from a uniform hash u in [0, 1): tropical convective systems of
+// all sizes, from single towers to mesoscale systems 2000 km across, cover about the same area in
+// each logarithmic interval of size (Machado and Rossow 1993, "Structural characteristics and
+// radiative properties of tropical cloud clusters", Mon. Wea. Rev. 121), so the radii's density is
+// r^-3 between r_min and r_max: r = r_min / sqrt(1 - u (1 - (r_min / r_max)^2)).
+float equal_area_radius(float u, float r_min, float r_max) {
+  float q = r_min / r_max;
+  return r_min / sqrt(1.0f - u * (1.0f - q * q));
 }
 
-float itcz_clusters(vec3 p, float latitude, float itcz_latitude, uint seed, float edge) {
-  float belt = itcz_belt(latitude, itcz_latitude);
-  float clusters = cell_clouds(p, ITCZ_CELLS, seed, ITCZ_LAYER, ITCZ_RADIUS, ITCZ_SPREAD, ITCZ_EMPTY, edge,
-                               SKIPPABLE(belt >= 0.02f, NEIGHBOUR_CELLS));
-  return belt < 0.02f ? 0.0f : belt * clusters;
+// The anvils of deep convection: it spreads out under the tropopause into a shield of cirrus far
+// wider than its convective core (Houze 2004, "Mesoscale convective systems", Rev. Geophys. 42:
+// anvils hundreds of kilometres across), drawn out westward by the upper troposphere's easterlies
+// over the ITCZ: an ellipse ANVIL_SPREAD times the system's radius across, ANVIL_STRETCH times
+// longer east-west, centred ANVIL_LAG radii west of the system.
+const float ANVIL_SPREAD = 1.2f;
+const float ANVIL_STRETCH = 1.2f;
+const float ANVIL_LAG = 0.1f;
+
+// The share of places with a system at the unit direction p, for a line at latitude `line`: `filled`
+// on the line, falling off with the offset o = (latitude - line) / width as (1 - o^2 / 4)^2 (half at
+// o = 1.08, none from o = 2, so that the systems end at a known distance from the line; a Gaussian
+// of about the width without its exponential). Taken in the sine of the latitude, the offset
+// (sin lat - sin line) / cos line, which errs by 0.002 rad at 0.2 from a line within 10 degrees of
+// the equator, so that the points searched need no arcsine: convective_presence_of makes
+// (sin line, width cos line, filled) once for them.
+vec3 convective_presence_of(float line, float width, float filled) {
+  return vec3(sin(line), width * cos(line), filled);
+}
+float convective_presence(vec3 p, vec3 presence) {
+  float offset = (p.z - presence.x) / presence.y;
+  float bump = max(1.0f - 0.25f * offset * offset, 0.0f);
+  return presence.z * bump * bump;
 }
 
-// The anvils of the ITCZ's clusters: deep convection spreads out under the tropopause into a
-// shield of thin cirrus far wider than its convective core (Houze 2004, "Mesoscale convective
-// systems", Rev. Geophys. 42: anvils hundreds of kilometres across), drawn out westward by the
-// upper troposphere's easterlies over the ITCZ. Each cluster's anvil is an ellipse 1.5 times the
-// cluster's radius across, 1.4 times longer east-west, centred 0.15 cells west of the cluster,
-// in the same cells (itcz_clusters' lattice and hashes), so that an empty place has none.
-float itcz_anvils(vec3 p, float latitude, float itcz_latitude, uint seed, float edge) {
-  float belt = itcz_belt(latitude, itcz_latitude);
-  // The cluster's cell and hash as cell_clouds finds them.
-  vec3 scaled = p * ITCZ_CELLS;
-  vec4 f1 = worley_f1_searched(scaled, ivec3(0), noise_key(seed, ITCZ_LAYER), SKIPPABLE(belt >= 0.02f, NEIGHBOUR_CELLS));
-  if (belt < 0.02f) return 0.0f;
-  ivec3 cell = nearest_cell(scaled, f1);
-  vec3 h = hash_to_unit3(pcg3d(uvec3(cell) ^ noise_key(seed, ITCZ_LAYER + 1u)));
-  if (h.y < ITCZ_EMPTY) return 0.0f;
-  float size = 1.5f * (ITCZ_RADIUS + ITCZ_SPREAD * h.x);
-  vec3 offset = vec3(f1) * f1.w;  // from the cluster's feature point to p, in cells
+// The cells a search for convective systems visits around p's cell, p at f in it: the 27 around it
+// (NEIGHBOUR_CELLS), which hold every feature point within one cell of p, or NEAR_CELLS, the 2 x 2 x 2
+// block nearest f, which holds every one within half a cell (for lattices whose systems reach no
+// further: a third of the work). The k-th of them.
+const int NEAR_CELLS = 8;
+ivec3 searched_offset(int k, int searched, vec3 f) {
+  if (searched == NEAR_CELLS) return ivec3(k % 2, (k / 2) % 2, k / 4) + ivec3(step(vec3(0.5f), f)) - ivec3(1);
+  return neighbour_offset(k);
+}
+
+// Convective systems on a lattice of `frequency` cells per radius (noise layer `layer` for the
+// points, layer + 1 for their sizes and presence): at most one at each cell's feature point, a disc
+// of radius equal_area_radius(hash, radii) cells, present where a second hash is below `presence`
+// (convective_presence_of) of the point's direction (its share of places with a system). Returns the smallest distance from
+// p to a system's point in units of its radius (x), and to an anvil's centre in units of its
+// half-axes (y; 1e30 unless `anvils`), over the cells `searched` (searched_offset) around p: each
+// system is a whole disc (the nearest point's system alone would be cut along its Voronoi cell's
+// border into straight edges) where it reaches no further than the search: with the 27 cells,
+// radii up to 0.5 cells keep the discs (out to 1.8 radii with the noise, 0.9 cells) and their
+// anvils ((1.2 x 1.2 + 0.1) 0.5 x 1.3 = 1.0) whole; with NEAR_CELLS radii up to 0.27 the discs
+// (0.49). 1e30 where none is near or `searched` is 0 (SKIPPABLE).
+vec2 convective_distances(vec3 p, float frequency, uint seed, uint layer, vec2 radii, vec3 presence, bool anvils,
+                          int searched) {
+  vec3 scaled = p * frequency;
+  vec3 base = floor(scaled);
+  ivec3 cell = ivec3(base);
+  vec3 f = scaled - base;
+  uvec3 key = noise_key(seed, layer), size_key = noise_key(seed, layer + 1u);
   vec3 east = normalize(vec3(-p.y, p.x, 0.0f) + vec3(1.0e-6f, 0.0f, 0.0f));
-  float east_of_centre = dot(offset, east) + 0.15f;
-  vec3 across = offset - dot(offset, east) * east;
-  float r = sqrt(east_of_centre * east_of_centre / (1.4f * 1.4f) + dot(across, across));
-  return belt * (1.0f - smoothstep(0.4f * size, size, r + 0.1f * edge));
+  vec2 nearest = vec2(1.0e30f);
+  for (int k = 0; k < searched; ++k) {
+    ivec3 offset = searched_offset(k, searched, f);
+    vec3 to_point = vec3(offset) + wrapped_feature_offset(cell + offset, key) - f;
+    vec3 h = hash_to_unit3(pcg3d(uvec3(cell + offset) ^ size_key));
+    if (h.y >= convective_presence(normalize(scaled + to_point), presence)) continue;
+    float r = equal_area_radius(h.x, radii.x, radii.y);
+    nearest.x = min(nearest.x, length(to_point) / r);
+    if (!anvils) continue;
+    float along = -dot(to_point, east);  // p's distance east of the point
+    vec3 across = -to_point - along * east;
+    float lagged = (along + ANVIL_LAG * r) / ANVIL_STRETCH;
+    nearest.y = min(nearest.y, sqrt(lagged * lagged + dot(across, across)) / (ANVIL_SPREAD * r));
+  }
+  return nearest;
+}
+
+// A convective system's cloud at distance d (in its radii) with the cover's noise as `edge` in
+// [-1, 1]: the outline moved by up to `reach` of the radius either way, so that it follows the
+// noise's cloud and frays at the noise's scales (the cores by CORE_EDGE_REACH: far enough to take
+// the noise's shapes; the anvils, spread by the wind aloft, by ANVIL_EDGE_REACH), and sharp: from
+// none to full over the outer CONVECTIVE_RIM of the radius (deep convection's edges are steps of
+// optical thickness).
+const float CORE_EDGE_REACH = 0.8f;
+const float ANVIL_EDGE_REACH = 0.3f;
+const float CONVECTIVE_RIM = 0.15f;
+float convective_cloud(float d, float edge, float reach) {
+  return 1.0f - smoothstep(1.0f - CONVECTIVE_RIM, 1.0f, d - reach * edge);
+}
+
+// The ITCZ (Waliser and Gautier 1993, "A satellite-derived climatology of the ITCZ", J. Climate 6):
+// mesoscale convective systems 320-800 km across on a lattice of 8 cells per radius (about 800 km
+// apart), in nine places in ten on its line and fewer away from it by a Gaussian of 4 degrees; and
+// single towers and small clusters 55-145 km across on a lattice three times finer, in one place in
+// two on the line and fewer by a Gaussian of 6 degrees (scattered convection over the warm pool),
+// without anvils of their own. Both draw their radii from equal_area_radius, so that together
+// they cover about equal areas per interval of size from 50 to 900 km; half of the very cold
+// cloudiness lies in clusters over 20 000 km^2 (160 km across; Mapes and Houze 1993, "Cloud clusters
+// and superclusters over the oceanic warm pool", Mon. Wea. Rev. 121).
+const float ITCZ_CELLS = 8.0f;
+const uint ITCZ_LAYER = 11u;  // and 12
+const vec2 ITCZ_RADII = vec2(0.2f, 0.5f);
+const float ITCZ_FILLED = 0.9f;
+const float ITCZ_TOWER_CELLS = 24.0f;
+const uint ITCZ_TOWER_LAYER = 24u;  // and 25
+const vec2 ITCZ_TOWER_RADII = vec2(0.1f, 0.27f);
+const float ITCZ_TOWER_FILLED = 0.5f;
+// The towers' presence's width (radians, 6 degrees).
+const float ITCZ_TOWER_WIDTH = 0.1f;
+// The systems' reach from the ITCZ's line (radians), beyond which none is drawn: a system's point
+// lies within 2 x 0.07 of it and its anvil reaches 1.0 / 8 cells further, a tower's within 2 x 0.1
+// and its cloud 1.8 x 0.27 / 24 further (convective_distances), and the warp moves the point drawn
+// by at most 0.008 sqrt(2) PERLIN_BOUND = 0.012 (convective_warp).
+const float ITCZ_REACH = 0.28f;
+
+// The systems' outlines are irregular below their own scale too (a tower's dome, the lobes of a
+// cluster's cells), which the cover's noise, whose large scales carry most of its variance, leaves
+// nearly round: they are drawn at the unit direction p displaced along the sphere by a field of
+// Perlin noise of CONVECTIVE_WARP_CELLS cells per radius (about 66 km), east and north, times
+// CONVECTIVE_WARP radians (51 km; the field's components rarely exceed 1/2), and renormalised.
+// `components` 2, or 0 where no system is drawn (SKIPPABLE): p itself.
+const float CONVECTIVE_WARP_CELLS = 96.0f;
+const float CONVECTIVE_WARP = 0.008f;
+const uint CONVECTIVE_WARP_LAYER = 26u;  // and 27, one a component
+vec3 convective_warp(vec3 p, uint seed, int components) {
+  vec2 warp = vec2(0.0f);
+  for (int k = 0; k < components; ++k)
+    warp[k] = perlin_noise(p * CONVECTIVE_WARP_CELLS, ivec3(0), noise_key(seed, CONVECTIVE_WARP_LAYER + uint(k)));
+  vec3 east = normalize(vec3(-p.y, p.x, 0.0f) + vec3(1.0e-6f, 0.0f, 0.0f));
+  return normalize(p + CONVECTIVE_WARP * (warp.x * east + warp.y * cross(p, east)));
+}
+
+// The ITCZ's convective systems at p: (the systems' and towers' cloud, the systems' anvils), both in
+// [0, 1], 0 beyond ITCZ_REACH of the line.
+vec2 itcz_systems(vec3 p, float latitude, float itcz_latitude, uint seed, float edge) {
+  bool near = abs(latitude - itcz_latitude) < ITCZ_REACH;
+  int searched = SKIPPABLE(near, NEIGHBOUR_CELLS);
+  p = convective_warp(p, seed, SKIPPABLE(near, 2));
+  vec2 systems = convective_distances(p, ITCZ_CELLS, seed, ITCZ_LAYER, ITCZ_RADII,
+                                        convective_presence_of(itcz_latitude, 0.07f, ITCZ_FILLED), true, searched);
+  vec2 towers = convective_distances(p, ITCZ_TOWER_CELLS, seed, ITCZ_TOWER_LAYER, ITCZ_TOWER_RADII,
+                                     convective_presence_of(itcz_latitude, ITCZ_TOWER_WIDTH, ITCZ_TOWER_FILLED), false,
+                                     SKIPPABLE(near, NEAR_CELLS));
+  if (!near) return vec2(0.0f);
+  return vec2(convective_cloud(min(systems.x, towers.x), edge, CORE_EDGE_REACH),
+              convective_cloud(systems.y, edge, ANVIL_EDGE_REACH));
+}
+float itcz_clusters(vec3 p, float latitude, float itcz_latitude, uint seed, float edge) {
+  return itcz_systems(p, latitude, itcz_latitude, seed, edge).x;
+}
+float itcz_anvils(vec3 p, float latitude, float itcz_latitude, uint seed, float edge) {
+  return itcz_systems(p, latitude, itcz_latitude, seed, edge).y;
 }
 
 // Trade cumulus: many small clouds up to 60-120 km across (the mesoscale clusters of the cumulus,
@@ -528,12 +637,14 @@ float cyclone_systems(vec3 p, IN(WeatherSystems) systems, float edge) {
 const vec3 BELT_WEIGHTS = vec3(1.0f, 0.6f, 0.35f);
 vec3 belt_fields(vec3 p, float latitude, IN(WeatherSystems) systems, uint seed, float edge) {
   vec3 fields = vec3(0.0f);
-  if (systems.itcz > 0.0f) fields.x = systems.itcz * itcz_clusters(p, latitude, systems.itcz_latitude, seed, edge);
   if (systems.trade_cumulus > 0.0f) fields.y = BELT_WEIGHTS.y * systems.trade_cumulus * trade_cumulus(p, latitude, seed, edge);
   if (systems.cirrus > 0.0f) fields.z = BELT_WEIGHTS.z * systems.cirrus * cirrus_streaks(p, latitude, seed);
-  // The clusters' anvils are cirrus: thin (the cirrus's weight) and high.
-  if (systems.itcz > 0.0f)
-    fields.z = max(fields.z, BELT_WEIGHTS.z * systems.itcz * itcz_anvils(p, latitude, systems.itcz_latitude, seed, edge));
+  if (systems.itcz > 0.0f) {
+    vec2 itcz = systems.itcz * itcz_systems(p, latitude, systems.itcz_latitude, seed, edge);
+    fields.x = itcz.x;
+    // The systems' anvils are cirrus: thin (the cirrus's weight) and high.
+    fields.z = max(fields.z, BELT_WEIGHTS.z * itcz.y);
+  }
   return fields;
 }
 // The belts' fields over the surface of land/ocean bias `surface` (surface_bias.cpp; 0 without

@@ -114,7 +114,12 @@ std::vector<float> ocean_distance_km(const SurfaceMask& grid) {
 std::vector<float> surface_bias(const SurfaceMask& mask) {
   const int columns = surface_bias_columns, rows = surface_bias_rows;
   const SurfaceMask grid = mask.columns == columns && mask.rows == rows ? mask : resample_surface(mask, columns, rows);
-  const int reach = columns * 15 / 360;  // 15 degrees of longitude in cells
+  const int reach = columns * 15 / 360;  // 15 degrees of longitude in cells: the coast to the east
+  // The open ocean to the west: W = smoothstep(10, 30 degrees) of its stretch before the first land
+  // cell (land 1/2 or more), so that a sea with a coast close to its west (the Bay of Bengal, the
+  // Arabian Sea, the Mozambique Channel, the Gulf of Mexico) gets no deck, nor one whose open
+  // ocean lies beyond a continent.
+  const int fetch_from = columns * 10 / 360, fetch = columns * 30 / 360;
   std::vector<float> bias(static_cast<size_t>(columns) * rows);
   const std::vector<float> distance = ocean_distance_km(grid);
   for (int j = 0; j < rows; ++j) {
@@ -125,10 +130,11 @@ std::vector<float> surface_bias(const SurfaceMask& mask) {
     for (int i = 0; i < columns; ++i) {
       const double land = row[i];
       double east = 0, west = 0;  // land to the east, nearer counts more; open ocean to the west
-      for (int d = 1; d <= reach; ++d) {
-        east = std::max(east, row[(i + d) % columns] * (1.0 - double(d) / reach));
-        west += (1.0 - row[(i - d + columns) % columns]) / reach;
-      }
+      for (int d = 1; d <= reach; ++d) east = std::max(east, row[(i + d) % columns] * (1.0 - double(d) / reach));
+      int open = 0;
+      while (open < fetch && row[(i - open - 1 + columns) % columns] < 0.5f) ++open;
+      const double t = std::clamp(double(open - fetch_from) / (fetch - fetch_from), 0.0, 1.0);
+      west = t * t * (3.0 - 2.0 * t);
       const double desert = std::max(subtropics, interior * inland(distance[static_cast<size_t>(j) * columns + i]));
       bias[static_cast<size_t>(j) * columns + i] =
           static_cast<float>((1.0 - land) * deck * east * west - land * desert);

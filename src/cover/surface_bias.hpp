@@ -47,8 +47,9 @@ std::vector<float> ocean_distance_km(const SurfaceMask& grid);
 // convention): desert = land max(S_desert(lat), S_interior(lat) inland(distance to the ocean));
 // deck = (1 - land) S_deck(lat) E W, E the largest
 // land fraction within 15 degrees of longitude to the east weighted by 1 - distance / 15 deg
-// (the ocean off a west coast), W the mean ocean fraction over 15 degrees to the west (open
-// ocean there: no decks in inland seas such as the Persian Gulf or the Red Sea); then three
+// (the ocean off a west coast), W smoothstep(10, 30 deg) of the stretch of open ocean to the west
+// before the first land cell (an ocean basin's eastern side: no decks on seas with a coast close to
+// their west, such as the Red Sea, the Arabian Sea or the Bay of Bengal); then three
 // 9 x 9 box filters (wrapping in longitude; about a Gaussian of 2.2 degrees) so that coasts do
 // not draw sharp lines into the cover.
 std::vector<float> surface_bias(const SurfaceMask& mask);

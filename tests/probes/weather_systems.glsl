@@ -1,7 +1,7 @@
 // Probe of lib/weather_systems.glsl (shared GLSL/C++ subset; tests/test_library_probes.cpp).
 // x[0] = (function, a, b, c), x[1] = the point p (unit), x[2] = a cyclone's centre (xyz, made
 // unit here) and radius (w), x[3] = (wrap, strength, ...). The functions (x[0].x):
-const int PROBE_BAND_PROFILE = 0;     // band_profile(a, b), itcz_belt(a, b)
+const int PROBE_BAND_PROFILE = 0;     // band_profile(a, b)
 const int PROBE_COMMA_CLOUD = 1;      // comma_cloud(vec2(a, b), c, x[3].x)
 const int PROBE_CYCLONE = 2;          // cyclone_frame(p, C).xy, cyclone_cloud(p, C, a) in z
 const int PROBE_CELL_CLOUDS = 3;      // cell_clouds(p, a, uint(b), 7, 0.2, 0.3, 0.3, c)
@@ -24,6 +24,14 @@ const int PROBE_NEAR = 16;            // cyclones_near(p, cyclone C), neighbour_
                                       // closed cells' key of seed b) in yzw
 const int PROBE_FRONTAL_REACH = 17;   // frontal_reach(p)
 const int PROBE_CLOUD_TYPES = 18;     // cloud_types(a, p): (frontal, deep convection, cumulus, cirrus)
+const int PROBE_CONVECTIVE = 19;      // equal_area_radius(a, b, c), convective_cloud(x[3].x, x[3].y, c),
+                                      // convective_presence(p, convective_presence_of(x[3].z, x[3].w, a)), and
+                                      // that presence's y in w
+const int PROBE_CONVECTIVE_DISTANCES = 20;  // convective_distances(p, a, uint(b), ITCZ_LAYER, ITCZ_RADII, the ITCZ's
+                                            // presence at c, anvils where x[3].y > 1/2); itcz_systems(p, lat,
+                                            // c, uint(b), x[3].x) in zw; NEAR_CELLS where x[3].z > 1/2
+const int PROBE_CONVECTIVE_WARP = 21;        // convective_warp(p, uint(b), 2)
+const int PROBE_SEARCHED_OFFSET = 22;        // searched_offset(int(a), int(c), fract(p * 7))
 #ifndef __cplusplus
 #include "../lib/weather_systems.glsl"
 #endif
@@ -44,7 +52,7 @@ vec4 probe_weather_systems(mat4 x) {
   vec3 p = vec3(x[1]);
   float latitude = portable_asin(clamp(p.z, -1.0f, 1.0f));
   uint seed = uint(x[0].z);
-  if (f == PROBE_BAND_PROFILE) return vec4(band_profile(x[0].y, x[0].z), itcz_belt(x[0].y, x[0].z), 0.0f, 0.0f);
+  if (f == PROBE_BAND_PROFILE) return vec4(band_profile(x[0].y, x[0].z), 0.0f, 0.0f, 0.0f);
   if (f == PROBE_COMMA_CLOUD) return vec4(comma_cloud(vec2(x[0].y, x[0].z), x[0].w, x[3].x), 0.0f, 0.0f, 0.0f);
   if (f == PROBE_CYCLONE) {
     Cyclone c = probe_cyclone(x);
@@ -63,6 +71,18 @@ vec4 probe_weather_systems(mat4 x) {
     CloudTypes types = cloud_types(x[0].y, p);
     return vec4(types.frontal, types.deep_convection, types.cumulus, types.cirrus);
   }
+  if (f == PROBE_CONVECTIVE)
+    return vec4(equal_area_radius(x[0].y, x[0].z, x[0].w), convective_cloud(x[3].x, x[3].y, x[0].w),
+                convective_presence(p, convective_presence_of(x[3].z, x[3].w, x[0].y)),
+                convective_presence_of(x[3].z, x[3].w, x[0].y).y);
+  if (f == PROBE_CONVECTIVE_DISTANCES)
+    return vec4(convective_distances(p, x[0].y, seed, ITCZ_LAYER, ITCZ_RADII,
+                                     convective_presence_of(x[0].w, 0.07f, ITCZ_FILLED),
+                                     x[3].y > 0.5f, x[3].z > 0.5f ? NEAR_CELLS : NEIGHBOUR_CELLS),
+                itcz_systems(p, latitude, x[0].w, seed, x[3].x));
+  if (f == PROBE_CONVECTIVE_WARP) return vec4(convective_warp(p, seed, 2), 0.0f);
+  if (f == PROBE_SEARCHED_OFFSET)
+    return vec4(vec3(searched_offset(int(x[0].y), int(x[0].w), fract(p * 7.0f))), 0.0f);
   if (f == PROBE_BELTS_SURFACE) return vec4(belts_over_surface(p, x[0].y), 0.0f);
   if (f == PROBE_COLD_FRONT)
     return vec4(behind_cold_front(vec2(x[0].y, x[0].w)), street_share(vec2(x[0].y, x[0].w)), 0.0f, 0.0f);
