@@ -563,6 +563,8 @@ TEST_CASE("weather_systems.glsl on the GPU agrees with the CPU", "[probe]") {
     // The warp: two Perlin values (smooth: their rounding below kFbm) times 0.008 along unit
     // tangents, renormalised: kArithmetic-sized.
     cases.push_back({arguments(PROBE_CONVECTIVE_WARP, vec4(0, seed, 0, 0), vec4(q, 0)), 4 * kArithmetic});
+    // The east vector: a normalize of exact components: kArithmetic.
+    cases.push_back({arguments(PROBE_LOCAL_EAST, vec4(0.0f), vec4(q, 0)), kArithmetic});
     // The cells searched: integers, exact.
     cases.push_back(
         {arguments(PROBE_SEARCHED_OFFSET, vec4(float(k % 27), 0, 0, k % 2 ? 8.0f : 27.0f), vec4(q, 0)), 0.0f});

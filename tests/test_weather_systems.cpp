@@ -239,10 +239,10 @@ TEST_CASE("the ITCZ's clusters stay in its belt and follow the season", "[fast][
   for (int k = 0; k < n; ++k) {
     const float lon = 2.0f * float(M_PI) * k / n;
     const vec3 on(std::cos(line) * std::cos(lon), std::cos(line) * std::sin(lon), std::sin(line));
-    if (glsl::itcz_clusters(on, line, line, annual.seed, 0.0f) > 0.5f) ++inside;
+    if (glsl::itcz_systems(on, line, line, annual.seed, 0.0f).x > 0.5f) ++inside;
     const float off = line + (k % 2 ? 1.0f : -1.0f) * glsl::ITCZ_REACH;
     const vec3 away(std::cos(off) * std::cos(lon), std::cos(off) * std::sin(lon), std::sin(off));
-    CHECK(glsl::itcz_clusters(away, off, line, annual.seed, 0.0f) == 0.0f);
+    CHECK(glsl::itcz_systems(away, off, line, annual.seed, 0.0f).x == 0.0f);
   }
   INFO("share of the line in clusters " << double(inside) / n);
   CHECK(inside > n / 10);
@@ -257,7 +257,7 @@ TEST_CASE("the ITCZ's clusters stay in its belt and follow the season", "[fast][
     for (int k = 0; k <= n; ++k) {
       const float lon = 2.0f * float(M_PI) * (k % n) / n;
       const vec3 on(std::cos(line) * std::cos(lon), std::cos(line) * std::sin(lon), std::sin(line));
-      const bool cloudy = k < n && glsl::itcz_clusters(on, line, line, annual.seed, 0.0f) > 0.5f;
+      const bool cloudy = k < n && glsl::itcz_systems(on, line, line, annual.seed, 0.0f).x > 0.5f;
       if (cloudy && start < 0) start = k;
       if (!cloudy && start >= 0) chords.push_back((k - start) * step_km), start = -1;
     }
@@ -278,12 +278,12 @@ TEST_CASE("the ITCZ's clusters stay in its belt and follow the season", "[fast][
   for (int k = 0; k < n; ++k) {
     const float lon = 2.0f * float(M_PI) * k / n;
     const vec3 on(std::cos(line) * std::cos(lon), std::cos(line) * std::sin(lon), std::sin(line));
-    cluster[k] = glsl::itcz_clusters(on, line, line, annual.seed, 0.0f) > 0.5f;
-    anvil[k] = glsl::itcz_anvils(on, line, line, annual.seed, 0.0f) > 0.5f;
+    cluster[k] = glsl::itcz_systems(on, line, line, annual.seed, 0.0f).x > 0.5f;
+    anvil[k] = glsl::itcz_systems(on, line, line, annual.seed, 0.0f).y > 0.5f;
     anvils += anvil[k];
     const float off = line + (k % 2 ? 1.0f : -1.0f) * glsl::ITCZ_REACH;
     const vec3 away(std::cos(off) * std::cos(lon), std::cos(off) * std::sin(lon), std::sin(off));
-    CHECK(glsl::itcz_anvils(away, off, line, annual.seed, 0.0f) == 0.0f);
+    CHECK(glsl::itcz_systems(away, off, line, annual.seed, 0.0f).y == 0.0f);
   }
   int west = 0, east = 0;
   for (int k = 0; k < n; ++k) {

@@ -152,6 +152,9 @@ float equal_area_radius(float u, float r_min, float r_max) {
   return r_min / sqrt(1.0f - u * (1.0f - q * q));
 }
 
+// The unit vector east at the unit direction p (an arbitrary horizontal one at the poles).
+vec3 local_east(vec3 p) { return normalize(vec3(-p.y, p.x, 0.0f) + vec3(1.0e-6f, 0.0f, 0.0f)); }
+
 // The anvils of deep convection: it spreads out under the tropopause into a shield of cirrus far
 // wider than its convective core (Houze 2004, "Mesoscale convective systems", Rev. Geophys. 42:
 // anvils hundreds of kilometres across), drawn out westward by the upper troposphere's easterlies
@@ -205,7 +208,7 @@ vec2 convective_distances(vec3 p, float frequency, uint seed, uint layer, vec2 r
   ivec3 cell = ivec3(base);
   vec3 f = scaled - base;
   uvec3 key = noise_key(seed, layer), size_key = noise_key(seed, layer + 1u);
-  vec3 east = normalize(vec3(-p.y, p.x, 0.0f) + vec3(1.0e-6f, 0.0f, 0.0f));
+  vec3 east = local_east(p);
   vec2 nearest = vec2(1.0e30f);
   for (int k = 0; k < searched; ++k) {
     ivec3 offset = searched_offset(k, searched, f);
@@ -238,9 +241,10 @@ float convective_cloud(float d, float edge, float reach) {
 
 // The ITCZ (Waliser and Gautier 1993, "A satellite-derived climatology of the ITCZ", J. Climate 6):
 // mesoscale convective systems 320-800 km across on a lattice of 8 cells per radius (about 800 km
-// apart), in nine places in ten on its line and fewer away from it by a Gaussian of 4 degrees; and
-// single towers and small clusters 55-145 km across on a lattice three times finer, in one place in
-// two on the line and fewer by a Gaussian of 6 degrees (scattered convection over the warm pool),
+// apart), in nine places in ten on its line and fewer away from it (convective_presence, a width
+// of 4 degrees); and single towers and small clusters 55-145 km across on a lattice three times
+// finer, in one place in two on the line and fewer over a width of 6 degrees (scattered convection
+// over the warm pool),
 // without anvils of their own. Both draw their radii from equal_area_radius, so that together
 // they cover about equal areas per interval of size from 50 to 900 km; half of the very cold
 // cloudiness lies in clusters over 20 000 km^2 (160 km across; Mapes and Houze 1993, "Cloud clusters
@@ -274,7 +278,7 @@ vec3 convective_warp(vec3 p, uint seed, int components) {
   vec2 warp = vec2(0.0f);
   for (int k = 0; k < components; ++k)
     warp[k] = perlin_noise(p * CONVECTIVE_WARP_CELLS, ivec3(0), noise_key(seed, CONVECTIVE_WARP_LAYER + uint(k)));
-  vec3 east = normalize(vec3(-p.y, p.x, 0.0f) + vec3(1.0e-6f, 0.0f, 0.0f));
+  vec3 east = local_east(p);
   return normalize(p + CONVECTIVE_WARP * (warp.x * east + warp.y * cross(p, east)));
 }
 
@@ -292,12 +296,6 @@ vec2 itcz_systems(vec3 p, float latitude, float itcz_latitude, uint seed, float 
   if (!near) return vec2(0.0f);
   return vec2(convective_cloud(min(systems.x, towers.x), edge, CORE_EDGE_REACH),
               convective_cloud(systems.y, edge, ANVIL_EDGE_REACH));
-}
-float itcz_clusters(vec3 p, float latitude, float itcz_latitude, uint seed, float edge) {
-  return itcz_systems(p, latitude, itcz_latitude, seed, edge).x;
-}
-float itcz_anvils(vec3 p, float latitude, float itcz_latitude, uint seed, float edge) {
-  return itcz_systems(p, latitude, itcz_latitude, seed, edge).y;
 }
 
 // Trade cumulus: many small clouds up to 60-120 km across (the mesoscale clusters of the cumulus,

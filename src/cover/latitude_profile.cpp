@@ -4,6 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include <glm/common.hpp>
+
 namespace nephele::cover {
 namespace {
 
@@ -35,11 +37,6 @@ std::vector<double> monotone_slopes(const std::vector<double>& x, const std::vec
     }
   }
   return m;
-}
-
-double smoothstep(double edge0, double edge1, double x) {
-  const double t = std::clamp((x - edge0) / (edge1 - edge0), 0.0, 1.0);
-  return t * t * (3.0 - 2.0 * t);
 }
 
 }  // namespace
@@ -103,7 +100,7 @@ double seasonal_shift_deg(double latitude_deg, int month) {
   const double amplitude = storm_tracks + (itcz - storm_tracks) * tropical;
   // 0 at the poles, so that the shifted profile still spans -90..90; the slope of the shift
   // stays below 0.3, so latitude - shift is monotone.
-  return season * amplitude * smoothstep(0.0, 20.0, 90.0 - std::abs(latitude_deg));
+  return season * amplitude * glm::smoothstep(0.0, 20.0, 90.0 - std::abs(latitude_deg));
 }
 
 double storm_track_shift(int month) {

@@ -6,6 +6,8 @@
 #include <queue>
 #include <utility>
 
+#include <glm/common.hpp>
+
 namespace nephele::cover {
 
 namespace {
@@ -69,10 +71,7 @@ double interior_weight(double latitude_deg) {
   return std::exp(-u * u);
 }
 
-double inland(double ocean_distance_km) {
-  const double t = std::clamp((ocean_distance_km - 500.0) / 1000.0, 0.0, 1.0);
-  return t * t * (3.0 - 2.0 * t);
-}
+double inland(double ocean_distance_km) { return glm::smoothstep(500.0, 1500.0, ocean_distance_km); }
 
 std::vector<float> ocean_distance_km(const SurfaceMask& grid) {
   const int columns = grid.columns, rows = grid.rows;
@@ -133,8 +132,7 @@ std::vector<float> surface_bias(const SurfaceMask& mask) {
       for (int d = 1; d <= reach; ++d) east = std::max(east, row[(i + d) % columns] * (1.0 - double(d) / reach));
       int open = 0;
       while (open < fetch && row[(i - open - 1 + columns) % columns] < 0.5f) ++open;
-      const double t = std::clamp(double(open - fetch_from) / (fetch - fetch_from), 0.0, 1.0);
-      west = t * t * (3.0 - 2.0 * t);
+      west = glm::smoothstep(double(fetch_from), double(fetch), double(open));
       const double desert = std::max(subtropics, interior * inland(distance[static_cast<size_t>(j) * columns + i]));
       bias[static_cast<size_t>(j) * columns + i] =
           static_cast<float>((1.0 - land) * deck * east * west - land * desert);

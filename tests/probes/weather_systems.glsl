@@ -5,7 +5,7 @@ const int PROBE_BAND_PROFILE = 0;     // band_profile(a, b)
 const int PROBE_COMMA_CLOUD = 1;      // comma_cloud(vec2(a, b), c, x[3].x)
 const int PROBE_CYCLONE = 2;          // cyclone_frame(p, C).xy, cyclone_cloud(p, C, a) in z
 const int PROBE_CELL_CLOUDS = 3;      // cell_clouds(p, a, uint(b), 7, 0.2, 0.3, 0.3, c)
-const int PROBE_BELTS = 4;            // itcz_clusters(p, lat, a, uint(b), c), trade_cumulus, cirrus_streaks, itcz_anvils
+const int PROBE_BELTS = 4;            // itcz_systems(p, lat, a, uint(b), c).x, trade_cumulus, cirrus_streaks, its .y
 const int PROBE_WEATHER_DENSITY = 5;  // weather_density, cyclone_systems, belt_systems (seed b + 1): cyclone C, the ITCZ at a, seed b, edge c
 const int PROBE_BELT_FIELDS = 6;      // belt_fields(p, lat, systems (the ITCZ at a), uint(b), c), belt_cloud of them in w
 const int PROBE_CELLS = 7;            // closed_cells(p, uint(b)), open_cells, cell_border(p * 160, p, its key),
@@ -32,6 +32,7 @@ const int PROBE_CONVECTIVE_DISTANCES = 20;  // convective_distances(p, a, uint(b
                                             // c, uint(b), x[3].x) in zw; NEAR_CELLS where x[3].z > 1/2
 const int PROBE_CONVECTIVE_WARP = 21;        // convective_warp(p, uint(b), 2)
 const int PROBE_SEARCHED_OFFSET = 22;        // searched_offset(int(a), int(c), fract(p * 7))
+const int PROBE_LOCAL_EAST = 23;             // local_east(p)
 #ifndef __cplusplus
 #include "../lib/weather_systems.glsl"
 #endif
@@ -81,6 +82,7 @@ vec4 probe_weather_systems(mat4 x) {
                                      x[3].y > 0.5f, x[3].z > 0.5f ? NEAR_CELLS : NEIGHBOUR_CELLS),
                 itcz_systems(p, latitude, x[0].w, seed, x[3].x));
   if (f == PROBE_CONVECTIVE_WARP) return vec4(convective_warp(p, seed, 2), 0.0f);
+  if (f == PROBE_LOCAL_EAST) return vec4(local_east(p), 0.0f);
   if (f == PROBE_SEARCHED_OFFSET)
     return vec4(vec3(searched_offset(int(x[0].y), int(x[0].w), fract(p * 7.0f))), 0.0f);
   if (f == PROBE_BELTS_SURFACE) return vec4(belts_over_surface(p, x[0].y), 0.0f);
@@ -107,8 +109,8 @@ vec4 probe_weather_systems(mat4 x) {
   if (f == PROBE_CELL_WEIGHTS)
     return vec4(cell_weights(x[0].y, x[0].z), deck_presence(x[0].y), cells_resolved(x[0].z * 100.0f, x[0].w));
   if (f == PROBE_BELTS)
-    return vec4(itcz_clusters(p, latitude, x[0].y, seed, x[0].w), trade_cumulus(p, latitude, seed, x[0].w),
-                cirrus_streaks(p, latitude, seed), itcz_anvils(p, latitude, x[0].y, seed, x[0].w));
+    return vec4(itcz_systems(p, latitude, x[0].y, seed, x[0].w).x, trade_cumulus(p, latitude, seed, x[0].w),
+                cirrus_streaks(p, latitude, seed), itcz_systems(p, latitude, x[0].y, seed, x[0].w).y);
   WeatherSystems systems;
   systems.cyclones[0] = probe_cyclone(x);
   systems.cyclone_count = 1;
