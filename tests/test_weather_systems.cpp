@@ -305,6 +305,56 @@ TEST_CASE("the ITCZ's clusters stay in its belt and follow the season", "[fast][
   CHECK(west > east);
 }
 
+TEST_CASE("a convective system's search finds every system whose cloud reaches the point", "[fast][systems]") {
+  // Against every lattice point of the 5 x 5 x 5 cells around the point's (all within 1.5 cells):
+  // where the nearest system or anvil within the cloud's reach (1 + the noise's largest shift, 0.8
+  // radii) lies there, the search of 27 cells (systems, radii up to 0.5) or of the 8 nearest
+  // (towers, radii up to 0.27) finds it at the same distance: no system is cut by the search.
+  const std::uint32_t seed = 7u;
+  const vec3 presence = glsl::convective_presence_of(0.1f, 0.07f, 1.0f);
+  std::mt19937 random(5);
+  std::uniform_real_distribution<float> longitude(-3.14f, 3.14f), latitude(-0.1f, 0.3f);
+  int reached = 0;
+  for (int k = 0; k < 4000; ++k) {
+    const float lat = latitude(random), lon = longitude(random);
+    const vec3 p(std::cos(lat) * std::cos(lon), std::cos(lat) * std::sin(lon), std::sin(lat));
+    for (const bool towers : {false, true}) {
+      const float frequency = towers ? glsl::ITCZ_TOWER_CELLS : glsl::ITCZ_CELLS;
+      const vec2 radii = towers ? glsl::ITCZ_TOWER_RADII : glsl::ITCZ_RADII;
+      const int searched = towers ? glsl::NEAR_CELLS : glsl::NEIGHBOUR_CELLS;
+      const vec2 found =
+          glsl::convective_distances(p, frequency, seed, glsl::ITCZ_LAYER, radii, presence, !towers, searched);
+      const vec3 scaled = p * frequency, base = glm::floor(scaled);
+      const glsl::ivec3 cell(base);
+      const glsl::uvec3 key = glsl::noise_key(seed, glsl::ITCZ_LAYER),
+                        size_key = glsl::noise_key(seed, glsl::ITCZ_LAYER + 1u);
+      vec2 all(1.0e30f);
+      for (int z = -2; z <= 2; ++z)
+        for (int y = -2; y <= 2; ++y)
+          for (int x = -2; x <= 2; ++x) {
+            const glsl::ivec3 offset(x, y, z);
+            const vec3 to_point = vec3(offset) + glsl::wrapped_feature_offset(cell + offset, key) - (scaled - base);
+            const vec3 h = glsl::hash_to_unit3(glsl::pcg3d(glsl::uvec3(cell + offset) ^ size_key));
+            if (h.y >= glsl::convective_presence(glm::normalize(scaled + to_point), presence)) continue;
+            const float r = glsl::equal_area_radius(h.x, radii.x, radii.y);
+            all.x = std::min(all.x, glm::length(to_point) / r);
+            const vec3 east = glsl::local_east(p);
+            const float along = -glm::dot(to_point, east);
+            const vec3 across = -to_point - along * east;
+            const float lagged = (along + glsl::ANVIL_LAG * r) / glsl::ANVIL_STRETCH;
+            all.y = std::min(all.y, std::sqrt(lagged * lagged + glm::dot(across, across)) / (glsl::ANVIL_SPREAD * r));
+          }
+      if (all.x < 1.0f + glsl::CORE_EDGE_REACH) {
+        ++reached;
+        CHECK(found.x == all.x);
+      }
+      if (!towers && all.y < 1.0f + glsl::ANVIL_EDGE_REACH) CHECK(found.y == all.y);
+    }
+  }
+  INFO("points a system's cloud can reach: " << reached);
+  CHECK(reached > 400);
+}
+
 TEST_CASE("convective systems' radii cover equal areas in each logarithmic interval of size", "[fast][systems]") {
   // The radii of uniform hashes (midpoints of 100000 equal steps) between 0.2 and 0.55: the area
   // sum_r r^2 below the range's geometric mean equals the sum above it, as an r^-3 density gives
