@@ -546,8 +546,8 @@ TEST_CASE("weather_systems.glsl on the GPU agrees with the CPU", "[probe]") {
     cases.push_back(
         {arguments(PROBE_BELTS, vec4(r(-0.1f, 0.2f), seed, r(-1.0f, 1.0f), 0), vec4(q, 0)), 12.5f * 70 * kFbm});
     // The convective systems' radius: a few operations and a square root on values below 1; their
-    // cloud a smoothstep of slope 1.5 / 0.15 = 10; their presence an asin and an exp of an offset
-    // divided by widths down to 0.07 (14 per unit of sine).
+    // cloud a smoothstep of slope 1.5 / 0.15 = 10; their presence a polynomial bump of an offset
+    // made with the line's sine and cosine and divided by widths down to 0.07 (14 per unit of sine).
     cases.push_back({arguments(PROBE_CONVECTIVE, vec4(r(0.0f, 1.0f), r(0.05f, 0.2f), r(0.3f, 0.6f), 0), vec4(q, 0),
                                vec4(0.0f), vec4(r(0.0f, 1.5f), r(-1.0f, 1.0f), r(-0.2f, 0.2f), r(0.07f, 0.2f))),
                      std::max(16 * kArithmetic, 16 * kTranscendental)});
