@@ -1,6 +1,7 @@
 #pragma once
 // Work on rows shared by the machine's hardware threads: the CPU resamplers of covers too large
-// for the GPU (cover/streamed_equirect.cpp, the exr-cube export).
+// for the GPU (cover/streamed_equirect.cpp, the exr-cube export) and the regional weather field
+// sampled from a cover (regional/weather_field.cpp).
 #include <algorithm>
 #include <functional>
 #include <thread>

@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/parallel_rows.hpp"
 #include "regional/sites.hpp"
 #include "shader_math/shader_math.hpp"
 
@@ -92,32 +93,36 @@ WeatherField field_from_cover(const CoverChannels& cover, const GeographicLib::L
   const auto put = [&](CoverageChannel c, int row, int column, float value) {
     f.values[(static_cast<size_t>(c) * size + row) * size + column] = value;
   };
-  for (int row = 0; row < size; ++row)
-    for (int column = 0; column < size; ++column) {
-      double lat = 0, lon = 0;
-      ground_position(frame, f.east_of(column), f.north_of(row), lat, lon);
-      // The cover's direction of a geographic latitude and longitude is the sphere's, as the orbit
-      // view, the cover's latitude profile and its equirect take it; the ellipsoid's point of that
-      // latitude lies in a direction 0.19 degrees (21 km) further south at Bern.
-      const double phi = lat * M_PI / 180, lambda = lon * M_PI / 180;
-      const glsl::vec3 n(float(std::cos(phi) * std::cos(lambda)), float(std::cos(phi) * std::sin(lambda)),
-                         float(std::sin(phi)));
-      const glsl::CubeBsplineTaps taps = glsl::cube_bspline_taps(n, float(cover.size));
-      const glsl::vec4 sample = glsl::cube_bspline_combine(
-          taps, glsl::sample_cube_bilinear(taps.d00, source), glsl::sample_cube_bilinear(taps.d10, source),
-          glsl::sample_cube_bilinear(taps.d01, source), glsl::sample_cube_bilinear(taps.d11, source));
-      const float c = std::clamp(sample.x, 0.0f, 1.0f);
-      if (c <= 0.0f) continue;
-      const float latitude = std::asin(std::clamp(n.z, -1.0f, 1.0f));
-      const float t = tau != nullptr ? sample.y / sample.x
-                                     : glsl::optical_thickness_from_cover(c, cover.tau_median, cover.tau_spread);
-      const float h = top != nullptr ? sample.z / sample.x : glsl::cloud_top_from_cover(c, latitude);
-      const float cloudy = glsl::subtexel_cloud(n * radius, c, cover_texel, footprint).cover;
-      const LevelShares shares = level_shares(h, t);
-      put(CoverageChannel::low, row, column, cloudy * shares.low);
-      put(CoverageChannel::mid, row, column, cloudy * shares.mid);
-      put(CoverageChannel::high, row, column, cloudy * shares.high);
-    }
+  // Rows on the machine's threads: the texels are independent (the B-spline filter and the sub-texel
+  // cloud on the CPU, about 0.12 s for 256^2 on one core) and each thread writes only its own rows.
+  core::parallel_rows(size, [&](int first, int end) {
+    for (int row = first; row < end; ++row)
+      for (int column = 0; column < size; ++column) {
+        double lat = 0, lon = 0;
+        ground_position(frame, f.east_of(column), f.north_of(row), lat, lon);
+        // The cover's direction of a geographic latitude and longitude is the sphere's, as the orbit
+        // view, the cover's latitude profile and its equirect take it; the ellipsoid's point of that
+        // latitude lies in a direction 0.19 degrees (21 km) further south at Bern.
+        const double phi = lat * M_PI / 180, lambda = lon * M_PI / 180;
+        const glsl::vec3 n(float(std::cos(phi) * std::cos(lambda)), float(std::cos(phi) * std::sin(lambda)),
+                           float(std::sin(phi)));
+        const glsl::CubeBsplineTaps taps = glsl::cube_bspline_taps(n, float(cover.size));
+        const glsl::vec4 sample = glsl::cube_bspline_combine(
+            taps, glsl::sample_cube_bilinear(taps.d00, source), glsl::sample_cube_bilinear(taps.d10, source),
+            glsl::sample_cube_bilinear(taps.d01, source), glsl::sample_cube_bilinear(taps.d11, source));
+        const float c = std::clamp(sample.x, 0.0f, 1.0f);
+        if (c <= 0.0f) continue;
+        const float latitude = std::asin(std::clamp(n.z, -1.0f, 1.0f));
+        const float t = tau != nullptr ? sample.y / sample.x
+                                       : glsl::optical_thickness_from_cover(c, cover.tau_median, cover.tau_spread);
+        const float h = top != nullptr ? sample.z / sample.x : glsl::cloud_top_from_cover(c, latitude);
+        const float cloudy = glsl::subtexel_cloud(n * radius, c, cover_texel, footprint).cover;
+        const LevelShares shares = level_shares(h, t);
+        put(CoverageChannel::low, row, column, cloudy * shares.low);
+        put(CoverageChannel::mid, row, column, cloudy * shares.mid);
+        put(CoverageChannel::high, row, column, cloudy * shares.high);
+      }
+  });
   return f;
 }
 
