@@ -70,7 +70,7 @@ TEST_CASE("cloud tops follow the cloud type: decks low, fronts middle, cirrus hi
           "[fast][properties]") {
   const auto top = [](float frontal, float deep, float cumulus, float cirrus, float latitude, float cyclonic,
                       float bias) {
-    glsl::CloudTypes t;
+    glsl::CloudTypes t{};
     t.frontal = frontal;
     t.deep_convection = deep;
     t.cumulus = cumulus;

@@ -165,7 +165,7 @@ TEST_CASE("density and coverage passes agree with the CPU twin", "[pass]") {
     const vec3 origin = normalize(vec3(warp[k]));
     const float latitude = portable_asin(clamp(origin.z, -1.0f, 1.0f));
     const float cyclones = cyclone_systems(origin, systems, system_edge(noise));
-    const vec3 belts = belt_fields(origin, latitude, systems, systems.seed, system_edge(noise));
+    const vec4 belts = belt_fields(origin, latitude, systems, systems.seed, system_edge(noise));
     const float systems_value = std::max(cyclones, belt_cloud(belts));
     const float shaped = shaped_density(noise, curl[k].w, p.cyclone_cloudiness, 0.0f, 0.0f);
     // The convective cells (none resolved by 16 texels a face: the modulation is 0 here).

@@ -439,7 +439,7 @@ TEST_CASE("cloud_properties.glsl on the GPU agrees with the CPU", "[probe]") {
                      std::max(128 * kUlp * tau, kArithmetic)});
     // Heights below 16 km: a cos and a few mixes, kTranscendental scaled from values below 4.
     const vec4 types(r(0.0f, 1.0f), r(0.0f, 1.0f), r(0.0f, 1.0f), r(0.0f, 1.0f));
-    const vec4 place(r(-1.5f, 1.5f), r(0.0f, 0.6f), r(-1.0f, 1.0f), 0.0f);
+    const vec4 place(r(-1.5f, 1.5f), r(0.0f, 0.6f), r(-1.0f, 1.0f), r(0.0f, 1.0f));
     cases.push_back(
         {arguments(PROBE_CLOUD_TOP, vec4(r(0.0f, 16.0f), r(0.0f, 100.0f), 0, 0), types, place), 4 * kTranscendental});
     cases.push_back(
@@ -519,7 +519,7 @@ TEST_CASE("weather_systems.glsl on the GPU agrees with the CPU", "[probe]") {
     cases.push_back({arguments(PROBE_BAND_PROFILE, vec4(r(-1.0f, 1.0f), r(0.1f, 1.0f), 0, 0)), kArithmetic * 16});
     // cloud_types: three divisions by the belts' weights (at least 0.35) of values below 1.
     cases.push_back({arguments(PROBE_CLOUD_TYPES, vec4(r(0.0f, 1.0f), 0, 0, 0),
-                               vec4(r(0.0f, 1.0f), r(0.0f, 0.6f), r(0.0f, 0.35f), 0.0f)),
+                               vec4(r(0.0f, 1.0f), r(0.0f, 0.6f), r(0.0f, 0.35f), r(0.0f, 1.0f))),
                      4 * kArithmetic});
     // frontal_reach: a smoothstep of |z| over 0.167 (slope up to 9): kArithmetic scaled by it.
     cases.push_back(
@@ -558,16 +558,13 @@ TEST_CASE("weather_systems.glsl on the GPU agrees with the CPU", "[probe]") {
     // error of distances near 1 through convective_cloud's slope of 10 per radius: 2e-3.
     cases.push_back({arguments(PROBE_CONVECTIVE_DISTANCES, vec4(k % 2 ? 8.0f : 32.0f, seed, r(-0.1f, 0.2f), 0),
                                vec4(normalize(vec3(q.x, q.y, 0.4f * q.z)), 0), vec4(0.0f),
-                               vec4(r(-1.0f, 1.0f), float(k % 3 != 0), float(k % 4 == 1), 0)),
+                               vec4(r(-1.0f, 1.0f), float(k % 3), float(k % 4 == 1), 0)),
                      3.0e-3f});
     // The warp: two Perlin values (smooth: their rounding below kFbm) times 0.008 along unit
     // tangents, renormalised: kArithmetic-sized.
     cases.push_back({arguments(PROBE_CONVECTIVE_WARP, vec4(0, seed, 0, 0), vec4(q, 0)), 4 * kArithmetic});
     // The east vector: a normalize of exact components: kArithmetic.
     cases.push_back({arguments(PROBE_LOCAL_EAST, vec4(0.0f), vec4(q, 0)), kArithmetic});
-    // The cells searched: integers, exact.
-    cases.push_back(
-        {arguments(PROBE_SEARCHED_OFFSET, vec4(float(k % 27), 0, 0, k % 2 ? 8.0f : 27.0f), vec4(q, 0)), 0.0f});
     cases.push_back(
         {arguments(PROBE_WEATHER_DENSITY, vec4(r(-0.1f, 0.2f), seed, r(-1.0f, 1.0f), 0), vec4(q, 0), cyclone, life),
          std::max(band, 12.5f * 70 * kFbm)});
@@ -620,7 +617,7 @@ TEST_CASE("weather_systems.glsl on the GPU agrees with the CPU", "[probe]") {
     cases.push_back({arguments(PROBE_COLD_FRONT, vec4(r(-3.0f, 2.0f), 0, r(-3.5f, 1.0f), 0)), 3 * 16 * kArithmetic});
     // The belts over a surface: one smoothstep (arithmetic) times a field below 1.
     cases.push_back({arguments(PROBE_BELTS_SURFACE, vec4(r(-1.0f, 1.0f), 0, 0, 0),
-                               vec4(r(0.0f, 1.0f), r(0.0f, 0.6f), r(0.0f, 0.35f), 0)),
+                               vec4(r(0.0f, 1.0f), r(0.0f, 0.6f), r(0.0f, 0.35f), r(0.0f, 1.0f))),
                      kArithmetic * 16});
     // The cyclones near p: a set of bits, 0 or 1 for the one cyclone (exact but within rounding of
     // its reach, which random points miss); a neighbour's feature point, hashed integers scaled

@@ -308,22 +308,23 @@ TEST_CASE("the ITCZ's clusters stay in its belt and follow the season", "[fast][
 TEST_CASE("a convective system's search finds every system whose cloud reaches the point", "[fast][systems]") {
   // Against every lattice point of the 5 x 5 x 5 cells around the point's (all within 1.5 cells):
   // where the nearest system or anvil within the cloud's reach (1 + the noise's largest shift, 0.8
-  // radii) lies there, the search of 27 cells (systems, radii up to 0.5) or of the 8 nearest
-  // (towers, radii up to 0.27) finds it at the same distance: no system is cut by the search.
+  // radii for the systems, 0.3 for the anvils) lies there, the search of 27 cells (the systems,
+  // radii up to 0.5, and the towers, radii up to 0.27, with their anvils of up to 0.98 cells) finds
+  // it at the same distance: no system or anvil is cut by the search.
   const std::uint32_t seed = 7u;
   const vec3 presence = glsl::convective_presence_of(0.1f, 0.07f, 1.0f);
   std::mt19937 random(5);
   std::uniform_real_distribution<float> longitude(-3.14f, 3.14f), latitude(-0.1f, 0.3f);
-  int reached = 0;
+  int reached = 0, anvils_reached = 0;
   for (int k = 0; k < 4000; ++k) {
     const float lat = latitude(random), lon = longitude(random);
     const vec3 p(std::cos(lat) * std::cos(lon), std::cos(lat) * std::sin(lon), std::sin(lat));
     for (const bool towers : {false, true}) {
       const float frequency = towers ? glsl::ITCZ_TOWER_CELLS : glsl::ITCZ_CELLS;
       const vec2 radii = towers ? glsl::ITCZ_TOWER_RADII : glsl::ITCZ_RADII;
-      const int searched = towers ? glsl::NEAR_CELLS : glsl::NEIGHBOUR_CELLS;
-      const vec2 found =
-          glsl::convective_distances(p, frequency, seed, glsl::ITCZ_LAYER, radii, presence, !towers, searched);
+      const vec3 anvil = towers ? glsl::TOWER_ANVIL : glsl::SYSTEM_ANVIL;
+      const vec2 found = glsl::convective_distances(p, frequency, seed, glsl::ITCZ_LAYER, radii, presence, anvil,
+                                                    glsl::NEIGHBOUR_CELLS);
       const vec3 scaled = p * frequency, base = glm::floor(scaled);
       const glsl::ivec3 cell(base);
       const glsl::uvec3 key = glsl::noise_key(seed, glsl::ITCZ_LAYER),
@@ -341,18 +342,22 @@ TEST_CASE("a convective system's search finds every system whose cloud reaches t
             const vec3 east = glsl::local_east(p);
             const float along = -glm::dot(to_point, east);
             const vec3 across = -to_point - along * east;
-            const float lagged = (along + glsl::ANVIL_LAG * r) / glsl::ANVIL_STRETCH;
-            all.y = std::min(all.y, std::sqrt(lagged * lagged + glm::dot(across, across)) / (glsl::ANVIL_SPREAD * r));
+            const float lagged = (along + anvil.z * r) / anvil.y;
+            all.y = std::min(all.y, std::sqrt(lagged * lagged + glm::dot(across, across)) / (anvil.x * r));
           }
       if (all.x < 1.0f + glsl::CORE_EDGE_REACH) {
         ++reached;
         CHECK(found.x == all.x);
       }
-      if (!towers && all.y < 1.0f + glsl::ANVIL_EDGE_REACH) CHECK(found.y == all.y);
+      if (all.y < 1.0f + glsl::ANVIL_EDGE_REACH) {
+        ++anvils_reached;
+        CHECK(found.y == all.y);
+      }
     }
   }
-  INFO("points a system's cloud can reach: " << reached);
+  INFO("points a system's cloud can reach: " << reached << ", an anvil's: " << anvils_reached);
   CHECK(reached > 400);
+  CHECK(anvils_reached > 400);
 }
 
 TEST_CASE("convective systems' radii cover equal areas in each logarithmic interval of size", "[fast][systems]") {
@@ -403,12 +408,13 @@ TEST_CASE("trade cumulus are many small separate clouds in the trades and none a
 
 TEST_CASE("trade cumulus fade over the deserts and stay over the ocean, the other belts stay everywhere",
           "[fast][systems]") {
-  const vec3 fields(0.9f, 0.6f, 0.3f);
+  const glsl::vec4 fields(0.9f, 0.6f, 0.3f, 0.5f);
   // No mask (bias 0) and the decks' ocean (positive bias): unchanged, to the bit.
   for (float ocean : {0.0f, 0.3f, 1.0f}) CHECK(glsl::belts_over_surface(fields, ocean) == fields);
   // Inside a desert (bias -0.4 and below: the Sahara's interior about -1): no cumulus, the
   // clusters and the cirrus untouched.
-  for (float desert : {-0.4f, -1.0f}) CHECK(glsl::belts_over_surface(fields, desert) == vec3(0.9f, 0.0f, 0.3f));
+  for (float desert : {-0.4f, -1.0f})
+    CHECK(glsl::belts_over_surface(fields, desert) == glsl::vec4(0.9f, 0.0f, 0.3f, 0.5f));
   // Half way, smoothstep's middle: half the cumulus; and the fade is monotonic.
   CHECK(glsl::belts_over_surface(fields, -0.2f).y == Approx(0.3f).margin(1e-6));
   float previous = fields.y;
@@ -996,6 +1002,13 @@ TEST_CASE("the trades' shallow regime shrinks the cloud's excess and leaves the 
   CHECK(glsl::shallow_trades_weight(front, 20.0f * degree, 0.0f, 1.0f) == 0.0f);
   CHECK(glsl::shallow_trades_weight(cluster, 5.0f * degree, 0.0f, 1.0f) == 0.0f);
   CHECK(glsl::shallow_trades_weight(clump, 15.0f * degree, 0.0f, 1.0f) == 1.0f);
+  // An anvil takes three quarters of the regime: its cover contrast is 0.31, between the
+  // cumulus' 0.08 and a system's 1.
+  glsl::CloudTypes anvil = clump;
+  anvil.anvil = 1.0f;
+  CHECK(glsl::shallow_trades_weight(anvil, 5.0f * degree, 0.0f, 1.0f) == Approx(0.75f).margin(1e-6));
+  CHECK(glsl::cover_contrast(glsl::shallow_trades_weight(anvil, 5.0f * degree, 0.0f, 1.0f)) ==
+        Approx(0.31f).margin(1e-6));
   // Half a front's weight, half the regime; the belt falls monotonically from 26 to 33 degrees.
   front.frontal = 0.5f;
   CHECK(glsl::shallow_trades_weight(front, 20.0f * degree, 0.0f, 1.0f) == Approx(0.5f).margin(1e-6));

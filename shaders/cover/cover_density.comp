@@ -63,7 +63,7 @@ uniform float u_young_share;
 uniform uint u_young_systems_seed;  // the younger layer's belts (u_systems.seed: the older's)
 #endif
 
-vec3 belts_at(vec3 origin, uint seed, float edge) {
+vec4 belts_at(vec3 origin, uint seed, float edge) {
   return belt_fields(origin, portable_asin(clamp(origin.z, -1.0f, 1.0f)), u_systems, seed, edge);
 }
 
@@ -117,11 +117,11 @@ void main() {
     // blended as it.
     float edge = system_edge(noise);
     vec3 origin = normalize(warped);
-    vec3 fields = belts_over_surface(belts_at(origin, u_systems.seed, edge), surface);
+    vec4 fields = belts_over_surface(belts_at(origin, u_systems.seed, edge), surface);
     float belts = belt_cloud(fields);
     vec3 older_origin = origin;
 #if MOVING_LAYERS
-    vec3 young_fields = belts_over_surface(belts_at(normalize(young_warped), u_young_systems_seed, edge), surface);
+    vec4 young_fields = belts_over_surface(belts_at(normalize(young_warped), u_young_systems_seed, edge), surface);
     belts = layer_blend(belts, belt_cloud(young_fields), u_young_share);
     fields = mix(fields, young_fields, u_young_share);
     origin = normalize(mix(warped, young_warped, u_young_share));

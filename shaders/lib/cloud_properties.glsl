@@ -62,7 +62,8 @@ struct CloudTypes {
   float frontal;          // the cyclones' comma cloud: frontal bands and the warm-front shield
   float deep_convection;  // the ITCZ's clusters
   float cumulus;          // trade cumulus
-  float cirrus;           // cirrus streaks
+  float cirrus;           // cirrus streaks and the anvils
+  float anvil;            // the anvils of the ITCZ's systems and towers (part of cirrus)
 };
 
 // The tropopause's height above sea level, km: about 16-17 km in the tropics and 8-9 km at the
@@ -112,14 +113,23 @@ float cloud_top_km(IN(CloudTypes) types, float latitude, float cyclonic, float d
   return mix(top, tropopause - ANVIL_BELOW_TROPOPAUSE_KM, clamp(types.deep_convection, 0.0f, 1.0f));
 }
 
-// How far a texel's cloud is organised by a weather system into bright, thick cloud, in [0, 1]: the
-// largest of the comma clouds' and the ITCZ's clusters' weights and a deck's presence. Not among
-// them: the trade cumulus clusters, clumps of small cumulus a little brighter than the field around
-// them but themselves broken ("gravel" and "flowers", Stevens et al. 2020); the cirrus streaks,
-// thin cloud; and the flow's cyclonic depth, whose vortices in the tropics are no weather system
-// (the tropics' deep convection is the ITCZ's clusters): cloud its ascent lifts there is thin cirrus.
+// The anvils' share of organisation: they are a sheet of cirrus spread from the cores (Houze 2004),
+// neither broken cumulus nor thick cloud. Optically thin (tau of a few), they reflect less than
+// half of what thick cloud does (two-stream R = x / (1 + x), x = 3/4 (1 - g) tau with g = 0.75:
+// 0.36 at tau 3 against 0.88 at tau 40). A quarter of the systems' organisation gives them the
+// cover contrast 1 - 0.75 (1 - SHALLOW_CONTRAST) = 0.31 (cover_density.glsl): the noise's cloud a
+// spread (0.074) above the threshold gets cover 1 - 0.9 exp(-0.31 x 0.074 / 0.05) = 0.43 at the
+// default softness, two spreads 0.62, against 0.20 and 0.29 in the shallow cumulus around them.
+const float ANVIL_ORGANISED = 0.25f;
+
+// How far a texel's cloud is organised by a weather system, in [0, 1]: the largest of the comma
+// clouds' and the ITCZ's clusters' weights, a deck's presence and the anvils' share (ANVIL_ORGANISED
+// of their weight). Not among them: the trade cumulus clusters, clumps of small cumulus a little brighter than the field
+// around them but themselves broken ("gravel" and "flowers", Stevens et al. 2020); the cirrus
+// streaks, thin cloud; and the flow's cyclonic depth, whose vortices in the tropics are no weather
+// system (the tropics' deep convection is the ITCZ's clusters): cloud its ascent lifts there is thin cirrus.
 float organised_cloud(IN(CloudTypes) types, float deck) {
-  return clamp(max(max(types.frontal, types.deep_convection), deck), 0.0f, 1.0f);
+  return clamp(max(max(types.frontal, types.deep_convection), max(deck, ANVIL_ORGANISED * types.anvil)), 0.0f, 1.0f);
 }
 
 // The trades' belt: the tropics to the subtropical highs' poleward edge, full to 26 degrees and
@@ -164,6 +174,7 @@ float cloud_top_from_cover(float cover, float latitude) {
   types.deep_convection = 0.0f;
   types.cumulus = 0.0f;
   types.cirrus = 0.0f;
+  types.anvil = 0.0f;
   return cover > 0.0f ? cloud_top_km(types, latitude, 0.0f, 0.0f) : 0.0f;
 }
 

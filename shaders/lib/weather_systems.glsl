@@ -158,11 +158,17 @@ vec3 local_east(vec3 p) { return normalize(vec3(-p.y, p.x, 0.0f) + vec3(1.0e-6f,
 // The anvils of deep convection: it spreads out under the tropopause into a shield of cirrus far
 // wider than its convective core (Houze 2004, "Mesoscale convective systems", Rev. Geophys. 42:
 // anvils hundreds of kilometres across), drawn out westward by the upper troposphere's easterlies
-// over the ITCZ: an ellipse ANVIL_SPREAD times the system's radius across, ANVIL_STRETCH times
-// longer east-west, centred ANVIL_LAG radii west of the system.
-const float ANVIL_SPREAD = 1.2f;
-const float ANVIL_STRETCH = 1.2f;
-const float ANVIL_LAG = 0.1f;
+// over the ITCZ: an ellipse `spread` times the system's radius across, `stretch` times longer
+// east-west, centred `lag` radii west of the system (vec3(spread, stretch, lag);
+// spread 0: no anvil). The towers' spread over about five times their cores' area (spread^2
+// stretch = 4.9): half of the warm pool's moderately cold cloud (below 235 K, the anvils' level)
+// lies in clusters over 1e5 km^2 where half of its very cold cloud (below 208 K, the cores) lies in
+// clusters over 2e4 km^2 (Mapes and Houze 1993). The mesoscale systems' discs, 320-800 km across,
+// are such shields already; their anvils are only the shields' ragged western edge, as far as
+// their search reaches (convective_distances).
+const vec3 SYSTEM_ANVIL = vec3(1.2f, 1.2f, 0.1f);
+const vec3 TOWER_ANVIL = vec3(1.8f, 1.5f, 0.1f);
+const vec3 NO_ANVIL = vec3(0.0f);
 
 // The share of places with a system at the unit direction p, for a line at latitude `line`: `filled`
 // on the line, falling off with the offset o = (latitude - line) / width as (1 - o^2 / 4)^2 (half at
@@ -180,28 +186,19 @@ float convective_presence(vec3 p, vec3 presence) {
   return presence.z * bump * bump;
 }
 
-// The cells a search for convective systems visits around p's cell, p at f in it: the 27 around it
-// (NEIGHBOUR_CELLS), which hold every feature point within one cell of p, or NEAR_CELLS, the 2 x 2 x 2
-// block nearest f, which holds every one within half a cell (for lattices whose systems reach no
-// further: a third of the work). The k-th of them.
-const int NEAR_CELLS = 8;
-ivec3 searched_offset(int k, int searched, vec3 f) {
-  if (searched == NEAR_CELLS) return ivec3(k % 2, (k / 2) % 2, k / 4) + ivec3(step(vec3(0.5f), f)) - ivec3(1);
-  return neighbour_offset(k);
-}
-
 // Convective systems on a lattice of `frequency` cells per radius (noise layer `layer` for the
 // points, layer + 1 for their sizes and presence): at most one at each cell's feature point, a disc
 // of radius equal_area_radius(hash, radii) cells, present where a second hash is below `presence`
 // (convective_presence_of) of the point's direction (its share of places with a system). Returns the smallest distance from
 // p to a system's point in units of its radius (x), and to an anvil's centre in units of its
-// half-axes (y; 1e30 unless `anvils`), over the cells `searched` (searched_offset) around p: each
+// half-axes (y; 1e30 without an `anvil`), over the first `searched` of the 27 cells around p
+// (neighbour_offset; NEIGHBOUR_CELLS, or 0: SKIPPABLE), which hold every point within a cell: each
 // system is a whole disc (the nearest point's system alone would be cut along its Voronoi cell's
 // border into straight edges) where it reaches no further than the search: with the 27 cells,
-// radii up to 0.5 cells keep the discs (out to 1.8 radii with the noise, 0.9 cells) and their
-// anvils ((1.2 x 1.2 + 0.1) 0.5 x 1.3 = 1.0) whole; with NEAR_CELLS radii up to 0.27 the discs
-// (0.49). 1e30 where none is near or `searched` is 0 (SKIPPABLE).
-vec2 convective_distances(vec3 p, float frequency, uint seed, uint layer, vec2 radii, vec3 presence, bool anvils,
+// radii up to 0.5 cells keep the discs (out to 1.8 radii with the noise, 0.9 cells) and anvils of
+// (spread stretch + lag) r 1.3 up to 1 cell whole (the systems': (1.2 x 1.2 + 0.1) 0.5 x 1.3 = 1.0;
+// the towers': (1.8 x 1.5 + 0.1) 0.27 x 1.3 = 0.98). 1e30 where none is near or `searched` is 0.
+vec2 convective_distances(vec3 p, float frequency, uint seed, uint layer, vec2 radii, vec3 presence, vec3 anvil,
                           int searched) {
   vec3 scaled = p * frequency;
   vec3 base = floor(scaled);
@@ -211,17 +208,17 @@ vec2 convective_distances(vec3 p, float frequency, uint seed, uint layer, vec2 r
   vec3 east = local_east(p);
   vec2 nearest = vec2(1.0e30f);
   for (int k = 0; k < searched; ++k) {
-    ivec3 offset = searched_offset(k, searched, f);
+    ivec3 offset = neighbour_offset(k);
     vec3 to_point = vec3(offset) + wrapped_feature_offset(cell + offset, key) - f;
     vec3 h = hash_to_unit3(pcg3d(uvec3(cell + offset) ^ size_key));
     if (h.y >= convective_presence(normalize(scaled + to_point), presence)) continue;
     float r = equal_area_radius(h.x, radii.x, radii.y);
     nearest.x = min(nearest.x, length(to_point) / r);
-    if (!anvils) continue;
+    if (anvil.x <= 0.0f) continue;
     float along = -dot(to_point, east);  // p's distance east of the point
     vec3 across = -to_point - along * east;
-    float lagged = (along + ANVIL_LAG * r) / ANVIL_STRETCH;
-    nearest.y = min(nearest.y, sqrt(lagged * lagged + dot(across, across)) / (ANVIL_SPREAD * r));
+    float lagged = (along + anvil.z * r) / anvil.y;
+    nearest.y = min(nearest.y, sqrt(lagged * lagged + dot(across, across)) / (anvil.x * r));
   }
   return nearest;
 }
@@ -244,8 +241,7 @@ float convective_cloud(float d, float edge, float reach) {
 // apart), in nine places in ten on its line and fewer away from it (convective_presence, a width
 // of 4 degrees); and single towers and small clusters 55-145 km across on a lattice three times
 // finer, in one place in two on the line and fewer over a width of 6 degrees (scattered convection
-// over the warm pool),
-// without anvils of their own. Both draw their radii from equal_area_radius, so that together
+// over the warm pool), with anvils of five times their area (TOWER_ANVIL). Both draw their radii from equal_area_radius, so that together
 // they cover about equal areas per interval of size from 50 to 900 km; half of the very cold
 // cloudiness lies in clusters over 20 000 km^2 (160 km across; Mapes and Houze 1993, "Cloud clusters
 // and superclusters over the oceanic warm pool", Mon. Wea. Rev. 121).
@@ -261,7 +257,7 @@ const float ITCZ_TOWER_FILLED = 0.5f;
 const float ITCZ_TOWER_WIDTH = 0.1f;
 // The systems' reach from the ITCZ's line (radians), beyond which none is drawn: a system's point
 // lies within 2 x 0.07 of it and its anvil reaches 1.0 / 8 cells further, a tower's within 2 x 0.1
-// and its cloud 1.8 x 0.27 / 24 further (convective_distances), and the warp moves the point drawn
+// and its anvil 0.98 / 24 further (convective_distances), and the warp moves the point drawn
 // by at most 0.008 sqrt(2) PERLIN_BOUND = 0.012 (convective_warp).
 const float ITCZ_REACH = 0.28f;
 
@@ -289,13 +285,13 @@ vec2 itcz_systems(vec3 p, float latitude, float itcz_latitude, uint seed, float 
   int searched = SKIPPABLE(near, NEIGHBOUR_CELLS);
   p = convective_warp(p, seed, SKIPPABLE(near, 2));
   vec2 systems = convective_distances(p, ITCZ_CELLS, seed, ITCZ_LAYER, ITCZ_RADII,
-                                        convective_presence_of(itcz_latitude, 0.07f, ITCZ_FILLED), true, searched);
+                                        convective_presence_of(itcz_latitude, 0.07f, ITCZ_FILLED), SYSTEM_ANVIL, searched);
   vec2 towers = convective_distances(p, ITCZ_TOWER_CELLS, seed, ITCZ_TOWER_LAYER, ITCZ_TOWER_RADII,
-                                     convective_presence_of(itcz_latitude, ITCZ_TOWER_WIDTH, ITCZ_TOWER_FILLED), false,
-                                     SKIPPABLE(near, NEAR_CELLS));
+                                     convective_presence_of(itcz_latitude, ITCZ_TOWER_WIDTH, ITCZ_TOWER_FILLED),
+                                     TOWER_ANVIL, searched);
   if (!near) return vec2(0.0f);
   return vec2(convective_cloud(min(systems.x, towers.x), edge, CORE_EDGE_REACH),
-              convective_cloud(systems.y, edge, ANVIL_EDGE_REACH));
+              convective_cloud(min(systems.y, towers.y), edge, ANVIL_EDGE_REACH));
 }
 
 // Trade cumulus: many small clouds up to 60-120 km across (the mesoscale clusters of the cumulus,
@@ -631,10 +627,11 @@ float cyclone_systems(vec3 p, IN(WeatherSystems) systems, float edge) {
 
 // The belts' weights in the density at p with the noise of `seed`: ITCZ clusters at full weight
 // (thick cloud), trade cumulus at 0.6, cirrus and the clusters' anvils at 0.35 (thin: they rise
-// little above the threshold and stay grey); x the clusters, y the cumulus, z the cirrus.
+// little above the threshold and stay grey); x the clusters, y the cumulus, z the cirrus, and w the
+// anvils' own field (in [0, 1], unweighted: part of z, told apart for their cloud type).
 const vec3 BELT_WEIGHTS = vec3(1.0f, 0.6f, 0.35f);
-vec3 belt_fields(vec3 p, float latitude, IN(WeatherSystems) systems, uint seed, float edge) {
-  vec3 fields = vec3(0.0f);
+vec4 belt_fields(vec3 p, float latitude, IN(WeatherSystems) systems, uint seed, float edge) {
+  vec4 fields = vec4(0.0f);
   if (systems.trade_cumulus > 0.0f) fields.y = BELT_WEIGHTS.y * systems.trade_cumulus * trade_cumulus(p, latitude, seed, edge);
   if (systems.cirrus > 0.0f) fields.z = BELT_WEIGHTS.z * systems.cirrus * cirrus_streaks(p, latitude, seed);
   if (systems.itcz > 0.0f) {
@@ -642,6 +639,7 @@ vec3 belt_fields(vec3 p, float latitude, IN(WeatherSystems) systems, uint seed, 
     fields.x = itcz.x;
     // The systems' anvils are cirrus: thin (the cirrus's weight) and high.
     fields.z = max(fields.z, BELT_WEIGHTS.z * itcz.y);
+    fields.w = itcz.y;
   }
   return fields;
 }
@@ -649,20 +647,21 @@ vec3 belt_fields(vec3 p, float latitude, IN(WeatherSystems) systems, uint seed, 
 // a mask): trade cumulus grow in the marine boundary layer (Nuijens et al. 2014), so over the
 // subtropical deserts, whose bias is minus their desert weight (about -1 inside the Sahara, -0.3
 // in the Sahel in June), their field fades to nothing at a bias of -0.4.
-vec3 belts_over_surface(vec3 fields, float surface) {
+vec4 belts_over_surface(vec4 fields, float surface) {
   fields.y *= 1.0f - smoothstep(0.0f, 0.4f, -surface);
   return fields;
 }
 // The belts' cloud from their weighted fields: the largest.
-float belt_cloud(vec3 fields) { return max(max(fields.x, fields.y), max(fields.z, 0.0f)); }
+float belt_cloud(vec4 fields) { return max(max(fields.x, fields.y), max(fields.z, 0.0f)); }
 // The cloud types at a texel from the cyclones' cloud and the belts' weighted fields, each divided
 // by its weight so that a system's core is 1 (cloud_properties.glsl's CloudTypes).
-CloudTypes cloud_types(float cyclones, vec3 fields) {
+CloudTypes cloud_types(float cyclones, vec4 fields) {
   CloudTypes types;
   types.frontal = cyclones;
   types.deep_convection = fields.x / BELT_WEIGHTS.x;
   types.cumulus = fields.y / BELT_WEIGHTS.y;
   types.cirrus = fields.z / BELT_WEIGHTS.z;
+  types.anvil = fields.w;
   return types;
 }
 float belt_systems(vec3 p, float latitude, IN(WeatherSystems) systems, uint seed, float edge) {

@@ -1,6 +1,6 @@
 // Probe of lib/cloud_properties.glsl (shared GLSL/C++ subset; tests/test_library_probes.cpp).
 // x[0] = (function, a, b, c), x[1] = (frontal, deep convection, cumulus, cirrus) weights,
-// x[2] = (latitude, cyclonic depth, surface bias, ...). The functions (x[0].x):
+// x[2] = (latitude, cyclonic depth, surface bias, anvil weight). The functions (x[0].x):
 const int PROBE_NORMAL_QUANTILE = 0;    // normal_quantile(a), normal_cdf(a) in y
 const int PROBE_TAU_FROM_RANK = 1;      // optical_thickness_from_rank(a, b, c), cloudy_rank(a, b) in y
 const int PROBE_TAU_FROM_COVER = 2;     // optical_thickness_from_cover(a, b, c)
@@ -21,6 +21,7 @@ CloudTypes probe_cloud_types(mat4 x) {
   types.deep_convection = x[1].y;
   types.cumulus = x[1].z;
   types.cirrus = x[1].w;
+  types.anvil = x[2].w;
   return types;
 }
 vec4 probe_cloud_properties(mat4 x) {

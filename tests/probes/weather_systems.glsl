@@ -7,7 +7,7 @@ const int PROBE_CYCLONE = 2;          // cyclone_frame(p, C).xy, cyclone_cloud(p
 const int PROBE_CELL_CLOUDS = 3;      // cell_clouds(p, a, uint(b), 7, 0.2, 0.3, 0.3, c)
 const int PROBE_BELTS = 4;            // itcz_systems(p, lat, a, uint(b), c).x, trade_cumulus, cirrus_streaks, its .y
 const int PROBE_WEATHER_DENSITY = 5;  // weather_density, cyclone_systems, belt_systems (seed b + 1): cyclone C, the ITCZ at a, seed b, edge c
-const int PROBE_BELT_FIELDS = 6;      // belt_fields(p, lat, systems (the ITCZ at a), uint(b), c), belt_cloud of them in w
+const int PROBE_BELT_FIELDS = 6;      // belt_fields(p, lat, systems (the ITCZ at a), uint(b), c)
 const int PROBE_CELLS = 7;            // closed_cells(p, uint(b)), open_cells, cell_border(p * 160, p, its key),
                                       // deck_strength(p, lat, uint(b), a, c)
 const int PROBE_CELL_WEIGHTS = 8;     // cell_weights(a, b), deck_presence(a), cells_resolved(b * 100, c)
@@ -15,7 +15,7 @@ const int PROBE_COLD = 9;             // cold_sector(vec2(a, c)), cold_sectors(p
                                       // x[3].zw, uint(b), 1e-3), cold_air(p, C).y
 const int PROBE_CELL_PARTS = 10;      // closed_cell_modulation(p, a, uint(b), c), open_cell_modulation(p, a, uint(b), c)
 const int PROBE_POCKETS = 11;         // open_cell_pockets(p, uint(b)), with_pockets(vec2(a, c), it) in y, z
-const int PROBE_BELTS_SURFACE = 12;   // belts_over_surface(x[1].xyz, a)
+const int PROBE_BELTS_SURFACE = 12;   // belts_over_surface(x[1], a): its y, z, w, and belt_cloud of it
 const int PROBE_STREETS = 13;         // street_phasor(p, across, uint(b)), street_rows, street_modulation(p, x[3].xyz,
                                       // a, uint(b), c); across the unit tangent across the wind x[3].xyz
 const int PROBE_COLD_FRONT = 14;      // behind_cold_front(vec2(a, c)), street_share(vec2(a, c))
@@ -23,15 +23,15 @@ const int PROBE_STREET_PEARLS = 15;   // street_pearls(p, uint(b)), street_cloud
 const int PROBE_NEAR = 16;            // cyclones_near(p, cyclone C), neighbour_feature(floor(p * 160), int(c), the
                                       // closed cells' key of seed b) in yzw
 const int PROBE_FRONTAL_REACH = 17;   // frontal_reach(p)
-const int PROBE_CLOUD_TYPES = 18;     // cloud_types(a, p): (frontal, deep convection, cumulus, cirrus)
+const int PROBE_CLOUD_TYPES = 18;     // cloud_types(a, x[1]): (deep convection, cumulus, cirrus, anvil)
 const int PROBE_CONVECTIVE = 19;      // equal_area_radius(a, b, c), convective_cloud(x[3].x, x[3].y, c),
                                       // convective_presence(p, convective_presence_of(x[3].z, x[3].w, a)), and
                                       // that presence's y in w
 const int PROBE_CONVECTIVE_DISTANCES = 20;  // convective_distances(p, a, uint(b), ITCZ_LAYER, ITCZ_RADII, the ITCZ's
-                                            // presence at c, anvils where x[3].y > 1/2); itcz_systems(p, lat,
-                                            // c, uint(b), x[3].x) in zw; NEAR_CELLS where x[3].z > 1/2
+                                            // presence at c, the systems' anvils where x[3].y is 1, the towers'
+                                            // where 2, none where 0); itcz_systems(p, lat,
+                                            // c, uint(b), x[3].x) in zw; no cells searched where x[3].z > 1/2
 const int PROBE_CONVECTIVE_WARP = 21;        // convective_warp(p, uint(b), 2)
-const int PROBE_SEARCHED_OFFSET = 22;        // searched_offset(int(a), int(c), fract(p * 7))
 const int PROBE_LOCAL_EAST = 23;             // local_east(p)
 #ifndef __cplusplus
 #include "../lib/weather_systems.glsl"
@@ -69,8 +69,8 @@ vec4 probe_weather_systems(mat4 x) {
                 0.0f);
   if (f == PROBE_FRONTAL_REACH) return vec4(frontal_reach(p), 0.0f, 0.0f, 0.0f);
   if (f == PROBE_CLOUD_TYPES) {
-    CloudTypes types = cloud_types(x[0].y, p);
-    return vec4(types.frontal, types.deep_convection, types.cumulus, types.cirrus);
+    CloudTypes types = cloud_types(x[0].y, x[1]);
+    return vec4(types.deep_convection, types.cumulus, types.cirrus, types.anvil);
   }
   if (f == PROBE_CONVECTIVE)
     return vec4(equal_area_radius(x[0].y, x[0].z, x[0].w), convective_cloud(x[3].x, x[3].y, x[0].w),
@@ -79,13 +79,15 @@ vec4 probe_weather_systems(mat4 x) {
   if (f == PROBE_CONVECTIVE_DISTANCES)
     return vec4(convective_distances(p, x[0].y, seed, ITCZ_LAYER, ITCZ_RADII,
                                      convective_presence_of(x[0].w, 0.07f, ITCZ_FILLED),
-                                     x[3].y > 0.5f, x[3].z > 0.5f ? NEAR_CELLS : NEIGHBOUR_CELLS),
+                                     x[3].y > 1.5f ? TOWER_ANVIL : (x[3].y > 0.5f ? SYSTEM_ANVIL : NO_ANVIL),
+                                     x[3].z > 0.5f ? 0 : NEIGHBOUR_CELLS),
                 itcz_systems(p, latitude, x[0].w, seed, x[3].x));
   if (f == PROBE_CONVECTIVE_WARP) return vec4(convective_warp(p, seed, 2), 0.0f);
   if (f == PROBE_LOCAL_EAST) return vec4(local_east(p), 0.0f);
-  if (f == PROBE_SEARCHED_OFFSET)
-    return vec4(vec3(searched_offset(int(x[0].y), int(x[0].w), fract(p * 7.0f))), 0.0f);
-  if (f == PROBE_BELTS_SURFACE) return vec4(belts_over_surface(p, x[0].y), 0.0f);
+  if (f == PROBE_BELTS_SURFACE) {
+    vec4 fields = belts_over_surface(x[1], x[0].y);
+    return vec4(fields.y, fields.z, fields.w, belt_cloud(fields));
+  }
   if (f == PROBE_COLD_FRONT)
     return vec4(behind_cold_front(vec2(x[0].y, x[0].w)), street_share(vec2(x[0].y, x[0].w)), 0.0f, 0.0f);
   if (f == PROBE_STREETS) {
@@ -127,8 +129,7 @@ vec4 probe_weather_systems(mat4 x) {
     return vec4(cold_sector(vec2(x[0].y, x[0].w)), cold_sectors(p, systems),
                 cell_modulation(p, vec2(x[3].z, x[3].w), seed, 1.0e-3f), cold_air(p, systems).y);
   if (f == PROBE_BELT_FIELDS) {
-    vec3 fields = belt_fields(p, latitude, systems, seed, x[0].w);
-    return vec4(fields, belt_cloud(fields));
+    return belt_fields(p, latitude, systems, seed, x[0].w);
   }
   return vec4(weather_density(p, latitude, systems, x[0].w), cyclone_systems(p, systems, x[0].w),
               belt_systems(p, latitude, systems, seed + 1u, x[0].w), 0.0f);  // PROBE_WEATHER_DENSITY
