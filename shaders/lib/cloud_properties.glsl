@@ -124,10 +124,11 @@ const float ANVIL_ORGANISED = 0.25f;
 
 // How far a texel's cloud is organised by a weather system, in [0, 1]: the largest of the comma
 // clouds' and the ITCZ's clusters' weights, a deck's presence and the anvils' share (ANVIL_ORGANISED
-// of their weight). Not among them: the trade cumulus clusters, clumps of small cumulus a little brighter than the field
-// around them but themselves broken ("gravel" and "flowers", Stevens et al. 2020); the cirrus
-// streaks, thin cloud; and the flow's cyclonic depth, whose vortices in the tropics are no weather
-// system (the tropics' deep convection is the ITCZ's clusters): cloud its ascent lifts there is thin cirrus.
+// of their weight). Not among them: the trade cumulus clusters, clumps of small cumulus a little
+// brighter than the field around them but themselves broken ("gravel" and "flowers", Stevens et
+// al. 2020); the cirrus streaks, thin cloud; and the flow's cyclonic depth, whose vortices in the
+// tropics are no weather system (the tropics' deep convection is the ITCZ's clusters): cloud its
+// ascent lifts there is thin cirrus.
 float organised_cloud(IN(CloudTypes) types, float deck) {
   return clamp(max(max(types.frontal, types.deep_convection), max(deck, ANVIL_ORGANISED * types.anvil)), 0.0f, 1.0f);
 }

@@ -241,10 +241,11 @@ float convective_cloud(float d, float edge, float reach) {
 // apart), in nine places in ten on its line and fewer away from it (convective_presence, a width
 // of 4 degrees); and single towers and small clusters 55-145 km across on a lattice three times
 // finer, in one place in two on the line and fewer over a width of 6 degrees (scattered convection
-// over the warm pool), with anvils of five times their area (TOWER_ANVIL). Both draw their radii from equal_area_radius, so that together
-// they cover about equal areas per interval of size from 50 to 900 km; half of the very cold
-// cloudiness lies in clusters over 20 000 km^2 (160 km across; Mapes and Houze 1993, "Cloud clusters
-// and superclusters over the oceanic warm pool", Mon. Wea. Rev. 121).
+// over the warm pool), with anvils of five times their area (TOWER_ANVIL). Both draw their radii
+// from equal_area_radius, so that together they cover about equal areas per interval of size from
+// 50 to 900 km; half of the very cold cloudiness lies in clusters over 20 000 km^2 (160 km across;
+// Mapes and Houze 1993, "Cloud clusters and superclusters over the oceanic warm pool", Mon. Wea.
+// Rev. 121).
 const float ITCZ_CELLS = 8.0f;
 const uint ITCZ_LAYER = 11u;  // and 12
 const vec2 ITCZ_RADII = vec2(0.2f, 0.5f);
