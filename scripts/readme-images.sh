@@ -18,7 +18,8 @@
 # With --orbit it makes the orbit view's images alone (about a minute).
 # With --report it also runs `nephele report` (about 35 minutes on two cores) and copies its
 # work-precision diagrams (error_vs_runtime*.svg, render_error_vs_runtime.svg,
-# moving_error_vs_runtime.svg; `nephele report moving` alone makes the last in about 4 minutes).
+# moving_error_vs_runtime.svg, noise_grid_error_vs_runtime.svg; `nephele report moving` alone makes the
+# last two in about 6 minutes).
 set -euo pipefail
 repo_root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$repo_root"
@@ -99,5 +100,6 @@ if [[ "${1:-}" == "--report" ]]; then
   cp "$work/report/error_vs_runtime.svg" docs/images/error_vs_runtime.svg
   cp "$work/report/render_error_vs_runtime.svg" docs/images/render_error_vs_runtime.svg
   cp "$work/report/moving_error_vs_runtime.svg" docs/images/moving_error_vs_runtime.svg
+  cp "$work/report/noise_grid_error_vs_runtime.svg" docs/images/noise_grid_error_vs_runtime.svg
 fi
 echo "readme-images: docs/images updated"

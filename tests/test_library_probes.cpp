@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <random>
 #include <set>
@@ -391,6 +392,19 @@ TEST_CASE("cover_density.glsl on the GPU agrees with the CPU", "[probe]") {
     cases.push_back(
         {arguments(k % 2 ? PROBE_COVER_DENSITY_SHIFTED : PROBE_COVER_DENSITY, vec4(0.0f), p, fbm, seed_and_offset),
          kFbm});
+    // With the first g octaves' sum given as the noise grid carries it (here exact, from the CPU's
+    // inverted_worley_octaves at the shifted point): the shifted density up to the sums' rounding.
+    const int grid_octaves = k % 5;
+    const vec3 shifted = normalize(vec3(p)) + vec3(seed_and_offset.y, seed_and_offset.z, seed_and_offset.w);
+    const FbmParams params = make_fbm_params(fbm.x, int(fbm.y), fbm.z, fbm.w, 7u, ivec3(0));
+    const float grid_sum = inverted_worley_octaves(shifted, params, 0, grid_octaves);
+    const mat4 from_grid = arguments(PROBE_COVER_DENSITY_FROM_GRID, vec4(grid_sum, float(grid_octaves), 0.0f, 0.0f), p,
+                                     fbm, seed_and_offset);
+    cases.push_back({from_grid, kFbm});
+    CHECK(
+        std::abs(probe_cover_density(from_grid).x -
+                 probe_cover_density(arguments(PROBE_COVER_DENSITY_SHIFTED, vec4(0.0f), p, fbm, seed_and_offset)).x) <=
+        8.0f * std::numeric_limits<float>::epsilon());
     cases.push_back(
         {arguments(PROBE_COVER_FROM_DENSITY, vec4(r(0.0f, 1.0f), r(0.0f, 0.5f), r(0.5f, 1.0f), 0)), kArithmetic});
     // With a softness: one subtraction, a division and an exp of a value below 0.
@@ -734,6 +748,21 @@ TEST_CASE("worley_fbm.glsl on the GPU agrees with the CPU", "[probe]") {
     mat4 classic = x;
     classic[0].x = float(PROBE_INVERTED_WORLEY_FBM);
     if (smooth) CHECK(probe_worley_fbm(x).w != probe_worley_fbm(classic).w);
+  }
+  // Octave sums: [first, last) of the same 5 octaves, unnormalised (values up to the weights' sum
+  // 1.94, so twice kFbm), with the weights' sum in y. The CPU's sums of [0, g) and [g, 5) over
+  // that sum make its whole fBm up to the additions' rounding (five terms below 2 and a division).
+  for (int k = 0; k < 24; ++k) {
+    const vec4 p = r.v(0.0f, 1.0f);
+    const int first = k % 5, last = first + 1 + (k / 5) % (5 - first);
+    const vec4 fbm(3.0f, 5.0f, 2.0f, 0.5f), key(99.0f, 0.0f, 0.0f, 0.0f);
+    cases.push_back({arguments(PROBE_INVERTED_WORLEY_OCTAVES, vec4(float(first), float(last), 0.0f, 0.0f), p, fbm, key),
+                     2.0f * kFbm * highest_frequency});
+    const vec4 low = probe_worley_fbm(arguments(PROBE_INVERTED_WORLEY_OCTAVES, vec4(0, first, 0, 0), p, fbm, key));
+    const vec4 high = probe_worley_fbm(arguments(PROBE_INVERTED_WORLEY_OCTAVES, vec4(first, 5, 0, 0), p, fbm, key));
+    const vec4 whole = probe_worley_fbm(arguments(PROBE_INVERTED_WORLEY_FBM, vec4(0.0f), p, fbm, key));
+    CHECK(low.y == Approx(1.9375f).epsilon(1e-6));  // 1 + 1/2 + 1/4 + 1/8 + 1/16
+    CHECK(std::abs((low.x + high.x) / low.y - whole.w) <= 8.0f * std::numeric_limits<float>::epsilon());
   }
   // The noise volume's detail parameters: 3 octaves from frequency 8, periodic.
   for (int k = 0; k < 8; ++k)
@@ -1317,12 +1346,12 @@ TEST_CASE("curl_spline.glsl on the GPU agrees with the CPU", "[probe][spline]") 
                                vec4(r(-1.0f, 2.0f), angle, 0, 0), vec4(w, 0)),
                      2 * kTurned + kProjected + 2 * kArithmetic});
   }
-  // The warp grid's point: the spline of the nodes' directions (xyz near a unit vector, at least
+  // The warp grid's sample: the spline of the nodes' directions (xyz near a unit vector, at least
   // 0.9 long between neighbouring nodes) renormalised, which divides the sample's error by that
-  // length and adds the normalisation's few operations.
+  // length and adds the normalisation's few operations; w the spline itself (kSample).
   for (int k = 0; k < 8; ++k) {
     const vec3 w = normalize(vec3(r.v(-1.0f, 1.0f)) + vec3(1e-3f));
-    cases.push_back({arguments(PROBE_WARP_GRID_POINT, vec4(0.0f), vec4(w, 0)), 3 * kSample + kArithmetic});
+    cases.push_back({arguments(PROBE_WARP_GRID_SAMPLE, vec4(0.0f), vec4(w, 0)), 3 * kSample + kArithmetic});
   }
   compare(
       "curl_spline", [&](const mat4& x) { return probe_curl_spline(x, source); }, cases, nodes,

@@ -190,6 +190,29 @@ TEST_CASE("report --quick writes the CSV the diagram and the summary and the not
   CHECK(procedural_error["window4"] > procedural_error["window1"]);
   CHECK(summary.find("## The moving flow: error against run time and window") != std::string::npos);
   CHECK(read_file(out.path / "moving_error_vs_runtime.svg").find("<polyline") != std::string::npos);
+  // The noise grid: the reference without error, the two scales, and the thresholds 4, 2, 1 taking
+  // 1, 2, 3 octaves at 64 per face from a grid of 32; each octave more from the grid adds its own
+  // error to the density (the octaves' errors are independent, so the rms grows).
+  std::stringstream noise_grid(read_file(out.path / "noise_grid_error.csv"));
+  std::getline(noise_grid, line);
+  CHECK(line ==
+        "kind,noise_grid_nodes,grid_octaves,time_ms,density_err_rms,density_err_max,cover_err_rms,flipped,"
+        "density_spread");
+  std::vector<std::vector<std::string>> grid_rows;
+  while (std::getline(noise_grid, line)) grid_rows.push_back(split(line, ','));
+  REQUIRE(grid_rows.size() == 6);
+  CHECK(grid_rows[0][0] == "every octave at every texel");
+  CHECK(std::stod(grid_rows[0][4]) == 0.0);
+  CHECK(grid_rows[1][0] == "trajectories from every texel");
+  CHECK(grid_rows[2][0] == "ten minutes later");
+  CHECK(std::stod(grid_rows[2][4]) > 0.0);
+  for (int k = 3; k < 6; ++k) {
+    CHECK(grid_rows[k][0] == "noise grid");
+    CHECK(std::stoi(grid_rows[k][2]) == k - 2);
+    CHECK(std::stod(grid_rows[k][4]) > (k == 3 ? 0.0 : std::stod(grid_rows[k - 1][4])));
+  }
+  CHECK(summary.find("## The noise grid") != std::string::npos);
+  CHECK(read_file(out.path / "noise_grid_error_vs_runtime.svg").find("<polyline") != std::string::npos);
 
   // The notebook reads that CSV and draws the same diagram, headless (Debian's
   // jupyter-nbconvert, python3-ipykernel, python3-matplotlib; scripts/debian-packages.txt).

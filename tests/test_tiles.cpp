@@ -161,6 +161,8 @@ TEST_CASE("a cover in tiles equals the whole map's to the bit: the moving flow f
   p.curl_size = 32;
   p.warp_grid = 12;
   REQUIRE(cover::warp_grid_cells(p) == 12);
+  p.noise_grid_nodes = 1.0f;  // and the noise grid's two octaves (2 and 1 nodes per cell)
+  REQUIRE(cover::noise_grid_octaves(p) == 2);
   check_tiles_match_whole(p, {6, 24});
 }
 

@@ -54,6 +54,9 @@ uniform int u_strip;
 
 uniform FbmParams u_cover;
 uniform vec3 u_noise_offset;  // reduced modulo the lattice period by the host
+// The noise's octaves that the warp grid carries in the warp fields' w (moving_warp.comp; 0: none,
+// and the w then means something else or nothing).
+uniform int u_grid_octaves;
 uniform float u_cyclone_cloudiness;
 uniform float u_surface_weight;
 uniform WeatherSystems u_systems;
@@ -100,14 +103,20 @@ void main() {
   uint low = 0xFFFFFFFFu, high = 0u;
   for (int j = first; j < last; ++j) {
     ivec3 texel = ivec3(i, j, layer);
-    vec3 warped = imageLoad(warp_field, texel).xyz;
+    vec4 warp_sample = imageLoad(warp_field, texel);
+    vec3 warped = warp_sample.xyz;
     ivec3 at = face_texel(texel);
     vec3 direction = texel_direction(at.z, at.x, at.y, size);
     float surface = u_surface_weight > 0.0f ? texture(surface_bias, equirect_uv(direction)).x : 0.0f;
-    float noise = cover_density_shifted(warped, u_cover, u_noise_offset);
+    bool gridded = u_grid_octaves > 0;
+    float noise = cover_density_from_grid(warped, gridded ? warp_sample.w : 0.0f, u_grid_octaves, u_cover, u_noise_offset);
 #if MOVING_LAYERS
-    vec3 young_warped = imageLoad(young_warp_field, texel).xyz;
-    noise = noise_blend(noise, cover_density_shifted(young_warped, u_young_cover, u_noise_offset), u_young_share);
+    vec4 young_sample = imageLoad(young_warp_field, texel);
+    vec3 young_warped = young_sample.xyz;
+    noise = noise_blend(noise,
+                        cover_density_from_grid(young_warped, gridded ? young_sample.w : 0.0f, u_grid_octaves,
+                                                u_young_cover, u_noise_offset),
+                        u_young_share);
 #endif
     // The cyclones move on their own (the host places them at the frame's time) and are drawn at
     // the air's origin so that the flow deforms them as it does the noise: with two layers at

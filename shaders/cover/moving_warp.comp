@@ -9,7 +9,9 @@
 // WARP_GRID 1 (covers finer than --warp-grid): the trajectories start at the nodes of the warp
 // grid, u_grid_cells per face edge with SPLINE_MARGIN + 1 beyond each edge as the curl's samples
 // (curl_spline.glsl), and both outputs are 6-layer arrays of those samples; the curl spline's
-// prefilter and warp_from_grid.comp then bring them to the texels.
+// prefilter and warp_from_grid.comp then bring them to the texels, with the noise grid in their w:
+// octaves [0, u_grid_octaves) of each layer's cover noise at its point (docs/numerics.md, "The
+// noise grid"; 0 where the grid carries none).
 layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
 layout(rgba32f, binding = 0) uniform readonly image2DArray identity_field;
 layout(rgba32f, binding = 2) uniform writeonly image2DArray warp_field;
@@ -26,6 +28,7 @@ layout(rgba32f, binding = 3) uniform writeonly image2DArray young_warp_field;
 #include "../lib/prelude.glsl"
 #include "../lib/parameters.glsl"
 #include "../lib/curl_spline.glsl"
+#include "../lib/worley_fbm.glsl"
 uniform CurlParams u_curl;
 uniform FlowMotion u_motion;
 #if MOVING_SPLINE
@@ -50,6 +53,10 @@ uniform int u_young_steps;  // RK4 steps back to the younger layer's age
 uniform int u_older_steps;  // and on from there to the older layer's
 #if WARP_GRID
 uniform int u_grid_cells;  // the warp grid's nodes per face edge inside the face
+uniform int u_grid_octaves;  // the cover noise's octaves that the grid carries
+uniform FbmParams u_cover;   // the older layer's noise (the density pass's u_cover)
+uniform FbmParams u_young_cover;
+uniform vec3 u_density_offset;  // the density pass's u_noise_offset
 #endif
 #if !MOVING_SPLINE
 uniform vec3 u_noise_offset;  // reduced modulo the lattice period by the host
@@ -68,6 +75,12 @@ void main() {
   // One trajectory: back to the younger layer's birth, then on to the older layer's.
   vec3 young = back_trajectory(x, u_time, u_young_age, u_young_steps, FLOW_SOURCE);
   vec3 old = back_trajectory(young, u_time - u_young_age, u_old_age - u_young_age, u_older_steps, FLOW_SOURCE);
-  imageStore(young_warp_field, texel, vec4(young, 0.0f));
-  imageStore(warp_field, texel, vec4(old, 0.0f));
+#if WARP_GRID
+  float young_sum = inverted_worley_octaves(normalize(young) + u_density_offset, u_young_cover, 0, u_grid_octaves);
+  float old_sum = inverted_worley_octaves(normalize(old) + u_density_offset, u_cover, 0, u_grid_octaves);
+#else
+  float young_sum = 0.0f, old_sum = 0.0f;
+#endif
+  imageStore(young_warp_field, texel, vec4(young, young_sum));
+  imageStore(warp_field, texel, vec4(old, old_sum));
 }

@@ -4,15 +4,23 @@
 #include "prelude.glsl"
 #include "worley_fbm.glsl"
 
-// Inverted Worley fBm at the warped point W_K(v) (renormalised: it lies on the sphere).
-float cover_density(vec3 warped, IN(FbmParams) params) {
-  return inverted_worley_fbm(normalize(warped), params).w;
+// The cover's noise from its octaves' sums: `grid_sum`, octaves [0, grid_octaves) of
+// inverted_worley_octaves at the warped point (the noise grid's spline, or 0 with grid_octaves 0),
+// and the others evaluated at the warped point W_K(v) (renormalised: it lies on the sphere)
+// shifted by `offset` (see curl_velocity_shifted); over the octaves' weights, the fBm.
+float cover_density_from_grid(vec3 warped, float grid_sum, int grid_octaves, IN(FbmParams) params, vec3 offset) {
+  float norm = fbm_norm(params);
+  float rest = inverted_worley_octaves(normalize(warped) + offset, params, grid_octaves, params.octaves);
+  return norm > 0.0f ? (grid_sum + rest) / norm : 0.0f;
 }
 
-// The same with the noise shifted by `offset` (see curl_velocity_shifted).
+// Inverted Worley fBm at the warped point with the noise shifted by `offset`: every octave there.
 float cover_density_shifted(vec3 warped, IN(FbmParams) params, vec3 offset) {
-  return inverted_worley_fbm(normalize(warped) + offset, params).w;
+  return cover_density_from_grid(warped, 0.0f, 0, params, offset);
 }
+
+// The same unshifted.
+float cover_density(vec3 warped, IN(FbmParams) params) { return cover_density_shifted(warped, params, vec3(0.0f)); }
 
 // The mean and the standard deviation of the cover's noise, inverted Worley fBm of the table's
 // density octaves (8 of gain 0.75) on the sphere: 0.470 and 0.074 over 200000 random directions.

@@ -93,9 +93,11 @@ vec4 sample_curl_spline(vec3 w, SplineImage spline) {
 // the back-trajectories' ends from the nodes of a grid as the curl's, prefiltered as its samples,
 // for the older layer in layers 0-5 (`layer` 0) and the younger's in 6-11 (1). A texel's end is
 // their spline at its direction x, renormalised onto the sphere: the quasi-interpolant errs by
-// O(h^4) as the curl's spline does (docs/numerics.md, 8b, "The warp grid").
-vec3 warp_grid_point(vec3 x, SplineImage grid, int layer) {
-  return normalize(vec3(sample_curl_spline_node(x, grid, layer)));
+// O(h^4) as the curl's spline does (docs/numerics.md, 8b, "The warp grid"). Its w, not
+// renormalised, is the spline of the nodes' w: the noise grid's octaves (moving_warp.comp).
+vec4 warp_grid_sample(vec3 x, SplineImage grid, int layer) {
+  vec4 s = sample_curl_spline_node(x, grid, layer);
+  return vec4(normalize(vec3(s)), s.w);
 }
 
 // The warp's velocity: the spline's value projected onto the tangent plane at w. The spline

@@ -15,6 +15,8 @@
 #include "prelude.glsl"
 #include "noise_types.glsl"
 #include "tileable_noise.glsl"
+// fbm_norm: the octaves' weights as the point functions sum them.
+#include "worley_fbm.glsl"
 
 // Where the walk keeps its sums (NOISE_SUMS floats, part k at offset k NOISE_SEGMENT) and where
 // the last octave puts each texel's value. In GLSL the sums are a private array of the
@@ -42,19 +44,6 @@ void noise_out8(float* out, int x0, int n, vec4 lo, vec4 hi) {
 #define NOISE_SUM(i) noise_sums[i]
 float noise_sums[NOISE_SUMS];
 #endif
-
-// sum_k gain^k over the octaves, summed as the point functions sum it.
-float fbm_norm(IN(FbmParams) fbm) {
-  float norm = 0.0f;
-  float amplitude = 1.0f;
-  int octave = 0;
-  do {
-    norm += amplitude;
-    amplitude *= fbm.gain;
-    ++octave;
-  } while (octave < fbm.octaves);
-  return norm;
-}
 
 // The value of a texel from its fBm sum, as noise_channel_value computes it; perlin_sum is the
 // Perlin part's sum of perlin-worley (whose Worley part emits).

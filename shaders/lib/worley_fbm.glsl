@@ -50,6 +50,42 @@ vec4 inverted_worley_fbm(vec3 p, IN(FbmParams) params) {
   return smooth_worley_fbm(p, params, 0.0f);
 }
 
+// The weights' sum of an fBm's octaves, sum_k gain^k over k < octaves: its normalisation.
+float fbm_norm(IN(FbmParams) params) {
+  float norm = 0.0f;
+  float amplitude = 1.0f;
+  for (int octave = 0; octave < params.octaves; ++octave) {
+    norm += amplitude;
+    amplitude *= params.gain;
+  }
+  return norm;
+}
+
+// Octaves [first, last) of inverted_worley_fbm's value before the normalisation: sum_k gain^k
+// (1 - F1(p frequency lacunarity^k)) with each octave's frequency, period and key as there, so that
+// the sums of [0, g) and [g, octaves), over fbm_norm, make the whole fBm (up to the additions'
+// rounding). The density pass takes the low octaves at the warp grid's nodes and the others at
+// each texel (docs/numerics.md, "The noise grid"). The first loop only steps the octaves' scales:
+// the Worley searches run in the second, for [first, last) alone.
+float inverted_worley_octaves(vec3 p, IN(FbmParams) params, int first, int last) {
+  float amplitude = 1.0f;
+  float frequency = params.frequency;
+  ivec3 period = params.period;
+  for (int octave = 0; octave < first; ++octave) {
+    amplitude *= params.gain;
+    frequency *= params.lacunarity;
+    period = ivec3(vec3(period) * params.lacunarity + 0.5f);
+  }
+  float sum = 0.0f;
+  for (int octave = first; octave < last; ++octave) {
+    sum += amplitude * (1.0f - worley_f1(p * frequency, period, noise_key(params.seed, uint(octave))).w);
+    amplitude *= params.gain;
+    frequency *= params.lacunarity;
+    period = ivec3(vec3(period) * params.lacunarity + 0.5f);
+  }
+  return sum;
+}
+
 // The renderer's noise volume's detail channel (render/noise_volume.comp, G, before the host's
 // rank equalisation): inverted Worley fBm of 8 cells and 3 octaves of gain 1/2 a period, of its
 // own seed. The coverage windows' calibration evaluates the same (tests/test_webanck_coverage.cpp).

@@ -65,6 +65,8 @@ struct CoverParameters {
   int max_substeps = params::cover::max_substeps.default_int();  // adaptive: attempted steps per texel at most
   int curl_size = params::cover::curl_size.default_int();        // spline: curl grid nodes per face edge
   int warp_grid = params::cover::warp_grid.default_int();        // moving: trajectories' grid (0: every texel)
+  // The warp grid's nodes per Worley cell from which the density's octaves come from its spline.
+  float noise_grid_nodes = params::cover::noise_grid_nodes.default_float();
   // Shifts every noise layer by (d, d, d) sphere radii. Non-zero offsets make the lattices
   // periodic and are reduced modulo the period in double (noise_offset below), so that float
   // keeps its precision however far away the offset is.
@@ -91,6 +93,7 @@ void visit_numeric_parameters(P& p, Visit&& visit) {
   visit(c::max_substeps, p.max_substeps);
   visit(c::curl_size, p.curl_size);
   visit(c::warp_grid, p.warp_grid);
+  visit(c::noise_grid_nodes, p.noise_grid_nodes);
   visit(c::coverage, p.coverage);
   visit(c::month, p.month);
   visit(c::noise_offset, p.noise_offset);

@@ -214,6 +214,18 @@ int warp_grid_cells(const CoverParameters& p) {
   return moving(p) && p.warp_grid > 0 && p.warp_grid < p.size ? p.warp_grid : 0;
 }
 
+int noise_grid_octaves(const CoverParameters& p) {
+  const int cells = warp_grid_cells(p);
+  if (cells == 0 || p.noise_grid_nodes <= 0.0f) return 0;
+  int octaves = 0;
+  double frequency = p.density.frequency;
+  while (octaves < p.density.octaves && cells / (2.0 * frequency) >= p.noise_grid_nodes) {
+    ++octaves;
+    frequency *= p.density.lacunarity;
+  }
+  return octaves;
+}
+
 void GlobalCover::run_moving_warp() {
   const FrameClock& clock = clock_;
   const bool spline = parameters_.curl_mode == CurlMode::spline;
@@ -265,6 +277,13 @@ void GlobalCover::trace_warp_grid(const gpu::ComputeProgram& tracer, int cells) 
     const gpu::Texture older = gpu::Texture::layered(samples_extent, samples_extent, 6, GL_RGBA32F);
     const gpu::Texture younger = gpu::Texture::layered(samples_extent, samples_extent, 6, GL_RGBA32F);
     tracer.set("u_grid_cells", cells);
+    // The noise grid: the cover noise's first octaves of both layers at the nodes' points.
+    tracer.set("u_grid_octaves", noise_grid_octaves(parameters_));
+    glsl::set_uniform(tracer, "u_cover",
+                      layer_density_params(parameters_, clock_.young_layer - 1, clock_.layers_in_loop));
+    glsl::set_uniform(tracer, "u_young_cover",
+                      layer_density_params(parameters_, clock_.young_layer, clock_.layers_in_loop));
+    tracer.set("u_density_offset", density_offset(parameters_));
     older.bind_image(warp::warp_field, GL_WRITE_ONLY);
     younger.bind_image(warp::young_warp_field, GL_WRITE_ONLY);
     tracer.dispatch_covering(samples_extent, samples_extent, 6);
@@ -491,6 +510,7 @@ void GlobalCover::run_density() {
   timed("density", [&] {
     glsl::set_uniform(density_program_, "u_cover", density_params(parameters_));
     density_program_.set("u_noise_offset", density_offset(parameters_));
+    density_program_.set("u_grid_octaves", noise_grid_octaves(parameters_));
     density_program_.set("u_cyclone_cloudiness", parameters_.cyclone_cloudiness);
     density_program_.set("u_surface_weight", parameters_.surface ? parameters_.surface_weight : 0.0f);
     // The steady flow's cover does not change with the time; the moving flow's systems live on it,

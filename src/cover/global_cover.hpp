@@ -166,6 +166,11 @@ int moving_grid_limit(double step);
 // The warp grid's nodes per face edge a cover traces its back-trajectories from: --warp-grid for
 // the moving flow when the cover has more texels per face edge, else 0 (from every texel).
 int warp_grid_cells(const CoverParameters& p);
+// The density's octaves that such a cover takes from the warp grid's spline (the noise grid;
+// docs/numerics.md, 8c): the first octaves whose Worley cells, 1 / (f l^k) radians, span at least
+// --noise-grid-nodes of the grid's node spacing at a face's centre, 2 / cells radians; 0 without
+// a warp grid or with --noise-grid-nodes 0.
+int noise_grid_octaves(const CoverParameters& p);
 CurlMode resolved_curl_mode(const CoverParameters& p);
 double cover_gpu_bytes(int size, Flow flow = Flow::steady);
 

@@ -95,7 +95,7 @@ json::Value cover_parameters_json(const cover::CoverParameters& p) {
     if (p.curl_mode != cover::CurlMode::spline && &parameter == &params::cover::curl_size) return;
     if (p.flow == cover::Flow::steady &&
         (&parameter == &params::cover::vortex_lifetime || &parameter == &params::cover::loop ||
-         &parameter == &params::cover::warp_grid))
+         &parameter == &params::cover::warp_grid || &parameter == &params::cover::noise_grid_nodes))
       return;
     set_path(parameters, std::string(parameter.sidecar_path()), json_number(value));
     if (&parameter == &params::cover::coverage) parameters.set(std::string(params::cover::profile.key), p.profile.name);

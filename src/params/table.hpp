@@ -151,6 +151,12 @@ inline constexpr Parameter warp_grid =
             "this many nodes per face edge and interpolate them to every texel by a cubic spline (0: from every "
             "texel; docs/numerics.md, 8b)",
             cover_commands);
+inline constexpr Parameter noise_grid_nodes =
+    real("noise_grid_nodes", 8.0, 0.0, 1024.0, "nodes per cell",
+         "covers traced from a warp grid: the density's octaves whose Worley cells span at least this many of the "
+         "grid's node spacings (at a face's centre) are evaluated at the grid's nodes and taken from its cubic spline "
+         "instead of at every texel (0: none; docs/numerics.md, 8c)",
+         cover_commands);
 inline constexpr Parameter curl_size =
     integer("curl_size", 256, 4, 1024, "nodes",
             "curl mode spline: curl samples per cube face edge that the spline interpolates (independent of --size)",

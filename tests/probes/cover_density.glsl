@@ -11,6 +11,7 @@ const int PROBE_WITH_SYSTEMS = 6;  // with_systems(a, b), with_cells(a, c) in y
 const int PROBE_NOISE_BLEND = 7;  // noise_blend(a, b, c)
 const int PROBE_CONTRAST = 8;  // cover_contrast(x[3].z), contrasted_cover(a, b, c, x[3].y, x[3].z) in y,
                                // cover_from_excess(a, c, x[3].y) in z
+const int PROBE_COVER_DENSITY_FROM_GRID = 9;  // cover_density_from_grid(x[1], a, int(b), params, x[3].yzw)
 #ifndef __cplusplus
 #include "../lib/cover_density.glsl"
 #endif
@@ -20,6 +21,9 @@ vec4 probe_cover_density(mat4 x) {
   if (f == PROBE_COVER_DENSITY) return vec4(cover_density(vec3(x[1]), params), 0.0f, 0.0f, 0.0f);
   if (f == PROBE_COVER_DENSITY_SHIFTED)
     return vec4(cover_density_shifted(vec3(x[1]), params, vec3(x[3].y, x[3].z, x[3].w)), 0.0f, 0.0f, 0.0f);
+  if (f == PROBE_COVER_DENSITY_FROM_GRID)
+    return vec4(cover_density_from_grid(vec3(x[1]), x[0].y, int(x[0].z), params, vec3(x[3].y, x[3].z, x[3].w)), 0.0f,
+                0.0f, 0.0f);
   if (f == PROBE_LAYER_BLEND) return vec4(layer_blend(x[0].y, x[0].z, x[0].w), 0.0f, 0.0f, 0.0f);
   if (f == PROBE_SHAPED_DENSITY)
     return vec4(shaped_density(x[0].y, x[0].z, x[0].w, x[3].y, x[3].z), 0.0f, 0.0f, 0.0f);

@@ -14,7 +14,7 @@ const int PROBE_SAMPLE_CURL_SPLINE_NODE = 7;  // sample_curl_spline_node(x[1], n
 const int PROBE_SAMPLE_CURL_SPLINE_IN_TIME = 8;  // sample_curl_spline_in_time(x[1], node a, turn b)
 const int PROBE_SPLINE_VELOCITY_IN_TIME = 9;  // spline_velocity_in_time(x[1], node a, turn b)
 const int PROBE_SAMPLE_CURL_SPLINE_NODE_TURNED = 10;  // sample_curl_spline_node_turned(x[1], node a, angle b)
-const int PROBE_WARP_GRID_POINT = 11;  // warp_grid_point(x[1], layer a)
+const int PROBE_WARP_GRID_SAMPLE = 11;  // warp_grid_sample(x[1], layer a)
 const int SPLINE_PROBE_CELLS = 4;
 #ifndef __cplusplus
 layout(rgba32f, binding = 2) uniform readonly image2DArray probe_spline;
@@ -32,7 +32,7 @@ vec4 probe_curl_spline(mat4 x, SplineImage spline) {
   if (f == PROBE_SAMPLE_CURL_SPLINE_NODE_TURNED)
     return sample_curl_spline_node_turned(vec3(x[1]), spline, int(x[0].y), x[0].z);
   if (f == PROBE_SAMPLE_CURL_SPLINE_IN_TIME) return sample_curl_spline_in_time(vec3(x[1]), spline, x[0].y, x[0].z);
-  if (f == PROBE_WARP_GRID_POINT) return vec4(warp_grid_point(vec3(x[1]), spline, int(x[0].y)), 0.0f);
+  if (f == PROBE_WARP_GRID_SAMPLE) return warp_grid_sample(vec3(x[1]), spline, int(x[0].y));
   if (f == PROBE_SPLINE_VELOCITY_IN_TIME)
     return vec4(spline_velocity_in_time(vec3(x[1]), spline, x[0].y, x[0].z), 0.0f);
   return vec4(curl_spline_node(int(x[0].y), int(x[0].z), int(x[0].w), int(x[1].x), int(x[1].y)),

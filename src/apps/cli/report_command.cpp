@@ -13,6 +13,7 @@
 #include "files/atomic_output.hpp"
 #include "gpu/egl_context.hpp"
 #include "studies/moving_precision.hpp"
+#include "studies/noise_grid_precision.hpp"
 #include "studies/work_precision.hpp"
 #include "regional/scene.hpp"
 #include "studies/render_error.hpp"
@@ -38,7 +39,9 @@ int run_report(const std::vector<std::string>& all_arguments) {
                   "the warped points with a reference solution at sample points. Writes error_vs_runtime.csv,\n"
                   "error_vs_runtime.svg (work-precision diagram), stability.csv and summary.md into --out.\n"
                   "The moving flow's back-trajectories (one frame; RK4 steps, spline grids and windows) against\n"
-                  "the CPU's procedural flow go into moving_error.csv and moving_error_vs_runtime.svg.\n"
+                  "the CPU's procedural flow go into moving_error.csv and moving_error_vs_runtime.svg, the noise\n"
+                  "grid's density and cover against every octave at every texel into noise_grid_error.csv and\n"
+                  "noise_grid_error_vs_runtime.svg.\n"
                   "The flow time T = iterations * step stays fixed; fixed-step schemes use h = T / steps.\n"
                   "Then renders the default scene with view steps 8..96 x light steps 2..12, over 2 and 4\n"
                   "frames and at 1/2 and 1/4 resolution, against " +
@@ -137,6 +140,18 @@ int run_report(const std::vector<std::string>& all_arguments) {
       std::cout << studies::moving_precision_line(row) << "\n" << std::flush;
     });
   }
+  // The noise grid of the moving flow's covers finer than their warp grid.
+  const studies::NoiseGridOptions noise_grid_sweep =
+      quick ? studies::NoiseGridOptions::quick(moving_sweep.base) : studies::NoiseGridOptions::full(moving_sweep.base);
+  std::vector<studies::NoiseGridRow> noise_grid_rows;
+  if (!render_only) {
+    std::cout << "noise grid: one frame at " << noise_grid_sweep.base.time << ", " << noise_grid_sweep.size
+              << " per face, warp grid " << noise_grid_sweep.warp_grid << "\n"
+              << std::flush;
+    noise_grid_rows = studies::noise_grid_sweep(noise_grid_sweep, [](const studies::NoiseGridRow& row) {
+      std::cout << studies::noise_grid_line(row) << "\n" << std::flush;
+    });
+  }
 
   std::vector<studies::RenderErrorRow> render_rows, quality_rows;
   studies::ReferenceCheck reference_check;
@@ -187,6 +202,11 @@ int run_report(const std::vector<std::string>& all_arguments) {
     outputs.write("moving_error_vs_runtime.svg",
                   studies::moving_precision_svg(moving_rows, "The moving flow's back-trajectories, " + result.device));
     summary += studies::moving_precision_markdown(moving_rows, moving_sweep) + "\n";
+    outputs.write("noise_grid_error.csv", studies::noise_grid_csv(noise_grid_rows));
+    outputs.write(
+        "noise_grid_error_vs_runtime.svg",
+        studies::noise_grid_svg(noise_grid_rows, "The noise grid's error against run time, " + result.device));
+    summary += studies::noise_grid_markdown(noise_grid_rows, noise_grid_sweep) + "\n";
   }
   if (moving_only) {
   } else if (no_render) {
@@ -224,7 +244,9 @@ int run_report(const std::vector<std::string>& all_arguments) {
               << render_choice.most_accurate.display_rms << ")\n";
   std::cout << "wrote " << directory.string()
             << "/: " << (steady_sweep ? "error_vs_runtime.csv, error_vs_runtime.svg, stability.csv, " : "")
-            << (render_only ? "" : "moving_error.csv, moving_error_vs_runtime.svg, ")
+            << (render_only ? ""
+                            : "moving_error.csv, moving_error_vs_runtime.svg, noise_grid_error.csv, "
+                              "noise_grid_error_vs_runtime.svg, ")
             << (no_render ? "" : "render_error.csv, render_error_vs_runtime.svg, render_quality.csv, ")
             << "summary.md\n";
   return exit_ok;
