@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <optional>
 #include <random>
 #include <vector>
@@ -170,6 +171,24 @@ TEST_CASE("ETOPO5 reads Bern's plateau, the Bernese Alps and the Atlantic where 
   CHECK(r.at(46.0, -0.01).has_value());
   const regional::ElevationRaster ocean = io::read_etopo5(io::etopo5_default_path, -1.0, 1.0);
   CHECK(*ocean.at(0.0, -30.0) < -2000.0);
+}
+
+TEST_CASE("the whole ETOPO5 is read once while held and let go when nobody holds it", "[fast][terrain]") {
+  if (!have_etopo5()) FAIL("ferret-datasets is not installed (scripts/debian-packages.txt)");
+  std::weak_ptr<const regional::ElevationRaster> released;
+  {
+    const auto held = io::whole_etopo5(io::etopo5_default_path, "--surface");
+    // A second reader (the land/ocean mask beside the orbit view's water) gets the same raster.
+    CHECK(io::whole_etopo5(io::etopo5_default_path, "--surface").get() == held.get());
+    // From pole to pole, every column: read_etopo5's whole lattice.
+    const regional::ElevationRaster whole = io::read_etopo5(io::etopo5_default_path, -90.0, 90.0);
+    CHECK(held->rows == whole.rows);
+    CHECK(held->columns == whole.columns);
+    CHECK(held->heights == whole.heights);
+    released = held;
+  }
+  // Nobody holds it: the process keeps no copy.
+  CHECK(released.expired());
 }
 
 TEST_CASE("a raster's heights a row at a time are at()'s to the bit, inside and outside the lattice",

@@ -6,6 +6,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <mutex>
 #include <sstream>
 
@@ -30,6 +31,16 @@ float big_endian_float(const unsigned char* b) {
 }
 
 }  // namespace
+
+std::shared_ptr<const regional::ElevationRaster> whole_etopo5(const std::string& path, const std::string& field) {
+  static std::mutex guard;
+  static std::map<std::string, std::weak_ptr<const regional::ElevationRaster>> held;
+  const std::lock_guard<std::mutex> lock(guard);
+  if (auto raster = held[path].lock()) return raster;
+  auto raster = std::make_shared<const regional::ElevationRaster>(read_etopo5(path, -90.0, 90.0, field));
+  held[path] = raster;
+  return raster;
+}
 
 regional::ElevationRaster read_etopo5(const std::string& path, double south_deg, double north_deg,
                                       const std::string& field) {

@@ -20,6 +20,13 @@ inline const char* const etopo5_default_path = "/usr/share/ferret-vis/data/etopo
 regional::ElevationRaster read_etopo5(const std::string& path, double south_deg, double north_deg,
                                       const std::string& field = "--terrain");
 
+// All of ETOPO5 at `path` (read_etopo5 from pole to pole), shared while anyone holds it: the
+// orbit view's water and relief (read_planet_textures) and the cover's land/ocean mask
+// (surface_from_option) both derive from the whole globe, and a caller that needs both holds
+// the raster across them so that the file (37 MB of samples) is read once. Nobody holding it,
+// the next call reads the file again: a process keeps no copy it no longer uses.
+std::shared_ptr<const regional::ElevationRaster> whole_etopo5(const std::string& path, const std::string& field);
+
 // The ground for a camera from the `terrain` setting (params::scene::terrain): "flat" or an
 // absent default file gives none (the bare sphere; `warning` then says why when the default
 // was meant), "etopo5" the packaged file, anything else an ETOPO5 file of that path.

@@ -148,10 +148,10 @@ PlanetTextures read_planet_textures(const std::string& day, const std::string& n
     out.images.day = read_equirect(default_earth_texture, option);
     out.day_source = default_earth_texture;
     if (std::filesystem::is_regular_file(etopo5_default_path, error)) {
-      const regional::ElevationRaster raster = read_etopo5(etopo5_default_path, -90.0, 90.0, "ETOPO5");
-      out.images.water = etopo5_water(raster);
+      const std::shared_ptr<const regional::ElevationRaster> raster = whole_etopo5(etopo5_default_path, "ETOPO5");
+      out.images.water = etopo5_water(*raster);
       out.water_source = etopo5_default_path;
-      out.images.relief = etopo5_relief(raster);
+      out.images.relief = etopo5_relief(*raster);
       out.relief_source = etopo5_default_path;
     } else {
       out.warnings.push_back(std::string(etopo5_default_path) +

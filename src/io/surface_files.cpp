@@ -18,7 +18,8 @@ namespace {
 // Land fraction of each half-degree cell from 6 x 6 bilinear samples of the elevation (the
 // 5-minute lattice's spacing): land where above sea level.
 cover::SurfaceMask etopo5_mask(const std::string& path, const std::string& field) {
-  const regional::ElevationRaster raster = read_etopo5(path, -90.0, 90.0, field);
+  const std::shared_ptr<const regional::ElevationRaster> held = whole_etopo5(path, field);
+  const regional::ElevationRaster& raster = *held;
   cover::SurfaceMask mask{cover::surface_bias_columns, cover::surface_bias_rows, {}, path};
   mask.land.resize(static_cast<size_t>(mask.columns) * mask.rows);
   const int samples = 6;

@@ -17,6 +17,7 @@
 #include "gpu/egl_context.hpp"
 #include "gpu/pass_timer.hpp"
 #include "files/atomic_output.hpp"
+#include "io/elevation_files.hpp"
 #include "io/planet_textures.hpp"
 #include "io/render_files.hpp"
 #include "io/surface_files.hpp"
@@ -120,6 +121,14 @@ int run_orbit_render(const OrbitOptions& orbit) {
       throw UsageError("--cover", orbit.cover, "a directory written by nephele generate", "is not a directory");
     cover = io::read_cover_cube(orbit.cover);
   }
+  // The default day map's water and relief and the generated cover's land/ocean mask (--surface
+  // etopo5) all come from ETOPO5: held across both, the file is read once (io::whole_etopo5).
+  std::error_code no_file;
+  const std::shared_ptr<const regional::ElevationRaster> etopo5 =
+      orbit.earth_texture.empty() && !cover && orbit.surface == "etopo5" &&
+              std::filesystem::is_regular_file(io::etopo5_default_path, no_file)
+          ? io::whole_etopo5(io::etopo5_default_path, "--surface")
+          : nullptr;
   io::PlanetTextures textures = io::read_planet_textures(orbit.earth_texture, orbit.night_texture);
   for (const auto& w : textures.warnings) std::cerr << "warning: " << w << "\n";
 
