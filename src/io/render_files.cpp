@@ -113,8 +113,13 @@ json::Value scene_sidecar(const SceneRender& r, const regional::Scene& scene) {
 
 std::vector<unsigned char> encode_render_image(const core::ImageData& radiance, double exposure,
                                                const std::string& name) {
-  if (core::lowercase_extension(name) == ".png")
-    return files::encode_image(render::tone_map(radiance, exposure), files::png_encoding(8), name);
+  if (core::lowercase_extension(name) == ".png") {
+    // zlib's fastest level, as the cover's previews: a 1280 x 720 view encodes in a third of the
+    // time for 12 % more bytes (level 6: 0.3 s of the orbit command's 3.4 s).
+    files::ImageEncoding png = files::png_encoding(8);
+    png.png_compression_level = 1;
+    return files::encode_image(render::tone_map(radiance, exposure), png, name);
+  }
   return files::encode_image(radiance, files::exr_encoding({"R", "G", "B", "A"}), name);
 }
 
