@@ -3,6 +3,7 @@
 #include <cmath>
 #include <algorithm>
 #include <array>
+#include <future>
 #include <system_error>
 
 #include "core/error.hpp"
@@ -138,6 +139,15 @@ PlanetTextures read_planet_textures(const std::string& day, const std::string& n
   out.water_source = "none";
   out.relief_source = "none";
   std::error_code error;
+  // The night map is decoded on a thread of its own while the day map and ETOPO5 are read.
+  const std::string night_file = !night.empty() ? night
+                                 : day.empty() && std::filesystem::is_regular_file(default_night_texture, error)
+                                     ? std::string(default_night_texture)
+                                     : std::string();
+  std::future<decltype(out.images.night)> night_image;
+  if (!night_file.empty())
+    night_image =
+        std::async(std::launch::async, [&night_file] { return read_equirect(night_file, "--night-texture"); });
   if (!day.empty()) {
     out.images.day = read_equirect(day, option);
     out.day_source = day;
@@ -165,12 +175,8 @@ PlanetTextures read_planet_textures(const std::string& day, const std::string& n
     out.warnings.push_back(std::string(default_earth_texture) +
                            " is missing (Debian package xplanet-images): a procedural ocean and land map stands in");
   }
-  const std::string night_file = !night.empty() ? night
-                                 : day.empty() && std::filesystem::is_regular_file(default_night_texture, error)
-                                     ? std::string(default_night_texture)
-                                     : std::string();
-  if (!night_file.empty()) {
-    out.images.night = read_equirect(night_file, "--night-texture");
+  if (night_image.valid()) {
+    out.images.night = night_image.get();
     out.night_source = night_file;
   } else {
     out.night_source = "none";
