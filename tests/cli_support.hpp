@@ -60,15 +60,11 @@ inline std::optional<std::vector<std::string>> shell_words(const std::string& te
   return words;
 }
 
-// nephele with the arguments, after `environment` (VAR=value ... or empty). Renders get
-// --no-cache, so that the tests never read or fill the user's noise cache (the cache's own
-// tests name a directory through XDG_CACHE_HOME and use run_command). The command runs in the
-// command server (command_server.hpp) where its words are plain, else as a process.
-inline Run run_with_environment(const std::string& environment, const std::string& arguments) {
-  const bool render = arguments.rfind("render", 0) == 0 && (arguments.size() == 6 || arguments[6] == ' ');
-  const std::string rest = render ? "render --no-cache" + arguments.substr(6) : arguments;
+// nephele with the arguments exactly as given, after `environment` (VAR=value ... or empty): in
+// the command server (command_server.hpp) where its words are plain, else as a process.
+inline Run run_as_given(const std::string& environment, const std::string& arguments) {
   const auto variables = shell_words(environment);
-  const auto words = shell_words(rest);
+  const auto words = shell_words(arguments);
   const bool only_variables = variables && std::all_of(variables->begin(), variables->end(), [](const std::string& w) {
                                 return w.find('=') != std::string::npos && w.find('=') > 0;
                               });
@@ -77,7 +73,15 @@ inline Run run_with_environment(const std::string& environment, const std::strin
     const std::filesystem::path log = new_log();
     if (const std::optional<int> code = run_in_command_server(*variables, *words, log)) return {*code, take_log(log)};
   }
-  return run_command(environment + " " + std::string(NEPHELE_EXECUTABLE) + " " + rest);
+  return run_command(environment + " " + std::string(NEPHELE_EXECUTABLE) + " " + arguments);
+}
+
+// As run_as_given, but renders get --no-cache, so that the tests never read or fill the user's
+// noise cache (the cache's own tests name a directory through XDG_CACHE_HOME and use
+// run_as_given).
+inline Run run_with_environment(const std::string& environment, const std::string& arguments) {
+  const bool render = arguments.rfind("render", 0) == 0 && (arguments.size() == 6 || arguments[6] == ' ');
+  return run_as_given(environment, render ? "render --no-cache" + arguments.substr(6) : arguments);
 }
 
 inline Run run(const std::string& arguments) { return run_with_environment("", arguments); }

@@ -98,8 +98,8 @@ TEST_CASE("render reuses the cached noise volume with the same image, and --no-c
       "--land-cover none --verbose --quiet --out ";  // morning: no convective volumes to build, which the cache does
                                                      // not hold; no ground to load, which it does not hold either
   auto render = [&](const fs::path& home, const std::string& name, const std::string& extra = "") {
-    return test::run_command(mesa_cache_where_it_was() + " XDG_CACHE_HOME=" + home.string() + " " + NEPHELE_EXECUTABLE +
-                             arguments + (out.path / name).string() + extra);
+    return test::run_as_given(mesa_cache_where_it_was() + " XDG_CACHE_HOME=" + home.string(),
+                              arguments + (out.path / name).string() + extra);
   };
   const Run first = render(cache_home.path, "first.png");
   INFO(first.output);
@@ -332,14 +332,21 @@ TEST_CASE("the cache trim ignores what a symbolic link points to and never remov
 
 namespace {
 
-// nephele render with its cache under `home` (XDG_CACHE_HOME), stopped after 120 s so that a
-// render that blocks fails (exit code 124) instead of hanging the test.
+const char* const small_render =
+    " render --view gurten --size 32x18 --view-steps 6 --light-steps 2 --terrain flat"
+    " --land-cover none --verbose --quiet --out ";
+
+// nephele render with its cache under `home` (XDG_CACHE_HOME).
 Run render_with_cache(const fs::path& home, const fs::path& png) {
+  return test::run_as_given(mesa_cache_where_it_was() + " XDG_CACHE_HOME=" + home.string(),
+                            small_render + png.string());
+}
+
+// The same as a process stopped after 120 s, so that a render that blocks fails (exit code 124)
+// instead of hanging the test.
+Run render_with_cache_or_timeout(const fs::path& home, const fs::path& png) {
   return test::run_command("timeout 120 env " + mesa_cache_where_it_was() + " XDG_CACHE_HOME=" + home.string() + " " +
-                           NEPHELE_EXECUTABLE +
-                           " render --view gurten --size 32x18 --view-steps 6 --light-steps 2 --terrain flat"
-                           " --land-cover none --verbose --quiet --out " +
-                           png.string());
+                           NEPHELE_EXECUTABLE + small_render + png.string());
 }
 
 }  // namespace
@@ -371,7 +378,7 @@ TEST_CASE("render is not blocked by a FIFO in place of its cached noise volume",
   REQUIRE_FALSE(entry.empty());
   fs::remove(entry);
   REQUIRE(::mkfifo(entry.c_str(), 0600) == 0);
-  const Run second = render_with_cache(cache_home.path, out.path / "second.png");
+  const Run second = render_with_cache_or_timeout(cache_home.path, out.path / "second.png");
   INFO(second.output);
   REQUIRE(second.exit_code == 0);  // 124: it blocked until the timeout
   CHECK(second.output.find("noise volume: made and cached") != std::string::npos);
