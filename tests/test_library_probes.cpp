@@ -579,6 +579,8 @@ TEST_CASE("weather_systems.glsl on the GPU agrees with the CPU", "[probe]") {
     cases.push_back({arguments(PROBE_CONVECTIVE_WARP, vec4(0, seed, 0, 0), vec4(q, 0)), 4 * kArithmetic});
     // The east vector: a normalize of exact components: kArithmetic.
     cases.push_back({arguments(PROBE_LOCAL_EAST, vec4(0.0f), vec4(q, 0)), kArithmetic});
+    // A product and a clamp: a few roundings, through the presence's smoothstep (slope 7.5).
+    cases.push_back({arguments(PROBE_FRAYED_DECK, vec4(r(0.0f, 1.0f), r(-1.2f, 1.2f), 0, 0)), kArithmetic * 8});
     cases.push_back(
         {arguments(PROBE_WEATHER_DENSITY, vec4(r(-0.1f, 0.2f), seed, r(-1.0f, 1.0f), 0), vec4(q, 0), cyclone, life),
          std::max(band, 12.5f * 70 * kFbm)});

@@ -126,6 +126,29 @@ TEST_CASE("a continent gets a desert inside and a deck off its west coast, none 
   CHECK(std::abs(bias_at(bias, 40.0, 30.0)) < 0.1);
 }
 
+TEST_CASE("a deck's own term reaches a desert's west coast where the bias falls through zero offshore",
+          "[fast][surface]") {
+  const cover::SurfaceMask mask = synthetic(continent);
+  const std::vector<float> terms = cover::surface_terms(mask), bias = cover::surface_bias(mask);
+  REQUIRE(terms.size() == 2 * bias.size());
+  std::vector<float> deck(bias.size()), desert(bias.size());
+  for (size_t k = 0; k < bias.size(); ++k) {
+    deck[k] = terms[2 * k], desert[k] = terms[2 * k + 1];
+    REQUIRE(deck[k] >= 0.0f);
+    REQUIRE(desert[k] >= 0.0f);
+    REQUIRE(bias[k] == deck[k] - desert[k]);
+  }
+  // Half a degree off the west coast at 22 N: before the blur the deck term is 1 x 0.97 on the
+  // ocean side and 0 on the land, the desert term 0 and 1 (S_desert(22) = 0.94); the 2.2-degree
+  // blur leaves each about half of that at the coast, a little more of the near side's: the deck
+  // term above 0.35 (0.4 is a full deck, weather_systems.glsl), while the bias, their difference,
+  // is near 0 there (below 0.15: strength 0.4 at most).
+  CHECK(bias_at(deck, 22.0, -0.5) > 0.35);
+  CHECK(bias_at(bias, 22.0, -0.5) < 0.15);
+  // Further out both agree: the desert's blur does not reach 8 degrees.
+  CHECK(bias_at(deck, 22.0, -8.0) == Approx(bias_at(bias, 22.0, -8.0)).margin(1e-6));
+}
+
 TEST_CASE(
     "ETOPO5's bias clears the Sahara and puts decks off the west coasts and none on seas with a coast to their west",
     "[fast][surface][terrain]") {

@@ -666,6 +666,35 @@ TEST_CASE("stratocumulus decks lie in patches of their belt, off the west coasts
   CHECK(glsl::deck_strength(p, std::asin(p.z), seed, -0.5f, 0.4f) == 0.0f);
 }
 
+TEST_CASE("a deck's edge moves with the cover's noise and its brightness fades with its strength", "[fast][systems]") {
+  for (float edge = -1.0f; edge <= 1.0f; edge += 0.125f) {
+    INFO("edge " << edge);
+    CHECK(glsl::frayed_deck(0.0f, edge) == 0.0f);
+    // The core stays a deck: strength 1 times 1 - 0.75 at the least, presence smoothstep(0.1, 0.3, 0.25).
+    CHECK(glsl::deck_presence(glsl::frayed_deck(1.0f, edge)) >= 0.84f);
+    CHECK(glsl::frayed_deck(1.0f, edge) <= 1.0f);
+  }
+  // The unfrayed fringe's middle (strength 0.2): no deck under the thinnest cloud, all deck under
+  // the thickest, so that the noise draws the edge there.
+  CHECK(glsl::deck_presence(glsl::frayed_deck(0.2f, -1.0f)) == 0.0f);
+  CHECK(glsl::deck_presence(glsl::frayed_deck(0.2f, 1.0f)) == 1.0f);
+  // Where the presence is half: strength 0.2 / (1 + 0.75 e), from 0.114 (e = 1) to 0.8 (e = -1).
+  CHECK(glsl::deck_presence(glsl::frayed_deck(0.2f / 1.75f, 1.0f)) == Approx(0.5f).margin(1e-5));
+  CHECK(glsl::deck_presence(glsl::frayed_deck(0.8f, -1.0f)) == Approx(0.5f).margin(1e-5));
+  // A deck organises its cloud into a bright sheet gradually: none at strength 0, all from 0.8,
+  // half at 0.4, rising in between.
+  CHECK(glsl::deck_organisation(0.0f) == 0.0f);
+  CHECK(glsl::deck_organisation(0.8f) == 1.0f);
+  CHECK(glsl::deck_organisation(0.4f) == Approx(0.5f).margin(1e-6));
+  for (float d = 0.0f; d < 1.0f; d += 0.05f) CHECK(glsl::deck_organisation(d + 0.05f) >= glsl::deck_organisation(d));
+  // Rising with the strength and with the noise.
+  for (float d = 0.0f; d < 1.0f; d += 0.05f)
+    for (float edge = -1.0f; edge < 1.0f; edge += 0.25f) {
+      CHECK(glsl::frayed_deck(d + 0.05f, edge) >= glsl::frayed_deck(d, edge));
+      CHECK(glsl::frayed_deck(d, edge + 0.25f) >= glsl::frayed_deck(d, edge));
+    }
+}
+
 TEST_CASE("decks are closed cells in their cores and open at their fringes and in the cold air behind cold fronts",
           "[fast][systems]") {
   CHECK(glsl::cell_weights(1.0f, 0.0f).x == 1.0f);

@@ -12,7 +12,9 @@ layout(local_size_x = 64, local_size_y = 1, local_size_z = 1) in;
 layout(rgba32f, binding = 0) uniform readonly image2DArray warp_field;
 layout(r32f, binding = 1) uniform writeonly image2DArray density_field;
 layout(rgba32f, binding = 2) uniform readonly image2DArray curl_field;
-layout(binding = 3) uniform sampler2D surface_bias;  // equirect, row 0 north, longitude -180 at s = 0
+// The land/ocean bias's terms (deck, desert; surface_bias.hpp's surface_terms): equirect, row 0
+// north, longitude -180 at s = 0.
+layout(binding = 3) uniform sampler2D surface_bias;
 layout(r32f, binding = 5) uniform writeonly image2DArray cloud_top_field;  // km above sea level
 // The share of a cloudy texel's excess over the threshold that its cover shows (cover_density.glsl).
 layout(r32f, binding = 6) uniform writeonly image2DArray cover_contrast_field;
@@ -70,11 +72,13 @@ vec4 belts_at(vec3 origin, uint seed, float edge) {
   return belt_fields(origin, portable_asin(clamp(origin.z, -1.0f, 1.0f)), u_systems, seed, edge);
 }
 
-// The stratocumulus deck's strength at a layer's origin (x) and the convective cells' modulation
-// there (y: the patterns drawn), with the cyclones' cold sectors `cold` and texels texel_arc
-// radians across.
-vec2 cells_at(vec3 origin, uint seed, float surface, float cold, float texel_arc) {
-  float deck = deck_strength(origin, portable_asin(clamp(origin.z, -1.0f, 1.0f)), seed, surface, u_surface_weight);
+// The stratocumulus deck's strength at a layer's origin (x; from the bias's deck term `deck_term`
+// where there is a land/ocean mask, its edge frayed by the cover's noise `edge`) and the
+// convective cells' modulation there (y: the patterns drawn), with the cyclones' cold sectors
+// `cold` and texels texel_arc radians across.
+vec2 cells_at(vec3 origin, uint seed, float deck_term, float cold, float texel_arc, float edge) {
+  float deck = frayed_deck(
+      deck_strength(origin, portable_asin(clamp(origin.z, -1.0f, 1.0f)), seed, deck_term, u_surface_weight), edge);
   vec2 weights = cell_weights(deck, cold);
   float m = 0.0f;
 #if OPEN_CELLS_DRAWN
@@ -107,7 +111,8 @@ void main() {
     vec3 warped = warp_sample.xyz;
     ivec3 at = face_texel(texel);
     vec3 direction = texel_direction(at.z, at.x, at.y, size);
-    float surface = u_surface_weight > 0.0f ? texture(surface_bias, equirect_uv(direction)).x : 0.0f;
+    vec2 surface_terms = u_surface_weight > 0.0f ? texture(surface_bias, equirect_uv(direction)).xy : vec2(0.0f);
+    float surface = surface_terms.x - surface_terms.y;  // the bias b = deck - desert
     bool gridded = u_grid_octaves > 0;
     float noise = cover_density_from_grid(warped, gridded ? warp_sample.w : 0.0f, u_grid_octaves, u_cover, u_noise_offset);
 #if MOVING_LAYERS
@@ -156,14 +161,15 @@ void main() {
     float cold = cold_sector_air.x;
     float streets = 0.0f;
 #endif
-    vec2 cells = cells_at(older_origin, u_systems.seed, surface, cold, texel_arc);
+    vec2 cells = cells_at(older_origin, u_systems.seed, surface_terms.x, cold, texel_arc, edge);
 #if MOVING_LAYERS
-    cells = mix(cells, cells_at(normalize(young_warped), u_young_systems_seed, surface, cold, texel_arc), u_young_share);
+    cells = mix(cells, cells_at(normalize(young_warped), u_young_systems_seed, surface_terms.x, cold, texel_arc, edge),
+                u_young_share);
 #endif
     float cyclonic = curl.w;
     CloudTypes types = cloud_types(cyclones, fields);
     float latitude = portable_asin(clamp(direction.z, -1.0f, 1.0f));
-    float deck = deck_presence(cells.x);
+    float deck = deck_organisation(cells.x);
     float density =
         with_cells(with_systems(shaped_density(noise, cyclonic, u_cyclone_cloudiness, surface, u_surface_weight), systems),
                    cells.y + streets);

@@ -94,7 +94,7 @@ const float ASCENT_FULL = 0.45f;
 
 // The cloud-top height (km above sea level) at a texel of geocentric `latitude` (radians) from
 // its types' weights, the flow's cyclonic depth (0 .. about 0.6: the ascent of the cyclones) and
-// the stratocumulus decks' presence in [0, 1] (weather_systems.glsl's deck_presence: off the west
+// the stratocumulus decks' organisation in [0, 1] (weather_systems.glsl's deck_organisation: off the west
 // coasts with --surface, in patches of the decks' belt without). The unorganised cloud is
 // boundary-layer cloud (2 km) where the air does not rise, sinking towards the decks' 1.5 km with
 // their presence; the cyclones' ascent deepens it with their cyclonic depth up to the cirrus

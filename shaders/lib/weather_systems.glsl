@@ -419,8 +419,9 @@ float cells_resolved(float frequency, float texel_arc) {
   return smoothstep(2.5f, 5.0f, 1.0f / (frequency * texel_arc));
 }
 
-// The strength of a stratocumulus deck at p in [0, 1]. With a land/ocean bias (surface_weight > 0)
-// its positive part, full from 0.4 (off the west coasts: cloud_properties' decks); without one,
+// The strength of a stratocumulus deck at p in [0, 1]. With a land/ocean mask (surface_weight > 0)
+// from the bias's deck term `surface` (surface_bias.hpp's surface_terms), full from 0.4 (off the
+// west coasts: cloud_properties' decks); without one,
 // patches some 2000 km across (Perlin noise of 3 cells per radius) in the decks' belt around 22
 // degrees, the belt of surface_bias.cpp (Klein and Hartmann 1993).
 float deck_strength(vec3 p, float latitude, uint seed, float surface, float surface_weight) {
@@ -553,6 +554,27 @@ float street_modulation(vec3 p, vec3 wind, float weight, uint seed, float texel_
 
 // Where a deck of strength d is (its fringe from 0.1, whole from 0.3).
 float deck_presence(float deck) { return smoothstep(0.1f, 0.3f, deck); }
+
+// How far a deck of strength d organises its cloud into a bright sheet (cloud_properties.glsl's
+// organised_cloud), in [0, 1]: from none at strength 0 to all from DECK_ORGANISED.
+const float DECK_ORGANISED = 0.8f;
+float deck_organisation(float deck) { return smoothstep(0.0f, DECK_ORGANISED, deck); }
+
+// A deck's strength d with its edge frayed by the cover's noise `edge` in [-1, 1]
+// (cover_density.glsl's system_edge): d (1 + DECK_FRAY edge). The strength is a smooth field of
+// the place (the land/ocean bias, or the noise's patches without one), so its contour at the
+// presence's 0.1-0.3 is a smooth line, which near a coast, where the bias falls steeply, drew the
+// deck's bright edge as a straight line parallel to the coast across the cloud. Moved by the
+// noise, the edge follows the cloud's own texture, as the systems' bands do (comma_cloud's
+// `edge`): the deck reaches further where the cloud is thick and withdraws where it is thin,
+// and breaks up into the trades' cumulus in patches, as a deck's edge in satellite images does
+// (the stratocumulus-to-cumulus transition; Wood 2012, "Stratocumulus clouds", Mon. Wea. Rev.
+// 140). A product, so that no deck appears where its strength is 0, and its core (strength 1)
+// stays a deck at any noise (0.25 and more: presence 0.8).
+const float DECK_FRAY = 0.75f;
+float frayed_deck(float deck, float edge) {
+  return clamp(deck * (1.0f + DECK_FRAY * clamp(edge, -1.0f, 1.0f)), 0.0f, 1.0f);
+}
 
 // The weights of closed (x) and open (y) cells from a deck's strength d and the cold sectors':
 // a deck is there from d 0.1 (its fringe, open) and closed from d 0.4 to 0.8 (its core).

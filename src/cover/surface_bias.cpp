@@ -111,6 +111,13 @@ std::vector<float> ocean_distance_km(const SurfaceMask& grid) {
 }
 
 std::vector<float> surface_bias(const SurfaceMask& mask) {
+  const std::vector<float> terms = surface_terms(mask);
+  std::vector<float> bias(terms.size() / 2);
+  for (std::size_t k = 0; k < bias.size(); ++k) bias[k] = terms[2 * k] - terms[2 * k + 1];
+  return bias;
+}
+
+std::vector<float> surface_terms(const SurfaceMask& mask) {
   const int columns = surface_bias_columns, rows = surface_bias_rows;
   const SurfaceMask grid = mask.columns == columns && mask.rows == rows ? mask : resample_surface(mask, columns, rows);
   const int reach = columns * 15 / 360;  // 15 degrees of longitude in cells: the coast to the east
@@ -119,7 +126,7 @@ std::vector<float> surface_bias(const SurfaceMask& mask) {
   // Arabian Sea, the Mozambique Channel, the Gulf of Mexico) gets no deck, nor one whose open
   // ocean lies beyond a continent.
   const int fetch_from = columns * 10 / 360, fetch = columns * 30 / 360;
-  std::vector<float> bias(static_cast<size_t>(columns) * rows);
+  std::vector<float> decks(static_cast<size_t>(columns) * rows), deserts(decks.size());
   const std::vector<float> distance = ocean_distance_km(grid);
   for (int j = 0; j < rows; ++j) {
     const double latitude = latitude_of_row(j, rows);
@@ -134,14 +141,19 @@ std::vector<float> surface_bias(const SurfaceMask& mask) {
       while (open < fetch && row[(i - open - 1 + columns) % columns] < 0.5f) ++open;
       west = glm::smoothstep(double(fetch_from), double(fetch), double(open));
       const double desert = std::max(subtropics, interior * inland(distance[static_cast<size_t>(j) * columns + i]));
-      bias[static_cast<size_t>(j) * columns + i] =
-          static_cast<float>((1.0 - land) * deck * east * west - land * desert);
+      decks[static_cast<size_t>(j) * columns + i] = static_cast<float>((1.0 - land) * deck * east * west);
+      deserts[static_cast<size_t>(j) * columns + i] = static_cast<float>(land * desert);
     }
   }
   // Three passes of a 9 x 9 box: close to a Gaussian of 4.5 cells (2.2 degrees), so that the
   // bias fades over a few hundred kilometres at the coasts.
-  for (int pass = 0; pass < 3; ++pass) bias = box_filter(bias, columns, rows, 4);
-  return bias;
+  for (int pass = 0; pass < 3; ++pass) {
+    decks = box_filter(decks, columns, rows, 4);
+    deserts = box_filter(deserts, columns, rows, 4);
+  }
+  std::vector<float> terms(2 * decks.size());
+  for (std::size_t k = 0; k < decks.size(); ++k) terms[2 * k] = decks[k], terms[2 * k + 1] = deserts[k];
+  return terms;
 }
 
 }  // namespace nephele::cover

@@ -33,6 +33,7 @@ const int PROBE_CONVECTIVE_DISTANCES = 20;  // convective_distances(p, a, uint(b
                                             // c, uint(b), x[3].x) in zw; no cells searched where x[3].z > 1/2
 const int PROBE_CONVECTIVE_WARP = 21;        // convective_warp(p, uint(b), 2)
 const int PROBE_LOCAL_EAST = 23;             // local_east(p)
+const int PROBE_FRAYED_DECK = 24;            // frayed_deck(a, b), deck_presence of it, deck_organisation(a)
 #ifndef __cplusplus
 #include "../lib/weather_systems.glsl"
 #endif
@@ -84,6 +85,10 @@ vec4 probe_weather_systems(mat4 x) {
                 itcz_systems(p, latitude, x[0].w, seed, x[3].x));
   if (f == PROBE_CONVECTIVE_WARP) return vec4(convective_warp(p, seed, 2), 0.0f);
   if (f == PROBE_LOCAL_EAST) return vec4(local_east(p), 0.0f);
+  if (f == PROBE_FRAYED_DECK) {
+    float deck = frayed_deck(x[0].y, x[0].z);
+    return vec4(deck, deck_presence(deck), deck_organisation(x[0].y), 0.0f);
+  }
   if (f == PROBE_BELTS_SURFACE) {
     vec4 fields = belts_over_surface(x[1], x[0].y);
     return vec4(fields.y, fields.z, fields.w, belt_cloud(fields));
