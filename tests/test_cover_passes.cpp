@@ -174,7 +174,8 @@ TEST_CASE("density and coverage passes agree with the CPU twin", "[pass]") {
     const float cells = systems.cells * cell_modulation(origin, cell_weights(deck, cold_sectors(origin, systems)),
                                                         systems.seed, 2.0f / float(p.size));
     REQUIRE(cells == 0.0f);
-    const float expected = with_cells(with_systems(shaped, systems_value), cells);
+    const float expected =
+        with_cells(with_systems(shaped, systems_value), cells * (1.0f - cells_hidden(cloud_types(cyclones, belts))));
     // The systems' field in [0, 1] takes the noise's error through system_edge (1 / 0.148) and a
     // band's edge (offset 0.6 half widths per unit of edge, smoothstep slope 1.5 / 0.4 half widths)
     // at most 15 kDensity, taken as 20, plus its transcendental functions' rounding (atan, log, exp: kSystems); the

@@ -535,6 +535,10 @@ TEST_CASE("weather_systems.glsl on the GPU agrees with the CPU", "[probe]") {
     cases.push_back({arguments(PROBE_CLOUD_TYPES, vec4(r(0.0f, 1.0f), 0, 0, 0),
                                vec4(r(0.0f, 1.0f), r(0.0f, 0.6f), r(0.0f, 0.35f), r(0.0f, 1.0f))),
                      4 * kArithmetic});
+    // cells_hidden: the larger of two of cloud_types' values (a division by 1), clamped.
+    cases.push_back({arguments(PROBE_CELLS_HIDDEN, vec4(r(0.0f, 1.0f), 0, 0, 0),
+                               vec4(r(0.0f, 1.0f), r(0.0f, 0.6f), r(0.0f, 0.35f), r(0.0f, 1.0f))),
+                     2 * kArithmetic});
     // frontal_reach: a smoothstep of |z| over 0.167 (slope up to 9): kArithmetic scaled by it.
     cases.push_back(
         {arguments(PROBE_FRONTAL_REACH, vec4(0.0f), vec4(normalize(vec3(r.v(-1.0f, 1.0f)) + vec3(1e-3f)), 0.0f)),

@@ -695,6 +695,15 @@ TEST_CASE("a deck's edge moves with the cover's noise and its brightness fades w
     }
 }
 
+TEST_CASE("the cells do not show through a front's or a convective system's deep cloud", "[fast][systems]") {
+  // Fields: x the ITCZ's clusters (weight 1), y the trade cumulus (0.6), z the cirrus (0.35), w the anvils.
+  CHECK(glsl::cells_hidden(glsl::cloud_types(1.0f, glm::vec4(0.0f))) == 1.0f);
+  CHECK(glsl::cells_hidden(glsl::cloud_types(0.0f, glm::vec4(1.0f, 0.0f, 0.0f, 0.0f))) == 1.0f);
+  CHECK(glsl::cells_hidden(glsl::cloud_types(0.25f, glm::vec4(0.5f, 0.0f, 0.0f, 0.0f))) == 0.5f);
+  // Broken and thin cloud hides nothing: the cumulus, the cirrus streaks and the anvils.
+  CHECK(glsl::cells_hidden(glsl::cloud_types(0.0f, glm::vec4(0.0f, 0.6f, 0.35f, 1.0f))) == 0.0f);
+}
+
 TEST_CASE("decks are closed cells in their cores and open at their fringes and in the cold air behind cold fronts",
           "[fast][systems]") {
   CHECK(glsl::cell_weights(1.0f, 0.0f).x == 1.0f);

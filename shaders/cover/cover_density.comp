@@ -170,9 +170,11 @@ void main() {
     CloudTypes types = cloud_types(cyclones, fields);
     float latitude = portable_asin(clamp(direction.z, -1.0f, 1.0f));
     float deck = deck_organisation(cells.x);
+    // The cells and streets are the boundary layer's: none show through a front's or a convective
+    // system's deep cloud.
     float density =
         with_cells(with_systems(shaped_density(noise, cyclonic, u_cyclone_cloudiness, surface, u_surface_weight), systems),
-                   cells.y + streets);
+                   (cells.y + streets) * (1.0f - cells_hidden(types)));
     imageStore(density_field, texel, vec4(density, 0.0f, 0.0f, 0.0f));
     // In the trades the cloud no system organises is shallow cumulus or thin cirrus: dim between
     // the systems.

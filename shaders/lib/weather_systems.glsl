@@ -687,6 +687,12 @@ CloudTypes cloud_types(float cyclones, vec4 fields) {
   types.anvil = fields.w;
   return types;
 }
+// How far the systems' own cloud hides the boundary layer's convective cells and streets from
+// above, in [0, 1]: the comma clouds' frontal cloud and the ITCZ's convective systems are deep
+// (tops from 6 km to the tropopause, cloud_properties.glsl's cloud_top_km) and optically thick, so
+// that a satellite sees their tops and not the cells below them; the cells show in the cold air
+// behind the fronts and on the decks, where nothing covers the boundary layer (Agee et al. 1973).
+float cells_hidden(IN(CloudTypes) types) { return clamp(max(types.frontal, types.deep_convection), 0.0f, 1.0f); }
 float belt_systems(vec3 p, float latitude, IN(WeatherSystems) systems, uint seed, float edge) {
   return belt_cloud(belt_fields(p, latitude, systems, seed, edge));
 }

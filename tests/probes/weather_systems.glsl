@@ -34,6 +34,7 @@ const int PROBE_CONVECTIVE_DISTANCES = 20;  // convective_distances(p, a, uint(b
 const int PROBE_CONVECTIVE_WARP = 21;        // convective_warp(p, uint(b), 2)
 const int PROBE_LOCAL_EAST = 23;             // local_east(p)
 const int PROBE_FRAYED_DECK = 24;            // frayed_deck(a, b), deck_presence of it, deck_organisation(a)
+const int PROBE_CELLS_HIDDEN = 25;           // cells_hidden(cloud_types(a, x[1]))
 #ifndef __cplusplus
 #include "../lib/weather_systems.glsl"
 #endif
@@ -85,6 +86,7 @@ vec4 probe_weather_systems(mat4 x) {
                 itcz_systems(p, latitude, x[0].w, seed, x[3].x));
   if (f == PROBE_CONVECTIVE_WARP) return vec4(convective_warp(p, seed, 2), 0.0f);
   if (f == PROBE_LOCAL_EAST) return vec4(local_east(p), 0.0f);
+  if (f == PROBE_CELLS_HIDDEN) return vec4(cells_hidden(cloud_types(x[0].y, x[1])), 0.0f, 0.0f, 0.0f);
   if (f == PROBE_FRAYED_DECK) {
     float deck = frayed_deck(x[0].y, x[0].z);
     return vec4(deck, deck_presence(deck), deck_organisation(x[0].y), 0.0f);
