@@ -97,7 +97,7 @@ const float ASCENT_FULL = 0.45f;
 // the stratocumulus decks' organisation in [0, 1] (weather_systems.glsl's deck_organisation: off the west
 // coasts with --surface, in patches of the decks' belt without). The unorganised cloud is
 // boundary-layer cloud (2 km) where the air does not rise, sinking towards the decks' 1.5 km with
-// their presence; the cyclones' ascent deepens it with their cyclonic depth up to the cirrus
+// their organisation; the cyclones' ascent deepens it with their cyclonic depth up to the cirrus
 // level under the tropopause (ASCENT_ONSET to ASCENT_FULL), as the cloud of a storm's ascent
 // fills the troposphere: altostratus and nimbostratus in between (ISCCP's middle class),
 // cirrostratus tops in the deepest. Each system then replaces it by its weight, the higher types last, so
@@ -123,7 +123,7 @@ float cloud_top_km(IN(CloudTypes) types, float latitude, float cyclonic, float d
 const float ANVIL_ORGANISED = 0.25f;
 
 // How far a texel's cloud is organised by a weather system, in [0, 1]: the largest of the comma
-// clouds' and the ITCZ's clusters' weights, a deck's presence and the anvils' share (ANVIL_ORGANISED
+// clouds' and the ITCZ's clusters' weights, a deck's organisation and the anvils' share (ANVIL_ORGANISED
 // of their weight). Not among them: the trade cumulus clusters, clumps of small cumulus a little
 // brighter than the field around them but themselves broken ("gravel" and "flowers", Stevens et
 // al. 2020); the cirrus streaks, thin cloud; and the flow's cyclonic depth, whose vortices in the

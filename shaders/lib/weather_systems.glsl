@@ -562,15 +562,14 @@ float deck_organisation(float deck) { return smoothstep(0.0f, DECK_ORGANISED, de
 
 // A deck's strength d with its edge frayed by the cover's noise `edge` in [-1, 1]
 // (cover_density.glsl's system_edge): d (1 + DECK_FRAY edge). The strength is a smooth field of
-// the place (the land/ocean bias, or the noise's patches without one), so its contour at the
-// presence's 0.1-0.3 is a smooth line, which near a coast, where the bias falls steeply, drew the
-// deck's bright edge as a straight line parallel to the coast across the cloud. Moved by the
-// noise, the edge follows the cloud's own texture, as the systems' bands do (comma_cloud's
-// `edge`): the deck reaches further where the cloud is thick and withdraws where it is thin,
-// and breaks up into the trades' cumulus in patches, as a deck's edge in satellite images does
-// (the stratocumulus-to-cumulus transition; Wood 2012, "Stratocumulus clouds", Mon. Wea. Rev.
-// 140). A product, so that no deck appears where its strength is 0, and its core (strength 1)
-// stays a deck at any noise (0.25 and more: presence 0.8).
+// the place (the land/ocean bias's deck term, or the noise's patches without a mask), whose
+// contours are smooth lines across the cloud. Moved by the noise, the deck's edge follows the
+// cloud's own texture, as the systems' bands do (comma_cloud's `edge`): the deck reaches further
+// where the cloud is thick and withdraws where it is thin, and breaks up into the trades' cumulus
+// in patches, as a deck's edge in satellite images does (the stratocumulus-to-cumulus transition;
+// Wood 2012, "Stratocumulus clouds", Mon. Wea. Rev. 140). A product, so that no deck appears where
+// its strength is 0, and its core (strength 1) stays a deck at any noise (0.25 and more: presence
+// 0.84).
 const float DECK_FRAY = 0.75f;
 float frayed_deck(float deck, float edge) {
   return clamp(deck * (1.0f + DECK_FRAY * clamp(edge, -1.0f, 1.0f)), 0.0f, 1.0f);
