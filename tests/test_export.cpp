@@ -649,31 +649,6 @@ TEST_CASE("every cover export preset writes a README.txt naming the preset besid
   }
 }
 
-TEST_CASE("half_from_float rounds to the nearest binary16, ties to even, through subnormals and overflow",
-          "[fast][export]") {
-  // Exact values and their bit patterns (IEEE 754-2008, binary16).
-  CHECK(files::half_from_float(0.0f) == 0x0000);
-  CHECK(files::half_from_float(-0.0f) == 0x8000);
-  CHECK(files::half_from_float(1.0f) == 0x3C00);
-  CHECK(files::half_from_float(0.5f) == 0x3800);
-  CHECK(files::half_from_float(65504.0f) == 0x7BFF);               // largest finite half
-  CHECK(files::half_from_float(std::ldexp(1.0f, -24)) == 0x0001);  // smallest subnormal
-  CHECK(files::half_from_float(std::ldexp(1.0f, -14)) == 0x0400);  // smallest normal
-  // Between 1 and the next half (1 + 2^-10): below, at and above the midpoint.
-  CHECK(files::half_from_float(1.0f + std::ldexp(1.0f, -12)) == 0x3C00);
-  CHECK(files::half_from_float(1.0f + std::ldexp(1.0f, -11)) == 0x3C00);      // tie to even (mantissa 0)
-  CHECK(files::half_from_float(1.0f + 3 * std::ldexp(1.0f, -11)) == 0x3C02);  // tie to even (mantissa 2)
-  CHECK(files::half_from_float(1.0f + std::ldexp(1.0f, -11) + std::ldexp(1.0f, -20)) == 0x3C01);
-  CHECK(files::half_from_float(std::ldexp(1.0f, -25)) == 0x0000);  // half the smallest subnormal: tie to even 0
-  CHECK(files::half_from_float(1e6f) == 0x7C00);                   // overflow to infinity
-  // Every value the reader decodes maps back to itself.
-  for (std::uint32_t h = 0; h < 0x7C00; ++h) {
-    if (files::half_from_float(test::float_from_half(std::uint16_t(h))) != h) FAIL("round trip of " << h);
-    if (files::float_from_half(std::uint16_t(h)) != test::float_from_half(std::uint16_t(h)))
-      FAIL("float_from_half of " << h);
-  }
-}
-
 namespace {
 
 // Face and (s, t) of direction d by the GL table (OpenGL 4.6, table 8.19), for the engines'

@@ -7,11 +7,14 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cmath>
+#include <cstdint>
 #include <vector>
 
 #include "case_tags.hpp"
 #include "cli_support.hpp"
+#include "core/half_float.hpp"
 #include "core/json.hpp"
+#include "core/mip_levels.hpp"
 #include "core/time.hpp"
 #include "cover/global_cover.hpp"
 #include "gl_support.hpp"
@@ -22,6 +25,7 @@
 #include "gpu/textures.hpp"
 #include "render/exposure.hpp"
 #include "render/orbit_renderer.hpp"
+#include "render/orbit_textures.hpp"
 #include "render/orbit_tiles.hpp"
 #include "shader_math/shader_math.hpp"
 
@@ -1050,6 +1054,53 @@ TEST_CASE("orbit tiles: a band of rows keeps the tiles that hold one of its rows
   CHECK(rows_of(render::tiles_in_rows(every, 8, 8)) == std::vector<unsigned>{1});
   CHECK(rows_of(render::tiles_in_rows(every, 29, 1)) == std::vector<unsigned>{3});
   CHECK(render::tiles_in_rows(every, 8, 8).size() == 5);
+}
+
+TEST_CASE("orbit textures: every level holds the nearest half floats of the CPU's mip chain, whatever the driver",
+          "[orbit]") {
+  test::test_context();
+  // 1024 x 512 texels: two bands of rows in the upload, and a chain of 11 levels. The values are
+  // random, with exact ties between two halves (1 + 2^-11 lies halfway between 1 and 1 + 2^-10):
+  // a driver that truncated or rounded ties away from even would hold other bits.
+  const int width = 1024, height = 512;
+  core::ImageData colour{width, height, 3, {}}, slopes{width, height, 2, {}}, grey{width, height, 1, {}};
+  std::uint32_t state = 12345;
+  auto next = [&] {
+    state = state * 1664525u + 1013904223u;
+    return float(state >> 8) / float(1u << 24);
+  };
+  for (int k = 0; k < width * height; ++k) {
+    for (int c = 0; c < 3; ++c) colour.pixels.push_back(k % 7 == 0 ? 1.0f + std::ldexp(1.0f, -11) : next());
+    for (int c = 0; c < 2; ++c) slopes.pixels.push_back(0.3f * (next() - 0.5f));
+    grey.pixels.push_back(next());
+  }
+  // The texture's level read back as halves, against the CPU's chain rounded to nearest even.
+  auto check_level = [&](unsigned id, const core::ImageData& image, int out_channels, int level) {
+    const int w = std::max(1, width >> level), h = std::max(1, height >> level);
+    const std::vector<float> texels =
+        level == 0 ? image.pixels : core::mip_levels(image.pixels, width, height, image.channels, level + 1).back();
+    std::vector<std::uint16_t> held(size_t(w) * h * out_channels);
+    glPixelStorei(GL_PACK_ALIGNMENT, 2);
+    glGetTextureImage(id, level, out_channels == 2 ? GL_RG : GL_RGBA, GL_HALF_FLOAT, GLsizei(held.size() * 2),
+                      held.data());
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    size_t wrong = 0;
+    for (size_t k = 0; k < size_t(w) * h; ++k)
+      for (int c = 0; c < out_channels; ++c) {
+        const float expected = c == 3 ? 1.0f : texels[k * image.channels + std::min(c, image.channels - 1)];
+        if (held[k * out_channels + c] != core::half_from_float(expected)) ++wrong;
+      }
+    INFO("level " << level << " of a " << image.channels << "-channel map");
+    CHECK(wrong == 0);
+  };
+  const unsigned colour_id = render::colour_map_texture(colour), slope_id = render::slope_texture(slopes),
+                 grey_id = render::colour_map_texture(grey);
+  for (int level : {0, 1, 5, 10}) {
+    check_level(colour_id, colour, 4, level);
+    check_level(slope_id, slopes, 2, level);
+    check_level(grey_id, grey, 4, level);
+  }
+  for (GLuint id : {colour_id, slope_id, grey_id}) glDeleteTextures(1, &id);
 }
 
 TEST_CASE("orbit metering: the lit pixels' 99th luminance percentile goes to the filmic curve's x = 1",

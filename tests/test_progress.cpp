@@ -3,6 +3,7 @@
 
 #include <cstdio>
 #include <chrono>
+#include <stdexcept>
 #include <string>
 #include <thread>
 
@@ -69,6 +70,21 @@ TEST_CASE("progress goes to plain lines off a terminal and to one redrawn line o
   CHECK_THAT(drawn, Catch::StartsWith("\rgenerate: [############") && Catch::Contains("100%") && Catch::EndsWith("\n"));
   CHECK(drawn.find("\rgenerate: [########################] 100%") != std::string::npos);
   std::fclose(terminal);
+}
+
+TEST_CASE("progress ended by an error says stopped at the fraction reached, not done", "[fast][progress]") {
+  std::FILE* stream = std::tmpfile();
+  try {
+    Progress p("render", 4, immediate(stream, false));
+    p.update(1, "global cover");
+    throw std::runtime_error("a bad map");
+  } catch (const std::runtime_error&) {
+  }
+  const std::string lines = contents(stream);
+  CHECK_THAT(lines, Catch::Contains("render:  25%") && Catch::EndsWith("stopped\n"));
+  CHECK(lines.find("done") == std::string::npos);
+  CHECK(lines.find("100%") == std::string::npos);
+  std::fclose(stream);
 }
 
 TEST_CASE("the heartbeat reports a step that runs long without updates of its own", "[fast][progress]") {

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <exception>
 
 namespace nephele::core {
 
@@ -15,11 +16,17 @@ Progress::Settings Progress::for_stderr(bool quiet) {
 }
 
 Progress::Progress(std::string label, double total, Settings settings)
-    : label_(std::move(label)), total_(total > 0 ? total : 1.0), settings_(settings), start_(Clock::now()) {
+    : label_(std::move(label)),
+      total_(total > 0 ? total : 1.0),
+      settings_(settings),
+      start_(Clock::now()),
+      exceptions_at_start_(std::uncaught_exceptions()) {
   if (settings_.enabled && settings_.heartbeat) heartbeat_ = std::thread([this] { heartbeat(); });
 }
 
-Progress::~Progress() { finish(); }
+// Unwound by an exception, the line ends where the work stopped: "done" would claim work that
+// did not happen just before the error's message.
+Progress::~Progress() { end(std::uncaught_exceptions() > exceptions_at_start_); }
 
 void Progress::heartbeat() {
   std::unique_lock<std::mutex> lock(mutex_);
@@ -83,7 +90,9 @@ void Progress::show(double t) {
   drawn_ = true;
 }
 
-void Progress::finish() {
+void Progress::finish() { end(false); }
+
+void Progress::end(bool stopped) {
   {
     std::lock_guard<std::mutex> lock(mutex_);
     if (finished_) return;
@@ -92,7 +101,8 @@ void Progress::finish() {
   wake_.notify_all();
   if (heartbeat_.joinable()) heartbeat_.join();
   if (!settings_.enabled || !drawn_) return;
-  const std::string text = format(label_, "done", 1.0, elapsed(), settings_.terminal);
+  const std::string text = stopped ? format(label_, "stopped", done_ / total_, elapsed(), settings_.terminal)
+                                   : format(label_, "done", 1.0, elapsed(), settings_.terminal);
   if (settings_.terminal)
     std::fprintf(settings_.stream, "\r%-79s\n", text.c_str());
   else

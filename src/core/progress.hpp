@@ -28,7 +28,7 @@ class Progress {
   static Settings for_stderr(bool quiet);
 
   Progress(std::string label, double total, Settings settings);
-  ~Progress();  // finishes the line if a bar was drawn
+  ~Progress();  // finishes the line if a bar was drawn: "done", or "stopped" when an exception unwinds it
   Progress(const Progress&) = delete;
   Progress& operator=(const Progress&) = delete;
 
@@ -44,6 +44,7 @@ class Progress {
   using Clock = std::chrono::steady_clock;
   double elapsed() const;
   void show(double t);  // with mutex_ held
+  void end(bool stopped);
   void heartbeat();
   std::string label_;
   double total_;
@@ -54,6 +55,7 @@ class Progress {
   double last_shown_ = -1e9;
   bool drawn_ = false;
   bool finished_ = false;
+  int exceptions_at_start_ = 0;
   std::mutex mutex_;
   std::condition_variable wake_;
   std::thread heartbeat_;

@@ -89,8 +89,23 @@ std::vector<float> ocean_distance_km(const SurfaceMask& grid) {
   std::vector<double> distance(static_cast<size_t>(columns) * rows, std::numeric_limits<double>::infinity());
   using Entry = std::pair<double, std::size_t>;
   std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
+  // Every ocean cell is at 0, but only those beside land start the search: a shortest path to
+  // a land cell leaves the ocean from one of them, so the distances are the same as from all
+  // (and the queue holds a few thousand cells, not the whole ocean's).
   for (std::size_t k = 0; k < distance.size(); ++k)
-    if (grid.land[k] < 0.5f) distance[k] = 0.0, queue.push({0.0, k});
+    if (grid.land[k] < 0.5f) distance[k] = 0.0;
+  for (std::size_t k = 0; k < distance.size(); ++k) {
+    if (distance[k] != 0.0) continue;
+    const int j = static_cast<int>(k / columns), i = static_cast<int>(k % columns);
+    bool beside_land = false;
+    for (int dj = -1; dj <= 1 && !beside_land; ++dj)
+      for (int di = -1; di <= 1; ++di) {
+        const int jj = j + dj;
+        if (jj < 0 || jj >= rows) continue;
+        if (distance[static_cast<std::size_t>(jj) * columns + (i + di + columns) % columns] != 0.0) beside_land = true;
+      }
+    if (beside_land) queue.push({0.0, k});
+  }
   while (!queue.empty()) {
     const auto [d, k] = queue.top();
     queue.pop();

@@ -278,17 +278,21 @@ ImageHeader read_image_header(const std::filesystem::path& path) {
   return header;
 }
 
+void check_image_budget(const std::filesystem::path& path, const ImageHeader& header, std::uint64_t max_bytes) {
+  if (max_bytes == 0) max_bytes = core::input_memory_budget_bytes();
+  const double bytes = 4.0 * header.width * double(header.height) * header.channels;
+  if (bytes > double(max_bytes))
+    throw core::InputFileError(path.string() + ": declares " + std::to_string(header.width) + " x " +
+                               std::to_string(header.height) + " x " + std::to_string(header.channels) + " samples, " +
+                               std::to_string(static_cast<std::uint64_t>(bytes) >> 20) + " MiB as float; at most " +
+                               std::to_string(max_bytes >> 20) + " MiB (half the available memory) are read");
+}
+
 ImageData read_image(const std::filesystem::path& path, std::uint64_t max_bytes, ImageHeader* header_out) {
   ImageHeader header;
   auto in = open_image(path, header);
   const OIIO::ImageSpec& spec = in->spec();
-  if (max_bytes == 0) max_bytes = core::input_memory_budget_bytes();
-  const double bytes = 4.0 * spec.width * double(spec.height) * spec.nchannels;
-  if (bytes > double(max_bytes))
-    throw core::InputFileError(path.string() + ": declares " + std::to_string(spec.width) + " x " +
-                               std::to_string(spec.height) + " x " + std::to_string(spec.nchannels) + " samples, " +
-                               std::to_string(static_cast<std::uint64_t>(bytes) >> 20) + " MiB as float; at most " +
-                               std::to_string(max_bytes >> 20) + " MiB (half the available memory) are read");
+  check_image_budget(path, header, max_bytes);
   if (header_out) *header_out = header;
   ImageData image{spec.width, spec.height, spec.nchannels, {}};
   image.pixels.resize(static_cast<size_t>(spec.width) * spec.height * spec.nchannels);

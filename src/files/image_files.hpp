@@ -131,6 +131,9 @@ struct ImageHeader {
 // declares 40000 x 40000 is refused, not attempted. Throws core::InputFileError (the caller names
 // the option) or std::runtime_error naming the path.
 ImageHeader read_image_header(const std::filesystem::path& path);
+// Throws core::InputFileError naming the path when an image of `header`'s size would take more
+// than `max_bytes` as floats (0: half the available memory): read_image's check before it reads.
+void check_image_budget(const std::filesystem::path& path, const ImageHeader& header, std::uint64_t max_bytes = 0);
 ImageData read_image(const std::filesystem::path& path, std::uint64_t max_bytes = 0, ImageHeader* header = nullptr);
 
 // Draws `text` into an RGB image with its baseline's left end at (x, y), `size` pixels high,

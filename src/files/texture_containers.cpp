@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "core/error.hpp"
+#include "core/half_float.hpp"
 #include "files/block_compression.hpp"
 
 namespace nephele::files {
@@ -145,37 +146,6 @@ std::string vk_format_name(TexelFormat format) {
   return std::string(name) + " (" + std::to_string(vk_format(format)) + ")";
 }
 
-std::uint16_t half_from_float(float value) {
-  std::uint32_t f;
-  std::memcpy(&f, &value, 4);
-  const std::uint32_t sign = (f >> 16) & 0x8000u;
-  const std::uint32_t exponent = (f >> 23) & 0xffu;
-  std::uint32_t mantissa = f & 0x7fffffu;
-  if (exponent == 0xff) return std::uint16_t(sign | 0x7c00u | (mantissa ? 0x200u : 0u));  // inf, NaN
-  const int e = int(exponent) - 127 + 15;
-  if (e >= 31) return std::uint16_t(sign | 0x7c00u);  // overflow
-  if (e <= 0) {                                       // subnormal half or zero
-    if (e < -10) return std::uint16_t(sign);
-    mantissa |= 0x800000u;
-    const int shift = 14 - e;
-    std::uint32_t h = mantissa >> shift;
-    const std::uint32_t rest = mantissa & ((1u << shift) - 1), halfway = 1u << (shift - 1);
-    if (rest > halfway || (rest == halfway && (h & 1u))) ++h;
-    return std::uint16_t(sign | h);
-  }
-  std::uint32_t h = (std::uint32_t(e) << 10) | (mantissa >> 13);
-  const std::uint32_t rest = mantissa & 0x1fffu;
-  if (rest > 0x1000u || (rest == 0x1000u && (h & 1u))) ++h;  // may carry into the exponent: correct
-  return std::uint16_t(sign | h);
-}
-
-float float_from_half(std::uint16_t h) {
-  const int exponent = (h >> 10) & 31, mantissa = h & 1023;
-  const float magnitude =
-      exponent == 0 ? std::ldexp(float(mantissa), -24) : std::ldexp(float(mantissa + 1024), exponent - 25);
-  return (h & 0x8000) ? -magnitude : magnitude;
-}
-
 std::uint64_t image_bytes(int width, int height, TexelFormat format) {
   if (is_block_compressed(format)) return compressed_image_bytes(width, height, block_format(format));
   return std::uint64_t(width) * std::uint64_t(height) * texel_block_bytes(format);
@@ -202,7 +172,7 @@ std::vector<unsigned char> encode_rows(const float* texels, int width, int rows,
     const float v = texels[i];
     switch (format) {
       case TexelFormat::r16f: {
-        const std::uint16_t h = half_from_float(v);
+        const std::uint16_t h = core::half_from_float(v);
         out.push_back((unsigned char)(h & 0xff));
         out.push_back((unsigned char)(h >> 8));
         break;

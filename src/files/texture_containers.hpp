@@ -31,11 +31,6 @@ std::string vk_format_name(TexelFormat format);
 // BC4_UNORM_BLOCK 139.
 std::uint32_t vk_format(TexelFormat format);
 
-// IEEE 754 binary16 of `value`, rounded to nearest even; overflow gives infinity.
-std::uint16_t half_from_float(float value);
-// The float a finite binary16 holds (exact: every binary16 is a float).
-float float_from_half(std::uint16_t h);
-
 // A one-channel chain's texels in a four-channel format: the value in R, G, B and A (grey), or
 // RGB white with the value in alpha (a cloud colour map, alpha unassociated).
 enum class GreyLayout { grey, white_alpha };

@@ -5,6 +5,7 @@
 #include <array>
 #include <future>
 #include <system_error>
+#include <utility>
 
 #include "core/error.hpp"
 #include "core/parallel_rows.hpp"
@@ -17,16 +18,25 @@ namespace {
 
 float srgb_to_linear(float v) { return v <= 0.04045f ? v / 12.92f : std::pow((v + 0.055f) / 1.055f, 2.4f); }
 
-core::ImageData read_equirect(const std::string& path, const std::string& option) {
-  core::ImageData image;
-  files::ImageHeader header;
+// read() of the map at `path`, its failures as bad input of `option`.
+template <class Read>
+auto read_map(const std::string& path, const std::string& option, Read&& read) {
   try {
-    image = files::read_image(path, 0, &header);
+    return read();
   } catch (const std::exception& e) {
     throw core::InputError(option, path, "an equirect image file OpenImageIO reads (JPEG, PNG, EXR, ...)",
                            std::string("could not be read: ") + e.what());
   }
-  if (image.width < 2) throw core::InputError(option, path, "an image of at least 2 x 1 pixels", "is too small");
+}
+
+void check_map_width(const std::string& path, const std::string& option, int width) {
+  if (width < 2) throw core::InputError(option, path, "an image of at least 2 x 1 pixels", "is too small");
+}
+
+core::ImageData read_equirect(const std::string& path, const std::string& option) {
+  files::ImageHeader header;
+  core::ImageData image = read_map(path, option, [&] { return files::read_image(path, 0, &header); });
+  check_map_width(path, option, image.width);
   // Integer formats hold display-encoded (sRGB) colour; float formats hold linear values. An 8-bit
   // image has 256 values: each decoded once (the decoder's float for code n, and its linear value,
   // kept under n) instead of a pow per sample; other values are decoded as they come.
@@ -133,6 +143,18 @@ core::ImageData etopo5_relief(const regional::ElevationRaster& raster) {
 }
 
 }  // namespace
+
+void check_planet_maps(const std::string& day, const std::string& night, const std::string& option) {
+  for (const auto& [path, field] : {std::pair{day, option}, std::pair{night, std::string("--night-texture")}}) {
+    if (path.empty()) continue;
+    const files::ImageHeader header = read_map(path, field, [&] {
+      files::ImageHeader h = files::read_image_header(path);
+      files::check_image_budget(path, h);
+      return h;
+    });
+    check_map_width(path, field, header.width);
+  }
+}
 
 PlanetTextures read_planet_textures(const std::string& day, const std::string& night, const std::string& option) {
   PlanetTextures out;

@@ -33,6 +33,12 @@ struct PlanetTextures {
 PlanetTextures read_planet_textures(const std::string& day, const std::string& night = "",
                                     const std::string& option = "--earth-texture");
 
+// The checks read_planet_textures makes of named maps, from their headers alone (a missing or
+// unreadable file, fewer than 2 pixels across, more than half the available memory as floats):
+// a caller that decodes the maps on a thread of its own refuses a bad one before any other work.
+void check_planet_maps(const std::string& day, const std::string& night = "",
+                       const std::string& option = "--earth-texture");
+
 // A cover directory written by `nephele generate` as a cube map for the renderer.
 render::CoverCube read_cover_cube(const std::filesystem::path& directory);
 

@@ -8,12 +8,12 @@
 #include <stdexcept>
 #include <string>
 
-#include "core/mip_levels.hpp"
 #include "gpu/shader_bindings.hpp"
 #include "gpu/compute_program.hpp"
 #include "gpu/pass_timer.hpp"
 #include "gpu/textures.hpp"
 #include "params/table.hpp"
+#include "render/orbit_textures.hpp"
 #include "render/orbit_tiles.hpp"
 #include "render/sky_table.hpp"
 #include "render/sun_position.hpp"
@@ -84,118 +84,6 @@ void check_cover(const CoverCube& cover) {
   if ((!cover.optical_thickness.empty() || !cover.cloud_top.empty()) &&
       (cover.optical_thickness.size() != texels || cover.cloud_top.size() != texels))
     throw std::invalid_argument("orbit renderer: the cover's tau and cloud tops need a value per texel, or none");
-}
-
-// An equirect texture of `format` with every mip level, from `channels` floats a texel (level 0):
-// `upload(level, width, height, texels)` fills a level; the levels are made on the CPU
-// (core/mip_levels.hpp). It is filtered trilinearly, repeating in longitude and clamped in
-// latitude.
-template <class Upload>
-GLuint equirect_texture_of(int width, int height, int channels, const std::vector<float>& level0, GLenum format,
-                           Upload&& upload) {
-  GLuint id = 0;
-  glCreateTextures(GL_TEXTURE_2D, 1, &id);
-  const int levels = 1 + static_cast<int>(std::floor(std::log2(std::max(width, height))));
-  glTextureStorage2D(id, levels, format, width, height);
-  upload(id, 0, width, height, level0);
-  const std::vector<std::vector<float>> chain = core::mip_levels(level0, width, height, channels, levels);
-  for (int level = 1; level < levels; ++level)
-    upload(id, level, std::max(1, width >> level), std::max(1, height >> level), chain[size_t(level - 1)]);
-  glTextureParameteri(id, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
-  glTextureParameteri(id, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-  glTextureParameteri(id, GL_TEXTURE_WRAP_S, GL_REPEAT);
-  glTextureParameteri(id, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-  return id;
-}
-
-GLuint equirect_texture(const core::ImageData& image) {
-  std::vector<float> rgba(static_cast<size_t>(image.width) * image.height * 4, 1.0f);
-  for (size_t k = 0, n = static_cast<size_t>(image.width) * image.height; k < n; ++k)
-    for (int c = 0; c < 3; ++c) rgba[4 * k + c] = image.pixels[k * image.channels + std::min(c, image.channels - 1)];
-  return equirect_texture_of(image.width, image.height, 4, rgba, GL_RGBA16F,
-                             [](GLuint id, int level, int width, int height, const std::vector<float>& texels) {
-                               glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-                               glTextureSubImage2D(id, level, 0, 0, width, height, GL_RGBA, GL_FLOAT, texels.data());
-                             });
-}
-
-// A one-channel equirect (the water fraction) as an 8-bit texture: a quarter of the upload of
-// equirect_texture's RGBA16F.
-GLuint fraction_texture(const core::ImageData& image) {
-  std::vector<float> fraction(static_cast<size_t>(image.width) * image.height);
-  for (size_t k = 0; k < fraction.size(); ++k) fraction[k] = std::clamp(image.pixels[k * image.channels], 0.0f, 1.0f);
-  return equirect_texture_of(image.width, image.height, 1, fraction, GL_R8,
-                             [](GLuint id, int level, int width, int height, const std::vector<float>& texels) {
-                               std::vector<unsigned char> bytes(texels.size());
-                               for (size_t k = 0; k < bytes.size(); ++k)
-                                 bytes[k] = static_cast<unsigned char>(std::lround(255.0f * texels[k]));
-                               glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-                               glTextureSubImage2D(id, level, 0, 0, width, height, GL_RED, GL_UNSIGNED_BYTE,
-                                                   bytes.data());
-                               glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-                             });
-}
-
-// The ground's slopes (east, north; ground_relief.glsl) as a two-channel half-float texture: slopes
-// need three digits (ETOPO5's steepest 9 km cells rise by about 0.3 a metre).
-GLuint relief_texture(const core::ImageData& image) {
-  std::vector<float> slopes(static_cast<size_t>(image.width) * image.height * 2);
-  for (size_t k = 0; k < slopes.size() / 2; ++k)
-    for (int c = 0; c < 2; ++c) slopes[2 * k + c] = image.pixels[k * image.channels + std::min(c, image.channels - 1)];
-  return equirect_texture_of(image.width, image.height, 2, slopes, GL_RG16F,
-                             [](GLuint id, int level, int width, int height, const std::vector<float>& texels) {
-                               glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-                               glTextureSubImage2D(id, level, 0, 0, width, height, GL_RG, GL_FLOAT, texels.data());
-                             });
-}
-
-// The texels as the orbit shader reads them: (cover, tau, cloud top km, 0). Clear texels take the
-// unorganised cloud's top (TOP_BOUNDARY_LAYER_KM), so that the filtered tops at a cloud's edge blend
-// towards a cloud's height and not towards the ground. Without the cover's own tau and tops the
-// shader derives both from the filtered coverage (cloud_properties.glsl's fallbacks): derived
-// per texel and then filtered, they would carry the texel grid into the image.
-std::vector<float> cover_channels(const CoverCube& cover) {
-  const size_t texels = cover.texels.size();
-  const bool own = !cover.optical_thickness.empty();
-  std::vector<float> rgba(4 * texels, 0.0f);
-  for (size_t k = 0; k < texels; ++k) {
-    const float c = cover.texels[k];
-    rgba[4 * k] = c;
-    if (own) {
-      rgba[4 * k + 1] = cover.optical_thickness[k];
-      rgba[4 * k + 2] = c > 0.0f ? cover.cloud_top[k] : glsl::TOP_BOUNDARY_LAYER_KM;
-    }
-  }
-  return rgba;
-}
-
-GLuint cover_texture(const CoverCube& cover) {
-  GLuint id = 0;
-  glCreateTextures(GL_TEXTURE_CUBE_MAP, 1, &id);
-  const int levels = 1 + static_cast<int>(std::floor(std::log2(cover.size)));
-  // Half floats: coverage, tau and heights in km need 3 digits, not float's 7 (half the upload
-  // and memory of RGBA32F).
-  glTextureStorage2D(id, levels, GL_RGBA16F, cover.size, cover.size);
-  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-  // Rows from t = 0 in file order: what glTexSubImage expects for a cube face (cubemaps/README.md).
-  const std::vector<float> rgba = cover_channels(cover);
-  glTextureSubImage3D(id, 0, 0, 0, 0, cover.size, cover.size, 6, GL_RGBA, GL_FLOAT, rgba.data());
-  // The levels of each face on the CPU (core/mip_levels.hpp), as OpenGL makes them: per face.
-  const size_t face_floats = 4 * static_cast<size_t>(cover.size) * cover.size;
-  for (int face = 0; face < 6; ++face) {
-    const std::vector<float> level0(rgba.begin() + static_cast<std::ptrdiff_t>(face * face_floats),
-                                    rgba.begin() + static_cast<std::ptrdiff_t>((face + 1) * face_floats));
-    const std::vector<std::vector<float>> chain = core::mip_levels(level0, cover.size, cover.size, 4, levels);
-    for (int level = 1; level < levels; ++level) {
-      const int size = std::max(1, cover.size >> level);
-      glTextureSubImage3D(id, level, 0, 0, face, size, size, 1, GL_RGBA, GL_FLOAT, chain[size_t(level - 1)].data());
-    }
-  }
-  glTextureParameteri(id, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
-  glTextureParameteri(id, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-  glTextureParameteri(id, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-  glTextureParameteri(id, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-  return id;
 }
 
 // Smooth value noise on the lattice of integers (for the procedural planet).
@@ -318,23 +206,21 @@ OrbitRenderer::OrbitRenderer(const PlanetImages& planet, const CoverCube& cover,
       planet.day.pixels.size() != static_cast<size_t>(planet.day.width) * planet.day.height * planet.day.channels)
     throw std::invalid_argument("orbit renderer: the day image is empty or malformed");
   check_cover(cover);
-  gl_->day = equirect_texture(planet.day);
+  // A missing or malformed night, water or relief image stands for none (no lights, no water,
+  // flat ground), by a one-texel stand-in; the images themselves are not copied.
+  auto or_none = [](const core::ImageData& image, int channels_needed, const core::ImageData& none) -> const auto& {
+    const bool usable = image.width >= 1 && image.height >= 1 && image.channels >= channels_needed &&
+                        image.pixels.size() == static_cast<size_t>(image.width) * image.height * image.channels;
+    return usable ? image : none;
+  };
+  static const core::ImageData no_lights{1, 1, 3, {0.0f, 0.0f, 0.0f}}, no_water{1, 1, 1, {0.0f}},
+      flat{1, 1, 2, {0.0f, 0.0f}};
+  gl_->day = colour_map_texture(planet.day);
   gl_->day_width = planet.day.width;
-  core::ImageData night = planet.night;
-  if (night.width < 1 || night.height < 1 || night.channels < 1 ||
-      night.pixels.size() != static_cast<size_t>(night.width) * night.height * night.channels)
-    night = {1, 1, 3, {0.0f, 0.0f, 0.0f}};
-  gl_->night = equirect_texture(night);
-  core::ImageData water = planet.water;
-  if (water.width < 1 || water.height < 1 || water.channels < 1 ||
-      water.pixels.size() != static_cast<size_t>(water.width) * water.height * water.channels)
-    water = {1, 1, 1, {0.0f}};
-  gl_->water = fraction_texture(water);
-  core::ImageData relief = planet.relief;
-  if (relief.width < 1 || relief.height < 1 || relief.channels < 2 ||
-      relief.pixels.size() != static_cast<size_t>(relief.width) * relief.height * relief.channels)
-    relief = {1, 1, 2, {0.0f, 0.0f}};  // flat
-  gl_->relief = relief_texture(relief);
+  gl_->night = colour_map_texture(or_none(planet.night, 1, no_lights));
+  gl_->water = water_fraction_texture(or_none(planet.water, 1, no_water));
+  const core::ImageData& relief = or_none(planet.relief, 2, flat);
+  gl_->relief = slope_texture(relief);
   gl_->relief_width = relief.width;
   gl_->cover = cover_texture(cover);
   gl_->cover_size = cover.size;

@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <unistd.h>
 
+#include "core/half_float.hpp"
 #include "files/atomic_output.hpp"
 #include "files/image_files.hpp"
 #include "files/mip_chain.hpp"
@@ -33,7 +34,7 @@ std::vector<float> decoded_face(const files::MipChain& chain, int face, const Ca
     for (std::size_t i = 0; i < n; ++i) {
       const float v = texels[i];
       if (c.format == files::TexelFormat::r16f) {
-        out[i] = files::float_from_half(files::half_from_float(v));
+        out[i] = core::float_from_half(core::half_from_float(v));
       } else if (c.format == files::TexelFormat::r32f) {
         out[i] = v;
       } else {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <future>
 #include <iostream>
 #include <memory>
 #include <sstream>
@@ -121,17 +122,22 @@ int run_orbit_render(const OrbitOptions& orbit) {
       throw UsageError("--cover", orbit.cover, "a directory written by nephele generate", "is not a directory");
     cover = io::read_cover_cube(orbit.cover);
   }
-  // The default day map's water and relief and the generated cover's land/ocean mask (--surface
-  // etopo5) all come from ETOPO5: held across both, the file is read once (io::whole_etopo5).
   std::error_code no_file;
+  // The planet's maps are decoded on threads of their own while the context is made and the
+  // cover generated, which leave a core idle for much of their time (docs/orbit_view.md, "Cost").
+  // A bad named map still exits 2 before any of it, by its header.
+  io::check_planet_maps(orbit.earth_texture, orbit.night_texture);
+  std::future<io::PlanetTextures> planet_maps = std::async(
+      std::launch::async, [&orbit] { return io::read_planet_textures(orbit.earth_texture, orbit.night_texture); });
+
+  // The default day map's water and relief and the generated cover's land/ocean mask (--surface
+  // etopo5) all come from ETOPO5: held across both, the file is read once (io::whole_etopo5),
+  // here while the maps are decoded.
   const std::shared_ptr<const regional::ElevationRaster> etopo5 =
       orbit.earth_texture.empty() && !cover && orbit.surface == "etopo5" &&
               std::filesystem::is_regular_file(io::etopo5_default_path, no_file)
           ? io::whole_etopo5(io::etopo5_default_path, "--surface")
           : nullptr;
-  io::PlanetTextures textures = io::read_planet_textures(orbit.earth_texture, orbit.night_texture);
-  for (const auto& w : textures.warnings) std::cerr << "warning: " << w << "\n";
-
   gpu::EglContext context;
   if (orbit.verbose) std::cerr << "renderer: " << context.info().renderer << "\n";
   render::check_render_fits(context, camera.width, camera.height, orbit.size.empty() ? "--size" : "--size");
@@ -156,6 +162,8 @@ int run_orbit_render(const OrbitOptions& orbit) {
                    " texels per face, flow " + orbit.flow + ", surface " +
                    (parameters.surface ? parameters.surface->source : std::string("none")) + ")";
   }
+  const io::PlanetTextures textures = planet_maps.get();
+  for (const auto& w : textures.warnings) std::cerr << "warning: " << w << "\n";
   progress.update(1, "orbit view");
   render::RenderResult result = render::render_orbit(camera, unix_seconds, textures.images, *cover, settings);
   progress.update(2, "writing files");
