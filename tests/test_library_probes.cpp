@@ -600,6 +600,10 @@ TEST_CASE("weather_systems.glsl on the GPU agrees with the CPU", "[probe]") {
     cases.push_back({arguments(PROBE_CELLS, vec4(r(-1.0f, 1.0f), seed, k % 2 == 0 ? 0.0f : 0.4f, 0),
                                vec4(k % 3 == 0 ? deck_point : q, 0)),
                      cells});
+    // The borders: the distances as cell_border's (of a cell of 80 a radius: half the rounding);
+    // the walls' numbers are hashes of integers, exact, unless the nearest two lines tie within
+    // the rounding (1e-4 of the points). The wall's strength: a smoothstep of slope 7.5 times a line.
+    cases.push_back({arguments(PROBE_CELL_BORDERS, vec4(r(0.0f, 1.0f), seed, 0, 0), vec4(q, 0)), cells});
     cases.push_back(
         {arguments(PROBE_CELL_WEIGHTS, vec4(r(0.0f, 1.0f), r(0.0f, 1.0f), r(1e-4f, 0.02f), 0)), kArithmetic * 16});
     // Pockets: cell_clouds at 12 cells a radius (within the cell clouds' tolerance above) through

@@ -564,29 +564,77 @@ TEST_CASE("closed cells hold the cloud in one cell each with the clear a network
   CHECK(closed.cloud_parts == Approx(closed.cells).epsilon(0.05));
   CHECK(closed.largest_clear > 0.95);
   CHECK(closed.cloudy > 0.7);
-  const Topology open = topology([&](vec3 p) { return glsl::open_cells(p, seed, glsl::NEIGHBOUR_CELLS); },
+  const Topology open = topology([&](vec3 p) { return glsl::open_cells(p, seed, 0.0f, glsl::NEIGHBOUR_CELLS); },
                                  glsl::OPEN_CELLS, seed, glsl::OPEN_CELLS_LAYER);
   INFO("open: cloudy " << open.cloudy << ", " << open.clear_parts << " clear centres in " << open.cells
                        << " cells, largest cloud part " << open.largest_cloud);
-  CHECK(open.clear_parts == Approx(open.cells).epsilon(0.05));
+  // Open cells: the walls one network around clear centres, some of the walls broken. A wall is
+  // cloud (above 0.5) along its middle where its strength is above 0.5, which a share u* of the
+  // walls misses (open_cell_wall(u*) = 0.5, found here by bisection: about 0.18). A tessellation
+  // with three walls at each vertex has six walls a cell on average (Euler's formula), three
+  // walls per cell, so 3 u* cells of broken walls, each joining two centres at most: between
+  // (1 - 3 u*) of the cells (every broken wall joining two parts; less the count's binomial
+  // spread, sqrt(3 u* cells) = 7 at 100 cells, twice) and nine tenths of them.
+  float low = 0.0f, high = 1.0f;
+  for (int k = 0; k < 40; ++k) (glsl::open_cell_wall(0.5f * (low + high)) < 0.5f ? low : high) = 0.5f * (low + high);
+  const double broken = 3.0 * low * open.cells;
+  INFO("u* " << low << ": " << broken << " broken walls expected");
+  CHECK(low == Approx(0.18).margin(0.02));
+  CHECK(open.clear_parts >= open.cells - broken - 2.0 * std::sqrt(broken));
+  CHECK(open.clear_parts <= 0.9 * open.cells);
   CHECK(open.largest_cloud > 0.95);
   CHECK(open.cloudy < 0.6);
+}
+
+TEST_CASE("each wall between two open cells has one strength, the same from either side of it", "[fast][systems]") {
+  // Pairs of points a thousandth of a cell apart across a wall (in different Voronoi cells, both
+  // within 0.01 of a cell of their nearest border and away from a vertex): the same number.
+  const std::uint32_t seed = 31u;
+  const glsl::uvec3 key = glsl::noise_key(seed, glsl::OPEN_CELLS_LAYER);
+  const auto points = patch(vec3(std::cos(0.5f), 0.0f, std::sin(0.5f)), 0.05f, 400);
+  const float step = 1.0e-3f / glsl::OPEN_CELLS;
+  int pairs = 0, differ = 0;
+  std::vector<float> numbers;
+  for (size_t k = 0; k + 1 < points.size(); ++k) {
+    const vec3 p = points[k], q = glm::normalize(p + glm::normalize(points[k + 1] - p) * step);
+    const glsl::vec3 a = glsl::cell_borders(p * glsl::OPEN_CELLS, p, key, glsl::NEIGHBOUR_CELLS);
+    const glsl::vec3 b = glsl::cell_borders(q * glsl::OPEN_CELLS, q, key, glsl::NEIGHBOUR_CELLS);
+    const glm::ivec3 cell_a =
+        glsl::nearest_cell(p * glsl::OPEN_CELLS, glsl::worley_f1(p * glsl::OPEN_CELLS, glsl::ivec3(0), key));
+    const glm::ivec3 cell_b =
+        glsl::nearest_cell(q * glsl::OPEN_CELLS, glsl::worley_f1(q * glsl::OPEN_CELLS, glsl::ivec3(0), key));
+    if (cell_a == cell_b || a.x > 0.01f || b.x > 0.01f || a.y < 0.1f || b.y < 0.1f) continue;
+    ++pairs;
+    if (a.z != b.z) ++differ;
+    numbers.push_back(a.z);
+  }
+  INFO(pairs << " pairs across walls");
+  REQUIRE(pairs > 20);
+  CHECK(differ == 0);
+  // The numbers are spread over [0, 1) rather than one value (a wall each).
+  CHECK(*std::max_element(numbers.begin(), numbers.end()) - *std::min_element(numbers.begin(), numbers.end()) > 0.5f);
+  // The strength: none below u = 0.05, 0.55 + 0.9 u above 0.25.
+  CHECK(glsl::open_cell_wall(0.04f) == 0.0f);
+  CHECK(glsl::open_cell_wall(0.5f) == Approx(1.0f).margin(1e-6));
+  CHECK(glsl::open_cell_wall(1.0f) == Approx(1.45f).margin(1e-6));
 }
 
 TEST_CASE("the cell patterns' means over the sphere are the constants the modulation subtracts", "[fast][systems]") {
   std::mt19937 rng(5);
   std::normal_distribution<float> g;
   const int n = 100000;
-  double closed = 0, open = 0;
+  double closed = 0, open = 0, clumped = 0;
   for (int k = 0; k < n; ++k) {
     const vec3 p = glm::normalize(vec3(g(rng), g(rng), g(rng)));
     closed += glsl::closed_cells(p, 9u, glsl::NEIGHBOUR_CELLS);
-    open += glsl::open_cells(p, 9u, glsl::NEIGHBOUR_CELLS);
+    open += glsl::open_cells(p, 9u, 0.0f, glsl::NEIGHBOUR_CELLS);
+    clumped += glsl::open_cells(p, 9u, 1.0f, glsl::NEIGHBOUR_CELLS);
   }
-  // The sample's standard error: the patterns' spread (below 0.5) over sqrt(n), 0.0016; the cells'
+  // The sample's standard error: the patterns' spread (below 0.6) over sqrt(n), 0.0019; the cells'
   // own number (a million on the sphere) adds less.
   CHECK(closed / n == Approx(glsl::CLOSED_CELLS_MEAN).margin(0.005));
   CHECK(open / n == Approx(glsl::OPEN_CELLS_MEAN).margin(0.005));
+  CHECK(clumped / n == Approx(glsl::OPEN_CELLS_CLUMPED_MEAN).margin(0.005));
 }
 
 TEST_CASE("cells are drawn only where the cover resolves them, from 2.5 texels a cell", "[fast][systems]") {
@@ -805,7 +853,7 @@ TEST_CASE("the cells' searches and the pockets' octaves left out give the patter
   const vec3 q = glm::normalize(vec3(0.3f, -0.5f, 0.8f));
   CHECK(glsl::cell_border(q * glsl::CLOSED_CELLS, q, glsl::noise_key(1u, glsl::CLOSED_CELLS_LAYER), 0) == 1.0e30f);
   CHECK(glsl::closed_cells(q, 1u, 0) == 1.0f);
-  CHECK(glsl::open_cells(q, 1u, 0) == 0.0f);
+  CHECK(glsl::open_cells(q, 1u, 1.0f, 0) == 0.0f);
   CHECK(glsl::open_cell_pockets(q, 1u, 0) == 0.0f);
   CHECK(glsl::with_pockets(vec2(0.0f, 0.4f), 0.0f) == vec2(0.0f, 0.4f));
   // And the modulations, which choose the count themselves, are zero where their weight is.

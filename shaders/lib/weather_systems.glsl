@@ -342,10 +342,12 @@ const uint STREET_PEARLS_LAYER = 23u;  // the clouds along them
 // The patterns' means over the sphere (tests/test_weather_systems.cpp measures them), which the
 // modulation subtracts so that the cells move cloud within a region rather than add it.
 const float CLOSED_CELLS_MEAN = 0.77f;
-const float OPEN_CELLS_MEAN = 0.46f;
+const float OPEN_CELLS_MEAN = 0.47f;          // without the walls' clumps (open_cells' clumps 0)
+const float OPEN_CELLS_CLUMPED_MEAN = 0.393f;  // with them (clumps 1)
 // The patterns' amplitudes in the density's factor 1 + m (cover_density.glsl's with_cells): the
 // closed cells' rims at 0.77 of the density against 1.07 inside (thinner, greyer cloud, clear
-// only where the deck is thin), the open cells' walls at 1.135 against their centres' 0.885;
+// only where the deck is thin), the open cells' walls of mean strength at 1.13 (from 1 for the
+// weakest to 1.26 where rings meet) against their centres' 0.88;
 // both steps (0.30 and 0.25 of the density) more than the noise's own spread of 16 %, so that the
 // pattern prints where the cells are.
 const float CLOSED_CELLS_CONTRAST = 0.3f;
@@ -358,17 +360,20 @@ vec3 neighbour_feature(ivec3 cell, int k, uvec3 key) {
   return vec3(offset) + wrapped_feature_offset(cell + offset, key);
 }
 
-// The distance (cells) from `scaled` to the border of its Voronoi cell in the lattice `key`, within
-// the surface whose unit normal is `normal`: to the nearest of the lines where the bisector planes
-// between the cell's feature point a and its neighbours' b cut the surface's tangent plane. The
-// plane's distance (|p - b|^2 - |p - a|^2) / (2 |b - a|) is divided by the sine of its normal's
-// angle with the surface normal (at least 0.2), so that cells which the sphere cuts obliquely get
-// rims as wide as the others' (F2 - F1 narrows them towards nothing). Exact where the cell's point
-// and its Voronoi neighbours lie in the 27 cells around p (nearly everywhere).
+// The distances (cells) from `scaled` to the border of its Voronoi cell in the lattice `key`, within
+// the surface whose unit normal is `normal`: to the nearest (x) and the second nearest (y) of the
+// lines where the bisector planes between the cell's feature point a and its neighbours' b cut the
+// surface's tangent plane (both are small near a vertex, where three cells meet), and in z a
+// number in [0, 1) of the nearest line's pair of cells, the same from either side of it (one for
+// each wall between two cells). The plane's distance (|p - b|^2 - |p - a|^2) / (2 |b - a|) is
+// divided by the sine of its normal's angle with the surface normal (at least 0.2), so that cells
+// which the sphere cuts obliquely get rims as wide as the others' (F2 - F1 narrows them towards
+// nothing). Exact where the cell's point and its Voronoi neighbours lie in the 27 cells around p
+// (nearly everywhere).
 // `searched`: the neighbour cells searched, NEIGHBOUR_CELLS; 0 where the caller needs no border
 // (it gets 1e30, far from any), which lets a group of SIMD lanes none of which needs it skip the
 // search (prelude.glsl, SKIPPABLE).
-float cell_border(vec3 scaled, vec3 normal, uvec3 key, int searched) {
+vec3 cell_borders(vec3 scaled, vec3 normal, uvec3 key, int searched) {
   vec3 base = floor(scaled);
   ivec3 cell = ivec3(base);
   vec3 f = scaled - base;
@@ -384,7 +389,8 @@ float cell_border(vec3 scaled, vec3 normal, uvec3 key, int searched) {
       a = to_feature;
     }
   }
-  float border = 1.0e30f;
+  vec2 borders = vec2(1.0e30f);
+  int across = nearest;
   // The neighbours' points hashed again rather than kept from the first loop in an array, which a
   // loop of a count the compiler cannot know would index in memory.
   for (int k = 0; k < searched; ++k) {
@@ -395,9 +401,19 @@ float cell_border(vec3 scaled, vec3 normal, uvec3 key, int searched) {
     float plane = (dot(to_feature, to_feature) - f1) / (2.0f * length_ab);
     float along_normal = dot(ab, normal) / length_ab;
     float sine = sqrt(max(1.0f - along_normal * along_normal, 0.0f));
-    border = min(border, plane / max(sine, 0.2f));
+    float border = plane / max(sine, 0.2f);
+    if (border < borders.x) across = k;
+    borders = vec2(min(borders.x, border), min(borders.y, max(borders.x, border)));
   }
-  return border;
+  // The pair's sum and the absolute difference of its cells name it whichever side p is on.
+  ivec3 one = cell + neighbour_offset(nearest), other = cell + neighbour_offset(across);
+  uvec3 pair = pcg3d(uvec3(one + other) ^ (uvec3(abs(one - other)) << 16u) ^ key);
+  return vec3(borders, float(pair.x >> 8u) * (1.0f / 16777216.0f));
+}
+
+// The distance to the nearest border alone (cell_borders' x).
+float cell_border(vec3 scaled, vec3 normal, uvec3 key, int searched) {
+  return cell_borders(scaled, normal, key, searched).x;
 }
 
 // Closed cells at p: 1 inside the cells, 0 on their clear rims (within 0.03 of a cell of the border);
@@ -406,10 +422,32 @@ float closed_cells(vec3 p, uint seed, int searched) {
   return smoothstep(0.03f, 0.08f, cell_border(p * CLOSED_CELLS, p, noise_key(seed, CLOSED_CELLS_LAYER), searched));
 }
 
-// Open cells at p: 1 on the cloud walls along the cells' borders (within 0.08 of a cell), 0 in their
-// clear centres; `searched` as cell_border's (0 where 0).
-float open_cells(vec3 p, uint seed, int searched) {
-  return 1.0f - smoothstep(0.08f, 0.16f, cell_border(p * OPEN_CELLS, p, noise_key(seed, OPEN_CELLS_LAYER), searched));
+// Open cells at p: the cloud of the walls along the cells' borders, 0 in their clear centres (at
+// most 1.5); `searched` as cell_borders' (0 where 0). Satellite images of open cells show rings of
+// cumulus of varying brightness, thickest where the rings meet and broken in places (Agee et al.
+// 1973; Wood and Hartmann 2006), not a net of one width and brightness:
+// - each wall between two cells has a strength of its own, open_cell_wall(u) for its number u
+//   (cell_borders' z, uniform in [0, 1)): none for one wall in twenty, 0.55 to 1.45 for most;
+//   its half-width is 0.07 + 0.03 of that strength (cells), and its cloud that strength;
+// - where three cells meet the walls' cloud gathers: within about a fifth of a cell of the
+//   vertex up to 0.4 more cloud and 0.05 more half-width;
+// - along the walls the cloud clumps: Perlin noise of OPEN_CELL_CLUMPS features a cell, of
+//   unit-variance value z, scales the walls' strength by 1 + 0.8 z `clumps` (0 where the cover
+//   does not resolve the clumps, which would alias into speckle; open_cell_modulation's weight).
+const float OPEN_CELL_CLUMPS = 6.0f;
+const uint OPEN_CELL_CLUMPS_LAYER = 28u;
+float open_cell_wall(float u) { return smoothstep(0.05f, 0.25f, u) * (0.55f + 0.9f * u); }
+float open_cells(vec3 p, uint seed, float clumps, int searched) {
+  vec3 borders = cell_borders(p * OPEN_CELLS, p, noise_key(seed, OPEN_CELLS_LAYER), searched);
+  float clump = 0.0f;
+  for (int k = 0; k < (clumps > 0.0f ? min(searched, 1) : 0); ++k)
+    clump = perlin_noise(p * (OPEN_CELLS * OPEN_CELL_CLUMPS), ivec3(0), noise_key(seed, OPEN_CELL_CLUMPS_LAYER)) /
+            PERLIN_OCTAVE_SIGMA;
+  float vertex = 1.0f - smoothstep(0.05f, 0.25f, borders.y);
+  float wall = open_cell_wall(borders.z);
+  float half_width = 0.07f + 0.03f * wall + 0.05f * vertex;
+  float cloud = clamp(wall * (1.0f + 0.8f * clumps * clump) + 0.4f * vertex, 0.0f, 1.5f);
+  return cloud * (1.0f - smoothstep(half_width - 0.04f, half_width + 0.04f, borders.x));
 }
 
 // How far a cover of texels `texel_arc` radians across resolves cells of `frequency` per radius:
@@ -623,8 +661,11 @@ float closed_cell_modulation(vec3 p, float weight, uint seed, float texel_arc) {
 }
 float open_cell_modulation(vec3 p, float weight, uint seed, float texel_arc) {
   float open = weight * cells_resolved(OPEN_CELLS, texel_arc);
-  float cells = open_cells(p, seed, SKIPPABLE(open > 0.0f, NEIGHBOUR_CELLS));
-  return open > 0.0f ? open * OPEN_CELLS_CONTRAST * (cells - OPEN_CELLS_MEAN) : 0.0f;
+  float clumps = cells_resolved(OPEN_CELLS * OPEN_CELL_CLUMPS, texel_arc);
+  float cells = open_cells(p, seed, clumps, SKIPPABLE(open > 0.0f, NEIGHBOUR_CELLS));
+  // The pattern's mean between its two measured ends (within 0.007 of the truth between them).
+  float mean = mix(OPEN_CELLS_MEAN, OPEN_CELLS_CLUMPED_MEAN, clumps);
+  return open > 0.0f ? open * OPEN_CELLS_CONTRAST * (cells - mean) : 0.0f;
 }
 float cell_modulation(vec3 p, vec2 weights, uint seed, float texel_arc) {
   return closed_cell_modulation(p, weights.x, seed, texel_arc) + open_cell_modulation(p, weights.y, seed, texel_arc);

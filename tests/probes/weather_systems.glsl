@@ -8,7 +8,7 @@ const int PROBE_CELL_CLOUDS = 3;      // cell_clouds(p, a, uint(b), 7, 0.2, 0.3,
 const int PROBE_BELTS = 4;            // itcz_systems(p, lat, a, uint(b), c).x, trade_cumulus, cirrus_streaks, its .y
 const int PROBE_WEATHER_DENSITY = 5;  // weather_density, cyclone_systems, belt_systems (seed b + 1): cyclone C, the ITCZ at a, seed b, edge c
 const int PROBE_BELT_FIELDS = 6;      // belt_fields(p, lat, systems (the ITCZ at a), uint(b), c)
-const int PROBE_CELLS = 7;            // closed_cells(p, uint(b)), open_cells, cell_border(p * 160, p, its key),
+const int PROBE_CELLS = 7;            // closed_cells(p, uint(b)), open_cells (clumps 1), cell_border(p * 160, p, its key),
                                       // deck_strength(p, lat, uint(b), a, c)
 const int PROBE_CELL_WEIGHTS = 8;     // cell_weights(a, b), deck_presence(a), cells_resolved(b * 100, c)
 const int PROBE_COLD = 9;             // cold_sector(vec2(a, c)), cold_sectors(p, cyclone C), cell_modulation(p,
@@ -35,6 +35,8 @@ const int PROBE_CONVECTIVE_WARP = 21;        // convective_warp(p, uint(b), 2)
 const int PROBE_LOCAL_EAST = 23;             // local_east(p)
 const int PROBE_FRAYED_DECK = 24;            // frayed_deck(a, b), deck_presence of it, deck_organisation(a)
 const int PROBE_CELLS_HIDDEN = 25;           // cells_hidden(cloud_types(a, x[1]))
+const int PROBE_CELL_BORDERS = 26;           // cell_borders(p * OPEN_CELLS, p, the open cells' key of seed b),
+                                             // open_cell_wall(a) in w
 #ifndef __cplusplus
 #include "../lib/weather_systems.glsl"
 #endif
@@ -63,7 +65,7 @@ vec4 probe_weather_systems(mat4 x) {
   }
   if (f == PROBE_CELL_CLOUDS) return vec4(cell_clouds(p, x[0].y, seed, 7u, 0.2f, 0.3f, 0.3f, x[0].w, NEIGHBOUR_CELLS), 0.0f, 0.0f, 0.0f);
   if (f == PROBE_CELLS)
-    return vec4(closed_cells(p, seed, NEIGHBOUR_CELLS), open_cells(p, seed, NEIGHBOUR_CELLS),
+    return vec4(closed_cells(p, seed, NEIGHBOUR_CELLS), open_cells(p, seed, 1.0f, NEIGHBOUR_CELLS),
                 cell_border(p * CLOSED_CELLS, p, noise_key(seed, CLOSED_CELLS_LAYER), NEIGHBOUR_CELLS),
                 deck_strength(p, latitude, seed, x[0].y, x[0].w));
   if (f == PROBE_CELL_PARTS)
@@ -87,6 +89,9 @@ vec4 probe_weather_systems(mat4 x) {
   if (f == PROBE_CONVECTIVE_WARP) return vec4(convective_warp(p, seed, 2), 0.0f);
   if (f == PROBE_LOCAL_EAST) return vec4(local_east(p), 0.0f);
   if (f == PROBE_CELLS_HIDDEN) return vec4(cells_hidden(cloud_types(x[0].y, x[1])), 0.0f, 0.0f, 0.0f);
+  if (f == PROBE_CELL_BORDERS)
+    return vec4(cell_borders(p * OPEN_CELLS, p, noise_key(seed, OPEN_CELLS_LAYER), NEIGHBOUR_CELLS),
+                open_cell_wall(x[0].y));
   if (f == PROBE_FRAYED_DECK) {
     float deck = frayed_deck(x[0].y, x[0].z);
     return vec4(deck, deck_presence(deck), deck_organisation(x[0].y), 0.0f);
