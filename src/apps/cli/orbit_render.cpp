@@ -132,13 +132,14 @@ int run_orbit_render(const OrbitOptions& orbit) {
 
   // The default day map's water and relief and the generated cover's land/ocean mask (--surface
   // etopo5) all come from ETOPO5: held across both, the file is read once (io::whole_etopo5),
-  // here while the maps are decoded.
-  const std::shared_ptr<const regional::ElevationRaster> etopo5 =
-      orbit.earth_texture.empty() && !cover && orbit.surface == "etopo5" &&
-              std::filesystem::is_regular_file(io::etopo5_default_path, no_file)
-          ? io::whole_etopo5(io::etopo5_default_path, "--surface")
-          : nullptr;
+  // on a thread of its own while the maps are decoded and the context is made.
+  const bool etopo5_needed = orbit.earth_texture.empty() && !cover && orbit.surface == "etopo5" &&
+                             std::filesystem::is_regular_file(io::etopo5_default_path, no_file);
+  std::future<std::shared_ptr<const regional::ElevationRaster>> etopo5_read = std::async(
+      std::launch::async,
+      [etopo5_needed] { return etopo5_needed ? io::whole_etopo5(io::etopo5_default_path, "--surface") : nullptr; });
   gpu::EglContext context;
+  const std::shared_ptr<const regional::ElevationRaster> etopo5 = etopo5_read.get();
   if (orbit.verbose) std::cerr << "renderer: " << context.info().renderer << "\n";
   render::check_render_fits(context, camera.width, camera.height, orbit.size.empty() ? "--size" : "--size");
   core::Progress progress("render", 3, core::Progress::for_stderr(orbit.quiet));
