@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
+#include <vector>
 
 #include "core/half_float.hpp"
 #include "core/mip_levels.hpp"
@@ -13,6 +15,11 @@
 
 namespace nephele::render {
 
+namespace {
+
+// `count` texels of `channels` floats as half floats of `out_channels` into `halves` (resized):
+// the channels the source has are copied, a missing fourth is an alpha of 1 and other missing
+// ones repeat the last (a grey map's value as RGB). Converted on every core.
 void half_texels(const float* texels, std::size_t count, int channels, int out_channels,
                  std::vector<std::uint16_t>& halves) {
   halves.resize(count * std::size_t(out_channels));
@@ -27,8 +34,6 @@ void half_texels(const float* texels, std::size_t count, int channels, int out_c
     }
   });
 }
-
-namespace {
 
 // An equirect texture of `format` with every mip level, from `channels` floats a texel (level 0):
 // `upload(id, level, width, height, texels)` fills a level; the levels are made on the CPU

@@ -4,20 +4,10 @@
 // (core/mip_levels.hpp). Half-float texels are rounded here, to nearest even, rather than by the
 // driver: Mesa's llvmpipe truncates floats it converts to half, a GPU driver may round, and a
 // texture made here holds the same bits on every driver (docs/orbit_view.md, "Cost").
-#include <cstddef>
-#include <cstdint>
-#include <vector>
-
 #include "core/image.hpp"
 #include "render/orbit_renderer.hpp"
 
 namespace nephele::render {
-
-// `count` texels of `channels` floats as half floats of `out_channels` into `halves` (resized):
-// the channels the source has are copied, a missing fourth is an alpha of 1 and other missing
-// ones repeat the last (a grey map's value as RGB). Converted on every core.
-void half_texels(const float* texels, std::size_t count, int channels, int out_channels,
-                 std::vector<std::uint16_t>& halves);
 
 // The day or night map (linear RGB; a grey map's value as RGB; alpha 1) as RGBA16F, repeating in
 // longitude and clamped in latitude, filtered trilinearly: returns the texture's name.
