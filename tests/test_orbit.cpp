@@ -750,6 +750,34 @@ TEST_CASE("orbit: the procedural stand-in has ocean and land, and any equirect m
   CHECK(std::filesystem::exists(out.path / "mars_view.exr"));
 }
 
+TEST_CASE("render --view orbit refuses a map too small or unreadable by its option, writing nothing", "[orbit][cli]") {
+  // The maps are decoded on a thread of their own beside the cover; their headers are checked
+  // before any of that (io::check_planet_maps), so the command stops with exit 2 at once.
+  test::TemporaryDirectory out(true);
+  const auto tiny = out.path / "tiny.png";
+  files::write_image(tiny, core::ImageData{1, 1, 3, {0.5f, 0.5f, 0.5f}}, files::png_encoding(8));
+  const auto broken = out.path / "broken.jpg";
+  std::FILE* f = std::fopen(broken.string().c_str(), "w");
+  REQUIRE(f != nullptr);
+  std::fputs("not a JPEG", f);
+  std::fclose(f);
+  const std::string image = (out.path / "view.png").string();
+  const auto small =
+      test::run("render --view orbit --verbose --earth-texture " + tiny.string() + " --size 16x8 --out " + image);
+  INFO(small.output);
+  CHECK(small.exit_code == 2);
+  CHECK_THAT(small.output, Catch::Contains("--earth-texture") && Catch::Contains("too small"));
+  const auto unreadable =
+      test::run("render --view orbit --verbose --night-texture " + broken.string() + " --size 16x8 --out " + image);
+  INFO(unreadable.output);
+  CHECK(unreadable.exit_code == 2);
+  CHECK_THAT(unreadable.output, Catch::Contains("--night-texture") && Catch::Contains("could not be read"));
+  // Neither began the work: --verbose names the renderer once the context is made, and it was not.
+  CHECK(small.output.find("renderer:") == std::string::npos);
+  CHECK(unreadable.output.find("renderer:") == std::string::npos);
+  CHECK_FALSE(std::filesystem::exists(image));
+}
+
 TEST_CASE("orbit: over an all-water planet the sun glints where the sea mirrors the sun into the camera",
           "[orbit][glint]") {
   test::test_context();
