@@ -6,8 +6,8 @@
 
 namespace nephele::core {
 
-// The binary16 nearest `value`, ties to even (as the F16C instruction and Mesa's conversion round);
-// overflow gives infinity, NaN stays NaN.
+// The binary16 nearest `value`, ties to even (as the F16C instruction rounds by default; Mesa's
+// llvmpipe truncates instead when it converts GL_FLOAT data); overflow gives infinity, NaN stays NaN.
 std::uint16_t half_from_float(float value);
 // The float a finite binary16 holds (exact: every binary16 is a float).
 float float_from_half(std::uint16_t h);

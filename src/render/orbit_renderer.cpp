@@ -202,16 +202,18 @@ struct OrbitRenderer::Gl {
 OrbitRenderer::OrbitRenderer(const PlanetImages& planet, const CoverCube& cover, const OrbitSettings& settings)
     : gl_(std::make_unique<Gl>()), settings_(settings) {
   check_settings(settings);
-  if (planet.day.width < 2 || planet.day.height < 1 || planet.day.channels < 1 ||
-      planet.day.pixels.size() != static_cast<size_t>(planet.day.width) * planet.day.height * planet.day.channels)
+  // An image with at least `channels` channels and a value for each of them at every pixel.
+  auto usable = [](const core::ImageData& image, int channels) {
+    return image.width >= 1 && image.height >= 1 && image.channels >= channels &&
+           image.pixels.size() == static_cast<size_t>(image.width) * image.height * image.channels;
+  };
+  if (!usable(planet.day, 1) || planet.day.width < 2)
     throw std::invalid_argument("orbit renderer: the day image is empty or malformed");
   check_cover(cover);
   // A missing or malformed night, water or relief image stands for none (no lights, no water,
   // flat ground), by a one-texel stand-in; the images themselves are not copied.
-  auto or_none = [](const core::ImageData& image, int channels_needed, const core::ImageData& none) -> const auto& {
-    const bool usable = image.width >= 1 && image.height >= 1 && image.channels >= channels_needed &&
-                        image.pixels.size() == static_cast<size_t>(image.width) * image.height * image.channels;
-    return usable ? image : none;
+  auto or_none = [&](const core::ImageData& image, int channels, const core::ImageData& none) -> const auto& {
+    return usable(image, channels) ? image : none;
   };
   static const core::ImageData no_lights{1, 1, 3, {0.0f, 0.0f, 0.0f}}, no_water{1, 1, 1, {0.0f}},
       flat{1, 1, 2, {0.0f, 0.0f}};
