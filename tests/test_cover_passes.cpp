@@ -174,30 +174,39 @@ TEST_CASE("density and coverage passes agree with the CPU twin", "[pass]") {
     const float cells = systems.cells * cell_modulation(origin, cell_weights(deck, cold_sectors(origin, systems)),
                                                         systems.seed, 2.0f / float(p.size));
     REQUIRE(cells == 0.0f);
+    // The trades' shallow regime at the texel's own latitude, and the organised patterns' moats.
+    const CloudTypes types = cloud_types(cyclones, belts);
+    const float here = portable_asin(clamp(vec3(identity[k]).z, -1.0f, 1.0f));
+    const float shallow = shallow_trades_weight(types, here, deck_organisation(deck), systems.shallow_trades);
+    const float organised = organised_trades(origin, latitude, systems.seed, systems.trade_cumulus);
     const float expected =
-        with_cells(with_systems(shaped, systems_value), cells * (1.0f - cells_hidden(cloud_types(cyclones, belts))));
+        with_moats(with_cells(with_systems(shaped, systems_value), cells * (1.0f - cells_hidden(types))),
+                   trade_moat(shallow, organised, types.cumulus));
     // The systems' field in [0, 1] takes the noise's error through system_edge (1 / 0.148) and a
     // band's edge (offset 0.6 half widths per unit of edge, smoothstep slope 1.5 / 0.4 half widths)
     // at most 15 kDensity, taken as 20, plus its transcendental functions' rounding (atan, log, exp: kSystems); the
     // factor 1 + 0.5 w scales the shaped density's error.
     const double systems_error = 20 * kDensity + kSystems;
-    REQUIRE(density[k] == Approx(expected).epsilon(0).margin((kDensity * factor + 4 * kUlp * shaped) * 1.5 +
-                                                             0.5 * shaped * systems_error));
-    // The cover contrast of the trades' shallow cumulus at the texel's own latitude. Its weight takes
-    // the systems' error (the cumulus's divided by its weight 0.6, which organised_cloud leaves out,
-    // so the comma's and the clusters'), the deck's organisation (its Perlin noise's rounding, about
-    // 1e-6, through the smoothstep's slope 1.5 / DECK_ORGANISED: within kSystems; and the fray's, a
-    // strength below 1 times DECK_FRAY times the edge's error kDensity / 0.148, through the same
-    // slope) and the
-    // latitude's (kPortableAsin through the belt's slope 1.5 / 0.13); the contrast 0.92 of it.
-    const CloudTypes types = cloud_types(cyclones, belts);
-    const float here = portable_asin(clamp(vec3(identity[k]).z, -1.0f, 1.0f));
-    const float expected_contrast =
-        cover_contrast(shallow_trades_weight(types, here, deck_organisation(deck), systems.shallow_trades));
+    // The trades' shallow regime's weight takes the systems' error (the comma's and the clusters';
+    // the cumulus's divided by its weight 0.6 and through its organisation's square, slope 2 at
+    // most), the deck's organisation (its Perlin noise's rounding, about 1e-6, through the
+    // smoothstep's slope 1.5 / DECK_ORGANISED: within kSystems; and the fray's, a strength below 1
+    // times DECK_FRAY times the edge's error kDensity / 0.148, through the same slope) and the
+    // latitude's (kPortableAsin through the belt's slope 1.5 / 0.13). The moat's weight takes it and
+    // the cumulus's error through a smoothstep of slope 1.5 / 0.15 = 10, and the organised
+    // patterns' share (two Perlin values through smoothsteps: kSystems); the factor 1 - 0.12 m
+    // scales it by 0.12 of the density (at most 1.5 shaped).
+    const double cumulus_error = systems_error / 0.6;
     const double fray_error = 1.5 / DECK_ORGANISED * DECK_FRAY * kDensity / 0.148;
-    REQUIRE(
-        contrast[k] ==
-        Approx(expected_contrast).epsilon(0).margin(systems_error + fray_error + kSystems + 12 * test::kPortableAsin));
+    const double shallow_error = systems_error + 2 * cumulus_error + fray_error + kSystems + 12 * test::kPortableAsin;
+    const double moat_error = shallow_error + 10 * cumulus_error + kSystems;
+    REQUIRE(density[k] == Approx(expected).epsilon(0).margin((kDensity * factor + 4 * kUlp * shaped) * 1.5 +
+                                                             0.5 * shaped * systems_error +
+                                                             MOAT_CLEARING * 1.5 * shaped * moat_error));
+    // The cover contrast of the trades' shallow cumulus at the texel's own latitude: 0.92 of the
+    // shallow weight's error at most, and the organised patterns' share's (kSystems) times 0.08 x 0.7.
+    const float expected_contrast = cover_contrast(shallow, organised);
+    REQUIRE(contrast[k] == Approx(expected_contrast).epsilon(0).margin(shallow_error + kSystems));
     // The remap's exp: its argument's error over the softness (kCoverRemap of the subtraction and
     // the contrast's product, divided by s) and the exp's own rounding, at the GPU's contrast.
     REQUIRE(covered[k] ==
@@ -309,7 +318,9 @@ TEST_CASE("the trades' unorganised cloud keeps its place and turns dim and the m
   // densities, and so the calibration and which texels are cloudy, as they are, and scales each
   // cloudy texel's excess over the threshold by the contrast: with the remap's cover
   // c = 1 - (1 - e) exp(-x / s), the excess x = -s ln((1 - c) / (1 - e)) shrinks by that factor.
-  // Beyond 33.2 degrees the weight is 0: the same covers, to the bit.
+  // Beyond 33.2 degrees the weight is 0: the same covers, to the bit. (Without the trade cumulus
+  // nothing organises the shallow cloud into clumps and moats: trade_moat and the moats' dimming
+  // are 0.)
   auto run = [](float shallow) {
     cover::CoverParameters p = test::steady_cover();
     p.size = 64;

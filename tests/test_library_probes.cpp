@@ -412,8 +412,8 @@ TEST_CASE("cover_density.glsl on the GPU agrees with the CPU", "[probe]") {
                                vec4(0.0f), vec4(0.0f), vec4(0.0f, r(0.02f, 0.3f), 0.0f, 0.0f)),
                      kTranscendental});
     cases.push_back({arguments(PROBE_SYSTEM_EDGE, vec4(r(0.0f, 1.0f), 0, 0, 0)), kArithmetic});
-    cases.push_back(
-        {arguments(PROBE_WITH_SYSTEMS, vec4(r(0.0f, 1.5f), r(0.0f, 1.0f), r(-0.5f, 0.5f), 0)), kArithmetic});
+    cases.push_back({arguments(PROBE_WITH_SYSTEMS, vec4(r(0.0f, 1.5f), r(0.0f, 1.0f), r(-0.5f, 0.5f), r(-0.5f, 1.2f))),
+                     kArithmetic});
     // A sqrt and a division of values near 1 on top of the linear blend.
     cases.push_back(
         {arguments(PROBE_NOISE_BLEND, vec4(r(0.0f, 1.0f), r(0.0f, 1.0f), r(0.0f, 1.0f), 0)), kTranscendental});
@@ -425,7 +425,7 @@ TEST_CASE("cover_density.glsl on the GPU agrees with the CPU", "[probe]") {
     // The cover contrast (a clamp, a product and a sum) and the contrasted cover: as the cover with a
     // softness, with one more product in the exp's argument.
     cases.push_back({arguments(PROBE_CONTRAST, vec4(r(0.0f, 1.0f), r(0.0f, 0.5f), r(0.5f, 1.0f), 0), vec4(0.0f),
-                               vec4(0.0f), vec4(0.0f, r(0.02f, 0.3f), r(0.0f, 1.0f), 0.0f)),
+                               vec4(0.0f), vec4(0.0f, r(0.02f, 0.3f), r(0.0f, 1.0f), r(0.0f, 1.0f))),
                      kTranscendental});
   }
   compare("cover_density", probe_cover_density, cases);
@@ -458,10 +458,13 @@ TEST_CASE("cloud_properties.glsl on the GPU agrees with the CPU", "[probe]") {
         {arguments(PROBE_CLOUD_TOP, vec4(r(0.0f, 16.0f), r(0.0f, 100.0f), 0, 0), types, place), 4 * kTranscendental});
     cases.push_back(
         {arguments(PROBE_CLOUD_TOP_FROM_COVER, vec4(r(0.0f, 1.0f), 0, 0, 0), vec4(0.0f), place), 4 * kTranscendental});
-    // The trades' regime: maxima, a smoothstep of |latitude| (a few operations on values below 2)
-    // and two products of values in [0, 1]: kArithmetic.
+    // The trades' regime: maxima, a square, a smoothstep of |latitude| (a few operations on values
+    // below 2) and two products of values in [0, 1]: kArithmetic; the moat a smoothstep of slope
+    // 1.5 / 0.15 = 10 times two such values.
     cases.push_back(
-        {arguments(PROBE_SHALLOW_TRADES, vec4(r(0.0f, 1.0f), r(0.0f, 1.0f), 0, 0), types, place), kArithmetic});
+        {arguments(PROBE_SHALLOW_TRADES, vec4(r(0.0f, 1.0f), r(0.0f, 1.0f), r(0.0f, 0.3f), 0), types, place),
+         10 * kArithmetic});
+    cases.push_back({arguments(PROBE_CUMULUS_ORGANISATION, vec4(r(-0.2f, 1.2f), 0, 0, 0)), kArithmetic});
   }
   // An exp and a log of the transmittance (relative 3 ulp each) give the depth to about 8 ulp of
   // its value plus the log's absolute error near 1.
@@ -604,6 +607,21 @@ TEST_CASE("weather_systems.glsl on the GPU agrees with the CPU", "[probe]") {
     // the walls' numbers are hashes of integers, exact, unless the nearest two lines tie within
     // the rounding (1e-4 of the points). The wall's strength: a smoothstep of slope 7.5 times a line.
     cases.push_back({arguments(PROBE_CELL_BORDERS, vec4(r(0.0f, 1.0f), seed, 0, 0), vec4(q, 0)), cells});
+    // The trades' patterns: two Perlin values at 5 cells a radius (their rounding below kFbm)
+    // through smoothsteps of slope 1.5 / 0.12 = 12.5, and products of the two; the clumps as the
+    // cell clouds (gravel at 60 cells a radius, the others at fewer), the warped point's Perlin
+    // values moving it by their rounding times 0.04 at most.
+    cases.push_back({arguments(PROBE_TRADE_REGIMES, vec4(0, seed, 0, 0), vec4(q, 0)), 2 * 12.5f * kFbm});
+    // The displacement: as the convective warp's, the amount up to 0.02; the belt a smoothstep of
+    // the latitude (slope 1.5 / 0.08 on the portable arcsine's error, 5.2e-7: tests/tolerances.hpp).
+    cases.push_back({arguments(PROBE_TANGENT_WARP, vec4(r(5.0f, 60.0f), seed, 0, r(0.0f, 0.02f)), vec4(q, 0)),
+                     std::max(4 * kArithmetic, 20 * 5.2e-7f)});
+    // A clump: the convective distances' error (3e-3 of radii, for cells of up to 60 a radius)
+    // through convective_cloud's slope of 10.
+    cases.push_back({arguments(PROBE_TRADE_CLUMP, vec4(r(5.0f, 60.0f), seed, 0, r(0.0f, 1.0f)), vec4(q, 0), vec4(0.0f),
+                               vec4(r(-1.0f, 1.0f), 0, 0, 0)),
+                     3.0e-2f});
+    cases.push_back({arguments(PROBE_TRADE_CLUMPS, vec4(r(-1.0f, 1.0f), seed, 0, r(0.0f, 1.0f)), vec4(q, 0)), 3.0e-2f});
     cases.push_back(
         {arguments(PROBE_CELL_WEIGHTS, vec4(r(0.0f, 1.0f), r(0.0f, 1.0f), r(1e-4f, 0.02f), 0)), kArithmetic * 16});
     // Pockets: cell_clouds at 12 cells a radius (within the cell clouds' tolerance above) through

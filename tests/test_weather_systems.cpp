@@ -380,30 +380,176 @@ TEST_CASE("convective systems' radii cover equal areas in each logarithmic inter
   CHECK(glsl::equal_area_radius(1.0f, r_min, r_max) == Approx(r_max).epsilon(1e-5));
 }
 
-TEST_CASE("trade cumulus are many small separate clouds in the trades and none at the equator or the poles",
+namespace {
+
+// The unit direction at geocentric latitude and longitude (radians).
+vec3 direction_at(double latitude, double longitude) {
+  return vec3(std::cos(latitude) * std::cos(longitude), std::cos(latitude) * std::sin(longitude), std::sin(latitude));
+}
+
+// The runs of a pattern above 1/2 along a great or small circle sampled at n points: the cloudy
+// runs' and the clear gaps' lengths in km (the runs cut by the circle's start left out).
+struct Runs {
+  std::vector<double> clouds, gaps;
+};
+template <typename Pattern, typename Along>
+void add_runs(Runs& runs, Pattern pattern, Along along, double circle_km, int n) {
+  bool previous = pattern(along(0.0)) > 0.5f, first = true;
+  int run = 1;
+  for (int k = 1; k < n; ++k) {
+    const bool cloudy = pattern(along(2.0 * M_PI * k / n)) > 0.5f;
+    if (cloudy == previous) {
+      ++run;
+      continue;
+    }
+    if (!first) (previous ? runs.clouds : runs.gaps).push_back(run * circle_km / n);
+    first = false;
+    previous = cloudy;
+    run = 1;
+  }
+}
+double median_of(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  return v.empty() ? 0.0 : v[v.size() / 2];
+}
+double mean_of(const std::vector<double>& v) {
+  double sum = 0;
+  for (double x : v) sum += x;
+  return v.empty() ? 0.0 : sum / double(v.size());
+}
+
+}  // namespace
+
+TEST_CASE("gravel is many small separate clumps, and the trades' cumulus none at the equator or the poles",
           "[fast][systems]") {
   const std::uint32_t seed = 12345u;
-  // Along 18 degrees north: count the separate clouds (runs above 0.5) and their lengths.
-  const float lat = 18.0f * float(M_PI) / 180.0f;
-  const int n = 200000;
-  int clouds = 0, run = 0, longest = 0;
-  bool previous = false;
-  for (int k = 0; k < n; ++k) {
-    const float lon = 2.0f * float(M_PI) * k / n;
-    const vec3 p(std::cos(lat) * std::cos(lon), std::cos(lat) * std::sin(lon), std::sin(lat));
-    const bool cloudy = glsl::trade_cumulus(p, lat, seed, 0.5f) > 0.5f;
-    if (cloudy && !previous) ++clouds, run = 0;
-    if (cloudy) longest = std::max(longest, ++run);
-    previous = cloudy;
-  }
-  const double circle_km = 2 * M_PI * earth_radius_km * std::cos(lat);
-  INFO("clouds " << clouds << ", longest " << longest * circle_km / n << " km");
-  CHECK(clouds > 60);                      // many: one every few hundred km
-  CHECK(longest * circle_km / n < 130.0);  // and small (120 km across at most)
+  // Along 18 degrees north: count the separate clumps (runs above 0.5) and their lengths.
+  const double lat = 18.0 * M_PI / 180.0;
+  Runs runs;
+  add_runs(
+      runs, [&](vec3 p) { return glsl::gravel_clumps(p, seed, 0.5f, glsl::NEIGHBOUR_CELLS); },
+      [&](double lon) { return direction_at(lat, lon); }, 2 * M_PI * earth_radius_km * std::cos(lat), 200000);
+  // A clump's disc is at most 2 x 0.45 cells of 106 km across, 1.15 times that with the edge
+  // here (0.3 x 0.5 of a radius): 110 km; two overlapping ones 220 km.
+  const double longest = *std::max_element(runs.clouds.begin(), runs.clouds.end());
+  INFO("clumps " << runs.clouds.size() << ", median " << median_of(runs.clouds) << " km, longest " << longest << " km");
+  CHECK(runs.clouds.size() > 60);         // many: one every few hundred km
+  CHECK(median_of(runs.clouds) < 110.0);  // and small
+  CHECK(longest < 220.0);
   for (float at : {0.0f, 1.2f}) {
     const vec3 p(std::cos(at), 0.0f, std::sin(at));
     for (float edge : {-1.0f, 1.0f}) CHECK(glsl::trade_cumulus(p, at, seed, edge) == 0.0f);
   }
+}
+
+TEST_CASE("the trades' four patterns each hold about a quarter of the trades and their weights sum to one",
+          "[fast][systems]") {
+  // Each pattern is a quadrant of two independent Perlin fields split at their median 0 (the noise
+  // is symmetric), so each holds a quarter in expectation. The fields' regions are about a fifth of
+  // a radius across, some 300 of them in the trades' belt: a pattern's share of one seed's belt
+  // spreads by about sqrt(0.25 x 0.75 / 300) x 2 (neighbouring points correlate) = 0.05, and the
+  // mean of eight seeds by 0.018; 0.06 is over three of those.
+  double share[4] = {0, 0, 0, 0};
+  int blended = 0, n = 0;
+  for (std::uint32_t seed = 1; seed <= 8; ++seed) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> uniform(0.0, 1.0);
+    for (int k = 0; k < 4000; ++k, ++n) {
+      const vec3 p = direction_at(std::asin(uniform(rng) - 0.5), 2 * M_PI * uniform(rng));  // within 30 degrees
+      const glsl::vec4 w = glsl::trade_regimes(p, seed);
+      for (int i = 0; i < 4; ++i) {
+        REQUIRE(w[i] >= 0.0f);
+        share[i] += w[i];
+      }
+      REQUIRE(w.x + w.y + w.z + w.w == Approx(1.0f).margin(1e-6));
+      const float latitude = std::asin(p.z), belt = glsl::trade_cumulus_belt(latitude);
+      CHECK(glsl::organised_trades(p, latitude, seed, 1.0f) == Approx(belt * (1.0f - w.x)).margin(1e-6));
+      CHECK(glsl::organised_trades(p, latitude, seed, 0.5f) == Approx(0.5f * belt * (1.0f - w.x)).margin(1e-6));
+      CHECK(glsl::organised_trades(p, latitude, seed, 0.0f) == 0.0f);
+      if (std::max(std::max(w.x, w.y), std::max(w.z, w.w)) < 0.9f) ++blended;
+    }
+  }
+  for (int i = 0; i < 4; ++i) {
+    INFO("pattern " << i << " share " << share[i] / n);
+    CHECK(std::abs(share[i] / n - 0.25) < 0.06);
+  }
+  // The patterns hold regions, with blends between them: about a fifth of the points (the fields'
+  // values within the blend of 0 for either field: 2 x 0.06 / (0.27 sqrt(2 pi)) = 0.18 each).
+  INFO("blended " << double(blended) / n);
+  CHECK(double(blended) / n > 0.1);
+  CHECK(double(blended) / n < 0.35);
+}
+
+TEST_CASE("flowers are bouquets well apart and fish are bands far longer than wide", "[fast][systems]") {
+  Runs flowers_east, fish_east, fish_north;
+  for (std::uint32_t seed = 1; seed <= 4; ++seed) {
+    const auto flower = [&](vec3 p) { return glsl::flower_clumps(p, seed, 0.0f, glsl::NEIGHBOUR_CELLS); };
+    const auto fish = [&](vec3 p) { return glsl::fish_clumps(p, seed, 0.0f, glsl::NEIGHBOUR_CELLS); };
+    for (double degrees : {12.0, 18.0, 24.0}) {
+      const double lat = degrees * M_PI / 180.0, circle = 2 * M_PI * earth_radius_km * std::cos(lat);
+      const auto east = [&](double lon) { return direction_at(lat, lon); };
+      add_runs(flowers_east, flower, east, circle, 100000);
+      add_runs(fish_east, fish, east, circle, 100000);
+    }
+    // Along meridians, within 30 degrees of the equator.
+    for (double lon : {0.3, 1.9, 3.5, 5.0}) {
+      const auto north = [&](double t) { return direction_at(t, lon); };
+      add_runs(
+          fish_north, [&](vec3 p) { return std::abs(p.z) < 0.5f ? fish(p) : 0.0f; }, north, 2 * M_PI * earth_radius_km,
+          100000);
+    }
+  }
+  // Flowers: discs of at most 2 x 0.8 x 0.5 cells of 159 km (40 a radius) = 128 km across, cut
+  // smaller where the sphere passes a feature point off its centre, lobed by the warp's 40 km:
+  // a line's chords through them mostly 30-130 km, none over 250; and the sea between them
+  // clear for more than a bouquet's width.
+  const double flower_max = *std::max_element(flowers_east.clouds.begin(), flowers_east.clouds.end());
+  INFO("flowers " << flowers_east.clouds.size() << ": median " << median_of(flowers_east.clouds) << " km, longest "
+                  << flower_max << " km, median gap " << median_of(flowers_east.gaps) << " km");
+  CHECK(flowers_east.clouds.size() > 300);
+  CHECK(median_of(flowers_east.clouds) > 30.0);
+  CHECK(median_of(flowers_east.clouds) < 130.0);
+  CHECK(flower_max < 250.0);
+  CHECK(median_of(flowers_east.gaps) > 130.0);
+  // Fish: the lattice stretched fourfold north-south draws the clumps out east-west; the warp
+  // bends them, so that chords along the wind are at least twice those across it on average, and
+  // the longest reach 600 km and more.
+  const double fish_max = *std::max_element(fish_east.clouds.begin(), fish_east.clouds.end());
+  INFO("fish along the wind: mean " << mean_of(fish_east.clouds) << " km, longest " << fish_max << " km; across: mean "
+                                    << mean_of(fish_north.clouds) << " km");
+  CHECK(fish_east.clouds.size() > 40);
+  CHECK(fish_north.clouds.size() > 40);
+  CHECK(mean_of(fish_east.clouds) > 2.0 * mean_of(fish_north.clouds));
+  CHECK(fish_max > 600.0);
+}
+
+TEST_CASE("the organised patterns' clumps are brighter than sugar and the sea between them darker and clearer",
+          "[fast][systems]") {
+  // The clumps' cover contrast, from the square of their strength: gravel 1 - 0.8 x 0.92, fish
+  // 1 - 0.36 x 0.92, flowers 1, each above sugar's SHALLOW_CONTRAST; between the clumps of a
+  // fully organised region, SHALLOW_CONTRAST x MOAT_CONTRAST.
+  const float degree = float(M_PI) / 180.0f;
+  const glm::vec3 strength = glsl::TRADE_PATTERN_STRENGTH;
+  float previous = glsl::cover_contrast(1.0f, 0.0f);  // sugar
+  for (int k = 0; k < 3; ++k) {
+    glsl::CloudTypes clump{};
+    clump.cumulus = strength[k];
+    const float contrast = glsl::cover_contrast(glsl::shallow_trades_weight(clump, 15.0f * degree, 0.0f, 1.0f), 1.0f);
+    const float s2 = strength[k] * strength[k];
+    CHECK(contrast == Approx(1.0f - (1.0f - s2) * (1.0f - glsl::SHALLOW_CONTRAST * glsl::MOAT_CONTRAST)).margin(1e-6));
+    CHECK(contrast > previous);
+    previous = contrast;
+  }
+  CHECK(glsl::cover_contrast(1.0f, 1.0f) < glsl::cover_contrast(1.0f, 0.0f));
+  // The moat: the shallow regime's weight times the organised share away from the clumps, none
+  // at a clump (its cumulus weight from 0.15) or under sugar; the density thinned by MOAT_CLEARING.
+  CHECK(glsl::trade_moat(1.0f, 1.0f, 0.0f) == 1.0f);
+  CHECK(glsl::trade_moat(0.5f, 1.0f, 0.0f) == 0.5f);
+  CHECK(glsl::trade_moat(1.0f, 1.0f, 0.15f) == 0.0f);
+  CHECK(glsl::trade_moat(1.0f, 0.0f, 0.0f) == 0.0f);
+  CHECK(glsl::trade_moat(1.0f, 1.0f, 0.075f) == Approx(0.5f).margin(1e-6));
+  CHECK(glsl::with_moats(0.5f, 1.0f) == Approx(0.5f * (1.0f - glsl::MOAT_CLEARING)).margin(1e-7));
+  CHECK(glsl::with_moats(0.5f, 0.0f) == 0.5f);
 }
 
 TEST_CASE("trade cumulus fade over the deserts and stay over the ocean, the other belts stay everywhere",
@@ -1043,12 +1189,16 @@ TEST_CASE("pockets of open cells are separate, sharp and larger than 1e4 km2, an
 
 TEST_CASE("the trades' shallow regime shrinks the cloud's excess and leaves the systems and the mid-latitudes",
           "[fast][systems]") {
-  // The contrast: 1 without the regime, SHALLOW_CONTRAST with all of it, linear between; a
-  // cloudy texel's excess over the threshold shrinks by it, a clear texel keeps its density, and
-  // any contrast keeps the order of the cloudy densities.
-  CHECK(glsl::cover_contrast(0.0f) == 1.0f);
-  CHECK(glsl::cover_contrast(1.0f) == Approx(glsl::SHALLOW_CONTRAST).margin(1e-7));
-  CHECK(glsl::cover_contrast(0.5f) == Approx(0.5f * (1.0f + glsl::SHALLOW_CONTRAST)).margin(1e-7));
+  // The contrast: 1 without the regime, SHALLOW_CONTRAST with all of it under sugar and
+  // MOAT_CONTRAST of that between the organised patterns' clumps, linear between; a cloudy texel's
+  // excess over the threshold shrinks by it, a clear texel keeps its density, and any contrast
+  // keeps the order of the cloudy densities.
+  for (float organised : {0.0f, 0.5f, 1.0f}) CHECK(glsl::cover_contrast(0.0f, organised) == 1.0f);
+  CHECK(glsl::cover_contrast(1.0f, 0.0f) == Approx(glsl::SHALLOW_CONTRAST).margin(1e-7));
+  CHECK(glsl::cover_contrast(0.5f, 0.0f) == Approx(0.5f * (1.0f + glsl::SHALLOW_CONTRAST)).margin(1e-7));
+  CHECK(glsl::cover_contrast(1.0f, 1.0f) == Approx(glsl::SHALLOW_CONTRAST * glsl::MOAT_CONTRAST).margin(1e-7));
+  CHECK(glsl::cover_contrast(1.0f, 0.5f) ==
+        Approx(glsl::SHALLOW_CONTRAST * 0.5f * (1.0f + glsl::MOAT_CONTRAST)).margin(1e-7));
   // The contrasted cover: 0 where clear, the plain cover where the contrast is 1 (to the bit), and
   // where it is below 1 the cover of the excess shrunk by it, still cloudy however small the
   // excess, and in the order of the densities.
@@ -1071,8 +1221,9 @@ TEST_CASE("the trades' shallow regime shrinks the cloud's excess and leaves the 
       CHECK(glsl::contrasted_cover(0.01f * k, threshold, 1.0f, softness, c) >
             glsl::contrasted_cover(0.01f * (k - 1), threshold, 1.0f, softness, c));
   // The weight: the whole regime in the tropics where nothing organises the cloud, none beyond 33
-  // degrees, none in a comma cloud, an ITCZ cluster or a deck, and the cumulus clumps and cirrus
-  // are part of it.
+  // degrees, none in a comma cloud, an ITCZ cluster or a deck, and cirrus is part of it; the
+  // trades' cumulus clumps leave it by the square of their strength (gravel's 0.45 keeps 0.80 of
+  // it, the fish's 0.8 0.36, the flowers' 1 none).
   glsl::CloudTypes none{};
   const float degree = float(M_PI) / 180.0f;
   CHECK(glsl::shallow_trades_weight(none, 10.0f * degree, 0.0f, 1.0f) == 1.0f);
@@ -1080,20 +1231,26 @@ TEST_CASE("the trades' shallow regime shrinks the cloud's excess and leaves the 
   CHECK(glsl::shallow_trades_weight(none, 34.0f * degree, 0.0f, 1.0f) == 0.0f);
   CHECK(glsl::shallow_trades_weight(none, 10.0f * degree, 0.0f, 0.0f) == 0.0f);  // --shallow-trades 0
   CHECK(glsl::shallow_trades_weight(none, 10.0f * degree, 1.0f, 1.0f) == 0.0f);  // a deck
-  glsl::CloudTypes front = none, cluster = none, clump = none;
+  glsl::CloudTypes front = none, cluster = none, thin = none;
   front.frontal = 1.0f;
   cluster.deep_convection = 1.0f;
-  clump.cumulus = 1.0f;
-  clump.cirrus = 1.0f;
+  thin.cirrus = 1.0f;
   CHECK(glsl::shallow_trades_weight(front, 20.0f * degree, 0.0f, 1.0f) == 0.0f);
   CHECK(glsl::shallow_trades_weight(cluster, 5.0f * degree, 0.0f, 1.0f) == 0.0f);
-  CHECK(glsl::shallow_trades_weight(clump, 15.0f * degree, 0.0f, 1.0f) == 1.0f);
+  CHECK(glsl::shallow_trades_weight(thin, 15.0f * degree, 0.0f, 1.0f) == 1.0f);
+  const glm::vec3 strength = glsl::TRADE_PATTERN_STRENGTH;
+  const float kept[3] = {1.0f - 0.45f * 0.45f, 1.0f - 0.8f * 0.8f, 0.0f};
+  for (int k = 0; k < 3; ++k) {
+    glsl::CloudTypes clump = thin;
+    clump.cumulus = strength[k];
+    CHECK(glsl::shallow_trades_weight(clump, 15.0f * degree, 0.0f, 1.0f) == Approx(kept[k]).margin(1e-6));
+  }
   // An anvil takes three quarters of the regime: its cover contrast is 0.31, between the
   // cumulus' 0.08 and a system's 1.
-  glsl::CloudTypes anvil = clump;
+  glsl::CloudTypes anvil = thin;
   anvil.anvil = 1.0f;
   CHECK(glsl::shallow_trades_weight(anvil, 5.0f * degree, 0.0f, 1.0f) == Approx(0.75f).margin(1e-6));
-  CHECK(glsl::cover_contrast(glsl::shallow_trades_weight(anvil, 5.0f * degree, 0.0f, 1.0f)) ==
+  CHECK(glsl::cover_contrast(glsl::shallow_trades_weight(anvil, 5.0f * degree, 0.0f, 1.0f), 0.0f) ==
         Approx(0.31f).margin(1e-6));
   // Half a front's weight, half the regime; the belt falls monotonically from 26 to 33 degrees.
   front.frontal = 0.5f;

@@ -68,8 +68,11 @@ uniform float u_young_share;
 uniform uint u_young_systems_seed;  // the younger layer's belts (u_systems.seed: the older's)
 #endif
 
+// The geocentric latitude (radians) of a layer's origin, a unit vector.
+float origin_latitude(vec3 origin) { return portable_asin(clamp(origin.z, -1.0f, 1.0f)); }
+
 vec4 belts_at(vec3 origin, uint seed, float edge) {
-  return belt_fields(origin, portable_asin(clamp(origin.z, -1.0f, 1.0f)), u_systems, seed, edge);
+  return belt_fields(origin, origin_latitude(origin), u_systems, seed, edge);
 }
 
 // The stratocumulus deck's strength at a layer's origin (x; from the bias's deck term `deck_term`
@@ -78,7 +81,7 @@ vec4 belts_at(vec3 origin, uint seed, float edge) {
 // `cold` and texels texel_arc radians across.
 vec2 cells_at(vec3 origin, uint seed, float deck_term, float cold, float texel_arc, float edge) {
   float deck = frayed_deck(
-      deck_strength(origin, portable_asin(clamp(origin.z, -1.0f, 1.0f)), seed, deck_term, u_surface_weight), edge);
+      deck_strength(origin, origin_latitude(origin), seed, deck_term, u_surface_weight), edge);
   vec2 weights = cell_weights(deck, cold);
   float m = 0.0f;
 #if OPEN_CELLS_DRAWN
@@ -170,15 +173,25 @@ void main() {
     CloudTypes types = cloud_types(cyclones, fields);
     float latitude = portable_asin(clamp(direction.z, -1.0f, 1.0f));
     float deck = deck_organisation(cells.x);
+    // In the trades the cloud no system organises is shallow cumulus or thin cirrus: dim between
+    // the systems, and dimmer and sparser between the organised patterns' clumps (each layer's
+    // patterns at its own origin, blended as the belts).
+    float shallow = shallow_trades_weight(types, latitude, deck, u_systems.shallow_trades);
+    float organised = organised_trades(older_origin, origin_latitude(older_origin), u_systems.seed, u_systems.trade_cumulus);
+#if MOVING_LAYERS
+    vec3 young_origin = normalize(young_warped);
+    organised = layer_blend(organised, organised_trades(young_origin, origin_latitude(young_origin), u_young_systems_seed,
+                                             u_systems.trade_cumulus),
+                            u_young_share);
+#endif
     // The cells and streets are the boundary layer's: none show through a front's or a convective
     // system's deep cloud.
-    float density =
+    float density = with_moats(
         with_cells(with_systems(shaped_density(noise, cyclonic, u_cyclone_cloudiness, surface, u_surface_weight), systems),
-                   (cells.y + streets) * (1.0f - cells_hidden(types)));
+                   (cells.y + streets) * (1.0f - cells_hidden(types))),
+        trade_moat(shallow, organised, types.cumulus));
     imageStore(density_field, texel, vec4(density, 0.0f, 0.0f, 0.0f));
-    // In the trades the cloud no system organises is shallow cumulus or thin cirrus: dim between
-    // the systems.
-    float contrast = cover_contrast(shallow_trades_weight(types, latitude, deck, u_systems.shallow_trades));
+    float contrast = cover_contrast(shallow, organised);
     imageStore(cover_contrast_field, texel, vec4(contrast, 0.0f, 0.0f, 0.0f));
     // The cloud's top by its types (the remap clears it where the texel stays clear).
     imageStore(cloud_top_field, texel, vec4(cloud_top_km(types, latitude, cyclonic, deck), 0.0f, 0.0f, 0.0f));

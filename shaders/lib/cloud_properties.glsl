@@ -122,15 +122,26 @@ float cloud_top_km(IN(CloudTypes) types, float latitude, float cyclonic, float d
 // default softness, two spreads 0.62, against 0.20 and 0.29 in the shallow cumulus around them.
 const float ANVIL_ORGANISED = 0.25f;
 
+// The organisation of the trades' cumulus clumps from their type weight c (weather_systems.glsl's
+// trade_cumulus: at a clump's core the pattern's strength, gravel 0.45, fish 0.8, flowers 1): c^2,
+// so that gravel's broken cumulus stay near sugar's dimness (organisation 0.2: cover contrast
+// 1 - 0.8 (1 - SHALLOW_CONTRAST) = 0.26) and the fish's and flowers' stratiform sheets are
+// bright (0.64 and 1: contrast 0.67 and 1), as the patterns' reflectances rise from sugar and
+// gravel to fish and flowers (Bony et al. 2020).
+float cumulus_organisation(float cumulus) {
+  float c = clamp(cumulus, 0.0f, 1.0f);
+  return c * c;
+}
+
 // How far a texel's cloud is organised by a weather system, in [0, 1]: the largest of the comma
-// clouds' and the ITCZ's clusters' weights, a deck's organisation and the anvils' share (ANVIL_ORGANISED
-// of their weight). Not among them: the trade cumulus clusters, clumps of small cumulus a little
-// brighter than the field around them but themselves broken ("gravel" and "flowers", Stevens et
-// al. 2020); the cirrus streaks, thin cloud; and the flow's cyclonic depth, whose vortices in the
-// tropics are no weather system (the tropics' deep convection is the ITCZ's clusters): cloud its
-// ascent lifts there is thin cirrus.
+// clouds' and the ITCZ's clusters' weights, a deck's organisation, the anvils' share (ANVIL_ORGANISED
+// of their weight) and the trades' cumulus clumps' (cumulus_organisation). Not among them: the
+// cirrus streaks, thin cloud; and the flow's cyclonic depth, whose vortices in the tropics are no
+// weather system (the tropics' deep convection is the ITCZ's clusters): cloud its ascent lifts
+// there is thin cirrus.
 float organised_cloud(IN(CloudTypes) types, float deck) {
-  return clamp(max(max(types.frontal, types.deep_convection), max(deck, ANVIL_ORGANISED * types.anvil)), 0.0f, 1.0f);
+  float organised = max(max(types.frontal, types.deep_convection), max(deck, ANVIL_ORGANISED * types.anvil));
+  return clamp(max(organised, cumulus_organisation(types.cumulus)), 0.0f, 1.0f);
 }
 
 // The trades' belt: the tropics to the subtropical highs' poleward edge, full to 26 degrees and
@@ -145,6 +156,15 @@ float trades_belt(float latitude) { return 1.0f - smoothstep(0.45f, 0.58f, abs(l
 // a bright sheet (cover_density.glsl's cover_contrast).
 float shallow_trades_weight(IN(CloudTypes) types, float latitude, float deck, float strength) {
   return clamp(strength, 0.0f, 1.0f) * trades_belt(latitude) * (1.0f - organised_cloud(types, deck));
+}
+
+// The moat of the organised trade patterns at a texel, in [0, 1]: the shallow cumulus regime's
+// weight `shallow` (shallow_trades_weight) where the patterns organise the cumulus (`organised`,
+// weather_systems.glsl's organised_trades) away from their clumps (the cumulus type's weight
+// under 0.15, a sixth of the clumps' strength at the most: their fringes), where the sea between
+// the flowers, fish and gravel is clearer than under sugar (Stevens et al. 2020).
+float trade_moat(float shallow, float organised, float cumulus) {
+  return clamp(shallow, 0.0f, 1.0f) * clamp(organised, 0.0f, 1.0f) * (1.0f - smoothstep(0.0f, 0.15f, cumulus));
 }
 
 // The geometric thickness (km) of a cloud with its top at top_km and optical thickness tau: from a

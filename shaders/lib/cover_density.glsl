@@ -73,6 +73,15 @@ float with_systems(float density, float systems) {
 // open cells' centres onto their walls.
 float with_cells(float density, float modulation) { return density * (1.0f + modulation); }
 
+// The density between the organised trade patterns' clumps (cloud_properties.glsl's trade_moat, m
+// in [0, 1]): d (1 - MOAT_CLEARING m), a factor as the cells', which keeps the noise's texture
+// but leaves the moats' sea mostly clear: a density thinned by 0.12 (1.6 of the noise's spreads
+// at its mean) is cloudy at a tropical band's threshold (about a quarter of a spread below the
+// mean) in about a quarter of the moats' texels rather than three fifths, and the calibration
+// gives the band's cloud to the clumps and to sugar.
+const float MOAT_CLEARING = 0.12f;
+float with_moats(float density, float moat) { return density * (1.0f - MOAT_CLEARING * clamp(moat, 0.0f, 1.0f)); }
+
 // The share of a cloudy texel's excess of density over the threshold that its cover shows: 1 where
 // a system organises the cloud, SHALLOW_CONTRAST in the trades' shallow cumulus, from their weight w
 // (cloud_properties.glsl's shallow_trades_weight): 1 - w (1 - SHALLOW_CONTRAST). The density pass
@@ -81,8 +90,18 @@ float with_cells(float density, float modulation) { return density * (1.0f + mod
 // the density's, and only the brightness of the cloud changes. 0.08: the noise's cloud a spread
 // (0.074) above the threshold then gets cover 1 - 0.9 exp(-0.08 x 0.074 / 0.05) = 0.20 at the
 // default softness, two spreads 0.29, as the trades' low cloud amount of 20-30 % (Brueck et al. 2015).
+// Where the trades' cumulus organise into gravel, fish or flowers (weather_systems.glsl's
+// trade_regimes), their cloud gathers into the patterns' clumps and the sea between them is
+// clearer than under sugar's even dusting (Stevens et al. 2020: flowers and fish "well separated
+// ... by cloud-free areas"): the shallow cloud there keeps MOAT_CONTRAST of sugar's contrast, so
+// that a spread above the threshold it has cover 1 - 0.9 exp(-0.024 x 0.074 / 0.05) = 0.13 and
+// the clumps stand out. `organised` in [0, 1]: the organised patterns' share at the texel.
 const float SHALLOW_CONTRAST = 0.08f;
-float cover_contrast(float shallow_weight) { return 1.0f - clamp(shallow_weight, 0.0f, 1.0f) * (1.0f - SHALLOW_CONTRAST); }
+const float MOAT_CONTRAST = 0.3f;
+float cover_contrast(float shallow_weight, float organised) {
+  float shallow = SHALLOW_CONTRAST * (1.0f - (1.0f - MOAT_CONTRAST) * clamp(organised, 0.0f, 1.0f));
+  return 1.0f - clamp(shallow_weight, 0.0f, 1.0f) * (1.0f - shallow);
+}
 
 // The cover of a cloudy texel just above the threshold: cloud boundaries are steps of optical
 // thickness at a texel's scale, not ramps from nothing.

@@ -271,12 +271,17 @@ const float ITCZ_REACH = 0.28f;
 const float CONVECTIVE_WARP_CELLS = 96.0f;
 const float CONVECTIVE_WARP = 0.008f;
 const uint CONVECTIVE_WARP_LAYER = 26u;  // and 27, one a component
-vec3 convective_warp(vec3 p, uint seed, int components) {
+// The unit direction p displaced along the sphere by `amount` radians times a field of Perlin noise
+// of `cells` cells per radius, east and north (noise layers `layer` and layer + 1), renormalised;
+// `components` 2, or 0 (SKIPPABLE): p itself.
+vec3 tangent_warp(vec3 p, float cells, float amount, uint seed, uint layer, int components) {
   vec2 warp = vec2(0.0f);
-  for (int k = 0; k < components; ++k)
-    warp[k] = perlin_noise(p * CONVECTIVE_WARP_CELLS, ivec3(0), noise_key(seed, CONVECTIVE_WARP_LAYER + uint(k)));
+  for (int k = 0; k < components; ++k) warp[k] = perlin_noise(p * cells, ivec3(0), noise_key(seed, layer + uint(k)));
   vec3 east = local_east(p);
-  return normalize(p + CONVECTIVE_WARP * (warp.x * east + warp.y * cross(p, east)));
+  return normalize(p + amount * (warp.x * east + warp.y * cross(p, east)));
+}
+vec3 convective_warp(vec3 p, uint seed, int components) {
+  return tangent_warp(p, CONVECTIVE_WARP_CELLS, CONVECTIVE_WARP, seed, CONVECTIVE_WARP_LAYER, components);
 }
 
 // The ITCZ's convective systems at p: (the systems' and towers' cloud, the systems' anvils), both in
@@ -295,16 +300,113 @@ vec2 itcz_systems(vec3 p, float latitude, float itcz_latitude, uint seed, float 
               convective_cloud(min(systems.y, towers.y), edge, ANVIL_EDGE_REACH));
 }
 
-// Trade cumulus: many small clouds up to 60-120 km across (the mesoscale clusters of the cumulus,
-// whose single clouds are far below a texel), about 110 km apart (60 cells per radius), 30 % of
-// the cells empty and the fields patchy where the cover's noise is low, between about 6 and 30 degrees of
-// latitude where the trades blow (Nuijens et al. 2014, "The
-// distribution and variability of low-level cloud in the North Atlantic trades", QJRMS 140).
-float trade_cumulus(vec3 p, float latitude, uint seed, float edge) {
+// The trades' cumulus organise on the mesoscale into four patterns that an eye tells apart on
+// satellite images (Stevens et al. 2020, "Sugar, gravel, fish and flowers: Mesoscale cloud
+// patterns in the trade winds", QJRMS 146): sugar, a fine dusting of dim cumulus far below a
+// texel with no organisation; gravel, clumps and arcs of cumulus some tens of km across, brighter
+// than sugar; fish, skeletal bands of cloud about a thousand km long, separated from the rest by
+// clear sky; and flowers, bouquets of stratiform cloud 50-200 km across, bright, well apart from
+// each other. Each pattern holds over areas of 10^5-10^6 km^2 for a day or more and all four are
+// common (Bony et al. 2020, "Sugar, gravel, fish, and flowers: dependence of mesoscale patterns
+// of trade-wind clouds on environmental conditions", GRL 47). trade_regimes gives the patterns'
+// weights (sugar, gravel, fish, flowers), summing to 1, from two Perlin fields of
+// TRADE_REGIME_CELLS cells per radius (regions about 1300 km across), each split at its median
+// (0: the noise is symmetric), so that each pattern holds about a quarter of the trades, with
+// blends over TRADE_REGIME_BLEND of the fields' values (their spread is 0.27: about 15 % of the
+// trades lie in a blend of two patterns).
+const float TRADE_REGIME_CELLS = 5.0f;
+const float TRADE_REGIME_BLEND = 0.06f;
+const uint TRADE_REGIME_LAYER = 29u;  // and 30
+vec4 trade_regimes(vec3 p, uint seed) {
+  float a = perlin_noise(p * TRADE_REGIME_CELLS, ivec3(0), noise_key(seed, TRADE_REGIME_LAYER));
+  float b = perlin_noise(p * TRADE_REGIME_CELLS, ivec3(0), noise_key(seed, TRADE_REGIME_LAYER + 1u));
+  float organised = smoothstep(-TRADE_REGIME_BLEND, TRADE_REGIME_BLEND, a);  // gravel or flowers
+  float stratiform = smoothstep(-TRADE_REGIME_BLEND, TRADE_REGIME_BLEND, b);  // fish or flowers
+  return vec4((1.0f - organised) * (1.0f - stratiform), organised * (1.0f - stratiform),
+              (1.0f - organised) * stratiform, organised * stratiform);
+}
+
+// The patterns' clumps, each in [0, 1]: whole discs of radii of density r^-3 on a lattice
+// (convective_distances, in every place in `filled` of them; `searched` 0 where the caller draws
+// none), their edges frayed by the cover's noise (`edge`, up to TRADE_CLUMP_EDGE_REACH of a
+// radius) and sharp (convective_cloud). Whole discs: a clump cut along its Voronoi cell's border
+// with an empty or smaller neighbour (cell_clouds) shows straight edges and corners, shards
+// rather than clouds, once the cover resolves them. Gravel: clumps of cumulus 40-100 km across
+// (radii 0.2-0.45 of cells of 106 km, 60 a radius), seven places in ten. Flowers: bouquets 60-140
+// km across (radii 0.2-0.45 of cells of 159 km, 40 a radius), nine places in ten, drawn at the
+// point displaced by Perlin noise of 40 cells a radius by up to about 20 km (tangent_warp), so
+// that their outlines are lobed. Fish: bands 750-1150 km long and a quarter as wide (radii 0.3-0.45
+// of cells of 1270 km, 5 a radius, with the point's z (north) component stretched fourfold, which
+// draws them out along the latitude circles, along the trade winds), eight places in ten, bent by
+// a displacement of up to about 50 km at 320 km. The displacements' gradients stay below a half
+// (0.006 x 40 and 0.015 x 20 times the Perlin noise's slope of about 1.5), so they fold nothing.
+const uint GRAVEL_LAYER = 13u;   // and 14
+const uint FLOWERS_LAYER = 15u;  // and 16
+const uint FISH_LAYER = 31u;     // and 32
+const uint FLOWERS_WARP_LAYER = 33u;  // and 34
+const uint FISH_WARP_LAYER = 35u;     // and 36
+const uint GRAVEL_WARP_LAYER = 37u;   // and 38
+const float FISH_STRETCH = 4.0f;
+const float TRADE_CLUMP_EDGE_REACH = 0.3f;
+// A presence of `filled` everywhere (convective_presence_of a line whose width is beyond the sphere).
+vec3 presence_everywhere(float filled) { return vec3(0.0f, 1.0e6f, filled); }
+float trade_clump(vec3 p, float frequency, uint seed, uint layer, vec2 radii, float filled, float edge, int searched) {
+  float d = convective_distances(p, frequency, seed, layer, radii, presence_everywhere(filled), NO_ANVIL, searched).x;
+  return convective_cloud(d, edge, TRADE_CLUMP_EDGE_REACH);
+}
+float gravel_clumps(vec3 p, uint seed, float edge, int searched) {
+  vec3 q = tangent_warp(p, 120.0f, 0.003f, seed, GRAVEL_WARP_LAYER, SKIPPABLE(searched > 0, 2));
+  return trade_clump(q, 60.0f, seed, GRAVEL_LAYER, vec2(0.2f, 0.45f), 0.7f, edge, searched);
+}
+float flower_clumps(vec3 p, uint seed, float edge, int searched) {
+  vec3 q = tangent_warp(p, 80.0f, 0.006f, seed, FLOWERS_WARP_LAYER, SKIPPABLE(searched > 0, 2));
+  return trade_clump(q, 40.0f, seed, FLOWERS_LAYER, vec2(0.15f, 0.5f), 1.0f, edge, searched);
+}
+float fish_clumps(vec3 p, uint seed, float edge, int searched) {
+  int components = SKIPPABLE(searched > 0, 2);
+  vec3 q = tangent_warp(tangent_warp(p, 20.0f, 0.015f, seed, FISH_WARP_LAYER, components), 80.0f, 0.006f, seed,
+                        FLOWERS_WARP_LAYER, components);
+  return trade_clump(vec3(q.x, q.y, FISH_STRETCH * q.z), 5.0f, seed, FISH_LAYER, vec2(0.3f, 0.45f), 0.8f, edge,
+                     searched);
+}
+
+// The trade cumulus' belt at geocentric `latitude` (radians): from about 6 to 30 degrees where
+// the trades blow (Nuijens et al. 2014, "The distribution and variability of low-level cloud in
+// the North Atlantic trades", QJRMS 140), full from 8 to 26.
+float trade_cumulus_belt(float latitude) {
   float a = abs(latitude);
-  float belt = smoothstep(0.06f, 0.14f, a) * (1.0f - smoothstep(0.45f, 0.58f, a)) * smoothstep(-0.4f, 0.2f, edge);
-  float clouds = cell_clouds(p, 60.0f, seed, 13u, 0.3f, 0.25f, 0.3f, edge, SKIPPABLE(belt > 0.0f, NEIGHBOUR_CELLS));
-  return belt > 0.0f ? belt * clouds : 0.0f;
+  return smoothstep(0.06f, 0.14f, a) * (1.0f - smoothstep(0.45f, 0.58f, a));
+}
+
+// The organised patterns' share of the trades' shallow cloud at p, of geocentric `latitude`: 1
+// less sugar's weight, in the trade cumulus' belt, times their strength (--trade-cumulus; without
+// their clumps nothing organises the cloud), in [0, 1] (cover_density.glsl's cover_contrast dims
+// the cloud between the clumps).
+float organised_trades(vec3 p, float latitude, uint seed, float strength) {
+  return clamp(strength, 0.0f, 1.0f) * trade_cumulus_belt(latitude) * (1.0f - trade_regimes(p, seed).x);
+}
+
+// The clumps' strength by pattern, which lifts their density (the belts' weight times it) and
+// sets their brightness (cloud_properties.glsl's cumulus_organisation): gravel's cumulus, broken
+// and shallow, a little above sugar; fish and flowers, whose tops spread into stratiform sheets
+// under the trade inversion (Stevens et al. 2020), bright.
+const vec3 TRADE_PATTERN_STRENGTH = vec3(0.45f, 0.8f, 1.0f);  // gravel, fish, flowers
+
+// The trades' organised cumulus at p, in [0, 1]: each pattern's clumps by its weight and strength,
+// in the trade cumulus' belt (trade_cumulus_belt), gravel's patchy where the cover's noise is low. Sugar draws no clumps: its cloud is the noise's dim
+// shallow cloud (cover_density.glsl's cover_contrast). A pattern absent from a group of lanes
+// costs no search.
+float trade_cumulus(vec3 p, float latitude, uint seed, float edge) {
+  float belt = trade_cumulus_belt(latitude);
+  // Gravel's fields are patchy where the noise is low; flowers and fish fill their regions.
+  float patchy = smoothstep(-0.4f, 0.2f, edge);
+  vec4 regimes = trade_regimes(p, seed);
+  float gravel = gravel_clumps(p, seed, edge, SKIPPABLE(belt > 0.0f && regimes.y > 0.0f, NEIGHBOUR_CELLS));
+  float fish = fish_clumps(p, seed, edge, SKIPPABLE(belt > 0.0f && regimes.z > 0.0f, NEIGHBOUR_CELLS));
+  float flowers = flower_clumps(p, seed, edge, SKIPPABLE(belt > 0.0f && regimes.w > 0.0f, NEIGHBOUR_CELLS));
+  float clumps = max(max(TRADE_PATTERN_STRENGTH.x * regimes.y * gravel * patchy, TRADE_PATTERN_STRENGTH.y * regimes.z * fish),
+                     TRADE_PATTERN_STRENGTH.z * regimes.w * flowers);
+  return belt > 0.0f ? belt * clumps : 0.0f;
 }
 
 // Cirrus streaks: Worley fBm (14 cells per radius, 2 octaves) of the point with its z (north)

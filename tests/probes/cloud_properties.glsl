@@ -10,7 +10,9 @@ const int PROBE_COVERED_DEPTH = 5;         // covered_optical_depth(a, b)
 const int PROBE_SUBTEXEL_CLOUD = 6;        // subtexel_cloud(x[1].xyz, a, b, c): (cover, relief, field, undulation)
 const int PROBE_SUBTEXEL_TAU = 7;          // subtexel_optical_thickness(a, a detail of undulation b and share x[1].x, c)
 const int PROBE_SUBTEXEL_SHARE = 8;        // subtexel_cloud(x[1].xyz, a, b, c).undulation_share
-const int PROBE_SHALLOW_TRADES = 9;  // organised_cloud(x[1], a), trades_belt(latitude) in y, shallow_trades_weight(x[1], latitude, a, b) in z
+const int PROBE_SHALLOW_TRADES = 9;  // organised_cloud(x[1], a), trades_belt(latitude) in y, shallow_trades_weight(x[1], latitude, a, b) in z,
+                                     // trade_moat(a, b, c) in w
+const int PROBE_CUMULUS_ORGANISATION = 10;  // cumulus_organisation(a)
 #ifndef __cplusplus
 #include "../lib/cloud_properties.glsl"
 #endif
@@ -37,8 +39,10 @@ vec4 probe_cloud_properties(mat4 x) {
   }
   if (f == PROBE_SHALLOW_TRADES) {
     CloudTypes types = probe_cloud_types(x);
-    return vec4(organised_cloud(types, a), trades_belt(latitude), shallow_trades_weight(types, latitude, a, b), 0.0f);
+    return vec4(organised_cloud(types, a), trades_belt(latitude), shallow_trades_weight(types, latitude, a, b),
+                trade_moat(a, b, c));
   }
+  if (f == PROBE_CUMULUS_ORGANISATION) return vec4(cumulus_organisation(a), 0.0f, 0.0f, 0.0f);
   if (f == PROBE_COVERED_DEPTH) return vec4(covered_optical_depth(a, b), 0.0f, 0.0f, 0.0f);
   if (f == PROBE_SUBTEXEL_CLOUD) {
     SubtexelCloud cloud = subtexel_cloud(vec3(x[1]), a, b, c);

@@ -37,6 +37,13 @@ const int PROBE_FRAYED_DECK = 24;            // frayed_deck(a, b), deck_presence
 const int PROBE_CELLS_HIDDEN = 25;           // cells_hidden(cloud_types(a, x[1]))
 const int PROBE_CELL_BORDERS = 26;           // cell_borders(p * OPEN_CELLS, p, the open cells' key of seed b),
                                              // open_cell_wall(a) in w
+const int PROBE_TRADE_REGIMES = 27;          // trade_regimes(p, uint(b))
+const int PROBE_TRADE_CLUMPS = 28;           // gravel_clumps(p, uint(b), a), flower_clumps, fish_clumps (all cells
+                                             // searched), organised_trades(p, latitude, uint(b), c)
+const int PROBE_TANGENT_WARP = 29;           // tangent_warp(p, a, c, uint(b), FLOWERS_WARP_LAYER, 2),
+                                             // trade_cumulus_belt(latitude) in w
+const int PROBE_TRADE_CLUMP = 30;            // trade_clump(p, a, uint(b), FLOWERS_LAYER, (0.2, 0.45), c, x[3].x, all
+                                             // cells), presence_everywhere(c) in yzw
 #ifndef __cplusplus
 #include "../lib/weather_systems.glsl"
 #endif
@@ -92,6 +99,15 @@ vec4 probe_weather_systems(mat4 x) {
   if (f == PROBE_CELL_BORDERS)
     return vec4(cell_borders(p * OPEN_CELLS, p, noise_key(seed, OPEN_CELLS_LAYER), NEIGHBOUR_CELLS),
                 open_cell_wall(x[0].y));
+  if (f == PROBE_TRADE_REGIMES) return trade_regimes(p, seed);
+  if (f == PROBE_TANGENT_WARP)
+    return vec4(tangent_warp(p, x[0].y, x[0].w, seed, FLOWERS_WARP_LAYER, 2), trade_cumulus_belt(latitude));
+  if (f == PROBE_TRADE_CLUMP)
+    return vec4(trade_clump(p, x[0].y, seed, FLOWERS_LAYER, vec2(0.2f, 0.45f), x[0].w, x[3].x, NEIGHBOUR_CELLS),
+                presence_everywhere(x[0].w));
+  if (f == PROBE_TRADE_CLUMPS)
+    return vec4(gravel_clumps(p, seed, x[0].y, NEIGHBOUR_CELLS), flower_clumps(p, seed, x[0].y, NEIGHBOUR_CELLS),
+                fish_clumps(p, seed, x[0].y, NEIGHBOUR_CELLS), organised_trades(p, latitude, seed, x[0].w));
   if (f == PROBE_FRAYED_DECK) {
     float deck = frayed_deck(x[0].y, x[0].z);
     return vec4(deck, deck_presence(deck), deck_organisation(x[0].y), 0.0f);
