@@ -427,7 +427,7 @@ TEST_CASE("gravel is many small separate clumps, and the trades' cumulus none at
   const double lat = 18.0 * M_PI / 180.0;
   Runs runs;
   add_runs(
-      runs, [&](vec3 p) { return glsl::gravel_clumps(p, seed, 0.5f, glsl::NEIGHBOUR_CELLS); },
+      runs, [&](vec3 p) { return glsl::gravel_clumps(p, seed, 0.5f, glsl::NEAR_CELLS); },
       [&](double lon) { return direction_at(lat, lon); }, 2 * M_PI * earth_radius_km * std::cos(lat), 200000);
   // A clump's disc is at most 2 x 0.45 cells of 106 km across, 1.15 times that with the edge
   // here (0.3 x 0.5 of a radius): 110 km; two overlapping ones 220 km.
@@ -456,7 +456,7 @@ TEST_CASE("the trades' four patterns each hold about a quarter of the trades and
     std::uniform_real_distribution<double> uniform(0.0, 1.0);
     for (int k = 0; k < 4000; ++k, ++n) {
       const vec3 p = direction_at(std::asin(uniform(rng) - 0.5), 2 * M_PI * uniform(rng));  // within 30 degrees
-      const glsl::vec4 w = glsl::trade_regimes(p, seed);
+      const glsl::vec4 w = glsl::trade_regimes(p, seed, 2);
       for (int i = 0; i < 4; ++i) {
         REQUIRE(w[i] >= 0.0f);
         share[i] += w[i];
@@ -483,8 +483,8 @@ TEST_CASE("the trades' four patterns each hold about a quarter of the trades and
 TEST_CASE("flowers are bouquets well apart and fish are bands far longer than wide", "[fast][systems]") {
   Runs flowers_east, fish_east, fish_north;
   for (std::uint32_t seed = 1; seed <= 4; ++seed) {
-    const auto flower = [&](vec3 p) { return glsl::flower_clumps(p, seed, 0.0f, glsl::NEIGHBOUR_CELLS); };
-    const auto fish = [&](vec3 p) { return glsl::fish_clumps(p, seed, 0.0f, glsl::NEIGHBOUR_CELLS); };
+    const auto flower = [&](vec3 p) { return glsl::flower_clumps(p, seed, 0.0f, glsl::NEAR_CELLS); };
+    const auto fish = [&](vec3 p) { return glsl::fish_clumps(p, seed, 0.0f, glsl::NEAR_CELLS); };
     for (double degrees : {12.0, 18.0, 24.0}) {
       const double lat = degrees * M_PI / 180.0, circle = 2 * M_PI * earth_radius_km * std::cos(lat);
       const auto east = [&](double lon) { return direction_at(lat, lon); };
@@ -521,6 +521,47 @@ TEST_CASE("flowers are bouquets well apart and fish are bands far longer than wi
   CHECK(fish_north.clouds.size() > 40);
   CHECK(mean_of(fish_east.clouds) > 2.0 * mean_of(fish_north.clouds));
   CHECK(fish_max > 600.0);
+}
+
+TEST_CASE("the 8 nearest cells hold every feature point within half a cell, and every trade clump the 27 find",
+          "[fast][systems]") {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<float> uniform(-30.0f, 30.0f);
+  const glsl::uvec3 key = glsl::noise_key(3u, 13u);
+  int near = 0;
+  for (int k = 0; k < 20000; ++k) {
+    const vec3 p(uniform(rng), uniform(rng), uniform(rng));
+    const vec3 base = glm::floor(p), f = p - base;
+    const glsl::ivec3 cell(base);
+    float all = 1e30f, nearest8 = 1e30f;
+    for (int i = 0; i < glsl::NEIGHBOUR_CELLS; ++i) {
+      const glsl::ivec3 o = glsl::neighbour_offset(i);
+      all = std::min(all, glm::length(vec3(o) + glsl::wrapped_feature_offset(cell + o, key) - f));
+    }
+    for (int i = 0; i < glsl::NEAR_CELLS; ++i) {
+      const glsl::ivec3 o = glsl::near_offset(i, f);
+      nearest8 = std::min(nearest8, glm::length(vec3(o) + glsl::wrapped_feature_offset(cell + o, key) - f));
+    }
+    if (all <= 0.5f) {
+      ++near;
+      REQUIRE(nearest8 == all);
+    }
+  }
+  CHECK(near > 1000);  // the check saw many points with a feature that near
+  // The clumps reach at most 0.38 x 1.3 = 0.494 cells: the same values from either search.
+  std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
+  for (int k = 0; k < 4000; ++k) {
+    const vec3 p = glm::normalize(vec3(unit(rng), unit(rng), 0.5f * unit(rng)));
+    const float edge = unit(rng);
+    for (std::uint32_t seed : {1u, 2u}) {
+      REQUIRE(glsl::gravel_clumps(p, seed, edge, glsl::NEAR_CELLS) ==
+              glsl::gravel_clumps(p, seed, edge, glsl::NEIGHBOUR_CELLS));
+      REQUIRE(glsl::flower_clumps(p, seed, edge, glsl::NEAR_CELLS) ==
+              glsl::flower_clumps(p, seed, edge, glsl::NEIGHBOUR_CELLS));
+      REQUIRE(glsl::fish_clumps(p, seed, edge, glsl::NEAR_CELLS) ==
+              glsl::fish_clumps(p, seed, edge, glsl::NEIGHBOUR_CELLS));
+    }
+  }
 }
 
 TEST_CASE("the organised patterns' clumps are brighter than sugar and the sea between them darker and clearer",

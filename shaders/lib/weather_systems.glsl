@@ -192,12 +192,14 @@ float convective_presence(vec3 p, vec3 presence) {
 // (convective_presence_of) of the point's direction (its share of places with a system). Returns the smallest distance from
 // p to a system's point in units of its radius (x), and to an anvil's centre in units of its
 // half-axes (y; 1e30 without an `anvil`), over the first `searched` of the 27 cells around p
-// (neighbour_offset; NEIGHBOUR_CELLS, or 0: SKIPPABLE), which hold every point within a cell: each
+// (neighbour_offset; NEIGHBOUR_CELLS, or 0: SKIPPABLE), which hold every point within a cell, or
+// over the NEAR_CELLS (near_offset), which hold every point within half a cell: each
 // system is a whole disc (the nearest point's system alone would be cut along its Voronoi cell's
 // border into straight edges) where it reaches no further than the search: with the 27 cells,
 // radii up to 0.5 cells keep the discs (out to 1.8 radii with the noise, 0.9 cells) and anvils of
 // (spread stretch + lag) r 1.3 up to 1 cell whole (the systems': (1.2 x 1.2 + 0.1) 0.5 x 1.3 = 1.0;
-// the towers': (1.8 x 1.5 + 0.1) 0.27 x 1.3 = 0.98). 1e30 where none is near or `searched` is 0.
+// the towers': (1.8 x 1.5 + 0.1) 0.27 x 1.3 = 0.98); with the 8, discs reaching half a cell. 1e30
+// where none is near or `searched` is 0.
 vec2 convective_distances(vec3 p, float frequency, uint seed, uint layer, vec2 radii, vec3 presence, vec3 anvil,
                           int searched) {
   vec3 scaled = p * frequency;
@@ -208,10 +210,12 @@ vec2 convective_distances(vec3 p, float frequency, uint seed, uint layer, vec2 r
   vec3 east = local_east(p);
   vec2 nearest = vec2(1.0e30f);
   for (int k = 0; k < searched; ++k) {
-    ivec3 offset = neighbour_offset(k);
+    ivec3 offset = searched == NEAR_CELLS ? near_offset(k, f) : neighbour_offset(k);
     vec3 to_point = vec3(offset) + wrapped_feature_offset(cell + offset, key) - f;
     vec3 h = hash_to_unit3(pcg3d(uvec3(cell + offset) ^ size_key));
-    if (h.y >= convective_presence(normalize(scaled + to_point), presence)) continue;
+    // (A presence of a width beyond the sphere's, presence_everywhere, is its z everywhere.)
+    float here = presence.y < 1.0e5f ? convective_presence(normalize(scaled + to_point), presence) : presence.z;
+    if (h.y >= here) continue;
     float r = equal_area_radius(h.x, radii.x, radii.y);
     nearest.x = min(nearest.x, length(to_point) / r);
     if (anvil.x <= 0.0f) continue;
@@ -312,40 +316,43 @@ vec2 itcz_systems(vec3 p, float latitude, float itcz_latitude, uint seed, float 
 // weights (sugar, gravel, fish, flowers), summing to 1, from two Perlin fields of
 // TRADE_REGIME_CELLS cells per radius (regions about 1300 km across), each split at its median
 // (0: the noise is symmetric), so that each pattern holds about a quarter of the trades, with
-// blends over TRADE_REGIME_BLEND of the fields' values (their spread is 0.27: about 15 % of the
-// trades lie in a blend of two patterns).
+// blends over TRADE_REGIME_BLEND of the fields' values (their spread is 0.27: about a fifth of the
+// trades lie in a blend of two patterns). `fields` 2, or 0 where the caller needs no weights
+// (SKIPPABLE: both fields 0, each pattern a quarter).
 const float TRADE_REGIME_CELLS = 5.0f;
 const float TRADE_REGIME_BLEND = 0.06f;
 const uint TRADE_REGIME_LAYER = 29u;  // and 30
-vec4 trade_regimes(vec3 p, uint seed) {
-  float a = perlin_noise(p * TRADE_REGIME_CELLS, ivec3(0), noise_key(seed, TRADE_REGIME_LAYER));
-  float b = perlin_noise(p * TRADE_REGIME_CELLS, ivec3(0), noise_key(seed, TRADE_REGIME_LAYER + 1u));
-  float organised = smoothstep(-TRADE_REGIME_BLEND, TRADE_REGIME_BLEND, a);  // gravel or flowers
-  float stratiform = smoothstep(-TRADE_REGIME_BLEND, TRADE_REGIME_BLEND, b);  // fish or flowers
+vec4 trade_regimes(vec3 p, uint seed, int fields) {
+  vec2 ab = vec2(0.0f);
+  for (int k = 0; k < fields; ++k)
+    ab[k] = perlin_noise(p * TRADE_REGIME_CELLS, ivec3(0), noise_key(seed, TRADE_REGIME_LAYER + uint(k)));
+  float organised = smoothstep(-TRADE_REGIME_BLEND, TRADE_REGIME_BLEND, ab.x);  // gravel or flowers
+  float stratiform = smoothstep(-TRADE_REGIME_BLEND, TRADE_REGIME_BLEND, ab.y);  // fish or flowers
   return vec4((1.0f - organised) * (1.0f - stratiform), organised * (1.0f - stratiform),
               (1.0f - organised) * stratiform, organised * stratiform);
 }
 
 // The patterns' clumps, each in [0, 1]: whole discs of radii of density r^-3 on a lattice
-// (convective_distances, in every place in `filled` of them; `searched` 0 where the caller draws
-// none), their edges frayed by the cover's noise (`edge`, up to TRADE_CLUMP_EDGE_REACH of a
-// radius) and sharp (convective_cloud). Whole discs: a clump cut along its Voronoi cell's border
-// with an empty or smaller neighbour (cell_clouds) shows straight edges and corners, shards
-// rather than clouds, once the cover resolves them. Gravel: clumps of cumulus 40-100 km across
-// (radii 0.2-0.45 of cells of 106 km, 60 a radius), seven places in ten. Flowers: bouquets 60-140
-// km across (radii 0.2-0.45 of cells of 159 km, 40 a radius), nine places in ten, drawn at the
-// point displaced by Perlin noise of 40 cells a radius by up to about 20 km (tangent_warp), so
-// that their outlines are lobed. Fish: bands 750-1150 km long and a quarter as wide (radii 0.3-0.45
-// of cells of 1270 km, 5 a radius, with the point's z (north) component stretched fourfold, which
-// draws them out along the latitude circles, along the trade winds), eight places in ten, bent by
-// a displacement of up to about 50 km at 320 km. The displacements' gradients stay below a half
-// (0.006 x 40 and 0.015 x 20 times the Perlin noise's slope of about 1.5), so they fold nothing.
-const uint GRAVEL_LAYER = 13u;   // and 14
-const uint FLOWERS_LAYER = 15u;  // and 16
-const uint FISH_LAYER = 31u;     // and 32
+// (convective_distances over the NEAR_CELLS, in every place in `filled` of them; `searched` 0
+// where the caller draws none), their edges frayed by the cover's noise (`edge`, up to
+// TRADE_CLUMP_EDGE_REACH of a radius) and sharp (convective_cloud). Whole discs: a clump cut along
+// its Voronoi cell's border with an empty or smaller neighbour (cell_clouds) shows straight edges
+// and corners, shards rather than clouds, once the cover resolves them. Their radii stay below
+// 0.38 cells, so that with the fray (1.3 times) they reach at most 0.494 cells and the 8 nearest
+// cells hold them. Gravel: clumps of cumulus 40-80 km across (radii 0.2-0.38 of cells of 106 km,
+// 60 a radius), nine places in ten. Flowers: bouquets 70-120 km across (radii 0.22-0.38 of cells
+// of 159 km, 40 a radius) in every place, drawn at the point displaced by Perlin noise of 80
+// cells a radius by up to about 20 km (tangent_warp), so that their outlines are lobed. Fish:
+// bands 750-970 km long and a quarter as wide (radii 0.3-0.38 of cells of 1270 km, 5 a radius,
+// with the point's z (north) component stretched fourfold, which draws them out along the latitude
+// circles, along the trade winds), eight places in ten, bent by a displacement of up to about 50
+// km at 320 km. The displacements' gradients stay below about 0.7 (0.006 x 80 and 0.015 x 20 times
+// the Perlin noise's slope of about 1.5), so they fold nothing.
+const uint GRAVEL_LAYER = 13u;        // and 14
+const uint FLOWERS_LAYER = 15u;       // and 16
+const uint FISH_LAYER = 31u;          // and 32
 const uint FLOWERS_WARP_LAYER = 33u;  // and 34
 const uint FISH_WARP_LAYER = 35u;     // and 36
-const uint GRAVEL_WARP_LAYER = 37u;   // and 38
 const float FISH_STRETCH = 4.0f;
 const float TRADE_CLUMP_EDGE_REACH = 0.3f;
 // A presence of `filled` everywhere (convective_presence_of a line whose width is beyond the sphere).
@@ -355,18 +362,15 @@ float trade_clump(vec3 p, float frequency, uint seed, uint layer, vec2 radii, fl
   return convective_cloud(d, edge, TRADE_CLUMP_EDGE_REACH);
 }
 float gravel_clumps(vec3 p, uint seed, float edge, int searched) {
-  vec3 q = tangent_warp(p, 120.0f, 0.003f, seed, GRAVEL_WARP_LAYER, SKIPPABLE(searched > 0, 2));
-  return trade_clump(q, 60.0f, seed, GRAVEL_LAYER, vec2(0.2f, 0.45f), 0.7f, edge, searched);
+  return trade_clump(p, 60.0f, seed, GRAVEL_LAYER, vec2(0.2f, 0.38f), 0.9f, edge, searched);
 }
 float flower_clumps(vec3 p, uint seed, float edge, int searched) {
   vec3 q = tangent_warp(p, 80.0f, 0.006f, seed, FLOWERS_WARP_LAYER, SKIPPABLE(searched > 0, 2));
-  return trade_clump(q, 40.0f, seed, FLOWERS_LAYER, vec2(0.15f, 0.5f), 1.0f, edge, searched);
+  return trade_clump(q, 40.0f, seed, FLOWERS_LAYER, vec2(0.22f, 0.38f), 1.0f, edge, searched);
 }
 float fish_clumps(vec3 p, uint seed, float edge, int searched) {
-  int components = SKIPPABLE(searched > 0, 2);
-  vec3 q = tangent_warp(tangent_warp(p, 20.0f, 0.015f, seed, FISH_WARP_LAYER, components), 80.0f, 0.006f, seed,
-                        FLOWERS_WARP_LAYER, components);
-  return trade_clump(vec3(q.x, q.y, FISH_STRETCH * q.z), 5.0f, seed, FISH_LAYER, vec2(0.3f, 0.45f), 0.8f, edge,
+  vec3 q = tangent_warp(p, 20.0f, 0.015f, seed, FISH_WARP_LAYER, SKIPPABLE(searched > 0, 2));
+  return trade_clump(vec3(q.x, q.y, FISH_STRETCH * q.z), 5.0f, seed, FISH_LAYER, vec2(0.3f, 0.38f), 0.8f, edge,
                      searched);
 }
 
@@ -383,7 +387,8 @@ float trade_cumulus_belt(float latitude) {
 // their clumps nothing organises the cloud), in [0, 1] (cover_density.glsl's cover_contrast dims
 // the cloud between the clumps).
 float organised_trades(vec3 p, float latitude, uint seed, float strength) {
-  return clamp(strength, 0.0f, 1.0f) * trade_cumulus_belt(latitude) * (1.0f - trade_regimes(p, seed).x);
+  float weight = clamp(strength, 0.0f, 1.0f) * trade_cumulus_belt(latitude);
+  return weight * (1.0f - trade_regimes(p, seed, SKIPPABLE(weight > 0.0f, 2)).x);
 }
 
 // The clumps' strength by pattern, which lifts their density (the belts' weight times it) and
@@ -400,10 +405,10 @@ float trade_cumulus(vec3 p, float latitude, uint seed, float edge) {
   float belt = trade_cumulus_belt(latitude);
   // Gravel's fields are patchy where the noise is low; flowers and fish fill their regions.
   float patchy = smoothstep(-0.4f, 0.2f, edge);
-  vec4 regimes = trade_regimes(p, seed);
-  float gravel = gravel_clumps(p, seed, edge, SKIPPABLE(belt > 0.0f && regimes.y > 0.0f, NEIGHBOUR_CELLS));
-  float fish = fish_clumps(p, seed, edge, SKIPPABLE(belt > 0.0f && regimes.z > 0.0f, NEIGHBOUR_CELLS));
-  float flowers = flower_clumps(p, seed, edge, SKIPPABLE(belt > 0.0f && regimes.w > 0.0f, NEIGHBOUR_CELLS));
+  vec4 regimes = trade_regimes(p, seed, SKIPPABLE(belt > 0.0f, 2));
+  float gravel = gravel_clumps(p, seed, edge, SKIPPABLE(belt > 0.0f && regimes.y > 0.0f, NEAR_CELLS));
+  float fish = fish_clumps(p, seed, edge, SKIPPABLE(belt > 0.0f && regimes.z > 0.0f, NEAR_CELLS));
+  float flowers = flower_clumps(p, seed, edge, SKIPPABLE(belt > 0.0f && regimes.w > 0.0f, NEAR_CELLS));
   float clumps = max(max(TRADE_PATTERN_STRENGTH.x * regimes.y * gravel * patchy, TRADE_PATTERN_STRENGTH.y * regimes.z * fish),
                      TRADE_PATTERN_STRENGTH.z * regimes.w * flowers);
   return belt > 0.0f ? belt * clumps : 0.0f;

@@ -133,6 +133,16 @@ vec4 worley_f1(vec3 p, ivec3 period, uvec3 key) {
 const int NEIGHBOUR_CELLS = 27;
 ivec3 neighbour_offset(int k) { return ivec3(k % 3 - 1, (k / 3) % 3 - 1, k / 9 - 1); }
 
+// The 8 cells of the 2 x 2 x 2 block nearest to a point at `f` in its cell (each coordinate in
+// [0, 1)), the k-th at this offset (k in [0, 8)): its own cell and, along each axis, the neighbour on
+// the nearer side. They hold every feature point within half a cell of the point: a point in any
+// other cell lies at least half a cell away along some axis.
+const int NEAR_CELLS = 8;
+ivec3 near_offset(int k, vec3 f) {
+  ivec3 side = ivec3(f.x < 0.5f ? -1 : 1, f.y < 0.5f ? -1 : 1, f.z < 0.5f ? -1 : 1);
+  return ivec3(k % 2, (k / 2) % 2, k / 4) * side;
+}
+
 // worley_f1 with a search a group of SIMD lanes can skip: the first `searched` of the neighbour
 // cells, NEIGHBOUR_CELLS, or 0 where the caller needs no F1 (distance 1e15, gradient 0; prelude.glsl,
 // SKIPPABLE). The same F1 where all are searched, from one loop of a count the compiler cannot

@@ -37,7 +37,7 @@ const int PROBE_FRAYED_DECK = 24;            // frayed_deck(a, b), deck_presence
 const int PROBE_CELLS_HIDDEN = 25;           // cells_hidden(cloud_types(a, x[1]))
 const int PROBE_CELL_BORDERS = 26;           // cell_borders(p * OPEN_CELLS, p, the open cells' key of seed b),
                                              // open_cell_wall(a) in w
-const int PROBE_TRADE_REGIMES = 27;          // trade_regimes(p, uint(b))
+const int PROBE_TRADE_REGIMES = 27;          // trade_regimes(p, uint(b), 2)
 const int PROBE_TRADE_CLUMPS = 28;           // gravel_clumps(p, uint(b), a), flower_clumps, fish_clumps (all cells
                                              // searched), organised_trades(p, latitude, uint(b), c)
 const int PROBE_TANGENT_WARP = 29;           // tangent_warp(p, a, c, uint(b), FLOWERS_WARP_LAYER, 2),
@@ -99,7 +99,7 @@ vec4 probe_weather_systems(mat4 x) {
   if (f == PROBE_CELL_BORDERS)
     return vec4(cell_borders(p * OPEN_CELLS, p, noise_key(seed, OPEN_CELLS_LAYER), NEIGHBOUR_CELLS),
                 open_cell_wall(x[0].y));
-  if (f == PROBE_TRADE_REGIMES) return trade_regimes(p, seed);
+  if (f == PROBE_TRADE_REGIMES) return trade_regimes(p, seed, 2);
   if (f == PROBE_TANGENT_WARP)
     return vec4(tangent_warp(p, x[0].y, x[0].w, seed, FLOWERS_WARP_LAYER, 2), trade_cumulus_belt(latitude));
   if (f == PROBE_TRADE_CLUMP)

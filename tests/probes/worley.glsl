@@ -13,6 +13,7 @@ const int PROBE_F1_SEARCHED = 8;  // worley_f1_searched(p, ..., int(c)), F1 capp
 const int PROBE_NEIGHBOUR_OFFSET = 9;  // neighbour_offset(int(c))
 const int PROBE_WIDER_SEARCH = 10;     // worley_wider_search(floor(p), fract(p), ..., best a): (delta, best)
 const int PROBE_WORLEY_RESULT = 11;    // worley_result(a, x[1].xyz)
+const int PROBE_NEAR_OFFSET = 13;       // near_offset(int(c), x[1].xyz)
 const int PROBE_WORLEY_CELL = 12;      // worley_cell(p, period): cell in xyz, f.x + xs.x + ys.z + zs.y in w
 #ifndef __cplusplus
 #include "../lib/worley.glsl"
@@ -48,6 +49,7 @@ vec4 probe_worley(mat4 x) {
     return vec4(vec3(f1), min(f1.w, 1.0e3f));
   }
   if (f == PROBE_NEIGHBOUR_OFFSET) return vec4(vec3(neighbour_offset(int(x[0].w))), 0.0f);
+  if (f == PROBE_NEAR_OFFSET) return vec4(vec3(near_offset(int(x[0].w), vec3(x[1]))), 0.0f);
   if (f == PROBE_WIDER_SEARCH) {
     float best = x[0].y;
     vec3 best_delta = vec3(0.0f);
