@@ -92,8 +92,8 @@ float with_moats(float density, float moat) { return density * (1.0f - MOAT_CLEA
 // default softness, two spreads 0.29, as the trades' low cloud amount of 20-30 % (Brueck et al. 2015).
 // Where the trades' cumulus organise into gravel, fish or flowers (weather_systems.glsl's
 // trade_regimes), their cloud gathers into the patterns' clumps and the sea between them is
-// clearer than under sugar's even dusting (Stevens et al. 2020: flowers and fish "well separated
-// ... by cloud-free areas"): the shallow cloud there keeps MOAT_CONTRAST of sugar's contrast, so
+// clearer than under sugar's even dusting (Stevens et al. 2020 describe flowers and fish as set
+// apart by clear sky): the shallow cloud there keeps MOAT_CONTRAST of sugar's contrast, so
 // that a spread above the threshold it has cover 1 - 0.9 exp(-0.024 x 0.074 / 0.05) = 0.13 and
 // the clumps stand out. `organised` in [0, 1]: the organised patterns' share at the texel.
 const float SHALLOW_CONTRAST = 0.08f;

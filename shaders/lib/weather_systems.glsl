@@ -398,9 +398,9 @@ float organised_trades(vec3 p, float latitude, uint seed, float strength) {
 const vec3 TRADE_PATTERN_STRENGTH = vec3(0.45f, 0.8f, 1.0f);  // gravel, fish, flowers
 
 // The trades' organised cumulus at p, in [0, 1]: each pattern's clumps by its weight and strength,
-// in the trade cumulus' belt (trade_cumulus_belt), gravel's patchy where the cover's noise is low. Sugar draws no clumps: its cloud is the noise's dim
-// shallow cloud (cover_density.glsl's cover_contrast). A pattern absent from a group of lanes
-// costs no search.
+// in the trade cumulus' belt (trade_cumulus_belt), gravel's patchy where the cover's noise is low.
+// Sugar draws no clumps: its cloud is the noise's dim shallow cloud (cover_density.glsl's
+// cover_contrast). A pattern absent from a group of lanes costs no search.
 float trade_cumulus(vec3 p, float latitude, uint seed, float edge) {
   float belt = trade_cumulus_belt(latitude);
   // Gravel's fields are patchy where the noise is low; flowers and fish fill their regions.
