@@ -157,6 +157,7 @@ TEST_CASE("density and coverage passes agree with the CPU twin", "[pass]") {
   const FbmParams params = cover::density_params(p);
   const WeatherSystems systems = cover::weather_systems(p, cover::hours_since_epoch(p.time));
   const auto& c = cover.calibration();
+  int open_texels = 0;
   for (size_t k = 0; k < density.size(); ++k) {
     // The cyclonic factor 1 + k c (c from the GPU's curl field on both sides) scales the
     // density's error and adds two roundings of the product.
@@ -171,9 +172,12 @@ TEST_CASE("density and coverage passes agree with the CPU twin", "[pass]") {
     const float shaped = shaped_density(noise, curl[k].w, p.cyclone_cloudiness, 0.0f, 0.0f);
     // The convective cells (none resolved by 16 texels a face: the modulation is 0 here).
     const float deck = frayed_deck(deck_strength(origin, latitude, systems.seed, 0.0f, 0.0f), system_edge(noise));
-    const float cells = systems.cells * cell_modulation(origin, cell_weights(deck, cold_sectors(origin, systems)),
-                                                        systems.seed, 2.0f / float(p.size));
+    const vec2 weights = cell_weights(deck, cold_sectors(origin, systems));
+    const float cells = systems.cells * cell_modulation(origin, weights, systems.seed, 2.0f / float(p.size));
     REQUIRE(cells == 0.0f);
+    // The open cells' weight dims their cloud at any size (no pockets without the open pattern).
+    const float open = systems.cells * weights.y;
+    open_texels += open > 0.0f ? 1 : 0;
     // The trades' shallow regime at the texel's own latitude, and the organised patterns' moats.
     const CloudTypes types = cloud_types(cyclones, belts);
     const float here = portable_asin(clamp(vec3(identity[k]).z, -1.0f, 1.0f));
@@ -204,9 +208,15 @@ TEST_CASE("density and coverage passes agree with the CPU twin", "[pass]") {
                                                              0.5 * shaped * systems_error +
                                                              MOAT_CLEARING * 1.5 * shaped * moat_error));
     // The cover contrast of the trades' shallow cumulus at the texel's own latitude: 0.92 of the
-    // shallow weight's error at most, and the organised patterns' share's (kSystems) times 0.08 x 0.7.
-    const float expected_contrast = cover_contrast(shallow, organised);
-    REQUIRE(contrast[k] == Approx(expected_contrast).epsilon(0).margin(shallow_error + kSystems));
+    // shallow weight's error at most, and the organised patterns' share's (kSystems) times 0.08 x 0.7;
+    // times the open cells' factor, whose weight takes the deck's error (its fray's, DECK_FRAY times the
+    // edge's kDensity / 0.148, through the presence's and the closed weight's smoothsteps, slopes 1.5 /
+    // 0.2 and 1.5 / 0.4), the cold sectors' (kSystems) and the hidden share's (the systems' error),
+    // each times 0.75.
+    const float expected_contrast = cover_contrast(shallow, organised, open * (1.0f - cells_hidden(types)));
+    const double deck_error = DECK_FRAY * kDensity / 0.148;
+    const double open_error = 0.75 * ((7.5 + 3.75) * deck_error + kSystems + systems_error);
+    REQUIRE(contrast[k] == Approx(expected_contrast).epsilon(0).margin(shallow_error + kSystems + open_error));
     // The remap's exp: its argument's error over the softness (kCoverRemap of the subtraction and
     // the contrast's product, divided by s) and the exp's own rounding, at the GPU's contrast.
     REQUIRE(covered[k] ==
@@ -214,6 +224,9 @@ TEST_CASE("density and coverage passes agree with the CPU twin", "[pass]") {
                 .epsilon(0)
                 .margin(2 * kCoverRemap / p.cover_softness + 4 * kUlp));
   }
+  // The cover has open cells' cloud (the cyclones' cold sectors), so the twin checks its dimming.
+  INFO("texels with open cells " << open_texels);
+  CHECK(open_texels > 0);
 }
 
 TEST_CASE("cover lies between 0 and 1 with the calibrated cloudy fraction", "[pass]") {

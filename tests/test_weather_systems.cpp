@@ -571,17 +571,18 @@ TEST_CASE("the organised patterns' clumps are brighter than sugar and the sea be
   // fully organised region, SHALLOW_CONTRAST x MOAT_CONTRAST.
   const float degree = float(M_PI) / 180.0f;
   const glm::vec3 strength = glsl::TRADE_PATTERN_STRENGTH;
-  float previous = glsl::cover_contrast(1.0f, 0.0f);  // sugar
+  float previous = glsl::cover_contrast(1.0f, 0.0f, 0.0f);  // sugar
   for (int k = 0; k < 3; ++k) {
     glsl::CloudTypes clump{};
     clump.cumulus = strength[k];
-    const float contrast = glsl::cover_contrast(glsl::shallow_trades_weight(clump, 15.0f * degree, 0.0f, 1.0f), 1.0f);
+    const float contrast =
+        glsl::cover_contrast(glsl::shallow_trades_weight(clump, 15.0f * degree, 0.0f, 1.0f), 1.0f, 0.0f);
     const float s2 = strength[k] * strength[k];
     CHECK(contrast == Approx(1.0f - (1.0f - s2) * (1.0f - glsl::SHALLOW_CONTRAST * glsl::MOAT_CONTRAST)).margin(1e-6));
     CHECK(contrast > previous);
     previous = contrast;
   }
-  CHECK(glsl::cover_contrast(1.0f, 1.0f) < glsl::cover_contrast(1.0f, 0.0f));
+  CHECK(glsl::cover_contrast(1.0f, 1.0f, 0.0f) < glsl::cover_contrast(1.0f, 0.0f, 0.0f));
   // The moat: the shallow regime's weight times the organised share away from the clumps, none
   // at a clump (its cumulus weight from 0.15) or under sugar; the density thinned by MOAT_CLEARING.
   CHECK(glsl::trade_moat(1.0f, 1.0f, 0.0f) == 1.0f);
@@ -1228,17 +1229,39 @@ TEST_CASE("pockets of open cells are separate, sharp and larger than 1e4 km2, an
   CHECK(glsl::with_pockets(glsl::vec2(0.8f, 0.1f), 0.0f) == glsl::vec2(0.8f, 0.1f));
 }
 
+TEST_CASE("open cells dim their cloud to about half the thick cloud's cover, decks' cores and fronts keep theirs",
+          "[fast][systems]") {
+  // The open cells' factor 1 - o (1 - OPEN_CELL_CLOUD_CONTRAST), times the trades' own.
+  CHECK(glsl::cover_contrast(0.0f, 0.0f, 1.0f) == Approx(glsl::OPEN_CELL_CLOUD_CONTRAST).margin(1e-7));
+  CHECK(glsl::cover_contrast(0.0f, 0.0f, 0.5f) ==
+        Approx(1.0f - 0.5f * (1.0f - glsl::OPEN_CELL_CLOUD_CONTRAST)).margin(1e-7));
+  CHECK(glsl::cover_contrast(1.0f, 0.0f, 1.0f) ==
+        Approx(glsl::SHALLOW_CONTRAST * glsl::OPEN_CELL_CLOUD_CONTRAST).margin(1e-7));
+  // A wall two noise spreads (0.15) above the threshold at the default softness 0.05: cover
+  // 1 - 0.9 exp(-0.25 x 3) = 0.575 against 1 - 0.9 exp(-3) = 0.955 without the cells.
+  const float threshold = 0.45f, softness = 0.05f, wall = threshold + 0.15f;
+  const float dimmed = glsl::contrasted_cover(wall, threshold, 1.0f, softness, glsl::cover_contrast(0.0f, 0.0f, 1.0f));
+  CHECK(dimmed == Approx(1.0 - 0.9 * std::exp(-0.75)).margin(1e-5));
+  CHECK(glsl::contrasted_cover(wall, threshold, 1.0f, softness, glsl::cover_contrast(0.0f, 0.0f, 0.0f)) ==
+        Approx(1.0 - 0.9 * std::exp(-3.0)).margin(1e-5));
+  // The weight is the open pattern's: all of a cold sector and of a deck's fringe, none of a deck's
+  // closed core, which stays as bright as before.
+  CHECK(glsl::cell_weights(0.0f, 1.0f).y == 1.0f);
+  CHECK(glsl::cell_weights(0.2f, 0.0f).y == Approx(0.5f).margin(1e-6));
+  CHECK(glsl::cell_weights(1.0f, 0.0f).y == 0.0f);
+}
+
 TEST_CASE("the trades' shallow regime shrinks the cloud's excess and leaves the systems and the mid-latitudes",
           "[fast][systems]") {
   // The contrast: 1 without the regime, SHALLOW_CONTRAST with all of it under sugar and
   // MOAT_CONTRAST of that between the organised patterns' clumps, linear between; a cloudy texel's
   // excess over the threshold shrinks by it, a clear texel keeps its density, and any contrast
   // keeps the order of the cloudy densities.
-  for (float organised : {0.0f, 0.5f, 1.0f}) CHECK(glsl::cover_contrast(0.0f, organised) == 1.0f);
-  CHECK(glsl::cover_contrast(1.0f, 0.0f) == Approx(glsl::SHALLOW_CONTRAST).margin(1e-7));
-  CHECK(glsl::cover_contrast(0.5f, 0.0f) == Approx(0.5f * (1.0f + glsl::SHALLOW_CONTRAST)).margin(1e-7));
-  CHECK(glsl::cover_contrast(1.0f, 1.0f) == Approx(glsl::SHALLOW_CONTRAST * glsl::MOAT_CONTRAST).margin(1e-7));
-  CHECK(glsl::cover_contrast(1.0f, 0.5f) ==
+  for (float organised : {0.0f, 0.5f, 1.0f}) CHECK(glsl::cover_contrast(0.0f, organised, 0.0f) == 1.0f);
+  CHECK(glsl::cover_contrast(1.0f, 0.0f, 0.0f) == Approx(glsl::SHALLOW_CONTRAST).margin(1e-7));
+  CHECK(glsl::cover_contrast(0.5f, 0.0f, 0.0f) == Approx(0.5f * (1.0f + glsl::SHALLOW_CONTRAST)).margin(1e-7));
+  CHECK(glsl::cover_contrast(1.0f, 1.0f, 0.0f) == Approx(glsl::SHALLOW_CONTRAST * glsl::MOAT_CONTRAST).margin(1e-7));
+  CHECK(glsl::cover_contrast(1.0f, 0.5f, 0.0f) ==
         Approx(glsl::SHALLOW_CONTRAST * 0.5f * (1.0f + glsl::MOAT_CONTRAST)).margin(1e-7));
   // The contrasted cover: 0 where clear, the plain cover where the contrast is 1 (to the bit), and
   // where it is below 1 the cover of the excess shrunk by it, still cloudy however small the
@@ -1291,7 +1314,7 @@ TEST_CASE("the trades' shallow regime shrinks the cloud's excess and leaves the 
   glsl::CloudTypes anvil = thin;
   anvil.anvil = 1.0f;
   CHECK(glsl::shallow_trades_weight(anvil, 5.0f * degree, 0.0f, 1.0f) == Approx(0.75f).margin(1e-6));
-  CHECK(glsl::cover_contrast(glsl::shallow_trades_weight(anvil, 5.0f * degree, 0.0f, 1.0f), 0.0f) ==
+  CHECK(glsl::cover_contrast(glsl::shallow_trades_weight(anvil, 5.0f * degree, 0.0f, 1.0f), 0.0f, 0.0f) ==
         Approx(0.31f).margin(1e-6));
   // Half a front's weight, half the regime; the belt falls monotonically from 26 to 33 degrees.
   front.frontal = 0.5f;

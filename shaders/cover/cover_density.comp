@@ -78,8 +78,10 @@ vec4 belts_at(vec3 origin, uint seed, float edge) {
 // The stratocumulus deck's strength at a layer's origin (x; from the bias's deck term `deck_term`
 // where there is a land/ocean mask, its edge frayed by the cover's noise `edge`) and the
 // convective cells' modulation there (y: the patterns drawn), with the cyclones' cold sectors
-// `cold` and texels texel_arc radians across.
-vec2 cells_at(vec3 origin, uint seed, float deck_term, float cold, float texel_arc, float edge) {
+// `cold` and texels texel_arc radians across; z the open cells' weight, by which their cloud is
+// dimmed (cover_density.glsl's cover_contrast), drawn or not (the decks' pockets only where the
+// open pattern is drawn, as their thinning).
+vec3 cells_at(vec3 origin, uint seed, float deck_term, float cold, float texel_arc, float edge) {
   float deck = frayed_deck(
       deck_strength(origin, origin_latitude(origin), seed, deck_term, u_surface_weight), edge);
   vec2 weights = cell_weights(deck, cold);
@@ -97,7 +99,7 @@ vec2 cells_at(vec3 origin, uint seed, float deck_term, float cold, float texel_a
 #if OPEN_CELLS_DRAWN
   m += open_cell_modulation(origin, weights.y, seed, texel_arc);
 #endif
-  return vec2(deck, u_systems.cells * m);
+  return vec3(deck, u_systems.cells * m, u_systems.cells * weights.y);
 }
 
 void main() {
@@ -146,13 +148,9 @@ void main() {
     float cyclones = cyclone_systems(origin, u_systems, edge);
     float systems = max(cyclones, belts);
     // The cells as the belts, each layer its own, in the cold sectors of the cyclones as drawn.
-    // Only the open cells and the streets take the cold sectors: none to find where they are not
-    // drawn.
-#if OPEN_CELLS_DRAWN || STREETS_DRAWN
+    // The cold sectors' open cells dim their cloud whether the cover resolves them or not
+    // (cover_contrast), so they are found at any size.
     vec2 cold_sector_air = cold_air(origin, u_systems);
-#else
-    vec2 cold_sector_air = vec2(0.0f);
-#endif
     vec4 curl = imageLoad(curl_field, texel);
 #if STREETS_DRAWN
     // The streets take their share of the cold air from the open cells, and lie along the flow's
@@ -164,7 +162,7 @@ void main() {
     float cold = cold_sector_air.x;
     float streets = 0.0f;
 #endif
-    vec2 cells = cells_at(older_origin, u_systems.seed, surface_terms.x, cold, texel_arc, edge);
+    vec3 cells = cells_at(older_origin, u_systems.seed, surface_terms.x, cold, texel_arc, edge);
 #if MOVING_LAYERS
     cells = mix(cells, cells_at(normalize(young_warped), u_young_systems_seed, surface_terms.x, cold, texel_arc, edge),
                 u_young_share);
@@ -191,7 +189,7 @@ void main() {
                    (cells.y + streets) * (1.0f - cells_hidden(types))),
         trade_moat(shallow, organised, types.cumulus));
     imageStore(density_field, texel, vec4(density, 0.0f, 0.0f, 0.0f));
-    float contrast = cover_contrast(shallow, organised);
+    float contrast = cover_contrast(shallow, organised, cells.z * (1.0f - cells_hidden(types)));
     imageStore(cover_contrast_field, texel, vec4(contrast, 0.0f, 0.0f, 0.0f));
     // The cloud's top by its types (the remap clears it where the texel stays clear).
     imageStore(cloud_top_field, texel, vec4(cloud_top_km(types, latitude, cyclonic, deck), 0.0f, 0.0f, 0.0f));

@@ -96,11 +96,25 @@ float with_moats(float density, float moat) { return density * (1.0f - MOAT_CLEA
 // apart by clear sky): the shallow cloud there keeps MOAT_CONTRAST of sugar's contrast, so
 // that a spread above the threshold it has cover 1 - 0.9 exp(-0.024 x 0.074 / 0.05) = 0.13 and
 // the clumps stand out. `organised` in [0, 1]: the organised patterns' share at the texel.
+// Open cells (`open_weight` in [0, 1]: the open pattern's weight where nothing deep hides it,
+// weather_systems.glsl's cell_weights) dim the cloud by a factor of their own, 1 - o (1 -
+// OPEN_CELL_CLOUD_CONTRAST): their walls are rings of cumulus a few km wide around clear cells
+// 20-80 km across (Agee et al. 1973; Wood and Hartmann 2006, "Spatial variability of liquid water
+// path in marine low cloud", J. Climate 19: cloud fraction about 0.5-0.6 in open cells against
+// 0.9 in closed ones), so that a 10-20 km texel on a wall is partly clear and its cumulus
+// optically medium (tau 5-15: two-stream reflectance x / (1 + x), x = 0.19 tau, 0.5-0.7 against
+// 0.9 for a frontal band's tau 50). Its cover is about half the thick cloud's, not the saturated 1
+// that the walls' density step gives: with 0.25 a wall's excess of 0.15 (two noise spreads) has
+// cover 1 - 0.9 exp(-0.25 x 0.15 / 0.05) = 0.57, one of 0.3 has 0.80, where without it they
+// have 0.96 and 1.00. Resolved or not, the open cells' cloud is that dim: the factor holds at any
+// size.
 const float SHALLOW_CONTRAST = 0.08f;
 const float MOAT_CONTRAST = 0.3f;
-float cover_contrast(float shallow_weight, float organised) {
+const float OPEN_CELL_CLOUD_CONTRAST = 0.25f;
+float cover_contrast(float shallow_weight, float organised, float open_weight) {
   float shallow = SHALLOW_CONTRAST * (1.0f - (1.0f - MOAT_CONTRAST) * clamp(organised, 0.0f, 1.0f));
-  return 1.0f - clamp(shallow_weight, 0.0f, 1.0f) * (1.0f - shallow);
+  float trades = 1.0f - clamp(shallow_weight, 0.0f, 1.0f) * (1.0f - shallow);
+  return trades * (1.0f - clamp(open_weight, 0.0f, 1.0f) * (1.0f - OPEN_CELL_CLOUD_CONTRAST));
 }
 
 // The cover of a cloudy texel just above the threshold: cloud boundaries are steps of optical
