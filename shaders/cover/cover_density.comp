@@ -189,7 +189,10 @@ void main() {
                    (cells.y + streets) * (1.0f - cells_hidden(types))),
         trade_moat(shallow, organised, types.cumulus));
     imageStore(density_field, texel, vec4(density, 0.0f, 0.0f, 0.0f));
-    float contrast = cover_contrast(shallow, organised, cells.z * (1.0f - cells_hidden(types)));
+    // The open cells' cloud is dim (cover_contrast), and so is the streets' (rows of cumulus over
+    // as much clear sea): the whole cold sector's, streets drawn or not.
+    float open_cloud = max(cells.z, u_systems.cells * cold_sector_air.x);
+    float contrast = cover_contrast(shallow, organised, open_cloud * (1.0f - cells_hidden(types)));
     imageStore(cover_contrast_field, texel, vec4(contrast, 0.0f, 0.0f, 0.0f));
     // The cloud's top by its types (the remap clears it where the texel stays clear).
     imageStore(cloud_top_field, texel, vec4(cloud_top_km(types, latitude, cyclonic, deck), 0.0f, 0.0f, 0.0f));
