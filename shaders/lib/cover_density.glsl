@@ -102,7 +102,7 @@ float with_moats(float density, float moat) { return density * (1.0f - MOAT_CLEA
 // 20-80 km across (Agee et al. 1973; Wood and Hartmann 2006, "Spatial variability of liquid water
 // path in marine low cloud", J. Climate 19: cloud fraction about 0.5-0.6 in open cells against
 // 0.9 in closed ones), so that a 10-20 km texel on a wall is partly clear and its cumulus
-// optically medium (tau 5-15: two-stream reflectance x / (1 + x), x = 0.19 tau, 0.5-0.7 against
+// optically medium (tau 5-15: two-stream reflectance x / (1 + x), x = 0.19 tau, 0.5-0.75 against
 // 0.9 for a frontal band's tau 50). Its cover is about half the thick cloud's, not the saturated 1
 // that the walls' density step gives: with 0.25 a wall's excess of 0.15 (two noise spreads) has
 // cover 1 - 0.9 exp(-0.25 x 0.15 / 0.05) = 0.57, one of 0.3 has 0.80, where without it they
