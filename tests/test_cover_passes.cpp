@@ -167,7 +167,8 @@ TEST_CASE("density and coverage passes agree with the CPU twin", "[pass]") {
     const vec3 origin = normalize(vec3(warp[k]));
     const float latitude = portable_asin(clamp(origin.z, -1.0f, 1.0f));
     const float cyclones = cyclone_systems(origin, systems, system_edge(noise));
-    const vec4 belts = belt_fields(origin, latitude, systems, systems.seed, system_edge(noise));
+    const vec4 regimes = belt_regimes(origin, latitude, systems, systems.seed);
+    const vec4 belts = belt_fields(origin, latitude, systems, systems.seed, system_edge(noise), regimes);
     const float systems_value = std::max(cyclones, belt_cloud(belts));
     const float shaped = shaped_density(noise, curl[k].w, p.cyclone_cloudiness, 0.0f, 0.0f);
     // The convective cells (none resolved by 16 texels a face: the modulation is 0 here).
@@ -182,7 +183,7 @@ TEST_CASE("density and coverage passes agree with the CPU twin", "[pass]") {
     const CloudTypes types = cloud_types(cyclones, belts);
     const float here = portable_asin(clamp(vec3(identity[k]).z, -1.0f, 1.0f));
     const float shallow = shallow_trades_weight(types, here, deck_organisation(deck), systems.shallow_trades);
-    const float organised = organised_trades(origin, latitude, systems.seed, systems.trade_cumulus);
+    const float organised = organised_trades(regimes, latitude, systems.trade_cumulus);
     const float expected =
         with_moats(with_cells(with_systems(shaped, systems_value), cells * (1.0f - cells_hidden(types))),
                    trade_moat(shallow, organised, types.cumulus));

@@ -613,6 +613,11 @@ TEST_CASE("weather_systems.glsl on the GPU agrees with the CPU", "[probe]") {
     // cell clouds (gravel at 60 cells a radius, the others at fewer), the warped point's Perlin
     // values moving it by their rounding times 0.04 at most.
     cases.push_back({arguments(PROBE_TRADE_REGIMES, vec4(0, seed, 0, 0), vec4(q, 0)), 2 * 12.5f * kFbm});
+    // The same where the belts draw them (each a quarter elsewhere: exact), with the trade cumulus'
+    // strength 1 or 0.
+    cases.push_back({arguments(PROBE_BELT_REGIMES, vec4(0, seed, 0, 0), vec4(q, 0), vec4(0.0f),
+                               vec4(0, 0, k % 3 == 0 ? 0.0f : 1.0f, 0)),
+                     2 * 12.5f * kFbm});
     // The displacement: as the convective warp's, the amount up to 0.02; the belt a smoothstep of
     // the latitude (slope 1.5 / 0.08 on the portable arcsine's error, 5.2e-7: tests/tolerances.hpp).
     cases.push_back({arguments(PROBE_TANGENT_WARP, vec4(r(5.0f, 60.0f), seed, 0, r(0.0f, 0.02f)), vec4(q, 0)),

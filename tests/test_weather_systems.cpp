@@ -438,7 +438,8 @@ TEST_CASE("gravel is many small separate clumps, and the trades' cumulus none at
   CHECK(longest < 220.0);
   for (float at : {0.0f, 1.2f}) {
     const vec3 p(std::cos(at), 0.0f, std::sin(at));
-    for (float edge : {-1.0f, 1.0f}) CHECK(glsl::trade_cumulus(p, at, seed, edge) == 0.0f);
+    for (float edge : {-1.0f, 1.0f})
+      CHECK(glsl::trade_cumulus(p, at, seed, edge, glsl::trade_regimes(p, seed, 2)) == 0.0f);
   }
 }
 
@@ -463,9 +464,9 @@ TEST_CASE("the trades' four patterns each hold about a quarter of the trades and
       }
       REQUIRE(w.x + w.y + w.z + w.w == Approx(1.0f).margin(1e-6));
       const float latitude = std::asin(p.z), belt = glsl::trade_cumulus_belt(latitude);
-      CHECK(glsl::organised_trades(p, latitude, seed, 1.0f) == Approx(belt * (1.0f - w.x)).margin(1e-6));
-      CHECK(glsl::organised_trades(p, latitude, seed, 0.5f) == Approx(0.5f * belt * (1.0f - w.x)).margin(1e-6));
-      CHECK(glsl::organised_trades(p, latitude, seed, 0.0f) == 0.0f);
+      CHECK(glsl::organised_trades(w, latitude, 1.0f) == Approx(belt * (1.0f - w.x)).margin(1e-6));
+      CHECK(glsl::organised_trades(w, latitude, 0.5f) == Approx(0.5f * belt * (1.0f - w.x)).margin(1e-6));
+      CHECK(glsl::organised_trades(w, latitude, 0.0f) == 0.0f);
       if (std::max(std::max(w.x, w.y), std::max(w.z, w.w)) < 0.9f) ++blended;
     }
   }

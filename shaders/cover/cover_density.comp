@@ -71,8 +71,13 @@ uniform uint u_young_systems_seed;  // the younger layer's belts (u_systems.seed
 // The geocentric latitude (radians) of a layer's origin, a unit vector.
 float origin_latitude(vec3 origin) { return portable_asin(clamp(origin.z, -1.0f, 1.0f)); }
 
-vec4 belts_at(vec3 origin, uint seed, float edge) {
-  return belt_fields(origin, origin_latitude(origin), u_systems, seed, edge);
+// The belts' fields at a layer's origin (belt_fields) and in `organised` the trades' organised share
+// there (organised_trades), from one evaluation of the trades' patterns.
+vec4 belts_at(vec3 origin, uint seed, float edge, OUT(float) organised) {
+  float latitude = origin_latitude(origin);
+  vec4 regimes = belt_regimes(origin, latitude, u_systems, seed);
+  organised = organised_trades(regimes, latitude, u_systems.trade_cumulus);
+  return belt_fields(origin, latitude, u_systems, seed, edge, regimes);
 }
 
 // The stratocumulus deck's strength at a layer's origin (x; from the bias's deck term `deck_term`
@@ -136,11 +141,15 @@ void main() {
     // blended as it.
     float edge = system_edge(noise);
     vec3 origin = normalize(warped);
-    vec4 fields = belts_over_surface(belts_at(origin, u_systems.seed, edge), surface);
+    float organised;  // the trades' organised share, blended between the layers as the belts
+    vec4 fields = belts_over_surface(belts_at(origin, u_systems.seed, edge, organised), surface);
     float belts = belt_cloud(fields);
     vec3 older_origin = origin;
 #if MOVING_LAYERS
-    vec4 young_fields = belts_over_surface(belts_at(normalize(young_warped), u_young_systems_seed, edge), surface);
+    float young_organised;
+    vec4 young_fields =
+        belts_over_surface(belts_at(normalize(young_warped), u_young_systems_seed, edge, young_organised), surface);
+    organised = layer_blend(organised, young_organised, u_young_share);
     belts = layer_blend(belts, belt_cloud(young_fields), u_young_share);
     fields = mix(fields, young_fields, u_young_share);
     origin = normalize(mix(warped, young_warped, u_young_share));
@@ -175,13 +184,6 @@ void main() {
     // the systems, and dimmer and sparser between the organised patterns' clumps (each layer's
     // patterns at its own origin, blended as the belts).
     float shallow = shallow_trades_weight(types, latitude, deck, u_systems.shallow_trades);
-    float organised = organised_trades(older_origin, origin_latitude(older_origin), u_systems.seed, u_systems.trade_cumulus);
-#if MOVING_LAYERS
-    vec3 young_origin = normalize(young_warped);
-    organised = layer_blend(organised, organised_trades(young_origin, origin_latitude(young_origin), u_young_systems_seed,
-                                             u_systems.trade_cumulus),
-                            u_young_share);
-#endif
     // The cells and streets are the boundary layer's: none show through a front's or a convective
     // system's deep cloud.
     float density = with_moats(

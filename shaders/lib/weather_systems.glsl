@@ -382,13 +382,19 @@ float trade_cumulus_belt(float latitude) {
   return smoothstep(0.06f, 0.14f, a) * (1.0f - smoothstep(0.45f, 0.58f, a));
 }
 
-// The organised patterns' share of the trades' shallow cloud at p, of geocentric `latitude`: 1
-// less sugar's weight, in the trade cumulus' belt, times their strength (--trade-cumulus; without
-// their clumps nothing organises the cloud), in [0, 1] (cover_density.glsl's cover_contrast dims
-// the cloud between the clumps).
-float organised_trades(vec3 p, float latitude, uint seed, float strength) {
-  float weight = clamp(strength, 0.0f, 1.0f) * trade_cumulus_belt(latitude);
-  return weight * (1.0f - trade_regimes(p, seed, SKIPPABLE(weight > 0.0f, 2)).x);
+// The organised patterns' share of the trades' shallow cloud at a point of geocentric `latitude`
+// with the patterns' weights `regimes` there (trade_regimes): 1 less sugar's weight, in the trade
+// cumulus' belt, times their strength (--trade-cumulus; without their clumps nothing organises
+// the cloud), in [0, 1] (cover_density.glsl's cover_contrast dims the cloud between the clumps).
+float organised_trades(vec4 regimes, float latitude, float strength) {
+  return clamp(strength, 0.0f, 1.0f) * trade_cumulus_belt(latitude) * (1.0f - regimes.x);
+}
+
+// The trades' patterns' weights at p where the belts draw them (trade_regimes; each a quarter
+// elsewhere, where nothing uses them: outside the trade cumulus' belt or without its strength), so
+// that the clumps (trade_cumulus) and the organised share (organised_trades) take one evaluation.
+vec4 belt_regimes(vec3 p, float latitude, IN(WeatherSystems) systems, uint seed) {
+  return trade_regimes(p, seed, SKIPPABLE(systems.trade_cumulus > 0.0f && trade_cumulus_belt(latitude) > 0.0f, 2));
 }
 
 // The clumps' strength by pattern, which lifts their density (the belts' weight times it) and
@@ -400,12 +406,12 @@ const vec3 TRADE_PATTERN_STRENGTH = vec3(0.45f, 0.8f, 1.0f);  // gravel, fish, f
 // The trades' organised cumulus at p, in [0, 1]: each pattern's clumps by its weight and strength,
 // in the trade cumulus' belt (trade_cumulus_belt), gravel's patchy where the cover's noise is low.
 // Sugar draws no clumps: its cloud is the noise's dim shallow cloud (cover_density.glsl's
-// cover_contrast). A pattern absent from a group of lanes costs no search.
-float trade_cumulus(vec3 p, float latitude, uint seed, float edge) {
+// cover_contrast). A pattern absent from a group of lanes costs no search. `regimes`: the patterns'
+// weights at p (trade_regimes, or belt_regimes).
+float trade_cumulus(vec3 p, float latitude, uint seed, float edge, vec4 regimes) {
   float belt = trade_cumulus_belt(latitude);
   // Gravel's fields are patchy where the noise is low; flowers and fish fill their regions.
   float patchy = smoothstep(-0.4f, 0.2f, edge);
-  vec4 regimes = trade_regimes(p, seed, SKIPPABLE(belt > 0.0f, 2));
   float gravel = gravel_clumps(p, seed, edge, SKIPPABLE(belt > 0.0f && regimes.y > 0.0f, NEAR_CELLS));
   float fish = fish_clumps(p, seed, edge, SKIPPABLE(belt > 0.0f && regimes.z > 0.0f, NEAR_CELLS));
   float flowers = flower_clumps(p, seed, edge, SKIPPABLE(belt > 0.0f && regimes.w > 0.0f, NEAR_CELLS));
@@ -799,10 +805,12 @@ float cyclone_systems(vec3 p, IN(WeatherSystems) systems, float edge) {
 // (thick cloud), trade cumulus at 0.6, cirrus and the clusters' anvils at 0.35 (thin: they rise
 // little above the threshold and stay grey); x the clusters, y the cumulus, z the cirrus, and w the
 // anvils' own field (in [0, 1], unweighted: part of z, told apart for their cloud type).
+// `regimes`: the trades' patterns' weights at p (belt_regimes).
 const vec3 BELT_WEIGHTS = vec3(1.0f, 0.6f, 0.35f);
-vec4 belt_fields(vec3 p, float latitude, IN(WeatherSystems) systems, uint seed, float edge) {
+vec4 belt_fields(vec3 p, float latitude, IN(WeatherSystems) systems, uint seed, float edge, vec4 regimes) {
   vec4 fields = vec4(0.0f);
-  if (systems.trade_cumulus > 0.0f) fields.y = BELT_WEIGHTS.y * systems.trade_cumulus * trade_cumulus(p, latitude, seed, edge);
+  if (systems.trade_cumulus > 0.0f)
+    fields.y = BELT_WEIGHTS.y * systems.trade_cumulus * trade_cumulus(p, latitude, seed, edge, regimes);
   if (systems.cirrus > 0.0f) fields.z = BELT_WEIGHTS.z * systems.cirrus * cirrus_streaks(p, latitude, seed);
   if (systems.itcz > 0.0f) {
     vec2 itcz = systems.itcz * itcz_systems(p, latitude, systems.itcz_latitude, seed, edge);
@@ -841,7 +849,7 @@ CloudTypes cloud_types(float cyclones, vec4 fields) {
 // behind the fronts and on the decks, where nothing covers the boundary layer (Agee et al. 1973).
 float cells_hidden(IN(CloudTypes) types) { return clamp(max(types.frontal, types.deep_convection), 0.0f, 1.0f); }
 float belt_systems(vec3 p, float latitude, IN(WeatherSystems) systems, uint seed, float edge) {
-  return belt_cloud(belt_fields(p, latitude, systems, seed, edge));
+  return belt_cloud(belt_fields(p, latitude, systems, seed, edge, belt_regimes(p, latitude, systems, seed)));
 }
 
 // All systems at the unit direction p of geocentric latitude `latitude` (radians), with the cover's

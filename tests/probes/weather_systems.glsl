@@ -39,9 +39,10 @@ const int PROBE_CELL_BORDERS = 26;           // cell_borders(p * OPEN_CELLS, p, 
                                              // open_cell_wall(a) in w
 const int PROBE_TRADE_REGIMES = 27;          // trade_regimes(p, uint(b), 2)
 const int PROBE_TRADE_CLUMPS = 28;           // gravel_clumps(p, uint(b), a), flower_clumps, fish_clumps (all cells
-                                             // searched), organised_trades(p, latitude, uint(b), c)
+                                             // searched), organised_trades(trade_regimes(p, uint(b), 2), latitude, c)
 const int PROBE_TANGENT_WARP = 29;           // tangent_warp(p, a, c, uint(b), FLOWERS_WARP_LAYER, 2),
                                              // trade_cumulus_belt(latitude) in w
+const int PROBE_BELT_REGIMES = 31;           // belt_regimes(p, latitude, systems (trade cumulus x[3].z), uint(b))
 const int PROBE_TRADE_CLUMP = 30;            // trade_clump(p, a, uint(b), FLOWERS_LAYER, (0.2, 0.45), c, x[3].x, all
                                              // cells), presence_everywhere(c) in yzw
 #ifndef __cplusplus
@@ -107,7 +108,8 @@ vec4 probe_weather_systems(mat4 x) {
                 presence_everywhere(x[0].w));
   if (f == PROBE_TRADE_CLUMPS)
     return vec4(gravel_clumps(p, seed, x[0].y, NEIGHBOUR_CELLS), flower_clumps(p, seed, x[0].y, NEIGHBOUR_CELLS),
-                fish_clumps(p, seed, x[0].y, NEIGHBOUR_CELLS), organised_trades(p, latitude, seed, x[0].w));
+                fish_clumps(p, seed, x[0].y, NEIGHBOUR_CELLS),
+                organised_trades(trade_regimes(p, seed, 2), latitude, x[0].w));
   if (f == PROBE_FRAYED_DECK) {
     float deck = frayed_deck(x[0].y, x[0].z);
     return vec4(deck, deck_presence(deck), deck_organisation(x[0].y), 0.0f);
@@ -139,7 +141,7 @@ vec4 probe_weather_systems(mat4 x) {
   if (f == PROBE_CELL_WEIGHTS)
     return vec4(cell_weights(x[0].y, x[0].z), deck_presence(x[0].y), cells_resolved(x[0].z * 100.0f, x[0].w));
   if (f == PROBE_BELTS)
-    return vec4(itcz_systems(p, latitude, x[0].y, seed, x[0].w).x, trade_cumulus(p, latitude, seed, x[0].w),
+    return vec4(itcz_systems(p, latitude, x[0].y, seed, x[0].w).x, trade_cumulus(p, latitude, seed, x[0].w, trade_regimes(p, seed, 2)),
                 cirrus_streaks(p, latitude, seed), itcz_systems(p, latitude, x[0].y, seed, x[0].w).y);
   WeatherSystems systems;
   systems.cyclones[0] = probe_cyclone(x);
@@ -156,8 +158,12 @@ vec4 probe_weather_systems(mat4 x) {
   if (f == PROBE_COLD)
     return vec4(cold_sector(vec2(x[0].y, x[0].w)), cold_sectors(p, systems),
                 cell_modulation(p, vec2(x[3].z, x[3].w), seed, 1.0e-3f), cold_air(p, systems).y);
+  if (f == PROBE_BELT_REGIMES) {
+    systems.trade_cumulus = x[3].z;
+    return belt_regimes(p, latitude, systems, seed);
+  }
   if (f == PROBE_BELT_FIELDS) {
-    return belt_fields(p, latitude, systems, seed, x[0].w);
+    return belt_fields(p, latitude, systems, seed, x[0].w, belt_regimes(p, latitude, systems, seed));
   }
   return vec4(weather_density(p, latitude, systems, x[0].w), cyclone_systems(p, systems, x[0].w),
               belt_systems(p, latitude, systems, seed + 1u, x[0].w), 0.0f);  // PROBE_WEATHER_DENSITY
