@@ -166,7 +166,7 @@ TEST_CASE("density and coverage passes agree with the CPU twin", "[pass]") {
     // The cyclones and the belts at the air's origin (cover_density.comp; the steady flow).
     const vec3 origin = normalize(vec3(warp[k]));
     const float latitude = portable_asin(clamp(origin.z, -1.0f, 1.0f));
-    const float cyclones = cyclone_systems(origin, systems, system_edge(noise));
+    const float cyclones = cyclone_systems(origin, systems, cyclones_near(origin, systems), system_edge(noise));
     const vec4 regimes = belt_regimes(origin, latitude, systems, systems.seed);
     const vec4 belts = belt_fields(origin, latitude, systems, systems.seed, system_edge(noise), regimes);
     const float systems_value = std::max(cyclones, belt_cloud(belts));

@@ -978,7 +978,7 @@ TEST_CASE("the cold air furthest behind the front is in streets and the rest in 
   for (float behind : {0.8f, 1.2f, 1.55f, 2.0f, 2.3f}) {
     const vec2 xy = half_way - behind * ahead;
     const vec3 p = glm::normalize(c.centre + c.radius * (xy.x * c.east + xy.y * c.pole));
-    const vec2 air = glsl::cold_air(p, systems);
+    const vec2 air = glsl::cold_air(p, systems, glsl::cyclones_near(p, systems));
     const vec2 frame = glsl::cyclone_frame(p, c);
     INFO("behind " << behind);
     CHECK(air.x == Approx(0.8f * glsl::cold_sector(frame)).margin(1e-6));
@@ -1012,8 +1012,8 @@ TEST_CASE("the loops over the cyclones near a point give what loops over every c
         air = vec2(c.strength * glsl::cold_sector(xy), glsl::street_share(xy));
     }
     INFO("point " << k);
-    REQUIRE(glsl::cyclone_systems(q, systems, edge) == cloud * glsl::frontal_reach(q));
-    REQUIRE(glsl::cold_air(q, systems) == air);
+    REQUIRE(glsl::cyclone_systems(q, systems, glsl::cyclones_near(q, systems), edge) == cloud * glsl::frontal_reach(q));
+    REQUIRE(glsl::cold_air(q, systems, glsl::cyclones_near(q, systems)) == air);
     const int near = glm::bitCount(glsl::cyclones_near(q, systems));
     near_total += near;
     points_near += near > 0 ? 1 : 0;

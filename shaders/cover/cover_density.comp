@@ -154,12 +154,13 @@ void main() {
     fields = mix(fields, young_fields, u_young_share);
     origin = normalize(mix(warped, young_warped, u_young_share));
 #endif
-    float cyclones = cyclone_systems(origin, u_systems, edge);
+    uint near = cyclones_near(origin, u_systems);  // for the commas and the cold sectors alike
+    float cyclones = cyclone_systems(origin, u_systems, near, edge);
     float systems = max(cyclones, belts);
     // The cells as the belts, each layer its own, in the cold sectors of the cyclones as drawn.
     // The cold sectors' open cells dim their cloud whether the cover resolves them or not
     // (cover_contrast), so they are found at any size.
-    vec2 cold_sector_air = cold_air(origin, u_systems);
+    vec2 cold_sector_air = cold_air(origin, u_systems, near);
     vec4 curl = imageLoad(curl_field, texel);
 #if STREETS_DRAWN
     // The streets take their share of the cold air from the open cells, and lie along the flow's

@@ -614,10 +614,11 @@ float cold_sector(vec2 xy) {
 float street_share(vec2 xy) { return smoothstep(1.3f, 1.8f, behind_cold_front(xy)); }
 
 // The cyclones' cold air at p: x the largest cold sector, by each one's strength; y the share of
-// its air in streets (street_share).
-vec2 cold_air(vec3 p, IN(WeatherSystems) systems) {
+// its air in streets (street_share). `near`: cyclones_near(p, systems), which cyclone_systems at
+// the same point takes too.
+vec2 cold_air(vec3 p, IN(WeatherSystems) systems, uint near) {
   vec2 air = vec2(0.0f);
-  for (uint near = cyclones_near(p, systems); near != 0u; near &= near - 1u) {
+  for (; near != 0u; near &= near - 1u) {
     int i = findLSB(near);
     vec2 xy = cyclone_frame(p, systems.cyclones[i]);
     if (dot(xy, xy) < 16.0f) {
@@ -627,7 +628,7 @@ vec2 cold_air(vec3 p, IN(WeatherSystems) systems) {
   }
   return air;
 }
-float cold_sectors(vec3 p, IN(WeatherSystems) systems) { return cold_air(p, systems).x; }
+float cold_sectors(vec3 p, IN(WeatherSystems) systems) { return cold_air(p, systems, cyclones_near(p, systems)).x; }
 
 // Cloud streets: rows of cumulus along the low-level wind over horizontal roll vortices in the
 // boundary layer (Etling and Brown 1993, "Roll vortices in the planetary boundary layer: a
@@ -794,9 +795,10 @@ float cell_modulation(vec3 p, vec2 weights, uint seed, float texel_arc) {
 float frontal_reach(vec3 p) { return smoothstep(0.208f, 0.3746f, abs(p.z)); }
 
 // The cyclones' cloud at p: the largest of their commas, as far as fronts reach (frontal_reach).
-float cyclone_systems(vec3 p, IN(WeatherSystems) systems, float edge) {
+// `near`: cyclones_near(p, systems).
+float cyclone_systems(vec3 p, IN(WeatherSystems) systems, uint near, float edge) {
   float cloud = 0.0f;
-  for (uint near = cyclones_near(p, systems); near != 0u; near &= near - 1u)
+  for (; near != 0u; near &= near - 1u)
     cloud = max(cloud, cyclone_cloud(p, systems.cyclones[findLSB(near)], edge));
   return cloud * frontal_reach(p);
 }
@@ -855,7 +857,8 @@ float belt_systems(vec3 p, float latitude, IN(WeatherSystems) systems, uint seed
 // All systems at the unit direction p of geocentric latitude `latitude` (radians), with the cover's
 // noise as `edge` in [-1, 1] and the belts' noise of systems.seed: the larger of the two fields.
 float weather_density(vec3 p, float latitude, IN(WeatherSystems) systems, float edge) {
-  return max(cyclone_systems(p, systems, edge), belt_systems(p, latitude, systems, systems.seed, edge));
+  return max(cyclone_systems(p, systems, cyclones_near(p, systems), edge),
+             belt_systems(p, latitude, systems, systems.seed, edge));
 }
 
 #endif

@@ -157,7 +157,8 @@ vec4 probe_weather_systems(mat4 x) {
                 neighbour_feature(ivec3(floor(p * CLOSED_CELLS)), int(x[0].w), noise_key(seed, CLOSED_CELLS_LAYER)));
   if (f == PROBE_COLD)
     return vec4(cold_sector(vec2(x[0].y, x[0].w)), cold_sectors(p, systems),
-                cell_modulation(p, vec2(x[3].z, x[3].w), seed, 1.0e-3f), cold_air(p, systems).y);
+                cell_modulation(p, vec2(x[3].z, x[3].w), seed, 1.0e-3f),
+                cold_air(p, systems, cyclones_near(p, systems)).y);
   if (f == PROBE_BELT_REGIMES) {
     systems.trade_cumulus = x[3].z;
     return belt_regimes(p, latitude, systems, seed);
@@ -165,6 +166,6 @@ vec4 probe_weather_systems(mat4 x) {
   if (f == PROBE_BELT_FIELDS) {
     return belt_fields(p, latitude, systems, seed, x[0].w, belt_regimes(p, latitude, systems, seed));
   }
-  return vec4(weather_density(p, latitude, systems, x[0].w), cyclone_systems(p, systems, x[0].w),
+  return vec4(weather_density(p, latitude, systems, x[0].w), cyclone_systems(p, systems, cyclones_near(p, systems), x[0].w),
               belt_systems(p, latitude, systems, seed + 1u, x[0].w), 0.0f);  // PROBE_WEATHER_DENSITY
 }
