@@ -71,24 +71,22 @@ uniform uint u_young_systems_seed;  // the younger layer's belts (u_systems.seed
 // The geocentric latitude (radians) of a layer's origin, a unit vector.
 float origin_latitude(vec3 origin) { return portable_asin(clamp(origin.z, -1.0f, 1.0f)); }
 
-// The belts' fields at a layer's origin (belt_fields) and in `organised` the trades' organised share
-// there (organised_trades), from one evaluation of the trades' patterns.
-vec4 belts_at(vec3 origin, uint seed, float edge, OUT(float) organised) {
-  float latitude = origin_latitude(origin);
+// The belts' fields at a layer's origin of geocentric `latitude` (belt_fields) and in `organised`
+// the trades' organised share there (organised_trades), from one evaluation of the trades' patterns.
+vec4 belts_at(vec3 origin, float latitude, uint seed, float edge, OUT(float) organised) {
   vec4 regimes = belt_regimes(origin, latitude, u_systems, seed);
   organised = organised_trades(regimes, latitude, u_systems.trade_cumulus);
   return belt_fields(origin, latitude, u_systems, seed, edge, regimes);
 }
 
-// The stratocumulus deck's strength at a layer's origin (x; from the bias's deck term `deck_term`
+// The stratocumulus deck's strength at a layer's origin of geocentric `latitude` (x; from the bias's deck term `deck_term`
 // where there is a land/ocean mask, its edge frayed by the cover's noise `edge`) and the
 // convective cells' modulation there (y: the patterns drawn), with the cyclones' cold sectors
 // `cold` and texels texel_arc radians across; z the open cells' weight, by which their cloud is
 // dimmed (cover_density.glsl's cover_contrast), drawn or not (the decks' pockets only where the
 // open pattern is drawn, as their thinning).
-vec3 cells_at(vec3 origin, uint seed, float deck_term, float cold, float texel_arc, float edge) {
-  float deck = frayed_deck(
-      deck_strength(origin, origin_latitude(origin), seed, deck_term, u_surface_weight), edge);
+vec3 cells_at(vec3 origin, float latitude, uint seed, float deck_term, float cold, float texel_arc, float edge) {
+  float deck = frayed_deck(deck_strength(origin, latitude, seed, deck_term, u_surface_weight), edge);
   vec2 weights = cell_weights(deck, cold);
   float m = 0.0f;
 #if OPEN_CELLS_DRAWN
@@ -141,14 +139,17 @@ void main() {
     // blended as it.
     float edge = system_edge(noise);
     vec3 origin = normalize(warped);
+    float older_latitude = origin_latitude(origin);  // each layer's origin's, for its belts and its cells
     float organised;  // the trades' organised share, blended between the layers as the belts
-    vec4 fields = belts_over_surface(belts_at(origin, u_systems.seed, edge, organised), surface);
+    vec4 fields = belts_over_surface(belts_at(origin, older_latitude, u_systems.seed, edge, organised), surface);
     float belts = belt_cloud(fields);
     vec3 older_origin = origin;
 #if MOVING_LAYERS
+    vec3 young_origin = normalize(young_warped);
+    float young_latitude = origin_latitude(young_origin);
     float young_organised;
-    vec4 young_fields =
-        belts_over_surface(belts_at(normalize(young_warped), u_young_systems_seed, edge, young_organised), surface);
+    vec4 young_fields = belts_over_surface(
+        belts_at(young_origin, young_latitude, u_young_systems_seed, edge, young_organised), surface);
     organised = layer_blend(organised, young_organised, u_young_share);
     belts = layer_blend(belts, belt_cloud(young_fields), u_young_share);
     fields = mix(fields, young_fields, u_young_share);
@@ -172,9 +173,10 @@ void main() {
     float cold = cold_sector_air.x;
     float streets = 0.0f;
 #endif
-    vec3 cells = cells_at(older_origin, u_systems.seed, surface_terms.x, cold, texel_arc, edge);
+    vec3 cells = cells_at(older_origin, older_latitude, u_systems.seed, surface_terms.x, cold, texel_arc, edge);
 #if MOVING_LAYERS
-    cells = mix(cells, cells_at(normalize(young_warped), u_young_systems_seed, surface_terms.x, cold, texel_arc, edge),
+    cells = mix(cells,
+                cells_at(young_origin, young_latitude, u_young_systems_seed, surface_terms.x, cold, texel_arc, edge),
                 u_young_share);
 #endif
     float cyclonic = curl.w;
