@@ -173,7 +173,12 @@ TEST_CASE("density and coverage passes agree with the CPU twin", "[pass]") {
     const float shaped = shaped_density(noise, curl[k].w, p.cyclone_cloudiness, 0.0f, 0.0f);
     // The convective cells (none resolved by 16 texels a face: the modulation is 0 here).
     const float deck = frayed_deck(deck_strength(origin, latitude, systems.seed, 0.0f, 0.0f), system_edge(noise));
-    const vec2 weights = cell_weights(deck, cold_sectors(origin, systems));
+    // The cold air: the cyclones' cold sectors and the storm tracks' at the texel's own direction,
+    // with the GPU's wind and cyclonic depth (no land/ocean mask here: all sea).
+    const vec3 direction = vec3(identity[k]);
+    const float storm_track =
+        storm_track_cold_air(direction, portable_asin(clamp(direction.z, -1.0f, 1.0f)), vec3(curl[k]), curl[k].w, 1.0f);
+    const vec2 weights = cell_weights(deck, std::max(cold_sectors(origin, systems), storm_track));
     const float cells = systems.cells * cell_modulation(origin, weights, systems.seed, 2.0f / float(p.size));
     REQUIRE(cells == 0.0f);
     // The open cells' weight dims their cloud at any size (no pockets without the open pattern).
@@ -181,7 +186,7 @@ TEST_CASE("density and coverage passes agree with the CPU twin", "[pass]") {
     open_texels += open > 0.0f ? 1 : 0;
     // The trades' shallow regime at the texel's own latitude, and the organised patterns' moats.
     const CloudTypes types = cloud_types(cyclones, belts);
-    const float here = portable_asin(clamp(vec3(identity[k]).z, -1.0f, 1.0f));
+    const float here = portable_asin(clamp(direction.z, -1.0f, 1.0f));
     const float shallow = shallow_trades_weight(types, here, deck_organisation(deck), systems.shallow_trades);
     const float organised = organised_trades(regimes, latitude, systems.trade_cumulus);
     const float expected =
@@ -212,8 +217,8 @@ TEST_CASE("density and coverage passes agree with the CPU twin", "[pass]") {
     // shallow weight's error at most, and the organised patterns' share's (kSystems) times 0.08 x 0.7;
     // times the open cells' factor, whose weight takes the deck's error (its fray's, DECK_FRAY times the
     // edge's kDensity / 0.148, through the presence's and the closed weight's smoothsteps, slopes 1.5 /
-    // 0.2 and 1.5 / 0.4), the cold sectors' (kSystems) and the hidden share's (the systems' error),
-    // each times 0.75.
+    // 0.2 and 1.5 / 0.4), the cold sectors' and the storm tracks' (kSystems) and the hidden share's (the
+    // systems' error), each times 0.75.
     const float expected_contrast = cover_contrast(shallow, organised, open * (1.0f - cells_hidden(types)));
     const double deck_error = DECK_FRAY * kDensity / 0.148;
     const double open_error = 0.75 * ((7.5 + 3.75) * deck_error + kSystems + systems_error);
@@ -225,7 +230,8 @@ TEST_CASE("density and coverage passes agree with the CPU twin", "[pass]") {
                 .epsilon(0)
                 .margin(2 * kCoverRemap / p.cover_softness + 4 * kUlp));
   }
-  // The cover has open cells' cloud (the cyclones' cold sectors), so the twin checks its dimming.
+  // The cover has open cells' cloud (the cyclones' cold sectors, the storm tracks' cold air), so the
+  // twin checks its dimming.
   INFO("texels with open cells " << open_texels);
   CHECK(open_texels > 0);
 }

@@ -628,6 +628,13 @@ TEST_CASE("weather_systems.glsl on the GPU agrees with the CPU", "[probe]") {
                                vec4(r(-1.0f, 1.0f), 0, 0, 0)),
                      3.0e-2f});
     cases.push_back({arguments(PROBE_TRADE_CLUMPS, vec4(r(-1.0f, 1.0f), seed, 0, r(0.0f, 1.0f)), vec4(q, 0)), 3.0e-2f});
+    // The storm tracks' cold air: smoothsteps of the latitude (slope 1.5 / 0.09 on the portable
+    // arcsine's error, 5.2e-7), of the cyclonic depth (exact inputs) and of the wind's equatorward
+    // share (a quotient of a dot product and lengths, a few ulp: slope 1.5 / 0.6), times the sea's
+    // share; winds of any direction and speed.
+    cases.push_back({arguments(PROBE_STORM_TRACK, vec4(r(0.0f, 0.5f), 0, r(0.0f, 1.0f), 0), vec4(q, 0), vec4(0.0f),
+                               r.v(-2.0f, 2.0f)),
+                     std::max(20 * 5.2e-7f, 8 * kArithmetic)});
     cases.push_back(
         {arguments(PROBE_CELL_WEIGHTS, vec4(r(0.0f, 1.0f), r(0.0f, 1.0f), r(1e-4f, 0.02f), 0)), kArithmetic * 16});
     // Pockets: cell_clouds at 12 cells a radius (within the cell clouds' tolerance above) through

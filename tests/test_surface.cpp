@@ -130,12 +130,14 @@ TEST_CASE("a deck's own term reaches a desert's west coast where the bias falls 
           "[fast][surface]") {
   const cover::SurfaceMask mask = synthetic(continent);
   const std::vector<float> terms = cover::surface_terms(mask), bias = cover::surface_bias(mask);
-  REQUIRE(terms.size() == 2 * bias.size());
-  std::vector<float> deck(bias.size()), desert(bias.size());
+  REQUIRE(terms.size() == 3 * bias.size());
+  std::vector<float> deck(bias.size()), desert(bias.size()), sea(bias.size());
   for (size_t k = 0; k < bias.size(); ++k) {
-    deck[k] = terms[2 * k], desert[k] = terms[2 * k + 1];
+    deck[k] = terms[3 * k], desert[k] = terms[3 * k + 1], sea[k] = terms[3 * k + 2];
     REQUIRE(deck[k] >= 0.0f);
     REQUIRE(desert[k] >= 0.0f);
+    REQUIRE(sea[k] >= 0.0f);
+    REQUIRE(sea[k] <= 1.0f + 1e-6f);
     REQUIRE(bias[k] == deck[k] - desert[k]);
   }
   // Half a degree off the west coast at 22 N: before the blur the deck term is 1 x 0.97 on the
@@ -147,6 +149,11 @@ TEST_CASE("a deck's own term reaches a desert's west coast where the bias falls 
   CHECK(bias_at(bias, 22.0, -0.5) < 0.15);
   // Further out both agree: the desert's blur does not reach 8 degrees.
   CHECK(bias_at(deck, 22.0, -8.0) == Approx(bias_at(bias, 22.0, -8.0)).margin(1e-6));
+  // The sea's share (where the storm tracks' open cells form): 1 - land under the same blur, so
+  // all sea 8 degrees off the coast, none 8 degrees inland, about half at the coast.
+  CHECK(bias_at(sea, 22.0, -8.0) == Approx(1.0).margin(1e-6));
+  CHECK(bias_at(sea, 22.0, 8.0) == Approx(0.0).margin(1e-6));
+  CHECK(bias_at(sea, 22.0, 0.0) == Approx(0.5).margin(0.15));
 }
 
 TEST_CASE(

@@ -1252,6 +1252,47 @@ TEST_CASE("open cells dim their cloud to about half the thick cloud's cover, dec
   CHECK(glsl::cell_weights(1.0f, 0.0f).y == 0.0f);
 }
 
+TEST_CASE("the storm tracks' cold air streaming equatorward over the sea is open cells, poleward air and ascent none",
+          "[fast][systems]") {
+  // A point at latitude phi and longitude 0, its local north and east.
+  const auto at = [](float degrees) {
+    const float phi = glm::radians(degrees);
+    return glsl::vec3(std::cos(phi), 0.0f, std::sin(phi));
+  };
+  const auto north_at = [](float degrees) {
+    const float phi = glm::radians(degrees);
+    return glsl::vec3(-std::sin(phi), 0.0f, std::cos(phi));
+  };
+  const glsl::vec3 east(0.0f, 1.0f, 0.0f);
+  const auto air = [&](float degrees, glsl::vec3 wind, float cyclonic, float sea) {
+    return glsl::storm_track_cold_air(at(degrees), glm::radians(degrees), wind, cyclonic, sea);
+  };
+  for (float sign : {1.0f, -1.0f}) {
+    const float lat = 50.0f * sign;
+    const glsl::vec3 equatorward = -sign * north_at(lat);
+    // Mid-storm-track, still air over the sea, the wind due equatorward: full, at any wind speed.
+    CHECK(air(lat, 3.0f * equatorward, 0.0f, 1.0f) == Approx(1.0f).margin(1e-6));
+    CHECK(air(lat, 1e-3f * equatorward, 0.0f, 1.0f) == Approx(1.0f).margin(1e-6));
+    // Poleward air (warm advection), a west wind (share 0: smoothstep(-0.2, 0.4, 0) = 0.259) and
+    // one 30 degrees off due equatorward (share 0.866: full).
+    CHECK(air(lat, -equatorward, 0.0f, 1.0f) == 0.0f);
+    CHECK(air(lat, east, 0.0f, 1.0f) == Approx(0.259259f).margin(1e-5));
+    CHECK(air(lat, std::cos(glm::radians(30.0f)) * equatorward + 0.5f * east, 0.0f, 1.0f) == Approx(1.0f).margin(1e-6));
+    // The cyclones' ascent (the cloud deepened to the cirrus level) and the land take it away.
+    CHECK(air(lat, equatorward, glsl::ASCENT_FULL, 1.0f) == 0.0f);
+    CHECK(air(lat, equatorward, 0.5f * (glsl::ASCENT_ONSET + glsl::ASCENT_FULL), 1.0f) == Approx(0.5f).margin(1e-6));
+    CHECK(air(lat, equatorward, 0.0f, 0.0f) == 0.0f);
+    CHECK(air(lat, equatorward, 0.0f, 0.25f) == Approx(0.25f).margin(1e-6));
+    // Only in the storm tracks: none in the subtropics or the polar caps, full from 40 to 60.
+    for (float degrees : {0.0f, 20.0f, 34.0f, 67.0f, 80.0f})
+      CHECK(air(sign * degrees, -sign * north_at(sign * degrees), 0.0f, 1.0f) == 0.0f);
+    for (float degrees : {41.0f, 45.0f, 59.0f})
+      CHECK(air(sign * degrees, -sign * north_at(sign * degrees), 0.0f, 1.0f) == Approx(1.0f).margin(1e-6));
+  }
+  // No wind: no direction, no open cells.
+  CHECK(air(50.0f, glsl::vec3(0.0f), 0.0f, 1.0f) == 0.0f);
+}
+
 TEST_CASE("the trades' shallow regime shrinks the cloud's excess and leaves the systems and the mid-latitudes",
           "[fast][systems]") {
   // The contrast: 1 without the regime, SHALLOW_CONTRAST with all of it under sugar and

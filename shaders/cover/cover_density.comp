@@ -12,7 +12,7 @@ layout(local_size_x = 64, local_size_y = 1, local_size_z = 1) in;
 layout(rgba32f, binding = 0) uniform readonly image2DArray warp_field;
 layout(r32f, binding = 1) uniform writeonly image2DArray density_field;
 layout(rgba32f, binding = 2) uniform readonly image2DArray curl_field;
-// The land/ocean bias's terms (deck, desert; surface_bias.hpp's surface_terms): equirect, row 0
+// The land/ocean bias's terms (deck, desert, sea; surface_bias.hpp's surface_terms): equirect, row 0
 // north, longitude -180 at s = 0.
 layout(binding = 3) uniform sampler2D surface_bias;
 layout(r32f, binding = 5) uniform writeonly image2DArray cloud_top_field;  // km above sea level
@@ -119,8 +119,9 @@ void main() {
     vec3 warped = warp_sample.xyz;
     ivec3 at = face_texel(texel);
     vec3 direction = texel_direction(at.z, at.x, at.y, size);
-    vec2 surface_terms = u_surface_weight > 0.0f ? texture(surface_bias, equirect_uv(direction)).xy : vec2(0.0f);
+    vec3 surface_terms = u_surface_weight > 0.0f ? texture(surface_bias, equirect_uv(direction)).xyz : vec3(0.0f, 0.0f, 1.0f);
     float surface = surface_terms.x - surface_terms.y;  // the bias b = deck - desert
+    float sea = mix(1.0f, surface_terms.z, clamp(u_surface_weight, 0.0f, 1.0f));
     bool gridded = u_grid_octaves > 0;
     float noise = cover_density_from_grid(warped, gridded ? warp_sample.w : 0.0f, u_grid_octaves, u_cover, u_noise_offset);
 #if MOVING_LAYERS
@@ -173,6 +174,12 @@ void main() {
     float cold = cold_sector_air.x;
     float streets = 0.0f;
 #endif
+    // Beside the cyclones' cold sectors, the rest of the storm tracks' cold air streaming towards
+    // the equator over the sea: open cells there too (no streets: those need the cold sector's
+    // fresh outbreak off the ice or the land).
+    float latitude = portable_asin(clamp(direction.z, -1.0f, 1.0f));
+    float storm_track = storm_track_cold_air(direction, latitude, curl.xyz, curl.w, sea);
+    cold = max(cold, storm_track);
     vec3 cells = cells_at(older_origin, older_latitude, u_systems.seed, surface_terms.x, cold, texel_arc, edge);
 #if MOVING_LAYERS
     cells = mix(cells,
@@ -181,7 +188,6 @@ void main() {
 #endif
     float cyclonic = curl.w;
     CloudTypes types = cloud_types(cyclones, fields);
-    float latitude = portable_asin(clamp(direction.z, -1.0f, 1.0f));
     float deck = deck_organisation(cells.x);
     // In the trades the cloud no system organises is shallow cumulus or thin cirrus: dim between
     // the systems, and dimmer and sparser between the organised patterns' clumps (each layer's

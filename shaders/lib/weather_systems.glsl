@@ -628,6 +628,32 @@ vec2 cold_air(vec3 p, IN(WeatherSystems) systems, uint near) {
   }
   return air;
 }
+// The storm tracks' cold air between the cyclones at the unit direction p of geocentric
+// `latitude` (radians), in [0, 1]: where the flow's wind there (`wind`, tangent) blows towards the
+// equator, the air does not rise (the flow's cyclonic depth `cyclonic` below the ascent that deepens
+// the cloud, cloud_properties.glsl's ASCENT_ONSET to ASCENT_FULL) and the surface is sea (`sea` in
+// [0, 1]; 1 without a land/ocean mask). Polar air streaming equatorward over warmer sea is the
+// cold-air outbreak whose boundary layer convects into open cells (Agee et al. 1973); over the
+// Southern Ocean open cells lie across the whole storm track, mostly in post-frontal cold air
+// (Lang et al. 2022, "A climatology of open and closed mesoscale cellular convection over the
+// Southern Ocean derived from Himawari-8 observations", ACP 22), more often than closed cells,
+// and where the air is much colder than the sea (Lang et al. 2024, ACP 24), and the storm tracks
+// hold the most open cells on Earth (Muhlbauer et al. 2014, ACP 14). The cyclones' own cold
+// sectors (cold_sector) lie behind their cold fronts only; this is the rest of that air, between
+// the systems. The storm tracks: 35-40 to 60-66 degrees, their poleward edge the ocean's polar
+// front (Lang et al. 2022). The equatorward share is the wind's direction's component towards
+// the equator, through a smoothstep from -0.2 to 0.4: full in air streaming within about 66
+// degrees of due equatorward, none in air streaming poleward (warm advection, where closed
+// cells and stratiform cloud lie: Lang et al. 2024).
+float storm_track_cold_air(vec3 p, float latitude, vec3 wind, float cyclonic, float sea) {
+  float a = abs(latitude);
+  float belt = smoothstep(0.61f, 0.70f, a) * (1.0f - smoothstep(1.05f, 1.15f, a));
+  vec3 north = vec3(0.0f, 0.0f, 1.0f) - p.z * p;  // the local north, of length cos(latitude)
+  float scale = length(wind) * length(north);
+  float equatorward = scale > 1.0e-12f ? -sign(p.z) * dot(wind, north) / scale : -1.0f;  // calm: none
+  return clamp(sea, 0.0f, 1.0f) * belt * (1.0f - smoothstep(ASCENT_ONSET, ASCENT_FULL, cyclonic)) *
+         smoothstep(-0.2f, 0.4f, equatorward);
+}
 float cold_sectors(vec3 p, IN(WeatherSystems) systems) { return cold_air(p, systems, cyclones_near(p, systems)).x; }
 
 // Cloud streets: rows of cumulus along the low-level wind over horizontal roll vortices in the

@@ -495,11 +495,11 @@ void GlobalCover::upload_surface_bias() {
   // Without a mask a 1 x 1 zero texture keeps the sampler complete (the weight is 0 then).
   // Its two terms (deck, desert) in red and green: the density takes their difference, the decks the first.
   if (parameters_.surface) {
-    surface_bias_ = gpu::Texture::plane(surface_bias_columns, surface_bias_rows, GL_RG32F);
+    surface_bias_ = gpu::Texture::plane(surface_bias_columns, surface_bias_rows, GL_RGB32F);
     surface_bias_.write(surface_terms(*parameters_.surface));
   } else {
-    surface_bias_ = gpu::Texture::plane(1, 1, GL_RG32F);
-    surface_bias_.write({0.0f, 0.0f});
+    surface_bias_ = gpu::Texture::plane(1, 1, GL_RGB32F);
+    surface_bias_.write({0.0f, 0.0f, 1.0f});
   }
   glTextureParameteri(surface_bias_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
   glTextureParameteri(surface_bias_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);

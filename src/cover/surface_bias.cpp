@@ -127,8 +127,8 @@ std::vector<float> ocean_distance_km(const SurfaceMask& grid) {
 
 std::vector<float> surface_bias(const SurfaceMask& mask) {
   const std::vector<float> terms = surface_terms(mask);
-  std::vector<float> bias(terms.size() / 2);
-  for (std::size_t k = 0; k < bias.size(); ++k) bias[k] = terms[2 * k] - terms[2 * k + 1];
+  std::vector<float> bias(terms.size() / 3);
+  for (std::size_t k = 0; k < bias.size(); ++k) bias[k] = terms[3 * k] - terms[3 * k + 1];
   return bias;
 }
 
@@ -141,7 +141,7 @@ std::vector<float> surface_terms(const SurfaceMask& mask) {
   // Arabian Sea, the Mozambique Channel, the Gulf of Mexico) gets no deck, nor one whose open
   // ocean lies beyond a continent.
   const int fetch_from = columns * 10 / 360, fetch = columns * 30 / 360;
-  std::vector<float> decks(static_cast<size_t>(columns) * rows), deserts(decks.size());
+  std::vector<float> decks(static_cast<size_t>(columns) * rows), deserts(decks.size()), seas(decks.size());
   const std::vector<float> distance = ocean_distance_km(grid);
   for (int j = 0; j < rows; ++j) {
     const double latitude = latitude_of_row(j, rows);
@@ -158,6 +158,7 @@ std::vector<float> surface_terms(const SurfaceMask& mask) {
       const double desert = std::max(subtropics, interior * inland(distance[static_cast<size_t>(j) * columns + i]));
       decks[static_cast<size_t>(j) * columns + i] = static_cast<float>((1.0 - land) * deck * east * west);
       deserts[static_cast<size_t>(j) * columns + i] = static_cast<float>(land * desert);
+      seas[static_cast<size_t>(j) * columns + i] = static_cast<float>(1.0 - land);
     }
   }
   // Three passes of a 9 x 9 box: close to a Gaussian of 4.5 cells (2.2 degrees), so that the
@@ -165,9 +166,11 @@ std::vector<float> surface_terms(const SurfaceMask& mask) {
   for (int pass = 0; pass < 3; ++pass) {
     decks = box_filter(decks, columns, rows, 4);
     deserts = box_filter(deserts, columns, rows, 4);
+    seas = box_filter(seas, columns, rows, 4);
   }
-  std::vector<float> terms(2 * decks.size());
-  for (std::size_t k = 0; k < decks.size(); ++k) terms[2 * k] = decks[k], terms[2 * k + 1] = deserts[k];
+  std::vector<float> terms(3 * decks.size());
+  for (std::size_t k = 0; k < decks.size(); ++k)
+    terms[3 * k] = decks[k], terms[3 * k + 1] = deserts[k], terms[3 * k + 2] = seas[k];
   return terms;
 }
 

@@ -11,6 +11,7 @@ GLenum pixel_format(int channels) {
   switch (channels) {
     case 1: return GL_RED;
     case 2: return GL_RG;
+    case 3: return GL_RGB;
     case 4: return GL_RGBA;
     default: throw std::logic_error("unsupported channel count " + std::to_string(channels));
   }
@@ -93,6 +94,7 @@ int Texture::channels() const {
   switch (format_) {
     case GL_R32F: return 1;
     case GL_RG32F: return 2;
+    case GL_RGB32F: return 3;  // sampled only: GL_RGB32F is no image format
     case GL_RGBA32F: return 4;
     default: throw std::logic_error("unsupported texture format");
   }

@@ -43,6 +43,7 @@ const int PROBE_TRADE_CLUMPS = 28;           // gravel_clumps(p, uint(b), a), fl
 const int PROBE_TANGENT_WARP = 29;           // tangent_warp(p, a, c, uint(b), FLOWERS_WARP_LAYER, 2),
                                              // trade_cumulus_belt(latitude) in w
 const int PROBE_BELT_REGIMES = 31;           // belt_regimes(p, latitude, systems (trade cumulus x[3].z), uint(b))
+const int PROBE_STORM_TRACK = 32;            // storm_track_cold_air(p, latitude, x[3].xyz, a, c)
 const int PROBE_TRADE_CLUMP = 30;            // trade_clump(p, a, uint(b), FLOWERS_LAYER, (0.2, 0.45), c, x[3].x, all
                                              // cells), presence_everywhere(c) in yzw
 #ifndef __cplusplus
@@ -138,6 +139,8 @@ vec4 probe_weather_systems(mat4 x) {
     vec2 weights = with_pockets(vec2(x[0].y, x[0].w), pocket);
     return vec4(pocket, weights.x, weights.y, 0.0f);
   }
+  if (f == PROBE_STORM_TRACK)
+    return vec4(storm_track_cold_air(p, latitude, vec3(x[3]), x[0].y, x[0].w), 0.0f, 0.0f, 0.0f);
   if (f == PROBE_CELL_WEIGHTS)
     return vec4(cell_weights(x[0].y, x[0].z), deck_presence(x[0].y), cells_resolved(x[0].z * 100.0f, x[0].w));
   if (f == PROBE_BELTS)
