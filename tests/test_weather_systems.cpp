@@ -978,12 +978,18 @@ TEST_CASE("the cold air furthest behind the front is in streets and the rest in 
   for (float behind : {0.8f, 1.2f, 1.55f, 2.0f, 2.3f}) {
     const vec2 xy = half_way - behind * ahead;
     const vec3 p = glm::normalize(c.centre + c.radius * (xy.x * c.east + xy.y * c.pole));
-    const vec2 air = glsl::cold_air(p, systems, glsl::cyclones_near(p, systems));
+    const vec2 air = glsl::cold_air(p, systems, glsl::cyclones_near(p, systems), 1.0f);
     const vec2 frame = glsl::cyclone_frame(p, c);
     INFO("behind " << behind);
     CHECK(air.x == Approx(0.8f * glsl::cold_sector(frame)).margin(1e-6));
     CHECK(air.x == glsl::cold_sectors(p, systems));
     CHECK(air.y == Approx(glsl::street_share(frame)).margin(1e-6));
+    // Over land no cold-air cells or streets: the sea's share scales the sector, not the streets'
+    // share of it.
+    const vec2 coast = glsl::cold_air(p, systems, glsl::cyclones_near(p, systems), 0.25f);
+    CHECK(coast.x == Approx(0.25f * air.x).margin(1e-7));
+    CHECK(coast.y == air.y);
+    CHECK(glsl::cold_air(p, systems, glsl::cyclones_near(p, systems), 0.0f).x == 0.0f);
   }
 }
 
@@ -1013,7 +1019,7 @@ TEST_CASE("the loops over the cyclones near a point give what loops over every c
     }
     INFO("point " << k);
     REQUIRE(glsl::cyclone_systems(q, systems, glsl::cyclones_near(q, systems), edge) == cloud * glsl::frontal_reach(q));
-    REQUIRE(glsl::cold_air(q, systems, glsl::cyclones_near(q, systems)) == air);
+    REQUIRE(glsl::cold_air(q, systems, glsl::cyclones_near(q, systems), 1.0f) == air);
     const int near = glm::bitCount(glsl::cyclones_near(q, systems));
     near_total += near;
     points_near += near > 0 ? 1 : 0;

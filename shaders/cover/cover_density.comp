@@ -162,7 +162,7 @@ void main() {
     // The cells as the belts, each layer its own, in the cold sectors of the cyclones as drawn.
     // The cold sectors' open cells dim their cloud whether the cover resolves them or not
     // (cover_contrast), so they are found at any size.
-    vec2 cold_sector_air = cold_air(origin, u_systems, near);
+    vec2 cold_sector_air = cold_air(origin, u_systems, near, sea);  // over the sea
     vec4 curl = imageLoad(curl_field, texel);
 #if STREETS_DRAWN
     // The streets take their share of the cold air from the open cells, and lie along the flow's

@@ -613,10 +613,12 @@ float cold_sector(vec2 xy) {
 // life cycle of EUMeTrain's satellite manual).
 float street_share(vec2 xy) { return smoothstep(1.3f, 1.8f, behind_cold_front(xy)); }
 
-// The cyclones' cold air at p: x the largest cold sector, by each one's strength; y the share of
+// The cyclones' cold air at p: x the largest cold sector, by each one's strength, times the sea's
+// share of the place `sea` in [0, 1] (1 without a land/ocean mask: over land the cold air's
+// convection is the day's cumulus, not the marine boundary layer's cells and rolls); y the share of
 // its air in streets (street_share). `near`: cyclones_near(p, systems), which cyclone_systems at
 // the same point takes too.
-vec2 cold_air(vec3 p, IN(WeatherSystems) systems, uint near) {
+vec2 cold_air(vec3 p, IN(WeatherSystems) systems, uint near, float sea) {
   vec2 air = vec2(0.0f);
   for (; near != 0u; near &= near - 1u) {
     int i = findLSB(near);
@@ -626,7 +628,7 @@ vec2 cold_air(vec3 p, IN(WeatherSystems) systems, uint near) {
       if (cold > air.x) air = vec2(cold, street_share(xy));
     }
   }
-  return air;
+  return vec2(air.x * clamp(sea, 0.0f, 1.0f), air.y);
 }
 // The storm tracks' cold air between the cyclones at the unit direction p of geocentric
 // `latitude` (radians), in [0, 1]: where the flow's wind there (`wind`, tangent) blows towards the
@@ -654,7 +656,9 @@ float storm_track_cold_air(vec3 p, float latitude, vec3 wind, float cyclonic, fl
   return clamp(sea, 0.0f, 1.0f) * belt * (1.0f - smoothstep(ASCENT_ONSET, ASCENT_FULL, cyclonic)) *
          smoothstep(-0.2f, 0.4f, equatorward);
 }
-float cold_sectors(vec3 p, IN(WeatherSystems) systems) { return cold_air(p, systems, cyclones_near(p, systems)).x; }
+float cold_sectors(vec3 p, IN(WeatherSystems) systems) {
+  return cold_air(p, systems, cyclones_near(p, systems), 1.0f).x;
+}
 
 // Cloud streets: rows of cumulus along the low-level wind over horizontal roll vortices in the
 // boundary layer (Etling and Brown 1993, "Roll vortices in the planetary boundary layer: a

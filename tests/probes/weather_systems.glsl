@@ -12,7 +12,7 @@ const int PROBE_CELLS = 7;            // closed_cells(p, uint(b)), open_cells (c
                                       // deck_strength(p, lat, uint(b), a, c)
 const int PROBE_CELL_WEIGHTS = 8;     // cell_weights(a, b), deck_presence(a), cells_resolved(b * 100, c)
 const int PROBE_COLD = 9;             // cold_sector(vec2(a, c)), cold_sectors(p, cyclone C), cell_modulation(p,
-                                      // x[3].zw, uint(b), 1e-3), cold_air(p, C).y
+                                      // x[3].zw, uint(b), 1e-3), cold_air(p, C, 1).y
 const int PROBE_CELL_PARTS = 10;      // closed_cell_modulation(p, a, uint(b), c), open_cell_modulation(p, a, uint(b), c)
 const int PROBE_POCKETS = 11;         // open_cell_pockets(p, uint(b)), with_pockets(vec2(a, c), it) in y, z
 const int PROBE_BELTS_SURFACE = 12;   // belts_over_surface(x[1], a): its y, z, w, and belt_cloud of it
@@ -161,7 +161,7 @@ vec4 probe_weather_systems(mat4 x) {
   if (f == PROBE_COLD)
     return vec4(cold_sector(vec2(x[0].y, x[0].w)), cold_sectors(p, systems),
                 cell_modulation(p, vec2(x[3].z, x[3].w), seed, 1.0e-3f),
-                cold_air(p, systems, cyclones_near(p, systems)).y);
+                cold_air(p, systems, cyclones_near(p, systems), 1.0f).y);
   if (f == PROBE_BELT_REGIMES) {
     systems.trade_cumulus = x[3].z;
     return belt_regimes(p, latitude, systems, seed);
