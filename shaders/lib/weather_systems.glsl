@@ -630,6 +630,10 @@ vec2 cold_air(vec3 p, IN(WeatherSystems) systems, uint near, float sea) {
   }
   return vec2(air.x * clamp(sea, 0.0f, 1.0f), air.y);
 }
+float cold_sectors(vec3 p, IN(WeatherSystems) systems) {
+  return cold_air(p, systems, cyclones_near(p, systems), 1.0f).x;
+}
+
 // The storm tracks' cold air between the cyclones at the unit direction p of geocentric
 // `latitude` (radians), in [0, 1]: where the flow's wind there (`wind`, tangent) blows towards the
 // equator, the air does not rise (the flow's cyclonic depth `cyclonic` below the ascent that deepens
@@ -655,9 +659,6 @@ float storm_track_cold_air(vec3 p, float latitude, vec3 wind, float cyclonic, fl
   float equatorward = scale > 1.0e-12f ? -sign(p.z) * dot(wind, north) / scale : -1.0f;  // calm: none
   return clamp(sea, 0.0f, 1.0f) * belt * (1.0f - smoothstep(ASCENT_ONSET, ASCENT_FULL, cyclonic)) *
          smoothstep(-0.2f, 0.4f, equatorward);
-}
-float cold_sectors(vec3 p, IN(WeatherSystems) systems) {
-  return cold_air(p, systems, cyclones_near(p, systems), 1.0f).x;
 }
 
 // Cloud streets: rows of cumulus along the low-level wind over horizontal roll vortices in the

@@ -492,8 +492,9 @@ DiagnosisSums GlobalCover::diagnosis_sums() {
 std::pair<float, float> GlobalCover::density_range() const { return coverage_.calibration().read_density_range(); }
 
 void GlobalCover::upload_surface_bias() {
-  // Without a mask a 1 x 1 zero texture keeps the sampler complete (the weight is 0 then).
-  // Its two terms (deck, desert) in red and green: the density takes their difference, the decks the first.
+  // Without a mask a 1 x 1 texture keeps the sampler complete (the weight is 0 then; all sea).
+  // Its terms (deck, desert, sea) in red, green and blue: the density takes the first two's
+  // difference, the decks the first, the cold air's cells the sea's share.
   if (parameters_.surface) {
     surface_bias_ = gpu::Texture::plane(surface_bias_columns, surface_bias_rows, GL_RGB32F);
     surface_bias_.write(surface_terms(*parameters_.surface));
