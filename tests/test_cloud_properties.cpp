@@ -335,30 +335,35 @@ TEST_CASE("the sub-texel cloud's optical thickness is log-normal inside, keeping
   // 20 km texels they start at the 5 km octave, k0 = 2, so 2^(-4/3) = 0.397, negative (thick where
   // the field is low, in the cores), within 4 standard errors of a correlation, (1 - rho^2) /
   // sqrt(n), and the octave sum's small departure from the normal. Where none of its octaves is
-  // resolved the thickness is the texel's.
-  const float texel = 20000.0f, spread = 0.84f;
+  // resolved the thickness is the texel's. The spread fades in with the texel's tau (smoothstep(1,
+  // 3.6, tau): 0.330 of it at tau 2, all of it from 3.6), so thin cloud (tau 1 and less) is uniform.
+  const float texel = 20000.0f, full_spread = 0.84f;
   const int points = 20000;
   std::mt19937 random(13);
   std::normal_distribution<float> g;
   std::vector<glm::vec3> where(points);
   for (auto& p : where) p = 6371000.0f * glm::normalize(glm::vec3(g(random), g(random), g(random)));
-  for (float tau : {1.0f, 8.0f, 50.0f}) {
+  for (float tau : {2.0f, 8.0f, 50.0f}) {
+    const float u = (tau - 1.0f) / 2.6f;
+    const float spread = full_spread * (tau >= 3.6f ? 1.0f : u * u * (3.0f - 2.0f * u));
     double sum = 0, squares = 0, cross = 0, field_squares = 0, share = 0;
     for (int k = 0; k < points; ++k) {
       const auto detail = glsl::subtexel_cloud(where[k], 0.5f, texel, 1.0f);
-      const double l = std::log(double(glsl::subtexel_optical_thickness(tau, detail, spread))) - std::log(tau);
+      const double l = std::log(double(glsl::subtexel_optical_thickness(tau, detail, full_spread))) - std::log(tau);
       sum += l;
       squares += l * l;
       cross += l * detail.field;
       field_squares += double(detail.field) * detail.field;
       share += detail.undulation_share / points;
       const auto far = glsl::subtexel_cloud(where[k], 0.5f, texel, 9000.0f);  // every octave of 10 km and less faded
-      if (k < 200) CHECK(glsl::subtexel_optical_thickness(tau, far, spread) == tau);
+      if (k < 200) CHECK(glsl::subtexel_optical_thickness(tau, far, full_spread) == tau);
+      // Thin cloud keeps the texel's tau wherever its octaves are resolved.
+      if (k < 200) CHECK(glsl::subtexel_optical_thickness(1.0f, detail, full_spread) == 1.0f);
     }
     const double mean = sum / points, deviation = std::sqrt(squares / points - mean * mean);
     // The field's mean is 0 (gradient noise), so the covariance is the mean product.
     const double correlation = (cross / points) / (deviation * std::sqrt(field_squares / points));
-    const double c = (2 * glsl::slab_diffuse_transmittance(tau) - 1) * 0.5 * spread * spread * share;
+    const double c = (2 * glsl::slab_diffuse_transmittance(tau) - 1) * 0.5 * double(spread) * spread * share;
     INFO("tau " << tau << ": ln tau about the texel's: mean " << mean << " (expected " << -c << "), deviation "
                 << deviation << " (spread " << spread << "), correlation with the field " << correlation
                 << ", resolved share " << share);
@@ -371,10 +376,11 @@ TEST_CASE("the sub-texel cloud's optical thickness is log-normal inside, keeping
   glsl::SubtexelCloud flat;
   flat.cover = 1.0f;
   flat.field = flat.relief = flat.undulation = flat.undulation_share = 0.0f;
-  CHECK(glsl::subtexel_optical_thickness(8.0f, flat, spread) == 8.0f);
+  CHECK(glsl::subtexel_optical_thickness(8.0f, flat, full_spread) == 8.0f);
   flat.undulation = 1.0f;
   CHECK(glsl::subtexel_optical_thickness(8.0f, flat, 0.0f) == 8.0f);  // no spread: uniform
-  CHECK(glsl::subtexel_optical_thickness(8.0f, flat, spread) == Approx(8.0f * std::exp(spread)).epsilon(1e-6));
+  CHECK(glsl::subtexel_optical_thickness(8.0f, flat, full_spread) ==
+        Approx(8.0f * std::exp(full_spread)).epsilon(1e-6));
 }
 
 TEST_CASE("the sub-texel cloud's edges have the perimeter dimension of cloud edges, about 4/3", "[properties]") {

@@ -315,7 +315,13 @@ SubtexelCloud subtexel_cloud(vec3 p, float cover, float texel, float footprint) 
 // resolved variance v spread^2 when c = (2 T - 1) v spread^2 / 2: the arithmetic mean for thin
 // cloud (R linear in tau), the geometric mean (Cahalan et al.'s effective thickness) at x = 1,
 // and a little thicker for thick cloud, whose reflectance saturates.
+// The spread fades in with the texel's tau, smoothstep(1, 3.6, tau): thin cloud (ISCCP's class below
+// 3.6), through which the ground shows, stays uniform, so that it hides as much of the ground as
+// the ground renderer's layers, which have no such variation (a varied thin slab transmits more on
+// average: docs/orbit_view.md, "The sub-texel cloud"); the stratocumulus and thicker cloud of
+// Cahalan et al.'s bias take all of it.
 float subtexel_optical_thickness(float tau, IN(SubtexelCloud) detail, float spread) {
+  spread *= smoothstep(1.0f, 3.6f, tau);
   float variance = spread * spread * detail.undulation_share;
   float correction = (2.0f * slab_diffuse_transmittance(tau) - 1.0f) * 0.5f * variance;
   return tau * exp(spread * detail.undulation - correction);

@@ -364,9 +364,10 @@ inline constexpr Parameter cloud_detail =
          "as smooth slabs (0)",
          render);
 inline constexpr Parameter cloud_tau_spread =
-    real("cloud_tau_spread", 0, 0, 2, "",
-         "orbit view: the deviation of ln tau inside a cover texel's cloud, drawn with the sub-texel cloud (0: "
-         "uniform; 0.84: the plane-parallel albedo bias of marine stratocumulus, Cahalan et al. 1994)",
+    real("cloud_tau_spread", 0.84, 0, 2, "",
+         "orbit view: the deviation of ln tau inside a cover texel's cloud of medium and thick optical thickness "
+         "(tau from 3.6; faded in from 1), drawn with the sub-texel cloud (0.84: the plane-parallel albedo bias of "
+         "marine stratocumulus, Cahalan et al. 1994; 0: uniform)",
          render);
 }  // namespace scene
 
