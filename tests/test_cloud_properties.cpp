@@ -344,8 +344,7 @@ TEST_CASE("the sub-texel cloud's optical thickness is log-normal inside, keeping
   std::vector<glm::vec3> where(points);
   for (auto& p : where) p = 6371000.0f * glm::normalize(glm::vec3(g(random), g(random), g(random)));
   for (float tau : {2.0f, 8.0f, 50.0f}) {
-    const float u = (tau - 1.0f) / 2.6f;
-    const float spread = full_spread * (tau >= 3.6f ? 1.0f : u * u * (3.0f - 2.0f * u));
+    const float spread = full_spread * glm::smoothstep(1.0f, 3.6f, tau);
     double sum = 0, squares = 0, cross = 0, field_squares = 0, share = 0;
     for (int k = 0; k < points; ++k) {
       const auto detail = glsl::subtexel_cloud(where[k], 0.5f, texel, 1.0f);

@@ -56,11 +56,12 @@ std::vector<float> surface_bias(const SurfaceMask& mask);
 
 // The bias's two terms on the same grid, each filtered as the bias, and the sea's share, filtered
 // alike: (deck, desert, sea) per cell, interleaved, all >= 0, b = deck - desert, sea = 1 - land
-// (where the storm tracks' open cells may form: weather_systems.glsl's storm_track_cold_air). The decks' strength takes
-// the deck term alone (weather_systems.glsl's deck_strength): the filtered difference falls steeply where a deck meets
-// a desert coast (West Africa: +0.5 to -0.9 within 6 degrees), and its zero 50-100 km off the coast
-// drew the deck's bright edge as a line parallel to the coast across the cloud, while the deck term
-// reaches the coast and fades over the land, where the desert term clears the cloud.
+// (where the cold air's open cells may form: weather_systems.glsl's cold_air and
+// storm_track_cold_air). The decks' strength takes the deck term alone (weather_systems.glsl's
+// deck_strength): the filtered difference falls steeply where a deck meets a desert coast (West Africa: +0.5 to -0.9
+// within 6 degrees), and its zero 50-100 km off the coast drew the deck's bright edge as a line parallel to the coast
+// across the cloud, while the deck term reaches the coast and fades over the land, where the desert term clears the
+// cloud.
 std::vector<float> surface_terms(const SurfaceMask& mask);
 
 }  // namespace nephele::cover
