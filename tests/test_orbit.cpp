@@ -821,6 +821,54 @@ TEST_CASE("orbit: over an all-water planet the sun glints where the sea mirrors 
   CHECK(luminance(pixel(dry, bx, by)) < 0.5 * brightest);
 }
 
+TEST_CASE("orbit: the coast window's water takes the sea's colour and mirrors the sky, the day map's ice and land stay",
+          "[orbit][glint]") {
+  test::test_context();
+  // Grey land of albedo 0.3 everywhere; the coast window 20-40 N, 40-80 E is water in its western
+  // half. The ground's radiance is L0 + a (L1 - L0) for albedo a (L0, L1: the renders of albedo 0
+  // and 1, the same light and air); the sea's is L0 + (L1 - L0) (body + 0.066 s), where s, the
+  // sky's share of the ground's light, lies in [0, 1] (sun_glint.glsl's SEA_BODY_ALBEDO and
+  // SEA_SKY_REFLECTANCE). The sun is 20 degrees high at 30 N 50 E (03:00 UTC), so the glint
+  // (facets tilted 35 degrees, 5 of Cox and Munk's sigma) adds nothing measurable.
+  const double when = core::parse_utc_time("2026-06-21T03:00Z");
+  auto sea_planet = [](float not_ice) {
+    render::PlanetImages planet = uniform_planet(0.3);
+    core::ImageData rgba{planet.day.width, planet.day.height, 4, {}};  // alpha: the share not ice
+    for (std::size_t k = 0; k < planet.day.pixels.size(); k += 3)
+      rgba.pixels.insert(rgba.pixels.end(),
+                         {planet.day.pixels[k], planet.day.pixels[k + 1], planet.day.pixels[k + 2], not_ice});
+    planet.day = rgba;
+    planet.coast = {64, 32, 1, std::vector<float>(64 * 32, 0.0f)};
+    for (int j = 0; j < 32; ++j)
+      for (int i = 0; i < 32; ++i) planet.coast.pixels[std::size_t(j) * 64 + i] = 1.0f;
+    planet.coast_south_deg = 20, planet.coast_north_deg = 40, planet.coast_west_deg = 40, planet.coast_east_deg = 80;
+    planet.sea_colour = true;
+    return planet;
+  };
+  const auto sea_camera = nadir_camera(30, 50, 1.0e6, 9, 5), land_camera = nadir_camera(30, 70, 1.0e6, 9, 5);
+  const render::PlanetImages open_sea = sea_planet(1.0f), ice = sea_planet(0.0f);
+  for (const auto* camera : {&sea_camera, &land_camera}) {
+    const glm::vec4 l0 = pixel(render::render_orbit(*camera, when, uniform_planet(0.0), clear_cover()), 4, 2);
+    const glm::vec4 l1 = pixel(render::render_orbit(*camera, when, uniform_planet(1.0), clear_cover()), 4, 2);
+    const glm::vec4 sea = pixel(render::render_orbit(*camera, when, open_sea, clear_cover()), 4, 2);
+    const glm::vec4 frozen = pixel(render::render_orbit(*camera, when, ice, clear_cover()), 4, 2);
+    const glm::dvec3 body(0.0006, 0.0057, 0.022);
+    for (int c = 0; c < 3; ++c) {
+      INFO("channel " << c << (camera == &sea_camera ? " over the water" : " over the land"));
+      REQUIRE(l1[c] - l0[c] > 1e-3f);
+      const double a = (sea[c] - l0[c]) / (l1[c] - l0[c]), a_ice = (frozen[c] - l0[c]) / (l1[c] - l0[c]);
+      // Tolerance 0.003: half-float texels and the radiance's float sums (about 1e-3 of L1 - L0).
+      if (camera == &sea_camera) {
+        CHECK(a >= body[c] - 0.003);
+        CHECK(a <= body[c] + 0.066 + 0.003);
+      } else {
+        CHECK(a == Approx(0.3).margin(0.003));
+      }
+      CHECK(a_ice == Approx(0.3).margin(0.003));  // ice (and land) keep the day map's colour
+    }
+  }
+}
+
 TEST_CASE("orbit: ground sloping towards a low sun is brighter and away from it darker, by the sines of the incidence",
           "[orbit][relief]") {
   test::test_context();

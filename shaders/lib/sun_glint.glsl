@@ -12,6 +12,18 @@
 
 const float WATER_REFRACTIVE_INDEX = 1.334f;
 
+// The sea's own colour, seen from above where the sun does not glint: the light that the water
+// scatters back up through the surface, as a diffuse albedo at the RGB channels' 680, 550 and
+// 440 nm, pi times the remote-sensing reflectance Rrs of open-ocean water of about 0.1 to 0.3 mg
+// m^-3 of chlorophyll (Rrs about 0.0002, 0.0018 and 0.007 per steradian: Morel, A. and
+// Maritorena, S. 2001, "Bio-optical properties of oceanic waters: a reappraisal", J. Geophys.
+// Res. 106, 7163-7180): deep blue and dark, as the open ocean is in photographs from orbit.
+const vec3 SEA_BODY_ALBEDO = vec3(0.0006f, 0.0057f, 0.022f);
+// The share of the sky's diffuse light that the surface mirrors (Fresnel's law for water averaged
+// over a uniform sky: 0.066; Payne, R. E. 1972, "Albedo of the sea surface", J. Atmos. Sci. 29,
+// 959-970, measured 0.06 to 0.07 under overcast skies).
+const float SEA_SKY_REFLECTANCE = 0.066f;
+
 // The wind over the sea varies from place to place, and the glint with it: calm water mirrors
 // the sun in a small bright spot, a rough sea spreads it wide and dim. The wind field here is a
 // vector of two independent fBm of Perlin noise (three octaves, 400 to 100 km, the amplitude

@@ -23,6 +23,7 @@ layout(binding = 5) uniform sampler2D water_texture;  // equirect, fraction of o
 layout(std430, binding = 6) readonly buffer Tiles { uvec2 tiles[]; };  // (column, row), tile units
 layout(binding = 7) uniform sampler2D transmittance_table;  // the air's transmittance to its top (atmosphere.glsl)
 layout(binding = 8) uniform sampler2D relief_texture;  // equirect, the ground's slopes (east, north), m/m
+layout(binding = 9) uniform sampler2D coast_texture;   // a window's share of water (GSHHG), row 0 = north
 
 #include "../lib/atmosphere.glsl"
 #include "../lib/cloud_properties.glsl"
@@ -58,6 +59,9 @@ uniform float u_tau_median;      // the fallback's log-normal (the table's defau
 uniform float u_tau_spread;
 uniform float u_cloud_detail;   // 0: the cover's texels as they are; 1: the sub-texel cloud (cloud_slab)
 uniform float u_cloud_tau_spread;  // deviation of ln tau inside a texel's cloud (subtexel_optical_thickness)
+uniform vec4 u_coast_window;   // coast_texture's south, north, west, east edges (radians); west >= east: none
+uniform float u_coast_texel;   // m a coast texel spans north to south
+uniform int u_sea_colour;      // 1: water takes the sea's own colour where the day map's alpha (no ice) lets it
 uniform float u_day_texel;     // arc length of one day-texture texel, m
 uniform float u_relief_texel;  // and of one relief texel
 uniform int u_cloud_steps;
@@ -100,6 +104,19 @@ float cover_lod(float footprint) { return max(log2(max(footprint, 1.0f) / u_cove
 // are most of a cloud sample's cost on llvmpipe. (There the `if` runs for whole groups of lanes,
 // masked: prelude.glsl. Measured, leaving the B-spline out altogether gives the same `bench
 // orbit` time, 1.59 against 1.60 s at 1280x720.)
+// Where the unit vector n lies in coast_texture (false: outside its window).
+bool coast_uv(vec3 n, out vec2 uv) {
+  uv = vec2(0.0f);
+  if (u_coast_window.z >= u_coast_window.w) return false;
+  float lat = asin(clamp(n.z, -1.0f, 1.0f));
+  float lon = atan(n.y, n.x);
+  lon = u_coast_window.z + mod(lon - u_coast_window.z, 2.0f * PI_F);  // from the west edge eastwards
+  if (lat < u_coast_window.x || lat > u_coast_window.y || lon > u_coast_window.w) return false;
+  uv = vec2((lon - u_coast_window.z) / (u_coast_window.w - u_coast_window.z),
+            (u_coast_window.y - lat) / (u_coast_window.y - u_coast_window.x));
+  return true;
+}
+
 vec4 cover_at(vec3 n, float lod, bool smoothed) {
   vec4 mipmapped = textureLod(cover_map, n, lod);
   vec4 result = mipmapped;
@@ -344,7 +361,7 @@ void main() {
     float footprint = max(ground.x * u_pixel_angle / max(-dot(n, d), 0.05f), 1.0f);
     float day_lod = max(log2(footprint / u_day_texel), 0.0f);
     vec2 tex = equirect_uv(n);
-    vec3 albedo = textureLod(day_texture, tex, day_lod).rgb;
+    vec4 day = textureLod(day_texture, tex, day_lod);
     vec3 lights = textureLod(night_texture, tex, day_lod).rgb;
     float mu = dot(n, u_sun);
     vec3 direct = vec3(0.0f);
@@ -360,12 +377,20 @@ void main() {
     }
     vec3 sky = PI_F * sky_ambient(n, u_sun);
     float night = 1.0f - smoothstep(-0.1f, 0.05f, mu);
-    background = albedo / PI_F * (direct + sky) + u_night_lights * night * lights;
+    // The water: the global map's, or within the coast window the shorelines' (sharp to the
+    // pixel from low orbit). With the sea's own colour, open water (not the day map's ice) is the
+    // sea's body colour and mirrors the sky (docs/orbit_view.md, "Coasts and lakes").
+    float water = textureLod(water_texture, tex, day_lod).r;
+    vec2 coast;
+    if (coast_uv(n, coast)) water = textureLod(coast_texture, coast, max(log2(footprint / u_coast_texel), 0.0f)).r;
+    float sea = u_sea_colour != 0 ? water * day.a : water;
+    vec3 albedo = u_sea_colour != 0 ? mix(day.rgb, SEA_BODY_ALBEDO, sea) : day.rgb;
+    vec3 sky_albedo = albedo + (u_sea_colour != 0 ? sea * SEA_SKY_REFLECTANCE : 0.0f);
+    background = (albedo * direct + sky_albedo * sky) / PI_F + u_night_lights * night * lights;
     // Sun glint: the sea's facets mirror the direct sunlight (already through air and cloud) into
     // the view, radiance = BRDF x irradiance on the horizontal.
-    float water = textureLod(water_texture, tex, day_lod).r;
-    if (water > 0.0f && mu > 0.0f)
-      background += water * sun_glint_brdf(n, -d, u_sun, sea_wind_speed(g, u_sea_wind)) * direct;
+    if (sea > 0.0f && mu > 0.0f)
+      background += sea * sun_glint_brdf(n, -d, u_sun, sea_wind_speed(g, u_sea_wind)) * direct;
   }
 
   vec3 radiance;

@@ -111,6 +111,9 @@ void ComputeProgram::set(const std::string& name, glm::vec2 value) const {
 void ComputeProgram::set(const std::string& name, glm::vec3 value) const {
   glProgramUniform3f(program_, location(name), value.x, value.y, value.z);
 }
+void ComputeProgram::set(const std::string& name, glm::vec4 value) const {
+  glProgramUniform4f(program_, location(name), value.x, value.y, value.z, value.w);
+}
 void ComputeProgram::set(const std::string& name, glm::ivec2 value) const {
   glProgramUniform2i(program_, location(name), value.x, value.y);
 }

@@ -40,6 +40,7 @@ class ComputeProgram {
   void set(const std::string& name, unsigned value) const;
   void set(const std::string& name, glm::vec2 value) const;
   void set(const std::string& name, glm::vec3 value) const;
+  void set(const std::string& name, glm::vec4 value) const;
   void set(const std::string& name, glm::ivec2 value) const;
   void set(const std::string& name, glm::ivec3 value) const;
   bool has_uniform(const std::string& name) const;  // active in the linked program

@@ -3,12 +3,14 @@
 #include <cmath>
 #include <algorithm>
 #include <array>
+#include <cstdio>
 #include <future>
 #include <system_error>
 #include <utility>
 
 #include "core/error.hpp"
 #include "core/parallel_rows.hpp"
+#include "io/coastline_files.hpp"
 #include "io/elevation_files.hpp"
 #include "io/export_presets.hpp"
 #include "files/image_files.hpp"
@@ -107,6 +109,59 @@ core::ImageData etopo5_water(const regional::ElevationRaster& raster) {
 // central differences of ETOPO5's heights at the pixels' centres (bilinear), the sea floor taken
 // as sea level: the sea is flat. East steps shrink towards the poles with cos(lat), which is held
 // at 0.05 or more (the last 3 degrees) so that the differences stay finite.
+// The default day map made ready for the sea's own colour (render::PlanetImages::sea_colour): its
+// alpha is the share of a texel that is not ice (white: min(R, G, B) from 0.25 to 0.45, linear),
+// and the colours of its open water (blue above 1.2 red: deep blue and the shallows' turquoise; no ice), which the
+// shorelines replace by the sea's, are filled from the nearest land and ice, so that no sea colour bleeds onto the land
+// beside a sharp coast. The fill pulls the mean of the kept texels down a pyramid of halvings: each water texel takes
+// the mean of its smallest enclosing block that has one.
+core::ImageData sea_free_day_map(const core::ImageData& day) {
+  const int width = day.width, height = day.height, channels = day.channels;
+  core::ImageData out{width, height, 4, std::vector<float>(std::size_t(width) * height * 4)};
+  struct Level {
+    int width, height;
+    std::vector<float> sums;  // r, g, b, weight
+  };
+  std::vector<Level> levels{{width, height, std::vector<float>(std::size_t(width) * height * 4)}};
+  for (std::size_t k = 0; k < std::size_t(width) * height; ++k) {
+    const float* in = &day.pixels[k * std::size_t(channels)];
+    const float r = in[0], g = channels > 1 ? in[1] : r, b = channels > 2 ? in[2] : r;
+    const float lowest = std::min({r, g, b});
+    const float t = std::clamp((lowest - 0.25f) / 0.2f, 0.0f, 1.0f);
+    const float ice = t * t * (3.0f - 2.0f * t);
+    const bool open_water = b > 1.2f * r && ice < 0.5f;
+    float* o = &out.pixels[k * 4];
+    o[0] = r, o[1] = g, o[2] = b, o[3] = 1.0f - ice;
+    float* sum = &levels[0].sums[k * 4];
+    const float w = open_water ? 0.0f : 1.0f;
+    sum[0] = w * r, sum[1] = w * g, sum[2] = w * b, sum[3] = w;
+  }
+  while (levels.back().width > 1 || levels.back().height > 1) {
+    const Level& fine = levels.back();
+    Level coarse{std::max(1, (fine.width + 1) / 2), std::max(1, (fine.height + 1) / 2), {}};
+    coarse.sums.assign(std::size_t(coarse.width) * coarse.height * 4, 0.0f);
+    for (int j = 0; j < fine.height; ++j)
+      for (int i = 0; i < fine.width; ++i)
+        for (int c = 0; c < 4; ++c)
+          coarse.sums[(std::size_t(j / 2) * coarse.width + i / 2) * 4 + c] +=
+              fine.sums[(std::size_t(j) * fine.width + i) * 4 + c];
+    levels.push_back(std::move(coarse));
+  }
+  for (int j = 0; j < height; ++j)
+    for (int i = 0; i < width; ++i) {
+      if (levels[0].sums[(std::size_t(j) * width + i) * 4 + 3] > 0.0f) continue;
+      for (std::size_t l = 1; l < levels.size(); ++l) {
+        const Level& level = levels[l];
+        const float* sum = &level.sums[(std::size_t(j >> l) * level.width + (i >> l)) * 4];
+        if (sum[3] <= 0.0f) continue;
+        float* o = &out.pixels[(std::size_t(j) * width + i) * 4];
+        for (int c = 0; c < 3; ++c) o[c] = sum[c] / sum[3];
+        break;
+      }
+    }
+  return out;
+}
+
 core::ImageData etopo5_relief(const regional::ElevationRaster& raster) {
   const int width = 2160, height = 1080;
   std::vector<float> ground(std::size_t(width) * height);
@@ -177,7 +232,8 @@ PlanetTextures read_planet_textures(const std::string& day, const std::string& n
       out.warnings.push_back(option + ": '" + day + "' is " + std::to_string(out.images.day.width) + " x " +
                              std::to_string(out.images.day.height) + ", not 2:1; it is stretched over the sphere");
   } else if (std::filesystem::is_regular_file(default_earth_texture, error)) {
-    out.images.day = read_equirect(default_earth_texture, option);
+    out.images.day = sea_free_day_map(read_equirect(default_earth_texture, option));
+    out.images.sea_colour = true;
     out.day_source = default_earth_texture;
     if (std::filesystem::is_regular_file(etopo5_default_path, error)) {
       const std::shared_ptr<const regional::ElevationRaster> raster = whole_etopo5(etopo5_default_path, "ETOPO5");
@@ -204,6 +260,71 @@ PlanetTextures read_planet_textures(const std::string& day, const std::string& n
     out.night_source = "none";
   }
   return out;
+}
+
+void add_view_coast(PlanetTextures& textures, const render::OrbitCamera& camera, double planet_radius_m) {
+  if (!textures.images.sea_colour) return;
+  // The ground's finest pixel, straight below the camera, against the water map's texel: where
+  // the view does not resolve the map's coasts the shorelines add nothing.
+  const double pixel_angle = 2.0 * std::tan(camera.fov_deg * M_PI / 360.0) / camera.width;
+  const double nearest_pixel_m = camera.altitude_m * pixel_angle;
+  const int water_width = std::max(textures.images.water.width, 1);
+  if (nearest_pixel_m > 0.5 * 2.0 * M_PI * planet_radius_m / water_width) return;
+  std::error_code error;
+  if (!std::filesystem::is_regular_file(gshhg_shorelines_default_path, error)) {
+    textures.warnings.push_back(std::string(gshhg_shorelines_default_path) +
+                                " is missing (Debian package gmt-gshhg-full): coasts and lakes as sharp as "
+                                "ETOPO5's 18 km water map");
+    return;
+  }
+  // The window: the latitudes and longitudes of the ground points a grid of the frame's rays
+  // meets; a ray that misses the planet adds the ground below its nearest approach, which lies
+  // beyond the horizon in its direction.
+  const render::OrbitFrame frame = render::orbit_frame(camera, planet_radius_m);
+  const double tan_half = std::tan(camera.fov_deg * M_PI / 360.0);
+  const double aspect = double(camera.height) / camera.width;
+  double south = 90, north = -90, west = 1e9, east = -1e9;
+  constexpr int grid = 32;
+  for (int b = 0; b <= grid; ++b)
+    for (int a = 0; a <= grid; ++a) {
+      const double u = 2.0 * a / grid - 1.0, v = 2.0 * b / grid - 1.0;
+      const glm::dvec3 d =
+          glm::normalize(frame.forward + u * tan_half * frame.right + v * tan_half * aspect * frame.up);
+      const glm::dvec3& o = frame.position;
+      const double half_b = glm::dot(o, d), c = glm::dot(o, o) - planet_radius_m * planet_radius_m;
+      const double disc = half_b * half_b - c;
+      double t = disc >= 0.0 ? -half_b - std::sqrt(disc) : -half_b;
+      if (t < 0.0) continue;  // behind the camera
+      const glm::dvec3 ground = glm::normalize(o + t * d);
+      const double lat = std::asin(std::clamp(ground.z, -1.0, 1.0)) * 180.0 / M_PI;
+      double lon = std::atan2(ground.y, ground.x) * 180.0 / M_PI;
+      lon = camera.longitude_deg + std::remainder(lon - camera.longitude_deg, 360.0);  // about the camera's
+      south = std::min(south, lat), north = std::max(north, lat);
+      west = std::min(west, lon), east = std::max(east, lon);
+    }
+  if (south >= north || west >= east) return;
+  // A margin of a degree, and a pole in view takes every longitude.
+  south = std::max(south - 1.0, -90.0), north = std::min(north + 1.0, 90.0);
+  west -= 1.0, east += 1.0;
+  if (north >= 89.0 || south <= -89.0 || east - west >= 360.0) west = camera.longitude_deg - 180.0, east = west + 360.0;
+  // Texels about as fine as the nearest pixels, at most 2048 along either side (finer costs a
+  // second and more in the upload of its mips, for coasts a little sharper than a pixel).
+  const double mid = std::cos(0.5 * (south + north) * M_PI / 180.0);
+  const double finest_deg = nearest_pixel_m / planet_radius_m * 180.0 / M_PI;
+  const double texel_deg = std::max({finest_deg, (north - south) / 2048.0, (east - west) * mid / 2048.0});
+  GeoWindow window{south,
+                   north,
+                   west,
+                   east,
+                   std::clamp(int(std::ceil((east - west) * mid / texel_deg)), 1, 2048),
+                   std::clamp(int(std::ceil((north - south) / texel_deg)), 1, 2048)};
+  textures.images.coast = read_gshhg_water(gshhg_shorelines_default_path, window);
+  textures.images.coast_south_deg = south, textures.images.coast_north_deg = north;
+  textures.images.coast_west_deg = west, textures.images.coast_east_deg = east;
+  char text[160];
+  std::snprintf(text, sizeof text, " and %s within %.2f to %.2f N, %.2f to %.2f E (%d x %d)",
+                gshhg_shorelines_default_path, south, north, west, east, window.width, window.height);
+  textures.water_source += text;
 }
 
 render::CoverCube read_cover_cube(const std::filesystem::path& directory) {

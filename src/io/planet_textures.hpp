@@ -33,6 +33,12 @@ struct PlanetTextures {
 PlanetTextures read_planet_textures(const std::string& day, const std::string& night = "",
                                     const std::string& option = "--earth-texture");
 
+// With the default day map (sea_colour), where the camera's nearest pixels are finer than half the
+// water map's texel: the water along the ground in view from GSHHG's full-resolution shorelines
+// (coastline_files.hpp) as PlanetImages::coast, texels about as fine as those pixels (at most
+// 2048 x 2048), and water_source saying so; a warning where the file is missing.
+void add_view_coast(PlanetTextures& textures, const render::OrbitCamera& camera, double planet_radius_m);
+
 // The checks read_planet_textures makes of named maps, from their headers alone (a missing or
 // unreadable file, fewer than 2 pixels across, more than half the available memory as floats):
 // a caller that decodes the maps on a thread of its own refuses a bad one before any other work.

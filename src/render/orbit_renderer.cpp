@@ -185,7 +185,10 @@ double sunlit_white_luminance(const OrbitCamera& camera, double unix_seconds, do
 
 struct OrbitRenderer::Gl {
   gpu::ComputeProgram program{"render/orbit.comp"};
-  GLuint day = 0, night = 0, water = 0, relief = 0, cover = 0;
+  GLuint day = 0, night = 0, water = 0, relief = 0, cover = 0, coast = 0;
+  glm::vec4 coast_window{0.0f};  // radians: south, north, west, east (west >= east: none)
+  float coast_texel = 1.0f;      // m north to south
+  bool sea_colour = false;
   GLuint sky_table = 0;      // the air's multiple scattering for the planet's radius
   GLuint transmittance = 0;  // and its transmittance
   double sky_table_radius = 0;
@@ -193,7 +196,7 @@ struct OrbitRenderer::Gl {
   int day_width = 1, relief_width = 1, cover_size = 1;
   bool cover_properties = false;  // the cover has its own tau and cloud tops
   ~Gl() {
-    for (GLuint id : {day, night, water, relief, cover, sky_table, transmittance})
+    for (GLuint id : {day, night, water, relief, cover, coast, sky_table, transmittance})
       if (id != 0) glDeleteTextures(1, &id);
     if (tiles != 0) glDeleteBuffers(1, &tiles);
   }
@@ -221,6 +224,18 @@ OrbitRenderer::OrbitRenderer(const PlanetImages& planet, const CoverCube& cover,
   gl_->day_width = planet.day.width;
   gl_->night = colour_map_texture(or_none(planet.night, 1, no_lights));
   gl_->water = water_fraction_texture(or_none(planet.water, 1, no_water));
+  const bool coast = usable(planet.coast, 1) && planet.coast_north_deg > planet.coast_south_deg &&
+                     planet.coast_east_deg > planet.coast_west_deg;
+  gl_->coast = water_fraction_texture(coast ? planet.coast : no_water);
+  glTextureParameteri(gl_->coast, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);  // a window, not the globe
+  if (coast) {
+    gl_->coast_window =
+        glm::vec4(planet.coast_south_deg, planet.coast_north_deg, planet.coast_west_deg, planet.coast_east_deg) *
+        float(degree);
+    gl_->coast_texel = float((planet.coast_north_deg - planet.coast_south_deg) * degree * settings.planet_radius_m /
+                             planet.coast.height);
+  }
+  gl_->sea_colour = planet.sea_colour;
   const core::ImageData& relief = or_none(planet.relief, 2, flat);
   gl_->relief = slope_texture(relief);
   gl_->relief_width = relief.width;
@@ -321,6 +336,9 @@ double OrbitRenderer::render_tiles(const OrbitCamera& camera, double unix_second
     p.set("u_cloud_tau_spread", static_cast<float>(s.cloud_tau_spread));
     p.set("u_day_texel", static_cast<float>(2 * M_PI * R / gl_->day_width));
     p.set("u_relief_texel", static_cast<float>(2 * M_PI * R / gl_->relief_width));
+    p.set("u_coast_window", gl_->coast_window);
+    p.set("u_coast_texel", gl_->coast_texel);
+    p.set("u_sea_colour", gl_->sea_colour ? 1 : 0);
     p.set("u_cloud_steps", s.cloud_steps);
     p.set("u_shadow_steps", s.shadow_steps);
     p.set("u_sky_steps", s.sky_steps);
@@ -331,6 +349,7 @@ double OrbitRenderer::render_tiles(const OrbitCamera& camera, double unix_second
     glBindTextureUnit(orbit::night_texture, gl_->night);
     glBindTextureUnit(orbit::water_texture, gl_->water);
     glBindTextureUnit(orbit::relief_texture, gl_->relief);
+    glBindTextureUnit(orbit::coast_texture, gl_->coast);
     glBindTextureUnit(orbit::cover_map, gl_->cover);
     glBindTextureUnit(orbit::sky_table, gl_->sky_table);
     glBindTextureUnit(orbit::transmittance_table, gl_->transmittance);

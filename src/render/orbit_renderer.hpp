@@ -71,6 +71,15 @@ struct PlanetImages {
   // the same equirect layout), which turn the ground towards or away from the sun
   // (shaders/lib/ground_relief.glsl); empty: flat ground.
   core::ImageData relief;
+  // The water along a window of the planet, finer than `water` (GSHHG's shorelines:
+  // io/coastline_files.hpp): one channel, an equirect of the window's edges (degrees; west may
+  // lie below -180); empty: `water` alone.
+  core::ImageData coast;
+  double coast_south_deg = 0, coast_north_deg = 0, coast_west_deg = 0, coast_east_deg = 0;
+  // The water has the sea's own colour (sun_glint.glsl's SEA_BODY_ALBEDO, mirroring the sky)
+  // where the day map's alpha, the share of its texel that is not ice, lets it; false: the day
+  // map's colours as they are (a named day map).
+  bool sea_colour = false;
 };
 
 // The global cover as a cube map: faces +X, -X, +Y, -Y, +Z, -Z, size x size floats each, rows

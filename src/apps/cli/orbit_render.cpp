@@ -127,8 +127,11 @@ int run_orbit_render(const OrbitOptions& orbit) {
   // cover generated, which leave a core idle for much of their time (docs/orbit_view.md, "Cost").
   // A bad named map still exits 2 before any of it, by its header.
   io::check_planet_maps(orbit.earth_texture, orbit.night_texture);
-  std::future<io::PlanetTextures> planet_maps = std::async(
-      std::launch::async, [&orbit] { return io::read_planet_textures(orbit.earth_texture, orbit.night_texture); });
+  std::future<io::PlanetTextures> planet_maps = std::async(std::launch::async, [&orbit, camera, radius_m] {
+    io::PlanetTextures textures = io::read_planet_textures(orbit.earth_texture, orbit.night_texture);
+    io::add_view_coast(textures, camera, radius_m);
+    return textures;
+  });
 
   // The default day map's water and relief and the generated cover's land/ocean mask (--surface
   // etopo5) all come from ETOPO5: held across both, the file is read once (io::whole_etopo5),
