@@ -264,12 +264,13 @@ PlanetTextures read_planet_textures(const std::string& day, const std::string& n
 
 void add_view_coast(PlanetTextures& textures, const render::OrbitCamera& camera, double planet_radius_m) {
   if (!textures.images.sea_colour) return;
-  // The ground's finest pixel, straight below the camera, against the water map's texel: where
-  // the view does not resolve the map's coasts the shorelines add nothing.
+  // The ground's finest pixel, straight below the camera, against the water map's texel (37 km):
+  // from below a quarter of it (about 9 km: 400 and 2000 km, not 12000, where the raster of
+  // nearly a hemisphere would add 0.6 s for coasts a little sharper than the map's).
   const double pixel_angle = 2.0 * std::tan(camera.fov_deg * M_PI / 360.0) / camera.width;
   const double nearest_pixel_m = camera.altitude_m * pixel_angle;
   const int water_width = std::max(textures.images.water.width, 1);
-  if (nearest_pixel_m > 0.5 * 2.0 * M_PI * planet_radius_m / water_width) return;
+  if (nearest_pixel_m > 0.25 * 2.0 * M_PI * planet_radius_m / water_width) return;
   std::error_code error;
   if (!std::filesystem::is_regular_file(gshhg_shorelines_default_path, error)) {
     textures.warnings.push_back(std::string(gshhg_shorelines_default_path) +

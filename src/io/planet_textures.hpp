@@ -33,7 +33,7 @@ struct PlanetTextures {
 PlanetTextures read_planet_textures(const std::string& day, const std::string& night = "",
                                     const std::string& option = "--earth-texture");
 
-// With the default day map (sea_colour), where the camera's nearest pixels are finer than half the
+// With the default day map (sea_colour), where the camera's nearest pixels are finer than a quarter of the
 // water map's texel: the water along the ground in view from GSHHG's full-resolution shorelines
 // (coastline_files.hpp) as PlanetImages::coast, texels about as fine as those pixels (at most
 // 2048 x 2048), and water_source saying so; a warning where the file is missing.
