@@ -2,10 +2,12 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <string>
 #include <filesystem>
 #include <stdexcept>
 
 #include "io/coastline_files.hpp"
+#include "io/planet_textures.hpp"
 
 using namespace nephele;
 
@@ -83,4 +85,57 @@ TEST_CASE("a shoreline window that is not a window is refused", "[fast][terrain]
     CHECK_THROWS_AS(io::read_gshhg_water(io::gshhg_shorelines_default_path, bad), std::invalid_argument);
   CHECK_THROWS_AS(io::read_gshhg_water("/nonexistent/binned_GSHHS_f.nc", io::GeoWindow{30, 40, 0, 10, 4, 4}),
                   std::runtime_error);
+}
+
+TEST_CASE("from low orbit the coasts are rastered for the ground in view, from high orbit not at all",
+          "[fast][terrain]") {
+  require_gshhg();
+  // What add_view_coast needs of the maps: the sea's colour and the water map's width (ETOPO5's
+  // 1080 texels, 37 km; the shorelines come in below a quarter of it, about 9 km a pixel).
+  auto maps = [] {
+    io::PlanetTextures textures;
+    textures.images.sea_colour = true;
+    textures.images.water = {1080, 540, 1, {}};
+    textures.water_source = "etopo5";
+    return textures;
+  };
+  const double R = 6371000.0, bern_lat = 46.95, bern_lon = 7.45;
+  render::OrbitCamera camera;
+  camera.latitude_deg = bern_lat, camera.longitude_deg = bern_lon, camera.altitude_m = 400000.0;
+  camera.pitch_deg = -90, camera.fov_deg = 70, camera.width = 1280, camera.height = 720;
+  io::PlanetTextures low = maps();
+  io::add_view_coast(low, camera, R);
+  const render::PlanetImages& p = low.images;
+  REQUIRE(!p.coast.pixels.empty());
+  CHECK(low.water_source.find(io::gshhg_shorelines_default_path) != std::string::npos);
+  CHECK(p.coast.width <= 2048);
+  CHECK(p.coast.height <= 2048);
+  // The window holds the view (Bern below, Lake Geneva 90 km away) and lies within the horizon's
+  // cap (19.7 degrees from 400 km) plus its one degree of margin.
+  CHECK(p.coast_south_deg < 46.45);
+  CHECK(p.coast_north_deg > bern_lat);
+  CHECK(p.coast_west_deg < 6.55);
+  CHECK(p.coast_east_deg > bern_lon);
+  const double cap = std::acos(R / (R + camera.altitude_m)) * 180.0 / M_PI + 1.0;
+  CHECK(p.coast_north_deg - bern_lat <= cap);
+  CHECK(bern_lat - p.coast_south_deg <= cap);
+  auto coast_at = [&](double lat, double lon) {
+    const int i = int((lon - p.coast_west_deg) / (p.coast_east_deg - p.coast_west_deg) * p.coast.width);
+    const int j = int((p.coast_north_deg - lat) / (p.coast_north_deg - p.coast_south_deg) * p.coast.height);
+    return p.coast.pixels[std::size_t(j) * p.coast.width + i];
+  };
+  CHECK(coast_at(46.45, 6.55) == 1.0f);  // Lake Geneva
+  CHECK(coast_at(bern_lat, bern_lon) == 0.0f);
+  // From 12000 km (15 km pixels) the water map's coasts are as sharp as the view; and a named day
+  // map, without the sea's colour, keeps its own water.
+  camera.altitude_m = 1.2e7;
+  io::PlanetTextures high = maps();
+  io::add_view_coast(high, camera, R);
+  CHECK(high.images.coast.pixels.empty());
+  CHECK(high.water_source == "etopo5");
+  camera.altitude_m = 400000.0;
+  io::PlanetTextures named = maps();
+  named.images.sea_colour = false;
+  io::add_view_coast(named, camera, R);
+  CHECK(named.images.coast.pixels.empty());
 }

@@ -37,7 +37,7 @@ constexpr int side_west = 3;
 constexpr int level_grounding_line = 6;  // Antarctica's grounding line
 
 struct Segment {
-  int level = 0, entry = 4, exit = 4;
+  int entry = 4, exit = 4;  // the sides where it enters and leaves its bin
   Run points;
 };
 
@@ -74,10 +74,9 @@ void raster_bin(const Bin& bin, const gshhg::Grid& grid, const GeoWindow& window
     heights.push_back((lat - lat_sw) / bin_deg * gshhg::bin_units);
   }
   if (rows.empty()) return;
-  // The sub-rows run north to south: their heights fall with the index.
+  // The sub-rows run north to south: their heights fall by `spacing` point units each.
   const int count = int(rows.size());
-  const double top = heights.front(), step = count > 1 ? heights.front() - heights.back() : 1.0;
-  const double spacing = count > 1 ? step / (count - 1) : 1.0;
+  const double top = heights.front(), spacing = row_deg / bin_deg * gshhg::bin_units;
 
   std::vector<std::vector<double>> crossings(static_cast<std::size_t>(count));
   std::vector<double> west_ends;
@@ -196,7 +195,6 @@ core::ImageData read_gshhg_water(const std::string& path, const GeoWindow& windo
       if (((code >> 6) & 7) == level_grounding_line) continue;
       Segment segment;
       segment.points = {static_cast<std::size_t>(std::max(first, 0)), static_cast<std::size_t>(code >> 9)};
-      segment.level = (code >> 6) & 7;
       segment.entry = (code >> 3) & 7;
       segment.exit = code & 7;
       if (first < 0 || segment.points.count < 2 ||

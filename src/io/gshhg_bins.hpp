@@ -66,7 +66,7 @@ struct PlacedBin {
   double lon_sw(const Grid& g) const { return double(index % g.nx) * g.bin_deg() + lon_shift; }
 };
 // Every bin whose area overlaps the window by a positive area (or, for a window of no width,
-// touches it), rows north to south, columns west to east. A bin that only touches a window's edge
+// touches it), rows north to south, in each the file's columns from 0 E. A bin that only touches a window's edge
 // adds nothing: what crosses that edge has its edge point in the inside bin too.
 std::vector<PlacedBin> window_bins(const Grid& g, double south_deg, double north_deg, double west_deg, double east_deg);
 

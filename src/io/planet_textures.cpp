@@ -12,6 +12,7 @@
 #include "core/parallel_rows.hpp"
 #include "io/coastline_files.hpp"
 #include "io/elevation_files.hpp"
+#include "render/orbit_tiles.hpp"
 #include "io/export_presets.hpp"
 #include "files/image_files.hpp"
 
@@ -127,8 +128,7 @@ core::ImageData sea_free_day_map(const core::ImageData& day) {
     const float* in = &day.pixels[k * std::size_t(channels)];
     const float r = in[0], g = channels > 1 ? in[1] : r, b = channels > 2 ? in[2] : r;
     const float lowest = std::min({r, g, b});
-    const float t = std::clamp((lowest - 0.25f) / 0.2f, 0.0f, 1.0f);
-    const float ice = t * t * (3.0f - 2.0f * t);
+    const float ice = glm::smoothstep(0.25f, 0.45f, lowest);
     const bool open_water = b > 1.2f * r && ice < 0.5f;
     float* o = &out.pixels[k * 4];
     o[0] = r, o[1] = g, o[2] = b, o[3] = 1.0f - ice;
@@ -282,21 +282,18 @@ void add_view_coast(PlanetTextures& textures, const render::OrbitCamera& camera,
   // meets; a ray that misses the planet adds the ground below its nearest approach, which lies
   // beyond the horizon in its direction.
   const render::OrbitFrame frame = render::orbit_frame(camera, planet_radius_m);
-  const double tan_half = std::tan(camera.fov_deg * M_PI / 360.0);
-  const double aspect = double(camera.height) / camera.width;
+  const render::TileView view{
+      frame.position, frame.forward, frame.right, frame.up, std::tan(camera.fov_deg * M_PI / 360.0),
+      camera.width,   camera.height};
   double south = 90, north = -90, west = 1e9, east = -1e9;
   constexpr int grid = 32;
   for (int b = 0; b <= grid; ++b)
     for (int a = 0; a <= grid; ++a) {
-      const double u = 2.0 * a / grid - 1.0, v = 2.0 * b / grid - 1.0;
-      const glm::dvec3 d =
-          glm::normalize(frame.forward + u * tan_half * frame.right + v * tan_half * aspect * frame.up);
-      const glm::dvec3& o = frame.position;
-      const double half_b = glm::dot(o, d), c = glm::dot(o, o) - planet_radius_m * planet_radius_m;
-      const double disc = half_b * half_b - c;
-      double t = disc >= 0.0 ? -half_b - std::sqrt(disc) : -half_b;
-      if (t < 0.0) continue;  // behind the camera
-      const glm::dvec3 ground = glm::normalize(o + t * d);
+      const glm::dvec3 d = render::view_ray(view, double(a) / grid * camera.width, double(b) / grid * camera.height);
+      const double entry = render::sphere_entry(frame.position, d, planet_radius_m);
+      const double t = entry >= 0.0 ? entry : -glm::dot(frame.position, d);  // a miss: its nearest approach
+      if (t < 0.0) continue;                                                 // behind the camera
+      const glm::dvec3 ground = glm::normalize(frame.position + t * d);
       const double lat = std::asin(std::clamp(ground.z, -1.0, 1.0)) * 180.0 / M_PI;
       double lon = std::atan2(ground.y, ground.x) * 180.0 / M_PI;
       lon = camera.longitude_deg + std::remainder(lon - camera.longitude_deg, 360.0);  // about the camera's

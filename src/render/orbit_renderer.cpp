@@ -162,12 +162,7 @@ double sunlit_white_luminance(const OrbitCamera& camera, double unix_seconds, do
     for (int i = 0; i < columns; ++i) {
       // The ray through the grid cell's centre, as orbit.comp makes a pixel's.
       const glm::dvec3 d = view_ray(view, (i + 0.5) / columns * camera.width, (j + 0.5) / rows * camera.height);
-      // The nearer root of |position + t d| = R.
-      const double b = glm::dot(frame.position, d);
-      const double c = glm::dot(frame.position, frame.position) - planet_radius_m * planet_radius_m;
-      const double discriminant = b * b - c;
-      if (discriminant < 0.0) continue;
-      const double t = -b - std::sqrt(discriminant);
+      const double t = sphere_entry(frame.position, d, planet_radius_m);
       if (t <= 0.0) continue;
       const glsl::vec3 n(glm::normalize(frame.position + t * d));
       const float mu = dot(n, sun);

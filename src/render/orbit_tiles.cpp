@@ -40,6 +40,12 @@ glm::dvec3 view_ray(const TileView& view, double px, double py) {
   return glm::normalize(view.forward + x * view.right + y * view.up);
 }
 
+double sphere_entry(const glm::dvec3& position, const glm::dvec3& d, double radius_m) {
+  const double b = glm::dot(position, d);
+  const double discriminant = b * b - (glm::dot(position, position) - radius_m * radius_m);
+  return discriminant < 0.0 ? -1.0 : -b - std::sqrt(discriminant);
+}
+
 std::vector<glm::uvec2> tiles_meeting_sphere(const TileView& view, double radius_m) {
   const double distance = glm::length(view.position);
   if (!(distance > radius_m)) return all_tiles(view.width, view.height);

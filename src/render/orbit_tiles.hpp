@@ -32,6 +32,11 @@ struct TileView {
 // pixel's centre at + 0.5).
 glm::dvec3 view_ray(const TileView& view, double px, double py);
 
+// Where the unit ray from `position` along d enters the sphere of `radius_m` about the planet's
+// centre: the nearer root t of |position + t d| = radius_m, or a negative value where the ray
+// misses it (or meets it only behind).
+double sphere_entry(const glm::dvec3& position, const glm::dvec3& d, double radius_m);
+
 // The tiles (column, row; tile units, row 0 at the top) that hold a pixel whose ray can meet the
 // sphere of `radius_m` about the planet's centre, in row order. Conservative: a tile is kept where
 // the angle between its central ray and the sphere's centre is at most the sphere's angular radius
