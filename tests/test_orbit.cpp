@@ -174,6 +174,22 @@ TEST_CASE("orbit: with the xplanet map, 23 N 12 E is desert and 10 N 30 W is oce
   const glm::vec4 l = pixel(land, 4, 2), o = pixel(ocean, 4, 2);
   CHECK(l.r > l.b);
   CHECK(o.b > o.r);
+  // Made ready for the sea's own colour: alpha is the share not ice (the Arctic's pack ice at
+  // 88 N, none in the Sahara), and the map's North Sea (55 N 3 E, painted blue and turquoise) is
+  // filled from the land around it, no longer blue above 1.2 red.
+  REQUIRE(textures.images.sea_colour);
+  const core::ImageData& day = textures.images.day;
+  REQUIRE(day.channels == 4);
+  auto at = [&](double lat, double lon) {
+    const int i = std::clamp(int((lon + 180.0) / 360.0 * day.width), 0, day.width - 1);
+    const int j = std::clamp(int((90.0 - lat) / 180.0 * day.height), 0, day.height - 1);
+    const float* p = &day.pixels[(std::size_t(j) * day.width + i) * 4];
+    return glm::vec4(p[0], p[1], p[2], p[3]);
+  };
+  CHECK(at(88, 0).a < 0.5f);
+  CHECK(at(23, 12).a == 1.0f);
+  const glm::vec4 north_sea = at(55, 3);
+  CHECK(north_sea.b <= 1.2f * north_sea.r);
 }
 
 TEST_CASE("orbit: the night side is dark except for the city lights", "[orbit]") {

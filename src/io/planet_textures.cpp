@@ -104,18 +104,14 @@ core::ImageData etopo5_water(const regional::ElevationRaster& raster) {
   return water;
 }
 
-// The ground's slopes (east, north: metres of rise per metre) on a 2160 x 1080 equirect (a sixth of
-// a degree, 18.5 km at the equator: half ETOPO5's resolution, finer than the day map's 20 km; at
-// ETOPO5's own the slopes came out only 1.3-1.4 times steeper, for four times the texels), by
-// central differences of ETOPO5's heights at the pixels' centres (bilinear), the sea floor taken
-// as sea level: the sea is flat. East steps shrink towards the poles with cos(lat), which is held
-// at 0.05 or more (the last 3 degrees) so that the differences stay finite.
 // The default day map made ready for the sea's own colour (render::PlanetImages::sea_colour): its
-// alpha is the share of a texel that is not ice (white: min(R, G, B) from 0.25 to 0.45, linear),
-// and the colours of its open water (blue above 1.2 red: deep blue and the shallows' turquoise; no ice), which the
-// shorelines replace by the sea's, are filled from the nearest land and ice, so that no sea colour bleeds onto the land
-// beside a sharp coast. The fill pulls the mean of the kept texels down a pyramid of halvings: each water texel takes
-// the mean of its smallest enclosing block that has one.
+// alpha is the share of a texel that is not ice (white: min(R, G, B) from 0.25 to 0.45, linear, and
+// unsaturated: (max - min) / max below 0.2 to 0.35; the map's ice is pure white, its bright
+// deserts' saturation 0.48 and more), and the colours of its open water (blue above 1.2 red: deep
+// blue and the shallows' turquoise; no ice), which the shorelines replace by the sea's, are filled
+// from the nearest land and ice, so that no sea colour bleeds onto the land beside a sharp coast.
+// The fill pulls the mean of the kept texels down a pyramid of halvings: each water texel takes the
+// mean of its smallest enclosing block that has one.
 core::ImageData sea_free_day_map(const core::ImageData& day) {
   const int width = day.width, height = day.height, channels = day.channels;
   core::ImageData out{width, height, 4, std::vector<float>(std::size_t(width) * height * 4)};
@@ -128,7 +124,8 @@ core::ImageData sea_free_day_map(const core::ImageData& day) {
     const float* in = &day.pixels[k * std::size_t(channels)];
     const float r = in[0], g = channels > 1 ? in[1] : r, b = channels > 2 ? in[2] : r;
     const float lowest = std::min({r, g, b});
-    const float ice = glm::smoothstep(0.25f, 0.45f, lowest);
+    const float saturation = 1.0f - lowest / std::max({r, g, b, 1.0e-6f});
+    const float ice = glm::smoothstep(0.25f, 0.45f, lowest) * (1.0f - glm::smoothstep(0.2f, 0.35f, saturation));
     const bool open_water = b > 1.2f * r && ice < 0.5f;
     float* o = &out.pixels[k * 4];
     o[0] = r, o[1] = g, o[2] = b, o[3] = 1.0f - ice;
@@ -162,6 +159,12 @@ core::ImageData sea_free_day_map(const core::ImageData& day) {
   return out;
 }
 
+// The ground's slopes (east, north: metres of rise per metre) on a 2160 x 1080 equirect (a sixth of
+// a degree, 18.5 km at the equator: half ETOPO5's resolution, finer than the day map's 20 km; at
+// ETOPO5's own the slopes came out only 1.3-1.4 times steeper, for four times the texels), by
+// central differences of ETOPO5's heights at the pixels' centres (bilinear), the sea floor taken
+// as sea level: the sea is flat. East steps shrink towards the poles with cos(lat), which is held
+// at 0.05 or more (the last 3 degrees) so that the differences stay finite.
 core::ImageData etopo5_relief(const regional::ElevationRaster& raster) {
   const int width = 2160, height = 1080;
   std::vector<float> ground(std::size_t(width) * height);
