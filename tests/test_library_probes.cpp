@@ -42,6 +42,7 @@ namespace nephele::glsl {
 #include "probes/hash.glsl"
 #include "probes/implicit_field.glsl"
 #include "probes/land_cover.glsl"
+#include "probes/land_mosaic.glsl"
 #include "probes/latitude_bands.glsl"
 #include "probes/model_march.glsl"
 #include "probes/noise_rows.glsl"
@@ -834,6 +835,11 @@ TEST_CASE("perlin.glsl on the GPU agrees with the CPU", "[probe]") {
     if (f == PROBE_PERLIN_FACES) cases.push_back({arguments(f, lattice, r.v(0.0f, 1.0f), period, key), kPerlin});
     if (f == PROBE_PERLIN_NOISE) cases.push_back({arguments(f, vec4(0.0f), r.v(-20.0f, 20.0f), period, key), kPerlin});
   }
+  // The gradient: per corner the fade's derivative (up to 1.875) times the gradient's dot product
+  // (up to 2.45) plus the gradient, eight corners summed: components up to 4 times kPerlin's values.
+  for (int k = 0; k < 16; ++k)
+    cases.push_back(
+        {arguments(PROBE_PERLIN_NOISE_GRADIENT, vec4(0.0f), r.v(-20.0f, 20.0f), vec4(0.0f), key), 4 * kPerlin});
   compare("perlin", probe_perlin, cases);
 }
 
@@ -2062,6 +2068,7 @@ TEST_CASE("land_cover.glsl on the GPU agrees with the CPU", "[probe][terrain]") 
     const float px = column * 180.0f, py = row * 108.0f;  // the parcels' rotated frame (offsets aside)
     const vec4 field(0.921f * px + 0.391f * py, -0.391f * px + 0.921f * py, 0, 0);
     cases.push_back({arguments(PROBE_LAND_PATTERNS, vec4(footprint, r(0.0f, 2.0f), 0, 0), field), kArithmetic});
+    cases.push_back({arguments(PROBE_LAND_MEANS, vec4(0, r(0.0f, 2.0f), 0, 0)), kArithmetic});
     const vec4 block((std::floor(r(-200.0f, 200.0f)) + 0.6f) * 40.0f, (std::floor(r(-200.0f, 200.0f)) + 0.6f) * 40.0f,
                      0, 0);
     // (The ground's texture at points up to 8 km out: lattice coordinates up to 3200 at 2.5 m.)
@@ -2077,4 +2084,57 @@ TEST_CASE("land_cover.glsl on the GPU agrees with the CPU", "[probe][terrain]") 
   }
   compare("land_cover", cpu, cases);
   glDeleteTextures(1, &texture);
+}
+
+TEST_CASE("land_mosaic.glsl on the GPU agrees with the CPU", "[probe]") {
+  const float radius = 6371000.0f;
+  // The field's lattice coordinates reach radius / 833 m (the fields' octave, 2500 m / 3 below the
+  // finest) = 7650: a GPU that fuses the scaling into the noise's floor and subtraction moves each
+  // by half an ulp of that, and an octave's value by kPerlinSlope per unit on each axis, its
+  // gradient by up to 4 times that (perlin_noise_gradient's probe), on top of 4 kPerlin each.
+  const float lattice = radius / 833.0f;
+  const float octave = 4 * (kPerlin + 3 * kPerlinSlope * 0.5f * lattice * kUlp);
+  Random r(41);
+  std::vector<Case> cases;
+  auto colour = [&] { return vec4(r(0.0f, 0.6f), r(0.0f, 0.6f), r(0.0f, 0.2f), r(0.0f, 1.0f)); };
+  for (int k = 0; k < 48; ++k) {
+    const vec4 up = normalize(r.v(-1.0f, 1.0f));
+    const float footprint = k % 3 == 0 ? r(10.0f, 600.0f) : r(600.0f, 7000.0f);
+    // The field's three octaves (weights summing to 1.1) and the relief's slopes: three octaves'
+    // gradients scaled by up to roughness 0.3 x (1333 / 37000)^-0.45 / 0.704 = 1.9, each rounded
+    // with its ridge's sign (the value's sign: points where an octave is near 0 flip it, so the
+    // points are kept away from there below).
+    const float roughness = r(0.0f, 0.3f);
+    bool near_crest = false;
+    for (int o = 0; o < 3; ++o)
+      near_crest = near_crest ||
+                   std::abs(mosaic_octave(vec3(up) * (radius / (12000.0f / std::pow(3.0f, float(o)))), o).w) < octave;
+    if (!near_crest)
+      cases.push_back(
+          {arguments(PROBE_MOSAIC_SAMPLE, vec4(footprint, 18500.0f, radius, 0), up, vec4(0), vec4(roughness, 0, 0, 0)),
+           3 * 1.9f * octave + 64 * kTranscendental});
+    // The slope (sums of weights over wavelengths), the share (a ratio of luminances), the
+    // vegetation's smoothstep of (G - R) / (G + R) (at most 15 / 0.1 steep in it), the octave.
+    cases.push_back(
+        {arguments(PROBE_MOSAIC_PARTS, vec4(footprint, 0, radius, 0), up, colour()), 150 * kArithmetic + octave});
+    // The forest of a given sample: the normal quantile's log and square root (kTranscendental),
+    // the smoothstep at most 1.5 / (2 x edge) steep, edge >= 0.05 x 0.1.
+    const vec4 sample(r(-0.3f, 0.3f), r(0.1f, 0.25f), r(1e-6f, 1e-4f), r(0.1f, 0.9f));
+    cases.push_back(
+        {arguments(PROBE_MOSAIC_FOREST, vec4(footprint, 0, 0, 0), vec4(0), vec4(0), sample), 150 * kTranscendental});
+    // The whole factor at points where the forest's smoothstep is flat (0 or 1: found on the CPU,
+    // as the land cover's probe takes cells' centres), so that the noise's rounding moves only
+    // the arid land's and the fields' brightness, by their spreads over the deviations (at least
+    // 0.1 x 0.27) times an octave's error.
+    const vec4 day = colour();
+    const MosaicSample s = mosaic_sample(vec3(up), radius, footprint, 0.0f, 1.0f);
+    const float share = mosaic_forest_share(vec3(day));
+    const float threshold = s.deviation * normal_quantile(1.0f - share);
+    const float edge = 0.05f * s.deviation + 0.5f * footprint * s.slope;
+    if (std::abs(s.value - threshold) > edge + 2 * octave)
+      cases.push_back(
+          {arguments(PROBE_LAND_MOSAIC, vec4(footprint, r(500.0f, 20000.0f), radius, 0), up, day),
+           (MOSAIC_ARID_SPREAD + MOSAIC_FIELD_SPREAD) / (0.1f * PERLIN_OCTAVE_SIGMA) * octave + 64 * kArithmetic});
+  }
+  compare("land_mosaic", probe_land_mosaic, cases);
 }

@@ -79,14 +79,22 @@ vec3 crop_albedo(float stage) {
                       : mix(LAND_CROP_GREEN, LAND_CROP, clamp(stage - 1.0f, 0.0f, 1.0f));
 }
 
+// Maize and root crops at a crop stage: bare soil in winter, green from late spring to the
+// autumn harvest.
+vec3 row_crop_albedo(float stage) { return mix(LAND_SOIL, LAND_CROP_GREEN, clamp(stage, 0.0f, 1.0f)); }
+
+// Open farmland's mean albedo at a crop stage: the shares of the Swiss Plateau's farmland (about
+// 70 % grassland), 0.45 meadow, 0.25 pasture, 0.18 cereals and 0.12 row crops.
+vec3 field_mean_albedo(float stage) {
+  return 0.45f * LAND_MEADOW + 0.25f * LAND_PASTURE + 0.18f * crop_albedo(stage) + 0.12f * row_crop_albedo(stage);
+}
+
 // The fields of the Plateau: parcels of FIELD_SIZE (0.6 as wide), each meadow, pasture, cereals
-// (at the season's stage) or maize and root crops (bare soil in winter, green from late spring
-// to the autumn harvest) by chance, in the shares of the Swiss Plateau's farmland (about 70 %
-// grassland).
+// (at the season's stage) or row crops by chance, in field_mean_albedo's shares.
 vec3 field_albedo(vec2 xy, float footprint, float stage) {
   vec3 crop_colour = crop_albedo(stage);
-  vec3 row_crops = mix(LAND_SOIL, LAND_CROP_GREEN, clamp(stage, 0.0f, 1.0f));
-  vec3 mean = 0.45f * LAND_MEADOW + 0.25f * LAND_PASTURE + 0.18f * crop_colour + 0.12f * row_crops;
+  vec3 row_crops = row_crop_albedo(stage);
+  vec3 mean = field_mean_albedo(stage);
   float detail = pattern_detail(footprint, 0.6f * FIELD_SIZE);
   if (detail <= 0.0f) return mean;
   // Parcels run at 23 degrees to the grid, in rows offset by chance.

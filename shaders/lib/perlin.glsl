@@ -19,6 +19,12 @@ const float PERLIN_BOUND = 1.03636f;
 // Var = 35054270/480729249 (docs/layers.md).
 const float PERLIN_OCTAVE_SIGMA = 0.27003508f;
 
+// Standard deviation of one component of one octave's gradient (per lattice unit) over a
+// uniformly distributed point: d/dx of sum_c w_c g_c.(f - c) is sum_c (dw_c/dx g_c.(f - c) + w_c g_cx),
+// whose variance, with the corners' gradients independent and E[g g^T] = (2/3) I, integrates the
+// quintic fade's polynomials exactly to 238536280/480729249 (the same denominator as above).
+const float PERLIN_GRADIENT_SIGMA = 0.70441233f;
+
 // Perlin's quintic 6t^5 - 15t^4 + 10t^3: C2 across lattice planes.
 float perlin_fade(float t) {
   return t * t * t * (t * (t * 6.0f - 15.0f) + 10.0f);
@@ -79,6 +85,30 @@ float perlin_noise(vec3 p, ivec3 period, uvec3 key) {
   vec2 face0 = perlin_face(cell.x, ys, zs, f.y, f.z, w, key);
   vec2 face1 = perlin_face(wrap_step(cell.x, 1, period.x), ys, zs, f.y, f.z, w, key);
   return perlin_along_row(face0, face1, f.x);
+}
+
+// perlin_noise (not periodic) with its gradient in lattice units: (d/dx, d/dy, d/dz, value). The
+// gradient of sum_c w_c(f) g_c.(f - c) is sum_c (grad w_c) g_c.(f - c) + w_c g_c, each w_c a product
+// of the fade (far corner) or one less it (near corner) along the axes, the fade's derivative
+// 30 t^2 (t - 1)^2. One pass over the corners, where differences would take three more noises.
+vec4 perlin_noise_gradient(vec3 p, uvec3 key) {
+  vec3 base = floor(p);
+  vec3 f = p - base;
+  ivec3 cell = ivec3(base);
+  vec3 fade = vec3(perlin_fade(f.x), perlin_fade(f.y), perlin_fade(f.z));
+  vec3 fade_slope = 30.0f * f * f * (f - 1.0f) * (f - 1.0f);
+  vec4 result = vec4(0.0f);
+  for (int k = 0; k < 8; ++k) {
+    ivec3 corner = ivec3(k & 1, (k >> 1) & 1, k >> 2);
+    vec3 far = vec3(corner);
+    vec3 g = perlin_gradient(cell + corner, key);
+    float along = dot(g, f - far);
+    vec3 a = mix(vec3(1.0f) - fade, fade, far);
+    vec3 da = mix(-fade_slope, fade_slope, far);
+    float weight = a.x * a.y * a.z;
+    result += vec4(vec3(da.x * a.y * a.z, a.x * da.y * a.z, a.x * a.y * da.z) * along + weight * g, weight * along);
+  }
+  return result;
 }
 
 #endif

@@ -31,6 +31,7 @@ layout(binding = 9) uniform sampler2D coast_texture;   // a window's share of wa
 #include "../lib/equirect_mapping.glsl"
 #include "../lib/ground_relief.glsl"
 #include "../lib/hash.glsl"
+#include "../lib/land_mosaic.glsl"
 #include "../lib/slab_scattering.glsl"
 #include "../lib/sun_glint.glsl"
 
@@ -364,27 +365,33 @@ void main() {
     vec4 day = textureLod(day_texture, tex, day_lod);
     vec3 lights = textureLod(night_texture, tex, day_lod).rgb;
     float mu = dot(n, u_sun);
-    vec3 direct = vec3(0.0f);
-    if (mu > -0.02f) {
-      // Cloud shadow: the shell's optical depth towards the sun; some light diffuses through.
-      // The steps repeat the branches' conditions: on llvmpipe only a loop's count skips work.
-      int shadow_steps = hits_ground && mu > -0.02f ? u_shadow_steps : 0;
-      float shadow = cloud_shadow(optical_depth_to_sun(g, shadow_steps, footprint));
-      // The sun's incidence on the relief's slopes (flat: max(mu, 0)), filtered as the day map.
-      vec2 slopes = textureLod(relief_texture, tex, max(log2(footprint / u_relief_texel), 0.0f)).rg;
-      direct = solar_irradiance() * transmittance_from_table(transmittance_table, g + 1.0f * n, u_sun, u_radius) *
-               relief_sun_cosine(n, slopes, u_sun) * shadow;
-    }
-    vec3 sky = PI_F * sky_ambient(n, u_sun);
-    float night = 1.0f - smoothstep(-0.1f, 0.05f, mu);
     // The water: the global map's, or within the coast window the shorelines' (sharp to the
     // pixel from low orbit). With the sea's own colour, open water (not the day map's ice) is the
     // sea's body colour and mirrors the sky (docs/orbit_view.md, "Coasts and lakes").
     float water = textureLod(water_texture, tex, day_lod).r;
     vec2 coast;
     if (coast_uv(n, coast)) water = textureLod(coast_texture, coast, max(log2(footprint / u_coast_texel), 0.0f)).r;
+    // The relief map's slopes and roughness, filtered as the day map, and the land's woods, fields
+    // and relief below the maps' texels (land_mosaic.glsl).
+    vec3 relief = textureLod(relief_texture, tex, max(log2(footprint / u_relief_texel), 0.0f)).rgb;
+    MosaicSample ground_detail = mosaic_sample(n, u_radius, footprint, relief.b, u_relief_texel);
+    vec3 direct = vec3(0.0f);
+    if (mu > -0.02f) {
+      // Cloud shadow: the shell's optical depth towards the sun; some light diffuses through.
+      // The steps repeat the branches' conditions: on llvmpipe only a loop's count skips work.
+      int shadow_steps = hits_ground && mu > -0.02f ? u_shadow_steps : 0;
+      float shadow = cloud_shadow(optical_depth_to_sun(g, shadow_steps, footprint));
+      // The sun's incidence on the relief's slopes (flat: max(mu, 0)); on land with the relief
+      // below the map's texels.
+      vec2 slopes = relief.rg + (1.0f - water) * ground_detail.relief;
+      direct = solar_irradiance() * transmittance_from_table(transmittance_table, g + 1.0f * n, u_sun, u_radius) *
+               relief_sun_cosine(n, slopes, u_sun) * shadow;
+    }
+    vec3 sky = PI_F * sky_ambient(n, u_sun);
+    float night = 1.0f - smoothstep(-0.1f, 0.05f, mu);
     float sea = u_sea_colour != 0 ? water * day.a : water;
-    vec3 albedo = u_sea_colour != 0 ? mix(day.rgb, SEA_BODY_ALBEDO, sea) : day.rgb;
+    vec3 land = day.rgb * land_mosaic(n, day, u_radius, footprint, u_day_texel, ground_detail);
+    vec3 albedo = u_sea_colour != 0 ? mix(land, SEA_BODY_ALBEDO, sea) : mix(land, day.rgb, water);
     vec3 sky_albedo = albedo + (u_sea_colour != 0 ? sea * SEA_SKY_REFLECTANCE : 0.0f);
     background = (albedo * direct + sky_albedo * sky) / PI_F + u_night_lights * night * lights;
     // Sun glint: the sea's facets mirror the direct sunlight (already through air and cloud) into

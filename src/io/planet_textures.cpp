@@ -164,7 +164,9 @@ core::ImageData sea_free_day_map(const core::ImageData& day) {
 // ETOPO5's own the slopes came out only 1.3-1.4 times steeper, for four times the texels), by
 // central differences of ETOPO5's heights at the pixels' centres (bilinear), the sea floor taken
 // as sea level: the sea is flat. East steps shrink towards the poles with cos(lat), which is held
-// at 0.05 or more (the last 3 degrees) so that the differences stay finite.
+// at 0.05 or more (the last 3 degrees) so that the differences stay finite. The third channel is
+// the slopes' root mean square over the 3 x 3 texels around: how rough the land is there, which
+// sets the steepness of the relief the renderer draws below the texels (land_mosaic.glsl).
 core::ImageData etopo5_relief(const regional::ElevationRaster& raster) {
   const int width = 2160, height = 1080;
   std::vector<float> ground(std::size_t(width) * height);
@@ -181,7 +183,7 @@ core::ImageData etopo5_relief(const regional::ElevationRaster& raster) {
   });
   // Metres between rows (and columns at the equator) on the Earth's mean radius, the renderer's.
   const double step = M_PI / height * render::OrbitSettings{}.planet_radius_m;
-  core::ImageData relief{width, height, 2, std::vector<float>(std::size_t(width) * height * 2, 0.0f)};
+  core::ImageData relief{width, height, 3, std::vector<float>(std::size_t(width) * height * 3, 0.0f)};
   core::parallel_rows(height, [&](int begin, int end) {
     for (int j = begin; j < end; ++j) {
       const double lat = (90.0 - (j + 0.5) * 180.0 / height) * M_PI / 180.0;
@@ -191,9 +193,30 @@ core::ImageData etopo5_relief(const regional::ElevationRaster& raster) {
       for (int i = 0; i < width; ++i) {
         const double east = row[(i + 1) % width] - row[(i + width - 1) % width];
         const double northward = ground[std::size_t(north) * width + i] - ground[std::size_t(south) * width + i];
-        float* out = &relief.pixels[(std::size_t(j) * width + i) * 2];
+        float* out = &relief.pixels[(std::size_t(j) * width + i) * 3];
         out[0] = float(east / (2.0 * east_step));
         out[1] = float(northward / ((south - north) * step));
+      }
+    }
+  });
+  // The squared slopes summed over each texel's row of three (wrapping in longitude), then over
+  // three rows (two at the poles' edge rows).
+  std::vector<float> across(std::size_t(width) * height);
+  core::parallel_rows(height, [&](int begin, int end) {
+    for (int j = begin; j < end; ++j) {
+      const float* row = &relief.pixels[std::size_t(j) * width * 3];
+      auto square = [&](int i) { return row[3 * i] * row[3 * i] + row[3 * i + 1] * row[3 * i + 1]; };
+      for (int i = 0; i < width; ++i)
+        across[std::size_t(j) * width + i] = square((i + width - 1) % width) + square(i) + square((i + 1) % width);
+    }
+  });
+  core::parallel_rows(height, [&](int begin, int end) {
+    for (int j = begin; j < end; ++j) {
+      const int first = std::max(j - 1, 0), last = std::min(j + 1, height - 1);
+      for (int i = 0; i < width; ++i) {
+        float sum = 0.0f;
+        for (int row = first; row <= last; ++row) sum += across[std::size_t(row) * width + i];
+        relief.pixels[(std::size_t(j) * width + i) * 3 + 2] = std::sqrt(sum / float(3 * (last - first + 1)));
       }
     }
   });

@@ -69,7 +69,9 @@ struct PlanetImages {
   core::ImageData water;
   // The ground's slopes (two channels: metres of rise per metre towards the east and the north,
   // the same equirect layout), which turn the ground towards or away from the sun
-  // (shaders/lib/ground_relief.glsl); empty: flat ground.
+  // (shaders/lib/ground_relief.glsl), and optionally a third: the slopes' root mean square around
+  // each texel, which sets how steep the relief drawn below the texels is (land_mosaic.glsl;
+  // without it none is drawn); empty: flat ground.
   core::ImageData relief;
   // The water along a window of the planet, finer than `water` (GSHHG's shorelines:
   // io/coastline_files.hpp): one channel, an equirect of the window's edges (degrees; west may

@@ -57,28 +57,29 @@ GLuint equirect_texture_of(int width, int height, int channels, const std::vecto
   return id;
 }
 
-// An equirect half-float texture of `out_channels` (GL_RG16F for 2, GL_RGBA16F for 4) from
+// An equirect half-float texture of `out_channels` (GL_RG16F for 2, GL_RGB16F for 3, GL_RGBA16F for 4) from
 // `channels` floats a texel. Each level goes up in bands of rows through one buffer: a buffer
 // of the whole level would be fresh memory, and on a virtual machine each fresh page costs a
 // fault of several microseconds (docs/orbit_view.md, "Cost").
 GLuint half_equirect_texture(const core::ImageData& image, int out_channels) {
   const int channels = image.channels;
-  const GLenum layout = out_channels == 2 ? GL_RG : GL_RGBA;
+  const GLenum layout = out_channels == 2 ? GL_RG : out_channels == 3 ? GL_RGB : GL_RGBA;
+  const GLenum format = out_channels == 2 ? GL_RG16F : out_channels == 3 ? GL_RGB16F : GL_RGBA16F;
   std::vector<std::uint16_t> halves;
-  return equirect_texture_of(
-      image.width, image.height, channels, image.pixels, out_channels == 2 ? GL_RG16F : GL_RGBA16F,
-      [&](GLuint id, int level, int width, int height, const std::vector<float>& texels) {
-        constexpr int band_texels = 1 << 18;
-        const int band_rows = std::max(1, band_texels / width);
-        glPixelStorei(GL_UNPACK_ALIGNMENT, 2);
-        for (int row = 0; row < height; row += band_rows) {
-          const int rows = std::min(band_rows, height - row);
-          half_texels(texels.data() + std::size_t(row) * width * channels, std::size_t(rows) * width, channels,
-                      out_channels, halves);
-          glTextureSubImage2D(id, level, 0, row, width, rows, layout, GL_HALF_FLOAT, halves.data());
-        }
-        glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-      });
+  return equirect_texture_of(image.width, image.height, channels, image.pixels, format,
+                             [&](GLuint id, int level, int width, int height, const std::vector<float>& texels) {
+                               constexpr int band_texels = 1 << 18;
+                               const int band_rows = std::max(1, band_texels / width);
+                               glPixelStorei(GL_UNPACK_ALIGNMENT, 2);
+                               for (int row = 0; row < height; row += band_rows) {
+                                 const int rows = std::min(band_rows, height - row);
+                                 half_texels(texels.data() + std::size_t(row) * width * channels,
+                                             std::size_t(rows) * width, channels, out_channels, halves);
+                                 glTextureSubImage2D(id, level, 0, row, width, rows, layout, GL_HALF_FLOAT,
+                                                     halves.data());
+                               }
+                               glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+                             });
 }
 
 }  // namespace
@@ -100,7 +101,10 @@ unsigned water_fraction_texture(const core::ImageData& image) {
                              });
 }
 
-unsigned slope_texture(const core::ImageData& image) { return half_equirect_texture(image, 2); }
+unsigned slope_texture(const core::ImageData& image) {
+  // (east, north) slopes, and with a third channel the roughness (an RG texture reads 0 there).
+  return half_equirect_texture(image, image.channels >= 3 ? 3 : 2);
+}
 
 namespace {
 

@@ -15,7 +15,8 @@ unsigned colour_map_texture(const core::ImageData& image);
 // The water fraction (first channel, clamped to 0..1) as R8, filtered as the colour maps.
 unsigned water_fraction_texture(const core::ImageData& image);
 // The ground's slopes (east, north; ground_relief.glsl) as RG16F, filtered as the colour maps:
-// slopes need three digits (ETOPO5's steepest 9 km cells rise by about 0.3 a metre).
+// slopes need three digits (ETOPO5's steepest 9 km cells rise by about 0.3 a metre). With a
+// third channel (the slopes' roughness) RGB16F.
 unsigned slope_texture(const core::ImageData& image);
 // The cover cube as RGBA16F (cover, tau, cloud top km, 0), each face's levels made apart (as
 // OpenGL makes them), clamped at the faces' edges (seamless filtering is the renderer's state).

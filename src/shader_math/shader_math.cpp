@@ -19,6 +19,7 @@ namespace nephele::glsl {
 #include "lib/implicit_field.glsl"
 #include "lib/ground_relief.glsl"
 #include "lib/land_cover.glsl"
+#include "lib/land_mosaic.glsl"
 #include "lib/latitude_bands.glsl"
 #include "lib/model_march.glsl"
 #include "lib/moving_flow.glsl"

@@ -5,6 +5,7 @@ const int PROBE_LAND_PATTERNS = 1;    // field_albedo at footprint x[0].y and cr
 const int PROBE_LAND_URBAN = 2;       // urban_albedo, ground_texture at footprint x[0].y
 const int PROBE_LAND_NATURE = 3;      // forest_cover, snow_cover, land_noise, pattern_detail
 const int PROBE_GROUND_SURFACE = 4;   // ground_surface: albedo and water
+const int PROBE_LAND_MEANS = 5;       // field_mean_albedo and row_crop_albedo's green at crop stage x[0].z
 #ifndef __cplusplus
 layout(binding = 8) uniform sampler2DArray land_texture;
 #include "../lib/land_cover.glsl"
@@ -44,6 +45,7 @@ vec4 probe_land_cover(mat4 x, IN(LandCoverTexture) land) {
     return vec4(forest_cover(xy, x[0].z, x[0].w, footprint), snow_cover(xy, x[0].z, x[0].w, x[3].x),
                 land_noise(xy, x[3].y, 1u), pattern_detail(footprint, x[3].y));
   }
+  if (f == PROBE_LAND_MEANS) return vec4(field_mean_albedo(x[0].z), row_crop_albedo(x[0].z).y);
   GroundSurface s = ground_surface(xy, x[0].z, vec3(x[2]), vec3(0.0f, 0.0f, 1.0f), footprint, t, land);
   return vec4(s.albedo, s.water);  // PROBE_GROUND_SURFACE
 }

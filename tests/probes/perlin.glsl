@@ -6,6 +6,7 @@ const int PROBE_PERLIN_GRADIENT = 1;
 const int PROBE_PERLIN_YZ_WEIGHTS = 2;  // perlin_yz_weights(a, b)
 const int PROBE_PERLIN_FACES = 3;  // perlin_face, perlin_along_row
 const int PROBE_PERLIN_NOISE = 4;
+const int PROBE_PERLIN_NOISE_GRADIENT = 5;  // perlin_noise_gradient (the period unused)
 #ifndef __cplusplus
 #include "../lib/perlin.glsl"
 #endif
@@ -27,5 +28,6 @@ vec4 probe_perlin(mat4 x) {
     vec2 face1 = perlin_face(int(x[0].y) + 1, ys, zs, p.y, p.z, w, key);
     return vec4(face0, face1.x, perlin_along_row(face0, face1, p.x));
   }
+  if (f == PROBE_PERLIN_NOISE_GRADIENT) return perlin_noise_gradient(p, key);
   return vec4(perlin_noise(p, period, key), 0.0f, 0.0f, 0.0f);  // PROBE_PERLIN_NOISE
 }
