@@ -13,6 +13,8 @@
 #include "apps/viewer/viewer.hpp"
 #include "cli_support.hpp"
 #include "core/error.hpp"
+#include "core/time.hpp"
+#include "io/planet_textures.hpp"
 #include "gl_support.hpp"
 #include "params/field_binding.hpp"
 #include "params/table.hpp"
@@ -229,6 +231,68 @@ TEST_CASE("the modeller's volume follows an edit of the flat base and top, not o
   state.model.top = 0.6f;
   source.render(state, 16, 16);
   CHECK(source.volume()->model().top == 0.6f);
+}
+
+TEST_CASE("the viewer's orbit view takes a coast window from GSHHG in low orbit, keeps it nearby and drops it high up",
+          "[viewer][orbit][gpu]") {
+  test::test_context();
+  if (!std::filesystem::is_regular_file(io::gshhg_shorelines_default_path)) {
+    WARN("no " << io::gshhg_shorelines_default_path << " (gmt-gshhg-full): skipped");
+    return;
+  }
+  viewer::ViewState state;
+  state.cover_size = 32;  // a small cover: the coasts are the point
+  state.camera.latitude_deg = 46.95, state.camera.longitude_deg = 7.45;
+  state.camera.height_m = 400e3, state.camera.pitch_deg = -90, state.camera.fov_deg = 60;
+  const int width = 160, height = 90;  // nearest pixels 2.9 km: finer than a quarter of 37 km
+  // From 12000 km first: the water map alone.
+  viewer::OrbitSource source("");
+  state.camera.height_m = 12000e3;
+  source.render(state, width, height);
+  CHECK_FALSE(source.coast_window());
+  state.camera.height_m = 400e3;
+  const render::RenderResult after = source.render(state, width, height);
+  REQUIRE(source.coast_window());
+  CHECK(std::any_of(after.timings_ms.begin(), after.timings_ms.end(),
+                    [](const auto& t) { return t.first == "coast_window"; }));
+  const io::GeoWindow window = *source.coast_window();
+  // It holds the window render --view orbit rasters for the same camera, a quarter larger each way.
+  render::OrbitCamera camera;
+  camera.latitude_deg = 46.95, camera.longitude_deg = 7.45, camera.altitude_m = 400e3;
+  camera.pitch_deg = -90, camera.fov_deg = 60, camera.width = width, camera.height = height;
+  const double radius = render::OrbitSettings{}.planet_radius_m;
+  const std::optional<io::GeoWindow> wanted = io::view_coast_window(camera, radius, 1080);
+  REQUIRE(wanted);
+  CHECK(window.south_deg < wanted->south_deg);
+  CHECK(window.north_deg > wanted->north_deg);
+  CHECK(window.west_deg < wanted->west_deg);
+  CHECK(window.east_deg > wanted->east_deg);
+  CHECK(window.width <= 2048);
+  CHECK(window.height <= 2048);
+  // The frame is the renderer's with that window: a renderer given the same window in its planet
+  // images draws it to the bit, and without the window the lakes in view (Geneva, Neuchatel,
+  // Thun, Brienz ...) and the coasts differ.
+  const io::PlanetTextures textures = io::read_planet_textures("");
+  render::GlobalCoverFaces faces = render::make_global_cover(viewer::cover_of(state));
+  render::OrbitRenderer plain(textures.images, {faces.size, std::move(faces.texels), std::move(faces.optical_thickness),
+                                                std::move(faces.cloud_top)});
+  const double time = core::parse_utc_time(state.time);
+  const render::RenderResult without = plain.render(camera, time);
+  plain.set_coast(io::read_gshhg_water(io::gshhg_shorelines_default_path, window), window.south_deg, window.north_deg,
+                  window.west_deg, window.east_deg);
+  const render::RenderResult with = plain.render(camera, time);
+  CHECK(with.radiance.pixels == after.radiance.pixels);
+  CHECK(without.radiance.pixels != after.radiance.pixels);
+  // Half a degree east the window still serves: nothing is rastered.
+  state.camera.longitude_deg += 0.5;
+  const render::RenderResult east = source.render(state, width, height);
+  CHECK(std::none_of(east.timings_ms.begin(), east.timings_ms.end(),
+                     [](const auto& t) { return t.first == "coast_window"; }));
+  CHECK(source.coast_window()->west_deg == window.west_deg);
+  // From 12000 km the water map serves and the window is dropped.
+  state.camera.height_m = 12000e3;
+  source.render(state, width, height);
+  CHECK_FALSE(source.coast_window());
 }
 
 TEST_CASE("modeller picking: project() puts a point where cursor_ray() looks back through it",

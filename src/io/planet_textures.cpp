@@ -288,22 +288,13 @@ PlanetTextures read_planet_textures(const std::string& day, const std::string& n
   return out;
 }
 
-void add_view_coast(PlanetTextures& textures, const render::OrbitCamera& camera, double planet_radius_m) {
-  if (!textures.images.sea_colour) return;
+std::optional<GeoWindow> view_coast_window(const render::OrbitCamera& camera, double planet_radius_m, int water_width) {
   // The ground's finest pixel, straight below the camera, against the water map's texel (37 km):
   // from below a quarter of it (about 9 km: 400 and 2000 km, not 12000, where the raster of
   // nearly a hemisphere would add 0.6 s for coasts a little sharper than the map's).
   const double pixel_angle = 2.0 * std::tan(camera.fov_deg * M_PI / 360.0) / camera.width;
   const double nearest_pixel_m = camera.altitude_m * pixel_angle;
-  const int water_width = std::max(textures.images.water.width, 1);
-  if (nearest_pixel_m > 0.25 * 2.0 * M_PI * planet_radius_m / water_width) return;
-  std::error_code error;
-  if (!std::filesystem::is_regular_file(gshhg_shorelines_default_path, error)) {
-    textures.warnings.push_back(std::string(gshhg_shorelines_default_path) +
-                                " is missing (Debian package gmt-gshhg-full): coasts and lakes as sharp as "
-                                "ETOPO5's 18 km water map");
-    return;
-  }
+  if (nearest_pixel_m > 0.25 * 2.0 * M_PI * planet_radius_m / std::max(water_width, 1)) return std::nullopt;
   // The window: the latitudes and longitudes of the ground points a grid of the frame's rays
   // meets; a ray that misses the planet adds the ground below its nearest approach, which lies
   // beyond the horizon in its direction.
@@ -326,7 +317,7 @@ void add_view_coast(PlanetTextures& textures, const render::OrbitCamera& camera,
       south = std::min(south, lat), north = std::max(north, lat);
       west = std::min(west, lon), east = std::max(east, lon);
     }
-  if (south >= north || west >= east) return;
+  if (south >= north || west >= east) return std::nullopt;
   // A margin of a degree, and a pole in view takes every longitude.
   south = std::max(south - 1.0, -90.0), north = std::min(north + 1.0, 90.0);
   west -= 1.0, east += 1.0;
@@ -336,19 +327,36 @@ void add_view_coast(PlanetTextures& textures, const render::OrbitCamera& camera,
   const double mid = std::cos(0.5 * (south + north) * M_PI / 180.0);
   const double finest_deg = nearest_pixel_m / planet_radius_m * 180.0 / M_PI;
   const double texel_deg = std::max({finest_deg, (north - south) / 2048.0, (east - west) * mid / 2048.0});
-  GeoWindow window{south,
+  return GeoWindow{south,
                    north,
                    west,
                    east,
                    std::clamp(int(std::ceil((east - west) * mid / texel_deg)), 1, 2048),
                    std::clamp(int(std::ceil((north - south) / texel_deg)), 1, 2048)};
-  textures.images.coast = read_gshhg_water(gshhg_shorelines_default_path, window);
-  textures.images.coast_south_deg = south, textures.images.coast_north_deg = north;
-  textures.images.coast_west_deg = west, textures.images.coast_east_deg = east;
-  char text[160];
-  std::snprintf(text, sizeof text, " and %s within %.2f to %.2f N, %.2f to %.2f E (%d x %d)",
-                gshhg_shorelines_default_path, south, north, west, east, window.width, window.height);
-  textures.water_source += text;
+}
+
+std::string coast_source(const GeoWindow& window) {
+  char text[200];
+  std::snprintf(text, sizeof text, "%s within %.2f to %.2f N, %.2f to %.2f E (%d x %d)", gshhg_shorelines_default_path,
+                window.south_deg, window.north_deg, window.west_deg, window.east_deg, window.width, window.height);
+  return text;
+}
+
+void add_view_coast(PlanetTextures& textures, const render::OrbitCamera& camera, double planet_radius_m) {
+  if (!textures.images.sea_colour) return;
+  const std::optional<GeoWindow> window = view_coast_window(camera, planet_radius_m, textures.images.water.width);
+  if (!window) return;
+  std::error_code error;
+  if (!std::filesystem::is_regular_file(gshhg_shorelines_default_path, error)) {
+    textures.warnings.push_back(std::string(gshhg_shorelines_default_path) +
+                                " is missing (Debian package gmt-gshhg-full): coasts and lakes as sharp as "
+                                "ETOPO5's 18 km water map");
+    return;
+  }
+  textures.images.coast = read_gshhg_water(gshhg_shorelines_default_path, *window);
+  textures.images.coast_south_deg = window->south_deg, textures.images.coast_north_deg = window->north_deg;
+  textures.images.coast_west_deg = window->west_deg, textures.images.coast_east_deg = window->east_deg;
+  textures.water_source += " and " + coast_source(*window);
 }
 
 render::CoverCube read_cover_cube(const std::filesystem::path& directory) {

@@ -2,9 +2,11 @@
 // The planet's surface images for the orbit view (docs/orbit_view.md): equirect day and night
 // (city lights) maps read with OpenImageIO and decoded from sRGB to linear values.
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "io/coastline_files.hpp"
 #include "render/orbit_renderer.hpp"
 
 namespace nephele::io {
@@ -33,11 +35,20 @@ struct PlanetTextures {
 PlanetTextures read_planet_textures(const std::string& day, const std::string& night = "",
                                     const std::string& option = "--earth-texture");
 
-// With the default day map (sea_colour), where the camera's nearest pixels are finer than a quarter of the
-// water map's texel: the water along the ground in view from GSHHG's full-resolution shorelines
-// (coastline_files.hpp) as PlanetImages::coast, texels about as fine as those pixels (at most
-// 2048 x 2048), and water_source saying so; a warning where the file is missing.
+// The window of the ground in view whose water add_view_coast rasters: where the camera's nearest
+// pixels are finer than a quarter of the texel of a water map `water_width` texels around, the
+// latitudes and longitudes (about the camera's) the frame's rays meet plus a degree, every
+// longitude with a pole in view, texels about as fine as those pixels (at most 2048 x 2048);
+// none from higher up.
+std::optional<GeoWindow> view_coast_window(const render::OrbitCamera& camera, double planet_radius_m, int water_width);
+
+// With the default day map (sea_colour), within view_coast_window: the water along the ground in
+// view from GSHHG's full-resolution shorelines (coastline_files.hpp) as PlanetImages::coast, and
+// water_source saying so; a warning where the file is missing.
 void add_view_coast(PlanetTextures& textures, const render::OrbitCamera& camera, double planet_radius_m);
+
+// How a render's sidecar names a coast window (appended to the water map's source).
+std::string coast_source(const GeoWindow& window);
 
 // The checks read_planet_textures makes of named maps, from their headers alone (a missing or
 // unreadable file, fewer than 2 pixels across, more than half the available memory as floats):

@@ -219,17 +219,7 @@ OrbitRenderer::OrbitRenderer(const PlanetImages& planet, const CoverCube& cover,
   gl_->day_width = planet.day.width;
   gl_->night = colour_map_texture(or_none(planet.night, 1, no_lights));
   gl_->water = water_fraction_texture(or_none(planet.water, 1, no_water));
-  const bool coast = usable(planet.coast, 1) && planet.coast_north_deg > planet.coast_south_deg &&
-                     planet.coast_east_deg > planet.coast_west_deg;
-  gl_->coast = water_fraction_texture(coast ? planet.coast : no_water);
-  glTextureParameteri(gl_->coast, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);  // a window, not the globe
-  if (coast) {
-    gl_->coast_window =
-        glm::vec4(planet.coast_south_deg, planet.coast_north_deg, planet.coast_west_deg, planet.coast_east_deg) *
-        float(degree);
-    gl_->coast_texel = float((planet.coast_north_deg - planet.coast_south_deg) * degree * settings.planet_radius_m /
-                             planet.coast.height);
-  }
+  set_coast(planet.coast, planet.coast_south_deg, planet.coast_north_deg, planet.coast_west_deg, planet.coast_east_deg);
   gl_->sea_colour = planet.sea_colour;
   const core::ImageData& relief = or_none(planet.relief, 2, flat);
   gl_->relief = slope_texture(relief);
@@ -265,6 +255,23 @@ void OrbitRenderer::set_cover(const CoverCube& cover) {
   gl_->cover = texture;
   gl_->cover_size = cover.size;
   gl_->cover_properties = !cover.optical_thickness.empty();
+}
+
+void OrbitRenderer::set_coast(const core::ImageData& coast, double south_deg, double north_deg, double west_deg,
+                              double east_deg) {
+  const bool usable = coast.width >= 1 && coast.height >= 1 && coast.channels >= 1 &&
+                      coast.pixels.size() == static_cast<size_t>(coast.width) * coast.height * coast.channels &&
+                      north_deg > south_deg && east_deg > west_deg;
+  static const core::ImageData no_water{1, 1, 1, {0.0f}};
+  if (gl_->coast != 0) glDeleteTextures(1, &gl_->coast);
+  gl_->coast = water_fraction_texture(usable ? coast : no_water);
+  glTextureParameteri(gl_->coast, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);  // a window, not the globe
+  gl_->coast_window = glm::vec4(0.0f);                                   // west >= east: none
+  gl_->coast_texel = 1.0f;
+  if (usable) {
+    gl_->coast_window = glm::vec4(south_deg, north_deg, west_deg, east_deg) * float(degree);
+    gl_->coast_texel = float((north_deg - south_deg) * degree * settings_.planet_radius_m / coast.height);
+  }
 }
 
 std::vector<glm::uvec2> OrbitRenderer::tiles_in_air(const OrbitCamera& camera) const {

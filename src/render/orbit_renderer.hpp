@@ -144,6 +144,9 @@ class OrbitRenderer {
   const OrbitSettings& settings() const { return settings_; }
   void set_settings(const OrbitSettings& settings);  // same textures; checks as the constructor
   void set_cover(const CoverCube& cover);            // a new cover (e.g. regenerated), same checks
+  // A new window of water finer than the water map (as PlanetImages::coast and its edges, degrees);
+  // an empty or malformed image, or edges that enclose nothing, remove the window.
+  void set_coast(const core::ImageData& coast, double south_deg, double north_deg, double west_deg, double east_deg);
 
  private:
   void update_sky_table();  // makes the air's tables anew when the radius changed

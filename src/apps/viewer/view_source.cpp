@@ -1,6 +1,7 @@
 #include "apps/viewer/view_source.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <iostream>
 #include <sstream>
 
@@ -128,6 +129,15 @@ render::RenderResult OrbitSource::render(const ViewState& state, int width, int 
       setup_ms.emplace_back("planet_textures", gpu::time_pass([&] {
                               renderer_ = std::make_unique<render::OrbitRenderer>(textures.images, cube);
                             }));
+      std::error_code error;
+      sea_colour_ = textures.images.sea_colour;
+      if (sea_colour_ && !std::filesystem::is_regular_file(io::gshhg_shorelines_default_path, error)) {
+        std::cerr << "warning: " << io::gshhg_shorelines_default_path
+                  << " is missing (Debian package gmt-gshhg-full): coasts and lakes as sharp as ETOPO5's 18 km "
+                     "water map\n";
+        sea_colour_ = false;
+      }
+      water_width_ = textures.images.water.width;
     }
     cover_key_ = key;
   }
@@ -139,9 +149,67 @@ render::RenderResult OrbitSource::render(const ViewState& state, int width, int 
   camera.altitude_m = std::clamp(state.camera.height_m, 1.0, params::scene::altitude_km.max * 1000.0);
   camera.width = width;
   camera.height = height;
+  update_coast(camera, setup_ms);
   render::RenderResult result = renderer_->render(camera, core::parse_utc_time(state.time), first_row, row_count);
   result.timings_ms.insert(result.timings_ms.begin(), setup_ms.begin(), setup_ms.end());
   return result;
+}
+
+namespace {
+
+// Whether `have` holds all of `want` (longitudes compared a turn either way) with texels at most
+// twice as coarse.
+bool window_serves(const io::GeoWindow& have, const io::GeoWindow& want) {
+  if (want.south_deg < have.south_deg || want.north_deg > have.north_deg) return false;
+  bool inside = false;
+  for (double turn : {-360.0, 0.0, 360.0})
+    inside = inside || (want.west_deg + turn >= have.west_deg && want.east_deg + turn <= have.east_deg);
+  const double have_texel = (have.north_deg - have.south_deg) / have.height;
+  const double want_texel = (want.north_deg - want.south_deg) / want.height;
+  return inside && have_texel <= 2.0 * want_texel;
+}
+
+}  // namespace
+
+void OrbitSource::update_coast(const render::OrbitCamera& camera,
+                               std::vector<std::pair<std::string, double>>& setup_ms) {
+  if (!sea_colour_) return;
+  const std::optional<io::GeoWindow> wanted =
+      io::view_coast_window(camera, renderer_->settings().planet_radius_m, water_width_);
+  if (!wanted) {
+    // High up the water map serves; a window kept from below would only cost its reads.
+    if (coast_window_) {
+      renderer_->set_coast({}, 0.0, 0.0, 0.0, 0.0);
+      coast_window_.reset();
+    }
+    return;
+  }
+  if (coast_window_ && window_serves(*coast_window_, *wanted)) return;
+  // A margin of a quarter of the window's size each way (within the 2048 texels), so that a
+  // moving camera keeps the window for a while.
+  io::GeoWindow window = *wanted;
+  const double texel = (window.north_deg - window.south_deg) / window.height;
+  const double dlat = 0.25 * (window.north_deg - window.south_deg), dlon = 0.25 * (window.east_deg - window.west_deg);
+  window.south_deg = std::max(window.south_deg - dlat, -90.0);
+  window.north_deg = std::min(window.north_deg + dlat, 90.0);
+  if (window.east_deg - window.west_deg + 2 * dlon < 360.0) window.west_deg -= dlon, window.east_deg += dlon;
+  const double mid = std::cos(0.5 * (window.south_deg + window.north_deg) * M_PI / 180.0);
+  const double coarser = std::max(
+      {texel, (window.north_deg - window.south_deg) / 2048.0, (window.east_deg - window.west_deg) * mid / 2048.0});
+  window.width = std::clamp(int(std::ceil((window.east_deg - window.west_deg) * mid / coarser)), 1, 2048);
+  window.height = std::clamp(int(std::ceil((window.north_deg - window.south_deg) / coarser)), 1, 2048);
+  try {
+    setup_ms.emplace_back(
+        "coast_window", gpu::time_pass([&] {
+          const core::ImageData water = io::read_gshhg_water(io::gshhg_shorelines_default_path, window);
+          renderer_->set_coast(water, window.south_deg, window.north_deg, window.west_deg, window.east_deg);
+        }));
+    coast_window_ = window;
+  } catch (const std::exception& e) {
+    // A damaged shorelines file: the water map alone from now on, as without the file.
+    std::cerr << "warning: " << e.what() << ": coasts and lakes as sharp as ETOPO5's water map\n";
+    sea_colour_ = false;
+  }
 }
 
 ViewSwitch::ViewSwitch(const std::filesystem::path& cover_dir, const std::filesystem::path& cache_directory)

@@ -3,11 +3,13 @@
 // chosen per frame by ViewSwitch (make_view_source).
 #include "params/render_quality.hpp"
 #include <filesystem>
+#include <optional>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "apps/viewer/view_state.hpp"
+#include "io/coastline_files.hpp"
 #include "regional/weather.hpp"
 #include "model/density_volume.hpp"
 #include "render/cloud_renderer.hpp"
@@ -84,6 +86,11 @@ class GroundSource : public ViewSource {
 // The orbit view (render::OrbitRenderer): the planet's maps of io::read_planet_textures (the
 // xplanet maps, else a procedural planet with a warning) and the cover of `cover_dir`, else made
 // from the state's cover parameters. The camera's height is the altitude above the sphere.
+// From low orbit, with the default maps, the coasts and lakes in view come from GSHHG's
+// shorelines as in `nephele render` (io::view_coast_window): a window with a margin around the
+// ground in view, rastered again only when the ground in view leaves it or the camera has come
+// down far enough to need texels twice as fine (in the frame that needs it: a frame depends on
+// its camera and the window, never on a thread's timing).
 class OrbitSource : public ViewSource {
  public:
   explicit OrbitSource(const std::filesystem::path& cover_dir);
@@ -93,11 +100,19 @@ class OrbitSource : public ViewSource {
   // `coarse` is ignored (the orbit pass's steps follow the pixel's footprint).
   render::RenderResult render(const ViewState& state, int width, int height, int first_row = 0, int row_count = 0,
                               bool coarse = false) override;
+  // The coast window the renders use now (none: the water map alone).
+  std::optional<io::GeoWindow> coast_window() const { return coast_window_; }
 
  private:
+  // Rasters a window where the camera's view needs one the current one does not give.
+  void update_coast(const render::OrbitCamera& camera, std::vector<std::pair<std::string, double>>& setup_ms);
+
   std::filesystem::path cover_dir_;
   std::unique_ptr<render::OrbitRenderer> renderer_;
   std::string cover_key_;
+  bool sea_colour_ = false;  // the default maps: the sea's own colour, coasts from GSHHG
+  int water_width_ = 0;
+  std::optional<io::GeoWindow> coast_window_;  // uploaded
 };
 
 // The view nephele view shows: the orbit renderer where orbit_share(state) is 1, the ground's
