@@ -72,14 +72,16 @@ TEST_CASE("the forest covers the share of the land that the texel's brightness i
     const float expected = std::clamp((open - glsl::mosaic_luminance(vec3(day))) / (open - forest),
                                       glsl::MOSAIC_FOREST_MIN, glsl::MOSAIC_FOREST_MAX);
     CHECK(share == Approx(expected).epsilon(1e-5));
-    int wooded = 0;
-    for (const vec3& up : points)
-      wooded += glsl::mosaic_forest(sample_at(up, fine_footprint), share, fine_footprint) > 0.5f;
-    // Binomial sampling (4 standard deviations) and the field's departure from the normal
-    // distribution whose quantile sets the threshold (three octaves of gradient noise: 0.02).
-    const double n = double(points.size());
-    INFO("share " << share << ", measured " << wooded / n);
-    CHECK(std::abs(wooded / n - share) <= 0.02 + 4 * std::sqrt(share * (1 - share) / n));
+    for (const float footprint : {fine_footprint, 1000.0f, 3000.0f}) {
+      double wooded = 0.0;
+      for (const vec3& up : points) wooded += glsl::mosaic_forest(sample_at(up, footprint), share);
+      // Sampling (4 standard deviations of a share between 0 and 1) and the field's departure
+      // from the normal distribution whose quantile sets the threshold (three octaves of gradient
+      // noise: 0.02). The footprint changes how soft the woods' edges are, not their share.
+      const double n = double(points.size());
+      INFO("share " << share << ", footprint " << footprint << " m, measured " << wooded / n);
+      CHECK(std::abs(wooded / n - share) <= 0.02 + 4 * std::sqrt(share * (1 - share) / n));
+    }
   }
   // Brighter texels have less forest, darker ones more: the Beauce least, the Black Forest most.
   CHECK(glsl::mosaic_forest_share(vec3(beauce)) < glsl::mosaic_forest_share(vec3(paris)));
@@ -115,15 +117,15 @@ TEST_CASE("vegetated land is forest or open land, forest darker by the albedos' 
   const float share = glsl::mosaic_forest_share(vec3(paris));
   const vec3 open = vec3(1.0f) / (vec3(1.0f - share) + share * r);
   int forest = 0, fields = 0;
-  for (const vec3& up : sphere_points(2000, 7)) {
+  for (const vec3& up : sphere_points(4000, 7)) {
     const glsl::MosaicSample sample = sample_at(up, fine_footprint);
-    const float wood = glsl::mosaic_forest(sample, share, fine_footprint);
+    const float wood = glsl::mosaic_forest(sample, share);
     const vec3 f = glsl::land_mosaic(up, paris, radius, fine_footprint, day_texel, sample);
-    if (wood == 1.0f) {
-      // In the forest the factor is exactly the forest's: no brightness of the fields there.
+    if (wood > 1.0f - 1e-6f) {
+      // Deep in the forest the factor is the forest's: no brightness of the fields there.
       ++forest;
       for (int c = 0; c < 3; ++c) CHECK(f[c] == Approx(r[c] * open[c]).epsilon(1e-5));
-    } else if (wood == 0.0f) {
+    } else if (wood < 1e-6f) {
       // Open land: the open factor times the fields' brightness, the same in every channel
       // (ratios of channels kept), within the fields' spread's 4.3 deviations of gradient noise
       // (PERLIN_BOUND / PERLIN_OCTAVE_SIGMA = 3.84).
@@ -135,8 +137,8 @@ TEST_CASE("vegetated land is forest or open land, forest darker by the albedos' 
             glsl::MOSAIC_FIELD_SPREAD * glsl::PERLIN_BOUND / glsl::PERLIN_OCTAVE_SIGMA + 1e-5f);
     }
   }
-  CHECK(forest > 200);
-  CHECK(fields > 500);
+  CHECK(forest > 20);  // of 4000: the tails beyond 4.75 deviations of the unresolved part
+  CHECK(fields > 200);
 }
 
 TEST_CASE("arid land varies in brightness about the map's colour, keeping its hue", "[fast][land mosaic]") {

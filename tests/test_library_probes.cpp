@@ -2113,28 +2113,24 @@ TEST_CASE("land_mosaic.glsl on the GPU agrees with the CPU", "[probe]") {
       cases.push_back(
           {arguments(PROBE_MOSAIC_SAMPLE, vec4(footprint, 18500.0f, radius, 0), up, vec4(0), vec4(roughness, 0, 0, 0)),
            3 * 1.9f * octave + 64 * kTranscendental});
-    // The slope (sums of weights over wavelengths), the share (a ratio of luminances), the
+    // The unresolved deviation (a square root of sums), the share (a ratio of luminances), the
     // vegetation's smoothstep of (G - R) / (G + R) (at most 15 / 0.1 steep in it), the octave.
     cases.push_back(
         {arguments(PROBE_MOSAIC_PARTS, vec4(footprint, 0, radius, 0), up, colour()), 150 * kArithmetic + octave});
-    // The forest of a given sample: the normal quantile's log and square root (kTranscendental),
-    // the smoothstep at most 1.5 / (2 x edge) steep, edge >= 0.05 x 0.1.
-    const vec4 sample(r(-0.3f, 0.3f), r(0.1f, 0.25f), r(1e-6f, 1e-4f), r(0.1f, 0.9f));
+    // The forest of a given sample: the normal quantile's log and square root and the CDF's
+    // exponential (kTranscendental each), the CDF at most 0.4 / 0.066 steep in the value (the
+    // unresolved deviation is at least 0.27 sqrt(0.06)).
+    const vec4 sample(r(-0.3f, 0.3f), r(0.1f, 0.25f), r(0.066f, 0.2f), r(0.1f, 0.9f));
     cases.push_back(
         {arguments(PROBE_MOSAIC_FOREST, vec4(footprint, 0, 0, 0), vec4(0), vec4(0), sample), 150 * kTranscendental});
-    // The whole factor at points where the forest's smoothstep is flat (0 or 1: found on the CPU,
-    // as the land cover's probe takes cells' centres), so that the noise's rounding moves only
-    // the arid land's and the fields' brightness, by their spreads over the deviations (at least
-    // 0.1 x 0.27) times an octave's error.
-    const vec4 day = colour();
-    const MosaicSample s = mosaic_sample(vec3(up), radius, footprint, 0.0f, 1.0f);
-    const float share = mosaic_forest_share(vec3(day));
-    const float threshold = s.deviation * normal_quantile(1.0f - share);
-    const float edge = 0.05f * s.deviation + 0.5f * footprint * s.slope;
-    if (std::abs(s.value - threshold) > edge + 2 * octave)
-      cases.push_back(
-          {arguments(PROBE_LAND_MOSAIC, vec4(footprint, r(500.0f, 20000.0f), radius, 0), up, day),
-           (MOSAIC_ARID_SPREAD + MOSAIC_FIELD_SPREAD) / (0.1f * PERLIN_OCTAVE_SIGMA) * octave + 64 * kArithmetic});
+    // The whole factor: the field's error (three octaves, weights up to 0.5) moves the forest's
+    // share by at most 6 per unit (above) and the factor by that times the step from open land to
+    // forest (below 2.1), the arid land's and the fields' brightness by their spreads over the
+    // deviations (at least 0.1 x 0.27) times an octave's error.
+    cases.push_back(
+        {arguments(PROBE_LAND_MOSAIC, vec4(footprint, r(500.0f, 20000.0f), radius, 0), up, colour()),
+         (6 * 2.1f * 1.1f + (MOSAIC_ARID_SPREAD + MOSAIC_FIELD_SPREAD) / (0.1f * PERLIN_OCTAVE_SIGMA)) * octave +
+             150 * kTranscendental});
   }
   compare("land_mosaic", probe_land_mosaic, cases);
 }

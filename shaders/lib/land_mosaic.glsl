@@ -20,8 +20,12 @@
 const float MOSAIC_WAVELENGTH = 12000.0f;  // m, the largest patches' wavelength
 const float MOSAIC_OCTAVE_RATIO = 3.0f;
 const int MOSAIC_OCTAVES = 3;
-// The octaves' weights in the forest's field: the finer ones strong enough to fray the woods.
+// The octaves' weights in the forest's field, falling by 0.7 an octave, the finer ones strong
+// enough to fray the woods. The field goes on below the finest octave drawn with the same law:
+// those octaves (sum of squares 0.25^2 x 0.49 / (1 - 0.49) = 0.06) are never drawn, but the woods
+// they would make inside a footprint set how much of it is forest (mosaic_forest).
 const vec3 MOSAIC_WEIGHTS = vec3(0.5f, 0.35f, 0.25f);
+const float MOSAIC_TAIL_VARIANCE = 0.0600490f;
 // The default day map's open farmland: the linear luminance of NASA's Blue Marble (xplanet's
 // earth.jpg) over the Beauce (48.2 N, 1.5 E, 5 x 5 texels), the brightest of Europe's farmland.
 const float MOSAIC_OPEN_LUMINANCE = 0.116f;
@@ -71,10 +75,10 @@ vec4 mosaic_octave(vec3 p, int k) { return perlin_noise_gradient(p, noise_key(0x
 
 // The field and the relief at a point of the ground.
 struct MosaicSample {
-  float value;      // the forest's field: woods where it is high
-  float deviation;  // its standard deviation over the octaves drawn
-  float slope;      // its mean gradient's magnitude per m over the octaves drawn (the woods' edges)
-  vec2 relief;      // the relief's slopes below the relief map's texels (east, north; m/m)
+  float value;       // the forest's field as drawn: woods where it is high
+  float deviation;   // its standard deviation over the octaves drawn
+  float unresolved;  // and that of the rest of the field, faded or never drawn, inside the footprint
+  vec2 relief;       // the relief's slopes below the relief map's texels (east, north; m/m)
 };
 
 // The field and the relief at the unit vertical `up` of a planet of `radius` (m), seen with a
@@ -88,22 +92,22 @@ MosaicSample mosaic_sample(vec3 up, float radius, float footprint, float roughne
   MosaicSample s;
   s.value = 0.0f;
   s.deviation = 0.0f;
-  s.slope = 0.0f;
+  s.unresolved = 0.0f;
   s.relief = vec2(0.0f);
   vec3 east = vec3(-up.y, up.x, 0.0f);
   float east_length = length(east);
   east = east_length > 1e-6f ? east / east_length : vec3(0.0f);
   vec3 north = cross(up, east);
-  float variance = 0.0f;
+  float variance = 0.0f, unresolved = MOSAIC_TAIL_VARIANCE;
   float wavelength = MOSAIC_WAVELENGTH;
   for (int k = 0; k < MOSAIC_OCTAVES; ++k) {
     float detail = pattern_detail(footprint, wavelength);
+    unresolved += MOSAIC_WEIGHTS[k] * MOSAIC_WEIGHTS[k] * (1.0f - detail * detail);
     if (detail > 0.0f) {
       vec4 octave = mosaic_octave(up * (radius / wavelength), k);
       float w = MOSAIC_WEIGHTS[k] * detail;
       s.value += w * octave.w;
       variance += w * w;
-      s.slope += w / wavelength;
       // Lattice units per m are 1 / wavelength; the octave's slopes scaled to the steepness.
       float steepness = roughness * pow(wavelength / (2.0f * relief_texel), RELIEF_HURST - 1.0f);
       vec2 gradient = vec2(dot(vec3(octave), east), dot(vec3(octave), north));
@@ -112,17 +116,20 @@ MosaicSample mosaic_sample(vec3 up, float radius, float footprint, float roughne
     wavelength /= MOSAIC_OCTAVE_RATIO;
   }
   s.deviation = PERLIN_OCTAVE_SIGMA * sqrt(variance);
-  s.slope *= PERLIN_OCTAVE_SIGMA;
+  s.unresolved = PERLIN_OCTAVE_SIGMA * sqrt(unresolved);
   return s;
 }
 
 // The forest's share of the footprint at a point of the field where the texel's share is
-// `share`: the field above its (1 - share) quantile, taken as the normal distribution's (a sum of
-// octaves of gradient noise is close to normal), with an edge about a footprint wide.
-float mosaic_forest(IN(MosaicSample) s, float share, float footprint) {
-  float threshold = s.deviation * normal_quantile(1.0f - share);
-  float edge = 0.05f * s.deviation + 0.5f * footprint * s.slope;
-  return smoothstep(threshold - edge, threshold + edge, s.value);
+// `share`: the whole field (drawn and unresolved) lies above its (1 - share) quantile there, the
+// field taken as normal (a sum of octaves of gradient noise is close to normal). With the drawn
+// value v and the unresolved part's deviation u, that is Phi((v - t) / u) for the threshold t of
+// the whole field's deviation: over the texel the mean is the share, whatever the footprint, and
+// the woods' edges are as soft as the footprint's unseen woods make them.
+float mosaic_forest(IN(MosaicSample) s, float share) {
+  float whole = sqrt(s.deviation * s.deviation + s.unresolved * s.unresolved);
+  float threshold = whole * normal_quantile(1.0f - share);
+  return normal_cdf((s.value - threshold) / s.unresolved);
 }
 
 // The factor (per channel) by which the land's albedo at the unit vertical `up` of a planet of
@@ -143,7 +150,7 @@ vec3 land_mosaic(vec3 up, vec4 day, float radius, float footprint, float day_tex
   if (field_detail > 0.0f)
     fields += field_detail * MOSAIC_FIELD_SPREAD / PERLIN_OCTAVE_SIGMA *
               mosaic_octave(up * (radius / MOSAIC_FIELD_WAVELENGTH), 3).w;
-  vec3 vegetated = mix(fields * open_factor, r * open_factor, mosaic_forest(s, share, footprint));
+  vec3 vegetated = mix(fields * open_factor, r * open_factor, mosaic_forest(s, share));
   float arid = max(1.0f + MOSAIC_ARID_SPREAD * s.value / max(s.deviation, 1e-6f), 0.5f);
   vec3 factor = mix(vec3(arid), vegetated, mosaic_vegetation(vec3(day)));
   return mix(vec3(1.0f), factor, strength);
