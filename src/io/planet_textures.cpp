@@ -288,6 +288,32 @@ PlanetTextures read_planet_textures(const std::string& day, const std::string& n
   return out;
 }
 
+namespace {
+
+// A window's edges with texels of `texel_deg` (degrees north to south, and as long east to west
+// at its middle latitude) or coarser, at most 2048 along either side (finer costs a second and
+// more in the upload of its mips, for coasts a little sharper than a pixel).
+GeoWindow window_of(double south, double north, double west, double east, double texel_deg) {
+  const double mid = std::cos(0.5 * (south + north) * M_PI / 180.0);
+  const double texel = std::max({texel_deg, (north - south) / 2048.0, (east - west) * mid / 2048.0});
+  return GeoWindow{south,
+                   north,
+                   west,
+                   east,
+                   std::clamp(int(std::ceil((east - west) * mid / texel)), 1, 2048),
+                   std::clamp(int(std::ceil((north - south) / texel)), 1, 2048)};
+}
+
+// How a render's sidecar names a coast window (appended to the water map's source).
+std::string coast_source(const GeoWindow& window) {
+  char text[200];
+  std::snprintf(text, sizeof text, "%s within %.2f to %.2f N, %.2f to %.2f E (%d x %d)", gshhg_shorelines_default_path,
+                window.south_deg, window.north_deg, window.west_deg, window.east_deg, window.width, window.height);
+  return text;
+}
+
+}  // namespace
+
 std::optional<GeoWindow> view_coast_window(const render::OrbitCamera& camera, double planet_radius_m, int water_width) {
   // The ground's finest pixel, straight below the camera, against the water map's texel (37 km):
   // from below a quarter of it (about 9 km: 400 and 2000 km, not 12000, where the raster of
@@ -322,35 +348,32 @@ std::optional<GeoWindow> view_coast_window(const render::OrbitCamera& camera, do
   south = std::max(south - 1.0, -90.0), north = std::min(north + 1.0, 90.0);
   west -= 1.0, east += 1.0;
   if (north >= 89.0 || south <= -89.0 || east - west >= 360.0) west = camera.longitude_deg - 180.0, east = west + 360.0;
-  // Texels about as fine as the nearest pixels, at most 2048 along either side (finer costs a
-  // second and more in the upload of its mips, for coasts a little sharper than a pixel).
-  const double mid = std::cos(0.5 * (south + north) * M_PI / 180.0);
-  const double finest_deg = nearest_pixel_m / planet_radius_m * 180.0 / M_PI;
-  const double texel_deg = std::max({finest_deg, (north - south) / 2048.0, (east - west) * mid / 2048.0});
-  return GeoWindow{south,
-                   north,
-                   west,
-                   east,
-                   std::clamp(int(std::ceil((east - west) * mid / texel_deg)), 1, 2048),
-                   std::clamp(int(std::ceil((north - south) / texel_deg)), 1, 2048)};
+  // Texels about as fine as the nearest pixels.
+  return window_of(south, north, west, east, nearest_pixel_m / planet_radius_m * 180.0 / M_PI);
 }
 
-std::string coast_source(const GeoWindow& window) {
-  char text[200];
-  std::snprintf(text, sizeof text, "%s within %.2f to %.2f N, %.2f to %.2f E (%d x %d)", gshhg_shorelines_default_path,
-                window.south_deg, window.north_deg, window.west_deg, window.east_deg, window.width, window.height);
-  return text;
+GeoWindow widened_coast_window(const GeoWindow& window, double share) {
+  const double dlat = share * (window.north_deg - window.south_deg);
+  const double dlon = share * (window.east_deg - window.west_deg);
+  double west = window.west_deg, east = window.east_deg;
+  if (east - west + 2 * dlon < 360.0) west -= dlon, east += dlon;
+  return window_of(std::max(window.south_deg - dlat, -90.0), std::min(window.north_deg + dlat, 90.0), west, east,
+                   (window.north_deg - window.south_deg) / window.height);
+}
+
+std::optional<std::string> missing_shorelines_warning() {
+  std::error_code error;
+  if (std::filesystem::is_regular_file(gshhg_shorelines_default_path, error)) return std::nullopt;
+  return std::string(gshhg_shorelines_default_path) +
+         " is missing (Debian package gmt-gshhg-full): coasts and lakes as sharp as ETOPO5's 18 km water map";
 }
 
 void add_view_coast(PlanetTextures& textures, const render::OrbitCamera& camera, double planet_radius_m) {
   if (!textures.images.sea_colour) return;
   const std::optional<GeoWindow> window = view_coast_window(camera, planet_radius_m, textures.images.water.width);
   if (!window) return;
-  std::error_code error;
-  if (!std::filesystem::is_regular_file(gshhg_shorelines_default_path, error)) {
-    textures.warnings.push_back(std::string(gshhg_shorelines_default_path) +
-                                " is missing (Debian package gmt-gshhg-full): coasts and lakes as sharp as "
-                                "ETOPO5's 18 km water map");
+  if (const std::optional<std::string> warning = missing_shorelines_warning()) {
+    textures.warnings.push_back(*warning);
     return;
   }
   textures.images.coast = read_gshhg_water(gshhg_shorelines_default_path, *window);

@@ -42,13 +42,17 @@ PlanetTextures read_planet_textures(const std::string& day, const std::string& n
 // none from higher up.
 std::optional<GeoWindow> view_coast_window(const render::OrbitCamera& camera, double planet_radius_m, int water_width);
 
+// `window` grown by `share` of its size each way (clamped at the poles, at most a whole turn),
+// with texels as fine as its own where the 2048 texels a side allow: what a moving camera keeps.
+GeoWindow widened_coast_window(const GeoWindow& window, double share);
+
+// The warning for a missing GSHHG shorelines file, or none where it is there.
+std::optional<std::string> missing_shorelines_warning();
+
 // With the default day map (sea_colour), within view_coast_window: the water along the ground in
 // view from GSHHG's full-resolution shorelines (coastline_files.hpp) as PlanetImages::coast, and
 // water_source saying so; a warning where the file is missing.
 void add_view_coast(PlanetTextures& textures, const render::OrbitCamera& camera, double planet_radius_m);
-
-// How a render's sidecar names a coast window (appended to the water map's source).
-std::string coast_source(const GeoWindow& window);
 
 // The checks read_planet_textures makes of named maps, from their headers alone (a missing or
 // unreadable file, fewer than 2 pixels across, more than half the available memory as floats):

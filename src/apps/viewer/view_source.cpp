@@ -1,7 +1,6 @@
 #include "apps/viewer/view_source.hpp"
 
 #include <algorithm>
-#include <cmath>
 #include <iostream>
 #include <sstream>
 
@@ -129,14 +128,12 @@ render::RenderResult OrbitSource::render(const ViewState& state, int width, int 
       setup_ms.emplace_back("planet_textures", gpu::time_pass([&] {
                               renderer_ = std::make_unique<render::OrbitRenderer>(textures.images, cube);
                             }));
-      std::error_code error;
       sea_colour_ = textures.images.sea_colour;
-      if (sea_colour_ && !std::filesystem::is_regular_file(io::gshhg_shorelines_default_path, error)) {
-        std::cerr << "warning: " << io::gshhg_shorelines_default_path
-                  << " is missing (Debian package gmt-gshhg-full): coasts and lakes as sharp as ETOPO5's 18 km "
-                     "water map\n";
-        sea_colour_ = false;
-      }
+      if (sea_colour_)
+        if (const std::optional<std::string> warning = io::missing_shorelines_warning()) {
+          std::cerr << "warning: " << *warning << "\n";
+          sea_colour_ = false;
+        }
       water_width_ = textures.images.water.width;
     }
     cover_key_ = key;
@@ -185,19 +182,8 @@ void OrbitSource::update_coast(const render::OrbitCamera& camera,
     return;
   }
   if (coast_window_ && window_serves(*coast_window_, *wanted)) return;
-  // A margin of a quarter of the window's size each way (within the 2048 texels), so that a
-  // moving camera keeps the window for a while.
-  io::GeoWindow window = *wanted;
-  const double texel = (window.north_deg - window.south_deg) / window.height;
-  const double dlat = 0.25 * (window.north_deg - window.south_deg), dlon = 0.25 * (window.east_deg - window.west_deg);
-  window.south_deg = std::max(window.south_deg - dlat, -90.0);
-  window.north_deg = std::min(window.north_deg + dlat, 90.0);
-  if (window.east_deg - window.west_deg + 2 * dlon < 360.0) window.west_deg -= dlon, window.east_deg += dlon;
-  const double mid = std::cos(0.5 * (window.south_deg + window.north_deg) * M_PI / 180.0);
-  const double coarser = std::max(
-      {texel, (window.north_deg - window.south_deg) / 2048.0, (window.east_deg - window.west_deg) * mid / 2048.0});
-  window.width = std::clamp(int(std::ceil((window.east_deg - window.west_deg) * mid / coarser)), 1, 2048);
-  window.height = std::clamp(int(std::ceil((window.north_deg - window.south_deg) / coarser)), 1, 2048);
+  // A margin of a quarter of the window's size each way, so that a moving camera keeps it a while.
+  const io::GeoWindow window = io::widened_coast_window(*wanted, 0.25);
   try {
     setup_ms.emplace_back(
         "coast_window", gpu::time_pass([&] {
