@@ -289,7 +289,15 @@ TEST_CASE("the viewer's orbit view takes a coast window from GSHHG in low orbit,
   CHECK(std::none_of(east.timings_ms.begin(), east.timings_ms.end(),
                      [](const auto& t) { return t.first == "coast_window"; }));
   CHECK(source.coast_window()->west_deg == window.west_deg);
-  // From 12000 km the water map serves and the window is dropped.
+  // From 3000 km the nearest pixels (21.7 km) want no window, being coarser than a quarter of the
+  // water map's 37 km texel, but finer than the whole texel: the window is kept (the quarter-size
+  // preview of a view that wants one keeps it for the full size).
+  state.camera.height_m = 3000e3;
+  const render::RenderResult mid = source.render(state, width, height);
+  CHECK(source.coast_window());
+  CHECK(std::none_of(mid.timings_ms.begin(), mid.timings_ms.end(),
+                     [](const auto& t) { return t.first == "coast_window"; }));
+  // From 12000 km (nearest pixels 87 km) the water map serves and the window is dropped.
   state.camera.height_m = 12000e3;
   source.render(state, width, height);
   CHECK_FALSE(source.coast_window());

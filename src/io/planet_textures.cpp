@@ -314,13 +314,14 @@ std::string coast_source(const GeoWindow& window) {
 
 }  // namespace
 
-std::optional<GeoWindow> view_coast_window(const render::OrbitCamera& camera, double planet_radius_m, int water_width) {
+std::optional<GeoWindow> view_coast_window(const render::OrbitCamera& camera, double planet_radius_m, int water_width,
+                                           double share) {
   // The ground's finest pixel, straight below the camera, against the water map's texel (37 km):
   // from below a quarter of it (about 9 km: 400 and 2000 km, not 12000, where the raster of
   // nearly a hemisphere would add 0.6 s for coasts a little sharper than the map's).
   const double pixel_angle = 2.0 * std::tan(camera.fov_deg * M_PI / 360.0) / camera.width;
   const double nearest_pixel_m = camera.altitude_m * pixel_angle;
-  if (nearest_pixel_m > 0.25 * 2.0 * M_PI * planet_radius_m / std::max(water_width, 1)) return std::nullopt;
+  if (nearest_pixel_m > share * 2.0 * M_PI * planet_radius_m / std::max(water_width, 1)) return std::nullopt;
   // The window: the latitudes and longitudes of the ground points a grid of the frame's rays
   // meets; a ray that misses the planet adds the ground below its nearest approach, which lies
   // beyond the horizon in its direction.

@@ -174,16 +174,22 @@ void OrbitSource::update_coast(const render::OrbitCamera& camera,
   const std::optional<io::GeoWindow> wanted =
       io::view_coast_window(camera, renderer_->settings().planet_radius_m, water_width_);
   if (!wanted) {
-    // High up the water map serves; a window kept from below would only cost its reads.
-    if (coast_window_) {
+    // High up the water map serves; a window kept from below would only cost its reads. Kept
+    // while the nearest pixels are finer than the water map's whole texel, so that the quarter-size
+    // preview of a view that wants a window does not drop it and make it again for the full size.
+    if (coast_window_ && !io::view_coast_window(camera, renderer_->settings().planet_radius_m, water_width_, 1.0)) {
       renderer_->set_coast({}, 0.0, 0.0, 0.0, 0.0);
       coast_window_.reset();
     }
     return;
   }
   if (coast_window_ && window_serves(*coast_window_, *wanted)) return;
-  // A margin of a quarter of the window's size each way, so that a moving camera keeps it a while.
-  const io::GeoWindow window = io::widened_coast_window(*wanted, 0.25);
+  // A margin of a quarter of the window's size each way, so that a moving camera keeps it a while,
+  // and texels twice as fine as this frame wants (within the 2048 a side), so that the window the
+  // half-size preview makes serves the full size that follows it.
+  io::GeoWindow finer = *wanted;
+  finer.width *= 2, finer.height *= 2;
+  const io::GeoWindow window = io::widened_coast_window(finer, 0.25);
   try {
     setup_ms.emplace_back(
         "coast_window", gpu::time_pass([&] {

@@ -90,7 +90,8 @@ class GroundSource : public ViewSource {
 // shorelines as in `nephele render` (io::view_coast_window): a window with a margin around the
 // ground in view, rastered again only when the ground in view leaves it or the camera has come
 // down far enough to need texels twice as fine (in the frame that needs it: a frame depends on
-// its camera and the window, never on a thread's timing).
+// its camera and the window, never on a thread's timing), and dropped only where the nearest
+// pixels are coarser than the water map's texel (four times coarser than where one is wanted).
 class OrbitSource : public ViewSource {
  public:
   explicit OrbitSource(const std::filesystem::path& cover_dir);
