@@ -314,14 +314,21 @@ std::string coast_source(const GeoWindow& window) {
 
 }  // namespace
 
-std::optional<GeoWindow> view_coast_window(const render::OrbitCamera& camera, double planet_radius_m, int water_width,
-                                           double share) {
+namespace {
+double nearest_pixel_m(const render::OrbitCamera& camera) {
+  return camera.altitude_m * 2.0 * std::tan(camera.fov_deg * M_PI / 360.0) / camera.width;
+}
+}  // namespace
+
+bool coast_pixels_finer(const render::OrbitCamera& camera, double planet_radius_m, int water_width, double share) {
+  return nearest_pixel_m(camera) <= share * 2.0 * M_PI * planet_radius_m / std::max(water_width, 1);
+}
+
+std::optional<GeoWindow> view_coast_window(const render::OrbitCamera& camera, double planet_radius_m, int water_width) {
   // The ground's finest pixel, straight below the camera, against the water map's texel (37 km):
   // from below a quarter of it (about 9 km: 400 and 2000 km, not 12000, where the raster of
   // nearly a hemisphere would add 0.6 s for coasts a little sharper than the map's).
-  const double pixel_angle = 2.0 * std::tan(camera.fov_deg * M_PI / 360.0) / camera.width;
-  const double nearest_pixel_m = camera.altitude_m * pixel_angle;
-  if (nearest_pixel_m > share * 2.0 * M_PI * planet_radius_m / std::max(water_width, 1)) return std::nullopt;
+  if (!coast_pixels_finer(camera, planet_radius_m, water_width, 0.25)) return std::nullopt;
   // The window: the latitudes and longitudes of the ground points a grid of the frame's rays
   // meets; a ray that misses the planet adds the ground below its nearest approach, which lies
   // beyond the horizon in its direction.
@@ -350,7 +357,7 @@ std::optional<GeoWindow> view_coast_window(const render::OrbitCamera& camera, do
   west -= 1.0, east += 1.0;
   if (north >= 89.0 || south <= -89.0 || east - west >= 360.0) west = camera.longitude_deg - 180.0, east = west + 360.0;
   // Texels about as fine as the nearest pixels.
-  return window_of(south, north, west, east, nearest_pixel_m / planet_radius_m * 180.0 / M_PI);
+  return window_of(south, north, west, east, nearest_pixel_m(camera) / planet_radius_m * 180.0 / M_PI);
 }
 
 GeoWindow widened_coast_window(const GeoWindow& window, double share) {

@@ -36,12 +36,15 @@ PlanetTextures read_planet_textures(const std::string& day, const std::string& n
                                     const std::string& option = "--earth-texture");
 
 // The window of the ground in view whose water add_view_coast rasters: where the camera's nearest
-// pixels are finer than `share` (a quarter) of the texel of a water map `water_width` texels
+// pixels are finer than a quarter of the texel of a water map `water_width` texels
 // around, the latitudes and longitudes (about the camera's) the frame's rays meet plus a degree,
 // every longitude with a pole in view, texels about as fine as those pixels (at most 2048 x
 // 2048); none from higher up.
-std::optional<GeoWindow> view_coast_window(const render::OrbitCamera& camera, double planet_radius_m, int water_width,
-                                           double share = 0.25);
+std::optional<GeoWindow> view_coast_window(const render::OrbitCamera& camera, double planet_radius_m, int water_width);
+
+// Whether the camera's nearest pixels (straight below it) are finer than `share` of the texel of
+// a water map `water_width` texels around: view_coast_window's first test.
+bool coast_pixels_finer(const render::OrbitCamera& camera, double planet_radius_m, int water_width, double share);
 
 // `window` grown by `share` of its size each way (clamped at the poles, at most a whole turn),
 // with texels as fine as its own where the 2048 texels a side allow: what a moving camera keeps.

@@ -177,7 +177,7 @@ void OrbitSource::update_coast(const render::OrbitCamera& camera,
     // High up the water map serves; a window kept from below would only cost its reads. Kept
     // while the nearest pixels are finer than the water map's whole texel, so that the quarter-size
     // preview of a view that wants a window does not drop it and make it again for the full size.
-    if (coast_window_ && !io::view_coast_window(camera, renderer_->settings().planet_radius_m, water_width_, 1.0)) {
+    if (coast_window_ && !io::coast_pixels_finer(camera, renderer_->settings().planet_radius_m, water_width_, 1.0)) {
       renderer_->set_coast({}, 0.0, 0.0, 0.0, 0.0);
       coast_window_.reset();
     }
