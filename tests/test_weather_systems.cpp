@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <memory>
 #include <random>
 #include <vector>
@@ -26,6 +27,15 @@ constexpr double earth_radius_km = 6371.0;
 double angle_between(vec3 a, vec3 b) {
   const glm::dvec3 da(a), db(b);
   return std::atan2(glm::length(glm::cross(da, db)), glm::dot(da, db));
+}
+
+// The point of the ITCZ's meandering line (mean latitude `line`, its `waves`) at longitude
+// `lon`; its latitude is taken at the mean line's point of that longitude (the meander depends on
+// the longitude alone).
+vec3 on_itcz_line(float line, float lon, const glsl::LineWaves& waves) {
+  const vec3 mean(std::cos(line) * std::cos(lon), std::cos(line) * std::sin(lon), std::sin(line));
+  const float lat = glsl::itcz_line_latitude(mean, line, waves);
+  return vec3(std::cos(lat) * std::cos(lon), std::cos(lat) * std::sin(lon), std::sin(lat));
 }
 
 // Signed angle east of b from a (longitude difference in (-pi, pi]).
@@ -231,21 +241,22 @@ TEST_CASE("the ITCZ's clusters stay in its belt and follow the season", "[fast][
   CHECK(cover::weather_systems(p, 0.0).itcz_latitude > annual.itcz_latitude);
   p.month = 2;
   CHECK(cover::weather_systems(p, 0.0).itcz_latitude < annual.itcz_latitude);
-  // Along the ITCZ's line, a broken line: between a tenth and two thirds of it is in a cluster;
-  // beyond the systems' reach off it, none.
+  // Along the ITCZ's meandering line, a broken line: between a twentieth (the superclusters hold
+  // most of the systems, and a third of the line lies outside them) and two thirds of it is in a
+  // cluster; beyond the systems' reach off its mean latitude, none.
   const float line = annual.itcz_latitude;
   int inside = 0;
   const int n = 3600;
   for (int k = 0; k < n; ++k) {
     const float lon = 2.0f * float(M_PI) * k / n;
-    const vec3 on(std::cos(line) * std::cos(lon), std::cos(line) * std::sin(lon), std::sin(line));
-    if (glsl::itcz_systems(on, line, line, annual.seed, 0.0f).x > 0.5f) ++inside;
+    const vec3 on = on_itcz_line(line, lon, annual.itcz_waves);
+    if (glsl::itcz_systems(on, on, line, line, annual.itcz_waves, annual.seed, 0.0f).x > 0.5f) ++inside;
     const float off = line + (k % 2 ? 1.0f : -1.0f) * glsl::ITCZ_REACH;
     const vec3 away(std::cos(off) * std::cos(lon), std::cos(off) * std::sin(lon), std::sin(off));
-    CHECK(glsl::itcz_systems(away, off, line, annual.seed, 0.0f).x == 0.0f);
+    CHECK(glsl::itcz_systems(away, away, off, line, annual.itcz_waves, annual.seed, 0.0f).x == 0.0f);
   }
   INFO("share of the line in clusters " << double(inside) / n);
-  CHECK(inside > n / 10);
+  CHECK(inside > n / 20);
   CHECK(inside < 2 * n / 3);
   // Systems of many sizes along the line (its chords through them, 11 km a step): single towers
   // and small clusters under 150 km, mesoscale systems over 500 km, and more of the small than of
@@ -256,8 +267,9 @@ TEST_CASE("the ITCZ's clusters stay in its belt and follow the season", "[fast][
     int start = -1;
     for (int k = 0; k <= n; ++k) {
       const float lon = 2.0f * float(M_PI) * (k % n) / n;
-      const vec3 on(std::cos(line) * std::cos(lon), std::cos(line) * std::sin(lon), std::sin(line));
-      const bool cloudy = k < n && glsl::itcz_systems(on, line, line, annual.seed, 0.0f).x > 0.5f;
+      const vec3 on = on_itcz_line(line, lon, annual.itcz_waves);
+      const bool cloudy =
+          k < n && glsl::itcz_systems(on, on, line, line, annual.itcz_waves, annual.seed, 0.0f).x > 0.5f;
       if (cloudy && start < 0) start = k;
       if (!cloudy && start >= 0) chords.push_back((k - start) * step_km), start = -1;
     }
@@ -273,21 +285,24 @@ TEST_CASE("the ITCZ's clusters stay in its belt and follow the season", "[fast][
   // The clusters' anvils: wider than the clusters (more of the line under them), none beyond the
   // reach, and drawn out westward: of the line's stretches under an anvil but beside a
   // cluster, more lie west of their nearest cluster than east of it.
-  std::vector<bool> cluster(n), anvil(n);
+  // (The superclusters' band covers the line inside them: the anvils' side is counted outside.)
+  const glsl::LineWaves& waves = annual.itcz_waves;
+  std::vector<bool> cluster(n), anvil(n), banded(n);
   int anvils = 0;
   for (int k = 0; k < n; ++k) {
     const float lon = 2.0f * float(M_PI) * k / n;
-    const vec3 on(std::cos(line) * std::cos(lon), std::cos(line) * std::sin(lon), std::sin(line));
-    cluster[k] = glsl::itcz_systems(on, line, line, annual.seed, 0.0f).x > 0.5f;
-    anvil[k] = glsl::itcz_systems(on, line, line, annual.seed, 0.0f).y > 0.5f;
+    const vec3 on = on_itcz_line(line, lon, annual.itcz_waves);
+    cluster[k] = glsl::itcz_systems(on, on, line, line, annual.itcz_waves, annual.seed, 0.0f).x > 0.5f;
+    anvil[k] = glsl::itcz_systems(on, on, line, line, annual.itcz_waves, annual.seed, 0.0f).y > 0.5f;
     anvils += anvil[k];
+    banded[k] = glsl::supercluster_activity(glsl::line_waves(on, waves)) > 0.0f;
     const float off = line + (k % 2 ? 1.0f : -1.0f) * glsl::ITCZ_REACH;
     const vec3 away(std::cos(off) * std::cos(lon), std::cos(off) * std::sin(lon), std::sin(off));
-    CHECK(glsl::itcz_systems(away, off, line, annual.seed, 0.0f).y == 0.0f);
+    CHECK(glsl::itcz_systems(away, away, off, line, annual.itcz_waves, annual.seed, 0.0f).y == 0.0f);
   }
   int west = 0, east = 0;
   for (int k = 0; k < n; ++k) {
-    if (!anvil[k] || cluster[k]) continue;
+    if (!anvil[k] || cluster[k] || banded[k]) continue;
     for (int step = 1; step < n / 36; ++step) {  // within 10 degrees
       if (cluster[(k + step) % n]) {             // the nearest cluster lies east: k is west of it
         ++west;
@@ -305,6 +320,146 @@ TEST_CASE("the ITCZ's clusters stay in its belt and follow the season", "[fast][
   CHECK(west > east);
 }
 
+TEST_CASE("the ITCZ meanders by about 1.5 degrees and its systems gather in superclusters thousands of km long",
+          "[fast][systems]") {
+  cover::CoverParameters parameters;
+  const float line = cover::weather_systems(parameters, 0.0).itcz_latitude;
+  std::mt19937 random(3);
+  std::uniform_real_distribution<double> hours(0.0, 1.0e5);
+  const int n = 3600;
+  const double circle_km = 2.0 * M_PI * earth_radius_km * std::cos(line);
+  double active_runs_km = 0;
+  int active_runs = 0;
+  std::array<double, 2> clouds_in{}, points_in{};  // systems' cloud on the line: outside, inside superclusters
+  int band_inside = 0, inside = 0, band_outside = 0, outside = 0;
+  for (std::uint32_t cover_seed = 1; cover_seed <= 4; ++cover_seed) {
+    parameters.seed = cover_seed;
+    const glsl::WeatherSystems systems = cover::weather_systems(parameters, hours(random));
+    const glsl::LineWaves& waves = systems.itcz_waves;
+    const std::uint32_t seed = systems.seed;
+    // The waves are orthogonal around a latitude circle (wavenumbers 6-10 sampled 3600 times): each
+    // sum has mean 0 and root mean square 1 there to float rounding.
+    glm::dvec2 sum(0.0), square(0.0);
+    double meander_square = 0;
+    std::vector<float> activity(n);
+    for (int k = 0; k < n; ++k) {
+      const float lon = 2.0f * float(M_PI) * k / n;
+      const vec3 mean(std::cos(line) * std::cos(lon), std::cos(line) * std::sin(lon), std::sin(line));
+      const vec2 sums = glsl::line_waves(mean, waves);
+      sum += glm::dvec2(sums);
+      square += glm::dvec2(sums) * glm::dvec2(sums);
+      const double meander = glsl::itcz_line_latitude(mean, line, waves) - line;
+      meander_square += meander * meander;
+      activity[k] = glsl::supercluster_activity(sums);
+      // On the meandering line the presence is the bump's top: all places filled inside a
+      // supercluster, ITCZ_DORMANT of them outside, a blend between.
+      const vec3 on = on_itcz_line(line, lon, waves);
+      const vec3 presence = glsl::convective_presence_of(line, 0.07f, 1.0f);
+      CHECK(glsl::waved_presence(on, presence, waves, 0.0f) ==
+            Approx(glm::mix(glsl::ITCZ_DORMANT, 1.0f, activity[k])).margin(2e-3));
+      const vec2 cloud =
+          glsl::itcz_systems(on, on, glsl::itcz_line_latitude(mean, line, waves), line, waves, seed, 0.0f);
+      if (activity[k] > 0.99f || activity[k] < 0.01f) {
+        const bool in = activity[k] > 0.99f;
+        clouds_in[in] += cloud.x > 0.5f;
+        points_in[in] += 1;
+        (in ? band_inside : band_outside) += cloud.y > 0.5f;
+        (in ? inside : outside) += 1;
+      }
+    }
+    INFO("seed " << cover_seed << ": sums' means " << sum.x / n << ", " << sum.y / n << ", root mean squares "
+                 << std::sqrt(square.x / n) << ", " << std::sqrt(square.y / n));
+    CHECK(std::abs(sum.x / n) < 1e-4);
+    CHECK(std::abs(sum.y / n) < 1e-4);
+    CHECK(std::sqrt(square.x / n) == Approx(1.0).margin(1e-4));
+    CHECK(std::sqrt(square.y / n) == Approx(1.0).margin(1e-4));
+    // The meander's root mean square is ITCZ_MEANDER, less the clamp's share beyond 2.5 (under 1 %).
+    const double meander_rms = std::sqrt(meander_square / n);
+    CHECK(meander_rms <= glsl::ITCZ_MEANDER * (1 + 1e-4));
+    CHECK(meander_rms >= 0.97 * glsl::ITCZ_MEANDER);
+    // The superclusters' stretches (activity over 1/2, a sum over -0.3).
+    for (int k = 0, start = -1; k < 2 * n; ++k) {
+      const bool on = activity[k % n] > 0.5f;
+      if (on && start < 0 && k > 0 && activity[(k - 1) % n] <= 0.5f) start = k;
+      if (!on && start >= 0) {
+        if (start < n) active_runs_km += (k - start) * circle_km / n, ++active_runs;
+        start = -1;
+      }
+    }
+  }
+  // Rice's formula: a Gaussian sum of waves 6-10 of equal power crosses a level u at a rate
+  // sqrt(mean m^2) exp(-u^2 / 2) / pi a radian, sqrt(66) = 8.12: 15.5 times around at u = -0.3,
+  // so 7.8 stretches above it, holding 0.618 of the circle of 39850 km: 3170 km each on average.
+  const double mean_run_km = active_runs_km / active_runs;
+  INFO(active_runs << " superclusters, " << mean_run_km << " km long on average");
+  CHECK(mean_run_km > 2000);
+  CHECK(mean_run_km < 4000);
+  // The mesoscale systems fill every place inside a supercluster and a fifth outside, by the
+  // activity at their points, up to a cell (800 km) from where the line is sampled, and the towers
+  // half the places on the mean line wherever: more than twice as much of the line lies in a
+  // system inside.
+  const double share_in = clouds_in[1] / points_in[1], share_out = clouds_in[0] / points_in[0];
+  INFO("share of the line in systems inside superclusters " << share_in << ", outside " << share_out);
+  CHECK(share_in > 2 * share_out);
+  // Inside, the band covers the whole line; outside only the anvils do.
+  INFO("under the band or an anvil inside " << band_inside << " of " << inside << ", outside " << band_outside << " of "
+                                            << outside);
+  CHECK(band_inside == inside);
+  CHECK(band_outside < outside / 2);
+}
+
+TEST_CASE("the ITCZ's meander moves west with the easterly waves and its superclusters east", "[fast][systems]") {
+  // A day on, the meander found at a longitude lies 8 m/s x 86400 s = 691 km (6.2 degrees) further
+  // west and the superclusters' envelope 1037 km (9.3 degrees) further east, to float rounding: the
+  // waves of any moment follow from the seed and the time alone.
+  cover::CoverParameters p;
+  const glsl::WeatherSystems before = cover::weather_systems(p, 1000.0), after = cover::weather_systems(p, 1024.0);
+  // (The speeds are the equator's: angular speeds v / R.)
+  const double line = before.itcz_latitude, metres_per_radian = 6371.0e3;
+  const double west = cover::itcz_meander_speed_m_s * 86400.0 / metres_per_radian,
+               east = cover::supercluster_speed_m_s * 86400.0 / metres_per_radian;
+  for (int k = 0; k < 360; ++k) {
+    const double lon = 2.0 * M_PI * k / 360;
+    const auto sums = [&](const glsl::WeatherSystems& w, double longitude) {
+      const vec3 at(std::cos(line) * std::cos(longitude), std::cos(line) * std::sin(longitude), std::sin(line));
+      return glsl::line_waves(at, w.itcz_waves);
+    };
+    CHECK(sums(after, lon + west).x == Approx(sums(before, lon).x).margin(1e-4));
+    CHECK(sums(after, lon + east).y == Approx(sums(before, lon).y).margin(1e-4));
+  }
+}
+
+TEST_CASE("as the ITCZ's waves move, its systems grow and fade instead of appearing whole", "[fast][systems]") {
+  // Along the line over two days in steps of 10 minutes: a system that appeared whole would take
+  // the points of its chord from beyond the cloud's reach (1.8 radii) to inside its core (below 1)
+  // in one step (29 of the line's 720 points over these two days with a growth of 1e-6). Growing,
+  // its radius rises by the share's change over SYSTEM_GROWTH a step, at most about 0.24 where the
+  // envelope is steepest, so only points within that share of a radius of a new system's centre
+  // can: at most a couple.
+  cover::CoverParameters p;
+  const float line = cover::weather_systems(p, 0.0).itcz_latitude;
+  const int points = 720, steps = 288;
+  std::vector<float> previous(points);
+  int appeared = 0, grew = 0;
+  for (int step = 0; step <= steps; ++step) {
+    const glsl::WeatherSystems w = cover::weather_systems(p, 5000.0 + step / 6.0);
+    for (int k = 0; k < points; ++k) {
+      const float lon = 2.0f * float(M_PI) * k / points;
+      const vec3 on = on_itcz_line(line, lon, w.itcz_waves);
+      const float d = glsl::convective_distances(on, glsl::ITCZ_CELLS, w.seed, glsl::ITCZ_LAYER, glsl::ITCZ_RADII,
+                                                 glsl::convective_presence_of(line, 0.07f, glsl::ITCZ_FILLED),
+                                                 w.itcz_waves, glsl::NO_ANVIL, glsl::NEIGHBOUR_CELLS)
+                          .x;
+      if (step > 0 && previous[k] > 1.8f && d < 1.0f) ++appeared;
+      if (step > 0 && previous[k] < 1.0f && d < 0.9f * previous[k]) ++grew;
+      previous[k] = d;
+    }
+  }
+  INFO(appeared << " points taken into a system's core from beyond its reach in one step, " << grew
+                << " steps of a core growing by over a tenth");
+  CHECK(appeared <= 2);
+}
+
 TEST_CASE("a convective system's search finds every system whose cloud reaches the point", "[fast][systems]") {
   // Against every lattice point of the 5 x 5 x 5 cells around the point's (all within 1.5 cells):
   // where the nearest system or anvil within the cloud's reach (1 + the noise's largest shift, 0.8
@@ -313,6 +468,7 @@ TEST_CASE("a convective system's search finds every system whose cloud reaches t
   // it at the same distance: no system or anvil is cut by the search.
   const std::uint32_t seed = 7u;
   const vec3 presence = glsl::convective_presence_of(0.1f, 0.07f, 1.0f);
+  const glsl::LineWaves waves = glsl::line_waves_of(seed, 0.1f);
   std::mt19937 random(5);
   std::uniform_real_distribution<float> longitude(-3.14f, 3.14f), latitude(-0.1f, 0.3f);
   int reached = 0, anvils_reached = 0;
@@ -323,7 +479,7 @@ TEST_CASE("a convective system's search finds every system whose cloud reaches t
       const float frequency = towers ? glsl::ITCZ_TOWER_CELLS : glsl::ITCZ_CELLS;
       const vec2 radii = towers ? glsl::ITCZ_TOWER_RADII : glsl::ITCZ_RADII;
       const vec3 anvil = towers ? glsl::TOWER_ANVIL : glsl::SYSTEM_ANVIL;
-      const vec2 found = glsl::convective_distances(p, frequency, seed, glsl::ITCZ_LAYER, radii, presence, anvil,
+      const vec2 found = glsl::convective_distances(p, frequency, seed, glsl::ITCZ_LAYER, radii, presence, waves, anvil,
                                                     glsl::NEIGHBOUR_CELLS);
       const vec3 scaled = p * frequency, base = glm::floor(scaled);
       const glsl::ivec3 cell(base);
@@ -336,8 +492,9 @@ TEST_CASE("a convective system's search finds every system whose cloud reaches t
             const glsl::ivec3 offset(x, y, z);
             const vec3 to_point = vec3(offset) + glsl::wrapped_feature_offset(cell + offset, key) - (scaled - base);
             const vec3 h = glsl::hash_to_unit3(glsl::pcg3d(glsl::uvec3(cell + offset) ^ size_key));
-            if (h.y >= glsl::convective_presence(glm::normalize(scaled + to_point), presence)) continue;
-            const float r = glsl::equal_area_radius(h.x, radii.x, radii.y);
+            const float here = glsl::waved_presence(glm::normalize(scaled + to_point), presence, waves, h.y);
+            if (h.y >= here) continue;
+            const float r = glsl::equal_area_radius(h.x, radii.x, radii.y) * glsl::system_growth(here - h.y, waves);
             all.x = std::min(all.x, glm::length(to_point) / r);
             const vec3 east = glsl::local_east(p);
             const float along = -glm::dot(to_point, east);

@@ -73,10 +73,10 @@ float origin_latitude(vec3 origin) { return portable_asin(clamp(origin.z, -1.0f,
 
 // The belts' fields at a layer's origin of geocentric `latitude` (belt_fields) and in `organised`
 // the trades' organised share there (organised_trades), from one evaluation of the trades' patterns.
-vec4 belts_at(vec3 origin, float latitude, uint seed, float edge, OUT(float) organised) {
+vec4 belts_at(vec3 origin, vec3 direction, float latitude, uint seed, float edge, OUT(float) organised) {
   vec4 regimes = belt_regimes(origin, latitude, u_systems, seed);
   organised = organised_trades(regimes, latitude, u_systems.trade_cumulus);
-  return belt_fields(origin, latitude, u_systems, seed, edge, regimes);
+  return belt_fields(origin, direction, latitude, u_systems, seed, edge, regimes);
 }
 
 // The stratocumulus deck's strength at a layer's origin of geocentric `latitude` (x; from the bias's deck term `deck_term`
@@ -142,7 +142,7 @@ void main() {
     vec3 origin = normalize(warped);
     float older_latitude = origin_latitude(origin);  // each layer's origin's, for its belts and its cells
     float organised;  // the trades' organised share, blended between the layers as the belts
-    vec4 fields = belts_over_surface(belts_at(origin, older_latitude, u_systems.seed, edge, organised), surface);
+    vec4 fields = belts_over_surface(belts_at(origin, direction, older_latitude, u_systems.seed, edge, organised), surface);
     float belts = belt_cloud(fields);
     vec3 older_origin = origin;
 #if MOVING_LAYERS
@@ -150,7 +150,7 @@ void main() {
     float young_latitude = origin_latitude(young_origin);
     float young_organised;
     vec4 young_fields = belts_over_surface(
-        belts_at(young_origin, young_latitude, u_young_systems_seed, edge, young_organised), surface);
+        belts_at(young_origin, direction, young_latitude, u_young_systems_seed, edge, young_organised), surface);
     organised = layer_blend(organised, young_organised, u_young_share);
     belts = layer_blend(belts, belt_cloud(young_fields), u_young_share);
     fields = mix(fields, young_fields, u_young_share);

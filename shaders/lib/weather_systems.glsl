@@ -30,11 +30,98 @@ struct Cyclone {
   float strength;  // 0 .. 1 over the life cycle (growth, maturity, decay)
 };
 
+// The ITCZ is no straight line of evenly spread systems. On any day it meanders by a few degrees
+// of latitude, and its clusters gather into superclusters a few thousand km long, separated by
+// stretches with little deep convection: the envelopes of convectively coupled waves (easterly
+// waves of 2000-4000 km, Reed, Norquist and Recker 1977, "The structure and properties of African
+// wave disturbances as observed during Phase III of GATE", Mon. Wea. Rev. 105; superclusters of
+// several thousand km in which clusters live and die, Nakazawa 1988, "Tropical super clusters
+// within intraseasonal variations over the western Pacific", J. Meteor. Soc. Japan 66; Mapes and
+// Houze 1993). Both are functions of longitude along the line: sums of the zonal waves of
+// wavenumbers LINE_FIRST_WAVENUMBER to LINE_FIRST_WAVENUMBER + LINE_WAVES - 1 (wavelengths of
+// 6700 to 4000 km at the equator; superclusters about 3200 km long on average) with random complex
+// amplitudes, `meander` and `envelope`, scaled so that each sum has a root mean square of exactly
+// 1 around a latitude circle (the waves are orthogonal there). A term is dot(c, (cos m lon,
+// sin m lon)) = |c| cos(m lon - arg c). `applies` 0: no waves (a line at its own latitude, every
+// place as active). Evaluated at a system's point, so that each system is present or absent
+// whole.
+const int LINE_WAVES = 5;
+const int LINE_FIRST_WAVENUMBER = 6;
+struct LineWaves {
+  vec2 meander[LINE_WAVES];
+  vec2 envelope[LINE_WAVES];
+  float meander_z;  // the meander's amplitude in sin(latitude) (its radians times cos(line))
+  float dormant;    // the share of places filled outside the superclusters, relative to inside
+  float applies;    // 1: the waves apply; 0: none (GLSL reserves "active")
+};
+// The line's meander (radians of latitude for a unit of its sum; the sum clamped to
+// +-LINE_MEANDER_LIMIT) and the superclusters: a place is inside one where the envelope's sum
+// exceeds 0, outside where it is below -0.6, with a smooth step between (about 0.5, 0.27 and 0.23
+// of the line for a Gaussian sum), and outside one ITCZ_DORMANT of the places are filled.
+const float ITCZ_MEANDER = 0.026f;  // 1.5 degrees
+const float LINE_MEANDER_LIMIT = 2.5f;
+const float ITCZ_DORMANT = 0.2f;
+const uint ITCZ_WAVES_LAYER = 37u;
+LineWaves no_line_waves() {
+  LineWaves waves;
+  for (int k = 0; k < LINE_WAVES; ++k) {
+    waves.meander[k] = vec2(0.0f);
+    waves.envelope[k] = vec2(0.0f);
+  }
+  waves.meander_z = 0.0f;
+  waves.dormant = 1.0f;
+  waves.applies = 0.0f;
+  return waves;
+}
+// The waves of `seed` for a line at latitude `line` at time 0: complex amplitudes with components
+// uniform in [-1/2, 1/2), normalised so that sum |c|^2 / 2 = 1. The host draws them once for a
+// cover and moves them to the frame's time (cover/weather_systems.cpp); the probes draw them here.
+LineWaves line_waves_of(uint seed, float line) {
+  LineWaves waves = no_line_waves();
+  uvec3 key = noise_key(seed, ITCZ_WAVES_LAYER);
+  float meander_power = 0.0f, envelope_power = 0.0f;
+  for (int k = 0; k < LINE_WAVES; ++k) {
+    vec3 a = hash_to_unit3(pcg3d(uvec3(uint(k), 0u, 0u) ^ key)), b = hash_to_unit3(pcg3d(uvec3(uint(k), 1u, 0u) ^ key));
+    waves.meander[k] = vec2(a.x, a.y) - vec2(0.5f);
+    waves.envelope[k] = vec2(a.z, b.x) - vec2(0.5f);
+    meander_power += dot(waves.meander[k], waves.meander[k]);
+    envelope_power += dot(waves.envelope[k], waves.envelope[k]);
+  }
+  float meander_norm = inversesqrt(0.5f * meander_power), envelope_norm = inversesqrt(0.5f * envelope_power);
+  for (int k = 0; k < LINE_WAVES; ++k) {
+    waves.meander[k] *= meander_norm;
+    waves.envelope[k] *= envelope_norm;
+  }
+  waves.meander_z = ITCZ_MEANDER * cos(line);
+  waves.dormant = ITCZ_DORMANT;
+  waves.applies = 1.0f;
+  return waves;
+}
+vec2 complex_product(vec2 a, vec2 b) { return vec2(a.x * b.x - a.y * b.y, a.x * b.y + a.y * b.x); }
+// The two sums at the unit direction p, (meander, envelope), each of root mean square 1 around a
+// latitude circle: e^(i m lon) from p's longitude without an arctangent, by powers of e^(i lon).
+vec2 line_waves(vec3 p, IN(LineWaves) waves) {
+  vec2 turn = normalize(vec2(p.x, p.y) + vec2(1.0e-12f, 0.0f));
+  vec2 power = turn;
+  for (int m = 1; m < LINE_FIRST_WAVENUMBER; ++m) power = complex_product(power, turn);
+  vec2 sums = vec2(0.0f);
+  for (int k = 0; k < LINE_WAVES; ++k) {
+    sums += vec2(dot(waves.meander[k], power), dot(waves.envelope[k], power));
+    power = complex_product(power, turn);
+  }
+  return sums;
+}
+// From the sums: the meander in units of its amplitude, the line's shift in sin(latitude) and the
+// superclusters' activity in [0, 1].
+float line_meander(vec2 sums) { return clamp(sums.x, -LINE_MEANDER_LIMIT, LINE_MEANDER_LIMIT); }
+float line_shift(vec2 sums, IN(LineWaves) waves) { return waves.meander_z * line_meander(sums); }
+float supercluster_activity(vec2 sums) { return smoothstep(-0.6f, 0.0f, sums.y); }
 struct WeatherSystems {
   Cyclone cyclones[MAX_CYCLONES];
   int cyclone_count;
   float itcz_latitude;  // radians, the ITCZ's centre line (follows --month)
   float itcz;           // strength of its convective clusters, 0: none
+  LineWaves itcz_waves;  // its meander and superclusters at the moment (the host's line_waves_of, moved)
   float trade_cumulus;  // strength of the trade cumulus fields, 0: none
   float cirrus;         // strength of the cirrus streaks, 0: none
   float shallow_trades;  // strength of the trades' shallow unorganised cloud (cloud_properties.glsl), 0: none
@@ -186,6 +273,36 @@ float convective_presence(vec3 p, vec3 presence) {
   return presence.z * bump * bump;
 }
 
+// The share of places with a system at p (convective_presence) about the meandering line, times
+// 1 inside the superclusters and `dormant` outside. The waves' sums are computed only where the
+// share can be above 0 and above `below`, the caller's hash (a system is present where its hash is
+// below the share; 0 there otherwise): the line shifts by at most meander_z LINE_MEANDER_LIMIT and
+// the share is at most the presence's `filled`.
+float waved_presence(vec3 p, vec3 presence, IN(LineWaves) waves, float below) {
+  if (waves.applies == 0.0f) return convective_presence(p, presence);
+  float reach = 2.0f * presence.y + waves.meander_z * LINE_MEANDER_LIMIT;
+  if (below >= presence.z || abs(p.z - presence.x) >= reach) return 0.0f;
+  vec2 sums = line_waves(p, waves);
+  float filled = mix(waves.dormant, 1.0f, supercluster_activity(sums));
+  return filled * convective_presence(p - vec3(0.0f, 0.0f, line_shift(sums, waves)), presence);
+}
+
+// Where the waves move (LineWaves), a system's share of places changes with time, and a system
+// whose hash it passes would appear or vanish at once, a whole disc from one frame to the next.
+// Instead it grows from a point as the share rises past its hash: its radius is the full one times
+// the share's excess over the hash in units of SYSTEM_GROWTH (up to 1). At a supercluster's edge
+// the share rises from 0.2 to 1 over about 470 km (the envelope's sum by 0.6 at its root mean
+// square slope of 8.1 a radian), which the envelope passes in 11 hours at 12 m/s: a system grows
+// over about 3 hours (an hour where the envelope is steepest), as mesoscale convective systems
+// grow over some hours (Houze 2004), and fades the same way. Inside a supercluster a quarter of
+// the systems (hashes within 0.25 below the share) are smaller than full, outside all are (the
+// share is 0.2): convection away from the superclusters is weaker. Without waves (the trades'
+// clumps, a share fixed in time), every present system has its full radius.
+const float SYSTEM_GROWTH = 0.25f;
+float system_growth(float excess, IN(LineWaves) waves) {
+  return waves.applies == 0.0f ? 1.0f : min(excess / SYSTEM_GROWTH, 1.0f);
+}
+
 // Convective systems on a lattice of `frequency` cells per radius (noise layer `layer` for the
 // points, layer + 1 for their sizes and presence): at most one at each cell's feature point, a disc
 // of radius equal_area_radius(hash, radii) cells, present where a second hash is below `presence`
@@ -200,8 +317,8 @@ float convective_presence(vec3 p, vec3 presence) {
 // (spread stretch + lag) r 1.3 up to 1 cell whole (the systems': (1.2 x 1.2 + 0.1) 0.5 x 1.3 = 1.0;
 // the towers': (1.8 x 1.5 + 0.1) 0.27 x 1.3 = 0.98); with the 8, discs reaching half a cell. 1e30
 // where none is near or `searched` is 0.
-vec2 convective_distances(vec3 p, float frequency, uint seed, uint layer, vec2 radii, vec3 presence, vec3 anvil,
-                          int searched) {
+vec2 convective_distances(vec3 p, float frequency, uint seed, uint layer, vec2 radii, vec3 presence,
+                          IN(LineWaves) waves, vec3 anvil, int searched) {
   vec3 scaled = p * frequency;
   vec3 base = floor(scaled);
   ivec3 cell = ivec3(base);
@@ -214,9 +331,9 @@ vec2 convective_distances(vec3 p, float frequency, uint seed, uint layer, vec2 r
     vec3 to_point = vec3(offset) + wrapped_feature_offset(cell + offset, key) - f;
     vec3 h = hash_to_unit3(pcg3d(uvec3(cell + offset) ^ size_key));
     // (A presence of a width beyond the sphere's, presence_everywhere, is its z everywhere.)
-    float here = presence.y < 1.0e5f ? convective_presence(normalize(scaled + to_point), presence) : presence.z;
+    float here = presence.y < 1.0e5f ? waved_presence(normalize(scaled + to_point), presence, waves, h.y) : presence.z;
     if (h.y >= here) continue;
-    float r = equal_area_radius(h.x, radii.x, radii.y);
+    float r = equal_area_radius(h.x, radii.x, radii.y) * system_growth(here - h.y, waves);
     nearest.x = min(nearest.x, length(to_point) / r);
     if (anvil.x <= 0.0f) continue;
     float along = -dot(to_point, east);  // p's distance east of the point
@@ -242,29 +359,44 @@ float convective_cloud(float d, float edge, float reach) {
 
 // The ITCZ (Waliser and Gautier 1993, "A satellite-derived climatology of the ITCZ", J. Climate 6):
 // mesoscale convective systems 320-800 km across on a lattice of 8 cells per radius (about 800 km
-// apart), in nine places in ten on its line and fewer away from it (convective_presence, a width
-// of 4 degrees); and single towers and small clusters 55-145 km across on a lattice three times
-// finer, in one place in two on the line and fewer over a width of 6 degrees (scattered convection
-// over the warm pool), with anvils of five times their area (TOWER_ANVIL). Both draw their radii
-// from equal_area_radius, so that together they cover about equal areas per interval of size from
-// 50 to 900 km; half of the very cold cloudiness lies in clusters over 20 000 km^2 (160 km across;
-// Mapes and Houze 1993, "Cloud clusters and superclusters over the oceanic warm pool", Mon. Wea.
-// Rev. 121).
+// apart), in every place on its line inside the superclusters and fewer away from it
+// (convective_presence, a width of 4 degrees); and single towers and small clusters 55-145 km
+// across on a lattice three times finer, in one place in two on the line and fewer over a width of
+// 6 degrees (scattered convection over the warm pool), with anvils of five times their area
+// (TOWER_ANVIL). Both follow the line's meander and fill ITCZ_DORMANT as many places outside the
+// superclusters (LineWaves). Both draw their radii from equal_area_radius, so that together they
+// cover about equal areas per interval of size from 50 to 900 km; half of the very cold cloudiness
+// lies in clusters over 20 000 km^2 (160 km across; Mapes and Houze 1993, "Cloud clusters and
+// superclusters over the oceanic warm pool", Mon. Wea. Rev. 121).
 const float ITCZ_CELLS = 8.0f;
 const uint ITCZ_LAYER = 11u;  // and 12
 const vec2 ITCZ_RADII = vec2(0.2f, 0.5f);
-const float ITCZ_FILLED = 0.9f;
+const float ITCZ_FILLED = 1.0f;
 const float ITCZ_TOWER_CELLS = 24.0f;
 const uint ITCZ_TOWER_LAYER = 24u;  // and 25
 const vec2 ITCZ_TOWER_RADII = vec2(0.1f, 0.27f);
 const float ITCZ_TOWER_FILLED = 0.5f;
 // The towers' presence's width (radians, 6 degrees).
 const float ITCZ_TOWER_WIDTH = 0.1f;
-// The systems' reach from the ITCZ's line (radians), beyond which none is drawn: a system's point
-// lies within 2 x 0.07 of it and its anvil reaches 1.0 / 8 cells further, a tower's within 2 x 0.1
-// and its anvil 0.98 / 24 further (convective_distances), and the warp moves the point drawn
-// by at most 0.008 sqrt(2) PERLIN_BOUND = 0.012 (convective_warp).
-const float ITCZ_REACH = 0.28f;
+// Inside a supercluster the clusters' anvils and stratiform cloud merge into one band along the
+// line (Mapes and Houze 1993: superclusters' cold cloud shields span thousands of km), ITCZ_LINE_WIDTH
+// either side of it (2.5 degrees: 550 km across, flat over its middle 330 km), its edges moved by
+// the cover's noise by half that: anvil cloud, thin and grey, through which the systems' bright
+// cores show.
+const float ITCZ_LINE_WIDTH = 0.044f;
+// The band is deep cloud at half a system's strength: the stratiform regions of mesoscale
+// convective systems, thick layer cloud under the anvil that gives 40 % of their rain (Houze 2004),
+// less bright than the convective cores but far brighter than thin anvil cirrus.
+const float ITCZ_LINE_DEPTH = 0.5f;
+// The systems' reach from the ITCZ's mean line (radians), beyond which none is drawn: the line
+// meanders by at most LINE_MEANDER_LIMIT x ITCZ_MEANDER = 0.065; a system's point lies within
+// 2 x 0.07 of it and its anvil reaches 1.0 / 8 cells further, and the warp moves the point drawn by
+// at most 0.008 sqrt(2) PERLIN_BOUND = 0.012 (convective_warp): 0.065 + 0.14 + 0.125 + 0.012 =
+// 0.342. The towers, scattered over the warm pool, follow the mean line (their presence has no
+// waves): a tower's point lies within 2 x 0.1 of it and its anvil 0.98 / 24 further: 0.253 with
+// the warp, and their search is left out beyond ITCZ_TOWER_REACH.
+const float ITCZ_REACH = 0.35f;
+const float ITCZ_TOWER_REACH = 0.26f;
 
 // The systems' outlines are irregular below their own scale too (a tower's dome, the lobes of a
 // cluster's cells), which the cover's noise, whose large scales carry most of its variance, leaves
@@ -288,20 +420,39 @@ vec3 convective_warp(vec3 p, uint seed, int components) {
   return tangent_warp(p, CONVECTIVE_WARP_CELLS, CONVECTIVE_WARP, seed, CONVECTIVE_WARP_LAYER, components);
 }
 
-// The ITCZ's convective systems at p: (the systems' and towers' cloud, the systems' anvils), both in
-// [0, 1], 0 beyond ITCZ_REACH of the line.
-vec2 itcz_systems(vec3 p, float latitude, float itcz_latitude, uint seed, float edge) {
+// The latitude (radians) of the ITCZ's meandering line at the unit direction p, for a mean line at
+// `itcz_latitude` and its `waves`.
+float itcz_line_latitude(vec3 p, float itcz_latitude, IN(LineWaves) waves) {
+  return itcz_latitude + ITCZ_MEANDER * line_meander(line_waves(p, waves));
+}
+
+// The superclusters' band at the unit direction `now` (itcz_systems), in [0, 1].
+float itcz_line_band(vec3 now, float itcz_latitude, IN(LineWaves) waves, float edge) {
+  vec2 sums = line_waves(now, waves);
+  float offset = (now.z - sin(itcz_latitude) - line_shift(sums, waves)) / cos(itcz_latitude);
+  return supercluster_activity(sums) * band_profile(offset + 0.5f * ITCZ_LINE_WIDTH * edge, ITCZ_LINE_WIDTH);
+}
+
+// The ITCZ's convective systems: (the systems' and towers' cloud, the systems' anvils and the
+// superclusters' band), both in [0, 1], with the line's `waves`. The systems are drawn at p, the
+// air's origin of geocentric `latitude`, carried by the flow as the rest of the cloud (none beyond
+// ITCZ_REACH of the mean line); the band at the texel's own direction `now`: the ITCZ is where the
+// trades converge, which the flow's air passes through rather than carries along.
+vec2 itcz_systems(vec3 p, vec3 now, float latitude, float itcz_latitude, IN(LineWaves) waves, uint seed, float edge) {
   bool near = abs(latitude - itcz_latitude) < ITCZ_REACH;
   int searched = SKIPPABLE(near, NEIGHBOUR_CELLS);
+  int towers_searched = SKIPPABLE(abs(latitude - itcz_latitude) < ITCZ_TOWER_REACH, NEIGHBOUR_CELLS);
+  float band = itcz_line_band(now, itcz_latitude, waves, edge);
   p = convective_warp(p, seed, SKIPPABLE(near, 2));
   vec2 systems = convective_distances(p, ITCZ_CELLS, seed, ITCZ_LAYER, ITCZ_RADII,
-                                        convective_presence_of(itcz_latitude, 0.07f, ITCZ_FILLED), SYSTEM_ANVIL, searched);
+                                      convective_presence_of(itcz_latitude, 0.07f, ITCZ_FILLED), waves, SYSTEM_ANVIL,
+                                      searched);
   vec2 towers = convective_distances(p, ITCZ_TOWER_CELLS, seed, ITCZ_TOWER_LAYER, ITCZ_TOWER_RADII,
                                      convective_presence_of(itcz_latitude, ITCZ_TOWER_WIDTH, ITCZ_TOWER_FILLED),
-                                     TOWER_ANVIL, searched);
-  if (!near) return vec2(0.0f);
-  return vec2(convective_cloud(min(systems.x, towers.x), edge, CORE_EDGE_REACH),
-              convective_cloud(min(systems.y, towers.y), edge, ANVIL_EDGE_REACH));
+                                     no_line_waves(), TOWER_ANVIL, towers_searched);
+  if (!near) return vec2(ITCZ_LINE_DEPTH * band, band);
+  return vec2(max(convective_cloud(min(systems.x, towers.x), edge, CORE_EDGE_REACH), ITCZ_LINE_DEPTH * band),
+              max(convective_cloud(min(systems.y, towers.y), edge, ANVIL_EDGE_REACH), band));
 }
 
 // The trades' cumulus organise on the mesoscale into four patterns that an eye tells apart on
@@ -358,7 +509,9 @@ const float TRADE_CLUMP_EDGE_REACH = 0.3f;
 // A presence of `filled` everywhere (convective_presence_of a line whose width is beyond the sphere).
 vec3 presence_everywhere(float filled) { return vec3(0.0f, 1.0e6f, filled); }
 float trade_clump(vec3 p, float frequency, uint seed, uint layer, vec2 radii, float filled, float edge, int searched) {
-  float d = convective_distances(p, frequency, seed, layer, radii, presence_everywhere(filled), NO_ANVIL, searched).x;
+  float d = convective_distances(p, frequency, seed, layer, radii, presence_everywhere(filled), no_line_waves(), NO_ANVIL,
+                                 searched)
+                .x;
   return convective_cloud(d, edge, TRADE_CLUMP_EDGE_REACH);
 }
 float gravel_clumps(vec3 p, uint seed, float edge, int searched) {
@@ -838,15 +991,16 @@ float cyclone_systems(vec3 p, IN(WeatherSystems) systems, uint near, float edge)
 // (thick cloud), trade cumulus at 0.6, cirrus and the clusters' anvils at 0.35 (thin: they rise
 // little above the threshold and stay grey); x the clusters, y the cumulus, z the cirrus, and w the
 // anvils' own field (in [0, 1], unweighted: part of z, told apart for their cloud type).
-// `regimes`: the trades' patterns' weights at p (belt_regimes).
+// `regimes`: the trades' patterns' weights at p (belt_regimes). p is the air's origin, `now` the
+// texel's own direction, where the ITCZ's band lies (itcz_systems).
 const vec3 BELT_WEIGHTS = vec3(1.0f, 0.6f, 0.35f);
-vec4 belt_fields(vec3 p, float latitude, IN(WeatherSystems) systems, uint seed, float edge, vec4 regimes) {
+vec4 belt_fields(vec3 p, vec3 now, float latitude, IN(WeatherSystems) systems, uint seed, float edge, vec4 regimes) {
   vec4 fields = vec4(0.0f);
   if (systems.trade_cumulus > 0.0f)
     fields.y = BELT_WEIGHTS.y * systems.trade_cumulus * trade_cumulus(p, latitude, seed, edge, regimes);
   if (systems.cirrus > 0.0f) fields.z = BELT_WEIGHTS.z * systems.cirrus * cirrus_streaks(p, latitude, seed);
   if (systems.itcz > 0.0f) {
-    vec2 itcz = systems.itcz * itcz_systems(p, latitude, systems.itcz_latitude, seed, edge);
+    vec2 itcz = systems.itcz * itcz_systems(p, now, latitude, systems.itcz_latitude, systems.itcz_waves, seed, edge);
     fields.x = itcz.x;
     // The systems' anvils are cirrus: thin (the cirrus's weight) and high.
     fields.z = max(fields.z, BELT_WEIGHTS.z * itcz.y);
@@ -881,15 +1035,16 @@ CloudTypes cloud_types(float cyclones, vec4 fields) {
 // that a satellite sees their tops and not the cells below them; the cells show in the cold air
 // behind the fronts and on the decks, where nothing covers the boundary layer (Agee et al. 1973).
 float cells_hidden(IN(CloudTypes) types) { return clamp(max(types.frontal, types.deep_convection), 0.0f, 1.0f); }
-float belt_systems(vec3 p, float latitude, IN(WeatherSystems) systems, uint seed, float edge) {
-  return belt_cloud(belt_fields(p, latitude, systems, seed, edge, belt_regimes(p, latitude, systems, seed)));
+float belt_systems(vec3 p, vec3 now, float latitude, IN(WeatherSystems) systems, uint seed, float edge) {
+  return belt_cloud(belt_fields(p, now, latitude, systems, seed, edge, belt_regimes(p, latitude, systems, seed)));
 }
 
-// All systems at the unit direction p of geocentric latitude `latitude` (radians), with the cover's
+// All systems at the unit direction p of geocentric latitude `latitude` (radians; `now` the
+// texel's own direction, belt_fields), with the cover's
 // noise as `edge` in [-1, 1] and the belts' noise of systems.seed: the larger of the two fields.
-float weather_density(vec3 p, float latitude, IN(WeatherSystems) systems, float edge) {
+float weather_density(vec3 p, vec3 now, float latitude, IN(WeatherSystems) systems, float edge) {
   return max(cyclone_systems(p, systems, cyclones_near(p, systems), edge),
-             belt_systems(p, latitude, systems, systems.seed, edge));
+             belt_systems(p, now, latitude, systems, systems.seed, edge));
 }
 
 #endif

@@ -101,6 +101,24 @@ float cyclone_strength(double a) {
 
 float cyclone_wrap(double a) { return static_cast<float>(M_PI * (0.5 + 0.75 * std::clamp(a, 0.0, 1.0))); }
 
+glsl::LineWaves moved_line_waves(glsl::LineWaves waves, double hours, double loop_hours) {
+  // A wave |c| cos(m lon - arg c) moving east at angular speed w is c e^(i m w t) at time t: it
+  // turns m w / (2 pi) times an hour, with a loop a whole number of times in it.
+  for (int k = 0; k < glsl::LINE_WAVES; ++k) {
+    const int m = glsl::LINE_FIRST_WAVENUMBER + k;
+    const auto turn = [&](glsl::vec2 c, double speed_m_s) {
+      double turns_per_hour = m * speed_m_s / (earth_radius_km * 1000.0) * 3600.0 / (2.0 * M_PI);
+      if (loop_hours > 0.0) turns_per_hour = std::round(turns_per_hour * loop_hours) / loop_hours;
+      const double angle = 2.0 * M_PI * std::fmod(turns_per_hour * hours, 1.0);
+      const double cs = std::cos(angle), sn = std::sin(angle);
+      return glsl::vec2(static_cast<float>(c.x * cs - c.y * sn), static_cast<float>(c.x * sn + c.y * cs));
+    };
+    waves.meander[k] = turn(waves.meander[k], itcz_meander_speed_m_s);
+    waves.envelope[k] = turn(waves.envelope[k], supercluster_speed_m_s);
+  }
+  return waves;
+}
+
 glsl::WeatherSystems weather_systems(const CoverParameters& p, double hours) {
   glsl::WeatherSystems w{};
   const std::uint32_t seed = layer_seed(p.seed, NoiseLayer::weather_systems);
@@ -114,6 +132,7 @@ glsl::WeatherSystems weather_systems(const CoverParameters& p, double hours) {
   // The ITCZ's annual-mean line near 5 N (Waliser and Gautier 1993), moved with the profile's
   // seasonal shift there.
   w.itcz_latitude = static_cast<float>((5.0 + seasonal_shift_deg(5.0, p.month)) * degree);
+  w.itcz_waves = moved_line_waves(glsl::line_waves_of(seed, w.itcz_latitude), hours, p.loop_hours);
   if (p.cyclones <= 0) return w;
   const double lifetime = cyclone_lifetime_hours;
   double spacing = lifetime / p.cyclones;

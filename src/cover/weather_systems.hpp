@@ -1,6 +1,6 @@
 #pragma once
 // The host's side of the weather systems (shaders/lib/weather_systems.glsl): where the
-// extratropical cyclones are at a moment, how old and how strong, and the ITCZ's latitude. Each
+// extratropical cyclones are at a moment, how old and how strong, and the ITCZ's line. Each
 // cyclone lives through its own slot of a seeded schedule, so that the systems of any moment
 // follow from the seed and the time alone: frames are computed on their own, in any order
 // (docs/climate.md, "Weather systems").
@@ -19,6 +19,17 @@ constexpr double cyclone_lifetime_hours = 120.0;
 // poleward drift over a life, degrees (Hoskins and Hodges: 5-15 degrees).
 constexpr double cyclone_speed_m_s = 12.0;
 constexpr double cyclone_poleward_deg = 10.0;
+
+// The ITCZ's waves (weather_systems.glsl's LineWaves) move along it: its meander with the easterly
+// waves, west at about 8 m/s (Reed, Norquist and Recker 1977: 7-8 m/s over the Atlantic), its
+// superclusters east at about 12 m/s (Nakazawa 1988: 10-15 m/s), so that every frame has its own
+// line from the seed and the time alone. (Speeds at the equator: angular speeds v / 6371 km.)
+constexpr double itcz_meander_speed_m_s = -8.0;
+constexpr double supercluster_speed_m_s = 12.0;
+// `waves` (at time 0) at `hours`: each wave of wavenumber m turned by m times its angular speed.
+// With a loop (`loop_hours` > 0, --loop) each turns the whole number of times in the loop nearest
+// to its speed's (none in a loop shorter than half its period), so the cover repeats after it.
+glsl::LineWaves moved_line_waves(glsl::LineWaves waves, double hours, double loop_hours);
 
 // One cyclone's state at `age_fraction` = age / lifetime in [0, 1): its strength (grows in the
 // first fifth, decays in the last third) and how far its head winds (half a turn as a wave, three

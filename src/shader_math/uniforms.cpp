@@ -53,6 +53,14 @@ void set_uniform(const gpu::ComputeProgram& program, const std::string& name, co
   program.set(name + ".cyclone_count", systems.cyclone_count);
   program.set(name + ".itcz_latitude", systems.itcz_latitude);
   program.set(name + ".itcz", systems.itcz);
+  const std::string waves = name + ".itcz_waves.";
+  for (int k = 0; k < LINE_WAVES; ++k) {
+    program.set(waves + "meander[" + std::to_string(k) + "]", systems.itcz_waves.meander[k]);
+    program.set(waves + "envelope[" + std::to_string(k) + "]", systems.itcz_waves.envelope[k]);
+  }
+  program.set(waves + "meander_z", systems.itcz_waves.meander_z);
+  program.set(waves + "dormant", systems.itcz_waves.dormant);
+  program.set(waves + "applies", systems.itcz_waves.applies);
   program.set(name + ".trade_cumulus", systems.trade_cumulus);
   program.set(name + ".cirrus", systems.cirrus);
   program.set(name + ".shallow_trades", systems.shallow_trades);

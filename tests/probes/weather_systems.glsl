@@ -28,10 +28,13 @@ const int PROBE_CONVECTIVE = 19;      // equal_area_radius(a, b, c), convective_
                                       // convective_presence(p, convective_presence_of(x[3].z, x[3].w, a)), and
                                       // that presence's y in w
 const int PROBE_CONVECTIVE_DISTANCES = 20;  // convective_distances(p, a, uint(b), ITCZ_LAYER, ITCZ_RADII, the ITCZ's
-                                            // presence at c, the systems' anvils where x[3].y is 1, the towers'
-                                            // where 2, none where 0); itcz_systems(p, lat,
+                                            // presence at c and its waves of seed b, the systems' anvils where
+                                            // x[3].y is 1, the towers' where 2, none where 0); itcz_systems(p, lat,
                                             // c, uint(b), x[3].x) in zw; no cells searched where x[3].z > 1/2
 const int PROBE_CONVECTIVE_WARP = 21;        // convective_warp(p, uint(b), 2)
+const int PROBE_LINE_WAVES = 22;             // line_waves(p, line_waves_of(uint(b), a)),
+                                             // waved_presence(p, convective_presence_of(a, c, 1), those waves, 0),
+                                             // itcz_line_latitude(p, a, those waves)
 const int PROBE_LOCAL_EAST = 23;             // local_east(p)
 const int PROBE_FRAYED_DECK = 24;            // frayed_deck(a, b), deck_presence of it, deck_organisation(a)
 const int PROBE_CELLS_HIDDEN = 25;           // cells_hidden(cloud_types(a, x[1]))
@@ -44,6 +47,11 @@ const int PROBE_TANGENT_WARP = 29;           // tangent_warp(p, a, c, uint(b), F
                                              // trade_cumulus_belt(latitude) in w
 const int PROBE_BELT_REGIMES = 31;           // belt_regimes(p, latitude, systems (trade cumulus x[3].z), uint(b))
 const int PROBE_STORM_TRACK = 32;            // storm_track_cold_air(p, latitude, x[3].xyz, a, c)
+const int PROBE_LINE_PARTS = 33;             // complex_product(x[3].xy, x[3].zw), line_meander(vec2(a, c)),
+                                             // line_shift(vec2(a, c), line_waves_of(uint(b), 0.1))
+const int PROBE_LINE_BAND = 34;              // itcz_line_band(p, a, line_waves_of(uint(b), a), c),
+                                             // supercluster_activity(vec2(0, c)), system_growth(x[3].x,
+                                             // no_line_waves()), system_growth(x[3].x, those waves)
 const int PROBE_TRADE_CLUMP = 30;            // trade_clump(p, a, uint(b), FLOWERS_LAYER, (0.2, 0.45), c, x[3].x, all
                                              // cells), presence_everywhere(c) in yzw
 #ifndef __cplusplus
@@ -92,10 +100,24 @@ vec4 probe_weather_systems(mat4 x) {
   if (f == PROBE_CONVECTIVE_DISTANCES)
     return vec4(convective_distances(p, x[0].y, seed, ITCZ_LAYER, ITCZ_RADII,
                                      convective_presence_of(x[0].w, 0.07f, ITCZ_FILLED),
+                                     line_waves_of(seed, x[0].w),
                                      x[3].y > 1.5f ? TOWER_ANVIL : (x[3].y > 0.5f ? SYSTEM_ANVIL : NO_ANVIL),
                                      x[3].z > 0.5f ? 0 : NEIGHBOUR_CELLS),
-                itcz_systems(p, latitude, x[0].w, seed, x[3].x));
+                itcz_systems(p, p, latitude, x[0].w, line_waves_of(seed, x[0].w), seed, x[3].x));
   if (f == PROBE_CONVECTIVE_WARP) return vec4(convective_warp(p, seed, 2), 0.0f);
+  if (f == PROBE_LINE_PARTS)
+    return vec4(complex_product(vec2(x[3].x, x[3].y), vec2(x[3].z, x[3].w)), line_meander(vec2(x[0].y, x[0].w)),
+                line_shift(vec2(x[0].y, x[0].w), line_waves_of(seed, 0.1f)));
+  if (f == PROBE_LINE_BAND) {
+    LineWaves waves = line_waves_of(seed, x[0].y);
+    return vec4(itcz_line_band(p, x[0].y, waves, x[0].w), supercluster_activity(vec2(0.0f, x[0].w)),
+                system_growth(x[3].x, no_line_waves()), system_growth(x[3].x, waves));
+  }
+  if (f == PROBE_LINE_WAVES) {
+    LineWaves waves = line_waves_of(seed, x[0].y);
+    return vec4(line_waves(p, waves), waved_presence(p, convective_presence_of(x[0].y, x[0].w, 1.0f), waves, 0.0f),
+                itcz_line_latitude(p, x[0].y, waves));
+  }
   if (f == PROBE_LOCAL_EAST) return vec4(local_east(p), 0.0f);
   if (f == PROBE_CELLS_HIDDEN) return vec4(cells_hidden(cloud_types(x[0].y, x[1])), 0.0f, 0.0f, 0.0f);
   if (f == PROBE_CELL_BORDERS)
@@ -144,12 +166,14 @@ vec4 probe_weather_systems(mat4 x) {
   if (f == PROBE_CELL_WEIGHTS)
     return vec4(cell_weights(x[0].y, x[0].z), deck_presence(x[0].y), cells_resolved(x[0].z * 100.0f, x[0].w));
   if (f == PROBE_BELTS)
-    return vec4(itcz_systems(p, latitude, x[0].y, seed, x[0].w).x, trade_cumulus(p, latitude, seed, x[0].w, trade_regimes(p, seed, 2)),
-                cirrus_streaks(p, latitude, seed), itcz_systems(p, latitude, x[0].y, seed, x[0].w).y);
+    return vec4(itcz_systems(p, p, latitude, x[0].y, line_waves_of(seed, x[0].y), seed, x[0].w).x,
+                trade_cumulus(p, latitude, seed, x[0].w, trade_regimes(p, seed, 2)), cirrus_streaks(p, latitude, seed),
+                itcz_systems(p, p, latitude, x[0].y, line_waves_of(seed, x[0].y), seed, x[0].w).y);
   WeatherSystems systems;
   systems.cyclones[0] = probe_cyclone(x);
   systems.cyclone_count = 1;
   systems.itcz_latitude = x[0].y;
+  systems.itcz_waves = line_waves_of(seed, x[0].y);
   systems.itcz = 1.0f;
   systems.trade_cumulus = 1.0f;
   systems.cirrus = 1.0f;
@@ -167,8 +191,8 @@ vec4 probe_weather_systems(mat4 x) {
     return belt_regimes(p, latitude, systems, seed);
   }
   if (f == PROBE_BELT_FIELDS) {
-    return belt_fields(p, latitude, systems, seed, x[0].w, belt_regimes(p, latitude, systems, seed));
+    return belt_fields(p, p, latitude, systems, seed, x[0].w, belt_regimes(p, latitude, systems, seed));
   }
-  return vec4(weather_density(p, latitude, systems, x[0].w), cyclone_systems(p, systems, cyclones_near(p, systems), x[0].w),
-              belt_systems(p, latitude, systems, seed + 1u, x[0].w), 0.0f);  // PROBE_WEATHER_DENSITY
+  return vec4(weather_density(p, p, latitude, systems, x[0].w), cyclone_systems(p, systems, cyclones_near(p, systems), x[0].w),
+              belt_systems(p, p, latitude, systems, seed + 1u, x[0].w), 0.0f);  // PROBE_WEATHER_DENSITY
 }
