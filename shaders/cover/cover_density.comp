@@ -71,8 +71,9 @@ uniform uint u_young_systems_seed;  // the younger layer's belts (u_systems.seed
 // The geocentric latitude (radians) of a layer's origin, a unit vector.
 float origin_latitude(vec3 origin) { return portable_asin(clamp(origin.z, -1.0f, 1.0f)); }
 
-// The belts' fields at a layer's origin of geocentric `latitude` (belt_fields) and in `organised`
-// the trades' organised share there (organised_trades), from one evaluation of the trades' patterns.
+// The belts' fields at a layer's origin of geocentric `latitude` (belt_fields; the ITCZ's band at the
+// texel's own `direction`) and in `organised` the trades' organised share there (organised_trades),
+// from one evaluation of the trades' patterns.
 vec4 belts_at(vec3 origin, vec3 direction, float latitude, uint seed, float edge, OUT(float) organised) {
   vec4 regimes = belt_regimes(origin, latitude, u_systems, seed);
   organised = organised_trades(regimes, latitude, u_systems.trade_cumulus);
