@@ -168,8 +168,8 @@ TEST_CASE("density and coverage passes agree with the CPU twin", "[pass]") {
     const float latitude = portable_asin(clamp(origin.z, -1.0f, 1.0f));
     const float cyclones = cyclone_systems(origin, systems, cyclones_near(origin, systems), system_edge(noise));
     const vec4 regimes = belt_regimes(origin, latitude, systems, systems.seed);
-    const vec4 belts =
-        belt_fields(origin, vec3(identity[k]), latitude, systems, systems.seed, system_edge(noise), regimes);
+    const float band = itcz_band(vec3(identity[k]), systems, system_edge(noise));
+    const vec4 belts = belt_fields(origin, band, latitude, systems, systems.seed, system_edge(noise), regimes);
     const float systems_value = std::max(cyclones, belt_cloud(belts));
     const float shaped = shaped_density(noise, curl[k].w, p.cyclone_cloudiness, 0.0f, 0.0f);
     // The convective cells (none resolved by 16 texels a face: the modulation is 0 here).

@@ -38,6 +38,11 @@ vec3 on_itcz_line(float line, float lon, const glsl::LineWaves& waves) {
   return vec3(std::cos(lat) * std::cos(lon), std::cos(lat) * std::sin(lon), std::sin(lat));
 }
 
+// The ITCZ's systems and band at the unit direction p for air that has not moved (its origin is p).
+vec2 itcz_here(vec3 p, float latitude, float line, const glsl::LineWaves& waves, std::uint32_t seed, float edge) {
+  return glsl::itcz_systems(p, glsl::itcz_line_band(p, line, waves, edge), latitude, line, waves, seed, edge);
+}
+
 // Signed angle east of b from a (longitude difference in (-pi, pi]).
 double longitude_step(vec3 a, vec3 b) {
   const double d = std::atan2(b.y, b.x) - std::atan2(a.y, a.x);
@@ -250,10 +255,10 @@ TEST_CASE("the ITCZ's clusters stay in its belt and follow the season", "[fast][
   for (int k = 0; k < n; ++k) {
     const float lon = 2.0f * float(M_PI) * k / n;
     const vec3 on = on_itcz_line(line, lon, annual.itcz_waves);
-    if (glsl::itcz_systems(on, on, line, line, annual.itcz_waves, annual.seed, 0.0f).x > 0.5f) ++inside;
+    if (itcz_here(on, line, line, annual.itcz_waves, annual.seed, 0.0f).x > 0.5f) ++inside;
     const float off = line + (k % 2 ? 1.0f : -1.0f) * glsl::ITCZ_REACH;
     const vec3 away(std::cos(off) * std::cos(lon), std::cos(off) * std::sin(lon), std::sin(off));
-    CHECK(glsl::itcz_systems(away, away, off, line, annual.itcz_waves, annual.seed, 0.0f).x == 0.0f);
+    CHECK(itcz_here(away, off, line, annual.itcz_waves, annual.seed, 0.0f).x == 0.0f);
   }
   INFO("share of the line in clusters " << double(inside) / n);
   CHECK(inside > n / 20);
@@ -268,8 +273,7 @@ TEST_CASE("the ITCZ's clusters stay in its belt and follow the season", "[fast][
     for (int k = 0; k <= n; ++k) {
       const float lon = 2.0f * float(M_PI) * (k % n) / n;
       const vec3 on = on_itcz_line(line, lon, annual.itcz_waves);
-      const bool cloudy =
-          k < n && glsl::itcz_systems(on, on, line, line, annual.itcz_waves, annual.seed, 0.0f).x > 0.5f;
+      const bool cloudy = k < n && itcz_here(on, line, line, annual.itcz_waves, annual.seed, 0.0f).x > 0.5f;
       if (cloudy && start < 0) start = k;
       if (!cloudy && start >= 0) chords.push_back((k - start) * step_km), start = -1;
     }
@@ -292,13 +296,13 @@ TEST_CASE("the ITCZ's clusters stay in its belt and follow the season", "[fast][
   for (int k = 0; k < n; ++k) {
     const float lon = 2.0f * float(M_PI) * k / n;
     const vec3 on = on_itcz_line(line, lon, annual.itcz_waves);
-    cluster[k] = glsl::itcz_systems(on, on, line, line, annual.itcz_waves, annual.seed, 0.0f).x > 0.5f;
-    anvil[k] = glsl::itcz_systems(on, on, line, line, annual.itcz_waves, annual.seed, 0.0f).y > 0.5f;
+    cluster[k] = itcz_here(on, line, line, annual.itcz_waves, annual.seed, 0.0f).x > 0.5f;
+    anvil[k] = itcz_here(on, line, line, annual.itcz_waves, annual.seed, 0.0f).y > 0.5f;
     anvils += anvil[k];
     banded[k] = glsl::supercluster_activity(glsl::line_waves(on, waves)) > 0.0f;
     const float off = line + (k % 2 ? 1.0f : -1.0f) * glsl::ITCZ_REACH;
     const vec3 away(std::cos(off) * std::cos(lon), std::cos(off) * std::sin(lon), std::sin(off));
-    CHECK(glsl::itcz_systems(away, away, off, line, annual.itcz_waves, annual.seed, 0.0f).y == 0.0f);
+    CHECK(itcz_here(away, off, line, annual.itcz_waves, annual.seed, 0.0f).y == 0.0f);
   }
   int west = 0, east = 0;
   for (int k = 0; k < n; ++k) {
@@ -357,8 +361,7 @@ TEST_CASE("the ITCZ meanders by about 1.5 degrees and its systems gather in supe
       const vec3 presence = glsl::convective_presence_of(line, 0.07f, 1.0f);
       CHECK(glsl::waved_presence(on, presence, waves, 0.0f) ==
             Approx(glm::mix(glsl::ITCZ_DORMANT, 1.0f, activity[k])).margin(2e-3));
-      const vec2 cloud =
-          glsl::itcz_systems(on, on, glsl::itcz_line_latitude(mean, line, waves), line, waves, seed, 0.0f);
+      const vec2 cloud = itcz_here(on, glsl::itcz_line_latitude(mean, line, waves), line, waves, seed, 0.0f);
       if (activity[k] > 0.99f || activity[k] < 0.01f) {
         const bool in = activity[k] > 0.99f;
         clouds_in[in] += cloud.x > 0.5f;

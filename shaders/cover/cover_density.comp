@@ -71,13 +71,13 @@ uniform uint u_young_systems_seed;  // the younger layer's belts (u_systems.seed
 // The geocentric latitude (radians) of a layer's origin, a unit vector.
 float origin_latitude(vec3 origin) { return portable_asin(clamp(origin.z, -1.0f, 1.0f)); }
 
-// The belts' fields at a layer's origin of geocentric `latitude` (belt_fields; the ITCZ's band at the
-// texel's own `direction`) and in `organised` the trades' organised share there (organised_trades),
-// from one evaluation of the trades' patterns.
-vec4 belts_at(vec3 origin, vec3 direction, float latitude, uint seed, float edge, OUT(float) organised) {
+// The belts' fields at a layer's origin of geocentric `latitude` (belt_fields; `band` the ITCZ's band
+// at the texel's own direction, itcz_band) and in `organised` the trades' organised share there
+// (organised_trades), from one evaluation of the trades' patterns.
+vec4 belts_at(vec3 origin, float band, float latitude, uint seed, float edge, OUT(float) organised) {
   vec4 regimes = belt_regimes(origin, latitude, u_systems, seed);
   organised = organised_trades(regimes, latitude, u_systems.trade_cumulus);
-  return belt_fields(origin, direction, latitude, u_systems, seed, edge, regimes);
+  return belt_fields(origin, band, latitude, u_systems, seed, edge, regimes);
 }
 
 // The stratocumulus deck's strength at a layer's origin of geocentric `latitude` (x; from the bias's deck term `deck_term`
@@ -143,7 +143,8 @@ void main() {
     vec3 origin = normalize(warped);
     float older_latitude = origin_latitude(origin);  // each layer's origin's, for its belts and its cells
     float organised;  // the trades' organised share, blended between the layers as the belts
-    vec4 fields = belts_over_surface(belts_at(origin, direction, older_latitude, u_systems.seed, edge, organised), surface);
+    float band = itcz_band(direction, u_systems, edge);  // the ITCZ's, at the texel: both layers'
+    vec4 fields = belts_over_surface(belts_at(origin, band, older_latitude, u_systems.seed, edge, organised), surface);
     float belts = belt_cloud(fields);
     vec3 older_origin = origin;
 #if MOVING_LAYERS
@@ -151,7 +152,7 @@ void main() {
     float young_latitude = origin_latitude(young_origin);
     float young_organised;
     vec4 young_fields = belts_over_surface(
-        belts_at(young_origin, direction, young_latitude, u_young_systems_seed, edge, young_organised), surface);
+        belts_at(young_origin, band, young_latitude, u_young_systems_seed, edge, young_organised), surface);
     organised = layer_blend(organised, young_organised, u_young_share);
     belts = layer_blend(belts, belt_cloud(young_fields), u_young_share);
     fields = mix(fields, young_fields, u_young_share);

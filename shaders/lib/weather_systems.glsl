@@ -436,13 +436,13 @@ float itcz_line_band(vec3 now, float itcz_latitude, IN(LineWaves) waves, float e
 // The ITCZ's convective systems: (the systems' and towers' cloud, the systems' anvils and the
 // superclusters' band), both in [0, 1], with the line's `waves`. The systems are drawn at p, the
 // air's origin of geocentric `latitude`, carried by the flow as the rest of the cloud (none beyond
-// ITCZ_REACH of the mean line); the band at the texel's own direction `now`: the ITCZ is where the
-// trades converge, which the flow's air passes through rather than carries along.
-vec2 itcz_systems(vec3 p, vec3 now, float latitude, float itcz_latitude, IN(LineWaves) waves, uint seed, float edge) {
+// ITCZ_REACH of the mean line); the `band` is itcz_line_band at the texel's own direction: the
+// ITCZ is where the trades converge, which the flow's air passes through rather than carries along
+// (and the moving flow's two layers share it, so the caller computes it once).
+vec2 itcz_systems(vec3 p, float band, float latitude, float itcz_latitude, IN(LineWaves) waves, uint seed, float edge) {
   bool near = abs(latitude - itcz_latitude) < ITCZ_REACH;
   int searched = SKIPPABLE(near, NEIGHBOUR_CELLS);
   int towers_searched = SKIPPABLE(abs(latitude - itcz_latitude) < ITCZ_TOWER_REACH, NEIGHBOUR_CELLS);
-  float band = itcz_line_band(now, itcz_latitude, waves, edge);
   p = convective_warp(p, seed, SKIPPABLE(near, 2));
   vec2 systems = convective_distances(p, ITCZ_CELLS, seed, ITCZ_LAYER, ITCZ_RADII,
                                       convective_presence_of(itcz_latitude, 0.07f, ITCZ_FILLED), waves, SYSTEM_ANVIL,
@@ -991,16 +991,16 @@ float cyclone_systems(vec3 p, IN(WeatherSystems) systems, uint near, float edge)
 // (thick cloud), trade cumulus at 0.6, cirrus and the clusters' anvils at 0.35 (thin: they rise
 // little above the threshold and stay grey); x the clusters, y the cumulus, z the cirrus, and w the
 // anvils' own field (in [0, 1], unweighted: part of z, told apart for their cloud type).
-// `regimes`: the trades' patterns' weights at p (belt_regimes). p is the air's origin, `now` the
-// texel's own direction, where the ITCZ's band lies (itcz_systems).
+// `regimes`: the trades' patterns' weights at p (belt_regimes). p is the air's origin; `band` the
+// ITCZ's band at the texel's own direction (itcz_band).
 const vec3 BELT_WEIGHTS = vec3(1.0f, 0.6f, 0.35f);
-vec4 belt_fields(vec3 p, vec3 now, float latitude, IN(WeatherSystems) systems, uint seed, float edge, vec4 regimes) {
+vec4 belt_fields(vec3 p, float band, float latitude, IN(WeatherSystems) systems, uint seed, float edge, vec4 regimes) {
   vec4 fields = vec4(0.0f);
   if (systems.trade_cumulus > 0.0f)
     fields.y = BELT_WEIGHTS.y * systems.trade_cumulus * trade_cumulus(p, latitude, seed, edge, regimes);
   if (systems.cirrus > 0.0f) fields.z = BELT_WEIGHTS.z * systems.cirrus * cirrus_streaks(p, latitude, seed);
   if (systems.itcz > 0.0f) {
-    vec2 itcz = systems.itcz * itcz_systems(p, now, latitude, systems.itcz_latitude, systems.itcz_waves, seed, edge);
+    vec2 itcz = systems.itcz * itcz_systems(p, band, latitude, systems.itcz_latitude, systems.itcz_waves, seed, edge);
     fields.x = itcz.x;
     // The systems' anvils are cirrus: thin (the cirrus's weight) and high.
     fields.z = max(fields.z, BELT_WEIGHTS.z * itcz.y);
@@ -1035,8 +1035,13 @@ CloudTypes cloud_types(float cyclones, vec4 fields) {
 // that a satellite sees their tops and not the cells below them; the cells show in the cold air
 // behind the fronts and on the decks, where nothing covers the boundary layer (Agee et al. 1973).
 float cells_hidden(IN(CloudTypes) types) { return clamp(max(types.frontal, types.deep_convection), 0.0f, 1.0f); }
+// The ITCZ's band at the texel's own direction `now` with the cover's noise as `edge` (belt_fields).
+float itcz_band(vec3 now, IN(WeatherSystems) systems, float edge) {
+  return itcz_line_band(now, systems.itcz_latitude, systems.itcz_waves, edge);
+}
 float belt_systems(vec3 p, vec3 now, float latitude, IN(WeatherSystems) systems, uint seed, float edge) {
-  return belt_cloud(belt_fields(p, now, latitude, systems, seed, edge, belt_regimes(p, latitude, systems, seed)));
+  return belt_cloud(belt_fields(p, itcz_band(now, systems, edge), latitude, systems, seed, edge,
+                                belt_regimes(p, latitude, systems, seed)));
 }
 
 // All systems at the unit direction p of geocentric latitude `latitude` (radians; `now` the

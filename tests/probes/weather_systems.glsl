@@ -5,7 +5,7 @@ const int PROBE_BAND_PROFILE = 0;     // band_profile(a, b)
 const int PROBE_COMMA_CLOUD = 1;      // comma_cloud(vec2(a, b), c, x[3].x)
 const int PROBE_CYCLONE = 2;          // cyclone_frame(p, C).xy, cyclone_cloud(p, C, a) in z
 const int PROBE_CELL_CLOUDS = 3;      // cell_clouds(p, a, uint(b), 7, 0.2, 0.3, 0.3, c)
-const int PROBE_BELTS = 4;            // itcz_systems(p, lat, a, uint(b), c).x, trade_cumulus, cirrus_streaks, its .y
+const int PROBE_BELTS = 4;            // itcz_systems(p, 0, lat, a, its waves, uint(b), c).x, trade_cumulus, cirrus_streaks, its .y
 const int PROBE_WEATHER_DENSITY = 5;  // weather_density, cyclone_systems, belt_systems (seed b + 1): cyclone C, the ITCZ at a, seed b, edge c
 const int PROBE_BELT_FIELDS = 6;      // belt_fields(p, lat, systems (the ITCZ at a), uint(b), c)
 const int PROBE_CELLS = 7;            // closed_cells(p, uint(b)), open_cells (clumps 1), cell_border(p * 160, p, its key),
@@ -29,8 +29,9 @@ const int PROBE_CONVECTIVE = 19;      // equal_area_radius(a, b, c), convective_
                                       // that presence's y in w
 const int PROBE_CONVECTIVE_DISTANCES = 20;  // convective_distances(p, a, uint(b), ITCZ_LAYER, ITCZ_RADII, the ITCZ's
                                             // presence at c and its waves of seed b, the systems' anvils where
-                                            // x[3].y is 1, the towers' where 2, none where 0); itcz_systems(p, lat,
-                                            // c, uint(b), x[3].x) in zw; no cells searched where x[3].z > 1/2
+                                            // x[3].y is 1, the towers' where 2, none where 0); itcz_systems(p,
+                                            // band x[3].w, lat, c, its waves, uint(b), x[3].x) in zw; no cells
+                                            // searched where x[3].z > 1/2
 const int PROBE_CONVECTIVE_WARP = 21;        // convective_warp(p, uint(b), 2)
 const int PROBE_LINE_WAVES = 22;             // line_waves(p, line_waves_of(uint(b), a)),
                                              // waved_presence(p, convective_presence_of(a, c, 1), those waves, 0),
@@ -103,7 +104,7 @@ vec4 probe_weather_systems(mat4 x) {
                                      line_waves_of(seed, x[0].w),
                                      x[3].y > 1.5f ? TOWER_ANVIL : (x[3].y > 0.5f ? SYSTEM_ANVIL : NO_ANVIL),
                                      x[3].z > 0.5f ? 0 : NEIGHBOUR_CELLS),
-                itcz_systems(p, p, latitude, x[0].w, line_waves_of(seed, x[0].w), seed, x[3].x));
+                itcz_systems(p, x[3].w, latitude, x[0].w, line_waves_of(seed, x[0].w), seed, x[3].x));
   if (f == PROBE_CONVECTIVE_WARP) return vec4(convective_warp(p, seed, 2), 0.0f);
   if (f == PROBE_LINE_PARTS)
     return vec4(complex_product(vec2(x[3].x, x[3].y), vec2(x[3].z, x[3].w)), line_meander(vec2(x[0].y, x[0].w)),
@@ -166,9 +167,9 @@ vec4 probe_weather_systems(mat4 x) {
   if (f == PROBE_CELL_WEIGHTS)
     return vec4(cell_weights(x[0].y, x[0].z), deck_presence(x[0].y), cells_resolved(x[0].z * 100.0f, x[0].w));
   if (f == PROBE_BELTS)
-    return vec4(itcz_systems(p, p, latitude, x[0].y, line_waves_of(seed, x[0].y), seed, x[0].w).x,
+    return vec4(itcz_systems(p, 0.0f, latitude, x[0].y, line_waves_of(seed, x[0].y), seed, x[0].w).x,
                 trade_cumulus(p, latitude, seed, x[0].w, trade_regimes(p, seed, 2)), cirrus_streaks(p, latitude, seed),
-                itcz_systems(p, p, latitude, x[0].y, line_waves_of(seed, x[0].y), seed, x[0].w).y);
+                itcz_systems(p, 0.0f, latitude, x[0].y, line_waves_of(seed, x[0].y), seed, x[0].w).y);
   WeatherSystems systems;
   systems.cyclones[0] = probe_cyclone(x);
   systems.cyclone_count = 1;
@@ -191,7 +192,8 @@ vec4 probe_weather_systems(mat4 x) {
     return belt_regimes(p, latitude, systems, seed);
   }
   if (f == PROBE_BELT_FIELDS) {
-    return belt_fields(p, p, latitude, systems, seed, x[0].w, belt_regimes(p, latitude, systems, seed));
+    return belt_fields(p, itcz_band(p, systems, x[0].w), latitude, systems, seed, x[0].w,
+                       belt_regimes(p, latitude, systems, seed));
   }
   return vec4(weather_density(p, p, latitude, systems, x[0].w), cyclone_systems(p, systems, cyclones_near(p, systems), x[0].w),
               belt_systems(p, p, latitude, systems, seed + 1u, x[0].w), 0.0f);  // PROBE_WEATHER_DENSITY
