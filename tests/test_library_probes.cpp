@@ -586,13 +586,14 @@ TEST_CASE("weather_systems.glsl on the GPU agrees with the CPU", "[probe]") {
     // The warp: two Perlin values (smooth: their rounding below kFbm) times 0.008 along unit
     // tangents, renormalised: kArithmetic-sized.
     cases.push_back({arguments(PROBE_CONVECTIVE_WARP, vec4(0, seed, 0, 0), vec4(q, 0)), 4 * kArithmetic});
-    // The line's waves: e^(i m lon) by up to 12 complex products of a unit number (a few ulp each)
-    // times amplitudes of at most about 1, summed over 8 waves: 12 x 8 x 4 ulp; the presence takes
+    // The line's waves: e^(i m lon) by up to 10 complex products of a unit number (a few ulp each;
+    // wavenumbers up to 10) times amplitudes of at most about 1, summed over LINE_WAVES waves:
+    // 10 x LINE_WAVES x 4 ulp; the presence takes
     // the meander's 0.026 of that and the line's cosine, through the bump's slope of at most 1.5 per
     // width of 0.07 (21 per unit of sine), as PROBE_CONVECTIVE's; the line's latitude 0.026 of it.
     cases.push_back({arguments(PROBE_LINE_WAVES, vec4(0, r(-0.1f, 0.2f), seed, r(0.07f, 0.2f)),
                                vec4(normalize(vec3(q.x, q.y, 0.4f * q.z)), 0)),
-                     std::max(12 * 8 * 4 * kUlp, 16 * kTranscendental)});
+                     std::max(10 * LINE_WAVES * 4 * kUlp, 16 * kTranscendental)});
     // A complex product and a clamp: a rounding or two; the shift a product with the line's cosine.
     cases.push_back({arguments(PROBE_LINE_PARTS, vec4(0, r(-3.0f, 3.0f), seed, r(-1.0f, 1.0f)), vec4(q, 0), vec4(0.0f),
                                vec4(r(-1.0f, 1.0f), r(-1.0f, 1.0f), r(-1.0f, 1.0f), r(-1.0f, 1.0f))),
@@ -603,7 +604,7 @@ TEST_CASE("weather_systems.glsl on the GPU agrees with the CPU", "[probe]") {
     cases.push_back(
         {arguments(PROBE_LINE_BAND, vec4(0, r(-0.1f, 0.2f), seed, r(-1.0f, 1.0f)),
                    vec4(normalize(vec3(q.x, q.y, 0.2f * q.z)), 0), vec4(0.0f), vec4(r(0.0f, 0.5f), 0, 0, 0)),
-         std::max(12 * 8 * 4 * kUlp * 60, 64 * kTranscendental)});
+         std::max(10 * LINE_WAVES * 4 * kUlp * 60, 64 * kTranscendental)});
     // The east vector: a normalize of exact components: kArithmetic.
     cases.push_back({arguments(PROBE_LOCAL_EAST, vec4(0.0f), vec4(q, 0)), kArithmetic});
     // A product and a clamp: a few roundings, through the presence's smoothstep (slope 7.5).

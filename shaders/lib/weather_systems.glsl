@@ -363,8 +363,8 @@ float convective_cloud(float d, float edge, float reach) {
 // (convective_presence, a width of 4 degrees); and single towers and small clusters 55-145 km
 // across on a lattice three times finer, in one place in two on the line and fewer over a width of
 // 6 degrees (scattered convection over the warm pool), with anvils of five times their area
-// (TOWER_ANVIL). Both follow the line's meander and fill ITCZ_DORMANT as many places outside the
-// superclusters (LineWaves). Both draw their radii from equal_area_radius, so that together they
+// (TOWER_ANVIL). The mesoscale systems follow the line's meander and fill ITCZ_DORMANT as many
+// places outside the superclusters (LineWaves); the towers stay about the mean line. Both draw their radii from equal_area_radius, so that together they
 // cover about equal areas per interval of size from 50 to 900 km; half of the very cold cloudiness
 // lies in clusters over 20 000 km^2 (160 km across; Mapes and Houze 1993, "Cloud clusters and
 // superclusters over the oceanic warm pool", Mon. Wea. Rev. 121).
