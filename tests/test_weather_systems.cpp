@@ -592,8 +592,19 @@ TEST_CASE("gravel is many small separate clumps, and the trades' cumulus none at
   // A clump's disc is at most 2 x 0.45 cells of 106 km across, 1.15 times that with the edge
   // here (0.3 x 0.5 of a radius): 110 km; two overlapping ones 220 km.
   const double longest = *std::max_element(runs.clouds.begin(), runs.clouds.end());
-  INFO("clumps " << runs.clouds.size() << ", median " << median_of(runs.clouds) << " km, longest " << longest << " km");
-  CHECK(runs.clouds.size() > 60);         // many: one every few hundred km
+  // How many a circle crosses: a line through balls placed at random, n a unit volume, meets
+  // n pi E[r_h^2] of them a unit length, r_h the radius where the cloud is 1/2: here, with the
+  // edge moving the outline out by 0.15 and the rim's smoothstep halfway at 1 - GRAVEL_RIM / 2,
+  // r_h = (1.15 - GRAVEL_RIM / 2) r. The radii, of density r^-3 on [0.2, 0.38] cells, have
+  // E[r^2] = ln(0.38 / 0.2) / ((0.2^-2 - 0.38^-2) / 2) = 0.0710 cells^2; n is 0.9 a cell; the
+  // circle 2 pi cos(18 deg) x 60 cells long. Overlapping clumps count once, so somewhat fewer.
+  const double half_radius = 1.15 - 0.5 * glsl::GRAVEL_RIM;
+  const double expected = 0.9 * M_PI * half_radius * half_radius * 0.0710 * 2 * M_PI * std::cos(lat) * 60.0;
+  INFO("clumps " << runs.clouds.size() << " (expected " << expected << "), median " << median_of(runs.clouds)
+                 << " km, longest " << longest << " km");
+  CHECK(runs.clouds.size() > 0.75 * expected);
+  CHECK(runs.clouds.size() < 1.1 * expected);
+  CHECK(runs.clouds.size() > 36);         // many: one every 1000 km or less
   CHECK(median_of(runs.clouds) < 110.0);  // and small
   CHECK(longest < 220.0);
   for (float at : {0.0f, 1.2f}) {
@@ -682,6 +693,72 @@ TEST_CASE("flowers are bouquets well apart and fish are bands far longer than wi
   CHECK(fish_north.clouds.size() > 40);
   CHECK(mean_of(fish_east.clouds) > 2.0 * mean_of(fish_north.clouds));
   CHECK(fish_max > 600.0);
+}
+
+namespace {
+
+// The widths in km over which a pattern rises from 0.1 to 0.9 into its clumps along a circle
+// sampled at n points (rises that reach 0.9; their last sample at or below 0.1 to their first at or
+// above 0.9).
+template <typename Pattern, typename Along>
+std::vector<double> rise_widths(Pattern pattern, Along along, double circle_km, int n) {
+  std::vector<double> widths;
+  int last_low = -1;
+  bool inside = false;
+  for (int k = 0; k < n; ++k) {
+    const float v = pattern(along(2.0 * M_PI * k / n));
+    if (v <= 0.1f) {
+      last_low = k;
+      inside = false;
+    } else if (v >= 0.9f && !inside) {
+      inside = true;
+      if (last_low >= 0) widths.push_back((k - last_low) * circle_km / n);
+    }
+  }
+  return widths;
+}
+
+}  // namespace
+
+TEST_CASE("gravel's and fish's clumps fade over their rims and flowers end sharply", "[fast][systems]") {
+  // Soft where the cloud is thin, sharp where thick (issue 30): gravel's broken shallow cumulus
+  // thin out over the outer GRAVEL_RIM of a clump, fish over FISH_RIM, while flowers' stratiform
+  // sheets end within FLOWER_RIM. A smoothstep rises from 0.1 to 0.9 over 0.61 of its span, and a
+  // circle crossing a disc obliquely or off its centre (the sphere cuts the lattice's 3D discs)
+  // only widens it, so gravel's rises (radii from 0.2 cells of 106 km) are at least
+  // 0.61 x 0.7 x 0.2 x 106 = 9.0 km, more than a 1024 cover's texels at the faces' corners, while a
+  // flower's radial rise is at most 0.61 x 0.15 x 0.38 x 159 = 5.5 km (the warp stretches it by up
+  // to about a half), under a texel.
+  std::vector<double> gravel, flowers;
+  for (std::uint32_t seed = 1; seed <= 3; ++seed) {
+    for (double degrees : {12.0, 18.0, 24.0}) {
+      const double lat = degrees * M_PI / 180.0, circle = 2 * M_PI * earth_radius_km * std::cos(lat);
+      const auto east = [&](double lon) { return direction_at(lat, lon); };
+      const auto g = rise_widths([&](vec3 p) { return glsl::gravel_clumps(p, seed, 0.0f, glsl::NEAR_CELLS); }, east,
+                                 circle, 200000);
+      const auto f = rise_widths([&](vec3 p) { return glsl::flower_clumps(p, seed, 0.0f, glsl::NEAR_CELLS); }, east,
+                                 circle, 200000);
+      gravel.insert(gravel.end(), g.begin(), g.end());
+      flowers.insert(flowers.end(), f.begin(), f.end());
+    }
+  }
+  const double step_km = 2 * M_PI * earth_radius_km / 200000;  // the samples' spacing, at most
+  const double gravel_least = *std::min_element(gravel.begin(), gravel.end());
+  INFO("gravel rises " << gravel.size() << ": median " << median_of(gravel) << " km, least " << gravel_least
+                       << " km; flowers " << flowers.size() << ": median " << median_of(flowers) << " km");
+  REQUIRE(gravel.size() > 100);
+  REQUIRE(flowers.size() > 100);
+  CHECK(gravel_least >= 0.61 * glsl::GRAVEL_RIM * 0.2 * 106.0 - 2 * step_km);
+  CHECK(median_of(flowers) <= 1.5 * 0.61 * glsl::FLOWER_RIM * 0.38 * 159.0);
+  CHECK(median_of(gravel) > 2.0 * median_of(flowers));
+  // The rims' profile: full inside 1 - rim, none beyond 1, halfway at 1 - rim / 2 (a smoothstep).
+  for (float rim : {glsl::GRAVEL_RIM, glsl::FISH_RIM, glsl::FLOWER_RIM}) {
+    CHECK(glsl::rimmed_cloud(1.0f - rim, 0.0f, 0.3f, rim) == 1.0f);
+    CHECK(glsl::rimmed_cloud(1.0f, 0.0f, 0.3f, rim) == 0.0f);
+    CHECK(glsl::rimmed_cloud(1.0f - 0.5f * rim, 0.0f, 0.3f, rim) == Approx(0.5f).margin(1e-6));
+  }
+  CHECK(glsl::FLOWER_RIM < glsl::FISH_RIM);
+  CHECK(glsl::FISH_RIM < glsl::GRAVEL_RIM);
 }
 
 TEST_CASE("the 8 nearest cells hold every feature point within half a cell, and every trade clump the 27 find",

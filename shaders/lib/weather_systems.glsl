@@ -353,9 +353,12 @@ vec2 convective_distances(vec3 p, float frequency, uint seed, uint layer, vec2 r
 const float CORE_EDGE_REACH = 0.8f;
 const float ANVIL_EDGE_REACH = 0.3f;
 const float CONVECTIVE_RIM = 0.15f;
-float convective_cloud(float d, float edge, float reach) {
-  return 1.0f - smoothstep(1.0f - CONVECTIVE_RIM, 1.0f, d - reach * edge);
+// The same with a rim of `rim` of the radius (in (0, 1]): the cloud fades from full at 1 - rim
+// to none at 1, moved as the outline by the noise.
+float rimmed_cloud(float d, float edge, float reach, float rim) {
+  return 1.0f - smoothstep(1.0f - rim, 1.0f, d - reach * edge);
 }
+float convective_cloud(float d, float edge, float reach) { return rimmed_cloud(d, edge, reach, CONVECTIVE_RIM); }
 
 // The ITCZ (Waliser and Gautier 1993, "A satellite-derived climatology of the ITCZ", J. Climate 6):
 // mesoscale convective systems 320-800 km across on a lattice of 8 cells per radius (about 800 km
@@ -486,7 +489,8 @@ vec4 trade_regimes(vec3 p, uint seed, int fields) {
 // The patterns' clumps, each in [0, 1]: whole discs of radii of density r^-3 on a lattice
 // (convective_distances over the NEAR_CELLS, in every place in `filled` of them; `searched` 0
 // where the caller draws none), their edges frayed by the cover's noise (`edge`, up to
-// TRADE_CLUMP_EDGE_REACH of a radius) and sharp (convective_cloud). Whole discs: a clump cut along
+// TRADE_CLUMP_EDGE_REACH of a radius), soft where the cloud is thin and sharp where thick (the
+// rims below). Whole discs: a clump cut along
 // its Voronoi cell's border with an empty or smaller neighbour (cell_clouds) shows straight edges
 // and corners, shards rather than clouds, once the cover resolves them. Their radii stay below
 // 0.38 cells, so that with the fray (1.3 times) they reach at most 0.494 cells and the 8 nearest
@@ -508,23 +512,33 @@ const float FISH_STRETCH = 4.0f;
 const float TRADE_CLUMP_EDGE_REACH = 0.3f;
 // A presence of `filled` everywhere (convective_presence_of a line whose width is beyond the sphere).
 vec3 presence_everywhere(float filled) { return vec3(0.0f, 1.0e6f, filled); }
-float trade_clump(vec3 p, float frequency, uint seed, uint layer, vec2 radii, float filled, float edge, int searched) {
+// The rims, as shares of a clump's radius over which its cloud fades out (rimmed_cloud): gravel's
+// broken shallow cumulus thin out over the outer 0.7 of a clump (15-28 km at its radii, from 0.1 to
+// 0.9 over 9-17 km: a texel or two of a 1024 cover), fish's cloud over 0.4 (its bands' sides over 40-50 km), and flowers'
+// stratiform sheets end within 0.15 (5-9 km, under a texel), as the deep convection's: in a
+// satellite image edges are sharp where the cloud is optically thick and soft where thin (issue 30;
+// the patterns' reflectance rises from gravel to fish and flowers, Bony et al. 2020).
+const float GRAVEL_RIM = 0.7f;
+const float FISH_RIM = 0.4f;
+const float FLOWER_RIM = CONVECTIVE_RIM;
+float trade_clump(vec3 p, float frequency, uint seed, uint layer, vec2 radii, float filled, float rim, float edge,
+                  int searched) {
   float d = convective_distances(p, frequency, seed, layer, radii, presence_everywhere(filled), no_line_waves(), NO_ANVIL,
                                  searched)
                 .x;
-  return convective_cloud(d, edge, TRADE_CLUMP_EDGE_REACH);
+  return rimmed_cloud(d, edge, TRADE_CLUMP_EDGE_REACH, rim);
 }
 float gravel_clumps(vec3 p, uint seed, float edge, int searched) {
-  return trade_clump(p, 60.0f, seed, GRAVEL_LAYER, vec2(0.2f, 0.38f), 0.9f, edge, searched);
+  return trade_clump(p, 60.0f, seed, GRAVEL_LAYER, vec2(0.2f, 0.38f), 0.9f, GRAVEL_RIM, edge, searched);
 }
 float flower_clumps(vec3 p, uint seed, float edge, int searched) {
   vec3 q = tangent_warp(p, 80.0f, 0.006f, seed, FLOWERS_WARP_LAYER, SKIPPABLE(searched > 0, 2));
-  return trade_clump(q, 40.0f, seed, FLOWERS_LAYER, vec2(0.22f, 0.38f), 1.0f, edge, searched);
+  return trade_clump(q, 40.0f, seed, FLOWERS_LAYER, vec2(0.22f, 0.38f), 1.0f, FLOWER_RIM, edge, searched);
 }
 float fish_clumps(vec3 p, uint seed, float edge, int searched) {
   vec3 q = tangent_warp(p, 20.0f, 0.015f, seed, FISH_WARP_LAYER, SKIPPABLE(searched > 0, 2));
-  return trade_clump(vec3(q.x, q.y, FISH_STRETCH * q.z), 5.0f, seed, FISH_LAYER, vec2(0.3f, 0.38f), 0.8f, edge,
-                     searched);
+  return trade_clump(vec3(q.x, q.y, FISH_STRETCH * q.z), 5.0f, seed, FISH_LAYER, vec2(0.3f, 0.38f), 0.8f, FISH_RIM,
+                     edge, searched);
 }
 
 // The trade cumulus' belt at geocentric `latitude` (radians): from about 6 to 30 degrees where

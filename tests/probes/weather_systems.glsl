@@ -53,8 +53,9 @@ const int PROBE_LINE_PARTS = 33;             // complex_product(x[3].xy, x[3].zw
 const int PROBE_LINE_BAND = 34;              // itcz_line_band(p, a, line_waves_of(uint(b), a), c),
                                              // supercluster_activity(vec2(0, c)), system_growth(x[3].x,
                                              // no_line_waves()), system_growth(x[3].x, those waves)
-const int PROBE_TRADE_CLUMP = 30;            // trade_clump(p, a, uint(b), FLOWERS_LAYER, (0.2, 0.45), c, x[3].x, all
-                                             // cells), presence_everywhere(c) in yzw
+const int PROBE_TRADE_CLUMP = 30;            // trade_clump(p, a, uint(b), FLOWERS_LAYER, (0.2, 0.45), c, x[3].y (the
+                                             // rim), x[3].x, all cells), rimmed_cloud(x[3].z, x[3].x, 0.3, x[3].y),
+                                             // presence_everywhere(c)'s y and z
 #ifndef __cplusplus
 #include "../lib/weather_systems.glsl"
 #endif
@@ -128,8 +129,9 @@ vec4 probe_weather_systems(mat4 x) {
   if (f == PROBE_TANGENT_WARP)
     return vec4(tangent_warp(p, x[0].y, x[0].w, seed, FLOWERS_WARP_LAYER, 2), trade_cumulus_belt(latitude));
   if (f == PROBE_TRADE_CLUMP)
-    return vec4(trade_clump(p, x[0].y, seed, FLOWERS_LAYER, vec2(0.2f, 0.45f), x[0].w, x[3].x, NEIGHBOUR_CELLS),
-                presence_everywhere(x[0].w));
+    return vec4(trade_clump(p, x[0].y, seed, FLOWERS_LAYER, vec2(0.2f, 0.45f), x[0].w, x[3].y, x[3].x, NEIGHBOUR_CELLS),
+                rimmed_cloud(x[3].z, x[3].x, 0.3f, x[3].y), presence_everywhere(x[0].w).y,
+                presence_everywhere(x[0].w).z);
   if (f == PROBE_TRADE_CLUMPS)
     return vec4(gravel_clumps(p, seed, x[0].y, NEIGHBOUR_CELLS), flower_clumps(p, seed, x[0].y, NEIGHBOUR_CELLS),
                 fish_clumps(p, seed, x[0].y, NEIGHBOUR_CELLS),
