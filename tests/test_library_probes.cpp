@@ -588,14 +588,21 @@ TEST_CASE("weather_systems.glsl on the GPU agrees with the CPU", "[probe]") {
     cases.push_back({arguments(PROBE_CONVECTIVE_WARP, vec4(0, seed, 0, 0), vec4(q, 0)), 4 * kArithmetic});
     // The line's waves: e^(i m lon) by up to 10 complex products of a unit number (a few ulp each;
     // wavenumbers up to 10) times amplitudes of at most about 1, summed over LINE_WAVES waves:
-    // 10 x LINE_WAVES x 4 ulp; the presence takes
-    // the meander's 0.026 of that and the line's cosine, through the bump's slope of at most 1.5 per
-    // width of 0.07 (21 per unit of sine), as PROBE_CONVECTIVE's; the line's latitude 0.026 of it.
+    // 10 x LINE_WAVES x 4 ulp; the test monsoons (amplitudes size / m, size up to 0.05, from the
+    // sine and cosine of m: kTranscendental each) add 0.05 x (1 + 1/2 + ... + 1/10) = 0.15 of
+    // kTranscendental and their products' few ulp; the presence takes the meander's 0.026 of the
+    // waves' error and the monsoons' whole, and the line's cosine, through the bump's slope of at
+    // most 1.5 per width of 0.07 (21 per unit of sine), as PROBE_CONVECTIVE's; the line's latitude
+    // 0.026 of the waves' and the monsoons' over the line's cosine.
     cases.push_back({arguments(PROBE_LINE_WAVES, vec4(0, r(-0.1f, 0.2f), seed, r(0.07f, 0.2f)),
-                               vec4(normalize(vec3(q.x, q.y, 0.4f * q.z)), 0)),
+                               vec4(normalize(vec3(q.x, q.y, 0.4f * q.z)), 0), vec4(r(-0.05f, 0.05f), 0, 0, 0)),
+                     std::max(10 * LINE_WAVES * 4 * kUlp, 16 * kTranscendental)});
+    cases.push_back({arguments(PROBE_LINE_LATITUDE, vec4(0, r(-0.1f, 0.2f), seed, 0),
+                               vec4(normalize(vec3(q.x, q.y, 0.4f * q.z)), 0), vec4(r(-0.05f, 0.05f), 0, 0, 0)),
                      std::max(10 * LINE_WAVES * 4 * kUlp, 16 * kTranscendental)});
     // A complex product and a clamp: a rounding or two; the shift a product with the line's cosine.
-    cases.push_back({arguments(PROBE_LINE_PARTS, vec4(0, r(-3.0f, 3.0f), seed, r(-1.0f, 1.0f)), vec4(q, 0), vec4(0.0f),
+    cases.push_back({arguments(PROBE_LINE_PARTS, vec4(0, r(-3.0f, 3.0f), seed, r(-1.0f, 1.0f)), vec4(q, 0),
+                               vec4(r(-0.3f, 0.3f), 0, 0, 0),
                                vec4(r(-1.0f, 1.0f), r(-1.0f, 1.0f), r(-1.0f, 1.0f), r(-1.0f, 1.0f))),
                      4 * kTranscendental});
     // The band: the sums' error (above) through the offset's 1 / width = 23 per unit of sine and the
@@ -603,7 +610,8 @@ TEST_CASE("weather_systems.glsl on the GPU agrees with the CPU", "[probe]") {
     // growth a division and a min.
     cases.push_back(
         {arguments(PROBE_LINE_BAND, vec4(0, r(-0.1f, 0.2f), seed, r(-1.0f, 1.0f)),
-                   vec4(normalize(vec3(q.x, q.y, 0.2f * q.z)), 0), vec4(0.0f), vec4(r(0.0f, 0.5f), 0, 0, 0)),
+                   vec4(normalize(vec3(q.x, q.y, 0.2f * q.z)), 0), vec4(r(-0.05f, 0.05f), 0, 0, 0),
+                   vec4(r(0.0f, 0.5f), 0, 0, 0)),
          std::max(10 * LINE_WAVES * 4 * kUlp * 60, 64 * kTranscendental)});
     // The east vector: a normalize of exact components: kArithmetic.
     cases.push_back({arguments(PROBE_LOCAL_EAST, vec4(0.0f), vec4(q, 0)), kArithmetic});

@@ -238,6 +238,104 @@ TEST_CASE("a cyclone grows, winds up as it occludes and decays", "[fast][systems
   for (double a = 0.0; a < 1.0; a += 0.05) CHECK(cover::cyclone_wrap(a + 0.05) > cover::cyclone_wrap(a));
 }
 
+namespace {
+
+// A planet with one tropical continent: land from 0 to 60 E between 35 S and 35 N, ocean elsewhere.
+std::shared_ptr<const cover::SurfaceMask> tropical_continent() {
+  cover::SurfaceMask mask{cover::surface_bias_columns, cover::surface_bias_rows, {}, "continent"};
+  for (int j = 0; j < mask.rows; ++j)
+    for (int i = 0; i < mask.columns; ++i) {
+      const double lat = 90.0 - (j + 0.5) * 180.0 / mask.rows, lon = -180.0 + (i + 0.5) * 360.0 / mask.columns;
+      mask.land.push_back(std::abs(lat) < 35.0 && lon > 0.0 && lon < 60.0 ? 1.0f : 0.0f);
+    }
+  return std::make_shared<const cover::SurfaceMask>(mask);
+}
+
+// The monsoons' shift of the ITCZ's line at longitude `lon` (radians), radians of latitude.
+double monsoon_shift(const glsl::WeatherSystems& w, double lon) {
+  const vec3 at(std::cos(lon), std::sin(lon), 0.0f);
+  return glsl::line_waves(at, w.itcz_waves).z / std::cos(w.itcz_latitude);
+}
+
+}  // namespace
+
+TEST_CASE("over a tropical continent the ITCZ follows the sun further than over the ocean", "[fast][systems]") {
+  const double degree = M_PI / 180.0;
+  cover::CoverParameters p;
+  // Without a land mask, no monsoons at all.
+  for (int month : {0, 2, 8}) {
+    p.month = month;
+    const glsl::WeatherSystems bare = cover::weather_systems(p, 0.0);
+    CHECK(bare.itcz_waves.monsoon_mean == 0.0f);
+    CHECK(bare.itcz_waves.monsoon_reach == 0.0f);
+    for (int k = 0; k < glsl::MONSOON_WAVES; ++k) CHECK(glm::length(bare.itcz_waves.monsoon[k]) == 0.0f);
+  }
+  p.surface = tropical_continent();
+  // Over the continent's middle (30 E) the line moves to monsoon_land_deg into the summer
+  // hemisphere, to the equator in the annual mean: every sample of the land's share there is land,
+  // so the target is the whole step from the ocean's line. The waves (Lanczos-smoothed, 10 of them)
+  // keep the plateau of a continent 6700 km wide within a degree, and over the far ocean (150 W to
+  // 150 E) nothing within half a degree: the truncation does not ring there.
+  struct Season {
+    int month;
+    double land_deg;
+  };
+  for (const Season s : {Season{8, 15.0}, Season{2, -15.0}, Season{0, 0.0}}) {
+    p.month = s.month;
+    const glsl::WeatherSystems w = cover::weather_systems(p, 0.0);
+    const double ocean_deg = w.itcz_latitude / degree;
+    INFO("month " << s.month << ": the ocean's line " << ocean_deg << " deg, over the continent "
+                  << ocean_deg + monsoon_shift(w, 30.0 * degree) / degree);
+    CHECK(cover::monsoon_target(*p.surface, s.month, w.itcz_latitude, 30.0 * degree) / degree ==
+          Approx(s.land_deg - ocean_deg).margin(1e-9));
+    CHECK(std::abs(ocean_deg + monsoon_shift(w, 30.0 * degree) / degree - s.land_deg) < 1.0);
+    double largest = 0.0;
+    for (int k = 0; k < 3600; ++k) {
+      const double lon = 2.0 * M_PI * k / 3600;
+      const double shift = monsoon_shift(w, lon);
+      largest = std::max(largest, std::abs(shift));
+      const double east = std::remainder(lon / degree, 360.0);
+      if (east > 150.0 || east < -150.0) CHECK(std::abs(shift) < 0.5 * degree);
+    }
+    // The reach bounds the shift everywhere (the systems' searches rely on it).
+    CHECK(largest <= w.itcz_waves.monsoon_reach);
+    CHECK(w.itcz_waves.monsoon_reach < largest + 0.02);
+  }
+}
+
+TEST_CASE("in August the ITCZ's systems over a continent lie north of the ocean's and in February far south",
+          "[fast][systems]") {
+  // The systems' cloud's mean latitude over the continent (20-40 E) against over the ocean (150 W
+  // to 150 E), from a scan of latitudes: the line's shift there, 5 degrees north in August
+  // (15 N against 10 N) and 15 south in February (15 S against the equator), within the
+  // systems' scatter about their line (a presence 4 degrees wide, and few systems per band).
+  const double degree = M_PI / 180.0;
+  cover::CoverParameters p;
+  p.surface = tropical_continent();
+  for (const auto& [month, shift_deg] : {std::pair{8, 5.0}, std::pair{2, -15.0}}) {
+    p.month = month;
+    const glsl::WeatherSystems w = cover::weather_systems(p, 0.0);
+    const auto mean_latitude = [&](double from_deg, double to_deg) {
+      double weight = 0.0, sum = 0.0;
+      for (int i = 0; i < 40; ++i) {
+        const double lon = (from_deg + (to_deg - from_deg) * (i + 0.5) / 40) * degree;
+        for (int j = 0; j < 300; ++j) {
+          const double lat = (-30.0 + 60.0 * (j + 0.5) / 300) * degree;
+          const vec3 at(std::cos(lat) * std::cos(lon), std::cos(lat) * std::sin(lon), std::sin(lat));
+          const float cloud = itcz_here(at, float(lat), w.itcz_latitude, w.itcz_waves, w.seed, 0.0f).x;
+          weight += cloud;
+          sum += cloud * lat / degree;
+        }
+      }
+      return sum / weight;
+    };
+    const double land = mean_latitude(20.0, 40.0), ocean = mean_latitude(150.0, 210.0);
+    INFO("month " << month << ": the systems' mean latitude " << land << " over the continent, " << ocean
+                  << " over the ocean");
+    CHECK(std::abs(land - ocean - shift_deg) < 2.5);
+  }
+}
+
 TEST_CASE("the ITCZ's clusters stay in its belt and follow the season", "[fast][systems]") {
   cover::CoverParameters p;
   const glsl::WeatherSystems annual = cover::weather_systems(p, 0.0);
@@ -349,9 +447,10 @@ TEST_CASE("the ITCZ meanders by about 1.5 degrees and its systems gather in supe
     for (int k = 0; k < n; ++k) {
       const float lon = 2.0f * float(M_PI) * k / n;
       const vec3 mean(std::cos(line) * std::cos(lon), std::cos(line) * std::sin(lon), std::sin(line));
-      const vec2 sums = glsl::line_waves(mean, waves);
-      sum += glm::dvec2(sums);
-      square += glm::dvec2(sums) * glm::dvec2(sums);
+      const vec3 sums = glsl::line_waves(mean, waves);
+      const glm::dvec2 both(sums.x, sums.y);
+      sum += both;
+      square += both * both;
       const double meander = glsl::itcz_line_latitude(mean, line, waves) - line;
       meander_square += meander * meander;
       activity[k] = glsl::supercluster_activity(sums);

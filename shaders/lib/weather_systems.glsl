@@ -45,11 +45,20 @@ struct Cyclone {
 // sin m lon)) = |c| cos(m lon - arg c). `applies` 0: no waves (a line at its own latitude, every
 // place as active). Evaluated at a system's point, so that each system is present or absent
 // whole.
+// The monsoons: over land in the summer hemisphere the rain belt follows the sun further from the
+// equator than over the oceans (docs/climate.md, "The monsoons"). The host gives the line's shift
+// from its mean latitude as a function of longitude, a mean and the zonal waves of wavenumbers 1 to
+// MONSOON_WAVES (those whose powers line_waves computes on its way to its own), in sin(latitude),
+// fixed to the map (0 without a land mask or a month).
 const int LINE_WAVES = 5;
 const int LINE_FIRST_WAVENUMBER = 6;
+const int MONSOON_WAVES = LINE_FIRST_WAVENUMBER + LINE_WAVES - 1;
 struct LineWaves {
   vec2 meander[LINE_WAVES];
   vec2 envelope[LINE_WAVES];
+  vec2 monsoon[MONSOON_WAVES];  // the monsoons' shift's waves (sin(latitude)), wavenumbers 1 ..
+  float monsoon_mean;           // and its mean
+  float monsoon_reach;          // an upper bound of its size anywhere, radians of latitude (and so of sin)
   float meander_z;  // the meander's amplitude in sin(latitude) (its radians times cos(line))
   float dormant;    // the share of places filled outside the superclusters, relative to inside
   float applies;    // 1: the waves apply; 0: none (GLSL reserves "active")
@@ -68,14 +77,18 @@ LineWaves no_line_waves() {
     waves.meander[k] = vec2(0.0f);
     waves.envelope[k] = vec2(0.0f);
   }
+  for (int k = 0; k < MONSOON_WAVES; ++k) waves.monsoon[k] = vec2(0.0f);
+  waves.monsoon_mean = 0.0f;
+  waves.monsoon_reach = 0.0f;
   waves.meander_z = 0.0f;
   waves.dormant = 1.0f;
   waves.applies = 0.0f;
   return waves;
 }
 // The waves of `seed` for a line at latitude `line` at time 0: complex amplitudes with components
-// uniform in [-1/2, 1/2), normalised so that sum |c|^2 / 2 = 1. The host draws them once for a
-// cover and moves them to the frame's time (cover/weather_systems.cpp); the probes draw them here.
+// uniform in [-1/2, 1/2), normalised so that sum |c|^2 / 2 = 1, and no monsoons. The host draws
+// them once for a cover, adds the monsoons of its land mask and month and moves them to the
+// frame's time (cover/weather_systems.cpp); the probes draw them here.
 LineWaves line_waves_of(uint seed, float line) {
   LineWaves waves = no_line_waves();
   uvec3 key = noise_key(seed, ITCZ_WAVES_LAYER);
@@ -98,24 +111,29 @@ LineWaves line_waves_of(uint seed, float line) {
   return waves;
 }
 vec2 complex_product(vec2 a, vec2 b) { return vec2(a.x * b.x - a.y * b.y, a.x * b.y + a.y * b.x); }
-// The two sums at the unit direction p, (meander, envelope), each of root mean square 1 around a
-// latitude circle: e^(i m lon) from p's longitude without an arctangent, by powers of e^(i lon).
-vec2 line_waves(vec3 p, IN(LineWaves) waves) {
+// The sums at the unit direction p: the meander and the envelope, each of root mean square 1 around
+// a latitude circle, and the monsoons' shift in sin(latitude): e^(i m lon) from p's longitude
+// without an arctangent, by powers of e^(i lon), each power serving every sum of its wavenumber.
+vec3 line_waves(vec3 p, IN(LineWaves) waves) {
   vec2 turn = normalize(vec2(p.x, p.y) + vec2(1.0e-12f, 0.0f));
   vec2 power = turn;
-  for (int m = 1; m < LINE_FIRST_WAVENUMBER; ++m) power = complex_product(power, turn);
-  vec2 sums = vec2(0.0f);
+  vec3 sums = vec3(0.0f, 0.0f, waves.monsoon_mean);
+  for (int m = 1; m < LINE_FIRST_WAVENUMBER; ++m) {
+    sums.z += dot(waves.monsoon[m - 1], power);
+    power = complex_product(power, turn);
+  }
   for (int k = 0; k < LINE_WAVES; ++k) {
-    sums += vec2(dot(waves.meander[k], power), dot(waves.envelope[k], power));
+    sums += vec3(dot(waves.meander[k], power), dot(waves.envelope[k], power),
+                 dot(waves.monsoon[LINE_FIRST_WAVENUMBER - 1 + k], power));
     power = complex_product(power, turn);
   }
   return sums;
 }
-// From the sums: the meander in units of its amplitude, the line's shift in sin(latitude) and the
-// superclusters' activity in [0, 1].
-float line_meander(vec2 sums) { return clamp(sums.x, -LINE_MEANDER_LIMIT, LINE_MEANDER_LIMIT); }
-float line_shift(vec2 sums, IN(LineWaves) waves) { return waves.meander_z * line_meander(sums); }
-float supercluster_activity(vec2 sums) { return smoothstep(-0.6f, 0.0f, sums.y); }
+// From the sums: the meander in units of its amplitude, the line's shift in sin(latitude) (the
+// meander's and the monsoons') and the superclusters' activity in [0, 1].
+float line_meander(vec3 sums) { return clamp(sums.x, -LINE_MEANDER_LIMIT, LINE_MEANDER_LIMIT); }
+float line_shift(vec3 sums, IN(LineWaves) waves) { return waves.meander_z * line_meander(sums) + sums.z; }
+float supercluster_activity(vec3 sums) { return smoothstep(-0.6f, 0.0f, sums.y); }
 struct WeatherSystems {
   Cyclone cyclones[MAX_CYCLONES];
   int cyclone_count;
@@ -277,12 +295,12 @@ float convective_presence(vec3 p, vec3 presence) {
 // 1 inside the superclusters and `dormant` outside. The waves' sums are computed only where the
 // share can be above 0 and above `below`, the caller's hash (a system is present where its hash is
 // below the share; 0 there otherwise): the line shifts by at most meander_z LINE_MEANDER_LIMIT and
-// the share is at most the presence's `filled`.
+// the share is at most the presence's `filled` (and the monsoons shift it by at most their reach).
 float waved_presence(vec3 p, vec3 presence, IN(LineWaves) waves, float below) {
   if (waves.applies == 0.0f) return convective_presence(p, presence);
-  float reach = 2.0f * presence.y + waves.meander_z * LINE_MEANDER_LIMIT;
+  float reach = 2.0f * presence.y + waves.meander_z * LINE_MEANDER_LIMIT + waves.monsoon_reach;
   if (below >= presence.z || abs(p.z - presence.x) >= reach) return 0.0f;
-  vec2 sums = line_waves(p, waves);
+  vec3 sums = line_waves(p, waves);
   float filled = mix(waves.dormant, 1.0f, supercluster_activity(sums));
   return filled * convective_presence(p - vec3(0.0f, 0.0f, line_shift(sums, waves)), presence);
 }
@@ -366,8 +384,9 @@ float convective_cloud(float d, float edge, float reach) { return rimmed_cloud(d
 // (convective_presence, a width of 4 degrees); and single towers and small clusters 55-145 km
 // across on a lattice three times finer, in one place in two on the line and fewer over a width of
 // 6 degrees (scattered convection over the warm pool), with anvils of five times their area
-// (TOWER_ANVIL). The mesoscale systems follow the line's meander and fill ITCZ_DORMANT as many
-// places outside the superclusters (LineWaves); the towers stay about the mean line. Both draw their radii from equal_area_radius, so that together they
+// (TOWER_ANVIL). Both follow the line's meander and the monsoons; the mesoscale systems fill
+// ITCZ_DORMANT as many places outside the superclusters (LineWaves), while the towers are as
+// common outside them as inside (scattered convection away from the systems). Both draw their radii from equal_area_radius, so that together they
 // cover about equal areas per interval of size from 50 to 900 km; half of the very cold cloudiness
 // lies in clusters over 20 000 km^2 (160 km across; Mapes and Houze 1993, "Cloud clusters and
 // superclusters over the oceanic warm pool", Mon. Wea. Rev. 121).
@@ -395,11 +414,11 @@ const float ITCZ_LINE_DEPTH = 0.5f;
 // meanders by at most LINE_MEANDER_LIMIT x ITCZ_MEANDER = 0.065; a system's point lies within
 // 2 x 0.07 of it and its anvil reaches 1.0 / 8 cells further, and the warp moves the point drawn by
 // at most 0.008 sqrt(2) PERLIN_BOUND = 0.012 (convective_warp): 0.065 + 0.14 + 0.125 + 0.012 =
-// 0.342. The towers, scattered over the warm pool, follow the mean line (their presence has no
-// waves): a tower's point lies within 2 x 0.1 of it and its anvil 0.98 / 24 further: 0.253 with
-// the warp, and their search is left out beyond ITCZ_TOWER_REACH.
+// 0.342. A tower's point lies within 2 x 0.1 of the meandering line and its anvil 0.98 / 24
+// further: 0.318 with the warp, and their search is left out beyond ITCZ_TOWER_REACH. The monsoons
+// move the line further by at most their reach (LineWaves' monsoon_reach), which both add.
 const float ITCZ_REACH = 0.35f;
-const float ITCZ_TOWER_REACH = 0.26f;
+const float ITCZ_TOWER_REACH = 0.32f;
 
 // The systems' outlines are irregular below their own scale too (a tower's dome, the lobes of a
 // cluster's cells), which the cover's noise, whose large scales carry most of its variance, leaves
@@ -426,12 +445,20 @@ vec3 convective_warp(vec3 p, uint seed, int components) {
 // The latitude (radians) of the ITCZ's meandering line at the unit direction p, for a mean line at
 // `itcz_latitude` and its `waves`.
 float itcz_line_latitude(vec3 p, float itcz_latitude, IN(LineWaves) waves) {
-  return itcz_latitude + ITCZ_MEANDER * line_meander(line_waves(p, waves));
+  vec3 sums = line_waves(p, waves);
+  return itcz_latitude + ITCZ_MEANDER * line_meander(sums) + sums.z / cos(itcz_latitude);
+}
+
+// The towers' waves: the line's meander and monsoons without its superclusters (an envelope of 0
+// is active everywhere: supercluster_activity(0) = 1).
+LineWaves without_superclusters(LineWaves waves) {
+  for (int k = 0; k < LINE_WAVES; ++k) waves.envelope[k] = vec2(0.0f);
+  return waves;
 }
 
 // The superclusters' band at the unit direction `now` (itcz_systems), in [0, 1].
 float itcz_line_band(vec3 now, float itcz_latitude, IN(LineWaves) waves, float edge) {
-  vec2 sums = line_waves(now, waves);
+  vec3 sums = line_waves(now, waves);
   float offset = (now.z - sin(itcz_latitude) - line_shift(sums, waves)) / cos(itcz_latitude);
   return supercluster_activity(sums) * band_profile(offset + 0.5f * ITCZ_LINE_WIDTH * edge, ITCZ_LINE_WIDTH);
 }
@@ -443,16 +470,17 @@ float itcz_line_band(vec3 now, float itcz_latitude, IN(LineWaves) waves, float e
 // ITCZ is where the trades converge, which the flow's air passes through rather than carries along
 // (and the moving flow's two layers share it, so the caller computes it once).
 vec2 itcz_systems(vec3 p, float band, float latitude, float itcz_latitude, IN(LineWaves) waves, uint seed, float edge) {
-  bool near = abs(latitude - itcz_latitude) < ITCZ_REACH;
+  float off_line = abs(latitude - itcz_latitude) - waves.monsoon_reach;
+  bool near = off_line < ITCZ_REACH;
   int searched = SKIPPABLE(near, NEIGHBOUR_CELLS);
-  int towers_searched = SKIPPABLE(abs(latitude - itcz_latitude) < ITCZ_TOWER_REACH, NEIGHBOUR_CELLS);
+  int towers_searched = SKIPPABLE(off_line < ITCZ_TOWER_REACH, NEIGHBOUR_CELLS);
   p = convective_warp(p, seed, SKIPPABLE(near, 2));
   vec2 systems = convective_distances(p, ITCZ_CELLS, seed, ITCZ_LAYER, ITCZ_RADII,
                                       convective_presence_of(itcz_latitude, 0.07f, ITCZ_FILLED), waves, SYSTEM_ANVIL,
                                       searched);
   vec2 towers = convective_distances(p, ITCZ_TOWER_CELLS, seed, ITCZ_TOWER_LAYER, ITCZ_TOWER_RADII,
                                      convective_presence_of(itcz_latitude, ITCZ_TOWER_WIDTH, ITCZ_TOWER_FILLED),
-                                     no_line_waves(), TOWER_ANVIL, towers_searched);
+                                     without_superclusters(waves), TOWER_ANVIL, towers_searched);
   if (!near) return vec2(ITCZ_LINE_DEPTH * band, band);
   return vec2(max(convective_cloud(min(systems.x, towers.x), edge, CORE_EDGE_REACH), ITCZ_LINE_DEPTH * band),
               max(convective_cloud(min(systems.y, towers.y), edge, ANVIL_EDGE_REACH), band));

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <vector>
 
 #include "cover/latitude_profile.hpp"
 #include "cover/moving_flow.hpp"
@@ -119,6 +120,47 @@ glsl::LineWaves moved_line_waves(glsl::LineWaves waves, double hours, double loo
   return waves;
 }
 
+double monsoon_target(const SurfaceMask& mask, int month, double line, double lon) {
+  const double season = month == 0 ? 0.0 : std::cos(2.0 * M_PI * (month - 8) / 12.0);
+  const double land_lat = monsoon_land_deg * season;
+  double land = 0.0;
+  int samples = 0;
+  for (int i = -10; i <= 10; ++i)
+    for (int j = -5; j <= 5; ++j, ++samples) land += land_at(mask, land_lat + i, lon / degree + 2.0 * j);
+  return land / samples * (land_lat * degree - line);
+}
+
+glsl::LineWaves with_monsoons(glsl::LineWaves waves, const SurfaceMask& mask, int month, double line) {
+  constexpr int n = 360;
+  std::vector<double> target(n);
+  for (int j = 0; j < n; ++j) target[j] = monsoon_target(mask, month, line, 2.0 * M_PI * j / n);
+  // Fourier coefficients: a term dot(c, (cos m lon, sin m lon)) with c = (2 / n) sum f e^(i m lon)
+  // (conjugated into the dot), times Lanczos' sigma sinc(m / (M + 1)).
+  const double z = std::cos(line);
+  double mean = 0.0;
+  for (double f : target) mean += f / n;
+  waves.monsoon_mean = static_cast<float>(z * mean);
+  for (int m = 1; m <= glsl::MONSOON_WAVES; ++m) {
+    double c = 0.0, s = 0.0;
+    for (int j = 0; j < n; ++j) {
+      c += 2.0 / n * target[j] * std::cos(2.0 * M_PI * m * j / n);
+      s += 2.0 / n * target[j] * std::sin(2.0 * M_PI * m * j / n);
+    }
+    const double x = M_PI * m / (glsl::MONSOON_WAVES + 1), sigma = std::sin(x) / x;
+    waves.monsoon[m - 1] = glsl::vec2(static_cast<float>(z * sigma * c), static_cast<float>(z * sigma * s));
+  }
+  // The reach: the sum's largest size over a fine circle, in radians, with a margin for the
+  // float sums and the points between.
+  double reach = 0.0;
+  for (int j = 0; j < 4 * n; ++j) {
+    const double lon = 2.0 * M_PI * j / (4 * n);
+    const glsl::vec3 p(static_cast<float>(std::cos(lon)), static_cast<float>(std::sin(lon)), 0.0f);
+    reach = std::max(reach, std::abs(static_cast<double>(glsl::line_waves(p, waves).z)) / z);
+  }
+  waves.monsoon_reach = static_cast<float>(reach + 0.01);
+  return waves;
+}
+
 glsl::WeatherSystems weather_systems(const CoverParameters& p, double hours) {
   glsl::WeatherSystems w{};
   const std::uint32_t seed = layer_seed(p.seed, NoiseLayer::weather_systems);
@@ -133,6 +175,7 @@ glsl::WeatherSystems weather_systems(const CoverParameters& p, double hours) {
   // seasonal shift there.
   w.itcz_latitude = static_cast<float>((5.0 + seasonal_shift_deg(5.0, p.month)) * degree);
   w.itcz_waves = moved_line_waves(glsl::line_waves_of(seed, w.itcz_latitude), hours, p.loop_hours);
+  if (p.surface) w.itcz_waves = with_monsoons(w.itcz_waves, *p.surface, p.month, w.itcz_latitude);
   if (p.cyclones <= 0) return w;
   const double lifetime = cyclone_lifetime_hours;
   double spacing = lifetime / p.cyclones;

@@ -31,6 +31,20 @@ constexpr double supercluster_speed_m_s = 12.0;
 // to its speed's (none in a loop shorter than half its period), so the cover repeats after it.
 glsl::LineWaves moved_line_waves(glsl::LineWaves waves, double hours, double loop_hours);
 
+// The monsoons (docs/climate.md, "The monsoons"): over land the tropical rain belt follows the
+// sun further than over the oceans, to about monsoon_land_deg into the summer hemisphere in the
+// months of its extreme (August north, February south, as the profile's seasonal shift), and near
+// the equator in the annual mean (--month 0). The ITCZ's line over longitude `lon` moves from the
+// oceans' `line` (radians) towards that latitude by the land's share within 10 degrees of it and
+// 10 degrees of longitude (about 1100 km) either side. The shift, in radians of latitude, as a
+// function of longitude (radians).
+constexpr double monsoon_land_deg = 15.0;
+double monsoon_target(const SurfaceMask& mask, int month, double line, double lon);
+// The waves `waves` with their monsoons: that target's mean and its zonal waves 1 to
+// MONSOON_WAVES (Lanczos-smoothed, so that the truncation does not ring over the oceans) in
+// sin(latitude) at the line, and monsoon_reach a bound of their sum's size in radians.
+glsl::LineWaves with_monsoons(glsl::LineWaves waves, const SurfaceMask& mask, int month, double line);
+
 // One cyclone's state at `age_fraction` = age / lifetime in [0, 1): its strength (grows in the
 // first fifth, decays in the last third) and how far its head winds (half a turn as a wave, three
 // quarters of a turn more as it occludes).

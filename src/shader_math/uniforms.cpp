@@ -58,6 +58,10 @@ void set_uniform(const gpu::ComputeProgram& program, const std::string& name, co
     program.set(waves + "meander[" + std::to_string(k) + "]", systems.itcz_waves.meander[k]);
     program.set(waves + "envelope[" + std::to_string(k) + "]", systems.itcz_waves.envelope[k]);
   }
+  for (int k = 0; k < glsl::MONSOON_WAVES; ++k)
+    program.set(waves + "monsoon[" + std::to_string(k) + "]", systems.itcz_waves.monsoon[k]);
+  program.set(waves + "monsoon_mean", systems.itcz_waves.monsoon_mean);
+  program.set(waves + "monsoon_reach", systems.itcz_waves.monsoon_reach);
   program.set(waves + "meander_z", systems.itcz_waves.meander_z);
   program.set(waves + "dormant", systems.itcz_waves.dormant);
   program.set(waves + "applies", systems.itcz_waves.applies);

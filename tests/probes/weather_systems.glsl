@@ -33,9 +33,8 @@ const int PROBE_CONVECTIVE_DISTANCES = 20;  // convective_distances(p, a, uint(b
                                             // band x[3].w, lat, c, its waves, uint(b), x[3].x) in zw; no cells
                                             // searched where x[3].z > 1/2
 const int PROBE_CONVECTIVE_WARP = 21;        // convective_warp(p, uint(b), 2)
-const int PROBE_LINE_WAVES = 22;             // line_waves(p, line_waves_of(uint(b), a)),
-                                             // waved_presence(p, convective_presence_of(a, c, 1), those waves, 0),
-                                             // itcz_line_latitude(p, a, those waves)
+const int PROBE_LINE_WAVES = 22;             // line_waves(p, probe_monsoon_waves(uint(b), a, x[2].x)),
+                                             // waved_presence(p, convective_presence_of(a, c, 1), those waves, 0)
 const int PROBE_LOCAL_EAST = 23;             // local_east(p)
 const int PROBE_FRAYED_DECK = 24;            // frayed_deck(a, b), deck_presence of it, deck_organisation(a)
 const int PROBE_CELLS_HIDDEN = 25;           // cells_hidden(cloud_types(a, x[1]))
@@ -48,17 +47,32 @@ const int PROBE_TANGENT_WARP = 29;           // tangent_warp(p, a, c, uint(b), F
                                              // trade_cumulus_belt(latitude) in w
 const int PROBE_BELT_REGIMES = 31;           // belt_regimes(p, latitude, systems (trade cumulus x[3].z), uint(b))
 const int PROBE_STORM_TRACK = 32;            // storm_track_cold_air(p, latitude, x[3].xyz, a, c)
-const int PROBE_LINE_PARTS = 33;             // complex_product(x[3].xy, x[3].zw), line_meander(vec2(a, c)),
-                                             // line_shift(vec2(a, c), line_waves_of(uint(b), 0.1))
-const int PROBE_LINE_BAND = 34;              // itcz_line_band(p, a, line_waves_of(uint(b), a), c),
-                                             // supercluster_activity(vec2(0, c)), system_growth(x[3].x,
+const int PROBE_LINE_PARTS = 33;             // complex_product(x[3].xy, x[3].zw), line_meander(vec3(a, c, 0)),
+                                             // line_shift(vec3(a, c, x[2].x), line_waves_of(uint(b), 0.1))
+const int PROBE_LINE_BAND = 34;              // itcz_line_band(p, a, probe_monsoon_waves(uint(b), a, x[2].x), c),
+                                             // supercluster_activity(vec3(0, c, 0)), system_growth(x[3].x,
                                              // no_line_waves()), system_growth(x[3].x, those waves)
+const int PROBE_LINE_LATITUDE = 35;          // itcz_line_latitude(p, a, probe_monsoon_waves(uint(b), a, x[2].x)),
+                                             // line_waves(p, without_superclusters(those waves)).y
 const int PROBE_TRADE_CLUMP = 30;            // trade_clump(p, a, uint(b), FLOWERS_LAYER, (0.2, 0.45), c, x[3].y (the
                                              // rim), x[3].x, all cells), rimmed_cloud(x[3].z, x[3].x, 0.3, x[3].y),
                                              // presence_everywhere(c)'s y and z
 #ifndef __cplusplus
 #include "../lib/weather_systems.glsl"
 #endif
+// The line's waves of `seed` at `line` with test monsoons of `size`: wavenumber m's amplitude
+// size (cos m, sin m) / m, the mean size / 2, the reach the sum of their sizes.
+LineWaves probe_monsoon_waves(uint seed, float line, float size) {
+  LineWaves waves = line_waves_of(seed, line);
+  float reach = 0.5f * abs(size);
+  for (int m = 1; m <= MONSOON_WAVES; ++m) {
+    waves.monsoon[m - 1] = size * vec2(cos(float(m)), sin(float(m))) / float(m);
+    reach += abs(size) / float(m);
+  }
+  waves.monsoon_mean = 0.5f * size;
+  waves.monsoon_reach = reach;
+  return waves;
+}
 // A cyclone at x[2]'s direction with x east and y north (a northern one; the host mirrors the
 // southern ones, tests/test_weather_systems.cpp).
 Cyclone probe_cyclone(mat4 x) {
@@ -108,17 +122,20 @@ vec4 probe_weather_systems(mat4 x) {
                 itcz_systems(p, x[3].w, latitude, x[0].w, line_waves_of(seed, x[0].w), seed, x[3].x));
   if (f == PROBE_CONVECTIVE_WARP) return vec4(convective_warp(p, seed, 2), 0.0f);
   if (f == PROBE_LINE_PARTS)
-    return vec4(complex_product(vec2(x[3].x, x[3].y), vec2(x[3].z, x[3].w)), line_meander(vec2(x[0].y, x[0].w)),
-                line_shift(vec2(x[0].y, x[0].w), line_waves_of(seed, 0.1f)));
+    return vec4(complex_product(vec2(x[3].x, x[3].y), vec2(x[3].z, x[3].w)), line_meander(vec3(x[0].y, x[0].w, 0.0f)),
+                line_shift(vec3(x[0].y, x[0].w, x[2].x), line_waves_of(seed, 0.1f)));
   if (f == PROBE_LINE_BAND) {
-    LineWaves waves = line_waves_of(seed, x[0].y);
-    return vec4(itcz_line_band(p, x[0].y, waves, x[0].w), supercluster_activity(vec2(0.0f, x[0].w)),
+    LineWaves waves = probe_monsoon_waves(seed, x[0].y, x[2].x);
+    return vec4(itcz_line_band(p, x[0].y, waves, x[0].w), supercluster_activity(vec3(0.0f, x[0].w, 0.0f)),
                 system_growth(x[3].x, no_line_waves()), system_growth(x[3].x, waves));
   }
   if (f == PROBE_LINE_WAVES) {
-    LineWaves waves = line_waves_of(seed, x[0].y);
-    return vec4(line_waves(p, waves), waved_presence(p, convective_presence_of(x[0].y, x[0].w, 1.0f), waves, 0.0f),
-                itcz_line_latitude(p, x[0].y, waves));
+    LineWaves waves = probe_monsoon_waves(seed, x[0].y, x[2].x);
+    return vec4(line_waves(p, waves), waved_presence(p, convective_presence_of(x[0].y, x[0].w, 1.0f), waves, 0.0f));
+  }
+  if (f == PROBE_LINE_LATITUDE) {
+    LineWaves waves = probe_monsoon_waves(seed, x[0].y, x[2].x);
+    return vec4(itcz_line_latitude(p, x[0].y, waves), line_waves(p, without_superclusters(waves)).y, 0.0f, 0.0f);
   }
   if (f == PROBE_LOCAL_EAST) return vec4(local_east(p), 0.0f);
   if (f == PROBE_CELLS_HIDDEN) return vec4(cells_hidden(cloud_types(x[0].y, x[1])), 0.0f, 0.0f, 0.0f);
