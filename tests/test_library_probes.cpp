@@ -601,18 +601,17 @@ TEST_CASE("weather_systems.glsl on the GPU agrees with the CPU", "[probe]") {
                                vec4(normalize(vec3(q.x, q.y, 0.4f * q.z)), 0), vec4(r(-0.05f, 0.05f), 0, 0, 0)),
                      std::max(10 * LINE_WAVES * 4 * kUlp, 16 * kTranscendental)});
     // A complex product and a clamp: a rounding or two; the shift a product with the line's cosine.
-    cases.push_back({arguments(PROBE_LINE_PARTS, vec4(0, r(-3.0f, 3.0f), seed, r(-1.0f, 1.0f)), vec4(q, 0),
-                               vec4(r(-0.3f, 0.3f), 0, 0, 0),
-                               vec4(r(-1.0f, 1.0f), r(-1.0f, 1.0f), r(-1.0f, 1.0f), r(-1.0f, 1.0f))),
-                     4 * kTranscendental});
+    cases.push_back(
+        {arguments(PROBE_LINE_PARTS, vec4(0, r(-3.0f, 3.0f), seed, r(-1.0f, 1.0f)), vec4(q, 0),
+                   vec4(r(-0.3f, 0.3f), 0, 0, 0), vec4(r(-1.0f, 1.0f), r(-1.0f, 1.0f), r(-1.0f, 1.0f), r(-1.0f, 1.0f))),
+         4 * kTranscendental});
     // The band: the sums' error (above) through the offset's 1 / width = 23 per unit of sine and the
     // profile's slope of 2.5 per width, and the line's sine and cosine: as the presence's. The
     // growth a division and a min.
-    cases.push_back(
-        {arguments(PROBE_LINE_BAND, vec4(0, r(-0.1f, 0.2f), seed, r(-1.0f, 1.0f)),
-                   vec4(normalize(vec3(q.x, q.y, 0.2f * q.z)), 0), vec4(r(-0.05f, 0.05f), 0, 0, 0),
-                   vec4(r(0.0f, 0.5f), 0, 0, 0)),
-         std::max(10 * LINE_WAVES * 4 * kUlp * 60, 64 * kTranscendental)});
+    cases.push_back({arguments(PROBE_LINE_BAND, vec4(0, r(-0.1f, 0.2f), seed, r(-1.0f, 1.0f)),
+                               vec4(normalize(vec3(q.x, q.y, 0.2f * q.z)), 0), vec4(r(-0.05f, 0.05f), 0, 0, 0),
+                               vec4(r(0.0f, 0.5f), 0, 0, 0)),
+                     std::max(10 * LINE_WAVES * 4 * kUlp * 60, 64 * kTranscendental)});
     // The east vector: a normalize of exact components: kArithmetic.
     cases.push_back({arguments(PROBE_LOCAL_EAST, vec4(0.0f), vec4(q, 0)), kArithmetic});
     // A product and a clamp: a few roundings, through the presence's smoothstep (slope 7.5).
