@@ -91,10 +91,15 @@ double profile_fraction(const LatitudeProfile& profile, double latitude_deg) {
          (t3 - t2) * h * m[i + 1];
 }
 
-double seasonal_shift_deg(double latitude_deg, int month) {
+double seasonal_phase(int month) {
   if (month == 0) return 0.0;
   // Northernmost in August, southernmost in February (mid-month phases; docs/climate.md).
-  const double season = std::cos(2.0 * M_PI * (month - 8) / 12.0);
+  return std::cos(2.0 * M_PI * (month - 8) / 12.0);
+}
+
+double seasonal_shift_deg(double latitude_deg, int month) {
+  if (month == 0) return 0.0;
+  const double season = seasonal_phase(month);
   const double itcz = 5.0, storm_tracks = 3.0;  // amplitudes in degrees (docs/climate.md)
   const double tropical = std::exp(-(latitude_deg / 20.0) * (latitude_deg / 20.0));
   const double amplitude = storm_tracks + (itcz - storm_tracks) * tropical;

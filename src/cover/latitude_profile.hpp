@@ -31,6 +31,10 @@ LatitudeProfile table_profile(std::string name, std::vector<double> latitude_deg
 // [0, 1]); constant beyond the end knots.
 double profile_fraction(const LatitudeProfile& profile, double latitude_deg);
 
+// The season's phase in a month (1 = January .. 12; 0 = the annual mean): cos(2 pi (m - 8) / 12),
+// 1 in August and -1 in February, and 0 for the annual mean; the profile's shift and the ITCZ's
+// monsoons (cover/weather_systems.hpp) follow it.
+double seasonal_phase(int month);
 // The seasonal shift (degrees, northward > 0) of the profile's features at a latitude in a
 // month (1 = January .. 12; 0 = the annual mean, no shift): the ITCZ by up to 5 degrees, the
 // storm tracks by up to 3, northernmost in August, tapered to 0 at the poles.

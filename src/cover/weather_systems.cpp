@@ -121,8 +121,7 @@ glsl::LineWaves moved_line_waves(glsl::LineWaves waves, double hours, double loo
 }
 
 double monsoon_target(const SurfaceMask& mask, int month, double line, double lon) {
-  const double season = month == 0 ? 0.0 : std::cos(2.0 * M_PI * (month - 8) / 12.0);
-  const double land_lat = monsoon_land_deg * season;
+  const double land_lat = monsoon_land_deg * seasonal_phase(month);
   double land = 0.0;
   int samples = 0;
   for (int i = -10; i <= 10; ++i)
