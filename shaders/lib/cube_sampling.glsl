@@ -26,10 +26,6 @@ vec4 cube_texel_extended(int face, int i, int j, CubeImage source) {
   return imageLoad(source, ivec3(oi, oj, other));
 }
 
-// The four taps are loaded directly where they lie inside the face; only where one lies beyond an
-// edge (within half a texel of it: under 2 / size of the texels) are they looked up across it, in a
-// loop of one pass there and none elsewhere (SKIPPABLE), so that on a SIMD CPU driver a group of
-// lanes away from the edges skips the face changes. The same four values either way.
 vec4 sample_cube_bilinear(vec3 direction, CubeImage source) {
   int size = imageSize(source).x;
   int face = cube_face_of(direction);
@@ -42,19 +38,10 @@ vec4 sample_cube_bilinear(vec3 direction, CubeImage source) {
   float fv = v - v0;
   int i = int(u0);
   int j = int(v0);
-  bool inside = i >= 0 && j >= 0 && i + 1 < size && j + 1 < size;
-  ivec2 lo = clamp(ivec2(i, j), ivec2(0), ivec2(size - 1));
-  ivec2 hi = clamp(ivec2(i + 1, j + 1), ivec2(0), ivec2(size - 1));
-  vec4 a = imageLoad(source, ivec3(lo.x, lo.y, face));
-  vec4 b = imageLoad(source, ivec3(hi.x, lo.y, face));
-  vec4 c = imageLoad(source, ivec3(lo.x, hi.y, face));
-  vec4 d = imageLoad(source, ivec3(hi.x, hi.y, face));
-  for (int k = 0; k < SKIPPABLE(!inside, 1); ++k) {
-    a = cube_texel_extended(face, i, j, source);
-    b = cube_texel_extended(face, i + 1, j, source);
-    c = cube_texel_extended(face, i, j + 1, source);
-    d = cube_texel_extended(face, i + 1, j + 1, source);
-  }
+  vec4 a = cube_texel_extended(face, i, j, source);
+  vec4 b = cube_texel_extended(face, i + 1, j, source);
+  vec4 c = cube_texel_extended(face, i, j + 1, source);
+  vec4 d = cube_texel_extended(face, i + 1, j + 1, source);
   return mix(mix(a, b, fu), mix(c, d, fu), fv);
 }
 
