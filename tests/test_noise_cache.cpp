@@ -19,6 +19,9 @@
 #include "cli_support.hpp"
 #include "core/hash.hpp"
 #include "files/float_cache.hpp"
+#include "cover/cover_parameters.hpp"
+#include "cover/surface_bias.hpp"
+#include "io/cover_cache.hpp"
 #include "io/noise_cache.hpp"
 
 namespace fs = std::filesystem;
@@ -91,7 +94,8 @@ std::string mesa_cache_where_it_was() {
 
 }  // namespace
 
-TEST_CASE("render reuses the cached noise volume with the same image, and --no-cache leaves no cache", "[cache][cli]") {
+TEST_CASE("render reuses the cached noise volume and global cover with the same image, and --no-cache leaves no cache",
+          "[cache][cli]") {
   TemporaryDirectory cache_home(true), out(true), unused_home(true);
   const std::string arguments =
       " render --view gurten --time 2026-06-21T08:00Z --size 32x18 --view-steps 6 --light-steps 2 --terrain flat "
@@ -105,10 +109,13 @@ TEST_CASE("render reuses the cached noise volume with the same image, and --no-c
   INFO(first.output);
   REQUIRE(first.exit_code == 0);
   CHECK(first.output.find("noise volume: made and cached") != std::string::npos);
+  // The global cover that stands in for the weather is cached as well (io/cover_cache.hpp).
+  CHECK(first.output.find("global cover: made and cached") != std::string::npos);
   const Run second = render(cache_home.path, "second.png");
   INFO(second.output);
   REQUIRE(second.exit_code == 0);
   CHECK(second.output.find("noise volume: from the cache") != std::string::npos);
+  CHECK(second.output.find("global cover: from the cache") != std::string::npos);
   const Run uncached = render(unused_home.path, "uncached.png", " --no-cache");
   REQUIRE(uncached.exit_code == 0);
   // (Mesa keeps its own shader cache there; nephele's directory must not appear.)
@@ -141,12 +148,15 @@ void write_bytes(const fs::path& file, std::uintmax_t size) {
   std::ofstream(file, std::ios::binary) << std::string(size, 'x');
 }
 
-// The only file named cache-*.bin in `directory` (empty when there is none or several).
-fs::path the_entry(const fs::path& directory) {
+// The only file named cache-*.bin in `directory` whose key begins with `kind` (the layout in
+// files/float_cache.hpp: 8 bytes of magic, 8 of the key's length, the key); empty when there is
+// none or several.
+fs::path the_entry(const fs::path& directory, const std::string& kind) {
   fs::path found;
   int n = 0;
   for (const auto& item : fs::directory_iterator(directory))
-    if (item.path().filename().string().rfind("cache-", 0) == 0) {
+    if (item.path().filename().string().rfind("cache-", 0) == 0 &&
+        read_file(item.path()).compare(16, kind.size(), kind) == 0) {
       found = item.path();
       ++n;
     }
@@ -359,7 +369,8 @@ TEST_CASE("render rebuilds a cached noise volume whose bytes were altered, and i
   const Run first = render_with_cache(cache_home.path, out.path / "first.png");
   INFO(first.output);
   REQUIRE(first.exit_code == 0);
-  const fs::path entry = the_entry(cache_home.path / "nephele");
+  // (The render's global cover has an entry of its own beside the noise volume's.)
+  const fs::path entry = the_entry(cache_home.path / "nephele", "noise_volume");
   REQUIRE_FALSE(entry.empty());
   const std::string good = read_file(entry);
   {
@@ -385,4 +396,43 @@ TEST_CASE("render rebuilds a cached noise volume whose bytes were altered, and i
     CHECK(read_file(entry) == good);
     CHECK(read_file(out.path / "first.png") == read_file(out.path / "third.png"));
   }
+}
+
+TEST_CASE("a cover's cache key changes with its parameters, its mask's values and the program, not with names alone",
+          "[fast][cache]") {
+  // The program's own file is readable here, so the key carries its fingerprint.
+  const std::string program = files::program_fingerprint();
+  REQUIRE(program.size() == 16);
+  cover::CoverParameters p;
+  p.size = 32;
+  const std::string key = io::cover_cache_key(p);
+  CHECK(key == io::cover_cache_key(p));
+  CHECK(key.find("program " + program) != std::string::npos);
+  cover::CoverParameters other_seed = p;
+  other_seed.seed = p.seed + 1;
+  CHECK(io::cover_cache_key(other_seed) != key);
+  cover::CoverParameters other_time = p;
+  other_time.time = "2026-01-01T00:00:00Z";
+  CHECK(io::cover_cache_key(other_time) != key);
+  cover::CoverParameters other_size = p;
+  other_size.size = 64;
+  CHECK(io::cover_cache_key(other_size) != key);
+  // Two masks of one name and size but other values: other covers, other keys.
+  auto mask = std::make_shared<cover::SurfaceMask>();
+  mask->columns = 4;
+  mask->rows = 2;
+  mask->land = std::vector<float>(8, 0.0f);
+  mask->source = "a mask";
+  cover::CoverParameters with_mask = p;
+  with_mask.surface = mask;
+  auto changed = std::make_shared<cover::SurfaceMask>(*mask);
+  changed->land[3] = 1.0f;
+  cover::CoverParameters with_changed = p;
+  with_changed.surface = changed;
+  CHECK(io::cover_cache_key(with_mask) != key);
+  CHECK(io::cover_cache_key(with_changed) != io::cover_cache_key(with_mask));
+  // A profile of one name with other fractions.
+  cover::CoverParameters other_profile = p;
+  other_profile.profile.fraction.back() += 0.01;
+  CHECK(io::cover_cache_key(other_profile) != key);
 }

@@ -246,7 +246,7 @@ TEST_CASE("the viewer's orbit view takes a coast window from GSHHG in low orbit,
   state.camera.height_m = 400e3, state.camera.pitch_deg = -90, state.camera.fov_deg = 60;
   const int width = 160, height = 90;  // nearest pixels 2.9 km: finer than a quarter of 37 km
   // From 12000 km first: the water map alone.
-  viewer::OrbitSource source("");
+  viewer::OrbitSource source("", "");  // a generated cover, no disk cache
   state.camera.height_m = 12000e3;
   source.render(state, width, height);
   CHECK_FALSE(source.coast_window());

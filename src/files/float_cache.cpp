@@ -69,6 +69,21 @@ bool stale_temporary(const std::string& name, const struct stat& status) {
 
 }  // namespace
 
+const std::string& program_fingerprint() {
+  static const std::string fingerprint = [] {
+    Descriptor fd(::open("/proc/self/exe", O_RDONLY | O_CLOEXEC));
+    struct stat status {};
+    if (fd.get() < 0 || ::fstat(fd.get(), &status) != 0 || !S_ISREG(status.st_mode)) return std::string();
+    std::vector<unsigned char> bytes(static_cast<std::size_t>(status.st_size));
+    if (!core::read_exactly(fd.get(), bytes.data(), bytes.size())) return std::string();
+    char text[17];
+    std::snprintf(text, sizeof text, "%016llx",
+                  static_cast<unsigned long long>(core::block_hash(bytes.data(), bytes.size())));
+    return std::string(text);
+  }();
+  return fingerprint;
+}
+
 fs::path default_cache_directory() {
   if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg && fs::path(xdg).is_absolute())
     return fs::path(xdg) / "nephele";

@@ -25,6 +25,12 @@ namespace nephele::files {
 // Directory Specification's default); empty when neither variable is set.
 std::filesystem::path default_cache_directory();
 
+// A fingerprint of the running program's code: core::block_hash of its executable's bytes
+// (/proc/self/exe) as 16 hex digits, read once; empty where the file cannot be read. Entries whose
+// values the program computes (not only reads) key on it, so that a new build never serves an old
+// build's results.
+const std::string& program_fingerprint();
+
 // Bytes the cache keeps at most by default: 256 MiB (the default 64^3 noise volume, four
 // float channels, is 4 MiB; a 256^3 one 256 MiB, which the trim keeps alone).
 constexpr std::uintmax_t default_cache_cap_bytes = std::uintmax_t(256) << 20;

@@ -150,7 +150,7 @@ TEST_CASE("between 12 and 20 km the view cross-fades from the ground renderer to
   viewer::set_value(state, params::cover::coverage, "0.3");
   viewer::ViewSwitch view("", "");
   viewer::GroundSource ground("", "");
-  viewer::OrbitSource orbit("");
+  viewer::OrbitSource orbit("", "");
   auto mean_luminance = [](const core::ImageData& image) {
     double sum = 0;
     for (std::size_t k = 0; k + 3 < image.pixels.size(); k += 4)

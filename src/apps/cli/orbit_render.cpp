@@ -18,6 +18,8 @@
 #include "gpu/egl_context.hpp"
 #include "gpu/pass_timer.hpp"
 #include "files/atomic_output.hpp"
+#include "files/float_cache.hpp"
+#include "io/cover_cache.hpp"
 #include "io/elevation_files.hpp"
 #include "io/planet_textures.hpp"
 #include "io/render_files.hpp"
@@ -148,6 +150,7 @@ int run_orbit_render(const OrbitOptions& orbit) {
   core::Progress progress("render", 3, core::Progress::for_stderr(orbit.quiet));
   std::vector<std::pair<std::string, double>> timings;
   std::string cover_source = orbit.cover;
+  std::string cover_note;  // from the cache or made
   if (!cover) {
     progress.update(0, "global cover");
     std::string warning;
@@ -156,11 +159,11 @@ int run_orbit_render(const OrbitOptions& orbit) {
                                       io::surface_from_option(orbit.surface, &warning));
     if (!warning.empty()) std::cerr << "warning: " << warning << "\n";
     timings.emplace_back("global cover", gpu::time_pass([&] {
-                           cover::GlobalCover generated(parameters);
-                           generated.run();
-                           cover = render::CoverCube{parameters.size, generated.cover_field().read(),
-                                                     generated.optical_thickness_field().read(),
-                                                     generated.cloud_top_field().read()};
+                           render::GlobalCoverFaces faces = io::cached_global_cover(
+                               parameters, orbit.no_cache ? std::filesystem::path() : files::default_cache_directory(),
+                               &cover_note);
+                           cover = render::CoverCube{faces.size, std::move(faces.texels),
+                                                     std::move(faces.optical_thickness), std::move(faces.cloud_top)};
                          }));
     cover_source = "generated (seed " + std::to_string(orbit.seed) + ", " + std::to_string(parameters.size) +
                    " texels per face, flow " + orbit.flow + ", surface " +
@@ -191,6 +194,7 @@ int run_orbit_render(const OrbitOptions& orbit) {
   if (orbit.verbose) {
     std::cerr << "earth texture: " << textures.day_source << "\nnight texture: " << textures.night_source
               << "\ncover: " << cover_source << "\n";
+    if (!cover_note.empty()) std::cerr << cover_note << "\n";
     for (const auto& p : result.passes) std::cerr << "pass: " << p << "\n";
     for (const auto& [name, ms] : timings) std::cerr << "time " << name << ": " << ms << " ms\n";
     for (const auto& [name, ms] : result.timings_ms) std::cerr << "time " << name << ": " << ms << " ms\n";

@@ -28,6 +28,7 @@ struct OrbitOptions {
   std::string surface{params::cover::surface.default_text};  // its land/ocean mask
   std::optional<double> exposure;  // --exposure; without it metered (render::highlight_exposure)
   bool verbose = false, quiet = false;
+  bool no_cache = false;  // --no-cache: the generated cover neither read from nor written to the cache
 };
 
 void bind_orbit_options(Options& options, OrbitOptions& orbit);

@@ -10,6 +10,7 @@
 #include "apps/cli/commands.hpp"
 #include "io/elevation_files.hpp"
 #include "files/float_cache.hpp"
+#include "io/cover_cache.hpp"
 #include "io/noise_cache.hpp"
 #include "render/cloud_renderer.hpp"
 #include "cover/cover_limits.hpp"
@@ -111,6 +112,7 @@ int run_render(const std::vector<std::string>& arguments) {
     if (options.given(s::exposure)) orbit.exposure = scene_options.exposure();
     orbit.verbose = verbose;
     orbit.quiet = quiet;
+    orbit.no_cache = no_cache;
     if (options.given(s::heading)) orbit.heading = scene_options.heading();
     if (options.given(s::pitch)) orbit.pitch = scene_options.pitch();
     if (options.given(s::fov)) orbit.fov = scene_options.fov();
@@ -214,7 +216,16 @@ int run_render(const std::vector<std::string>& arguments) {
     std::cerr << "warning: " << surface_warning << "\n";
     scene.cover_surface = "none";  // the render's sidecar records the cover it made
   }
-  render::PreparedScene prepared = render::prepare_scene(scene, io::read_scene_weather(scene), surface);
+  // Without weather files the global cover is the weather, from the disk cache where it is there.
+  const std::filesystem::path cache_directory = no_cache ? std::filesystem::path() : files::default_cache_directory();
+  const std::vector<regional::WeatherSeries> weather_series = io::read_scene_weather(scene);
+  std::string cover_note;
+  render::PreparedScene prepared =
+      weather_series.empty()
+          ? render::prepare_scene(
+                scene, weather_series,
+                io::cached_global_cover(render::scene_cover_parameters(scene, surface), cache_directory, &cover_note))
+          : render::prepare_scene(scene, weather_series, surface);
   std::string terrain_warning;
   const std::string terrain_field =
       options.given(s::terrain) || scene_file.empty() ? s::terrain.option() : scene_file + ": 'terrain'";
@@ -229,7 +240,6 @@ int run_render(const std::vector<std::string>& arguments) {
   // The noise volume from the disk cache when a layer is marched (the same bits as making it).
   std::unique_ptr<render::NoiseVolume> noise;
   std::string noise_note;
-  const std::filesystem::path cache_directory = no_cache ? std::filesystem::path() : files::default_cache_directory();
   if (!cache_directory.empty() && render::needs_noise_volume(prepared.partial.layers, prepared.field)) {
     const render::RenderSettings settings = render::render_settings(scene);
     noise = io::cached_noise_volume(settings.noise_size, settings.seed, cache_directory, &noise_note);
@@ -244,6 +254,7 @@ int run_render(const std::vector<std::string>& arguments) {
                  "cut short: lower --view-steps (now "
               << scene.view_steps << ") or --light-steps (now " << scene.light_steps << ")\n";
   if (verbose) {
+    if (!cover_note.empty()) std::cerr << cover_note << "\n";
     if (!noise_note.empty()) std::cerr << noise_note << "\n";
     for (const auto& p : result.passes) std::cerr << "pass: " << p << "\n";
     for (const auto& [name, ms] : result.render.timings_ms) std::cerr << "time " << name << ": " << ms << " ms\n";

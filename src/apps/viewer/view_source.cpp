@@ -8,6 +8,7 @@
 #include "gpu/pass_timer.hpp"
 #include "io/elevation_files.hpp"
 #include "io/export_presets.hpp"
+#include "io/cover_cache.hpp"
 #include "io/noise_cache.hpp"
 #include "io/planet_textures.hpp"
 #include "core/time.hpp"
@@ -51,7 +52,8 @@ render::RenderResult GroundSource::render(const ViewState& state, int width, int
     const cover::CoverParameters parameters = cover_of(state);
     const std::string key = cover_key(parameters);
     if (key != cover_key_) {
-      setup_ms.emplace_back("global_cover", gpu::time_pass([&] { cover_ = render::make_global_cover(parameters); }));
+      setup_ms.emplace_back("global_cover",
+                            gpu::time_pass([&] { cover_ = io::cached_global_cover(parameters, cache_directory_); }));
       cover_key_ = key;
     }
   }
@@ -101,7 +103,8 @@ render::RenderResult GroundSource::render(const ViewState& state, int width, int
   return out.render;
 }
 
-OrbitSource::OrbitSource(const std::filesystem::path& cover_dir) : cover_dir_(cover_dir) {}
+OrbitSource::OrbitSource(const std::filesystem::path& cover_dir, const std::filesystem::path& cache_directory)
+    : cover_dir_(cover_dir), cache_directory_(cache_directory) {}
 OrbitSource::~OrbitSource() = default;
 
 render::RenderResult OrbitSource::render(const ViewState& state, int width, int height, int first_row, int row_count,
@@ -115,7 +118,8 @@ render::RenderResult OrbitSource::render(const ViewState& state, int width, int 
                             if (!cover_dir_.empty()) {
                               cube = io::read_cover_cube(cover_dir_);
                             } else {
-                              render::GlobalCoverFaces faces = render::make_global_cover(cover_of(state));
+                              render::GlobalCoverFaces faces =
+                                  io::cached_global_cover(cover_of(state), cache_directory_);
                               cube = {faces.size, std::move(faces.texels), std::move(faces.optical_thickness),
                                       std::move(faces.cloud_top)};
                             }
@@ -205,7 +209,7 @@ void OrbitSource::update_coast(const render::OrbitCamera& camera,
 }
 
 ViewSwitch::ViewSwitch(const std::filesystem::path& cover_dir, const std::filesystem::path& cache_directory)
-    : ground_(cover_dir, cache_directory), orbit_(cover_dir) {}
+    : ground_(cover_dir, cache_directory), orbit_(cover_dir, cache_directory) {}
 
 render::RenderResult ViewSwitch::render(const ViewState& state, int width, int height, int first_row, int row_count,
                                         bool coarse) {

@@ -94,7 +94,8 @@ class GroundSource : public ViewSource {
 // pixels are coarser than the water map's texel (four times coarser than where one is wanted).
 class OrbitSource : public ViewSource {
  public:
-  explicit OrbitSource(const std::filesystem::path& cover_dir);
+  // `cache_directory`: the generated covers' disk cache (io/cover_cache.hpp; empty: none).
+  OrbitSource(const std::filesystem::path& cover_dir, const std::filesystem::path& cache_directory);
   ~OrbitSource() override;
   std::string name() const override { return "orbit"; }
   // Renders the tiles that hold rows [first_row, first_row + row_count) (all with row_count 0);
@@ -109,6 +110,7 @@ class OrbitSource : public ViewSource {
   void update_coast(const render::OrbitCamera& camera, std::vector<std::pair<std::string, double>>& setup_ms);
 
   std::filesystem::path cover_dir_;
+  std::filesystem::path cache_directory_;
   std::unique_ptr<render::OrbitRenderer> renderer_;
   std::string cover_key_;
   bool sea_colour_ = false;  // the default maps: the sea's own colour, coasts from GSHHG
