@@ -1,4 +1,6 @@
-// The disk cache of noise volumes (src/files/float_cache.hpp, src/io/noise_cache.hpp) and its use by nephele render.
+// The disk cache (src/files/float_cache.hpp) of noise volumes (src/io/noise_cache.hpp), generated covers
+// (src/io/cover_cache.hpp) and the orbit view's derived maps (src/io/planet_textures.hpp), and its use by
+// nephele render.
 #include <catch2/catch.hpp>
 
 #include <fcntl.h>
@@ -435,4 +437,31 @@ TEST_CASE("a cover's cache key changes with its parameters, its mask's values an
   cover::CoverParameters other_profile = p;
   other_profile.profile.fraction.back() += 0.01;
   CHECK(io::cover_cache_key(other_profile) != key);
+}
+
+TEST_CASE("render --view orbit reads its cover and its derived maps from the cache the second time, the same image",
+          "[cache][cli]") {
+  TemporaryDirectory cache_home(true), out(true), unused_home(true);
+  const std::string arguments = " render --view orbit --size 64x36 --verbose --quiet --out ";
+  auto render = [&](const fs::path& home, const std::string& name, const std::string& extra = "") {
+    return test::run_as_given(mesa_cache_where_it_was() + " XDG_CACHE_HOME=" + home.string(),
+                              arguments + (out.path / name).string() + extra);
+  };
+  const Run first = render(cache_home.path, "first.png");
+  INFO(first.output);
+  REQUIRE(first.exit_code == 0);
+  CHECK(first.output.find("global cover: made and cached") != std::string::npos);
+  CHECK(first.output.find("maps from the cache") == std::string::npos);
+  const Run second = render(cache_home.path, "second.png");
+  INFO(second.output);
+  REQUIRE(second.exit_code == 0);
+  CHECK(second.output.find("global cover: from the cache") != std::string::npos);
+  // The default maps (xplanet's day and night, ETOPO5's water and relief) as decoded and derived.
+  CHECK(second.output.find("maps from the cache: sea_free_day etopo5_water etopo5_relief night_decoded") !=
+        std::string::npos);
+  const Run uncached = render(unused_home.path, "uncached.png", " --no-cache");
+  REQUIRE(uncached.exit_code == 0);
+  CHECK_FALSE(fs::exists(unused_home.path / "nephele"));
+  CHECK(read_file(out.path / "first.png") == read_file(out.path / "second.png"));
+  CHECK(read_file(out.path / "first.png") == read_file(out.path / "uncached.png"));
 }

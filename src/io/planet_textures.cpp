@@ -14,6 +14,7 @@
 #include "io/elevation_files.hpp"
 #include "render/orbit_tiles.hpp"
 #include "io/export_presets.hpp"
+#include "files/float_cache.hpp"
 #include "files/image_files.hpp"
 
 namespace nephele::io {
@@ -67,13 +68,16 @@ core::ImageData read_equirect(const std::string& path, const std::string& option
   return image;
 }
 
+constexpr int etopo5_water_width = 1080;   // etopo5_water's map, 2:1
+constexpr int etopo5_relief_width = 2160;  // etopo5_relief's map, 2:1
+
 // The fraction of open water in each pixel of a 1080 x 540 equirect (a third of a degree: the glint
 // is a lobe hundreds of km wide), from the 16 ETOPO5 samples (a twelfth of a degree apart)
 // nearest the pixel's points on a 4 x 4 grid:
 // below sea level is water. Land below sea level (the Caspian and Dead Sea depressions' shores)
 // counts as water: a few hundred pixels.
 core::ImageData etopo5_water(const regional::ElevationRaster& raster) {
-  const int width = 1080, height = 540;
+  const int width = etopo5_water_width, height = etopo5_water_width / 2;
   core::ImageData water{width, height, 1, std::vector<float>(std::size_t(width) * height, 0.0f)};
   const double per_degree = 1.0 / raster.step_deg;
   const int wrap = static_cast<int>(std::lround(360.0 * per_degree));
@@ -168,7 +172,7 @@ core::ImageData sea_free_day_map(const core::ImageData& day) {
 // the slopes' root mean square over the 3 x 3 texels around: how rough the land is there, which
 // sets the steepness of the relief the renderer draws below the texels (land_mosaic.glsl).
 core::ImageData etopo5_relief(const regional::ElevationRaster& raster) {
-  const int width = 2160, height = 1080;
+  const int width = etopo5_relief_width, height = etopo5_relief_width / 2;
   std::vector<float> ground(std::size_t(width) * height);
   std::vector<double> longitudes;
   for (int i = 0; i < width; ++i) longitudes.push_back(-180.0 + (i + 0.5) * 360.0 / width);
@@ -225,6 +229,67 @@ core::ImageData etopo5_relief(const regional::ElevationRaster& raster) {
 
 }  // namespace
 
+namespace {
+
+// What identifies a source file's content for the cache: its path, size and modification time
+// (nanoseconds); empty where it cannot be read, and then nothing is cached.
+std::string file_identity(const std::string& path) {
+  std::error_code error;
+  const auto size = std::filesystem::file_size(path, error);
+  if (error) return {};
+  const auto time = std::filesystem::last_write_time(path, error);
+  if (error) return {};
+  return path + " " + std::to_string(size) + " " + std::to_string(time.time_since_epoch().count());
+}
+
+// The map `what` of `sources` (file identities; none empty) with `width` x `height` x `channels`
+// values: from the cache in `directory` where it holds it, else made by `make` and stored there.
+// Without a directory, a program fingerprint or a source's identity, made alone.
+// `from_cache` (if given) gets `what`'s first word where the map came from the cache.
+template <class Make>
+core::ImageData cached_map(const std::filesystem::path& directory, const std::string& what,
+                           const std::vector<std::string>& sources, int width, int height, int channels, Make&& make,
+                           std::vector<std::string>* from_cache = nullptr) {
+  const std::string program = files::program_fingerprint();
+  bool cacheable = !directory.empty() && !program.empty() && width > 0 && height > 0 && channels > 0;
+  std::string key = "planet_map " + what + " 1";
+  for (const std::string& source : sources) {
+    cacheable = cacheable && !source.empty();
+    key += " [" + source + "]";
+  }
+  if (!cacheable) return make();
+  key += " program " + program;
+  const files::FloatCache cache(directory);
+  if (auto values = cache.load(key, std::size_t(width) * height * channels)) {
+    if (from_cache != nullptr) from_cache->push_back(what.substr(0, what.find(' ')));
+    return core::ImageData{width, height, channels, std::move(*values)};
+  }
+  core::ImageData image = make();
+  if (image.width == width && image.height == height && image.channels == channels) cache.store(key, image.pixels);
+  return image;
+}
+
+// The header of a map already checked (check_planet_maps): its decoded size, or zeros where it
+// cannot be read (then nothing is cached and the read names the error).
+files::ImageHeader map_header(const std::string& path) {
+  try {
+    return files::read_image_header(path);
+  } catch (const std::exception&) {
+    return {};
+  }
+}
+
+// The decoded map at `path` (read_equirect), through the cache.
+core::ImageData cached_equirect(const std::filesystem::path& directory, const std::string& path,
+                                const std::string& option, std::vector<std::string>* from_cache) {
+  const files::ImageHeader header = map_header(path);
+  return cached_map(
+      directory, "decoded", {file_identity(path)}, header.width, header.height, header.channels,
+      [&] { return read_equirect(path, option); }, from_cache);
+}
+
+}  // namespace
+
 void check_planet_maps(const std::string& day, const std::string& night, const std::string& option) {
   for (const auto& [path, field] : {std::pair{day, option}, std::pair{night, std::string("--night-texture")}}) {
     if (path.empty()) continue;
@@ -237,7 +302,8 @@ void check_planet_maps(const std::string& day, const std::string& night, const s
   }
 }
 
-PlanetTextures read_planet_textures(const std::string& day, const std::string& night, const std::string& option) {
+PlanetTextures read_planet_textures(const std::string& day, const std::string& night, const std::string& option,
+                                    const std::filesystem::path& cache_directory) {
   PlanetTextures out;
   out.water_source = "none";
   out.relief_source = "none";
@@ -247,25 +313,40 @@ PlanetTextures read_planet_textures(const std::string& day, const std::string& n
                                  : day.empty() && std::filesystem::is_regular_file(default_night_texture, error)
                                      ? std::string(default_night_texture)
                                      : std::string();
+  std::vector<std::string> night_cached;  // the night map's thread's own list
   std::future<decltype(out.images.night)> night_image;
   if (!night_file.empty())
-    night_image =
-        std::async(std::launch::async, [&night_file] { return read_equirect(night_file, "--night-texture"); });
+    night_image = std::async(std::launch::async, [&night_file, &cache_directory, &night_cached] {
+      return cached_equirect(cache_directory, night_file, "--night-texture", &night_cached);
+    });
   if (!day.empty()) {
-    out.images.day = read_equirect(day, option);
+    out.images.day = cached_equirect(cache_directory, day, option, &out.from_cache);
     out.day_source = day;
     if (out.images.day.width != 2 * out.images.day.height)
       out.warnings.push_back(option + ": '" + day + "' is " + std::to_string(out.images.day.width) + " x " +
                              std::to_string(out.images.day.height) + ", not 2:1; it is stretched over the sphere");
   } else if (std::filesystem::is_regular_file(default_earth_texture, error)) {
-    out.images.day = sea_free_day_map(read_equirect(default_earth_texture, option));
+    const files::ImageHeader header = map_header(default_earth_texture);
+    out.images.day = cached_map(
+        cache_directory, "sea_free_day", {file_identity(default_earth_texture)}, header.width, header.height, 4,
+        [&] { return sea_free_day_map(read_equirect(default_earth_texture, option)); }, &out.from_cache);
     out.images.sea_colour = true;
     out.day_source = default_earth_texture;
     if (std::filesystem::is_regular_file(etopo5_default_path, error)) {
-      const std::shared_ptr<const regional::ElevationRaster> raster = whole_etopo5(etopo5_default_path, "ETOPO5");
-      out.images.water = etopo5_water(*raster);
+      // ETOPO5 is read only where a map derived from it is not in the cache.
+      std::shared_ptr<const regional::ElevationRaster> raster;
+      const auto etopo5 = [&]() -> const regional::ElevationRaster& {
+        if (!raster) raster = whole_etopo5(etopo5_default_path, "ETOPO5");
+        return *raster;
+      };
+      const std::string identity = file_identity(etopo5_default_path);
+      out.images.water = cached_map(
+          cache_directory, "etopo5_water", {identity}, etopo5_water_width, etopo5_water_width / 2, 1,
+          [&] { return etopo5_water(etopo5()); }, &out.from_cache);
       out.water_source = etopo5_default_path;
-      out.images.relief = etopo5_relief(*raster);
+      out.images.relief = cached_map(
+          cache_directory, "etopo5_relief", {identity}, etopo5_relief_width, etopo5_relief_width / 2, 3,
+          [&] { return etopo5_relief(etopo5()); }, &out.from_cache);
       out.relief_source = etopo5_default_path;
     } else {
       out.warnings.push_back(std::string(etopo5_default_path) +
@@ -281,6 +362,7 @@ PlanetTextures read_planet_textures(const std::string& day, const std::string& n
   }
   if (night_image.valid()) {
     out.images.night = night_image.get();
+    for (const std::string& map : night_cached) out.from_cache.push_back("night_" + map);
     out.night_source = night_file;
   } else {
     out.night_source = "none";
@@ -376,7 +458,8 @@ std::optional<std::string> missing_shorelines_warning() {
          " is missing (Debian package gmt-gshhg-full): coasts and lakes as sharp as ETOPO5's 18 km water map";
 }
 
-void add_view_coast(PlanetTextures& textures, const render::OrbitCamera& camera, double planet_radius_m) {
+void add_view_coast(PlanetTextures& textures, const render::OrbitCamera& camera, double planet_radius_m,
+                    const std::filesystem::path& cache_directory) {
   if (!textures.images.sea_colour) return;
   const std::optional<GeoWindow> window = view_coast_window(camera, planet_radius_m, textures.images.water.width);
   if (!window) return;
@@ -384,7 +467,11 @@ void add_view_coast(PlanetTextures& textures, const render::OrbitCamera& camera,
     textures.warnings.push_back(*warning);
     return;
   }
-  textures.images.coast = read_gshhg_water(gshhg_shorelines_default_path, *window);
+  // The window's raster through the cache: a view seen again (the same window) reads it.
+  textures.images.coast = cached_map(
+      cache_directory, "gshhg_water " + coast_source(*window), {file_identity(gshhg_shorelines_default_path)},
+      window->width, window->height, 1, [&] { return read_gshhg_water(gshhg_shorelines_default_path, *window); },
+      &textures.from_cache);
   textures.images.coast_south_deg = window->south_deg, textures.images.coast_north_deg = window->north_deg;
   textures.images.coast_west_deg = window->west_deg, textures.images.coast_east_deg = window->east_deg;
   textures.water_source += " and " + coast_source(*window);

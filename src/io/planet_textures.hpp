@@ -18,11 +18,12 @@ inline const char* const default_night_texture = "/usr/share/xplanet/images/nigh
 
 struct PlanetTextures {
   render::PlanetImages images;
-  std::string day_source;             // the file, or "procedural"
-  std::string night_source;           // the file, or "none"
-  std::string water_source;           // ETOPO5's file, "procedural" or "none" (no sun glint)
-  std::string relief_source;          // ETOPO5's file or "none" (flat ground)
-  std::vector<std::string> warnings;  // e.g. the default maps are missing: procedural fallback
+  std::string day_source;               // the file, or "procedural"
+  std::string night_source;             // the file, or "none"
+  std::string water_source;             // ETOPO5's file, "procedural" or "none" (no sun glint)
+  std::string relief_source;            // ETOPO5's file or "none" (flat ground)
+  std::vector<std::string> warnings;    // e.g. the default maps are missing: procedural fallback
+  std::vector<std::string> from_cache;  // the maps read from the disk cache (sea_free_day, decoded, ...)
 };
 
 // `day`: an equirect image (any size, ideally 2:1); "" means the xplanet map, and when that is
@@ -32,8 +33,13 @@ struct PlanetTextures {
 // With the default day map the water where the sun glints and the ground's relief come from
 // ETOPO5 (ferret-datasets: below sea level is water), a warning saying so when it is missing; a
 // named day map gets neither.
+// `cache_directory` (empty: none): the maps as decoded and derived (the sea-free day map, ETOPO5's
+// water and relief) kept in the disk cache of files/float_cache.hpp, keyed on their source files'
+// paths, sizes and times and on the program's build (files::program_fingerprint), so that a
+// later render reads them instead of decoding and deriving them again (the same values).
 PlanetTextures read_planet_textures(const std::string& day, const std::string& night = "",
-                                    const std::string& option = "--earth-texture");
+                                    const std::string& option = "--earth-texture",
+                                    const std::filesystem::path& cache_directory = {});
 
 // The window of the ground in view whose water add_view_coast rasters: where the camera's nearest
 // pixels are finer than a quarter of the texel of a water map `water_width` texels
@@ -56,7 +62,9 @@ std::optional<std::string> missing_shorelines_warning();
 // With the default day map (sea_colour), within view_coast_window: the water along the ground in
 // view from GSHHG's full-resolution shorelines (coastline_files.hpp) as PlanetImages::coast, and
 // water_source saying so; a warning where the file is missing.
-void add_view_coast(PlanetTextures& textures, const render::OrbitCamera& camera, double planet_radius_m);
+// `cache_directory` (empty: none) as read_planet_textures'.
+void add_view_coast(PlanetTextures& textures, const render::OrbitCamera& camera, double planet_radius_m,
+                    const std::filesystem::path& cache_directory = {});
 
 // The checks read_planet_textures makes of named maps, from their headers alone (a missing or
 // unreadable file, fewer than 2 pixels across, more than half the available memory as floats):

@@ -541,8 +541,8 @@ inline constexpr Parameter quiet =
     flag("quiet", "no progress reports on stderr (they appear for work of more than a second)",
          generate | report | render | noise | model | assemble);
 inline constexpr Parameter no_cache = flag("no_cache",
-                                           "neither read nor write the cache of generated covers and noise volumes "
-                                           "($XDG_CACHE_HOME/nephele, else ~/.cache/nephele)",
+                                           "neither read nor write the cache of generated covers, noise volumes and "
+                                           "the orbit view's maps ($XDG_CACHE_HOME/nephele, else ~/.cache/nephele)",
                                            render | viewer);
 inline constexpr Parameter verbose = flag("verbose", "print the renderer, the passes that ran and their times",
                                           generate | render | noise | model | assemble);

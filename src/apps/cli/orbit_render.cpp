@@ -129,11 +129,15 @@ int run_orbit_render(const OrbitOptions& orbit) {
   // cover generated, which leave a core idle for much of their time (docs/orbit_view.md, "Cost").
   // A bad named map still exits 2 before any of it, by its header.
   io::check_planet_maps(orbit.earth_texture, orbit.night_texture);
-  std::future<io::PlanetTextures> planet_maps = std::async(std::launch::async, [&orbit, camera, radius_m] {
-    io::PlanetTextures textures = io::read_planet_textures(orbit.earth_texture, orbit.night_texture);
-    io::add_view_coast(textures, camera, radius_m);
-    return textures;
-  });
+  const std::filesystem::path cache_directory =
+      orbit.no_cache ? std::filesystem::path() : files::default_cache_directory();
+  std::future<io::PlanetTextures> planet_maps =
+      std::async(std::launch::async, [&orbit, camera, radius_m, cache_directory] {
+        io::PlanetTextures textures =
+            io::read_planet_textures(orbit.earth_texture, orbit.night_texture, "--earth-texture", cache_directory);
+        io::add_view_coast(textures, camera, radius_m, cache_directory);
+        return textures;
+      });
 
   // The default day map's water and relief and the generated cover's land/ocean mask (--surface
   // etopo5) all come from ETOPO5: held across both, the file is read once (io::whole_etopo5),
@@ -159,9 +163,8 @@ int run_orbit_render(const OrbitOptions& orbit) {
                                       io::surface_from_option(orbit.surface, &warning));
     if (!warning.empty()) std::cerr << "warning: " << warning << "\n";
     timings.emplace_back("global cover", gpu::time_pass([&] {
-                           render::GlobalCoverFaces faces = io::cached_global_cover(
-                               parameters, orbit.no_cache ? std::filesystem::path() : files::default_cache_directory(),
-                               &cover_note);
+                           render::GlobalCoverFaces faces =
+                               io::cached_global_cover(parameters, cache_directory, &cover_note);
                            cover = render::CoverCube{faces.size, std::move(faces.texels),
                                                      std::move(faces.optical_thickness), std::move(faces.cloud_top)};
                          }));
@@ -195,6 +198,11 @@ int run_orbit_render(const OrbitOptions& orbit) {
     std::cerr << "earth texture: " << textures.day_source << "\nnight texture: " << textures.night_source
               << "\ncover: " << cover_source << "\n";
     if (!cover_note.empty()) std::cerr << cover_note << "\n";
+    if (!textures.from_cache.empty()) {
+      std::cerr << "maps from the cache:";
+      for (const std::string& map : textures.from_cache) std::cerr << " " << map;
+      std::cerr << "\n";
+    }
     for (const auto& p : result.passes) std::cerr << "pass: " << p << "\n";
     for (const auto& [name, ms] : timings) std::cerr << "time " << name << ": " << ms << " ms\n";
     for (const auto& [name, ms] : result.timings_ms) std::cerr << "time " << name << ": " << ms << " ms\n";

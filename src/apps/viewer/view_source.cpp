@@ -127,7 +127,7 @@ render::RenderResult OrbitSource::render(const ViewState& state, int width, int 
     if (renderer_) {
       renderer_->set_cover(cube);
     } else {
-      const io::PlanetTextures textures = io::read_planet_textures("");
+      const io::PlanetTextures textures = io::read_planet_textures("", "", "--earth-texture", cache_directory_);
       for (const auto& warning : textures.warnings) std::cerr << "warning: " << warning << "\n";
       setup_ms.emplace_back("planet_textures", gpu::time_pass([&] {
                               renderer_ = std::make_unique<render::OrbitRenderer>(textures.images, cube);
