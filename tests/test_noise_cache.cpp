@@ -94,6 +94,11 @@ std::string mesa_cache_where_it_was() {
   return "MESA_SHADER_CACHE_DIR=" + directory;
 }
 
+// nephele with `arguments`, its cache under `home` and Mesa's where it was.
+Run render_with_cache_home(const fs::path& home, const std::string& arguments) {
+  return test::run_as_given(mesa_cache_where_it_was() + " XDG_CACHE_HOME=" + home.string(), arguments);
+}
+
 }  // namespace
 
 TEST_CASE("render reuses the cached noise volume and global cover with the same image, and --no-cache leaves no cache",
@@ -104,8 +109,7 @@ TEST_CASE("render reuses the cached noise volume and global cover with the same 
       "--land-cover none --verbose --quiet --out ";  // morning: no convective volumes to build, which the cache does
                                                      // not hold; no ground to load, which it does not hold either
   auto render = [&](const fs::path& home, const std::string& name, const std::string& extra = "") {
-    return test::run_as_given(mesa_cache_where_it_was() + " XDG_CACHE_HOME=" + home.string(),
-                              arguments + (out.path / name).string() + extra);
+    return render_with_cache_home(home, arguments + (out.path / name).string() + extra);
   };
   const Run first = render(cache_home.path, "first.png");
   INFO(first.output);
@@ -444,8 +448,7 @@ TEST_CASE("render --view orbit reads its cover and its derived maps from the cac
   TemporaryDirectory cache_home(true), out(true), unused_home(true);
   const std::string arguments = " render --view orbit --size 64x36 --verbose --quiet --out ";
   auto render = [&](const fs::path& home, const std::string& name, const std::string& extra = "") {
-    return test::run_as_given(mesa_cache_where_it_was() + " XDG_CACHE_HOME=" + home.string(),
-                              arguments + (out.path / name).string() + extra);
+    return render_with_cache_home(home, arguments + (out.path / name).string() + extra);
   };
   const Run first = render(cache_home.path, "first.png");
   INFO(first.output);
