@@ -171,6 +171,15 @@ fs::path the_entry(const fs::path& directory, const std::string& kind) {
 
 }  // namespace
 
+TEST_CASE("a hash's hex digits are its 16 nibbles, most significant first", "[fast][cache]") {
+  CHECK(core::hex_digits(0) == "0000000000000000");
+  CHECK(core::hex_digits(0x0123456789abcdefull) == "0123456789abcdef");
+  CHECK(core::hex_digits(~0ull) == "ffffffffffffffff");
+  // A cache file's name carries its key's FNV-1a so.
+  const files::FloatCache cache("/nowhere");
+  CHECK(cache.file_of("a").filename() == "cache-" + core::hex_digits(core::fnv1a(std::string("a"))) + ".bin");
+}
+
 TEST_CASE("the payload hash changes with any one flipped bit and with the length or seed", "[fast][cache]") {
   std::vector<unsigned char> bytes(101);  // three 32-byte blocks and a tail of a word and 5 bytes
   for (std::size_t i = 0; i < bytes.size(); ++i) bytes[i] = static_cast<unsigned char>(i * 37 + 11);

@@ -88,4 +88,12 @@ inline std::uint64_t block_hash(const void* data, std::size_t bytes, std::uint64
   return hash;
 }
 
+// A hash as 16 lowercase hex digits (cache keys and file names).
+inline std::string hex_digits(std::uint64_t hash) {
+  static const char digits[] = "0123456789abcdef";
+  std::string text(16, '0');
+  for (int k = 15; k >= 0; --k, hash >>= 4) text[static_cast<std::size_t>(k)] = digits[hash & 15u];
+  return text;
+}
+
 }  // namespace nephele::core

@@ -76,10 +76,7 @@ const std::string& program_fingerprint() {
     if (fd.get() < 0 || ::fstat(fd.get(), &status) != 0 || !S_ISREG(status.st_mode)) return std::string();
     std::vector<unsigned char> bytes(static_cast<std::size_t>(status.st_size));
     if (!core::read_exactly(fd.get(), bytes.data(), bytes.size())) return std::string();
-    char text[17];
-    std::snprintf(text, sizeof text, "%016llx",
-                  static_cast<unsigned long long>(core::block_hash(bytes.data(), bytes.size())));
-    return std::string(text);
+    return core::hex_digits(core::block_hash(bytes.data(), bytes.size()));
   }();
   return fingerprint;
 }
@@ -95,9 +92,7 @@ FloatCache::FloatCache(fs::path directory, std::uintmax_t cap_bytes)
     : directory_(std::move(directory)), cap_bytes_(cap_bytes) {}
 
 fs::path FloatCache::file_of(const std::string& key) const {
-  char name[64];
-  std::snprintf(name, sizeof name, "%s%016llx%s", prefix, static_cast<unsigned long long>(fnv1a(key)), suffix);
-  return directory_ / name;
+  return directory_ / (prefix + core::hex_digits(fnv1a(key)) + suffix);
 }
 
 std::optional<std::vector<float>> FloatCache::load(const std::string& key, std::size_t count) const {

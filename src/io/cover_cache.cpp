@@ -1,7 +1,5 @@
 #include "io/cover_cache.hpp"
 
-#include <cstdio>
-
 #include "core/hash.hpp"
 #include "core/json.hpp"
 #include "cover/global_cover.hpp"
@@ -11,25 +9,15 @@
 
 namespace nephele::io {
 
-namespace {
-
-std::string hex(std::uint64_t value) {
-  char text[17];
-  std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(value));
-  return text;
-}
-
-}  // namespace
-
 std::string cover_cache_key(const cover::CoverParameters& parameters) {
   std::string key = "global_cover 1 " + json::write(cover_parameters_json(cover::resolved_curl(parameters)));
   if (parameters.surface) {
     const std::vector<float>& land = parameters.surface->land;
     key += " mask " + std::to_string(parameters.surface->columns) + "x" + std::to_string(parameters.surface->rows) +
-           " " + hex(core::block_hash(land.data(), land.size() * sizeof(float)));
+           " " + core::hex_digits(core::block_hash(land.data(), land.size() * sizeof(float)));
   }
   for (const std::vector<double>* knots : {&parameters.profile.latitude_deg, &parameters.profile.fraction})
-    key += " profile " + hex(core::block_hash(knots->data(), knots->size() * sizeof(double)));
+    key += " profile " + core::hex_digits(core::block_hash(knots->data(), knots->size() * sizeof(double)));
   return key + " program " + files::program_fingerprint();
 }
 

@@ -152,10 +152,7 @@ constexpr int noise_volume_host_version = 2;
 std::string NoiseVolume::recipe_key() {
   // FNV-1a, 64 bits, of the shader as compiled (includes expanded).
   const std::uint64_t hash = core::fnv1a(gpu::expand_shader("render/noise_volume.comp").text);
-  char text[64];
-  std::snprintf(text, sizeof text, "noise_volume.comp:%016llx,host:%d", static_cast<unsigned long long>(hash),
-                noise_volume_host_version);
-  return text;
+  return "noise_volume.comp:" + core::hex_digits(hash) + ",host:" + std::to_string(noise_volume_host_version);
 }
 
 NoiseVolume::NoiseVolume(int size, std::uint32_t seed, const std::vector<float>& level0) : size_(size), seed_(seed) {
