@@ -242,22 +242,31 @@ std::string file_identity(const std::string& path) {
   return path + " " + std::to_string(size) + " " + std::to_string(time.time_since_epoch().count());
 }
 
-// The map `what` of `sources` (file identities; none empty) with `width` x `height` x `channels`
-// values: from the cache in `directory` where it holds it, else made by `make` and stored there.
-// Without a directory, a program fingerprint or a source's identity, made alone.
-// `from_cache` (if given) gets `what`'s first word where the map came from the cache.
-template <class Make>
+// A map's size as made: width, height, channels.
+struct MapSize {
+  int width = 0, height = 0, channels = 0;
+};
+
+// The map `what` of `sources` (file identities; none empty) whose size `size()` gives: from the
+// cache in `directory` where it holds it, else made by `make` and stored there. Without a
+// directory, a program fingerprint or a source's identity it is made alone, and `size` (which
+// may read a file's header) is not asked. `from_cache` (if given) gets `what`'s first word where
+// the map came from the cache.
+template <class Size, class Make>
 core::ImageData cached_map(const std::filesystem::path& directory, const std::string& what,
-                           const std::vector<std::string>& sources, int width, int height, int channels, Make&& make,
+                           const std::vector<std::string>& sources, Size&& size, Make&& make,
                            std::vector<std::string>* from_cache = nullptr) {
   const std::string program = files::program_fingerprint();
-  bool cacheable = !directory.empty() && !program.empty() && width > 0 && height > 0 && channels > 0;
+  bool cacheable = !directory.empty() && !program.empty();
   std::string key = "planet_map " + what + " 1";
   for (const std::string& source : sources) {
     cacheable = cacheable && !source.empty();
     key += " [" + source + "]";
   }
   if (!cacheable) return make();
+  const MapSize made = size();
+  const int width = made.width, height = made.height, channels = made.channels;
+  if (width <= 0 || height <= 0 || channels <= 0) return make();
   key += " program " + program;
   const files::FloatCache cache(directory);
   if (auto values = cache.load(key, std::size_t(width) * height * channels)) {
@@ -269,11 +278,13 @@ core::ImageData cached_map(const std::filesystem::path& directory, const std::st
   return image;
 }
 
-// The header of a map already checked (check_planet_maps): its decoded size, or zeros where it
-// cannot be read (then nothing is cached and the read names the error).
-files::ImageHeader map_header(const std::string& path) {
+// The size of a map already checked (check_planet_maps) as decoded with `channels` (0: its own),
+// from its header; zeros where that cannot be read (then nothing is cached and the read names the
+// error).
+MapSize map_size(const std::string& path, int channels = 0) {
   try {
-    return files::read_image_header(path);
+    const files::ImageHeader header = files::read_image_header(path);
+    return {header.width, header.height, channels > 0 ? channels : header.channels};
   } catch (const std::exception&) {
     return {};
   }
@@ -282,9 +293,8 @@ files::ImageHeader map_header(const std::string& path) {
 // The decoded map at `path` (read_equirect), through the cache.
 core::ImageData cached_equirect(const std::filesystem::path& directory, const std::string& path,
                                 const std::string& option, std::vector<std::string>* from_cache) {
-  const files::ImageHeader header = map_header(path);
   return cached_map(
-      directory, "decoded", {file_identity(path)}, header.width, header.height, header.channels,
+      directory, "decoded", {file_identity(path)}, [&] { return map_size(path); },
       [&] { return read_equirect(path, option); }, from_cache);
 }
 
@@ -326,9 +336,9 @@ PlanetTextures read_planet_textures(const std::string& day, const std::string& n
       out.warnings.push_back(option + ": '" + day + "' is " + std::to_string(out.images.day.width) + " x " +
                              std::to_string(out.images.day.height) + ", not 2:1; it is stretched over the sphere");
   } else if (std::filesystem::is_regular_file(default_earth_texture, error)) {
-    const files::ImageHeader header = map_header(default_earth_texture);
     out.images.day = cached_map(
-        cache_directory, "sea_free_day", {file_identity(default_earth_texture)}, header.width, header.height, 4,
+        cache_directory, "sea_free_day", {file_identity(default_earth_texture)},
+        [&] { return map_size(default_earth_texture, 4); },
         [&] { return sea_free_day_map(read_equirect(default_earth_texture, option)); }, &out.from_cache);
     out.images.sea_colour = true;
     out.day_source = default_earth_texture;
@@ -341,11 +351,17 @@ PlanetTextures read_planet_textures(const std::string& day, const std::string& n
       };
       const std::string identity = file_identity(etopo5_default_path);
       out.images.water = cached_map(
-          cache_directory, "etopo5_water", {identity}, etopo5_water_width, etopo5_water_width / 2, 1,
+          cache_directory, "etopo5_water", {identity},
+          [] {
+            return MapSize{etopo5_water_width, etopo5_water_width / 2, 1};
+          },
           [&] { return etopo5_water(etopo5()); }, &out.from_cache);
       out.water_source = etopo5_default_path;
       out.images.relief = cached_map(
-          cache_directory, "etopo5_relief", {identity}, etopo5_relief_width, etopo5_relief_width / 2, 3,
+          cache_directory, "etopo5_relief", {identity},
+          [] {
+            return MapSize{etopo5_relief_width, etopo5_relief_width / 2, 3};
+          },
           [&] { return etopo5_relief(etopo5()); }, &out.from_cache);
       out.relief_source = etopo5_default_path;
     } else {
@@ -470,8 +486,10 @@ void add_view_coast(PlanetTextures& textures, const render::OrbitCamera& camera,
   // The window's raster through the cache: a view seen again (the same window) reads it.
   textures.images.coast = cached_map(
       cache_directory, "gshhg_water " + coast_source(*window), {file_identity(gshhg_shorelines_default_path)},
-      window->width, window->height, 1, [&] { return read_gshhg_water(gshhg_shorelines_default_path, *window); },
-      &textures.from_cache);
+      [&] {
+        return MapSize{window->width, window->height, 1};
+      },
+      [&] { return read_gshhg_water(gshhg_shorelines_default_path, *window); }, &textures.from_cache);
   textures.images.coast_south_deg = window->south_deg, textures.images.coast_north_deg = window->north_deg;
   textures.images.coast_west_deg = window->west_deg, textures.images.coast_east_deg = window->east_deg;
   textures.water_source += " and " + coast_source(*window);
