@@ -110,4 +110,32 @@ TEST_CASE("a PNG with png_filters set filters every row with that one filter and
   }
 }
 
+// OpenImageIO's 250-odd libraries took 0.4 s of every start: they come in a module
+// (files/image_codecs.hpp) that the first image read or write loads.
+TEST_CASE("nephele starts without OpenImageIO, which its image codec module brings", "[io][codecs]") {
+  const test::Run executable = test::run_command("ldd " + std::string(NEPHELE_EXECUTABLE));
+  REQUIRE(executable.exit_code == 0);
+  CHECK(executable.output.find("libOpenImageIO") == std::string::npos);
+  const std::filesystem::path module =
+      std::filesystem::path(NEPHELE_EXECUTABLE).parent_path() / "nephele_image_codecs.so";
+  const test::Run codecs = test::run_command("ldd " + module.string());
+  REQUIRE(codecs.exit_code == 0);
+  CHECK(codecs.output.find("libOpenImageIO.so") != std::string::npos);
+  CHECK(codecs.output.find("not found") == std::string::npos);
+}
+
+TEST_CASE("without its image codec module nephele says where it looked and writes no image", "[io][codecs]") {
+  const test::TemporaryDirectory directory(true);
+  const std::filesystem::path missing = directory.path / "elsewhere" / "nephele_image_codecs.so";
+  const std::filesystem::path png = directory.path / "noise.png";
+  // A fresh process (not the tests' command server, which has loaded the module already).
+  const test::Run run = test::run_command("NEPHELE_IMAGE_CODECS=" + missing.string() + " " +
+                                          std::string(NEPHELE_EXECUTABLE) + " noise --size 4 --out " + png.string());
+  CHECK(run.exit_code == 1);
+  INFO(run.output);
+  CHECK(run.output.find(missing.string() + ": no such file") != std::string::npos);
+  CHECK(run.output.find("NEPHELE_IMAGE_CODECS") != std::string::npos);
+  CHECK(!std::filesystem::exists(png));
+}
+
 }  // namespace nephele

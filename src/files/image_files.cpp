@@ -1,24 +1,21 @@
 #include "files/image_files.hpp"
 
+#include <dlfcn.h>
 #include <fcntl.h>
 #include <unistd.h>
 
-#include <algorithm>
 #include <cerrno>
+#include <cstdlib>
 #include <cstring>
+#include <future>
 #include <memory>
+#include <mutex>
+#include <stdexcept>
 
 #include "core/file_descriptor.hpp"
 #include "core/input_file.hpp"
-
-#include <OpenImageIO/filesystem.h>
-#include <OpenImageIO/imagebuf.h>
-#include <OpenImageIO/imagebufalgo.h>
-#include <OpenImageIO/imageio.h>
-
-#include <stdexcept>
-
 #include "files/atomic_output.hpp"
+#include "files/image_codecs.hpp"
 
 namespace nephele::files {
 
@@ -34,88 +31,101 @@ bool is_exr_compression(const std::string& name) {
 
 namespace {
 
-// The writer and the header of an image as `encoding` says; encode_image and ImageRowWriter share
-// them, so that both give the same bytes.
-std::pair<std::unique_ptr<OIIO::ImageOutput>, OIIO::ImageSpec> image_writer(int width, int height, int channels,
-                                                                            const ImageEncoding& encoding,
-                                                                            const std::string& what) {
+// Where the module may be: $NEPHELE_IMAGE_CODECS, beside the executable (build/, an installed
+// bin/ or a bundle), where the build put it (the test programs in build/tests).
+std::vector<std::string> module_candidates() {
+  std::vector<std::string> paths;
+  if (const char* path = std::getenv("NEPHELE_IMAGE_CODECS"); path && *path) return {path};
+  std::error_code error;
+  const auto executable = std::filesystem::read_symlink("/proc/self/exe", error);
+  if (!error) paths.push_back((executable.parent_path() / image_codecs_file).string());
+#ifdef NEPHELE_IMAGE_CODECS_BUILD_PATH
+  if (paths.empty() || paths.front() != NEPHELE_IMAGE_CODECS_BUILD_PATH)
+    paths.push_back(NEPHELE_IMAGE_CODECS_BUILD_PATH);
+#endif
+  return paths;
+}
+
+struct LoadedCodecs {
+  const ImageCodecs* table = nullptr;
+  std::string error;  // why none loaded
+};
+
+LoadedCodecs load_codecs() {
+  std::string tried;
+  for (const auto& path : module_candidates()) {
+    if (!std::filesystem::exists(path)) {
+      tried += "\n  " + path + ": no such file";
+      continue;
+    }
+    // RTLD_NOW: a missing library shows here, not at the first call; never closed.
+    void* module = ::dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
+    if (!module) {
+      const char* why = ::dlerror();
+      tried += "\n  " + path + ": " + (why ? why : "dlopen failed");
+      continue;
+    }
+    using Entry = const ImageCodecs* (*)();
+    const auto entry = reinterpret_cast<Entry>(::dlsym(module, image_codecs_entry));
+    const ImageCodecs* table = entry ? entry() : nullptr;
+    if (!table || table->version != image_codecs_version) {
+      tried += "\n  " + path + ": not a nephele image codec module of version " + std::to_string(image_codecs_version);
+      continue;
+    }
+    return {table, {}};
+  }
+  return {nullptr, "image files need the module " + std::string(image_codecs_file) +
+                       " (OpenImageIO; set NEPHELE_IMAGE_CODECS to its path), which did not load:" + tried};
+}
+
+std::mutex preload_mutex;
+std::future<LoadedCodecs> preloading;  // preload_image_codecs' load, until image_codecs takes it
+bool preload_started = false;
+
+}  // namespace
+
+const ImageCodecs& image_codecs() {
+  static const LoadedCodecs loaded = [] {
+    std::future<LoadedCodecs> pending;
+    {
+      const std::lock_guard<std::mutex> lock(preload_mutex);
+      preload_started = true;
+      pending = std::move(preloading);
+    }
+    return pending.valid() ? pending.get() : load_codecs();
+  }();
+  if (!loaded.table) throw std::runtime_error(loaded.error);
+  return *loaded.table;
+}
+
+void preload_image_codecs() {
+  const std::lock_guard<std::mutex> lock(preload_mutex);
+  if (preload_started) return;
+  preload_started = true;
+  preloading = std::async(std::launch::async, load_codecs);
+}
+
+namespace {
+
+// The checks of an encoding that the codecs rely on.
+void check_encoding(int channels, const ImageEncoding& encoding, const std::string& what) {
   const bool png = encoding.format == ImageFormat::png;
   if (png ? (encoding.bits != 8 && encoding.bits != 16) : (encoding.bits != 32 && encoding.bits != 16))
     throw std::invalid_argument(what + ": " + std::to_string(encoding.bits) +
                                 "-bit images are not written (PNG: 8 or 16, EXR: 16 or 32)");
   if (!png && !is_exr_compression(encoding.compression))
     throw std::invalid_argument(what + ": unknown EXR compression '" + encoding.compression + "'");
-  const char* format = png ? "png" : "openexr";
-  auto out = OIIO::ImageOutput::create(format);
-  if (!out) throw std::runtime_error("no image writer for " + what + ": " + OIIO::geterror());
-  if (!out->supports("ioproxy"))
-    throw std::runtime_error("the " + std::string(format) + " writer cannot write through a proxy");
-  const OIIO::TypeDesc type = !png ? (encoding.bits == 16 ? OIIO::TypeDesc::HALF : OIIO::TypeDesc::FLOAT)
-                              : encoding.bits == 16 ? OIIO::TypeDesc::UINT16
-                                                    : OIIO::TypeDesc::UINT8;
-  OIIO::ImageSpec spec(width, height, channels, type);
-  if (!encoding.channel_names.empty()) spec.channelnames = encoding.channel_names;
-  if (!png && !encoding.half_channels.empty()) {
-    // Channels of their own precision: the file's format per channel, half where asked.
-    if (static_cast<int>(encoding.half_channels.size()) != channels)
-      throw std::invalid_argument(what + ": a half_channels flag per channel");
-    for (int c = 0; c < channels; ++c)
-      spec.channelformats.push_back(encoding.half_channels[static_cast<size_t>(c)] ? OIIO::TypeDesc::HALF : type);
-  }
-  if (!png) spec.attribute("compression", encoding.compression);
-  if (png) spec.attribute("png:compressionLevel", encoding.png_compression_level);
-  if (png && encoding.png_filters != 0) spec.attribute("png:filter", encoding.png_filters);
-  spec.attribute("Software", "nephele");
-  spec.attribute("DateTime", "");
-  for (const auto& [name, value] : encoding.attributes) spec.attribute(name, value);
-  if (encoding.unassociated_alpha) spec.attribute("oiio:UnassociatedAlpha", 1);
-  return {std::move(out), spec};
+  if (!png && !encoding.half_channels.empty() && static_cast<int>(encoding.half_channels.size()) != channels)
+    throw std::invalid_argument(what + ": a half_channels flag per channel");
 }
-
-// Writes through a file descriptor, every write checked: a failed or short write is kept and
-// reported by failed() (OpenImageIO's own file proxy does not report a failed fwrite).
-class CheckedFileProxy : public OIIO::Filesystem::IOProxy {
- public:
-  CheckedFileProxy(const std::string& path, int fd) : IOProxy(path, Write), fd_(fd) {}
-  const char* proxytype() const override { return "nephele-fd"; }
-  size_t write(const void* buf, size_t size) override {
-    const size_t n = pwrite(buf, size, m_pos);
-    m_pos += static_cast<int64_t>(n);
-    return n;
-  }
-  size_t pwrite(const void* buf, size_t size, int64_t offset) override {
-    const auto* p = static_cast<const char*>(buf);
-    size_t done = 0;
-    while (done < size) {
-      const ssize_t n = ::pwrite(fd_, p + done, size - done, static_cast<off_t>(offset) + static_cast<off_t>(done));
-      if (n <= 0) {
-        if (n < 0 && errno == EINTR) continue;
-        error_ = n < 0 ? errno : ENOSPC;
-        break;
-      }
-      done += static_cast<size_t>(n);
-    }
-    end_ = std::max<int64_t>(end_, offset + static_cast<int64_t>(done));
-    return done;
-  }
-  size_t size() const override { return static_cast<size_t>(end_); }
-  int error_number() const { return error_; }
-
- private:
-  int fd_;
-  int error_ = 0;
-  int64_t end_ = 0;
-};
 
 }  // namespace
 
 struct ImageRowWriter::State {
   std::filesystem::path path;
   core::FileDescriptor fd;
-  std::unique_ptr<CheckedFileProxy> proxy;
-  std::unique_ptr<OIIO::ImageOutput> out;
+  std::unique_ptr<ImageWriterHandle, void (*)(ImageWriterHandle*)> writer{nullptr, nullptr};
   int width = 0, height = 0, channels = 0, next_row = 0;
-  bool closed = false;
 };
 
 ImageRowWriter::ImageRowWriter(const std::filesystem::path& path, int width, int height, int channels,
@@ -127,27 +137,20 @@ ImageRowWriter::ImageRowWriter(const std::filesystem::path& path, int width, int
   s.height = height;
   s.channels = channels;
   const std::string shown = path.string();
+  check_encoding(channels, encoding, shown);
+  const ImageCodecs& codecs = image_codecs();
   s.fd.reset(::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_NOFOLLOW | O_CLOEXEC, 0666));
   if (s.fd.get() < 0) throw std::runtime_error("could not write " + shown + ": " + std::strerror(errno));
-  auto [out, spec] = image_writer(width, height, channels, encoding, shown);
-  s.out = std::move(out);
-  s.proxy = std::make_unique<CheckedFileProxy>(shown, s.fd.get());
-  if (!s.out->set_ioproxy(s.proxy.get()) || !s.out->open(shown, spec))
-    throw std::runtime_error("could not open " + shown + ": " + s.out->geterror());
+  s.writer = {codecs.open_writer(s.fd.get(), shown, width, height, channels, encoding), codecs.free_writer};
 }
 
-ImageRowWriter::~ImageRowWriter() {
-  if (state_ && state_->out && !state_->closed) state_->out->close();
-}
+ImageRowWriter::~ImageRowWriter() = default;
 
 void ImageRowWriter::write_rows(int rows, const float* pixels) {
   State& s = *state_;
   if (rows < 0 || s.next_row + rows > s.height)
     throw std::logic_error("ImageRowWriter: more rows than the image's " + std::to_string(s.height));
-  if (rows > 0 && !s.out->write_scanlines(s.next_row, s.next_row + rows, 0, OIIO::TypeDesc::FLOAT, pixels))
-    throw std::runtime_error("could not write " + s.path.string() + ": " + s.out->geterror());
-  if (s.proxy->error_number() != 0)
-    throw std::runtime_error("could not write " + s.path.string() + ": " + std::strerror(s.proxy->error_number()));
+  image_codecs().write_rows(s.writer.get(), s.next_row, rows, pixels);
   s.next_row += rows;
 }
 
@@ -156,96 +159,66 @@ void ImageRowWriter::close() {
   if (s.next_row != s.height)
     throw std::logic_error("ImageRowWriter: " + std::to_string(s.next_row) + " of " + std::to_string(s.height) +
                            " rows written to " + s.path.string());
-  const bool closed = s.out->close();
-  s.closed = true;
-  if (!closed || s.out->has_error())
-    throw std::runtime_error("could not close " + s.path.string() + ": " + s.out->geterror());
-  if (s.proxy->error_number() != 0)
-    throw std::runtime_error("could not write " + s.path.string() + ": " + std::strerror(s.proxy->error_number()));
+  image_codecs().finish_writer(s.writer.get());
   if (::fsync(s.fd.get()) != 0) throw std::runtime_error("could not write " + s.path.string() + " (fsync)");
   if (!s.fd.close()) throw std::runtime_error("could not write " + s.path.string() + " (close)");
 }
 
+namespace {
+
+using ReaderPointer = std::unique_ptr<ImageReaderHandle, void (*)(ImageReaderHandle*)>;
+
+// The image at `path` opened (a regular file: a FIFO cannot block it), its header in `header`.
+ReaderPointer open_image(const std::filesystem::path& path, ImageHeader& header) {
+  core::regular_file_size(path.string());
+  const ImageCodecs& codecs = image_codecs();
+  ReaderPointer reader{codecs.open_reader(path.string(), header), codecs.free_reader};
+  if (header.width < 1 || header.height < 1 || header.channels < 1)
+    throw core::InputFileError(path.string() + ": declares an empty image (" + std::to_string(header.width) + " x " +
+                               std::to_string(header.height) + " x " + std::to_string(header.channels) + ")");
+  return reader;
+}
+
+}  // namespace
+
 struct ImageRowReader::State {
   std::string shown;
-  std::unique_ptr<OIIO::ImageInput> in;
-  int width = 0, height = 0, channels = 0;
+  ReaderPointer reader{nullptr, nullptr};
+  ImageHeader header;
 };
 
 ImageRowReader::ImageRowReader(const std::filesystem::path& path) : state_(std::make_unique<State>()) {
-  State& s = *state_;
-  s.shown = path.string();
-  core::regular_file_size(s.shown);  // a regular file, not a FIFO or device
-  s.in = OIIO::ImageInput::open(s.shown);
-  if (!s.in) throw std::runtime_error("could not read " + s.shown + ": " + OIIO::geterror());
-  const OIIO::ImageSpec& spec = s.in->spec();
-  s.width = spec.width;
-  s.height = spec.height;
-  s.channels = spec.nchannels;
+  state_->shown = path.string();
+  state_->reader = open_image(path, state_->header);
 }
 
-ImageRowReader::~ImageRowReader() {
-  if (state_ && state_->in) state_->in->close();
-}
+ImageRowReader::~ImageRowReader() = default;
 
-int ImageRowReader::width() const { return state_->width; }
-int ImageRowReader::height() const { return state_->height; }
-int ImageRowReader::channels() const { return state_->channels; }
+int ImageRowReader::width() const { return state_->header.width; }
+int ImageRowReader::height() const { return state_->header.height; }
+int ImageRowReader::channels() const { return state_->header.channels; }
 
 void ImageRowReader::read_rows(int first_row, int rows, float* out) {
   State& s = *state_;
-  if (first_row < 0 || rows < 0 || first_row + rows > s.height)
+  if (first_row < 0 || rows < 0 || first_row + rows > s.header.height)
     throw std::logic_error("ImageRowReader: rows outside " + s.shown);
-  if (rows > 0 &&
-      !s.in->read_scanlines(0, 0, first_row, first_row + rows, 0, 0, s.channels, OIIO::TypeDesc::FLOAT, out))
-    throw std::runtime_error("could not read " + s.shown + ": " + s.in->geterror());
+  image_codecs().read_rows(s.reader.get(), first_row, rows, out);
 }
 
 std::vector<unsigned char> encode_image(const ImageData& image, const ImageEncoding& encoding,
                                         const std::string& what) {
-  auto [out, spec] = image_writer(image.width, image.height, image.channels, encoding, what);
-  std::vector<unsigned char> bytes;
-  OIIO::Filesystem::IOVecOutput memory(bytes);
-  const auto fail = [&](const char* step) {
-    return std::runtime_error("could not " + std::string(step) + " " + what + ": " + out->geterror());
-  };
-  if (!out->set_ioproxy(&memory)) throw fail("encode");
-  if (!out->open(what, spec)) throw fail("open");
-  if (!out->write_image(OIIO::TypeDesc::FLOAT, image.pixels.data())) throw fail("encode");
-  if (!out->close()) throw fail("close");
-  if (out->has_error()) throw fail("encode");
-  return bytes;
+  check_encoding(image.channels, encoding, what);
+  return image_codecs().encode_image(image, encoding, what);
 }
 
 std::vector<unsigned char> encode_animation(const std::vector<ImageData>& frames, int frames_per_second,
                                             const std::string& what) {
   if (frames.empty()) throw std::invalid_argument(what + ": an animation needs at least one frame");
-  auto out = OIIO::ImageOutput::create("gif");
-  if (!out || !out->supports("ioproxy") || !out->supports("appendsubimage"))
-    throw std::runtime_error("no animated GIF writer for " + what + ": " + OIIO::geterror());
-  const ImageData& first = frames.front();
-  OIIO::ImageSpec spec(first.width, first.height, first.channels, OIIO::TypeDesc::UINT8);
-  const int rate[2] = {frames_per_second, 1};
-  spec.attribute("FramesPerSecond", OIIO::TypeRational, rate);
-  spec.attribute("oiio:LoopCount", 0);  // forever
-  std::vector<OIIO::ImageSpec> specs(frames.size(), spec);
-  std::vector<unsigned char> bytes;
-  OIIO::Filesystem::IOVecOutput memory(bytes);
-  const auto fail = [&](const char* step) {
-    return std::runtime_error("could not " + std::string(step) + " " + what + ": " + out->geterror());
-  };
-  if (!out->set_ioproxy(&memory)) throw fail("encode");
-  if (!out->open(what, static_cast<int>(specs.size()), specs.data())) throw fail("open");
-  for (size_t k = 0; k < frames.size(); ++k) {
-    const ImageData& frame = frames[k];
-    if (frame.width != first.width || frame.height != first.height || frame.channels != first.channels)
+  for (size_t k = 1; k < frames.size(); ++k)
+    if (frames[k].width != frames[0].width || frames[k].height != frames[0].height ||
+        frames[k].channels != frames[0].channels)
       throw std::invalid_argument(what + ": frame " + std::to_string(k) + " differs in size from the first");
-    if (k > 0 && !out->open(what, spec, OIIO::ImageOutput::AppendSubimage)) throw fail("append a frame to");
-    if (!out->write_image(OIIO::TypeDesc::FLOAT, frame.pixels.data())) throw fail("encode");
-  }
-  if (!out->close()) throw fail("close");
-  if (out->has_error()) throw fail("encode");
-  return bytes;
+  return image_codecs().encode_animation(frames, frames_per_second, what);
 }
 
 void write_image(const std::filesystem::path& path, const ImageData& image, const ImageEncoding& encoding) {
@@ -253,28 +226,9 @@ void write_image(const std::filesystem::path& path, const ImageData& image, cons
   write_file(path, bytes.data(), bytes.size());
 }
 
-namespace {
-
-std::unique_ptr<OIIO::ImageInput> open_image(const std::filesystem::path& path, ImageHeader& header) {
-  core::regular_file_size(path.string());
-  auto in = OIIO::ImageInput::open(path.string());
-  if (!in) throw std::runtime_error("could not read " + path.string() + ": " + OIIO::geterror());
-  const OIIO::ImageSpec& spec = in->spec();
-  const auto base = spec.format.basetype;
-  header = {spec.width, spec.height, spec.nchannels,
-            base == OIIO::TypeDesc::FLOAT || base == OIIO::TypeDesc::HALF || base == OIIO::TypeDesc::DOUBLE,
-            std::vector<std::string>(spec.channelnames.begin(), spec.channelnames.end())};
-  if (spec.width < 1 || spec.height < 1 || spec.nchannels < 1)
-    throw core::InputFileError(path.string() + ": declares an empty image (" + std::to_string(spec.width) + " x " +
-                               std::to_string(spec.height) + " x " + std::to_string(spec.nchannels) + ")");
-  return in;
-}
-
-}  // namespace
-
 ImageHeader read_image_header(const std::filesystem::path& path) {
   ImageHeader header;
-  open_image(path, header)->close();
+  open_image(path, header);
   return header;
 }
 
@@ -290,24 +244,19 @@ void check_image_budget(const std::filesystem::path& path, const ImageHeader& he
 
 ImageData read_image(const std::filesystem::path& path, std::uint64_t max_bytes, ImageHeader* header_out) {
   ImageHeader header;
-  auto in = open_image(path, header);
-  const OIIO::ImageSpec& spec = in->spec();
+  const ReaderPointer reader = open_image(path, header);
   check_image_budget(path, header, max_bytes);
   if (header_out) *header_out = header;
-  ImageData image{spec.width, spec.height, spec.nchannels, {}};
-  image.pixels.resize(static_cast<size_t>(spec.width) * spec.height * spec.nchannels);
-  if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, image.pixels.data()))
-    throw std::runtime_error("could not read " + path.string() + ": " + in->geterror());
-  in->close();
+  ImageData image{header.width, header.height, header.channels, {}};
+  image.pixels.resize(static_cast<size_t>(header.width) * header.height * header.channels);
+  image_codecs().read_all(reader.get(), image.pixels.data());
   return image;
 }
 
 bool draw_text(ImageData& image, int x, int y, const std::string& text, int size, const float rgb[3]) {
   static const char* const font = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
   if (image.channels != 3 || !std::filesystem::is_regular_file(font)) return false;
-  const OIIO::ImageSpec spec(image.width, image.height, 3, OIIO::TypeDesc::FLOAT);
-  OIIO::ImageBuf buffer(spec, image.pixels.data());  // draws into the image's own pixels
-  return OIIO::ImageBufAlgo::render_text(buffer, x, y, text, size, font, OIIO::cspan<float>(rgb, 3));
+  return image_codecs().draw_text(image, x, y, text, size, rgb, font);
 }
 
 }  // namespace nephele::files

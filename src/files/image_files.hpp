@@ -1,5 +1,6 @@
 #pragma once
-// Image files through OpenImageIO. Coverage is data, not colour: nothing is sRGB-encoded.
+// Image files through OpenImageIO, which is loaded on first use (files/image_codecs.hpp). Coverage
+// is data, not colour: nothing is sRGB-encoded.
 #include <cstdint>
 #include <filesystem>
 #include <memory>
@@ -135,6 +136,12 @@ ImageHeader read_image_header(const std::filesystem::path& path);
 // than `max_bytes` as floats (0: half the available memory): read_image's check before it reads.
 void check_image_budget(const std::filesystem::path& path, const ImageHeader& header, std::uint64_t max_bytes = 0);
 ImageData read_image(const std::filesystem::path& path, std::uint64_t max_bytes = 0, ImageHeader* header = nullptr);
+
+// Starts loading OpenImageIO's module on another thread, so that the first image read or write
+// finds it loaded: for a command that will write images, once its OpenGL context is made (both
+// load libraries, and the loader takes one library at a time). A load that fails reports at that
+// first use. Calls after the first, or after an image was read or written, do nothing.
+void preload_image_codecs();
 
 // Draws `text` into an RGB image with its baseline's left end at (x, y), `size` pixels high,
 // in DejaVu Sans (fonts-dejavu-core) through OpenImageIO's FreeType text. Returns false and

@@ -242,60 +242,47 @@ std::string file_identity(const std::string& path) {
   return path + " " + std::to_string(size) + " " + std::to_string(time.time_since_epoch().count());
 }
 
-// A map's size as made: width, height, channels.
-struct MapSize {
-  int width = 0, height = 0, channels = 0;
-};
-
-// The map `what` of `sources` (file identities; none empty) whose size `size()` gives: from the
-// cache in `directory` where it holds it, else made by `make` and stored there. Without a
-// directory, a program fingerprint or a source's identity it is made alone, and `size` (which
-// may read a file's header) is not asked. `from_cache` (if given) gets `what`'s first word where
-// the map came from the cache.
-template <class Size, class Make>
+// The map `what` of `sources` (file identities; none empty): from the cache in `directory` where
+// it holds it, else made by `make` and stored there. Without a directory, a program fingerprint or
+// a source's identity it is made alone. The map's size is an entry of its own beside its values
+// (key + " shape"), so that a map from the cache needs no header of its source read: that read
+// would load the image codecs (files/image_codecs.hpp), and the context's driver, loading
+// meanwhile, waits for them. `from_cache` (if given) gets `what`'s first word where the map came
+// from the cache.
+template <class Make>
 core::ImageData cached_map(const std::filesystem::path& directory, const std::string& what,
-                           const std::vector<std::string>& sources, Size&& size, Make&& make,
+                           const std::vector<std::string>& sources, Make&& make,
                            std::vector<std::string>* from_cache = nullptr) {
   const std::string program = files::program_fingerprint();
   bool cacheable = !directory.empty() && !program.empty();
-  std::string key = "planet_map " + what + " 1";
+  std::string key = "planet_map " + what + " 2";
   for (const std::string& source : sources) {
     cacheable = cacheable && !source.empty();
     key += " [" + source + "]";
   }
   if (!cacheable) return make();
-  const MapSize made = size();
-  const int width = made.width, height = made.height, channels = made.channels;
-  if (width <= 0 || height <= 0 || channels <= 0) return make();
   key += " program " + program;
+  const std::string shape_key = key + " shape";
   const files::FloatCache cache(directory);
-  if (auto values = cache.load(key, std::size_t(width) * height * channels)) {
-    if (from_cache != nullptr) from_cache->push_back(what.substr(0, what.find(' ')));
-    return core::ImageData{width, height, channels, std::move(*values)};
+  if (const auto shape = cache.load(shape_key, 3)) {
+    const float width = (*shape)[0], height = (*shape)[1], channels = (*shape)[2];
+    if (width >= 1 && height >= 1 && channels >= 1 && channels <= 4 && width * height <= 1.0e9f)
+      if (auto values = cache.load(key, std::size_t(width) * std::size_t(height) * std::size_t(channels))) {
+        if (from_cache != nullptr) from_cache->push_back(what.substr(0, what.find(' ')));
+        return core::ImageData{int(width), int(height), int(channels), std::move(*values)};
+      }
   }
   core::ImageData image = make();
-  if (image.width == width && image.height == height && image.channels == channels) cache.store(key, image.pixels);
+  if (image.width > 0 && image.height > 0 && image.channels > 0 && cache.store(key, image.pixels))
+    cache.store(shape_key, {float(image.width), float(image.height), float(image.channels)});
   return image;
-}
-
-// The size of a map already checked (check_planet_maps) as decoded with `channels` (0: its own),
-// from its header; zeros where that cannot be read (then nothing is cached and the read names the
-// error).
-MapSize map_size(const std::string& path, int channels = 0) {
-  try {
-    const files::ImageHeader header = files::read_image_header(path);
-    return {header.width, header.height, channels > 0 ? channels : header.channels};
-  } catch (const std::exception&) {
-    return {};
-  }
 }
 
 // The decoded map at `path` (read_equirect), through the cache.
 core::ImageData cached_equirect(const std::filesystem::path& directory, const std::string& path,
                                 const std::string& option, std::vector<std::string>* from_cache) {
   return cached_map(
-      directory, "decoded", {file_identity(path)}, [&] { return map_size(path); },
-      [&] { return read_equirect(path, option); }, from_cache);
+      directory, "decoded", {file_identity(path)}, [&] { return read_equirect(path, option); }, from_cache);
 }
 
 }  // namespace
@@ -338,7 +325,6 @@ PlanetTextures read_planet_textures(const std::string& day, const std::string& n
   } else if (std::filesystem::is_regular_file(default_earth_texture, error)) {
     out.images.day = cached_map(
         cache_directory, "sea_free_day", {file_identity(default_earth_texture)},
-        [&] { return map_size(default_earth_texture, 4); },
         [&] { return sea_free_day_map(read_equirect(default_earth_texture, option)); }, &out.from_cache);
     out.images.sea_colour = true;
     out.day_source = default_earth_texture;
@@ -351,18 +337,10 @@ PlanetTextures read_planet_textures(const std::string& day, const std::string& n
       };
       const std::string identity = file_identity(etopo5_default_path);
       out.images.water = cached_map(
-          cache_directory, "etopo5_water", {identity},
-          [] {
-            return MapSize{etopo5_water_width, etopo5_water_width / 2, 1};
-          },
-          [&] { return etopo5_water(etopo5()); }, &out.from_cache);
+          cache_directory, "etopo5_water", {identity}, [&] { return etopo5_water(etopo5()); }, &out.from_cache);
       out.water_source = etopo5_default_path;
       out.images.relief = cached_map(
-          cache_directory, "etopo5_relief", {identity},
-          [] {
-            return MapSize{etopo5_relief_width, etopo5_relief_width / 2, 3};
-          },
-          [&] { return etopo5_relief(etopo5()); }, &out.from_cache);
+          cache_directory, "etopo5_relief", {identity}, [&] { return etopo5_relief(etopo5()); }, &out.from_cache);
       out.relief_source = etopo5_default_path;
     } else {
       out.warnings.push_back(std::string(etopo5_default_path) +
@@ -486,9 +464,6 @@ void add_view_coast(PlanetTextures& textures, const render::OrbitCamera& camera,
   // The window's raster through the cache: a view seen again (the same window) reads it.
   textures.images.coast = cached_map(
       cache_directory, "gshhg_water " + coast_source(*window), {file_identity(gshhg_shorelines_default_path)},
-      [&] {
-        return MapSize{window->width, window->height, 1};
-      },
       [&] { return read_gshhg_water(gshhg_shorelines_default_path, *window); }, &textures.from_cache);
   textures.images.coast_south_deg = window->south_deg, textures.images.coast_north_deg = window->north_deg;
   textures.images.coast_west_deg = window->west_deg, textures.images.coast_east_deg = window->east_deg;

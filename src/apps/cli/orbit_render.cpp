@@ -1,5 +1,6 @@
 #include "apps/cli/orbit_render.hpp"
 
+#include <chrono>
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
@@ -19,6 +20,7 @@
 #include "gpu/pass_timer.hpp"
 #include "files/atomic_output.hpp"
 #include "files/float_cache.hpp"
+#include "files/image_files.hpp"
 #include "io/cover_cache.hpp"
 #include "io/elevation_files.hpp"
 #include "io/planet_textures.hpp"
@@ -147,12 +149,21 @@ int run_orbit_render(const OrbitOptions& orbit) {
   std::future<std::shared_ptr<const regional::ElevationRaster>> etopo5_read = std::async(
       std::launch::async,
       [etopo5_needed] { return etopo5_needed ? io::whole_etopo5(io::etopo5_default_path, "--surface") : nullptr; });
+  using Clock = std::chrono::steady_clock;
+  const auto milliseconds_since = [](Clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+  };
+  std::vector<std::pair<std::string, double>> timings;
+  Clock::time_point start = Clock::now();
   gpu::EglContext context;
+  timings.emplace_back("context", milliseconds_since(start));
+  files::preload_image_codecs();  // for the PNG, on the core the render leaves free till then
+  start = Clock::now();
   const std::shared_ptr<const regional::ElevationRaster> etopo5 = etopo5_read.get();
+  timings.emplace_back("ETOPO5 (waited)", milliseconds_since(start));
   if (orbit.verbose) std::cerr << "renderer: " << context.info().renderer << "\n";
   render::check_render_fits(context, camera.width, camera.height, orbit.size.empty() ? "--size" : "--size");
   core::Progress progress("render", 3, core::Progress::for_stderr(orbit.quiet));
-  std::vector<std::pair<std::string, double>> timings;
   std::string cover_source = orbit.cover;
   std::string cover_note;  // from the cache or made
   if (!cover) {
@@ -172,7 +183,9 @@ int run_orbit_render(const OrbitOptions& orbit) {
                    " texels per face, flow " + orbit.flow + ", surface " +
                    (parameters.surface ? parameters.surface->source : std::string("none")) + ")";
   }
+  start = Clock::now();
   const io::PlanetTextures textures = planet_maps.get();
+  timings.emplace_back("maps (waited)", milliseconds_since(start));
   for (const auto& w : textures.warnings) std::cerr << "warning: " << w << "\n";
   progress.update(1, "orbit view");
   render::RenderResult result = render::render_orbit(camera, unix_seconds, textures.images, *cover, settings);
@@ -192,7 +205,9 @@ int run_orbit_render(const OrbitOptions& orbit) {
           : render::highlight_exposure(result.radiance, orbit_default_exposure,
                                        render::sunlit_white_luminance(camera, unix_seconds, settings.planet_radius_m));
   record.metering = orbit.exposure ? "given" : "highlights";
+  start = Clock::now();
   io::write_orbit_outputs(result, record, out);
+  timings.emplace_back("files", milliseconds_since(start));
   progress.finish();
   if (orbit.verbose) {
     std::cerr << "earth texture: " << textures.day_source << "\nnight texture: " << textures.night_source
