@@ -110,6 +110,64 @@ TEST_CASE("a PNG with png_filters set filters every row with that one filter and
   }
 }
 
+TEST_CASE("PNG samples are round((2^bits - 1) v) of v clamped to [0, 1], NaN as 0, and big-endian at 16 bits",
+          "[fast][io][png]") {
+  const float nan = std::nanf("");
+  const std::vector<float> values = {0.0f, 1.0f, -0.5f, 2.0f, nan, 0.5f, 1.0f / 3.0f, 0.999f};
+  const core::ImageData image{8, 1, 1, values};
+  const test::TemporaryDirectory directory(true);
+  for (const int bits : {8, 16}) {
+    const double top = bits == 16 ? 65535.0 : 255.0;
+    const std::filesystem::path path = directory.path / ("samples_" + std::to_string(bits) + ".png");
+    files::write_image(path, image, files::png_encoding(bits));
+    const core::ImageData back = files::read_image(path);
+    REQUIRE(back.pixels.size() == values.size());
+    for (size_t k = 0; k < values.size(); ++k) {
+      const double v = std::isnan(values[k]) ? 0.0 : std::clamp(double(values[k]), 0.0, 1.0);
+      INFO("bits " << bits << " value " << values[k]);
+      // The decoder divides the stored integer by 2^bits - 1 in float: half an ulp of 1.
+      CHECK(back.pixels[k] * top == Approx(std::floor(v * top + 0.5)).margin(1e-3 * top / 255.0));
+    }
+    // Zero, one and the 16-bit sample's high byte first: IDAT of level 0 holds the row raw.
+    if (bits == 16) {
+      files::ImageEncoding raw = files::png_encoding(16);
+      raw.png_compression_level = 0;
+      raw.png_filters = 8;  // PNG_FILTER_NONE
+      const std::vector<unsigned char> stream = idat_stream(files::encode_image(image, raw, "raw.png"));
+      // zlib header (2 bytes), stored block header (5 bytes), the row's filter byte, then samples.
+      REQUIRE(stream.size() >= 8 + 2 * values.size());
+      const unsigned char* samples = stream.data() + 8;
+      CHECK(samples[0] == 0x00);
+      CHECK(samples[1] == 0x00);
+      CHECK(samples[2] == 0xFF);
+      CHECK(samples[3] == 0xFF);
+      CHECK(samples[10] == 0x80);  // 0.5: round(32767.5) = 32768
+      CHECK(samples[11] == 0x00);
+    }
+  }
+}
+
+TEST_CASE("an RGBA PNG stores colour given with premultiplied alpha divided by it, and as given when unassociated",
+          "[fast][io][png]") {
+  // Pixel 0: colour 0.25 at alpha 0.5 (premultiplied: 0.5 unpremultiplied); pixel 1: alpha 0.
+  const core::ImageData image{2, 1, 4, {0.25f, 0.25f, 0.25f, 0.5f, 0.3f, 0.3f, 0.3f, 0.0f}};
+  files::ImageEncoding associated = files::png_encoding(16);
+  associated.png_compression_level = 0;
+  associated.png_filters = 8;  // PNG_FILTER_NONE
+  files::ImageEncoding unassociated = associated;
+  unassociated.unassociated_alpha = true;
+  const auto sample = [](const std::vector<unsigned char>& stream, int k) {
+    return (int(stream[8 + 2 * k]) << 8) | stream[8 + 2 * k + 1];
+  };
+  const std::vector<unsigned char> divided = idat_stream(files::encode_image(image, associated, "a.png"));
+  const std::vector<unsigned char> as_given = idat_stream(files::encode_image(image, unassociated, "u.png"));
+  CHECK(sample(divided, 0) == 32768);   // 0.25 / 0.5 = 0.5
+  CHECK(sample(divided, 3) == 32768);   // alpha 0.5
+  CHECK(sample(divided, 4) == 19661);   // alpha 0: the colour as given, round(0.3 x 65535)
+  CHECK(sample(as_given, 0) == 16384);  // round(0.25 x 65535)
+  CHECK(sample(as_given, 4) == 19661);
+}
+
 // OpenImageIO's 250-odd libraries took 0.4 s of every start: they come in a module
 // (files/image_codecs.hpp) that the first image read or write loads.
 TEST_CASE("nephele starts without OpenImageIO, which its image codec module brings", "[io][codecs]") {
@@ -124,18 +182,24 @@ TEST_CASE("nephele starts without OpenImageIO, which its image codec module brin
   CHECK(codecs.output.find("not found") == std::string::npos);
 }
 
-TEST_CASE("without its image codec module nephele says where it looked and writes no image", "[io][codecs]") {
+TEST_CASE("PNGs need no image codec module, and without it an EXR is refused naming where it was looked for",
+          "[io][codecs]") {
   const test::TemporaryDirectory directory(true);
   const std::filesystem::path missing = directory.path / "elsewhere" / "nephele_image_codecs.so";
+  const std::string without_module = "NEPHELE_IMAGE_CODECS=" + missing.string() + " " + NEPHELE_EXECUTABLE;
+  // Fresh processes (not the tests' command server, which has loaded the module already).
   const std::filesystem::path png = directory.path / "noise.png";
-  // A fresh process (not the tests' command server, which has loaded the module already).
-  const test::Run run = test::run_command("NEPHELE_IMAGE_CODECS=" + missing.string() + " " +
-                                          std::string(NEPHELE_EXECUTABLE) + " noise --size 4 --out " + png.string());
-  CHECK(run.exit_code == 1);
-  INFO(run.output);
-  CHECK(run.output.find(missing.string() + ": no such file") != std::string::npos);
-  CHECK(run.output.find("NEPHELE_IMAGE_CODECS") != std::string::npos);
-  CHECK(!std::filesystem::exists(png));
+  const test::Run png_run = test::run_command(without_module + " noise --size 4 --out " + png.string());
+  INFO(png_run.output);
+  CHECK(png_run.exit_code == 0);
+  CHECK(std::filesystem::is_regular_file(png));
+  const std::filesystem::path exr = directory.path / "noise.exr";
+  const test::Run exr_run = test::run_command(without_module + " noise --size 4 --out " + exr.string());
+  INFO(exr_run.output);
+  CHECK(exr_run.exit_code == 1);
+  CHECK(exr_run.output.find(missing.string() + ": no such file") != std::string::npos);
+  CHECK(exr_run.output.find("NEPHELE_IMAGE_CODECS") != std::string::npos);
+  CHECK(!std::filesystem::exists(exr));
 }
 
 }  // namespace nephele

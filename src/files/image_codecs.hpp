@@ -24,7 +24,8 @@ struct ImageWriterHandle;  // the module's row writer (an OpenImageIO ImageOutpu
 struct ImageReaderHandle;  // the module's reader (an OpenImageIO ImageInput)
 
 // The functions throw std::runtime_error naming `what` or the path, as image_files.hpp's do. The
-// arguments are checked by image_files.cpp before they come here (check_encoding).
+// arguments are checked by image_files.cpp before they come here (check_encoding). The writers
+// write EXR: PNGs are libpng's (files/png_encoder.hpp).
 struct ImageCodecs {
   int version;
   std::vector<unsigned char> (*encode_image)(const ImageData& image, const ImageEncoding& encoding,

@@ -16,6 +16,7 @@
 #include "core/input_file.hpp"
 #include "files/atomic_output.hpp"
 #include "files/image_codecs.hpp"
+#include "files/png_encoder.hpp"
 
 namespace nephele::files {
 
@@ -119,12 +120,29 @@ void check_encoding(int channels, const ImageEncoding& encoding, const std::stri
     throw std::invalid_argument(what + ": a half_channels flag per channel");
 }
 
+// Writes all of `bytes` at `offset` of `fd`, retrying after signals: 0, or the errno (ENOSPC for
+// a write that wrote nothing).
+int write_at(int fd, const unsigned char* bytes, std::size_t size, off_t offset) {
+  std::size_t done = 0;
+  while (done < size) {
+    const ssize_t n = ::pwrite(fd, bytes + done, size - done, offset + static_cast<off_t>(done));
+    if (n <= 0) {
+      if (n < 0 && errno == EINTR) continue;
+      return n < 0 ? errno : ENOSPC;
+    }
+    done += static_cast<std::size_t>(n);
+  }
+  return 0;
+}
+
 }  // namespace
 
 struct ImageRowWriter::State {
   std::filesystem::path path;
   core::FileDescriptor fd;
-  std::unique_ptr<ImageWriterHandle, void (*)(ImageWriterHandle*)> writer{nullptr, nullptr};
+  off_t written = 0;                // PNG: the bytes written so far
+  std::unique_ptr<PngEncoder> png;  // PNG (libpng)
+  std::unique_ptr<ImageWriterHandle, void (*)(ImageWriterHandle*)> writer{nullptr, nullptr};  // else
   int width = 0, height = 0, channels = 0, next_row = 0;
 };
 
@@ -138,10 +156,21 @@ ImageRowWriter::ImageRowWriter(const std::filesystem::path& path, int width, int
   s.channels = channels;
   const std::string shown = path.string();
   check_encoding(channels, encoding, shown);
-  const ImageCodecs& codecs = image_codecs();
+  const ImageCodecs* codecs = encoding.format == ImageFormat::png ? nullptr : &image_codecs();
   s.fd.reset(::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_NOFOLLOW | O_CLOEXEC, 0666));
   if (s.fd.get() < 0) throw std::runtime_error("could not write " + shown + ": " + std::strerror(errno));
-  s.writer = {codecs.open_writer(s.fd.get(), shown, width, height, channels, encoding), codecs.free_writer};
+  if (codecs == nullptr) {
+    State* state = &s;
+    s.png = std::make_unique<PngEncoder>(
+        [state](const unsigned char* bytes, std::size_t size) {
+          const int error = write_at(state->fd.get(), bytes, size, state->written);
+          state->written += static_cast<off_t>(size);
+          return error;
+        },
+        width, height, channels, encoding, shown);
+  } else {
+    s.writer = {codecs->open_writer(s.fd.get(), shown, width, height, channels, encoding), codecs->free_writer};
+  }
 }
 
 ImageRowWriter::~ImageRowWriter() = default;
@@ -150,7 +179,10 @@ void ImageRowWriter::write_rows(int rows, const float* pixels) {
   State& s = *state_;
   if (rows < 0 || s.next_row + rows > s.height)
     throw std::logic_error("ImageRowWriter: more rows than the image's " + std::to_string(s.height));
-  image_codecs().write_rows(s.writer.get(), s.next_row, rows, pixels);
+  if (s.png)
+    s.png->write_rows(rows, pixels);
+  else
+    image_codecs().write_rows(s.writer.get(), s.next_row, rows, pixels);
   s.next_row += rows;
 }
 
@@ -159,7 +191,10 @@ void ImageRowWriter::close() {
   if (s.next_row != s.height)
     throw std::logic_error("ImageRowWriter: " + std::to_string(s.next_row) + " of " + std::to_string(s.height) +
                            " rows written to " + s.path.string());
-  image_codecs().finish_writer(s.writer.get());
+  if (s.png)
+    s.png->finish();
+  else
+    image_codecs().finish_writer(s.writer.get());
   if (::fsync(s.fd.get()) != 0) throw std::runtime_error("could not write " + s.path.string() + " (fsync)");
   if (!s.fd.close()) throw std::runtime_error("could not write " + s.path.string() + " (close)");
 }
@@ -208,7 +243,17 @@ void ImageRowReader::read_rows(int first_row, int rows, float* out) {
 std::vector<unsigned char> encode_image(const ImageData& image, const ImageEncoding& encoding,
                                         const std::string& what) {
   check_encoding(image.channels, encoding, what);
-  return image_codecs().encode_image(image, encoding, what);
+  if (encoding.format != ImageFormat::png) return image_codecs().encode_image(image, encoding, what);
+  std::vector<unsigned char> bytes;
+  PngEncoder png(
+      [&bytes](const unsigned char* data, std::size_t size) {
+        bytes.insert(bytes.end(), data, data + size);
+        return 0;
+      },
+      image.width, image.height, image.channels, encoding, what);
+  png.write_rows(image.height, image.pixels.data());
+  png.finish();
+  return bytes;
 }
 
 std::vector<unsigned char> encode_animation(const std::vector<ImageData>& frames, int frames_per_second,

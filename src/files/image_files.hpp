@@ -16,8 +16,8 @@ using core::ImageData;
 
 enum class ImageFormat { png, exr };
 
-// How an image is stored. PNG: 8 or 16 bits of values in [0, 1], quantised linearly
-// (round((2^bits - 1) v)), no gamma or sRGB chunk. EXR: 32-bit float or 16-bit half,
+// How an image is stored. PNG (libpng, files/png_encoder.hpp): 8 or 16 bits of values in [0, 1],
+// quantised linearly (round((2^bits - 1) v)), no gamma or sRGB chunk. EXR (OpenImageIO): 32-bit float or 16-bit half,
 // zip-compressed unless another of OpenEXR's compressions is named.
 struct ImageEncoding {
   ImageFormat format = ImageFormat::png;
@@ -28,7 +28,7 @@ struct ImageEncoding {
   std::string compression = "zip";                              // exr: none, rle, zips, zip, piz, pxr24, b44, dwaa
   std::vector<std::pair<std::string, std::string>> attributes;  // extra string metadata (OpenImageIO names)
   // With 4 channels: the colour is not premultiplied by alpha (white clouds with coverage in
-  // alpha are stored as given; OpenImageIO would otherwise divide the colour by alpha).
+  // alpha are stored as given; a PNG's colour would otherwise be divided by its alpha).
   bool unassociated_alpha = false;
   // png: zlib's level, 0 (none) .. 9 (smallest); 6 is zlib's default. The same pixels at any level.
   int png_compression_level = 6;
@@ -63,7 +63,7 @@ bool is_exr_compression(const std::string& name);
 bool is_lossless_exr_compression(const std::string& name);
 
 // The file's bytes, encoded in memory, so that the caller writes them with every write, fsync
-// and close checked (OpenImageIO's PNG writer does not report a failed fwrite). Throws
+// and close checked (OpenImageIO's writers do not report a failed fwrite). Throws
 // std::runtime_error naming `what` (the file's name) when encoding fails. Safe to call from
 // several threads at once (each call has its own writer).
 std::vector<unsigned char> encode_image(const ImageData& image, const ImageEncoding& encoding, const std::string& what);

@@ -18,30 +18,25 @@
 namespace nephele::files {
 namespace {
 
-// The writer and the header of an image as `encoding` says; encode_image and the row writer
-// share them, so that both give the same bytes.
+// The writer and the header of an EXR image as `encoding` says (PNGs are libpng's:
+// files/png_encoder.hpp); encode_image and the row writer share them, so that both give the same
+// bytes.
 std::pair<std::unique_ptr<OIIO::ImageOutput>, OIIO::ImageSpec> image_writer(int width, int height, int channels,
                                                                             const ImageEncoding& encoding,
                                                                             const std::string& what) {
-  const bool png = encoding.format == ImageFormat::png;
-  const char* format = png ? "png" : "openexr";
-  auto out = OIIO::ImageOutput::create(format);
+  if (encoding.format != ImageFormat::exr) throw std::invalid_argument(what + ": the codec module writes EXR only");
+  auto out = OIIO::ImageOutput::create("openexr");
   if (!out) throw std::runtime_error("no image writer for " + what + ": " + OIIO::geterror());
-  if (!out->supports("ioproxy"))
-    throw std::runtime_error("the " + std::string(format) + " writer cannot write through a proxy");
-  const OIIO::TypeDesc type = !png ? (encoding.bits == 16 ? OIIO::TypeDesc::HALF : OIIO::TypeDesc::FLOAT)
-                              : encoding.bits == 16 ? OIIO::TypeDesc::UINT16
-                                                    : OIIO::TypeDesc::UINT8;
+  if (!out->supports("ioproxy")) throw std::runtime_error("the openexr writer cannot write through a proxy");
+  const OIIO::TypeDesc type = encoding.bits == 16 ? OIIO::TypeDesc::HALF : OIIO::TypeDesc::FLOAT;
   OIIO::ImageSpec spec(width, height, channels, type);
   if (!encoding.channel_names.empty()) spec.channelnames = encoding.channel_names;
-  if (!png && !encoding.half_channels.empty()) {
+  if (!encoding.half_channels.empty()) {
     // Channels of their own precision: the file's format per channel, half where asked.
     for (int c = 0; c < channels; ++c)
       spec.channelformats.push_back(encoding.half_channels[static_cast<size_t>(c)] ? OIIO::TypeDesc::HALF : type);
   }
-  if (!png) spec.attribute("compression", encoding.compression);
-  if (png) spec.attribute("png:compressionLevel", encoding.png_compression_level);
-  if (png && encoding.png_filters != 0) spec.attribute("png:filter", encoding.png_filters);
+  spec.attribute("compression", encoding.compression);
   spec.attribute("Software", "nephele");
   spec.attribute("DateTime", "");
   for (const auto& [name, value] : encoding.attributes) spec.attribute(name, value);
