@@ -286,6 +286,32 @@ TEST_CASE("the sub-texel cloud is the cover itself wherever a sample spans half 
   }
 }
 
+TEST_CASE("high cloud thinner than deep convection is a veil the sub-texel cloud leaves whole and all else is carved",
+          "[fast][properties]") {
+  // ISCCP's classes (Rossow and Schiffer 1999): cirrus and cirrostratus (tops above 440 hPa, about
+  // 6.5 km; tau below 23) are veils; cumulus, stratocumulus, the middle classes and deep
+  // convection (high, tau above 23) break into clouds and clear sky.
+  CHECK(glsl::subtexel_carving(9.0f, 1.0f) == 0.0f);    // cirrus
+  CHECK(glsl::subtexel_carving(11.0f, 10.0f) == 0.0f);  // cirrostratus
+  CHECK(glsl::subtexel_carving(1.5f, 1.0f) == 1.0f);    // cumulus
+  CHECK(glsl::subtexel_carving(1.5f, 10.0f) == 1.0f);   // stratocumulus
+  CHECK(glsl::subtexel_carving(4.0f, 2.0f) == 1.0f);    // altocumulus
+  CHECK(glsl::subtexel_carving(14.0f, 60.0f) == 1.0f);  // deep convection
+  // Between the classes it changes smoothly and only one way: less carving higher up, more where
+  // thicker.
+  for (float top = 0.0f; top < 16.0f; top += 0.25f)
+    for (float tau = 0.0f; tau < 40.0f; tau += 0.5f) {
+      const float carving = glsl::subtexel_carving(top, tau);
+      REQUIRE(carving >= 0.0f);
+      REQUIRE(carving <= 1.0f);
+      CHECK(glsl::subtexel_carving(top + 0.25f, tau) <= carving);
+      CHECK(glsl::subtexel_carving(top, tau + 0.5f) >= carving);
+      // A smoothstep's slope is at most 1.5 over its span: 1.5 per km of top, 1.5 / 16 per unit of tau.
+      CHECK(std::abs(glsl::subtexel_carving(top + 0.25f, tau) - carving) <= 1.5f * 0.25f + 1e-6f);
+      CHECK(std::abs(glsl::subtexel_carving(top, tau + 0.5f) - carving) <= 1.5f / 16.0f * 0.5f + 1e-6f);
+    }
+}
+
 TEST_CASE("the sub-texel cloud keeps the cover's share of the sky in expectation", "[properties]") {
   // Cloudy where the field n lies below sigma Phi^-1(c): the share is c exactly for a normal n.
   // The octave sum of gradient noise is near normal but not exactly; for a monotone function g

@@ -467,6 +467,9 @@ TEST_CASE("cloud_properties.glsl on the GPU agrees with the CPU", "[probe]") {
         {arguments(PROBE_SHALLOW_TRADES, vec4(r(0.0f, 1.0f), r(0.0f, 1.0f), r(0.0f, 0.3f), 0), types, place),
          10 * kArithmetic});
     cases.push_back({arguments(PROBE_CUMULUS_ORGANISATION, vec4(r(-0.2f, 1.2f), 0, 0, 0)), kArithmetic});
+    // Two smoothsteps (slopes at most 1.5 per km and 1.5 / 16 per unit of tau) of values below 40
+    // and their product: the inputs' rounding times the slopes, and kArithmetic.
+    cases.push_back({arguments(PROBE_SUBTEXEL_CARVING, vec4(r(0.0f, 16.0f), r(0.0f, 40.0f), 0, 0)), 4 * kArithmetic});
   }
   // An exp and a log of the transmittance (relative 3 ulp each) give the depth to about 8 ulp of
   // its value plus the log's absolute error near 1.

@@ -400,6 +400,37 @@ TEST_CASE("orbit: the sub-texel cloud draws clear and cloudy places and keeps th
   CHECK(high > 0.9);
 }
 
+TEST_CASE("orbit: a veil of thin high cloud stays whole below its texels while the same cloud low down breaks up",
+          "[orbit][thickness]") {
+  test::test_context();
+  // A cover of 0.5 everywhere with tau 2, as cirrus with tops at 9 km and as cumulus with tops at
+  // 2 km, straight down from 1000 km (pixels of 7 km under 39 km texels, as the test above). The
+  // cumulus is carved into clouds and clear sky: pixels near 0 and near its opaque cloud's
+  // 1 - exp(-2) = 0.86. The cirrus is a veil (cloud_properties.glsl's subtexel_carving): every pixel
+  // keeps about the texel's opacity 0.5 (1 - exp(-2)) = 0.43, moved only by the tops' relief and
+  // the thickness's variation, no clear pixel and none as opaque as a cloud.
+  const int size = 256;
+  const auto camera = nadir_camera(10, 60, 1.0e6, 160, 90, 60);
+  const auto planet = uniform_planet(0.05);
+  const auto opacities = [&](float top_km) {
+    const auto r = render::render_orbit(camera, june_morning, planet, uniform_cover(size, 0.5f, 2.0f, top_km));
+    std::vector<double> a;
+    for (int y = 0; y < 90; ++y)
+      for (int x = 0; x < 160; ++x) a.push_back(pixel(r, x, y).a);
+    std::sort(a.begin(), a.end());
+    return a;
+  };
+  const std::vector<double> veil = opacities(9.0f), cumulus = opacities(2.0f);
+  const double mean_opacity = 0.5 * (1 - std::exp(-2.0));
+  INFO("veil opacity " << veil.front() << ".." << veil.back() << " (median " << veil[veil.size() / 2] << "); cumulus "
+                       << cumulus.front() << ".." << cumulus.back());
+  CHECK(cumulus.front() < 0.05);
+  CHECK(cumulus.back() > 0.8);
+  CHECK(veil.front() > 0.5 * mean_opacity);
+  CHECK(veil.back() < 0.8);
+  CHECK(veil[veil.size() / 2] == Approx(mean_opacity).epsilon(0.2));
+}
+
 TEST_CASE("orbit: under a low sun the cloud tops' relief shows as texture, under a high sun hardly",
           "[orbit][relief]") {
   test::test_context();

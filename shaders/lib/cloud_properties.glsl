@@ -294,6 +294,24 @@ SubtexelCloud subtexel_cloud(vec3 p, float cover, float texel, float footprint) 
   return result;
 }
 
+// How much of the sub-texel cloud's carving a texel's cloud takes, in [0, 1], by its ISCCP class
+// (Rossow and Schiffer 1999): subtexel_cloud breaks a texel's cloud into clouds and clear sky, as
+// the boundary layer's cumulus and stratocumulus, the middle cloud and the cores and anvils of deep
+// convection are broken and edged below a texel. High cloud thinner than deep convection, ISCCP's
+// cirrus and cirrostratus (tops above 440 hPa, about 6.5 km in the standard atmosphere; tau below
+// 23), is not: it is a veil that the wind aloft spreads over hundreds of km, through which the
+// ground shows where it is thin, and its cover is the veil's opacity, drawn as it is. Carved, the
+// satellite's thin cirrus over land showed as fields of bright popcorn of half a texel (issue 31).
+// Blended over a km of top and over tau 16-32 (23 within 40 %), so that nothing switches.
+const float VEIL_TOP_START_KM = 6.0f;
+const float VEIL_TOP_FULL_KM = 7.0f;
+const float VEIL_TAU_FULL = 16.0f;
+const float VEIL_TAU_END = 32.0f;
+float subtexel_carving(float top_km, float tau) {
+  float veil = smoothstep(VEIL_TOP_START_KM, VEIL_TOP_FULL_KM, top_km) * (1.0f - smoothstep(VEIL_TAU_FULL, VEIL_TAU_END, tau));
+  return 1.0f - veil;
+}
+
 // The optical thickness of the sub-texel cloud at a sample. The cover gives a texel's cloud one
 // tau, but real cloud is far from uniform inside: its optical thickness varies about log-normally,
 // with a deviation of ln tau that makes the plane-parallel albedo bias (Cahalan et al. 1994, "The

@@ -170,7 +170,7 @@ vec4 cloud_slab(vec3 p, float footprint, vec2 heights, bool smoothed) {
   float cover = c.x, tau = c.y;
   if (u_cloud_detail > 0.0f) {
     SubtexelCloud detail = subtexel_cloud(n * u_radius, c.x, u_cover_texel, footprint);
-    cover = mix(c.x, detail.cover, u_cloud_detail);
+    cover = mix(c.x, detail.cover, u_cloud_detail * subtexel_carving(c.z, c.y));
     tau = mix(c.y, subtexel_optical_thickness(c.y, detail, u_cloud_tau_spread), u_cloud_detail);
     top = max(top + u_cloud_detail * TOP_RELIEF_SHARE * thickness * detail.relief, base + 0.1f * thickness);
   }

@@ -116,7 +116,9 @@ WeatherField field_from_cover(const CoverChannels& cover, const GeographicLib::L
         const float t = tau != nullptr ? sample.y / sample.x
                                        : glsl::optical_thickness_from_cover(c, cover.tau_median, cover.tau_spread);
         const float h = top != nullptr ? sample.z / sample.x : glsl::cloud_top_from_cover(c, latitude);
-        const float cloudy = glsl::subtexel_cloud(n * radius, c, cover_texel, footprint).cover;
+        // The sub-texel cloud as the orbit view draws it (orbit.comp's cloud_slab), veils uncarved.
+        const float carved = glsl::subtexel_cloud(n * radius, c, cover_texel, footprint).cover;
+        const float cloudy = c + glsl::subtexel_carving(h, t) * (carved - c);
         const LevelShares shares = level_shares(h, t);
         put(CoverageChannel::low, row, column, cloudy * shares.low);
         put(CoverageChannel::mid, row, column, cloudy * shares.mid);

@@ -13,6 +13,7 @@ const int PROBE_SUBTEXEL_SHARE = 8;        // subtexel_cloud(x[1].xyz, a, b, c).
 const int PROBE_SHALLOW_TRADES = 9;  // organised_cloud(x[1], a), trades_belt(latitude) in y, shallow_trades_weight(x[1], latitude, a, b) in z,
                                      // trade_moat(a, b, c) in w
 const int PROBE_CUMULUS_ORGANISATION = 10;  // cumulus_organisation(a)
+const int PROBE_SUBTEXEL_CARVING = 11;      // subtexel_carving(a, b)
 #ifndef __cplusplus
 #include "../lib/cloud_properties.glsl"
 #endif
@@ -43,6 +44,7 @@ vec4 probe_cloud_properties(mat4 x) {
                 trade_moat(a, b, c));
   }
   if (f == PROBE_CUMULUS_ORGANISATION) return vec4(cumulus_organisation(a), 0.0f, 0.0f, 0.0f);
+  if (f == PROBE_SUBTEXEL_CARVING) return vec4(subtexel_carving(a, b), 0.0f, 0.0f, 0.0f);
   if (f == PROBE_COVERED_DEPTH) return vec4(covered_optical_depth(a, b), 0.0f, 0.0f, 0.0f);
   if (f == PROBE_SUBTEXEL_CLOUD) {
     SubtexelCloud cloud = subtexel_cloud(vec3(x[1]), a, b, c);
