@@ -32,7 +32,9 @@ void use_large_pages() {
 // process: the GL driver's textures, OpenImageIO's buffers, and C++'s operator new, which calls
 // malloc. They forward to glibc's own (__libc_malloc, __libc_calloc and __libc_memalign, which
 // glibc exports for this) and advise large blocks onto huge pages before anything touches them.
-// free, realloc and the rest stay glibc's: every block is still its.
+// free, realloc and the rest stay glibc's: every block is still its. Not with AddressSanitizer,
+// which replaces the allocator itself (large_blocks_advised).
+#ifndef NEPHELE_ADDRESS_SANITIZER
 extern "C" {
 void* __libc_malloc(std::size_t bytes);
 void* __libc_calloc(std::size_t count, std::size_t bytes);
@@ -65,3 +67,4 @@ void* aligned_alloc(std::size_t alignment, std::size_t bytes) {
   return advised(__libc_memalign(alignment, bytes), bytes);
 }
 }
+#endif

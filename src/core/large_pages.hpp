@@ -12,6 +12,21 @@ namespace nephele::core {
 // forwards to glibc's: large_pages.cpp).
 constexpr std::size_t large_block_bytes = std::size_t(4) << 20;
 
+// Whether the program's malloc advises large blocks (large_pages.cpp): not in builds with
+// AddressSanitizer, whose own malloc must serve every block it later frees and checks.
+#if defined(__SANITIZE_ADDRESS__)
+#define NEPHELE_ADDRESS_SANITIZER 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define NEPHELE_ADDRESS_SANITIZER 1
+#endif
+#endif
+#ifdef NEPHELE_ADDRESS_SANITIZER
+constexpr bool large_blocks_advised = false;
+#else
+constexpr bool large_blocks_advised = true;
+#endif
+
 // Sets the heap's policy for the rest of the process: blocks up to 32 MiB (glibc's own ceiling
 // for its dynamic threshold) come from the heap, and up to 256 MiB of freed heap stays mapped for
 // reuse instead of being returned and faulted in again. Called first thing in main; idempotent.
