@@ -120,28 +120,12 @@ void check_encoding(int channels, const ImageEncoding& encoding, const std::stri
     throw std::invalid_argument(what + ": a half_channels flag per channel");
 }
 
-// Writes all of `bytes` at `offset` of `fd`, retrying after signals: 0, or the errno (ENOSPC for
-// a write that wrote nothing).
-int write_at(int fd, const unsigned char* bytes, std::size_t size, off_t offset) {
-  std::size_t done = 0;
-  while (done < size) {
-    const ssize_t n = ::pwrite(fd, bytes + done, size - done, offset + static_cast<off_t>(done));
-    if (n <= 0) {
-      if (n < 0 && errno == EINTR) continue;
-      return n < 0 ? errno : ENOSPC;
-    }
-    done += static_cast<std::size_t>(n);
-  }
-  return 0;
-}
-
 }  // namespace
 
 struct ImageRowWriter::State {
   std::filesystem::path path;
   core::FileDescriptor fd;
-  off_t written = 0;                // PNG: the bytes written so far
-  std::unique_ptr<PngEncoder> png;  // PNG (libpng)
+  std::unique_ptr<PngEncoder> png;                                                            // PNG (libpng)
   std::unique_ptr<ImageWriterHandle, void (*)(ImageWriterHandle*)> writer{nullptr, nullptr};  // else
   int width = 0, height = 0, channels = 0, next_row = 0;
 };
@@ -160,13 +144,9 @@ ImageRowWriter::ImageRowWriter(const std::filesystem::path& path, int width, int
   s.fd.reset(::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_NOFOLLOW | O_CLOEXEC, 0666));
   if (s.fd.get() < 0) throw std::runtime_error("could not write " + shown + ": " + std::strerror(errno));
   if (codecs == nullptr) {
-    State* state = &s;
+    const int fd = s.fd.get();  // libpng writes in order, from the file's start
     s.png = std::make_unique<PngEncoder>(
-        [state](const unsigned char* bytes, std::size_t size) {
-          const int error = write_at(state->fd.get(), bytes, size, state->written);
-          state->written += static_cast<off_t>(size);
-          return error;
-        },
+        [fd](const unsigned char* bytes, std::size_t size) { return core::write_exactly(fd, bytes, size) ? 0 : errno; },
         width, height, channels, encoding, shown);
   } else {
     s.writer = {codecs->open_writer(s.fd.get(), shown, width, height, channels, encoding), codecs->free_writer};

@@ -13,6 +13,7 @@
 #include <memory>
 #include <stdexcept>
 
+#include "core/file_descriptor.hpp"
 #include "files/image_codecs.hpp"
 
 namespace nephele::files {
@@ -56,19 +57,12 @@ class CheckedFileProxy : public OIIO::Filesystem::IOProxy {
     return n;
   }
   size_t pwrite(const void* buf, size_t size, int64_t offset) override {
-    const auto* p = static_cast<const char*>(buf);
-    size_t done = 0;
-    while (done < size) {
-      const ssize_t n = ::pwrite(fd_, p + done, size - done, static_cast<off_t>(offset) + static_cast<off_t>(done));
-      if (n <= 0) {
-        if (n < 0 && errno == EINTR) continue;
-        error_ = n < 0 ? errno : ENOSPC;
-        break;
-      }
-      done += static_cast<size_t>(n);
+    if (!core::write_exactly_at(fd_, buf, size, static_cast<off_t>(offset))) {
+      error_ = errno;
+      return 0;
     }
-    end_ = std::max<int64_t>(end_, offset + static_cast<int64_t>(done));
-    return done;
+    end_ = std::max<int64_t>(end_, offset + static_cast<int64_t>(size));
+    return size;
   }
   size_t size() const override { return static_cast<size_t>(end_); }
   int error_number() const { return error_; }
