@@ -17,8 +17,8 @@ using core::ImageData;
 enum class ImageFormat { png, exr };
 
 // How an image is stored. PNG (libpng, files/png_encoder.hpp): 8 or 16 bits of values in [0, 1],
-// quantised linearly (round((2^bits - 1) v)), no gamma or sRGB chunk. EXR (OpenImageIO): 32-bit float or 16-bit half,
-// zip-compressed unless another of OpenEXR's compressions is named.
+// quantised linearly (round((2^bits - 1) v)), no gamma or sRGB chunk. EXR (OpenImageIO): 32-bit
+// float or 16-bit half, zip-compressed unless another of OpenEXR's compressions is named.
 struct ImageEncoding {
   ImageFormat format = ImageFormat::png;
   int bits = 8;                            // png: 8 or 16; exr: 32 (float) or 16 (half)

@@ -6,6 +6,7 @@
 #include <cerrno>
 #include <cmath>
 #include <csetjmp>
+#include <cstdio>
 #include <cstring>
 #include <stdexcept>
 #include <vector>
@@ -23,6 +24,10 @@ struct PngEncoder::State {
   bool divide_by_alpha = false;
   std::vector<std::string> text;  // key, value, key, value ... for the tEXt chunks
   std::vector<unsigned char> row;
+  // Also when the encoder's constructor throws after libpng started.
+  ~State() {
+    if (png != nullptr) png_destroy_write_struct(&png, info != nullptr ? &info : nullptr);
+  }
 };
 
 namespace {
@@ -121,9 +126,7 @@ PngEncoder::PngEncoder(Sink sink, int width, int height, int channels, const Ima
   s.row.resize(std::size_t(width) * channels * (s.bits / 8));
 }
 
-PngEncoder::~PngEncoder() {
-  if (state_ && state_->png) png_destroy_write_struct(&state_->png, &state_->info);
-}
+PngEncoder::~PngEncoder() = default;
 
 void PngEncoder::write_rows(int rows, const float* pixels) {
   State& s = *state_;
@@ -165,7 +168,5 @@ void PngEncoder::finish() {
   png_structp png = s.png;
   if (!png_guarded(png, [&] { png_write_end(png, nullptr); })) fail(s, "encode");
 }
-
-int PngEncoder::sink_error() const { return state_->sink_error; }
 
 }  // namespace nephele::files

@@ -27,8 +27,6 @@ class PngEncoder {
   void write_rows(int rows, const float* pixels);
   // After the last row: the image's end.
   void finish();
-  // The errno of the sink's failed write, 0 if none failed.
-  int sink_error() const;
 
   struct State;  // libpng's structures and the row being encoded (png_encoder.cpp)
 
