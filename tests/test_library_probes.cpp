@@ -586,6 +586,31 @@ TEST_CASE("weather_systems.glsl on the GPU agrees with the CPU", "[probe]") {
                                vec4(normalize(vec3(q.x, q.y, 0.4f * q.z)), 0), vec4(0.0f),
                                vec4(r(-1.0f, 1.0f), float(k % 3), float(k % 4 == 1), 0)),
                      3.0e-3f});
+    // A cell of the ITCZ's tables: the feature point is hashes (exact); the radius, up to 0.5 cells
+    // times the presence's excess over the hash in units of 0.25 (system_growth), takes the
+    // presence's error (the line's waves' and a bump's, as PROBE_LINE_WAVES': below 1.5e-4 after
+    // the tables' test, tests/test_moving_cover.cpp) times 2. Points near the line, where cells
+    // have systems.
+    const float near_line = r(-0.1f, 0.2f);
+    const vec3 on_line = normalize(vec3(q.x, q.y, 0.0f)) * std::cos(near_line) + vec3(0, 0, std::sin(near_line));
+    cases.push_back({arguments(PROBE_ITCZ_CELL, vec4(0, r(-0.1f, 0.2f), seed, 0), vec4(on_line, 0), vec4(0.0f),
+                               vec4(float(k % 2), float(k % 4 > 1), 0, 0)),
+                     4.0e-4f});
+    // One system's distances: a few roundings of lengths up to 3 cells over radii from 0.1 (and
+    // the anvil's 1.8 x 0.1): 30 x 8 ulp.
+    cases.push_back(
+        {arguments(PROBE_NEARER_SYSTEM, vec4(0, r(0.0f, 40.0f), seed, r(0.0f, 40.0f)), vec4(vec3(r.v(-3.0f, 3.0f)), 0),
+                   vec4(r.v(0.0f, 1.0f).x, r(0.0f, 1.0f), r(0.0f, 1.0f), k % 5 ? r(0.1f, 0.5f) : 0.0f),
+                   vec4(float(k % 3 - 1), float((k / 3) % 3 - 1), float((k / 9) % 3 - 1), float(k % 2))),
+         30 * 8 * kUlp});
+    // Integers, exact; the entries span both tables.
+    cases.push_back({arguments(PROBE_CELL_TABLES, vec4(0, 0, seed, float((k * 1931) % ITCZ_TABLE_CELLS)), vec4(q, 0),
+                               vec4(0.0f), vec4(float(k % 2), 0, 0, 0)),
+                     0.0f});
+    // The distances: as PROBE_CONVECTIVE_DISTANCES' (the same search of 27 cells of 8 or 24 per radius).
+    cases.push_back({arguments(PROBE_ITCZ_DISTANCES, vec4(0, r(-0.1f, 0.2f), seed, 0), vec4(on_line, 0), vec4(0.0f),
+                               vec4(float(k % 2), 0, 0, 0)),
+                     3.0e-3f});
     // The warp: two Perlin values (smooth: their rounding below kFbm) times 0.008 along unit
     // tangents, renormalised: kArithmetic-sized.
     cases.push_back({arguments(PROBE_CONVECTIVE_WARP, vec4(0, seed, 0, 0), vec4(q, 0)), 4 * kArithmetic});

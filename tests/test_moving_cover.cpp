@@ -11,7 +11,9 @@
 #include "core/time.hpp"
 #include "cover/global_cover.hpp"
 #include "cover/moving_flow.hpp"
+#include "cover/weather_systems.hpp"
 #include "gl_support.hpp"
+#include "shader_math/shader_math.hpp"
 
 using namespace nephele;
 
@@ -319,4 +321,63 @@ TEST_CASE("a looped moving cover repeats after its loop, and differs within it",
   INFO("RMS differences: a loop apart " << rms_difference(a, b) << ", half a loop apart " << rms_difference(a, c));
   CHECK(rms_difference(a, b) <= 1e-4);
   CHECK(rms_difference(a, c) > 0.05);
+}
+
+TEST_CASE("the ITCZ's cell tables of both cloud layers hold the cells the density would compute", "[moving]") {
+  // The tables the density pass reads (itcz_cells.comp) against weather_systems.glsl's itcz_cell
+  // in C++, for the older and the younger layer's seeds. The feature points are the same hashes
+  // (exact). A radius depends on the presence at the point, whose GPU and CPU values differ by
+  // the line's waves' rounding: their sums of 5 terms of size up to 1.5 after up to 10 complex
+  // products of unit numbers err by about 20 x 3 x 2^-24 = 4e-6, which moves the line by the
+  // meander's 0.026 and the monsoons' unit weight (5e-6 in sin(latitude)); the presence's
+  // slope is at most 2 / 0.07 per unit of sin(latitude) (bump^2 over the line's width) and
+  // the superclusters' 0.8 x 1.5 / 0.6 per unit of sum: 1.5e-4 in all, taken as kPresence. A
+  // cell whose hash lies within kPresence of its presence may be present on one side only (not
+  // checked); elsewhere the radius, the full one (at most 0.5 cells) times the excess over 0.25
+  // (system_growth), differs by at most 0.5 x 4 kPresence.
+  constexpr float kPresence = 2.0e-4f;
+  test::test_context();
+  cover::CoverParameters p = moving(16, "2000-03-01T06:00Z");
+  cover::GlobalCover cover(p);
+  cover.run();
+  const std::vector<float> tables = cover.itcz_cells().read_floats();
+  const double hours = cover::hours_since_epoch(p.time);
+  const cover::FrameClock clock = cover::frame_clock(p, hours);
+  const glsl::WeatherSystems systems = cover::weather_systems(p, hours);
+  const std::uint32_t seeds[2] = {cover::layer_systems_seed(p, clock.young_layer - 1, clock.layers_in_loop),
+                                  cover::layer_systems_seed(p, clock.young_layer, clock.layers_in_loop)};
+  REQUIRE(seeds[0] != seeds[1]);
+  REQUIRE(tables.size() == 2u * 4u * size_t(glsl::ITCZ_TABLE_CELLS));
+  int present[2][2] = {{0, 0}, {0, 0}}, undecided = 0, candidates = 0;
+  for (int layer = 0; layer < 2; ++layer)
+    for (int index = 0; index < glsl::ITCZ_TABLE_CELLS; ++index) {
+      const glsl::ivec4 cell = glsl::itcz_table_cell(index);
+      const glm::vec4 expected =
+          glsl::itcz_cell(cell.w, glsl::ivec3(cell), systems.itcz_latitude, systems.itcz_waves, seeds[layer]);
+      const float* got = &tables[4 * (2 * size_t(index) + layer)];
+      REQUIRE(got[0] == expected.x);
+      REQUIRE(got[1] == expected.y);
+      REQUIRE(got[2] == expected.z);
+      // The cell's presence and hash, as itcz_cell finds them.
+      const std::uint32_t layer_key = glsl::itcz_layer(cell.w) + 1u;
+      const glm::vec3 h =
+          glsl::hash_to_unit3(glsl::pcg3d(glsl::uvec3(glsl::ivec3(cell)) ^ glsl::noise_key(seeds[layer], layer_key)));
+      const float here = glsl::waved_presence(glm::normalize(glm::vec3(glsl::ivec3(cell)) + glm::vec3(expected)),
+                                              glsl::itcz_presence(cell.w, systems.itcz_latitude),
+                                              glsl::itcz_table_waves(cell.w, systems.itcz_waves), h.y);
+      candidates += here > 0.0f ? 1 : 0;
+      if (std::abs(h.y - here) < kPresence && here > 0.0f) {
+        ++undecided;
+        continue;
+      }
+      REQUIRE(got[3] == Approx(expected.w).epsilon(0).margin(0.5 * 4 * kPresence));
+      present[layer][cell.w == glsl::ITCZ_SYSTEMS_TABLE ? 0 : 1] += expected.w > 0.0f ? 1 : 0;
+    }
+  INFO("cells present: older " << present[0][0] << " and " << present[0][1] << ", younger " << present[1][0] << " and "
+                               << present[1][1] << "; undecided " << undecided << " of " << candidates);
+  // Both layers' tables hold systems of both lattices, different ones (their own seeds).
+  for (int layer = 0; layer < 2; ++layer)
+    for (int table = 0; table < 2; ++table) CHECK(present[layer][table] > 10);
+  // The hashes are uniform: about 2 kPresence of the cells with a presence are undecided.
+  CHECK(undecided <= 3 * 2 * kPresence * candidates + 5);
 }

@@ -592,9 +592,12 @@ TEST_CASE("a convective system's search finds every system whose cloud reaches t
         for (int y = -2; y <= 2; ++y)
           for (int x = -2; x <= 2; ++x) {
             const glsl::ivec3 offset(x, y, z);
-            const vec3 to_point = vec3(offset) + glsl::wrapped_feature_offset(cell + offset, key) - (scaled - base);
+            const vec3 feature = glsl::wrapped_feature_offset(cell + offset, key);
+            const vec3 to_point = vec3(offset) + feature - (scaled - base);
             const vec3 h = glsl::hash_to_unit3(glsl::pcg3d(glsl::uvec3(cell + offset) ^ size_key));
-            const float here = glsl::waved_presence(glm::normalize(scaled + to_point), presence, waves, h.y);
+            // The presence at the system's point, the direction of its lattice position.
+            const float here =
+                glsl::waved_presence(glm::normalize(vec3(cell + offset) + feature), presence, waves, h.y);
             if (h.y >= here) continue;
             const float r = glsl::equal_area_radius(h.x, radii.x, radii.y) * glsl::system_growth(here - h.y, waves);
             all.x = std::min(all.x, glm::length(to_point) / r);
@@ -617,6 +620,42 @@ TEST_CASE("a convective system's search finds every system whose cloud reaches t
   INFO("points a system's cloud can reach: " << reached << ", an anvil's: " << anvils_reached);
   CHECK(reached > 400);
   CHECK(anvils_reached > 400);
+}
+
+TEST_CASE("the ITCZ's cell tables hold each cell a search from the sphere reaches once", "[fast][systems]") {
+  // Every entry names a cell of its table whose index is the entry (a bijection of the tables'
+  // entries onto their cells), and every cell that a 27-cell search from a unit vector reaches
+  // has an entry: the lattice positions of the sphere lie within [-n, n] per axis for n cells
+  // per radius.
+  for (int index = 0; index < glsl::ITCZ_TABLE_CELLS; ++index) {
+    const glsl::ivec4 cell = glsl::itcz_table_cell(index);
+    REQUIRE(cell.w + glsl::convective_table_index(glsl::itcz_lattice_cells(cell.w), glsl::ivec3(cell)) == index);
+  }
+  for (const int table : {glsl::ITCZ_SYSTEMS_TABLE, glsl::ITCZ_TOWERS_TABLE}) {
+    const float n = glsl::itcz_lattice_cells(table);
+    const int side = glsl::convective_table_side(n), cells = side * side * side;
+    CHECK(side == 2 * int(n) + 3);
+    CHECK(table + cells == (table == glsl::ITCZ_SYSTEMS_TABLE ? glsl::ITCZ_TOWERS_TABLE : glsl::ITCZ_TABLE_CELLS));
+    // The extreme cells: a point at +1 (its cell n, its neighbour n + 1) and at -1 (cell -n, -n - 1).
+    CHECK(glsl::convective_table_index(n, glsl::ivec3(int(n) + 1)) == cells - 1);
+    CHECK(glsl::convective_table_index(n, glsl::ivec3(-int(n) - 1)) == 0);
+  }
+  // And from random unit vectors, each neighbour's entry lies in its own table.
+  std::mt19937 random(3);
+  std::normal_distribution<float> normal;
+  for (int k = 0; k < 20000; ++k) {
+    const vec3 p = glm::normalize(vec3(normal(random), normal(random), normal(random)));
+    for (const int table : {glsl::ITCZ_SYSTEMS_TABLE, glsl::ITCZ_TOWERS_TABLE}) {
+      const float n = glsl::itcz_lattice_cells(table);
+      const glsl::ivec3 cell(glm::floor(p * n));
+      const int side = glsl::convective_table_side(n);
+      for (int c = 0; c < glsl::NEIGHBOUR_CELLS; ++c) {
+        const int index = glsl::convective_table_index(n, cell + glsl::neighbour_offset(c));
+        REQUIRE(index >= 0);
+        REQUIRE(index < side * side * side);
+      }
+    }
+  }
 }
 
 TEST_CASE("convective systems' radii cover equal areas in each logarithmic interval of size", "[fast][systems]") {

@@ -41,6 +41,16 @@ layout(rgba32f, binding = 4) uniform readonly image2DArray young_warp_field;
 #ifndef STREETS_DRAWN
 #define STREETS_DRAWN 1
 #endif
+// The ITCZ's cells come from the tables the pass itcz_cells.comp made for the frame, entry e of
+// the cloud layer k at e CLOUD_LAYERS + k (the older layer's systems seed 0, the younger's 1).
+#define CONVECTIVE_CELL_TABLES 1
+layout(std430, binding = 9) readonly buffer ItczCells { vec4 itcz_cells[]; };
+#if MOVING_LAYERS
+uniform uint u_young_systems_seed;  // the younger layer's belts (u_systems.seed: the older's)
+#define TABLED_CONVECTIVE_CELL(seed, entry) itcz_cells[2 * (entry) + ((seed) == u_young_systems_seed ? 1 : 0)]
+#else
+#define TABLED_CONVECTIVE_CELL(seed, entry) itcz_cells[entry]
+#endif
 #include "../lib/cover_density.glsl"
 #include "../lib/weather_systems.glsl"
 #include "../lib/cloud_properties.glsl"
@@ -65,7 +75,6 @@ uniform WeatherSystems u_systems;
 #if MOVING_LAYERS
 uniform FbmParams u_young_cover;  // the younger layer's noise (its own seed)
 uniform float u_young_share;
-uniform uint u_young_systems_seed;  // the younger layer's belts (u_systems.seed: the older's)
 #endif
 
 // The geocentric latitude (radians) of a layer's origin, a unit vector.

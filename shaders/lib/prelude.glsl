@@ -14,6 +14,9 @@
 // of weather_systems.glsl). A loop with a constant count gains nothing: the compiler unrolls it
 // into straight code, which every group runs. On a GPU it is a branch as any other.
 #define SKIPPABLE(condition, count) ((condition) ? (count) : 0)
+// A parameter that only some variants of a function use (a shader's #if): nothing in GLSL, and a
+// use for C++'s warnings.
+#define UNUSED_PARAMETER(name)
 // The textures a library function reads, named by what they hold and passed as parameters
 // (Bruneton's precomputed_atmospheric_scattering does the same): GLSL samplers here; in C++
 // classes that GLSL's texture functions are overloaded for (src/shader_math/hooks.hpp).

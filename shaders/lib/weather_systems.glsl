@@ -321,6 +321,60 @@ float system_growth(float excess, IN(LineWaves) waves) {
   return waves.applies == 0.0f ? 1.0f : min(excess / SYSTEM_GROWTH, 1.0f);
 }
 
+// The system of lattice cell `cell` (convective_distances' lattice, its keys noise_key(seed, layer)
+// and noise_key(seed, layer + 1)): its point's offset from the cell's lower corner (xyz) and its
+// radius in cells (w), 0 where the cell has no system.
+vec4 convective_cell(ivec3 cell, uvec3 key, uvec3 size_key, vec2 radii, vec3 presence, IN(LineWaves) waves) {
+  vec3 feature = wrapped_feature_offset(cell, key);
+  vec3 h = hash_to_unit3(pcg3d(uvec3(cell) ^ size_key));
+  // (A presence of a width beyond the sphere's, presence_everywhere, is its z everywhere.)
+  float here = presence.y < 1.0e5f ? waved_presence(normalize(vec3(cell) + feature), presence, waves, h.y) : presence.z;
+  if (h.y >= here) return vec4(feature, 0.0f);
+  return vec4(feature, equal_area_radius(h.x, radii.x, radii.y) * system_growth(here - h.y, waves));
+}
+
+// A table of a lattice's cells (tabled_convective_distances): every cell a search from a point of
+// the unit sphere reaches, from -(n + 1) to n + 1 along each axis for n cells per radius (a
+// point's cell is within [-n, n], its neighbours one further), x fastest.
+int convective_table_side(float frequency) { return 2 * int(frequency) + 3; }
+int convective_table_index(float frequency, ivec3 cell) {
+  int side = convective_table_side(frequency), centre = side / 2;
+  ivec3 at = cell + ivec3(centre);
+  return (at.z * side + at.y) * side + at.x;
+}
+// The cell of entry `index` of such a table (convective_table_index's inverse).
+ivec3 convective_table_cell(float frequency, int index) {
+  int side = convective_table_side(frequency), centre = side / 2;
+  return ivec3(index % side, (index / side) % side, index / (side * side)) - ivec3(centre);
+}
+
+// A search may read its cells from a table that a pass made for the frame (the density pass's
+// ITCZ, CONVECTIVE_CELL_TABLES: convective_cell of every cell of its lattices, itcz_cells.comp),
+// so that a texel reads each of its 27 cells where it would hash it, find its presence from the
+// line's waves and draw its radius, each the same for every texel around it (about 0.9 of the
+// 5.5 s of the density pass at 1024 per face on llvmpipe). `table`: the entry of its first cell
+// among the tables of the shader (which TABLED_CONVECTIVE_CELL(seed, entry) reads for the cloud
+// layer of `seed`), or NO_CELL_TABLE: computed, as C++ and the other shaders always do.
+const int NO_CELL_TABLE = -1;
+#ifndef CONVECTIVE_CELL_TABLES
+#define CONVECTIVE_CELL_TABLES 0
+#endif
+
+// p's distance to the system of `cell` (offset from p's cell, `f` p's place in its own) with the
+// cell's system `system` (convective_cell), in units of its radius, and to its anvil (as
+// convective_distances), taken into `nearest` where smaller.
+void nearer_system(vec4 system, ivec3 offset, vec3 f, vec3 east, vec3 anvil, INOUT(vec2) nearest) {
+  if (system.w <= 0.0f) return;
+  vec3 to_point = vec3(offset) + vec3(system) - f;
+  float r = system.w;
+  nearest.x = min(nearest.x, length(to_point) / r);
+  if (anvil.x <= 0.0f) return;
+  float along = -dot(to_point, east);  // p's distance east of the point
+  vec3 across = -to_point - along * east;
+  float lagged = (along + anvil.z * r) / anvil.y;
+  nearest.y = min(nearest.y, sqrt(lagged * lagged + dot(across, across)) / (anvil.x * r));
+}
+
 // Convective systems on a lattice of `frequency` cells per radius (noise layer `layer` for the
 // points, layer + 1 for their sizes and presence): at most one at each cell's feature point, a disc
 // of radius equal_area_radius(hash, radii) cells, present where a second hash is below `presence`
@@ -334,9 +388,10 @@ float system_growth(float excess, IN(LineWaves) waves) {
 // radii up to 0.5 cells keep the discs (out to 1.8 radii with the noise, 0.9 cells) and anvils of
 // (spread stretch + lag) r 1.3 up to 1 cell whole (the systems': (1.2 x 1.2 + 0.1) 0.5 x 1.3 = 1.0;
 // the towers': (1.8 x 1.5 + 0.1) 0.27 x 1.3 = 0.98); with the 8, discs reaching half a cell. 1e30
-// where none is near or `searched` is 0.
-vec2 convective_distances(vec3 p, float frequency, uint seed, uint layer, vec2 radii, vec3 presence,
-                          IN(LineWaves) waves, vec3 anvil, int searched) {
+// where none is near or `searched` is 0. tabled_convective_distances reads the cells from `table`
+// (convective_distances: none).
+vec2 tabled_convective_distances(vec3 p, float frequency, uint seed, uint layer, vec2 radii, vec3 presence,
+                                 IN(LineWaves) waves, vec3 anvil, int searched, int table) {
   vec3 scaled = p * frequency;
   vec3 base = floor(scaled);
   ivec3 cell = ivec3(base);
@@ -346,20 +401,22 @@ vec2 convective_distances(vec3 p, float frequency, uint seed, uint layer, vec2 r
   vec2 nearest = vec2(1.0e30f);
   for (int k = 0; k < searched; ++k) {
     ivec3 offset = searched == NEAR_CELLS ? near_offset(k, f) : neighbour_offset(k);
-    vec3 to_point = vec3(offset) + wrapped_feature_offset(cell + offset, key) - f;
-    vec3 h = hash_to_unit3(pcg3d(uvec3(cell + offset) ^ size_key));
-    // (A presence of a width beyond the sphere's, presence_everywhere, is its z everywhere.)
-    float here = presence.y < 1.0e5f ? waved_presence(normalize(scaled + to_point), presence, waves, h.y) : presence.z;
-    if (h.y >= here) continue;
-    float r = equal_area_radius(h.x, radii.x, radii.y) * system_growth(here - h.y, waves);
-    nearest.x = min(nearest.x, length(to_point) / r);
-    if (anvil.x <= 0.0f) continue;
-    float along = -dot(to_point, east);  // p's distance east of the point
-    vec3 across = -to_point - along * east;
-    float lagged = (along + anvil.z * r) / anvil.y;
-    nearest.y = min(nearest.y, sqrt(lagged * lagged + dot(across, across)) / (anvil.x * r));
+#if CONVECTIVE_CELL_TABLES
+    // (A literal table folds this choice away: the compiler inlines every function.)
+    vec4 system = table != NO_CELL_TABLE
+                      ? TABLED_CONVECTIVE_CELL(seed, table + convective_table_index(frequency, cell + offset))
+                      : convective_cell(cell + offset, key, size_key, radii, presence, waves);
+#else
+    UNUSED_PARAMETER(table);
+    vec4 system = convective_cell(cell + offset, key, size_key, radii, presence, waves);
+#endif
+    nearer_system(system, offset, f, east, anvil, nearest);
   }
   return nearest;
+}
+vec2 convective_distances(vec3 p, float frequency, uint seed, uint layer, vec2 radii, vec3 presence,
+                          IN(LineWaves) waves, vec3 anvil, int searched) {
+  return tabled_convective_distances(p, frequency, seed, layer, radii, presence, waves, anvil, searched, NO_CELL_TABLE);
 }
 
 // A convective system's cloud at distance d (in its radii) with the cover's noise as `edge` in
@@ -463,6 +520,43 @@ float itcz_line_band(vec3 now, float itcz_latitude, IN(LineWaves) waves, float e
   return supercluster_activity(sums) * band_profile(offset + 0.5f * ITCZ_LINE_WIDTH * edge, ITCZ_LINE_WIDTH);
 }
 
+// The ITCZ's two lattices, each a table of its cells where the density pass makes them
+// (CONVECTIVE_CELL_TABLES): the mesoscale systems and the towers, with their cells per radius,
+// noise layers, radii, presence about a mean line at `itcz_latitude` and waves (the towers'
+// without the superclusters). A table is named by its first entry: the systems' 19^3 cells
+// (convective_table_side of 8 cells per radius), then the towers' 51^3 (of 24).
+const int ITCZ_SYSTEMS_TABLE = 0;
+const int ITCZ_TOWERS_TABLE = 19 * 19 * 19;
+const int ITCZ_TABLE_CELLS = ITCZ_TOWERS_TABLE + 51 * 51 * 51;
+float itcz_lattice_cells(int table) { return table == ITCZ_SYSTEMS_TABLE ? ITCZ_CELLS : ITCZ_TOWER_CELLS; }
+uint itcz_layer(int table) { return table == ITCZ_SYSTEMS_TABLE ? ITCZ_LAYER : ITCZ_TOWER_LAYER; }
+vec2 itcz_radii(int table) { return table == ITCZ_SYSTEMS_TABLE ? ITCZ_RADII : ITCZ_TOWER_RADII; }
+vec3 itcz_presence(int table, float itcz_latitude) {
+  return table == ITCZ_SYSTEMS_TABLE ? convective_presence_of(itcz_latitude, 0.07f, ITCZ_FILLED)
+                                     : convective_presence_of(itcz_latitude, ITCZ_TOWER_WIDTH, ITCZ_TOWER_FILLED);
+}
+LineWaves itcz_table_waves(int table, IN(LineWaves) waves) {
+  return table == ITCZ_SYSTEMS_TABLE ? waves : without_superclusters(waves);
+}
+// The system of `cell` of the ITCZ's lattice `table` (convective_cell): the tables' entries.
+vec4 itcz_cell(int table, ivec3 cell, float itcz_latitude, IN(LineWaves) waves, uint seed) {
+  uint layer = itcz_layer(table);
+  return convective_cell(cell, noise_key(seed, layer), noise_key(seed, layer + 1u), itcz_radii(table),
+                         itcz_presence(table, itcz_latitude), itcz_table_waves(table, waves));
+}
+// The cell of the ITCZ's tables' entry `index` (in [0, ITCZ_TABLE_CELLS)): xyz, and its table in w.
+ivec4 itcz_table_cell(int index) {
+  int table = index < ITCZ_TOWERS_TABLE ? ITCZ_SYSTEMS_TABLE : ITCZ_TOWERS_TABLE;
+  return ivec4(convective_table_cell(itcz_lattice_cells(table), index - table), table);
+}
+// The distances of itcz_systems from one of its lattices (convective_distances).
+vec2 itcz_distances(int table, vec3 p, float itcz_latitude, IN(LineWaves) waves, uint seed, int searched) {
+  vec3 anvil = table == ITCZ_SYSTEMS_TABLE ? SYSTEM_ANVIL : TOWER_ANVIL;
+  return tabled_convective_distances(p, itcz_lattice_cells(table), seed, itcz_layer(table), itcz_radii(table),
+                                     itcz_presence(table, itcz_latitude), itcz_table_waves(table, waves), anvil,
+                                     searched, table);
+}
+
 // The ITCZ's convective systems: (the systems' and towers' cloud, the systems' anvils and the
 // superclusters' band), both in [0, 1], with the line's `waves`. The systems are drawn at p, the
 // air's origin of geocentric `latitude`, carried by the flow as the rest of the cloud (none beyond
@@ -475,12 +569,8 @@ vec2 itcz_systems(vec3 p, float band, float latitude, float itcz_latitude, IN(Li
   int searched = SKIPPABLE(near, NEIGHBOUR_CELLS);
   int towers_searched = SKIPPABLE(off_line < ITCZ_TOWER_REACH, NEIGHBOUR_CELLS);
   p = convective_warp(p, seed, SKIPPABLE(near, 2));
-  vec2 systems = convective_distances(p, ITCZ_CELLS, seed, ITCZ_LAYER, ITCZ_RADII,
-                                      convective_presence_of(itcz_latitude, 0.07f, ITCZ_FILLED), waves, SYSTEM_ANVIL,
-                                      searched);
-  vec2 towers = convective_distances(p, ITCZ_TOWER_CELLS, seed, ITCZ_TOWER_LAYER, ITCZ_TOWER_RADII,
-                                     convective_presence_of(itcz_latitude, ITCZ_TOWER_WIDTH, ITCZ_TOWER_FILLED),
-                                     without_superclusters(waves), TOWER_ANVIL, towers_searched);
+  vec2 systems = itcz_distances(ITCZ_SYSTEMS_TABLE, p, itcz_latitude, waves, seed, searched);
+  vec2 towers = itcz_distances(ITCZ_TOWERS_TABLE, p, itcz_latitude, waves, seed, towers_searched);
   if (!near) return vec2(ITCZ_LINE_DEPTH * band, band);
   return vec2(max(convective_cloud(min(systems.x, towers.x), edge, CORE_EDGE_REACH), ITCZ_LINE_DEPTH * band),
               max(convective_cloud(min(systems.y, towers.y), edge, ANVIL_EDGE_REACH), band));

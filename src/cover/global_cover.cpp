@@ -508,6 +508,23 @@ void GlobalCover::upload_surface_bias() {
   glTextureParameteri(surface_bias_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
 }
 
+void GlobalCover::make_itcz_cells(const glsl::WeatherSystems& systems, const std::vector<std::uint32_t>& seeds) {
+  const size_t entries = seeds.size() * static_cast<size_t>(glsl::ITCZ_TABLE_CELLS);
+  if (itcz_cells_.bytes() != entries * sizeof(glsl::vec4))
+    itcz_cells_ = gpu::StorageBuffer(entries * sizeof(glsl::vec4));
+  namespace cells = shader_bindings::cover_itcz_cells;
+  itcz_cells_.bind(cells::itcz_cells);
+  glsl::set_uniform(itcz_cells_program_, "u_systems", systems);
+  for (size_t layer = 0; layer < seeds.size(); ++layer) {
+    itcz_cells_program_.set("u_seed", seeds[layer]);
+    itcz_cells_program_.set("u_layers", static_cast<int>(seeds.size()));
+    itcz_cells_program_.set("u_layer", static_cast<int>(layer));
+    itcz_cells_program_.dispatch_covering(glsl::ITCZ_TABLE_CELLS, 1, 1);
+  }
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  itcz_cells_.bind(shader_bindings::cover_cover_density::itcz_cells);
+}
+
 void GlobalCover::run_density() {
   timed("density", [&] {
     glsl::set_uniform(density_program_, "u_cover", density_params(parameters_));
@@ -525,6 +542,10 @@ void GlobalCover::run_density() {
                            layer_systems_seed(parameters_, clock_.young_layer, clock_.layers_in_loop));
     }
     glsl::set_uniform(density_program_, "u_systems", systems);
+    std::vector<std::uint32_t> seeds{systems.seed};
+    if (moving(parameters_))
+      seeds.push_back(layer_systems_seed(parameters_, clock_.young_layer, clock_.layers_in_loop));
+    make_itcz_cells(systems, seeds);
     if (!surface_bias_.id()) upload_surface_bias();
     namespace density = shader_bindings::cover_cover_density;
     if (moving(parameters_)) {

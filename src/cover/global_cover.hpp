@@ -1,6 +1,7 @@
 #pragma once
 // The global cloud cover: identity, curl, warp, density and coverage passes over cube maps.
 // Needs a current OpenGL 4.5 context.
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -15,6 +16,7 @@
 #include "cover/latitude_profile.hpp"
 #include "cover/moving_flow.hpp"
 #include "gpu/compute_program.hpp"
+#include "gpu/storage_buffer.hpp"
 #include "gpu/textures.hpp"
 #include "cover/stability.hpp"
 
@@ -93,6 +95,10 @@ class GlobalCover {
   // The share of a cloudy texel's density excess that its cover shows (cover_density.glsl's
   // cover_contrast: below 1 in the trades' shallow cumulus), from the density pass.
   const gpu::Texture& cover_contrast_field() const { return cover_contrast_field_; }
+  // The ITCZ's cells the density pass read (weather_systems.glsl's itcz_cell, a vec4 per entry):
+  // entry e of the older cloud layer (the steady flow's only) at e, of the moving flow's layers at
+  // 2 e (the older's) and 2 e + 1 (the younger's).
+  const gpu::StorageBuffer& itcz_cells() const { return itcz_cells_; }
   const CoverageCalibration& calibration() const { return coverage_.result(); }
   // The latitude profile's calibration (absent with --profile flat, whose threshold is
   // calibration().threshold).
@@ -120,6 +126,8 @@ class GlobalCover {
   // Dispatches a pass over every texel of the region's maps (owned and halo).
   void dispatch_texels(const gpu::ComputeProgram& program) const;
   void upload_surface_bias();  // the land/ocean bias grid (surface_bias.hpp), once
+  // The ITCZ's cells of the frame for the cloud layers of `seeds` (1 or 2), before the density.
+  void make_itcz_cells(const glsl::WeatherSystems& systems, const std::vector<std::uint32_t>& seeds);
 
   CoverParameters parameters_;
   CubeRegion region_;
@@ -129,7 +137,9 @@ class GlobalCover {
   std::unique_ptr<gpu::ComputeProgram> spline_samples_program_, spline_prefilter_program_;
   gpu::ComputeProgram warp_program_;     // the integrator's and curl mode's variant
   gpu::ComputeProgram density_program_;  // with MOVING_LAYERS for --flow moving
-  FrameClock clock_;                     // --flow moving: the frame's clock at parameters_.time (set_time renews it)
+  gpu::ComputeProgram itcz_cells_program_{"cover/itcz_cells.comp"};
+  gpu::StorageBuffer itcz_cells_;
+  FrameClock clock_;  // --flow moving: the frame's clock at parameters_.time (set_time renews it)
   std::unique_ptr<gpu::ComputeProgram>
       moving_warp_programs_[2];                                  // --flow moving: per texel, from the warp grid's nodes
   std::unique_ptr<gpu::ComputeProgram> warp_from_grid_program_;  // the warp grid's spline at the texels

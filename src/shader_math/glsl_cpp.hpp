@@ -14,6 +14,8 @@
 #define INOUT(T) T&
 // Work a group of SIMD lanes can skip (prelude.glsl): here a plain loop count.
 #define SKIPPABLE(condition, count) ((condition) ? (count) : 0)
+// A parameter that only some variants of a function use (prelude.glsl).
+#define UNUSED_PARAMETER(name) static_cast<void>(name)
 
 namespace nephele::glsl {
 using namespace glm;

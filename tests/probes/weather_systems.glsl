@@ -57,6 +57,19 @@ const int PROBE_LINE_LATITUDE = 35;          // itcz_line_latitude(p, a, probe_m
 const int PROBE_TRADE_CLUMP = 30;            // trade_clump(p, a, uint(b), FLOWERS_LAYER, (0.2, 0.45), c, x[3].y (the
                                              // rim), x[3].x, all cells), rimmed_cloud(x[3].z, x[3].x, 0.3, x[3].y),
                                              // presence_everywhere(c)'s y and z
+const int PROBE_ITCZ_CELL = 36;              // itcz_cell(table, floor(p * its cells per radius), a, line_waves_of(uint(b),
+                                             // a), uint(b)), the towers' table where x[3].x > 1/2, the systems' else;
+                                             // where x[3].y > 1/2 convective_cell of that cell with keys of layers 7
+                                             // and 8, radii (0.2, 0.4), presence_everywhere(0.6) and no waves
+const int PROBE_CELL_TABLES = 37;            // convective_table_index(n, floor(p * n)) and convective_table_side(n) for n
+                                             // = itcz_lattice_cells(the table as PROBE_ITCZ_CELL's); itcz_table_cell(
+                                             // int(c)) as x + 100 y + 10000 z + 1e6 (towers' table) and
+                                             // convective_table_cell(n, int(c) % side^3) as x + 100 y + 10000 z
+const int PROBE_ITCZ_DISTANCES = 38;         // itcz_distances(the table as PROBE_ITCZ_CELL's, p, a, line_waves_of(
+                                             // uint(b), a), uint(b), 27), and tabled_convective_distances of its
+                                             // lattice with NO_CELL_TABLE in zw
+const int PROBE_NEARER_SYSTEM = 39;          // nearer_system(x[2], ivec3(x[3].xyz), fract(p), local_east(p), the
+                                             // towers' anvil where x[3].w > 1/2 or none, from nearest (a, c))
 #ifndef __cplusplus
 #include "../lib/weather_systems.glsl"
 #endif
@@ -121,6 +134,37 @@ vec4 probe_weather_systems(mat4 x) {
                                      x[3].z > 0.5f ? 0 : NEIGHBOUR_CELLS),
                 itcz_systems(p, x[3].w, latitude, x[0].w, line_waves_of(seed, x[0].w), seed, x[3].x));
   if (f == PROBE_CONVECTIVE_WARP) return vec4(convective_warp(p, seed, 2), 0.0f);
+  int table = x[3].x > 0.5f ? ITCZ_TOWERS_TABLE : ITCZ_SYSTEMS_TABLE;
+  float lattice = itcz_lattice_cells(table);
+  if (f == PROBE_ITCZ_CELL) {
+    ivec3 cell = ivec3(floor(p * lattice));
+    if (x[3].y > 0.5f)
+      return convective_cell(cell, noise_key(seed, 7u), noise_key(seed, 8u), vec2(0.2f, 0.4f), presence_everywhere(0.6f),
+                             no_line_waves());
+    return itcz_cell(table, cell, x[0].y, line_waves_of(seed, x[0].y), seed);
+  }
+  if (f == PROBE_CELL_TABLES) {
+    int side = convective_table_side(lattice);
+    ivec4 entry = itcz_table_cell(int(x[0].w));
+    ivec3 cell = convective_table_cell(lattice, int(x[0].w) % (side * side * side));
+    return vec4(float(convective_table_index(lattice, ivec3(floor(p * lattice)))), float(side),
+                float(entry.x + 100 * entry.y + 10000 * entry.z + (entry.w == ITCZ_SYSTEMS_TABLE ? 0 : 1000000)),
+                float(cell.x + 100 * cell.y + 10000 * cell.z));
+  }
+  if (f == PROBE_NEARER_SYSTEM) {
+    vec2 nearest = vec2(x[0].y, x[0].w);
+    nearer_system(x[2], ivec3(int(x[3].x), int(x[3].y), int(x[3].z)), fract(p), local_east(p),
+                  x[3].w > 0.5f ? TOWER_ANVIL : NO_ANVIL, nearest);
+    return vec4(nearest, 0.0f, 0.0f);
+  }
+  if (f == PROBE_ITCZ_DISTANCES) {
+    LineWaves waves = line_waves_of(seed, x[0].y);
+    return vec4(itcz_distances(table, p, x[0].y, waves, seed, NEIGHBOUR_CELLS),
+                tabled_convective_distances(p, lattice, seed, itcz_layer(table), itcz_radii(table),
+                                            itcz_presence(table, x[0].y), itcz_table_waves(table, waves),
+                                            table == ITCZ_SYSTEMS_TABLE ? SYSTEM_ANVIL : TOWER_ANVIL, NEIGHBOUR_CELLS,
+                                            NO_CELL_TABLE));
+  }
   if (f == PROBE_LINE_PARTS)
     return vec4(complex_product(vec2(x[3].x, x[3].y), vec2(x[3].z, x[3].w)), line_meander(vec3(x[0].y, x[0].w, 0.0f)),
                 line_shift(vec3(x[0].y, x[0].w, x[2].x), line_waves_of(seed, 0.1f)));

@@ -1,0 +1,43 @@
+#include "gpu/storage_buffer.hpp"
+
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+namespace nephele::gpu {
+
+StorageBuffer::StorageBuffer(size_t bytes) : bytes_(bytes) {
+  glCreateBuffers(1, &id_);
+  glNamedBufferStorage(id_, static_cast<GLsizeiptr>(bytes), nullptr, GL_DYNAMIC_STORAGE_BIT);
+  if (glGetError() != GL_NO_ERROR) {
+    glDeleteBuffers(1, &id_);
+    throw std::runtime_error("could not allocate a storage buffer of " + std::to_string(bytes) + " bytes");
+  }
+}
+
+StorageBuffer::~StorageBuffer() {
+  if (id_) glDeleteBuffers(1, &id_);
+}
+
+StorageBuffer::StorageBuffer(StorageBuffer&& other) noexcept
+    : id_(std::exchange(other.id_, 0)), bytes_(std::exchange(other.bytes_, 0)) {}
+
+StorageBuffer& StorageBuffer::operator=(StorageBuffer&& other) noexcept {
+  if (this != &other) {
+    if (id_) glDeleteBuffers(1, &id_);
+    id_ = std::exchange(other.id_, 0);
+    bytes_ = std::exchange(other.bytes_, 0);
+  }
+  return *this;
+}
+
+void StorageBuffer::bind(GLuint binding) const { glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding, id_); }
+
+std::vector<float> StorageBuffer::read_floats() const {
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  std::vector<float> out(bytes_ / sizeof(float));
+  if (!out.empty()) glGetNamedBufferSubData(id_, 0, static_cast<GLsizeiptr>(out.size() * sizeof(float)), out.data());
+  return out;
+}
+
+}  // namespace nephele::gpu
