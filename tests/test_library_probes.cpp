@@ -1328,6 +1328,11 @@ TEST_CASE("cube_sampling.glsl on the GPU agrees with the CPU", "[probe]") {
     for (int j = -1; j <= CUBE_PROBE_SIZE; ++j)
       for (int i = -1; i <= CUBE_PROBE_SIZE; ++i)  // every texel, edge and corner neighbour
         cases.push_back({arguments(PROBE_CUBE_TEXEL_EXTENDED, vec4(float(face), float(i), float(j), 0)), kExact});
+  // The addresses are integers (exact); the footprint's sample is the bilinear sample's arithmetic.
+  for (int k = 0; k < 64; ++k)
+    cases.push_back({arguments(PROBE_CUBE_FOOTPRINT, vec4(float(k % 6), float(k % 6 - 1), float(k / 6 % 6 - 1), 0),
+                               vec4(normalize(vec3(r.v(-1.0f, 1.0f)) + vec3(1e-3f)), 0)),
+                     kBilinear});
   for (int k = 0; k < 64; ++k)
     cases.push_back(
         {arguments(PROBE_SAMPLE_CUBE_BILINEAR, vec4(0.0f), vec4(normalize(vec3(r.v(-1.0f, 1.0f)) + vec3(1e-3f)), 0)),

@@ -46,9 +46,11 @@ TEST_CASE("the named binding points of the shaders are those the driver reports"
     int point;  // from shader_bindings.hpp
   };
   const std::vector<Expected> expected = {
-      {"cover/equirect.comp", "source_cube", false, b::cover_equirect::source_cube},
-      {"cover/equirect.comp", "equirect", false, b::cover_equirect::equirect},
+      {"cover/equirect.comp", "source_cubes", false, b::cover_equirect::source_cubes},
+      {"cover/equirect.comp", "EquirectTile", true, b::cover_equirect::equirect_tile},
       {"cover/equirect.comp", "RowDirections", true, b::cover_equirect::row_directions},
+      {"cover/cover_density.comp", "ItczCells", true, b::cover_cover_density::itcz_cells},
+      {"cover/itcz_cells.comp", "ItczCells", true, b::cover_itcz_cells::itcz_cells},
       {"model/density.comp", "u_density", false, b::model_density::u_density},
       {"model/density.comp", "Primitives", true, b::model_density::primitives},
       {"model/density.comp", "Jobs", true, b::model_density::jobs},

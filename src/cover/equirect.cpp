@@ -4,9 +4,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <stdexcept>
+#include <string>
 
 #include "gpu/shader_bindings.hpp"
 #include "gpu/compute_program.hpp"
+#include "gpu/storage_buffer.hpp"
 
 namespace nephele::cover {
 
@@ -23,46 +27,74 @@ std::vector<glm::vec2> geodetic_row_directions(int height) {
   return rows;
 }
 
-std::vector<PixelTile> equirect_tiles(int width, int height, int max_tile) {
+std::vector<PixelTile> equirect_tiles(int width, int height, int max_tile, int max_rows) {
+  const int rows = max_rows > 0 ? std::min(max_rows, max_tile) : max_tile;
   std::vector<PixelTile> tiles;
-  for (int y = 0; y < height; y += max_tile)
+  for (int y = 0; y < height; y += rows)
     for (int x = 0; x < width; x += max_tile)
-      tiles.push_back({x, y, std::min(max_tile, width - x), std::min(max_tile, height - y)});
+      tiles.push_back({x, y, std::min(max_tile, width - x), std::min(rows, height - y)});
   return tiles;
 }
 
-std::vector<float> equirect_from_cube(const gpu::Texture& cube, int width, int height, int max_tile,
-                                      gpu::DeviceTimer* device) {
+std::vector<float> equirect_from_cubes(const std::vector<const gpu::Texture*>& cubes, int width, int height,
+                                       int max_tile, gpu::DeviceTimer* device) {
+  const int channels = static_cast<int>(cubes.size());
+  if (channels < 1 || channels > max_equirect_channels)
+    throw std::invalid_argument("equirect_from_cubes: 1 to 3 cube maps, not " + std::to_string(channels));
   if (max_tile <= 0) {
     GLint max_side = 0;
     glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_side);
     max_tile = std::min(default_equirect_tile, static_cast<int>(max_side));
   }
-  gpu::ComputeProgram program("cover/equirect.comp");
+  // A tile's pixels are one storage block: at most the driver's block size (llvmpipe: 128 MiB, a
+  // 4096 x 2048 tile of three channels fits), so wide tiles are made shorter.
+  GLint64 max_block = 0;
+  glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &max_block);
+  const std::int64_t tile_width = std::min(max_tile, width);
+  const int max_rows = static_cast<int>(
+      std::max<std::int64_t>(1, std::min<std::int64_t>(max_tile, max_block / (tile_width * channels * 4))));
+  gpu::ComputeProgram program("cover/equirect.comp", {{"CHANNELS", std::to_string(channels)}});
   const std::vector<glm::vec2> rows = geodetic_row_directions(height);
-  GLuint buffer = 0;
-  glCreateBuffers(1, &buffer);
-  glNamedBufferStorage(buffer, static_cast<GLsizeiptr>(rows.size() * sizeof(glm::vec2)), rows.data(), 0);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, shader_bindings::cover_equirect::row_directions, buffer);
-  cube.bind_image(shader_bindings::cover_equirect::source_cube, GL_READ_ONLY);
+  gpu::StorageBuffer directions(rows.size() * sizeof(glm::vec2));
+  glNamedBufferSubData(directions.id(), 0, static_cast<GLsizeiptr>(directions.bytes()), rows.data());
+  directions.bind(shader_bindings::cover_equirect::row_directions);
+  for (int c = 0; c < channels; ++c)
+    cubes[static_cast<size_t>(c)]->bind_image(shader_bindings::cover_equirect::source_cubes + c, GL_READ_ONLY);
   program.set("u_width", width);
-  std::vector<float> pixels(static_cast<size_t>(width) * static_cast<size_t>(height));
-  for (const PixelTile& tile : equirect_tiles(width, height, max_tile)) {
-    gpu::Texture target = gpu::Texture::plane(tile.width, tile.height, GL_R32F);
-    target.bind_image(shader_bindings::cover_equirect::equirect, GL_WRITE_ONLY);
+  std::vector<float> pixels(static_cast<size_t>(width) * static_cast<size_t>(height) * static_cast<size_t>(channels));
+  const std::vector<PixelTile> tiles = equirect_tiles(width, height, max_tile, max_rows);
+  gpu::StorageBuffer tile_pixels;
+  std::vector<float> part;
+  for (const PixelTile& tile : tiles) {
+    const size_t floats = static_cast<size_t>(tile.width) * static_cast<size_t>(tile.height) * channels;
+    if (tile_pixels.bytes() < floats * sizeof(float)) tile_pixels = gpu::StorageBuffer(floats * sizeof(float));
+    tile_pixels.bind(shader_bindings::cover_equirect::equirect_tile);
+    program.set("u_tile_size", glm::ivec2(tile.width, tile.height));
     program.set("u_origin_x", tile.x);
     program.set("u_origin_y", tile.y);
     if (device) device->begin();
     program.dispatch_covering(tile.width, tile.height, 1);
     if (device) device->end();
-    gpu::image_barrier();
-    const std::vector<float> part = target.read();
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    const size_t row = static_cast<size_t>(width) * channels;
+    float* first = pixels.data() + static_cast<size_t>(tile.y) * row + static_cast<size_t>(tile.x) * channels;
+    // A tile as wide as the map is a run of the map's rows: read in place.
+    if (tile.width == width) {
+      glGetNamedBufferSubData(tile_pixels.id(), 0, static_cast<GLsizeiptr>(floats * sizeof(float)), first);
+      continue;
+    }
+    part.resize(floats);
+    glGetNamedBufferSubData(tile_pixels.id(), 0, static_cast<GLsizeiptr>(floats * sizeof(float)), part.data());
+    const size_t tile_row = static_cast<size_t>(tile.width) * channels;
     for (int r = 0; r < tile.height; ++r)
-      std::copy_n(part.begin() + static_cast<std::ptrdiff_t>(r) * tile.width, tile.width,
-                  pixels.begin() + (static_cast<std::ptrdiff_t>(tile.y + r) * width + tile.x));
+      std::copy_n(part.begin() + static_cast<std::ptrdiff_t>(r * tile_row), tile_row, first + r * row);
   }
-  glDeleteBuffers(1, &buffer);
   return pixels;
+}
+
+std::vector<float> equirect_from_cube(const gpu::Texture& cube, int width, int height, int max_tile,
+                                      gpu::DeviceTimer* device) {
+  return equirect_from_cubes({&cube}, width, height, max_tile, device);
 }
 
 std::vector<float> equirect_from_faces(int face_size, const std::vector<float>& texels, int width, int height) {

@@ -20,19 +20,26 @@ struct PixelTile {
   int x = 0, y = 0, width = 0, height = 0;
 };
 
-// Tiles of at most max_tile x max_tile pixels covering width x height exactly once, row by row.
-std::vector<PixelTile> equirect_tiles(int width, int height, int max_tile);
+// Tiles of at most max_tile x max_tile pixels covering width x height exactly once, row by row;
+// at most max_rows high where it is above 0.
+std::vector<PixelTile> equirect_tiles(int width, int height, int max_tile, int max_rows = 0);
 
 // The export's tile edge: small enough for any driver's 2D texture limit (OpenGL 4.5 guarantees
 // 16384) and for llvmpipe's 1 GiB per texture; 64 MiB of R32F per tile.
 constexpr int default_equirect_tile = 4096;
 
-// Resamples `cube` (GL_R32F) to width x height; longitude -180 deg at the left edge. The map is
-// made in tiles of at most max_tile (0: default_equirect_tile, capped by GL_MAX_TEXTURE_SIZE)
-// and assembled here, so that maps wider than the driver's texture limit (4 x 16384 for the
-// largest cover) work; every pixel is computed from its place in the whole map, so any tiling
-// gives the same bits.
+// Resamples `cubes` (1 to max_equirect_channels cube maps of GL_R32F) to width x height pixels of
+// as many channels, interleaved (the image files' order); longitude -180 deg at the left edge.
+// The map is made in tiles of at most max_tile (0: default_equirect_tile, capped by
+// GL_MAX_TEXTURE_SIZE), shorter where a tile would exceed the driver's storage block size, and
+// assembled here (a tile as wide as the map read in place), so that maps wider than the driver's
+// limits (4 x 16384 for the largest cover) work; every pixel is computed from its place in the
+// whole map, so any tiling gives the same bits.
 // `device`, when given, measures the GPU time of the tiles' dispatches (not their read-backs).
+constexpr int max_equirect_channels = 3;
+std::vector<float> equirect_from_cubes(const std::vector<const gpu::Texture*>& cubes, int width, int height,
+                                       int max_tile = 0, gpu::DeviceTimer* device = nullptr);
+// The same for one cube map.
 std::vector<float> equirect_from_cube(const gpu::Texture& cube, int width, int height, int max_tile = 0,
                                       gpu::DeviceTimer* device = nullptr);
 // The same for six one-channel faces in host memory (GL order, rows from t = 0), uploaded as a

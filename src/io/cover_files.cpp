@@ -345,22 +345,31 @@ CoverExport write_cover_files(files::OutputSet& outputs, const cover::GlobalCove
       timed("preview", [&] { images.preview = std::make_shared<core::ImageData>(preview_image(size, faces->cover)); });
   }
   if (options.equirect || (options.preview && !reduce_preview)) {
-    // Resampled once on the GPU; both files come from this map (the preview up to its limit).
+    // Resampled once on the GPU, the channels interleaved as the EXR takes them; both files come
+    // from this map (the preview, up to its limit, from its cover channel).
     const int width = 4 * size, height = 2 * size;
-    CoverPlanes map;
+    const size_t pixels = static_cast<size_t>(width) * height;
+    std::vector<float> map;
     timed("equirect", [&] {
-      map.cover = cover::equirect_from_cube(cover.cover_field(), width, height);
-      if (options.equirect) {
-        map.optical_thickness = cover::equirect_from_cube(cover.optical_thickness_field(), width, height);
-        map.cloud_top = cover::equirect_from_cube(cover.cloud_top_field(), width, height);
-      }
+      if (options.equirect)
+        map = cover::equirect_from_cubes(
+            {&cover.cover_field(), &cover.optical_thickness_field(), &cover.cloud_top_field()}, width, height);
+      else
+        map = cover::equirect_from_cube(cover.cover_field(), width, height);
     });
+    if (options.preview && !reduce_preview) {
+      std::vector<float> cover_channel;
+      if (options.equirect) {
+        cover_channel.resize(pixels);
+        for (size_t k = 0; k < pixels; ++k) cover_channel[k] = map[CoverPlanes::count * k];
+      } else {
+        cover_channel = std::move(map);
+      }
+      images.preview = std::make_shared<core::ImageData>(core::ImageData{width, height, 1, std::move(cover_channel)});
+    }
     if (options.equirect)
       images.equirect = std::make_shared<core::ImageData>(
-          core::ImageData{width, height, static_cast<int>(cover_channels.size()),
-                          interleaved_channels(map, 0, static_cast<std::size_t>(width) * height)});
-    if (options.preview && !reduce_preview)
-      images.preview = std::make_shared<core::ImageData>(core::ImageData{width, height, 1, std::move(map.cover)});
+          core::ImageData{width, height, static_cast<int>(cover_channels.size()), std::move(map)});
   }
   write_cover_images(outputs, images, options, result);
   outputs.write("cover.json", json::write(cover_sidecar(cover, context, result.timings, options)));
