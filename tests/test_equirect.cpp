@@ -61,3 +61,30 @@ TEST_CASE("equirect export puts longitude -180 at the left edge and north at the
     CHECK(worst < 3.0 * (1.0 / size) * (1.0 / size) * 2.0);
   }
 }
+
+TEST_CASE("cube maps resampled together give each map's own equirect map, interleaved, in any tiling", "[equirect]") {
+  // Three maps of different content resampled in one pass (one footprint a pixel for all) against
+  // each alone: the same arithmetic on the same texels, so the same bits; and tiles of 7 pixels,
+  // which split rows and columns, the same bits again.
+  test::test_context();
+  const int size = 16, width = 64, height = 32;
+  std::vector<gpu::Texture> cubes;
+  for (int k = 0; k < 3; ++k) {
+    std::vector<float> texels(6 * size * size);
+    for (size_t t = 0; t < texels.size(); ++t) texels[t] = std::sin(0.37f * float(t) * float(k + 1)) + float(k);
+    cubes.push_back(gpu::Texture::cube(size, GL_R32F));
+    cubes.back().write(texels);
+  }
+  const std::vector<const gpu::Texture*> all = {&cubes[0], &cubes[1], &cubes[2]};
+  const auto together = cover::equirect_from_cubes(all, width, height);
+  const auto tiled = cover::equirect_from_cubes(all, width, height, 7);
+  REQUIRE(together.size() == 3u * width * height);
+  CHECK(tiled == together);
+  for (int k = 0; k < 3; ++k) {
+    const auto alone = cover::equirect_from_cube(cubes[k], width, height);
+    int differing = 0;
+    for (size_t p = 0; p < alone.size(); ++p) differing += alone[p] == together[3 * p + k] ? 0 : 1;
+    INFO("map " << k);
+    CHECK(differing == 0);
+  }
+}

@@ -46,10 +46,11 @@ std::vector<float> equirect_from_cubes(const std::vector<const gpu::Texture*>& c
     glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_side);
     max_tile = std::min(default_equirect_tile, static_cast<int>(max_side));
   }
-  // A tile's pixels are one storage block: at most the driver's block size (llvmpipe: 128 MiB, a
-  // 4096 x 2048 tile of three channels fits), so wide tiles are made shorter.
+  // A tile's pixels are one storage block, of at most equirect_tile_bytes (and the driver's block
+  // size): the block is read straight into the map, so a larger one would only hold more memory.
   GLint64 max_block = 0;
   glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &max_block);
+  max_block = std::min<GLint64>(max_block, equirect_tile_bytes);
   const std::int64_t tile_width = std::min(max_tile, width);
   const int max_rows = static_cast<int>(
       std::max<std::int64_t>(1, std::min<std::int64_t>(max_tile, max_block / (tile_width * channels * 4))));

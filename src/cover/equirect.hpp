@@ -27,11 +27,14 @@ std::vector<PixelTile> equirect_tiles(int width, int height, int max_tile, int m
 // The export's tile edge: small enough for any driver's 2D texture limit (OpenGL 4.5 guarantees
 // 16384) and for llvmpipe's 1 GiB per texture; 64 MiB of R32F per tile.
 constexpr int default_equirect_tile = 4096;
+// The largest storage block of a tile's pixels (16 MiB: 341 rows of a 1024 cover's map of three
+// channels).
+constexpr long equirect_tile_bytes = 16L << 20;
 
 // Resamples `cubes` (1 to max_equirect_channels cube maps of GL_R32F) to width x height pixels of
 // as many channels, interleaved (the image files' order); longitude -180 deg at the left edge.
 // The map is made in tiles of at most max_tile (0: default_equirect_tile, capped by
-// GL_MAX_TEXTURE_SIZE), shorter where a tile would exceed the driver's storage block size, and
+// GL_MAX_TEXTURE_SIZE), shorter where a tile would exceed equirect_tile_bytes, and
 // assembled here (a tile as wide as the map read in place), so that maps wider than the driver's
 // limits (4 x 16384 for the largest cover) work; every pixel is computed from its place in the
 // whole map, so any tiling gives the same bits.
