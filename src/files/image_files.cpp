@@ -124,6 +124,7 @@ void check_encoding(int channels, const ImageEncoding& encoding, const std::stri
 
 struct ImageRowWriter::State {
   std::filesystem::path path;
+  std::string shown;  // the name errors give
   core::FileDescriptor fd;
   std::unique_ptr<PngEncoder> png;                                                            // PNG (libpng)
   std::unique_ptr<ImageWriterHandle, void (*)(ImageWriterHandle*)> writer{nullptr, nullptr};  // else
@@ -131,14 +132,15 @@ struct ImageRowWriter::State {
 };
 
 ImageRowWriter::ImageRowWriter(const std::filesystem::path& path, int width, int height, int channels,
-                               const ImageEncoding& encoding)
+                               const ImageEncoding& encoding, const std::string& shown_as)
     : state_(std::make_unique<State>()) {
   State& s = *state_;
   s.path = path;
   s.width = width;
   s.height = height;
   s.channels = channels;
-  const std::string shown = path.string();
+  const std::string shown = shown_as.empty() ? path.string() : shown_as;
+  s.shown = shown;
   check_encoding(channels, encoding, shown);
   const ImageCodecs* codecs = encoding.format == ImageFormat::png ? nullptr : &image_codecs();
   s.fd.reset(::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_NOFOLLOW | O_CLOEXEC, 0666));
@@ -170,13 +172,14 @@ void ImageRowWriter::close() {
   State& s = *state_;
   if (s.next_row != s.height)
     throw std::logic_error("ImageRowWriter: " + std::to_string(s.next_row) + " of " + std::to_string(s.height) +
-                           " rows written to " + s.path.string());
+                           " rows written to " + s.shown);
   if (s.png)
     s.png->finish();
   else
     image_codecs().finish_writer(s.writer.get());
-  if (::fsync(s.fd.get()) != 0) throw std::runtime_error("could not write " + s.path.string() + " (fsync)");
-  if (!s.fd.close()) throw std::runtime_error("could not write " + s.path.string() + " (close)");
+  if (::fsync(s.fd.get()) != 0)
+    throw std::runtime_error("could not write " + s.shown + " (fsync): " + std::strerror(errno));
+  if (!s.fd.close()) throw std::runtime_error("could not write " + s.shown + " (close): " + std::strerror(errno));
 }
 
 namespace {

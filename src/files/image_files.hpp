@@ -75,7 +75,9 @@ std::vector<unsigned char> encode_image(const ImageData& image, const ImageEncod
 // for the caller's output set to remove.
 class ImageRowWriter {
  public:
-  ImageRowWriter(const std::filesystem::path& path, int width, int height, int channels, const ImageEncoding& encoding);
+  // Errors name `shown` where it is given (the final path of a file written aside), else `path`.
+  ImageRowWriter(const std::filesystem::path& path, int width, int height, int channels, const ImageEncoding& encoding,
+                 const std::string& shown = "");
   ~ImageRowWriter();
   ImageRowWriter(const ImageRowWriter&) = delete;
   ImageRowWriter& operator=(const ImageRowWriter&) = delete;

@@ -197,7 +197,8 @@ AssembledCover write_assembled_cover(files::OutputSet& outputs, const std::vecto
       const auto face_start = Clock::now();
       const std::string name = std::string("cover_") + face_suffixes[region.face] + ".exr";
       if (region.first_row == 0)
-        face_writer = std::make_unique<files::ImageRowWriter>(outputs.reserve(name), size, size, channels, exr);
+        face_writer = std::make_unique<files::ImageRowWriter>(outputs.reserve(name), size, size, channels, exr,
+                                                              outputs.final_path(name).string());
       face_writer->write_rows(region.rows, interleaved_channels(planes, 0, cover.size()).data());
       if (region.first_row + region.rows == size) {
         face_writer->close();
@@ -234,7 +235,8 @@ AssembledCover write_assembled_cover(files::OutputSet& outputs, const std::vecto
       for (int face = 0; face < 6; ++face)
         faces[static_cast<size_t>(c)][static_cast<size_t>(face)] =
             scratch_faces[static_cast<size_t>(c * 6 + face)]->map();
-    files::ImageRowWriter map(outputs.reserve("cover_equirect.exr"), 4 * size, 2 * size, channels, exr);
+    files::ImageRowWriter map(outputs.reserve("cover_equirect.exr"), 4 * size, 2 * size, channels, exr,
+                              outputs.final_path("cover_equirect.exr").string());
     cover::streamed_equirect(size, faces, 4 * size, 2 * size, [&](int, int rows, const std::vector<float>& pixels) {
       map.write_rows(rows, pixels.data());
     });

@@ -1,6 +1,9 @@
 #include "io/cover_files.hpp"
 
+#include <algorithm>
 #include <chrono>
+#include <exception>
+#include <filesystem>
 #include <future>
 #include <memory>
 #include <stdexcept>
@@ -269,32 +272,67 @@ files::ImageEncoding cover_exr_encoding(const CoverFileOptions& options) {
   return exr;
 }
 
+namespace {
+
+// The rows an image file takes at a time: the EXR writer converts each batch to the file's
+// channel types, so its buffer is a batch, not the image (64 rows: four of OpenEXR's 16-line
+// zip blocks).
+constexpr int rows_per_batch = 64;
+
+// Writes a width x height image of `channels` into `path` (fsynced) through a row writer, a batch
+// of rows at a time from rows(first_row, count), which returns a pointer to their interleaved
+// pixels (valid until the next call); errors name `shown`. Returns the file's size in bytes.
+template <class Rows>
+std::uintmax_t write_image_rows(const std::filesystem::path& path, const std::string& shown, int width, int height,
+                                int channels, const files::ImageEncoding& encoding, Rows rows) {
+  files::ImageRowWriter writer(path, width, height, channels, encoding, shown);
+  for (int first = 0; first < height; first += rows_per_batch) {
+    const int count = std::min(rows_per_batch, height - first);
+    writer.write_rows(count, rows(first, count));
+  }
+  writer.close();
+  return std::filesystem::file_size(path);
+}
+
+}  // namespace
+
 void write_cover_images(files::OutputSet& outputs, const CoverImages& images, const CoverFileOptions& options,
                         CoverExport& result) {
   const files::ImageEncoding exr = cover_exr_encoding(options);
-  // Each image is encoded in memory on its own thread; the files are written afterwards in
-  // order, through the output set (which is not shared between threads).
-  struct Job {
-    std::string name;
-    std::future<std::vector<unsigned char>> bytes;
-  };
-  std::vector<Job> jobs;
-  auto encode = [&](std::string name, std::shared_ptr<const core::ImageData> image, files::ImageEncoding encoding) {
-    jobs.push_back({name, std::async(std::launch::async,
-                                     [name, image, encoding] { return files::encode_image(*image, encoding, name); })});
-  };
+  // Each image is encoded and written into its place in the output set on its own thread, a
+  // batch of rows at a time (the names are reserved here: the set is not shared between
+  // threads), so that no image is held twice, as pixels and as encoded bytes.
+  std::vector<std::future<std::uintmax_t>> jobs;
   const auto encode_start = Clock::now();
   if (images.faces) {
     const int size = images.face_size;
     const size_t per_face = static_cast<size_t>(size) * size;
     for (int face = 0; face < 6; ++face) {
-      auto image = std::make_shared<core::ImageData>(
-          core::ImageData{size, size, static_cast<int>(cover_channels.size()),
-                          interleaved_channels(*images.faces, face * per_face, per_face)});
-      encode(std::string("cover_") + face_suffixes[face] + ".exr", image, exr);
+      const std::string name = std::string("cover_") + face_suffixes[face] + ".exr";
+      const std::filesystem::path path = outputs.reserve(name);
+      const std::string shown = outputs.final_path(name).string();
+      jobs.push_back(std::async(std::launch::async, [path, shown, size, per_face, face, planes = images.faces, exr] {
+        std::vector<float> batch;
+        return write_image_rows(path, shown, size, size, CoverPlanes::count, exr, [&](int first, int count) {
+          batch = interleaved_channels(*planes, face * per_face + static_cast<size_t>(first) * size,
+                                       static_cast<size_t>(count) * size);
+          return batch.data();
+        });
+      }));
     }
   }
-  if (images.equirect) encode("cover_equirect.exr", images.equirect, exr);
+  // A whole image's rows, interleaved already.
+  auto write_whole = [&](const std::string& name, std::shared_ptr<const core::ImageData> image,
+                         files::ImageEncoding encoding) {
+    const std::filesystem::path path = outputs.reserve(name);
+    const std::string shown = outputs.final_path(name).string();
+    jobs.push_back(std::async(std::launch::async, [path, shown, image, encoding] {
+      const size_t row = static_cast<size_t>(image->width) * image->channels;
+      return write_image_rows(path, shown, image->width, image->height, image->channels, encoding,
+                              [&](int first, int) { return image->pixels.data() + static_cast<size_t>(first) * row; });
+    }));
+  };
+  if (images.equirect) write_whole("cover_equirect.exr", images.equirect, exr);
   if (images.preview) {
     // zlib level 1: the 4096 x 2048 preview encodes in about half the time of level 6 (the
     // longest single encoding of generate) for an 8 % larger file; the pixels are the same.
@@ -303,20 +341,20 @@ void write_cover_images(files::OutputSet& outputs, const CoverImages& images, co
     files::ImageEncoding preview = files::png_encoding(8);
     preview.png_compression_level = 1;
     preview.png_filters = files::png_filter_average;
-    encode("cover_equirect.png", images.preview, preview);
+    write_whole("cover_equirect.png", images.preview, preview);
   }
-  // Each file is written as soon as it is encoded, in order, while the later images are still
-  // encoding: the writes (and their fsync waits) overlap the encoding instead of following it.
-  double write_ms = 0;
-  for (Job& job : jobs) {
-    const std::vector<unsigned char> bytes = job.bytes.get();
-    const auto write_start = Clock::now();
-    outputs.write(job.name, bytes);
-    write_ms += milliseconds_since(write_start);
-    result.bytes += static_cast<double>(bytes.size());
+  // Every job is waited for before the first error is thrown, so that none still writes into
+  // the set's directory when the set removes it.
+  std::exception_ptr failed;
+  for (auto& job : jobs) {
+    try {
+      result.bytes += static_cast<double>(job.get());
+    } catch (...) {
+      if (!failed) failed = std::current_exception();
+    }
   }
+  if (failed) std::rethrow_exception(failed);
   result.timings.push_back({"encode", milliseconds_since(encode_start)});
-  result.timings.push_back({"write_files", write_ms});
 }
 
 CoverExport write_cover_files(files::OutputSet& outputs, const cover::GlobalCover& cover,

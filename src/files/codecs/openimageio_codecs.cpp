@@ -151,17 +151,18 @@ ImageWriterHandle* open_writer(int fd, const std::string& what, int width, int h
 }
 
 void write_rows(ImageWriterHandle* w, int first_row, int rows, const float* pixels) {
-  if (rows > 0 && !w->out->write_scanlines(first_row, first_row + rows, 0, OIIO::TypeDesc::FLOAT, pixels))
-    throw std::runtime_error("could not write " + w->what + ": " + w->out->geterror());
-  check_written(*w);
+  const bool written =
+      rows <= 0 || w->out->write_scanlines(first_row, first_row + rows, 0, OIIO::TypeDesc::FLOAT, pixels);
+  check_written(*w);  // the system's reason first ("File too large"), OpenEXR's words hide it
+  if (!written) throw std::runtime_error("could not write " + w->what + ": " + w->out->geterror());
 }
 
 void finish_writer(ImageWriterHandle* w) {
   const bool closed = w->out->close();
   w->finished = true;
+  check_written(*w);
   if (!closed || w->out->has_error())
     throw std::runtime_error("could not close " + w->what + ": " + w->out->geterror());
-  check_written(*w);
 }
 
 void free_writer(ImageWriterHandle* w) {
