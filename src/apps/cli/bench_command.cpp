@@ -62,7 +62,8 @@ int bench_cover(const std::vector<std::string>& arguments) {
       "device ms: GPU time of each pass by GL_TIME_ELAPSED queries (equirect: its dispatches), or\n"
       "the wall clock between glFinish calls where the driver reports none (llvmpipe);\n"
       "host ms: wall clock of the whole cover, of reading the cube map back, and of encoding the six\n"
-      "faces and the equirect map as float32 ZIP EXR in memory (in parallel, as generate does);\n"
+      "faces and the equirect map of the cover channel as float32 ZIP EXR in memory, in parallel\n"
+      "(generate adds the optical thickness and cloud top, and writes each file as it encodes);\n"
       "first: the whole cover's first run, left out of the medians: the driver compiles the shaders\n"
       "there or reads them from its cache (llvmpipe: seconds when they are not cached)\n");
   const auto& passes = studies::cover_bench_passes();
