@@ -4,7 +4,6 @@
 // the velocity the spline warp uses there instead (curl_mode spline: the diagnosis then judges
 // the flow that was integrated, and no procedural evaluation is made per texel).
 layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
-layout(rgba32f, binding = 0) uniform readonly image2DArray identity_field;
 layout(rgba32f, binding = 1) uniform writeonly image2DArray curl_field;
 #ifndef CURL_FROM_SPLINE
 #define CURL_FROM_SPLINE 0
@@ -19,6 +18,7 @@ layout(rgba32f, binding = 1) uniform writeonly image2DArray curl_field;
 #include "../lib/curl_flow.glsl"
 #include "../lib/moving_flow.glsl"
 #include "../lib/curl_spline.glsl"
+#include "cube_tile.glsl"
 #if CURL_FROM_SPLINE
 // With CURL_MOVING, the moving flow's grids at time nodes (shaders/cover/moving_warp.comp).
 layout(rgba32f, binding = 2) uniform readonly image2DArray curl_spline;
@@ -42,7 +42,7 @@ void main() {
   ivec3 texel = ivec3(gl_GlobalInvocationID);
   ivec3 extent = imageSize(curl_field);
   if (texel.x >= extent.x || texel.y >= extent.y) return;
-  vec3 n = imageLoad(identity_field, texel).xyz;
+  vec3 n = image_texel_direction(texel);
 #if CURL_FROM_SPLINE && CURL_MOVING
   float node = (u_time - u_first_node_time) / u_node_spacing;
   float turn = u_motion.drift * zonal_drift(clamp(n.z, -1.0f, 1.0f), u_curl).x * u_node_spacing;

@@ -13,7 +13,6 @@
 // octaves [0, u_grid_octaves) of each layer's cover noise at its point (docs/numerics.md, "The
 // noise grid"; 0 where the grid carries none).
 layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
-layout(rgba32f, binding = 0) uniform readonly image2DArray identity_field;
 layout(rgba32f, binding = 2) uniform writeonly image2DArray warp_field;
 layout(rgba32f, binding = 3) uniform writeonly image2DArray young_warp_field;
 #ifndef MOVING_SPLINE
@@ -29,6 +28,7 @@ layout(rgba32f, binding = 3) uniform writeonly image2DArray young_warp_field;
 #include "../lib/parameters.glsl"
 #include "../lib/curl_spline.glsl"
 #include "../lib/worley_fbm.glsl"
+#include "cube_tile.glsl"
 uniform CurlParams u_curl;
 uniform FlowMotion u_motion;
 #if MOVING_SPLINE
@@ -70,7 +70,7 @@ void main() {
 #if WARP_GRID
   vec3 x = curl_spline_node(texel.z, texel.x, texel.y, SPLINE_MARGIN + 1, u_grid_cells);
 #else
-  vec3 x = imageLoad(identity_field, texel).xyz;
+  vec3 x = image_texel_direction(texel);
 #endif
   // One trajectory: back to the younger layer's birth, then on to the older layer's.
   vec3 young = back_trajectory(x, u_time, u_young_age, u_young_steps, FLOW_SOURCE);

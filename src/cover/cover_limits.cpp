@@ -29,12 +29,13 @@ double default_memory_budget_bytes(const gpu::Context& context) {
 
 double whole_cover_bytes(int size, Flow flow) { return cover_gpu_bytes(size, flow) + host_bytes(size); }
 
-double tile_bytes(int size, int rows, Flow flow) {
+double tile_bytes(int size, int rows) {
   const double texels = double(size) * rows;
-  // identity, curl, warp (and the moving flow's younger warp), a scratch map and the adaptive
-  // state: RGBA32F; density, cover contrast, cover, optical thickness and cloud top: R32F; the
-  // densities, cloud tops and cover contrasts read back and copied (TileDensity): 3 x 2 x 4 bytes.
-  const double maps = texels * (16.0 * (flow == Flow::moving ? 6 : 5) + 4.0 * 5 + 3 * 8.0);
+  // curl, warp, and the steady flow's identity map (its warp's start points) or the moving
+  // flow's younger warp, a scratch map and the adaptive state: RGBA32F; density, cover contrast,
+  // cover, optical thickness and cloud top: R32F; the densities, cloud tops and cover contrasts
+  // read back and copied (TileDensity): 3 x 2 x 4 bytes.
+  const double maps = texels * (16.0 * 5 + 4.0 * 5 + 3 * 8.0);
   // The texel weight tables of the calibration and the diagnosis, ((N + 1) / 2)^2 / 2 words
   // each, and the diagnosis's partial records (6 doubles a strip of a column).
   const double half = (size + 1) / 2;
@@ -42,15 +43,15 @@ double tile_bytes(int size, int rows, Flow flow) {
   return maps + shared;
 }
 
-int tile_count_for_budget(int size, Flow flow, double budget, const std::string& option) {
+int tile_count_for_budget(int size, double budget, const std::string& option) {
   // The tile is the largest strip, N / S rows rounded up, and its halo.
   for (long strips = 1; strips <= size; ++strips) {
     const int rows = static_cast<int>((size + strips - 1) / strips) + 2;
-    if (tile_bytes(size, std::min(rows, size), flow) <= budget) return static_cast<int>(6 * strips);
+    if (tile_bytes(size, std::min(rows, size)) <= budget) return static_cast<int>(6 * strips);
   }
   std::ostringstream m;
   m << option << ": " << std::floor(budget / 1048576.0) << " MiB is too little for tiles of one row of a cover of "
-    << size << " per face (" << std::ceil(tile_bytes(size, std::min(size, 3), flow) / 1048576.0)
+    << size << " per face (" << std::ceil(tile_bytes(size, std::min(size, 3)) / 1048576.0)
     << " MiB); allowed range from that up";
   throw core::InputError(m.str());
 }

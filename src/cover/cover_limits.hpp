@@ -21,9 +21,9 @@ double default_memory_budget_bytes(const gpu::Context& context);
 double whole_cover_bytes(int size, Flow flow);
 // Bytes a tile of `rows` rows (its halo included) takes: its maps, the read-back densities and
 // the tables every tile shares (texel weights, the curl grid).
-double tile_bytes(int size, int rows, Flow flow);
+double tile_bytes(int size, int rows);
 // The fewest tiles (a multiple of 6) whose passes fit `budget` bytes. Throws core::InputError
 // naming --memory-budget when even tiles of one row do not fit.
-int tile_count_for_budget(int size, Flow flow, double budget, const std::string& option = "--memory-budget");
+int tile_count_for_budget(int size, double budget, const std::string& option = "--memory-budget");
 
 }  // namespace nephele::cover

@@ -13,12 +13,14 @@ namespace nephele::cover {
 
 double cover_gpu_bytes(int size, Flow flow) {
   const double texels = 6.0 * size * size;
-  // identity, curl, warp; density, cover contrast, cover, optical thickness, cloud top; and two RGBA32F cubes the
-  // warp pass adds for long or adaptive integrations (a scratch map and the adaptive state).
-  // --flow moving adds the younger cloud layer's warp (RGBA32F) and its flow grids, 6 x 16 x
-  // (curl_size + 4)^2 bytes a time node (8 nodes at the defaults: 52 MiB; not counted, as the
-  // steady spline's grid).
-  const double cubes = texels * (16.0 * (flow == Flow::moving ? 6 : 5) + 4.0 * 5);
+  // Steady: identity, curl, warp, and two RGBA32F cubes the warp pass adds for long or adaptive
+  // integrations (a scratch map and the adaptive state). Moving: curl, warp and the younger cloud
+  // layer's warp (no identity map: its passes compute the directions, no scratch maps), and one
+  // more for its warp grid's traced ends and nodes (2 x 12 x 16 x (warp_grid + 4)^2 bytes, 102
+  // MiB at the default 512 nodes, about one cube of 1024) and its flow grids, 6 x 16 x
+  // (curl_size + 4)^2 bytes a time node (8 nodes at the defaults: 52 MiB). Both: density, cover
+  // contrast, cover, optical thickness, cloud top (R32F).
+  const double cubes = texels * (16.0 * (flow == Flow::moving ? 4 : 5) + 4.0 * 5);
   // The equirect export holds one R32F tile of the 4 size x 2 size map at a time; the
   // calibration and diagnosis their tables and partial sums.
   const double equirect = std::min(8.0 * size * size, double(default_equirect_tile) * default_equirect_tile) * 4.0;
@@ -93,7 +95,8 @@ GlobalCover::GlobalCover(const CoverParameters& parameters, std::optional<CubeRe
 }
 
 void GlobalCover::make_fields() {
-  identity_field_ = make_field(GL_RGBA32F);
+  identity_field_ = gpu::Texture();
+  identity_current_ = false;
   curl_field_ = make_field(GL_RGBA32F);
   warp_field_ = make_field(GL_RGBA32F);
   density_field_ = make_field(GL_R32F);
@@ -109,6 +112,7 @@ void GlobalCover::set_tile(const CubeRegion& tile) {
     throw std::invalid_argument("GlobalCover::set_tile: not a tile of this cover's tiling");
   const bool same_shape = tile.rows == region_.rows;
   region_ = tile;
+  identity_current_ = false;
   diagnostics_.reset();
   density_range_current_ = false;
   if (!same_shape) make_fields();
@@ -131,12 +135,12 @@ void GlobalCover::timed(const std::string& pass, Work&& work) {
 }
 
 void GlobalCover::run() {
-  run_identity();
   if (moving(parameters_)) {
     if (parameters_.curl_mode == CurlMode::spline) run_moving_splines();
     run_curl();
     run_moving_warp();
   } else {
+    run_identity();  // the warp's start points
     // The spline's grid is the same for every tile: made for the first only.
     if (region_.whole_cube() || !spline_coefficients_.id()) run_spline();
     run_curl();
@@ -258,7 +262,7 @@ void GlobalCover::run_moving_warp() {
       trace_warp_grid(program, grid);
       return;
     }
-    identity_field_.bind_image_layers(warp::identity_field, GL_READ_ONLY);
+    set_region(program, region_);
     warp_field_.bind_image_layers(warp::warp_field, GL_WRITE_ONLY);
     young_warp_field_.bind_image_layers(warp::young_warp_field, GL_WRITE_ONLY);
     dispatch_texels(program);
@@ -296,7 +300,7 @@ void GlobalCover::trace_warp_grid(const gpu::ComputeProgram& tracer, int cells) 
   if (!warp_from_grid_program_)
     warp_from_grid_program_ = std::make_unique<gpu::ComputeProgram>("cover/warp_from_grid.comp");
   namespace from_grid = shader_bindings::cover_warp_from_grid;
-  identity_field_.bind_image_layers(from_grid::identity_field, GL_READ_ONLY);
+  set_region(*warp_from_grid_program_, region_);
   warp_grid_.bind_image(from_grid::warp_grid, GL_READ_ONLY);
   warp_field_.bind_image_layers(from_grid::warp_field, GL_WRITE_ONLY);
   young_warp_field_.bind_image_layers(from_grid::young_warp_field, GL_WRITE_ONLY);
@@ -305,12 +309,21 @@ void GlobalCover::trace_warp_grid(const gpu::ComputeProgram& tracer, int cells) 
 }
 
 void GlobalCover::run_identity() {
-  timed("identity", [&] {
-    identity_field_.bind_image_layers(shader_bindings::cover_identity::identity_field, GL_WRITE_ONLY);
-    set_region(identity_program_, region_);
-    dispatch_texels(identity_program_);
-    gpu::image_barrier();
-  });
+  timed("identity", [&] { dispatch_identity(); });
+}
+
+void GlobalCover::dispatch_identity() const {
+  if (!identity_field_.id()) identity_field_ = make_field(GL_RGBA32F);
+  identity_field_.bind_image_layers(shader_bindings::cover_identity::identity_field, GL_WRITE_ONLY);
+  set_region(identity_program_, region_);
+  dispatch_texels(identity_program_);
+  gpu::image_barrier();
+  identity_current_ = true;
+}
+
+const gpu::Texture& GlobalCover::identity_field() const {
+  if (!identity_current_) dispatch_identity();
+  return identity_field_;
 }
 
 void GlobalCover::run_spline() {
@@ -366,7 +379,7 @@ void GlobalCover::run_curl() {
       glsl::set_uniform(curl_program_, "u_curl", curl_params(parameters_));
       curl_program_.set("u_noise_offset", potential_offset(parameters_));
     }
-    identity_field_.bind_image_layers(shader_bindings::cover_curl::identity_field, GL_READ_ONLY);
+    set_region(curl_program_, region_);
     curl_field_.bind_image_layers(shader_bindings::cover_curl::curl_field, GL_WRITE_ONLY);
     dispatch_texels(curl_program_);
     gpu::image_barrier();
@@ -374,7 +387,7 @@ void GlobalCover::run_curl() {
 }
 
 void GlobalCover::run_warp(bool after_curl) {
-  timed("warp", [&] { dispatch_warp(identity_field_, warp_field_, after_curl); });
+  timed("warp", [&] { dispatch_warp(identity_field(), warp_field_, after_curl); });
 }
 
 void GlobalCover::warp_points(const gpu::Texture& starts, const gpu::Texture& warped) { dispatch_warp(starts, warped); }

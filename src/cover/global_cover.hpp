@@ -42,6 +42,8 @@ class GlobalCover {
   void run();
 
   // The passes one by one (tests run them separately).
+  // The identity map (identity_field): the steady flow's warp starts from it; the other passes
+  // compute each texel's direction themselves, so the moving flow makes it only when asked.
   void run_identity();
   // The curl cube map at the texel centres: the procedural curl, or in curl mode spline the
   // spline's velocity, after the spline's grid (pass "spline", run_spline) where it is missing.
@@ -79,7 +81,9 @@ class GlobalCover {
   // The parameters as run: the curl mode and grid resolved (resolved_curl; never automatic).
   const CoverParameters& parameters() const { return parameters_; }
   const CubeRegion& region() const { return region_; }
-  const gpu::Texture& identity_field() const { return identity_field_; }
+  // The unit direction through each texel centre (RGBA32F), made by the identity pass where it
+  // is not yet (the moving flow's passes do not read it).
+  const gpu::Texture& identity_field() const;
   const gpu::Texture& curl_field() const { return curl_field_; }
   // The spline's coefficients: a 2D array of 6 layers of (curl_size + 2 SPLINE_MARGIN)^2
   // RGBA32F nodes (empty before run_spline and in other curl modes).
@@ -123,6 +127,8 @@ class GlobalCover {
   // every map the passes write.
   gpu::Texture make_field(GLenum internal_format) const;
   void make_fields();
+  // The identity pass into identity_field_, made first where missing.
+  void dispatch_identity() const;
   // Dispatches a pass over every texel of the region's maps (owned and halo).
   void dispatch_texels(const gpu::ComputeProgram& program) const;
   void upload_surface_bias();  // the land/ocean bias grid (surface_bias.hpp), once
@@ -147,8 +153,10 @@ class GlobalCover {
   gpu::Texture flow_splines_;            // --flow moving, curl mode spline: 6 layers per time node
   std::int64_t splines_first_node_ = 0;  // the absolute index of flow_splines_'s first node
   int splines_nodes_ = 0;
-  bool splines_current_ = false;  // flow_splines_ holds the window of the cover's time
-  gpu::Texture identity_field_, curl_field_, warp_field_, density_field_, cover_field_;
+  bool splines_current_ = false;           // flow_splines_ holds the window of the cover's time
+  mutable gpu::Texture identity_field_;    // made on first use (identity_field())
+  mutable bool identity_current_ = false;  // it holds the region's directions
+  gpu::Texture curl_field_, warp_field_, density_field_, cover_field_;
   gpu::Texture optical_thickness_field_, cloud_top_field_, cover_contrast_field_;
   gpu::Texture young_warp_field_;  // --flow moving: the younger cloud layer's warp
   // --flow moving finer than --warp-grid: the trajectories' prefiltered ends at the grid's nodes,

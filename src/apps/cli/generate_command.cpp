@@ -266,14 +266,13 @@ int compute_tile_parts(const GenerateSetup& setup, const cover::CubeTiling& tili
 // The budget's check of a tiling: its largest tile's passes must fit.
 void check_tiles_fit(const cover::CoverParameters& p, const cover::CubeTiling& tiling, double budget) {
   const int rows = (p.size + tiling.strips_per_face() - 1) / tiling.strips_per_face() + 2;
-  const double bytes = cover::tile_bytes(p.size, std::min(rows, p.size), p.flow);
+  const double bytes = cover::tile_bytes(p.size, std::min(rows, p.size));
   if (budget > 0 && bytes > budget)
-    throw UsageError(params::run::tiles.option(), std::to_string(tiling.count),
-                     "from " + std::to_string(cover::tile_count_for_budget(p.size, p.flow, budget)) +
-                         " up (or a larger --memory-budget)",
-                     "makes tiles of " + std::to_string(static_cast<long>(std::ceil(bytes / 1048576.0))) +
-                         " MiB, over the memory budget of " + std::to_string(static_cast<long>(budget / 1048576.0)) +
-                         " MiB");
+    throw UsageError(
+        params::run::tiles.option(), std::to_string(tiling.count),
+        "from " + std::to_string(cover::tile_count_for_budget(p.size, budget)) + " up (or a larger --memory-budget)",
+        "makes tiles of " + std::to_string(static_cast<long>(std::ceil(bytes / 1048576.0))) +
+            " MiB, over the memory budget of " + std::to_string(static_cast<long>(budget / 1048576.0)) + " MiB");
 }
 
 // generate --tiles COUNT --tile A-B: tile parts for nephele assemble.
@@ -299,7 +298,7 @@ int run_tile_parts(const GenerateSetup& setup, const std::filesystem::path& dire
 // the output set, then the files assembled from them (the folder goes before the commit).
 int run_in_tiles(const GenerateSetup& setup, const gpu::EglContext& context, double budget) {
   const cover::CoverParameters& p = setup.parameters;
-  const int count = setup.tiles > 0 ? setup.tiles : cover::tile_count_for_budget(p.size, p.flow, budget);
+  const int count = setup.tiles > 0 ? setup.tiles : cover::tile_count_for_budget(p.size, budget);
   const cover::CubeTiling tiling{p.size, count};
   check_tiles_fit(p, tiling, budget);
   io::check_assembly_fits(p.size, count, setup.file_options, budget);
