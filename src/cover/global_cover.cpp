@@ -155,6 +155,7 @@ void GlobalCover::set_time(const std::string& iso_time) {
   clock_ = frame_clock(parameters_, hours_since_epoch(iso_time));
   splines_current_ = false;  // run_moving_splines keeps the grids of nodes the new window shares
   warp_grid_current_ = false;
+  itcz_cells_current_ = false;
 }
 
 void GlobalCover::run_moving_splines() {
@@ -522,6 +523,10 @@ void GlobalCover::upload_surface_bias() {
 }
 
 void GlobalCover::make_itcz_cells(const glsl::WeatherSystems& systems, const std::vector<std::uint32_t>& seeds) {
+  if (itcz_cells_current_) {
+    itcz_cells_.bind(shader_bindings::cover_cover_density::itcz_cells);
+    return;
+  }
   const size_t entries = seeds.size() * static_cast<size_t>(glsl::ITCZ_TABLE_CELLS);
   if (itcz_cells_.bytes() != entries * sizeof(glsl::vec4))
     itcz_cells_ = gpu::StorageBuffer(entries * sizeof(glsl::vec4));
@@ -536,6 +541,7 @@ void GlobalCover::make_itcz_cells(const glsl::WeatherSystems& systems, const std
   }
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   itcz_cells_.bind(shader_bindings::cover_cover_density::itcz_cells);
+  itcz_cells_current_ = true;
 }
 
 void GlobalCover::run_density() {

@@ -132,7 +132,8 @@ class GlobalCover {
   // Dispatches a pass over every texel of the region's maps (owned and halo).
   void dispatch_texels(const gpu::ComputeProgram& program) const;
   void upload_surface_bias();  // the land/ocean bias grid (surface_bias.hpp), once
-  // The ITCZ's cells of the frame for the cloud layers of `seeds` (1 or 2), before the density.
+  // The ITCZ's cells of the frame for the cloud layers of `seeds` (1 or 2), before the density;
+  // once per time (set_time), not per tile.
   void make_itcz_cells(const glsl::WeatherSystems& systems, const std::vector<std::uint32_t>& seeds);
 
   CoverParameters parameters_;
@@ -145,7 +146,8 @@ class GlobalCover {
   gpu::ComputeProgram density_program_;  // with MOVING_LAYERS for --flow moving
   gpu::ComputeProgram itcz_cells_program_{"cover/itcz_cells.comp"};
   gpu::StorageBuffer itcz_cells_;
-  FrameClock clock_;  // --flow moving: the frame's clock at parameters_.time (set_time renews it)
+  bool itcz_cells_current_ = false;  // itcz_cells_ holds the cover's time's cells (every tile's)
+  FrameClock clock_;                 // --flow moving: the frame's clock at parameters_.time (set_time renews it)
   std::unique_ptr<gpu::ComputeProgram>
       moving_warp_programs_[2];                                  // --flow moving: per texel, from the warp grid's nodes
   std::unique_ptr<gpu::ComputeProgram> warp_from_grid_program_;  // the warp grid's spline at the texels

@@ -9,6 +9,7 @@
 
 #include "cover/latitude_profile.hpp"
 #include "gpu/shader_bindings.hpp"
+#include "gpu/storage_buffer.hpp"
 
 namespace nephele::cover {
 namespace {
@@ -18,29 +19,24 @@ double area_antiderivative(double x, double y) { return std::atan2(x * y, std::s
 // A shader storage buffer of 32-bit words, created zeroed.
 class WordBuffer {
  public:
-  explicit WordBuffer(size_t words) : words_(words) {
-    glCreateBuffers(1, &id_);
-    glNamedBufferStorage(id_, static_cast<GLsizeiptr>(words * 4), nullptr, GL_DYNAMIC_STORAGE_BIT);
-    clear();
-  }
-  ~WordBuffer() { glDeleteBuffers(1, &id_); }
-  WordBuffer(const WordBuffer&) = delete;
-  WordBuffer& operator=(const WordBuffer&) = delete;
+  explicit WordBuffer(size_t words) : buffer_(words * 4), words_(words) { clear(); }
   void clear() const {
     const GLuint zero = 0;
-    glClearNamedBufferData(id_, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+    glClearNamedBufferData(buffer_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
   }
-  void set(size_t word, GLuint value) const { glNamedBufferSubData(id_, static_cast<GLintptr>(word * 4), 4, &value); }
-  void bind(GLuint binding) const { glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding, id_); }
+  void set(size_t word, GLuint value) const {
+    glNamedBufferSubData(buffer_.id(), static_cast<GLintptr>(word * 4), 4, &value);
+  }
+  void bind(GLuint binding) const { buffer_.bind(binding); }
   std::vector<GLuint> read(size_t words) const {
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
     std::vector<GLuint> out(std::min(words, words_));
-    if (!out.empty()) glGetNamedBufferSubData(id_, 0, static_cast<GLsizeiptr>(out.size() * 4), out.data());
+    if (!out.empty()) glGetNamedBufferSubData(buffer_.id(), 0, static_cast<GLsizeiptr>(out.size() * 4), out.data());
     return out;
   }
 
  private:
-  GLuint id_ = 0;
+  gpu::StorageBuffer buffer_;
   size_t words_;
 };
 

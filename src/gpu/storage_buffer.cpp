@@ -9,7 +9,11 @@ namespace nephele::gpu {
 StorageBuffer::StorageBuffer(size_t bytes) : bytes_(bytes) {
   glCreateBuffers(1, &id_);
   glNamedBufferStorage(id_, static_cast<GLsizeiptr>(bytes), nullptr, GL_DYNAMIC_STORAGE_BIT);
-  if (glGetError() != GL_NO_ERROR) {
+  // A buffer the driver could not allocate has no storage (GL_OUT_OF_MEMORY); asked of the buffer
+  // itself, so that an earlier call's error flag is left to whoever checks it.
+  GLint64 allocated = 0;
+  glGetNamedBufferParameteri64v(id_, GL_BUFFER_SIZE, &allocated);
+  if (bytes > 0 && static_cast<size_t>(allocated) != bytes) {
     glDeleteBuffers(1, &id_);
     throw std::runtime_error("could not allocate a storage buffer of " + std::to_string(bytes) + " bytes");
   }
