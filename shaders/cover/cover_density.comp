@@ -41,8 +41,9 @@ layout(rgba32f, binding = 4) uniform readonly image2DArray young_warp_field;
 #ifndef STREETS_DRAWN
 #define STREETS_DRAWN 1
 #endif
-// The ITCZ's cells come from the tables the pass itcz_cells.comp made for the frame, entry e of
-// the cloud layer k at e CLOUD_LAYERS + k (the older layer's systems seed 0, the younger's 1).
+// The ITCZ's cells come from the tables the pass itcz_cells.comp made for the frame: entry e at e
+// for the steady flow's one cloud layer, at 2 e + k for the moving flow's layer k (0 the older's
+// belts' seed, u_systems.seed; 1 the younger's, u_young_systems_seed).
 #define CONVECTIVE_CELL_TABLES 1
 layout(std430, binding = 9) readonly buffer ItczCells { vec4 itcz_cells[]; };
 #if MOVING_LAYERS

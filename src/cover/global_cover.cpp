@@ -555,15 +555,15 @@ void GlobalCover::run_density() {
     // and its two cloud layers draw their belts with their own noise (the older's in u_systems).
     glsl::WeatherSystems systems =
         weather_systems(parameters_, moving(parameters_) ? hours_since_epoch(parameters_.time) : 0.0);
+    // The cloud layers' belts' seeds: the older's (the steady flow's only), then the younger's.
+    std::vector<std::uint32_t> seeds{systems.seed};
     if (moving(parameters_)) {
-      systems.seed = layer_systems_seed(parameters_, clock_.young_layer - 1, clock_.layers_in_loop);
-      density_program_.set("u_young_systems_seed",
-                           layer_systems_seed(parameters_, clock_.young_layer, clock_.layers_in_loop));
+      seeds = {layer_systems_seed(parameters_, clock_.young_layer - 1, clock_.layers_in_loop),
+               layer_systems_seed(parameters_, clock_.young_layer, clock_.layers_in_loop)};
+      systems.seed = seeds[0];
+      density_program_.set("u_young_systems_seed", seeds[1]);
     }
     glsl::set_uniform(density_program_, "u_systems", systems);
-    std::vector<std::uint32_t> seeds{systems.seed};
-    if (moving(parameters_))
-      seeds.push_back(layer_systems_seed(parameters_, clock_.young_layer, clock_.layers_in_loop));
     make_itcz_cells(systems, seeds);
     if (!surface_bias_.id()) upload_surface_bias();
     namespace density = shader_bindings::cover_cover_density;
