@@ -1749,3 +1749,59 @@ TEST_CASE("the trades' shallow regime shrinks the cloud's excess and leaves the 
     previous = belt;
   }
 }
+
+TEST_CASE("cirrus streaks run along the latitude circles and are several times longer than wide", "[fast][systems]") {
+  // The streaks' noise is Worley noise, whose statistics hardly depend on the direction (a
+  // jittered point in every lattice cell), of the point with its north component stretched by s =
+  // CIRRUS_STRETCH: a line running north crosses its level sets as often a kilometre as a line
+  // through the unstretched noise does over sqrt(sin^2 lat + s^2 cos^2 lat) kilometres, so
+  // that many times as often as a line running east (7.0 at 46 degrees). Sampled on a grid of
+  // 0.1 degrees, 42-50 degrees north, all longitudes.
+  const std::uint32_t seed = 7;
+  const int columns = 3600, rows = 80;
+  const double step = 0.1 * M_PI / 180.0;
+  auto crossing_ratio = [&](auto&& inside) {
+    std::vector<std::uint8_t> in(std::size_t(columns) * rows);
+    for (int j = 0; j < rows; ++j)
+      for (int i = 0; i < columns; ++i) {
+        const double lat = (42.0 + 0.1 * j) * M_PI / 180.0, lon = i * step;
+        const vec3 p(std::cos(lat) * std::cos(lon), std::cos(lat) * std::sin(lon), std::sin(lat));
+        in[std::size_t(j) * columns + i] = inside(p, float(lat));
+      }
+    long east = 0, north = 0;
+    double east_km = 0.0, north_km = 0.0;
+    for (int j = 0; j < rows; ++j) {
+      const double lat = (42.0 + 0.1 * j) * M_PI / 180.0;
+      for (int i = 0; i < columns; ++i) {
+        const std::size_t at = std::size_t(j) * columns + i;
+        east += in[at] != in[std::size_t(j) * columns + (i + 1) % columns];
+        east_km += earth_radius_km * std::cos(lat) * step;
+        if (j + 1 < rows) {
+          north += in[at] != in[at + columns];
+          north_km += earth_radius_km * step;
+        }
+      }
+    }
+    INFO("crossings east " << east << ", north " << north);
+    CHECK(east > 300);  // a count's sampling error below 6 %
+    return (north / north_km) / (east / east_km);
+  };
+  const double lat = 46.0 * M_PI / 180.0, s = glsl::CIRRUS_STRETCH;
+  const double expected = std::sqrt(std::sin(lat) * std::sin(lat) + s * s * std::cos(lat) * std::cos(lat));
+  // The streaks' edges, the noise's level CIRRUS_STREAK_EDGES.x: the counts' sampling error is
+  // that of about a thousand east crossings, a few per cent, and the latitudes' spread of the
+  // expected ratio (6.4-7.6 from 42 to 50 degrees) averages out.
+  const double streaks = crossing_ratio([&](vec3 p, float) {
+    return glsl::cirrus_streak_noise(p, seed, glsl::CIRRUS_OCTAVES) > glsl::CIRRUS_STREAK_EDGES.x;
+  });
+  INFO("streak noise: ratio " << streaks << " against " << expected);
+  CHECK(streaks > 0.85 * expected);
+  CHECK(streaks < 1.15 * expected);
+  // The cirrus itself: the sheets' edges, stretched only twofold, add crossings of their own ratio
+  // (at most 2), fewer (3 cells a radius against 40 across the streaks): between the two.
+  const double cirrus =
+      crossing_ratio([&](vec3 p, float latitude) { return glsl::cirrus_streaks(p, latitude, seed) > 0.5f; });
+  INFO("cirrus: ratio " << cirrus);
+  CHECK(cirrus > 2.0);
+  CHECK(cirrus < 1.15 * expected);
+}

@@ -705,19 +705,52 @@ float trade_cumulus(vec3 p, float latitude, uint seed, float edge, vec4 regimes)
   return belt > 0.0f ? belt * clumps : 0.0f;
 }
 
-// Cirrus streaks: Worley fBm (14 cells per radius, 2 octaves) of the point with its z (north)
-// component stretched fourfold, which draws the cells out along the latitude circles into streaks
-// about 3 to 4 times longer than wide (sqrt(sin^2 lat + 16 cos^2 lat) : 1), as the westerlies and
-// the tropical easterlies draw out cirrus; in the storm tracks (35-65 degrees) and over the ITCZ's
-// anvils (within 15 degrees of the equator). One fBm: a streak costs a fifth of the cover's noise.
-float cirrus_streaks(vec3 p, float latitude, uint seed) {
+// Cirrus streaks (docs/climate.md, "Cirrus streaks"): cirrus is "detached clouds in the form of
+// white, delicate filaments or white or mostly white patches or narrow bands" (WMO International
+// Cloud Atlas), and from above it lies in long bands and streaks drawn out along the upper-level
+// wind, on the equatorward side of the jets (Conover 1960): streaks many times longer than wide.
+// Inverted Worley fBm (2 octaves, gain 1/2) of CIRRUS_CELLS cells per radius (about 1600 km) at
+// the point with its z (north) component stretched CIRRUS_STRETCH-fold has cells that narrow
+// across the latitude circles by sqrt(sin^2 lat + s^2 cos^2 lat), 10 at the equator, 7.1 at 45
+// degrees and 5.1 at 60: cut at CIRRUS_STREAK_EDGES, each feature point's peak is a streak some
+// 1000-1500 km long and 100-250 km wide, the second octave's finer ones beside and within them.
+// They lie in the storm tracks (35-65 degrees) and over the ITCZ's anvils (within 15 degrees of
+// the equator), in sheets where a gradient noise of CIRRUS_SHEET_CELLS cells per radius (z
+// stretched twofold) is high: cirrus comes in regions, not as an even dust of streaks. The flow
+// bends them as it carries the air (they are drawn at its origin).
+const float CIRRUS_CELLS = 4.0f;
+const float CIRRUS_STRETCH = 10.0f;
+const int CIRRUS_OCTAVES = 2;
+const vec2 CIRRUS_STREAK_EDGES = vec2(0.45f, 0.75f);
+const float CIRRUS_SHEET_CELLS = 3.0f;
+const vec2 CIRRUS_SHEET_EDGES = vec2(0.0f, 0.2f);
+const uint CIRRUS_SHEET_LAYER = 38u;
+// The cirrus belts' gate at geocentric `latitude` (radians): the storm tracks and the deep tropics.
+float cirrus_gate(float latitude) {
   float a = abs(latitude);
-  float gate = max(smoothstep(0.55f, 0.7f, a) * (1.0f - smoothstep(1.05f, 1.2f, a)), 1.0f - smoothstep(0.15f, 0.3f, a));
-  // Two octaves where the gate is open, none elsewhere (SKIPPABLE: a group of lanes outside the
-  // belts runs one masked octave).
-  FbmParams noise = make_fbm_params(14.0f, SKIPPABLE(gate > 0.0f, 2), 2.0f, 0.5f, seed ^ 0x2545F491u, ivec3(0));
+  return max(smoothstep(0.55f, 0.7f, a) * (1.0f - smoothstep(1.05f, 1.2f, a)), 1.0f - smoothstep(0.15f, 0.3f, a));
+}
+// The streaks' noise at p, in [1 - sqrt(3), 1] (1 on the feature points): `octaves` octaves
+// (CIRRUS_OCTAVES, or 0: none, SKIPPABLE, and then 0) of the stretched inverted Worley fBm.
+float cirrus_streak_noise(vec3 p, uint seed, int octaves) {
+  FbmParams noise = make_fbm_params(CIRRUS_CELLS, octaves, 2.0f, 0.5f, seed ^ 0x2545F491u, ivec3(0));
+  return inverted_worley_fbm(vec3(p.x, p.y, CIRRUS_STRETCH * p.z), noise).w;
+}
+// The sheets that hold the streaks, in [0, 1]: `noises` 1, or 0 (SKIPPABLE: 0 everywhere).
+float cirrus_sheets(vec3 p, uint seed, int noises) {
+  float sheets = -1.0f;
+  for (int k = 0; k < noises; ++k)
+    sheets = perlin_noise(CIRRUS_SHEET_CELLS * vec3(p.x, p.y, 2.0f * p.z), ivec3(0), noise_key(seed, CIRRUS_SHEET_LAYER));
+  return smoothstep(CIRRUS_SHEET_EDGES.x, CIRRUS_SHEET_EDGES.y, sheets);
+}
+float cirrus_streaks(vec3 p, float latitude, uint seed) {
+  float gate = cirrus_gate(latitude);
+  // The sheets where the gate is open, and the streaks' searches in the sheets, none elsewhere
+  // (SKIPPABLE: a group of lanes outside them runs one masked pass of the loops).
+  float sheets = cirrus_sheets(p, seed, SKIPPABLE(gate > 0.0f, 1));
+  float streaks = cirrus_streak_noise(p, seed, SKIPPABLE(gate > 0.0f && sheets > 0.0f, CIRRUS_OCTAVES));
   if (gate <= 0.0f) return 0.0f;
-  return gate * smoothstep(0.55f, 0.8f, inverted_worley_fbm(vec3(p.x, p.y, 4.0f * p.z), noise).w);
+  return gate * sheets * smoothstep(CIRRUS_STREAK_EDGES.x, CIRRUS_STREAK_EDGES.y, streaks);
 }
 
 // Mesoscale cellular convection (docs/climate.md, "Cells"): marine boundary-layer cloud organises

@@ -22,7 +22,8 @@ const int PROBE_COLD_FRONT = 14;      // behind_cold_front(vec2(a, c)), street_s
 const int PROBE_STREET_PEARLS = 15;   // street_pearls(p, uint(b)), street_clouds(p, across, uint(b)); across as PROBE_STREETS
 const int PROBE_NEAR = 16;            // cyclones_near(p, cyclone C), neighbour_feature(floor(p * 160), int(c), the
                                       // closed cells' key of seed b) in yzw
-const int PROBE_FRONTAL_REACH = 17;   // frontal_reach(p)
+const int PROBE_FRONTAL_REACH = 17;   // frontal_reach(p), cirrus_gate(a), cirrus_streak_noise(p, uint(b), 2),
+                                      // cirrus_sheets(p, uint(b), 1)
 const int PROBE_CLOUD_TYPES = 18;     // cloud_types(a, x[1]): (deep convection, cumulus, cirrus, anvil)
 const int PROBE_CONVECTIVE = 19;      // equal_area_radius(a, b, c), convective_cloud(x[3].x, x[3].y, c),
                                       // convective_presence(p, convective_presence_of(x[3].z, x[3].w, a)), and
@@ -117,7 +118,8 @@ vec4 probe_weather_systems(mat4 x) {
   if (f == PROBE_CELL_PARTS)
     return vec4(closed_cell_modulation(p, x[0].y, seed, x[0].w), open_cell_modulation(p, x[0].y, seed, x[0].w), 0.0f,
                 0.0f);
-  if (f == PROBE_FRONTAL_REACH) return vec4(frontal_reach(p), 0.0f, 0.0f, 0.0f);
+  if (f == PROBE_FRONTAL_REACH) return vec4(frontal_reach(p), cirrus_gate(x[0].y), cirrus_streak_noise(p, seed, CIRRUS_OCTAVES),
+                cirrus_sheets(p, seed, 1));
   if (f == PROBE_CLOUD_TYPES) {
     CloudTypes types = cloud_types(x[0].y, x[1]);
     return vec4(types.deep_convection, types.cumulus, types.cirrus, types.anvil);
