@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <vector>
 
+#include "cover/cover_limits.hpp"
 #include "cover/cube_tiles.hpp"
 #include "cover/global_cover.hpp"
 #include "cover/equirect.hpp"
@@ -199,6 +200,22 @@ TEST_CASE("curl mode sampled is refused for a tile: it reads the curl map anywhe
   p.size = 16;
   p.curl_mode = cover::CurlMode::sampled;
   CHECK_THROWS_WITH(cover::GlobalCover(p, cover::CubeTiling{16, 6}.tile(0)), Catch::Contains("sampled"));
+}
+
+TEST_CASE("generate tiles a cover whose cube maps the driver cannot allocate whatever the budget", "[tiles]") {
+  test::test_context();
+  const double unlimited = 0.0, ample = 1.0e15;
+  // A small cover fits every driver and any ample budget: whole, unless the budget is too small.
+  CHECK_FALSE(cover::cover_needs_tiles(64, cover::Flow::moving, unlimited));
+  CHECK_FALSE(cover::cover_needs_tiles(64, cover::Flow::moving, ample));
+  CHECK(cover::cover_needs_tiles(64, cover::Flow::moving, cover::whole_cover_bytes(64, cover::Flow::moving) / 2));
+  // A size beyond the driver's cube maps (llvmpipe: 4096, over its 1 GiB a texture) is tiled with
+  // any budget: its tiles' maps are strips of one face.
+  for (int size : {4096, 16384}) {
+    INFO(size);
+    CHECK(cover::cover_needs_tiles(size, cover::Flow::moving, ample) == !cover::whole_cube_fits_driver(size));
+  }
+  CHECK(cover::whole_cube_fits_driver(64));
 }
 
 namespace {

@@ -56,14 +56,23 @@ int tile_count_for_budget(int size, double budget, const std::string& option) {
   throw core::InputError(m.str());
 }
 
+namespace {
+// Every pass of a whole cover allocates RGBA32F cube maps of its size.
+bool cube_fits(int size) { return gpu::driver_accepts(GL_PROXY_TEXTURE_CUBE_MAP, GL_RGBA32F, size, size); }
+}  // namespace
+
+bool whole_cube_fits_driver(int size) { return size <= gpu::max_cube_map_size() && cube_fits(size); }
+
+bool cover_needs_tiles(int size, Flow flow, double budget) {
+  return (budget > 0 && whole_cover_bytes(size, flow) > budget) || !whole_cube_fits_driver(size);
+}
+
 void check_cover_fits(const gpu::Context& context, int size, const std::string& option, Flow flow) {
   const int max_cube = gpu::max_cube_map_size();
   if (size > max_cube)
     throw core::InputError(option + ": " + std::to_string(size) + " exceeds this driver's cube map limit (" +
                            context.info().renderer + "); allowed range 1 to " + std::to_string(max_cube));
 
-  // Every pass allocates RGBA32F cube maps of this size.
-  auto cube_fits = [](int s) { return gpu::driver_accepts(GL_PROXY_TEXTURE_CUBE_MAP, GL_RGBA32F, s, s); };
   if (!cube_fits(size))
     throw core::InputError(option + ": " + std::to_string(size) + " needs " + std::to_string(size) +
                            "^2 RGBA32F cube maps, " + "which this driver (" + context.info().renderer +

@@ -13,6 +13,17 @@ namespace nephele::cover {
 void check_cover_fits(const gpu::Context& context, int size, const std::string& option = "--size",
                       Flow flow = Flow::steady);
 
+// Whether the driver can allocate the RGBA32F cube maps of a whole cover of `size` per face (its
+// cube map limit, and what it answers for a proxy texture: llvmpipe takes no texture over 1 GiB,
+// 4092 per face). Covers it cannot are computed in tiles, whose maps are strips of one face.
+// Needs a context current.
+bool whole_cube_fits_driver(int size);
+
+// Whether generate computes a cover of `size` in tiles when no tile count is asked for: where the
+// whole cover's bytes exceed `budget` (0: no budget), or where the driver cannot allocate its
+// cube maps (whole_cube_fits_driver). Needs a context current.
+bool cover_needs_tiles(int size, Flow flow, double budget);
+
 // The memory a cover's passes may take when --memory-budget is 0: the GPU's free memory, or with
 // a software renderer (whose textures are host memory) half the host's available memory; 0
 // when unknown.

@@ -363,7 +363,9 @@ int run_generate(const std::vector<std::string>& arguments) {
     std::cerr << "renderer: " << context.info().renderer << " (" << context.info().version << ", EGL "
               << context.info().platform << ")\n";
   const double budget = setup.memory_budget > 0 ? setup.memory_budget : cover::default_memory_budget_bytes(context);
-  if (setup.tiles > 0 || (budget > 0 && cover::whole_cover_bytes(parameters.size, parameters.flow) > budget))
+  // Tiles where asked for, where the whole cover is over the budget, and where the driver cannot
+  // allocate its cube maps (each tile's maps are strips of one face).
+  if (setup.tiles > 0 || cover::cover_needs_tiles(parameters.size, parameters.flow, budget))
     return run_in_tiles(setup, context, budget);
   cover::check_cover_fits(context, parameters.size, "--size", parameters.flow);
 
