@@ -57,7 +57,7 @@ std::vector<float> equirect_from_cubes(const std::vector<const gpu::Texture*>& c
   gpu::ComputeProgram program("cover/equirect.comp", {{"CHANNELS", std::to_string(channels)}});
   const std::vector<glm::vec2> rows = geodetic_row_directions(height);
   gpu::StorageBuffer directions(rows.size() * sizeof(glm::vec2));
-  glNamedBufferSubData(directions.id(), 0, static_cast<GLsizeiptr>(directions.bytes()), rows.data());
+  directions.write(rows.data(), directions.bytes());
   directions.bind(shader_bindings::cover_equirect::row_directions);
   for (int c = 0; c < channels; ++c)
     cubes[static_cast<size_t>(c)]->bind_image(shader_bindings::cover_equirect::source_cubes + c, GL_READ_ONLY);
@@ -76,16 +76,15 @@ std::vector<float> equirect_from_cubes(const std::vector<const gpu::Texture*>& c
     if (device) device->begin();
     program.dispatch_covering(tile.width, tile.height, 1);
     if (device) device->end();
-    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
     const size_t row = static_cast<size_t>(width) * channels;
     float* first = pixels.data() + static_cast<size_t>(tile.y) * row + static_cast<size_t>(tile.x) * channels;
     // A tile as wide as the map is a run of the map's rows: read in place.
     if (tile.width == width) {
-      glGetNamedBufferSubData(tile_pixels.id(), 0, static_cast<GLsizeiptr>(floats * sizeof(float)), first);
+      tile_pixels.read(first, floats * sizeof(float));
       continue;
     }
     part.resize(floats);
-    glGetNamedBufferSubData(tile_pixels.id(), 0, static_cast<GLsizeiptr>(floats * sizeof(float)), part.data());
+    tile_pixels.read(part.data(), floats * sizeof(float));
     const size_t tile_row = static_cast<size_t>(tile.width) * channels;
     for (int r = 0; r < tile.height; ++r)
       std::copy_n(part.begin() + static_cast<std::ptrdiff_t>(r * tile_row), tile_row, first + r * row);

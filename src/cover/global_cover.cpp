@@ -456,27 +456,23 @@ void GlobalCover::dispatch_warp(const gpu::Texture& starts, const gpu::Texture& 
   // unfinished below its sub-step limit (a counter the shader increments).
   const gpu::Texture state = gpu::Texture::shaped_like(warped, GL_RGBA32F);
   state.bind_image_layers(shader_bindings::cover_warp::adaptive_state, GL_READ_WRITE);
-  GLuint counter = 0;
-  glCreateBuffers(1, &counter);
-  glNamedBufferStorage(counter, sizeof(GLuint), nullptr, GL_DYNAMIC_STORAGE_BIT | GL_MAP_READ_BIT);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, shader_bindings::cover_warp::unfinished, counter);
+  const gpu::StorageBuffer counter(sizeof(GLuint));
+  counter.bind(shader_bindings::cover_warp::unfinished);
   warp_program_.set("u_chunk", per_dispatch);
   const gpu::Texture* from = &starts;
   bool in_warped = true;
   for (int round = 0; round * static_cast<long>(per_dispatch) < std::max(1, p.max_substeps); ++round) {
     const GLuint zero = 0;
-    glNamedBufferSubData(counter, 0, sizeof zero, &zero);
+    counter.write(&zero, sizeof zero);
     warp_program_.set("u_resume", round > 0 ? 1 : 0);
     in_warped = round % 2 == 0;
     const gpu::Texture& to = target(in_warped);
     dispatch(*from, to);
     from = &to;
-    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
     GLuint unfinished = 0;
-    glGetNamedBufferSubData(counter, 0, sizeof unfinished, &unfinished);
+    counter.read(&unfinished, sizeof unfinished);
     if (unfinished == 0) break;
   }
-  glDeleteBuffers(1, &counter);
   if (!in_warped) {
     glCopyImageSubData(scratch.id(), scratch.target(), 0, 0, 0, 0, warped.id(), warped.target(), 0, 0, 0, 0, size,
                        warped.height(), warped.layers());

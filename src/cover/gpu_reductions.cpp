@@ -24,14 +24,11 @@ class WordBuffer {
     const GLuint zero = 0;
     glClearNamedBufferData(buffer_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
   }
-  void set(size_t word, GLuint value) const {
-    glNamedBufferSubData(buffer_.id(), static_cast<GLintptr>(word * 4), 4, &value);
-  }
+  void set(size_t word, GLuint value) const { buffer_.write(&value, 4, word * 4); }
   void bind(GLuint binding) const { buffer_.bind(binding); }
   std::vector<GLuint> read(size_t words) const {
-    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
     std::vector<GLuint> out(std::min(words, words_));
-    if (!out.empty()) glGetNamedBufferSubData(buffer_.id(), 0, static_cast<GLsizeiptr>(out.size() * 4), out.data());
+    buffer_.read(out.data(), out.size() * 4);
     return out;
   }
 

@@ -1,14 +1,15 @@
 #include "gpu/storage_buffer.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 #include <utility>
 
 namespace nephele::gpu {
 
-StorageBuffer::StorageBuffer(size_t bytes) : bytes_(bytes) {
+StorageBuffer::StorageBuffer(size_t bytes, const void* data) : bytes_(bytes) {
   glCreateBuffers(1, &id_);
-  glNamedBufferStorage(id_, static_cast<GLsizeiptr>(bytes), nullptr, GL_DYNAMIC_STORAGE_BIT);
+  glNamedBufferStorage(id_, static_cast<GLsizeiptr>(bytes), data, GL_DYNAMIC_STORAGE_BIT | GL_MAP_READ_BIT);
   // A buffer the driver could not allocate has no storage (GL_OUT_OF_MEMORY); asked of the buffer
   // itself, so that an earlier call's error flag is left to whoever checks it.
   GLint64 allocated = 0;
@@ -37,11 +38,28 @@ StorageBuffer& StorageBuffer::operator=(StorageBuffer&& other) noexcept {
 
 void StorageBuffer::bind(GLuint binding) const { glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding, id_); }
 
-std::vector<float> StorageBuffer::read_floats() const {
+void StorageBuffer::write(const void* data, size_t bytes, size_t offset) const {
+  if (bytes > 0) glNamedBufferSubData(id_, static_cast<GLintptr>(offset), static_cast<GLsizeiptr>(bytes), data);
+}
+
+void StorageBuffer::read(void* out, size_t bytes, size_t offset) const {
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  if (bytes > 0) glGetNamedBufferSubData(id_, static_cast<GLintptr>(offset), static_cast<GLsizeiptr>(bytes), out);
+}
+
+std::vector<float> StorageBuffer::read_floats() const {
   std::vector<float> out(bytes_ / sizeof(float));
-  if (!out.empty()) glGetNamedBufferSubData(id_, 0, static_cast<GLsizeiptr>(out.size() * sizeof(float)), out.data());
+  read(out.data(), out.size() * sizeof(float));
   return out;
+}
+
+void reserve(StorageBuffer& buffer, size_t bytes) {
+  if (buffer.bytes() < bytes || buffer.id() == 0) buffer = StorageBuffer(bytes);
+}
+
+void upload(StorageBuffer& buffer, const void* data, size_t bytes, size_t minimum) {
+  reserve(buffer, std::max(bytes, minimum));
+  buffer.write(data, bytes);
 }
 
 }  // namespace nephele::gpu

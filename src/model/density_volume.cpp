@@ -17,14 +17,6 @@ static_assert(sizeof(glsl::ModelPrimitive) == 80, "ModelPrimitive must match its
 // Work groups per dispatch row (GL guarantees 65535 per dimension).
 constexpr int kGroupsPerRow = 65535;
 
-void upload(unsigned& buffer, const void* data, size_t bytes) {
-  if (!buffer) glCreateBuffers(1, &buffer);
-  // At least 16 bytes: an empty list is still a bound buffer.
-  const std::vector<unsigned char> zeros(16, 0);
-  glNamedBufferData(buffer, static_cast<GLsizeiptr>(std::max<size_t>(bytes, 16)), bytes ? data : zeros.data(),
-                    GL_DYNAMIC_DRAW);
-}
-
 }  // namespace
 
 double DensityVolume::device_bytes(int size) { return 4.0 * size * double(size) * size; }
@@ -51,8 +43,6 @@ DensityVolume::DensityVolume(int size) {
 }
 
 DensityVolume::~DensityVolume() {
-  for (unsigned* b : {&primitives_, &jobs_, &indices_})
-    if (*b) glDeleteBuffers(1, b);
   if (texture_) glDeleteTextures(1, &texture_);
 }
 
@@ -69,7 +59,7 @@ void DensityVolume::compute(const CloudModel& model, bool cull) {
   }
   std::vector<glsl::ModelPrimitive> packed;
   for (const Primitive& p : model_.primitives) packed.push_back(pack(p));
-  upload(primitives_, packed.data(), packed.size() * sizeof(glsl::ModelPrimitive));
+  gpu::upload(primitives_, packed.data(), packed.size() * sizeof(glsl::ModelPrimitive));
   std::vector<int> bricks;
   for (int b = 0; b < grid_.count(); ++b)
     if (!lists_[static_cast<size_t>(b)].empty()) bricks.push_back(b);
@@ -105,7 +95,7 @@ void DensityVolume::edit(int index, const Primitive& primitive) {
   }
   model_ = std::move(next);
   const glsl::ModelPrimitive packed = pack(primitive);
-  glNamedBufferSubData(primitives_, GLintptr(index) * GLintptr(sizeof packed), sizeof packed, &packed);
+  primitives_.write(&packed, sizeof packed, static_cast<size_t>(index) * sizeof packed);
   gpu::PassTimer timer;
   run(std::vector<int>(touched.begin(), touched.end()));
   stats_.ms = timer.milliseconds();
@@ -124,8 +114,8 @@ void DensityVolume::run(const std::vector<int>& bricks) {
   }
   stats_.bricks_computed = int(bricks.size());
   if (jobs.empty()) return;
-  upload(jobs_, jobs.data(), jobs.size() * sizeof(glsl::uvec4));
-  upload(indices_, indices.data(), indices.size() * sizeof(std::uint32_t));
+  gpu::upload(jobs_, jobs.data(), jobs.size() * sizeof(glsl::uvec4));
+  gpu::upload(indices_, indices.data(), indices.size() * sizeof(std::uint32_t));
   program_->use();
   program_->set("u_size", grid_.size);
   program_->set("u_jobs", int(jobs.size()));
@@ -141,9 +131,9 @@ void DensityVolume::run(const std::vector<int>& bricks) {
   }
   namespace density = shader_bindings::model_density;
   glBindImageTexture(density::u_density, texture_, 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_R32F);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, density::primitives, primitives_);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, density::jobs, jobs_);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, density::indices, indices_);
+  primitives_.bind(density::primitives);
+  jobs_.bind(density::jobs);
+  indices_.bind(density::indices);
   const int count = int(jobs.size());
   const int x = std::min(count, kGroupsPerRow);
   glDispatchCompute(GLuint(x), GLuint((count + x - 1) / x), 1);

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "gpu/compute_program.hpp"
+#include "gpu/storage_buffer.hpp"
 #include "model/bricks.hpp"
 #include "model/cloud_model.hpp"
 
@@ -52,7 +53,9 @@ class DensityVolume {
   bool cull_ = true;
   std::vector<std::vector<std::uint32_t>> lists_;
   std::unique_ptr<gpu::ComputeProgram> program_;
-  unsigned texture_ = 0, primitives_ = 0, jobs_ = 0, indices_ = 0;
+  unsigned texture_ = 0;
+  // The primitives, the bricks' jobs and their primitive lists (grown, never shrunk).
+  gpu::StorageBuffer primitives_, jobs_, indices_;
   PassStats stats_;
 };
 

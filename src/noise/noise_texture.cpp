@@ -41,25 +41,7 @@ float last_frequency(const glsl::FbmParams& fbm) {
 
 TextureGenerator::TextureGenerator(size_t slab_bytes) : slab_bytes_(slab_bytes) {}
 
-TextureGenerator::~TextureGenerator() {
-  for (Buffer* b : {&values_, &patches_})
-    if (b->id) glDeleteBuffers(1, &b->id);
-}
-
-unsigned TextureGenerator::buffer(Buffer& b, size_t bytes) {
-  if (b.id && b.bytes >= bytes) return b.id;
-  if (b.id) glDeleteBuffers(1, &b.id);
-  b = Buffer{};
-  glCreateBuffers(1, &b.id);
-  glNamedBufferStorage(b.id, static_cast<GLsizeiptr>(bytes), nullptr, GL_DYNAMIC_STORAGE_BIT | GL_MAP_READ_BIT);
-  if (glGetError() != GL_NO_ERROR) {
-    glDeleteBuffers(1, &b.id);
-    b = Buffer{};
-    throw std::runtime_error("could not allocate a " + std::to_string(bytes >> 20) + " MiB buffer");
-  }
-  b.bytes = bytes;
-  return b.id;
-}
+TextureGenerator::~TextureGenerator() = default;
 
 gpu::ComputeProgram& TextureGenerator::program(const std::string& path, const Defines& defines) {
   std::string key = path;
@@ -93,8 +75,8 @@ void TextureGenerator::generate(const TextureSpec& spec, Volume& out) {
   const int segments = (width + glsl::NOISE_SEGMENT - 1) / glsl::NOISE_SEGMENT;
   const GLuint capacity = static_cast<GLuint>(static_cast<size_t>(height) * slices * segments);
 
-  const GLuint values = buffer(values_, slice_bytes * slices);
-  const GLuint patches = buffer(patches_, 16 + 16 * static_cast<size_t>(capacity));
+  gpu::reserve(values_, slice_bytes * slices);
+  gpu::reserve(patches_, 16 + 16 * static_cast<size_t>(capacity));
   out.width = width;
   out.height = height;
   out.depth = depth;
@@ -120,12 +102,12 @@ void TextureGenerator::generate(const TextureSpec& spec, Volume& out) {
       const int n = std::min(slices, depth - z0);
       gpu::PassTimer timer;
       const GLuint header[4] = {0u, capacity, 0u, 0u};
-      glNamedBufferSubData(patches, 0, sizeof header, header);
+      patches_.write(header, sizeof header);
       // noise_patch.comp binds the same two buffers at the same points.
       static_assert(shader_bindings::noise_noise_patch::values == shader_bindings::noise_noise_rows::values &&
                     shader_bindings::noise_noise_patch::patches == shader_bindings::noise_noise_rows::patches);
-      glBindBufferBase(GL_SHADER_STORAGE_BUFFER, shader_bindings::noise_noise_rows::values, values);
-      glBindBufferBase(GL_SHADER_STORAGE_BUFFER, shader_bindings::noise_noise_rows::patches, patches);
+      values_.bind(shader_bindings::noise_noise_rows::values);
+      patches_.bind(shader_bindings::noise_noise_rows::patches);
       rows.set("u_z0", z0);
       rows.set("u_slices", n);
       gpu::DeviceTimer device;
@@ -134,9 +116,10 @@ void TextureGenerator::generate(const TextureSpec& spec, Volume& out) {
       device.end();
       ++timings_.dispatches;
       if (patch) {
-        glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+        // The patch pass reads the list the row walk wrote; the host reads its count.
+        glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
         GLuint count = 0;
-        glGetNamedBufferSubData(patches, 0, sizeof count, &count);
+        patches_.read(&count, sizeof count);
         count = std::min(count, capacity);
         if (count > 0) {
           patch->set("u_z0", z0);
@@ -153,7 +136,7 @@ void TextureGenerator::generate(const TextureSpec& spec, Volume& out) {
       timer.restart();
       // Mapped, a software driver's buffer is read in place (no staging copy).
       const auto* mapped = static_cast<const float*>(
-          glMapNamedBufferRange(values, 0, static_cast<GLsizeiptr>(slice_bytes * n), GL_MAP_READ_BIT));
+          glMapNamedBufferRange(values_.id(), 0, static_cast<GLsizeiptr>(slice_bytes * n), GL_MAP_READ_BIT));
       if (!mapped) throw std::runtime_error("could not map the noise buffer");
       for (int z = 0; z < n; ++z)
         for (int y = 0; y < height; ++y) {
@@ -165,7 +148,7 @@ void TextureGenerator::generate(const TextureSpec& spec, Volume& out) {
             for (int x = 0; x < width; ++x) dst[static_cast<size_t>(x) * channels] = src[x];
           }
         }
-      glUnmapNamedBuffer(values);
+      glUnmapNamedBuffer(values_.id());
       timings_.readback_ms += timer.milliseconds();
     }
   }

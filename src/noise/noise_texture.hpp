@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "gpu/compute_program.hpp"
+#include "gpu/storage_buffer.hpp"
 #include "noise/noise_spec.hpp"
 
 namespace nephele::noise {
@@ -47,16 +48,11 @@ class TextureGenerator {
  private:
   using Defines = std::vector<std::pair<std::string, std::string>>;
   gpu::ComputeProgram& program(const std::string& path, const Defines& defines);
-  // Storage buffers kept between textures (allocating them costs a software driver a page
-  // fault per 4 KiB): the values of one slab, and the patch list.
-  struct Buffer {
-    unsigned id = 0;
-    size_t bytes = 0;
-  };
-  unsigned buffer(Buffer& b, size_t bytes);
   std::map<std::string, std::unique_ptr<gpu::ComputeProgram>> programs_;
   size_t slab_bytes_;
-  Buffer values_, patches_;
+  // Storage buffers kept between textures and grown when one needs more (allocating them costs a
+  // software driver a page fault per 4 KiB): the values of one slab, and the patch list.
+  gpu::StorageBuffer values_, patches_;
   GeneratorTimings timings_;
 };
 

@@ -20,6 +20,7 @@
 #include "gpu/compute_program.hpp"
 #include "gpu/pass_timer.hpp"
 #include "gpu/shader_sources.hpp"
+#include "gpu/storage_buffer.hpp"
 #include "gpu/textures.hpp"
 #include "render/convective_volumes.hpp"
 #include "render/sun_position.hpp"
@@ -509,12 +510,10 @@ RenderResult render_clouds(const Camera& camera, const std::vector<regional::Clo
     glBindTextureUnit(sources::convective_volumes, convective != nullptr ? convective->texture() : 0);
     glBindTextureUnit(sources::layer_shadows, maps > 0 ? shadow_maps.id() : 0);
     glBindTextureUnit(sources::sky_shadow, sky_map ? sky_shadow.id() : 0);
-    GLuint guard = 0;
     // The count, then a bit per pixel of the whole image.
     const std::vector<GLuint> zeros(1 + (static_cast<std::size_t>(camera.width) * camera.height + 31) / 32, 0u);
-    glCreateBuffers(1, &guard);
-    glNamedBufferStorage(guard, static_cast<GLsizeiptr>(zeros.size() * sizeof(GLuint)), zeros.data(), GL_MAP_READ_BIT);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, shader_bindings::render_clouds::loop_guard, guard);
+    const gpu::StorageBuffer guard(zeros.size() * sizeof(GLuint), zeros.data());
+    guard.bind(shader_bindings::render_clouds::loop_guard);
     program.set("u_first_row", settings.first_row);
     program.set("u_stride", stride);
     program.set("u_phase", phase);
@@ -530,12 +529,10 @@ RenderResult render_clouds(const Camera& camera, const std::vector<regional::Clo
         for (size_t k = 0; k < pixels.size(); ++k) sum[k] += pixels[k];
       }
     }
-    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
     std::vector<GLuint> guard_words(zeros.size());
-    glGetNamedBufferSubData(guard, 0, static_cast<GLsizeiptr>(guard_words.size() * sizeof(GLuint)), guard_words.data());
+    guard.read(guard_words.data(), guard_words.size() * sizeof(GLuint));
     result.loop_limited_pixels = guard_words[0];
     result.loop_limited_bits.assign(guard_words.begin() + 1, guard_words.end());
-    glDeleteBuffers(1, &guard);
   });
   result.passes.push_back("sky");
   if (settings.upsample_size.x > 0 && settings.upsample_size.y > 0) {
@@ -550,18 +547,14 @@ RenderResult render_clouds(const Camera& camera, const std::vector<regional::Clo
       const auto distances = [&](const std::vector<glm::ivec2>& pixels, glm::ivec2 size) {
         std::vector<float> out(pixels.size());
         if (pixels.empty()) return out;
-        GLuint buffers[2] = {0, 0};
-        glCreateBuffers(2, buffers);
-        glNamedBufferStorage(buffers[0], static_cast<GLsizeiptr>(pixels.size() * sizeof(glm::ivec2)), pixels.data(), 0);
-        glNamedBufferStorage(buffers[1], static_cast<GLsizeiptr>(out.size() * sizeof(float)), nullptr, GL_MAP_READ_BIT);
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, shader_bindings::render_view_depth::guide_pixels, buffers[0]);
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, shader_bindings::render_view_depth::ground_distances, buffers[1]);
+        const gpu::StorageBuffer listed(pixels.size() * sizeof(glm::ivec2), pixels.data());
+        const gpu::StorageBuffer distance_buffer(out.size() * sizeof(float));
+        listed.bind(shader_bindings::render_view_depth::guide_pixels);
+        distance_buffer.bind(shader_bindings::render_view_depth::ground_distances);
         program.set("u_image_size", size);
         program.set("u_pixel_count", static_cast<int>(pixels.size()));
         program.dispatch_covering(static_cast<int>(pixels.size()), 1, 1);
-        glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-        glGetNamedBufferSubData(buffers[1], 0, static_cast<GLsizeiptr>(out.size() * sizeof(float)), out.data());
-        glDeleteBuffers(2, buffers);
+        distance_buffer.read(out.data(), out.size() * sizeof(float));
         return out;
       };
       // The marcher found the marched image's (clouds.comp); of the full size only the pixels

@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "gpu/storage_buffer.hpp"
 #include "gpu/shader_bindings.hpp"
 #include "gpu/compute_program.hpp"
 #include "gpu/pass_timer.hpp"
@@ -187,13 +188,12 @@ struct OrbitRenderer::Gl {
   GLuint sky_table = 0;      // the air's multiple scattering for the planet's radius
   GLuint transmittance = 0;  // and its transmittance
   double sky_table_radius = 0;
-  GLuint tiles = 0;  // the frame's tiles to draw (orbit_tiles.hpp), uvec2 each
+  gpu::StorageBuffer tiles;  // the frame's tiles to draw (orbit_tiles.hpp), uvec2 each
   int day_width = 1, relief_width = 1, cover_size = 1;
   bool cover_properties = false;  // the cover has its own tau and cloud tops
   ~Gl() {
     for (GLuint id : {day, night, water, relief, cover, coast, sky_table, transmittance})
       if (id != 0) glDeleteTextures(1, &id);
-    if (tiles != 0) glDeleteBuffers(1, &tiles);
   }
 };
 
@@ -300,10 +300,7 @@ double OrbitRenderer::render_tiles(const OrbitCamera& camera, double unix_second
     return static_cast<float>((h - sphere_altitude) * (2 * R + h + sphere_altitude));
   };
   const gpu::ComputeProgram& p = gl_->program;
-  if (gl_->tiles == 0) glCreateBuffers(1, &gl_->tiles);
-  // At least one entry: a zero-sized storage buffer is an error.
-  glNamedBufferData(gl_->tiles, GLsizeiptr(std::max<size_t>(tiles.size(), 1) * sizeof(glm::uvec2)),
-                    tiles.empty() ? nullptr : tiles.data(), GL_STREAM_DRAW);
+  gpu::upload(gl_->tiles, tiles.data(), tiles.size() * sizeof(glm::uvec2), sizeof(glm::uvec2));
   return gpu::time_pass([&] {
     // Space: the pixels of the tiles not drawn see neither air nor planet.
     const float space[4] = {0.0f, 0.0f, 0.0f, 0.0f};
@@ -355,7 +352,7 @@ double OrbitRenderer::render_tiles(const OrbitCamera& camera, double unix_second
     glBindTextureUnit(orbit::cover_map, gl_->cover);
     glBindTextureUnit(orbit::sky_table, gl_->sky_table);
     glBindTextureUnit(orbit::transmittance_table, gl_->transmittance);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, orbit::tiles, gl_->tiles);
+    gl_->tiles.bind(orbit::tiles);
     // A work group per tile, in rows of at most 65535 groups (the dispatch's per-axis minimum).
     const GLuint count = GLuint(tiles.size()), per_row = std::min<GLuint>(count, 65535u);
     glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
