@@ -54,7 +54,7 @@ std::vector<float> StorageBuffer::read_floats() const {
 }
 
 void reserve(StorageBuffer& buffer, size_t bytes) {
-  if (buffer.bytes() < bytes || buffer.id() == 0) buffer = StorageBuffer(bytes);
+  if (buffer.bytes() < bytes) buffer = StorageBuffer(bytes);
 }
 
 void upload(StorageBuffer& buffer, const void* data, size_t bytes, size_t minimum) {
