@@ -56,8 +56,7 @@ std::vector<float> equirect_from_cubes(const std::vector<const gpu::Texture*>& c
       std::max<std::int64_t>(1, std::min<std::int64_t>(max_tile, max_block / (tile_width * channels * 4))));
   gpu::ComputeProgram program("cover/equirect.comp", {{"CHANNELS", std::to_string(channels)}});
   const std::vector<glm::vec2> rows = geodetic_row_directions(height);
-  gpu::StorageBuffer directions(rows.size() * sizeof(glm::vec2));
-  directions.write(rows.data(), directions.bytes());
+  const gpu::StorageBuffer directions(rows.size() * sizeof(glm::vec2), rows.data());
   directions.bind(shader_bindings::cover_equirect::row_directions);
   for (int c = 0; c < channels; ++c)
     cubes[static_cast<size_t>(c)]->bind_image(shader_bindings::cover_equirect::source_cubes + c, GL_READ_ONLY);
@@ -68,7 +67,7 @@ std::vector<float> equirect_from_cubes(const std::vector<const gpu::Texture*>& c
   std::vector<float> part;
   for (const PixelTile& tile : tiles) {
     const size_t floats = static_cast<size_t>(tile.width) * static_cast<size_t>(tile.height) * channels;
-    if (tile_pixels.bytes() < floats * sizeof(float)) tile_pixels = gpu::StorageBuffer(floats * sizeof(float));
+    gpu::reserve(tile_pixels, floats * sizeof(float));
     tile_pixels.bind(shader_bindings::cover_equirect::equirect_tile);
     program.set("u_tile_size", glm::ivec2(tile.width, tile.height));
     program.set("u_origin_x", tile.x);

@@ -519,25 +519,21 @@ void GlobalCover::upload_surface_bias() {
 }
 
 void GlobalCover::make_itcz_cells(const glsl::WeatherSystems& systems, const std::vector<std::uint32_t>& seeds) {
-  if (itcz_cells_current_) {
-    itcz_cells_.bind(shader_bindings::cover_cover_density::itcz_cells);
-    return;
+  if (!itcz_cells_current_) {
+    const size_t entries = seeds.size() * static_cast<size_t>(glsl::ITCZ_TABLE_CELLS);
+    gpu::reserve(itcz_cells_, entries * sizeof(glsl::vec4));
+    itcz_cells_.bind(shader_bindings::cover_itcz_cells::itcz_cells);
+    glsl::set_uniform(itcz_cells_program_, "u_systems", systems);
+    for (size_t layer = 0; layer < seeds.size(); ++layer) {
+      itcz_cells_program_.set("u_seed", seeds[layer]);
+      itcz_cells_program_.set("u_layers", static_cast<int>(seeds.size()));
+      itcz_cells_program_.set("u_layer", static_cast<int>(layer));
+      itcz_cells_program_.dispatch_covering(glsl::ITCZ_TABLE_CELLS, 1, 1);
+    }
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    itcz_cells_current_ = true;
   }
-  const size_t entries = seeds.size() * static_cast<size_t>(glsl::ITCZ_TABLE_CELLS);
-  if (itcz_cells_.bytes() != entries * sizeof(glsl::vec4))
-    itcz_cells_ = gpu::StorageBuffer(entries * sizeof(glsl::vec4));
-  namespace cells = shader_bindings::cover_itcz_cells;
-  itcz_cells_.bind(cells::itcz_cells);
-  glsl::set_uniform(itcz_cells_program_, "u_systems", systems);
-  for (size_t layer = 0; layer < seeds.size(); ++layer) {
-    itcz_cells_program_.set("u_seed", seeds[layer]);
-    itcz_cells_program_.set("u_layers", static_cast<int>(seeds.size()));
-    itcz_cells_program_.set("u_layer", static_cast<int>(layer));
-    itcz_cells_program_.dispatch_covering(glsl::ITCZ_TABLE_CELLS, 1, 1);
-  }
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   itcz_cells_.bind(shader_bindings::cover_cover_density::itcz_cells);
-  itcz_cells_current_ = true;
 }
 
 void GlobalCover::run_density() {
