@@ -811,11 +811,12 @@ TEST_CASE("worley.glsl on the GPU agrees with the CPU", "[probe]") {
       PROBE_WRAP_CELL,     PROBE_FEATURE_OFFSET,     PROBE_WORLEY_CANDIDATE, PROBE_WRAPPED_FEATURE_OFFSET,
       PROBE_SMOOTH_WORLEY, PROBE_WRAPPED_NEIGHBOURS, PROBE_WORLEY_F1,        PROBE_NEAREST_CELL,
       PROBE_F1_SEARCHED,   PROBE_NEIGHBOUR_OFFSET,   PROBE_WIDER_SEARCH,     PROBE_WORLEY_RESULT,
-      PROBE_WORLEY_CELL,   PROBE_NEAR_OFFSET};
-  for (int k = 0; k < 196; ++k) {
-    const int f = functions[k % 14];
+      PROBE_WORLEY_CELL,   PROBE_NEAR_OFFSET,        PROBE_WIDER_OFFSET};
+  for (int k = 0; k < 210; ++k) {
+    const int f = functions[k % 15];
     const bool integer = f == PROBE_WRAP_CELL || f == PROBE_FEATURE_OFFSET || f == PROBE_WRAPPED_FEATURE_OFFSET ||
-                         f == PROBE_WRAPPED_NEIGHBOURS || f == PROBE_NEIGHBOUR_OFFSET || f == PROBE_NEAR_OFFSET;
+                         f == PROBE_WRAPPED_NEIGHBOURS || f == PROBE_NEIGHBOUR_OFFSET || f == PROBE_NEAR_OFFSET ||
+                         f == PROBE_WIDER_OFFSET;
     const vec4 period = (k / 4) % 2 ? vec4(5.0f, 7.0f, 3.0f, 0.0f) : vec4(0.0f);
     // near_offset takes a point's fraction in its cell.
     const vec4 p =
@@ -828,6 +829,7 @@ TEST_CASE("worley.glsl on the GPU agrees with the CPU", "[probe]") {
     if (f == PROBE_F1_SEARCHED) a.z = (k / 13) % 2 ? float(NEIGHBOUR_CELLS) : 0.0f;
     if (f == PROBE_NEIGHBOUR_OFFSET) a.z = float(k % 27);
     if (f == PROBE_NEAR_OFFSET) a.z = float(k % 8);
+    if (f == PROBE_WIDER_OFFSET) a.z = float(k % 125);
     // The wider search from a best squared distance of 4 (beyond any point of the shell, which
     // then finds the nearest) or 1e30; the result from a squared distance in [0.5, 3].
     if (f == PROBE_WIDER_SEARCH) a.x = (k / 13) % 2 ? 4.0f : 1.0e30f;

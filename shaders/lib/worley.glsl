@@ -66,17 +66,22 @@ void worley_candidate(ivec3 cell, ivec3 offset, vec3 f, ivec3 period, uvec3 key,
   worley_nearer(feature_offset(cell + offset, period, key), offset, f, best, best_delta);
 }
 
+// The k-th cell (k in [0, 125)) of the 5x5x5 block around a point's cell, x fastest.
+const int WIDER_CELLS = 125;
+ivec3 wider_offset(int k) { return ivec3(k % 5 - 2, (k / 5) % 5 - 2, k / 25 - 2); }
+
 // The 5x5x5 block's outer shell around p's cell (p at f within it), which F1 needs where the 27
 // cells around it found no point within 1 (rarely: every point outside them is at least 1 away,
-// and F1 is at most sqrt(3) < 2).
-void worley_wider_search(ivec3 cell, vec3 f, ivec3 period, uvec3 key, INOUT(float) best, INOUT(vec3) best_delta) {
-  for (int k = -2; k <= 2; ++k) {
-    for (int j = -2; j <= 2; ++j) {
-      for (int i = -2; i <= 2; ++i) {
-        if (max(max(abs(i), abs(j)), abs(k)) == 2) {
-          worley_candidate(cell, ivec3(i, j, k), f, period, key, best, best_delta);
-        }
-      }
+// and F1 is at most sqrt(3) < 2). `searched`: WIDER_CELLS, or 0 where the 27 found one
+// (SKIPPABLE). A loop over the cells rather than an `if` around them: llvmpipe runs an `if`'s body
+// for every group of lanes, which made this rare search a tenth of the 1024 cover's density
+// pass; a group that does not enter the loop pays one masked cell.
+void worley_wider_search(ivec3 cell, vec3 f, ivec3 period, uvec3 key, int searched, INOUT(float) best,
+                         INOUT(vec3) best_delta) {
+  for (int k = 0; k < searched; ++k) {
+    ivec3 offset = wider_offset(k);
+    if (max(max(abs(offset.x), abs(offset.y)), abs(offset.z)) == 2) {
+      worley_candidate(cell, offset, f, period, key, best, best_delta);
     }
   }
 }
@@ -124,7 +129,7 @@ vec4 worley_f1(vec3 p, ivec3 period, uvec3 key) {
       }
     }
   }
-  if (best > 1.0f) worley_wider_search(c.cell, c.f, period, key, best, best_delta);
+  worley_wider_search(c.cell, c.f, period, key, SKIPPABLE(best > 1.0f, WIDER_CELLS), best, best_delta);
   return worley_result(best, best_delta);
 }
 
@@ -156,7 +161,8 @@ vec4 worley_f1_searched(vec3 p, ivec3 period, uvec3 key, int searched) {
     vec3 feature = wrapped_feature_offset(ivec3(c.xs[offset.x + 1], c.ys[offset.y + 1], c.zs[offset.z + 1]), key);
     worley_nearer(feature, offset, c.f, best, best_delta);
   }
-  if (best > 1.0f && searched > 0) worley_wider_search(c.cell, c.f, period, key, best, best_delta);
+  worley_wider_search(c.cell, c.f, period, key, SKIPPABLE(best > 1.0f && searched > 0, WIDER_CELLS), best,
+                      best_delta);
   return worley_result(best, best_delta);
 }
 

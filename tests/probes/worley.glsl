@@ -15,6 +15,7 @@ const int PROBE_WIDER_SEARCH = 10;     // worley_wider_search(floor(p), fract(p)
 const int PROBE_WORLEY_RESULT = 11;    // worley_result(a, x[1].xyz)
 const int PROBE_NEAR_OFFSET = 13;       // near_offset(int(c), x[1].xyz)
 const int PROBE_WORLEY_CELL = 12;      // worley_cell(p, period): cell in xyz, f.x + xs.x + ys.z + zs.y in w
+const int PROBE_WIDER_OFFSET = 14;     // wider_offset(int(c))
 #ifndef __cplusplus
 #include "../lib/worley.glsl"
 #endif
@@ -50,11 +51,12 @@ vec4 probe_worley(mat4 x) {
   }
   if (f == PROBE_NEIGHBOUR_OFFSET) return vec4(vec3(neighbour_offset(int(x[0].w))), 0.0f);
   if (f == PROBE_NEAR_OFFSET) return vec4(vec3(near_offset(int(x[0].w), vec3(x[1]))), 0.0f);
+  if (f == PROBE_WIDER_OFFSET) return vec4(vec3(wider_offset(int(x[0].w))), 0.0f);
   if (f == PROBE_WIDER_SEARCH) {
     float best = x[0].y;
     vec3 best_delta = vec3(0.0f);
     vec3 p = vec3(x[1]);
-    worley_wider_search(ivec3(floor(p)), p - floor(p), period, key, best, best_delta);
+    worley_wider_search(ivec3(floor(p)), p - floor(p), period, key, WIDER_CELLS, best, best_delta);
     return vec4(best_delta, best);
   }
   if (f == PROBE_WORLEY_RESULT) return worley_result(x[0].y, vec3(x[1]));
