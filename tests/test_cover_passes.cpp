@@ -169,7 +169,9 @@ TEST_CASE("density and coverage passes agree with the CPU twin", "[pass]") {
     const float cyclones = cyclone_systems(origin, systems, cyclones_near(origin, systems), system_edge(noise));
     const vec4 regimes = belt_regimes(origin, latitude, systems, systems.seed);
     const float band = itcz_band(vec3(identity[k]), systems, system_edge(noise));
-    const vec4 belts = belt_fields(origin, band, latitude, systems, systems.seed, system_edge(noise), regimes);
+    // The density pass's texels, 2 / size radians across at a face's centre.
+    const vec4 belts =
+        belt_fields(origin, band, latitude, systems, systems.seed, system_edge(noise), regimes, 2.0f / float(p.size));
     const float systems_value = std::max(cyclones, belt_cloud(belts));
     const float shaped = shaped_density(noise, curl[k].w, p.cyclone_cloudiness, 0.0f, 0.0f);
     // The convective cells (none resolved by 16 texels a face: the modulation is 0 here).
@@ -214,8 +216,8 @@ TEST_CASE("density and coverage passes agree with the CPU twin", "[pass]") {
     REQUIRE(density[k] == Approx(expected).epsilon(0).margin((kDensity * factor + 4 * kUlp * shaped) * 1.5 +
                                                              0.5 * shaped * systems_error +
                                                              MOAT_CLEARING * 1.5 * shaped * moat_error));
-    // The cover contrast of the trades' shallow cumulus at the texel's own latitude: 0.92 of the
-    // shallow weight's error at most, and the organised patterns' share's (kSystems) times 0.08 x 0.7;
+    // The cover contrast of the trades' shallow cumulus at the texel's own latitude: 0.86 of the
+    // shallow weight's error at most, and the organised patterns' share's (kSystems) times 0.14 x 0.7;
     // times the open cells' factor, whose weight takes the deck's error (its fray's, DECK_FRAY times the
     // edge's kDensity / 0.148, through the presence's and the closed weight's smoothsteps, slopes 1.5 /
     // 0.2 and 1.5 / 0.4), the cold sectors' and the storm tracks' (kSystems) and the hidden share's (the
@@ -338,7 +340,8 @@ TEST_CASE("the trades' unorganised cloud keeps its place and turns dim and the m
   // frays it: frayed_deck at the largest edge). The regime leaves the
   // densities, and so the calibration and which texels are cloudy, as they are, and scales each
   // cloudy texel's excess over the threshold by the contrast: with the remap's cover
-  // c = 1 - (1 - e) exp(-x / s), the excess x = -s ln((1 - c) / (1 - e)) shrinks by that factor.
+  // c = 1 - (1 - e) exp(-x / s), the excess x = -s ln((1 - c) / (1 - e)) shrinks by that factor
+  // (and the edge e, COVER_EDGE, with it: contrasted_cover).
   // Beyond 33.2 degrees the weight is 0: the same covers, to the bit. (Without the trade cumulus
   // nothing organises the shallow cloud into clumps and moats: trade_moat and the moats' dimming
   // are 0.)
@@ -357,7 +360,7 @@ TEST_CASE("the trades' unorganised cloud keeps its place and turns dim and the m
   const auto [identity, warp, without, seed] = run(0.0f);
   const auto with = std::get<2>(run(1.0f));
   const float softness = cover::CoverParameters{}.cover_softness;
-  const auto excess = [&](float c) { return -softness * std::log((1.0f - c) / (1.0f - COVER_EDGE)); };
+  const auto excess = [&](float c, float edge) { return -softness * std::log((1.0f - c) / (1.0f - edge)); };
   int equatorial = 0, far = 0, near_deck = 0;
   double worst = 0, grey = 0, bright = 0;
   for (size_t k = 0; k < with.size(); ++k) {
@@ -380,7 +383,9 @@ TEST_CASE("the trades' unorganised cloud keeps its place and turns dim and the m
     // without; and the contrasted density rounds once (an ulp of the threshold, below 1, over s).
     const double tolerance =
         softness * 8 * kUlp * (SHALLOW_CONTRAST / (1.0 - without[k]) + 1.0 / (1.0 - with[k])) + 2 * kUlp;
-    worst = std::max(worst, std::abs(excess(with[k]) - SHALLOW_CONTRAST * excess(without[k])) / tolerance);
+    worst = std::max(worst, std::abs(excess(with[k], SHALLOW_CONTRAST * COVER_EDGE) -
+                                     SHALLOW_CONTRAST * excess(without[k], COVER_EDGE)) /
+                                tolerance);
     grey += with[k], bright += without[k];
   }
   INFO(equatorial << " cloudy equatorial texels (" << near_deck << " more whose air comes from a deck's reach); worst "

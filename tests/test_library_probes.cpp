@@ -206,6 +206,13 @@ struct Random {
   vec4 v(float lo, float hi) { return vec4((*this)(lo, hi), (*this)(lo, hi), (*this)(lo, hi), 0.0f); }
 };
 
+// A cover's texels' arc at a face's centre, 2 / size radians, for sizes from 256 to 4096 per face,
+// or 0 (the trades' clumps' own rims, resolved_rim) in about a third of the cases.
+float texel_arc(Random& r) {
+  const float u = r(0.0f, 1.0f);
+  return u < 0.33f ? 0.0f : 2.0f / std::exp2(r(8.0f, 12.0f));
+}
+
 }  // namespace
 
 TEST_CASE("every function of each GLSL library file appears in that file's probe", "[fast][probe][coverage]") {
@@ -574,8 +581,8 @@ TEST_CASE("weather_systems.glsl on the GPU agrees with the CPU", "[probe]") {
     const float seed = float(k % 5 + 1);
     cases.push_back(
         {arguments(PROBE_CELL_CLOUDS, vec4(r(5.0f, 50.0f), seed, r(-1.0f, 1.0f), 0), vec4(q, 0)), 12.5f * 50 * kFbm});
-    cases.push_back(
-        {arguments(PROBE_BELTS, vec4(r(-0.1f, 0.2f), seed, r(-1.0f, 1.0f), 0), vec4(q, 0)), 12.5f * 70 * kFbm});
+    cases.push_back({arguments(PROBE_BELTS, vec4(r(-0.1f, 0.2f), seed, r(-1.0f, 1.0f), 0), vec4(q, texel_arc(r))),
+                     12.5f * 70 * kFbm});
     // The convective systems' radius: a few operations and a square root on values below 1; their
     // cloud a smoothstep of slope 1.5 / 0.15 = 10; their presence a polynomial bump of an offset
     // made with the line's sine and cosine and divided by widths down to 0.07 (14 per unit of sine).
@@ -650,12 +657,12 @@ TEST_CASE("weather_systems.glsl on the GPU agrees with the CPU", "[probe]") {
     cases.push_back({arguments(PROBE_LOCAL_EAST, vec4(0.0f), vec4(q, 0)), kArithmetic});
     // A product and a clamp: a few roundings, through the presence's smoothstep (slope 7.5).
     cases.push_back({arguments(PROBE_FRAYED_DECK, vec4(r(0.0f, 1.0f), r(-1.2f, 1.2f), 0, 0)), kArithmetic * 8});
-    cases.push_back(
-        {arguments(PROBE_WEATHER_DENSITY, vec4(r(-0.1f, 0.2f), seed, r(-1.0f, 1.0f), 0), vec4(q, 0), cyclone, life),
-         std::max(band, 12.5f * 70 * kFbm)});
-    cases.push_back(
-        {arguments(PROBE_BELT_FIELDS, vec4(r(-0.1f, 0.2f), seed, r(-1.0f, 1.0f), 0), vec4(q, 0), cyclone, life),
-         std::max(band, 12.5f * 70 * kFbm)});
+    cases.push_back({arguments(PROBE_WEATHER_DENSITY, vec4(r(-0.1f, 0.2f), seed, r(-1.0f, 1.0f), 0),
+                               vec4(q, texel_arc(r)), cyclone, life),
+                     std::max(band, 12.5f * 70 * kFbm)});
+    cases.push_back({arguments(PROBE_BELT_FIELDS, vec4(r(-0.1f, 0.2f), seed, r(-1.0f, 1.0f), 0), vec4(q, texel_arc(r)),
+                               cyclone, life),
+                     std::max(band, 12.5f * 70 * kFbm)});
     // The cells: the point's scaling by 160 cells a radius rounds it by ulp(160) = 1.5e-5 of a cell;
     // the border's plane distance takes about twice that and its division by a sine of at least 0.2
     // five times, 1.5e-4 of a cell, through the closed pattern's smoothstep of slope 1.5 / 0.05 = 30:
@@ -692,9 +699,10 @@ TEST_CASE("weather_systems.glsl on the GPU agrees with the CPU", "[probe]") {
     // through its rim's slope, at most 1.5 / 0.15 = 10 (rims from the flowers' 0.15 to the whole
     // radius); a rim's cloud of exact distances a smoothstep's rounding.
     cases.push_back({arguments(PROBE_TRADE_CLUMP, vec4(r(5.0f, 60.0f), seed, 0, r(0.0f, 1.0f)), vec4(q, 0), vec4(0.0f),
-                               vec4(r(-1.0f, 1.0f), r(0.15f, 1.0f), r(0.0f, 1.5f), 0)),
+                               vec4(r(-1.0f, 1.0f), r(0.15f, 1.0f), r(0.0f, 1.5f), texel_arc(r))),
                      3.0e-2f});
-    cases.push_back({arguments(PROBE_TRADE_CLUMPS, vec4(r(-1.0f, 1.0f), seed, 0, r(0.0f, 1.0f)), vec4(q, 0)), 3.0e-2f});
+    cases.push_back(
+        {arguments(PROBE_TRADE_CLUMPS, vec4(r(-1.0f, 1.0f), seed, 0, r(0.0f, 1.0f)), vec4(q, texel_arc(r))), 3.0e-2f});
     // The storm tracks' cold air: smoothsteps of the latitude (slope 1.5 / 0.09 on the portable
     // arcsine's error, 5.2e-7), of the cyclonic depth (exact inputs) and of the wind's equatorward
     // share (a quotient of a dot product and lengths, a few ulp: slope 1.5 / 0.6), times the sea's

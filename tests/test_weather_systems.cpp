@@ -725,7 +725,7 @@ TEST_CASE("gravel is many small separate clumps, and the trades' cumulus none at
   const double lat = 18.0 * M_PI / 180.0;
   Runs runs;
   add_runs(
-      runs, [&](vec3 p) { return glsl::gravel_clumps(p, seed, 0.5f, glsl::NEAR_CELLS); },
+      runs, [&](vec3 p) { return glsl::gravel_clumps(p, seed, 0.5f, 0.0f, glsl::NEAR_CELLS); },
       [&](double lon) { return direction_at(lat, lon); }, 2 * M_PI * earth_radius_km * std::cos(lat), 200000);
   // A clump's disc is at most 2 x 0.45 cells of 106 km across, 1.15 times that with the edge
   // here (0.3 x 0.5 of a radius): 110 km; two overlapping ones 220 km.
@@ -748,7 +748,7 @@ TEST_CASE("gravel is many small separate clumps, and the trades' cumulus none at
   for (float at : {0.0f, 1.2f}) {
     const vec3 p(std::cos(at), 0.0f, std::sin(at));
     for (float edge : {-1.0f, 1.0f})
-      CHECK(glsl::trade_cumulus(p, at, seed, edge, glsl::trade_regimes(p, seed, 2)) == 0.0f);
+      CHECK(glsl::trade_cumulus(p, at, seed, edge, glsl::trade_regimes(p, seed, 2), 0.0f) == 0.0f);
   }
 }
 
@@ -793,8 +793,8 @@ TEST_CASE("the trades' four patterns each hold about a quarter of the trades and
 TEST_CASE("flowers are bouquets well apart and fish are bands far longer than wide", "[fast][systems]") {
   Runs flowers_east, fish_east, fish_north;
   for (std::uint32_t seed = 1; seed <= 4; ++seed) {
-    const auto flower = [&](vec3 p) { return glsl::flower_clumps(p, seed, 0.0f, glsl::NEAR_CELLS); };
-    const auto fish = [&](vec3 p) { return glsl::fish_clumps(p, seed, 0.0f, glsl::NEAR_CELLS); };
+    const auto flower = [&](vec3 p) { return glsl::flower_clumps(p, seed, 0.0f, 0.0f, glsl::NEAR_CELLS); };
+    const auto fish = [&](vec3 p) { return glsl::fish_clumps(p, seed, 0.0f, 0.0f, glsl::NEAR_CELLS); };
     for (double degrees : {12.0, 18.0, 24.0}) {
       const double lat = degrees * M_PI / 180.0, circle = 2 * M_PI * earth_radius_km * std::cos(lat);
       const auto east = [&](double lon) { return direction_at(lat, lon); };
@@ -872,10 +872,10 @@ TEST_CASE("gravel's and fish's clumps fade over their rims and flowers end sharp
     for (double degrees : {12.0, 18.0, 24.0}) {
       const double lat = degrees * M_PI / 180.0, circle = 2 * M_PI * earth_radius_km * std::cos(lat);
       const auto east = [&](double lon) { return direction_at(lat, lon); };
-      const auto g = rise_widths([&](vec3 p) { return glsl::gravel_clumps(p, seed, 0.0f, glsl::NEAR_CELLS); }, east,
-                                 circle, 200000);
-      const auto f = rise_widths([&](vec3 p) { return glsl::flower_clumps(p, seed, 0.0f, glsl::NEAR_CELLS); }, east,
-                                 circle, 200000);
+      const auto g = rise_widths([&](vec3 p) { return glsl::gravel_clumps(p, seed, 0.0f, 0.0f, glsl::NEAR_CELLS); },
+                                 east, circle, 200000);
+      const auto f = rise_widths([&](vec3 p) { return glsl::flower_clumps(p, seed, 0.0f, 0.0f, glsl::NEAR_CELLS); },
+                                 east, circle, 200000);
       gravel.insert(gravel.end(), g.begin(), g.end());
       flowers.insert(flowers.end(), f.begin(), f.end());
     }
@@ -897,6 +897,43 @@ TEST_CASE("gravel's and fish's clumps fade over their rims and flowers end sharp
   }
   CHECK(glsl::FLOWER_RIM < glsl::FISH_RIM);
   CHECK(glsl::FISH_RIM < glsl::GRAVEL_RIM);
+}
+
+TEST_CASE("a trade clump's rim is never narrower than the cover's texel and its own where texels are finer",
+          "[fast][systems]") {
+  // resolved_rim: a texel of 2 / size radians is texel_arc x 40 / 0.3 of a mean flower's radius
+  // (0.3 cells of 40 a radius): 0.52 at 512 per face, 0.26 at 1024, 0.065 at 4096 (under the
+  // flowers' own 0.15, which then holds), the whole radius from 128.
+  const vec2 radii(0.22f, 0.38f);
+  CHECK(glsl::resolved_rim(glsl::FLOWER_RIM, 40.0f, radii, 0.0f) == glsl::FLOWER_RIM);
+  CHECK(glsl::resolved_rim(glsl::FLOWER_RIM, 40.0f, radii, 2.0f / 4096) == glsl::FLOWER_RIM);
+  CHECK(glsl::resolved_rim(glsl::FLOWER_RIM, 40.0f, radii, 2.0f / 512) == Approx(2.0 / 512 * 40 / 0.3).epsilon(1e-5));
+  CHECK(glsl::resolved_rim(glsl::FLOWER_RIM, 40.0f, radii, 2.0f / 1024) == Approx(2.0 / 1024 * 40 / 0.3).epsilon(1e-5));
+  CHECK(glsl::resolved_rim(glsl::FLOWER_RIM, 40.0f, radii, 2.0f / 128) == 1.0f);
+  CHECK(glsl::resolved_rim(glsl::GRAVEL_RIM, 60.0f, vec2(0.2f, 0.38f), 2.0f / 1024) == glsl::GRAVEL_RIM);
+  // Drawn at 512 per face, the flowers rise from 0.1 to 0.9 over 0.61 (a smoothstep's middle) of
+  // the rim, for the smallest flower 0.22 / 0.3 of a texel of 25 km: 11 km, where their own rims
+  // rise within 5.5 km (the test above); the outlines' warp squeezes that by at most 1 + 0.72 (its
+  // displacement's gradient, flower_clumps), to 6.5 km, and most rises are wider than 0.61 texels.
+  const double texel_km = 2.0 / 512 * earth_radius_km;
+  std::vector<double> coarse;
+  for (std::uint32_t seed = 1; seed <= 3; ++seed) {
+    for (double degrees : {12.0, 18.0, 24.0}) {
+      const double lat = degrees * M_PI / 180.0, circle = 2 * M_PI * earth_radius_km * std::cos(lat);
+      const auto east = [&](double lon) { return direction_at(lat, lon); };
+      const auto f =
+          rise_widths([&](vec3 p) { return glsl::flower_clumps(p, seed, 0.0f, 2.0f / 512, glsl::NEAR_CELLS); }, east,
+                      circle, 200000);
+      coarse.insert(coarse.end(), f.begin(), f.end());
+    }
+  }
+  const double step_km = 2 * M_PI * earth_radius_km / 200000;
+  const double least = *std::min_element(coarse.begin(), coarse.end());
+  INFO("flowers at 512: " << coarse.size() << " rises, median " << median_of(coarse) << " km, least " << least
+                          << " km");
+  REQUIRE(coarse.size() > 100);
+  CHECK(least >= 0.61 * (0.22 / 0.3) * texel_km / 1.72 - 2 * step_km);
+  CHECK(median_of(coarse) > 0.61 * texel_km);
 }
 
 TEST_CASE("the 8 nearest cells hold every feature point within half a cell, and every trade clump the 27 find",
@@ -930,12 +967,12 @@ TEST_CASE("the 8 nearest cells hold every feature point within half a cell, and 
     const vec3 p = glm::normalize(vec3(unit(rng), unit(rng), 0.5f * unit(rng)));
     const float edge = unit(rng);
     for (std::uint32_t seed : {1u, 2u}) {
-      REQUIRE(glsl::gravel_clumps(p, seed, edge, glsl::NEAR_CELLS) ==
-              glsl::gravel_clumps(p, seed, edge, glsl::NEIGHBOUR_CELLS));
-      REQUIRE(glsl::flower_clumps(p, seed, edge, glsl::NEAR_CELLS) ==
-              glsl::flower_clumps(p, seed, edge, glsl::NEIGHBOUR_CELLS));
-      REQUIRE(glsl::fish_clumps(p, seed, edge, glsl::NEAR_CELLS) ==
-              glsl::fish_clumps(p, seed, edge, glsl::NEIGHBOUR_CELLS));
+      REQUIRE(glsl::gravel_clumps(p, seed, edge, 0.0f, glsl::NEAR_CELLS) ==
+              glsl::gravel_clumps(p, seed, edge, 0.0f, glsl::NEIGHBOUR_CELLS));
+      REQUIRE(glsl::flower_clumps(p, seed, edge, 0.0f, glsl::NEAR_CELLS) ==
+              glsl::flower_clumps(p, seed, edge, 0.0f, glsl::NEIGHBOUR_CELLS));
+      REQUIRE(glsl::fish_clumps(p, seed, edge, 0.0f, glsl::NEAR_CELLS) ==
+              glsl::fish_clumps(p, seed, edge, 0.0f, glsl::NEIGHBOUR_CELLS));
     }
   }
 }
@@ -1620,10 +1657,11 @@ TEST_CASE("open cells dim their cloud to about half the thick cloud's cover, dec
   CHECK(glsl::cover_contrast(1.0f, 0.0f, 1.0f) ==
         Approx(glsl::SHALLOW_CONTRAST * glsl::OPEN_CELL_CLOUD_CONTRAST).margin(1e-7));
   // A wall two noise spreads (0.15) above the threshold at the default softness 0.05: cover
-  // 1 - 0.9 exp(-0.25 x 3) = 0.575 against 1 - 0.9 exp(-3) = 0.955 without the cells.
+  // 1 - (1 - 0.1 x 0.25) exp(-0.25 x 3) = 0.539 (the edge's step shrinks with the contrast) against
+  // 1 - 0.9 exp(-3) = 0.955 without the cells.
   const float threshold = 0.45f, softness = 0.05f, wall = threshold + 0.15f;
   const float dimmed = glsl::contrasted_cover(wall, threshold, 1.0f, softness, glsl::cover_contrast(0.0f, 0.0f, 1.0f));
-  CHECK(dimmed == Approx(1.0 - 0.9 * std::exp(-0.75)).margin(1e-5));
+  CHECK(dimmed == Approx(1.0 - 0.975 * std::exp(-0.75)).margin(1e-5));
   CHECK(glsl::contrasted_cover(wall, threshold, 1.0f, softness, glsl::cover_contrast(0.0f, 0.0f, 0.0f)) ==
         Approx(1.0 - 0.9 * std::exp(-3.0)).margin(1e-5));
   // The weight is the open pattern's: all of a cold sector and of a deck's fringe, none of a deck's
@@ -1687,19 +1725,20 @@ TEST_CASE("the trades' shallow regime shrinks the cloud's excess and leaves the 
   CHECK(glsl::cover_contrast(1.0f, 0.5f, 0.0f) ==
         Approx(glsl::SHALLOW_CONTRAST * 0.5f * (1.0f + glsl::MOAT_CONTRAST)).margin(1e-7));
   // The contrasted cover: 0 where clear, the plain cover where the contrast is 1 (to the bit), and
-  // where it is below 1 the cover of the excess shrunk by it, still cloudy however small the
-  // excess, and in the order of the densities.
+  // where it is below 1 the cover of the excess shrunk by it with an edge's step shrunk as much
+  // (1 - (1 - c e) exp(-c x / s)): still cloudy however small the excess, soft at its edge as dim
+  // cloud is, and in the order of the densities.
   const float threshold = 0.45f, softness = 0.05f;
   for (float d : {0.2f, 0.45f}) CHECK(glsl::contrasted_cover(d, threshold, 1.0f, softness, 0.08f) == 0.0f);
   for (float d : {0.4500001f, 0.5f, 0.6f, 0.9f}) {
     CHECK(glsl::contrasted_cover(d, threshold, 1.0f, softness, 1.0f) ==
           glsl::cover_from_density(d, threshold, 1.0f, softness));
-    CHECK(glsl::contrasted_cover(d, threshold, 1.0f, softness, 0.08f) >= glsl::COVER_EDGE);
+    CHECK(glsl::contrasted_cover(d, threshold, 1.0f, softness, 0.08f) >= 0.08f * glsl::COVER_EDGE);
   }
+  CHECK(glsl::contrasted_cover(0.4500001f, threshold, 1.0f, softness, 0.08f) < 0.01f);  // a soft edge
   for (float d : {0.5f, 0.6f, 0.9f})
-    CHECK(
-        glsl::contrasted_cover(d, threshold, 1.0f, softness, 0.08f) ==
-        Approx(glsl::cover_from_density(threshold + 0.08f * (d - threshold), threshold, 1.0f, softness)).margin(1e-6));
+    CHECK(glsl::contrasted_cover(d, threshold, 1.0f, softness, 0.08f) ==
+          Approx(1.0 - (1.0 - 0.08 * glsl::COVER_EDGE) * std::exp(-0.08 * (d - threshold) / softness)).margin(1e-6));
   // Shrinking the density itself would lose a cloudy texel this close to the threshold (the sum
   // rounds to the threshold); shrinking its excess keeps it cloudy.
   CHECK(glsl::cover_from_density(threshold + 0.08f * (0.4500001f - threshold), threshold, 1.0f, softness) == 0.0f);
@@ -1732,13 +1771,13 @@ TEST_CASE("the trades' shallow regime shrinks the cloud's excess and leaves the 
     clump.cumulus = strength[k];
     CHECK(glsl::shallow_trades_weight(clump, 15.0f * degree, 0.0f, 1.0f) == Approx(kept[k]).margin(1e-6));
   }
-  // An anvil takes three quarters of the regime: its cover contrast is 0.31, between the
-  // cumulus' 0.08 and a system's 1.
+  // An anvil takes three quarters of the regime: its cover contrast is 1 - 0.75 x 0.86 = 0.355,
+  // between the cumulus' 0.14 and a system's 1.
   glsl::CloudTypes anvil = thin;
   anvil.anvil = 1.0f;
   CHECK(glsl::shallow_trades_weight(anvil, 5.0f * degree, 0.0f, 1.0f) == Approx(0.75f).margin(1e-6));
   CHECK(glsl::cover_contrast(glsl::shallow_trades_weight(anvil, 5.0f * degree, 0.0f, 1.0f), 0.0f, 0.0f) ==
-        Approx(0.31f).margin(1e-6));
+        Approx(0.355f).margin(1e-6));
   // Half a front's weight, half the regime; the belt falls monotonically from 26 to 33 degrees.
   front.frontal = 0.5f;
   CHECK(glsl::shallow_trades_weight(front, 20.0f * degree, 0.0f, 1.0f) == Approx(0.5f).margin(1e-6));

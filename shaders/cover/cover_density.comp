@@ -83,11 +83,11 @@ float origin_latitude(vec3 origin) { return portable_asin(clamp(origin.z, -1.0f,
 
 // The belts' fields at a layer's origin of geocentric `latitude` (belt_fields; `band` the ITCZ's band
 // at the texel's own direction, itcz_band) and in `organised` the trades' organised share there
-// (organised_trades), from one evaluation of the trades' patterns.
-vec4 belts_at(vec3 origin, float band, float latitude, uint seed, float edge, OUT(float) organised) {
+// (organised_trades), from one evaluation of the trades' patterns; texels texel_arc radians across.
+vec4 belts_at(vec3 origin, float band, float latitude, uint seed, float edge, float texel_arc, OUT(float) organised) {
   vec4 regimes = belt_regimes(origin, latitude, u_systems, seed);
   organised = organised_trades(regimes, latitude, u_systems.trade_cumulus);
-  return belt_fields(origin, band, latitude, u_systems, seed, edge, regimes);
+  return belt_fields(origin, band, latitude, u_systems, seed, edge, regimes, texel_arc);
 }
 
 // The stratocumulus deck's strength at a layer's origin of geocentric `latitude` (x; from the bias's deck term `deck_term`
@@ -154,7 +154,7 @@ void main() {
     float older_latitude = origin_latitude(origin);  // each layer's origin's, for its belts and its cells
     float organised;  // the trades' organised share, blended between the layers as the belts
     float band = itcz_band(direction, u_systems, edge);  // the ITCZ's, at the texel: both layers'
-    vec4 fields = belts_over_surface(belts_at(origin, band, older_latitude, u_systems.seed, edge, organised), surface);
+    vec4 fields = belts_over_surface(belts_at(origin, band, older_latitude, u_systems.seed, edge, texel_arc, organised), surface);
     float belts = belt_cloud(fields);
     vec3 older_origin = origin;
 #if MOVING_LAYERS
@@ -162,7 +162,7 @@ void main() {
     float young_latitude = origin_latitude(young_origin);
     float young_organised;
     vec4 young_fields = belts_over_surface(
-        belts_at(young_origin, band, young_latitude, u_young_systems_seed, edge, young_organised), surface);
+        belts_at(young_origin, band, young_latitude, u_young_systems_seed, edge, texel_arc, young_organised), surface);
     organised = layer_blend(organised, young_organised, u_young_share);
     belts = layer_blend(belts, belt_cloud(young_fields), u_young_share);
     fields = mix(fields, young_fields, u_young_share);

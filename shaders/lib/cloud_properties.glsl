@@ -117,16 +117,16 @@ float cloud_top_km(IN(CloudTypes) types, float latitude, float cyclonic, float d
 // neither broken cumulus nor thick cloud. Optically thin (tau of a few), they reflect less than
 // half of what thick cloud does (two-stream R = x / (1 + x), x = 3/4 (1 - g) tau with g = 0.75:
 // 0.36 at tau 3 against 0.88 at tau 40). A quarter of the systems' organisation gives them the
-// cover contrast 1 - 0.75 (1 - SHALLOW_CONTRAST) = 0.31 (cover_density.glsl): the noise's cloud a
-// spread (0.074) above the threshold gets cover 1 - 0.9 exp(-0.31 x 0.074 / 0.05) = 0.43 at the
-// default softness, two spreads 0.62, against 0.20 and 0.29 in the shallow cumulus around them.
+// cover contrast 1 - 0.75 (1 - SHALLOW_CONTRAST) = 0.355 (cover_density.glsl): the noise's cloud a
+// spread (0.074) above the threshold gets cover 1 - 0.965 exp(-0.355 x 0.074 / 0.05) = 0.43 at the
+// default softness, two spreads 0.66, against 0.20 and 0.35 in the shallow cumulus around them.
 const float ANVIL_ORGANISED = 0.25f;
 
 // The organisation of the trades' cumulus clumps from their type weight c (weather_systems.glsl's
 // trade_cumulus: at a clump's core the pattern's strength, gravel 0.45, fish 0.8, flowers 1): c^2,
 // so that gravel's broken cumulus stay near sugar's dimness (organisation 0.2: cover contrast
-// 1 - 0.8 (1 - SHALLOW_CONTRAST) = 0.26) and the fish's and flowers' stratiform sheets are
-// bright (0.64 and 1: contrast 0.67 and 1), as the patterns' reflectances rise from sugar and
+// 1 - 0.8 (1 - SHALLOW_CONTRAST) = 0.31) and the fish's and flowers' stratiform sheets are
+// bright (0.64 and 1: contrast 0.69 and 1), as the patterns' reflectances rise from sugar and
 // gravel to fish and flowers (Bony et al. 2020).
 float cumulus_organisation(float cumulus) {
   float c = clamp(cumulus, 0.0f, 1.0f);

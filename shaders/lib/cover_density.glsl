@@ -87,14 +87,16 @@ float with_moats(float density, float moat) { return density * (1.0f - MOAT_CLEA
 // (cloud_properties.glsl's shallow_trades_weight): 1 - w (1 - SHALLOW_CONTRAST). The density pass
 // writes it beside the density, and the remap shrinks the excess by it (contrasted_cover): which
 // texels are cloudy, and so every band's coverage, the shapes and the optical thickness's ranks, are
-// the density's, and only the brightness of the cloud changes. 0.08: the noise's cloud a spread
-// (0.074) above the threshold then gets cover 1 - 0.9 exp(-0.08 x 0.074 / 0.05) = 0.20 at the
-// default softness, two spreads 0.29, as the trades' low cloud amount of 20-30 % (Brueck et al. 2015).
+// the density's, and only the brightness of the cloud changes. 0.14: the noise's cloud a spread
+// (0.074) above the threshold then gets cover 1 - (1 - 0.014) exp(-0.14 x 0.074 / 0.05) = 0.20 at
+// the default softness, two spreads 0.35, as the trades' low cloud amount of 20-30 % (Brueck et al.
+// 2015); the edge's step shrinks with the contrast (contrasted_cover), so that this dim cloud fades
+// into the clear sea.
 // Where the trades' cumulus organise into gravel, fish or flowers (weather_systems.glsl's
 // trade_regimes), their cloud gathers into the patterns' clumps and the sea between them is
 // clearer than under sugar's even dusting (Stevens et al. 2020 describe flowers and fish as set
 // apart by clear sky): the shallow cloud there keeps MOAT_CONTRAST of sugar's contrast, so
-// that a spread above the threshold it has cover 1 - 0.9 exp(-0.024 x 0.074 / 0.05) = 0.13 and
+// that a spread above the threshold it has cover 1 - 0.996 exp(-0.042 x 0.074 / 0.05) = 0.06 and
 // the clumps stand out. `organised` in [0, 1]: the organised patterns' share at the texel.
 // Open cells (`open_weight` in [0, 1]: the open pattern's weight where nothing deep hides it,
 // weather_systems.glsl's cell_weights) dim the cloud by a factor of their own, 1 - o (1 -
@@ -105,10 +107,10 @@ float with_moats(float density, float moat) { return density * (1.0f - MOAT_CLEA
 // optically medium (tau 5-15: two-stream reflectance x / (1 + x), x = 0.19 tau, 0.5-0.75 against
 // 0.9 for a frontal band's tau 50). Its cover is about half the thick cloud's, not the saturated 1
 // that the walls' density step gives: with 0.25 a wall's excess of 0.15 (two noise spreads) has
-// cover 1 - 0.9 exp(-0.25 x 0.15 / 0.05) = 0.57, one of 0.3 has 0.80, where without it they
+// cover 1 - 0.975 exp(-0.25 x 0.15 / 0.05) = 0.54, one of 0.3 has 0.78, where without it they
 // have 0.96 and 1.00. Resolved or not, the open cells' cloud is that dim: the factor holds at any
 // size.
-const float SHALLOW_CONTRAST = 0.08f;
+const float SHALLOW_CONTRAST = 0.14f;
 const float MOAT_CONTRAST = 0.3f;
 const float OPEN_CELL_CLOUD_CONTRAST = 0.25f;
 float cover_contrast(float shallow_weight, float organised, float open_weight) {
@@ -137,12 +139,17 @@ float cover_from_density(float density, float threshold, float density_max, floa
   return density > threshold ? cover_from_excess(density - threshold, density_max - threshold, softness) : 0.0f;
 }
 
-// The same with the excess shrunk by the density pass's cover contrast (cover_contrast): a cloudy
-// texel stays cloudy, its cover dimmer where the contrast is below 1, and equal to
-// cover_from_density's to the bit where it is 1.
+// The same with the excess shrunk by the density pass's cover contrast c (cover_contrast), and the
+// edge's step e with it: 1 - (1 - c e) exp(-c x / s). A cloudy texel stays cloudy, its cover
+// dimmer where the contrast is below 1, and equal to cover_from_density's to the bit where it is 1.
+// The step is a thick cloud's boundary; dim cloud, the trades' shallow cumulus or the open cells'
+// walls, is a texel partly under small clouds, whose cover fades into the clear sea beside it
+// rather than ending in a dark rim (with e alone their clear patches showed as holes with hard,
+// ragged edges in a grey field).
 float contrasted_cover(float density, float threshold, float density_max, float softness, float contrast) {
-  return density > threshold ? cover_from_excess(contrast * (density - threshold), density_max - threshold, softness)
-                             : 0.0f;
+  if (!(density > threshold)) return 0.0f;
+  if (softness > 0.0f) return 1.0f - (1.0f - COVER_EDGE * contrast) * exp(-(contrast * (density - threshold)) / softness);
+  return cover_from_excess(contrast * (density - threshold), density_max - threshold, softness);
 }
 
 #endif

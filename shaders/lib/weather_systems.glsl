@@ -639,24 +639,35 @@ vec3 presence_everywhere(float filled) { return vec3(0.0f, 1.0e6f, filled); }
 const float GRAVEL_RIM = 0.7f;
 const float FISH_RIM = 0.4f;
 const float FLOWER_RIM = CONVECTIVE_RIM;
+// A clump's rim where the cover's texels (texel_arc radians across) are too coarse for it: at least
+// CLUMP_RIM_TEXELS texels of a clump of the lattice's mean radius (`radii` in cells of `frequency` a
+// radius), at most the whole radius. A texel's cover is its area's: a clump's edge is no sharper
+// than the texel it falls in, and a rim of under a texel draws the clumps at a coarse cover as
+// hard-edged dots of a texel or two, flat white confetti (the 512 map), where a satellite's pixel
+// sees a bouquet's edge blend into the sea. texel_arc 0: the clumps' own rims.
+const float CLUMP_RIM_TEXELS = 1.0f;
+float resolved_rim(float rim, float frequency, vec2 radii, float texel_arc) {
+  float texel = CLUMP_RIM_TEXELS * texel_arc * frequency / (0.5f * (radii.x + radii.y));
+  return clamp(max(rim, texel), rim, 1.0f);
+}
 float trade_clump(vec3 p, float frequency, uint seed, uint layer, vec2 radii, float filled, float rim, float edge,
-                  int searched) {
+                  float texel_arc, int searched) {
   float d = convective_distances(p, frequency, seed, layer, radii, presence_everywhere(filled), no_line_waves(), NO_ANVIL,
                                  searched)
                 .x;
-  return rimmed_cloud(d, edge, TRADE_CLUMP_EDGE_REACH, rim);
+  return rimmed_cloud(d, edge, TRADE_CLUMP_EDGE_REACH, resolved_rim(rim, frequency, radii, texel_arc));
 }
-float gravel_clumps(vec3 p, uint seed, float edge, int searched) {
-  return trade_clump(p, 60.0f, seed, GRAVEL_LAYER, vec2(0.2f, 0.38f), 0.9f, GRAVEL_RIM, edge, searched);
+float gravel_clumps(vec3 p, uint seed, float edge, float texel_arc, int searched) {
+  return trade_clump(p, 60.0f, seed, GRAVEL_LAYER, vec2(0.2f, 0.38f), 0.9f, GRAVEL_RIM, edge, texel_arc, searched);
 }
-float flower_clumps(vec3 p, uint seed, float edge, int searched) {
+float flower_clumps(vec3 p, uint seed, float edge, float texel_arc, int searched) {
   vec3 q = tangent_warp(p, 80.0f, 0.006f, seed, FLOWERS_WARP_LAYER, SKIPPABLE(searched > 0, 2));
-  return trade_clump(q, 40.0f, seed, FLOWERS_LAYER, vec2(0.22f, 0.38f), 1.0f, FLOWER_RIM, edge, searched);
+  return trade_clump(q, 40.0f, seed, FLOWERS_LAYER, vec2(0.22f, 0.38f), 1.0f, FLOWER_RIM, edge, texel_arc, searched);
 }
-float fish_clumps(vec3 p, uint seed, float edge, int searched) {
+float fish_clumps(vec3 p, uint seed, float edge, float texel_arc, int searched) {
   vec3 q = tangent_warp(p, 20.0f, 0.015f, seed, FISH_WARP_LAYER, SKIPPABLE(searched > 0, 2));
   return trade_clump(vec3(q.x, q.y, FISH_STRETCH * q.z), 5.0f, seed, FISH_LAYER, vec2(0.3f, 0.38f), 0.8f, FISH_RIM,
-                     edge, searched);
+                     edge, texel_arc, searched);
 }
 
 // The trade cumulus' belt at geocentric `latitude` (radians): from about 6 to 30 degrees where
@@ -693,13 +704,13 @@ const vec3 TRADE_PATTERN_STRENGTH = vec3(0.45f, 0.8f, 1.0f);  // gravel, fish, f
 // Sugar draws no clumps: its cloud is the noise's dim shallow cloud (cover_density.glsl's
 // cover_contrast). A pattern absent from a group of lanes costs no search. `regimes`: the patterns'
 // weights at p (trade_regimes, or belt_regimes).
-float trade_cumulus(vec3 p, float latitude, uint seed, float edge, vec4 regimes) {
+float trade_cumulus(vec3 p, float latitude, uint seed, float edge, vec4 regimes, float texel_arc) {
   float belt = trade_cumulus_belt(latitude);
   // Gravel's fields are patchy where the noise is low; flowers and fish fill their regions.
   float patchy = smoothstep(-0.4f, 0.2f, edge);
-  float gravel = gravel_clumps(p, seed, edge, SKIPPABLE(belt > 0.0f && regimes.y > 0.0f, NEAR_CELLS));
-  float fish = fish_clumps(p, seed, edge, SKIPPABLE(belt > 0.0f && regimes.z > 0.0f, NEAR_CELLS));
-  float flowers = flower_clumps(p, seed, edge, SKIPPABLE(belt > 0.0f && regimes.w > 0.0f, NEAR_CELLS));
+  float gravel = gravel_clumps(p, seed, edge, texel_arc, SKIPPABLE(belt > 0.0f && regimes.y > 0.0f, NEAR_CELLS));
+  float fish = fish_clumps(p, seed, edge, texel_arc, SKIPPABLE(belt > 0.0f && regimes.z > 0.0f, NEAR_CELLS));
+  float flowers = flower_clumps(p, seed, edge, texel_arc, SKIPPABLE(belt > 0.0f && regimes.w > 0.0f, NEAR_CELLS));
   float clumps = max(max(TRADE_PATTERN_STRENGTH.x * regimes.y * gravel * patchy, TRADE_PATTERN_STRENGTH.y * regimes.z * fish),
                      TRADE_PATTERN_STRENGTH.z * regimes.w * flowers);
   return belt > 0.0f ? belt * clumps : 0.0f;
@@ -1159,10 +1170,11 @@ float cyclone_systems(vec3 p, IN(WeatherSystems) systems, uint near, float edge)
 // `regimes`: the trades' patterns' weights at p (belt_regimes). p is the air's origin; `band` the
 // ITCZ's band at the texel's own direction (itcz_band).
 const vec3 BELT_WEIGHTS = vec3(1.0f, 0.6f, 0.35f);
-vec4 belt_fields(vec3 p, float band, float latitude, IN(WeatherSystems) systems, uint seed, float edge, vec4 regimes) {
+vec4 belt_fields(vec3 p, float band, float latitude, IN(WeatherSystems) systems, uint seed, float edge, vec4 regimes,
+                 float texel_arc) {
   vec4 fields = vec4(0.0f);
   if (systems.trade_cumulus > 0.0f)
-    fields.y = BELT_WEIGHTS.y * systems.trade_cumulus * trade_cumulus(p, latitude, seed, edge, regimes);
+    fields.y = BELT_WEIGHTS.y * systems.trade_cumulus * trade_cumulus(p, latitude, seed, edge, regimes, texel_arc);
   if (systems.cirrus > 0.0f) fields.z = BELT_WEIGHTS.z * systems.cirrus * cirrus_streaks(p, latitude, seed);
   if (systems.itcz > 0.0f) {
     vec2 itcz = systems.itcz * itcz_systems(p, band, latitude, systems.itcz_latitude, systems.itcz_waves, seed, edge);
@@ -1204,17 +1216,18 @@ float cells_hidden(IN(CloudTypes) types) { return clamp(max(types.frontal, types
 float itcz_band(vec3 now, IN(WeatherSystems) systems, float edge) {
   return itcz_line_band(now, systems.itcz_latitude, systems.itcz_waves, edge);
 }
-float belt_systems(vec3 p, vec3 now, float latitude, IN(WeatherSystems) systems, uint seed, float edge) {
+float belt_systems(vec3 p, vec3 now, float latitude, IN(WeatherSystems) systems, uint seed, float edge, float texel_arc) {
   return belt_cloud(belt_fields(p, itcz_band(now, systems, edge), latitude, systems, seed, edge,
-                                belt_regimes(p, latitude, systems, seed)));
+                                belt_regimes(p, latitude, systems, seed), texel_arc));
 }
 
 // All systems at the unit direction p of geocentric latitude `latitude` (radians; `now` the
 // texel's own direction, belt_fields), with the cover's
-// noise as `edge` in [-1, 1] and the belts' noise of systems.seed: the larger of the two fields.
-float weather_density(vec3 p, vec3 now, float latitude, IN(WeatherSystems) systems, float edge) {
+// noise as `edge` in [-1, 1] and the belts' noise of systems.seed, for texels texel_arc radians
+// across: the larger of the two fields.
+float weather_density(vec3 p, vec3 now, float latitude, IN(WeatherSystems) systems, float edge, float texel_arc) {
   return max(cyclone_systems(p, systems, cyclones_near(p, systems), edge),
-             belt_systems(p, now, latitude, systems, systems.seed, edge));
+             belt_systems(p, now, latitude, systems, systems.seed, edge, texel_arc));
 }
 
 #endif

@@ -5,9 +5,10 @@ const int PROBE_BAND_PROFILE = 0;     // band_profile(a, b)
 const int PROBE_COMMA_CLOUD = 1;      // comma_cloud(vec2(a, b), c, x[3].x)
 const int PROBE_CYCLONE = 2;          // cyclone_frame(p, C).xy, cyclone_cloud(p, C, a) in z
 const int PROBE_CELL_CLOUDS = 3;      // cell_clouds(p, a, uint(b), 7, 0.2, 0.3, 0.3, c)
-const int PROBE_BELTS = 4;            // itcz_systems(p, 0, lat, a, its waves, uint(b), c).x, trade_cumulus, cirrus_streaks, its .y
-const int PROBE_WEATHER_DENSITY = 5;  // weather_density, cyclone_systems, belt_systems (seed b + 1): cyclone C, the ITCZ at a, seed b, edge c
-const int PROBE_BELT_FIELDS = 6;      // belt_fields(p, lat, systems (the ITCZ at a), uint(b), c)
+const int PROBE_BELTS = 4;            // itcz_systems(p, 0, lat, a, its waves, uint(b), c).x, trade_cumulus (texels x[1].w
+                                      // across), cirrus_streaks, its .y
+const int PROBE_WEATHER_DENSITY = 5;  // weather_density, cyclone_systems, belt_systems (seed b + 1): cyclone C, the ITCZ at a, seed b, edge c, texels x[1].w across
+const int PROBE_BELT_FIELDS = 6;      // belt_fields(p, lat, systems (the ITCZ at a), uint(b), c, texels x[1].w across)
 const int PROBE_CELLS = 7;            // closed_cells(p, uint(b)), open_cells (clumps 1), cell_border(p * 160, p, its key),
                                       // deck_strength(p, lat, uint(b), a, c)
 const int PROBE_CELL_WEIGHTS = 8;     // cell_weights(a, b), deck_presence(a), cells_resolved(b * 100, c)
@@ -42,8 +43,8 @@ const int PROBE_CELLS_HIDDEN = 25;           // cells_hidden(cloud_types(a, x[1]
 const int PROBE_CELL_BORDERS = 26;           // cell_borders(p * OPEN_CELLS, p, the open cells' key of seed b),
                                              // open_cell_wall(a) in w
 const int PROBE_TRADE_REGIMES = 27;          // trade_regimes(p, uint(b), 2)
-const int PROBE_TRADE_CLUMPS = 28;           // gravel_clumps(p, uint(b), a), flower_clumps, fish_clumps (all cells
-                                             // searched), organised_trades(trade_regimes(p, uint(b), 2), latitude, c)
+const int PROBE_TRADE_CLUMPS = 28;           // gravel_clumps(p, uint(b), a, x[1].w), flower_clumps, fish_clumps (all
+                                             // cells searched), organised_trades(trade_regimes(p, uint(b), 2), latitude, c)
 const int PROBE_TANGENT_WARP = 29;           // tangent_warp(p, a, c, uint(b), FLOWERS_WARP_LAYER, 2),
                                              // trade_cumulus_belt(latitude) in w
 const int PROBE_BELT_REGIMES = 31;           // belt_regimes(p, latitude, systems (trade cumulus x[3].z), uint(b))
@@ -56,8 +57,9 @@ const int PROBE_LINE_BAND = 34;              // itcz_line_band(p, a, probe_monso
 const int PROBE_LINE_LATITUDE = 35;          // itcz_line_latitude(p, a, probe_monsoon_waves(uint(b), a, x[2].x)),
                                              // line_waves(p, without_superclusters(those waves)).y
 const int PROBE_TRADE_CLUMP = 30;            // trade_clump(p, a, uint(b), FLOWERS_LAYER, (0.2, 0.45), c, x[3].y (the
-                                             // rim), x[3].x, all cells), rimmed_cloud(x[3].z, x[3].x, 0.3, x[3].y),
-                                             // presence_everywhere(c)'s y and z
+                                             // rim), x[3].x, x[3].w (the texels' arc), all cells),
+                                             // rimmed_cloud(x[3].z, x[3].x, 0.3, x[3].y), presence_everywhere(c)'s
+                                             // y, resolved_rim(x[3].y, a, (0.2, 0.45), x[3].w)
 const int PROBE_ITCZ_CELL = 36;              // itcz_cell(table, floor(p * its cells per radius), a, line_waves_of(uint(b),
                                              // a), uint(b)), the towers' table where x[3].x > 1/2, the systems' else;
                                              // where x[3].y > 1/2 convective_cell of that cell with keys of layers 7
@@ -192,12 +194,13 @@ vec4 probe_weather_systems(mat4 x) {
   if (f == PROBE_TANGENT_WARP)
     return vec4(tangent_warp(p, x[0].y, x[0].w, seed, FLOWERS_WARP_LAYER, 2), trade_cumulus_belt(latitude));
   if (f == PROBE_TRADE_CLUMP)
-    return vec4(trade_clump(p, x[0].y, seed, FLOWERS_LAYER, vec2(0.2f, 0.45f), x[0].w, x[3].y, x[3].x, NEIGHBOUR_CELLS),
+    return vec4(trade_clump(p, x[0].y, seed, FLOWERS_LAYER, vec2(0.2f, 0.45f), x[0].w, x[3].y, x[3].x, x[3].w,
+                            NEIGHBOUR_CELLS),
                 rimmed_cloud(x[3].z, x[3].x, 0.3f, x[3].y), presence_everywhere(x[0].w).y,
-                presence_everywhere(x[0].w).z);
+                resolved_rim(x[3].y, x[0].y, vec2(0.2f, 0.45f), x[3].w));
   if (f == PROBE_TRADE_CLUMPS)
-    return vec4(gravel_clumps(p, seed, x[0].y, NEIGHBOUR_CELLS), flower_clumps(p, seed, x[0].y, NEIGHBOUR_CELLS),
-                fish_clumps(p, seed, x[0].y, NEIGHBOUR_CELLS),
+    return vec4(gravel_clumps(p, seed, x[0].y, x[1].w, NEIGHBOUR_CELLS), flower_clumps(p, seed, x[0].y, x[1].w, NEIGHBOUR_CELLS),
+                fish_clumps(p, seed, x[0].y, x[1].w, NEIGHBOUR_CELLS),
                 organised_trades(trade_regimes(p, seed, 2), latitude, x[0].w));
   if (f == PROBE_FRAYED_DECK) {
     float deck = frayed_deck(x[0].y, x[0].z);
@@ -233,7 +236,7 @@ vec4 probe_weather_systems(mat4 x) {
     return vec4(cell_weights(x[0].y, x[0].z), deck_presence(x[0].y), cells_resolved(x[0].z * 100.0f, x[0].w));
   if (f == PROBE_BELTS)
     return vec4(itcz_systems(p, 0.0f, latitude, x[0].y, line_waves_of(seed, x[0].y), seed, x[0].w).x,
-                trade_cumulus(p, latitude, seed, x[0].w, trade_regimes(p, seed, 2)), cirrus_streaks(p, latitude, seed),
+                trade_cumulus(p, latitude, seed, x[0].w, trade_regimes(p, seed, 2), x[1].w), cirrus_streaks(p, latitude, seed),
                 itcz_systems(p, 0.0f, latitude, x[0].y, line_waves_of(seed, x[0].y), seed, x[0].w).y);
   WeatherSystems systems;
   systems.cyclones[0] = probe_cyclone(x);
@@ -258,8 +261,9 @@ vec4 probe_weather_systems(mat4 x) {
   }
   if (f == PROBE_BELT_FIELDS) {
     return belt_fields(p, itcz_band(p, systems, x[0].w), latitude, systems, seed, x[0].w,
-                       belt_regimes(p, latitude, systems, seed));
+                       belt_regimes(p, latitude, systems, seed), x[1].w);
   }
-  return vec4(weather_density(p, p, latitude, systems, x[0].w), cyclone_systems(p, systems, cyclones_near(p, systems), x[0].w),
-              belt_systems(p, p, latitude, systems, seed + 1u, x[0].w), 0.0f);  // PROBE_WEATHER_DENSITY
+  return vec4(weather_density(p, p, latitude, systems, x[0].w, x[1].w),
+              cyclone_systems(p, systems, cyclones_near(p, systems), x[0].w),
+              belt_systems(p, p, latitude, systems, seed + 1u, x[0].w, x[1].w), 0.0f);  // PROBE_WEATHER_DENSITY
 }
