@@ -681,6 +681,10 @@ TEST_CASE("weather_systems.glsl on the GPU agrees with the CPU", "[probe]") {
     // cell clouds (gravel at 60 cells a radius, the others at fewer), the warped point's Perlin
     // values moving it by their rounding times 0.04 at most.
     cases.push_back({arguments(PROBE_TRADE_REGIMES, vec4(0, seed, 0, 0), vec4(q, 0)), 2 * 12.5f * kFbm});
+    // The ITCZ band's swelling: a gradient noise at ten cells a radius through a smoothstep of slope
+    // 0.5 / PERLIN_OCTAVE_SIGMA per unit of noise, as the trade regimes' noise at five; its beads a
+    // smoothstep and a mix of an exact distance.
+    cases.push_back({arguments(PROBE_ITCZ_SWELL, vec4(0, seed, 0, 0), vec4(q, r(0.0f, 4.0f))), 2 * 12.5f * kFbm});
     // The same where the belts draw them (each a quarter elsewhere: exact), with the trade cumulus'
     // strength 1 or 0. Whether they are drawn is a step at the belt's ends (6 and 33 degrees),
     // where its smoothsteps round to 0 on one side and not the other within about 2e-5 rad of

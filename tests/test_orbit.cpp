@@ -108,9 +108,13 @@ render::OrbitCamera nadir_camera(double latitude_deg, double longitude_deg, doub
   return c;
 }
 
-// The steps of a series (frame to frame) that are jumps: more than three times as large as both
-// neighbouring steps (a spike in the steps) and larger than `floor`, the size below which a step
-// is noise (the fixed per-pixel jitter of the march on a 96 x 54 frame). A median over the whole
+// The steps of a series (frame to frame) that are jumps: more than three times as large as every
+// step within two frames of it (a spike in the steps) and larger than `floor`, the size below which
+// a step is noise (the fixed per-pixel jitter of the march on a 96 x 54 frame). Two frames, not
+// one: where a cloud leaves the view as another enters, two frames can have the same cloud
+// fraction by chance, and a step beside that flat one was judged against nothing (the default
+// cover's descent on 2026-12-02: a step of 0.0095 between steps of 0.0028 and 0.000001, with
+// 0.0113 and 0.0053 one further). A median over the whole
 // series (issue 11's wording) fails series that are smooth but change unevenly: straight down
 // over a clear hole, the cloud fraction falls to 0 in the first frames (the hole fills the view)
 // and then stays 0, so the median step is 0; a local median still flags a fast but smooth decay.
@@ -122,7 +126,10 @@ std::vector<size_t> largest_jumps(const std::vector<double>& series, double floo
   for (size_t k = 1; k < series.size(); ++k) steps.push_back(std::abs(series[k] - series[k - 1]));
   std::vector<size_t> jumps;
   for (size_t k = 1; k + 1 < steps.size(); ++k) {
-    if (steps[k] > std::max(3 * std::max(steps[k - 1], steps[k + 1]), floor)) jumps.push_back(k);
+    double around = 0;
+    for (size_t j = k > 2 ? k - 2 : 0; j <= std::min(k + 2, steps.size() - 1); ++j)
+      if (j != k) around = std::max(around, steps[j]);
+    if (steps[k] > std::max(3 * around, floor)) jumps.push_back(k);
   }
   return jumps;
 }

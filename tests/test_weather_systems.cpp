@@ -40,7 +40,7 @@ vec3 on_itcz_line(float line, float lon, const glsl::LineWaves& waves) {
 
 // The ITCZ's systems and band at the unit direction p for air that has not moved (its origin is p).
 vec2 itcz_here(vec3 p, float latitude, float line, const glsl::LineWaves& waves, std::uint32_t seed, float edge) {
-  return glsl::itcz_systems(p, glsl::itcz_line_band(p, line, waves, edge), latitude, line, waves, seed, edge);
+  return glsl::itcz_systems(p, glsl::itcz_line_band(p, line, waves, edge, seed), latitude, line, waves, seed, edge);
 }
 
 // Signed angle east of b from a (longitude difference in (-pi, pi]).
@@ -508,6 +508,72 @@ TEST_CASE("the ITCZ meanders by about 1.5 degrees and its systems gather in supe
                                             << outside);
   CHECK(band_inside == inside);
   CHECK(band_outside < outside / 2);
+}
+
+TEST_CASE("the ITCZ's band swells and narrows along the line and is deepest around its systems", "[fast][systems]") {
+  // Across the line the band (band_profile) is 1/2 at 0.8 of its width, ITCZ_LINE_WIDTH times the
+  // swelling in [0.35, 1.35]: inside the superclusters its half-width at 1/2 lies within 0.28 and
+  // 1.08 of ITCZ_LINE_WIDTH (the edge's shift 0 here), and spreads over most of that range.
+  cover::CoverParameters parameters;
+  const float line = cover::weather_systems(parameters, 0.0).itcz_latitude;
+  const int n = 3600;
+  std::vector<double> widths;
+  double worst_mismatch = 0;  // |half-width / width - 0.8 swelling|
+  for (std::uint32_t cover_seed = 1; cover_seed <= 4; ++cover_seed) {
+    parameters.seed = cover_seed;
+    const glsl::WeatherSystems systems = cover::weather_systems(parameters, 1000.0 * cover_seed);
+    const glsl::LineWaves& waves = systems.itcz_waves;
+    for (int k = 0; k < n; ++k) {
+      const float lon = 2.0f * float(M_PI) * k / n;
+      const vec3 mean(std::cos(line) * std::cos(lon), std::cos(line) * std::sin(lon), std::sin(line));
+      if (glsl::supercluster_activity(glsl::line_waves(mean, waves)) < 0.999f) continue;
+      const float centre = glsl::itcz_line_latitude(mean, line, waves);
+      // The band's extent north of the meandering line, where it is above 1/2, in steps of 1e-4 rad.
+      double half_width = 0;
+      for (int j = 0; j < 1000; ++j) {
+        const float lat = centre + 1.0e-4f * j;
+        const vec3 p(std::cos(lat) * std::cos(lon), std::cos(lat) * std::sin(lon), std::sin(lat));
+        if (glsl::itcz_line_band(p, line, waves, 0.0f, systems.seed) < 0.5f) break;
+        half_width = 1.0e-4 * j;
+      }
+      widths.push_back(half_width / glsl::ITCZ_LINE_WIDTH);
+      const float swell = glsl::itcz_swell(mean, systems.seed);
+      worst_mismatch = std::max(worst_mismatch, std::abs(half_width / glsl::ITCZ_LINE_WIDTH - 0.8 * swell));
+    }
+  }
+  std::sort(widths.begin(), widths.end());
+  const double tenth = widths[widths.size() / 10], ninetieth = widths[widths.size() * 9 / 10];
+  INFO(widths.size() << " longitudes inside superclusters: half-widths " << widths.front() << " to " << widths.back()
+                     << " of the line's width, deciles " << tenth << " and " << ninetieth
+                     << "; the largest mismatch with 0.8 of the swelling " << worst_mismatch);
+  REQUIRE(widths.size() > 1000);
+  // The scan's steps of 1e-4 rad (0.0023 of the width) and the offset's measure in the sine of the
+  // latitude over the line's cosine (within 0.1 % this close to the line) bound the measured values.
+  CHECK(widths.front() >= 0.8 * 0.35 * 0.99 - 0.003);
+  CHECK(widths.back() <= 0.8 * 1.35 * 1.01);
+  CHECK(ninetieth > 1.4 * tenth);
+  // The half-width is 0.8 of the swelling's width at the longitude: the swelling is a function of
+  // the place along the line, the same at every latitude (its noise taken at the equator), so the
+  // band's edge follows it without islands.
+  // The band's offset is measured in the sine of the latitude over the mean line's cosine, which
+  // differs from the meandering line's by tan(line) times its shift (the meander's and monsoons',
+  // up to about 0.1 rad): 2 % of a half-width of at most 1.08, plus the scan's step.
+  CHECK(worst_mismatch <= 0.02 * 1.08 + 0.003);
+  for (int k = 0; k < 360; ++k) {
+    const float lon = float(M_PI) * k / 180.0f;
+    const auto at = [&](float lat) {
+      return vec3(std::cos(lat) * std::cos(lon), std::cos(lat) * std::sin(lon), std::sin(lat));
+    };
+    CHECK(glsl::itcz_swell(at(0.3f), 5u) == Approx(glsl::itcz_swell(at(0.0f), 5u)).margin(1e-5));
+    CHECK(glsl::itcz_swell(at(-0.2f), 5u) == Approx(glsl::itcz_swell(at(0.0f), 5u)).margin(1e-5));
+  }
+  // The band's depth: full within 1.2 radii of the nearest mesoscale system, ITCZ_BEAD_GAP of it
+  // from 2.5 radii, falling in between.
+  CHECK(glsl::itcz_beads(0.0f) == 1.0f);
+  CHECK(glsl::itcz_beads(glsl::ITCZ_BEAD_REACH.x) == 1.0f);
+  CHECK(glsl::itcz_beads(glsl::ITCZ_BEAD_REACH.y) == Approx(glsl::ITCZ_BEAD_GAP).margin(1e-6));
+  CHECK(glsl::itcz_beads(1.0e30f) == Approx(glsl::ITCZ_BEAD_GAP).margin(1e-6));
+  for (int k = 1; k < 40; ++k) CHECK(glsl::itcz_beads(0.1f * k) <= glsl::itcz_beads(0.1f * (k - 1)));
 }
 
 TEST_CASE("the ITCZ's meander moves west with the easterly waves and its superclusters east", "[fast][systems]") {

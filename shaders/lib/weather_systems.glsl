@@ -467,6 +467,16 @@ const float ITCZ_LINE_WIDTH = 0.044f;
 // convective systems, thick layer cloud under the anvil that gives 40 % of their rain (Houze 2004),
 // less bright than the convective cores but far brighter than thin anvil cirrus.
 const float ITCZ_LINE_DEPTH = 0.5f;
+// The band is the systems' shields merged: deep around each mesoscale system and thinner between
+// them, a string of beads rather than a bar of one width. Its depth falls from ITCZ_LINE_DEPTH
+// within ITCZ_BEAD_REACH.x of the nearest system's radius to ITCZ_BEAD_GAP of it from
+// ITCZ_BEAD_REACH.y (the systems, 320-800 km across and about 800 km apart, leave gaps of up to
+// two or three of their radii).
+const vec2 ITCZ_BEAD_REACH = vec2(1.2f, 2.5f);
+const float ITCZ_BEAD_GAP = 0.6f;
+float itcz_beads(float distance) {
+  return mix(1.0f, ITCZ_BEAD_GAP, smoothstep(ITCZ_BEAD_REACH.x, ITCZ_BEAD_REACH.y, distance));
+}
 // The systems' reach from the ITCZ's mean line (radians), beyond which none is drawn: the line
 // meanders by at most LINE_MEANDER_LIMIT x ITCZ_MEANDER = 0.065; a system's point lies within
 // 2 x 0.07 of it and its anvil reaches 1.0 / 8 cells further, and the warp moves the point drawn by
@@ -513,11 +523,30 @@ LineWaves without_superclusters(LineWaves waves) {
   return waves;
 }
 
-// The superclusters' band at the unit direction `now` (itcz_systems), in [0, 1].
-float itcz_line_band(vec3 now, float itcz_latitude, IN(LineWaves) waves, float edge) {
+// The band's width along the line, as a share of ITCZ_LINE_WIDTH at the unit direction `now`: the
+// merged shields swell around a supercluster's strongest clusters and narrow between them, from
+// ITCZ_SWELL.x to ITCZ_SWELL.y (for noise values beyond two deviations; mostly 0.6-1.1) with
+// gradient noise of ITCZ_SWELL_CELLS cells a radius (swellings some 600 km long) of the belts'
+// `seed`, taken at the equator's point of `now`'s longitude, so that the width is a function of the
+// place along the line (a noise of the latitude too would break the band's edge into islands). A
+// band of one width everywhere drew each supercluster as a bar with parallel edges, which no
+// satellite image shows.
+const float ITCZ_SWELL_CELLS = 10.0f;
+const vec2 ITCZ_SWELL = vec2(0.35f, 1.35f);
+const uint ITCZ_SWELL_LAYER = 39u;
+float itcz_swell(vec3 now, uint seed) {
+  vec3 along = normalize(vec3(now.x, now.y, 0.0f) + vec3(1.0e-6f, 0.0f, 0.0f));  // safe at the poles
+  float n = perlin_noise(along * ITCZ_SWELL_CELLS, ivec3(0), noise_key(seed, ITCZ_SWELL_LAYER)) / PERLIN_OCTAVE_SIGMA;
+  return mix(ITCZ_SWELL.x, ITCZ_SWELL.y, smoothstep(-2.0f, 2.0f, n));
+}
+
+// The superclusters' band at the unit direction `now` (itcz_systems), in [0, 1], its width swelling
+// with the belts' `seed` (itcz_swell).
+float itcz_line_band(vec3 now, float itcz_latitude, IN(LineWaves) waves, float edge, uint seed) {
   vec3 sums = line_waves(now, waves);
   float offset = (now.z - sin(itcz_latitude) - line_shift(sums, waves)) / cos(itcz_latitude);
-  return supercluster_activity(sums) * band_profile(offset + 0.5f * ITCZ_LINE_WIDTH * edge, ITCZ_LINE_WIDTH);
+  float width = ITCZ_LINE_WIDTH * itcz_swell(now, seed);
+  return supercluster_activity(sums) * band_profile(offset + 0.5f * width * edge, width);
 }
 
 // The ITCZ's two lattices, each a table of its cells where the density pass makes them
@@ -572,7 +601,8 @@ vec2 itcz_systems(vec3 p, float band, float latitude, float itcz_latitude, IN(Li
   vec2 systems = itcz_distances(ITCZ_SYSTEMS_TABLE, p, itcz_latitude, waves, seed, searched);
   vec2 towers = itcz_distances(ITCZ_TOWERS_TABLE, p, itcz_latitude, waves, seed, towers_searched);
   if (!near) return vec2(ITCZ_LINE_DEPTH * band, band);
-  return vec2(max(convective_cloud(min(systems.x, towers.x), edge, CORE_EDGE_REACH), ITCZ_LINE_DEPTH * band),
+  return vec2(max(convective_cloud(min(systems.x, towers.x), edge, CORE_EDGE_REACH),
+                  ITCZ_LINE_DEPTH * band * itcz_beads(systems.x)),
               max(convective_cloud(min(systems.y, towers.y), edge, ANVIL_EDGE_REACH), band));
 }
 
@@ -1214,7 +1244,7 @@ CloudTypes cloud_types(float cyclones, vec4 fields) {
 float cells_hidden(IN(CloudTypes) types) { return clamp(max(types.frontal, types.deep_convection), 0.0f, 1.0f); }
 // The ITCZ's band at the texel's own direction `now` with the cover's noise as `edge` (belt_fields).
 float itcz_band(vec3 now, IN(WeatherSystems) systems, float edge) {
-  return itcz_line_band(now, systems.itcz_latitude, systems.itcz_waves, edge);
+  return itcz_line_band(now, systems.itcz_latitude, systems.itcz_waves, edge, systems.seed);
 }
 float belt_systems(vec3 p, vec3 now, float latitude, IN(WeatherSystems) systems, uint seed, float edge, float texel_arc) {
   return belt_cloud(belt_fields(p, itcz_band(now, systems, edge), latitude, systems, seed, edge,

@@ -43,6 +43,7 @@ const int PROBE_CELLS_HIDDEN = 25;           // cells_hidden(cloud_types(a, x[1]
 const int PROBE_CELL_BORDERS = 26;           // cell_borders(p * OPEN_CELLS, p, the open cells' key of seed b),
                                              // open_cell_wall(a) in w
 const int PROBE_TRADE_REGIMES = 27;          // trade_regimes(p, uint(b), 2)
+const int PROBE_ITCZ_SWELL = 40;             // itcz_swell(p, uint(b)), itcz_beads(x[1].w)
 const int PROBE_TRADE_CLUMPS = 28;           // gravel_clumps(p, uint(b), a, x[1].w), flower_clumps, fish_clumps (all
                                              // cells searched), organised_trades(trade_regimes(p, uint(b), 2), latitude, c)
 const int PROBE_TANGENT_WARP = 29;           // tangent_warp(p, a, c, uint(b), FLOWERS_WARP_LAYER, 2),
@@ -174,7 +175,7 @@ vec4 probe_weather_systems(mat4 x) {
                 line_shift(vec3(x[0].y, x[0].w, x[2].x), line_waves_of(seed, 0.1f)));
   if (f == PROBE_LINE_BAND) {
     LineWaves waves = probe_monsoon_waves(seed, x[0].y, x[2].x);
-    return vec4(itcz_line_band(p, x[0].y, waves, x[0].w), supercluster_activity(vec3(0.0f, x[0].w, 0.0f)),
+    return vec4(itcz_line_band(p, x[0].y, waves, x[0].w, seed), supercluster_activity(vec3(0.0f, x[0].w, 0.0f)),
                 system_growth(x[3].x, no_line_waves()), system_growth(x[3].x, waves));
   }
   if (f == PROBE_LINE_WAVES) {
@@ -191,6 +192,7 @@ vec4 probe_weather_systems(mat4 x) {
     return vec4(cell_borders(p * OPEN_CELLS, p, noise_key(seed, OPEN_CELLS_LAYER), NEIGHBOUR_CELLS),
                 open_cell_wall(x[0].y));
   if (f == PROBE_TRADE_REGIMES) return trade_regimes(p, seed, 2);
+  if (f == PROBE_ITCZ_SWELL) return vec4(itcz_swell(p, seed), itcz_beads(x[1].w), 0.0f, 0.0f);
   if (f == PROBE_TANGENT_WARP)
     return vec4(tangent_warp(p, x[0].y, x[0].w, seed, FLOWERS_WARP_LAYER, 2), trade_cumulus_belt(latitude));
   if (f == PROBE_TRADE_CLUMP)
