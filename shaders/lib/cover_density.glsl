@@ -124,19 +124,21 @@ float cover_contrast(float shallow_weight, float organised, float open_weight) {
 const float COVER_EDGE = 0.1f;
 
 // The cover of a cloudy texel whose density exceeds the threshold by `excess` > 0: with softness
-// s > 0, 1 - (1 - e) exp(-excess / s), e the COVER_EDGE: cloud more than a few s above the
-// threshold (the weather systems' bands) saturates towards 1 and ends in a sharp edge, cloud just
-// above it (thin cirrus, the noise's fringes) stays grey. With s = 0 the linear ramp of earlier
-// versions over `span`, the threshold's distance to the largest density (0 or less: no cover).
-float cover_from_excess(float excess, float span, float softness) {
-  if (softness > 0.0f) return 1.0f - (1.0f - COVER_EDGE) * exp(-excess / softness);
+// s > 0, 1 - (1 - e) exp(-excess / s), e the cover just above the threshold (`edge`: COVER_EDGE,
+// or less for dim cloud, contrasted_cover): cloud more than a few s above the threshold (the
+// weather systems' bands) saturates towards 1 and ends in a sharp edge, cloud just above it (thin
+// cirrus, the noise's fringes) stays grey. With s = 0 the linear ramp of earlier versions over
+// `span`, the threshold's distance to the largest density (0 or less: no cover).
+float cover_from_excess(float excess, float span, float softness, float edge) {
+  if (softness > 0.0f) return 1.0f - (1.0f - edge) * exp(-excess / softness);
   return span > 0.0f ? clamp(excess / span, 0.0f, 1.0f) : 0.0f;
 }
 
 // Cover from density with the calibrated threshold: texels with density above the threshold, and
 // only those, are cloudy (cover > 0; cover_from_excess).
 float cover_from_density(float density, float threshold, float density_max, float softness) {
-  return density > threshold ? cover_from_excess(density - threshold, density_max - threshold, softness) : 0.0f;
+  return density > threshold ? cover_from_excess(density - threshold, density_max - threshold, softness, COVER_EDGE)
+                             : 0.0f;
 }
 
 // The same with the excess shrunk by the density pass's cover contrast c (cover_contrast), and the
@@ -147,9 +149,9 @@ float cover_from_density(float density, float threshold, float density_max, floa
 // rather than ending in a dark rim (with e alone their clear patches showed as holes with hard,
 // ragged edges in a grey field).
 float contrasted_cover(float density, float threshold, float density_max, float softness, float contrast) {
-  if (!(density > threshold)) return 0.0f;
-  if (softness > 0.0f) return 1.0f - (1.0f - COVER_EDGE * contrast) * exp(-(contrast * (density - threshold)) / softness);
-  return cover_from_excess(contrast * (density - threshold), density_max - threshold, softness);
+  return density > threshold ? cover_from_excess(contrast * (density - threshold), density_max - threshold, softness,
+                                                 COVER_EDGE * contrast)
+                             : 0.0f;
 }
 
 #endif

@@ -10,7 +10,7 @@ const int PROBE_SYSTEM_EDGE = 5;  // system_edge(a)
 const int PROBE_WITH_SYSTEMS = 6;  // with_systems(a, b), with_cells(a, c) in y, with_moats(a, c) in z
 const int PROBE_NOISE_BLEND = 7;  // noise_blend(a, b, c)
 const int PROBE_CONTRAST = 8;  // cover_contrast(x[3].z, x[3].w, x[1].x), contrasted_cover(a, b, c, x[3].y, x[3].z) in y,
-                               // cover_from_excess(a, c, x[3].y) in z
+                               // cover_from_excess(a, c, x[3].y, x[3].w) in z
 const int PROBE_COVER_DENSITY_FROM_GRID = 9;  // cover_density_from_grid(x[1], a, int(b), params, x[3].yzw)
 #ifndef __cplusplus
 #include "../lib/cover_density.glsl"
@@ -32,7 +32,7 @@ vec4 probe_cover_density(mat4 x) {
     return vec4(with_systems(x[0].y, x[0].z), with_cells(x[0].y, x[0].w), with_moats(x[0].y, x[0].w), 0.0f);
   if (f == PROBE_CONTRAST)
     return vec4(cover_contrast(x[3].z, x[3].w, x[1].x), contrasted_cover(x[0].y, x[0].z, x[0].w, x[3].y, x[3].z),
-                cover_from_excess(x[0].y, x[0].w, x[3].y), 0.0f);
+                cover_from_excess(x[0].y, x[0].w, x[3].y, x[3].w), 0.0f);
   if (f == PROBE_SYSTEM_EDGE) return vec4(system_edge(x[0].y), 0.0f, 0.0f, 0.0f);
   return vec4(cover_from_density(x[0].y, x[0].z, x[0].w, x[3].y), 0.0f, 0.0f, 0.0f);  // PROBE_COVER_FROM_DENSITY
 }
