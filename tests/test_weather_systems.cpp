@@ -873,18 +873,21 @@ TEST_CASE("flowers are bouquets well apart and fish are bands far longer than wi
           100000);
     }
   }
-  // Flowers: discs of at most 2 x 0.8 x 0.5 cells of 159 km (40 a radius) = 128 km across, cut
-  // smaller where the sphere passes a feature point off its centre, lobed by the warp's 40 km:
-  // a line's chords through them mostly 30-130 km, none over 250; and the sea between them
-  // clear for more than a bouquet's width.
+  // Flowers: discs of at most 2 x 0.38 cells of 228 km (FLOWER_CELLS a radius) = 173 km across,
+  // cut smaller where the sphere passes a feature point off its centre, lobed by the warp (whose
+  // gradient stretches them by at most 1.72, flower_clumps): a line's chords through them between
+  // a fifth of the smallest disc's diameter and the largest's, none longer than 1.72 of it; and
+  // the sea between them clear for more than the smallest bouquet's width (Stevens et al. 2020:
+  // 50-200 km across, well apart).
+  const double flower_cell_km = earth_radius_km / glsl::FLOWER_CELLS;
   const double flower_max = *std::max_element(flowers_east.clouds.begin(), flowers_east.clouds.end());
   INFO("flowers " << flowers_east.clouds.size() << ": median " << median_of(flowers_east.clouds) << " km, longest "
                   << flower_max << " km, median gap " << median_of(flowers_east.gaps) << " km");
-  CHECK(flowers_east.clouds.size() > 300);
-  CHECK(median_of(flowers_east.clouds) > 30.0);
-  CHECK(median_of(flowers_east.clouds) < 130.0);
-  CHECK(flower_max < 250.0);
-  CHECK(median_of(flowers_east.gaps) > 130.0);
+  CHECK(flowers_east.clouds.size() > 200);
+  CHECK(median_of(flowers_east.clouds) > 0.2 * 2 * 0.22 * flower_cell_km);
+  CHECK(median_of(flowers_east.clouds) < 2 * 0.38 * flower_cell_km);
+  CHECK(flower_max < 1.72 * 2 * 0.38 * flower_cell_km);
+  CHECK(median_of(flowers_east.gaps) > 2 * 0.22 * flower_cell_km);
   // Fish: the lattice stretched fourfold north-south draws the clumps out east-west; the warp
   // bends them, so that chords along the wind are at least twice those across it on average, and
   // the longest reach 600 km and more.
@@ -929,8 +932,8 @@ TEST_CASE("gravel's and fish's clumps fade over their rims and flowers end sharp
   // circle crossing a disc obliquely or off its centre (the sphere cuts the lattice's 3D discs)
   // only widens it, so gravel's rises (radii from 0.2 cells of 106 km) are at least
   // 0.61 x 0.7 x 0.2 x 106 = 9.0 km, more than a 1024 cover's texels at the faces' corners, while a
-  // flower's radial rise is at most 0.61 x 0.15 x 0.38 x 159 = 5.5 km (the warp stretches it by up
-  // to about a half), under a texel.
+  // flower's radial rise is at most 0.61 x 0.15 x 0.38 x 228 = 7.9 km (cells of 228 km, FLOWER_CELLS
+  // a radius; the warp stretches it by up to about a half), under a texel of a 1024 cover.
   std::vector<double> gravel, flowers;
   for (std::uint32_t seed = 1; seed <= 3; ++seed) {
     for (double degrees : {12.0, 18.0, 24.0}) {
@@ -951,8 +954,12 @@ TEST_CASE("gravel's and fish's clumps fade over their rims and flowers end sharp
   REQUIRE(gravel.size() > 100);
   REQUIRE(flowers.size() > 100);
   CHECK(gravel_least >= 0.61 * glsl::GRAVEL_RIM * 0.2 * 106.0 - 2 * step_km);
-  CHECK(median_of(flowers) <= 1.5 * 0.61 * glsl::FLOWER_RIM * 0.38 * 159.0);
-  CHECK(median_of(gravel) > 2.0 * median_of(flowers));
+  CHECK(median_of(flowers) <= 1.5 * 0.61 * glsl::FLOWER_RIM * 0.38 * earth_radius_km / glsl::FLOWER_CELLS);
+  // The rims' widths in km at the lattices' mean radii, gravel's 0.29 cells of 106 km against the
+  // flowers' 0.3 cells: 2.1 times the flowers' (which the warp widens by up to a half).
+  const double rim_ratio =
+      (glsl::GRAVEL_RIM * 0.29 * 106.0) / (glsl::FLOWER_RIM * 0.3 * earth_radius_km / glsl::FLOWER_CELLS);
+  CHECK(median_of(gravel) > rim_ratio / 1.5 * median_of(flowers));
   // The rims' profile: full inside 1 - rim, none beyond 1, halfway at 1 - rim / 2 (a smoothstep).
   for (float rim : {glsl::GRAVEL_RIM, glsl::FISH_RIM, glsl::FLOWER_RIM}) {
     CHECK(glsl::rimmed_cloud(1.0f - rim, 0.0f, 0.3f, rim) == 1.0f);
@@ -965,19 +972,22 @@ TEST_CASE("gravel's and fish's clumps fade over their rims and flowers end sharp
 
 TEST_CASE("a trade clump's rim is never narrower than the cover's texel and its own where texels are finer",
           "[fast][systems]") {
-  // resolved_rim: a texel of 2 / size radians is texel_arc x 40 / 0.3 of a mean flower's radius
-  // (0.3 cells of 40 a radius): 0.52 at 512 per face, 0.26 at 1024, 0.065 at 4096 (under the
-  // flowers' own 0.15, which then holds), the whole radius from 128.
+  // resolved_rim: a texel of 2 / size radians is texel_arc x 28 / 0.3 of a mean flower's radius
+  // (0.3 cells of FLOWER_CELLS = 28 a radius): 0.36 at 512 per face, 0.18 at 1024, 0.046 at 4096
+  // (under the flowers' own 0.15, which then holds), the whole radius from 128.
   const vec2 radii(0.22f, 0.38f);
-  CHECK(glsl::resolved_rim(glsl::FLOWER_RIM, 40.0f, radii, 0.0f) == glsl::FLOWER_RIM);
-  CHECK(glsl::resolved_rim(glsl::FLOWER_RIM, 40.0f, radii, 2.0f / 4096) == glsl::FLOWER_RIM);
-  CHECK(glsl::resolved_rim(glsl::FLOWER_RIM, 40.0f, radii, 2.0f / 512) == Approx(2.0 / 512 * 40 / 0.3).epsilon(1e-5));
-  CHECK(glsl::resolved_rim(glsl::FLOWER_RIM, 40.0f, radii, 2.0f / 1024) == Approx(2.0 / 1024 * 40 / 0.3).epsilon(1e-5));
-  CHECK(glsl::resolved_rim(glsl::FLOWER_RIM, 40.0f, radii, 2.0f / 128) == 1.0f);
+  const float cells = glsl::FLOWER_CELLS;
+  CHECK(glsl::resolved_rim(glsl::FLOWER_RIM, cells, radii, 0.0f) == glsl::FLOWER_RIM);
+  CHECK(glsl::resolved_rim(glsl::FLOWER_RIM, cells, radii, 2.0f / 4096) == glsl::FLOWER_RIM);
+  CHECK(glsl::resolved_rim(glsl::FLOWER_RIM, cells, radii, 2.0f / 512) ==
+        Approx(2.0 / 512 * cells / 0.3).epsilon(1e-5));
+  CHECK(glsl::resolved_rim(glsl::FLOWER_RIM, cells, radii, 2.0f / 1024) ==
+        Approx(2.0 / 1024 * cells / 0.3).epsilon(1e-5));
+  CHECK(glsl::resolved_rim(glsl::FLOWER_RIM, cells, radii, 2.0f / 128) == 1.0f);
   CHECK(glsl::resolved_rim(glsl::GRAVEL_RIM, 60.0f, vec2(0.2f, 0.38f), 2.0f / 1024) == glsl::GRAVEL_RIM);
   // Drawn at 512 per face, the flowers rise from 0.1 to 0.9 over 0.61 (a smoothstep's middle) of
   // the rim, for the smallest flower 0.22 / 0.3 of a texel of 25 km: 11 km, where their own rims
-  // rise within 5.5 km (the test above); the outlines' warp squeezes that by at most 1 + 0.72 (its
+  // rise within 7.9 km (the test above); the outlines' warp squeezes that by at most 1 + 0.72 (its
   // displacement's gradient, flower_clumps), to 6.5 km, and most rises are wider than 0.61 texels.
   const double texel_km = 2.0 / 512 * earth_radius_km;
   std::vector<double> coarse;

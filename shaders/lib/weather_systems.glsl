@@ -643,8 +643,8 @@ vec4 trade_regimes(vec3 p, uint seed, int fields) {
 // and corners, shards rather than clouds, once the cover resolves them. Their radii stay below
 // 0.38 cells, so that with the fray (1.3 times) they reach at most 0.494 cells and the 8 nearest
 // cells hold them. Gravel: clumps of cumulus 40-80 km across (radii 0.2-0.38 of cells of 106 km,
-// 60 a radius), nine places in ten. Flowers: bouquets 70-120 km across (radii 0.22-0.38 of cells
-// of 159 km, 40 a radius) in every place, drawn at the point displaced by Perlin noise of 80
+// 60 a radius), nine places in ten. Flowers: bouquets 100-175 km across (radii 0.22-0.38 of cells
+// of 228 km, FLOWER_CELLS a radius) in every place, drawn at the point displaced by Perlin noise of 80
 // cells a radius by up to about 20 km (tangent_warp), so that their outlines are lobed. Fish:
 // bands 750-970 km long and a quarter as wide (radii 0.3-0.38 of cells of 1270 km, 5 a radius,
 // with the point's z (north) component stretched fourfold, which draws them out along the latitude
@@ -658,12 +658,17 @@ const uint FLOWERS_WARP_LAYER = 33u;  // and 34
 const uint FISH_WARP_LAYER = 35u;     // and 36
 const float FISH_STRETCH = 4.0f;
 const float TRADE_CLUMP_EDGE_REACH = 0.3f;
+// The flowers' lattice: 50-200 km across (Stevens et al. 2020), their upper half, well apart (a
+// bouquet to a cell). In the lower half, 40 cells a radius, a 512 cover (25 km texels) drew them
+// as dots of two or three texels, an even confetti over the trades; at 28 it draws blobs of four to
+// seven, a bouquet's size apart.
+const float FLOWER_CELLS = 28.0f;
 // A presence of `filled` everywhere (convective_presence_of a line whose width is beyond the sphere).
 vec3 presence_everywhere(float filled) { return vec3(0.0f, 1.0e6f, filled); }
 // The rims, as shares of a clump's radius over which its cloud fades out (rimmed_cloud): gravel's
 // broken shallow cumulus thin out over the outer 0.7 of a clump (15-28 km at its radii, from 0.1 to
 // 0.9 over 9-17 km: a texel or two of a 1024 cover), fish's cloud over 0.4 (its bands' sides over 40-50 km), and flowers'
-// stratiform sheets end within 0.15 (5-9 km, under a texel), as the deep convection's: in a
+// stratiform sheets end within 0.15 (8-13 km, about a texel of a 1024 cover), as the deep convection's: in a
 // satellite image edges are sharp where the cloud is optically thick and soft where thin (issue 30;
 // the patterns' reflectance rises from gravel to fish and flowers, Bony et al. 2020).
 const float GRAVEL_RIM = 0.7f;
@@ -692,7 +697,7 @@ float gravel_clumps(vec3 p, uint seed, float edge, float texel_arc, int searched
 }
 float flower_clumps(vec3 p, uint seed, float edge, float texel_arc, int searched) {
   vec3 q = tangent_warp(p, 80.0f, 0.006f, seed, FLOWERS_WARP_LAYER, SKIPPABLE(searched > 0, 2));
-  return trade_clump(q, 40.0f, seed, FLOWERS_LAYER, vec2(0.22f, 0.38f), 1.0f, FLOWER_RIM, edge, texel_arc, searched);
+  return trade_clump(q, FLOWER_CELLS, seed, FLOWERS_LAYER, vec2(0.22f, 0.38f), 1.0f, FLOWER_RIM, edge, texel_arc, searched);
 }
 float fish_clumps(vec3 p, uint seed, float edge, float texel_arc, int searched) {
   vec3 q = tangent_warp(p, 20.0f, 0.015f, seed, FISH_WARP_LAYER, SKIPPABLE(searched > 0, 2));
