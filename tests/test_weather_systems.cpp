@@ -857,7 +857,7 @@ TEST_CASE("the trades' four patterns each hold about a quarter of the trades and
 TEST_CASE("flowers are bouquets well apart and fish are bands far longer than wide", "[fast][systems]") {
   Runs flowers_east, fish_east, fish_north;
   for (std::uint32_t seed = 1; seed <= 4; ++seed) {
-    const auto flower = [&](vec3 p) { return glsl::flower_clumps(p, seed, 0.0f, 0.0f, glsl::NEAR_CELLS); };
+    const auto flower = [&](vec3 p) { return glsl::flower_clumps(p, seed, 0.0f, 0.0f, glsl::NEIGHBOUR_CELLS); };
     const auto fish = [&](vec3 p) { return glsl::fish_clumps(p, seed, 0.0f, 0.0f, glsl::NEAR_CELLS); };
     for (double degrees : {12.0, 18.0, 24.0}) {
       const double lat = degrees * M_PI / 180.0, circle = 2 * M_PI * earth_radius_km * std::cos(lat);
@@ -873,24 +873,37 @@ TEST_CASE("flowers are bouquets well apart and fish are bands far longer than wi
           100000);
     }
   }
-  // Flowers: discs of at most 2 x 0.38 cells of 228 km (FLOWER_CELLS a radius) = 173 km across,
-  // cut smaller where the sphere passes a feature point off its centre, lobed by the warp (whose
-  // gradient stretches them by at most 1.72, flower_clumps). A ball of radius r cut at a depth
-  // uniform in [0, r] shows a disc of median radius 0.87 r, whose chords along parallel lines have
-  // the median 1.73 times that: 1.5 r. So the chords' median lies above half of that for the
-  // smallest balls (0.75 x 0.22 cells) and below the largest disc's diameter, and none is longer
-  // than 1.72 of it; and the sea between them is clear for more than the smallest bouquet's width
-  // (Stevens et al. 2020: 50-200 km across, well apart). The line crosses about 1.4 times fewer
-  // than on 40 cells a radius (more than 300 then, 200 now).
+  // Flowers: discs on the sphere (surface_disc_distance), n = 2 x FLOWER_SHELL of them a cell^2 of
+  // 228 km (FLOWER_CELLS a radius) with radii of density r^-3 on FLOWER_RADII, above a half out to
+  // r_h = (1 - FLOWER_RIM / 2) r (rimmed_cloud), lobed by the warp. A line enters n E[2 r_h] of them
+  // a cell of its length, fewer where discs overlap and more where a lobe splits one, and the
+  // discs cover x = n pi E[r_h^2] of it where none overlap, 1 - exp(-x) where their centres fall
+  // independently (one feature point a cell lies between the two). A disc crossed at an offset
+  // uniform in [0, r_h] has the median chord 1.73 r_h; overlaps only lengthen chords, so their
+  // median lies above the smallest disc's. And the sea between them is clear for more than the
+  // smallest bouquet's width (Stevens et al. 2020: 50-200 km across, well apart).
   const double flower_cell_km = earth_radius_km / glsl::FLOWER_CELLS;
-  const double flower_max = *std::max_element(flowers_east.clouds.begin(), flowers_east.clouds.end());
-  INFO("flowers " << flowers_east.clouds.size() << ": median " << median_of(flowers_east.clouds) << " km, longest "
-                  << flower_max << " km, median gap " << median_of(flowers_east.gaps) << " km");
-  CHECK(flowers_east.clouds.size() > 200);
-  CHECK(median_of(flowers_east.clouds) > 0.75 * 0.22 * flower_cell_km);
-  CHECK(median_of(flowers_east.clouds) < 2 * 0.38 * flower_cell_km);
-  CHECK(flower_max < 1.72 * 2 * 0.38 * flower_cell_km);
-  CHECK(median_of(flowers_east.gaps) > 2 * 0.22 * flower_cell_km);
+  const double a = glsl::FLOWER_RADII.x, b = glsl::FLOWER_RADII.y, half = 1.0 - 0.5 * glsl::FLOWER_RIM;
+  const double norm = 0.5 * (1.0 / (a * a) - 1.0 / (b * b));  // the integral of r^-3 over the radii
+  const double mean_r = (1.0 / a - 1.0 / b) / norm, mean_r2 = std::log(b / a) / norm;
+  const double n = 2.0 * glsl::FLOWER_SHELL;
+  const double rate = n * 2.0 * half * mean_r / flower_cell_km;  // discs entered a km
+  const double x = n * M_PI * half * half * mean_r2;
+  double cloudy_km = 0.0, clear_km = 0.0;
+  for (double c : flowers_east.clouds) cloudy_km += c;
+  for (double g : flowers_east.gaps) clear_km += g;
+  const double share = cloudy_km / (cloudy_km + clear_km);
+  const double entered = double(flowers_east.clouds.size()) / (cloudy_km + clear_km);
+  INFO("flowers " << flowers_east.clouds.size() << ": median " << median_of(flowers_east.clouds) << " km, median gap "
+                  << median_of(flowers_east.gaps) << " km, share " << share << " (" << 1.0 - std::exp(-x) << " to " << x
+                  << "), entered " << entered * 1000.0 << " per 1000 km (" << rate * 1000.0 << ")");
+  CHECK(flowers_east.clouds.size() > 500);
+  CHECK(std::abs(entered / rate - 1.0) < 0.15);
+  CHECK(share > 0.9 * (1.0 - std::exp(-x)));
+  CHECK(share < 1.1 * x);
+  CHECK(median_of(flowers_east.clouds) > 1.73 * half * a * flower_cell_km);
+  CHECK(median_of(flowers_east.clouds) < 2 * half * b * flower_cell_km);
+  CHECK(median_of(flowers_east.gaps) > 2 * a * flower_cell_km);
   // Fish: the lattice stretched fourfold north-south draws the clumps out east-west; the warp
   // bends them, so that chords along the wind are at least twice those across it on average, and
   // the longest reach 600 km and more.
@@ -944,8 +957,9 @@ TEST_CASE("gravel's and fish's clumps fade over their rims and flowers end sharp
       const auto east = [&](double lon) { return direction_at(lat, lon); };
       const auto g = rise_widths([&](vec3 p) { return glsl::gravel_clumps(p, seed, 0.0f, 0.0f, glsl::NEAR_CELLS); },
                                  east, circle, 200000);
-      const auto f = rise_widths([&](vec3 p) { return glsl::flower_clumps(p, seed, 0.0f, 0.0f, glsl::NEAR_CELLS); },
-                                 east, circle, 200000);
+      const auto f =
+          rise_widths([&](vec3 p) { return glsl::flower_clumps(p, seed, 0.0f, 0.0f, glsl::NEIGHBOUR_CELLS); }, east,
+                      circle, 200000);
       gravel.insert(gravel.end(), g.begin(), g.end());
       flowers.insert(flowers.end(), f.begin(), f.end());
     }
@@ -990,8 +1004,9 @@ TEST_CASE("a trade clump's rim is never narrower than the cover's texel and its 
   CHECK(glsl::resolved_rim(glsl::GRAVEL_RIM, 60.0f, vec2(0.2f, 0.38f), 2.0f / 1024) == glsl::GRAVEL_RIM);
   // Drawn at 512 per face, the flowers rise from 0.1 to 0.9 over 0.61 (a smoothstep's middle) of
   // the rim, for the smallest flower 0.22 / 0.3 of a texel of 25 km: 11 km, where their own rims
-  // rise within 7.9 km (the test above); the outlines' warp squeezes that by at most 1 + 0.72 (its
-  // displacement's gradient, flower_clumps), to 6.5 km, and most rises are wider than 0.61 texels.
+  // rise within 7.9 km (the test above); the outlines' warp squeezes that by at most 1 + 0.006 x 80
+  // x 3.5 (its amount and cells, flower_clumps, times the Perlin noise's steepest slope, 3.29 in
+  // 2e7 samples) = 2.68, to 4.1 km, and most rises are wider than 0.61 texels.
   const double texel_km = 2.0 / 512 * earth_radius_km;
   std::vector<double> coarse;
   for (std::uint32_t seed = 1; seed <= 3; ++seed) {
@@ -999,8 +1014,8 @@ TEST_CASE("a trade clump's rim is never narrower than the cover's texel and its 
       const double lat = degrees * M_PI / 180.0, circle = 2 * M_PI * earth_radius_km * std::cos(lat);
       const auto east = [&](double lon) { return direction_at(lat, lon); };
       const auto f =
-          rise_widths([&](vec3 p) { return glsl::flower_clumps(p, seed, 0.0f, 2.0f / 512, glsl::NEAR_CELLS); }, east,
-                      circle, 200000);
+          rise_widths([&](vec3 p) { return glsl::flower_clumps(p, seed, 0.0f, 2.0f / 512, glsl::NEIGHBOUR_CELLS); },
+                      east, circle, 200000);
       coarse.insert(coarse.end(), f.begin(), f.end());
     }
   }
@@ -1009,12 +1024,13 @@ TEST_CASE("a trade clump's rim is never narrower than the cover's texel and its 
   INFO("flowers at 512: " << coarse.size() << " rises, median " << median_of(coarse) << " km, least " << least
                           << " km");
   REQUIRE(coarse.size() > 100);
-  CHECK(least >= 0.61 * (0.22 / 0.3) * texel_km / 1.72 - 2 * step_km);
+  CHECK(least >= 0.61 * (0.22 / 0.3) * texel_km / (1.0 + 0.006 * 80 * 3.5) - 2 * step_km);
   CHECK(median_of(coarse) > 0.61 * texel_km);
 }
 
-TEST_CASE("the 8 nearest cells hold every feature point within half a cell, and every trade clump the 27 find",
-          "[fast][systems]") {
+TEST_CASE(
+    "the 8 nearest cells hold every feature point within half a cell, and every gravel and fish clump the 27 find",
+    "[fast][systems]") {
   std::mt19937 rng(7);
   std::uniform_real_distribution<float> uniform(-30.0f, 30.0f);
   const glsl::uvec3 key = glsl::noise_key(3u, 13u);
@@ -1046,12 +1062,61 @@ TEST_CASE("the 8 nearest cells hold every feature point within half a cell, and 
     for (std::uint32_t seed : {1u, 2u}) {
       REQUIRE(glsl::gravel_clumps(p, seed, edge, 0.0f, glsl::NEAR_CELLS) ==
               glsl::gravel_clumps(p, seed, edge, 0.0f, glsl::NEIGHBOUR_CELLS));
-      REQUIRE(glsl::flower_clumps(p, seed, edge, 0.0f, glsl::NEAR_CELLS) ==
-              glsl::flower_clumps(p, seed, edge, 0.0f, glsl::NEIGHBOUR_CELLS));
       REQUIRE(glsl::fish_clumps(p, seed, edge, 0.0f, glsl::NEAR_CELLS) ==
               glsl::fish_clumps(p, seed, edge, 0.0f, glsl::NEIGHBOUR_CELLS));
     }
   }
+}
+
+TEST_CASE("the flowers' discs on the sphere are whole: the culled 27-cell search finds every disc that 125 cells hold",
+          "[fast][systems]") {
+  // Each disc's centre is its feature point moved onto the sphere (in double here), present where
+  // the point lies within FLOWER_SHELL cells of it; a disc reaches p (frayed: 1.3 of its radius)
+  // only from a point within sqrt(0.4^2 + (1 + 0.4 / 28) 0.494^2) = 0.638 cells (the search's cull;
+  // the triangle inequality's 0.894 at most), which the 27 cells hold and the 125 around p hold
+  // with room. Where the nearest disc is within 1.3 radii the two agree to
+  // float rounding: coordinates below 30 cells (ulp 1.9e-6) through a few operations, over radii
+  // from 0.22 cells, 5e-5 of a radius; 1e-4 taken.
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
+  const float cells = glsl::FLOWER_CELLS;
+  const glsl::vec2 radii = glsl::FLOWER_RADII;
+  const float reach = 1.3f * radii.y;
+  int near = 0;
+  for (std::uint32_t seed : {1u, 5u}) {
+    const glsl::uvec3 key = glsl::noise_key(seed, glsl::FLOWERS_LAYER),
+                      size_key = glsl::noise_key(seed, glsl::FLOWERS_LAYER + 1u);
+    for (int k = 0; k < 4000; ++k) {
+      const vec3 p = glm::normalize(vec3(unit(rng), unit(rng), unit(rng)));
+      const glm::dvec3 scaled = glm::dvec3(p) * double(cells);
+      const glsl::ivec3 cell(glm::floor(vec3(p) * cells));
+      double brute = 1e30;
+      for (int z = -2; z <= 2; ++z)
+        for (int y = -2; y <= 2; ++y)
+          for (int x = -2; x <= 2; ++x) {
+            const glsl::ivec3 c = cell + glsl::ivec3(x, y, z);
+            const glsl::vec4 system =
+                glsl::convective_cell(c, key, size_key, radii, glsl::presence_everywhere(1.0f), glsl::no_line_waves());
+            const glm::dvec3 point = glm::dvec3(c) + glm::dvec3(vec3(system));
+            const double height = glm::length(point);
+            if (std::abs(height - cells) > glsl::FLOWER_SHELL) continue;
+            brute = std::min(brute, glm::length(point * (cells / height) - scaled) / system.w);
+          }
+      const float found = glsl::surface_disc_distance(p, cells, seed, glsl::FLOWERS_LAYER, radii, glsl::FLOWER_SHELL,
+                                                      reach, glsl::NEIGHBOUR_CELLS);
+      if (brute <= 1.3) {
+        ++near;
+        REQUIRE(found == Approx(brute).epsilon(0).margin(1e-4));
+      } else {
+        REQUIRE(found > 1.3f - 1e-4f);
+      }
+      REQUIRE(glsl::surface_disc_distance(p, cells, seed, glsl::FLOWERS_LAYER, radii, glsl::FLOWER_SHELL, reach, 0) ==
+              1e30f);
+    }
+  }
+  // 0.8 discs a cell^2 of 1.3 x 0.3 cells' radius cover about a third of the sphere.
+  CHECK(near > 1500);
+  CHECK(glsl::FLOWER_SHELL + reach <= 1.0f);  // whole by the triangle inequality alone
 }
 
 TEST_CASE("the organised patterns' clumps are brighter than sugar and the sea between them darker and clearer",

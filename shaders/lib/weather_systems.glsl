@@ -663,6 +663,15 @@ const float TRADE_CLUMP_EDGE_REACH = 0.3f;
 // as dots of two or three texels, an even confetti over the trades; at 28 it draws blobs of four to
 // seven, a bouquet's size apart.
 const float FLOWER_CELLS = 28.0f;
+const vec2 FLOWER_RADII = vec2(0.22f, 0.38f);
+// The bouquets are flat sheets under the trade inversion, drawn as discs on the sphere
+// (surface_disc_distance) from the feature points within FLOWER_SHELL cells of it: 2 x 0.4 = 0.8
+// bouquets a cell^2, which cover 0.8 pi E[r^2] = 0.2 of a flower region (radii of density r^-3 on
+// 0.22-0.38: E[r^2] = 0.080 cells^2), about 0.16 once they overlap and fade over their rims. The
+// lattice's balls cut by the sphere covered their volume share, 4/3 pi E[r^3] = 0.1, the least of
+// the organised patterns, where the flowers and fish are the cloudiest of the four (Bony et al.
+// 2020; Schulz et al. 2021).
+const float FLOWER_SHELL = 0.4f;
 // A presence of `filled` everywhere (convective_presence_of a line whose width is beyond the sphere).
 vec3 presence_everywhere(float filled) { return vec3(0.0f, 1.0e6f, filled); }
 // The rims, as shares of a clump's radius over which its cloud fades out (rimmed_cloud): gravel's
@@ -692,12 +701,47 @@ float trade_clump(vec3 p, float frequency, uint seed, uint layer, vec2 radii, fl
                 .x;
   return rimmed_cloud(d, edge, TRADE_CLUMP_EDGE_REACH, resolved_rim(rim, frequency, radii, texel_arc));
 }
+// Discs on the sphere: p's distance (in their radii) to the nearest of the discs centred on the
+// sphere's points nearest the feature points of a lattice of `frequency` cells per radius (one a
+// cell, convective_cell's, everywhere) that lie within `shell` cells of it, of the cells' radii
+// (`radii`, density r^-3). A ball of the lattice cut by the sphere shows as a disc only where its
+// point lies near the sphere, mostly smaller than its radius; these show whole, 2 x shell of them a
+// cell^2. A point at height h above the sphere (radius `frequency` in cells) whose disc's centre
+// lies a chord c from p is sqrt(h^2 + (1 + h / frequency) c^2) from it, so a disc reaches p only
+// from a point within sqrt(shell^2 + (1 + shell / frequency) reach^2) cells (reach: the discs'
+// outline's furthest, in cells): the 27 cells around p (`searched` NEIGHBOUR_CELLS, or 0:
+// SKIPPABLE, 1e30) hold every point within a cell, so that keeps the discs whole while it is at
+// most 1, and a cell whose box lies further is skipped before it is hashed (most of the 27).
+// 1e30 where none is near.
+float surface_disc_distance(vec3 p, float frequency, uint seed, uint layer, vec2 radii, float shell, float reach,
+                            int searched) {
+  vec3 scaled = p * frequency;
+  vec3 base = floor(scaled);
+  ivec3 cell = ivec3(base);
+  vec3 f = scaled - base;
+  uvec3 key = noise_key(seed, layer), size_key = noise_key(seed, layer + 1u);
+  float within = sqrt(shell * shell + (1.0f + shell / frequency) * reach * reach);
+  float nearest = 1.0e30f;
+  for (int k = 0; k < searched; ++k) {
+    ivec3 offset = neighbour_offset(k);
+    vec3 gap = max(vec3(0.0f), max(vec3(offset) - f, f - vec3(offset) - vec3(1.0f)));
+    if (dot(gap, gap) > within * within) continue;
+    vec4 system = convective_cell(cell + offset, key, size_key, radii, presence_everywhere(1.0f), no_line_waves());
+    vec3 point = scaled + vec3(offset) + vec3(system) - f;
+    float height = length(point);
+    if (abs(height - frequency) > shell) continue;
+    nearest = min(nearest, length(point * (frequency / height) - scaled) / system.w);
+  }
+  return nearest;
+}
 float gravel_clumps(vec3 p, uint seed, float edge, float texel_arc, int searched) {
   return trade_clump(p, 60.0f, seed, GRAVEL_LAYER, vec2(0.2f, 0.38f), 0.9f, GRAVEL_RIM, edge, texel_arc, searched);
 }
 float flower_clumps(vec3 p, uint seed, float edge, float texel_arc, int searched) {
   vec3 q = tangent_warp(p, 80.0f, 0.006f, seed, FLOWERS_WARP_LAYER, SKIPPABLE(searched > 0, 2));
-  return trade_clump(q, FLOWER_CELLS, seed, FLOWERS_LAYER, vec2(0.22f, 0.38f), 1.0f, FLOWER_RIM, edge, texel_arc, searched);
+  float d = surface_disc_distance(q, FLOWER_CELLS, seed, FLOWERS_LAYER, FLOWER_RADII, FLOWER_SHELL,
+                                  (1.0f + TRADE_CLUMP_EDGE_REACH) * FLOWER_RADII.y, searched);
+  return rimmed_cloud(d, edge, TRADE_CLUMP_EDGE_REACH, resolved_rim(FLOWER_RIM, FLOWER_CELLS, FLOWER_RADII, texel_arc));
 }
 float fish_clumps(vec3 p, uint seed, float edge, float texel_arc, int searched) {
   vec3 q = tangent_warp(p, 20.0f, 0.015f, seed, FISH_WARP_LAYER, SKIPPABLE(searched > 0, 2));
@@ -745,7 +789,8 @@ float trade_cumulus(vec3 p, float latitude, uint seed, float edge, vec4 regimes,
   float patchy = smoothstep(-0.4f, 0.2f, edge);
   float gravel = gravel_clumps(p, seed, edge, texel_arc, SKIPPABLE(belt > 0.0f && regimes.y > 0.0f, NEAR_CELLS));
   float fish = fish_clumps(p, seed, edge, texel_arc, SKIPPABLE(belt > 0.0f && regimes.z > 0.0f, NEAR_CELLS));
-  float flowers = flower_clumps(p, seed, edge, texel_arc, SKIPPABLE(belt > 0.0f && regimes.w > 0.0f, NEAR_CELLS));
+  float flowers =
+      flower_clumps(p, seed, edge, texel_arc, SKIPPABLE(belt > 0.0f && regimes.w > 0.0f, NEIGHBOUR_CELLS));
   float clumps = max(max(TRADE_PATTERN_STRENGTH.x * regimes.y * gravel * patchy, TRADE_PATTERN_STRENGTH.y * regimes.z * fish),
                      TRADE_PATTERN_STRENGTH.z * regimes.w * flowers);
   return belt > 0.0f ? belt * clumps : 0.0f;
