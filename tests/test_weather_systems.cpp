@@ -1068,13 +1068,13 @@ TEST_CASE(
   }
 }
 
-TEST_CASE("the flowers' discs on the sphere are whole: the culled 27-cell search finds every disc that 125 cells hold",
+TEST_CASE("the flowers' discs on the sphere are whole: their search finds every disc that 125 cells hold",
           "[fast][systems]") {
   // Each disc's centre is its feature point moved onto the sphere (in double here), present where
   // the point lies within FLOWER_SHELL cells of it; a disc reaches p (frayed: 1.3 of its radius)
-  // only from a point within sqrt(0.4^2 + (1 + 0.4 / 28) 0.494^2) = 0.638 cells (the search's cull;
-  // the triangle inequality's 0.894 at most), which the 27 cells hold and the 125 around p hold
-  // with room. Where the nearest disc is within 1.3 radii the two agree to
+  // only from a point within sqrt(0.4^2 + (1 + 0.4 / 28) 0.494^2) = 0.638 cells (the cells the
+  // search loops over; the triangle inequality's 0.894 at most), which the 27 cells hold and the
+  // 125 around p hold with room. Where the nearest disc is within 1.3 radii the two agree to
   // float rounding: coordinates below 30 cells (ulp 1.9e-6) through a few operations, over radii
   // from 0.22 cells, 5e-5 of a radius; 1e-4 taken.
   std::mt19937 rng(11);
