@@ -636,15 +636,16 @@ vec4 trade_regimes(vec3 p, uint seed, int fields) {
 
 // The patterns' clumps, each in [0, 1]: whole discs of radii of density r^-3 on a lattice
 // (convective_distances over the NEAR_CELLS, in every place in `filled` of them; `searched` 0
-// where the caller draws none), their edges frayed by the cover's noise (`edge`, up to
-// TRADE_CLUMP_EDGE_REACH of a radius), soft where the cloud is thin and sharp where thick (the
-// rims below). Whole discs: a clump cut along
+// where the caller draws none; the flowers: discs on the sphere, surface_disc_distance), their
+// edges frayed by the cover's noise (`edge`, up to TRADE_CLUMP_EDGE_REACH of a radius, the
+// flowers' FLOWER_EDGE_REACH), soft where the cloud is thin and sharp where thick (the rims
+// below). Whole discs: a clump cut along
 // its Voronoi cell's border with an empty or smaller neighbour (cell_clouds) shows straight edges
 // and corners, shards rather than clouds, once the cover resolves them. Their radii stay below
 // 0.38 cells, so that with the fray (1.3 times) they reach at most 0.494 cells and the 8 nearest
 // cells hold them. Gravel: clumps of cumulus 40-80 km across (radii 0.2-0.38 of cells of 106 km,
 // 60 a radius), nine places in ten. Flowers: bouquets 100-175 km across (radii 0.22-0.38 of cells
-// of 228 km, FLOWER_CELLS a radius) in every place, drawn at the point displaced by Perlin noise of 80
+// of 228 km, FLOWER_CELLS a radius, 0.8 a cell^2), drawn at the point displaced by Perlin noise of 80
 // cells a radius by up to about 20 km (tangent_warp), so that their outlines are lobed. Fish:
 // bands 750-970 km long and a quarter as wide (radii 0.3-0.38 of cells of 1270 km, 5 a radius,
 // with the point's z (north) component stretched fourfold, which draws them out along the latitude
@@ -672,6 +673,12 @@ const vec2 FLOWER_RADII = vec2(0.22f, 0.38f);
 // the organised patterns, where the flowers and fish are the cloudiest of the four (Bony et al.
 // 2020; Schulz et al. 2021).
 const float FLOWER_SHELL = 0.4f;
+// The bouquets' outlines move with the cover's noise by up to FLOWER_EDGE_REACH of their radius,
+// between the deep convection's cores (CORE_EDGE_REACH, cumuliform) and their anvils
+// (ANVIL_EDGE_REACH, sheets spread by the wind): flowers are cumulus whose tops spread into
+// stratiform sheets under the trade inversion (Stevens et al. 2020). With the clumps' 0.3 their
+// outlines were smooth, convex pebbles at 1024 per face.
+const float FLOWER_EDGE_REACH = 0.5f;
 // A presence of `filled` everywhere (convective_presence_of a line whose width is beyond the sphere).
 vec3 presence_everywhere(float filled) { return vec3(0.0f, 1.0e6f, filled); }
 // The rims, as shares of a clump's radius over which its cloud fades out (rimmed_cloud): gravel's
@@ -711,8 +718,8 @@ float trade_clump(vec3 p, float frequency, uint seed, uint layer, vec2 radii, fl
 // from a point within sqrt(shell^2 + (1 + shell / frequency) reach^2) cells (reach: the discs'
 // outline's furthest, in cells): the 27 cells around p (`searched` NEIGHBOUR_CELLS, or 0:
 // SKIPPABLE, 1e30) hold every point within a cell, so that keeps the discs whole while it is at
-// most 1, and only the cells whose box lies within that along each axis are hashed (12 of the 27
-// on average for the flowers). 1e30 where none is near.
+// most 1, and only the cells whose box lies within that along each axis are hashed (13.8 of the
+// 27 on average for the flowers). 1e30 where none is near.
 float surface_disc_distance(vec3 p, float frequency, uint seed, uint layer, vec2 radii, float shell, float reach,
                             int searched) {
   vec3 scaled = p * frequency;
@@ -746,8 +753,8 @@ float gravel_clumps(vec3 p, uint seed, float edge, float texel_arc, int searched
 float flower_clumps(vec3 p, uint seed, float edge, float texel_arc, int searched) {
   vec3 q = tangent_warp(p, 80.0f, 0.006f, seed, FLOWERS_WARP_LAYER, SKIPPABLE(searched > 0, 2));
   float d = surface_disc_distance(q, FLOWER_CELLS, seed, FLOWERS_LAYER, FLOWER_RADII, FLOWER_SHELL,
-                                  (1.0f + TRADE_CLUMP_EDGE_REACH) * FLOWER_RADII.y, searched);
-  return rimmed_cloud(d, edge, TRADE_CLUMP_EDGE_REACH, resolved_rim(FLOWER_RIM, FLOWER_CELLS, FLOWER_RADII, texel_arc));
+                                  (1.0f + FLOWER_EDGE_REACH) * FLOWER_RADII.y, searched);
+  return rimmed_cloud(d, edge, FLOWER_EDGE_REACH, resolved_rim(FLOWER_RIM, FLOWER_CELLS, FLOWER_RADII, texel_arc));
 }
 float fish_clumps(vec3 p, uint seed, float edge, float texel_arc, int searched) {
   vec3 q = tangent_warp(p, 20.0f, 0.015f, seed, FISH_WARP_LAYER, SKIPPABLE(searched > 0, 2));

@@ -45,7 +45,8 @@ const int PROBE_CELL_BORDERS = 26;           // cell_borders(p * OPEN_CELLS, p, 
 const int PROBE_TRADE_REGIMES = 27;          // trade_regimes(p, uint(b), 2)
 const int PROBE_ITCZ_SWELL = 40;             // itcz_swell(p, uint(b)), itcz_beads(x[1].w)
 const int PROBE_SURFACE_DISCS = 41;          // surface_disc_distance(p, a, uint(b), FLOWERS_LAYER, FLOWER_RADII, c,
-                                             // 1.3 FLOWER_RADII.y, 27 cells, none where x[3].z > 1/2)
+                                             // (1 + FLOWER_EDGE_REACH) FLOWER_RADII.y, 27 cells, none where
+                                             // x[3].z > 1/2)
 const int PROBE_TRADE_CLUMPS = 28;           // gravel_clumps(p, uint(b), a, x[1].w), flower_clumps, fish_clumps (all
                                              // cells searched), organised_trades(trade_regimes(p, uint(b), 2), latitude, c)
 const int PROBE_TANGENT_WARP = 29;           // tangent_warp(p, a, c, uint(b), FLOWERS_WARP_LAYER, 2),
@@ -196,7 +197,8 @@ vec4 probe_weather_systems(mat4 x) {
   if (f == PROBE_TRADE_REGIMES) return trade_regimes(p, seed, 2);
   if (f == PROBE_ITCZ_SWELL) return vec4(itcz_swell(p, seed), itcz_beads(x[1].w), 0.0f, 0.0f);
   if (f == PROBE_SURFACE_DISCS)
-    return vec4(surface_disc_distance(p, x[0].y, seed, FLOWERS_LAYER, FLOWER_RADII, x[0].w, 1.3f * FLOWER_RADII.y,
+    return vec4(surface_disc_distance(p, x[0].y, seed, FLOWERS_LAYER, FLOWER_RADII, x[0].w,
+                                      (1.0f + FLOWER_EDGE_REACH) * FLOWER_RADII.y,
                                       x[3].z > 0.5f ? 0 : NEIGHBOUR_CELLS),
                 0.0f, 0.0f, 0.0f);
   if (f == PROBE_TANGENT_WARP)
