@@ -641,9 +641,9 @@ vec4 trade_regimes(vec3 p, uint seed, int fields) {
 // flowers' FLOWER_EDGE_REACH), soft where the cloud is thin and sharp where thick (the rims
 // below). Whole discs: a clump cut along
 // its Voronoi cell's border with an empty or smaller neighbour (cell_clouds) shows straight edges
-// and corners, shards rather than clouds, once the cover resolves them. Their radii stay below
-// 0.38 cells, so that with the fray (1.3 times) they reach at most 0.494 cells and the 8 nearest
-// cells hold them. Gravel: clumps of cumulus 40-80 km across (radii 0.2-0.38 of cells of 106 km,
+// and corners, shards rather than clouds, once the cover resolves them. Gravel's and fish's radii
+// stay below 0.38 cells, so that with the fray (1.3 times) they reach at most 0.494 cells and the 8
+// nearest cells hold them (the flowers' search reaches further, surface_disc_distance). Gravel: clumps of cumulus 40-80 km across (radii 0.2-0.38 of cells of 106 km,
 // 60 a radius), nine places in ten. Flowers: bouquets 100-175 km across (radii 0.22-0.38 of cells
 // of 228 km, FLOWER_CELLS a radius, 0.8 a cell^2), drawn at the point displaced by Perlin noise of 80
 // cells a radius by up to about 20 km (tangent_warp), so that their outlines are lobed. Fish:
