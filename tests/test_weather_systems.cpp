@@ -992,7 +992,7 @@ TEST_CASE("a trade clump's rim is never narrower than the cover's texel and its 
   // resolved_rim: a texel of 2 / size radians is texel_arc x 28 / 0.3 of a mean flower's radius
   // (0.3 cells of FLOWER_CELLS = 28 a radius): 0.36 at 512 per face, 0.18 at 1024, 0.046 at 4096
   // (under the flowers' own 0.15, which then holds), the whole radius from 128.
-  const vec2 radii(0.22f, 0.38f);
+  const vec2 radii = glsl::FLOWER_RADII;
   const float cells = glsl::FLOWER_CELLS;
   CHECK(glsl::resolved_rim(glsl::FLOWER_RIM, cells, radii, 0.0f) == glsl::FLOWER_RIM);
   CHECK(glsl::resolved_rim(glsl::FLOWER_RIM, cells, radii, 2.0f / 4096) == glsl::FLOWER_RIM);
