@@ -8,6 +8,7 @@
 #   docs/images/cover_storm_track.png        the same cover, 33-68 S, 158-68 W: open cells between the storm track's fronts
 #   docs/images/cover_itcz.png               the same cover, 22 N-10 S, 160 W-20 E: the ITCZ's meandering line and superclusters
 #   docs/images/cover_monsoons.png           a February cover, 35 N-35 S: the ITCZ's monsoons over land
+#   docs/images/cover_spcz.png               the same cover, 5.6 N-39 S, 120 E-100 W: the SPCZ
 #   docs/images/cover_streets.png            a 4096 cover's equirect, 36-47 N, 48-26 W: cloud streets (6.5 minutes)
 #   docs/images/cover_sequence.gif           nephele generate --sequence 24 --interval 3 (a day of the moving cover)
 #   docs/images/cover_motion.svg             nephele stats of that sequence (speeds by band, decorrelation)
@@ -76,6 +77,12 @@ oiiotool "$work/cover-cells/cover_equirect.exr" --ch 0,0,0 --cut 2048x364+227+77
 # over Africa, South America and Australia and near the equator over the oceans.
 "$nephele" generate --size 512 --month 2 --files equirect --quiet --out "$work/cover-february"
 oiiotool "$work/cover-february/cover_equirect.exr" --ch 0,0,0 --cut 2048x400+0+312 -d uint8 -o docs/images/cover_monsoons.png
+# The SPCZ (docs/climate.md, "The SPCZ"): the South Pacific across the date line, the equirect's
+# two ends (120 E-180 and 180-100 W) put side by side.
+february="$work/cover-february/cover_equirect.exr"
+oiiotool "$february" --ch 0,0,0 --cut 455x256+0+480 --origin +341+0 --fullsize 796x256+0+0 \
+  "$february" --ch 0,0,0 --cut 341x256+1707+480 --origin +0+0 --fullsize 796x256+0+0 \
+  --add --cut 796x256+0+0 -d uint8 -o docs/images/cover_spcz.png
 # The storm tracks' open cells between the fronts (docs/climate.md, "The storm tracks' cold air"): the South Pacific.
 oiiotool "$work/cover-cells/cover_equirect.exr" --ch 0,0,0 --cut 1024x400+250+1400 -d uint8 -o docs/images/cover_storm_track.png
 # The cloud streets show from about 2700 texels a face: a crop of a 4096 cover's 16384 x 8192 equirect.

@@ -684,6 +684,25 @@ TEST_CASE("weather_systems.glsl on the GPU agrees with the CPU", "[probe]") {
     // The ITCZ band's swelling: a gradient noise at ten cells a radius through a smoothstep of slope
     // 0.5 / PERLIN_OCTAVE_SIGMA per unit of noise, as the trade regimes' noise at five; its beads a
     // smoothstep and a mix of an exact distance.
+    // The SPCZ at points of the South Pacific (130 E to 110 W, 40 S to 10 N): its place along the
+    // line an arctangent over the span of 1.57 (kTranscendental); the line's latitude a power of
+    // that (slope 0.53 rad per unit of s) and its sine and cosine; the presence those through
+    // the bump's slope of 21 per unit of sine, as PROBE_LINE_WAVES' (64 kTranscendental in all);
+    // the extent smoothsteps of exact inputs. The band: the offset's error, the arcsine's and the
+    // line's (2 kTranscendental), through band_profile's slope of 3.75 per width of at least 0.03 x
+    // 0.35 (360 per radian). Whether it is near: a step at the reach, where no system and no band
+    // reaches (both 0 on either side of it), exact but for points within the arcsine's error of
+    // it (about one in 1e5).
+    {
+      const float lat = r(-0.7f, 0.17f), lon = r(2.27f, 4.54f);
+      const vec3 pacific(std::cos(lat) * std::cos(lon), std::cos(lat) * std::sin(lon), std::sin(lat));
+      const vec4 spcz(r(0.0f, 1.0f), r(-0.07f, 0.07f), r(-1.0f, 1.0f), 0);
+      cases.push_back(
+          {arguments(PROBE_SPCZ, vec4(0, r(-0.3f, 1.3f), seed, r(-0.07f, 0.07f)), vec4(pacific, 0), vec4(0.0f), spcz),
+           64 * kTranscendental});
+      cases.push_back(
+          {arguments(PROBE_SPCZ_BAND, vec4(0, 0, seed, 0), vec4(pacific, 0), vec4(0.0f), spcz), 720 * kTranscendental});
+    }
     cases.push_back({arguments(PROBE_ITCZ_SWELL, vec4(0, seed, 0, 0), vec4(q, r(0.0f, 4.0f))), 2 * 12.5f * kFbm});
     // The same where the belts draw them (each a quarter elsewhere: exact), with the trade cumulus'
     // strength 1 or 0. Whether they are drawn is a step at the belt's ends (6 and 33 degrees),

@@ -10,6 +10,7 @@
 #include <random>
 #include <vector>
 
+#include "cover/latitude_profile.hpp"
 #include "cover/moving_flow.hpp"
 #include "cover/surface_bias.hpp"
 #include "cover/weather_systems.hpp"
@@ -251,6 +252,18 @@ std::shared_ptr<const cover::SurfaceMask> tropical_continent() {
   return std::make_shared<const cover::SurfaceMask>(mask);
 }
 
+// A planet of ocean alone: a map, so that the SPCZ is drawn, without monsoons.
+std::shared_ptr<const cover::SurfaceMask> ocean_planet() {
+  cover::SurfaceMask mask{cover::surface_bias_columns, cover::surface_bias_rows, {}, "ocean"};
+  mask.land.assign(static_cast<size_t>(mask.rows) * mask.columns, 0.0f);
+  return std::make_shared<const cover::SurfaceMask>(mask);
+}
+
+// The unit direction of (latitude, longitude), radians.
+vec3 direction_of(double lat, double lon) {
+  return vec3(float(std::cos(lat) * std::cos(lon)), float(std::cos(lat) * std::sin(lon)), float(std::sin(lat)));
+}
+
 // The monsoons' shift of the ITCZ's line at longitude `lon` (radians), radians of latitude.
 double monsoon_shift(const glsl::WeatherSystems& w, double lon) {
   const vec3 at(std::cos(lon), std::sin(lon), 0.0f);
@@ -312,6 +325,7 @@ TEST_CASE("in August the ITCZ's systems over a continent lie north of the ocean'
   const double degree = M_PI / 180.0;
   cover::CoverParameters p;
   p.surface = tropical_continent();
+  p.spcz = 0.0f;  // an Earth's feature, and over this planet's ocean (150 W to 150 E) it would pull the mean south
   for (const auto& [month, shift_deg] : {std::pair{8, 5.0}, std::pair{2, -15.0}}) {
     p.month = month;
     const glsl::WeatherSystems w = cover::weather_systems(p, 0.0);
@@ -334,6 +348,125 @@ TEST_CASE("in August the ITCZ's systems over a continent lie north of the ocean'
                   << " over the ocean");
     CHECK(std::abs(land - ocean - shift_deg) < 2.5);
   }
+}
+
+TEST_CASE("the SPCZ's line runs from the Solomon Islands past Samoa and Tonga to the Cook Islands and 25 S 120 W",
+          "[fast][systems]") {
+  const double degree = M_PI / 180.0;
+  const auto line_deg = [&](double lon_deg) {
+    return glsl::spcz_latitude(glsl::spcz_along(direction_of(0.0, lon_deg * degree)), 0.0f) / degree;
+  };
+  // Places on the zone (Vincent 1994; docs/climate.md, "The SPCZ"): Honiara (9.4 S, 160 E), midway
+  // between Samoa (13.8 S, 172 W) and Tonga (21 S, 175 W), Rarotonga (21.2 S, 159.8 W), each within
+  // 2 degrees (the band's half width 1.7 degrees, its systems' presence 4), and its end.
+  INFO("the line at 160 E " << line_deg(160.0) << ", 173.5 W " << line_deg(-173.5) << ", 159.8 W " << line_deg(-159.8));
+  CHECK(std::abs(line_deg(160.0) + 9.4) < 2.0);
+  CHECK(std::abs(line_deg(-173.5) + 17.4) < 2.0);
+  CHECK(std::abs(line_deg(-159.8) + 21.2) < 2.0);
+  CHECK(line_deg(-120.0) == Approx(-25.0).margin(1e-4));
+  // Along it: 0 at 150 E, 1 at 120 W, by longitude; held beyond its ends.
+  CHECK(glsl::spcz_along(direction_of(-0.2, 150.0 * degree)) == Approx(0.0).margin(1e-6));
+  CHECK(glsl::spcz_along(direction_of(-0.4, -120.0 * degree)) == Approx(1.0).margin(1e-6));
+  CHECK(glsl::spcz_along(direction_of(0.0, 180.0 * degree)) == Approx(1.0 / 3.0).margin(1e-6));
+  CHECK(line_deg(100.0) == Approx(-6.0).margin(1e-4));
+  // Its extent: none west of 139 E (s -0.12) or east of 120 W, whole from 154.5 E to 156 W.
+  CHECK(glsl::spcz_extent(-0.12f) == 0.0f);
+  CHECK(glsl::spcz_extent(1.0f) == 0.0f);
+  CHECK(glsl::spcz_extent(0.05f) == 1.0f);
+  CHECK(glsl::spcz_extent(0.6f) == 1.0f);
+  // Its strength: none without a map (its line is the Earth's); with one, --spcz times 1 in
+  // February, 0.5 in August and 0.75 in the annual mean; its line 4.1 degrees north of the annual
+  // one in August (the profile's shift at 15 S) and as far south in February.
+  cover::CoverParameters p;
+  p.month = 2;
+  CHECK(cover::weather_systems(p, 0.0).itcz_waves.spcz == 0.0f);
+  p.surface = ocean_planet();
+  p.spcz = 0.8f;
+  const glsl::WeatherSystems february = cover::weather_systems(p, 0.0);
+  p.month = 8;
+  const glsl::WeatherSystems august = cover::weather_systems(p, 0.0);
+  p.month = 0;
+  const glsl::WeatherSystems annual = cover::weather_systems(p, 0.0);
+  CHECK(february.itcz_waves.spcz == Approx(0.8).margin(1e-6));
+  CHECK(august.itcz_waves.spcz == Approx(0.8 * 0.5).margin(1e-6));
+  CHECK(annual.itcz_waves.spcz == Approx(0.8 * 0.75).margin(1e-6));
+  CHECK(annual.itcz_waves.spcz_shift == 0.0f);
+  CHECK(august.itcz_waves.spcz_shift / degree == Approx(cover::seasonal_shift_deg(-15.0, 8)).margin(1e-5));
+  CHECK(august.itcz_waves.spcz_shift / degree > 4.0);
+  CHECK(february.itcz_waves.spcz_shift == Approx(-august.itcz_waves.spcz_shift).margin(1e-6));
+}
+
+TEST_CASE("along the SPCZ a band of deep cloud in February, none beyond its reach, and half as many systems in August",
+          "[fast][systems]") {
+  const double degree = M_PI / 180.0;
+  cover::CoverParameters p;
+  p.surface = ocean_planet();
+  p.month = 2;
+  const glsl::WeatherSystems w = cover::weather_systems(p, 0.0);
+  const glsl::LineWaves& waves = w.itcz_waves;
+  // On the meandering line over its whole extent (s 0.05 to 0.6, 155 E to 156 W), in band_profile's
+  // flat middle: where the superclusters are active the band's deep cloud is SPCZ_LINE_DEPTH times
+  // the strength (1 in February) and the systems' cloud at least 0.6 of it (itcz_beads), over 1/2;
+  // outside them SPCZ_BAND_DORMANT of that, and 1/2 or less between the systems. Beyond its reach
+  // south of the line, nothing (the ITCZ lies north of it).
+  const int n = 1800;
+  int active = 0, dormant = 0, deep_active = 0, banded_active = 0, banded_dormant = 0;
+  for (int k = 0; k < n; ++k) {
+    const float s = 0.05f + 0.55f * (k + 0.5f) / n;
+    const double lon = glsl::SPCZ_LONGITUDES.x + s * (glsl::SPCZ_LONGITUDES.y - glsl::SPCZ_LONGITUDES.x);
+    const vec3 sums = glsl::line_waves(direction_of(0.0, lon), waves);
+    const double line = glsl::spcz_latitude(s, waves.spcz_shift) + glsl::ITCZ_MEANDER * glsl::line_meander(sums);
+    const vec3 on = direction_of(line, lon);
+    const float band = glsl::itcz_line_band(on, w.itcz_latitude, waves, 0.0f, w.seed);
+    const float activity = glsl::supercluster_activity(sums);
+    if (activity == 1.0f) {
+      ++active;
+      banded_active += band == Approx(glsl::SPCZ_LINE_DEPTH).margin(1e-3);
+      deep_active += itcz_here(on, float(line), w.itcz_latitude, waves, w.seed, 0.0f).x > 0.5f;
+    }
+    if (activity == 0.0f) {
+      ++dormant;
+      banded_dormant += band == Approx(glsl::SPCZ_BAND_DORMANT * glsl::SPCZ_LINE_DEPTH).margin(1e-3);
+    }
+    const double off = line - glsl::SPCZ_REACH - glsl::ITCZ_MEANDER * glsl::LINE_MEANDER_LIMIT;
+    const glsl::vec2 away = itcz_here(direction_of(off, lon), float(off), w.itcz_latitude, waves, w.seed, 0.0f);
+    CHECK(away.x == 0.0f);
+    CHECK(away.y == 0.0f);
+  }
+  INFO(active << " of " << n << " places in active superclusters, " << banded_active << " under the whole band and "
+              << deep_active << " in deep cloud; " << dormant << " outside them, " << banded_dormant
+              << " under half the band");
+  CHECK(active > n / 10);
+  CHECK(dormant > n / 10);
+  CHECK(banded_active == active);
+  CHECK(deep_active == active);
+  CHECK(banded_dormant == dormant);
+  // The systems' share of places over the South Pacific (130 E to 110 W, 45 S to 0), the SPCZ's
+  // part of it (with the SPCZ less without): in August its strength is half February's, over a
+  // line as long within the cosine of its latitude (8.2 degrees further north: 1.04 times longer),
+  // so that the shares' ratio is 0.5 x 1.04, within the grid's sampling of the bump and the
+  // overlap with the ITCZ's share near the warm pool (0.06).
+  const auto spcz_share = [&](int month) {
+    cover::CoverParameters q = p;
+    q.month = month;
+    const glsl::WeatherSystems with = cover::weather_systems(q, 0.0);
+    q.spcz = 0.0f;
+    const glsl::WeatherSystems without = cover::weather_systems(q, 0.0);
+    const glsl::vec3 presence = glsl::itcz_presence(glsl::ITCZ_SYSTEMS_TABLE, with.itcz_latitude);
+    double sum = 0.0;
+    for (int i = 0; i < 240; ++i)
+      for (int j = 0; j < 90; ++j) {
+        const double lon = (130.0 + 120.0 * (i + 0.5) / 240) * degree, lat = -45.0 * (j + 0.5) / 90 * degree;
+        const vec3 at = direction_of(lat, lon);
+        sum += std::cos(lat) * (glsl::waved_presence(at, presence, with.itcz_waves, 0.0f) -
+                                glsl::waved_presence(at, presence, without.itcz_waves, 0.0f));
+      }
+    return sum;
+  };
+  const double ratio = spcz_share(8) / spcz_share(2);
+  INFO("August's SPCZ systems' share against February's " << ratio);
+  CHECK(std::abs(ratio - 0.5 * std::cos(-17.0 * degree + 4.1 * degree) / std::cos(-17.0 * degree - 4.1 * degree)) <
+        0.06);
 }
 
 TEST_CASE("the ITCZ's clusters stay in its belt and follow the season", "[fast][systems]") {
@@ -533,7 +666,7 @@ TEST_CASE("the ITCZ's band swells and narrows along the line and is deepest arou
       for (int j = 0; j < 1000; ++j) {
         const float lat = centre + 1.0e-4f * j;
         const vec3 p(std::cos(lat) * std::cos(lon), std::cos(lat) * std::sin(lon), std::sin(lat));
-        if (glsl::itcz_line_band(p, line, waves, 0.0f, systems.seed) < 0.5f) break;
+        if (glsl::itcz_line_band(p, line, waves, 0.0f, systems.seed) < 0.5f * glsl::ITCZ_LINE_DEPTH) break;
         half_width = 1.0e-4 * j;
       }
       widths.push_back(half_width / glsl::ITCZ_LINE_WIDTH);

@@ -62,6 +62,8 @@ struct LineWaves {
   float meander_z;  // the meander's amplitude in sin(latitude) (its radians times cos(line))
   float dormant;    // the share of places filled outside the superclusters, relative to inside
   float applies;    // 1: the waves apply; 0: none (GLSL reserves "active")
+  float spcz;       // the SPCZ's share of places on its line relative to the ITCZ's (spcz_share; 0: none)
+  float spcz_shift;  // its line's seasonal shift, radians of latitude (northward > 0)
 };
 // The line's meander (radians of latitude for a unit of its sum; the sum clamped to
 // +-LINE_MEANDER_LIMIT) and the superclusters: a place is inside one where the envelope's sum
@@ -83,12 +85,14 @@ LineWaves no_line_waves() {
   waves.meander_z = 0.0f;
   waves.dormant = 1.0f;
   waves.applies = 0.0f;
+  waves.spcz = 0.0f;
+  waves.spcz_shift = 0.0f;
   return waves;
 }
 // The waves of `seed` for a line at latitude `line` at time 0: complex amplitudes with components
-// uniform in [-1/2, 1/2), normalised so that sum |c|^2 / 2 = 1, and no monsoons. The host draws
-// them once for a cover, adds the monsoons of its land mask and month and moves them to the
-// frame's time (cover/weather_systems.cpp); the probes draw them here.
+// uniform in [-1/2, 1/2), normalised so that sum |c|^2 / 2 = 1, and neither monsoons nor SPCZ. The
+// host draws them once for a cover, adds the monsoons of its land mask and month (and with a mask
+// the SPCZ) and moves them to the frame's time (cover/weather_systems.cpp); the probes draw them here.
 LineWaves line_waves_of(uint seed, float line) {
   LineWaves waves = no_line_waves();
   uvec3 key = noise_key(seed, ITCZ_WAVES_LAYER);
@@ -291,18 +295,80 @@ float convective_presence(vec3 p, vec3 presence) {
   return presence.z * bump * bump;
 }
 
-// The share of places with a system at p (convective_presence) about the meandering line, times
-// 1 inside the superclusters and `dormant` outside. The waves' sums are computed only where the
+// The South Pacific Convergence Zone (Vincent 1994, "The South Pacific Convergence Zone (SPCZ): a
+// review", Mon. Wea. Rev. 122): the tropics' other line of deep convection, a band 200-400 km broad
+// from the warm pool near the Solomon Islands east-south-east past Fiji, Samoa and Tonga and the
+// Cook Islands, petering out near 25 S, 120 W; present all year, strongest and furthest south in
+// austral summer (the host's LineWaves.spcz and spcz_shift). Its mean line runs from
+// SPCZ_LATITUDES.x at SPCZ_LONGITUDES.x to SPCZ_LATITUDES.y at SPCZ_LONGITUDES.y, latitude = west +
+// (east - west)(1 - (1 - s)^SPCZ_BEND) over s in [0, 1] along the longitudes: diagonal at its
+// tropical end (9 S at 160 E, 16 S at 175 W) and flattening eastward (20 S at 160 W).
+const vec2 SPCZ_LONGITUDES = vec2(2.6179939f, 4.1887902f);  // 150 E and 240 E (120 W), radians
+const vec2 SPCZ_LATITUDES = vec2(-0.10471976f, -0.43633231f);  // 6 S and 25 S
+const float SPCZ_BEND = 1.6f;
+// Along its line the SPCZ joins the warm pool's convection west of 150 E (s from -0.12 to 0.05)
+// and peters out over the eastern third (s from 0.6 to 1).
+float spcz_extent(float s) { return smoothstep(-0.12f, 0.05f, s) * (1.0f - smoothstep(0.6f, 1.0f, s)); }
+// The place along the line, s, of the unit direction p by its longitude (0 at SPCZ_LONGITUDES.x,
+// 1 at .y; beyond either end outside [0, 1], within half a turn of the line's middle).
+float spcz_along(vec3 p) {
+  const float two_pi = 6.28318530717959f;
+  float east = atan(p.y, p.x + 1.0e-12f) - SPCZ_LONGITUDES.x;
+  float span = SPCZ_LONGITUDES.y - SPCZ_LONGITUDES.x;
+  east -= two_pi * floor((east - 0.5f * span) / two_pi + 0.5f);  // within half a turn of the middle
+  return east / span;
+}
+// The mean line's latitude (radians) at s, ends held beyond [0, 1], moved by `shift`.
+float spcz_latitude(float s, float shift) {
+  float bent = 1.0f - pow(1.0f - clamp(s, 0.0f, 1.0f), SPCZ_BEND);
+  return mix(SPCZ_LATITUDES.x, SPCZ_LATITUDES.y, bent) + shift;
+}
+// Whether any of the SPCZ's systems may reach the unit direction p: within SPCZ_REACH of latitude
+// of its mean line at p's longitude (held at the ends) and within SPCZ_REACH_ALONG of its extent.
+// What a system and its anvil reach lies within 0.342 of the mean line across it, as the ITCZ's
+// (ITCZ_REACH: the meander, the points' spread, the anvils and the warp); the line's slope is at
+// most 0.34 (latitude by east distance), so that across it 0.342 is at most 0.342 / cos(atan 0.34)
+// = 0.36 of latitude; and along it within 0.342 / cos(25 S) = 0.38 of longitude, 0.24 of its span,
+// of where its extent ends (s -0.12 and 1). (None north of 23.6 N or south of 60 S: the line with
+// its seasonal shift of at most 5 degrees lies between 1 S and 30 S.)
+const float SPCZ_REACH = 0.37f;
+const vec2 SPCZ_REACH_ALONG = vec2(-0.37f, 1.25f);
+bool spcz_near(vec3 p, IN(LineWaves) waves) {
+  if (waves.spcz <= 0.0f || p.z > 0.4f || p.z < -0.87f) return false;
+  float s = spcz_along(p);
+  if (s < SPCZ_REACH_ALONG.x || s > SPCZ_REACH_ALONG.y) return false;
+  return abs(asin(p.z) - spcz_latitude(s, waves.spcz_shift)) < SPCZ_REACH;
+}
+// The SPCZ's presence (as convective_presence, with the ITCZ's `presence`'s width and filling) at
+// the unit direction p about its line meandering by the waves' meander `meander` (line_meander at
+// p's longitude: the line's waves are functions of longitude, and the SPCZ takes the ITCZ's there),
+// times its strength and extent along the line.
+float spcz_presence(vec3 p, vec3 presence, IN(LineWaves) waves, float meander) {
+  float s = spcz_along(p);
+  float line = spcz_latitude(s, waves.spcz_shift) + ITCZ_MEANDER * meander;
+  vec3 own = vec3(sin(line), presence.y * cos(line), waves.spcz * spcz_extent(s) * presence.z);
+  return convective_presence(p, own);
+}
+
+// The share of places with a system at p (convective_presence) about the meandering line, and
+// near the SPCZ the larger of that and the SPCZ's (spcz_presence), times 1 inside the
+// superclusters and `dormant` outside: the SPCZ's systems gather in the superclusters of their
+// longitude, as the intraseasonal oscillation's active phase over the western and central Pacific
+// enhances the SPCZ's convection with the ITCZ's (Matthews 2012, "A multiscale framework for the
+// origin and variability of the South Pacific Convergence Zone", QJRMS 138). The waves' sums are computed only where the
 // share can be above 0 and above `below`, the caller's hash (a system is present where its hash is
 // below the share; 0 there otherwise): the line shifts by at most meander_z LINE_MEANDER_LIMIT and
 // the share is at most the presence's `filled` (and the monsoons shift it by at most their reach).
 float waved_presence(vec3 p, vec3 presence, IN(LineWaves) waves, float below) {
   if (waves.applies == 0.0f) return convective_presence(p, presence);
   float reach = 2.0f * presence.y + waves.meander_z * LINE_MEANDER_LIMIT + waves.monsoon_reach;
-  if (below >= presence.z || abs(p.z - presence.x) >= reach) return 0.0f;
+  bool spcz = spcz_near(p, waves);
+  if (below >= presence.z || (abs(p.z - presence.x) >= reach && !spcz)) return 0.0f;
   vec3 sums = line_waves(p, waves);
   float filled = mix(waves.dormant, 1.0f, supercluster_activity(sums));
-  return filled * convective_presence(p - vec3(0.0f, 0.0f, line_shift(sums, waves)), presence);
+  float share = convective_presence(p - vec3(0.0f, 0.0f, line_shift(sums, waves)), presence);
+  if (spcz) share = max(share, spcz_presence(p, presence, waves, line_meander(sums)));
+  return filled * share;
 }
 
 // Where the waves move (LineWaves), a system's share of places changes with time, and a system
@@ -540,13 +606,37 @@ float itcz_swell(vec3 now, uint seed) {
   return mix(ITCZ_SWELL.x, ITCZ_SWELL.y, smoothstep(-2.0f, 2.0f, n));
 }
 
-// The superclusters' band at the unit direction `now` (itcz_systems), in [0, 1], its width swelling
-// with the belts' `seed` (itcz_swell).
+// The SPCZ's band (a zone 200-400 km broad, Vincent 1994): SPCZ_LINE_WIDTH either side of its
+// line, flat over its middle 230 km, as the ITCZ's (ITCZ_LINE_WIDTH) elsewhere. It is deep cloud
+// as bright as a front's band (SPCZ_LINE_DEPTH, the comma clouds' 1), not the ITCZ's shields'
+// half: beyond the warm pool the SPCZ is a band of cloud where the troughs and fronts of the
+// southern storm track stall and feed its convection (Vincent 1994; Matthews 2012), drawn on
+// satellite images as a continuous band thousands of km long rather than a string of clusters.
+const float SPCZ_LINE_WIDTH = 0.03f;
+const float SPCZ_LINE_DEPTH = 1.0f;
+// Outside the superclusters the SPCZ keeps SPCZ_BAND_DORMANT of its band: the storm track's
+// troughs that feed it come whatever the tropical envelope (Matthews 2012), which gates its
+// systems (spcz_presence) and the ITCZ's band wholly.
+const float SPCZ_BAND_DORMANT = 0.5f;
+// The superclusters' band's deep cloud at the unit direction `now` (itcz_systems), in [0, 1]:
+// ITCZ_LINE_DEPTH over the band, its width swelling with the belts' `seed` (itcz_swell); and the
+// SPCZ's where near it, SPCZ_LINE_DEPTH times its strength and extent, in the same superclusters
+// (spcz_presence) and SPCZ_BAND_DORMANT of that outside them.
 float itcz_line_band(vec3 now, float itcz_latitude, IN(LineWaves) waves, float edge, uint seed) {
   vec3 sums = line_waves(now, waves);
   float offset = (now.z - sin(itcz_latitude) - line_shift(sums, waves)) / cos(itcz_latitude);
-  float width = ITCZ_LINE_WIDTH * itcz_swell(now, seed);
-  return supercluster_activity(sums) * band_profile(offset + 0.5f * width * edge, width);
+  float swell = itcz_swell(now, seed);
+  float width = ITCZ_LINE_WIDTH * swell;
+  float activity = supercluster_activity(sums);
+  float band = activity * ITCZ_LINE_DEPTH * band_profile(offset + 0.5f * width * edge, width);
+  if (spcz_near(now, waves)) {
+    float s = spcz_along(now);
+    float across = asin(now.z) - spcz_latitude(s, waves.spcz_shift) - ITCZ_MEANDER * line_meander(sums);
+    float spcz_width = SPCZ_LINE_WIDTH * swell;
+    band = max(band, mix(SPCZ_BAND_DORMANT, 1.0f, activity) * SPCZ_LINE_DEPTH * waves.spcz * spcz_extent(s) *
+                         band_profile(across + 0.5f * spcz_width * edge, spcz_width));
+  }
+  return band;
 }
 
 // The ITCZ's two lattices, each a table of its cells where the density pass makes them
@@ -586,24 +676,27 @@ vec2 itcz_distances(int table, vec3 p, float itcz_latitude, IN(LineWaves) waves,
                                      searched, table);
 }
 
-// The ITCZ's convective systems: (the systems' and towers' cloud, the systems' anvils and the
-// superclusters' band), both in [0, 1], with the line's `waves`. The systems are drawn at p, the
-// air's origin of geocentric `latitude`, carried by the flow as the rest of the cloud (none beyond
-// ITCZ_REACH of the mean line); the `band` is itcz_line_band at the texel's own direction: the
-// ITCZ is where the trades converge, which the flow's air passes through rather than carries along
-// (and the moving flow's two layers share it, so the caller computes it once).
+// The ITCZ's convective systems: (the systems' and towers' cloud and the superclusters' band's deep
+// cloud, the systems' anvils and the band's shield), both in [0, 1], with the line's `waves`; the
+// shield is the band's anvil cloud, whole where its deep cloud is ITCZ_LINE_DEPTH or more. The
+// systems are drawn at p, the air's origin of geocentric `latitude`, carried by the flow as the
+// rest of the cloud (none beyond ITCZ_REACH of the mean line, or near the SPCZ's, spcz_near); the
+// `band` is itcz_line_band at the texel's own direction: the ITCZ is where the trades converge,
+// which the flow's air passes through rather than carries along (and the moving flow's two layers
+// share it, so the caller computes it once).
 vec2 itcz_systems(vec3 p, float band, float latitude, float itcz_latitude, IN(LineWaves) waves, uint seed, float edge) {
   float off_line = abs(latitude - itcz_latitude) - waves.monsoon_reach;
-  bool near = off_line < ITCZ_REACH;
+  bool spcz = spcz_near(p, waves);
+  bool near = off_line < ITCZ_REACH || spcz;
   int searched = SKIPPABLE(near, NEIGHBOUR_CELLS);
-  int towers_searched = SKIPPABLE(off_line < ITCZ_TOWER_REACH, NEIGHBOUR_CELLS);
+  int towers_searched = SKIPPABLE(off_line < ITCZ_TOWER_REACH || spcz, NEIGHBOUR_CELLS);
   p = convective_warp(p, seed, SKIPPABLE(near, 2));
   vec2 systems = itcz_distances(ITCZ_SYSTEMS_TABLE, p, itcz_latitude, waves, seed, searched);
   vec2 towers = itcz_distances(ITCZ_TOWERS_TABLE, p, itcz_latitude, waves, seed, towers_searched);
-  if (!near) return vec2(ITCZ_LINE_DEPTH * band, band);
-  return vec2(max(convective_cloud(min(systems.x, towers.x), edge, CORE_EDGE_REACH),
-                  ITCZ_LINE_DEPTH * band * itcz_beads(systems.x)),
-              max(convective_cloud(min(systems.y, towers.y), edge, ANVIL_EDGE_REACH), band));
+  float shield = min(band / ITCZ_LINE_DEPTH, 1.0f);
+  if (!near) return vec2(band, shield);
+  return vec2(max(convective_cloud(min(systems.x, towers.x), edge, CORE_EDGE_REACH), band * itcz_beads(systems.x)),
+              max(convective_cloud(min(systems.y, towers.y), edge, ANVIL_EDGE_REACH), shield));
 }
 
 // The trades' cumulus organise on the mesoscale into four patterns that an eye tells apart on

@@ -41,11 +41,12 @@ struct CoverParameters {
   float cyclone_cloudiness =
       params::cover::cyclone_cloudiness.default_float();  // weight of the cyclonic depth in the density
   // The weather systems (weather_systems.hpp) and the remap's softness (docs/climate.md).
-  int cyclones = params::cover::cyclones.default_int();                            // per hemisphere
-  float itcz = params::cover::itcz.default_float();                                // strength of the ITCZ's clusters
-  float trade_cumulus = params::cover::trade_cumulus.default_float();              // strength of the cumulus fields
-  float cirrus = params::cover::cirrus.default_float();                            // strength of the cirrus streaks
-  float shallow_trades = params::cover::shallow_trades.default_float();            // the trades' unorganised cloud thin
+  int cyclones = params::cover::cyclones.default_int();                  // per hemisphere
+  float itcz = params::cover::itcz.default_float();                      // strength of the ITCZ's clusters
+  float spcz = params::cover::spcz.default_float();                      // strength of the SPCZ's (with a mask)
+  float trade_cumulus = params::cover::trade_cumulus.default_float();    // strength of the cumulus fields
+  float cirrus = params::cover::cirrus.default_float();                  // strength of the cirrus streaks
+  float shallow_trades = params::cover::shallow_trades.default_float();  // the trades' unorganised cloud thin
   float stratocumulus_cells = params::cover::stratocumulus_cells.default_float();  // the decks' and cold air's cells
   float cloud_streets = params::cover::cloud_streets.default_float();              // the cold air's streets
   float cover_softness = params::cover::cover_softness.default_float();            // density scale of the remap
@@ -110,6 +111,7 @@ void visit_numeric_parameters(P& p, Visit&& visit) {
   visit(c::cyclone_cloudiness, p.cyclone_cloudiness);
   visit(c::cyclones, p.cyclones);
   visit(c::itcz, p.itcz);
+  visit(c::spcz, p.spcz);
   visit(c::trade_cumulus, p.trade_cumulus);
   visit(c::cirrus, p.cirrus);
   visit(c::shallow_trades, p.shallow_trades);

@@ -120,6 +120,8 @@ glsl::LineWaves moved_line_waves(glsl::LineWaves waves, double hours, double loo
   return waves;
 }
 
+float spcz_season(int month) { return static_cast<float>(0.75 - 0.25 * seasonal_phase(month)); }
+
 double monsoon_target(const SurfaceMask& mask, int month, double line, double lon) {
   const double land_lat = monsoon_land_deg * seasonal_phase(month);
   double land = 0.0;
@@ -175,6 +177,10 @@ glsl::WeatherSystems weather_systems(const CoverParameters& p, double hours) {
   w.itcz_latitude = static_cast<float>((5.0 + seasonal_shift_deg(5.0, p.month)) * degree);
   w.itcz_waves = moved_line_waves(glsl::line_waves_of(seed, w.itcz_latitude), hours, p.loop_hours);
   if (p.surface) w.itcz_waves = with_monsoons(w.itcz_waves, *p.surface, p.month, w.itcz_latitude);
+  if (p.surface) {
+    w.itcz_waves.spcz = p.spcz * spcz_season(p.month);
+    w.itcz_waves.spcz_shift = static_cast<float>(seasonal_shift_deg(spcz_mid_latitude_deg, p.month) * degree);
+  }
   if (p.cyclones <= 0) return w;
   const double lifetime = cyclone_lifetime_hours;
   double spacing = lifetime / p.cyclones;

@@ -45,6 +45,17 @@ double monsoon_target(const SurfaceMask& mask, int month, double line, double lo
 // sin(latitude) at the line, and monsoon_reach a bound of their sum's size in radians.
 glsl::LineWaves with_monsoons(glsl::LineWaves waves, const SurfaceMask& mask, int month, double line);
 
+// The South Pacific Convergence Zone (weather_systems.glsl's spcz_presence), drawn with a map of
+// the Earth (its line is fixed to the map: the warm pool's and the cold tongue's sea surface
+// temperatures set it, van der Wiel et al. 2015, "Why the South Pacific Convergence Zone is
+// diagonal", Clim. Dyn.): present all year, most active in austral summer and weaker and further
+// north in winter (Vincent 1994). Its strength relative to --spcz in a month, 0.75 - 0.25
+// seasonal_phase: 1 in February, 0.5 in August and 0.75 for the annual mean (month 0); and its
+// line moves with the profile's seasonal shift at spcz_mid_latitude_deg, its middle's latitude
+// (4.1 degrees north in August).
+float spcz_season(int month);
+constexpr double spcz_mid_latitude_deg = -15.0;
+
 // One cyclone's state at `age_fraction` = age / lifetime in [0, 1): its strength (grows in the
 // first fifth, decays in the last third) and how far its head winds (half a turn as a wave, three
 // quarters of a turn more as it occludes).

@@ -24,6 +24,7 @@ const std::vector<const Parameter*>& all() {
       &cover::cyclone_cloudiness,
       &cover::cyclones,
       &cover::itcz,
+      &cover::spcz,
       &cover::trade_cumulus,
       &cover::cirrus,
       &cover::shallow_trades,

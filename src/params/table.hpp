@@ -75,6 +75,12 @@ inline constexpr Parameter itcz =
     real("itcz", 1.0, 0.0, 1.0, "",
          "strength of the ITCZ's broken line of convective clusters near 5 N, following --month (0: none)",
          cover_commands, "systems.itcz");
+inline constexpr Parameter spcz =
+    real("spcz", 1.0, 0.0, 1.0, "",
+         "strength of the South Pacific Convergence Zone's band of deep cloud and convective clusters from the "
+         "Solomon Islands east-south-east towards 25 S 120 W, strongest in February (with --surface: Earth's map; 0: "
+         "none)",
+         cover_commands, "systems.spcz");
 inline constexpr Parameter trade_cumulus =
     real("trade_cumulus", 1.0, 0.0, 1.0, "",
          "strength of the fields of small trade cumulus between 6 and 30 degrees (0: none)", cover_commands,

@@ -65,6 +65,8 @@ void set_uniform(const gpu::ComputeProgram& program, const std::string& name, co
   program.set(waves + "meander_z", systems.itcz_waves.meander_z);
   program.set(waves + "dormant", systems.itcz_waves.dormant);
   program.set(waves + "applies", systems.itcz_waves.applies);
+  program.set(waves + "spcz", systems.itcz_waves.spcz);
+  program.set(waves + "spcz_shift", systems.itcz_waves.spcz_shift);
   program.set(name + ".trade_cumulus", systems.trade_cumulus);
   program.set(name + ".cirrus", systems.cirrus);
   program.set(name + ".shallow_trades", systems.shallow_trades);

@@ -47,6 +47,12 @@ const int PROBE_ITCZ_SWELL = 40;             // itcz_swell(p, uint(b)), itcz_bea
 const int PROBE_SURFACE_DISCS = 41;          // surface_disc_distance(p, a, uint(b), FLOWERS_LAYER, FLOWER_RADII, c,
                                              // (1 + FLOWER_EDGE_REACH) FLOWER_RADII.y, 27 cells, none where
                                              // x[3].z > 1/2)
+const int PROBE_SPCZ = 42;                   // spcz_along(p), spcz_latitude(a, c), waved_presence(p, the ITCZ's systems'
+                                             // presence at 5 N, probe_spcz_waves(uint(b), x[3].x, x[3].y), 0),
+                                             // spcz_extent(a)
+const int PROBE_SPCZ_BAND = 43;              // itcz_line_band(p, 0.087, probe_spcz_waves(uint(b), x[3].x, x[3].y),
+                                             // x[3].z, uint(b)), spcz_near(p, those waves) as 0 or 1,
+                                             // spcz_presence(p, PROBE_SPCZ's presence, those waves, x[3].z)
 const int PROBE_TRADE_CLUMPS = 28;           // gravel_clumps(p, uint(b), a, x[1].w), flower_clumps, fish_clumps (all
                                              // cells searched), organised_trades(trade_regimes(p, uint(b), 2), latitude, c)
 const int PROBE_TANGENT_WARP = 29;           // tangent_warp(p, a, c, uint(b), FLOWERS_WARP_LAYER, 2),
@@ -91,6 +97,13 @@ LineWaves probe_monsoon_waves(uint seed, float line, float size) {
   }
   waves.monsoon_mean = 0.5f * size;
   waves.monsoon_reach = reach;
+  return waves;
+}
+// The line's waves of `seed` at 5 N with an SPCZ of `strength` shifted by `shift` radians.
+LineWaves probe_spcz_waves(uint seed, float strength, float shift) {
+  LineWaves waves = line_waves_of(seed, 0.087f);
+  waves.spcz = strength;
+  waves.spcz_shift = shift;
   return waves;
 }
 // A cyclone at x[2]'s direction with x east and y north (a northern one; the host mirrors the
@@ -195,6 +208,16 @@ vec4 probe_weather_systems(mat4 x) {
     return vec4(cell_borders(p * OPEN_CELLS, p, noise_key(seed, OPEN_CELLS_LAYER), NEIGHBOUR_CELLS),
                 open_cell_wall(x[0].y));
   if (f == PROBE_TRADE_REGIMES) return trade_regimes(p, seed, 2);
+  if (f == PROBE_SPCZ)
+    return vec4(spcz_along(p), spcz_latitude(x[0].y, x[0].w),
+                waved_presence(p, convective_presence_of(0.087f, 0.07f, 1.0f), probe_spcz_waves(seed, x[3].x, x[3].y),
+                               0.0f),
+                spcz_extent(x[0].y));
+  if (f == PROBE_SPCZ_BAND) {
+    LineWaves waves = probe_spcz_waves(seed, x[3].x, x[3].y);
+    return vec4(itcz_line_band(p, 0.087f, waves, x[3].z, seed), spcz_near(p, waves) ? 1.0f : 0.0f,
+                spcz_presence(p, convective_presence_of(0.087f, 0.07f, 1.0f), waves, x[3].z), 0.0f);
+  }
   if (f == PROBE_ITCZ_SWELL) return vec4(itcz_swell(p, seed), itcz_beads(x[1].w), 0.0f, 0.0f);
   if (f == PROBE_SURFACE_DISCS)
     return vec4(surface_disc_distance(p, x[0].y, seed, FLOWERS_LAYER, FLOWER_RADII, x[0].w,
