@@ -529,10 +529,12 @@ const float ITCZ_TOWER_WIDTH = 0.1f;
 // the cover's noise by half that: anvil cloud, thin and grey, through which the systems' bright
 // cores show.
 const float ITCZ_LINE_WIDTH = 0.044f;
-// The band is deep cloud at half a system's strength: the stratiform regions of mesoscale
+// The band is deep cloud at 0.8 of a system's strength: the stratiform regions of mesoscale
 // convective systems, thick layer cloud under the anvil that gives 40 % of their rain (Houze 2004),
-// less bright than the convective cores but far brighter than thin anvil cirrus.
-const float ITCZ_LINE_DEPTH = 0.5f;
+// less bright than the convective cores but far brighter than thin anvil cirrus. At half a
+// system's strength (a factor of 1.25 on the density) the band left no trace on a 512 map: it
+// did not lift the trades' dark sea over its latitudes' thresholds (docs/climate.md, "The ITCZ's line").
+const float ITCZ_LINE_DEPTH = 0.8f;
 // The band is the systems' shields merged: deep around each mesoscale system and thinner between
 // them, a string of beads rather than a bar of one width. Its depth falls from ITCZ_LINE_DEPTH
 // within ITCZ_BEAD_REACH.x of the nearest system's radius to ITCZ_BEAD_GAP of it from
