@@ -690,9 +690,9 @@ TEST_CASE("weather_systems.glsl on the GPU agrees with the CPU", "[probe]") {
     // the bump's slope of 21 per unit of sine, as PROBE_LINE_WAVES' (64 kTranscendental in all);
     // the extent smoothsteps of exact inputs. The band: the offset's error, the arcsine's and the
     // line's (2 kTranscendental), through band_profile's slope of 3.75 per width of at least 0.03 x
-    // 0.35 (360 per radian). Whether it is near: a step at the reach, where no system and no band
-    // reaches (both 0 on either side of it), exact but for points within the arcsine's error of
-    // it (about one in 1e5).
+    // 0.35 (360 per radian). Whether it is near, and its place along the line there (SPCZ_FAR
+    // elsewhere): a step at the reach, where no system and no band reaches (both 0 on either side
+    // of it), exact but for points within the arcsine's error of it (about one in 1e5).
     {
       const float lat = r(-0.7f, 0.17f), lon = r(2.27f, 4.54f);
       const vec3 pacific(std::cos(lat) * std::cos(lon), std::cos(lat) * std::sin(lon), std::sin(lat));

@@ -62,7 +62,7 @@ struct LineWaves {
   float meander_z;  // the meander's amplitude in sin(latitude) (its radians times cos(line))
   float dormant;    // the share of places filled outside the superclusters, relative to inside
   float applies;    // 1: the waves apply; 0: none (GLSL reserves "active")
-  float spcz;       // the SPCZ's share of places on its line relative to the ITCZ's (spcz_share; 0: none)
+  float spcz;       // the SPCZ's share of places on its line relative to the ITCZ's (spcz_presence; 0: none)
   float spcz_shift;  // its line's seasonal shift, radians of latitude (northward > 0)
 };
 // The line's meander (radians of latitude for a unit of its sum; the sum clamped to
@@ -331,20 +331,23 @@ float spcz_latitude(float s, float shift) {
 // = 0.36 of latitude; and along it within 0.342 / cos(25 S) = 0.38 of longitude, 0.24 of its span,
 // of where its extent ends (s -0.12 and 1). (None north of 23.6 N or south of 60 S: the line with
 // its seasonal shift of at most 5 degrees lies between 1 S and 30 S.)
+// spcz_place gives p's place along the line, spcz_along, where they may reach it and SPCZ_FAR
+// elsewhere, so that its callers need no second arctangent.
 const float SPCZ_REACH = 0.37f;
 const vec2 SPCZ_REACH_ALONG = vec2(-0.37f, 1.25f);
-bool spcz_near(vec3 p, IN(LineWaves) waves) {
-  if (waves.spcz <= 0.0f || p.z > 0.4f || p.z < -0.87f) return false;
+const float SPCZ_FAR = -1.0e3f;
+float spcz_place(vec3 p, IN(LineWaves) waves) {
+  if (waves.spcz <= 0.0f || p.z > 0.4f || p.z < -0.87f) return SPCZ_FAR;
   float s = spcz_along(p);
-  if (s < SPCZ_REACH_ALONG.x || s > SPCZ_REACH_ALONG.y) return false;
-  return abs(asin(p.z) - spcz_latitude(s, waves.spcz_shift)) < SPCZ_REACH;
+  if (s < SPCZ_REACH_ALONG.x || s > SPCZ_REACH_ALONG.y) return SPCZ_FAR;
+  return abs(asin(p.z) - spcz_latitude(s, waves.spcz_shift)) < SPCZ_REACH ? s : SPCZ_FAR;
 }
+bool spcz_near(vec3 p, IN(LineWaves) waves) { return spcz_place(p, waves) != SPCZ_FAR; }
 // The SPCZ's presence (as convective_presence, with the ITCZ's `presence`'s width and filling) at
-// the unit direction p about its line meandering by the waves' meander `meander` (line_meander at
-// p's longitude: the line's waves are functions of longitude, and the SPCZ takes the ITCZ's there),
-// times its strength and extent along the line.
-float spcz_presence(vec3 p, vec3 presence, IN(LineWaves) waves, float meander) {
-  float s = spcz_along(p);
+// the unit direction p, at place `s` along the line (spcz_along), about its line meandering by
+// the waves' meander `meander` (line_meander at p's longitude: the line's waves are functions of
+// longitude, and the SPCZ takes the ITCZ's there), times its strength and extent along the line.
+float spcz_presence(vec3 p, float s, vec3 presence, IN(LineWaves) waves, float meander) {
   float line = spcz_latitude(s, waves.spcz_shift) + ITCZ_MEANDER * meander;
   vec3 own = vec3(sin(line), presence.y * cos(line), waves.spcz * spcz_extent(s) * presence.z);
   return convective_presence(p, own);
@@ -362,12 +365,12 @@ float spcz_presence(vec3 p, vec3 presence, IN(LineWaves) waves, float meander) {
 float waved_presence(vec3 p, vec3 presence, IN(LineWaves) waves, float below) {
   if (waves.applies == 0.0f) return convective_presence(p, presence);
   float reach = 2.0f * presence.y + waves.meander_z * LINE_MEANDER_LIMIT + waves.monsoon_reach;
-  bool spcz = spcz_near(p, waves);
-  if (below >= presence.z || (abs(p.z - presence.x) >= reach && !spcz)) return 0.0f;
+  float s = spcz_place(p, waves);
+  if (below >= presence.z || (abs(p.z - presence.x) >= reach && s == SPCZ_FAR)) return 0.0f;
   vec3 sums = line_waves(p, waves);
   float filled = mix(waves.dormant, 1.0f, supercluster_activity(sums));
   float share = convective_presence(p - vec3(0.0f, 0.0f, line_shift(sums, waves)), presence);
-  if (spcz) share = max(share, spcz_presence(p, presence, waves, line_meander(sums)));
+  if (s != SPCZ_FAR) share = max(share, spcz_presence(p, s, presence, waves, line_meander(sums)));
   return filled * share;
 }
 
@@ -631,8 +634,8 @@ float itcz_line_band(vec3 now, float itcz_latitude, IN(LineWaves) waves, float e
   float width = ITCZ_LINE_WIDTH * swell;
   float activity = supercluster_activity(sums);
   float band = activity * ITCZ_LINE_DEPTH * band_profile(offset + 0.5f * width * edge, width);
-  if (spcz_near(now, waves)) {
-    float s = spcz_along(now);
+  float s = spcz_place(now, waves);
+  if (s != SPCZ_FAR) {
     float across = asin(now.z) - spcz_latitude(s, waves.spcz_shift) - ITCZ_MEANDER * line_meander(sums);
     float spcz_width = SPCZ_LINE_WIDTH * swell;
     band = max(band, mix(SPCZ_BAND_DORMANT, 1.0f, activity) * SPCZ_LINE_DEPTH * waves.spcz * spcz_extent(s) *

@@ -176,8 +176,8 @@ glsl::WeatherSystems weather_systems(const CoverParameters& p, double hours) {
   // seasonal shift there.
   w.itcz_latitude = static_cast<float>((5.0 + seasonal_shift_deg(5.0, p.month)) * degree);
   w.itcz_waves = moved_line_waves(glsl::line_waves_of(seed, w.itcz_latitude), hours, p.loop_hours);
-  if (p.surface) w.itcz_waves = with_monsoons(w.itcz_waves, *p.surface, p.month, w.itcz_latitude);
   if (p.surface) {
+    w.itcz_waves = with_monsoons(w.itcz_waves, *p.surface, p.month, w.itcz_latitude);
     w.itcz_waves.spcz = p.spcz * spcz_season(p.month);
     w.itcz_waves.spcz_shift = static_cast<float>(seasonal_shift_deg(spcz_mid_latitude_deg, p.month) * degree);
   }

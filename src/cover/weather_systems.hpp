@@ -47,8 +47,8 @@ glsl::LineWaves with_monsoons(glsl::LineWaves waves, const SurfaceMask& mask, in
 
 // The South Pacific Convergence Zone (weather_systems.glsl's spcz_presence), drawn with a map of
 // the Earth (its line is fixed to the map: the warm pool's and the cold tongue's sea surface
-// temperatures set it, van der Wiel et al. 2015, "Why the South Pacific Convergence Zone is
-// diagonal", Clim. Dyn.): present all year, most active in austral summer and weaker and further
+// temperatures set it, van der Wiel et al. 2016, "Why the South Pacific Convergence Zone is
+// diagonal", Clim. Dyn. 46): present all year, most active in austral summer and weaker and further
 // north in winter (Vincent 1994). Its strength relative to --spcz in a month, 0.75 - 0.25
 // seasonal_phase: 1 in February, 0.5 in August and 0.75 for the annual mean (month 0); and its
 // line moves with the profile's seasonal shift at spcz_mid_latitude_deg, its middle's latitude

@@ -52,7 +52,8 @@ const int PROBE_SPCZ = 42;                   // spcz_along(p), spcz_latitude(a, 
                                              // spcz_extent(a)
 const int PROBE_SPCZ_BAND = 43;              // itcz_line_band(p, 0.087, probe_spcz_waves(uint(b), x[3].x, x[3].y),
                                              // x[3].z, uint(b)), spcz_near(p, those waves) as 0 or 1,
-                                             // spcz_presence(p, PROBE_SPCZ's presence, those waves, x[3].z)
+                                             // spcz_presence(p, spcz_along(p), PROBE_SPCZ's presence, those
+                                             // waves, x[3].z), spcz_place(p, those waves)
 const int PROBE_TRADE_CLUMPS = 28;           // gravel_clumps(p, uint(b), a, x[1].w), flower_clumps, fish_clumps (all
                                              // cells searched), organised_trades(trade_regimes(p, uint(b), 2), latitude, c)
 const int PROBE_TANGENT_WARP = 29;           // tangent_warp(p, a, c, uint(b), FLOWERS_WARP_LAYER, 2),
@@ -216,7 +217,8 @@ vec4 probe_weather_systems(mat4 x) {
   if (f == PROBE_SPCZ_BAND) {
     LineWaves waves = probe_spcz_waves(seed, x[3].x, x[3].y);
     return vec4(itcz_line_band(p, 0.087f, waves, x[3].z, seed), spcz_near(p, waves) ? 1.0f : 0.0f,
-                spcz_presence(p, convective_presence_of(0.087f, 0.07f, 1.0f), waves, x[3].z), 0.0f);
+                spcz_presence(p, spcz_along(p), convective_presence_of(0.087f, 0.07f, 1.0f), waves, x[3].z),
+                spcz_place(p, waves));
   }
   if (f == PROBE_ITCZ_SWELL) return vec4(itcz_swell(p, seed), itcz_beads(x[1].w), 0.0f, 0.0f);
   if (f == PROBE_SURFACE_DISCS)
