@@ -726,12 +726,14 @@ TEST_CASE("weather_systems.glsl on the GPU agrees with the CPU", "[probe]") {
                      3.0e-2f});
     cases.push_back(
         {arguments(PROBE_TRADE_CLUMPS, vec4(r(-1.0f, 1.0f), seed, 0, r(0.0f, 1.0f)), vec4(q, texel_arc(r))), 3.0e-2f});
-    // The flowers' discs on the sphere: distances in radii as the convective distances' (a feature
-    // point's hashes exact, its projection and distance a few roundings of coordinates below 60
-    // cells), 1e30 on both sides where none is near or nothing is searched.
+    // The flowers' discs on the sphere: distances in radii within the convective distances' 3e-3
+    // (a feature point's hashes exact, its projection and distance a few roundings of coordinates
+    // below 60 cells) through a rim's slope, as a clump's above; the peaks' mix of an exact hash a
+    // rounding; 0 on both sides where none is near or nothing is searched.
     cases.push_back({arguments(PROBE_SURFACE_DISCS, vec4(r(5.0f, 60.0f), seed, 0, r(0.0f, 0.5f)), vec4(q, 0),
-                               vec4(0.0f), vec4(0, 0, float(k % 5 == 1), 0)),
-                     3.0e-3f, 2.0e-4f});
+                               vec4(r(-1.0f, 1.0f), r(0.0f, 0.5f), r(0.15f, 1.0f), texel_arc(r)),
+                               vec4(r(0.0f, 1.0f), 0, float(k % 5 == 1), 0)),
+                     3.0e-2f});
     // The storm tracks' cold air: smoothsteps of the latitude (slope 1.5 / 0.09 on the portable
     // arcsine's error, 5.2e-7), of the cyclonic depth (exact inputs) and of the wind's equatorward
     // share (a quotient of a dot product and lengths, a few ulp: slope 1.5 / 0.6), times the sea's

@@ -996,7 +996,7 @@ TEST_CASE("the trades' four patterns each hold about a quarter of the trades and
 TEST_CASE("flowers are bouquets well apart and fish are bands far longer than wide", "[fast][systems]") {
   Runs flowers_east, fish_east, fish_north;
   for (std::uint32_t seed = 1; seed <= 4; ++seed) {
-    const auto flower = [&](vec3 p) { return glsl::flower_clumps(p, seed, 0.0f, 0.0f, glsl::NEIGHBOUR_CELLS); };
+    const auto flower = [&](vec3 p) { return glsl::flower_clumps(p, seed, 0.0f, 0.0f, glsl::NEIGHBOUR_CELLS).x; };
     const auto fish = [&](vec3 p) { return glsl::fish_clumps(p, seed, 0.0f, 0.0f, glsl::NEAR_CELLS); };
     for (double degrees : {12.0, 18.0, 24.0}) {
       const double lat = degrees * M_PI / 180.0, circle = 2 * M_PI * earth_radius_km * std::cos(lat);
@@ -1012,7 +1012,7 @@ TEST_CASE("flowers are bouquets well apart and fish are bands far longer than wi
           100000);
     }
   }
-  // Flowers: discs on the sphere (surface_disc_distance), n = 2 x FLOWER_SHELL of them a cell^2 of
+  // Flowers' outlines: discs on the sphere (surface_disc_clouds), n = 2 x FLOWER_SHELL of them a cell^2 of
   // 228 km (FLOWER_CELLS a radius) with radii of density r^-3 on FLOWER_RADII, above a half out to
   // r_h = (1 - FLOWER_RIM / 2) r (rimmed_cloud), lobed by the warp. A line enters n E[2 r_h] of them
   // a cell of its length, fewer where discs overlap and more where a lobe splits one, and the
@@ -1097,7 +1097,7 @@ TEST_CASE("gravel's and fish's clumps fade over their rims and flowers end sharp
       const auto g = rise_widths([&](vec3 p) { return glsl::gravel_clumps(p, seed, 0.0f, 0.0f, glsl::NEAR_CELLS); },
                                  east, circle, 200000);
       const auto f =
-          rise_widths([&](vec3 p) { return glsl::flower_clumps(p, seed, 0.0f, 0.0f, glsl::NEIGHBOUR_CELLS); }, east,
+          rise_widths([&](vec3 p) { return glsl::flower_clumps(p, seed, 0.0f, 0.0f, glsl::NEIGHBOUR_CELLS).x; }, east,
                       circle, 200000);
       gravel.insert(gravel.end(), g.begin(), g.end());
       flowers.insert(flowers.end(), f.begin(), f.end());
@@ -1128,24 +1128,28 @@ TEST_CASE("gravel's and fish's clumps fade over their rims and flowers end sharp
 
 TEST_CASE("a trade clump's rim is never narrower than the cover's texel and its own where texels are finer",
           "[fast][systems]") {
-  // resolved_rim: a texel of 2 / size radians is texel_arc x 28 / 0.3 of a mean flower's radius
-  // (0.3 cells of FLOWER_CELLS = 28 a radius): 0.36 at 512 per face, 0.18 at 1024, 0.046 at 4096
-  // (under the flowers' own 0.15, which then holds), the whole radius from 128.
+  // resolved_rim: a texel of 2 / size radians is texel_arc x 28 / r of a flower's radius of r cells
+  // (FLOWER_CELLS = 28 a radius): for the lattice's mean 0.3 cells 0.36 at 512 per face, 0.18 at
+  // 1024, 0.046 at 4096 (under the flowers' own 0.15, which then holds), the whole radius from 128;
+  // for the smallest bouquet (0.22) 0.50 at 512 and the largest (0.38) 0.29: one texel in km
+  // whatever the bouquet's size.
   const vec2 radii = glsl::FLOWER_RADII;
   const float cells = glsl::FLOWER_CELLS;
-  CHECK(glsl::resolved_rim(glsl::FLOWER_RIM, cells, radii, 0.0f) == glsl::FLOWER_RIM);
-  CHECK(glsl::resolved_rim(glsl::FLOWER_RIM, cells, radii, 2.0f / 4096) == glsl::FLOWER_RIM);
-  CHECK(glsl::resolved_rim(glsl::FLOWER_RIM, cells, radii, 2.0f / 512) ==
-        Approx(2.0 / 512 * cells / 0.3).epsilon(1e-5));
-  CHECK(glsl::resolved_rim(glsl::FLOWER_RIM, cells, radii, 2.0f / 1024) ==
+  CHECK(glsl::resolved_rim(glsl::FLOWER_RIM, cells, 0.3f, 0.0f) == glsl::FLOWER_RIM);
+  CHECK(glsl::resolved_rim(glsl::FLOWER_RIM, cells, 0.3f, 2.0f / 4096) == glsl::FLOWER_RIM);
+  CHECK(glsl::resolved_rim(glsl::FLOWER_RIM, cells, 0.3f, 2.0f / 512) == Approx(2.0 / 512 * cells / 0.3).epsilon(1e-5));
+  CHECK(glsl::resolved_rim(glsl::FLOWER_RIM, cells, 0.3f, 2.0f / 1024) ==
         Approx(2.0 / 1024 * cells / 0.3).epsilon(1e-5));
-  CHECK(glsl::resolved_rim(glsl::FLOWER_RIM, cells, radii, 2.0f / 128) == 1.0f);
-  CHECK(glsl::resolved_rim(glsl::GRAVEL_RIM, 60.0f, vec2(0.2f, 0.38f), 2.0f / 1024) == glsl::GRAVEL_RIM);
-  // Drawn at 512 per face, the flowers rise from 0.1 to 0.9 over 0.61 (a smoothstep's middle) of
-  // the rim, for the smallest flower 0.22 / 0.3 of a texel of 25 km: 11 km, where their own rims
-  // rise within 7.9 km (the test above); the outlines' warp squeezes that by at most 1 + 0.006 x 80
-  // x 3.5 (its amount and cells, flower_clumps, times the Perlin noise's steepest slope, 3.29 in
-  // 2e7 samples) = 2.68, to 4.1 km, and most rises are wider than 0.61 texels.
+  CHECK(glsl::resolved_rim(glsl::FLOWER_RIM, cells, 0.3f, 2.0f / 128) == 1.0f);
+  for (float radius : {radii.x, radii.y})
+    CHECK(glsl::resolved_rim(glsl::FLOWER_RIM, cells, radius, 2.0f / 512) * radius / cells ==
+          Approx(2.0 / 512).epsilon(1e-5));
+  CHECK(glsl::resolved_rim(glsl::GRAVEL_RIM, 60.0f, 0.29f, 2.0f / 1024) == glsl::GRAVEL_RIM);
+  // Drawn at 512 per face, each flower rises from 0.1 to 0.9 over 0.61 (a smoothstep's middle) of
+  // its rim, a texel of 25 km whatever its radius (15 km), where their own rims rise within 7.9 km
+  // (the test above); the outlines' warp squeezes that by at most 1 + 0.006 x 80 x 3.5 (its amount
+  // and cells, flower_clumps, times the Perlin noise's steepest slope, 3.29 in 2e7 samples) = 2.68,
+  // to 5.7 km, and most rises are wider than 0.61 texels.
   const double texel_km = 2.0 / 512 * earth_radius_km;
   std::vector<double> coarse;
   for (std::uint32_t seed = 1; seed <= 3; ++seed) {
@@ -1153,7 +1157,7 @@ TEST_CASE("a trade clump's rim is never narrower than the cover's texel and its 
       const double lat = degrees * M_PI / 180.0, circle = 2 * M_PI * earth_radius_km * std::cos(lat);
       const auto east = [&](double lon) { return direction_at(lat, lon); };
       const auto f =
-          rise_widths([&](vec3 p) { return glsl::flower_clumps(p, seed, 0.0f, 2.0f / 512, glsl::NEIGHBOUR_CELLS); },
+          rise_widths([&](vec3 p) { return glsl::flower_clumps(p, seed, 0.0f, 2.0f / 512, glsl::NEIGHBOUR_CELLS).x; },
                       east, circle, 200000);
       coarse.insert(coarse.end(), f.begin(), f.end());
     }
@@ -1163,7 +1167,7 @@ TEST_CASE("a trade clump's rim is never narrower than the cover's texel and its 
   INFO("flowers at 512: " << coarse.size() << " rises, median " << median_of(coarse) << " km, least " << least
                           << " km");
   REQUIRE(coarse.size() > 100);
-  CHECK(least >= 0.61 * (0.22 / 0.3) * texel_km / (1.0 + 0.006 * 80 * 3.5) - 2 * step_km);
+  CHECK(least >= 0.61 * texel_km / (1.0 + 0.006 * 80 * 3.5) - 2 * step_km);
   CHECK(median_of(coarse) > 0.61 * texel_km);
 }
 
@@ -1207,15 +1211,16 @@ TEST_CASE(
   }
 }
 
-TEST_CASE("the flowers' discs on the sphere are whole: their search finds every disc that 125 cells hold",
+TEST_CASE("the flowers' discs on the sphere are whole and each bouquet has its own peak from the faintest to 1",
           "[fast][systems]") {
   // Each disc's centre is its feature point moved onto the sphere (in double here), present where
   // the point lies within FLOWER_SHELL cells of it; a disc reaches p (frayed: 1 + FLOWER_EDGE_REACH
   // of its radius, 1.5) only from a point within sqrt(0.4^2 + (1 + 0.4 / 28) 0.57^2) = 0.700 cells
   // (the cells the search loops over; the triangle inequality's 0.97 at most), which the 27 cells
-  // hold and the 125 around p hold with room. Where the nearest disc is within 1.5 radii the two agree to
-  // float rounding: coordinates below 30 cells (ulp 1.9e-6) through a few operations, over radii
-  // from 0.22 cells, 5e-5 of a radius; 1e-4 taken.
+  // hold and the 125 around p hold with room. The outlines and the cloud agree with the brute
+  // force's to the distances' float rounding: coordinates below 30 cells (ulp 1.9e-6) through a few
+  // operations, over radii from 0.22 cells, 5e-5 of a radius (1e-4 taken), through a rim's slope of
+  // at most 1.5 / FLOWER_RIM = 10: 1e-3.
   std::mt19937 rng(11);
   std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
   const float cells = glsl::FLOWER_CELLS;
@@ -1227,9 +1232,12 @@ TEST_CASE("the flowers' discs on the sphere are whole: their search finds every 
                       size_key = glsl::noise_key(seed, glsl::FLOWERS_LAYER + 1u);
     for (int k = 0; k < 4000; ++k) {
       const vec3 p = glm::normalize(vec3(unit(rng), unit(rng), unit(rng)));
+      const float edge = unit(rng), texel_arc = k % 2 ? 2.0f / 512 : 0.0f;
+      const glsl::vec4 rims(edge, glsl::FLOWER_EDGE_REACH, glsl::FLOWER_RIM, texel_arc);
       const glm::dvec3 scaled = glm::dvec3(p) * double(cells);
       const glsl::ivec3 cell(glm::floor(vec3(p) * cells));
-      double brute = 1e30;
+      double nearest = 1e30;
+      glm::dvec2 brute(0.0);
       for (int z = -2; z <= 2; ++z)
         for (int y = -2; y <= 2; ++y)
           for (int x = -2; x <= 2; ++x) {
@@ -1239,23 +1247,62 @@ TEST_CASE("the flowers' discs on the sphere are whole: their search finds every 
             const glm::dvec3 point = glm::dvec3(c) + glm::dvec3(vec3(system));
             const double height = glm::length(point);
             if (std::abs(height - cells) > glsl::FLOWER_SHELL) continue;
-            brute = std::min(brute, glm::length(point * (cells / height) - scaled) / system.w);
+            const double d = glm::length(point * (cells / height) - scaled) / system.w;
+            nearest = std::min(nearest, d);
+            const double outline = glsl::rimmed_cloud(float(d), edge, glsl::FLOWER_EDGE_REACH,
+                                                      glsl::resolved_rim(glsl::FLOWER_RIM, cells, system.w, texel_arc));
+            const double peak =
+                glsl::FLOWER_FAINTEST + (1.0 - glsl::FLOWER_FAINTEST) * glsl::system_hashes(c, size_key).z;
+            brute = glm::max(brute, glm::dvec2(outline, outline * peak));
           }
-      const float found = glsl::surface_disc_distance(p, cells, seed, glsl::FLOWERS_LAYER, radii, glsl::FLOWER_SHELL,
-                                                      reach, glsl::NEIGHBOUR_CELLS);
-      if (brute <= frayed) {
-        ++near;
-        REQUIRE(found == Approx(brute).epsilon(0).margin(1e-4));
-      } else {
-        REQUIRE(found > frayed - 1e-4f);
-      }
-      REQUIRE(glsl::surface_disc_distance(p, cells, seed, glsl::FLOWERS_LAYER, radii, glsl::FLOWER_SHELL, reach, 0) ==
-              1e30f);
+      const glsl::vec2 found = glsl::surface_disc_clouds(p, cells, seed, glsl::FLOWERS_LAYER, radii, glsl::FLOWER_SHELL,
+                                                         rims, glsl::FLOWER_FAINTEST, glsl::NEIGHBOUR_CELLS);
+      if (nearest <= frayed) ++near;
+      REQUIRE(found.x == Approx(brute.x).margin(1e-3));
+      REQUIRE(found.y == Approx(brute.y).margin(1e-3));
+      REQUIRE(found.y <= found.x);
+      REQUIRE(glsl::surface_disc_clouds(p, cells, seed, glsl::FLOWERS_LAYER, radii, glsl::FLOWER_SHELL, rims,
+                                        glsl::FLOWER_FAINTEST, 0) == glsl::vec2(0.0f));
     }
   }
   // 0.8 discs a cell^2 of 1.5 x 0.3 cells' radius cover about two fifths of the sphere.
   CHECK(near > 2000);
   CHECK(glsl::FLOWER_SHELL + reach <= 1.0f);  // whole by the triangle inequality alone
+  // At the centres of the discs the outline is full and the cloud is the largest peak of the discs
+  // whose outline is full there, the disc's own at least. The peaks, uniform from FLOWER_FAINTEST to
+  // 1, put half the discs below the middle of that range; a brighter disc covering a centre (about
+  // a fifth of the sea is under a bouquet) lifts a few, so that between two fifths and a half of the
+  // centres are dimmer than the middle, and the dimmest are near FLOWER_FAINTEST.
+  const glsl::uvec3 key = glsl::noise_key(3u, glsl::FLOWERS_LAYER),
+                    size_key = glsl::noise_key(3u, glsl::FLOWERS_LAYER + 1u);
+  const glsl::vec4 rims(0.0f, glsl::FLOWER_EDGE_REACH, glsl::FLOWER_RIM, 0.0f);
+  const float middle = 0.5f * (1.0f + glsl::FLOWER_FAINTEST);
+  int centres = 0, dim = 0;
+  float dimmest = 1.0f;
+  const int n = int(cells) + 1;
+  for (int x = -n; x <= n; ++x)
+    for (int y = -n; y <= n; ++y)
+      for (int z = -n; z <= n; ++z) {
+        const glsl::ivec3 c(x, y, z);
+        const glsl::vec4 system =
+            glsl::convective_cell(c, key, size_key, radii, glsl::presence_everywhere(1.0f), glsl::no_line_waves());
+        const vec3 point = vec3(c) + vec3(system);
+        if (std::abs(glm::length(point) - cells) > glsl::FLOWER_SHELL) continue;
+        const glsl::vec2 found =
+            glsl::surface_disc_clouds(glm::normalize(point), cells, 3u, glsl::FLOWERS_LAYER, radii, glsl::FLOWER_SHELL,
+                                      rims, glsl::FLOWER_FAINTEST, glsl::NEIGHBOUR_CELLS);
+        const float peak = glsl::FLOWER_FAINTEST + (1.0f - glsl::FLOWER_FAINTEST) * glsl::system_hashes(c, size_key).z;
+        REQUIRE(found.x == Approx(1.0f).margin(1e-3));
+        REQUIRE(found.y >= peak - 1e-3f);
+        ++centres;
+        dim += found.y < middle;
+        dimmest = std::min(dimmest, found.y);
+      }
+  INFO(dim << " of " << centres << " centres dimmer than " << middle << ", the dimmest " << dimmest);
+  REQUIRE(centres > 5000);
+  CHECK(double(dim) / centres > 0.4);
+  CHECK(double(dim) / centres < 0.5 + 4.0 * std::sqrt(0.25 / centres));
+  CHECK(dimmest < glsl::FLOWER_FAINTEST + 0.01f);
 }
 
 TEST_CASE("the organised patterns' clumps are brighter than sugar and the sea between them darker and clearer",

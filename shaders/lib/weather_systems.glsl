@@ -390,12 +390,16 @@ float system_growth(float excess, IN(LineWaves) waves) {
   return waves.applies == 0.0f ? 1.0f : min(excess / SYSTEM_GROWTH, 1.0f);
 }
 
+// A lattice cell's system's own hashes, each uniform in [0, 1): x its radius (equal_area_radius), y
+// its presence (convective_cell), z free for a pattern's own use (the flowers' maturity).
+vec3 system_hashes(ivec3 cell, uvec3 size_key) { return hash_to_unit3(pcg3d(uvec3(cell) ^ size_key)); }
+
 // The system of lattice cell `cell` (convective_distances' lattice, its keys noise_key(seed, layer)
 // and noise_key(seed, layer + 1)): its point's offset from the cell's lower corner (xyz) and its
 // radius in cells (w), 0 where the cell has no system.
 vec4 convective_cell(ivec3 cell, uvec3 key, uvec3 size_key, vec2 radii, vec3 presence, IN(LineWaves) waves) {
   vec3 feature = wrapped_feature_offset(cell, key);
-  vec3 h = hash_to_unit3(pcg3d(uvec3(cell) ^ size_key));
+  vec3 h = system_hashes(cell, size_key);
   // (A presence of a width beyond the sphere's, presence_everywhere, is its z everywhere.)
   float here = presence.y < 1.0e5f ? waved_presence(normalize(vec3(cell) + feature), presence, waves, h.y) : presence.z;
   if (h.y >= here) return vec4(feature, 0.0f);
@@ -734,14 +738,14 @@ vec4 trade_regimes(vec3 p, uint seed, int fields) {
 
 // The patterns' clumps, each in [0, 1]: whole discs of radii of density r^-3 on a lattice
 // (convective_distances over the NEAR_CELLS, in every place in `filled` of them; `searched` 0
-// where the caller draws none; the flowers: discs on the sphere, surface_disc_distance), their
+// where the caller draws none; the flowers: discs on the sphere, surface_disc_clouds), their
 // edges frayed by the cover's noise (`edge`, up to TRADE_CLUMP_EDGE_REACH of a radius, the
 // flowers' FLOWER_EDGE_REACH), soft where the cloud is thin and sharp where thick (the rims
 // below). Whole discs: a clump cut along
 // its Voronoi cell's border with an empty or smaller neighbour (cell_clouds) shows straight edges
 // and corners, shards rather than clouds, once the cover resolves them. Gravel's and fish's radii
 // stay below 0.38 cells, so that with the fray (1.3 times) they reach at most 0.494 cells and the 8
-// nearest cells hold them (the flowers' search reaches further, surface_disc_distance). Gravel: clumps of cumulus 40-80 km across (radii 0.2-0.38 of cells of 106 km,
+// nearest cells hold them (the flowers' search reaches further, surface_disc_clouds). Gravel: clumps of cumulus 40-80 km across (radii 0.2-0.38 of cells of 106 km,
 // 60 a radius), nine places in ten. Flowers: bouquets 100-175 km across (radii 0.22-0.38 of cells
 // of 228 km, FLOWER_CELLS a radius, 0.8 a cell^2), drawn at the point displaced by Perlin noise of 80
 // cells a radius by up to about 20 km (tangent_warp), so that their outlines are lobed. Fish:
@@ -764,7 +768,7 @@ const float TRADE_CLUMP_EDGE_REACH = 0.3f;
 const float FLOWER_CELLS = 28.0f;
 const vec2 FLOWER_RADII = vec2(0.22f, 0.38f);
 // The bouquets are flat sheets under the trade inversion, drawn as discs on the sphere
-// (surface_disc_distance) from the feature points within FLOWER_SHELL cells of it: 2 x 0.4 = 0.8
+// (surface_disc_clouds) from the feature points within FLOWER_SHELL cells of it: 2 x 0.4 = 0.8
 // bouquets a cell^2, which cover 0.8 pi E[r^2] = 0.2 of a flower region (radii of density r^-3 on
 // 0.22-0.38: E[r^2] = 0.080 cells^2), about 0.16 once they overlap and fade over their rims. The
 // lattice's balls cut by the sphere covered their volume share, 4/3 pi E[r^3] = 0.1, the least of
@@ -789,14 +793,16 @@ const float GRAVEL_RIM = 0.7f;
 const float FISH_RIM = 0.4f;
 const float FLOWER_RIM = CONVECTIVE_RIM;
 // A clump's rim where the cover's texels (texel_arc radians across) are too coarse for it: at least
-// CLUMP_RIM_TEXELS texels of a clump of the lattice's mean radius (`radii` in cells of `frequency` a
-// radius), at most the whole radius. A texel's cover is its area's: a clump's edge is no sharper
-// than the texel it falls in, and a rim of under a texel draws the clumps at a coarse cover as
+// CLUMP_RIM_TEXELS texels of a clump of `radius` cells of `frequency` a radius, at most the whole
+// radius. A texel's cover is its area's: a clump's edge is no sharper than the texel it falls in,
+// whatever the clump's size, and a rim of under a texel draws the clumps at a coarse cover as
 // hard-edged dots of a texel or two, flat white confetti (the 512 map), where a satellite's pixel
-// sees a bouquet's edge blend into the sea. texel_arc 0: the clumps' own rims.
+// sees a bouquet's edge blend into the sea. The flowers take each bouquet's own radius; gravel and
+// fish, whose search gives no clump's radius (convective_distances), their lattice's mean.
+// texel_arc 0: the clumps' own rims.
 const float CLUMP_RIM_TEXELS = 1.0f;
-float resolved_rim(float rim, float frequency, vec2 radii, float texel_arc) {
-  float texel = CLUMP_RIM_TEXELS * texel_arc * frequency / (0.5f * (radii.x + radii.y));
+float resolved_rim(float rim, float frequency, float radius, float texel_arc) {
+  float texel = CLUMP_RIM_TEXELS * texel_arc * frequency / radius;
   return clamp(max(rim, texel), rim, 1.0f);
 }
 float trade_clump(vec3 p, float frequency, uint seed, uint layer, vec2 radii, float filled, float rim, float edge,
@@ -804,27 +810,44 @@ float trade_clump(vec3 p, float frequency, uint seed, uint layer, vec2 radii, fl
   float d = convective_distances(p, frequency, seed, layer, radii, presence_everywhere(filled), no_line_waves(), NO_ANVIL,
                                  searched)
                 .x;
-  return rimmed_cloud(d, edge, TRADE_CLUMP_EDGE_REACH, resolved_rim(rim, frequency, radii, texel_arc));
+  return rimmed_cloud(d, edge, TRADE_CLUMP_EDGE_REACH, resolved_rim(rim, frequency, 0.5f * (radii.x + radii.y), texel_arc));
 }
-// Discs on the sphere: p's distance (in their radii) to the nearest of the discs centred on the
-// sphere's points nearest the feature points of a lattice of `frequency` cells per radius (one a
-// cell, convective_cell's, everywhere) that lie within `shell` cells of it, of the cells' radii
-// (`radii`, density r^-3). A ball of the lattice cut by the sphere shows as a disc only where its
-// point lies near the sphere, mostly smaller than its radius; these show whole, 2 x shell of them a
-// cell^2. A point at height h above the sphere (radius `frequency` in cells) whose disc's centre
-// lies a chord c from p is sqrt(h^2 + (1 + h / frequency) c^2) from it, so a disc reaches p only
-// from a point within sqrt(shell^2 + (1 + shell / frequency) reach^2) cells (reach: the discs'
-// outline's furthest, in cells): the 27 cells around p (`searched` NEIGHBOUR_CELLS, or 0:
-// SKIPPABLE, 1e30) hold every point within a cell, so that keeps the discs whole while it is at
-// most 1, and only the cells whose box lies within that along each axis are hashed (13.8 of the
-// 27 on average for the flowers). 1e30 where none is near.
-float surface_disc_distance(vec3 p, float frequency, uint seed, uint layer, vec2 radii, float shell, float reach,
-                            int searched) {
+// The clumps' strength by pattern, which lifts their density (the belts' weight times it) and
+// sets their brightness (cloud_properties.glsl's cumulus_organisation): gravel's cumulus, broken
+// and shallow, a little above sugar; fish and flowers, whose tops spread into stratiform sheets
+// under the trade inversion (Stevens et al. 2020), bright.
+const vec3 TRADE_PATTERN_STRENGTH = vec3(0.45f, 0.8f, 1.0f);  // gravel, fish, flowers
+// A flower's peak: the bouquets of a field are seen at every stage of their life, from the
+// gravel-like clusters that aggregate into them, through the mature bouquet whose stratiform sheet
+// spreads under the trade inversion, to its thinning remains (Dauhut et al. 2023, "Flower
+// trade-wind clouds are shallow mesoscale convective systems", QJRMS 149; Stevens et al. 2020), so
+// their brightness differs from one to the next. Each bouquet's peak is uniform (its third hash,
+// system_hashes) from FLOWER_FAINTEST, gravel's strength, to 1: a field of equal white bouquets
+// read as confetti on the 512 map.
+const float FLOWER_FAINTEST = TRADE_PATTERN_STRENGTH.x;
+// Discs on the sphere: the cloud at p of the discs centred on the sphere's points nearest the
+// feature points of a lattice of `frequency` cells per radius (one a cell, convective_cell's,
+// everywhere) that lie within `shell` cells of it, of the cells' radii (`radii`, density r^-3):
+// x the largest of their outlines (rimmed_cloud of p's distance in the disc's radii, frayed by
+// `rims`.x, the cover's noise, times .y of a radius, each fading over the rim .z or its own
+// radius's resolved_rim at texels of .w radians), y the largest of the outlines times each disc's
+// peak, uniform from `faintest` to 1 (its third hash). A ball of the lattice cut by the sphere
+// shows as a disc only where its point lies near the sphere, mostly smaller than its radius; these
+// show whole, 2 x shell of them a cell^2. A point at height h above the sphere (radius
+// `frequency` in cells) whose disc's centre lies a chord c from p is sqrt(h^2 + (1 + h /
+// frequency) c^2) from it, so a disc reaches p only from a point within sqrt(shell^2 + (1 + shell
+// / frequency) reach^2) cells (reach: the frayed outline's furthest, (1 + .y) radii.y): the 27
+// cells around p (`searched` NEIGHBOUR_CELLS, or 0: SKIPPABLE, no cloud) hold every point within a
+// cell, so that keeps the discs whole while it is at most 1, and only the cells whose box lies
+// within that along each axis are hashed (13.8 of the 27 on average for the flowers).
+vec2 surface_disc_clouds(vec3 p, float frequency, uint seed, uint layer, vec2 radii, float shell, vec4 rims,
+                         float faintest, int searched) {
   vec3 scaled = p * frequency;
   vec3 base = floor(scaled);
   ivec3 cell = ivec3(base);
   vec3 f = scaled - base;
   uvec3 key = noise_key(seed, layer), size_key = noise_key(seed, layer + 1u);
+  float reach = (1.0f + rims.y) * radii.y;
   float within = sqrt(shell * shell + (1.0f + shell / frequency) * reach * reach);
   // The cells whose boxes lie within `within` of p along each axis, 2 or 3 an axis (none where
   // nothing is searched), as loops of varying counts: llvmpipe ends a loop when the last lane of a
@@ -832,7 +855,7 @@ float surface_disc_distance(vec3 p, float frequency, uint seed, uint layer, vec2
   // (docs/performance.md, "The wider search as a loop").
   ivec3 lo = max(ivec3(-1), ivec3(floor(f - vec3(within))));
   ivec3 hi = searched > 0 ? min(ivec3(1), ivec3(floor(f + vec3(within)))) : lo - ivec3(1);
-  float nearest = 1.0e30f;
+  vec2 cloud = vec2(0.0f);
   for (int z = lo.z; z <= hi.z; ++z)
     for (int y = lo.y; y <= hi.y; ++y)
       for (int x = lo.x; x <= hi.x; ++x) {
@@ -841,18 +864,21 @@ float surface_disc_distance(vec3 p, float frequency, uint seed, uint layer, vec2
         vec3 point = scaled + vec3(offset) + vec3(system) - f;
         float height = length(point);
         if (abs(height - frequency) > shell) continue;
-        nearest = min(nearest, length(point * (frequency / height) - scaled) / system.w);
+        float d = length(point * (frequency / height) - scaled) / system.w;
+        float outline = rimmed_cloud(d, rims.x, rims.y, resolved_rim(rims.z, frequency, system.w, rims.w));
+        float peak = mix(faintest, 1.0f, system_hashes(cell + offset, size_key).z);
+        cloud = max(cloud, vec2(outline, outline * peak));
       }
-  return nearest;
+  return cloud;
 }
 float gravel_clumps(vec3 p, uint seed, float edge, float texel_arc, int searched) {
   return trade_clump(p, 60.0f, seed, GRAVEL_LAYER, vec2(0.2f, 0.38f), 0.9f, GRAVEL_RIM, edge, texel_arc, searched);
 }
-float flower_clumps(vec3 p, uint seed, float edge, float texel_arc, int searched) {
+// The flowers at p: x their outlines, y their cloud with each bouquet's peak (surface_disc_clouds).
+vec2 flower_clumps(vec3 p, uint seed, float edge, float texel_arc, int searched) {
   vec3 q = tangent_warp(p, 80.0f, 0.006f, seed, FLOWERS_WARP_LAYER, SKIPPABLE(searched > 0, 2));
-  float d = surface_disc_distance(q, FLOWER_CELLS, seed, FLOWERS_LAYER, FLOWER_RADII, FLOWER_SHELL,
-                                  (1.0f + FLOWER_EDGE_REACH) * FLOWER_RADII.y, searched);
-  return rimmed_cloud(d, edge, FLOWER_EDGE_REACH, resolved_rim(FLOWER_RIM, FLOWER_CELLS, FLOWER_RADII, texel_arc));
+  return surface_disc_clouds(q, FLOWER_CELLS, seed, FLOWERS_LAYER, FLOWER_RADII, FLOWER_SHELL,
+                             vec4(edge, FLOWER_EDGE_REACH, FLOWER_RIM, texel_arc), FLOWER_FAINTEST, searched);
 }
 float fish_clumps(vec3 p, uint seed, float edge, float texel_arc, int searched) {
   vec3 q = tangent_warp(p, 20.0f, 0.015f, seed, FISH_WARP_LAYER, SKIPPABLE(searched > 0, 2));
@@ -883,12 +909,6 @@ vec4 belt_regimes(vec3 p, float latitude, IN(WeatherSystems) systems, uint seed)
   return trade_regimes(p, seed, SKIPPABLE(systems.trade_cumulus > 0.0f && trade_cumulus_belt(latitude) > 0.0f, 2));
 }
 
-// The clumps' strength by pattern, which lifts their density (the belts' weight times it) and
-// sets their brightness (cloud_properties.glsl's cumulus_organisation): gravel's cumulus, broken
-// and shallow, a little above sugar; fish and flowers, whose tops spread into stratiform sheets
-// under the trade inversion (Stevens et al. 2020), bright.
-const vec3 TRADE_PATTERN_STRENGTH = vec3(0.45f, 0.8f, 1.0f);  // gravel, fish, flowers
-
 // The trades' organised cumulus at p, in [0, 1]: each pattern's clumps by its weight and strength,
 // in the trade cumulus' belt (trade_cumulus_belt), gravel's patchy where the cover's noise is low.
 // Sugar draws no clumps: its cloud is the noise's dim shallow cloud (cover_density.glsl's
@@ -901,7 +921,7 @@ float trade_cumulus(vec3 p, float latitude, uint seed, float edge, vec4 regimes,
   float gravel = gravel_clumps(p, seed, edge, texel_arc, SKIPPABLE(belt > 0.0f && regimes.y > 0.0f, NEAR_CELLS));
   float fish = fish_clumps(p, seed, edge, texel_arc, SKIPPABLE(belt > 0.0f && regimes.z > 0.0f, NEAR_CELLS));
   float flowers =
-      flower_clumps(p, seed, edge, texel_arc, SKIPPABLE(belt > 0.0f && regimes.w > 0.0f, NEIGHBOUR_CELLS));
+      flower_clumps(p, seed, edge, texel_arc, SKIPPABLE(belt > 0.0f && regimes.w > 0.0f, NEIGHBOUR_CELLS)).y;
   float clumps = max(max(TRADE_PATTERN_STRENGTH.x * regimes.y * gravel * patchy, TRADE_PATTERN_STRENGTH.y * regimes.z * fish),
                      TRADE_PATTERN_STRENGTH.z * regimes.w * flowers);
   return belt > 0.0f ? belt * clumps : 0.0f;

@@ -44,9 +44,10 @@ const int PROBE_CELL_BORDERS = 26;           // cell_borders(p * OPEN_CELLS, p, 
                                              // open_cell_wall(a) in w
 const int PROBE_TRADE_REGIMES = 27;          // trade_regimes(p, uint(b), 2)
 const int PROBE_ITCZ_SWELL = 40;             // itcz_swell(p, uint(b)), itcz_beads(x[1].w)
-const int PROBE_SURFACE_DISCS = 41;          // surface_disc_distance(p, a, uint(b), FLOWERS_LAYER, FLOWER_RADII, c,
-                                             // (1 + FLOWER_EDGE_REACH) FLOWER_RADII.y, 27 cells, none where
-                                             // x[3].z > 1/2)
+const int PROBE_SURFACE_DISCS = 41;          // surface_disc_clouds(p, a, uint(b), FLOWERS_LAYER, FLOWER_RADII, c,
+                                             // x[2] (the rims), x[3].x (the faintest), 27 cells, none where
+                                             // x[3].z > 1/2) in xy; system_hashes(floor(p a), the
+                                             // flowers' size key of seed b).xz in zw
 const int PROBE_SPCZ = 42;                   // spcz_along(p), spcz_latitude(a, c), waved_presence(p, the ITCZ's systems'
                                              // presence at 5 N, probe_spcz_waves(uint(b), x[3].x, x[3].y), 0),
                                              // spcz_extent(a)
@@ -54,7 +55,7 @@ const int PROBE_SPCZ_BAND = 43;              // itcz_line_band(p, 0.087, probe_s
                                              // x[3].z, uint(b)), spcz_near(p, those waves) as 0 or 1,
                                              // spcz_presence(p, spcz_along(p), PROBE_SPCZ's presence, those
                                              // waves, x[3].z), spcz_place(p, those waves)
-const int PROBE_TRADE_CLUMPS = 28;           // gravel_clumps(p, uint(b), a, x[1].w), flower_clumps, fish_clumps (all
+const int PROBE_TRADE_CLUMPS = 28;           // gravel_clumps(p, uint(b), a, x[1].w), flower_clumps' y, fish_clumps (all
                                              // cells searched), organised_trades(trade_regimes(p, uint(b), 2), latitude, c)
 const int PROBE_TANGENT_WARP = 29;           // tangent_warp(p, a, c, uint(b), FLOWERS_WARP_LAYER, 2),
                                              // trade_cumulus_belt(latitude) in w
@@ -70,7 +71,7 @@ const int PROBE_LINE_LATITUDE = 35;          // itcz_line_latitude(p, a, probe_m
 const int PROBE_TRADE_CLUMP = 30;            // trade_clump(p, a, uint(b), FLOWERS_LAYER, (0.2, 0.45), c, x[3].y (the
                                              // rim), x[3].x, x[3].w (the texels' arc), all cells),
                                              // rimmed_cloud(x[3].z, x[3].x, 0.3, x[3].y), presence_everywhere(c)'s
-                                             // y, resolved_rim(x[3].y, a, (0.2, 0.45), x[3].w)
+                                             // y, resolved_rim(x[3].y, a, 0.325, x[3].w)
 const int PROBE_ITCZ_CELL = 36;              // itcz_cell(table, floor(p * its cells per radius), a, line_waves_of(uint(b),
                                              // a), uint(b)), the towers' table where x[3].x > 1/2, the systems' else;
                                              // where x[3].y > 1/2 convective_cell of that cell with keys of layers 7
@@ -221,20 +222,21 @@ vec4 probe_weather_systems(mat4 x) {
                 spcz_place(p, waves));
   }
   if (f == PROBE_ITCZ_SWELL) return vec4(itcz_swell(p, seed), itcz_beads(x[1].w), 0.0f, 0.0f);
-  if (f == PROBE_SURFACE_DISCS)
-    return vec4(surface_disc_distance(p, x[0].y, seed, FLOWERS_LAYER, FLOWER_RADII, x[0].w,
-                                      (1.0f + FLOWER_EDGE_REACH) * FLOWER_RADII.y,
-                                      x[3].z > 0.5f ? 0 : NEIGHBOUR_CELLS),
-                0.0f, 0.0f, 0.0f);
+  if (f == PROBE_SURFACE_DISCS) {
+    vec3 h = system_hashes(ivec3(floor(p * x[0].y)), noise_key(seed, FLOWERS_LAYER + 1u));
+    return vec4(surface_disc_clouds(p, x[0].y, seed, FLOWERS_LAYER, FLOWER_RADII, x[0].w, x[2], x[3].x,
+                                    x[3].z > 0.5f ? 0 : NEIGHBOUR_CELLS),
+                h.x, h.z);
+  }
   if (f == PROBE_TANGENT_WARP)
     return vec4(tangent_warp(p, x[0].y, x[0].w, seed, FLOWERS_WARP_LAYER, 2), trade_cumulus_belt(latitude));
   if (f == PROBE_TRADE_CLUMP)
     return vec4(trade_clump(p, x[0].y, seed, FLOWERS_LAYER, vec2(0.2f, 0.45f), x[0].w, x[3].y, x[3].x, x[3].w,
                             NEIGHBOUR_CELLS),
                 rimmed_cloud(x[3].z, x[3].x, 0.3f, x[3].y), presence_everywhere(x[0].w).y,
-                resolved_rim(x[3].y, x[0].y, vec2(0.2f, 0.45f), x[3].w));
+                resolved_rim(x[3].y, x[0].y, 0.325f, x[3].w));
   if (f == PROBE_TRADE_CLUMPS)
-    return vec4(gravel_clumps(p, seed, x[0].y, x[1].w, NEIGHBOUR_CELLS), flower_clumps(p, seed, x[0].y, x[1].w, NEIGHBOUR_CELLS),
+    return vec4(gravel_clumps(p, seed, x[0].y, x[1].w, NEIGHBOUR_CELLS), flower_clumps(p, seed, x[0].y, x[1].w, NEIGHBOUR_CELLS).y,
                 fish_clumps(p, seed, x[0].y, x[1].w, NEIGHBOUR_CELLS),
                 organised_trades(trade_regimes(p, seed, 2), latitude, x[0].w));
   if (f == PROBE_FRAYED_DECK) {
