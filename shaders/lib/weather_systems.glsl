@@ -820,8 +820,9 @@ const vec3 TRADE_PATTERN_STRENGTH = vec3(0.45f, 0.8f, 1.0f);  // gravel, fish, f
 // A flower's peak: the bouquets of a field are seen at every stage of their life, from the
 // gravel-like clusters that aggregate into them, through the mature bouquet whose stratiform sheet
 // spreads under the trade inversion, to its thinning remains (Dauhut et al. 2023, "Flower
-// trade-wind clouds are shallow mesoscale convective systems", QJRMS 149; Stevens et al. 2020), so
-// their brightness differs from one to the next. Each bouquet's peak is uniform (its third hash,
+// trade-wind clouds are shallow mesoscale convective systems", QJRMS 149), and cumulus fields are
+// optically thicker the more they cluster (Alinaghi et al. 2023, arXiv:2309.08346), so their
+// brightness differs from one to the next. Each bouquet's peak is uniform (its third hash,
 // system_hashes) from FLOWER_FAINTEST, gravel's strength, to 1: a field of equal white bouquets
 // read as confetti on the 512 map.
 const float FLOWER_FAINTEST = TRADE_PATTERN_STRENGTH.x;
