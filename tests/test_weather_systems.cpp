@@ -2117,6 +2117,39 @@ TEST_CASE("the trades' shallow regime shrinks the cloud's excess and leaves the 
   }
 }
 
+TEST_CASE("cirrus streaks lie in the storm tracks and none in the tropics, whose cirrus is the anvils'",
+          "[fast][systems]") {
+  // cirrus_gate: full from 40 to 60 degrees (0.7-1.05 rad), none within 31.5 degrees of the
+  // equator (0.55 rad) or beyond 68.8 (1.2 rad). On a grid of 0.5 degrees by 1 degree the streaks
+  // are nowhere within 31 degrees and cover some of the storm tracks (their sheets about half,
+  // the streaks' cut a few tenths of that).
+  const std::uint32_t seed = 3;
+  long tropics = 0, tracks = 0, tracks_cloudy = 0;
+  for (int j = -62; j <= 62; ++j)
+    for (int i = 0; i < 360; ++i) {
+      const double lat = 0.5 * j * M_PI / 180.0, lon = i * M_PI / 180.0;
+      const vec3 p(std::cos(lat) * std::cos(lon), std::cos(lat) * std::sin(lon), std::sin(lat));
+      ++tropics;
+      REQUIRE(glsl::cirrus_streaks(p, float(lat), seed) == 0.0f);
+    }
+  for (int j = 80; j <= 120; ++j)
+    for (int sign : {-1, 1})
+      for (int i = 0; i < 360; ++i) {
+        const double lat = sign * 0.5 * j * M_PI / 180.0, lon = i * M_PI / 180.0;
+        const vec3 p(std::cos(lat) * std::cos(lon), std::cos(lat) * std::sin(lon), std::sin(lat));
+        ++tracks;
+        tracks_cloudy += glsl::cirrus_streaks(p, float(lat), seed) > 0.5f;
+      }
+  INFO(tracks_cloudy << " of " << tracks << " storm-track places under a streak; " << tropics << " tropical without");
+  CHECK(double(tracks_cloudy) / tracks > 0.02);
+  CHECK(double(tracks_cloudy) / tracks < 0.5);
+  CHECK(glsl::cirrus_gate(0.0f) == 0.0f);
+  CHECK(glsl::cirrus_gate(0.55f) == 0.0f);
+  CHECK(glsl::cirrus_gate(0.8f) == 1.0f);
+  CHECK(glsl::cirrus_gate(-0.8f) == 1.0f);
+  CHECK(glsl::cirrus_gate(1.2f) == 0.0f);
+}
+
 TEST_CASE("cirrus streaks run along the latitude circles and are several times longer than wide", "[fast][systems]") {
   // The streaks' noise is Worley noise, whose statistics hardly depend on the direction (a
   // jittered point in every lattice cell), of the point with its north component stretched by s =

@@ -937,10 +937,13 @@ float trade_cumulus(vec3 p, float latitude, uint seed, float edge, vec4 regimes,
 // across the latitude circles by sqrt(sin^2 lat + s^2 cos^2 lat), 10 at the equator, 7.1 at 45
 // degrees and 5.1 at 60: cut at CIRRUS_STREAK_EDGES, each feature point's peak is a streak some
 // 1000-1500 km long and 100-250 km wide, the second octave's finer ones beside and within them.
-// They lie in the storm tracks (35-65 degrees) and over the ITCZ's anvils (within 15 degrees of
-// the equator), in sheets where a gradient noise of CIRRUS_SHEET_CELLS cells per radius (z
-// stretched twofold) is high: cirrus comes in regions, not as an even dust of streaks. The flow
-// bends them as it carries the air (they are drawn at its origin).
+// They lie in the storm tracks (35-65 degrees), along the jets, in sheets where a gradient noise
+// of CIRRUS_SHEET_CELLS cells per radius (z stretched twofold) is high: cirrus comes in regions,
+// not as an even dust of streaks. The flow bends them as it carries the air (they are drawn at its
+// origin). Not in the deep tropics: there the upper-level cirrus is the deep convection's outflow,
+// anvils spread from the systems (Houze 2004; the ITCZ's and SPCZ's anvils, itcz_systems), and
+// the stretched lattice, narrowest at the equator, drew rows of parallel streaks 160 km apart that
+// the flow's vortices combed into arcs, a grain over the trades' grey haze.
 const float CIRRUS_CELLS = 4.0f;
 const float CIRRUS_STRETCH = 10.0f;
 const int CIRRUS_OCTAVES = 2;
@@ -948,10 +951,10 @@ const vec2 CIRRUS_STREAK_EDGES = vec2(0.45f, 0.75f);
 const float CIRRUS_SHEET_CELLS = 3.0f;
 const vec2 CIRRUS_SHEET_EDGES = vec2(0.0f, 0.2f);
 const uint CIRRUS_SHEET_LAYER = 38u;
-// The cirrus belts' gate at geocentric `latitude` (radians): the storm tracks and the deep tropics.
+// The cirrus streaks' gate at geocentric `latitude` (radians): the storm tracks.
 float cirrus_gate(float latitude) {
   float a = abs(latitude);
-  return max(smoothstep(0.55f, 0.7f, a) * (1.0f - smoothstep(1.05f, 1.2f, a)), 1.0f - smoothstep(0.15f, 0.3f, a));
+  return smoothstep(0.55f, 0.7f, a) * (1.0f - smoothstep(1.05f, 1.2f, a));
 }
 // The streaks' noise at p, in [1 - sqrt(3), 1] (1 on the feature points): `octaves` octaves
 // (CIRRUS_OCTAVES, or 0: none, SKIPPABLE, and then 0) of the stretched inverted Worley fBm.

@@ -86,7 +86,7 @@ inline constexpr Parameter trade_cumulus =
          "strength of the fields of small trade cumulus between 6 and 30 degrees (0: none)", cover_commands,
          "systems.trade_cumulus");
 inline constexpr Parameter cirrus = real(
-    "cirrus", 1.0, 0.0, 1.0, "", "strength of the thin cirrus streaks along the westerlies and over the ITCZ (0: none)",
+    "cirrus", 1.0, 0.0, 1.0, "", "strength of the thin cirrus streaks along the westerlies, 35-65 degrees (0: none)",
     cover_commands, "systems.cirrus");
 inline constexpr Parameter shallow_trades =
     real("shallow_trades", 1.0, 0.0, 1.0, "",
